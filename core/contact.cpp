@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/contact.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/polynomial.h"
+
+namespace grazelab::core {
+namespace {
+
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// critical points closer than this fraction of T2 to a start repeat are not resolvable in the
+// time variable; the reduced gap handles those windows instead
+constexpr double kEndWindow = 1e-9;
+
+// g(x) = (u2(x) - gap) / x^m on a time axis anchored at the start (or at T2, x <= 0)
+struct Scaled {
+  const Flight& flight;
+  int order;
+  std::pair<double, double> operator()(double x) const {
+    return flight.reducedGapAndRate(x, order);
+  }
+};
+
+int signOf(double value) { return (value > 0) - (value < 0); }
+
+// Safeguarded Newton for a root of g in [a, b], given g(a) and g(b) of opposite signs (or zero).
+template <typename Function>
+double solveBracketed(const Function& g, double a, double b, double ga, double gb) {
+  if (ga == 0) return a;
+  if (gb == 0) return b;
+  assert(signOf(ga) != signOf(gb));
+  // start from the secant point, which is already close for a nearly linear bracket
+  double x = a - ga * (b - a) / (gb - ga);
+  if (!(x > a && x < b)) x = 0.5 * (a + b);
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const auto [gx, slope] = g(x);
+    if (gx == 0) return x;
+    if (signOf(gx) == signOf(ga)) {
+      a = x;
+      ga = gx;
+    } else {
+      b = x;
+    }
+    const double newton = slope != 0 ? x - gx / slope : std::numeric_limits<double>::quiet_NaN();
+    double next = newton;
+    if (!(newton > a && newton < b)) {
+      // bisect; toward an end at exactly zero, bisect the exponent instead, since a root there
+      // may be many orders of magnitude smaller than the bracket (a near-grazing impact)
+      if (a == 0 || b == 0) {
+        next = (a == 0 ? b : a) * 0x1p-20;
+      } else {
+        next = 0.5 * (a + b);
+      }
+    }
+    const double width = b - a;
+    if (std::abs(next - x) <= kEpsilon * std::abs(x) ||
+        width <= 2 * kEpsilon * std::max(std::abs(a), std::abs(b))) {
+      return next;
+    }
+    x = next;
+  }
+  return x;
+}
+
+Contact tangentAt(const Flight& flight, FlightTime time) {
+  return {ContactKind::Tangent, time, std::abs(flight.gap(time.offset))};
+}
+
+Contact crossingAt(const Flight& flight, FlightTime time) {
+  return {ContactKind::Crossing, time, std::abs(flight.gap(time.offset))};
+}
+
+// the crossing inside the segment (a, b) of the time axis, where u2 - gap goes from negative to
+// positive; `order` > 0 only for the segment that starts at the start of the flight (its m-fold
+// zero there is divided out). Other segments ending past T2/2 are solved as offsets from T2 for
+// a resonant flight, so that a crossing just before the return keeps its relative precision.
+Contact solveSegment(const Flight& flight, double a, double b, int order) {
+  const double T2 = flight.modes().T2;
+  const bool fromReturn = flight.modes().resonant && order == 0 && b > 0.5 * T2;
+  const double anchor = fromReturn ? T2 : 0.0;
+  const double xa = a - anchor;  // exact (Sterbenz) for the cases used
+  const double xb = b - anchor;
+  const Scaled g{flight, order};
+  const double ga = g(xa).first;
+  const double gb = g(xb).first;
+  if (signOf(ga) == signOf(gb) && ga != 0 && gb != 0) {
+    // the sign change was decided from f; with the m-fold zero removed it must survive
+    return tangentAt(flight, {fromReturn ? xb : b, fromReturn});
+  }
+  const double root = solveBracketed(g, xa, xb, ga, gb);
+  return crossingAt(flight, {root, fromReturn});
+}
+
+Contact nextContactResonant(const Flight& flight) {
+  const double T2 = flight.modes().T2;
+  const int order = flight.contactOrder();
+  const double tolerance = flight.gapTolerance();
+
+  const RealRoots critical = criticalTimesResonant(flight);
+  if (critical.count == 0 && order > 0) {
+    // cannot happen for a motion that leaves the stop (it has a lowest point before T2)
+    return {ContactKind::Tangent, {0.0, true}, 0.0};
+  }
+  double previous = 0;
+  for (double time : critical) {
+    const double value = flight.gap(time);
+    // near the start or the return the gap is evaluated from its Taylor series, to relative
+    // precision; elsewhere values within rounding of zero are indistinguishable from a touch
+    const double reduced = time < 0.5 * T2 ? time : time - T2;
+    const double band = std::abs(reduced) <= flight.taylorRadius() ? 0.0 : tolerance;
+    if (value > band) {
+      return solveSegment(flight, previous, time, previous == 0 ? order : 0);
+    }
+    if (value >= -band && flight.acceleration2(time) <= 0) {
+      return tangentAt(flight, {time, false});
+    }
+    previous = time;
+  }
+
+  if (order == 0) return {};  // below the stop at T2 as at 0: the periodic motion never touches
+
+  // last segment (previous, T2]: u2 - gap = s^m g(s) with s = t - T2, so its sign just before the
+  // return is (-1)^m sign(g(0)); a change of sign of g inside means a crossing before T2
+  const Scaled g{flight, order};
+  const double start = previous - T2;
+  const double gStart = g(start).first;
+  const double gReturn = g(0.0).first;
+  if (signOf(gStart) != signOf(gReturn)) {
+    return crossingAt(flight, {solveBracketed(g, start, 0.0, gStart, gReturn), true});
+  }
+  // no crossing: the flight comes back tangentially exactly at T2 (a grazing linear orbit)
+  return {ContactKind::Tangent, {0.0, true}, 0.0};
+}
+
+Contact nextContactDetuned(const Flight& flight, double horizon) {
+  const int order = flight.contactOrder();
+  const double tolerance = flight.gapTolerance();
+  const double bound = flight.accelerationBound();
+  const Scaled scaled{flight, order};
+
+  double t = 0;
+  if (order > 0) {
+    // inside the Taylor window the gap is s^m g(s): look for a sign change of g there
+    const double window = std::min(flight.taylorRadius(), horizon);
+    const double gStart = scaled(0.0).first;
+    const double gEnd = scaled(window).first;
+    if (signOf(gEnd) != signOf(gStart)) {
+      return crossingAt(flight, {solveBracketed(scaled, 0.0, window, gStart, gEnd), false});
+    }
+    t = window;
+  }
+
+  const Scaled plain{flight, 0};
+  double previous = t;
+  for (long step = 0; step < 100'000'000 && t <= horizon; ++step) {
+    const auto [value, rate] = flight.gapAndRate(t);
+    if (value > tolerance) {
+      return crossingAt(flight, {solveBracketed(plain, previous, t,
+                                                plain(previous).first, value), false});
+    }
+    if (value >= -tolerance) {
+      // within rounding of the stop: a crossing if the gap keeps rising, else a touch
+      if (rate > 0) {
+        const double ahead = t + 4.0 * std::max(-value, tolerance) / rate;
+        const double valueAhead = flight.gap(ahead);
+        if (valueAhead > 0) {
+          return crossingAt(flight, {solveBracketed(plain, t, ahead, value, valueAhead), false});
+        }
+      }
+      return tangentAt(flight, {t, false});
+    }
+    // the largest step that cannot pass a contact: f + f' h + A h^2 / 2 < 0 for all shorter h
+    const double depth = -value;
+    const double discriminant = std::sqrt(rate * rate + 2.0 * bound * depth);
+    const double safe = rate > 0 ? 2.0 * depth / (rate + discriminant) : (discriminant - rate) / bound;
+    previous = t;
+    t += safe;
+  }
+  return {};
+}
+
+}  // namespace
+
+RealRoots criticalTimesResonant(const Flight& flight) {
+  // d/dtheta of alpha1 cos 2th + beta1 sin 2th + alpha2 cos th + beta2 sin th, times
+  // (1 + x^2)^2 with x = tan(theta/2), is this quartic in x
+  const double a1 = flight.alpha()(0);
+  const double b1 = flight.beta()(0);
+  const double a2 = flight.alpha()(1);
+  const double b2 = flight.beta()(1);
+  std::array<double, 5> c = {2 * b1 + b2, -8 * a1 - 2 * a2, -12 * b1, 8 * a1 - 2 * a2,
+                             2 * b1 - b2};
+  // roots near theta = pi are large in x: solve for y = 1/x = cot(theta/2) when that is better
+  const bool reversed = std::abs(c[4]) < std::abs(c[0]);
+  if (reversed) std::reverse(c.begin(), c.end());
+  const double omega = flight.modes().omegaSlow;
+  const double T2 = flight.modes().T2;
+
+  RealRoots times;
+  // a negligible leading coefficient (after choosing the better orientation, both ends are
+  // negligible) puts a critical point at x = infinity: theta = pi
+  double largest = 0;
+  for (double value : c) largest = std::max(largest, std::abs(value));
+  if (!reversed && std::abs(c[4]) <= 1e-14 * largest) times.add(0.5 * T2);
+  for (double root : realRootsQuartic(c)) {
+    if (times.count == 4) break;
+    double theta = reversed ? 2.0 * std::atan2(1.0, root) : 2.0 * std::atan(root);
+    if (theta < 0) theta += kTwoPi;
+    const double time = theta / omega;
+    if (time <= kEndWindow * T2 || time >= (1.0 - kEndWindow) * T2) continue;
+    times.add(time);
+  }
+  // at most four values: insertion sort
+  for (int i = 1; i < times.count; ++i) {
+    for (int j = i; j > 0 && times.values[j] < times.values[j - 1]; --j) {
+      std::swap(times.values[j], times.values[j - 1]);
+    }
+  }
+  return times;
+}
+
+Contact nextContact(const Flight& flight, double horizon) {
+  return flight.modes().resonant ? nextContactResonant(flight)
+                                 : nextContactDetuned(flight, horizon);
+}
+
+}  // namespace grazelab::core

@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/free_flight.h"
+
+#include <cmath>
+#include <limits>
+
+namespace grazelab::core {
+namespace {
+
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+
+// 1 / n! for the Taylor sums
+constexpr std::array<double, Flight::kTaylorOrder + 2> inverseFactorials() {
+  std::array<double, Flight::kTaylorOrder + 2> values{};
+  double factorial = 1;
+  for (int n = 0; n < static_cast<int>(values.size()); ++n) {
+    if (n > 0) factorial *= n;
+    values[n] = 1.0 / factorial;
+  }
+  return values;
+}
+constexpr auto kInverseFactorial = inverseFactorials();
+
+// (sin x, cos x - 1) without cancellation for small x
+struct Phase {
+  double sine;
+  double cosineMinusOne;
+};
+
+Phase phaseOf(double halfSine, double halfCosine) {
+  return {2.0 * halfSine * halfCosine, -2.0 * halfSine * halfSine};
+}
+
+}  // namespace
+
+Flight::Flight(const Model& model, const Modes& modes, const State& start)
+    : m_model(model), m_modes(modes), m_start(start), m_startsOnStop(start.u2 == model.gap) {
+  const Eigen::Vector2d u(start.u1, start.u2);
+  const Eigen::Vector2d v(start.v1, start.v2);
+  m_q = modes.Pinv * u;
+  m_qDot = modes.Pinv * v;
+  const Eigen::Vector2d omega(modes.omegaFast, modes.omegaSlow);
+  for (int j = 0; j < 2; ++j) {
+    m_alpha(j) = modes.P(1, j) * m_q(j);
+    m_beta(j) = modes.P(1, j) * m_qDot(j) / omega(j);
+  }
+
+  // derivatives of u at the start: u'' = A u with A = -M^-1 K, applied in a form that keeps the
+  // spring stretch u2 - u1 as one difference
+  const double a = model.k1 / model.m1;
+  const double b = model.k2 / model.m1;
+  const double c = model.k2 / model.m2;
+  m_derivatives[0] = u;
+  m_derivatives[1] = v;
+  for (int n = 2; n < static_cast<int>(m_derivatives.size()); ++n) {
+    const Eigen::Vector2d& x = m_derivatives[n - 2];
+    m_derivatives[n] = Eigen::Vector2d(b * (x(1) - x(0)) - a * x(0), c * (x(0) - x(1)));
+  }
+
+  if (start.u2 != model.gap) {
+    m_contactOrder = 0;
+  } else {
+    m_contactOrder = 1;
+    while (m_contactOrder <= kTaylorOrder && gapDerivative(m_contactOrder) == 0) ++m_contactOrder;
+  }
+
+  m_taylorRadius = 0.5 / modes.omegaFast;
+  m_gapAmplitude = 0;
+  m_accelerationBound = 0;
+  for (int j = 0; j < 2; ++j) {
+    const double amplitude = std::hypot(m_alpha(j), m_beta(j));
+    m_gapAmplitude += amplitude;
+    m_accelerationBound += amplitude * omega(j) * omega(j);
+  }
+  m_gapTolerance = 16 * kEpsilon * (2 * m_gapAmplitude + std::abs(start.u2 - model.gap));
+}
+
+double Flight::gapDerivative(int n) const {
+  return n == 0 ? m_start.u2 - m_model.gap : m_derivatives[n](1);
+}
+
+double Flight::reduce(double t) const {
+  // remainder() is exact, so the reduced time carries no new rounding
+  return m_modes.resonant ? std::remainder(t, m_modes.T2) : t;
+}
+
+State Flight::at(double t) const {
+  const double s = reduce(t);
+  return std::abs(s) <= m_taylorRadius ? taylorAt(s) : modalAt(s);
+}
+
+State Flight::taylorAt(double s) const {
+  // Horner on sum d_n s^n / n!, from the highest order down
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
+  for (int n = kTaylorOrder; n >= 0; --n) {
+    position = position * s + m_derivatives[n] * kInverseFactorial[n];
+    velocity = velocity * s + m_derivatives[n + 1] * kInverseFactorial[n];
+  }
+  return {position(0), position(1), velocity(0), velocity(1)};
+}
+
+State Flight::modalAt(double s) const {
+  Phase fast;
+  Phase slow;
+  if (m_modes.resonant) {
+    // the fast phase is exactly twice the slow one: one sincos serves both
+    const double halfSlow = 0.5 * m_modes.omegaSlow * s;
+    slow = phaseOf(std::sin(halfSlow), std::cos(halfSlow));
+    const double cosSlow = 1.0 + slow.cosineMinusOne;
+    fast = {2.0 * slow.sine * cosSlow, -2.0 * slow.sine * slow.sine};
+  } else {
+    const double halfFast = 0.5 * m_modes.omegaFast * s;
+    const double halfSlow = 0.5 * m_modes.omegaSlow * s;
+    fast = phaseOf(std::sin(halfFast), std::cos(halfFast));
+    slow = phaseOf(std::sin(halfSlow), std::cos(halfSlow));
+  }
+  const Phase phases[2] = {fast, slow};
+  const double omega[2] = {m_modes.omegaFast, m_modes.omegaSlow};
+  Eigen::Vector2d dq;
+  Eigen::Vector2d dqDot;
+  for (int j = 0; j < 2; ++j) {
+    const double amplitudeRatio = m_qDot(j) / omega[j];
+    dq(j) = m_q(j) * phases[j].cosineMinusOne + amplitudeRatio * phases[j].sine;
+    dqDot(j) = omega[j] * (-m_q(j) * phases[j].sine + amplitudeRatio * phases[j].cosineMinusOne);
+  }
+  const Eigen::Vector2d du = m_modes.P * dq;
+  const Eigen::Vector2d dv = m_modes.P * dqDot;
+  return {m_start.u1 + du(0), m_start.u2 + du(1), m_start.v1 + dv(0), m_start.v2 + dv(1)};
+}
+
+std::pair<double, double> Flight::gapAndRate(double t) const {
+  const double s = reduce(t);
+  if (std::abs(s) <= m_taylorRadius) {
+    // value = sum_n c_n s^n / n!,  rate = sum_n c_(n+1) s^n / n!
+    double value = 0;
+    double rate = 0;
+    for (int n = kTaylorOrder; n >= 0; --n) {
+      value = value * s + gapDerivative(n) * kInverseFactorial[n];
+      rate = rate * s + m_derivatives[n + 1](1) * kInverseFactorial[n];
+    }
+    return {value, rate};
+  }
+  const State state = modalAt(s);
+  // u2 - gap as (u2(0) - gap) + increment: the increment is what modalAt computed
+  return {(m_start.u2 - m_model.gap) + (state.u2 - m_start.u2), state.v2};
+}
+
+double Flight::acceleration2(double t) const {
+  const double s = reduce(t);
+  const double omega[2] = {m_modes.omegaFast, m_modes.omegaSlow};
+  double acceleration = 0;
+  for (int j = 0; j < 2; ++j) {
+    const double phase = omega[j] * s;
+    acceleration -= omega[j] * omega[j] *
+                    (m_alpha(j) * std::cos(phase) + m_beta(j) * std::sin(phase));
+  }
+  return acceleration;
+}
+
+std::pair<double, double> Flight::reducedGapAndRate(double x, int m) const {
+  if (m == 0) return gapAndRate(x);
+  if (std::abs(x) <= m_taylorRadius) {
+    // g(x) = sum_{n>=m} c_n x^(n-m) / n!,  g'(x) = sum_{n>m} c_n (n-m) x^(n-m-1) / n!
+    double value = 0;
+    double rate = 0;
+    for (int n = kTaylorOrder; n >= m; --n) {
+      rate = rate * x + value;
+      value = value * x + gapDerivative(n) * kInverseFactorial[n];
+    }
+    return {value, rate};
+  }
+  // divide by the unreduced x^m: the sign of g must follow the sign of u2 - gap over the whole
+  // segment, not flip where a resonant time is reduced modulo T2
+  const auto [gapValue, gapRate] = gapAndRate(x);
+  const double power = std::pow(x, m);
+  return {gapValue / power, (gapRate - m * gapValue / x) / power};
+}
+
+}  // namespace grazelab::core
