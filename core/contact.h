@@ -5,6 +5,8 @@
 #include "core/free_flight.h"
 #include "core/polynomial.h"
 
+#include <array>
+
 namespace grazelab::core {
 
 /// How a free flight meets the contact plane H = {u2 = gap}.
@@ -37,7 +39,24 @@ struct Contact {
 /// A bounding |u2''|; the march stops at `horizon` (time from the start).
 Contact nextContact(const Flight& flight, double horizon);
 
-/// The critical times of u2 - gap of a resonant flight in (0, T2), ascending (exposed for tests).
-RealRoots criticalTimesResonant(const Flight& flight);
+/// A stationary point of u2 - gap of a resonant flight.
+struct CriticalPoint {
+  double time = 0;          ///< in (0, T2)
+  double gap = 0;           ///< u2 - gap there
+  double acceleration = 0;  ///< d^2 u2 / dt^2 there: < 0 at a local maximum
+};
+
+/// At most four stationary points, ascending in time (a fixed-size list: no allocation).
+struct CriticalPoints {
+  std::array<CriticalPoint, 4> values;
+  int count = 0;
+
+  const CriticalPoint* begin() const { return values.data(); }
+  const CriticalPoint* end() const { return values.data() + count; }
+  bool empty() const { return count == 0; }
+};
+
+/// The stationary points of u2 - gap of a resonant flight in (0, T2), ascending in time.
+CriticalPoints criticalPointsResonant(const Flight& flight);
 
 }  // namespace grazelab::core

@@ -41,6 +41,8 @@ Flight::Flight(const Model& model, const Modes& modes, const State& start)
   m_q = modes.Pinv * u;
   m_qDot = modes.Pinv * v;
   const Eigen::Vector2d omega(modes.omegaFast, modes.omegaSlow);
+  m_omega = omega;
+  m_amplitudeRatio = m_qDot.cwiseQuotient(omega);
   for (int j = 0; j < 2; ++j) {
     m_alpha(j) = modes.P(1, j) * m_q(j);
     m_beta(j) = modes.P(1, j) * m_qDot(j) / omega(j);
@@ -58,6 +60,11 @@ Flight::Flight(const Model& model, const Modes& modes, const State& start)
     m_derivatives[n] = Eigen::Vector2d(b * (x(1) - x(0)) - a * x(0), c * (x(0) - x(1)));
   }
 
+  for (int n = 0; n <= kTaylorOrder; ++n) {
+    m_gapAndRateSeries[2 * n] = gapDerivative(n) * kInverseFactorial[n];
+    m_gapAndRateSeries[2 * n + 1] = m_derivatives[n + 1](1) * kInverseFactorial[n];
+  }
+
   if (start.u2 != model.gap) {
     m_contactOrder = 0;
   } else {
@@ -65,11 +72,13 @@ Flight::Flight(const Model& model, const Modes& modes, const State& start)
     while (m_contactOrder <= kTaylorOrder && gapDerivative(m_contactOrder) == 0) ++m_contactOrder;
   }
 
-  m_taylorRadius = 0.5 / modes.omegaFast;
+  // the Taylor form is needed only where u2 - gap is small against its amplitude, so that the
+  // modal sum would lose it; 0.1 / w_fast keeps the series short (13 terms at most)
+  m_taylorRadius = 0.1 / modes.omegaFast;
   m_gapAmplitude = 0;
   m_accelerationBound = 0;
   for (int j = 0; j < 2; ++j) {
-    const double amplitude = std::hypot(m_alpha(j), m_beta(j));
+    const double amplitude = std::sqrt(m_alpha(j) * m_alpha(j) + m_beta(j) * m_beta(j));
     m_gapAmplitude += amplitude;
     m_accelerationBound += amplitude * omega(j) * omega(j);
   }
@@ -81,8 +90,22 @@ double Flight::gapDerivative(int n) const {
 }
 
 double Flight::reduce(double t) const {
-  // remainder() is exact, so the reduced time carries no new rounding
-  return m_modes.resonant ? std::remainder(t, m_modes.T2) : t;
+  if (!m_modes.resonant) return t;
+  // one period off covers every contact search; t - T2 is exact there (Sterbenz), and the
+  // general remainder() (exact too, but slow) serves the rest
+  const double half = 0.5 * m_modes.T2;
+  if (t >= -half && t <= half) return t;
+  if (t > half && t <= 2 * m_modes.T2) return t - m_modes.T2;
+  if (t < -half && t >= -2 * m_modes.T2) return t + m_modes.T2;
+  return std::remainder(t, m_modes.T2);
+}
+
+int Flight::taylorTerms(double s) const {
+  // enough terms for (w_fast |s|)^n / n! to fall below 1e-19
+  const double x = m_modes.omegaFast * std::abs(s);
+  if (x <= 0.01) return 8;
+  if (x <= 0.04) return 10;
+  return kTaylorOrder;  // x <= 0.1 inside the Taylor window: 0.1^14 / 14! < 1e-24
 }
 
 State Flight::at(double t) const {
@@ -94,36 +117,41 @@ State Flight::taylorAt(double s) const {
   // Horner on sum d_n s^n / n!, from the highest order down
   Eigen::Vector2d position = Eigen::Vector2d::Zero();
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
-  for (int n = kTaylorOrder; n >= 0; --n) {
+  for (int n = taylorTerms(s); n >= 0; --n) {
     position = position * s + m_derivatives[n] * kInverseFactorial[n];
     velocity = velocity * s + m_derivatives[n + 1] * kInverseFactorial[n];
   }
   return {position(0), position(1), velocity(0), velocity(1)};
 }
 
-State Flight::modalAt(double s) const {
-  Phase fast;
-  Phase slow;
+Flight::Increments Flight::modalPhases(double s) const {
+  Increments phases;
   if (m_modes.resonant) {
     // the fast phase is exactly twice the slow one: one sincos serves both
     const double halfSlow = 0.5 * m_modes.omegaSlow * s;
-    slow = phaseOf(std::sin(halfSlow), std::cos(halfSlow));
+    const Phase slow = phaseOf(std::sin(halfSlow), std::cos(halfSlow));
     const double cosSlow = 1.0 + slow.cosineMinusOne;
-    fast = {2.0 * slow.sine * cosSlow, -2.0 * slow.sine * slow.sine};
+    phases.sine = {2.0 * slow.sine * cosSlow, slow.sine};
+    phases.cosineMinusOne = {-2.0 * slow.sine * slow.sine, slow.cosineMinusOne};
   } else {
     const double halfFast = 0.5 * m_modes.omegaFast * s;
     const double halfSlow = 0.5 * m_modes.omegaSlow * s;
-    fast = phaseOf(std::sin(halfFast), std::cos(halfFast));
-    slow = phaseOf(std::sin(halfSlow), std::cos(halfSlow));
+    const Phase fast = phaseOf(std::sin(halfFast), std::cos(halfFast));
+    const Phase slow = phaseOf(std::sin(halfSlow), std::cos(halfSlow));
+    phases.sine = {fast.sine, slow.sine};
+    phases.cosineMinusOne = {fast.cosineMinusOne, slow.cosineMinusOne};
   }
-  const Phase phases[2] = {fast, slow};
-  const double omega[2] = {m_modes.omegaFast, m_modes.omegaSlow};
+  return phases;
+}
+
+State Flight::modalAt(double s) const {
+  const Increments phases = modalPhases(s);
   Eigen::Vector2d dq;
   Eigen::Vector2d dqDot;
   for (int j = 0; j < 2; ++j) {
-    const double amplitudeRatio = m_qDot(j) / omega[j];
-    dq(j) = m_q(j) * phases[j].cosineMinusOne + amplitudeRatio * phases[j].sine;
-    dqDot(j) = omega[j] * (-m_q(j) * phases[j].sine + amplitudeRatio * phases[j].cosineMinusOne);
+    dq(j) = m_q(j) * phases.cosineMinusOne[j] + m_amplitudeRatio(j) * phases.sine[j];
+    dqDot(j) = m_omega(j) *
+               (-m_q(j) * phases.sine[j] + m_amplitudeRatio(j) * phases.cosineMinusOne[j]);
   }
   const Eigen::Vector2d du = m_modes.P * dq;
   const Eigen::Vector2d dv = m_modes.P * dqDot;
@@ -134,17 +162,27 @@ std::pair<double, double> Flight::gapAndRate(double t) const {
   const double s = reduce(t);
   if (std::abs(s) <= m_taylorRadius) {
     // value = sum_n c_n s^n / n!,  rate = sum_n c_(n+1) s^n / n!
+    // both Horner sums in one pass over interleaved coefficients
     double value = 0;
     double rate = 0;
-    for (int n = kTaylorOrder; n >= 0; --n) {
-      value = value * s + gapDerivative(n) * kInverseFactorial[n];
-      rate = rate * s + m_derivatives[n + 1](1) * kInverseFactorial[n];
+    for (int n = taylorTerms(s); n >= 0; --n) {
+      const double* pair = &m_gapAndRateSeries[2 * n];
+      value = value * s + pair[0];
+      rate = rate * s + pair[1];
     }
     return {value, rate};
   }
-  const State state = modalAt(s);
-  // u2 - gap as (u2(0) - gap) + increment: the increment is what modalAt computed
-  return {(m_start.u2 - m_model.gap) + (state.u2 - m_start.u2), state.v2};
+  // only the mass-2 row of the modal sum: u2 - gap as (u2(0) - gap) + increment
+  const Increments phases = modalPhases(s);
+  double gapIncrement = 0;
+  double rateIncrement = 0;
+  for (int j = 0; j < 2; ++j) {
+    gapIncrement += m_modes.P(1, j) * (m_q(j) * phases.cosineMinusOne[j] +
+                                       m_amplitudeRatio(j) * phases.sine[j]);
+    rateIncrement += m_modes.P(1, j) * m_omega(j) *
+                     (-m_q(j) * phases.sine[j] + m_amplitudeRatio(j) * phases.cosineMinusOne[j]);
+  }
+  return {(m_start.u2 - m_model.gap) + gapIncrement, m_start.v2 + rateIncrement};
 }
 
 double Flight::acceleration2(double t) const {
@@ -159,15 +197,30 @@ double Flight::acceleration2(double t) const {
   return acceleration;
 }
 
+std::pair<double, double> Flight::gapAndAccelerationAtPhase(double sine,
+                                                           double cosineMinusOne) const {
+  // fast phase 2 theta: sin 2th = 2 sin th cos th, cos 2th - 1 = -2 sin^2 th
+  const double sines[2] = {2.0 * sine * (1.0 + cosineMinusOne), sine};
+  const double cosinesMinusOne[2] = {-2.0 * sine * sine, cosineMinusOne};
+  double gap = m_start.u2 - m_model.gap;
+  double acceleration = 0;
+  for (int j = 0; j < 2; ++j) {
+    gap += m_modes.P(1, j) * (m_q(j) * cosinesMinusOne[j] + m_amplitudeRatio(j) * sines[j]);
+    acceleration -= m_omega(j) * m_omega(j) *
+                    (m_alpha(j) * (1.0 + cosinesMinusOne[j]) + m_beta(j) * sines[j]);
+  }
+  return {gap, acceleration};
+}
+
 std::pair<double, double> Flight::reducedGapAndRate(double x, int m) const {
   if (m == 0) return gapAndRate(x);
   if (std::abs(x) <= m_taylorRadius) {
     // g(x) = sum_{n>=m} c_n x^(n-m) / n!,  g'(x) = sum_{n>m} c_n (n-m) x^(n-m-1) / n!
     double value = 0;
     double rate = 0;
-    for (int n = kTaylorOrder; n >= m; --n) {
+    for (int n = std::max(taylorTerms(x), m); n >= m; --n) {
       rate = rate * x + value;
-      value = value * x + gapDerivative(n) * kInverseFactorial[n];
+      value = value * x + m_gapAndRateSeries[2 * n];
     }
     return {value, rate};
   }

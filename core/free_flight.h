@@ -57,6 +57,11 @@ class Flight {
   /// d^2 u2 / dt^2 at time t (modal form).
   double acceleration2(double t) const;
 
+  /// Resonant flights only: (u2 - gap, d^2 u2 / dt^2) at the slow phase theta = w2 t, given
+  /// sin(theta) and cos(theta) - 1. The contact search knows these rationally from tan(theta/2),
+  /// so no trigonometric function is called.
+  std::pair<double, double> gapAndAccelerationAtPhase(double sine, double cosineMinusOne) const;
+
   /// (g, g') for g(x) = (u2(x) - gap) / x^m, the gap with its m-fold zero at the start removed.
   /// Used for flights that start on the stop, where u2 - gap has a zero of order m at x = 0
   /// (and at x = T2 in the resonant case). For a resonant chain x may be negative (time before
@@ -70,7 +75,7 @@ class Flight {
   int contactOrder() const { return m_contactOrder; }
 
   /// Half-width of the time window around the start (and its T2 repeats) where the Taylor form
-  /// is used: w_fast |t| <= 1/2.
+  /// is used: w_fast |t| <= 1/10.
   double taylorRadius() const { return m_taylorRadius; }
   /// Bound on |u2(t) - u2(0)| / 2: the amplitude of the gap function.
   double gapAmplitude() const { return m_gapAmplitude; }
@@ -84,13 +89,21 @@ class Flight {
   const Eigen::Vector2d& alpha() const { return m_alpha; }
   const Eigen::Vector2d& beta() const { return m_beta; }
 
-  static constexpr int kTaylorOrder = 22;
+  static constexpr int kTaylorOrder = 13;
 
  private:
+  // (sin(w_j s), cos(w_j s) - 1) for both modes, j = 0 fast, 1 slow
+  struct Increments {
+    std::array<double, 2> sine;
+    std::array<double, 2> cosineMinusOne;
+  };
+  Increments modalPhases(double s) const;
   State modalAt(double t) const;
   State taylorAt(double s) const;
   // time reduced to the nearest start repeat: t itself, or t - k T2 for a resonant chain
   double reduce(double t) const;
+  // highest order needed for the Taylor sums at offset s (|s| <= taylorRadius)
+  int taylorTerms(double s) const;
 
   Model m_model;
   Modes m_modes;
@@ -98,10 +111,14 @@ class Flight {
   bool m_startsOnStop = false;
   Eigen::Vector2d m_q;     // modal coordinates P^-1 u at the start
   Eigen::Vector2d m_qDot;  // modal velocities P^-1 v at the start
+  Eigen::Vector2d m_omega;           // (w_fast, w_slow)
+  Eigen::Vector2d m_amplitudeRatio;  // q'_j / w_j
   Eigen::Vector2d m_alpha;
   Eigen::Vector2d m_beta;
   // d^n u / dt^n at the start, n = 0 .. kTaylorOrder + 1 (the extra one for velocities)
   std::array<Eigen::Vector2d, kTaylorOrder + 2> m_derivatives;
+  // interleaved (c_n / n!, c_(n+1) / n!), c_0 = u2 - gap: the Taylor sums of u2 - gap and v2
+  std::array<double, 2 * (kTaylorOrder + 1)> m_gapAndRateSeries;
   int m_contactOrder = 0;
   double m_taylorRadius = 0;
   double m_gapAmplitude = 0;

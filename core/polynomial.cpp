@@ -31,12 +31,12 @@ double evaluate(const std::array<double, N>& c, double x, double* derivative) {
   return value;
 }
 
-// two Newton steps, each kept only when it lowers |p|
+// one Newton step, kept only when it lowers |p| (closed forms are already close)
 template <std::size_t N>
 double polish(const std::array<double, N>& c, double x) {
   double slope = 0;
   double residual = std::abs(evaluate(c, x, &slope));
-  for (int step = 0; step < 2 && residual > 0 && slope != 0; ++step) {
+  for (int step = 0; step < 1 && residual > 0 && slope != 0; ++step) {
     const double candidate = x - evaluate(c, x, &slope) / slope;
     double unused = 0;
     const double candidateResidual = std::abs(evaluate(c, candidate, &unused));

@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// The explorer: argument parsing and wiring only (ui/ does the work).
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QTextStream>
+
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ui/headless.h"
+#include "ui/latency_bench.h"
+#include "ui/main_window.h"
+
+namespace {
+
+// QGuiApplication takes "-session"/"--session" for X11 session management and removes it from
+// the arguments, so ours is renamed before Qt sees it.
+std::vector<std::string> renameSessionOption(int argc, char* argv[]) {
+  std::vector<std::string> arguments(argv, argv + argc);
+  for (std::string& argument : arguments) {
+    for (const char* prefix : {"--session", "-session"}) {
+      const std::string_view text(argument);
+      const std::size_t length = std::strlen(prefix);
+      if (text.substr(0, length) == prefix && (text.size() == length || text[length] == '=')) {
+        argument = "--session-file" + argument.substr(length);
+        break;
+      }
+    }
+  }
+  return arguments;
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  std::vector<std::string> arguments = renameSessionOption(argc, argv);
+  std::vector<char*> pointers;
+  for (std::string& argument : arguments) pointers.push_back(argument.data());
+  pointers.push_back(nullptr);
+  int count = argc;
+  QApplication app(count, pointers.data());
+  QApplication::setOrganizationName(QStringLiteral("GrazeLab"));
+  QApplication::setApplicationName(QStringLiteral("grazelab"));
+  QApplication::setApplicationDisplayName(QStringLiteral("GrazeLab"));
+  QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription(QApplication::translate(
+      "main", "Explore a two-mass chain against a rigid stop in 1:2 internal resonance."));
+  parser.addHelpOption();
+  parser.addVersionOption();
+  const QCommandLineOption listScenes(QStringLiteral("list-scenes"),
+                                      QApplication::translate("main", "Print the scene names, one per line."));
+  const QCommandLineOption scene(QStringLiteral("scene"),
+                                 QApplication::translate("main", "Scene to open or render."),
+                                 QStringLiteral("NAME"));
+  const QCommandLineOption session(QStringList{QStringLiteral("session"), QStringLiteral("session-file")},
+                                   QApplication::translate("main", "Session file (JSON) to open."),
+                                   QStringLiteral("FILE"));
+  const QCommandLineOption snapshot(
+      QStringLiteral("snapshot"),
+      QApplication::translate("main", "Render the scene to a .png, .svg or .pdf file and exit."),
+      QStringLiteral("FILE"));
+  const QCommandLineOption size(QStringLiteral("size"),
+                                QApplication::translate("main", "Snapshot size in pixels, WxH."),
+                                QStringLiteral("WxH"), QStringLiteral("1600x1000"));
+  const QCommandLineOption bench(QStringLiteral("bench"),
+                                 QApplication::translate("main", "Measure plot latency and drag frame rate."));
+  parser.addOptions({listScenes, scene, session, snapshot, size, bench});
+  parser.process(app);
+
+  QTextStream out(stdout);
+  QTextStream err(stderr);
+  if (parser.isSet(listScenes)) {
+    for (const QString& name : grazelab::ui::sceneNames()) out << name << '\n';
+    return 0;
+  }
+  if (parser.isSet(bench)) return grazelab::ui::runLatencyBenchmark(out);
+  if (parser.isSet(snapshot)) {
+    const QStringList parts = parser.value(size).split(QLatin1Char('x'));
+    const QSize pixels = parts.size() == 2 ? QSize(parts[0].toInt(), parts[1].toInt()) : QSize();
+    if (pixels.width() < 200 || pixels.height() < 150) {
+      err << "grazelab: --size must be WxH with W >= 200 and H >= 150\n";
+      return 2;
+    }
+    if (!parser.isSet(scene) && !parser.isSet(session)) {
+      err << "grazelab: --snapshot needs --scene NAME or --session FILE\n";
+      return 2;
+    }
+    QString error;
+    if (!grazelab::ui::renderSceneSnapshot(parser.value(scene), parser.value(session),
+                                           parser.value(snapshot), pixels, &error)) {
+      err << "grazelab: " << error << '\n';
+      return 1;
+    }
+    return 0;
+  }
+
+  grazelab::ui::MainWindow window({});
+  QString error;
+  if (parser.isSet(session) && !window.openSession(parser.value(session), &error)) {
+    err << "grazelab: " << error << '\n';
+  }
+  if (parser.isSet(scene)) {
+    const int index = grazelab::ui::findScene(window.scenes(), parser.value(scene));
+    if (index < 0) err << "grazelab: unknown scene \"" << parser.value(scene) << "\"\n";
+    else window.selectScene(index);
+  }
+  window.show();
+  return app.exec();
+}

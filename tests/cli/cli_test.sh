@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 GrazeLab developers
+# The command-line contract of DESIGN.md: outputs on success, exit 2 with one line on stderr and
+# nothing on stdout for every invalid input.
+set -u
+cli="$1"
+failures=0
+out=$(mktemp)
+err=$(mktemp)
+trap 'rm -f "$out" "$err"' EXIT
+
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+expect_invalid() {
+  "$cli" "$@" >"$out" 2>"$err"
+  local code=$?
+  if [ "$code" -ne 2 ]; then fail "exit $code, not 2, for: $*"; return; fi
+  if [ -s "$out" ]; then fail "stdout not empty for: $*"; fi
+  if [ "$(wc -l <"$err")" -ne 1 ]; then fail "stderr is not one line for: $* -> $(cat "$err")"; fi
+  if [ -n "${EXPECT_WORD:-}" ] && ! grep -q -- "$EXPECT_WORD" "$err"; then
+    fail "stderr lacks '$EXPECT_WORD' for: $* -> $(cat "$err")"
+  fi
+}
+
+expect_ok() {
+  "$cli" "$@" >"$out" 2>"$err"
+  local code=$?
+  if [ "$code" -ne 0 ]; then fail "exit $code for: $* -> $(cat "$err")"; return 1; fi
+  return 0
+}
+
+# invalid input, each with the word its message must contain
+for bad in 0 -1 nan inf -inf abc; do
+  EXPECT_WORD=m1 expect_invalid simulate --m1 "$bad"
+  EXPECT_WORD=gap expect_invalid info --gap "$bad"
+  EXPECT_WORD=k2 expect_invalid simulate --k2 "$bad"
+done
+EXPECT_WORD=m2 expect_invalid simulate --m2 nan
+EXPECT_WORD=k1 expect_invalid info --k1 0
+EXPECT_WORD="9/16" expect_invalid info --m2 0.6
+EXPECT_WORD="9/16" expect_invalid simulate --m2 0.6 --branch lower
+EXPECT_WORD=branch expect_invalid simulate --branch middle
+EXPECT_WORD=exclude expect_invalid simulate --k2 0.5 --branch upper
+EXPECT_WORD="past the stop" expect_invalid simulate --state 0,1.5,0,0
+EXPECT_WORD="past the stop" expect_invalid simulate --glo 0.5 --perturb 0,0.1,0,0
+EXPECT_WORD=state expect_invalid simulate --state 1,2,3
+EXPECT_WORD=u1 expect_invalid simulate --state nan,0,0,0
+EXPECT_WORD=perturb expect_invalid simulate --perturb 0,0,x,0
+EXPECT_WORD=glo expect_invalid simulate --glo inf
+EXPECT_WORD=onepp expect_invalid simulate --onepp 9.5
+EXPECT_WORD=onepp expect_invalid simulate --onepp -1
+EXPECT_WORD=contacts expect_invalid simulate --contacts -5
+EXPECT_WORD=contacts expect_invalid simulate --contacts 1.5
+EXPECT_WORD=t-end expect_invalid simulate --t-end nan
+EXPECT_WORD=format expect_invalid simulate --format xml
+EXPECT_WORD="one of" expect_invalid simulate --glo 0.5 --state 0,0,0,0
+EXPECT_WORD=simulate expect_invalid info --glo 0.5
+EXPECT_WORD=unknown expect_invalid frobnicate
+EXPECT_WORD=command expect_invalid
+EXPECT_WORD=Unknown expect_invalid simulate --no-such-flag
+EXPECT_WORD=Missing expect_invalid simulate --m1
+
+# info: the derived quantities of the m2 = 1/2 chain
+if expect_ok info; then
+  python3 - "$out" <<'PY' || fail "info JSON"
+import json, math, sys
+model = json.load(open(sys.argv[1]))["model"]
+assert abs(model["k2"] - 0.5) < 1e-15, model["k2"]
+assert abs(model["omega1"] ** 2 - 2) < 1e-14 and abs(model["omega2"] ** 2 - 0.5) < 1e-14
+assert abs(model["T2"] - 2 * model["T1"]) < 1e-14 and model["resonant"] is True
+assert abs(model["lambda_star"] - 8 / 9) < 1e-15
+PY
+fi
+if expect_ok info --branch lower; then
+  python3 -c "import json,sys; m=json.load(open('$out'))['model']; assert abs(m['k2']-2/9)<1e-15" \
+    || fail "lower branch k2"
+fi
+
+# simulate json: fields, types, round-trip numbers, grazing GLO every T2
+if expect_ok simulate --glo 0.5 --contacts 3; then
+  python3 - "$out" <<'PY' || fail "simulate JSON (grazing)"
+import json, sys
+doc = json.load(open(sys.argv[1]))
+for key in ("model", "events", "final", "energy", "timing"):
+    assert key in doc, key
+T2 = doc["model"]["T2"]
+assert [e["type"] for e in doc["events"]] == ["grazing"] * 3
+for k, e in enumerate(doc["events"], 1):
+    assert abs(e["t"] - k * T2) <= 1e-14 * k * T2, (e["t"], k * T2)
+    assert set(e) == {"t", "type", "u1", "u2", "v1", "v2_pre", "v2_post"}
+assert set(doc["final"]) == {"t", "u1", "u2", "v1", "v2"}
+assert set(doc["energy"]) >= {"initial", "max_rel_drift"}
+assert set(doc["timing"]) >= {"seconds", "contacts_per_second"}
+PY
+fi
+if expect_ok simulate --glo 0.5 --perturb 0,0,0,-1e-3 --contacts 5; then
+  python3 - "$out" <<'PY' || fail "simulate JSON (impacts)"
+import json, sys
+doc = json.load(open(sys.argv[1]))
+events = doc["events"]
+assert [e["type"] for e in events] == ["impact"] * 5
+for e in events:
+    assert e["v2_pre"] > 0 and e["v2_post"] == -e["v2_pre"] and e["u2"] == 1
+    assert e["t"] < 10 * doc["model"]["T2"]
+PY
+fi
+if expect_ok simulate --glo 1.5 --contacts 3; then
+  python3 -c "
+import json; d=json.load(open('$out')); t=[e['type'] for e in d['events']]
+assert t[:2]==['stick','release'] and 'impact' in t, t" || fail "sticking start"
+fi
+if expect_ok simulate --onepp 8.5 --contacts 3 --format csv; then
+  [ "$(head -1 "$out")" = "t,type,u1,u2,v1,v2_pre,v2_post" ] || fail "csv header"
+  [ "$(grep -c ',impact,' "$out")" -eq 3 ] || fail "1IPP csv rows"
+fi
+if expect_ok simulate --glo 0.5 --perturb 0,0,0,-0.05 --contacts 1000 --format summary; then
+  grep -q "contacts       1000 (impacts 1000" "$out" || fail "summary counts: $(cat "$out")"
+fi
+if expect_ok simulate --k2 0.45 --state=-0.25,1,0,-0.05 --t-end 50; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['model']['resonant'] is False and d['final']['t']==50 and d['stop_reason']=='time-limit'" \
+    || fail "detuned run to t-end"
+fi
+
+if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
+echo "all CLI contract checks passed"

@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for core/contact.cpp: contact times against independent computations (a dense scan of
+// the plain closed form, and the detuned march run on a resonant chain), and the precise
+// handling of near-grazing returns.
+#include "core/contact.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/simulate.h"
+
+#include "support/cases.h"
+
+namespace grazelab::core {
+namespace {
+
+// u2(t) - gap from the textbook modal formula, written independently of Flight
+double naiveGap(const Model& model, const Modes& modes, const State& start, double t) {
+  const Eigen::Vector2d q = modes.Pinv * Eigen::Vector2d(start.u1, start.u2);
+  const Eigen::Vector2d qDot = modes.Pinv * Eigen::Vector2d(start.v1, start.v2);
+  const double omega[2] = {modes.omegaFast, modes.omegaSlow};
+  double u2 = 0;
+  for (int j = 0; j < 2; ++j) {
+    u2 += modes.P(1, j) * (q(j) * std::cos(omega[j] * t) + qDot(j) / omega[j] * std::sin(omega[j] * t));
+  }
+  return u2 - model.gap;
+}
+
+// first sign change of the naive gap on a fine grid, refined by bisection; -1 if none
+double scanFirstContact(const Model& model, const Modes& modes, const State& start, double horizon) {
+  const int samples = 200000;
+  double previousT = 0;
+  double previous = naiveGap(model, modes, start, 0.0);
+  for (int i = 1; i <= samples; ++i) {
+    const double t = horizon * i / samples;
+    const double value = naiveGap(model, modes, start, t);
+    if (previous < 0 && value >= 0) {
+      double a = previousT;
+      double b = t;
+      for (int k = 0; k < 80; ++k) {
+        const double mid = 0.5 * (a + b);
+        (naiveGap(model, modes, start, mid) < 0 ? a : b) = mid;
+      }
+      return 0.5 * (a + b);
+    }
+    previousT = t;
+    previous = value;
+  }
+  return -1;
+}
+
+// states strictly below the stop whose flight crosses it transversally
+std::vector<State> randomStarts(const Model& model, int count, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  std::vector<State> starts;
+  while (static_cast<int>(starts.size()) < count) {
+    State s{uniform(random), uniform(random), uniform(random), uniform(random)};
+    s = model.gap * s;
+    s.u2 = std::min(s.u2, 0.9 * model.gap);
+    starts.push_back(s);
+  }
+  return starts;
+}
+
+TEST(Contact, ResonantTimesMatchADenseScan) {
+  for (const auto& chain : testing::resonantChains()) {
+    const Model& model = chain.model;
+    const Modes modes = computeModes(model);
+    int compared = 0;
+    for (const State& start : randomStarts(model, 60, 7)) {
+      const Flight flight(model, modes, start);
+      const Contact contact = nextContact(flight, kInfinity);
+      const double scanned = scanFirstContact(model, modes, start, modes.T2);
+      if (scanned < 0) {
+        EXPECT_NE(contact.kind, ContactKind::Crossing) << chain.name;
+        continue;
+      }
+      // a transversal crossing: the scan is reliable there
+      if (std::abs(flight.at(scanned).v2) < 1e-3 * modes.omegaSlow * model.gap) continue;
+      ASSERT_EQ(contact.kind, ContactKind::Crossing) << chain.name;
+      EXPECT_NEAR(contact.time.value(modes.T2), scanned, 1e-10 * modes.T2) << chain.name;
+      ++compared;
+    }
+    EXPECT_GT(compared, 10) << chain.name;
+  }
+}
+
+TEST(Contact, DetunedTimesMatchADenseScan) {
+  const Model model = testing::detunedChain();
+  const Modes modes = computeModes(model);
+  int compared = 0;
+  for (const State& start : randomStarts(model, 60, 11)) {
+    const Flight flight(model, modes, start);
+    const double horizon = 3 * modes.T2;
+    const Contact contact = nextContact(flight, horizon);
+    const double scanned = scanFirstContact(model, modes, start, horizon);
+    if (scanned < 0 || std::abs(flight.at(scanned).v2) < 1e-3 * modes.omegaSlow) continue;
+    ASSERT_EQ(contact.kind, ContactKind::Crossing);
+    EXPECT_NEAR(contact.time.value(modes.T2), scanned, 1e-10 * modes.T2);
+    ++compared;
+  }
+  EXPECT_GT(compared, 10);
+}
+
+TEST(Contact, QuarticSearchAndSafeMarchAgreeOnResonantFlights) {
+  // the march knows nothing of polynomials: run it on the same resonant chain
+  const Model model = testing::resonantChain(0.5);
+  const Modes modes = computeModes(model);
+  Modes marched = modes;
+  marched.resonant = false;
+  int compared = 0;
+  for (const State& start : randomStarts(model, 200, 3)) {
+    const Contact quartic = nextContact(Flight(model, modes, start), kInfinity);
+    const Contact march = nextContact(Flight(model, marched, start), 1.01 * modes.T2);
+    ASSERT_EQ(quartic.kind == ContactKind::None, march.kind == ContactKind::None);
+    if (quartic.kind != ContactKind::Crossing) continue;
+    EXPECT_NEAR(quartic.time.value(modes.T2), march.time.value(modes.T2), 1e-11 * modes.T2);
+    ++compared;
+  }
+  EXPECT_GT(compared, 50);
+}
+
+TEST(Contact, CriticalTimesAreStationaryPointsOfTheGap) {
+  const Model model = testing::resonantChain(0.5, 1.0, Branch::Lower);
+  const Modes modes = computeModes(model);
+  for (const State& start : randomStarts(model, 50, 5)) {
+    const Flight flight(model, modes, start);
+    const CriticalPoints points = criticalPointsResonant(flight);
+    EXPECT_GE(points.count, 2);  // a periodic motion has a highest and a lowest point
+    for (const CriticalPoint& point : points) {
+      EXPECT_NEAR(flight.gapAndRate(point.time).second, 0.0, 1e-9 * modes.omegaSlow * model.gap);
+      EXPECT_NEAR(point.gap, flight.gap(point.time), 1e-14 * model.gap);
+      EXPECT_NEAR(point.acceleration, flight.acceleration2(point.time),
+                  1e-12 * modes.omegaFast * modes.omegaFast * model.gap);
+    }
+  }
+}
+
+TEST(Contact, NearGrazingReturnIsResolvedToRelativePrecision) {
+  // GLO_0.5 data with v2 = -eps: it hits at T2 - s*, s* = -2 v2 / acc2 (1 + O(eps)), arriving
+  // with exactly the speed it left with; plain evaluation of u2 - gap would call it a grazing
+  const Model model = testing::resonantChain(0.5);
+  const Modes modes = computeModes(model);
+  for (double eps : {1e-4, 1e-8, 1e-12, 1e-16, 1e-30, 1e-100, 1e-300}) {
+    State start = gloData(model, modes, 0.5);
+    start.v2 = -eps;
+    const Flight flight(model, modes, start);
+    const Contact contact = nextContact(flight, kInfinity);
+    ASSERT_EQ(contact.kind, ContactKind::Crossing) << eps;
+    ASSERT_TRUE(contact.time.fromReturn) << eps;
+    const double acc2 = model.k2 * (start.u1 - model.gap) / model.m2;
+    const double predicted = -2 * start.v2 / acc2;
+    EXPECT_NEAR(contact.time.offset / predicted, 1.0, eps < 1e-6 ? 1e-10 : 1e-2) << eps;
+    EXPECT_NEAR(flight.at(contact.time).v2 / eps, 1.0, eps < 1e-6 ? 1e-10 : 1e-6) << eps;
+  }
+}
+
+TEST(Contact, GrazingOrbitsTouchOnceAtT2) {
+  const Model model = testing::resonantChain(0.5);
+  const Modes modes = computeModes(model);
+  for (double lambda : {0.01, 0.25, 0.5, 1.0, 1.2, 4.0 / 3.0}) {
+    const Flight flight(model, modes, gloData(model, modes, lambda));
+    const Contact contact = nextContact(flight, kInfinity);
+    EXPECT_EQ(contact.kind, ContactKind::Tangent) << lambda;
+    EXPECT_EQ(contact.time.value(modes.T2), modes.T2) << lambda;
+  }
+  // GLOM1 alone touches twice per slow period: at T1 = T2 / 2
+  const Flight fast(model, modes, gloData(model, modes, 0.0));
+  const Contact contact = nextContact(fast, kInfinity);
+  EXPECT_EQ(contact.kind, ContactKind::Tangent);
+  EXPECT_NEAR(contact.time.value(modes.T2), modes.T1, 1e-12 * modes.T2);
+}
+
+TEST(Contact, NegativeLambdaCrossesBeforeTheReturn) {
+  const Model model = testing::resonantChain(0.5);
+  const Modes modes = computeModes(model);
+  const Flight flight(model, modes, gloData(model, modes, -0.3));
+  const Contact contact = nextContact(flight, kInfinity);
+  EXPECT_EQ(contact.kind, ContactKind::Crossing);
+  EXPECT_LT(contact.time.value(modes.T2), modes.T2);
+  EXPECT_GT(flight.at(contact.time).v2, 0);
+}
+
+TEST(Contact, SmallMotionBelowTheStopNeverArrives) {
+  const Model model = testing::resonantChain(0.5);
+  const Modes modes = computeModes(model);
+  const Flight flight(model, modes, {0.1, 0.2, 0.0, 0.1});
+  EXPECT_EQ(nextContact(flight, kInfinity).kind, ContactKind::None);
+  const Model detuned = testing::detunedChain();
+  const Flight detunedFlight(detuned, computeModes(detuned), {0.1, 0.2, 0.0, 0.1});
+  EXPECT_EQ(nextContact(detunedFlight, 50.0).kind, ContactKind::None);
+}
+
+}  // namespace
+}  // namespace grazelab::core

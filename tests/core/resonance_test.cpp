@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for core/resonance.cpp.
+#include "core/resonance.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/modes.h"
+
+namespace grazelab::core {
+namespace {
+
+TEST(Resonance, HalfMassGivesTheKnownStiffnesses) {
+  EXPECT_NEAR(*resonantK2(1, 0.5, 1, Branch::Upper), 0.5, 1e-15);
+  EXPECT_NEAR(*resonantK2(1, 0.5, 1, Branch::Lower), 2.0 / 9.0, 1e-15);
+}
+
+TEST(Resonance, StiffnessScalesWithK1AndDependsOnlyOnTheMassRatio) {
+  EXPECT_NEAR(*resonantK2(3, 1.5, 7, Branch::Upper), 3.5, 1e-14);
+  EXPECT_NEAR(*resonantK2(3, 1.5, 7, Branch::Lower), 7 * 2.0 / 9.0, 1e-14);
+}
+
+TEST(Resonance, BranchesMergeAtNineSixteenths) {
+  const double upper = *resonantK2(1, 9.0 / 16.0, 1, Branch::Upper);
+  const double lower = *resonantK2(1, 9.0 / 16.0, 1, Branch::Lower);
+  EXPECT_NEAR(upper, 0.36, 1e-15);
+  EXPECT_NEAR(lower, 0.36, 1e-15);
+  const Modes modes = computeModes({1, 9.0 / 16.0, 1, upper, 1});
+  EXPECT_NEAR(modes.omegaFast * modes.omegaFast, 1.6, 1e-13);
+  EXPECT_NEAR(modes.omegaSlow * modes.omegaSlow, 0.4, 1e-13);
+}
+
+TEST(Resonance, NoChainBeyondNineSixteenths) {
+  EXPECT_FALSE(resonantK2(1, std::nextafter(9.0 / 16.0, 1.0), 1, Branch::Upper));
+  EXPECT_FALSE(resonantK2(1, 0.6, 1, Branch::Lower));
+  EXPECT_FALSE(resonantK2(1, 5, 1, Branch::Upper));
+}
+
+TEST(Resonance, BadInputGivesNothing) {
+  EXPECT_FALSE(resonantK2(0, 0.5, 1, Branch::Upper));
+  EXPECT_FALSE(resonantK2(1, -0.5, 1, Branch::Upper));
+  EXPECT_FALSE(resonantK2(1, std::nan(""), 1, Branch::Upper));
+  EXPECT_FALSE(resonantK2(1, 0.5, INFINITY, Branch::Upper));
+}
+
+TEST(Resonance, EveryFeasibleRatioGivesOneToTwoOnBothBranches) {
+  for (double beta = 1e-6; beta <= 9.0 / 16.0; beta *= 1.37) {
+    for (Branch branch : {Branch::Upper, Branch::Lower}) {
+      const double k2 = *resonantK2(1, beta, 1, branch);
+      const Modes modes = computeModes({1, beta, 1, k2, 1});
+      EXPECT_TRUE(modes.resonant) << "beta " << beta << " " << toString(branch);
+      EXPECT_LT(std::abs(modes.detuning), 1e-13) << "beta " << beta << " " << toString(branch);
+    }
+  }
+}
+
+TEST(Resonance, BranchNamesRoundTrip) {
+  EXPECT_EQ(parseBranch(toString(Branch::Upper)), Branch::Upper);
+  EXPECT_EQ(parseBranch(toString(Branch::Lower)), Branch::Lower);
+  EXPECT_FALSE(parseBranch("middle"));
+}
+
+}  // namespace
+}  // namespace grazelab::core

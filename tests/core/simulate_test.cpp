@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for core/simulate.cpp: requests, limits, cancellation, outputs, invalid input.
+#include "core/simulate.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "core/free_flight.h"
+#include "core/sticking.h"
+#include "support/cases.h"
+
+namespace grazelab::core {
+namespace {
+
+Request nearGrazingRequest(const Model& model, std::int64_t contacts) {
+  Request request;
+  request.initial = testing::nearGrazingStart(model, 0.5, 0.05);
+  request.maxContacts = contacts;
+  return request;
+}
+
+TEST(Simulate, InvalidInputIsReportedNotRun) {
+  const Model good = testing::resonantChain(0.5);
+  struct Case {
+    Model model;
+    State initial;
+    const char* field;
+  };
+  const Case cases[] = {
+      {{0, 0.5, 1, 0.5, 1}, {}, "m1"},
+      {{1, -0.5, 1, 0.5, 1}, {}, "m2"},
+      {{1, 0.5, std::nan(""), 0.5, 1}, {}, "k1"},
+      {{1, 0.5, 1, INFINITY, 1}, {}, "k2"},
+      {{1, 0.5, 1, 0.5, 0}, {}, "gap"},
+      {good, {0, 1.5, 0, 0}, "initial.u2"},
+      {good, {0, 0, std::nan(""), 0}, "initial.v1"},
+  };
+  for (const Case& c : cases) {
+    Request request;
+    request.initial = c.initial;
+    const Result result = simulate(c.model, request);
+    EXPECT_EQ(result.stop, StopReason::InvalidInput) << c.field;
+    EXPECT_NE(result.message.find(c.field), std::string::npos) << result.message;
+    EXPECT_EQ(result.cost.contacts, 0);
+  }
+  Request negative = nearGrazingRequest(good, -1);
+  EXPECT_EQ(simulate(good, negative).stop, StopReason::InvalidInput);
+}
+
+TEST(Simulate, StopsAtTheContactLimit) {
+  const Model model = testing::resonantChain(0.5);
+  const Result result = simulate(model, nearGrazingRequest(model, 37));
+  EXPECT_EQ(result.stop, StopReason::ContactLimit);
+  EXPECT_EQ(result.cost.contacts, 37);
+  ASSERT_EQ(result.events.size(), 37u);
+  EXPECT_EQ(result.tFinal, result.events.back().t);
+  EXPECT_EQ(result.final, result.events.back().after);
+}
+
+TEST(Simulate, StopsAtTheTimeLimitOnTheFlight) {
+  const Model model = testing::resonantChain(0.5);
+  Request request = nearGrazingRequest(model, 1'000'000);
+  request.tEnd = 100.0;
+  const Result result = simulate(model, request);
+  EXPECT_EQ(result.stop, StopReason::TimeLimit);
+  EXPECT_EQ(result.tFinal, 100.0);
+  EXPECT_LE(result.events.back().t, 100.0);
+  const Flight flight(model, result.modes, result.events.back().after);
+  const State expected = flight.at(100.0 - result.events.back().t);
+  EXPECT_NEAR(result.final.u1, expected.u1, 1e-12);
+  EXPECT_NEAR(result.final.v2, expected.v2, 1e-12);
+}
+
+TEST(Simulate, ChunkedRunEqualsOneShotRun) {
+  const Model model = testing::resonantChain(0.5, 1.0, Branch::Lower);
+  const Request request = nearGrazingRequest(model, 500);
+  const Result whole = simulate(model, request);
+  Simulator simulator(model, request);
+  int chunks = 0;
+  while (!simulator.advance(7)) ++chunks;
+  EXPECT_GT(chunks, 50);
+  EXPECT_EQ(simulator.result().events, whole.events);
+  EXPECT_EQ(simulator.progress(), 1.0);
+}
+
+TEST(Simulate, CancelFromAnotherThreadStopsPromptly) {
+  const Model model = testing::resonantChain(0.5);
+  Request request = nearGrazingRequest(model, std::numeric_limits<std::int64_t>::max());
+  request.needs.events = false;
+  std::stop_source source;
+  std::jthread canceller([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    source.request_stop();
+  });
+  const Result result = simulate(model, request, source.get_token());
+  EXPECT_EQ(result.stop, StopReason::Cancelled);
+  EXPECT_GT(result.cost.contacts, 0);
+  EXPECT_LT(result.cost.wallSeconds, 5.0);
+}
+
+TEST(Simulate, AlreadyCancelledDoesNothing) {
+  const Model model = testing::resonantChain(0.5);
+  std::stop_source source;
+  source.request_stop();
+  const Result result = simulate(model, nearGrazingRequest(model, 10), source.get_token());
+  EXPECT_EQ(result.stop, StopReason::Cancelled);
+  EXPECT_EQ(result.cost.contacts, 0);
+}
+
+TEST(Simulate, OnlyWhatIsNeededIsKept) {
+  const Model model = testing::resonantChain(0.5);
+  Request request = nearGrazingRequest(model, 50);
+  request.needs = {};
+  request.needs.events = false;
+  const Result bare = simulate(model, request);
+  EXPECT_TRUE(bare.events.empty());
+  EXPECT_TRUE(bare.poincare.empty());
+  EXPECT_TRUE(bare.freeFlights.empty());
+  EXPECT_TRUE(bare.samples.empty());
+  EXPECT_EQ(bare.cost.contacts, 50);
+
+  request.needs.poincare = true;
+  request.needs.freeFlights = true;
+  const Result rich = simulate(model, request);
+  EXPECT_EQ(rich.poincare.size(), 50u);
+  EXPECT_EQ(rich.freeFlights.size(), 50u);
+  EXPECT_EQ(rich.final, bare.final);
+}
+
+TEST(Simulate, SamplesAreEvenlySpacedAndBelowTheStop) {
+  const Model model = testing::resonantChain(0.5);
+  Request request = nearGrazingRequest(model, 20);
+  request.needs.samples.spacing = 0.05;
+  request.needs.samples.includeContacts = false;
+  const Result result = simulate(model, request);
+  ASSERT_GT(result.samples.size(), 100u);
+  for (std::size_t i = 0; i < result.samples.size(); ++i) {
+    EXPECT_NEAR(result.samples[i].t, 0.05 * double(i), 1e-9);
+    EXPECT_LE(result.samples[i].state.u2, model.gap + 1e-12);
+  }
+  EXPECT_LE(result.samples.back().t, result.tFinal);
+}
+
+TEST(Simulate, SampleCountIsCapped) {
+  const Model model = testing::resonantChain(0.5);
+  Request request = nearGrazingRequest(model, 20);
+  request.needs.samples.spacing = 1e-3;
+  request.needs.samples.maxCount = 1000;
+  const Result result = simulate(model, request);
+  EXPECT_EQ(result.samples.size(), 1000u);
+  EXPECT_TRUE(result.samplesTruncated);
+}
+
+TEST(Simulate, MotionBelowTheStopEndsWithNoFurtherContact) {
+  const Model model = testing::resonantChain(0.5);
+  Request request;
+  request.initial = {0.1, 0.2, 0.0, 0.1};
+  const Result result = simulate(model, request);
+  EXPECT_EQ(result.stop, StopReason::NoFurtherContact);
+  EXPECT_EQ(result.cost.contacts, 0);
+  EXPECT_FALSE(result.message.empty());
+  const Model detuned = testing::detunedChain();
+  request.flightSearchPeriods = 20;
+  EXPECT_EQ(simulate(detuned, request).stop, StopReason::SearchLimit);
+}
+
+TEST(Simulate, StartMovingIntoTheStopImpactsAtOnce) {
+  const Model model = testing::resonantChain(0.5);
+  Request request;
+  request.initial = {0.0, model.gap, 0.0, 0.7};
+  request.maxContacts = 2;
+  const Result result = simulate(model, request);
+  ASSERT_EQ(result.events.size(), 2u);
+  EXPECT_EQ(result.events[0].type, EventType::Impact);
+  EXPECT_EQ(result.events[0].t, 0.0);
+  EXPECT_EQ(result.events[0].after.v2, -0.7);
+}
+
+TEST(Simulate, PinnedReferenceSequence) {
+  // GLO_0.5 data of the upper chain pushed to v2 = -0.05: event times from the 40-digit
+  // reference of tools/reference (reference_sim.py --state=-0.25000000000000017,1,0,-0.05
+  // --double-inputs --contacts 4), which the exact solver matched to 1e-15 when pinned
+  const Model model = testing::resonantChain(0.5);
+  Request request;
+  request.initial = {-0.25000000000000017, 1.0, 0.0, -0.05};
+  request.maxContacts = 4;
+  const Result result = simulate(model, request);
+  ASSERT_EQ(result.events.size(), 4u);
+  for (const Event& event : result.events) EXPECT_EQ(event.type, EventType::Impact);
+  const double times[] = {8.80577867244994, 17.61131761650285, 26.416371092866047, 35.22068092771523};
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(result.events[i].t, times[i], 1e-12) << i;
+}
+
+}  // namespace
+}  // namespace grazelab::core

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for core/sticking.cpp.
+#include "core/sticking.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/orbits.h"
+#include "support/cases.h"
+
+namespace grazelab::core {
+namespace {
+
+TEST(Sticking, PressedOnlyWhenTheSpringPushesIntoTheStop) {
+  const Model model = testing::resonantChain(0.5);
+  EXPECT_TRUE(pressedOnStop(model, {1.2, 1.0, 0.0, 0.0}));
+  EXPECT_TRUE(pressedOnStop(model, {1.0, 1.0, 0.3, 0.0}));
+  EXPECT_FALSE(pressedOnStop(model, {1.0, 1.0, -0.3, 0.0}));
+  EXPECT_FALSE(pressedOnStop(model, {1.0, 1.0, 0.0, 0.0}));  // no force, no push: grazing
+  EXPECT_FALSE(pressedOnStop(model, {0.8, 1.0, 0.0, 0.0}));
+  EXPECT_FALSE(pressedOnStop(model, {1.2, 1.0, 0.0, -0.1}));
+  EXPECT_FALSE(pressedOnStop(model, {1.2, 0.9, 0.0, 0.0}));
+}
+
+TEST(Sticking, ReleaseWhenTheReactionVanishes) {
+  const Model model = testing::resonantChain(0.5);
+  for (const State start : {State{1.25, 1.0, 0.0, 0.0}, State{1.0, 1.0, 0.4, 0.0},
+                            State{1.0000001, 1.0, -0.2, 0.0}, State{3.0, 1.0, 2.0, 0.0}}) {
+    const StuckMotion motion(model, start);
+    const double release = motion.releaseTime();
+    ASSERT_GT(release, 0);
+    // independent check: bisection on the closed-form u1(t) - gap over a fine scan
+    const double omega = std::sqrt((model.k1 + model.k2) / model.m1);
+    const double centre = model.k2 * model.gap / (model.k1 + model.k2);
+    auto u1 = [&](double t) {
+      return centre + (start.u1 - centre) * std::cos(omega * t) + start.v1 / omega * std::sin(omega * t);
+    };
+    double a = 0;
+    double b = 0;
+    for (int i = 1; i <= 100000; ++i) {
+      b = i * (2 * M_PI / omega) / 100000;
+      if (u1(b) < model.gap) break;
+      a = b;
+    }
+    for (int k = 0; k < 80; ++k) {
+      const double mid = 0.5 * (a + b);
+      (u1(mid) >= model.gap ? a : b) = mid;
+    }
+    EXPECT_NEAR(release, 0.5 * (a + b), 1e-12 * (2 * M_PI / omega));
+    // reaction -k2 (u1 - gap) <= 0 all along the stuck phase
+    for (int i = 0; i <= 100; ++i) {
+      const State state = motion.at(release * i / 100);
+      EXPECT_GE(state.u1 - model.gap, -1e-14);
+      EXPECT_EQ(state.u2, model.gap);
+      EXPECT_EQ(state.v2, 0);
+    }
+    const State released = motion.releaseState();
+    EXPECT_EQ(released.u1, model.gap);
+    EXPECT_LE(released.v1, 0);
+  }
+}
+
+}  // namespace
+}  // namespace grazelab::core

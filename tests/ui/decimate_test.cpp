@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for ui/decimate.cpp.
+#include <QTest>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "ui/decimate.h"
+
+using grazelab::ui::decimatePath;
+using grazelab::ui::decimateScatter;
+using grazelab::ui::decimateTrace;
+using grazelab::ui::PixelFrame;
+
+class DecimateTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void traceKeepsExtremesAndEnds() {
+    std::vector<QPointF> points;
+    const int count = 1'000'000;
+    for (int i = 0; i < count; ++i) {
+      const double t = 100.0 * i / (count - 1);
+      points.emplace_back(t, std::sin(7 * t) + 0.001 * std::cos(300 * t));
+    }
+    points[123457].setY(5.0);   // a spike must survive
+    points[654321].setY(-5.0);  // and a dip
+    const PixelFrame frame{0, 100, -6, 6, 800, 300};
+    const QList<QPointF> out = decimateTrace(points, frame);
+    QVERIFY(out.size() <= 4 * 800 + 2);
+    QVERIFY(out.size() > 800);
+    QCOMPARE(out.first(), points.front());
+    QCOMPARE(out.last(), points.back());
+    bool spike = false;
+    bool dip = false;
+    for (qsizetype i = 0; i < out.size(); ++i) {
+      if (i > 0) QVERIFY(out[i].x() >= out[i - 1].x());  // order kept
+      spike = spike || out[i].y() == 5.0;
+      dip = dip || out[i].y() == -5.0;
+    }
+    QVERIFY(spike);
+    QVERIFY(dip);
+  }
+
+  void traceColumnHasItsMinAndMax() {
+    // every column's extremes are present, so the drawn envelope is exact
+    std::vector<QPointF> points;
+    for (int i = 0; i < 10'000; ++i) points.emplace_back(i * 0.01, std::sin(i * 0.37));
+    const PixelFrame frame{0, 100, -1, 1, 50, 50};
+    const QList<QPointF> out = decimateTrace(points, frame);
+    for (int column = 0; column < 50; ++column) {
+      double low = 1e9, high = -1e9, outLow = 1e9, outHigh = -1e9;
+      for (const QPointF& p : points) {
+        if (int(std::floor(p.x() / 2.0)) != column) continue;
+        low = std::min(low, p.y());
+        high = std::max(high, p.y());
+      }
+      for (const QPointF& p : out) {
+        if (int(std::floor(p.x() / 2.0)) != column) continue;
+        outLow = std::min(outLow, p.y());
+        outHigh = std::max(outHigh, p.y());
+      }
+      QCOMPARE(outLow, low);
+      QCOMPARE(outHigh, high);
+    }
+  }
+
+  void traceDropsPointsOutsideButOneEachSide() {
+    std::vector<QPointF> points;
+    for (int i = 0; i <= 1000; ++i) points.emplace_back(i, i % 7);
+    const PixelFrame frame{400, 500, 0, 7, 1000, 100};
+    const QList<QPointF> out = decimateTrace(points, frame);
+    QCOMPARE(out.first().x(), 399.0);
+    QCOMPARE(out.last().x(), 501.0);
+    QCOMPARE(out.size(), qsizetype(103));  // fewer points than pixels: all kept
+  }
+
+  void traceOfNothingIsNothing() {
+    QVERIFY(decimateTrace({}, PixelFrame{}).isEmpty());
+    QVERIFY(decimateScatter({}, PixelFrame{}).isEmpty());
+    QVERIFY(decimatePath({}, PixelFrame{}).isEmpty());
+  }
+
+  void scatterKeepsOnePointPerCell() {
+    std::vector<QPointF> points;
+    for (int i = 0; i < 100'000; ++i) {
+      points.emplace_back((i % 1000) / 1000.0, (i / 1000) / 100.0);
+    }
+    const PixelFrame frame{0, 1, 0, 1, 10, 10};
+    const QList<QPointF> out = decimateScatter(points, frame);
+    QCOMPARE(out.size(), qsizetype(100));
+    // one per cell
+    std::vector<int> seen(100, 0);
+    for (const QPointF& p : out) {
+      const int cell = std::min(9, int(p.y() * 10)) * 10 + std::min(9, int(p.x() * 10));
+      QCOMPARE(++seen[std::size_t(cell)], 1);
+    }
+  }
+
+  void scatterDropsOutsideAndNonFinite() {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<QPointF> points = {{0.5, 0.5}, {2, 0.5}, {0.5, -1}, {nan, 0.5}, {1, 1}};
+    const QList<QPointF> out = decimateScatter(points, PixelFrame{0, 1, 0, 1, 100, 100});
+    QCOMPARE(out.size(), qsizetype(2));
+    QCOMPARE(out[0], QPointF(0.5, 0.5));
+    QCOMPARE(out[1], QPointF(1, 1));  // the closed upper edge belongs to the last cell
+  }
+
+  void pathDropsRepeatsInTheSameCell() {
+    // a circle traced 100 times, densely: only cell changes survive
+    std::vector<QPointF> points;
+    for (int i = 0; i < 200'000; ++i) {
+      const double angle = 2 * std::numbers::pi * i / 2000.0;
+      points.emplace_back(std::cos(angle), std::sin(angle));
+    }
+    const PixelFrame frame{-1.1, 1.1, -1.1, 1.1, 200, 200};
+    const QList<QPointF> out = decimatePath(points, frame);
+    QVERIFY(out.size() < 100 * 800);
+    QVERIFY(out.size() > 100 * 300);
+    QCOMPARE(out.first(), points.front());
+    QCOMPARE(out.last(), points.back());
+    for (qsizetype i = 1; i + 1 < out.size(); ++i) {
+      const bool sameCell = int(std::floor((out[i].x() + 1.1) / 2.2 * 200)) ==
+                                int(std::floor((out[i - 1].x() + 1.1) / 2.2 * 200)) &&
+                            int(std::floor((out[i].y() + 1.1) / 2.2 * 200)) ==
+                                int(std::floor((out[i - 1].y() + 1.1) / 2.2 * 200));
+      QVERIFY(!sameCell);
+    }
+  }
+};
+
+QTEST_APPLESS_MAIN(DecimateTest)
+#include "decimate_test.moc"

@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for ui/main_window.cpp, ui/sim_controller.cpp and ui/sim_worker.cpp: the live loop
+// from a slider to the plots, latest wins, infeasible input, long runs.
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QTest>
+#include <QTimer>
+#include <QXYSeries>
+
+#include "core/orbits.h"
+#include "tests/ui/explorer_test_support.h"
+#include "ui/derived.h"
+#include "ui/main_window.h"
+#include "ui/parameter_panel.h"
+#include "ui/plots/plot_view.h"
+#include "ui/readout_panel.h"
+#include "ui/sim_controller.h"
+#include "ui/slider_spin.h"
+
+using namespace grazelab::ui;
+using grazelab::ui::testing::waitForLatestFinal;
+
+namespace {
+
+// the data of the first series of the first plot (the u2 trace on the default scene)
+std::vector<QPointF> firstSeries(const MainWindow& window) {
+  return window.plots().first()->entries().front().data;
+}
+
+// the reference square on the Poincaré plot: the GLO_lambda data the run started from
+QPointF poincareReference(const MainWindow& window) {
+  for (const PlotView* plot : window.plots()) {
+    for (const PlotView::Entry& entry : plot->entries()) {
+      if (entry.series->name().startsWith(QStringLiteral("GLO")) && !entry.data.empty()) {
+        return entry.data.front();
+      }
+    }
+  }
+  return {qQNaN(), qQNaN()};
+}
+
+}  // namespace
+
+class ExplorerTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void init() {
+    m_window = std::make_unique<MainWindow>(MainWindow::Options{.synchronous = false, .useSettings = false});
+    m_window->resize(1400, 900);
+    m_window->show();
+    QVERIFY(waitForLatestFinal(*m_window));
+  }
+  void cleanup() { m_window.reset(); }
+
+  void opensOnTheDefaultSceneWithAllPlots() {
+    QCOMPARE(m_window->sceneIndex(), 0);
+    QCOMPARE(m_window->scene().name(), QStringLiteral("Grazing family GLO_lambda"));
+    QCOMPARE(m_window->plots().size(), qsizetype(5));
+    for (const PlotView* plot : m_window->plots()) {
+      QVERIFY2(plot->drawnPointCount() > 0, qPrintable(plot->title()));
+    }
+    const SimUpdate* shown = m_window->displayed();
+    QVERIFY(shown->result->cost.impacts > 0);  // the default scene impacts
+    QCOMPARE(m_window->readoutPanel()->text(QStringLiteral("k2")), QStringLiteral("0.5"));
+  }
+
+  void sliderChangeRecomputesAndUpdatesSeries() {
+    const std::uint64_t before = m_window->displayed()->id;
+    const std::vector<QPointF> oldTrace = firstSeries(*m_window);
+    QSlider* slider = m_window->parameterPanel()->control(ParamKey::Lambda)->slider();
+    QSignalSpy spy(m_window.get(), &MainWindow::plotsUpdated);
+    slider->setValue(slider->value() + 150);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY(spy.count() >= 1);
+    QVERIFY(m_window->displayed()->id > before);
+    const double lambda = m_window->parameterPanel()->control(ParamKey::Lambda)->value();
+    QCOMPARE(m_window->displayed()->request->params.lambda, lambda);
+    QVERIFY(firstSeries(*m_window) != oldTrace);
+  }
+
+  void spinBoxMovesSliderAndBack() {
+    SliderSpin* control = m_window->parameterPanel()->control(ParamKey::Lambda);
+    control->spinBox()->setValue(1.0);
+    QCOMPARE(control->slider()->value(), 750);  // 1 of 4/3 on a 0..1000 slider
+    control->slider()->setValue(500);
+    QCOMPARE(control->spinBox()->value(), 0.6667);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QCOMPARE(m_window->displayed()->request->params.lambda, 0.6667);
+  }
+
+  void burstOfChangesEndsWithTheLastValue() {
+    QSlider* slider = m_window->parameterPanel()->control(ParamKey::Lambda)->slider();
+    QSignalSpy spy(m_window.get(), &MainWindow::plotsUpdated);
+    for (int step = 0; step < 200; ++step) {
+      slider->setValue(100 + (step * 37) % 800);
+      // a real drag lets the event loop turn now and then
+      if (step % 10 == 0) QCoreApplication::processEvents();
+    }
+    slider->setValue(612);
+    QVERIFY(waitForLatestFinal(*m_window));
+    const double lambda = m_window->parameterPanel()->control(ParamKey::Lambda)->value();
+    QCOMPARE(m_window->displayed()->request->params.lambda, lambda);
+    // the plots themselves show the last value: the reference point is GLO_lambda's data
+    const DerivedModel derived = deriveModel(m_window->params());
+    const grazelab::core::State expected =
+        grazelab::core::gloData(derived.model, derived.modes, lambda);
+    QCOMPARE(poincareReference(*m_window).x(), expected.u1);
+    // far fewer redraws than changes: stale results were dropped
+    QVERIFY(spy.count() < 200);
+  }
+
+  void infeasibleMassRatioKeepsLastResult() {
+    const SimUpdate before = *m_window->displayed();
+    const std::vector<QPointF> trace = firstSeries(*m_window);
+    m_window->parameterPanel()->control(ParamKey::M2)->spinBox()->setValue(0.7);  // m2/m1 > 9/16
+    QTest::qWait(100);
+    QVERIFY(m_window->problem().contains(QStringLiteral("9/16")));
+    QVERIFY(m_window->parameterPanel()->message().contains(QStringLiteral("9/16")));
+    QCOMPARE(m_window->displayed()->id, before.id);
+    QCOMPARE(m_window->displayed()->request->params.m2, 0.5);
+    QVERIFY(firstSeries(*m_window) == trace);
+    // no silent clamping: the typed value stays
+    QCOMPARE(m_window->params().m2, 0.7);
+    // and back to a feasible value computes again
+    m_window->parameterPanel()->control(ParamKey::M2)->spinBox()->setValue(0.4);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY(m_window->problem().isEmpty());
+    QCOMPARE(m_window->displayed()->request->params.m2, 0.4);
+  }
+
+  void invalidStateFromTheCoreIsShownNotCrashed() {
+    Params params = m_window->params();
+    params.direction = PerturbDirection::U2;
+    params.perturbation = 0.1;  // past the stop
+    const std::uint64_t shown = m_window->displayed()->id;
+    m_window->setParams(params);
+    QTRY_VERIFY(!m_window->problem().isEmpty());
+    QCOMPARE(m_window->displayed()->id, shown);
+  }
+
+  void longRunStreamsAndStaysResponsive() {
+    m_window->selectScene(1);  // near grazing
+    QVERIFY(waitForLatestFinal(*m_window));
+    Params params = m_window->params();
+    params.horizon = 1e6;
+    int ticks = 0;
+    QTimer heartbeat;
+    connect(&heartbeat, &QTimer::timeout, [&] { ++ticks; });
+    heartbeat.start(10);
+    QSignalSpy spy(m_window.get(), &MainWindow::plotsUpdated);
+    QElapsedTimer clock;
+    clock.start();
+    m_window->setParams(params);
+    // partial results arrive while the worker runs
+    QTRY_VERIFY_WITH_TIMEOUT(spy.count() >= 2, 10000);
+    QVERIFY(!spy.last().at(1).toBool() || spy.count() > 2);
+    QTest::qWait(300);
+    m_window->controller()->cancel();
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY(m_window->displayed()->result->stop == grazelab::core::StopReason::Cancelled);
+    QVERIFY(m_window->statusText().contains(QStringLiteral("cancelled")));
+    // the event loop kept turning: at least a third of the 10 ms heartbeats fired
+    QVERIFY2(ticks >= clock.elapsed() / 30, qPrintable(QString::number(ticks)));
+  }
+
+  void scenesChangePlotsAndParameters() {
+    m_window->selectScene(2);  // 1IPP
+    QVERIFY(waitForLatestFinal(*m_window));
+    QCOMPARE(m_window->plots().size(), qsizetype(5));
+    QVERIFY(!m_window->parameterPanel()->control(ParamKey::Lambda)->isVisibleTo(m_window.get()));
+    QVERIFY(m_window->parameterPanel()->control(ParamKey::Period)->isVisibleTo(m_window.get()));
+    // one impact per period: every free flight lasts T
+    const SimUpdate* shown = m_window->displayed();
+    const double period = m_window->params().periodFraction * shown->result->modes.T2;
+    QVERIFY(!shown->result->freeFlights.empty());
+    for (const auto& flight : shown->result->freeFlights) QVERIFY(std::abs(flight.duration - period) < 1e-6);
+    m_window->selectScene(1);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QCOMPARE(m_window->plots().size(), qsizetype(3));
+  }
+
+  void resetViewFollowsDataAgain() {
+    PlotView* plot = m_window->plots().first();
+    plot->chart()->zoom(2.0);
+    QTest::keyClick(plot, Qt::Key_Plus);
+    QVERIFY(!plot->followsData());
+    m_window->resetViews();
+    QVERIFY(plot->followsData());
+  }
+
+ private:
+  std::unique_ptr<MainWindow> m_window;
+};
+
+QTEST_MAIN(ExplorerTest)
+#include "explorer_test.moc"

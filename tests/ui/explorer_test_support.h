@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Helpers shared by the ui tests.
+#pragma once
+
+#include <QDeadlineTimer>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "ui/main_window.h"
+#include "ui/sim_controller.h"
+
+namespace grazelab::ui::testing {
+
+/// Waits until the plots show the final result of the latest request.
+inline bool waitForLatestFinal(MainWindow& window, int timeoutMs = 20000) {
+  QDeadlineTimer deadline(timeoutMs);
+  while (!deadline.hasExpired()) {
+    const SimUpdate* shown = window.displayed();
+    if (shown && shown->final && shown->id == window.controller()->latestId() &&
+        !window.controller()->busy()) {
+      return true;
+    }
+    QTest::qWait(5);
+  }
+  return false;
+}
+
+}  // namespace grazelab::ui::testing

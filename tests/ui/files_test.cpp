@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for ui/export.cpp, ui/session.cpp and ui/main_window_files.cpp: snapshots, CSV and
+// sessions are written, carry their parameters and reopen to the same view.
+#include <QFile>
+#include <QFileInfo>
+#include <QImageReader>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "tests/ui/explorer_test_support.h"
+#include "ui/export.h"
+#include "ui/main_window.h"
+#include "ui/session.h"
+
+using namespace grazelab::ui;
+using grazelab::ui::testing::waitForLatestFinal;
+
+namespace {
+
+QByteArray readAll(const QString& path) {
+  QFile file(path);
+  return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+Params changedParams(const Params& base) {
+  Params params = base;
+  params.lambda = 0.8125;
+  params.m2 = 0.4375;
+  params.gap = 2.5;
+  params.perturbation = -0.03;
+  params.horizon = 40;
+  params.branch = grazelab::core::Branch::Lower;
+  return params;
+}
+
+}  // namespace
+
+class FilesTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void init() {
+    m_window = std::make_unique<MainWindow>(MainWindow::Options{.synchronous = false, .useSettings = false});
+    m_window->resize(1400, 900);
+    m_window->show();
+    m_window->setParams(changedParams(m_window->params()));
+    QVERIFY(waitForLatestFinal(*m_window));
+  }
+  void cleanup() { m_window.reset(); }
+
+  void snapshotsAreWrittenWithTheirSession_data() {
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<bool>("wholeWindow");
+    QTest::newRow("window png") << "window.png" << true;
+    QTest::newRow("window svg") << "window.svg" << true;
+    QTest::newRow("window pdf") << "window.pdf" << true;
+    QTest::newRow("plot png") << "plot.png" << false;
+    QTest::newRow("plot svg") << "plot.svg" << false;
+    QTest::newRow("plot pdf") << "plot.pdf" << false;
+  }
+
+  void snapshotsAreWrittenWithTheirSession() {
+    QFETCH(QString, name);
+    QFETCH(bool, wholeWindow);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(name);
+    QString error;
+    const bool saved = wholeWindow ? m_window->saveWindowSnapshot(path, &error)
+                                   : m_window->savePlotSnapshot(path, &error);
+    QVERIFY2(saved, qPrintable(error));
+    QVERIFY(QFileInfo(path).size() > 1000);
+    const QByteArray head = readAll(path).left(8);
+    if (name.endsWith(QStringLiteral(".png"))) QVERIFY(head.startsWith("\x89PNG"));
+    if (name.endsWith(QStringLiteral(".pdf"))) QVERIFY(head.startsWith("%PDF"));
+    if (name.endsWith(QStringLiteral(".svg"))) QVERIFY(readAll(path).contains("<svg"));
+
+    // the parameters travel beside the picture and reopen to the same values
+    const QString sessionPath = sessionPathFor(path);
+    QVERIFY(QFileInfo::exists(sessionPath));
+    QString parseError;
+    const auto session = sessionFromJson(readAll(sessionPath), Params{}, &parseError);
+    QVERIFY2(session, qPrintable(parseError));
+    QCOMPARE(session->scene, m_window->scene().name());
+    QVERIFY(session->params == m_window->params());
+  }
+
+  void pngCarriesItsSessionAndDoublePixels() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("window.png"));
+    QString error;
+    QVERIFY2(m_window->saveWindowSnapshot(path, &error), qPrintable(error));
+    QImageReader reader(path);
+    const QString text = reader.text(QStringLiteral("GrazeLab session"));
+    const QImage image = reader.read();
+    QCOMPARE(image.size(), m_window->size() * 2);
+    const auto session = sessionFromJson(text.toUtf8(), Params{}, &error);
+    QVERIFY2(session, qPrintable(error));
+    QVERIFY(session->params == m_window->params());
+  }
+
+  void sessionRoundTrip() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("session.json"));
+    const Params saved = m_window->params();
+    QString error;
+    QVERIFY2(m_window->saveSession(path, &error), qPrintable(error));
+    QVERIFY(QFileInfo(path).size() > 0);
+
+    m_window->selectScene(2);
+    m_window->setParams(m_window->scene().defaults());
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY2(m_window->openSession(path, &error), qPrintable(error));
+    QCOMPARE(m_window->sceneIndex(), 0);
+    QVERIFY(m_window->params() == saved);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY(m_window->displayed()->request->params == saved);
+  }
+
+  void csvHasEveryPlottedPoint() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("data.csv"));
+    QString error;
+    QVERIFY2(m_window->exportCsv(path, &error), qPrintable(error));
+    const QList<QByteArray> lines = readAll(path).split('\n');
+    QCOMPARE(lines.first(), QByteArray("plot,series,x,y"));
+    const auto& samples = m_window->displayed()->result->samples;
+    QVERIFY(lines.size() > qsizetype(samples.size()));
+    QVERIFY(QFileInfo::exists(sessionPathFor(path)));
+  }
+
+  void failedSaveSaysWhyAndKeepsEverything() {
+    const Params before = m_window->params();
+    QString error;
+    QVERIFY(!m_window->saveWindowSnapshot(QStringLiteral("/nonexistent-dir/x/snap.png"), &error));
+    QVERIFY(!error.isEmpty());
+    error.clear();
+    QVERIFY(!m_window->saveWindowSnapshot(QStringLiteral("/tmp/snap.bmpx"), &error));
+    QVERIFY(error.contains(QStringLiteral(".png")));
+    QVERIFY(!m_window->openSession(QStringLiteral("/nonexistent-dir/s.json"), &error));
+    QVERIFY(m_window->params() == before);
+
+    // an existing file survives a failed rewrite untouched
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("keep.json"));
+    QVERIFY(saveFileAtomically(path, "{\"old\": true}", &error));
+    QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::ExeOwner);
+    const bool rewritten = saveFileAtomically(path, "new", &error);
+    QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+    if (!rewritten) QCOMPARE(readAll(path), QByteArray("{\"old\": true}"));  // root may write anyway
+  }
+
+  void malformedSessionIsRejected() {
+    QString error;
+    QVERIFY(!sessionFromJson("not json", Params{}, &error));
+    QVERIFY(!error.isEmpty());
+    QVERIFY(!sessionFromJson(R"({"format": "grazelab-session", "params": {"m1": "heavy"}})",
+                             Params{}, &error));
+    QVERIFY(error.contains(QStringLiteral("m1")));
+  }
+
+ private:
+  std::unique_ptr<MainWindow> m_window;
+};
+
+QTEST_MAIN(FilesTest)
+#include "files_test.moc"

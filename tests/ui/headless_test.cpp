@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for app/grazelab/main.cpp and ui/headless.cpp: the executable lists scenes and renders
+// each one to a picture without a display.
+#include <QFileInfo>
+#include <QImage>
+#include <QProcess>
+#include <QProcessEnvironment>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "ui/params.h"
+#include "ui/session.h"
+
+using namespace grazelab::ui;
+
+namespace {
+
+struct Run {
+  int exitCode = -1;
+  QByteArray out;
+  QByteArray err;
+};
+
+Run runApp(const QStringList& arguments) {
+  QProcess process;
+  QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+  environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+  process.setProcessEnvironment(environment);
+  process.start(qEnvironmentVariable("GRAZELAB_APP"), arguments);
+  if (!process.waitForFinished(120'000)) return {};
+  return {process.exitCode(), process.readAllStandardOutput(), process.readAllStandardError()};
+}
+
+QStringList listScenes() {
+  const Run run = runApp({QStringLiteral("--list-scenes")});
+  return QString::fromUtf8(run.out).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+}
+
+}  // namespace
+
+class HeadlessTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() { QVERIFY2(!qEnvironmentVariableIsEmpty("GRAZELAB_APP"), "set GRAZELAB_APP"); }
+
+  void listsScenesOnePerLine() {
+    const QStringList scenes = listScenes();
+    QCOMPARE(scenes.size(), qsizetype(3));
+    QCOMPARE(scenes.first(), QStringLiteral("Grazing family GLO_lambda"));
+    QVERIFY(scenes.contains(QStringLiteral("Near grazing: Poincaré points on H")));
+    QVERIFY(scenes.contains(QStringLiteral("1IPP orbits approaching GLO_lambda*")));
+  }
+
+  void rendersEveryScene() {
+    QTemporaryDir dir;
+    int index = 0;
+    for (const QString& scene : listScenes()) {
+      const QString path = dir.filePath(QStringLiteral("scene%1.png").arg(index++));
+      const Run run = runApp({QStringLiteral("--scene"), scene, QStringLiteral("--snapshot"), path,
+                              QStringLiteral("--size"), QStringLiteral("1200x800")});
+      QVERIFY2(run.exitCode == 0, run.err.constData());
+      const QImage image(path);
+      QCOMPARE(image.size(), QSize(2400, 1600));
+      QVERIFY(QFileInfo::exists(sessionPathFor(path)));
+    }
+  }
+
+  void rendersVectorFormats() {
+    QTemporaryDir dir;
+    for (const QString& name : {QStringLiteral("a.svg"), QStringLiteral("a.pdf")}) {
+      const Run run = runApp({QStringLiteral("--scene"), QStringLiteral("grazing"),
+                              QStringLiteral("--snapshot"), dir.filePath(name)});
+      QVERIFY2(run.exitCode == 0, run.err.constData());
+      QVERIFY(QFileInfo(dir.filePath(name)).size() > 1000);
+    }
+  }
+
+  void sessionDecidesTheParameters() {
+    QTemporaryDir dir;
+    Session session;
+    session.scene = QStringLiteral("Grazing family GLO_lambda");
+    session.params.lambda = 1.25;
+    session.params.gap = 0.5;
+    session.params.horizon = 25;
+    QFile file(dir.filePath(QStringLiteral("in.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(sessionToJson(session));
+    file.close();
+    const QString out = dir.filePath(QStringLiteral("out.png"));
+    const Run run = runApp({QStringLiteral("--session"), file.fileName(),
+                            QStringLiteral("--snapshot"), out});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QFile written(sessionPathFor(out));
+    QVERIFY(written.open(QIODevice::ReadOnly));
+    QString error;
+    const auto reread = sessionFromJson(written.readAll(), Params{}, &error);
+    QVERIFY2(reread, qPrintable(error));
+    QVERIFY(reread->params == session.params);
+  }
+
+  void unknownSceneFails() {
+    QTemporaryDir dir;
+    const Run run = runApp({QStringLiteral("--scene"), QStringLiteral("no such scene"),
+                            QStringLiteral("--snapshot"), dir.filePath(QStringLiteral("x.png"))});
+    QVERIFY(run.exitCode != 0);
+    QVERIFY(run.err.contains("unknown scene"));
+    QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("x.png"))));
+  }
+};
+
+QTEST_GUILESS_MAIN(HeadlessTest)
+#include "headless_test.moc"
