@@ -91,7 +91,7 @@ class FilesTest : public QObject {
     QString error;
     QVERIFY2(m_window->saveWindowSnapshot(path, &error), qPrintable(error));
     QImageReader reader(path);
-    const QString text = reader.text(QStringLiteral("GrazeLab session"));
+    const QString text = reader.text(QStringLiteral("GrazeLabSession"));
     const QImage image = reader.read();
     QCOMPARE(image.size(), m_window->size() * 2);
     const auto session = sessionFromJson(text.toUtf8(), Params{}, &error);

@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/export.h"
+
+#include <QFileInfo>
+#include <QImageWriter>
+#include <QJsonDocument>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QSaveFile>
+#include <QSvgGenerator>
+#include <QWidget>
+
+namespace grazelab::ui {
+namespace {
+
+bool openSaveFile(QSaveFile& file, QString* error) {
+  if (file.open(QIODevice::WriteOnly)) return true;
+  if (error) *error = QStringLiteral("cannot write %1: %2").arg(file.fileName(), file.errorString());
+  return false;
+}
+
+bool commit(QSaveFile& file, QString* error) {
+  if (file.commit()) return true;
+  if (error) *error = QStringLiteral("cannot write %1: %2").arg(file.fileName(), file.errorString());
+  return false;
+}
+
+}  // namespace
+
+std::optional<SnapshotFormat> snapshotFormat(const QString& path) {
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  if (suffix == QStringLiteral("png")) return SnapshotFormat::Png;
+  if (suffix == QStringLiteral("svg")) return SnapshotFormat::Svg;
+  if (suffix == QStringLiteral("pdf")) return SnapshotFormat::Pdf;
+  return std::nullopt;
+}
+
+QImage renderImage(QWidget* widget, qreal pixelRatio) {
+  QImage image(widget->size() * pixelRatio, QImage::Format_ARGB32_Premultiplied);
+  image.setDevicePixelRatio(pixelRatio);
+  image.fill(widget->palette().color(QPalette::Window));
+  QPainter painter(&image);
+  painter.setRenderHint(QPainter::Antialiasing);
+  widget->render(&painter);
+  return image;
+}
+
+bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessionJson,
+                  QString* error) {
+  const auto format = snapshotFormat(path);
+  if (!format) {
+    if (error) *error = QStringLiteral("unknown picture type for %1: use .png, .svg or .pdf").arg(path);
+    return false;
+  }
+  QSaveFile file(path);
+  if (!openSaveFile(file, error)) return false;
+  const QString description = QString::fromUtf8(sessionJson);
+  switch (*format) {
+    case SnapshotFormat::Png: {
+      QImageWriter writer(&file, "png");
+      // the parameters travel inside the picture too; Qt joins texts as "key: value" pairs
+      // separated by blank lines, so the JSON goes in compact, on one line
+      writer.setText(QStringLiteral("GrazeLabSession"),
+                     QString::fromUtf8(QJsonDocument::fromJson(sessionJson).toJson(QJsonDocument::Compact)));
+      writer.setText(QStringLiteral("Software"), QStringLiteral("GrazeLab"));
+      if (!writer.write(renderImage(widget))) {
+        file.cancelWriting();
+        if (error) *error = QStringLiteral("cannot encode %1: %2").arg(path, writer.errorString());
+        return false;
+      }
+      break;
+    }
+    case SnapshotFormat::Svg: {
+      QSvgGenerator generator;
+      generator.setOutputDevice(&file);
+      generator.setSize(widget->size());
+      generator.setViewBox(QRect(QPoint(0, 0), widget->size()));
+      generator.setTitle(QStringLiteral("GrazeLab"));
+      generator.setDescription(description);
+      QPainter painter(&generator);
+      widget->render(&painter);
+      painter.end();
+      break;
+    }
+    case SnapshotFormat::Pdf: {
+      QPdfWriter writer(&file);
+      writer.setCreator(QStringLiteral("GrazeLab"));
+      writer.setTitle(QStringLiteral("GrazeLab snapshot"));
+      writer.setResolution(300);
+      // a page the size of the widget seen at 96 dpi, so nothing is cropped or distorted
+      writer.setPageSize(QPageSize(QSizeF(widget->width(), widget->height()) * 25.4 / 96.0,
+                                   QPageSize::Millimeter));
+      writer.setPageMargins(QMarginsF(0, 0, 0, 0));
+      QPainter painter(&writer);
+      const double scale = double(writer.width()) / widget->width();
+      painter.scale(scale, scale);
+      widget->render(&painter);
+      painter.end();
+      break;
+    }
+  }
+  return commit(file, error);
+}
+
+bool saveFileAtomically(const QString& path, const QByteArray& data, QString* error) {
+  QSaveFile file(path);
+  if (!openSaveFile(file, error)) return false;
+  if (file.write(data) != data.size()) {
+    file.cancelWriting();
+    if (error) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+    return false;
+  }
+  return commit(file, error);
+}
+
+}  // namespace grazelab::ui

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/headless.h"
+
+#include <QCoreApplication>
+#include <QFile>
+
+#include "ui/main_window.h"
+#include "ui/plots/plot_view.h"
+#include "ui/scene.h"
+
+namespace grazelab::ui {
+
+QStringList sceneNames() {
+  QStringList names;
+  for (const auto& scene : makeScenes()) names.append(scene->name());
+  return names;
+}
+
+bool renderSceneSnapshot(const QString& sceneName, const QString& sessionPath,
+                         const QString& outputPath, QSize size, QString* error) {
+  MainWindow window({.synchronous = true, .useSettings = false});
+  Session session = window.session();
+  if (!sessionPath.isEmpty()) {
+    QFile file(sessionPath);
+    if (!file.open(QIODevice::ReadOnly)) {
+      if (error) *error = QStringLiteral("cannot read %1: %2").arg(sessionPath, file.errorString());
+      return false;
+    }
+    QString parseError;
+    const auto loaded = sessionFromJson(file.readAll(), Params{}, &parseError);
+    if (!loaded) {
+      if (error) *error = QStringLiteral("%1: %2").arg(sessionPath, parseError);
+      return false;
+    }
+    session = *loaded;
+  }
+  if (!sceneName.isEmpty()) {
+    const int index = findScene(window.scenes(), sceneName);
+    if (index < 0) {
+      if (error) {
+        *error = QStringLiteral("unknown scene \"%1\"; known scenes: %2")
+                     .arg(sceneName, sceneNames().join(QStringLiteral(", ")));
+      }
+      return false;
+    }
+    session.scene = window.scenes()[std::size_t(index)]->name();
+    if (sessionPath.isEmpty()) session.params = window.scenes()[std::size_t(index)]->defaults();
+  }
+  if (!window.applySession(session, error)) return false;
+  if (!window.problem().isEmpty()) {
+    if (error) *error = window.problem();
+    return false;
+  }
+
+  // lay the window out at its final size without mapping it, then let the plots re-decimate
+  window.setAttribute(Qt::WA_DontShowOnScreen);
+  window.resize(size);
+  window.show();
+  QCoreApplication::processEvents();
+  for (PlotView* plot : window.plots()) plot->refreshNow();
+  QCoreApplication::processEvents();
+  return window.saveWindowSnapshot(outputPath, error);
+}
+
+}  // namespace grazelab::ui

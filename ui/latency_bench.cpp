@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/latency_bench.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QGuiApplication>
+#include <QSlider>
+#include <QTextStream>
+#include <QTimer>
+
+#include <algorithm>
+#include <vector>
+
+#include "ui/main_window.h"
+#include "ui/parameter_panel.h"
+#include "ui/plots/plot_view.h"
+#include "ui/sim_controller.h"
+#include "ui/slider_spin.h"
+
+namespace grazelab::ui {
+namespace {
+
+// waits until the plots show the final result of the latest request; false on timeout
+bool waitForFinal(MainWindow& window, int timeoutMs) {
+  QEventLoop loop;
+  QTimer timeout;
+  timeout.setSingleShot(true);
+  QObject::connect(&timeout, &QTimer::timeout, &loop, &QEventLoop::quit);
+  const auto connection =
+      QObject::connect(&window, &MainWindow::plotsUpdated, &loop, [&](quint64 id, bool final) {
+        if (final && id == window.controller()->latestId()) loop.quit();
+      });
+  timeout.start(timeoutMs);
+  loop.exec();
+  QObject::disconnect(connection);
+  const SimUpdate* shown = window.displayed();
+  return shown && shown->final && shown->id == window.controller()->latestId();
+}
+
+void repaintPlots(MainWindow& window) {
+  for (PlotView* plot : window.plots()) plot->viewport()->repaint();
+}
+
+double percentile(std::vector<double> values, double fraction) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  return values[std::min(values.size() - 1, std::size_t(fraction * double(values.size())))];
+}
+
+// the slider a scene's drag moves: lambda when shown, otherwise the period
+QSlider* dragSlider(MainWindow& window) {
+  const QList<ParamKey> keys = window.scene().parameters();
+  const ParamKey key = keys.contains(ParamKey::Lambda) ? ParamKey::Lambda : ParamKey::Period;
+  return window.parameterPanel()->control(key)->slider();
+}
+
+}  // namespace
+
+int runLatencyBenchmark(QTextStream& out) {
+  out << "GrazeLab explorer latency (platform " << QGuiApplication::platformName() << ")\n";
+  out << QStringLiteral("%1 | %2 | %3 | %4 | %5 | %6\n")
+             .arg(QStringLiteral("scene"), -40)
+             .arg(QStringLiteral("median ms"), 9)
+             .arg(QStringLiteral("p90 ms"), 7)
+             .arg(QStringLiteral("compute ms"), 10)
+             .arg(QStringLiteral("drag fps"), 8)
+             .arg(QStringLiteral("frames/changes"), 14);
+  MainWindow window({.synchronous = false, .useSettings = false});
+  window.resize(1600, 1000);
+  window.show();
+  for (int sceneIndex = 0; sceneIndex < int(window.scenes().size()); ++sceneIndex) {
+    window.selectScene(sceneIndex);
+    waitForFinal(window, 60'000);
+    QSlider* slider = dragSlider(window);
+    const int base = slider->value();
+
+    // single changes: value change -> final result drawn
+    std::vector<double> latencies;
+    std::vector<double> compute;
+    for (int step = 0; step < 21; ++step) {
+      QElapsedTimer clock;
+      clock.start();
+      slider->setValue(base + (step % 2 == 0 ? 3 : -3));
+      if (!waitForFinal(window, 60'000)) break;
+      repaintPlots(window);
+      if (step == 0) continue;  // warm-up
+      latencies.push_back(clock.nsecsElapsed() * 1e-6);
+      compute.push_back(window.displayed()->result->cost.wallSeconds * 1e3);
+    }
+
+    // a drag: one slider step every 8 ms for 2 s; a frame is one applied update, painted
+    int frames = 0;
+    int changes = 0;
+    const auto connection = QObject::connect(&window, &MainWindow::plotsUpdated, &window,
+                                             [&](quint64, bool) {
+                                               repaintPlots(window);
+                                               ++frames;
+                                             });
+    QTimer drag;
+    drag.setInterval(8);
+    QObject::connect(&drag, &QTimer::timeout, &window, [&] {
+      ++changes;
+      slider->setValue(base + (changes % 200 < 100 ? changes % 100 : 100 - changes % 100));
+    });
+    QElapsedTimer dragClock;
+    dragClock.start();
+    drag.start();
+    QEventLoop loop;
+    QTimer::singleShot(2000, &loop, &QEventLoop::quit);
+    loop.exec();
+    drag.stop();
+    const double seconds = dragClock.nsecsElapsed() * 1e-9;
+    QObject::disconnect(connection);
+    waitForFinal(window, 60'000);
+
+    out << QStringLiteral("%1 | %2 | %3 | %4 | %5 | %6\n")
+               .arg(window.scene().name(), -40)
+               .arg(percentile(latencies, 0.5), 9, 'f', 1)
+               .arg(percentile(latencies, 0.9), 7, 'f', 1)
+               .arg(percentile(compute, 0.5), 10, 'f', 2)
+               .arg(frames / seconds, 8, 'f', 1)
+               .arg(QStringLiteral("%1/%2").arg(frames).arg(changes), 14);
+    out.flush();
+  }
+  return 0;
+}
+
+}  // namespace grazelab::ui

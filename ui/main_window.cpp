@@ -1,0 +1,370 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/main_window.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QCloseEvent>
+#include <QElapsedTimer>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QIcon>
+#include <QLabel>
+#include <QMenuBar>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+#include "core/model.h"
+#include "ui/derived.h"
+#include "ui/parameter_panel.h"
+#include "ui/plots/make_plot.h"
+#include "ui/plots/plot_view.h"
+#include "ui/readout_panel.h"
+#include "ui/sim_controller.h"
+
+namespace grazelab::ui {
+namespace {
+
+const QString kGeometryKey = QStringLiteral("window/geometry");
+const QString kStateKey = QStringLiteral("window/state");
+const QString kSessionKey = QStringLiteral("session/last");
+
+QString scientific(double value) { return QString::number(value, 'g', 3); }
+
+}  // namespace
+
+MainWindow::MainWindow(Options options, QWidget* parent)
+    : QMainWindow(parent), m_options(options), m_scenes(makeScenes()) {
+  setWindowIcon(QIcon::fromTheme(QStringLiteral("grazelab"), QIcon(QStringLiteral(":/icons/grazelab.svg"))));
+  for (const auto& scene : m_scenes) m_sceneParams.push_back(scene->defaults());
+
+  m_controller = new SimController(this);
+  m_controller->setSynchronous(options.synchronous);
+  connect(m_controller, &SimController::updated, this, &MainWindow::onUpdate);
+  connect(m_controller, &SimController::idle, this, [this] { setProgressVisible(false); });
+
+  // left: parameters and read-outs, scrollable on small screens
+  m_panel = new ParameterPanel;
+  m_readout = new ReadoutPanel;
+  auto* left = new QWidget;
+  auto* leftLayout = new QVBoxLayout(left);
+  leftLayout->setContentsMargins(6, 6, 6, 6);
+  leftLayout->addWidget(m_panel);
+  auto* readoutBox = new QGroupBox(tr("Derived (mode 1 = fast, mode 2 = slow)"));
+  readoutBox->setToolTip(tr("Mode 1 is the FAST mode and mode 2 the SLOW one: the proofs need "
+                            "ω₁ = 2 ω₂, so T₂ = 2 T₁ and every free motion repeats after T₂."));
+  auto* readoutLayout = new QVBoxLayout(readoutBox);
+  readoutLayout->setContentsMargins(4, 4, 4, 4);
+  readoutLayout->addWidget(m_readout);
+  leftLayout->addWidget(readoutBox);
+  leftLayout->addStretch(1);
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(left);
+  scroll->setWidgetResizable(true);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(390);
+
+  m_plotArea = new QWidget;
+  m_plotGrid = new QGridLayout(m_plotArea);
+  m_plotGrid->setContentsMargins(2, 2, 2, 2);
+  m_plotGrid->setSpacing(4);
+
+  auto* splitter = new QSplitter;
+  splitter->setObjectName(QStringLiteral("mainSplitter"));
+  splitter->addWidget(scroll);
+  splitter->addWidget(m_plotArea);
+  splitter->setStretchFactor(1, 1);
+  splitter->setSizes({400, 1200});
+  setCentralWidget(splitter);
+
+  m_status = new QLabel;
+  m_status->setObjectName(QStringLiteral("statusText"));
+  m_status->setToolTip(tr("Work done and its accuracy: contacts computed, compute time, the "
+                          "largest relative energy drift at contacts and the largest |u₂ − d| "
+                          "at the contact times found (both should be near round-off)."));
+  m_progress = new QProgressBar;
+  m_progress->setRange(0, 1000);
+  m_progress->setMaximumWidth(200);
+  m_cancel = new QPushButton(tr("Cancel"));
+  m_cancel->setToolTip(tr("Stop the running computation and keep what is done (Esc)."));
+  connect(m_cancel, &QPushButton::clicked, m_controller, &SimController::cancel);
+  statusBar()->addWidget(m_status, 1);
+  statusBar()->addPermanentWidget(m_progress);
+  statusBar()->addPermanentWidget(m_cancel);
+  setProgressVisible(false);
+
+  m_applyTimer.setSingleShot(true);
+  connect(&m_applyTimer, &QTimer::timeout, this, &MainWindow::applyPending);
+  connect(m_panel, &ParameterPanel::paramsChanged, this, &MainWindow::onParamsChanged);
+
+  buildMenus();
+  resize(1600, 1000);
+
+  std::optional<Session> restored;
+  if (m_options.useSettings) {
+    QSettings settings;
+    restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    restoreState(settings.value(kStateKey).toByteArray());
+    QString ignored;
+    restored = sessionFromJson(settings.value(kSessionKey).toByteArray(), Params{}, &ignored);
+  }
+  QString error;
+  if (!restored || !applySession(*restored, &error)) selectScene(0);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildMenus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  auto add = [this](QMenu* menu, const QString& text, const QList<QKeySequence>& keys,
+                    const QString& tip, auto slot) {
+    QAction* action = menu->addAction(text);
+    action->setShortcuts(keys);
+    action->setToolTip(tip);
+    action->setStatusTip(tip);
+    connect(action, &QAction::triggered, this, slot);
+    return action;
+  };
+  add(file, tr("&Open session…"), {QKeySequence::Open}, tr("Open saved parameters (JSON)"),
+      &MainWindow::openSessionInteractive);
+  add(file, tr("Save session &as…"), {QKeySequence(tr("Ctrl+Shift+S"))},
+      tr("Save the scene and its parameters as JSON"), &MainWindow::saveSessionInteractive);
+  file->addSeparator();
+  add(file, tr("&Save snapshot of the window…"), {QKeySequence(tr("Ctrl+S"))},
+      tr("Save the whole window as PNG, SVG or PDF, with its session beside it"),
+      &MainWindow::saveWindowSnapshotInteractive);
+  add(file, tr("Save current &plot…"), {QKeySequence(tr("Ctrl+Shift+P"))},
+      tr("Save the last clicked plot as PNG, SVG or PDF"), &MainWindow::savePlotSnapshotInteractive);
+  add(file, tr("&Export plotted data as CSV…"), {QKeySequence(tr("Ctrl+E"))},
+      tr("Write the data of every plot at full resolution"), &MainWindow::exportCsvInteractive);
+  add(file, tr("&Copy current plot"), {QKeySequence(tr("Ctrl+Shift+C"))},
+      tr("Copy the current plot to the clipboard as a picture and its data as text"),
+      &MainWindow::copyCurrentPlot);
+  file->addSeparator();
+  add(file, tr("&Quit"), {QKeySequence::Quit}, tr("Close GrazeLab"), &QWidget::close);
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  add(view, tr("&Reset view"), {QKeySequence(Qt::Key_R), QKeySequence(tr("Ctrl+0"))},
+      tr("Undo zoom and pan in every plot"), &MainWindow::resetViews);
+  add(view, tr("&Cancel computation"), {QKeySequence(Qt::Key_Escape)},
+      tr("Stop the running computation"), [this] { m_controller->cancel(); });
+
+  QMenu* scenes = menuBar()->addMenu(tr("S&cenes"));
+  m_sceneActions = new QActionGroup(this);
+  for (std::size_t index = 0; index < m_scenes.size(); ++index) {
+    QAction* action = scenes->addAction(m_scenes[index]->title());
+    action->setCheckable(true);
+    action->setToolTip(m_scenes[index]->description());
+    if (index < 9) action->setShortcut(QKeySequence(tr("Ctrl+%1").arg(index + 1)));
+    m_sceneActions->addAction(action);
+    connect(action, &QAction::triggered, this, [this, index] { selectScene(int(index)); });
+  }
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  add(help, tr("&About GrazeLab"), {}, tr("What this program shows"), &MainWindow::showAbout);
+}
+
+void MainWindow::buildPlots() {
+  for (PlotView* plot : m_plots) plot->deleteLater();
+  m_plots.clear();
+  const QList<PlotKind> kinds = scene().plots();
+  for (PlotKind kind : kinds) {
+    PlotView* plot = makePlot(kind, m_plotArea);
+    connect(plot, &PlotView::activated, this, [this](PlotView* active) { m_currentPlot = active; });
+    m_plots.append(plot);
+  }
+  for (int row = 0; row < 2; ++row) m_plotGrid->setRowStretch(row, 1);
+  for (int column = 0; column < 3; ++column) m_plotGrid->setColumnStretch(column, 1);
+  if (m_plots.size() == 5) {
+    // the time trace is wide; the three portraits of state space sit side by side
+    m_plotGrid->addWidget(m_plots[0], 0, 0, 1, 2);
+    m_plotGrid->addWidget(m_plots[1], 0, 2);
+    m_plotGrid->addWidget(m_plots[2], 1, 0);
+    m_plotGrid->addWidget(m_plots[3], 1, 1);
+    m_plotGrid->addWidget(m_plots[4], 1, 2);
+  } else if (m_plots.size() == 3) {
+    // the first plot is the scene's subject: give it most of the room
+    m_plotGrid->addWidget(m_plots[0], 0, 0, 2, 2);
+    m_plotGrid->addWidget(m_plots[1], 0, 2);
+    m_plotGrid->addWidget(m_plots[2], 1, 2);
+  } else {
+    for (int index = 0; index < m_plots.size(); ++index) {
+      m_plotGrid->addWidget(m_plots[index], index / 3, index % 3);
+    }
+  }
+  m_currentPlot = m_plots.isEmpty() ? nullptr : m_plots.first();
+}
+
+void MainWindow::selectScene(int index) {
+  if (index < 0 || index >= int(m_scenes.size())) return;
+  m_sceneIndex = index;
+  m_displayed.reset();
+  m_pending.reset();
+  setWindowTitle(tr("GrazeLab — %1").arg(scene().title()));
+  if (m_sceneActions && index < m_sceneActions->actions().size()) {
+    m_sceneActions->actions()[index]->setChecked(true);
+  }
+  buildPlots();
+  m_panel->setScene(scene());
+  m_panel->setParams(m_sceneParams[std::size_t(index)]);
+  recompute();
+}
+
+const Params& MainWindow::params() const { return m_sceneParams[std::size_t(m_sceneIndex)]; }
+
+void MainWindow::setParams(const Params& params) {
+  m_panel->setParams(params);
+  onParamsChanged(params);
+}
+
+Session MainWindow::session() const { return {scene().name(), params()}; }
+
+bool MainWindow::applySession(const Session& session, QString* error) {
+  const int index = findScene(m_scenes, session.scene);
+  if (index < 0) {
+    if (error) *error = tr("unknown scene \"%1\"").arg(session.scene);
+    return false;
+  }
+  m_sceneParams[std::size_t(index)] = session.params;
+  selectScene(index);
+  return true;
+}
+
+void MainWindow::onParamsChanged(const Params& params) {
+  m_sceneParams[std::size_t(m_sceneIndex)] = params;
+  recompute();
+}
+
+void MainWindow::recompute() {
+  const Params& current = params();
+  const DerivedModel derived = deriveModel(current);
+  if (!derived.ok) {
+    showProblem(derived.message);
+    return;
+  }
+  const SceneJob job = scene().build(current, derived);
+  if (!job.ok) {
+    showProblem(job.message);
+    return;
+  }
+  m_problem.clear();
+  m_panel->setMessage(QString());
+  m_readout->showModel(derived, core::energy(job.model, job.request.initial));
+  SimRequest request;
+  request.model = job.model;
+  request.request = job.request;
+  request.params = current;
+  request.sceneName = scene().name();
+  request.reference = job.reference;
+  request.referenceLabel = job.referenceLabel;
+  m_controller->submit(std::move(request));
+}
+
+void MainWindow::showProblem(const QString& message) {
+  // the last valid result stays on screen; only the message and the read-outs change
+  m_problem = message;
+  m_panel->setMessage(message);
+  m_readout->setStale(true);
+  m_status->setText(tr("Not computed: %1 (showing the last valid result)").arg(message));
+}
+
+void MainWindow::onUpdate(const SimUpdate& update) {
+  if (update.result->stop == core::StopReason::InvalidInput) {
+    setProgressVisible(false);
+    showProblem(QString::fromStdString(update.result->message));
+    return;
+  }
+  m_pending = update;
+  if (m_options.synchronous) {
+    applyPending();
+    return;
+  }
+  // a final result is drawn at the next turn of the event loop; partial ones at most every
+  // 33 ms and never more often than three times their drawing cost, so that a huge run
+  // cannot keep the GUI thread busy drawing
+  int delay = 0;
+  if (!update.final && m_lastApply.isValid()) {
+    const qint64 spacing = std::max<qint64>(33, 3 * m_lastApplyCost);
+    delay = int(std::max<qint64>(0, spacing - m_lastApply.elapsed()));
+  }
+  if (!m_applyTimer.isActive() || delay < m_applyTimer.remainingTime()) m_applyTimer.start(delay);
+}
+
+void MainWindow::applyPending() {
+  if (!m_pending) return;
+  // a pending update of another scene (switched meanwhile) is dropped
+  if (m_pending->request->sceneName != scene().name()) {
+    m_pending.reset();
+    return;
+  }
+  m_displayed = std::move(m_pending);
+  m_pending.reset();
+  QElapsedTimer cost;
+  cost.start();
+  for (PlotView* plot : m_plots) {
+    plot->show(*m_displayed);
+    plot->refreshNow();
+  }
+  m_lastApplyCost = cost.elapsed();
+  m_lastApply.start();
+  showStatus(*m_displayed);
+  setProgressVisible(!m_displayed->final);
+  m_progress->setValue(int(m_displayed->progress * 1000));
+  emit plotsUpdated(m_displayed->id, m_displayed->final);
+}
+
+void MainWindow::showStatus(const SimUpdate& update) {
+  const core::Result& result = *update.result;
+  const core::Cost& cost = result.cost;
+  QString text = tr("%1 contacts (%2 impacts, %3 grazing, %4 sticks) · %5 ms · energy drift %6 · "
+                    "max |u₂ − d| at contacts %7")
+                     .arg(cost.contacts)
+                     .arg(cost.impacts)
+                     .arg(cost.grazings)
+                     .arg(cost.sticks)
+                     .arg(cost.wallSeconds * 1e3, 0, 'f', 1)
+                     .arg(scientific(cost.maxRelEnergyDrift))
+                     .arg(scientific(cost.maxContactResidual));
+  if (!update.final) {
+    text += tr(" · computing…");
+  } else if (result.stop == core::StopReason::Cancelled) {
+    text += tr(" · cancelled");
+  } else if (!result.message.empty()) {
+    text += QStringLiteral(" · ") + QString::fromStdString(result.message);
+  }
+  if (!m_problem.isEmpty()) text = tr("Not computed: %1 (showing the last valid result)").arg(m_problem);
+  m_status->setText(text);
+}
+
+void MainWindow::setProgressVisible(bool visible) {
+  m_progress->setVisible(visible);
+  m_cancel->setVisible(visible);
+}
+
+QString MainWindow::statusText() const { return m_status->text(); }
+QString MainWindow::problem() const { return m_problem; }
+
+void MainWindow::resetViews() {
+  for (PlotView* plot : m_plots) plot->resetView();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (m_options.useSettings) {
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState());
+    settings.setValue(kSessionKey, sessionToJson(session()));
+  }
+  m_controller->cancel();
+  event->accept();
+}
+
+}  // namespace grazelab::ui

@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QElapsedTimer>
+#include <QList>
+#include <QMainWindow>
+#include <QTimer>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "ui/params.h"
+#include "ui/scene.h"
+#include "ui/session.h"
+#include "ui/sim_types.h"
+
+class QActionGroup;
+class QGridLayout;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace grazelab::ui {
+
+class ParameterPanel;
+class PlotView;
+class ReadoutPanel;
+class SimController;
+
+/// The explorer: parameter panel and read-outs on the left, the scene's plots in the middle,
+/// the status line below. Parameter edits are turned into requests here (one point where UI
+/// intents meet the worker); results are applied to the plots coalesced by a zero timer.
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  struct Options {
+    bool synchronous = false;  ///< compute on the GUI thread (headless snapshots)
+    bool useSettings = true;   ///< restore and save geometry and the last session (QSettings)
+  };
+
+  explicit MainWindow(Options options, QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  const std::vector<std::unique_ptr<Scene>>& scenes() const { return m_scenes; }
+  int sceneIndex() const { return m_sceneIndex; }
+  const Scene& scene() const { return *m_scenes[std::size_t(m_sceneIndex)]; }
+  void selectScene(int index);
+
+  const Params& params() const;
+  /// Shows these parameters and recomputes.
+  void setParams(const Params& params);
+  Session session() const;
+  /// Selects the session's scene and parameters; false (and `error`) for an unknown scene.
+  bool applySession(const Session& session, QString* error);
+
+  /// The update the plots show now, if any.
+  const SimUpdate* displayed() const { return m_displayed ? &*m_displayed : nullptr; }
+  const QList<PlotView*>& plots() const { return m_plots; }
+  PlotView* currentPlot() const { return m_currentPlot; }
+  ParameterPanel* parameterPanel() const { return m_panel; }
+  ReadoutPanel* readoutPanel() const { return m_readout; }
+  SimController* controller() const { return m_controller; }
+  QString statusText() const;
+  /// The plain-words problem with the current inputs (empty when there is none).
+  QString problem() const;
+
+  bool saveWindowSnapshot(const QString& path, QString* error);
+  bool savePlotSnapshot(const QString& path, QString* error);
+  /// Every visible plot's full-resolution data as CSV "plot,series,x,y".
+  QString plottedDataCsv() const;
+  bool exportCsv(const QString& path, QString* error);
+  bool saveSession(const QString& path, QString* error);
+  bool openSession(const QString& path, QString* error);
+
+  void resetViews();
+  void recompute();
+
+ signals:
+  /// The plots now show an update of request `id` (final or partial).
+  void plotsUpdated(quint64 id, bool final);
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void buildMenus();
+  void buildPlots();
+  void onParamsChanged(const Params& params);
+  void onUpdate(const SimUpdate& update);
+  void applyPending();
+  void showProblem(const QString& message);
+  void showStatus(const SimUpdate& update);
+  void setProgressVisible(bool visible);
+  bool writeSnapshot(QWidget* widget, const QString& path, QString* error);
+  void reportFailure(const QString& what, const QString& error);
+  QString askSavePath(const QString& title, const QString& filters, const QString& suffix);
+  void saveWindowSnapshotInteractive();
+  void savePlotSnapshotInteractive();
+  void exportCsvInteractive();
+  void copyCurrentPlot();
+  void saveSessionInteractive();
+  void openSessionInteractive();
+  void showAbout();
+
+  Options m_options;
+  std::vector<std::unique_ptr<Scene>> m_scenes;
+  std::vector<Params> m_sceneParams;
+  int m_sceneIndex = 0;
+  ParameterPanel* m_panel = nullptr;
+  ReadoutPanel* m_readout = nullptr;
+  QWidget* m_plotArea = nullptr;
+  QGridLayout* m_plotGrid = nullptr;
+  QList<PlotView*> m_plots;
+  PlotView* m_currentPlot = nullptr;
+  SimController* m_controller = nullptr;
+  QActionGroup* m_sceneActions = nullptr;
+  QLabel* m_status = nullptr;
+  QProgressBar* m_progress = nullptr;
+  QPushButton* m_cancel = nullptr;
+  QTimer m_applyTimer;
+  QElapsedTimer m_lastApply;   // when the plots were last filled
+  qint64 m_lastApplyCost = 0;  // how long that took [ms]
+  std::optional<SimUpdate> m_pending;
+  std::optional<SimUpdate> m_displayed;
+  QString m_problem;
+  QString m_lastDirectory;
+};
+
+}  // namespace grazelab::ui

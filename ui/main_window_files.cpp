@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// The file side of MainWindow: snapshots, CSV, sessions, clipboard. Every write goes through
+// QSaveFile (ui/export.h); a failure is shown and leaves the old file and the session intact.
+#include <QApplication>
+#include <QClipboard>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QMimeData>
+
+#include "ui/export.h"
+#include "ui/main_window.h"
+#include "ui/plots/plot_view.h"
+
+namespace grazelab::ui {
+
+bool MainWindow::writeSnapshot(QWidget* widget, const QString& path, QString* error) {
+  const QByteArray json = sessionToJson(session());
+  // the picture first: a session file beside a missing picture would only confuse
+  if (!saveSnapshot(widget, path, json, error)) return false;
+  return saveFileAtomically(sessionPathFor(path), json, error);
+}
+
+bool MainWindow::saveWindowSnapshot(const QString& path, QString* error) {
+  return writeSnapshot(this, path, error);
+}
+
+bool MainWindow::savePlotSnapshot(const QString& path, QString* error) {
+  if (!m_currentPlot) {
+    if (error) *error = tr("there is no plot to save");
+    return false;
+  }
+  return writeSnapshot(m_currentPlot, path, error);
+}
+
+QString MainWindow::plottedDataCsv() const {
+  QString csv = QStringLiteral("plot,series,x,y\n");
+  for (const PlotView* plot : m_plots) plot->appendCsv(csv);
+  return csv;
+}
+
+bool MainWindow::exportCsv(const QString& path, QString* error) {
+  if (!saveFileAtomically(path, plottedDataCsv().toUtf8(), error)) return false;
+  return saveFileAtomically(sessionPathFor(path), sessionToJson(session()), error);
+}
+
+bool MainWindow::saveSession(const QString& path, QString* error) {
+  return saveFileAtomically(path, sessionToJson(session()), error);
+}
+
+bool MainWindow::openSession(const QString& path, QString* error) {
+  QFile file(path);
+  if (!file.open(QIODevice::ReadOnly)) {
+    if (error) *error = tr("cannot read %1: %2").arg(path, file.errorString());
+    return false;
+  }
+  QString parseError;
+  const auto loaded = sessionFromJson(file.readAll(), Params{}, &parseError);
+  if (!loaded) {
+    if (error) *error = tr("%1: %2").arg(path, parseError);
+    return false;
+  }
+  return applySession(*loaded, error);
+}
+
+void MainWindow::reportFailure(const QString& what, const QString& error) {
+  QMessageBox::warning(this, what, tr("%1 failed:\n%2\n\nNothing was lost: the window keeps its "
+                                      "state, and any earlier file is unchanged.")
+                                       .arg(what, error));
+}
+
+QString MainWindow::askSavePath(const QString& title, const QString& filters, const QString& suffix) {
+  QString selected;
+  QString path = QFileDialog::getSaveFileName(this, title, m_lastDirectory, filters, &selected);
+  if (path.isEmpty()) return {};
+  if (QFileInfo(path).suffix().isEmpty()) {
+    // take the suffix from the chosen filter, "PNG image (*.png)" -> ".png"
+    const qsizetype star = selected.indexOf(QStringLiteral("*."));
+    path += star >= 0 ? selected.mid(star + 1).chopped(1) : suffix;
+  }
+  m_lastDirectory = QFileInfo(path).absolutePath();
+  return path;
+}
+
+void MainWindow::saveWindowSnapshotInteractive() {
+  const QString path = askSavePath(
+      tr("Save snapshot of the window"),
+      tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"), QStringLiteral(".png"));
+  QString error;
+  if (!path.isEmpty() && !saveWindowSnapshot(path, &error)) reportFailure(tr("Saving the snapshot"), error);
+}
+
+void MainWindow::savePlotSnapshotInteractive() {
+  const QString path = askSavePath(
+      tr("Save current plot"), tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"),
+      QStringLiteral(".png"));
+  QString error;
+  if (!path.isEmpty() && !savePlotSnapshot(path, &error)) reportFailure(tr("Saving the plot"), error);
+}
+
+void MainWindow::exportCsvInteractive() {
+  const QString path =
+      askSavePath(tr("Export plotted data"), tr("CSV table (*.csv)"), QStringLiteral(".csv"));
+  QString error;
+  if (!path.isEmpty() && !exportCsv(path, &error)) reportFailure(tr("Exporting CSV"), error);
+}
+
+void MainWindow::copyCurrentPlot() {
+  if (!m_currentPlot) return;
+  auto* data = new QMimeData;
+  data->setImageData(renderImage(m_currentPlot));
+  QString csv = QStringLiteral("plot,series,x,y\n");
+  m_currentPlot->appendCsv(csv);
+  data->setText(csv);
+  QApplication::clipboard()->setMimeData(data);
+}
+
+void MainWindow::saveSessionInteractive() {
+  const QString path = askSavePath(tr("Save session"), tr("GrazeLab session (*.json)"),
+                                   QStringLiteral(".json"));
+  QString error;
+  if (!path.isEmpty() && !saveSession(path, &error)) reportFailure(tr("Saving the session"), error);
+}
+
+void MainWindow::openSessionInteractive() {
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open session"), m_lastDirectory,
+                                                    tr("GrazeLab session (*.json)"));
+  if (path.isEmpty()) return;
+  m_lastDirectory = QFileInfo(path).absolutePath();
+  QString error;
+  if (!openSession(path, &error)) reportFailure(tr("Opening the session"), error);
+}
+
+void MainWindow::showAbout() {
+  QMessageBox::about(
+      this, tr("About GrazeLab"),
+      tr("<p><b>GrazeLab</b> explores a two-mass chain against a rigid stop in 1:2 internal "
+         "resonance: exact free flight between contacts, elastic impacts, grazing and "
+         "sticking.</p><p><b>Mode 1 is the fast mode, mode 2 the slow one</b> (ω₁ = 2 ω₂, so "
+         "T₂ = 2 T₁): the proofs of the underlying note need this labelling, and every free "
+         "motion of the chain repeats after T₂.</p><p>Zoom a plot by dragging a rectangle, pan "
+         "with Shift+drag or the middle button, reset with R.</p>"));
+}
+
+}  // namespace grazelab::ui

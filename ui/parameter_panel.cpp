@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/parameter_panel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include "core/resonance.h"
+#include "ui/scene.h"
+#include "ui/slider_spin.h"
+
+namespace grazelab::ui {
+
+ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  m_sceneText = new QLabel(this);
+  m_sceneText->setWordWrap(true);
+  m_sceneText->setObjectName(QStringLiteral("sceneText"));
+  layout->addWidget(m_sceneText);
+
+  auto addControl = [this](QLayout* box, ParamKey key) {
+    auto* control = new SliderSpin(paramSpec(key), this);
+    m_controls.insert(key, control);
+    box->addWidget(control);
+    connect(control, &SliderSpin::valueChanged, this, [this, key](double value) {
+      m_params.setValue(key, value);
+      changed();
+    });
+  };
+
+  // the chain
+  auto* chain = new QGroupBox(tr("Chain"), this);
+  auto* chainLayout = new QVBoxLayout(chain);
+  for (ParamKey key : {ParamKey::M1, ParamKey::M2, ParamKey::K1, ParamKey::Gap}) {
+    addControl(chainLayout, key);
+  }
+  auto* designRow = new QHBoxLayout;
+  m_design = new QCheckBox(tr("1:2 design (k₂ derived)"), chain);
+  m_design->setObjectName(QStringLiteral("designCheck"));
+  m_design->setToolTip(tr("Choose k₂ so that the fast mode has exactly twice the frequency of "
+                          "the slow one (ω₁ = 2 ω₂). Off: type k₂ yourself (a detuned chain)."));
+  m_branch = new QComboBox(chain);
+  m_branch->setObjectName(QStringLiteral("branchCombo"));
+  m_branch->addItem(tr("upper branch"), int(core::Branch::Upper));
+  m_branch->addItem(tr("lower branch"), int(core::Branch::Lower));
+  m_branch->setToolTip(tr("The 1:2 design has two solutions for k₂ (they meet at m₂/m₁ = 9/16): "
+                          "the upper (stiffer) and the lower one."));
+  designRow->addWidget(m_design);
+  designRow->addWidget(m_branch);
+  chainLayout->addLayout(designRow);
+  addControl(chainLayout, ParamKey::K2);
+  m_feasibility = new QLabel(chain);
+  m_feasibility->setObjectName(QStringLiteral("feasibility"));
+  m_feasibility->setWordWrap(true);
+  m_feasibility->setToolTip(tr("A 1:2 resonant chain exists only for m₂/m₁ ≤ 9/16."));
+  chainLayout->addWidget(m_feasibility);
+  layout->addWidget(chain);
+
+  // where the run starts
+  auto* start = new QGroupBox(tr("Start"), this);
+  auto* startLayout = new QVBoxLayout(start);
+  addControl(startLayout, ParamKey::Lambda);
+  addControl(startLayout, ParamKey::Period);
+  addControl(startLayout, ParamKey::Perturbation);
+  auto* directionRow = new QHBoxLayout;
+  m_directionLabel = new QLabel(tr("direction"), start);
+  m_directionLabel->setMinimumWidth(92);
+  m_direction = new QComboBox(start);
+  m_direction->setObjectName(QStringLiteral("directionCombo"));
+  m_direction->addItem(tr("v₂ (off the plane: impacts)"), int(PerturbDirection::V2));
+  m_direction->addItem(tr("u₂ (off the plane: impacts)"), int(PerturbDirection::U2));
+  m_direction->addItem(tr("u₁ (along the plane: grazing)"), int(PerturbDirection::U1));
+  m_direction->addItem(tr("v₁ (along the plane: grazing)"), int(PerturbDirection::V1));
+  m_direction->setToolTip(tr("Which start value the perturbation δ changes. Pushing v₂ below 0 "
+                             "or u₂ below d leaves the grazing orbit so that impacts follow; "
+                             "pushing u₁ or v₁ only moves to another grazing orbit."));
+  directionRow->addWidget(m_directionLabel);
+  directionRow->addWidget(m_direction, 1);
+  startLayout->addLayout(directionRow);
+  layout->addWidget(start);
+
+  // how long
+  auto* run = new QGroupBox(tr("Run"), this);
+  auto* runLayout = new QVBoxLayout(run);
+  addControl(runLayout, ParamKey::Horizon);
+  layout->addWidget(run);
+
+  m_message = new QLabel(this);
+  m_message->setObjectName(QStringLiteral("message"));
+  m_message->setWordWrap(true);
+  m_message->setStyleSheet(QStringLiteral("QLabel { color: #a01010; font-weight: bold; }"));
+  m_message->hide();
+  layout->addWidget(m_message);
+
+  connect(m_design, &QCheckBox::toggled, this, [this](bool on) {
+    m_params.resonantDesign = on;
+    changed();
+  });
+  connect(m_branch, &QComboBox::currentIndexChanged, this, [this](int index) {
+    m_params.branch = core::Branch(m_branch->itemData(index).toInt());
+    changed();
+  });
+  connect(m_direction, &QComboBox::currentIndexChanged, this, [this](int index) {
+    m_params.direction = PerturbDirection(m_direction->itemData(index).toInt());
+    changed();
+  });
+  setParams(m_params);
+}
+
+void ParameterPanel::setScene(const Scene& scene) {
+  m_sceneKeys = scene.parameters();
+  m_sceneText->setText(scene.description());
+  for (auto it = m_controls.begin(); it != m_controls.end(); ++it) {
+    it.value()->setVisible(m_sceneKeys.contains(it.key()));
+  }
+  const bool perturb = m_sceneKeys.contains(ParamKey::Perturbation);
+  m_direction->setVisible(perturb);
+  m_directionLabel->setVisible(perturb);
+  updateFeasibility();
+}
+
+void ParameterPanel::setParams(const Params& params) {
+  m_params = params;
+  for (auto it = m_controls.begin(); it != m_controls.end(); ++it) {
+    it.value()->setValue(params.value(it.key()));
+  }
+  const QSignalBlocker blockDesign(m_design);
+  const QSignalBlocker blockBranch(m_branch);
+  const QSignalBlocker blockDirection(m_direction);
+  m_design->setChecked(params.resonantDesign);
+  m_branch->setCurrentIndex(m_branch->findData(int(params.branch)));
+  m_direction->setCurrentIndex(m_direction->findData(int(params.direction)));
+  updateFeasibility();
+}
+
+void ParameterPanel::setMessage(const QString& message) {
+  m_message->setText(message);
+  m_message->setVisible(!message.isEmpty());
+}
+
+QString ParameterPanel::message() const { return m_message->isVisible() ? m_message->text() : QString(); }
+
+void ParameterPanel::changed() {
+  updateFeasibility();
+  emit paramsChanged(m_params);
+}
+
+void ParameterPanel::updateFeasibility() {
+  const bool design = m_params.resonantDesign;
+  m_branch->setEnabled(design);
+  if (SliderSpin* k2 = m_controls.value(ParamKey::K2)) {
+    k2->setVisible(!design && m_sceneKeys.contains(ParamKey::K2));
+  }
+  const double ratio = m_params.m2 / m_params.m1;
+  const bool feasible = ratio <= core::kMaxResonantMassRatio;
+  m_feasibility->setText(
+      design ? tr("Feasible: m₂/m₁ ≤ 9/16 = 0.5625 — now %1 %2")
+                   .arg(ratio, 0, 'g', 4)
+                   .arg(feasible ? tr("✓") : tr("✗ (no 1:2 chain)"))
+             : tr("Detuned chain: k₂ as typed, no resonance imposed."));
+  m_feasibility->setStyleSheet(feasible || !design ? QString()
+                                                   : QStringLiteral("QLabel { color: #a01010; }"));
+}
+
+}  // namespace grazelab::ui

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QMap>
+#include <QWidget>
+
+#include "ui/params.h"
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+
+namespace grazelab::ui {
+
+class Scene;
+class SliderSpin;
+
+/// The editable parameters: slider + spin box pairs, the 1:2 design switch and branch, the
+/// perturbation direction, the feasible mass-ratio range and a plain message when the values
+/// admit no chain. It only edits a Params value; the window decides what to compute.
+class ParameterPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit ParameterPanel(QWidget* parent = nullptr);
+
+  /// Shows the parameters the scene exposes and hides the others.
+  void setScene(const Scene& scene);
+  /// Shows these values without emitting paramsChanged.
+  void setParams(const Params& params);
+  const Params& params() const { return m_params; }
+
+  /// A plain-words problem with the current values (empty hides it).
+  void setMessage(const QString& message);
+  QString message() const;
+
+  SliderSpin* control(ParamKey key) const { return m_controls.value(key); }
+
+ signals:
+  void paramsChanged(const grazelab::ui::Params& params);
+
+ private:
+  void changed();
+  void updateFeasibility();
+
+  Params m_params;
+  QMap<ParamKey, SliderSpin*> m_controls;
+  QList<ParamKey> m_sceneKeys;
+  QCheckBox* m_design = nullptr;
+  QComboBox* m_branch = nullptr;
+  QComboBox* m_direction = nullptr;
+  QLabel* m_directionLabel = nullptr;
+  QLabel* m_feasibility = nullptr;
+  QLabel* m_message = nullptr;
+  QLabel* m_sceneText = nullptr;
+};
+
+}  // namespace grazelab::ui

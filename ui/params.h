@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QJsonObject>
+#include <QString>
+
+#include <optional>
+
+#include "core/resonance.h"
+
+namespace grazelab::ui {
+
+/// The numeric parameters a user can drag. Which of them a scene exposes is the scene's choice.
+enum class ParamKey {
+  Lambda,        ///< lambda of GLO_lambda, the grazing orbit the run starts near
+  M1,            ///< mass 1
+  M2,            ///< mass 2 (the one that hits the stop)
+  Gap,           ///< distance d from equilibrium of mass 2 to the stop
+  K1,            ///< stiffness wall--m1
+  K2,            ///< stiffness m1--m2, only when the 1:2 design is off
+  Perturbation,  ///< signed size of the push off the chosen orbit
+  Horizon,       ///< number of contacts to compute
+  Period,        ///< T / T2 for the one-impact-per-period orbit
+};
+
+/// Which component of the start state the perturbation moves.
+enum class PerturbDirection { V2, U2, U1, V1 };
+
+/// Everything that decides a run, as plain values. Scenes read what they need.
+struct Params {
+  double lambda = 0.5;
+  double m1 = 1.0;
+  double m2 = 0.5;
+  double gap = 1.0;
+  double k1 = 1.0;
+  double k2 = 0.5;  ///< used only when resonantDesign is false
+  double perturbation = -0.05;
+  PerturbDirection direction = PerturbDirection::V2;
+  double horizon = 200;         ///< contacts
+  double periodFraction = 0.9;  ///< T / T2 of the 1IPP orbit
+  bool resonantDesign = true;   ///< k2 from the 1:2 design (core::resonantK2)
+  core::Branch branch = core::Branch::Upper;
+
+  double value(ParamKey key) const;
+  void setValue(ParamKey key, double value);
+
+  friend bool operator==(const Params&, const Params&) = default;
+};
+
+/// Short stable key used in session files ("lambda", "m1", ...).
+QString jsonKey(ParamKey key);
+QString jsonKey(PerturbDirection direction);
+
+QJsonObject toJson(const Params& params);
+/// Reads parameters written by toJson(); missing fields keep their defaults from `base`.
+/// Returns nothing and sets `error` when a field has the wrong type or an unknown value.
+std::optional<Params> paramsFromJson(const QJsonObject& object, const Params& base, QString* error);
+
+}  // namespace grazelab::ui

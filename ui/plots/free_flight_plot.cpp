@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/plots/free_flight_plot.h"
+
+#include <QLineSeries>
+#include <QScatterSeries>
+
+#include "ui/plots/plot_style.h"
+
+namespace grazelab::ui {
+
+FreeFlightPlot::FreeFlightPlot(QWidget* parent)
+    : PlotView(tr("Free-flight time at each contact"), tr("contact index"), tr("FFT"), parent) {
+  m_flights = addEntry(makeScatter(tr("FFT"), colors::kTrace, 5), Decimation::Scatter);
+  m_period = addEntry(makeLine(tr("FFT = T₂"), colors::kImpact, 1.5, Qt::DashLine), Decimation::None);
+  setToolTip(tr("Free-flight time (FFT): the time from leaving the stop to the next contact, "
+                "against the index of that contact. Theorem 2.3: FFT ≤ T₂ (the slow period, "
+                "dashed), with equality only on a grazing orbit."));
+}
+
+void FreeFlightPlot::show(const SimUpdate& update) {
+  const core::Result& result = *update.result;
+  std::vector<QPointF> flights;
+  flights.reserve(result.freeFlights.size());
+  for (const core::FreeFlight& flight : result.freeFlights) {
+    flights.emplace_back(double(flight.contactIndex), flight.duration);
+  }
+  const double T2 = result.modes.T2;
+  const double last = flights.empty() ? 1.0 : std::max(1.0, flights.back().x());
+  setData(m_flights, std::move(flights));
+  setData(m_period, {QPointF(0, T2), QPointF(last, T2)});
+  scheduleRefresh();
+}
+
+}  // namespace grazelab::ui

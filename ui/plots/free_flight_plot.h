@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include "ui/plots/plot_view.h"
+
+namespace grazelab::ui {
+
+class FreeFlightPlot final : public PlotView {
+  Q_OBJECT
+
+ public:
+  explicit FreeFlightPlot(QWidget* parent = nullptr);
+  void show(const SimUpdate& update) override;
+
+ private:
+  int m_flights = 0;
+  int m_period = 0;
+};
+
+}  // namespace grazelab::ui

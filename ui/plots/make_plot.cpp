@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/plots/make_plot.h"
+
+#include "ui/plots/free_flight_plot.h"
+#include "ui/plots/phase_plot.h"
+#include "ui/plots/poincare_plot.h"
+#include "ui/plots/trace_plot.h"
+
+namespace grazelab::ui {
+
+PlotView* makePlot(PlotKind kind, QWidget* parent) {
+  switch (kind) {
+    case PlotKind::TraceU2: return new TracePlot(parent);
+    case PlotKind::PhaseU2V2: return new PhasePlot(PhasePlot::Mass::Two, parent);
+    case PlotKind::PhaseU1V1: return new PhasePlot(PhasePlot::Mass::One, parent);
+    case PlotKind::Poincare: return new PoincarePlot(parent);
+    case PlotKind::FreeFlight: return new FreeFlightPlot(parent);
+  }
+  return nullptr;
+}
+
+}  // namespace grazelab::ui

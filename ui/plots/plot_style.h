@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QColor>
+#include <QPen>
+
+class QLineSeries;
+class QScatterSeries;
+
+namespace grazelab::ui {
+
+/// Colours used across plots, chosen to stay apart on a projector and in grey print.
+namespace colors {
+inline const QColor kTrace{0x1f, 0x4e, 0x9a};
+inline const QColor kStop{0x60, 0x60, 0x60};
+inline const QColor kImpact{0xc0, 0x1c, 0x28};
+inline const QColor kGrazing{0xe6, 0x61, 0x00};
+inline const QColor kReference{0x00, 0x00, 0x00};
+}  // namespace colors
+
+/// A solid line series of the given colour and width.
+QLineSeries* makeLine(const QString& name, const QColor& color, double width = 1.5,
+                      Qt::PenStyle style = Qt::SolidLine);
+/// A round-marker scatter series without outline.
+QScatterSeries* makeScatter(const QString& name, const QColor& color, double size = 5.0);
+
+}  // namespace grazelab::ui

@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QChartView>
+#include <QPointF>
+#include <QString>
+#include <QTimer>
+
+#include <vector>
+
+#include "ui/sim_types.h"
+
+class QValueAxis;
+class QXYSeries;
+
+namespace grazelab::ui {
+
+/// How a series is reduced to the pixels before it reaches Qt Charts (ui/decimate.h).
+enum class Decimation { None, Trace, Scatter, Path };
+
+/// A chart with two value axes, zoom (rubber band, wheel, + and -), pan (middle button or
+/// Shift + drag, arrow keys) and reset (R). It keeps the full data of every series and hands
+/// Qt Charts only what the pixels can show, re-decimating after each zoom, pan or resize.
+/// While the user has not zoomed or panned, the axes follow the data.
+class PlotView : public QChartView {
+  Q_OBJECT
+
+ public:
+  /// One series and the full-resolution data behind it.
+  struct Entry {
+    QXYSeries* series = nullptr;
+    std::vector<QPointF> data;
+    Decimation decimation = Decimation::None;
+    bool inBounds = true;  ///< counts for the automatic axis ranges
+  };
+
+  PlotView(const QString& title, const QString& xTitle, const QString& yTitle,
+           QWidget* parent = nullptr);
+
+  /// Fills the plot from an update of the worker.
+  virtual void show(const SimUpdate& update) = 0;
+
+  /// Forgets zoom and pan: the axes follow the data again.
+  void resetView();
+  bool followsData() const { return m_followData; }
+
+  const std::vector<Entry>& entries() const { return m_entries; }
+  /// Number of points currently handed to Qt Charts, summed over series.
+  qsizetype drawnPointCount() const;
+  /// Appends the plotted data at full resolution as CSV rows "plot,series,x,y" (no header).
+  void appendCsv(QString& csv) const;
+  QString title() const;
+
+  /// Applies pending data now instead of at the next turn of the event loop.
+  void refreshNow();
+
+ signals:
+  /// The user clicked or focused this plot (it becomes the "current plot").
+  void activated(grazelab::ui::PlotView* plot);
+  /// The series were replaced with new decimated data.
+  void refreshed();
+
+ protected:
+  int addEntry(QXYSeries* series, Decimation decimation, bool inBounds = true);
+  void setData(int index, std::vector<QPointF> data);
+  /// Called after setData()s: schedules one refresh (coalesced through a zero timer).
+  void scheduleRefresh();
+  /// Extra vertical/horizontal span to include in the automatic ranges (e.g. the stop line).
+  void includeInBounds(double x, double y);
+  void clearExtraBounds();
+
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
+  void focusInEvent(QFocusEvent* event) override;
+
+  QValueAxis* m_axisX = nullptr;
+  QValueAxis* m_axisY = nullptr;
+
+ private:
+  void refresh();
+  void fitAxes();
+  void userMovedView();
+
+  std::vector<Entry> m_entries;
+  std::vector<QPointF> m_extraBounds;
+  QTimer m_refreshTimer;
+  bool m_followData = true;
+  bool m_panning = false;
+  QPoint m_lastPanPosition;
+};
+
+}  // namespace grazelab::ui

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/plots/poincare_plot.h"
+
+#include <QChart>
+#include <QLegend>
+#include <QLegendMarker>
+#include <QScatterSeries>
+
+#include <algorithm>
+
+#include "ui/plots/plot_style.h"
+
+namespace grazelab::ui {
+namespace {
+
+// a viridis-like ramp, darkened at the yellow end so it stays visible on white
+const QColor kBinColors[] = {QColor(0x44, 0x01, 0x54), QColor(0x3b, 0x52, 0x8b),
+                             QColor(0x21, 0x91, 0x8c), QColor(0x3a, 0xa8, 0x4a),
+                             QColor(0xd0, 0xa0, 0x00)};
+
+}  // namespace
+
+PoincarePlot::PoincarePlot(QWidget* parent)
+    : PlotView(tr("Poincaré points on H (u₂ = d)"), tr("u₁ at contact"), tr("v₁ at contact"),
+               parent) {
+  for (int bin = 0; bin < kBins; ++bin) {
+    m_bins[bin] = addEntry(makeScatter(QString(), kBinColors[bin], 4), Decimation::Scatter);
+  }
+  auto* reference = makeScatter(tr("reference"), colors::kReference, 11);
+  reference->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+  reference->setColor(Qt::transparent);
+  reference->setPen(QPen(colors::kReference, 2));
+  m_reference = addEntry(reference, Decimation::None);
+  setToolTip(tr("Each dot is the state (u₁, v₁) of mass 1 at a contact of mass 2 with the stop "
+                "(the section H: u₂ = d). Colours run from early contacts (purple) to late ones "
+                "(yellow). The square marks the reference grazing orbit's data."));
+}
+
+void PoincarePlot::show(const SimUpdate& update) {
+  const core::Result& result = *update.result;
+  const auto count = std::int64_t(result.poincare.size());
+  // equal-width bins over the contact index of this run
+  const std::int64_t per = std::max<std::int64_t>(1, (count + kBins - 1) / kBins);
+  std::vector<QPointF> bins[kBins];
+  for (std::int64_t index = 0; index < count; ++index) {
+    const core::PoincarePoint& point = result.poincare[std::size_t(index)];
+    bins[std::min<std::int64_t>(index / per, kBins - 1)].emplace_back(point.u1, point.v1);
+  }
+  const auto& entryList = entries();
+  for (int bin = 0; bin < kBins; ++bin) {
+    const std::int64_t first = bin * per;
+    const std::int64_t last = std::min(count, first + per) - 1;
+    // the legend names the first and last bins only; the colours in between interpolate
+    QXYSeries* series = entryList[std::size_t(m_bins[bin])].series;
+    series->setName(last >= first ? tr("contacts %1–%2").arg(first).arg(last) : QString());
+    const bool named = (bin == 0 || bin == kBins - 1) && last >= first;
+    for (QLegendMarker* marker : chart()->legend()->markers(series)) marker->setVisible(named);
+    setData(m_bins[bin], std::move(bins[bin]));
+  }
+  std::vector<QPointF> reference;
+  if (update.request->reference) {
+    reference.emplace_back(update.request->reference->u1, update.request->reference->v1);
+  }
+  entryList[std::size_t(m_reference)].series->setName(update.request->referenceLabel);
+  setData(m_reference, std::move(reference));
+  scheduleRefresh();
+}
+
+}  // namespace grazelab::ui

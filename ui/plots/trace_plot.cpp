@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/plots/trace_plot.h"
+
+#include <QChart>
+#include <QLegend>
+#include <QLineSeries>
+#include <QScatterSeries>
+
+#include "ui/plots/plot_style.h"
+
+namespace grazelab::ui {
+
+TracePlot::TracePlot(QWidget* parent)
+    : PlotView(tr("Displacement of mass 2: u₂(t)"), tr("time t"), tr("u₂"), parent) {
+  m_trace = addEntry(makeLine(tr("u₂(t)"), colors::kTrace), Decimation::Trace);
+  m_stop = addEntry(makeLine(tr("stop u₂ = d"), colors::kStop, 1.5, Qt::DashLine), Decimation::None);
+  m_impacts = addEntry(makeScatter(tr("impacts"), colors::kImpact, 6), Decimation::Scatter, false);
+  m_grazings = addEntry(makeScatter(tr("grazings / sticks"), colors::kGrazing, 7),
+                        Decimation::Scatter, false);
+  setToolTip(tr("Displacement u₂ of mass 2 against time. The dashed line is the stop u₂ = d; "
+                "dots mark the contacts (impacts red, grazing touches and sticks orange).\n"
+                "Drag to zoom, Shift+drag or middle button to pan, wheel to zoom, R to reset."));
+}
+
+void TracePlot::show(const SimUpdate& update) {
+  const core::Result& result = *update.result;
+  const double gap = update.request->model.gap;
+  std::vector<QPointF> trace;
+  trace.reserve(result.samples.size());
+  for (const core::Sample& sample : result.samples) trace.emplace_back(sample.t, sample.state.u2);
+  const double tLast = trace.empty() ? result.tFinal : trace.back().x();
+  std::vector<QPointF> impacts;
+  std::vector<QPointF> others;
+  for (const core::Event& event : result.events) {
+    if (event.t > tLast) break;
+    if (event.type == core::EventType::Impact) impacts.emplace_back(event.t, gap);
+    else if (core::isContact(event.type)) others.emplace_back(event.t, gap);
+  }
+  setData(m_trace, std::move(trace));
+  setData(m_stop, {QPointF(0, gap), QPointF(tLast, gap)});
+  setData(m_impacts, std::move(impacts));
+  setData(m_grazings, std::move(others));
+  scheduleRefresh();
+}
+
+}  // namespace grazelab::ui

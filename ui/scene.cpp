@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/scene.h"
+
+#include "ui/scenes/grazing_family_scene.h"
+#include "ui/scenes/near_grazing_scene.h"
+#include "ui/scenes/one_ipp_scene.h"
+
+namespace grazelab::ui {
+
+core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, double sampleWindow) {
+  core::Needs needs;
+  const bool dense = plots.contains(PlotKind::TraceU2) || plots.contains(PlotKind::PhaseU2V2) ||
+                     plots.contains(PlotKind::PhaseU1V1);
+  // contacts are marked on the u2(t) trace only
+  needs.events = plots.contains(PlotKind::TraceU2);
+  needs.poincare = plots.contains(PlotKind::Poincare);
+  needs.freeFlights = plots.contains(PlotKind::FreeFlight);
+  if (dense) {
+    // 48 samples per fast period draw a smooth curve at any zoom a screen can show
+    needs.samples.spacing = modes.T1 / 48.0;
+    needs.samples.tBegin = 0;
+    needs.samples.tEnd = sampleWindow;
+    needs.samples.maxCount = 400'000;
+  }
+  return needs;
+}
+
+core::State perturbed(core::State state, const Params& params) {
+  switch (params.direction) {
+    case PerturbDirection::V2: state.v2 += params.perturbation; break;
+    case PerturbDirection::U2: state.u2 += params.perturbation; break;
+    case PerturbDirection::U1: state.u1 += params.perturbation; break;
+    case PerturbDirection::V1: state.v1 += params.perturbation; break;
+  }
+  return state;
+}
+
+std::vector<std::unique_ptr<Scene>> makeScenes() {
+  std::vector<std::unique_ptr<Scene>> scenes;
+  scenes.push_back(std::make_unique<GrazingFamilyScene>());
+  scenes.push_back(std::make_unique<NearGrazingScene>());
+  scenes.push_back(std::make_unique<OneIppScene>());
+  return scenes;
+}
+
+int findScene(const std::vector<std::unique_ptr<Scene>>& scenes, const QString& name) {
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    if (scenes[i]->name().compare(name, Qt::CaseInsensitive) == 0) return int(i);
+    if (scenes[i]->alias().compare(name, Qt::CaseInsensitive) == 0) return int(i);
+  }
+  return -1;
+}
+
+}  // namespace grazelab::ui

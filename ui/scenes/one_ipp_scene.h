@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include "ui/scene.h"
+
+namespace grazelab::ui {
+
+class OneIppScene final : public Scene {
+ public:
+  QString name() const override;
+  QString alias() const override;
+  QString title() const override;
+  QString description() const override;
+  Params defaults() const override;
+  QList<ParamKey> parameters() const override;
+  QList<PlotKind> plots() const override;
+  SceneJob build(const Params& params, const DerivedModel& derived) const override;
+};
+
+}  // namespace grazelab::ui

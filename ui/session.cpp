@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/session.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace grazelab::ui {
+namespace {
+
+const QString kFormat = QStringLiteral("grazelab-session");
+
+}  // namespace
+
+QByteArray sessionToJson(const Session& session) {
+  QJsonObject object;
+  object.insert(QStringLiteral("format"), kFormat);
+  object.insert(QStringLiteral("version"), 1);
+  object.insert(QStringLiteral("scene"), session.scene);
+  object.insert(QStringLiteral("params"), toJson(session.params));
+  return QJsonDocument(object).toJson(QJsonDocument::Indented);
+}
+
+std::optional<Session> sessionFromJson(const QByteArray& json, const Params& defaults,
+                                       QString* error) {
+  QJsonParseError parseError;
+  const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+  auto fail = [&](const QString& text) {
+    if (error) *error = text;
+    return std::nullopt;
+  };
+  if (document.isNull()) return fail(QStringLiteral("not JSON: %1").arg(parseError.errorString()));
+  const QJsonObject object = document.object();
+  if (object.value(QStringLiteral("format")).toString() != kFormat) {
+    return fail(QStringLiteral("not a GrazeLab session (\"format\" is not \"%1\")").arg(kFormat));
+  }
+  Session session;
+  session.scene = object.value(QStringLiteral("scene")).toString();
+  QString paramsError;
+  const auto params =
+      paramsFromJson(object.value(QStringLiteral("params")).toObject(), defaults, &paramsError);
+  if (!params) return fail(paramsError);
+  session.params = *params;
+  return session;
+}
+
+QString sessionPathFor(const QString& snapshotPath) {
+  const QFileInfo info(snapshotPath);
+  return info.dir().filePath(info.completeBaseName() + QStringLiteral(".session.json"));
+}
+
+}  // namespace grazelab::ui

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QByteArray>
+#include <QString>
+
+#include <optional>
+
+#include "ui/params.h"
+
+namespace grazelab::ui {
+
+/// What reproduces a view: the scene and its parameters. Saved as JSON:
+///   {"format": "grazelab-session", "version": 1, "scene": NAME, "params": {...}}
+struct Session {
+  QString scene;  ///< Scene::name()
+  Params params;
+};
+
+QByteArray sessionToJson(const Session& session);
+/// Parses a session; missing parameters take `defaults`. Sets `error` and returns nothing on a
+/// malformed file.
+std::optional<Session> sessionFromJson(const QByteArray& json, const Params& defaults,
+                                       QString* error);
+
+/// The session file written beside a snapshot: "plot.png" -> "plot.session.json".
+QString sessionPathFor(const QString& snapshotPath);
+
+}  // namespace grazelab::ui

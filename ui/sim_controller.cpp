@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/sim_controller.h"
+
+#include <QMetaObject>
+
+#include "ui/sim_worker.h"
+
+namespace grazelab::ui {
+
+SimController::SimController(QObject* parent)
+    : QObject(parent), m_mailbox(std::make_shared<SimMailbox>()) {
+  static const int registered = qRegisterMetaType<grazelab::ui::SimUpdate>();
+  Q_UNUSED(registered);
+  m_worker = new SimWorker(m_mailbox);
+  m_worker->moveToThread(&m_thread);
+  connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+  connect(m_worker, &SimWorker::updated, this, &SimController::receive, Qt::QueuedConnection);
+  m_thread.setObjectName(QStringLiteral("grazelab-sim"));
+  m_thread.start();
+}
+
+SimController::~SimController() {
+  // stop the job, cut the way back, then let the thread run out its event queue and end:
+  // the queued wake-ups find an empty mailbox and return at once
+  cancel();
+  disconnect(m_worker, nullptr, this, nullptr);
+  m_thread.quit();
+  m_thread.wait();
+}
+
+std::uint64_t SimController::submit(SimRequest request) {
+  request.id = ++m_latestId;
+  m_busy = true;
+  if (m_synchronous) {
+    SimWorker::run(request, {}, 1e9, [this](const SimUpdate& update) { receive(update); });
+    return request.id;
+  }
+  {
+    const std::lock_guard lock(m_mailbox->mutex);
+    m_mailbox->running.request_stop();
+    m_mailbox->waiting = std::move(request);
+  }
+  QMetaObject::invokeMethod(m_worker, [worker = m_worker] { worker->wake(); }, Qt::QueuedConnection);
+  return m_latestId;
+}
+
+void SimController::cancel() {
+  bool dropped = false;
+  {
+    const std::lock_guard lock(m_mailbox->mutex);
+    dropped = m_mailbox->waiting.has_value() && m_mailbox->waiting->id == m_latestId;
+    m_mailbox->waiting.reset();
+    m_mailbox->running.request_stop();
+  }
+  if (dropped) {
+    m_busy = false;
+    emit idle();
+  }
+}
+
+void SimController::receive(const SimUpdate& update) {
+  if (update.id != m_latestId) return;  // stale: a newer request exists
+  if (update.final) m_busy = false;
+  emit updated(update);
+}
+
+}  // namespace grazelab::ui

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/sim_worker.h"
+
+#include <QElapsedTimer>
+
+#include <algorithm>
+#include <cstdint>
+
+namespace grazelab::ui {
+
+SimWorker::SimWorker(std::shared_ptr<SimMailbox> mailbox) : m_mailbox(std::move(mailbox)) {}
+
+void SimWorker::wake() {
+  std::optional<SimRequest> request;
+  std::stop_token stop;
+  {
+    const std::lock_guard lock(m_mailbox->mutex);
+    if (!m_mailbox->waiting) return;  // an earlier wake-up already took it
+    request = std::move(m_mailbox->waiting);
+    m_mailbox->waiting.reset();
+    m_mailbox->running = std::stop_source();
+    stop = m_mailbox->running.get_token();
+  }
+  run(*request, stop, 0.030, [this](const SimUpdate& update) { emit updated(update); });
+}
+
+void SimWorker::run(const SimRequest& request, std::stop_token stop, double chunkSeconds,
+                    const std::function<void(const SimUpdate&)>& report) {
+  const auto asked = std::make_shared<const SimRequest>(request);
+  core::Simulator simulator(request.model, request.request);
+  // the chunk is sized in contacts and adapted to the measured speed, so that each partial
+  // result costs about chunkSeconds; the first chunk is small to show something at once
+  std::int64_t budget = 256;
+  QElapsedTimer clock;
+  QElapsedTimer sinceReport;
+  sinceReport.start();
+  double copySeconds = 0;
+  bool done = simulator.done();
+  while (!done) {
+    clock.start();
+    done = simulator.advance(budget, stop);
+    const double seconds = std::max(clock.nsecsElapsed() * 1e-9, 1e-6);
+    if (done || stop.stop_requested()) break;
+    const double scale = std::clamp(chunkSeconds / seconds, 0.25, 8.0);
+    budget = std::clamp<std::int64_t>(std::int64_t(double(budget) * scale), 16, 50'000'000);
+    // a partial result is a full copy: when copies grow costly, send them less often so
+    // that copying never takes more than a fifth of the worker's time
+    if (sinceReport.nsecsElapsed() * 1e-9 < std::max(chunkSeconds, 4 * copySeconds)) continue;
+    clock.start();
+    SimUpdate partial;
+    partial.id = request.id;
+    partial.result = std::make_shared<const core::Result>(simulator.result());
+    partial.progress = simulator.progress();
+    partial.request = asked;
+    copySeconds = clock.nsecsElapsed() * 1e-9;
+    report(partial);
+    sinceReport.start();
+  }
+  SimUpdate last;
+  last.id = request.id;
+  last.progress = 1.0;
+  last.final = true;
+  last.request = asked;
+  last.result = std::make_shared<const core::Result>(simulator.takeResult());
+  report(last);
+}
+
+}  // namespace grazelab::ui

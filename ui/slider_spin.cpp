@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/slider_spin.h"
+
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPainter>
+#include <QSignalBlocker>
+#include <QStyleOptionSlider>
+
+#include <algorithm>
+#include <cmath>
+
+namespace grazelab::ui {
+namespace {
+
+constexpr int kSteps = 1000;
+
+}  // namespace
+
+MarkedSlider::MarkedSlider(QWidget* parent) : QSlider(Qt::Horizontal, parent) {}
+
+void MarkedSlider::setMarks(QList<QPair<int, QString>> marks) {
+  m_marks = std::move(marks);
+  if (!m_marks.isEmpty()) setMinimumHeight(sizeHint().height() + fontMetrics().height());
+  update();
+}
+
+void MarkedSlider::paintEvent(QPaintEvent* event) {
+  QSlider::paintEvent(event);
+  if (m_marks.isEmpty()) return;
+  QStyleOptionSlider option;
+  initStyleOption(&option);
+  const QRect groove = style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderGroove, this);
+  const QRect handle = style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, this);
+  QPainter painter(this);
+  painter.setPen(palette().color(QPalette::WindowText));
+  QFont font = painter.font();
+  font.setPointSizeF(font.pointSizeF() * 0.8);
+  painter.setFont(font);
+  const int span = groove.width() - handle.width();
+  const int top = height() - painter.fontMetrics().height() - 4;
+  for (const auto& [position, label] : m_marks) {
+    const int x = groove.x() + handle.width() / 2 +
+                  QStyle::sliderPositionFromValue(minimum(), maximum(), position, span);
+    painter.drawLine(x, top - 3, x, top + 1);
+    const int textWidth = painter.fontMetrics().horizontalAdvance(label);
+    const int left = std::clamp(x - textWidth / 2, 0, width() - textWidth);
+    painter.drawText(left, height() - painter.fontMetrics().descent() - 1, label);
+  }
+}
+
+SliderSpin::SliderSpin(const ParamSpec& spec, QWidget* parent) : QWidget(parent), m_spec(spec) {
+  const QString key = jsonKey(spec.key);
+  setObjectName(key);
+  m_label = new QLabel(spec.label, this);
+  m_label->setMinimumWidth(92);
+  m_slider = new MarkedSlider(this);
+  m_slider->setObjectName(key + QStringLiteral("Slider"));
+  m_slider->setRange(0, kSteps);
+  m_slider->setPageStep(kSteps / 20);
+  m_spin = new QDoubleSpinBox(this);
+  m_spin->setObjectName(key + QStringLiteral("Spin"));
+  m_spin->setDecimals(spec.decimals);
+  m_spin->setRange(spec.spinMin, spec.spinMax);
+  m_spin->setSingleStep(spec.logarithmic ? 1.0 : (spec.sliderMax - spec.sliderMin) / 100.0);
+  m_spin->setKeyboardTracking(false);
+  m_spin->setMinimumWidth(96);
+  m_spin->setAlignment(Qt::AlignRight);
+
+  QList<QPair<int, QString>> marks;
+  for (double mark : spec.marks) {
+    const bool fourThirds = std::abs(mark - 4.0 / 3.0) < 1e-12;
+    marks.append({toPosition(mark), fourThirds ? QStringLiteral("4/3") : QString::number(mark)});
+  }
+  m_slider->setMarks(marks);
+
+  for (QWidget* widget : {static_cast<QWidget*>(m_label), static_cast<QWidget*>(m_slider),
+                          static_cast<QWidget*>(m_spin)}) {
+    widget->setToolTip(spec.toolTip);
+  }
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(m_label);
+  layout->addWidget(m_slider, 1);
+  layout->addWidget(m_spin);
+
+  connect(m_slider, &QSlider::valueChanged, this, &SliderSpin::sliderMoved);
+  connect(m_spin, &QDoubleSpinBox::valueChanged, this, &SliderSpin::spinChanged);
+}
+
+double SliderSpin::value() const { return m_spin->value(); }
+
+void SliderSpin::setValue(double value) {
+  const QSignalBlocker blockSpin(m_spin);
+  const QSignalBlocker blockSlider(m_slider);
+  m_spin->setValue(value);
+  m_slider->setValue(toPosition(value));
+}
+
+int SliderSpin::toPosition(double value) const {
+  double fraction = 0;
+  if (m_spec.logarithmic) {
+    const double low = std::log(std::max(m_spec.sliderMin, 1e-300));
+    fraction = (std::log(std::max(value, 1e-300)) - low) / (std::log(m_spec.sliderMax) - low);
+  } else {
+    fraction = (value - m_spec.sliderMin) / (m_spec.sliderMax - m_spec.sliderMin);
+  }
+  if (!std::isfinite(fraction)) fraction = 0;
+  return int(std::lround(std::clamp(fraction, 0.0, 1.0) * kSteps));
+}
+
+double SliderSpin::fromPosition(int position) const {
+  const double fraction = double(position) / kSteps;
+  if (m_spec.logarithmic) {
+    const double low = std::log(m_spec.sliderMin);
+    return std::exp(low + fraction * (std::log(m_spec.sliderMax) - low));
+  }
+  return m_spec.sliderMin + fraction * (m_spec.sliderMax - m_spec.sliderMin);
+}
+
+void SliderSpin::sliderMoved(int position) {
+  {
+    const QSignalBlocker block(m_spin);
+    m_spin->setValue(fromPosition(position));  // rounded to the spin box's decimals
+  }
+  emit valueChanged(m_spin->value());
+}
+
+void SliderSpin::spinChanged(double value) {
+  {
+    const QSignalBlocker block(m_slider);
+    m_slider->setValue(toPosition(value));
+  }
+  emit valueChanged(value);
+}
+
+}  // namespace grazelab::ui

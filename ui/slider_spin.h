@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QSlider>
+#include <QWidget>
+
+#include "ui/param_specs.h"
+
+class QDoubleSpinBox;
+class QLabel;
+
+namespace grazelab::ui {
+
+/// A horizontal slider that paints small marks with labels under chosen values (λ = 1, 4/3).
+class MarkedSlider : public QSlider {
+  Q_OBJECT
+
+ public:
+  explicit MarkedSlider(QWidget* parent = nullptr);
+  /// Marks at slider positions with their labels.
+  void setMarks(QList<QPair<int, QString>> marks);
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+
+ private:
+  QList<QPair<int, QString>> m_marks;
+};
+
+/// A labelled slider and spin box bound both ways: dragging moves the spin box, typing an exact
+/// value moves the slider. The spin box may accept a wider range than the slider covers; such a
+/// value is kept as typed (the slider stays at its end), never clamped.
+class SliderSpin : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit SliderSpin(const ParamSpec& spec, QWidget* parent = nullptr);
+
+  double value() const;
+  /// Sets the value without emitting valueChanged.
+  void setValue(double value);
+
+  QSlider* slider() const { return m_slider; }
+  QDoubleSpinBox* spinBox() const { return m_spin; }
+  ParamKey key() const { return m_spec.key; }
+
+ signals:
+  void valueChanged(double value);
+
+ private:
+  int toPosition(double value) const;
+  double fromPosition(int position) const;
+  void sliderMoved(int position);
+  void spinChanged(double value);
+
+  ParamSpec m_spec;
+  QLabel* m_label = nullptr;
+  MarkedSlider* m_slider = nullptr;
+  QDoubleSpinBox* m_spin = nullptr;
+};
+
+}  // namespace grazelab::ui
