@@ -260,7 +260,10 @@ CriticalPoints criticalPointsResonant(const Flight& flight) {
   double largest = 0;
   for (double value : c) largest = std::max(largest, std::abs(value));
   if (!reversed && std::abs(c[4]) <= 1e-14 * largest) add(std::numbers::pi, 0.0, -2.0);
-  for (double root : realRootsQuartic(c)) {
+  // no polishing: a critical time only splits the period into monotone pieces, and the gap is
+  // evaluated exactly wherever the split falls (at a maximum, an error d in time changes the
+  // value by f'' d^2 / 2 only)
+  for (double root : realRootsQuartic(c, false)) {
     if (points.count == 4) break;
     // sin(theta) and cos(theta) - 1 are rational in tan(theta/2) (or its inverse)
     const double denominator = 1.0 + root * root;

@@ -73,8 +73,8 @@ Flight::Flight(const Model& model, const Modes& modes, const State& start)
   }
 
   // the Taylor form is needed only where u2 - gap is small against its amplitude, so that the
-  // modal sum would lose it; 0.1 / w_fast keeps the series short (13 terms at most)
-  m_taylorRadius = 0.1 / modes.omegaFast;
+  // modal sum would lose it; 0.05 / w_fast keeps the series short (11 terms at most)
+  m_taylorRadius = 0.05 / modes.omegaFast;
   m_gapAmplitude = 0;
   m_accelerationBound = 0;
   for (int j = 0; j < 2; ++j) {
@@ -104,8 +104,8 @@ int Flight::taylorTerms(double s) const {
   // enough terms for (w_fast |s|)^n / n! to fall below 1e-19
   const double x = m_modes.omegaFast * std::abs(s);
   if (x <= 0.01) return 8;
-  if (x <= 0.04) return 10;
-  return kTaylorOrder;  // x <= 0.1 inside the Taylor window: 0.1^14 / 14! < 1e-24
+  if (x <= 0.03) return 10;
+  return kTaylorOrder;  // x <= 0.05 inside the Taylor window: 0.05^12 / 12! < 1e-24
 }
 
 State Flight::at(double t) const {
@@ -187,12 +187,19 @@ std::pair<double, double> Flight::gapAndRate(double t) const {
 
 double Flight::acceleration2(double t) const {
   const double s = reduce(t);
-  const double omega[2] = {m_modes.omegaFast, m_modes.omegaSlow};
+  if (std::abs(s) <= m_taylorRadius) {
+    // sum_n c_(n+2) s^n / n!
+    double acceleration = 0;
+    for (int n = kTaylorOrder - 1; n >= 0; --n) {
+      acceleration = acceleration * s + m_derivatives[n + 2](1) * kInverseFactorial[n];
+    }
+    return acceleration;
+  }
+  const Increments phases = modalPhases(s);
   double acceleration = 0;
   for (int j = 0; j < 2; ++j) {
-    const double phase = omega[j] * s;
-    acceleration -= omega[j] * omega[j] *
-                    (m_alpha(j) * std::cos(phase) + m_beta(j) * std::sin(phase));
+    acceleration -= m_omega(j) * m_omega(j) *
+                    (m_alpha(j) * (1.0 + phases.cosineMinusOne[j]) + m_beta(j) * phases.sine[j]);
   }
   return acceleration;
 }

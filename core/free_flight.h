@@ -75,7 +75,7 @@ class Flight {
   int contactOrder() const { return m_contactOrder; }
 
   /// Half-width of the time window around the start (and its T2 repeats) where the Taylor form
-  /// is used: w_fast |t| <= 1/10.
+  /// is used: w_fast |t| <= 1/20.
   double taylorRadius() const { return m_taylorRadius; }
   /// Bound on |u2(t) - u2(0)| / 2: the amplitude of the gap function.
   double gapAmplitude() const { return m_gapAmplitude; }
@@ -89,7 +89,7 @@ class Flight {
   const Eigen::Vector2d& alpha() const { return m_alpha; }
   const Eigen::Vector2d& beta() const { return m_beta; }
 
-  static constexpr int kTaylorOrder = 13;
+  static constexpr int kTaylorOrder = 11;
 
  private:
   // (sin(w_j s), cos(w_j s) - 1) for both modes, j = 0 fast, 1 slow

@@ -28,7 +28,9 @@ Modes computeModes(const Model& model) {
   for (int j = 0; j < 2; ++j) {
     if (modes.P(1, j) < 0) modes.P.col(j) = -modes.P.col(j);
   }
-  modes.Pinv = modes.P.transpose() * mass;
+  // the exact inverse of the rounded P, not P^T M: the product P P^-1 then equals I to rounding,
+  // and free flights (u -> q -> u) do not pick up a fixed bias that drifts the energy
+  modes.Pinv = modes.P.inverse();
 
   double fast = std::sqrt(omegaSquared(1));
   double slow = std::sqrt(omegaSquared(0));

@@ -104,7 +104,7 @@ RealRoots realRootsCubic(const std::array<double, 4>& c) {
   return roots;
 }
 
-RealRoots realRootsQuartic(const std::array<double, 5>& c) {
+RealRoots realRootsQuartic(const std::array<double, 5>& c, bool polishRoots) {
   if (std::abs(c[4]) <= kNegligibleLeading * largestMagnitude(c)) {
     return realRootsCubic({c[0], c[1], c[2], c[3]});
   }
@@ -141,7 +141,7 @@ RealRoots realRootsQuartic(const std::array<double, 5>& c) {
     }
   }
   RealRoots roots;
-  for (double y : depressed) roots.add(polish(c, y - shift));
+  for (double y : depressed) roots.add(polishRoots ? polish(c, y - shift) : y - shift);
   return roots;
 }
 

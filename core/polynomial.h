@@ -17,11 +17,11 @@ struct RealRoots {
 };
 
 /// Real roots of c[4] x^4 + c[3] x^3 + c[2] x^2 + c[1] x + c[0] (Ferrari's method through the
-/// resolvent cubic, each root then polished by Newton on the original polynomial). Leading
-/// coefficients negligible against the others lower the degree. A real double root may be
-/// reported once, twice or, when rounding pushes it off the real axis, not at all: callers must
-/// treat tangencies on their own terms.
-RealRoots realRootsQuartic(const std::array<double, 5>& c);
+/// resolvent cubic, each root then polished by one Newton step on the original polynomial unless
+/// `polish` is false). Leading coefficients negligible against the others lower the degree. A
+/// real double root may be reported once, twice or, when rounding pushes it off the real axis,
+/// not at all: callers must treat tangencies on their own terms.
+RealRoots realRootsQuartic(const std::array<double, 5>& c, bool polish = true);
 
 /// Real roots of c[3] x^3 + c[2] x^2 + c[1] x + c[0] (degree drops as for the quartic).
 RealRoots realRootsCubic(const std::array<double, 4>& c);
