@@ -89,6 +89,9 @@ struct Cost {
   std::int64_t sticks = 0;
   double wallSeconds = 0;          ///< time spent in the solver
   double maxRelEnergyDrift = 0;    ///< max |E - E0| / E0 over contact states
+  /// max relative energy error of one computed free flight, before its end state is restored
+  /// to the energy level of its start (see simulate.cpp): the raw accuracy of the flight
+  double maxFlightEnergyError = 0;
   double maxContactResidual = 0;   ///< max |u2 - gap| at the found contact times, before snapping
 };
 

@@ -80,7 +80,8 @@ QByteArray simulationJson(const RunInput& run, const core::Result& result) {
                                {"grazings", double(cost.grazings)},
                                {"sticks", double(cost.sticks)}}},
       {"energy", QJsonObject{{"initial", result.initialEnergy},
-                             {"max_rel_drift", cost.maxRelEnergyDrift}}},
+                             {"max_rel_drift", cost.maxRelEnergyDrift},
+                             {"max_flight_error", cost.maxFlightEnergyError}}},
       {"accuracy", QJsonObject{{"max_contact_residual", cost.maxContactResidual}}},
       {"timing", QJsonObject{{"seconds", cost.wallSeconds},
                              {"contacts_per_second", contactsPerSecond(result)}}},
@@ -123,7 +124,9 @@ QByteArray simulationSummary(const RunInput& run, const core::Result& result) {
   text += QString("wall time      %1 s (%2 contacts/s)\n")
               .arg(cost.wallSeconds, 0, 'g', 4)
               .arg(contactsPerSecond(result), 0, 'g', 4);
-  text += QString("energy drift   %1 (max relative, at contacts)\n").arg(cost.maxRelEnergyDrift, 0, 'g', 3);
+  text += QString("energy drift   %1 (max relative, at contacts; one flight: %2)\n")
+              .arg(cost.maxRelEnergyDrift, 0, 'g', 3)
+              .arg(cost.maxFlightEnergyError, 0, 'g', 3);
   text += QString("|u2 - gap|     %1 (max at contacts)\n").arg(cost.maxContactResidual, 0, 'g', 3);
   text += QString("final          t=%1 u1=%2 u2=%3 v1=%4 v2=%5\n")
               .arg(result.tFinal, 0, 'g', 17)

@@ -29,6 +29,9 @@ TEST_P(Theorems, EnergyIsConservedOverOneHundredThousandContacts) {
     const Result result = simulate(model(), request);
     EXPECT_EQ(result.cost.contacts, 100'000);
     EXPECT_LT(result.cost.maxRelEnergyDrift, testing::tolerance(1e-10, 1.0)) << push;
+    // each computed flight, before its end state is put back on its energy level, is exact to
+    // rounding: a wrong frequency or mode shape shows up here at once
+    EXPECT_LT(result.cost.maxFlightEnergyError, testing::tolerance(1e-13, 1.0)) << push;
   }
 }
 
@@ -132,7 +135,7 @@ TEST_P(Theorems, ContactTimesAreUnchangedWhenGapAndStateScaleTogether) {
   request.maxContacts = 40;
   const Result reference = simulate(model(), request);
   // impacting motions amplify round-off (MODEL.md section 6): measure how far a one-ulp nudge
-  // of the start drifts, and allow a hundred times that (and never less than 1e-12)
+  // of the start drifts, and allow a hundred times that (and never less than 1e-11)
   request.initial.u1 = std::nextafter(start.u1, 1.0);
   const Result nudged = simulate(model(), request);
   ASSERT_EQ(nudged.events.size(), reference.events.size());
@@ -141,7 +144,7 @@ TEST_P(Theorems, ContactTimesAreUnchangedWhenGapAndStateScaleTogether) {
     const double drift = std::max(std::abs(nudged.events[k].t - reference.events[k].t) / modes().T2,
                                   std::abs(nudged.events[k].after.u1 - reference.events[k].after.u1) /
                                       model().gap);
-    allowance.push_back(std::max(1e-12, 100 * drift));
+    allowance.push_back(std::max(1e-11, 100 * drift));
   }
   for (double scale : {1e-9, 1e-5, 1e3, 1e9}) {
     Model scaled = model();
