@@ -155,7 +155,7 @@ Parsed<RunInput> parseRun(const QCommandLineParser& parser) {
       return {std::nullopt, QStringLiteral("--glo must be a finite number (got %1)").arg(text)};
     }
     initial = core::gloData(chain, modes, *lambda);
-    run.initialDescription = QStringLiteral("GLO_lambda, lambda = %1: %2")
+    run.initialDescription = QStringLiteral("GLO_lambda data, lambda = %1 (as such: %2)")
                                  .arg(*lambda, 0, 'g', 17)
                                  .arg(fromStd(core::describe(core::classifyGlo(*lambda))));
   }
