@@ -31,13 +31,13 @@ struct Scaled {
 
 int signOf(double value) { return (value > 0) - (value < 0); }
 
-// Safeguarded Newton for a root of g in [a, b], given g(a) and g(b) of opposite signs (or zero).
 // A root and |g| at the last iterate evaluated next to it.
 struct Root {
   double x;
   double residual;
 };
 
+// Safeguarded Newton for a root of g in [a, b], given g(a) and g(b) of opposite signs (or zero).
 // `guess` (if inside the bracket) replaces the secant point as the first iterate.
 template <typename Function>
 Root solveBracketed(const Function& g, double a, double b, double ga, double gb,
