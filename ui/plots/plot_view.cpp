@@ -19,12 +19,57 @@
 namespace grazelab::ui {
 namespace {
 
-// a range that is never empty, padded by 2 % on each side
-std::pair<double, double> padded(double low, double high) {
+// a range that is never empty, padded by 2 % on each side; a spread below 1e-3 of the plot's
+// scale (round-off around a constant) is shown as flat rather than blown up
+std::pair<double, double> padded(double low, double high, double scale) {
   if (!(low <= high)) return {-1.0, 1.0};
   double span = high - low;
-  if (span <= 1e-300) span = std::max(std::abs(low) * 0.1, 1e-9);
+  const double least = std::max(1e-3 * scale, 1e-12);
+  if (span < least) {
+    const double middle = 0.5 * (low + high);
+    low = middle - 0.5 * least;
+    high = middle + 0.5 * least;
+    span = least;
+  }
   return {low - 0.02 * span, high + 0.02 * span};
+}
+
+// Ticks at round values (0, 100, 200 rather than -21.02, 120.9) without widening the range,
+// labelled with as many decimals as the step needs. (A QCategoryAxis gives exact labels too,
+// but relayouting it costs ~3 ms per axis and update, too much for a live drag.)
+double niceStep(double low, double high) {
+  const double span = high - low;
+  if (!(span > 0) || !std::isfinite(span)) return 0;
+  const double rough = span / 5.0;
+  const double magnitude = std::pow(10.0, std::floor(std::log10(rough)));
+  const double ratio = rough / magnitude;
+  return (ratio < 1.5 ? 1.0 : ratio < 3.5 ? 2.0 : ratio < 7.5 ? 5.0 : 10.0) * magnitude;
+}
+
+// Sets range and tick interval together. The order matters: Qt Charts lays the ticks out on
+// each change, and a small interval over a large range would create millions of tick items.
+void setRangeWithTicks(QValueAxis* axis, double low, double high) {
+  const double step = niceStep(low, high);
+  if (step <= 0) {
+    axis->setRange(low, high);
+    return;
+  }
+  const bool plain = step >= 1e-4 && std::max(std::abs(low), std::abs(high)) < 1e6;
+  const int decimals = std::max(0, int(std::ceil(-std::log10(step) - 1e-9)));
+  const QString format = plain ? QStringLiteral("%.%1f").arg(decimals) : QStringLiteral("%.3g");
+  if (axis->labelFormat() != format) axis->setLabelFormat(format);
+  if (axis->tickType() != QValueAxis::TicksDynamic) {
+    axis->setTickInterval(std::max(step, axis->max() - axis->min()));
+    axis->setTickAnchor(0.0);
+    axis->setTickType(QValueAxis::TicksDynamic);
+  }
+  if (step >= axis->tickInterval()) {
+    axis->setTickInterval(step);
+    axis->setRange(low, high);
+  } else {
+    axis->setRange(low, high);
+    axis->setTickInterval(step);
+  }
 }
 
 }  // namespace
@@ -46,8 +91,6 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
   m_axisY = new QValueAxis;
   m_axisX->setTitleText(xTitle);
   m_axisY->setTitleText(yTitle);
-  m_axisX->setLabelFormat(QStringLiteral("%.4g"));
-  m_axisY->setLabelFormat(QStringLiteral("%.4g"));
   chart->addAxis(m_axisX, Qt::AlignBottom);
   chart->addAxis(m_axisY, Qt::AlignLeft);
 
@@ -135,17 +178,19 @@ void PlotView::fitAxes() {
     for (const QPointF& point : entry.data) take(point);
   }
   for (const QPointF& point : m_extraBounds) take(point);
-  const auto [x0, x1] = padded(xLow, xHigh);
-  const auto [y0, y1] = padded(yLow, yHigh);
-  m_axisX->setRange(x0, x1);
-  m_axisY->setRange(y0, y1);
-  // round tick values (0, 100, 200 rather than -21.02, 120.9)
-  m_axisX->applyNiceNumbers();
-  m_axisY->applyNiceNumbers();
+  const double scale = std::max({std::abs(xLow), std::abs(xHigh), std::abs(yLow), std::abs(yHigh),
+                                 xHigh - xLow, yHigh - yLow});
+  const auto [x0, x1] = padded(xLow, xHigh, std::isfinite(scale) ? scale : 1.0);
+  const auto [y0, y1] = padded(yLow, yHigh, std::isfinite(scale) ? scale : 1.0);
+  setRangeWithTicks(m_axisX, x0, x1);
+  setRangeWithTicks(m_axisY, y0, y1);
 }
 
 void PlotView::refresh() {
   if (m_followData) fitAxes();
+  // after a zoom or pan by the user: new ticks for the new range
+  setRangeWithTicks(m_axisX, m_axisX->min(), m_axisX->max());
+  setRangeWithTicks(m_axisY, m_axisY->min(), m_axisY->max());
   const QRectF area = chart()->plotArea();
   PixelFrame frame{m_axisX->min(), m_axisX->max(), m_axisY->min(), m_axisY->max(),
                    std::max(1, int(area.width())), std::max(1, int(area.height()))};
@@ -158,13 +203,19 @@ void PlotView::refresh() {
       case Decimation::Trace:
         points = decimateTrace(entry.data, frame);
         break;
-      case Decimation::Path:
-        points = decimatePath(entry.data, frame);
+      case Decimation::Path: {
+        // 2-pixel cells: Qt Charts strokes a hover shape for every line point, so each point
+        // costs; a 1.2 px antialiased line looks the same
+        PixelFrame coarse = frame;
+        coarse.width = std::max(1, frame.width / 2);
+        coarse.height = std::max(1, frame.height / 2);
+        points = decimatePath(entry.data, coarse);
         break;
+      }
       case Decimation::Scatter: {
         // one marker per marker-sized cell: more would overdraw the same pixels
         const auto* scatter = qobject_cast<QScatterSeries*>(entry.series);
-        const int cell = scatter ? std::max(1, int(scatter->markerSize() / 2)) : 1;
+        const int cell = scatter ? std::max(1, int(scatter->markerSize() * 0.75)) : 1;
         PixelFrame coarse = frame;
         coarse.width = std::max(1, frame.width / cell);
         coarse.height = std::max(1, frame.height / cell);
