@@ -54,7 +54,7 @@ void setRangeWithTicks(QValueAxis* axis, double low, double high) {
     axis->setRange(low, high);
     return;
   }
-  const bool plain = step >= 1e-4 && std::max(std::abs(low), std::abs(high)) < 1e6;
+  const bool plain = step >= 1e-9 && std::max(std::abs(low), std::abs(high)) < 1e6;
   const int decimals = std::max(0, int(std::ceil(-std::log10(step) - 1e-9)));
   const QString format = plain ? QStringLiteral("%.%1f").arg(decimals) : QStringLiteral("%.3g");
   if (axis->labelFormat() != format) axis->setLabelFormat(format);
@@ -178,10 +178,18 @@ void PlotView::fitAxes() {
     for (const QPointF& point : entry.data) take(point);
   }
   for (const QPointF& point : m_extraBounds) take(point);
-  const double scale = std::max({std::abs(xLow), std::abs(xHigh), std::abs(yLow), std::abs(yHigh),
-                                 xHigh - xLow, yHigh - yLow});
-  const auto [x0, x1] = padded(xLow, xHigh, std::isfinite(scale) ? scale : 1.0);
-  const auto [y0, y1] = padded(yLow, yHigh, std::isfinite(scale) ? scale : 1.0);
+  // each axis is padded on its own scale (an FFT axis near 8.9 must not inherit the 20 000 of
+  // its contact-index axis), but never below 1e-3 of the plot's overall scale, so that a
+  // coordinate that is zero up to round-off stays a flat line
+  const double scaleX = std::max({std::abs(xLow), std::abs(xHigh), xHigh - xLow});
+  const double scaleY = std::max({std::abs(yLow), std::abs(yHigh), yHigh - yLow});
+  const double overall = std::max(scaleX, scaleY);
+  auto usable = [&](double scale) {
+    const double floored = std::max(scale, 1e-3 * overall);
+    return std::isfinite(floored) && floored > 0 ? floored : 1.0;
+  };
+  const auto [x0, x1] = padded(xLow, xHigh, usable(scaleX));
+  const auto [y0, y1] = padded(yLow, yHigh, usable(scaleY));
   setRangeWithTicks(m_axisX, x0, x1);
   setRangeWithTicks(m_axisY, y0, y1);
 }
