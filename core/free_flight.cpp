@@ -48,27 +48,12 @@ Flight::Flight(const Model& model, const Modes& modes, const State& start)
     m_beta(j) = modes.P(1, j) * m_qDot(j) / omega(j);
   }
 
-  // derivatives of u at the start: u'' = A u with A = -M^-1 K, applied in a form that keeps the
-  // spring stretch u2 - u1 as one difference
-  const double a = model.k1 / model.m1;
-  const double b = model.k2 / model.m1;
-  const double c = model.k2 / model.m2;
-  m_derivatives[0] = u;
-  m_derivatives[1] = v;
-  for (int n = 2; n < static_cast<int>(m_derivatives.size()); ++n) {
-    const Eigen::Vector2d& x = m_derivatives[n - 2];
-    m_derivatives[n] = Eigen::Vector2d(b * (x(1) - x(0)) - a * x(0), c * (x(0) - x(1)));
-  }
-
-  for (int n = 0; n <= kTaylorOrder; ++n) {
-    m_gapAndRateSeries[2 * n] = gapDerivative(n) * kInverseFactorial[n];
-    m_gapAndRateSeries[2 * n + 1] = m_derivatives[n + 1](1) * kInverseFactorial[n];
-  }
-
   if (start.u2 != model.gap) {
     m_contactOrder = 0;
+  } else if (start.v2 != 0) {
+    m_contactOrder = 1;  // the common case, decided without the series
   } else {
-    m_contactOrder = 1;
+    m_contactOrder = 2;
     while (m_contactOrder <= kTaylorOrder && gapDerivative(m_contactOrder) == 0) ++m_contactOrder;
   }
 
@@ -85,8 +70,32 @@ Flight::Flight(const Model& model, const Modes& modes, const State& start)
   m_gapTolerance = 16 * kEpsilon * (2 * m_gapAmplitude + std::abs(start.u2 - model.gap));
 }
 
+void Flight::ensureTaylor() const {
+  if (m_taylorReady) return;
+  m_taylorReady = true;
+  // derivatives of u at the start: u'' = A u with A = -M^-1 K, applied in a form that keeps the
+  // spring stretch u2 - u1 as one difference
+  const double a = m_model.k1 / m_model.m1;
+  const double b = m_model.k2 / m_model.m1;
+  const double c = m_model.k2 / m_model.m2;
+  m_derivatives[0] = Eigen::Vector2d(m_start.u1, m_start.u2);
+  m_derivatives[1] = Eigen::Vector2d(m_start.v1, m_start.v2);
+  for (int n = 2; n < static_cast<int>(m_derivatives.size()); ++n) {
+    const Eigen::Vector2d& x = m_derivatives[n - 2];
+    m_derivatives[n] = Eigen::Vector2d(b * (x(1) - x(0)) - a * x(0), c * (x(0) - x(1)));
+  }
+  for (int n = 0; n <= kTaylorOrder; ++n) {
+    const double gapDerivativeN = n == 0 ? m_start.u2 - m_model.gap : m_derivatives[n](1);
+    m_gapAndRateSeries[2 * n] = gapDerivativeN * kInverseFactorial[n];
+    m_gapAndRateSeries[2 * n + 1] = m_derivatives[n + 1](1) * kInverseFactorial[n];
+  }
+}
+
 double Flight::gapDerivative(int n) const {
-  return n == 0 ? m_start.u2 - m_model.gap : m_derivatives[n](1);
+  if (n == 0) return m_start.u2 - m_model.gap;
+  if (n == 1) return m_start.v2;
+  ensureTaylor();
+  return m_derivatives[n](1);
 }
 
 double Flight::reduce(double t) const {
@@ -114,6 +123,7 @@ State Flight::at(double t) const {
 }
 
 State Flight::taylorAt(double s) const {
+  ensureTaylor();
   // Horner on sum d_n s^n / n!, from the highest order down
   Eigen::Vector2d position = Eigen::Vector2d::Zero();
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
@@ -163,6 +173,7 @@ std::pair<double, double> Flight::gapAndRate(double t) const {
   if (std::abs(s) <= m_taylorRadius) {
     // value = sum_n c_n s^n / n!,  rate = sum_n c_(n+1) s^n / n!
     // both Horner sums in one pass over interleaved coefficients
+    ensureTaylor();
     double value = 0;
     double rate = 0;
     for (int n = taylorTerms(s); n >= 0; --n) {
@@ -189,6 +200,7 @@ double Flight::acceleration2(double t) const {
   const double s = reduce(t);
   if (std::abs(s) <= m_taylorRadius) {
     // sum_n c_(n+2) s^n / n!
+    ensureTaylor();
     double acceleration = 0;
     for (int n = kTaylorOrder - 1; n >= 0; --n) {
       acceleration = acceleration * s + m_derivatives[n + 2](1) * kInverseFactorial[n];
@@ -223,6 +235,7 @@ std::pair<double, double> Flight::reducedGapAndRate(double x, int m) const {
   if (m == 0) return gapAndRate(x);
   if (std::abs(x) <= m_taylorRadius) {
     // g(x) = sum_{n>=m} c_n x^(n-m) / n!,  g'(x) = sum_{n>m} c_n (n-m) x^(n-m-1) / n!
+    ensureTaylor();
     double value = 0;
     double rate = 0;
     for (int n = std::max(taylorTerms(x), m); n >= m; --n) {

@@ -104,6 +104,8 @@ class Flight {
   double reduce(double t) const;
   // highest order needed for the Taylor sums at offset s (|s| <= taylorRadius)
   int taylorTerms(double s) const;
+  // computes the Taylor coefficients on first use: many flights never need them
+  void ensureTaylor() const;
 
   Model m_model;
   Modes m_modes;
@@ -115,10 +117,12 @@ class Flight {
   Eigen::Vector2d m_amplitudeRatio;  // q'_j / w_j
   Eigen::Vector2d m_alpha;
   Eigen::Vector2d m_beta;
+  // Taylor data, filled by ensureTaylor() (mutable: a cache; a Flight is used by one thread)
+  mutable bool m_taylorReady = false;
   // d^n u / dt^n at the start, n = 0 .. kTaylorOrder + 1 (the extra one for velocities)
-  std::array<Eigen::Vector2d, kTaylorOrder + 2> m_derivatives;
+  mutable std::array<Eigen::Vector2d, kTaylorOrder + 2> m_derivatives;
   // interleaved (c_n / n!, c_(n+1) / n!), c_0 = u2 - gap: the Taylor sums of u2 - gap and v2
-  std::array<double, 2 * (kTaylorOrder + 1)> m_gapAndRateSeries;
+  mutable std::array<double, 2 * (kTaylorOrder + 1)> m_gapAndRateSeries;
   int m_contactOrder = 0;
   double m_taylorRadius = 0;
   double m_gapAmplitude = 0;

@@ -63,7 +63,7 @@ double largestRealRootMonicCubic(double a, double b, double c) {
     const double small = big == 0 ? 0 : q / big;
     root = big + small - a / 3.0;
   }
-  return polish(std::array<double, 4>{c, b, a, 1.0}, root);
+  return root;
 }
 
 }  // namespace
@@ -94,7 +94,7 @@ RealRoots realRootsCubic(const std::array<double, 4>& c) {
   const double a = c[2] / c[3];
   const double b = c[1] / c[3];
   const double d = c[0] / c[3];
-  const double root = largestRealRootMonicCubic(a, b, d);
+  const double root = polish(c, largestRealRootMonicCubic(a, b, d));
   // deflate: x^3 + a x^2 + b x + d = (x - root)(x^2 + (a + root) x + (b + root (a + root)))
   RealRoots roots;
   roots.add(root);
