@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/sim_worker.h"
 
+#include "core/budget.h"
+
 #include <QElapsedTimer>
 
 #include <algorithm>
@@ -42,8 +44,7 @@ void SimWorker::run(const SimRequest& request, std::stop_token stop, double chun
     done = simulator.advance(budget, stop);
     const double seconds = std::max(clock.nsecsElapsed() * 1e-9, 1e-6);
     if (done || stop.stop_requested()) break;
-    const double scale = std::clamp(chunkSeconds / seconds, 0.25, 8.0);
-    budget = std::clamp<std::int64_t>(std::int64_t(double(budget) * scale), 16, 50'000'000);
+    budget = core::nextChunkContacts(budget, seconds, chunkSeconds);
     // a partial result is a full copy: when copies grow costly, send them less often so
     // that copying never takes more than a fifth of the worker's time
     if (sinceReport.nsecsElapsed() * 1e-9 < std::max(chunkSeconds, 4 * copySeconds)) continue;
