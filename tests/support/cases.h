@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ struct Chain {
   std::string name;
   core::Model model;
 };
+
+/// GoogleTest prints a parameter by its name (test names stay readable in ctest).
+inline void PrintTo(const Chain& chain, std::ostream* out) { *out << chain.name; }
 
 /// Resonant chains: both branches, an extreme mass ratio, a tiny and a huge gap, the merge point.
 inline std::vector<Chain> resonantChains() {
