@@ -95,6 +95,11 @@ Simulator::Simulator(const Model& model, const Request& request)
   }
   m_result.modes = computeModes(model);
   m_nextSampleTime = request.needs.samples.tBegin;
+  // one entry per contact: reserve up front (capped) rather than regrow a long section
+  const std::size_t expected = std::size_t(std::clamp<std::int64_t>(request.maxContacts, 0, 4'000'000));
+  if (request.needs.events) m_result.events.reserve(expected);
+  if (request.needs.poincare) m_result.poincare.reserve(expected);
+  if (request.needs.freeFlights) m_result.freeFlights.reserve(expected);
 }
 
 double Simulator::progress() const {

@@ -12,7 +12,8 @@ namespace grazelab::ui {
 FreeFlightPlot::FreeFlightPlot(QWidget* parent)
     : PlotView(tr("Free-flight time at each contact"), tr("contact index"), tr("FFT"), parent) {
   auto* flights = makeScatter(tr("FFT"), colors::kTrace, 5);
-  flights->setMarkerShape(QScatterSeries::MarkerShapeRectangle);  // cheap to draw
+  flights->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+  useLightMarker(flights);
   m_flights = addEntry(flights, Decimation::Scatter);
   m_period = addEntry(makeLine(tr("FFT = T₂"), colors::kImpact, 1.5, Qt::DashLine), Decimation::None);
   setToolTip(tr("Free-flight time (FFT): the time from leaving the stop to the next contact, "

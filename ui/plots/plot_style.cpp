@@ -2,8 +2,13 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/plot_style.h"
 
+#include <QImage>
 #include <QLineSeries>
+#include <QPainter>
 #include <QScatterSeries>
+
+#include <algorithm>
+#include <cmath>
 
 namespace grazelab::ui {
 
@@ -25,7 +30,29 @@ QScatterSeries* makeScatter(const QString& name, const QColor& color, double siz
   series->setMarkerShape(QScatterSeries::MarkerShapeCircle);
   series->setMarkerSize(size);
   series->setPen(Qt::NoPen);
+  useLightMarker(series);
   return series;
+}
+
+void useLightMarker(QScatterSeries* series, const QPen& outline) {
+  // drawn at the marker's own size: Qt then blits it without scaling
+  const int pixels = std::max(2, int(std::lround(series->markerSize())));
+  QImage image(pixels, pixels, QImage::Format_ARGB32_Premultiplied);
+  image.fill(Qt::transparent);
+  QPainter painter(&image);
+  painter.setRenderHint(QPainter::Antialiasing);
+  QPen pen = outline;
+  painter.setPen(pen);
+  painter.setBrush(series->color());
+  const double inset = pen.style() == Qt::NoPen ? 0.0 : 0.5 * pen.widthF();
+  const QRectF box(inset, inset, pixels - 2 * inset, pixels - 2 * inset);
+  if (series->markerShape() == QScatterSeries::MarkerShapeRectangle) {
+    painter.drawRect(box);
+  } else {
+    painter.drawEllipse(box);
+  }
+  painter.end();
+  series->setLightMarker(image);
 }
 
 }  // namespace grazelab::ui

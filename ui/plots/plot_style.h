@@ -22,7 +22,13 @@ inline const QColor kReference{0x00, 0x00, 0x00};
 /// A solid line series of the given colour and width.
 QLineSeries* makeLine(const QString& name, const QColor& color, double width = 1.5,
                       Qt::PenStyle style = Qt::SolidLine);
-/// A round-marker scatter series without outline.
+/// A round-marker scatter series without outline, drawn with light markers.
 QScatterSeries* makeScatter(const QString& name, const QColor& color, double size = 5.0);
+
+/// Draws the series' markers as one painted image per point (Qt Charts "light markers") from its
+/// current shape, colour and size, with the given outline: Qt Charts' default makes one
+/// QGraphicsItem per point, whose updates dominated the time from a slider move to the redraw.
+/// Call again after changing the shape, colour or size.
+void useLightMarker(QScatterSeries* series, const QPen& outline = Qt::NoPen);
 
 }  // namespace grazelab::ui

@@ -40,7 +40,7 @@ std::pair<double, double> padded(double low, double high, double scale) {
 double niceStep(double low, double high) {
   const double span = high - low;
   if (!(span > 0) || !std::isfinite(span)) return 0;
-  const double rough = span / 5.0;
+  const double rough = span / 4.0;  // four to eight ticks: labels stay apart on a projector
   const double magnitude = std::pow(10.0, std::floor(std::log10(rough)));
   const double ratio = rough / magnitude;
   return (ratio < 1.5 ? 1.0 : ratio < 3.5 ? 2.0 : ratio < 7.5 ? 5.0 : 10.0) * magnitude;
@@ -60,9 +60,13 @@ void setRangeWithTicks(QValueAxis* axis, double low, double high) {
   if (axis->labelFormat() != format) axis->setLabelFormat(format);
   if (axis->tickType() != QValueAxis::TicksDynamic) {
     axis->setTickInterval(std::max(step, axis->max() - axis->min()));
-    axis->setTickAnchor(0.0);
     axis->setTickType(QValueAxis::TicksDynamic);
   }
+  // Qt Charts accumulates the tick values, so the one at zero lands at about -1e-17 and reads
+  // "-0.0" (or "-1.4e-20"); anchoring the ticks a billionth of a step above zero keeps that
+  // tick on the positive side, invisibly
+  const double anchor = 1e-9 * step;
+  if (axis->tickAnchor() != anchor) axis->setTickAnchor(anchor);
   if (step >= axis->tickInterval()) {
     axis->setTickInterval(step);
     axis->setRange(low, high);
@@ -195,6 +199,14 @@ void PlotView::fitAxes() {
 }
 
 void PlotView::refresh() {
+  // empty the line series first: every axis change makes Qt Charts recompute and re-stroke the
+  // path of every point a line holds, and the old points are about to be replaced anyway.
+  // Scatter series keep theirs: Qt Charts reuses their marker items across a replace().
+  for (Entry& entry : m_entries) {
+    if (entry.series->count() > 0 && !qobject_cast<QScatterSeries*>(entry.series)) {
+      entry.series->replace(QList<QPointF>());
+    }
+  }
   if (m_followData) fitAxes();
   // after a zoom or pan by the user: new ticks for the new range
   setRangeWithTicks(m_axisX, m_axisX->min(), m_axisX->max());

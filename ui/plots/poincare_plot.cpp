@@ -28,12 +28,14 @@ PoincarePlot::PoincarePlot(QWidget* parent)
     // squares: Qt Charts draws them far faster than circles, which matters for 10^5 points
     auto* series = makeScatter(QString(), kBinColors[bin], 4);
     series->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+    useLightMarker(series);
     m_bins[bin] = addEntry(series, Decimation::Scatter);
   }
   auto* reference = makeScatter(tr("reference"), colors::kReference, 11);
   reference->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
   reference->setColor(Qt::transparent);
   reference->setPen(QPen(colors::kReference, 2));
+  useLightMarker(reference, QPen(colors::kReference, 2));
   m_reference = addEntry(reference, Decimation::None);
   setToolTip(tr("Each dot is the state (u₁, v₁) of mass 1 at a contact of mass 2 with the stop "
                 "(the section H: u₂ = d). Colours run from early contacts (purple) to late ones "
@@ -62,8 +64,15 @@ void PoincarePlot::show(const SimUpdate& update) {
     setData(m_bins[bin], std::move(bins[bin]));
   }
   std::vector<QPointF> reference;
+  clearExtraBounds();
   if (update.request->reference) {
-    reference.emplace_back(update.request->reference->u1, update.request->reference->v1);
+    const core::State& data = *update.request->reference;
+    reference.emplace_back(data.u1, data.v1);
+    // points that coincide (a 1IPP orbit hits the same spot every period) still get a window
+    // of a few percent of the gap around them, not one zoomed into round-off
+    const double margin = 0.05 * update.request->params.gap;
+    includeInBounds(data.u1, data.v1 - margin);
+    includeInBounds(data.u1, data.v1 + margin);
   }
   entryList[std::size_t(m_reference)].series->setName(update.request->referenceLabel);
   setData(m_reference, std::move(reference));
