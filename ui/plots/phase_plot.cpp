@@ -17,7 +17,7 @@ PhasePlot::PhasePlot(Mass mass, QWidget* parent)
                mass == Mass::Two ? tr("u₂") : tr("u₁"), mass == Mass::Two ? tr("v₂") : tr("v₁"),
                parent),
       m_mass(mass) {
-  m_path = addEntry(makeLine(tr("orbit"), colors::kTrace, 1.2), Decimation::Path);
+  m_path = addEntry(makeLine(tr("orbit"), colors::kTrace, 1.0), Decimation::Path);
   if (mass == Mass::Two) {
     m_stop = addEntry(makeLine(tr("stop u₂ = d"), colors::kStop, 1.5, Qt::DashLine),
                       Decimation::None);

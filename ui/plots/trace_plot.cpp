@@ -13,7 +13,7 @@ namespace grazelab::ui {
 
 TracePlot::TracePlot(QWidget* parent)
     : PlotView(tr("Displacement of mass 2: u₂(t)"), tr("time t"), tr("u₂"), parent) {
-  m_trace = addEntry(makeLine(tr("u₂(t)"), colors::kTrace), Decimation::Trace);
+  m_trace = addEntry(makeLine(tr("u₂(t)"), colors::kTrace, 1.0), Decimation::Trace);
   m_stop = addEntry(makeLine(tr("stop u₂ = d"), colors::kStop, 1.5, Qt::DashLine), Decimation::None);
   m_impacts = addEntry(makeScatter(tr("impacts"), colors::kImpact, 6), Decimation::Scatter, false);
   m_grazings = addEntry(makeScatter(tr("grazings / sticks"), colors::kGrazing, 7),
