@@ -22,6 +22,7 @@
 #include "ui/slider_spin.h"
 
 using namespace grazelab::ui;
+using grazelab::ui::testing::openTestWindow;
 using grazelab::ui::testing::waitForLatestFinal;
 
 namespace {
@@ -50,9 +51,7 @@ class ExplorerTest : public QObject {
 
  private slots:
   void init() {
-    m_window = std::make_unique<MainWindow>(MainWindow::Options{.synchronous = false, .useSettings = false});
-    m_window->resize(1400, 900);
-    m_window->show();
+    m_window = openTestWindow();
     QVERIFY(waitForLatestFinal(*m_window));
   }
   void cleanup() { m_window.reset(); }

@@ -7,6 +7,8 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <memory>
+
 #include "ui/main_window.h"
 #include "ui/sim_controller.h"
 
@@ -24,6 +26,15 @@ inline bool waitForLatestFinal(MainWindow& window, int timeoutMs = 20000) {
     QTest::qWait(5);
   }
   return false;
+}
+
+/// A shown explorer window that keeps no settings, sized for the tests' plots.
+inline std::unique_ptr<MainWindow> openTestWindow() {
+  auto window = std::make_unique<MainWindow>(
+      MainWindow::Options{.synchronous = false, .useSettings = false});
+  window->resize(1400, 900);
+  window->show();
+  return window;
 }
 
 }  // namespace grazelab::ui::testing

@@ -14,6 +14,7 @@
 #include "ui/session.h"
 
 using namespace grazelab::ui;
+using grazelab::ui::testing::openTestWindow;
 using grazelab::ui::testing::waitForLatestFinal;
 
 namespace {
@@ -41,9 +42,7 @@ class FilesTest : public QObject {
 
  private slots:
   void init() {
-    m_window = std::make_unique<MainWindow>(MainWindow::Options{.synchronous = false, .useSettings = false});
-    m_window->resize(1400, 900);
-    m_window->show();
+    m_window = openTestWindow();
     m_window->setParams(changedParams(m_window->params()));
     QVERIFY(waitForLatestFinal(*m_window));
   }
