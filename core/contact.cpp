@@ -177,6 +177,9 @@ Contact nextContactDetuned(const Flight& flight, double horizon) {
     t = window;
   }
 
+  // a chain at rest stays where it is: below the stop, it never arrives
+  if (!(bound > 0)) return {};
+
   const Scaled plain{flight, 0};
   double previous = t;
   for (long step = 0; step < 100'000'000 && t <= horizon; ++step) {
