@@ -97,7 +97,9 @@ Simulator::Simulator(const Model& model, const Request& request)
   m_nextSampleTime = request.needs.samples.tBegin;
   // one entry per contact: reserve up front (capped) rather than regrow a long section
   const std::size_t expected = std::size_t(std::clamp<std::int64_t>(request.maxContacts, 0, 4'000'000));
-  if (request.needs.events) m_result.events.reserve(expected);
+  if (request.needs.events && !std::isfinite(request.needs.eventsUntil)) {
+    m_result.events.reserve(expected);
+  }
   if (request.needs.poincare) m_result.poincare.reserve(expected);
   if (request.needs.freeFlights) m_result.freeFlights.reserve(expected);
 }
@@ -153,7 +155,7 @@ void Simulator::recordContact(const Event& event, double residual) {
   cost.maxContactResidual = std::max(cost.maxContactResidual, residual);
 
   const Needs& needs = m_request.needs;
-  if (needs.events) m_result.events.push_back(event);
+  if (needs.events && event.t <= needs.eventsUntil) m_result.events.push_back(event);
   if (needs.poincare) {
     m_result.poincare.push_back(
         {event.t, event.after.u1, event.after.v1, event.after.v2, event.type});
@@ -215,7 +217,9 @@ void Simulator::stepStuck() {
   const State before = motion.at(release);
   const State after = motion.releaseState();
   m_t += release;
-  if (m_request.needs.events) m_result.events.push_back({m_t, EventType::Release, before, after});
+  if (m_request.needs.events && m_t <= m_request.needs.eventsUntil) {
+    m_result.events.push_back({m_t, EventType::Release, before, after});
+  }
   m_state = after;
   m_stuck = false;
 }

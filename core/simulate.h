@@ -30,6 +30,7 @@ struct SampleSpec {
 /// What the caller will look at; nothing else is stored (DESIGN.md "Needs").
 struct Needs {
   bool events = true;         ///< the event list
+  double eventsUntil = kInfinity;  ///< keep only events up to this time (a plot's window)
   bool poincare = false;      ///< (t, u1, v1, v2) at each contact
   bool freeFlights = false;   ///< free-flight time of each flight that starts on the stop
   SampleSpec samples;         ///< dense samples

@@ -173,8 +173,16 @@ void MainWindow::buildMenus() {
 }
 
 void MainWindow::buildPlots() {
-  for (PlotView* plot : m_plots) plot->deleteLater();
+  // out of the layout and out of sight now; deleted once control is back in the event loop
+  // (headless mode has none running yet, so a deferred delete alone would leave them drawn)
+  for (PlotView* plot : m_plots) {
+    m_plotGrid->removeWidget(plot);
+    plot->hide();
+    plot->disconnect(this);
+    plot->deleteLater();
+  }
   m_plots.clear();
+  m_currentPlot = nullptr;
   const QList<PlotKind> kinds = scene().plots();
   for (PlotKind kind : kinds) {
     PlotView* plot = makePlot(kind, m_plotArea);

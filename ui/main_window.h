@@ -53,6 +53,8 @@ class MainWindow : public QMainWindow {
   /// Shows these parameters and recomputes.
   void setParams(const Params& params);
   Session session() const;
+  /// The scene and parameters of the run on screen (the panel's while nothing is shown yet).
+  Session displayedSession() const;
   /// Selects the session's scene and parameters; false (and `error`) for an unknown scene.
   bool applySession(const Session& session, QString* error);
 

@@ -17,7 +17,7 @@
 namespace grazelab::ui {
 
 bool MainWindow::writeSnapshot(QWidget* widget, const QString& path, QString* error) {
-  const QByteArray json = sessionToJson(session());
+  const QByteArray json = sessionToJson(displayedSession());
   // the picture first: a session file beside a missing picture would only confuse
   if (!saveSnapshot(widget, path, json, error)) return false;
   return saveFileAtomically(sessionPathFor(path), json, error);
@@ -43,7 +43,14 @@ QString MainWindow::plottedDataCsv() const {
 
 bool MainWindow::exportCsv(const QString& path, QString* error) {
   if (!saveFileAtomically(path, plottedDataCsv().toUtf8(), error)) return false;
-  return saveFileAtomically(sessionPathFor(path), sessionToJson(session()), error);
+  return saveFileAtomically(sessionPathFor(path), sessionToJson(displayedSession()), error);
+}
+
+Session MainWindow::displayedSession() const {
+  // a picture or its data carry the parameters of the run they show, which differ from the
+  // panel's while a new value computes or after an infeasible one
+  if (m_displayed) return {m_displayed->request->sceneName, m_displayed->request->params};
+  return session();
 }
 
 bool MainWindow::saveSession(const QString& path, QString* error) {
@@ -66,8 +73,8 @@ bool MainWindow::openSession(const QString& path, QString* error) {
 }
 
 void MainWindow::reportFailure(const QString& what, const QString& error) {
-  QMessageBox::warning(this, what, tr("%1 failed:\n%2\n\nNothing was lost: the window keeps its "
-                                      "state, and any earlier file is unchanged.")
+  QMessageBox::warning(this, what, tr("%1 failed:\n%2\n\nThe window keeps its state; a file "
+                                      "that could not be written was left as it was.")
                                        .arg(what, error));
 }
 

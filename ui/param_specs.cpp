@@ -29,7 +29,7 @@ ParamSpec paramSpec(ParamKey key) {
     case ParamKey::Gap:
       return {key, tr("gap d"),
               tr("Distance from the rest position of mass 2 to the rigid stop."), 0.1, 4.0,
-              1e-6, 1e6, 4, false, {1.0}};
+              1e-6, 1e6, 6, false, {1.0}};
     case ParamKey::K1:
       return {key, tr("k₁"), tr("Stiffness of the spring between the wall and mass 1."), 0.1, 4.0,
               0.001, 100.0, 4, false, {}};
@@ -52,7 +52,7 @@ ParamSpec paramSpec(ParamKey key) {
       return {key, tr("T / T₂"),
               tr("Period T of the one-impact-per-period orbit as a fraction of T₂, the slow "
                  "period. As T → T₂ from below the orbit tends to GLO_λ* (Theorem 2.1)."),
-              0.5, 0.999, 0.01, 0.999999, 4, false, {}};
+              0.5, 0.999, 0.01, 0.999999, 6, false, {}};
   }
   return {key, {}, {}, 0, 1, 0, 1, 3, false, {}};
 }

@@ -2,9 +2,12 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/params.h"
 
+#include "ui/param_specs.h"
+
 #include <QJsonValue>
 
 #include <array>
+#include <cmath>
 
 namespace grazelab::ui {
 namespace {
@@ -91,7 +94,20 @@ std::optional<Params> paramsFromJson(const QJsonObject& object, const Params& ba
     const QJsonValue value = object.value(jsonKey(key));
     if (value.isUndefined()) continue;
     if (!value.isDouble()) return fail(QStringLiteral("\"%1\" must be a number").arg(jsonKey(key)));
-    params.setValue(key, value.toDouble());
+    // the same limits as the spin boxes: a value the panel cannot show is not run either
+    const ParamSpec spec = paramSpec(key);
+    const double number = value.toDouble();
+    if (!std::isfinite(number) || number < spec.spinMin || number > spec.spinMax) {
+      return fail(QStringLiteral("\"%1\" = %2 is outside [%3, %4]")
+                      .arg(jsonKey(key))
+                      .arg(number, 0, 'g', 17)
+                      .arg(spec.spinMin, 0, 'g', 17)
+                      .arg(spec.spinMax, 0, 'g', 17));
+    }
+    if (key == ParamKey::Horizon && number != std::floor(number)) {
+      return fail(QStringLiteral("\"%1\" must be a whole number").arg(jsonKey(key)));
+    }
+    params.setValue(key, number);
   }
   if (const QJsonValue value = object.value(QStringLiteral("direction")); !value.isUndefined()) {
     bool found = false;

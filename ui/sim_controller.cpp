@@ -21,6 +21,8 @@ SimController::SimController(QObject* parent)
 }
 
 SimController::~SimController() {
+  // no signal may leave now: the window that listens is already half destroyed
+  blockSignals(true);
   // stop the job, cut the way back, then let the thread run out its event queue and end:
   // the queued wake-ups find an empty mailbox and return at once
   cancel();

@@ -33,9 +33,24 @@ std::vector<std::string> renameSessionOption(int argc, char* argv[]) {
   return arguments;
 }
 
+// True when the arguments ask for headless work (a snapshot or the scene list).
+bool headlessRequested(int argc, char* argv[]) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view argument(argv[i]);
+    for (std::string_view option : {"--snapshot", "-snapshot", "--list-scenes", "-list-scenes"}) {
+      if (argument.substr(0, option.size()) == option) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char* argv[]) {
+  // headless work needs no display: render offscreen unless the user chose a platform
+  if (headlessRequested(argc, argv) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+  }
   std::vector<std::string> arguments = renameSessionOption(argc, argv);
   std::vector<char*> pointers;
   for (std::string& argument : arguments) pointers.push_back(argument.data());

@@ -131,6 +131,17 @@ TEST(Simulate, OnlyWhatIsNeededIsKept) {
   EXPECT_EQ(rich.final, bare.final);
 }
 
+TEST(Simulate, EventsAreKeptOnlyInTheirWindow) {
+  const Model model = testing::resonantChain(0.5);
+  Request request = nearGrazingRequest(model, 200);
+  request.needs.eventsUntil = 50.0;
+  const Result result = simulate(model, request);
+  EXPECT_EQ(result.cost.contacts, 200);
+  ASSERT_FALSE(result.events.empty());
+  EXPECT_LT(result.events.size(), 10u);
+  for (const Event& event : result.events) EXPECT_LE(event.t, 50.0);
+}
+
 TEST(Simulate, SamplesAreEvenlySpacedAndBelowTheStop) {
   const Model model = testing::resonantChain(0.5);
   Request request = nearGrazingRequest(model, 20);

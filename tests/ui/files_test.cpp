@@ -98,6 +98,34 @@ class FilesTest : public QObject {
     QVERIFY(session->params == m_window->params());
   }
 
+  void snapshotCarriesTheParametersOfWhatItShows() {
+    // an infeasible mass ratio leaves the last valid run on screen: the snapshot's parameters
+    // are that run's, not the panel's
+    const Params shown = m_window->displayed()->request->params;
+    Params infeasible = m_window->params();
+    infeasible.m2 = 0.9;
+    m_window->setParams(infeasible);
+    QTRY_VERIFY(!m_window->problem().isEmpty());
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("window.png"));
+    QString error;
+    QVERIFY2(m_window->saveWindowSnapshot(path, &error), qPrintable(error));
+    const auto session = sessionFromJson(readAll(sessionPathFor(path)), Params{}, &error);
+    QVERIFY2(session, qPrintable(error));
+    QVERIFY(session->params == shown);
+    QCOMPARE(session->params.m2, shown.m2);
+    QVERIFY(session->params.m2 != infeasible.m2);
+  }
+
+  void sessionValuesOutsideTheControlsAreRejected() {
+    QString error;
+    const QByteArray json = R"({"format": "grazelab-session", "version": 1, "scene": "Grazing family GLO_lambda", "params": {"contacts": 5e7}})";
+    QVERIFY(!sessionFromJson(json, Params{}, &error));
+    QVERIFY2(error.contains(QStringLiteral("outside")), qPrintable(error));
+    const QByteArray fraction = R"({"format": "grazelab-session", "version": 1, "scene": "Grazing family GLO_lambda", "params": {"contacts": 12.5}})";
+    QVERIFY(!sessionFromJson(fraction, Params{}, &error));
+  }
+
   void sessionRoundTrip() {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("session.json"));

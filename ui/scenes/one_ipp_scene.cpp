@@ -34,8 +34,9 @@ Params OneIppScene::defaults() const {
 }
 
 QList<ParamKey> OneIppScene::parameters() const {
-  return {ParamKey::Period, ParamKey::M1,           ParamKey::M2,     ParamKey::Gap,
-          ParamKey::K1,     ParamKey::Perturbation, ParamKey::Horizon};
+  // k2 too: it is what the "1:2 design" box hands over to the user when unticked
+  return {ParamKey::Period, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
+          ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
 }
 
 QList<PlotKind> OneIppScene::plots() const {
