@@ -79,6 +79,11 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
       generator.setTitle(QStringLiteral("GrazeLab"));
       generator.setDescription(description);
       QPainter painter(&generator);
+      if (!painter.isActive()) {
+        file.cancelWriting();
+        if (error) *error = QStringLiteral("cannot draw the SVG picture for %1").arg(path);
+        return false;
+      }
       widget->render(&painter);
       painter.end();
       break;
@@ -93,6 +98,11 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
                                    QPageSize::Millimeter));
       writer.setPageMargins(QMarginsF(0, 0, 0, 0));
       QPainter painter(&writer);
+      if (!painter.isActive()) {
+        file.cancelWriting();
+        if (error) *error = QStringLiteral("cannot draw the PDF page for %1").arg(path);
+        return false;
+      }
       const double scale = double(writer.width()) / widget->width();
       painter.scale(scale, scale);
       widget->render(&painter);
