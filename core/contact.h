@@ -32,7 +32,9 @@ struct Contact {
 /// and a local maximum within rounding of zero is a tangent (grazing) touch, decided there and
 /// not by luck. Only one period is searched: the motion repeats after T2, so a flight from the
 /// stop is back by T2 (Theorem 2.3), and one from below that stays below never arrives.
-/// Contacts within the Taylor window of T2 are computed as offsets from T2.
+/// A crossing in the second half of the period is solved as an offset from T2, so that one a
+/// hair before the return keeps its relative precision; for a flight leaving the stop, the
+/// zero of order m at the start (and at T2) is divided out first.
 ///
 /// Detuned chains: a march that cannot step over a contact. From a point with u2 - gap = f < 0
 /// and rate f', no contact can happen before the positive root h of f + f' h + A h^2 / 2 = 0,
