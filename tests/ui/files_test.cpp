@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // Tests for ui/export.cpp, ui/session.cpp and ui/main_window_files.cpp: snapshots, CSV and
 // sessions are written, carry their parameters and reopen to the same view.
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QImageReader>
@@ -175,6 +176,19 @@ class FilesTest : public QObject {
     const bool rewritten = saveFileAtomically(path, "new", &error);
     QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
     if (!rewritten) QCOMPARE(readAll(path), QByteArray("{\"old\": true}"));  // root may write anyway
+
+    // a folder that cannot be made (its "parent" is a file) fails even for root, and the file
+    // in the way, the window and its session are left as they were
+    const QString blocker = dir.filePath(QStringLiteral("notes.txt"));
+    QVERIFY(saveFileAtomically(blocker, "keep me", &error));
+    error.clear();
+    QVERIFY(!m_window->saveWindowSnapshot(blocker + QStringLiteral("/snap.png"), &error));
+    QVERIFY(!error.isEmpty());
+    QVERIFY(!m_window->exportCsv(blocker + QStringLiteral("/data.csv"), &error));
+    QVERIFY(!m_window->saveSession(blocker + QStringLiteral("/s.json"), &error));
+    QCOMPARE(readAll(blocker), QByteArray("keep me"));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::NoDotAndDotDot).size(), 2);
+    QVERIFY(m_window->params() == before);
   }
 
   void malformedSessionIsRejected() {
