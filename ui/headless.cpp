@@ -3,7 +3,6 @@
 #include "ui/headless.h"
 
 #include <QCoreApplication>
-#include <QFile>
 
 #include "ui/main_window.h"
 #include "ui/plots/plot_view.h"
@@ -22,17 +21,8 @@ bool renderSceneSnapshot(const QString& sceneName, const QString& sessionPath,
   MainWindow window({.synchronous = true, .useSettings = false});
   Session session = window.session();
   if (!sessionPath.isEmpty()) {
-    QFile file(sessionPath);
-    if (!file.open(QIODevice::ReadOnly)) {
-      if (error) *error = QStringLiteral("cannot read %1: %2").arg(sessionPath, file.errorString());
-      return false;
-    }
-    QString parseError;
-    const auto loaded = sessionFromJson(file.readAll(), Params{}, &parseError);
-    if (!loaded) {
-      if (error) *error = QStringLiteral("%1: %2").arg(sessionPath, parseError);
-      return false;
-    }
+    const auto loaded = readSessionFile(sessionPath, Params{}, error);
+    if (!loaded) return false;
     session = *loaded;
   }
   if (!sceneName.isEmpty()) {

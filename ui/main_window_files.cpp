@@ -4,7 +4,6 @@
 // QSaveFile (ui/export.h); a failure is shown and leaves the old file and the session intact.
 #include <QApplication>
 #include <QClipboard>
-#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
@@ -58,18 +57,8 @@ bool MainWindow::saveSession(const QString& path, QString* error) {
 }
 
 bool MainWindow::openSession(const QString& path, QString* error) {
-  QFile file(path);
-  if (!file.open(QIODevice::ReadOnly)) {
-    if (error) *error = tr("cannot read %1: %2").arg(path, file.errorString());
-    return false;
-  }
-  QString parseError;
-  const auto loaded = sessionFromJson(file.readAll(), Params{}, &parseError);
-  if (!loaded) {
-    if (error) *error = tr("%1: %2").arg(path, parseError);
-    return false;
-  }
-  return applySession(*loaded, error);
+  const auto loaded = readSessionFile(path, Params{}, error);
+  return loaded && applySession(*loaded, error);
 }
 
 void MainWindow::reportFailure(const QString& what, const QString& error) {

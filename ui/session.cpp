@@ -3,6 +3,7 @@
 #include "ui/session.h"
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -49,6 +50,19 @@ std::optional<Session> sessionFromJson(const QByteArray& json, const Params& def
 QString sessionPathFor(const QString& snapshotPath) {
   const QFileInfo info(snapshotPath);
   return info.dir().filePath(info.completeBaseName() + QStringLiteral(".session.json"));
+}
+
+std::optional<Session> readSessionFile(const QString& path, const Params& defaults,
+                                       QString* error) {
+  QFile file(path);
+  if (!file.open(QIODevice::ReadOnly)) {
+    if (error) *error = QStringLiteral("cannot read %1: %2").arg(path, file.errorString());
+    return std::nullopt;
+  }
+  QString parseError;
+  auto loaded = sessionFromJson(file.readAll(), defaults, &parseError);
+  if (!loaded && error) *error = QStringLiteral("%1: %2").arg(path, parseError);
+  return loaded;
 }
 
 }  // namespace grazelab::ui

@@ -24,6 +24,11 @@ QByteArray sessionToJson(const Session& session);
 std::optional<Session> sessionFromJson(const QByteArray& json, const Params& defaults,
                                        QString* error);
 
+/// Reads and parses a session file; sets `error` ("cannot read ..." or "PATH: why") and returns
+/// nothing when it cannot.
+std::optional<Session> readSessionFile(const QString& path, const Params& defaults,
+                                       QString* error);
+
 /// The session file written beside a snapshot: "plot.png" -> "plot.session.json".
 QString sessionPathFor(const QString& snapshotPath);
 
