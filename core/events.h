@@ -26,13 +26,16 @@ std::optional<EventType> parseEventType(std::string_view text);
 inline bool isContact(EventType type) { return type != EventType::Release; }
 
 /// One event: when, what, and the state just before and just after it.
-struct Event {
-  double t = 0;  ///< time since the start of the run [time]
+template <typename S>
+struct BasicEvent {
+  S t = 0;  ///< time since the start of the run [time]
   EventType type = EventType::Impact;
-  State before;  ///< state before the event (v2 = v2_pre)
-  State after;   ///< state after the event (v2 = v2_post)
+  BasicState<S> before;  ///< state before the event (v2 = v2_pre)
+  BasicState<S> after;   ///< state after the event (v2 = v2_post)
 
-  friend bool operator==(const Event&, const Event&) = default;
+  friend bool operator==(const BasicEvent&, const BasicEvent&) = default;
 };
+
+using Event = BasicEvent<double>;
 
 }  // namespace grazelab::core

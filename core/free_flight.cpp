@@ -3,252 +3,317 @@
 #include "core/free_flight.h"
 
 #include <cmath>
-#include <limits>
 
 namespace grazelab::core {
 namespace {
 
-constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
-
-// 1 / n! for the Taylor sums
-constexpr std::array<double, Flight::kTaylorOrder + 2> inverseFactorials() {
-  std::array<double, Flight::kTaylorOrder + 2> values{};
-  double factorial = 1;
-  for (int n = 0; n < static_cast<int>(values.size()); ++n) {
-    if (n > 0) factorial *= n;
-    values[n] = 1.0 / factorial;
+template <typename S>
+struct InverseFactorials {
+  std::array<S, Flight<S>::kMaxTaylorOrder + 2> values;
+  InverseFactorials() {
+    S factorial = 1;
+    for (int n = 0; n < int(values.size()); ++n) {
+      if (n > 0) factorial *= S(n);
+      values[n] = S(1) / factorial;
+    }
   }
-  return values;
-}
-constexpr auto kInverseFactorial = inverseFactorials();
-
-// (sin x, cos x - 1) without cancellation for small x
-struct Phase {
-  double sine;
-  double cosineMinusOne;
 };
 
-Phase phaseOf(double halfSine, double halfCosine) {
-  return {2.0 * halfSine * halfCosine, -2.0 * halfSine * halfSine};
+template <typename S>
+const S& inverseFactorial(int n) {
+  static const InverseFactorials<S> table;
+  return table.values[n];
+}
+
+// (sin x, cos x - 1) without cancellation for small x
+template <typename S>
+void phaseOf(const S& x, S& sine, S& cosineMinusOne) {
+  using std::cos;
+  using std::sin;
+  const S half = x / S(2);
+  const S halfSine = sin(half);
+  const S halfCosine = cos(half);
+  sine = S(2) * halfSine * halfCosine;
+  cosineMinusOne = S(-2) * halfSine * halfSine;
+}
+
+// Taylor order by precision: (ratio |s|)^(n+1) / (n+1)! far below the unit roundoff at the
+// window's edge ratio |s| = 1/20
+template <typename S>
+constexpr int taylorOrderFor() {
+  if constexpr (std::is_same_v<S, double>) return 11;
+  if constexpr (std::is_same_v<S, long double>) return 13;
+  return 18;
 }
 
 }  // namespace
 
-Flight::Flight(const Model& model, const Modes& modes, const State& start)
-    : m_model(model), m_modes(modes), m_start(start), m_startsOnStop(start.u2 == model.gap) {
-  const Eigen::Vector2d u(start.u1, start.u2);
-  const Eigen::Vector2d v(start.v1, start.v2);
-  m_q = modes.Pinv * u;
-  m_qDot = modes.Pinv * v;
-  const Eigen::Vector2d omega(modes.omegaFast, modes.omegaSlow);
-  m_omega = omega;
-  m_amplitudeRatio = m_qDot.cwiseQuotient(omega);
-  for (int j = 0; j < 2; ++j) {
-    m_alpha(j) = modes.P(1, j) * m_q(j);
-    m_beta(j) = modes.P(1, j) * m_qDot(j) / omega(j);
-  }
+template <typename S>
+FlightTime<S> FlightTime<S>::nearest(const S& tau) {
+  using std::fma;
+  using std::llround;
+  FlightTime time;
+  time.periods = static_cast<long long>(llround(toDouble(tau / twoPi<S>())));
+  time.offset = fma(-S(time.periods), twoPi<S>(), tau);
+  return time;
+}
 
-  if (start.u2 != model.gap) {
+template <typename S>
+Flight<S>::Flight(const Chain<S>& chain, const S& gap, const BasicState<S>& start)
+    : m_chain(&chain), m_gap(gap), m_start(start), m_startsOnStop(start.u2 == gap) {
+  using std::abs;
+  using std::hypot;
+  m_taylorOrder = taylorOrderFor<S>();
+  Anchor& origin = m_anchors[0];
+  origin.periods = 0;
+  origin.state = start;
+  // modal amplitudes with unit mass-2 components: x = c_f (rho_f, 1) + c_s (rho_s, 1)
+  const S denominator = chain.rhoFast - chain.rhoSlow;  // < 0, no cancellation
+  origin.c = {(start.u1 - chain.rhoSlow * start.u2) / denominator,
+              (chain.rhoFast * start.u2 - start.u1) / denominator};
+  origin.a = {(start.v1 - chain.rhoSlow * start.v2) / denominator / chain.ratio,
+              (chain.rhoFast * start.v2 - start.v1) / denominator};
+
+  if (start.u2 != gap) {
     m_contactOrder = 0;
   } else if (start.v2 != 0) {
     m_contactOrder = 1;  // the common case, decided without the series
   } else {
     m_contactOrder = 2;
-    while (m_contactOrder <= kTaylorOrder && gapDerivative(m_contactOrder) == 0) ++m_contactOrder;
+    while (m_contactOrder <= m_taylorOrder && gapDerivative(m_contactOrder) == 0) ++m_contactOrder;
   }
 
-  // the Taylor form is needed only where u2 - gap is small against its amplitude, so that the
-  // modal sum would lose it; 0.05 / w_fast keeps the series short (11 terms at most)
-  m_taylorRadius = 0.05 / modes.omegaFast;
-  m_gapAmplitude = 0;
-  m_accelerationBound = 0;
+  m_taylorRadius = S(1) / (S(20) * chain.ratio);
+  const S omegaSquared[2] = {chain.ratio * chain.ratio, S(1)};
+  S amplitudeSum = 0;
   for (int j = 0; j < 2; ++j) {
-    const double amplitude = std::sqrt(m_alpha(j) * m_alpha(j) + m_beta(j) * m_beta(j));
-    m_gapAmplitude += amplitude;
-    m_accelerationBound += amplitude * omega(j) * omega(j);
+    const S amplitude = hypot(origin.c[j], origin.a[j]);
+    amplitudeSum += amplitude;
+    m_accelerationBound += amplitude * omegaSquared[j];
   }
-  m_gapTolerance = 16 * kEpsilon * (2 * m_gapAmplitude + std::abs(start.u2 - model.gap));
+  m_gapTolerance = S(16) * epsilon<S>() * (S(2) * amplitudeSum + abs(start.u2 - gap));
 }
 
-void Flight::ensureTaylor() const {
-  if (m_taylorReady) return;
-  m_taylorReady = true;
-  // derivatives of u at the start: u'' = A u with A = -M^-1 K, applied in a form that keeps the
-  // spring stretch u2 - u1 as one difference
-  const double a = m_model.k1 / m_model.m1;
-  const double b = m_model.k2 / m_model.m1;
-  const double c = m_model.k2 / m_model.m2;
-  m_derivatives[0] = Eigen::Vector2d(m_start.u1, m_start.u2);
-  m_derivatives[1] = Eigen::Vector2d(m_start.v1, m_start.v2);
-  for (int n = 2; n < static_cast<int>(m_derivatives.size()); ++n) {
-    const Eigen::Vector2d& x = m_derivatives[n - 2];
-    m_derivatives[n] = Eigen::Vector2d(b * (x(1) - x(0)) - a * x(0), c * (x(0) - x(1)));
-  }
-  for (int n = 0; n <= kTaylorOrder; ++n) {
-    const double gapDerivativeN = n == 0 ? m_start.u2 - m_model.gap : m_derivatives[n](1);
-    m_gapAndRateSeries[2 * n] = gapDerivativeN * kInverseFactorial[n];
-    m_gapAndRateSeries[2 * n + 1] = m_derivatives[n + 1](1) * kInverseFactorial[n];
+template <typename S>
+const typename Flight<S>::Anchor& Flight<S>::anchor(long long periods) const {
+  if (periods == 0 || m_chain->resonant) return m_anchors[0];
+  Anchor& cached = m_anchors[1];
+  if (cached.periods == periods) return cached;
+  using std::round;
+  const Anchor& origin = m_anchors[0];
+  // the fast phase slips by 2 pi k (w1/w2 - 2) per k slow periods
+  S slip = S(periods) * m_chain->detuning;
+  slip -= round(slip);
+  S sine, cosineMinusOne;
+  phaseOf(twoPi<S>() * slip, sine, cosineMinusOne);
+  const S dc = origin.c[0] * cosineMinusOne + origin.a[0] * sine;
+  const S da = -origin.c[0] * sine + origin.a[0] * cosineMinusOne;
+  cached = Anchor{};
+  cached.periods = periods;
+  cached.c = {origin.c[0] + dc, origin.c[1]};
+  cached.a = {origin.a[0] + da, origin.a[1]};
+  const S r = m_chain->ratio;
+  cached.state = {m_start.u1 + m_chain->rhoFast * dc, m_start.u2 + dc,
+                  m_start.v1 + r * m_chain->rhoFast * da, m_start.v2 + r * da};
+  // keep the gap as (x2(0) - delta) + dc: the anchor's x2 alone would round it
+  cached.gapValue = (m_start.u2 - m_gap) + dc;
+  return cached;
+}
+
+template <typename S>
+void Flight<S>::fillTaylor(const Anchor& anchor) const {
+  if (anchor.taylorReady) return;
+  Anchor& target = const_cast<Anchor&>(anchor);
+  target.taylorReady = true;
+  const Chain<S>& chain = *m_chain;
+  auto& d = target.derivatives;
+  d[0] = {anchor.state.u1, anchor.state.u2};
+  d[1] = {anchor.state.v1, anchor.state.v2};
+  // x1'' = -(p x1 + q (x1 - x2)), x2'' = w (x1 - x2): the spring stretch stays one difference
+  for (int n = 2; n < m_taylorOrder + 2; ++n) {
+    const S stretch = d[n - 2][0] - d[n - 2][1];
+    d[n] = {-(chain.p * d[n - 2][0] + chain.q * stretch), chain.w * stretch};
   }
 }
 
-double Flight::gapDerivative(int n) const {
-  if (n == 0) return m_start.u2 - m_model.gap;
+template <typename S>
+S Flight<S>::gapDerivative(int n) const {
+  if (n == 0) return m_start.u2 - m_gap;
   if (n == 1) return m_start.v2;
-  ensureTaylor();
-  return m_derivatives[n](1);
+  fillTaylor(m_anchors[0]);
+  return m_anchors[0].derivatives[n][1];
 }
 
-double Flight::reduce(double t) const {
-  if (!m_modes.resonant) return t;
-  // one period off covers every contact search; t - T2 is exact there (Sterbenz), and the
-  // general remainder() (exact too, but slow) serves the rest
-  const double half = 0.5 * m_modes.T2;
-  if (t >= -half && t <= half) return t;
-  if (t > half && t <= 2 * m_modes.T2) return t - m_modes.T2;
-  if (t < -half && t >= -2 * m_modes.T2) return t + m_modes.T2;
-  return std::remainder(t, m_modes.T2);
+template <typename S>
+int Flight<S>::taylorTerms(const S& s) const {
+  using std::abs;
+  const S x = m_chain->ratio * abs(s);
+  const int order = m_taylorOrder;
+  if (x <= S(0.01)) return order - 3 - (order > 11 ? 1 : 0) - (order > 13 ? 1 : 0);
+  if (x <= S(0.03)) return order - 2;
+  return order;
 }
 
-int Flight::taylorTerms(double s) const {
-  // enough terms for (w_fast |s|)^n / n! to fall below 1e-19
-  const double x = m_modes.omegaFast * std::abs(s);
-  if (x <= 0.01) return 8;
-  if (x <= 0.03) return 10;
-  return kTaylorOrder;  // x <= 0.05 inside the Taylor window: 0.05^12 / 12! < 1e-24
-}
-
-State Flight::at(double t) const {
-  const double s = reduce(t);
-  return std::abs(s) <= m_taylorRadius ? taylorAt(s) : modalAt(s);
-}
-
-State Flight::taylorAt(double s) const {
-  ensureTaylor();
-  // Horner on sum d_n s^n / n!, from the highest order down
-  Eigen::Vector2d position = Eigen::Vector2d::Zero();
-  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
-  for (int n = taylorTerms(s); n >= 0; --n) {
-    position = position * s + m_derivatives[n] * kInverseFactorial[n];
-    velocity = velocity * s + m_derivatives[n + 1] * kInverseFactorial[n];
-  }
-  return {position(0), position(1), velocity(0), velocity(1)};
-}
-
-Flight::Increments Flight::modalPhases(double s) const {
-  Increments phases;
-  if (m_modes.resonant) {
+template <typename S>
+void Flight<S>::modalPhases(const S& s, std::array<S, 2>& sine,
+                            std::array<S, 2>& cosineMinusOne) const {
+  if (m_chain->resonant) {
     // the fast phase is exactly twice the slow one: one sincos serves both
-    const double halfSlow = 0.5 * m_modes.omegaSlow * s;
-    const Phase slow = phaseOf(std::sin(halfSlow), std::cos(halfSlow));
-    const double cosSlow = 1.0 + slow.cosineMinusOne;
-    phases.sine = {2.0 * slow.sine * cosSlow, slow.sine};
-    phases.cosineMinusOne = {-2.0 * slow.sine * slow.sine, slow.cosineMinusOne};
+    phaseOf(s, sine[1], cosineMinusOne[1]);
+    sine[0] = S(2) * sine[1] * (S(1) + cosineMinusOne[1]);
+    cosineMinusOne[0] = S(-2) * sine[1] * sine[1];
   } else {
-    const double halfFast = 0.5 * m_modes.omegaFast * s;
-    const double halfSlow = 0.5 * m_modes.omegaSlow * s;
-    const Phase fast = phaseOf(std::sin(halfFast), std::cos(halfFast));
-    const Phase slow = phaseOf(std::sin(halfSlow), std::cos(halfSlow));
-    phases.sine = {fast.sine, slow.sine};
-    phases.cosineMinusOne = {fast.cosineMinusOne, slow.cosineMinusOne};
+    phaseOf(m_chain->ratio * s, sine[0], cosineMinusOne[0]);
+    phaseOf(s, sine[1], cosineMinusOne[1]);
   }
-  return phases;
 }
 
-State Flight::modalAt(double s) const {
-  const Increments phases = modalPhases(s);
-  Eigen::Vector2d dq;
-  Eigen::Vector2d dqDot;
+template <typename S>
+BasicState<S> Flight<S>::modalAt(const Anchor& anchor, const S& s) const {
+  std::array<S, 2> sine, cosineMinusOne;
+  modalPhases(s, sine, cosineMinusOne);
+  const S omega[2] = {m_chain->ratio, S(1)};
+  S dc[2], dRate[2];
   for (int j = 0; j < 2; ++j) {
-    dq(j) = m_q(j) * phases.cosineMinusOne[j] + m_amplitudeRatio(j) * phases.sine[j];
-    dqDot(j) = m_omega(j) *
-               (-m_q(j) * phases.sine[j] + m_amplitudeRatio(j) * phases.cosineMinusOne[j]);
+    dc[j] = anchor.c[j] * cosineMinusOne[j] + anchor.a[j] * sine[j];
+    dRate[j] = omega[j] * (-anchor.c[j] * sine[j] + anchor.a[j] * cosineMinusOne[j]);
   }
-  const Eigen::Vector2d du = m_modes.P * dq;
-  const Eigen::Vector2d dv = m_modes.P * dqDot;
-  return {m_start.u1 + du(0), m_start.u2 + du(1), m_start.v1 + dv(0), m_start.v2 + dv(1)};
+  const Chain<S>& chain = *m_chain;
+  return {anchor.state.u1 + (chain.rhoFast * dc[0] + chain.rhoSlow * dc[1]),
+          anchor.state.u2 + (dc[0] + dc[1]),
+          anchor.state.v1 + (chain.rhoFast * dRate[0] + chain.rhoSlow * dRate[1]),
+          anchor.state.v2 + (dRate[0] + dRate[1])};
 }
 
-std::pair<double, double> Flight::gapAndRate(double t) const {
-  const double s = reduce(t);
-  if (std::abs(s) <= m_taylorRadius) {
-    // value = sum_n c_n s^n / n!,  rate = sum_n c_(n+1) s^n / n!
-    // both Horner sums in one pass over interleaved coefficients
-    ensureTaylor();
-    double value = 0;
-    double rate = 0;
+template <typename S>
+BasicState<S> Flight<S>::taylorAt(const Anchor& anchor, const S& s) const {
+  fillTaylor(anchor);
+  const auto& d = anchor.derivatives;
+  S position[2] = {0, 0};
+  S velocity[2] = {0, 0};
+  for (int n = taylorTerms(s); n >= 0; --n) {
+    const S& f = inverseFactorial<S>(n);
+    for (int i = 0; i < 2; ++i) {
+      position[i] = position[i] * s + d[n][i] * f;
+      velocity[i] = velocity[i] * s + d[n + 1][i] * f;
+    }
+  }
+  return {position[0], position[1], velocity[0], velocity[1]};
+}
+
+template <typename S>
+BasicState<S> Flight<S>::at(const FlightTime<S>& time) const {
+  using std::abs;
+  FlightTime<S> t = time;
+  if (abs(t.offset) > pi<S>()) t = FlightTime<S>::nearest(time.value());
+  const Anchor& a = anchor(t.periods);
+  return abs(t.offset) <= m_taylorRadius ? taylorAt(a, t.offset) : modalAt(a, t.offset);
+}
+
+template <typename S>
+std::pair<S, S> Flight<S>::gapAndRate(const FlightTime<S>& time) const {
+  using std::abs;
+  FlightTime<S> t = time;
+  if (abs(t.offset) > pi<S>()) t = FlightTime<S>::nearest(time.value());
+  const Anchor& a = anchor(t.periods);
+  const S& s = t.offset;
+  const S gapAtAnchor = t.periods == 0 || m_chain->resonant ? S(m_start.u2 - m_gap) : a.gapValue;
+  if (abs(s) <= m_taylorRadius) {
+    // value = sum_n c_n s^n / n!,  rate = sum_n c_(n+1) s^n / n!, c_0 the gap at the anchor
+    fillTaylor(a);
+    S value = 0;
+    S rate = 0;
     for (int n = taylorTerms(s); n >= 0; --n) {
-      const double* pair = &m_gapAndRateSeries[2 * n];
-      value = value * s + pair[0];
-      rate = rate * s + pair[1];
+      const S& f = inverseFactorial<S>(n);
+      value = value * s + (n == 0 ? gapAtAnchor : S(a.derivatives[n][1] * f));
+      rate = rate * s + a.derivatives[n + 1][1] * f;
     }
     return {value, rate};
   }
-  // only the mass-2 row of the modal sum: u2 - gap as (u2(0) - gap) + increment
-  const Increments phases = modalPhases(s);
-  double gapIncrement = 0;
-  double rateIncrement = 0;
+  std::array<S, 2> sine, cosineMinusOne;
+  modalPhases(s, sine, cosineMinusOne);
+  const S omega[2] = {m_chain->ratio, S(1)};
+  S gapIncrement = 0;
+  S rateIncrement = 0;
   for (int j = 0; j < 2; ++j) {
-    gapIncrement += m_modes.P(1, j) * (m_q(j) * phases.cosineMinusOne[j] +
-                                       m_amplitudeRatio(j) * phases.sine[j]);
-    rateIncrement += m_modes.P(1, j) * m_omega(j) *
-                     (-m_q(j) * phases.sine[j] + m_amplitudeRatio(j) * phases.cosineMinusOne[j]);
+    gapIncrement += a.c[j] * cosineMinusOne[j] + a.a[j] * sine[j];
+    rateIncrement += omega[j] * (-a.c[j] * sine[j] + a.a[j] * cosineMinusOne[j]);
   }
-  return {(m_start.u2 - m_model.gap) + gapIncrement, m_start.v2 + rateIncrement};
+  return {gapAtAnchor + gapIncrement, a.state.v2 + rateIncrement};
 }
 
-double Flight::acceleration2(double t) const {
-  const double s = reduce(t);
-  if (std::abs(s) <= m_taylorRadius) {
-    // sum_n c_(n+2) s^n / n!
-    ensureTaylor();
-    double acceleration = 0;
-    for (int n = kTaylorOrder - 1; n >= 0; --n) {
-      acceleration = acceleration * s + m_derivatives[n + 2](1) * kInverseFactorial[n];
+template <typename S>
+S Flight<S>::acceleration2(const FlightTime<S>& time) const {
+  using std::abs;
+  FlightTime<S> t = time;
+  if (abs(t.offset) > pi<S>()) t = FlightTime<S>::nearest(time.value());
+  const Anchor& a = anchor(t.periods);
+  const S& s = t.offset;
+  if (abs(s) <= m_taylorRadius) {
+    fillTaylor(a);
+    S acceleration = 0;
+    for (int n = m_taylorOrder - 1; n >= 0; --n) {
+      acceleration = acceleration * s + a.derivatives[n + 2][1] * inverseFactorial<S>(n);
     }
     return acceleration;
   }
-  const Increments phases = modalPhases(s);
-  double acceleration = 0;
+  std::array<S, 2> sine, cosineMinusOne;
+  modalPhases(s, sine, cosineMinusOne);
+  const S omegaSquared[2] = {m_chain->ratio * m_chain->ratio, S(1)};
+  S acceleration = 0;
   for (int j = 0; j < 2; ++j) {
-    acceleration -= m_omega(j) * m_omega(j) *
-                    (m_alpha(j) * (1.0 + phases.cosineMinusOne[j]) + m_beta(j) * phases.sine[j]);
+    acceleration -= omegaSquared[j] * (a.c[j] * (S(1) + cosineMinusOne[j]) + a.a[j] * sine[j]);
   }
   return acceleration;
 }
 
-std::pair<double, double> Flight::gapAndAccelerationAtPhase(double sine,
-                                                           double cosineMinusOne) const {
+template <typename S>
+std::pair<S, S> Flight<S>::gapAndAccelerationAtPhase(const S& sine,
+                                                     const S& cosineMinusOne) const {
   // fast phase 2 theta: sin 2th = 2 sin th cos th, cos 2th - 1 = -2 sin^2 th
-  const double sines[2] = {2.0 * sine * (1.0 + cosineMinusOne), sine};
-  const double cosinesMinusOne[2] = {-2.0 * sine * sine, cosineMinusOne};
-  double gap = m_start.u2 - m_model.gap;
-  double acceleration = 0;
+  const S sines[2] = {S(2) * sine * (S(1) + cosineMinusOne), sine};
+  const S cosinesMinusOne[2] = {S(-2) * sine * sine, cosineMinusOne};
+  const S omegaSquared[2] = {S(4), S(1)};
+  const Anchor& a = m_anchors[0];
+  S gap = m_start.u2 - m_gap;
+  S acceleration = 0;
   for (int j = 0; j < 2; ++j) {
-    gap += m_modes.P(1, j) * (m_q(j) * cosinesMinusOne[j] + m_amplitudeRatio(j) * sines[j]);
-    acceleration -= m_omega(j) * m_omega(j) *
-                    (m_alpha(j) * (1.0 + cosinesMinusOne[j]) + m_beta(j) * sines[j]);
+    gap += a.c[j] * cosinesMinusOne[j] + a.a[j] * sines[j];
+    acceleration -= omegaSquared[j] * (a.c[j] * (S(1) + cosinesMinusOne[j]) + a.a[j] * sines[j]);
   }
   return {gap, acceleration};
 }
 
-std::pair<double, double> Flight::reducedGapAndRate(double x, int m) const {
-  if (m == 0) return gapAndRate(x);
-  if (std::abs(x) <= m_taylorRadius) {
-    // g(x) = sum_{n>=m} c_n x^(n-m) / n!,  g'(x) = sum_{n>m} c_n (n-m) x^(n-m-1) / n!
-    ensureTaylor();
-    double value = 0;
-    double rate = 0;
-    for (int n = std::max(taylorTerms(x), m); n >= m; --n) {
-      rate = rate * x + value;
-      value = value * x + m_gapAndRateSeries[2 * n];
+template <typename S>
+std::pair<S, S> Flight<S>::reducedGapAndRate(long long anchorIndex, const S& s, int m) const {
+  using std::abs;
+  using std::pow;
+  if (m == 0) return gapAndRate({anchorIndex, s});
+  if (abs(s) <= m_taylorRadius) {
+    // g(s) = sum_{n>=m} c_n s^(n-m) / n!,  g'(s) = sum_{n>m} c_n (n-m) s^(n-m-1) / n!
+    const Anchor& a = anchor(anchorIndex);
+    fillTaylor(a);
+    S value = 0;
+    S rate = 0;
+    for (int n = std::max(taylorTerms(s), m); n >= m; --n) {
+      rate = rate * s + value;
+      value = value * s + a.derivatives[n][1] * inverseFactorial<S>(n);
     }
     return {value, rate};
   }
-  // divide by the unreduced x^m: the sign of g must follow the sign of u2 - gap over the whole
-  // segment, not flip where a resonant time is reduced modulo T2
-  const auto [gapValue, gapRate] = gapAndRate(x);
-  const double power = std::pow(x, m);
-  return {gapValue / power, (gapRate - m * gapValue / x) / power};
+  // divide by the unreduced s^m: the sign of g must follow the sign of the gap over the whole
+  // segment
+  const auto [gapValue, gapRate] = gapAndRate({anchorIndex, s});
+  S power = 1;
+  for (int i = 0; i < m; ++i) power *= s;
+  return {gapValue / power, (gapRate - S(m) * gapValue / s) / power};
 }
+
+template struct FlightTime<double>;
+template struct FlightTime<long double>;
+template struct FlightTime<Quad>;
+template class Flight<double>;
+template class Flight<long double>;
+template class Flight<Quad>;
 
 }  // namespace grazelab::core

@@ -2,21 +2,19 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "core/model.h"
 
-#include <cmath>
-#include <sstream>
+#include "core/scalar.h"
 
 namespace grazelab::core {
 namespace {
 
-std::string got(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "(got " << value << ")";
-  return out.str();
+template <typename S>
+std::string got(const S& value) {
+  return "(got " + formatScalar(value) + ")";
 }
 
-void requirePositiveFinite(std::vector<Problem>& problems, const char* field, double value) {
-  if (!std::isfinite(value)) {
+template <typename S>
+void requirePositiveFinite(std::vector<Problem>& problems, const char* field, const S& value) {
+  if (!isFinite(value)) {
     problems.push_back({field, "must be a finite number " + got(value)});
   } else if (value <= 0) {
     problems.push_back({field, "must be positive " + got(value)});
@@ -25,31 +23,35 @@ void requirePositiveFinite(std::vector<Problem>& problems, const char* field, do
 
 }  // namespace
 
-std::vector<Problem> validate(const Model& model) {
+template <typename S>
+std::vector<Problem> validate(const BasicModel<S>& model) {
   std::vector<Problem> problems;
   requirePositiveFinite(problems, "m1", model.m1);
   requirePositiveFinite(problems, "m2", model.m2);
   requirePositiveFinite(problems, "k1", model.k1);
-  requirePositiveFinite(problems, "k2", model.k2);
+  if (!model.design) requirePositiveFinite(problems, "k2", model.k2);
   requirePositiveFinite(problems, "gap", model.gap);
+  if (problems.empty() && model.design && !designFeasible(model.m1, model.m2)) {
+    problems.push_back({"m2", "gives m2/m1 = " + formatScalar(S(model.m2 / model.m1)) +
+                                  " > 9/16: no 1:2 resonant chain exists for these masses"});
+  }
   return problems;
 }
 
-std::vector<Problem> validateState(const Model& model, const State& state,
+template <typename S>
+std::vector<Problem> validateState(const BasicModel<S>& model, const BasicState<S>& state,
                                    const std::string& name) {
   std::vector<Problem> problems;
-  const double values[] = {state.u1, state.u2, state.v1, state.v2};
+  const S values[] = {state.u1, state.u2, state.v1, state.v2};
   const char* fields[] = {"u1", "u2", "v1", "v2"};
   for (int i = 0; i < 4; ++i) {
-    if (!std::isfinite(values[i])) {
+    if (!isFinite(values[i])) {
       problems.push_back({name + "." + fields[i], "must be a finite number " + got(values[i])});
     }
   }
-  if (std::isfinite(state.u2) && std::isfinite(model.gap) && state.u2 > model.gap) {
-    std::ostringstream reason;
-    reason.precision(17);
-    reason << "is past the stop: u2 = " << state.u2 << " > gap = " << model.gap;
-    problems.push_back({name + ".u2", reason.str()});
+  if (isFinite(state.u2) && isFinite(model.gap) && state.u2 > model.gap) {
+    problems.push_back({name + ".u2", "is past the stop: u2 = " + formatScalar(state.u2) +
+                                          " > gap = " + formatScalar(model.gap)});
   }
   return problems;
 }
@@ -63,15 +65,13 @@ std::string describe(const std::vector<Problem>& problems) {
   return line;
 }
 
-double energy(const Model& model, const State& state) {
-  const double kinetic = model.m1 * state.v1 * state.v1 + model.m2 * state.v2 * state.v2;
-  const double stretch = state.u2 - state.u1;
-  const double potential = model.k1 * state.u1 * state.u1 + model.k2 * stretch * stretch;
-  return 0.5 * (kinetic + potential);
-}
-
-double freeAcceleration2(const Model& model, const State& state) {
-  return model.k2 * (state.u1 - state.u2) / model.m2;
-}
+#define GRAZELAB_INSTANTIATE(S)                                                               \
+  template std::vector<Problem> validate<S>(const BasicModel<S>&);                            \
+  template std::vector<Problem> validateState<S>(const BasicModel<S>&, const BasicState<S>&, \
+                                                 const std::string&);
+GRAZELAB_INSTANTIATE(double)
+GRAZELAB_INSTANTIATE(long double)
+GRAZELAB_INSTANTIATE(Quad)
+#undef GRAZELAB_INSTANTIATE
 
 }  // namespace grazelab::core

@@ -2,49 +2,41 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "core/modes.h"
 
-#include <Eigen/Eigenvalues>
-
-#include <cassert>
 #include <cmath>
+#include <limits>
 #include <numbers>
+
+#include "core/chain.h"
 
 namespace grazelab::core {
 
 Modes computeModes(const Model& model) {
-  Eigen::Matrix2d mass;
-  mass << model.m1, 0, 0, model.m2;
-  Eigen::Matrix2d stiffness;
-  stiffness << model.k1 + model.k2, -model.k2, -model.k2, model.k2;
-
-  // eigenvectors come M-orthonormal, eigenvalues ascending: column 1 is the fast mode
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> solver(stiffness, mass);
-  assert(solver.info() == Eigen::Success);
-  const Eigen::Vector2d omegaSquared = solver.eigenvalues();
-  const Eigen::Matrix2d vectors = solver.eigenvectors();
-
   Modes modes;
-  modes.P.col(0) = vectors.col(1);
-  modes.P.col(1) = vectors.col(0);
+  const ChainOrProblem<double> formed = makeChain(model);
+  if (!formed.chain) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    modes.omegaFast = modes.omegaSlow = modes.T1 = modes.T2 = nan;
+    modes.P.setConstant(nan);
+    modes.Pinv.setConstant(nan);
+    return modes;
+  }
+  const Chain<double>& chain = *formed.chain;
+  modes.omegaSlow = chain.omegaSlow;
+  modes.omegaFast = chain.ratio * chain.omegaSlow;
+  modes.T1 = 2 * std::numbers::pi / modes.omegaFast;
+  modes.T2 = 2 * std::numbers::pi / modes.omegaSlow;
+  modes.detuning = chain.detuning;
+  modes.resonant = chain.resonant;
+  // M-normalised columns (rho_j, 1) p_j with p_j = 1 / sqrt(m1 (rho_j^2 + beta))
+  const double rho[2] = {chain.rhoFast, chain.rhoSlow};
   for (int j = 0; j < 2; ++j) {
-    if (modes.P(1, j) < 0) modes.P.col(j) = -modes.P.col(j);
+    const double p = 1.0 / (std::sqrt(model.m1) * std::sqrt(rho[j] * rho[j] + chain.beta));
+    modes.P(0, j) = rho[j] * p;
+    modes.P(1, j) = p;
   }
-  // the exact inverse of the rounded P, not P^T M: the product P P^-1 then equals I to rounding,
-  // and free flights (u -> q -> u) do not pick up a fixed bias that drifts the energy
-  modes.Pinv = modes.P.inverse();
-
-  double fast = std::sqrt(omegaSquared(1));
-  double slow = std::sqrt(omegaSquared(0));
-  modes.detuning = fast / slow - 2.0;
-  modes.resonant = std::abs(modes.detuning) <= kResonanceTolerance;
-  if (modes.resonant) {
-    // snap to an exact 1:2 ratio so that free motions are exactly T2-periodic in floating point
-    slow = 0.5 * (slow + 0.5 * fast);
-    fast = 2.0 * slow;
-  }
-  modes.omegaFast = fast;
-  modes.omegaSlow = slow;
-  modes.T1 = 2.0 * std::numbers::pi / fast;
-  modes.T2 = 2.0 * std::numbers::pi / slow;
+  // P^-1 = P^T M
+  modes.Pinv << modes.P(0, 0) * model.m1, modes.P(1, 0) * model.m2, modes.P(0, 1) * model.m1,
+      modes.P(1, 1) * model.m2;
   return modes;
 }
 

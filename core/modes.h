@@ -8,16 +8,12 @@
 
 namespace grazelab::core {
 
-/// Relative detuning |omegaFast / omegaSlow - 2| below which a chain is treated as exactly 1:2
-/// resonant (its free motion T2-periodic). 1e-12 keeps the phase error below 1e-10 over
-/// a hundred periods, while the 1:2 design itself lands within a few ulps.
-inline constexpr double kResonanceTolerance = 1e-12;
-
-/// Normal modes of the chain (MODEL.md section 2): P^T M P = I, P^T K P = diag(w1^2, w2^2).
-/// Mode 1 is the FAST mode and mode 2 the SLOW one (the "Labelling" note of MODEL.md): the
-/// proofs need w1 = 2 w2, so T2 = 2 T1 and every free motion of a resonant chain is T2-periodic.
-/// Eigen indices are 0-based: P(0, j) is the mass-1 row, P(1, j) the mass-2 row, column 0 the
-/// fast mode, column 1 the slow mode. Columns are signed so that P(1, j) > 0.
+/// Normal modes of the chain in physical units, for display and reports (MODEL.md section 2):
+/// P^T M P = I, P^T K P = diag(w1^2, w2^2). Mode 1 is the FAST mode and mode 2 the SLOW one (the
+/// "Labelling" note of MODEL.md): the proofs need w1 = 2 w2, so T2 = 2 T1 and every free motion
+/// of a resonant chain is T2-periodic. Eigen indices are 0-based: P(0, j) is the mass-1 row,
+/// P(1, j) the mass-2 row, column 0 the fast mode, column 1 the slow mode; P(1, j) > 0.
+/// Built from the closed forms of core/chain.h (the solver itself works with those).
 struct Modes {
   double omegaFast = 0;  ///< w1 [1/time]; exactly 2 * omegaSlow when resonant
   double omegaSlow = 0;  ///< w2 [1/time]
@@ -25,11 +21,12 @@ struct Modes {
   double T2 = 0;         ///< 2 pi / w2 [time]; the period of every resonant free motion
   Eigen::Matrix2d P;     ///< mode shapes, columns (fast, slow), M-orthonormal
   Eigen::Matrix2d Pinv;  ///< P^-1 = P^T M
-  double detuning = 0;   ///< w1/w2 - 2 as computed, before snapping
-  bool resonant = false; ///< |detuning| <= kResonanceTolerance
+  double detuning = 0;   ///< w1/w2 - 2, from the exact resonance defect
+  bool resonant = false; ///< w1 = 2 w2 exactly (1:2 design, or numbers that satisfy it exactly)
 };
 
-/// Solves the generalized eigenproblem K p = w^2 M p. Precondition: validate(model) is empty.
+/// The modes of a valid model (precondition: validate(model) is empty). A model whose ratios
+/// are beyond double range gives NaN entries.
 Modes computeModes(const Model& model);
 
 }  // namespace grazelab::core

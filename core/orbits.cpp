@@ -2,30 +2,27 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "core/orbits.h"
 
+#include <boost/math/special_functions/next.hpp>
+
 #include <cmath>
-#include <numbers>
-#include <sstream>
 
 #include "core/contact.h"
 #include "core/free_flight.h"
 
 namespace grazelab::core {
 
-State glomData(const Model& model, const Modes& modes, Mode mode) {
-  const int column = mode == Mode::Fast ? 0 : 1;
-  return {model.gap * modes.P(0, column) / modes.P(1, column), model.gap, 0.0, 0.0};
+template <typename S>
+BasicState<S> glomData(const Chain<S>& chain, Mode mode) {
+  const S& gap = chain.model.gap;
+  return {gap * (mode == Mode::Fast ? chain.rhoFast : chain.rhoSlow), gap, S(0), S(0)};
 }
 
-State gloData(const Model& model, const Modes& modes, double lambda) {
-  const State fast = glomData(model, modes, Mode::Fast);
-  const State slow = glomData(model, modes, Mode::Slow);
-  // u2 stays exactly the gap: (1 - l) gap + l gap would round
-  return {(1.0 - lambda) * fast.u1 + lambda * slow.u1, model.gap, 0.0, 0.0};
-}
-
-GloKind classifyGlo(double lambda) {
+template <typename S>
+GloKind classifyGlo(const S& lambda) {
+  using std::fma;
   if (lambda < 0) return GloKind::ImpactsFollow;
-  if (lambda > 4.0 / 3.0) return GloKind::StickingStart;
+  // 3 lambda - 4 with one rounding: its sign is exact, so lambda is compared with 4/3 itself
+  if (fma(S(3), lambda, S(-4)) > 0) return GloKind::StickingStart;
   return GloKind::Grazing;
 }
 
@@ -41,60 +38,116 @@ std::string describe(GloKind kind) {
   return {};
 }
 
-double lambdaStar(const Modes& modes) {
-  const double fastWeight = modes.P(1, 0) * modes.P(1, 0) / (modes.omegaFast * modes.omegaFast);
-  const double slowWeight = modes.P(1, 1) * modes.P(1, 1) / (modes.omegaSlow * modes.omegaSlow);
+template <typename S>
+BasicState<S> gloData(const Chain<S>& chain, const S& lambda) {
+  using std::fma;
+  const S& gap = chain.model.gap;
+  // u2 stays exactly the gap: (1 - l) gap + l gap would round
+  if (!chain.resonant) {
+    return {gap * ((S(1) - lambda) * chain.rhoFast + lambda * chain.rhoSlow), gap, S(0), S(0)};
+  }
+  // resonance identity -rho_fast / 3 + 4 rho_slow / 3 = 1 (u1 = gap at lambda = 4/3) gives
+  // u1 - gap = gap (4 - 3 lambda) / 3 (rho_fast - rho_slow), with rho_fast - rho_slow < 0
+  const S fourMinusThreeLambda = -fma(S(3), lambda, S(-4));  // exact sign
+  const S excess = gap * (fourMinusThreeLambda / S(3)) * (chain.rhoFast - chain.rhoSlow);
+  S u1 = gap + excess;
+  // the class is decided by lambda; the data must agree with it after rounding
+  const GloKind kind = classifyGlo(lambda);
+  if (kind == GloKind::StickingStart && !(u1 > gap)) u1 = boost::math::float_next(gap);
+  if (kind != GloKind::StickingStart && u1 > gap) u1 = gap;
+  return {u1, gap, S(0), S(0)};
+}
+
+template <typename S>
+S lambdaStar(const Chain<S>& chain) {
+  // P_2j^2 = 1 / (m1 (rho_j^2 + beta)); lambda* = (P22^2 / w2^2) / (P21^2 / w1^2 + P22^2 / w2^2)
+  const S fastWeight = S(1) / ((chain.rhoFast * chain.rhoFast + chain.beta) * chain.ratio * chain.ratio);
+  const S slowWeight = S(1) / (chain.rhoSlow * chain.rhoSlow + chain.beta);
   return slowWeight / (fastWeight + slowWeight);
 }
 
-OnePeriodicOrbit onePeriodicOrbit(const Model& model, const Modes& modes, double T) {
-  OnePeriodicOrbit orbit;
-  std::ostringstream why;
-  why.precision(17);
-  if (!std::isfinite(T) || T <= 0) {
-    why << "the period T must be positive and finite (got " << T << ")";
-    orbit.reason = why.str();
+template <typename S>
+OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
+  using std::abs;
+  using std::cos;
+  using std::max;
+  using std::sin;
+  OnePeriodicOrbit<S> orbit;
+  const S T2 = twoPi<S>() / chain.omegaSlow;
+  if (!isFinite(T) || T <= 0) {
+    orbit.reason = "the period T must be positive and finite (got " + formatScalar(T) + ")";
     return orbit;
   }
-  const double omega[2] = {modes.omegaFast, modes.omegaSlow};
-  double phi[2];
+  const S tau = chain.omegaSlow * T;  // scaled period
+  const S omega[2] = {chain.ratio, S(1)};
+  const S rho[2] = {chain.rhoFast, chain.rhoSlow};
+  // scaled g_k = sum_j beta phi_kj / (rho_j^2 + beta) cot(w_j tau / 2) / w_j, phi_1j = rho_j
+  S g[2] = {0, 0};
   for (int j = 0; j < 2; ++j) {
-    const double half = 0.5 * omega[j] * T;
-    const double sine = std::sin(half);
-    if (std::abs(sine) <= 1e-12) {
-      why << "T = " << T << " is a multiple of T" << (j + 1) << " = "
-          << 2 * std::numbers::pi / omega[j] << ": no 1IPP orbit";
-      orbit.reason = why.str();
+    const S half = omega[j] * tau / S(2);
+    const S sine = sin(half);
+    if (abs(sine) <= S(1e-12)) {
+      orbit.reason = "T = " + formatScalar(T) + " is a multiple of T" + std::to_string(j + 1) +
+                     " = " + formatScalar(S(T2 / omega[j])) + ": no 1IPP orbit";
       return orbit;
     }
-    phi[j] = std::cos(half) / (sine * omega[j]);
+    const S weight = chain.beta / (rho[j] * rho[j] + chain.beta) * cos(half) / (sine * omega[j]);
+    g[0] += weight * rho[j];
+    g[1] += weight;
   }
-  // g_k = sum_j a_kj Phi_j, a_kj = m2 P_kj P_2j
-  double g[2];
-  for (int k = 0; k < 2; ++k) {
-    g[k] = 0;
-    for (int j = 0; j < 2; ++j) g[k] += model.m2 * modes.P(k, j) * modes.P(1, j) * phi[j];
-  }
-  orbit.V = model.gap / g[1];
-  orbit.postImpact = {model.gap * g[0] / g[1], model.gap, 0.0, orbit.V};
+  const S& gap = chain.model.gap;
+  orbit.V = gap * chain.omegaSlow / g[1];
+  orbit.postImpact = {gap * g[0] / g[1], gap, S(0), orbit.V};
   if (!(orbit.V < 0)) {
-    why << "V = " << orbit.V << " >= 0: the data would leave into the stop (try T < T2 = "
-        << modes.T2 << ")";
-    orbit.reason = why.str();
+    orbit.reason = "V = " + formatScalar(orbit.V) +
+                   " >= 0: the data would leave into the stop, not away from it (1IPP orbits near "
+                   "T2 need T < T2 = " + formatScalar(T2) + ")";
     return orbit;
   }
-  const Flight flight(model, modes, orbit.postImpact);
-  const Contact contact = nextContact(flight, 1.5 * T);
-  const double arrival = contact.time.value(modes.T2);
-  if (contact.kind == ContactKind::None || std::abs(arrival - T) > 1e-9 * std::max(T, modes.T2)) {
-    why << "the free flight from the data first comes back to the stop at t = " << arrival
-        << ", not at the period T = " << T << ": not admissible";
-    if (contact.kind == ContactKind::None) why.str("the free flight never comes back to the stop");
-    orbit.reason = why.str();
+  const Scale<S> scale = chooseScale(chain, orbit.postImpact);
+  const Flight<S> flight(chain, scale.gap, scale.toScaled(orbit.postImpact));
+  const Contact<S> contact = nextContact(flight, S(1.5) * tau);
+  const S arrival = contact.time.value();
+  if (contact.kind == ContactKind::None || contact.kind == ContactKind::Cancelled) {
+    orbit.reason = "the free flight from the data never comes back to the stop";
+    return orbit;
+  }
+  if (abs(arrival - tau) > S(1e-9) * max(tau, twoPi<S>())) {
+    orbit.reason = "the free flight from the data first comes back to the stop at t = " +
+                   formatScalar(S(arrival / chain.omegaSlow)) + ", not at the period T = " +
+                   formatScalar(T) + ": not admissible";
     return orbit;
   }
   orbit.admissible = true;
   return orbit;
 }
+
+namespace {
+Chain<double> chainOf(const Model& model) { return *makeChain(model).chain; }
+}  // namespace
+
+State glomData(const Model& model, const Modes&, Mode mode) { return glomData(chainOf(model), mode); }
+State gloData(const Model& model, const Modes&, double lambda) {
+  return gloData(chainOf(model), lambda);
+}
+double lambdaStar(const Modes& modes) {
+  const double fast = modes.P(1, 0) * modes.P(1, 0) / (modes.omegaFast * modes.omegaFast);
+  const double slow = modes.P(1, 1) * modes.P(1, 1) / (modes.omegaSlow * modes.omegaSlow);
+  return slow / (fast + slow);
+}
+OnePeriodicOrbit<double> onePeriodicOrbit(const Model& model, const Modes&, double T) {
+  return onePeriodicOrbit(chainOf(model), T);
+}
+
+#define GRAZELAB_INSTANTIATE(S)                                              \
+  template BasicState<S> glomData<S>(const Chain<S>&, Mode);                 \
+  template GloKind classifyGlo<S>(const S&);                                 \
+  template BasicState<S> gloData<S>(const Chain<S>&, const S&);              \
+  template S lambdaStar<S>(const Chain<S>&);                                 \
+  template OnePeriodicOrbit<S> onePeriodicOrbit<S>(const Chain<S>&, const S&);
+GRAZELAB_INSTANTIATE(double)
+GRAZELAB_INSTANTIATE(long double)
+GRAZELAB_INSTANTIATE(Quad)
+#undef GRAZELAB_INSTANTIATE
 
 }  // namespace grazelab::core

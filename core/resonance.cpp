@@ -2,23 +2,106 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "core/resonance.h"
 
+#include <boost/multiprecision/cpp_int.hpp>
+
 #include <cmath>
 
+#include "core/scalar.h"
+
 namespace grazelab::core {
+namespace {
+
+using boost::multiprecision::cpp_int;
+using boost::multiprecision::cpp_rational;
+
+// the exact value of a finite binary number: mantissa * 2^exponent, read 32 bits at a time
+template <typename S>
+cpp_rational exactly(const S& value) {
+  using std::abs;
+  using std::floor;
+  using std::frexp;
+  using std::ldexp;
+  int exponent = 0;
+  S rest = frexp(abs(value), &exponent);
+  cpp_int mantissa = 0;
+  while (rest != 0) {
+    rest = ldexp(rest, 32);
+    const S chunk = floor(rest);
+    rest -= chunk;
+    mantissa = (mantissa << 32) + cpp_int(static_cast<unsigned long long>(chunk));
+    exponent -= 32;
+  }
+  cpp_rational result(mantissa);
+  if (exponent >= 0) {
+    result *= cpp_rational(cpp_int(1) << exponent);
+  } else {
+    result /= cpp_rational(cpp_int(1) << -exponent);
+  }
+  return value < 0 ? cpp_rational(-result) : result;
+}
+
+// a rational rounded to S (128 significant bits of the quotient, then scaled)
+template <typename S>
+S rounded(const cpp_rational& value) {
+  using std::ldexp;
+  if (value == 0) return S(0);
+  cpp_int numerator = boost::multiprecision::numerator(value);
+  cpp_int denominator = boost::multiprecision::denominator(value);
+  const bool negative = numerator < 0;
+  if (negative) numerator = -numerator;
+  // shift so that the integer quotient has about 128 bits
+  const long shift = long(msb(denominator)) - long(msb(numerator)) + 128;
+  const cpp_int quotient = shift >= 0 ? cpp_int((numerator << shift) / denominator)
+                                      : cpp_int((numerator >> -shift) / denominator);
+  // quotient -> S, 32 bits at a time from the top
+  S result = 0;
+  const long bits = long(msb(quotient)) + 1;
+  for (long top = bits; top > 0; top -= 32) {
+    const long low = std::max(0L, top - 32);
+    const cpp_int chunk = cpp_int((quotient >> low) & cpp_int(0xffffffffu));
+    result += ldexp(S(static_cast<unsigned long long>(chunk)), int(low - shift));
+  }
+  return negative ? S(-result) : result;
+}
+
+}  // namespace
+
+template <typename S>
+bool designFeasible(const S& m1, const S& m2) {
+  using std::fma;
+  // 9 m1 - 16 m2 >= 0 with a single rounding: its sign is exact
+  return fma(S(9), m1, S(-16) * m2) >= 0;
+}
+
+template <typename S>
+S designKappa(const S& beta, Branch branch) {
+  using std::max;
+  using std::sqrt;
+  const S root = sqrt(max(S(0), S(9) - S(16) * beta));
+  const S onePlusBeta = S(1) + beta;
+  const S upper = beta * ((S(17) - S(8) * beta) + S(5) * root) / (S(8) * onePlusBeta * onePlusBeta);
+  if (branch == Branch::Upper) return upper;
+  // kappa_upper kappa_lower = beta^2 / (1 + beta)^2
+  return (beta / onePlusBeta) * (beta / onePlusBeta) / upper;
+}
 
 std::optional<double> resonantK2(double m1, double m2, double k1, Branch branch) {
   const bool usable = std::isfinite(m1) && std::isfinite(m2) && std::isfinite(k1) && m1 > 0 &&
                       m2 > 0 && k1 > 0;
-  if (!usable) return std::nullopt;
-  const double beta = m2 / m1;
-  if (beta > kMaxResonantMassRatio) return std::nullopt;
-  // 9 - 16 beta can round slightly negative exactly at the merge point
-  const double root = std::sqrt(std::max(0.0, 9.0 - 16.0 * beta));
-  const double sign = branch == Branch::Upper ? 1.0 : -1.0;
-  const double onePlusBeta = 1.0 + beta;
-  const double kappa =
-      beta * ((17.0 - 8.0 * beta) + sign * 5.0 * root) / (8.0 * onePlusBeta * onePlusBeta);
-  return kappa * k1;
+  if (!usable || !designFeasible(m1, m2)) return std::nullopt;
+  return designKappa(m2 / m1, branch) * k1;
+}
+
+template <typename S>
+S resonanceDefect(const S& m1, const S& m2, const S& k1, const S& k2) {
+  // D m1^2 k1^2 = 4 (m1 + m2)^2 k2^2 - m2 (17 m1 - 8 m2) k1 k2 + 4 m2^2 k1^2, and
+  // D / beta^2 = that / (m2 k1)^2
+  const cpp_rational a = exactly(m1), b = exactly(m2), c = exactly(k1), d = exactly(k2);
+  const cpp_rational sum = a + b;
+  const cpp_rational numerator = 4 * sum * sum * d * d - b * (17 * a - 8 * b) * c * d +
+                                 4 * b * b * c * c;
+  const cpp_rational scale = b * c;
+  return rounded<S>(numerator / (scale * scale));
 }
 
 std::string_view toString(Branch branch) { return branch == Branch::Upper ? "upper" : "lower"; }
@@ -28,5 +111,14 @@ std::optional<Branch> parseBranch(std::string_view text) {
   if (text == "lower") return Branch::Lower;
   return std::nullopt;
 }
+
+#define GRAZELAB_INSTANTIATE(S)                                  \
+  template bool designFeasible<S>(const S&, const S&);           \
+  template S designKappa<S>(const S&, Branch);                   \
+  template S resonanceDefect<S>(const S&, const S&, const S&, const S&);
+GRAZELAB_INSTANTIATE(double)
+GRAZELAB_INSTANTIATE(long double)
+GRAZELAB_INSTANTIATE(Quad)
+#undef GRAZELAB_INSTANTIATE
 
 }  // namespace grazelab::core

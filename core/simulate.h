@@ -3,124 +3,44 @@
 #pragma once
 
 #include <cstdint>
-#include <limits>
+#include <functional>
+#include <optional>
 #include <stop_token>
-#include <string>
-#include <vector>
 
-#include "core/events.h"
+#include "core/chain.h"
+#include "core/exact_stepper.h"
 #include "core/model.h"
-#include "core/modes.h"
-#include "core/state.h"
+#include "core/recorder.h"
 
 namespace grazelab::core {
 
-inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-/// Dense output: states every `spacing` time units on [tBegin, tEnd], computed only when asked
-/// for (spacing > 0). Contact states are added too, so that traces keep their corners.
-struct SampleSpec {
-  double spacing = 0;      ///< time between samples; 0 = no samples
-  double tBegin = 0;       ///< first sample time
-  double tEnd = kInfinity; ///< last sample time (the run's end if earlier)
-  std::size_t maxCount = 4'000'000;  ///< memory guard; samples past it are dropped (flagged)
-  bool includeContacts = true;       ///< add the states just before and after each contact
-};
-
-/// What the caller will look at; nothing else is stored (DESIGN.md "Needs").
-struct Needs {
-  bool events = true;         ///< the event list
-  double eventsUntil = kInfinity;  ///< keep only events up to this time (a plot's window)
-  bool poincare = false;      ///< (t, u1, v1, v2) at each contact
-  bool freeFlights = false;   ///< free-flight time of each flight that starts on the stop
-  SampleSpec samples;         ///< dense samples
-};
-
 /// A run: where it starts, when it stops, what it keeps. Defaults are sane for a quick look.
-struct Request {
-  State initial;                      ///< start state; u2 <= gap
+template <typename S>
+struct BasicRequest {
+  BasicState<S> initial;              ///< start state; u2 <= gap
   std::int64_t maxContacts = 1000;    ///< stop after this many contacts (impact, grazing, stick)
-  double tEnd = kInfinity;            ///< stop at this time
-  /// Detuned chains only: the longest free flight searched for a contact, in units of T2.
-  /// A resonant flight needs no limit (one period decides).
+  S tEnd = S(kInfinity);              ///< stop at this time; a finite one also bounds the search
+  /// Detuned chains without an end time: the longest free flight searched for a contact, in
+  /// units of T2. A resonant flight needs no limit (one period decides).
   double flightSearchPeriods = 1000;
   Needs needs;
+  /// Called with every event as it happens, whatever `needs` keeps (streaming output).
+  std::function<void(const BasicEvent<S>&)> onEvent;
 };
 
-/// A point on the contact plane H, recorded at each contact.
-struct PoincarePoint {
-  double t = 0;
-  double u1 = 0;
-  double v1 = 0;
-  double v2 = 0;  ///< post-contact velocity of mass 2 (<= 0)
-  EventType type = EventType::Impact;
-};
+using Request = BasicRequest<double>;
 
-/// A free flight between a departure from the stop and the next contact (MODEL.md section 4).
-struct FreeFlight {
-  std::int64_t contactIndex = 0;  ///< index (0-based) of the contact that ends it
-  double duration = 0;            ///< FFT [time]
-  /// T2 - FFT, computed from the exact offset to the return when the contact is near T2, so
-  /// that a flight shorter than T2 by less than an ulp of T2 still shows a positive value.
-  double shortfall = 0;
-};
-
-/// A dense-output sample.
-struct Sample {
-  double t = 0;
-  State state;
-};
-
-/// Why a run stopped.
-enum class StopReason {
-  ContactLimit,      ///< maxContacts reached
-  TimeLimit,         ///< tEnd reached
-  NoFurtherContact,  ///< a resonant free flight that never reaches the stop (linear forever)
-  SearchLimit,       ///< detuned: no contact within flightSearchPeriods * T2
-  Cancelled,         ///< the stop token was triggered
-  InvalidInput,      ///< the model or the initial state is unusable (see message)
-};
-std::string_view toString(StopReason reason);
-
-/// What the run cost and how good it is (DESIGN.md "Numerical contract").
-struct Cost {
-  std::int64_t contacts = 0;  ///< impacts + grazings + sticks
-  std::int64_t impacts = 0;
-  std::int64_t grazings = 0;
-  std::int64_t sticks = 0;
-  double wallSeconds = 0;          ///< time spent in the solver
-  double maxRelEnergyDrift = 0;    ///< max |E - E0| / E0 over contact states
-  /// max relative energy error of one computed free flight, before its end state is restored
-  /// to the energy level of its start (see simulate.cpp): the raw accuracy of the flight
-  double maxFlightEnergyError = 0;
-  double maxContactResidual = 0;   ///< max |u2 - gap| at the found contact times, before snapping
-};
-
-/// Everything a run produced, as plain values.
-struct Result {
-  Modes modes;
-  std::vector<Event> events;
-  std::vector<PoincarePoint> poincare;
-  std::vector<FreeFlight> freeFlights;
-  std::vector<Sample> samples;
-  bool samplesTruncated = false;
-  double tFinal = 0;
-  State final;
-  double initialEnergy = 0;
-  Cost cost;
-  StopReason stop = StopReason::ContactLimit;
-  std::string message;  ///< the reason for InvalidInput, or a note (e.g. "never touches")
-};
-
-/// Runs a request to its end. The stop token is checked between contacts.
-Result simulate(const Model& model, const Request& request, std::stop_token stop = {});
-
-/// The same run in pieces, for callers that stream partial results (the explorer's worker).
-/// Each advance() does at most a given number of contacts; the result grows in place.
-class Simulator {
+/// A run in pieces, for callers that stream partial results: each advance() does at most a
+/// given number of contacts; the result grows in place. The exact stepper moves a small
+/// IntegrationState; the recorder keeps what the request needs (DESIGN.md "Inside core").
+/// Holds references to its own members: neither copied nor moved.
+template <typename S>
+class BasicSimulator {
  public:
   /// Validates the model and the request; an invalid one is done at once (StopReason::InvalidInput).
-  Simulator(const Model& model, const Request& request);
+  BasicSimulator(const BasicModel<S>& model, const BasicRequest<S>& request);
+  BasicSimulator(const BasicSimulator&) = delete;
+  BasicSimulator& operator=(const BasicSimulator&) = delete;
 
   /// Runs until `contactBudget` more contacts were made, the run is complete, or `stop` is
   /// requested. Returns true when the run is complete (or cancelled, or invalid).
@@ -129,28 +49,36 @@ class Simulator {
   bool done() const { return m_done; }
   /// Fraction of the requested contacts or time done, in [0, 1].
   double progress() const;
-  const Result& result() const { return m_result; }
+  const BasicResult<S>& result() const { return m_result; }
   /// Hands over the result (the simulator is done with it).
-  Result takeResult() { return std::move(m_result); }
+  BasicResult<S> takeResult() { return std::move(m_result); }
+  /// The nondimensional chain (empty for invalid input).
+  const std::optional<Chain<S>>& chain() const { return m_chain; }
+  /// Where the run stands (scaled units), and its scales.
+  const IntegrationState<S>& state() const { return m_state; }
+  const Scale<S>& scale() const { return m_scale; }
 
  private:
-  void finish(StopReason reason, double t, const State& state);
-  void recordContact(const Event& event, double residual);
-  void addSample(double t, const State& state);
-  template <typename Motion>
-  void addSamplesUntil(double tEndOfPhase, const Motion& motionFromPhaseStart);
-  void stepStuck();
-  void stepFlight();
+  void finish(StopReason reason, const S& t, const BasicState<S>& scaled);
 
-  Model m_model;
-  Request m_request;
-  Result m_result;
-  State m_state;
-  double m_t = 0;
-  double m_nextSampleTime = 0;
-  std::int64_t m_nextSampleIndex = 0;
-  bool m_stuck = false;  // the Stick event is recorded, the stuck motion not yet run
+  BasicRequest<S> m_request;
+  BasicResult<S> m_result;
+  std::optional<Chain<S>> m_chain;
+  Scale<S> m_scale;
+  std::optional<ExactStepper<S>> m_stepper;
+  std::optional<Recorder<S>> m_recorder;
+  IntegrationState<S> m_state;
+  S m_tauEnd = S(kInfinity);
+  S m_searchHorizon = S(kInfinity);
   bool m_done = false;
 };
+
+using Simulator = BasicSimulator<double>;
+
+/// Runs a request to its end. The stop token is checked between contacts (and inside long
+/// detuned flights).
+template <typename S>
+BasicResult<S> simulate(const BasicModel<S>& model, const BasicRequest<S>& request,
+                        std::stop_token stop = {});
 
 }  // namespace grazelab::core

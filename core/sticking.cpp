@@ -2,61 +2,59 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "core/sticking.h"
 
-#include <cassert>
 #include <cmath>
-#include <numbers>
+
+#include "core/impact_law.h"
 
 namespace grazelab::core {
 
-bool pressedOnStop(const Model& model, const State& state) {
-  if (state.u2 != model.gap || state.v2 != 0) return false;
-  return state.u1 > model.gap || (state.u1 == model.gap && state.v1 > 0);
+template <typename S>
+StuckMotion<S>::StuckMotion(const Chain<S>& chain, const S& gap, const BasicState<S>& start)
+    : m_gap(gap), m_start(start), m_omega(chain.stuckOmega) {
+  using std::atan;
+  using std::sqrt;
+  // centre = kappa delta / (1 + kappa), so delta - centre = delta / (1 + kappa) exactly-ish
+  const S gapAboveCentre = gap / (S(1) + chain.kappa);
+  const S excess = start.u1 - gap;  // e0 >= 0 for a pressed state
+  m_amplitude = excess + gapAboveCentre;
+  m_rate = start.v1 / m_omega;
+  // with z = tan(W t / 2): (excess) (1 + z^2) - 2 A z^2 + 2 B z = 0, i.e.
+  // -(excess + 2 (delta - centre)) z^2 + 2 B z + excess = 0: one root z >= 0, one <= 0
+  const S leading = excess + S(2) * gapAboveCentre;  // |e2| > 0
+  const S root = sqrt(m_rate * m_rate + excess * leading);
+  m_releaseZ = m_rate >= 0 ? S((m_rate + root) / leading) : S(excess / (root - m_rate));
+  m_releaseTime = S(2) * atan(m_releaseZ) / m_omega;
 }
 
-StuckMotion::StuckMotion(const Model& model, const State& start)
-    : m_model(model),
-      m_start(start),
-      m_omega(std::sqrt((model.k1 + model.k2) / model.m1)),
-      m_centre(model.k2 * model.gap / (model.k1 + model.k2)) {
-  assert(pressedOnStop(model, start));
-  // u1(t) - centre = a cos(w t) + b sin(w t) = R cos(w t - phi); release where it falls to
-  // gap - centre: w t = phi + acos((gap - centre) / R), positive because u1(0) >= gap
-  const double a = start.u1 - m_centre;
-  const double b = start.v1 / m_omega;
-  const double radius = std::hypot(a, b);
-  const double phi = std::atan2(b, a);
-  const double level = std::min(1.0, (model.gap - m_centre) / radius);
-  double t = (phi + std::acos(level)) / m_omega;
-  // polish on u1(t) - gap = (u1(0) - gap) + a (cos wt - 1) + b sin wt, free of cancellation
-  for (int step = 0; step < 3; ++step) {
-    const double half = 0.5 * m_omega * t;
-    const double sine = std::sin(2 * half);
-    const double cosMinusOne = -2.0 * std::sin(half) * std::sin(half);
-    const double value = (start.u1 - model.gap) + a * cosMinusOne + b * sine;
-    const double slope = m_omega * (-a * sine + b * (1.0 + cosMinusOne));
-    if (slope >= 0 || value == 0) break;
-    const double next = t - value / slope;
-    if (!(next > 0) || std::abs(next - t) > 1e-3 * t) break;
-    t = next;
-  }
-  m_releaseTime = t;
+template <typename S>
+BasicState<S> StuckMotion<S>::atPhase(const S& sine, const S& cosineMinusOne) const {
+  return {m_start.u1 + m_amplitude * cosineMinusOne + m_rate * sine, m_gap,
+          m_start.v1 + m_omega * (-m_amplitude * sine + m_rate * cosineMinusOne), S(0)};
 }
 
-State StuckMotion::at(double t) const {
-  const double a = m_start.u1 - m_centre;
-  const double b = m_start.v1 / m_omega;
-  const double half = 0.5 * m_omega * t;
-  const double sine = std::sin(2 * half);
-  const double cosMinusOne = -2.0 * std::sin(half) * std::sin(half);
-  return {m_start.u1 + a * cosMinusOne + b * sine, m_model.gap,
-          m_omega * (-a * sine + b * (1.0 + cosMinusOne)), 0.0};
+template <typename S>
+BasicState<S> StuckMotion<S>::at(const S& tau) const {
+  using std::cos;
+  using std::sin;
+  const S half = m_omega * tau / S(2);
+  const S halfSine = sin(half);
+  return atPhase(S(2) * halfSine * cos(half), S(-2) * halfSine * halfSine);
 }
 
-State StuckMotion::releaseState() const {
-  State state = at(m_releaseTime);
-  state.u1 = m_model.gap;
-  state.v1 = std::min(state.v1, 0.0);
+template <typename S>
+BasicState<S> StuckMotion<S>::releaseState() const {
+  using std::min;
+  // sin and cos - 1 of W t rationally from z = tan(W t / 2)
+  const S z = m_releaseZ;
+  const S denominator = S(1) + z * z;
+  BasicState<S> state = atPhase(S(2) * z / denominator, S(-2) * z * z / denominator);
+  state.u1 = m_gap;
+  state.v1 = min(state.v1, S(0));
   return state;
 }
+
+template class StuckMotion<double>;
+template class StuckMotion<long double>;
+template class StuckMotion<Quad>;
 
 }  // namespace grazelab::core

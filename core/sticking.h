@@ -2,36 +2,42 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include "core/model.h"
+#include "core/chain.h"
 #include "core/state.h"
 
 namespace grazelab::core {
 
-/// True when a state on the stop with v2 = 0 is pressed into it (MODEL.md section 4): the spring
-/// pushes mass 2 toward the stop, u1 > gap, or u1 = gap with v1 > 0 (pushing next instant).
-bool pressedOnStop(const Model& model, const State& state);
-
-/// The stuck phase: mass 2 held at u2 = gap (reaction R = -k2 (u1 - gap) <= 0) while mass 1
-/// oscillates alone, m1 u1'' + (k1 + k2) u1 = k2 gap, about the centre k2 gap / (k1 + k2) < gap.
-/// It ends when u1 falls back to the gap (R reaches 0), always in finite time.
+/// The stuck phase, in scaled units (MODEL.md section 4): mass 2 held at x2 = delta (reaction
+/// R = -k2 (u1 - gap) <= 0) while mass 1 oscillates alone about the centre
+/// kappa delta / (1 + kappa) < delta, at the frequency chain.stuckOmega. It ends when x1 falls
+/// back to delta (R reaches 0), always in finite time.
+///
+/// The release time solves (x1(0) - delta) + A (cos W t - 1) + B sin W t = 0 as a quadratic in
+/// z = tan(W t / 2) with the cancellation-free root, so a stick that releases a tiny time later
+/// keeps the relative precision of that time and of the release velocity.
+template <typename S>
 class StuckMotion {
  public:
-  /// Precondition: pressedOnStop(model, start).
-  StuckMotion(const Model& model, const State& start);
+  /// Precondition: pressedOnStop(start, gap).
+  StuckMotion(const Chain<S>& chain, const S& gap, const BasicState<S>& start);
 
-  /// State t after the start of the phase (u2 = gap, v2 = 0 throughout).
-  State at(double t) const;
-  /// Duration of the phase: the first t > 0 with u1(t) = gap and u1 decreasing.
-  double releaseTime() const { return m_releaseTime; }
-  /// The state at release: u1 = gap exactly, v1 <= 0, on the stop at rest.
-  State releaseState() const;
+  /// State tau after the start of the phase (x2 = delta, y2 = 0 throughout).
+  BasicState<S> at(const S& tau) const;
+  /// Duration of the phase: the first tau > 0 with x1(tau) = delta and x1 decreasing.
+  const S& releaseTime() const { return m_releaseTime; }
+  /// The state at release: x1 = delta exactly, y1 <= 0, on the stop at rest.
+  BasicState<S> releaseState() const;
 
  private:
-  Model m_model;
-  State m_start;
-  double m_omega = 0;        // sqrt((k1 + k2) / m1)
-  double m_centre = 0;       // k2 gap / (k1 + k2)
-  double m_releaseTime = 0;
+  BasicState<S> atPhase(const S& sine, const S& cosineMinusOne) const;
+
+  S m_gap;
+  BasicState<S> m_start;
+  S m_omega;      // frequency of mass 1 alone
+  S m_amplitude;  // A = x1(0) - centre
+  S m_rate;       // B = y1(0) / omega
+  S m_releaseTime = 0;
+  S m_releaseZ = 0;  // tan(omega release / 2)
 };
 
 }  // namespace grazelab::core

@@ -4,49 +4,45 @@
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
-#include <QStringList>
 
-#include <cmath>
-
-#include "core/modes.h"
-#include "core/orbits.h"
+#include "core/setup.h"
 
 namespace grazelab::cli {
 namespace {
 
+const QStringList kModelOptions = {"m1", "m2", "k1", "gap", "k2", "branch", "precision"};
 const QStringList kSimulateOnly = {"glo", "onepp", "state", "perturb", "contacts", "t-end",
                                    "format"};
 
-// a finite-or-not real number; non-finite values are caught later by validation with a reason
-std::optional<double> toNumber(const QString& text) {
-  bool ok = false;
-  const double value = text.trimmed().toDouble(&ok);
-  if (ok) return value;
-  const QString lower = text.trimmed().toLower();
-  if (lower == "nan") return std::nan("");
-  if (lower == "inf" || lower == "+inf") return INFINITY;
-  if (lower == "-inf") return -INFINITY;
-  return std::nullopt;
-}
+QString fromStd(const std::string& text) { return QString::fromStdString(text); }
 
-QString numberError(const QString& option, const QString& text) {
-  return QStringLiteral("--%1: '%2' is not a number").arg(option, text);
+// a number in precision S, or the reason it is not one ("is out of range ...")
+template <typename S>
+std::optional<S> toNumber(const QString& option, const QString& text, QString& error) {
+  const core::ParsedScalar<S> parsed = core::parseScalar<S>(text.toStdString());
+  if (!parsed.value) {
+    error = QStringLiteral("--%1: '%2' %3").arg(option, text, fromStd(parsed.error));
+  }
+  return parsed.value;
 }
 
 // "a,b,c,d" into a state
-std::optional<core::State> toState(const QString& text) {
+template <typename S>
+std::optional<core::BasicState<S>> toState(const QString& option, const QString& text,
+                                           QString& error) {
   const QStringList parts = text.split(',');
-  if (parts.size() != 4) return std::nullopt;
-  double values[4];
+  if (parts.size() != 4) {
+    error = QStringLiteral("--%1: '%2' is not four numbers separated by commas").arg(option, text);
+    return std::nullopt;
+  }
+  S values[4];
   for (int i = 0; i < 4; ++i) {
-    const auto value = toNumber(parts[i]);
+    const auto value = toNumber<S>(option, parts[i], error);
     if (!value) return std::nullopt;
     values[i] = *value;
   }
-  return core::State{values[0], values[1], values[2], values[3]};
+  return core::BasicState<S>{values[0], values[1], values[2], values[3]};
 }
-
-QString fromStd(const std::string& text) { return QString::fromStdString(text); }
 
 }  // namespace
 
@@ -58,14 +54,26 @@ void addOptions(QCommandLineParser& parser) {
       {"gap", "Gap d between mass 2 at rest and the stop (default 1).", "value", "1"},
       {"k2", "Stiffness m1-m2 as given: no resonance imposed (excludes --branch).", "value"},
       {"branch", "k2 from the 1:2 design: upper (default) or lower.", "upper|lower"},
+      {"precision", "Arithmetic of the run: double (default), long or quad (binary128). Numbers "
+                    "are read and written in it.", "double|long|quad", "double"},
       {"glo", "Start on GLO_lambda data, any real lambda (default 0.5).", "lambda"},
-      {"onepp", "Start on the one-impact-per-period orbit of period T.", "T"},
+      {"onepp", "Start on the one-impact-per-period orbit of period T (T < T2 near T2).", "T"},
       {"state", "Start from the state u1,u2,v1,v2.", "u1,u2,v1,v2"},
       {"perturb", "Add du1,du2,dv1,dv2 to the initial state.", "du1,du2,dv1,dv2"},
       {"contacts", "Stop after N contacts (default 100 when no --t-end).", "N"},
-      {"t-end", "Stop at time T.", "T"},
-      {"format", "Output: json (default), csv or summary.", "json|csv|summary", "json"},
+      {"t-end", "Stop at time T (it also bounds the contact search of a detuned chain).", "T"},
+      {"format", "Output: json (default), jsonl (JSON Lines), csv or summary. json, jsonl and "
+                 "csv stream: memory stays bounded and an interrupt leaves complete records.",
+       "json|jsonl|csv|summary", "json"},
   });
+}
+
+QStringList repeatedOptions(const QCommandLineParser& parser) {
+  QStringList repeated;
+  for (const QString& name : kModelOptions + kSimulateOnly) {
+    if (parser.values(name).size() > 1) repeated << "--" + name;
+  }
+  return repeated;
 }
 
 QStringList simulateOnlyOptionsSet(const QCommandLineParser& parser) {
@@ -76,24 +84,33 @@ QStringList simulateOnlyOptionsSet(const QCommandLineParser& parser) {
   return set;
 }
 
-Parsed<ModelInput> parseModel(const QCommandLineParser& parser) {
-  ModelInput input;
-  double* targets[] = {&input.model.m1, &input.model.m2, &input.model.k1, &input.model.gap};
+std::optional<core::Precision> parsePrecisionOption(const QCommandLineParser& parser,
+                                                    QString& error) {
+  const QString text = parser.value("precision");
+  const auto precision = core::parsePrecision(text.toStdString());
+  if (!precision) error = QStringLiteral("--precision: '%1' is not double, long or quad").arg(text);
+  return precision;
+}
+
+template <typename S>
+Parsed<ModelInput<S>> parseModel(const QCommandLineParser& parser) {
+  QString error;
+  S values[4];
   const char* names[] = {"m1", "m2", "k1", "gap"};
   for (int i = 0; i < 4; ++i) {
-    const QString text = parser.value(names[i]);
-    const auto value = toNumber(text);
-    if (!value) return {std::nullopt, numberError(names[i], text)};
-    *targets[i] = *value;
+    const auto value = toNumber<S>(names[i], parser.value(names[i]), error);
+    if (!value) return {std::nullopt, error};
+    values[i] = *value;
   }
   if (parser.isSet("k2") && parser.isSet("branch")) {
     return {std::nullopt, "--k2 and --branch exclude each other: give k2, or let the 1:2 design "
                           "choose it"};
   }
+  core::BasicModel<S> model{values[0], values[1], values[2], S(1), values[3], std::nullopt};
   if (parser.isSet("k2")) {
-    const auto value = toNumber(parser.value("k2"));
-    if (!value) return {std::nullopt, numberError("k2", parser.value("k2"))};
-    input.model.k2 = *value;
+    const auto k2 = toNumber<S>("k2", parser.value("k2"), error);
+    if (!k2) return {std::nullopt, error};
+    model.k2 = *k2;
   } else {
     const QString branchText = parser.isSet("branch") ? parser.value("branch") : "upper";
     const auto branch = core::parseBranch(branchText.toStdString());
@@ -101,80 +118,72 @@ Parsed<ModelInput> parseModel(const QCommandLineParser& parser) {
       return {std::nullopt,
               QStringLiteral("--branch: '%1' is neither 'upper' nor 'lower'").arg(branchText)};
     }
-    input.branch = branch;
-    input.model.k2 = 1.0;  // placeholder so that validation below reports the other fields only
+    model.design = branch;
   }
-  auto problems = core::validate(input.model);
-  if (!problems.empty()) return {std::nullopt, fromStd(core::describe(problems))};
-  if (input.branch) {
-    const auto k2 = core::resonantK2(input.model.m1, input.model.m2, input.model.k1, *input.branch);
-    if (!k2) {
-      return {std::nullopt,
-              QStringLiteral("m2/m1 = %1 > 9/16: no 1:2 resonant chain exists for these masses "
-                             "(give --k2 for a detuned chain)")
-                  .arg(input.model.m2 / input.model.m1, 0, 'g', 17)};
-    }
-    input.model.k2 = *k2;
+  const auto problems = core::validate(model);
+  if (!problems.empty()) {
+    QString line = fromStd(core::describe(problems));
+    if (model.design) line += " (give --k2 for a detuned chain)";
+    return {std::nullopt, line};
   }
-  return {input, {}};
+  if (model.design) {
+    model = *core::designedModel(model.m1, model.m2, model.k1, model.gap, *model.design);
+  }
+  core::ChainOrProblem<S> formed = core::makeChain(model);
+  if (!formed.chain) return {std::nullopt, fromStd(formed.problem)};
+  return {ModelInput<S>{model, *formed.chain}, {}};
 }
 
-Parsed<RunInput> parseRun(const QCommandLineParser& parser) {
-  const Parsed<ModelInput> model = parseModel(parser);
+template <typename S>
+Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
+  Parsed<ModelInput<S>> model = parseModel<S>(parser);
   if (!model.value) return {std::nullopt, model.error};
-  RunInput run;
-  run.model = *model.value;
-  const core::Model& chain = run.model.model;
-  const core::Modes modes = core::computeModes(chain);
+  RunInput<S> run{*model.value, {}, {}, {}, Format::Json};
+  const core::Chain<S>& chain = run.model.chain;
+  QString error;
 
   const int starts = int(parser.isSet("glo")) + int(parser.isSet("onepp")) +
                      int(parser.isSet("state"));
   if (starts > 1) return {std::nullopt, "give one of --glo, --onepp, --state, not several"};
-
-  core::State initial;
+  core::StartSpec<S> spec;
   if (parser.isSet("onepp")) {
-    const auto period = toNumber(parser.value("onepp"));
-    if (!period) return {std::nullopt, numberError("onepp", parser.value("onepp"))};
-    const core::OnePeriodicOrbit orbit = core::onePeriodicOrbit(chain, modes, *period);
-    if (!orbit.admissible) return {std::nullopt, "--onepp: " + fromStd(orbit.reason)};
-    initial = orbit.postImpact;
-    run.initialDescription = QStringLiteral("1IPP orbit of period T = %1").arg(*period, 0, 'g', 17);
+    const auto period = toNumber<S>("onepp", parser.value("onepp"), error);
+    if (!period) return {std::nullopt, error};
+    spec.kind = core::StartSpec<S>::Kind::OnePeriodic;
+    spec.period = *period;
   } else if (parser.isSet("state")) {
-    const auto state = toState(parser.value("state"));
-    if (!state) {
-      return {std::nullopt,
-              QStringLiteral("--state: '%1' is not four numbers u1,u2,v1,v2").arg(parser.value("state"))};
-    }
-    initial = *state;
-    run.initialDescription = "explicit state";
+    const auto state = toState<S>("state", parser.value("state"), error);
+    if (!state) return {std::nullopt, error};
+    spec.kind = core::StartSpec<S>::Kind::Explicit;
+    spec.state = *state;
   } else {
     const QString text = parser.isSet("glo") ? parser.value("glo") : "0.5";
-    const auto lambda = toNumber(text);
-    if (!lambda) return {std::nullopt, numberError("glo", text)};
-    if (!std::isfinite(*lambda)) {
+    const auto lambda = toNumber<S>("glo", text, error);
+    if (!lambda) return {std::nullopt, error};
+    if (!core::isFinite(*lambda)) {
       return {std::nullopt, QStringLiteral("--glo must be a finite number (got %1)").arg(text)};
     }
-    initial = core::gloData(chain, modes, *lambda);
-    run.initialDescription = QStringLiteral("GLO_lambda data, lambda = %1 (as such: %2)")
-                                 .arg(*lambda, 0, 'g', 17)
-                                 .arg(fromStd(core::describe(core::classifyGlo(*lambda))));
+    spec.lambda = *lambda;
   }
   if (parser.isSet("perturb")) {
-    const auto delta = toState(parser.value("perturb"));
-    if (!delta) {
-      return {std::nullopt, QStringLiteral("--perturb: '%1' is not four numbers du1,du2,dv1,dv2")
-                                .arg(parser.value("perturb"))};
-    }
-    const auto problems = core::validateState(chain, *delta, "perturb");
+    const auto delta = toState<S>("perturb", parser.value("perturb"), error);
+    if (!delta) return {std::nullopt, error};
+    const auto problems = core::validateState(run.model.model, *delta, "perturb");
     for (const auto& problem : problems) {
       if (problem.field != "perturb.u2") return {std::nullopt, fromStd(core::describe({problem}))};
     }
-    initial = initial + *delta;
-    run.initialDescription += QStringLiteral(", perturbed by (%1)").arg(parser.value("perturb"));
+    spec.perturbation = *delta;
   }
-  const auto stateProblems = core::validateState(chain, initial, "initial");
+  core::StartOrProblem<S> start = core::makeStart(chain, spec);
+  if (!start.start) {
+    const QString option = spec.kind == core::StartSpec<S>::Kind::OnePeriodic ? "--onepp: " : "";
+    return {std::nullopt, option + fromStd(start.problem)};
+  }
+  const auto stateProblems = core::validateState(run.model.model, start.start->state, "initial");
   if (!stateProblems.empty()) return {std::nullopt, fromStd(core::describe(stateProblems))};
-  run.request.initial = initial;
+  run.request.initial = start.start->state;
+  run.initialDescription = fromStd(start.start->description);
+  run.notes = start.start->notes;
 
   if (parser.isSet("contacts")) {
     bool ok = false;
@@ -188,20 +197,38 @@ Parsed<RunInput> parseRun(const QCommandLineParser& parser) {
     run.request.maxContacts = parser.isSet("t-end") ? std::numeric_limits<std::int64_t>::max() : 100;
   }
   if (parser.isSet("t-end")) {
-    const auto tEnd = toNumber(parser.value("t-end"));
-    if (!tEnd || std::isnan(*tEnd) || *tEnd < 0) {
+    const auto tEnd = toNumber<S>("t-end", parser.value("t-end"), error);
+    if (!tEnd) return {std::nullopt, error};
+    if (!(*tEnd >= 0)) {
       return {std::nullopt,
               QStringLiteral("--t-end: '%1' is not a time >= 0").arg(parser.value("t-end"))};
     }
     run.request.tEnd = *tEnd;
   }
-  run.format = parser.value("format");
-  if (run.format != "json" && run.format != "csv" && run.format != "summary") {
+  const QString format = parser.value("format");
+  if (format == "json") {
+    run.format = Format::Json;
+  } else if (format == "jsonl") {
+    run.format = Format::JsonLines;
+  } else if (format == "csv") {
+    run.format = Format::Csv;
+  } else if (format == "summary") {
+    run.format = Format::Summary;
+  } else {
     return {std::nullopt,
-            QStringLiteral("--format: '%1' is not json, csv or summary").arg(run.format)};
+            QStringLiteral("--format: '%1' is not json, jsonl, csv or summary").arg(format)};
   }
-  run.request.needs.events = run.format != "summary";
+  // outputs stream every event through the request's callback; nothing is kept in memory
+  run.request.needs.events = false;
   return {run, {}};
 }
+
+#define GRAZELAB_INSTANTIATE(S)                                                     \
+  template Parsed<ModelInput<S>> parseModel<S>(const QCommandLineParser&);          \
+  template Parsed<RunInput<S>> parseRun<S>(const QCommandLineParser&);
+GRAZELAB_INSTANTIATE(double)
+GRAZELAB_INSTANTIATE(long double)
+GRAZELAB_INSTANTIATE(core::Quad)
+#undef GRAZELAB_INSTANTIATE
 
 }  // namespace grazelab::cli

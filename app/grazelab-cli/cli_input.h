@@ -3,9 +3,13 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
 
 #include <optional>
+#include <string>
+#include <vector>
 
+#include "core/chain.h"
 #include "core/model.h"
 #include "core/resonance.h"
 #include "core/simulate.h"
@@ -17,18 +21,34 @@ namespace grazelab::cli {
 /// Registers every option of `info` and `simulate` (DESIGN.md, "Command line").
 void addOptions(QCommandLineParser& parser);
 
-/// The model as the command line describes it.
+/// Options given more than once (the last would silently win): refused with their names.
+QStringList repeatedOptions(const QCommandLineParser& parser);
+
+/// The options that only `simulate` takes and that are set; for rejecting them on `info`.
+QStringList simulateOnlyOptionsSet(const QCommandLineParser& parser);
+
+/// --precision, checked ("double" when absent).
+std::optional<core::Precision> parsePrecisionOption(const QCommandLineParser& parser,
+                                                    QString& error);
+
+/// The model as the command line describes it, in precision S, with its nondimensional chain.
+template <typename S>
 struct ModelInput {
-  core::Model model;
-  std::optional<core::Branch> branch;  ///< set when k2 came from the 1:2 design
+  core::BasicModel<S> model;
+  core::Chain<S> chain;
 };
 
+/// Output formats of `simulate`.
+enum class Format { Json, JsonLines, Csv, Summary };
+
 /// What `simulate` runs, with the words that describe its start.
+template <typename S>
 struct RunInput {
-  ModelInput model;
-  core::Request request;
-  QString initialDescription;  ///< e.g. "GLO_lambda, lambda = 0.5: grazing linear orbit ..."
-  QString format;              ///< json | csv | summary
+  ModelInput<S> model;
+  core::BasicRequest<S> request;
+  QString initialDescription;  ///< e.g. "GLO_lambda data, lambda = 0.5 (as such: ...)"
+  std::vector<std::string> notes;  ///< warnings for stderr (a perturbation lost in rounding)
+  Format format = Format::Json;
 };
 
 /// Either a value or the one line that says what is wrong.
@@ -38,10 +58,9 @@ struct Parsed {
   QString error;
 };
 
-Parsed<ModelInput> parseModel(const QCommandLineParser& parser);
-Parsed<RunInput> parseRun(const QCommandLineParser& parser);
-
-/// The options that only `simulate` takes and that are set; for rejecting them on `info`.
-QStringList simulateOnlyOptionsSet(const QCommandLineParser& parser);
+template <typename S>
+Parsed<ModelInput<S>> parseModel(const QCommandLineParser& parser);
+template <typename S>
+Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser);
 
 }  // namespace grazelab::cli

@@ -2,139 +2,262 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "cli_output.h"
 
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QString>
+#include <cmath>
 
+#include "core/modes.h"
 #include "core/orbits.h"
 
 namespace grazelab::cli {
 namespace {
 
-// 17 significant digits: every double round-trips
-QByteArray exact(double value) { return QByteArray::number(value, 'g', 17); }
-
-QJsonObject stateJson(double t, const core::State& state) {
-  return {{"t", t}, {"u1", state.u1}, {"u2", state.u2}, {"v1", state.v1}, {"v2", state.v2}};
+template <typename S>
+std::string number(const S& value) {
+  return core::isFinite(value) ? core::formatScalar(value) : std::string("null");
 }
 
-double contactsPerSecond(const core::Result& result) {
-  return result.cost.wallSeconds > 0 ? double(result.cost.contacts) / result.cost.wallSeconds : 0;
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// a flat JSON object from (key, already formatted value) pairs
+std::string object(std::initializer_list<std::pair<const char*, std::string>> fields) {
+  std::string out = "{";
+  bool first = true;
+  for (const auto& [key, value] : fields) {
+    if (!first) out += ", ";
+    first = false;
+    out += quoted(key) + ": " + value;
+  }
+  return out + "}";
+}
+
+template <typename S>
+std::string stateJson(const S& t, const core::BasicState<S>& state) {
+  return object({{"t", number(t)},
+                 {"u1", number(state.u1)},
+                 {"u2", number(state.u2)},
+                 {"v1", number(state.v1)},
+                 {"v2", number(state.v2)}});
+}
+
+template <typename S>
+std::string modelJson(const ModelInput<S>& input) {
+  const core::BasicModel<S>& model = input.model;
+  const core::Chain<S>& chain = input.chain;
+  const S omegaFast = chain.ratio * chain.omegaSlow;
+  // M-normalised mode shapes: columns (rho_j, 1) / (sqrt(m1) sqrt(rho_j^2 + beta))
+  using std::sqrt;
+  S p[2][2];
+  const S rho[2] = {chain.rhoFast, chain.rhoSlow};
+  for (int j = 0; j < 2; ++j) {
+    const S scale = S(1) / (sqrt(model.m1) * sqrt(rho[j] * rho[j] + chain.beta));
+    p[0][j] = rho[j] * scale;
+    p[1][j] = scale;
+  }
+  const std::string source =
+      model.design ? "1:2 design, " + std::string(core::toString(*model.design)) + " branch"
+                   : std::string("given");
+  std::string out = "{\n";
+  auto field = [&](const char* key, const std::string& value, bool last = false) {
+    out += "    " + quoted(key) + ": " + value + (last ? "\n" : ",\n");
+  };
+  field("m1", number(model.m1));
+  field("m2", number(model.m2));
+  field("k1", number(model.k1));
+  field("k2", number(model.k2));
+  field("gap", number(model.gap));
+  field("k2_source", quoted(source));
+  field("mass_ratio", number(chain.beta));
+  field("omega1", number(omegaFast));
+  field("omega2", number(chain.omegaSlow));
+  field("T1", number(S(core::twoPi<S>() / omegaFast)));
+  field("T2", number(S(core::twoPi<S>() / chain.omegaSlow)));
+  field("resonant", chain.resonant ? "true" : "false");
+  field("detuning", number(chain.detuning));
+  field("mode_labelling", quoted("mode 1 is the fast mode, mode 2 the slow one (omega1 = 2 omega2)"));
+  field("P", "[[" + number(p[0][0]) + ", " + number(p[0][1]) + "], [" + number(p[1][0]) + ", " +
+                 number(p[1][1]) + "]]");
+  field("precision", quoted(std::string(core::toString(
+                         std::is_same_v<S, double> ? core::Precision::Double
+                         : std::is_same_v<S, long double> ? core::Precision::Long
+                                                          : core::Precision::Quad))));
+  field("lambda_star", chain.resonant ? number(core::lambdaStar(chain)) : std::string("null"), true);
+  return out + "  }";
+}
+
+double contactsPerSecond(const core::Cost& cost) {
+  return cost.wallSeconds > 0 ? double(cost.contacts) / cost.wallSeconds : 0;
+}
+
+template <typename S>
+std::string eventJson(const core::BasicEvent<S>& event) {
+  return object({{"t", number(event.t)},
+                 {"type", quoted(std::string(core::toString(event.type)))},
+                 {"u1", number(event.before.u1)},
+                 {"u2", number(event.before.u2)},
+                 {"v1", number(event.before.v1)},
+                 {"v2_pre", number(event.before.v2)},
+                 {"v2_post", number(event.after.v2)}});
+}
+
+std::string stopReason(core::StopReason reason, bool interrupted) {
+  return quoted(interrupted ? std::string("interrupted") : std::string(core::toString(reason)));
+}
+
+template <typename S>
+std::string endFields(const core::BasicResult<S>& result, bool interrupted,
+                      const std::string& indent) {
+  const core::Cost& cost = result.cost;
+  auto field = [&](const char* key, const std::string& value) {
+    return indent + quoted(key) + ": " + value;
+  };
+  std::string out;
+  out += field("final", stateJson(result.tFinal, result.final)) + ",\n";
+  out += field("stop_reason", stopReason(result.stop, interrupted)) + ",\n";
+  if (!result.message.empty()) out += field("message", quoted(result.message)) + ",\n";
+  out += field("contacts", object({{"total", std::to_string(cost.contacts)},
+                                   {"impacts", std::to_string(cost.impacts)},
+                                   {"grazings", std::to_string(cost.grazings)},
+                                   {"sticks", std::to_string(cost.sticks)},
+                                   {"undecided_touches", std::to_string(cost.undecidedTouches)}})) +
+         ",\n";
+  out += field("energy", object({{"initial", number(result.initialEnergy)},
+                                 {"max_rel_drift", number(cost.maxRelEnergyDrift)},
+                                 {"max_flight_error", number(cost.maxFlightEnergyError)}})) +
+         ",\n";
+  out += field("accuracy", object({{"max_contact_residual", number(cost.maxContactResidual)}})) +
+         ",\n";
+  out += field("timing", object({{"seconds", number(cost.wallSeconds)},
+                                 {"contacts_per_second", number(contactsPerSecond(cost))}}));
+  return out;
 }
 
 }  // namespace
 
-QJsonObject modelJson(const ModelInput& input, const core::Modes& modes) {
-  const core::Model& model = input.model;
-  QJsonObject json{
-      {"m1", model.m1},
-      {"m2", model.m2},
-      {"k1", model.k1},
-      {"k2", model.k2},
-      {"gap", model.gap},
-      {"k2_source", input.branch ? QString("1:2 design, %1 branch")
-                                       .arg(QString::fromUtf8(core::toString(*input.branch).data()))
-                                 : QString("given")},
-      {"mass_ratio", model.m2 / model.m1},
-      {"omega1", modes.omegaFast},
-      {"omega2", modes.omegaSlow},
-      {"T1", modes.T1},
-      {"T2", modes.T2},
-      {"resonant", modes.resonant},
-      {"detuning", modes.detuning},
-      {"mode_labelling", "mode 1 is the fast mode, mode 2 the slow one (omega1 = 2 omega2)"},
-      {"P", QJsonArray{QJsonArray{modes.P(0, 0), modes.P(0, 1)},
-                       QJsonArray{modes.P(1, 0), modes.P(1, 1)}}},
-  };
-  if (modes.resonant) {
-    json["lambda_star"] = core::lambdaStar(modes);
-  } else {
-    json["lambda_star"] = QJsonValue::Null;
-  }
-  return json;
+template <typename S>
+std::string infoJson(const ModelInput<S>& model) {
+  return "{\n  \"model\": " + modelJson(model) + "\n}\n";
 }
 
-QByteArray simulationJson(const RunInput& run, const core::Result& result) {
-  QJsonArray events;
-  for (const core::Event& event : result.events) {
-    events.append(QJsonObject{
-        {"t", event.t},
-        {"type", QString::fromUtf8(core::toString(event.type).data())},
-        {"u1", event.before.u1},
-        {"u2", event.before.u2},
-        {"v1", event.before.v1},
-        {"v2_pre", event.before.v2},
-        {"v2_post", event.after.v2},
-    });
-  }
-  const core::Cost& cost = result.cost;
-  const QJsonObject json{
-      {"model", modelJson(run.model, result.modes)},
-      {"initial", QJsonObject{{"description", run.initialDescription},
-                              {"state", stateJson(0.0, run.request.initial)}}},
-      {"events", events},
-      {"final", stateJson(result.tFinal, result.final)},
-      {"stop_reason", QString::fromUtf8(core::toString(result.stop).data())},
-      {"contacts", QJsonObject{{"total", double(cost.contacts)},
-                               {"impacts", double(cost.impacts)},
-                               {"grazings", double(cost.grazings)},
-                               {"sticks", double(cost.sticks)}}},
-      {"energy", QJsonObject{{"initial", result.initialEnergy},
-                             {"max_rel_drift", cost.maxRelEnergyDrift},
-                             {"max_flight_error", cost.maxFlightEnergyError}}},
-      {"accuracy", QJsonObject{{"max_contact_residual", cost.maxContactResidual}}},
-      {"timing", QJsonObject{{"seconds", cost.wallSeconds},
-                             {"contacts_per_second", contactsPerSecond(result)}}},
-  };
-  return QJsonDocument(json).toJson(QJsonDocument::Indented);
+template <typename S>
+void RunWriter<S>::write(const std::string& text) {
+  std::fwrite(text.data(), 1, text.size(), m_out);
 }
 
-QByteArray simulationCsv(const core::Result& result) {
-  QByteArray csv = "t,type,u1,u2,v1,v2_pre,v2_post\n";
-  for (const core::Event& event : result.events) {
-    csv += exact(event.t) + ',' + QByteArray(core::toString(event.type).data()) + ',' +
-           exact(event.before.u1) + ',' + exact(event.before.u2) + ',' + exact(event.before.v1) +
-           ',' + exact(event.before.v2) + ',' + exact(event.after.v2) + '\n';
+template <typename S>
+void RunWriter<S>::begin(const core::BasicResult<S>&) {
+  const std::string initial =
+      "{\"description\": " + quoted(m_run.initialDescription.toStdString()) +
+      ", \"state\": " + stateJson(S(0), m_run.request.initial) + "}";
+  switch (m_run.format) {
+    case Format::Json:
+      write("{\n  \"model\": " + modelJson(m_run.model) + ",\n  \"initial\": " + initial +
+            ",\n  \"events\": [");
+      break;
+    case Format::JsonLines: {
+      std::string model = modelJson(m_run.model);
+      std::string flat;
+      for (char c : model) {
+        if (c != '\n') flat += c;
+      }
+      write("{\"record\": \"run\", \"model\": " + flat + ", \"initial\": " + initial + "}\n");
+      break;
+    }
+    case Format::Csv:
+      write("t,type,u1,u2,v1,v2_pre,v2_post\n");
+      break;
+    case Format::Summary:
+      break;
   }
-  return csv;
 }
 
-QByteArray simulationSummary(const RunInput& run, const core::Result& result) {
-  const core::Cost& cost = result.cost;
-  const core::Modes& modes = result.modes;
-  QString text;
-  text += QString("start          %1\n").arg(run.initialDescription);
-  text += QString("chain          m1=%1 m2=%2 k1=%3 k2=%4 gap=%5 (%6; T2=%7)\n")
-              .arg(run.model.model.m1, 0, 'g', 10)
-              .arg(run.model.model.m2, 0, 'g', 10)
-              .arg(run.model.model.k1, 0, 'g', 10)
-              .arg(run.model.model.k2, 0, 'g', 10)
-              .arg(run.model.model.gap, 0, 'g', 10)
-              .arg(modes.resonant ? "1:2 resonant" : "detuned")
-              .arg(modes.T2, 0, 'g', 10);
-  text += QString("contacts       %1 (impacts %2, grazings %3, sticks %4)\n")
-              .arg(cost.contacts)
-              .arg(cost.impacts)
-              .arg(cost.grazings)
-              .arg(cost.sticks);
-  text += QString("stopped        %1 at t = %2%3\n")
-              .arg(QString::fromUtf8(core::toString(result.stop).data()))
-              .arg(result.tFinal, 0, 'g', 17)
-              .arg(result.message.empty() ? QString() : " (" + QString::fromStdString(result.message) + ")");
-  text += QString("wall time      %1 s (%2 contacts/s)\n")
-              .arg(cost.wallSeconds, 0, 'g', 4)
-              .arg(contactsPerSecond(result), 0, 'g', 4);
-  text += QString("energy drift   %1 (max relative, at contacts; one flight: %2)\n")
-              .arg(cost.maxRelEnergyDrift, 0, 'g', 3)
-              .arg(cost.maxFlightEnergyError, 0, 'g', 3);
-  text += QString("|u2 - gap|     %1 (max at contacts)\n").arg(cost.maxContactResidual, 0, 'g', 3);
-  text += QString("final          t=%1 u1=%2 u2=%3 v1=%4 v2=%5\n")
-              .arg(result.tFinal, 0, 'g', 17)
-              .arg(result.final.u1, 0, 'g', 17)
-              .arg(result.final.u2, 0, 'g', 17)
-              .arg(result.final.v1, 0, 'g', 17)
-              .arg(result.final.v2, 0, 'g', 17);
-  return text.toUtf8();
+template <typename S>
+void RunWriter<S>::event(const core::BasicEvent<S>& event) {
+  switch (m_run.format) {
+    case Format::Json:
+      write((m_events == 0 ? "\n    " : ",\n    ") + eventJson(event));
+      break;
+    case Format::JsonLines: {
+      std::string line = eventJson(event);
+      line.insert(1, "\"record\": \"event\", ");
+      write(line + "\n");
+      break;
+    }
+    case Format::Csv:
+      write(number(event.t) + ',' + std::string(core::toString(event.type)) + ',' +
+            number(event.before.u1) + ',' + number(event.before.u2) + ',' +
+            number(event.before.v1) + ',' + number(event.before.v2) + ',' +
+            number(event.after.v2) + '\n');
+      break;
+    case Format::Summary:
+      break;
+  }
+  ++m_events;
 }
+
+template <typename S>
+void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted) {
+  switch (m_run.format) {
+    case Format::Json:
+      write((m_events == 0 ? "],\n" : "\n  ],\n") + endFields(result, interrupted, "  ") + "\n}\n");
+      break;
+    case Format::JsonLines: {
+      std::string fields = endFields(result, interrupted, "");
+      std::string flat;
+      for (char c : fields) flat += c == '\n' ? ' ' : c;
+      write("{\"record\": \"end\", " + flat + "}\n");
+      break;
+    }
+    case Format::Csv:
+      break;
+    case Format::Summary: {
+      const core::Cost& cost = result.cost;
+      const core::Chain<S>& chain = m_run.model.chain;
+      const core::BasicModel<S>& model = m_run.model.model;
+      std::string text;
+      text += "start          " + m_run.initialDescription.toStdString() + "\n";
+      text += "chain          m1=" + number(model.m1) + " m2=" + number(model.m2) + " k1=" +
+              number(model.k1) + " k2=" + number(model.k2) + " gap=" + number(model.gap) + " (" +
+              (chain.resonant ? "1:2 resonant" : "detuned by w1/w2 - 2 = " + number(chain.detuning)) +
+              "; T2=" + number(S(core::twoPi<S>() / chain.omegaSlow)) + ")\n";
+      text += "contacts       " + std::to_string(cost.contacts) + " (impacts " +
+              std::to_string(cost.impacts) + ", grazings " + std::to_string(cost.grazings) +
+              ", sticks " + std::to_string(cost.sticks) + ")\n";
+      text += "stopped        " +
+              (interrupted ? std::string("interrupted") : std::string(core::toString(result.stop))) +
+              " at t = " + number(result.tFinal) +
+              (result.message.empty() ? std::string() : " (" + result.message + ")") + "\n";
+      char line[160];
+      std::snprintf(line, sizeof line, "wall time      %.4g s (%.4g contacts/s)\n",
+                    cost.wallSeconds, contactsPerSecond(cost));
+      text += line;
+      std::snprintf(line, sizeof line,
+                    "energy drift   %.3g (max relative, at contacts; one flight: %.3g)\n",
+                    cost.maxRelEnergyDrift, cost.maxFlightEnergyError);
+      text += line;
+      std::snprintf(line, sizeof line, "|u2 - gap|     %.3g (max at contacts)\n",
+                    cost.maxContactResidual);
+      text += line;
+      text += "final          t=" + number(result.tFinal) + " u1=" + number(result.final.u1) +
+              " u2=" + number(result.final.u2) + " v1=" + number(result.final.v1) +
+              " v2=" + number(result.final.v2) + "\n";
+      write(text);
+      break;
+    }
+  }
+  std::fflush(m_out);
+}
+
+template std::string infoJson<double>(const ModelInput<double>&);
+template std::string infoJson<long double>(const ModelInput<long double>&);
+template std::string infoJson<core::Quad>(const ModelInput<core::Quad>&);
+template class RunWriter<double>;
+template class RunWriter<long double>;
+template class RunWriter<core::Quad>;
 
 }  // namespace grazelab::cli

@@ -1,22 +1,27 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // grazelab-cli: `info` and `simulate` (DESIGN.md "Command line"). Exit 0 on success, 2 on
-// invalid input with one line on stderr and nothing on stdout.
+// invalid input with one line on stderr and nothing on stdout; an interrupted run (SIGINT,
+// SIGTERM) ends its output cleanly and exits 130.
 #include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QJsonDocument>
-#include <QJsonObject>
 
+#include <atomic>
+#include <csignal>
 #include <cstdio>
+#include <ctime>
+#include <thread>
+
+#include <signal.h>
 
 #include "cli_input.h"
 #include "cli_output.h"
-#include "core/modes.h"
 #include "core/simulate.h"
 
 namespace {
 
 constexpr int kInvalidInput = 2;
+constexpr int kInterrupted = 130;
 
 int fail(const QString& message) {
   std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(message.simplified()));
@@ -25,12 +30,78 @@ int fail(const QString& message) {
 
 void write(const QByteArray& bytes) { std::fwrite(bytes.constData(), 1, bytes.size(), stdout); }
 
+// SIGINT and SIGTERM are blocked in every thread and taken by this watcher with sigtimedwait:
+// no code runs in a signal handler, and the run is stopped through its stop token between
+// contacts, so the output ends with complete records.
+class InterruptWatcher {
+ public:
+  InterruptWatcher() {
+    sigemptyset(&m_signals);
+    sigaddset(&m_signals, SIGINT);
+    sigaddset(&m_signals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &m_signals, nullptr);
+    m_thread = std::jthread([this](std::stop_token done) {
+      const timespec poll{0, 50'000'000};
+      while (!done.stop_requested()) {
+        if (sigtimedwait(&m_signals, nullptr, &poll) > 0) {
+          m_interrupted = true;
+          m_source.request_stop();
+          return;
+        }
+      }
+    });
+  }
+  std::stop_token token() const { return m_source.get_token(); }
+  bool interrupted() const { return m_interrupted; }
+
+ private:
+  sigset_t m_signals;
+  std::stop_source m_source;
+  std::atomic<bool> m_interrupted = false;
+  std::jthread m_thread;
+};
+
+template <typename S>
+int info(const QCommandLineParser& parser) {
+  const auto model = grazelab::cli::parseModel<S>(parser);
+  if (!model.value) return fail(model.error);
+  write(QByteArray::fromStdString(grazelab::cli::infoJson(*model.value)));
+  return 0;
+}
+
+template <typename S>
+int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher) {
+  using namespace grazelab;
+  auto parsed = cli::parseRun<S>(parser);
+  if (!parsed.value) return fail(parsed.error);
+  cli::RunInput<S>& run = *parsed.value;
+  cli::RunWriter<S> writer(run, stdout);
+  run.request.onEvent = [&writer](const core::BasicEvent<S>& event) { writer.event(event); };
+  core::BasicSimulator<S> simulator(run.model.model, run.request);
+  if (simulator.result().stop == core::StopReason::InvalidInput) {
+    return fail(QString::fromStdString(simulator.result().message));
+  }
+  if (!core::isFinite(simulator.result().initialEnergy)) {
+    return fail("the energy of this start is beyond the range of this precision (try "
+                "--precision long or quad, whose range is wider)");
+  }
+  for (const std::string& note : run.notes) {
+    std::fprintf(stderr, "grazelab-cli: note: %s\n", note.c_str());
+  }
+  writer.begin(simulator.result());
+  while (!simulator.advance(std::numeric_limits<std::int64_t>::max(), watcher.token())) {
+  }
+  writer.end(simulator.result(), watcher.interrupted());
+  return watcher.interrupted() ? kInterrupted : 0;
+}
+
 }  // namespace
 
 int main(int argc, char* argv[]) {
+  InterruptWatcher watcher;  // first: its signal mask is inherited by every later thread
   QCoreApplication app(argc, argv);
   QCoreApplication::setApplicationName("grazelab-cli");
-  QCoreApplication::setApplicationVersion("0.1.0");
+  QCoreApplication::setApplicationVersion("0.2.0");
 
   QCommandLineParser parser;
   parser.setApplicationDescription(
@@ -47,39 +118,42 @@ int main(int argc, char* argv[]) {
     return 0;
   }
   if (parser.isSet(version)) {
-    write("grazelab-cli 0.1.0\n");
+    write("grazelab-cli 0.2.0\n");
     return 0;
+  }
+  const QStringList repeated = grazelab::cli::repeatedOptions(parser);
+  if (!repeated.isEmpty()) {
+    return fail(repeated.join(", ") + " given more than once: give each option once");
   }
   const QStringList positional = parser.positionalArguments();
   if (positional.size() != 1) return fail("expected one command, info or simulate (see --help)");
   const QString command = positional.first();
+  QString error;
+  const auto precision = grazelab::cli::parsePrecisionOption(parser, error);
+  if (!precision) return fail(error);
 
+  using grazelab::core::Precision;
   if (command == "info") {
     const QStringList extra = grazelab::cli::simulateOnlyOptionsSet(parser);
     if (!extra.isEmpty()) return fail(extra.join(", ") + " only apply to 'simulate'");
-    const auto model = grazelab::cli::parseModel(parser);
-    if (!model.value) return fail(model.error);
-    const auto modes = grazelab::core::computeModes(model.value->model);
-    const QJsonObject json{{"model", grazelab::cli::modelJson(*model.value, modes)}};
-    write(QJsonDocument(json).toJson(QJsonDocument::Indented));
-    return 0;
+    switch (*precision) {
+      case Precision::Double:
+        return info<double>(parser);
+      case Precision::Long:
+        return info<long double>(parser);
+      case Precision::Quad:
+        return info<grazelab::core::Quad>(parser);
+    }
   }
   if (command == "simulate") {
-    const auto run = grazelab::cli::parseRun(parser);
-    if (!run.value) return fail(run.error);
-    const grazelab::core::Result result =
-        grazelab::core::simulate(run.value->model.model, run.value->request);
-    if (result.stop == grazelab::core::StopReason::InvalidInput) {
-      return fail(QString::fromStdString(result.message));
+    switch (*precision) {
+      case Precision::Double:
+        return simulate<double>(parser, watcher);
+      case Precision::Long:
+        return simulate<long double>(parser, watcher);
+      case Precision::Quad:
+        return simulate<grazelab::core::Quad>(parser, watcher);
     }
-    if (run.value->format == "csv") {
-      write(grazelab::cli::simulationCsv(result));
-    } else if (run.value->format == "summary") {
-      write(grazelab::cli::simulationSummary(*run.value, result));
-    } else {
-      write(grazelab::cli::simulationJson(*run.value, result));
-    }
-    return 0;
   }
   return fail(QStringLiteral("unknown command '%1': use info or simulate").arg(command));
 }

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <optional>
+#include <stop_token>
+
+#include "core/chain.h"
+#include "core/contact.h"
+#include "core/events.h"
+#include "core/free_flight.h"
+#include "core/sticking.h"
+
+namespace grazelab::core {
+
+/// Where a run stands, in scaled units: a small copyable value, so that a run can restart from
+/// any event or be handed to another method.
+template <typename S>
+struct IntegrationState {
+  S tau = 0;              ///< scaled time since the start of the run (w2 t)
+  BasicState<S> x;        ///< scaled state
+  bool stuck = false;     ///< a Stick event was recorded; the stuck motion runs next
+};
+
+/// What one step of the exact method did.
+template <typename S>
+struct Step {
+  enum class Kind {
+    Event,             ///< an event (contact or release) happened: see the fields below
+    End,               ///< the end time came first; the state is at it
+    NoFurtherContact,  ///< resonant: the free motion never reaches the stop
+    SearchLimit,       ///< detuned: no contact within the search horizon
+    Cancelled,         ///< the stop token ended a long search
+  };
+  Kind kind = Kind::Event;
+  S segmentStart = 0;  ///< tau at which the motion of this step began
+  EventType type = EventType::Impact;
+  S tau = 0;                ///< when the event happened (or where the run ended)
+  BasicState<S> before;     ///< scaled state just before (or at the end)
+  BasicState<S> after;      ///< scaled state just after
+  S residual = 0;           ///< |x2 - delta| at the found contact time (scaled)
+  bool undecided = false;   ///< a touch-or-crossing decision within rounding
+  // for events that end a free flight
+  bool endsFlight = false;
+  bool flightFromStop = false;         ///< the flight started on the stop (its FFT is defined)
+  FlightTime<S> flightDuration;        ///< its duration, anchored near 2 pi when it ends there
+  S flightEnergyError = 0;             ///< relative energy error before restoring (see .cpp)
+};
+
+/// The exact event-driven method (MODEL.md sections 3-4): closed-form free flight, contact times
+/// from polynomial roots, the impact law, stuck phases in closed form. Each advance() moves the
+/// state to the next event; the motion of that step stays available for dense samples.
+template <typename S>
+class ExactStepper {
+ public:
+  /// The chain is held by reference and must outlive the stepper.
+  ExactStepper(const Chain<S>& chain, const S& scaledGap);
+
+  /// Advances `state` to the next event, or to `tauEnd` if it comes first. `searchHorizon`
+  /// bounds a detuned flight's search (scaled time).
+  Step<S> advance(IntegrationState<S>& state, const S& tauEnd, const S& searchHorizon,
+                  std::stop_token stop = {});
+
+  /// The state at absolute scaled time `tau` inside the motion of the last step.
+  BasicState<S> segmentAt(const S& tau) const;
+
+ private:
+  const Chain<S>& m_chain;
+  S m_gap;
+  std::optional<Flight<S>> m_flight;
+  std::optional<StuckMotion<S>> m_stuck;
+  S m_segmentStart = 0;
+};
+
+/// Moves a state on the stop back onto the energy level `target` (scaled), along the energy
+/// gradient with x2 held: a correction of rounding size. Returns the relative energy error it
+/// removed.
+template <typename S>
+S restoreEnergy(const Chain<S>& chain, BasicState<S>& state, const S& target);
+
+}  // namespace grazelab::core

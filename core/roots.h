@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <array>
+
+namespace grazelab::core {
+
+/// Real roots of a polynomial found in an interval, ascending.
+template <typename S>
+struct IntervalRoots {
+  std::array<S, 4> values{};
+  int count = 0;
+
+  const S* begin() const { return values.data(); }
+  const S* end() const { return values.data() + count; }
+};
+
+/// Every root of c[4] x^4 + c[3] x^3 + c[2] x^2 + c[1] x + c[0] in [lo, hi] at which the
+/// polynomial changes sign (or vanishes at an end), ascending.
+///
+/// Root isolation by derivatives: the roots of p' split [lo, hi] into pieces on which p is
+/// monotone, so every sign change of p is bracketed by a piece and none can be missed (unlike a
+/// closed form such as Ferrari's, whose resolvent loses all four roots when it degenerates).
+/// Each bracket is solved by safeguarded Newton. A double root without sign change (an
+/// inflection of the function whose critical points these are) is not reported.
+template <typename S>
+IntervalRoots<S> rootsInInterval(const std::array<S, 5>& c, const S& lo, const S& hi);
+
+/// Safeguarded Newton for a root of g in [a, b], given g(a), g(b) of opposite signs (or zero);
+/// g returns (value, derivative). `guess` inside (a, b) is the first iterate. Returns the root
+/// and |g| at the last iterate.
+template <typename S, typename Function>
+std::pair<S, S> solveBracketed(const Function& g, S a, S b, S ga, S gb, S guess);
+
+}  // namespace grazelab::core
+
+#include "core/roots_impl.h"

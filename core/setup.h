@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/chain.h"
+#include "core/model.h"
+#include "core/orbits.h"
+#include "core/resonance.h"
+
+namespace grazelab::core {
+
+/// The one place that builds chains and starts (1:2 design, GLO/GLOM/1IPP data, perturbation)
+/// for the command line, the explorer, the tests and the benchmarks.
+
+/// The 1:2 resonant chain of a branch: k2 from the design (the model remembers it, so the solver
+/// uses the exact resonance). Nothing when m2/m1 > 9/16 or an input is unusable.
+template <typename S>
+std::optional<BasicModel<S>> designedModel(const S& m1, const S& m2, const S& k1, const S& gap,
+                                           Branch branch);
+
+/// How a run starts.
+template <typename S>
+struct StartSpec {
+  enum class Kind { Glo, Glom, OnePeriodic, Explicit };
+  Kind kind = Kind::Glo;
+  S lambda = 0.5;                 ///< Glo: GLO_lambda
+  Mode mode = Mode::Fast;         ///< Glom
+  S period = 0;                   ///< OnePeriodic: T [time]
+  BasicState<S> state;            ///< Explicit
+  std::optional<BasicState<S>> perturbation;  ///< added afterwards
+};
+
+/// A start state with the words that describe it.
+template <typename S>
+struct Start {
+  BasicState<S> state;
+  std::string description;         ///< e.g. "GLO_lambda data, lambda = 0.5 (as such: ...)"
+  std::vector<std::string> notes;  ///< things the user should know (a perturbation lost in rounding)
+};
+
+/// Either a start, or the one line saying why not.
+template <typename S>
+struct StartOrProblem {
+  std::optional<Start<S>> start;
+  std::string problem;
+};
+
+template <typename S>
+StartOrProblem<S> makeStart(const Chain<S>& chain, const StartSpec<S>& spec);
+
+}  // namespace grazelab::core
