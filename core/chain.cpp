@@ -117,6 +117,12 @@ S physicalEnergy(const Chain<S>& chain, const BasicState<S>& physical) {
   return ldexp(chain.model.k1 * e, 2 * scale.exponent);
 }
 
+double energy(const BasicModel<double>& model, const BasicState<double>& state) {
+  const ChainOrProblem<double> formed = makeChain(model);
+  return formed.chain ? physicalEnergy(*formed.chain, state)
+                      : std::numeric_limits<double>::infinity();
+}
+
 #define GRAZELAB_INSTANTIATE(S)                                                      \
   template ChainOrProblem<S> makeChain<S>(const BasicModel<S>&);                     \
   template struct Scale<S>;                                                          \

@@ -79,4 +79,8 @@ S scaledEnergy(const Chain<S>& chain, const BasicState<S>& x);
 template <typename S>
 S physicalEnergy(const Chain<S>& chain, const BasicState<S>& physical);
 
+/// Physical energy of a physical state of a model (double precision convenience; forms the
+/// chain itself). Infinite when beyond double range or the model is unusable.
+double energy(const BasicModel<double>& model, const BasicState<double>& state);
+
 }  // namespace grazelab::core

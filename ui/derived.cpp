@@ -8,6 +8,7 @@
 
 #include "core/orbits.h"
 #include "core/resonance.h"
+#include "core/setup.h"
 
 namespace grazelab::ui {
 
@@ -35,7 +36,8 @@ DerivedModel deriveModel(const Params& params) {
               .arg(derived.massRatio, 0, 'g', 6);
       return derived;
     }
-    derived.model.k2 = *k2;
+    // the model remembers the design: the solver then uses the exact 1:2 resonance
+    derived.model = *core::designedModel(params.m1, params.m2, params.k1, params.gap, params.branch);
   }
   derived.modes = core::computeModes(derived.model);
   derived.lambdaStar = core::lambdaStar(derived.modes);

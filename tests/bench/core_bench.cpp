@@ -4,6 +4,7 @@
 // Run: ./build/tests/bench/grazelab_core_bench
 #include <benchmark/benchmark.h>
 
+#include "core/chain.h"
 #include "core/contact.h"
 #include "core/free_flight.h"
 #include "core/orbits.h"
@@ -65,10 +66,12 @@ BENCHMARK(Detuned)->Arg(100'000)->Unit(benchmark::kMillisecond);
 // one contact search from a fixed state: the cost of the quartic path alone
 void NextContactResonant(benchmark::State& state) {
   const core::Model model = testing::resonantChain(0.5);
-  const core::Modes modes = core::computeModes(model);
+  const core::Chain<double> chain = *core::makeChain(model).chain;
   const core::State start = testing::nearGrazingStart(model, 0.5, 0.05);
+  const core::Scale<double> scale = core::chooseScale(chain, start);
+  const core::State scaled = scale.toScaled(start);
   for (auto _ : state) {
-    const core::Flight flight(model, modes, start);
+    const core::Flight<double> flight(chain, scale.gap, scaled);
     benchmark::DoNotOptimize(core::nextContact(flight, core::kInfinity));
   }
   state.SetItemsProcessed(state.iterations());

@@ -13,6 +13,7 @@
 #include "core/simulate.h"
 
 #include "support/cases.h"
+#include "support/physical_flight.h"
 
 namespace grazelab::core {
 namespace {
@@ -72,8 +73,8 @@ TEST(Contact, ResonantTimesMatchADenseScan) {
     const Modes modes = computeModes(model);
     int compared = 0;
     for (const State& start : randomStarts(model, 60, 7)) {
-      const Flight flight(model, modes, start);
-      const Contact contact = nextContact(flight, kInfinity);
+      const testing::PhysicalFlight flight(model, start);
+      const auto contact = flight.nextContact(kInfinity);
       const double scanned = scanFirstContact(model, modes, start, modes.T2);
       if (scanned < 0) {
         EXPECT_NE(contact.kind, ContactKind::Crossing) << chain.name;
@@ -82,7 +83,7 @@ TEST(Contact, ResonantTimesMatchADenseScan) {
       // a transversal crossing: the scan is reliable there
       if (std::abs(flight.at(scanned).v2) < 1e-3 * modes.omegaSlow * model.gap) continue;
       ASSERT_EQ(contact.kind, ContactKind::Crossing) << chain.name;
-      EXPECT_NEAR(contact.time.value(modes.T2), scanned, 1e-10 * modes.T2) << chain.name;
+      EXPECT_NEAR(contact.time, scanned, 1e-10 * modes.T2) << chain.name;
       ++compared;
     }
     EXPECT_GT(compared, 10) << chain.name;
@@ -94,13 +95,13 @@ TEST(Contact, DetunedTimesMatchADenseScan) {
   const Modes modes = computeModes(model);
   int compared = 0;
   for (const State& start : randomStarts(model, 60, 11)) {
-    const Flight flight(model, modes, start);
+    const testing::PhysicalFlight flight(model, start);
     const double horizon = 3 * modes.T2;
-    const Contact contact = nextContact(flight, horizon);
+    const auto contact = flight.nextContact(horizon);
     const double scanned = scanFirstContact(model, modes, start, horizon);
     if (scanned < 0 || std::abs(flight.at(scanned).v2) < 1e-3 * modes.omegaSlow) continue;
     ASSERT_EQ(contact.kind, ContactKind::Crossing);
-    EXPECT_NEAR(contact.time.value(modes.T2), scanned, 1e-10 * modes.T2);
+    EXPECT_NEAR(contact.time, scanned, 1e-10 * modes.T2);
     ++compared;
   }
   EXPECT_GT(compared, 10);
@@ -110,15 +111,13 @@ TEST(Contact, QuarticSearchAndSafeMarchAgreeOnResonantFlights) {
   // the march knows nothing of polynomials: run it on the same resonant chain
   const Model model = testing::resonantChain(0.5);
   const Modes modes = computeModes(model);
-  Modes marched = modes;
-  marched.resonant = false;
   int compared = 0;
   for (const State& start : randomStarts(model, 200, 3)) {
-    const Contact quartic = nextContact(Flight(model, modes, start), kInfinity);
-    const Contact march = nextContact(Flight(model, marched, start), 1.01 * modes.T2);
+    const auto quartic = testing::PhysicalFlight(model, start).nextContact(kInfinity);
+    const auto march = testing::PhysicalFlight(model, start, true).nextContact(1.01 * modes.T2);
     ASSERT_EQ(quartic.kind == ContactKind::None, march.kind == ContactKind::None);
     if (quartic.kind != ContactKind::Crossing) continue;
-    EXPECT_NEAR(quartic.time.value(modes.T2), march.time.value(modes.T2), 1e-11 * modes.T2);
+    EXPECT_NEAR(quartic.time, march.time, 1e-11 * modes.T2);
     ++compared;
   }
   EXPECT_GT(compared, 50);
@@ -128,14 +127,15 @@ TEST(Contact, CriticalTimesAreStationaryPointsOfTheGap) {
   const Model model = testing::resonantChain(0.5, 1.0, Branch::Lower);
   const Modes modes = computeModes(model);
   for (const State& start : randomStarts(model, 50, 5)) {
-    const Flight flight(model, modes, start);
-    const CriticalPoints points = criticalPointsResonant(flight);
+    const testing::PhysicalFlight flight(model, start);
+    const auto points = criticalPointsResonant(flight.scaled());
     EXPECT_GE(points.count, 2);  // a periodic motion has a highest and a lowest point
-    for (const CriticalPoint& point : points) {
-      EXPECT_NEAR(flight.gapAndRate(point.time).second, 0.0, 1e-9 * modes.omegaSlow * model.gap);
-      EXPECT_NEAR(point.gap, flight.gap(point.time), 1e-14 * model.gap);
-      EXPECT_NEAR(point.acceleration, flight.acceleration2(point.time),
-                  1e-12 * modes.omegaFast * modes.omegaFast * model.gap);
+    EXPECT_EQ(points.count % 2, 0);  // maxima and minima alternate around the circle
+    for (const auto& point : points) {
+      // scaled units: lengths by L (here the gap's power of two), time by 1/w2
+      const double t = point.time / flight.omega();
+      EXPECT_NEAR(flight.gapAndRate(t).second, 0.0, 1e-9 * modes.omegaSlow * model.gap);
+      EXPECT_NEAR(point.gap * flight.length(), flight.gap(t), 1e-14 * model.gap);
     }
   }
 }
@@ -148,14 +148,14 @@ TEST(Contact, NearGrazingReturnIsResolvedToRelativePrecision) {
   for (double eps : {1e-4, 1e-8, 1e-12, 1e-16, 1e-30, 1e-100, 1e-300}) {
     State start = gloData(model, modes, 0.5);
     start.v2 = -eps;
-    const Flight flight(model, modes, start);
-    const Contact contact = nextContact(flight, kInfinity);
+    const testing::PhysicalFlight flight(model, start);
+    const auto contact = flight.nextContact(kInfinity);
     ASSERT_EQ(contact.kind, ContactKind::Crossing) << eps;
-    ASSERT_TRUE(contact.time.fromReturn) << eps;
+    ASSERT_TRUE(contact.fromReturn) << eps;
     const double acc2 = model.k2 * (start.u1 - model.gap) / model.m2;
     const double predicted = -2 * start.v2 / acc2;
-    EXPECT_NEAR(contact.time.offset / predicted, 1.0, eps < 1e-6 ? 1e-10 : 1e-2) << eps;
-    EXPECT_NEAR(flight.at(contact.time).v2 / eps, 1.0, eps < 1e-6 ? 1e-10 : 1e-6) << eps;
+    EXPECT_NEAR(contact.offsetFromT2 / predicted, 1.0, eps < 1e-6 ? 1e-10 : 1e-2) << eps;
+    EXPECT_NEAR(flight.at(contact).v2 / eps, 1.0, eps < 1e-6 ? 1e-10 : 1e-6) << eps;
   }
 }
 
@@ -163,36 +163,36 @@ TEST(Contact, GrazingOrbitsTouchOnceAtT2) {
   const Model model = testing::resonantChain(0.5);
   const Modes modes = computeModes(model);
   for (double lambda : {0.01, 0.25, 0.5, 1.0, 1.2, 4.0 / 3.0}) {
-    const Flight flight(model, modes, gloData(model, modes, lambda));
-    const Contact contact = nextContact(flight, kInfinity);
+    const testing::PhysicalFlight flight(model, gloData(model, modes, lambda));
+    const auto contact = flight.nextContact(kInfinity);
     EXPECT_EQ(contact.kind, ContactKind::Tangent) << lambda;
-    EXPECT_EQ(contact.time.value(modes.T2), modes.T2) << lambda;
+    EXPECT_EQ(contact.time, modes.T2) << lambda;
   }
   // GLOM1 alone touches twice per slow period: at T1 = T2 / 2
-  const Flight fast(model, modes, gloData(model, modes, 0.0));
-  const Contact contact = nextContact(fast, kInfinity);
+  const testing::PhysicalFlight fast(model, gloData(model, modes, 0.0));
+  const auto contact = fast.nextContact(kInfinity);
   EXPECT_EQ(contact.kind, ContactKind::Tangent);
-  EXPECT_NEAR(contact.time.value(modes.T2), modes.T1, 1e-12 * modes.T2);
+  EXPECT_NEAR(contact.time, modes.T1, 1e-12 * modes.T2);
 }
 
 TEST(Contact, NegativeLambdaCrossesBeforeTheReturn) {
   const Model model = testing::resonantChain(0.5);
   const Modes modes = computeModes(model);
-  const Flight flight(model, modes, gloData(model, modes, -0.3));
-  const Contact contact = nextContact(flight, kInfinity);
+  const testing::PhysicalFlight flight(model, gloData(model, modes, -0.3));
+  const auto contact = flight.nextContact(kInfinity);
   EXPECT_EQ(contact.kind, ContactKind::Crossing);
-  EXPECT_LT(contact.time.value(modes.T2), modes.T2);
-  EXPECT_GT(flight.at(contact.time).v2, 0);
+  EXPECT_LT(contact.time, modes.T2);
+  EXPECT_GT(flight.at(contact).v2, 0);
 }
 
 TEST(Contact, SmallMotionBelowTheStopNeverArrives) {
   const Model model = testing::resonantChain(0.5);
   const Modes modes = computeModes(model);
-  const Flight flight(model, modes, {0.1, 0.2, 0.0, 0.1});
-  EXPECT_EQ(nextContact(flight, kInfinity).kind, ContactKind::None);
+  const testing::PhysicalFlight flight(model, {0.1, 0.2, 0.0, 0.1});
+  EXPECT_EQ(flight.nextContact(kInfinity).kind, ContactKind::None);
   const Model detuned = testing::detunedChain();
-  const Flight detunedFlight(detuned, computeModes(detuned), {0.1, 0.2, 0.0, 0.1});
-  EXPECT_EQ(nextContact(detunedFlight, 50.0).kind, ContactKind::None);
+  const testing::PhysicalFlight detunedFlight(detuned, {0.1, 0.2, 0.0, 0.1});
+  EXPECT_EQ(detunedFlight.nextContact(50.0).kind, ContactKind::None);
 }
 
 }  // namespace

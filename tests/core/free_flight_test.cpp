@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "support/cases.h"
+#include "support/physical_flight.h"
 
 namespace grazelab::core {
 namespace {
@@ -45,7 +46,7 @@ TEST(FreeFlight, MatchesAnOdeIntegration) {
   for (const Model& model : {testing::resonantChain(0.5), testing::detunedChain()}) {
     const Modes modes = computeModes(model);
     const State start{0.3, -0.7, 0.4, 0.9};
-    const Flight flight(model, modes, start);
+    const testing::PhysicalFlight flight(model, start);
     for (double fraction : {0.01, 0.3, 0.77, 1.0, 2.6}) {
       const double t = fraction * modes.T2;
       const State exact = flight.at(t);
@@ -58,7 +59,7 @@ TEST(FreeFlight, MatchesAnOdeIntegration) {
 TEST(FreeFlight, TaylorAndModalFormsAgreeAtTheSwitch) {
   const Model model = testing::resonantChain(0.5);
   const Modes modes = computeModes(model);
-  const Flight flight(model, modes, {0.3, -0.7, 0.4, 0.9});
+  const testing::PhysicalFlight flight(model, {0.3, -0.7, 0.4, 0.9});
   const double edge = flight.taylorRadius();
   const State inside = flight.at(std::nextafter(edge, 0.0));
   const State outside = flight.at(std::nextafter(edge, 1.0));
@@ -70,9 +71,10 @@ TEST(FreeFlight, ResonantFlightRepeatsExactlyAfterT2) {
     const Model& model = chain.model;
     const Modes modes = computeModes(model);
     const State start = model.gap * State{0.3, -0.7, 0.4, -0.2};
-    const Flight flight(model, modes, start);
-    EXPECT_LT(distance(flight.at(modes.T2), start, modes.omegaSlow, model.gap), 1e-15)
-        << chain.name;
+    const testing::PhysicalFlight flight(model, start);
+    // one slow period on, in scaled time (2 pi exactly): the same state
+    const State back = flight.scaled().at(FlightTime<double>{1, 0.0});
+    EXPECT_LT(distance(back, flight.scaled().start(), 1.0), 1e-15);
     EXPECT_LT(distance(flight.at(0.3 * modes.T2), flight.at(7.3 * modes.T2), modes.omegaSlow,
                        model.gap),
               1e-13)
@@ -83,7 +85,7 @@ TEST(FreeFlight, ResonantFlightRepeatsExactlyAfterT2) {
 TEST(FreeFlight, GapFunctionIsTheStatesU2MinusTheGap) {
   const Model model = testing::resonantChain(0.5);
   const Modes modes = computeModes(model);
-  const Flight flight(model, modes, {-0.25, 1.0, 0.1, -0.3});
+  const testing::PhysicalFlight flight(model, {-0.25, 1.0, 0.1, -0.3});
   for (double t : {1e-9, 0.1, 1.0, 4.0, 8.0}) {
     const auto [gap, rate] = flight.gapAndRate(t);
     const State state = flight.at(t);
@@ -96,8 +98,8 @@ TEST(FreeFlight, ReducedGapRemovesTheZeroAtTheStart) {
   const Model model = testing::resonantChain(0.5);
   const Modes modes = computeModes(model);
   // leaving the stop with v2 < 0: simple zero; at rest with u1 < gap: double zero
-  const Flight leaving(model, modes, {-0.25, 1.0, 0.0, -0.3});
-  const Flight resting(model, modes, {-0.25, 1.0, 0.0, 0.0});
+  const testing::PhysicalFlight leaving(model, {-0.25, 1.0, 0.0, -0.3});
+  const testing::PhysicalFlight resting(model, {-0.25, 1.0, 0.0, 0.0});
   EXPECT_EQ(leaving.contactOrder(), 1);
   EXPECT_EQ(resting.contactOrder(), 2);
   for (double x : {1e-12, 1e-3, 0.2, 0.9, 3.0, -2.0}) {
@@ -106,16 +108,17 @@ TEST(FreeFlight, ReducedGapRemovesTheZeroAtTheStart) {
                 1e-15 + 1e-14 * x * x);
   }
   // g(0) is the first nonzero derivative over its factorial: v2, then acc2 / 2
-  EXPECT_DOUBLE_EQ(leaving.reducedGapAndRate(0.0, 1).first, -0.3);
-  EXPECT_DOUBLE_EQ(resting.reducedGapAndRate(0.0, 2).first,
-                   0.5 * model.k2 * (-0.25 - 1.0) / model.m2);
+  EXPECT_NEAR(leaving.reducedGapAndRate(0.0, 1).first, -0.3, 1e-15);
+  const double halfAcceleration = 0.5 * model.k2 * (-0.25 - 1.0) / model.m2;
+  EXPECT_NEAR(resting.reducedGapAndRate(0.0, 2).first, halfAcceleration,
+              1e-15 * std::abs(halfAcceleration));
 }
 
 TEST(FreeFlight, TinyDepartureSpeedKeepsFullRelativePrecision) {
   // the leading Taylor coefficient is v2 itself: a speed 1e-200 is not lost in the modal sum
   const Model model = testing::resonantChain(0.5);
   const Modes modes = computeModes(model);
-  const Flight flight(model, modes, {-0.25, 1.0, 0.0, -1e-200});
+  const testing::PhysicalFlight flight(model, {-0.25, 1.0, 0.0, -1e-200});
   const double s = 1e-201;
   const double expected = -1e-200 * s + 0.5 * model.k2 * (-1.25) / model.m2 * s * s;
   EXPECT_NEAR(flight.gap(s), expected, 1e-15 * std::abs(expected));

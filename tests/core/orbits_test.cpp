@@ -9,6 +9,7 @@
 
 #include "core/free_flight.h"
 #include "support/cases.h"
+#include "support/physical_flight.h"
 
 namespace grazelab::core {
 namespace {
@@ -33,7 +34,7 @@ TEST(Orbits, GloLambdaFlightIsTheConvexCombinationOfCosines) {
     const Model& model = chain.model;
     const Modes modes = computeModes(model);
     for (double lambda : {-0.5, 0.0, 0.3, 8.0 / 9.0, 4.0 / 3.0, 2.0}) {
-      const Flight flight(model, modes, gloData(model, modes, lambda));
+      const testing::PhysicalFlight flight(model, gloData(model, modes, lambda));
       for (double fraction : {0.1, 0.37, 0.5, 0.81}) {
         const double t = fraction * modes.T2;
         const double expected = model.gap * ((1 - lambda) * std::cos(modes.omegaFast * t) +
@@ -46,8 +47,8 @@ TEST(Orbits, GloLambdaFlightIsTheConvexCombinationOfCosines) {
 
 TEST(Orbits, LemmaTwoPointOneClassification) {
   EXPECT_EQ(classifyGlo(-1e-9), GloKind::ImpactsFollow);
-  EXPECT_EQ(classifyGlo(0), GloKind::Grazing);
-  EXPECT_EQ(classifyGlo(1), GloKind::Grazing);
+  EXPECT_EQ(classifyGlo(0.0), GloKind::Grazing);
+  EXPECT_EQ(classifyGlo(1.0), GloKind::Grazing);
   EXPECT_EQ(classifyGlo(4.0 / 3.0), GloKind::Grazing);
   EXPECT_EQ(classifyGlo(1.34), GloKind::StickingStart);
   // lambda > 4/3 means u1 > gap (pressed on the stop), lambda < 4/3 u1 < gap

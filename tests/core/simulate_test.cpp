@@ -12,6 +12,7 @@
 #include "core/free_flight.h"
 #include "core/sticking.h"
 #include "support/cases.h"
+#include "support/physical_flight.h"
 
 namespace grazelab::core {
 namespace {
@@ -69,7 +70,7 @@ TEST(Simulate, StopsAtTheTimeLimitOnTheFlight) {
   EXPECT_EQ(result.stop, StopReason::TimeLimit);
   EXPECT_EQ(result.tFinal, 100.0);
   EXPECT_LE(result.events.back().t, 100.0);
-  const Flight flight(model, result.modes, result.events.back().after);
+  const testing::PhysicalFlight flight(model, result.events.back().after);
   const State expected = flight.at(100.0 - result.events.back().t);
   EXPECT_NEAR(result.final.u1, expected.u1, 1e-12);
   EXPECT_NEAR(result.final.v2, expected.v2, 1e-12);

@@ -3,6 +3,8 @@
 // Tests for core/sticking.cpp.
 #include "core/sticking.h"
 
+#include "core/impact_law.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,21 +17,24 @@ namespace {
 
 TEST(Sticking, PressedOnlyWhenTheSpringPushesIntoTheStop) {
   const Model model = testing::resonantChain(0.5);
-  EXPECT_TRUE(pressedOnStop(model, {1.2, 1.0, 0.0, 0.0}));
-  EXPECT_TRUE(pressedOnStop(model, {1.0, 1.0, 0.3, 0.0}));
-  EXPECT_FALSE(pressedOnStop(model, {1.0, 1.0, -0.3, 0.0}));
-  EXPECT_FALSE(pressedOnStop(model, {1.0, 1.0, 0.0, 0.0}));  // no force, no push: grazing
-  EXPECT_FALSE(pressedOnStop(model, {0.8, 1.0, 0.0, 0.0}));
-  EXPECT_FALSE(pressedOnStop(model, {1.2, 1.0, 0.0, -0.1}));
-  EXPECT_FALSE(pressedOnStop(model, {1.2, 0.9, 0.0, 0.0}));
+  EXPECT_TRUE(pressedOnStop<double>({1.2, 1.0, 0.0, 0.0}, model.gap));
+  EXPECT_TRUE(pressedOnStop<double>({1.0, 1.0, 0.3, 0.0}, model.gap));
+  EXPECT_FALSE(pressedOnStop<double>({1.0, 1.0, -0.3, 0.0}, model.gap));
+  EXPECT_FALSE(pressedOnStop<double>({1.0, 1.0, 0.0, 0.0}, model.gap));  // no force, no push: grazing
+  EXPECT_FALSE(pressedOnStop<double>({0.8, 1.0, 0.0, 0.0}, model.gap));
+  EXPECT_FALSE(pressedOnStop<double>({1.2, 1.0, 0.0, -0.1}, model.gap));
+  EXPECT_FALSE(pressedOnStop<double>({1.2, 0.9, 0.0, 0.0}, model.gap));
 }
 
 TEST(Sticking, ReleaseWhenTheReactionVanishes) {
   const Model model = testing::resonantChain(0.5);
   for (const State start : {State{1.25, 1.0, 0.0, 0.0}, State{1.0, 1.0, 0.4, 0.0},
                             State{1.0000001, 1.0, -0.2, 0.0}, State{3.0, 1.0, 2.0, 0.0}}) {
-    const StuckMotion motion(model, start);
-    const double release = motion.releaseTime();
+    // the stuck motion runs in scaled units (lengths by the gap, time by 1/w2)
+    const Chain<double> chain = *makeChain(model).chain;
+    const Scale<double> scale = chooseScale(chain, start);
+    const StuckMotion<double> motion(chain, scale.gap, scale.toScaled(start));
+    const double release = motion.releaseTime() / chain.omegaSlow;
     ASSERT_GT(release, 0);
     // independent check: bisection on the closed-form u1(t) - gap over a fine scan
     const double omega = std::sqrt((model.k1 + model.k2) / model.m1);
@@ -51,12 +56,12 @@ TEST(Sticking, ReleaseWhenTheReactionVanishes) {
     EXPECT_NEAR(release, 0.5 * (a + b), 1e-12 * (2 * M_PI / omega));
     // reaction -k2 (u1 - gap) <= 0 all along the stuck phase
     for (int i = 0; i <= 100; ++i) {
-      const State state = motion.at(release * i / 100);
+      const State state = scale.toPhysical(motion.at(chain.omegaSlow * release * i / 100));
       EXPECT_GE(state.u1 - model.gap, -1e-14);
       EXPECT_EQ(state.u2, model.gap);
       EXPECT_EQ(state.v2, 0);
     }
-    const State released = motion.releaseState();
+    const State released = scale.toPhysical(motion.releaseState());
     EXPECT_EQ(released.u1, model.gap);
     EXPECT_LE(released.v1, 0);
   }

@@ -13,6 +13,7 @@
 #include "core/modes.h"
 #include "core/orbits.h"
 #include "core/resonance.h"
+#include "core/setup.h"
 
 namespace grazelab::testing {
 
@@ -30,9 +31,7 @@ inline double tolerance(double relative, double scale) {
 /// The 1:2 resonant chain with m1 = k1 = 1 and the given m2, gap, branch.
 inline core::Model resonantChain(double m2 = 0.5, double gap = 1.0,
                                  core::Branch branch = core::Branch::Upper) {
-  core::Model model{1.0, m2, 1.0, 0.0, gap};
-  model.k2 = *core::resonantK2(model.m1, model.m2, model.k1, branch);
-  return model;
+  return *core::designedModel(1.0, m2, 1.0, gap, branch);
 }
 
 /// A named chain for parameterized suites.

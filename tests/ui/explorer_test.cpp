@@ -13,6 +13,7 @@
 
 #include "core/orbits.h"
 #include "tests/ui/explorer_test_support.h"
+#include "core/modes.h"
 #include "ui/derived.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
@@ -175,7 +176,7 @@ class ExplorerTest : public QObject {
     QVERIFY(m_window->parameterPanel()->control(ParamKey::Period)->isVisibleTo(m_window.get()));
     // one impact per period: every free flight lasts T
     const SimUpdate* shown = m_window->displayed();
-    const double period = m_window->params().periodFraction * shown->result->modes.T2;
+    const double period = m_window->params().periodFraction * grazelab::core::computeModes(shown->request->model).T2;
     QVERIFY(!shown->result->freeFlights.empty());
     for (const auto& flight : shown->result->freeFlights) QVERIFY(std::abs(flight.duration - period) < 1e-6);
     m_window->selectScene(1);

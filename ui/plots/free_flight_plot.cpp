@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/free_flight_plot.h"
 
+#include "core/modes.h"
+
 #include <QLineSeries>
 #include <QScatterSeries>
 
@@ -28,7 +30,8 @@ void FreeFlightPlot::show(const SimUpdate& update) {
   for (const core::FreeFlight& flight : result.freeFlights) {
     flights.emplace_back(double(flight.contactIndex), flight.duration);
   }
-  const double T2 = result.modes.T2;
+  // T2 of the run's own chain (the model travels with the request, not in the result)
+  const double T2 = core::computeModes(update.request->model).T2;
   const double last = flights.empty() ? 1.0 : std::max(1.0, flights.back().x());
   setData(m_flights, std::move(flights));
   setData(m_period, {QPointF(0, T2), QPointF(last, T2)});

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for core/roots.h: root isolation in an interval, in every precision.
+#include "core/roots.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "core/scalar.h"
+
+namespace grazelab::core {
+namespace {
+
+// coefficients of prod (x - r_i), times a leading factor
+std::array<double, 5> fromRoots(const std::array<double, 4>& r, double leading) {
+  std::array<double, 5> c = {leading, 0, 0, 0, 0};  // highest first while building
+  int degree = 0;
+  for (double root : r) {
+    for (int i = degree + 1; i > 0; --i) c[i] = c[i] - root * c[i - 1];
+    ++degree;
+  }
+  return {c[4], c[3], c[2], c[1], c[0]};
+}
+
+TEST(Roots, FourSeparatedRootsInTheInterval) {
+  const auto c = fromRoots({-0.9, -0.2, 0.3, 0.95}, 2.5);
+  const auto roots = rootsInInterval(c, -1.0, 1.0);
+  ASSERT_EQ(roots.count, 4);
+  const double expected[] = {-0.9, -0.2, 0.3, 0.95};
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(roots.values[i], expected[i], 1e-15);
+}
+
+TEST(Roots, OnlyRootsInsideTheIntervalAreReported) {
+  const auto c = fromRoots({-3.0, -0.5, 0.25, 7.0}, 1.0);
+  const auto roots = rootsInInterval(c, -1.0, 1.0);
+  ASSERT_EQ(roots.count, 2);
+  EXPECT_NEAR(roots.values[0], -0.5, 1e-15);
+  EXPECT_NEAR(roots.values[1], 0.25, 1e-15);
+}
+
+TEST(Roots, FerrarisDegenerateResolventLosesNothing) {
+  // the critical-point quartic of a flight with a tiny gap next to the motion: odd coefficients
+  // ~1e-9 of the even ones. Ferrari's resolvent root is then ~1e-19 and rounds to <= 0, which lost
+  // all four roots (issue 7, class 1); isolation finds the two real ones
+  const std::array<double, 5> c = {-1.4142135623730951, -2e-9, 2.8284271247461903, 1e-9,
+                                   0.47140452079103173};
+  const auto reversed = std::array<double, 5>{c[4], c[3], c[2], c[1], c[0]};
+  const auto near = rootsInInterval(c, -1.0, 1.0);
+  const auto far = rootsInInterval(reversed, -1.0, 1.0);
+  EXPECT_EQ(near.count + far.count, 2);
+  for (const double* x : {near.begin(), far.begin()}) (void)x;
+  for (double x : near) EXPECT_NEAR(c[0] + x * (c[1] + x * (c[2] + x * (c[3] + x * c[4]))), 0, 1e-14);
+}
+
+TEST(Roots, RandomQuarticsInEveryPrecision) {
+  std::mt19937 random(4);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  for (int trial = 0; trial < 500; ++trial) {
+    std::array<double, 4> r;
+    for (double& x : r) x = uniform(random);
+    std::sort(r.begin(), r.end());
+    if (r[1] - r[0] < 1e-3 || r[2] - r[1] < 1e-3 || r[3] - r[2] < 1e-3) continue;
+    const auto c = fromRoots(r, 1.0 + uniform(random) * 0.5);
+    const auto roots = rootsInInterval(c, -1.0, 1.0);
+    ASSERT_EQ(roots.count, 4);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(roots.values[i], r[i], 1e-11);
+    std::array<Quad, 5> wide;
+    for (int i = 0; i < 5; ++i) wide[i] = c[i];
+    const auto quadRoots = rootsInInterval(wide, Quad(-1), Quad(1));
+    ASSERT_EQ(quadRoots.count, 4);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(toDouble(quadRoots.values[i]), r[i], 1e-11);
+  }
+}
+
+}  // namespace
+}  // namespace grazelab::core
