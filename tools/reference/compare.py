@@ -229,6 +229,12 @@ def main():
     parser.add_argument("--ref-only", action="store_true",
                         help="only run the reference (no CLI): timing and event counts")
     parser.add_argument("--case", default=None, help="run only cases whose name contains this")
+    parser.add_argument("--cli-precision", default=None, choices=["double", "long", "quad"],
+                        help="pass --precision to the CLI (quad: use with --exact-inputs, "
+                             "--tol 1e-28 and --skip-chaotic)")
+    parser.add_argument("--skip-chaotic", action="store_true",
+                        help="leave out the cases whose 1e-16 nudge grows beyond 1e6 (the "
+                             "sticking start): no fixed tolerance applies to them")
     parser.add_argument("--jobs", type=int, default=1, help="cases run in parallel")
     parser.add_argument("--timeout", type=float, default=60.0, help="per program run, s")
     args = parser.parse_args()
@@ -239,12 +245,15 @@ def main():
         print("compare.py: CLI not found or not executable: %s" % args.cli)
         return 1
 
-    ref_flags = ["--dps", str(args.dps), "--samples", str(args.samples), "--digits", "25"]
+    ref_flags = ["--dps", str(args.dps), "--samples", str(args.samples), "--digits",
+                 str(min(args.dps, 40))]
     if not args.exact_inputs:
         ref_flags.append("--double-inputs")
     if args.k2_from_double:
         ref_flags.append("--k2-from-double")
     selected = [c for c in cases() if args.case is None or args.case in c[0]]
+    if args.skip_chaotic:
+        selected = [c for c in selected if "sticking start" not in c[0]]
 
     def one(case):
         name, case_args = case
@@ -257,7 +266,8 @@ def main():
                                            args.timeout)
         if ref_err is None and probe_err is not None:
             ref_err = "sensitivity probe: " + probe_err
-        cli_out, cli_err, cli_s = run_json([args.cli] + common, args.timeout)
+        cli_extra = ["--precision", args.cli_precision] if args.cli_precision else []
+        cli_out, cli_err, cli_s = run_json([args.cli] + common + cli_extra, args.timeout)
         return name, ref_out, ref_err, ref_s, probe_out, cli_out, cli_err, cli_s
 
     started = time.perf_counter()
