@@ -71,6 +71,7 @@ std::pair<S, S> solveBracketed(const Function& g, S a, S b, S ga, S gb, S guess)
   using roots_detail::signOf;
   using std::abs;
   using std::max;
+  using std::min;
   if (ga == 0) return {a, S(0)};
   if (gb == 0) return {b, S(0)};
   const S eps = epsilon<S>();
@@ -79,7 +80,11 @@ std::pair<S, S> solveBracketed(const Function& g, S a, S b, S ga, S gb, S guess)
   if (!(x > a && x < b)) x = a - ga * (b - a) / (gb - ga);
   if (!(x > a && x < b)) x = (a + b) / S(2);
   S lastValue = abs(ga);
-  for (int iteration = 0; iteration < 300; ++iteration) {
+  // Newton is kept only while it shrinks the bracket fast: near a root of high multiplicity
+  // (a high-order touch with a tiny push) it creeps, by 2/3 per step; then bisect
+  S widthBefore = b - a;
+  int slowSteps = 0;
+  for (int iteration = 0; iteration < 400; ++iteration) {
     const auto [gx, slope] = g(x);
     lastValue = abs(gx);
     if (gx == 0) return {x, S(0)};
@@ -89,13 +94,26 @@ std::pair<S, S> solveBracketed(const Function& g, S a, S b, S ga, S gb, S guess)
     } else {
       b = x;
     }
+    const S width = b - a;
+    if (width > widthBefore / S(2)) {
+      ++slowSteps;
+    } else {
+      slowSteps = 0;
+      widthBefore = width;
+    }
     S next = slope != 0 ? S(x - gx / slope) : S(a - S(1));
-    if (!(next > a && next < b)) {
+    if (!(next > a && next < b) || slowSteps >= 3) {
+      slowSteps = 0;
+      widthBefore = width;
       // bisect; toward an end at exactly zero, bisect the exponent instead, since a root there
       // may be many orders of magnitude smaller than the bracket (a near-grazing impact)
       if (a == 0 || b == 0) {
         using std::ldexp;
         next = ldexp(a == 0 ? b : a, -20);
+      } else if ((a < 0) == (b < 0) && max(abs(a), abs(b)) > S(1024) * min(abs(a), abs(b))) {
+        // a bracket spanning many binades: bisect the exponent (geometric mean)
+        using std::sqrt;
+        next = (a < 0 ? S(-1) : S(1)) * sqrt(abs(a)) * sqrt(abs(b));
       } else {
         next = (a + b) / S(2);
       }
