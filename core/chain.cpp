@@ -55,14 +55,16 @@ ChainOrProblem<S> makeChain(const BasicModel<S>& model) {
       chain.ratio = S(2) + chain.detuning;
     }
   }
-  const S checks[] = {chain.lambdaFast, chain.lambdaSlow, chain.rhoFast, chain.rhoSlow,
-                      chain.omegaSlow, chain.p, chain.q, chain.w, chain.ratio, chain.detuning};
-  for (const S& value : checks) {
-    if (!isFinite(value) || (value == 0 && &value != &checks[9])) {
-      return {std::nullopt,
-              "the ratios m2/m1 = " + formatScalar(beta) + " and k2/k1 = " + formatScalar(kappa) +
-                  " are beyond the range of this precision (try --precision long or quad)"};
-    }
+  // every derived number must be finite, and all but the detuning nonzero
+  const S nonzero[] = {chain.lambdaFast, chain.lambdaSlow, chain.rhoFast, chain.rhoSlow,
+                       chain.omegaSlow,  chain.p,          chain.q,       chain.w,
+                       chain.ratio};
+  bool representable = isFinite(chain.detuning);
+  for (const S& value : nonzero) representable = representable && isFinite(value) && value != 0;
+  if (!representable) {
+    return {std::nullopt,
+            "the ratios m2/m1 = " + formatScalar(beta) + " and k2/k1 = " + formatScalar(kappa) +
+                " are beyond the range of this precision (try --precision long or quad)"};
   }
   return {chain, {}};
 }

@@ -67,11 +67,8 @@ ParsedScalar<S> parseScalar(std::string_view text) {
   const bool spelledNonFinite = lower.find("inf") != std::string::npos ||
                                 lower.find("nan") != std::string::npos;
   if (!spelledNonFinite && !isFinite(value)) {
-    return {std::nullopt, "is out of range (too large for " + std::string(toString(
-                              std::is_same_v<S, double> ? Precision::Double
-                              : std::is_same_v<S, long double> ? Precision::Long
-                                                                : Precision::Quad)) +
-                              " precision)"};
+    return {std::nullopt, "is out of range (too large for " +
+                              std::string(toString(precisionOf<S>())) + " precision)"};
   }
   if (value == 0 && mentionsNonzeroDigit(lower)) {
     return {std::nullopt, "is out of range (too small: it would be read as 0)"};

@@ -29,6 +29,14 @@ template <Precision P>
 using ScalarOf = std::conditional_t<P == Precision::Double, double,
                                     std::conditional_t<P == Precision::Long, long double, Quad>>;
 
+/// The precision whose scalar is S.
+template <typename S>
+constexpr Precision precisionOf() {
+  if constexpr (std::is_same_v<S, double>) return Precision::Double;
+  if constexpr (std::is_same_v<S, long double>) return Precision::Long;
+  return Precision::Quad;
+}
+
 /// Unit roundoff of S (2^-52, 2^-63, 2^-112).
 template <typename S>
 S epsilon() {

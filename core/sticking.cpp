@@ -4,7 +4,6 @@
 
 #include <cmath>
 
-#include "core/impact_law.h"
 
 namespace grazelab::core {
 

@@ -82,10 +82,7 @@ std::string modelJson(const ModelInput<S>& input) {
   field("mode_labelling", quoted("mode 1 is the fast mode, mode 2 the slow one (omega1 = 2 omega2)"));
   field("P", "[[" + number(p[0][0]) + ", " + number(p[0][1]) + "], [" + number(p[1][0]) + ", " +
                  number(p[1][1]) + "]]");
-  field("precision", quoted(std::string(core::toString(
-                         std::is_same_v<S, double> ? core::Precision::Double
-                         : std::is_same_v<S, long double> ? core::Precision::Long
-                                                          : core::Precision::Quad))));
+  field("precision", quoted(std::string(core::toString(core::precisionOf<S>()))));
   field("lambda_star", chain.resonant ? number(core::lambdaStar(chain)) : std::string("null"), true);
   return out + "  }";
 }

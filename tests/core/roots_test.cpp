@@ -50,7 +50,6 @@ TEST(Roots, FerrarisDegenerateResolventLosesNothing) {
   const auto near = rootsInInterval(c, -1.0, 1.0);
   const auto far = rootsInInterval(reversed, -1.0, 1.0);
   EXPECT_EQ(near.count + far.count, 2);
-  for (const double* x : {near.begin(), far.begin()}) (void)x;
   for (double x : near) EXPECT_NEAR(c[0] + x * (c[1] + x * (c[2] + x * (c[3] + x * c[4]))), 0, 1e-14);
 }
 
