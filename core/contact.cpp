@@ -271,17 +271,28 @@ CriticalPoints<S> criticalPointsResonant(const Flight<S>& flight) {
     const auto [gap, acceleration] = flight.gapAndAccelerationAtPhase(sine, cosineMinusOne);
     points.values[points.count++] = {theta, gap, acceleration};
   };
-  // two charts, each on [-1, 1]: x = tan(theta/2) for |theta| <= pi/2, y = cot(theta/2) for the
-  // far half, so that no root runs off to infinity. A critical time only splits the period into
-  // monotone pieces; the gap is then evaluated exactly wherever the split falls.
-  for (const S& x : rootsInInterval(c, S(-1), S(1))) {
+  // x = tan(theta/2). A critical time only splits the period into monotone pieces; the gap is
+  // then evaluated exactly wherever the split falls.
+  auto addFromTangent = [&](const S& x) {
     const S denominator = S(1) + x * x;
     add(S(2) * atan(x), S(2) * x / denominator, S(-2) * x * x / denominator);
-  }
-  for (const S& y : rootsInInterval(reversed, S(-1), S(1))) {
-    if (abs(y) >= 1) continue;  // theta = +-pi/2 belongs to the first chart
-    const S denominator = S(1) + y * y;
-    add(S(2) * atan2(S(1), y), S(2) * y / denominator, S(-2) / denominator);
+  };
+  using std::max;
+  const S largest = max(max(abs(c[0]), abs(c[1])), max(abs(c[2]), abs(c[3])));
+  if (S(15) * abs(c[4]) >= largest) {
+    // theta = pi is far from critical: every root lies within Cauchy's bound
+    // 1 + max |c_i / c_4| <= 16, and one chart isolates them all
+    const S bound = S(1) + largest / abs(c[4]);
+    for (const S& x : rootsInInterval(c, -bound, bound)) addFromTangent(x);
+  } else {
+    // a critical point near theta = pi runs off to infinity in x: two charts on [-1, 1], x for
+    // |theta| <= pi/2 and y = cot(theta/2) for the far half
+    for (const S& x : rootsInInterval(c, S(-1), S(1))) addFromTangent(x);
+    for (const S& y : rootsInInterval(reversed, S(-1), S(1))) {
+      if (abs(y) >= 1) continue;  // theta = +-pi/2 belongs to the first chart
+      const S denominator = S(1) + y * y;
+      add(S(2) * atan2(S(1), y), S(2) * y / denominator, S(-2) / denominator);
+    }
   }
   // at most four values: insertion sort
   for (int i = 1; i < points.count; ++i) {

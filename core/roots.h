@@ -22,7 +22,8 @@ struct IntervalRoots {
 /// Root isolation by derivatives: the roots of p' split [lo, hi] into pieces on which p is
 /// monotone, so every sign change of p is bracketed by a piece and none can be missed (unlike a
 /// closed form such as Ferrari's, whose resolvent loses all four roots when it degenerates).
-/// Each bracket is solved by safeguarded Newton. A double root without sign change (an
+/// The split points come in closed form (they only need to separate); each bracket is then
+/// solved by safeguarded Newton from the parabola at its flat end. A double root without sign change (an
 /// inflection of the function whose critical points these are) is not reported.
 template <typename S>
 IntervalRoots<S> rootsInInterval(const std::array<S, 5>& c, const S& lo, const S& hi);
