@@ -89,7 +89,10 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   m_status->setObjectName(QStringLiteral("statusText"));
   m_status->setToolTip(tr("Work done and its accuracy: contacts computed, compute time, the "
                           "largest relative energy drift at contacts and the largest |u₂ − d| "
-                          "at the contact times found (both should be near round-off)."));
+                          "at the contact times found (both should be near round-off), and "
+                          "trust: the estimated error of the final state and contact times from "
+                          "a shadow run in long double (ok below 1e-9, degraded below 1e-6, "
+                          "else unreliable: the run went past its predictability horizon)."));
   m_progress = new QProgressBar;
   m_progress->setRange(0, 1000);
   m_progress->setMaximumWidth(200);
@@ -341,6 +344,13 @@ void MainWindow::showStatus(const SimUpdate& update) {
                      .arg(cost.wallSeconds * 1e3, 0, 'f', 1)
                      .arg(scientific(cost.maxRelEnergyDrift))
                      .arg(scientific(cost.maxContactResidual));
+  if (update.trust) {
+    const core::Trust& trust = *update.trust;
+    text += tr(" · trust: %1 (error ≈ %2, holds 1e-6 until t ≈ %3)")
+                .arg(QString::fromUtf8(core::toString(trust.verdict).data()))
+                .arg(scientific(std::max(trust.stateError, trust.timeError)))
+                .arg(scientific(trust.horizon));
+  }
   if (!update.final) {
     text += tr(" · computing…");
   } else if (result.stop == core::StopReason::Cancelled) {

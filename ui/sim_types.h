@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "core/simulate.h"
+#include "core/trust.h"
 #include "ui/params.h"
 
 namespace grazelab::ui {
@@ -33,6 +34,7 @@ struct SimUpdate {
   double progress = 0;  ///< fraction of the requested work done, [0, 1]
   bool final = false;   ///< the run is over (complete, cancelled or invalid)
   std::shared_ptr<const SimRequest> request;  ///< what was asked
+  std::optional<core::Trust> trust;  ///< the error estimate, on the final update
 };
 
 }  // namespace grazelab::ui

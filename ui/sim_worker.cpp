@@ -30,7 +30,20 @@ void SimWorker::wake() {
 void SimWorker::run(const SimRequest& request, std::stop_token stop, double chunkSeconds,
                     const std::function<void(const SimUpdate&)>& report) {
   const auto asked = std::make_shared<const SimRequest>(request);
-  core::Simulator simulator(request.model, request.request);
+  // the error estimate: a long double shadow of the same run, in lockstep, while it is cheap
+  core::BasicRequest<long double> shadowRequest;
+  shadowRequest.initial = core::convertState<long double>(request.request.initial);
+  shadowRequest.maxContacts = request.request.maxContacts;
+  shadowRequest.tEnd = request.request.tEnd;
+  shadowRequest.flightSearchPeriods = request.request.flightSearchPeriods;
+  core::TrustMonitor<double> monitor(core::convertModel<long double>(request.model),
+                                     shadowRequest, core::TrustMode::Auto);
+  core::Request primary = request.request;
+  primary.onEvent = [&monitor, &request](const core::Event& event) {
+    monitor.observe(event);
+    if (request.request.onEvent) request.request.onEvent(event);
+  };
+  core::Simulator simulator(request.model, primary);
   // the chunk is sized in contacts and adapted to the measured speed, so that each partial
   // result costs about chunkSeconds; the first chunk is small to show something at once
   std::int64_t budget = 256;
@@ -63,6 +76,9 @@ void SimWorker::run(const SimRequest& request, std::stop_token stop, double chun
   last.progress = 1.0;
   last.final = true;
   last.request = asked;
+  if (simulator.result().stop != core::StopReason::InvalidInput) {
+    last.trust = monitor.finish(simulator.result());
+  }
   last.result = std::make_shared<const core::Result>(simulator.takeResult());
   report(last);
 }

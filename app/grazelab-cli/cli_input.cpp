@@ -12,7 +12,7 @@ namespace {
 
 const QStringList kModelOptions = {"m1", "m2", "k1", "gap", "k2", "branch", "precision"};
 const QStringList kSimulateOnly = {"glo", "onepp", "state", "perturb", "contacts", "t-end",
-                                   "format"};
+                                   "format", "trust"};
 
 QString fromStd(const std::string& text) { return QString::fromStdString(text); }
 
@@ -65,6 +65,9 @@ void addOptions(QCommandLineParser& parser) {
       {"format", "Output: json (default), jsonl (JSON Lines), csv or summary. json, jsonl and "
                  "csv stream: memory stays bounded and an interrupt leaves complete records.",
        "json|jsonl|csv|summary", "json"},
+      {"trust", "Error estimate of the run: auto (default: a shadow run one precision up while "
+                "it costs about the run itself, then extrapolation), full (the shadow to the "
+                "end) or off.", "off|auto|full", "auto"},
   });
 }
 
@@ -82,6 +85,14 @@ QStringList simulateOnlyOptionsSet(const QCommandLineParser& parser) {
     if (parser.isSet(name)) set << "--" + name;
   }
   return set;
+}
+
+std::optional<core::TrustMode> parseTrustOption(const QCommandLineParser& parser,
+                                                 QString& error) {
+  const QString text = parser.value("trust");
+  const auto mode = core::parseTrustMode(text.toStdString());
+  if (!mode) error = QStringLiteral("--trust: '%1' is not off, auto or full").arg(text);
+  return mode;
 }
 
 std::optional<core::Precision> parsePrecisionOption(const QCommandLineParser& parser,

@@ -13,6 +13,7 @@
 #include "core/model.h"
 #include "core/resonance.h"
 #include "core/simulate.h"
+#include "core/trust.h"
 
 class QCommandLineParser;
 
@@ -30,6 +31,9 @@ QStringList simulateOnlyOptionsSet(const QCommandLineParser& parser);
 /// --precision, checked ("double" when absent).
 std::optional<core::Precision> parsePrecisionOption(const QCommandLineParser& parser,
                                                     QString& error);
+
+/// --trust, checked ("auto" when absent).
+std::optional<core::TrustMode> parseTrustOption(const QCommandLineParser& parser, QString& error);
 
 /// The model as the command line describes it, in precision S, with its nondimensional chain.
 template <typename S>

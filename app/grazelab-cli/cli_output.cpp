@@ -106,9 +106,20 @@ std::string stopReason(core::StopReason reason, bool interrupted) {
   return quoted(interrupted ? std::string("interrupted") : std::string(core::toString(reason)));
 }
 
+std::string trustJson(const core::Trust& trust) {
+  const bool estimated = trust.verdict != core::Verdict::Unchecked;
+  auto estimate = [&](double value) { return estimated ? number(value) : std::string("null"); };
+  return object({{"estimated_state_error", estimate(trust.stateError)},
+                 {"estimated_time_error", estimate(trust.timeError)},
+                 {"horizon", estimate(trust.horizon)},
+                 {"horizon_method", estimated ? quoted(trust.horizonMethod) : std::string("null")},
+                 {"verdict", quoted(std::string(core::toString(trust.verdict)))},
+                 {"reason", quoted(trust.reason)}});
+}
+
 template <typename S>
 std::string endFields(const core::BasicResult<S>& result, bool interrupted,
-                      const std::string& indent) {
+                      const core::Trust& trust, const std::string& indent) {
   const core::Cost& cost = result.cost;
   auto field = [&](const char* key, const std::string& value) {
     return indent + quoted(key) + ": " + value;
@@ -129,6 +140,7 @@ std::string endFields(const core::BasicResult<S>& result, bool interrupted,
          ",\n";
   out += field("accuracy", object({{"max_contact_residual", number(cost.maxContactResidual)}})) +
          ",\n";
+  out += field("trust", trustJson(trust)) + ",\n";
   out += field("timing", object({{"seconds", number(cost.wallSeconds)},
                                  {"contacts_per_second", number(contactsPerSecond(cost))}}));
   return out;
@@ -198,13 +210,14 @@ void RunWriter<S>::event(const core::BasicEvent<S>& event) {
 }
 
 template <typename S>
-void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted) {
+void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
+                       const core::Trust& trust) {
   switch (m_run.format) {
     case Format::Json:
-      write((m_events == 0 ? "],\n" : "\n  ],\n") + endFields(result, interrupted, "  ") + "\n}\n");
+      write((m_events == 0 ? "],\n" : "\n  ],\n") + endFields(result, interrupted, trust, "  ") + "\n}\n");
       break;
     case Format::JsonLines: {
-      std::string fields = endFields(result, interrupted, "");
+      std::string fields = endFields(result, interrupted, trust, "");
       std::string flat;
       for (char c : fields) flat += c == '\n' ? ' ' : c;
       write("{\"record\": \"end\", " + flat + "}\n");
@@ -240,6 +253,15 @@ void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted) {
       std::snprintf(line, sizeof line, "|u2 - gap|     %.3g (max at contacts)\n",
                     cost.maxContactResidual);
       text += line;
+      text += "trust          " + std::string(core::toString(trust.verdict)) + ": " + trust.reason + "\n";
+      if (trust.verdict != core::Verdict::Unchecked) {
+        std::snprintf(line, sizeof line,
+                      "               state error %.2g, contact time error %.2g T2; holds 1e-6 "
+                      "until t = %.4g (%s)\n",
+                      trust.stateError, trust.timeError, trust.horizon,
+                      trust.horizonObserved ? "observed" : "extrapolated");
+        text += line;
+      }
       text += "final          t=" + number(result.tFinal) + " u1=" + number(result.final.u1) +
               " u2=" + number(result.final.u2) + " v1=" + number(result.final.v1) +
               " v2=" + number(result.final.v2) + "\n";

@@ -7,6 +7,7 @@
 
 #include "cli_input.h"
 #include "core/simulate.h"
+#include "core/trust.h"
 
 namespace grazelab::cli {
 
@@ -27,7 +28,7 @@ class RunWriter {
   void begin(const core::BasicResult<S>& result);
   void event(const core::BasicEvent<S>& event);
   /// Everything known at the end; `interrupted` when a signal ended the run.
-  void end(const core::BasicResult<S>& result, bool interrupted);
+  void end(const core::BasicResult<S>& result, bool interrupted, const core::Trust& trust);
 
  private:
   void write(const std::string& text);

@@ -17,6 +17,7 @@
 #include "cli_input.h"
 #include "cli_output.h"
 #include "core/simulate.h"
+#include "core/trust.h"
 
 namespace {
 
@@ -70,13 +71,28 @@ int info(const QCommandLineParser& parser) {
 }
 
 template <typename S>
-int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher) {
+int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher,
+             grazelab::core::TrustMode trustMode) {
   using namespace grazelab;
   auto parsed = cli::parseRun<S>(parser);
   if (!parsed.value) return fail(parsed.error);
   cli::RunInput<S>& run = *parsed.value;
   cli::RunWriter<S> writer(run, stdout);
-  run.request.onEvent = [&writer](const core::BasicEvent<S>& event) { writer.event(event); };
+  // the error estimate: the same input read one precision up, run beside this one
+  std::optional<core::TrustMonitor<S>> monitor;
+  std::string noShadow;
+  if (trustMode != core::TrustMode::Off) {
+    const auto shadow = cli::parseRun<core::ShadowScalar<S>>(parser);
+    if (shadow.value) {
+      monitor.emplace(shadow.value->model.model, shadow.value->request, trustMode);
+    } else {
+      noShadow = "no shadow run: " + shadow.error.toStdString();
+    }
+  }
+  run.request.onEvent = [&writer, &monitor](const core::BasicEvent<S>& event) {
+    writer.event(event);
+    if (monitor) monitor->observe(event);
+  };
   core::BasicSimulator<S> simulator(run.model.model, run.request);
   if (simulator.result().stop == core::StopReason::InvalidInput) {
     return fail(QString::fromStdString(simulator.result().message));
@@ -91,7 +107,13 @@ int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher) {
   writer.begin(simulator.result());
   while (!simulator.advance(std::numeric_limits<std::int64_t>::max(), watcher.token())) {
   }
-  writer.end(simulator.result(), watcher.interrupted());
+  core::Trust trust;
+  if (monitor) {
+    trust = monitor->finish(simulator.result());
+  } else {
+    trust.reason = noShadow.empty() ? "not estimated (--trust off)" : noShadow;
+  }
+  writer.end(simulator.result(), watcher.interrupted(), trust);
   return watcher.interrupted() ? kInterrupted : 0;
 }
 
@@ -131,6 +153,8 @@ int main(int argc, char* argv[]) {
   QString error;
   const auto precision = grazelab::cli::parsePrecisionOption(parser, error);
   if (!precision) return fail(error);
+  const auto trust = grazelab::cli::parseTrustOption(parser, error);
+  if (!trust) return fail(error);
 
   using grazelab::core::Precision;
   if (command == "info") {
@@ -148,11 +172,11 @@ int main(int argc, char* argv[]) {
   if (command == "simulate") {
     switch (*precision) {
       case Precision::Double:
-        return simulate<double>(parser, watcher);
+        return simulate<double>(parser, watcher, *trust);
       case Precision::Long:
-        return simulate<long double>(parser, watcher);
+        return simulate<long double>(parser, watcher, *trust);
       case Precision::Quad:
-        return simulate<grazelab::core::Quad>(parser, watcher);
+        return simulate<grazelab::core::Quad>(parser, watcher, *trust);
     }
   }
   return fail(QStringLiteral("unknown command '%1': use info or simulate").arg(command));

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// The trust estimate (core/trust.h): it tracks the true error, which a binary128 run of the
+// same start measures here, and it names a chaotic run past its horizon.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/modes.h"
+#include "core/orbits.h"
+#include "core/trust.h"
+#include "support/cases.h"
+
+namespace grazelab::core {
+namespace {
+
+struct Checked {
+  Trust trust;
+  Result run;
+};
+
+Checked runWithTrust(const Model& model, const State& start, std::int64_t contacts,
+                     TrustMode mode) {
+  BasicRequest<long double> shadow;
+  shadow.initial = convertState<long double>(start);
+  shadow.maxContacts = contacts;
+  TrustMonitor<double> monitor(convertModel<long double>(model), shadow, mode);
+  Request request;
+  request.initial = start;
+  request.maxContacts = contacts;
+  request.onEvent = [&monitor](const Event& event) { monitor.observe(event); };
+  Checked checked;
+  checked.run = simulate(model, request);
+  checked.trust = monitor.finish(checked.run);
+  return checked;
+}
+
+// the error of a double run's final state against the same run in binary128, each component
+// against its largest size at the events (as the estimate defines it)
+double trueStateError(const Model& model, const State& start, std::int64_t contacts) {
+  Request request;
+  request.initial = start;
+  request.maxContacts = contacts;
+  const Result run = simulate(model, request);
+  BasicRequest<Quad> wide;
+  wide.initial = convertState<Quad>(start);
+  wide.maxContacts = contacts;
+  const BasicResult<Quad> exact = simulate(convertModel<Quad>(model), wide);
+  double scale[4] = {0, std::abs(model.gap), 0, 0};
+  for (const auto& event : exact.events) {
+    for (const auto& x : {event.before, event.after}) {
+      const double values[4] = {toDouble(x.u1), toDouble(x.u2), toDouble(x.v1), toDouble(x.v2)};
+      for (int i = 0; i < 4; ++i) scale[i] = std::max(scale[i], std::abs(values[i]));
+    }
+  }
+  const double positions = std::max(scale[0], scale[1]);
+  const double velocities = std::max(scale[2], scale[3]);
+  const double difference[4] = {
+      std::abs(run.final.u1 - toDouble(exact.final.u1)), std::abs(run.final.u2 - toDouble(exact.final.u2)),
+      std::abs(run.final.v1 - toDouble(exact.final.v1)), std::abs(run.final.v2 - toDouble(exact.final.v2))};
+  double worst = 0;
+  for (int i = 0; i < 4; ++i) {
+    const double floor = (i < 2 ? positions : velocities) / 1000;
+    worst = std::max(worst, difference[i] / std::max(scale[i], floor));
+  }
+  return worst;
+}
+
+TEST(Trust, TracksTheTrueErrorOfRegularRuns) {
+  const Model model = testing::resonantChain(0.5);
+  const State start = testing::nearGrazingStart(model, 0.5, 0.05);
+  const Checked checked = runWithTrust(model, start, 2000, TrustMode::Full);
+  const double truth = trueStateError(model, start, 2000);
+  EXPECT_EQ(checked.trust.verdict, Verdict::Ok) << checked.trust.reason;
+  EXPECT_LE(truth, 10 * checked.trust.stateError);
+  EXPECT_LE(checked.trust.stateError, 1000 * std::max(truth, 1e-16));
+  // the contact times drift by rounding: about eps per period, never zero
+  EXPECT_GT(checked.trust.timeError, 1e-14);
+  EXPECT_LT(checked.trust.timeError, 1e-9);
+  EXPECT_FALSE(checked.trust.horizonObserved);
+  EXPECT_GT(checked.trust.horizon, checked.run.tFinal);
+}
+
+TEST(Trust, NamesAChaoticRunPastItsHorizon) {
+  // the sticking start GLO_1.5 is chaotic: 1000 contacts are far beyond its horizon
+  const Model model = testing::resonantChain(0.5);
+  const State start = gloData(model, computeModes(model), 1.5);
+  const Checked checked = runWithTrust(model, start, 1000, TrustMode::Full);
+  EXPECT_EQ(checked.trust.verdict, Verdict::Unreliable) << checked.trust.reason;
+  EXPECT_TRUE(checked.trust.horizonObserved);
+  EXPECT_GT(checked.trust.horizon, 0);
+  EXPECT_LT(checked.trust.horizon, checked.run.tFinal);
+  EXPECT_GT(checked.trust.stateError, kHorizonTolerance);
+  // and its first 30 contacts are still fine
+  const Checked early = runWithTrust(model, start, 30, TrustMode::Full);
+  EXPECT_NE(early.trust.verdict, Verdict::Unreliable) << early.trust.reason;
+  const double truth = trueStateError(model, start, 30);
+  EXPECT_LE(truth, 10 * early.trust.stateError);
+}
+
+TEST(Trust, OffEstimatesNothing) {
+  const Model model = testing::resonantChain(0.5);
+  const Checked checked =
+      runWithTrust(model, testing::nearGrazingStart(model, 0.5, 0.05), 10, TrustMode::Off);
+  EXPECT_EQ(checked.trust.verdict, Verdict::Unchecked);
+}
+
+TEST(Trust, ModesRoundTrip) {
+  for (TrustMode mode : {TrustMode::Off, TrustMode::Auto, TrustMode::Full}) {
+    EXPECT_EQ(parseTrustMode(toString(mode)), mode);
+  }
+  EXPECT_FALSE(parseTrustMode("sometimes"));
+}
+
+}  // namespace
+}  // namespace grazelab::core
