@@ -109,11 +109,11 @@ TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicRequest<H>&
 
 template <typename S>
 std::string TrustMonitor<S>::shadowName() const {
+  const std::string type = std::is_same_v<H, Quad> ? "binary128" : "long double";
   if constexpr (std::is_same_v<S, H>) {
-    return "shadow run in " + std::string(toString(precisionOf<H>())) +
-           " on a chain scaled 3x in length, 1/sqrt(3) in time";
+    return "shadow run in " + type + " on a chain scaled 3x in length, 1/sqrt(3) in time";
   } else {
-    return "shadow run in " + std::string(toString(precisionOf<H>()));
+    return "shadow run in " + type;
   }
 }
 

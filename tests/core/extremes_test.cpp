@@ -112,14 +112,19 @@ TEST(Extremes, TinyPushFromAFourthOrderTouchScalesWithThePush) {
   // class 4: u1 = d, v1 = 0 on the stop, v2 = -eps: the impact speed is proportional to eps
   const Model model = testing::resonantChain(0.5);
   double ratio = 0;
-  // below ~1e-160 the root still loses relative precision (1e-4 at 1e-200): open in issue 7
-  for (double eps : {1e-20, 1e-100, 1e-150}) {
+  double swing = 0;  // v1 at the impact over eps^(1/3)
+  // down to the subnormal edge: the root is found to its relative precision (Newton that stops
+  // at rounding noise, exponent bisection toward the zero end); v1 at the impact ~ eps^(1/3)
+  for (double eps : {1e-20, 1e-100, 1e-150, 1e-200, 1e-290}) {
     const auto events = run(model, State{1.0, 1.0, 0.0, -eps}, 1);
     ASSERT_EQ(events.size(), 1u) << eps;
     ASSERT_EQ(events[0].type, EventType::Impact) << eps;
     const double speedOverPush = events[0].before.v2 / eps;
     if (ratio == 0) ratio = speedOverPush;
     EXPECT_NEAR(speedOverPush / ratio, 1.0, 1e-10) << eps;
+    const double swingOverRoot = events[0].before.v1 / std::cbrt(eps);
+    if (swing == 0) swing = swingOverRoot;
+    EXPECT_NEAR(swingOverRoot / swing, 1.0, 1e-9) << eps;
   }
   EXPECT_GT(ratio, 0);
 }
