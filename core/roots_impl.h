@@ -248,9 +248,12 @@ std::pair<S, S> solveBracketed(const Function& g, S a, S b, S ga, S gb, S guess)
       return {next, lastValue};
     }
     // quadratic convergence under way (this Newton step far below the last one): the step just
-    // taken leaves an error of about step^3 / last^2; below rounding, no need to evaluate again
-    if (newton && previousNewton > 0 && step * step * step <= eps * abs(next) * previousNewton * previousNewton) {
-      return {next, lastValue};
+    // taken leaves an error of about step^3 / last^2; below rounding, no need to evaluate again.
+    // |g| there is |g(x)| shrunk by the same factor, (step / last)^2.
+    if (newton && previousNewton > 0 &&
+        step * step * step <= eps * abs(next) * previousNewton * previousNewton) {
+      const S shrink = step / previousNewton;
+      return {next, lastValue * shrink * shrink};
     }
     previousNewton = newton ? step : S(0);
     x = next;
