@@ -26,11 +26,6 @@ BasicState<H> scaled(const BasicState<H>& state, const H& length, const H& time)
   return {state.u1 / length, state.u2 / length, state.v1 / speed, state.v2 / speed};
 }
 
-template <typename S, typename H>
-BasicState<H> widen(const BasicState<S>& state) {
-  return {H(state.u1), H(state.u2), H(state.v1), H(state.v2)};
-}
-
 }  // namespace
 
 std::string_view toString(TrustMode mode) {
@@ -213,8 +208,8 @@ void TrustMonitor<S>::observe(const BasicEvent<S>& event) {
     m_active = false;
     return;
   }
-  const BasicState<H> before = widen<S, H>(event.before);
-  const BasicState<H> after = widen<S, H>(event.after);
+  const BasicState<H> before = convertState<H>(event.before);
+  const BasicState<H> after = convertState<H>(event.after);
   widenScales(shadow->before);
   widenScales(shadow->after);
   using std::abs;
@@ -228,7 +223,7 @@ template <typename S>
 double TrustMonitor<S>::phaseRounding(const BasicResult<S>& primary) const {
   using std::abs;
   const Chain<H>& chain = *m_shadow->chain();
-  const BasicState<H> x = widen<S, H>(primary.final);
+  const BasicState<H> x = convertState<H>(primary.final);
   const H dt = H(epsilon<S>()) * (abs(H(primary.tFinal)) + m_period);
   const H w2 = m_omega * m_omega;
   const H stretch = x.u1 - x.u2;
@@ -264,7 +259,7 @@ Trust TrustMonitor<S>::finish(const BasicResult<S>& primary) {
       m_failure = "the shadow run stopped with " + std::string(toString(shadow.stop)) +
                   ", the run with " + std::string(toString(primary.stop));
     } else {
-      const BasicState<H> final = widen<S, H>(primary.final);
+      const BasicState<H> final = convertState<H>(primary.final);
       widenScales(scaled(shadow.final, m_lengthFactor, m_timeFactor));
       const double stateError = relativeStateError(final, scaled(shadow.final, m_lengthFactor, m_timeFactor));
       using std::abs;
