@@ -3,6 +3,7 @@
 #include "core/free_flight.h"
 
 #include <cmath>
+#include <limits>
 
 namespace grazelab::core {
 namespace {
@@ -63,6 +64,7 @@ Flight<S>::Flight(const Chain<S>& chain, const S& gap, const BasicState<S>& star
     : m_chain(&chain), m_gap(gap), m_start(start), m_startsOnStop(start.u2 == gap) {
   using std::abs;
   using std::hypot;
+  using std::sqrt;
   m_taylorOrder = taylorOrderFor<S>();
   Anchor& origin = m_anchors[0];
   origin.periods = 0;
@@ -87,7 +89,11 @@ Flight<S>::Flight(const Chain<S>& chain, const S& gap, const BasicState<S>& star
   const S omegaSquared[2] = {chain.ratio * chain.ratio, S(1)};
   S amplitudeSum = 0;
   for (int j = 0; j < 2; ++j) {
-    const S amplitude = hypot(origin.c[j], origin.a[j]);
+    // hypot only where the squares would overflow or lose digits to underflow (it costs as
+    // much as the rest of the constructor)
+    const S square = origin.c[j] * origin.c[j] + origin.a[j] * origin.a[j];
+    const bool plain = square >= std::numeric_limits<S>::min() / epsilon<S>() && isFinite(square);
+    const S amplitude = plain ? S(sqrt(square)) : S(hypot(origin.c[j], origin.a[j]));
     amplitudeSum += amplitude;
     m_accelerationBound += amplitude * omegaSquared[j];
   }

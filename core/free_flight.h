@@ -94,7 +94,9 @@ class Flight {
     S gapValue = 0;             // x2 - delta at the anchor, kept without rounding x2 first
     bool taylorReady = false;
     // d^n x / dtau^n at the anchor (u1 and u2 rows), n = 0 .. order + 1
-    std::array<std::array<S, 2>, kMaxTaylorOrder + 2> derivatives{};
+    // (left uninitialised: fillTaylor writes every row that is read, and a flight is built per
+    // contact)
+    std::array<std::array<S, 2>, kMaxTaylorOrder + 2> derivatives;
   };
   const Anchor& anchor(long long periods) const;
   void fillTaylor(const Anchor& anchor) const;

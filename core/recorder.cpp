@@ -70,8 +70,6 @@ void Recorder<S>::record(const Step<S>& step) {
   using std::abs;
   using std::ldexp;
   Cost& cost = m_result.cost;
-  const BasicEvent<S> event{m_scale.toPhysicalTime(step.tau), step.type,
-                            m_scale.toPhysical(step.before), m_scale.toPhysical(step.after)};
   if (isContact(step.type)) {
     ++cost.contacts;
     if (step.type == EventType::Impact) ++cost.impacts;
@@ -96,16 +94,24 @@ void Recorder<S>::record(const Step<S>& step) {
                                       toDouble(m_scale.toPhysicalTime(shortfall))});
     }
   }
+  // the event in physical units only when something keeps it (a run that keeps only the cost
+  // spends no time converting)
+  const SampleSpec& samples = m_needs.samples;
+  const bool contactSamples = isContact(step.type) && samples.spacing > 0 && samples.includeContacts;
+  if (!m_onEvent && !m_needs.events && !(isContact(step.type) && m_needs.poincare) &&
+      !contactSamples) {
+    return;
+  }
+  const BasicEvent<S> event{m_scale.toPhysicalTime(step.tau), step.type,
+                            m_scale.toPhysical(step.before), m_scale.toPhysical(step.after)};
   if (m_onEvent) m_onEvent(event);
   if (m_needs.events && toDouble(event.t) <= m_needs.eventsUntil) m_result.events.push_back(event);
   if (isContact(step.type) && m_needs.poincare) {
     m_result.poincare.push_back({toDouble(event.t), toDouble(event.after.u1),
                                  toDouble(event.after.v1), toDouble(event.after.v2), step.type});
   }
-  const SampleSpec& samples = m_needs.samples;
   const double t = toDouble(event.t);
-  if (isContact(step.type) && samples.spacing > 0 && samples.includeContacts &&
-      t >= samples.tBegin && t <= samples.tEnd) {
+  if (contactSamples && t >= samples.tBegin && t <= samples.tEnd) {
     addSample(t, convertState<double>(event.before));
     if (!(event.after == event.before)) addSample(t, convertState<double>(event.after));
   }
