@@ -22,7 +22,7 @@ template <typename S>
 struct Contact {
   ContactKind kind = ContactKind::None;
   FlightTime<S> time;  ///< when, from the start of the flight (scaled time)
-  S residual = 0;      ///< |x2 - delta| as evaluated at the returned time (scaled)
+  S residual = 0;      ///< |x2 - delta| as evaluated at (or one Newton step before) the time
   /// True when the decision between a touch and a crossing was within rounding (a maximum of
   /// x2 within the rounding level of the stop): the trust estimate reports such runs.
   bool undecided = false;
@@ -31,14 +31,13 @@ struct Contact {
 /// The first tau > 0 with x2(tau) = delta (MODEL.md sections 3-4), in scaled units. A flight that
 /// starts on the stop must leave it (its first nonzero derivative of x2 - delta is negative).
 ///
-/// Resonant chains: x2 - delta is a trigonometric polynomial of degree 2 in theta = tau, so its
-/// critical points are the real roots of a quartic in tan(theta/2) (or cot(theta/2) on the far
-/// half of the circle), found by root isolation, which cannot miss one. Between consecutive
-/// critical points the gap is monotone: every sign change is bracketed and solved by safeguarded
-/// Newton, and a local maximum within rounding of zero is a tangent (grazing) touch, decided
-/// there and not by luck. One period decides: the motion repeats after 2 pi. A crossing in the
-/// second half of the period is solved as an offset from 2 pi; for a flight leaving the stop,
-/// the zero of order m at the start (and at 2 pi) is divided out first.
+/// Resonant chains: the real roots of the quartic G below are the contacts. Its stationary
+/// points split each chart into pieces on which the gap is monotone (closed form; none can be
+/// missed), scanned in time order: the first piece at whose end the gap rises above the stop
+/// holds the crossing (safeguarded Newton on G, no trigonometric call), and a maximum within
+/// rounding of the stop is a tangent (grazing) touch, decided there and not by luck. One period
+/// decides: the motion repeats after 2 pi. Times are kept as offsets from the start or from the
+/// return, so a crossing a hair before the return keeps its relative precision.
 ///
 /// Detuned chains: a march that cannot step over a contact. From a point with gap f < 0 and rate
 /// f', no contact can happen before the positive root h of f + f' h + A h^2 / 2 = 0, A bounding
@@ -48,27 +47,17 @@ struct Contact {
 template <typename S>
 Contact<S> nextContact(const Flight<S>& flight, const S& horizon, std::stop_token stop = {});
 
-/// A stationary point of x2 - delta of a resonant flight.
+/// The gap of a resonant flight as a quartic: with x = tan(theta / 2), theta = tau,
+///   (1 + x^2)^2 (x2 - delta) = G(x) = sum_i c_i x^i,
+/// exactly, since x2 - delta is a trigonometric polynomial of degree 2. The coefficients come
+/// from the gap's derivatives g_n at the start (c0 = g0, c1 = 2 g1, c2 = 2 (g0 + g2), ...), so
+/// the low ones are exact and G keeps relative precision near the start and the return
+/// (x -> 0 from either side), where the zero of a start on the stop divides out exactly.
 template <typename S>
-struct CriticalPoint {
-  S time = 0;          ///< in (0, 2 pi)
-  S gap = 0;           ///< x2 - delta there
-  S acceleration = 0;  ///< x2'' there: < 0 at a local maximum
-};
+std::array<S, 5> resonantGapPolynomial(const Flight<S>& flight);
 
-/// At most four stationary points, ascending in time (a fixed-size list: no allocation).
+/// nextContact for a resonant chain (any horizon: one period decides).
 template <typename S>
-struct CriticalPoints {
-  std::array<CriticalPoint<S>, 4> values;
-  int count = 0;
-
-  const CriticalPoint<S>* begin() const { return values.data(); }
-  const CriticalPoint<S>* end() const { return values.data() + count; }
-  bool empty() const { return count == 0; }
-};
-
-/// The stationary points of x2 - delta of a resonant flight in (0, 2 pi), ascending in time.
-template <typename S>
-CriticalPoints<S> criticalPointsResonant(const Flight<S>& flight);
+Contact<S> nextContactResonant(const Flight<S>& flight);
 
 }  // namespace grazelab::core

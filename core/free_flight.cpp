@@ -126,6 +126,24 @@ const typename Flight<S>::Anchor& Flight<S>::anchor(long long periods) const {
   return cached;
 }
 
+namespace {
+// d^n x / dtau^n from d^(n-2): x1'' = -(p x1 + q (x1 - x2)), x2'' = w (x1 - x2), the spring
+// stretch kept as one difference. One definition, so that every use rounds alike.
+template <typename S>
+std::array<S, 2> nextTaylorRow(const Chain<S>& chain, const std::array<S, 2>& twoBefore) {
+  const S stretch = twoBefore[0] - twoBefore[1];
+  return {-(chain.p * twoBefore[0] + chain.q * stretch), chain.w * stretch};
+}
+}  // namespace
+
+template <typename S>
+std::array<S, 5> Flight<S>::lowGapDerivatives() const {
+  const std::array<S, 2> d2 = nextTaylorRow(*m_chain, {m_start.u1, m_start.u2});
+  const std::array<S, 2> d3 = nextTaylorRow(*m_chain, {m_start.v1, m_start.v2});
+  const std::array<S, 2> d4 = nextTaylorRow(*m_chain, d2);
+  return {m_start.u2 - m_gap, m_start.v2, d2[1], d3[1], d4[1]};
+}
+
 template <typename S>
 void Flight<S>::fillTaylor(const Anchor& anchor) const {
   if (anchor.taylorReady) return;
@@ -136,10 +154,7 @@ void Flight<S>::fillTaylor(const Anchor& anchor) const {
   d[0] = {anchor.state.u1, anchor.state.u2};
   d[1] = {anchor.state.v1, anchor.state.v2};
   // x1'' = -(p x1 + q (x1 - x2)), x2'' = w (x1 - x2): the spring stretch stays one difference
-  for (int n = 2; n < m_taylorOrder + 2; ++n) {
-    const S stretch = d[n - 2][0] - d[n - 2][1];
-    d[n] = {-(chain.p * d[n - 2][0] + chain.q * stretch), chain.w * stretch};
-  }
+  for (int n = 2; n < m_taylorOrder + 2; ++n) d[n] = nextTaylorRow(chain, d[n - 2]);
 }
 
 template <typename S>
@@ -271,23 +286,6 @@ S Flight<S>::acceleration2(const FlightTime<S>& time) const {
     acceleration -= omegaSquared[j] * (a.c[j] * (S(1) + cosineMinusOne[j]) + a.a[j] * sine[j]);
   }
   return acceleration;
-}
-
-template <typename S>
-std::pair<S, S> Flight<S>::gapAndAccelerationAtPhase(const S& sine,
-                                                     const S& cosineMinusOne) const {
-  // fast phase 2 theta: sin 2th = 2 sin th cos th, cos 2th - 1 = -2 sin^2 th
-  const S sines[2] = {S(2) * sine * (S(1) + cosineMinusOne), sine};
-  const S cosinesMinusOne[2] = {S(-2) * sine * sine, cosineMinusOne};
-  const S omegaSquared[2] = {S(4), S(1)};
-  const Anchor& a = m_anchors[0];
-  S gap = m_start.u2 - m_gap;
-  S acceleration = 0;
-  for (int j = 0; j < 2; ++j) {
-    gap += a.c[j] * cosinesMinusOne[j] + a.a[j] * sines[j];
-    acceleration -= omegaSquared[j] * (a.c[j] * (S(1) + cosinesMinusOne[j]) + a.a[j] * sines[j]);
-  }
-  return {gap, acceleration};
 }
 
 template <typename S>

@@ -62,12 +62,11 @@ class Flight {
   /// divided out.
   std::pair<S, S> reducedGapAndRate(long long anchor, const S& s, int m) const;
 
-  /// Resonant flights only: (x2 - delta, x2'') at the slow phase theta, given sin(theta) and
-  /// cos(theta) - 1 (known rationally in the contact search: no trigonometric call).
-  std::pair<S, S> gapAndAccelerationAtPhase(const S& sine, const S& cosineMinusOne) const;
-
   /// d^n (x2 - delta) / dtau^n at the start.
   S gapDerivative(int n) const;
+  /// d^n (x2 - delta) / dtau^n at the start for n = 0 .. 4, without filling the whole series
+  /// (equal to gapDerivative(n), rounding included).
+  std::array<S, 5> lowGapDerivatives() const;
   /// Order of the zero of x2 - delta at the start: the lowest n >= 1 with a nonzero derivative
   /// (0 when the start is below the stop).
   int contactOrder() const { return m_contactOrder; }

@@ -28,6 +28,30 @@ struct IntervalRoots {
 template <typename S>
 IntervalRoots<S> rootsInInterval(const std::array<S, 5>& c, const S& lo, const S& hi);
 
+/// The stationary points of c[4] x^4 + ... + c[0] (any leading coefficients may be 0) in
+/// [lo, hi], ascending: they split it into pieces on which the polynomial is monotone. Closed
+/// form for a cubic derivative (Viete / Cardano and one Newton step), isolation below.
+template <typename S>
+IntervalRoots<S> stationaryPointsInInterval(const std::array<S, 5>& c, const S& lo, const S& hi);
+
+/// p(x), p'(x) and p''(x) of a polynomial of degree <= 4.
+template <typename S>
+struct PolynomialJet {
+  S value;      ///< 0 when within one rounding of the evaluation (sum |c_i x^i| eps)
+  S slope;
+  S curvature;
+};
+template <typename S>
+PolynomialJet<S> evaluateQuartic(const std::array<S, 5>& c, const S& x);
+
+/// The root of a polynomial of degree <= 4 in a piece [a, b] on which it is monotone, given
+/// p(a), p(b) of opposite signs (or zero). An end flagged flat is a stationary point: the first
+/// iterate then comes from the parabola there, unless `guess` lies inside (a, b). Returns the
+/// root and |p| at the last iterate.
+template <typename S>
+std::pair<S, S> rootInMonotonePiece(const std::array<S, 5>& c, const S& a, const S& b,
+                                    const S& pa, const S& pb, bool aFlat, bool bFlat, S guess);
+
 /// Safeguarded Newton for a root of g in [a, b], given g(a), g(b) of opposite signs (or zero);
 /// g returns (value, derivative). `guess` inside (a, b) is the first iterate. Returns the root
 /// and |g| at the last iterate.

@@ -125,6 +125,19 @@ S firstGuess(const S* derivative, const S& a, const S& b, const S& fa, const S& 
   return fromA ? S(a + sqrt(reach)) : S(b - sqrt(reach));
 }
 
+template <int D, typename S>
+void rootsOfDegree(const S* c, const S& lo, const S& hi, S* out, int& count);
+
+// The roots of a degree-D polynomial's derivative (coefficients `derivative`, degree D - 1) in
+// [lo, hi], ascending: for a quartic in closed form, else by isolation.
+template <int D, typename S>
+void stationaryPoints(const S* derivative, const S& lo, const S& hi, S* out, int& count) {
+  if constexpr (D == 4) {
+    if (derivative[3] != 0) return cubicSplitPoints(derivative, lo, hi, out, count);
+  }
+  rootsOfDegree<D - 1>(derivative, lo, hi, out, count);
+}
+
 // Roots of a degree-D polynomial in [lo, hi], appended to out (ascending). Degree 2 in closed
 // form (its roots only split the next degree into monotone pieces); higher degrees by root
 // isolation between the roots of the derivative.
@@ -154,15 +167,7 @@ void rootsOfDegree(const S* c, const S& lo, const S& hi, S* out, int& count) {
       S breaks[D + 1];
       int criticalCount = 0;
       breaks[0] = lo;
-      if constexpr (D == 4) {
-        if (derivative[3] != 0) {
-          cubicSplitPoints(derivative, lo, hi, breaks + 1, criticalCount);
-        } else {
-          rootsOfDegree<3>(derivative, lo, hi, breaks + 1, criticalCount);
-        }
-      } else {
-        rootsOfDegree<D - 1>(derivative, lo, hi, breaks + 1, criticalCount);
-      }
+      stationaryPoints<D>(derivative, lo, hi, breaks + 1, criticalCount);
       int breakCount = criticalCount + 1;
       breaks[breakCount++] = hi;
       auto p = [c](const S& x) { return evaluate<D>(c, x); };
@@ -259,6 +264,36 @@ std::pair<S, S> solveBracketed(const Function& g, S a, S b, S ga, S gb, S guess)
     x = next;
   }
   return {x, lastValue};
+}
+
+template <typename S>
+IntervalRoots<S> stationaryPointsInInterval(const std::array<S, 5>& c, const S& lo, const S& hi) {
+  const S derivative[4] = {c[1], S(2) * c[2], S(3) * c[3], S(4) * c[4]};
+  IntervalRoots<S> points;
+  S found[4];
+  int count = 0;
+  roots_detail::stationaryPoints<4>(derivative, lo, hi, found, count);
+  for (int i = 0; i < count; ++i) points.values[points.count++] = found[i];
+  return points;
+}
+
+template <typename S>
+PolynomialJet<S> evaluateQuartic(const std::array<S, 5>& c, const S& x) {
+  const auto [value, slope] = roots_detail::evaluate<4>(c.data(), x);
+  S curvature = S(12) * c[4];
+  for (int n = 3; n >= 2; --n) curvature = curvature * x + S(n * (n - 1)) * c[n];
+  return {value, slope, curvature};
+}
+
+template <typename S>
+std::pair<S, S> rootInMonotonePiece(const std::array<S, 5>& c, const S& a, const S& b,
+                                    const S& pa, const S& pb, bool aFlat, bool bFlat, S guess) {
+  const S derivative[4] = {c[1], S(2) * c[2], S(3) * c[3], S(4) * c[4]};
+  if (!(guess > a && guess < b)) {
+    guess = roots_detail::firstGuess<4>(derivative, a, b, pa, pb, aFlat, bFlat);
+  }
+  auto p = [&c](const S& x) { return roots_detail::evaluate<4>(c.data(), x); };
+  return solveBracketed(p, a, b, pa, pb, guess);
 }
 
 template <typename S>

@@ -72,17 +72,29 @@ TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicRequest<H>&
   BasicModel<H> shadowModel = model;
   BasicRequest<H> shadowRequest = request;
   if constexpr (std::is_same_v<S, H>) {
-    // no wider type: the same precision on a chain 3 times as large and sqrt(3) times as fast
-    // rounds every length, speed and time differently (the physics is scale-free)
+    // no wider type: the same precision on a chain 3 times as large, 5 times as heavy and
+    // sqrt(3) times as fast rounds every length, speed and time differently, and the chain's
+    // own constants too (the physics is scale-free)
     using std::sqrt;
     m_lengthFactor = 3;
     m_timeFactor = sqrt(H(3));
     const H speedFactor = m_lengthFactor * m_timeFactor;
     shadowModel.gap *= m_lengthFactor;
-    shadowModel.k1 *= 3;  // w scales by sqrt(3): times by 1 / sqrt(3)
-    shadowModel.k2 *= 3;
+    shadowModel.m1 *= 5;
+    shadowModel.m2 *= 5;
+    shadowModel.k1 *= 15;  // k / m, and w^2, 3 times larger: times by 1 / sqrt(3)
+    shadowModel.k2 *= 15;
     BasicState<H>& x = shadowRequest.initial;
     x = {x.u1 * m_lengthFactor, x.u2 * m_lengthFactor, x.v1 * speedFactor, x.v2 * speedFactor};
+    // the shadow read the same decimal input in the same precision, so it shares its rounding;
+    // a nudge of one rounding (never across the stop, never changing a sign) puts the input's
+    // representation into the estimate, as a wider shadow does by reading it afresh
+    using std::abs;
+    const H eps = epsilon<H>() / H(2);  // the unit roundoff: the most a read can be off
+    x.u1 += abs(x.u1) * eps;
+    if (x.u2 != shadowModel.gap) x.u2 -= abs(x.u2) * eps;
+    x.v1 -= x.v1 * eps;
+    x.v2 += x.v2 * eps;
     shadowRequest.tEnd = shadowRequest.tEnd / m_timeFactor;
   }
   shadowRequest.needs = Needs{};
@@ -106,7 +118,8 @@ template <typename S>
 std::string TrustMonitor<S>::shadowName() const {
   const std::string type = std::is_same_v<H, Quad> ? "binary128" : "long double";
   if constexpr (std::is_same_v<S, H>) {
-    return "shadow run in " + type + " on a chain scaled 3x in length, 1/sqrt(3) in time";
+    return "shadow run in " + type +
+           " on a chain scaled 3x in length, 5x in mass, 1/sqrt(3) in time";
   } else {
     return "shadow run in " + type;
   }

@@ -123,19 +123,29 @@ TEST(Contact, QuarticSearchAndSafeMarchAgreeOnResonantFlights) {
   EXPECT_GT(compared, 50);
 }
 
-TEST(Contact, CriticalTimesAreStationaryPointsOfTheGap) {
+TEST(Contact, GapPolynomialIsTheGapInTheHalfAngleTangent) {
+  // (1 + x^2)^2 (x2 - delta) at theta = 2 atan x, from the quartic and from the flight itself;
+  // its low coefficients are the start's own: c0 = x2 - delta, c1 = 2 y2 (exactly)
   const Model model = testing::resonantChain(0.5, 1.0, Branch::Lower);
-  const Modes modes = computeModes(model);
   for (const State& start : randomStarts(model, 50, 5)) {
     const testing::PhysicalFlight flight(model, start);
-    const auto points = criticalPointsResonant(flight.scaled());
-    EXPECT_GE(points.count, 2);  // a periodic motion has a highest and a lowest point
-    EXPECT_EQ(points.count % 2, 0);  // maxima and minima alternate around the circle
-    for (const auto& point : points) {
-      // scaled units: lengths by L (here the gap's power of two), time by 1/w2
-      const double t = point.time / flight.omega();
-      EXPECT_NEAR(flight.gapAndRate(t).second, 0.0, 1e-9 * modes.omegaSlow * model.gap);
-      EXPECT_NEAR(point.gap * flight.length(), flight.gap(t), 1e-14 * model.gap);
+    const Flight<double>& scaled = flight.scaled();
+    const std::array<double, 5> c = resonantGapPolynomial(scaled);
+    EXPECT_EQ(c[0], scaled.start().u2 - scaled.gapLevel());
+    EXPECT_EQ(c[1], 2 * scaled.start().v2);
+    double size = 0;
+    for (double x : {-7.0, -1.0, -0.3, 0.01, 0.5, 2.0, 11.0}) {
+      const double theta = 2 * std::atan(x);
+      const FlightTime<double> time = FlightTime<double>::nearest(theta);
+      const double square = 1 + x * x;
+      const double expected = square * square * scaled.gapAndRate(time).first;
+      double value = 0;
+      size = 0;
+      for (int i = 4; i >= 0; --i) {
+        value = value * x + c[i];
+        size = size * std::abs(x) + std::abs(c[i]);
+      }
+      EXPECT_NEAR(value, expected, 1e-14 * size) << x;
     }
   }
 }
