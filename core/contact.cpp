@@ -87,10 +87,10 @@ Contact<S> nextContactDetuned(const Flight<S>& flight, const S& horizon, std::st
     const bool nearAnchor = abs(point.offset) <= window;
     const S band = nearAnchor ? S(S(16) * eps * (abs(value) + abs(rate * point.offset))) : tolerance;
     const Reduced<S> plain{flight, point.anchor, 0};
-    // the previous point in this point's coordinates
-    const S previousOffset = previous.offset + twoPi<S>() * S(previous.anchor - point.anchor);
     if (value > 0) {
       // the march never steps over a contact, so the crossing lies after the previous point
+      // (taken in this point's coordinates)
+      const S previousOffset = previous.offset + twoPi<S>() * S(previous.anchor - point.anchor);
       const S previousValue = plain(previousOffset).first;
       if (previousValue <= 0) {
         return crossingAt(solveBracketed(plain, previousOffset, point.offset, previousValue, value,

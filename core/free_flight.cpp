@@ -101,10 +101,8 @@ Flight<S>::Flight(const Chain<S>& chain, const S& gap, const BasicState<S>& star
 }
 
 template <typename S>
-const typename Flight<S>::Anchor& Flight<S>::anchor(long long periods) const {
-  if (periods == 0 || m_chain->resonant) return m_anchors[0];
+const typename Flight<S>::Anchor& Flight<S>::newAnchor(long long periods) const {
   Anchor& cached = m_anchors[1];
-  if (cached.periods == periods) return cached;
   using std::round;
   const Anchor& origin = m_anchors[0];
   // the fast phase slips by 2 pi k (w1/w2 - 2) per k slow periods
@@ -114,7 +112,8 @@ const typename Flight<S>::Anchor& Flight<S>::anchor(long long periods) const {
   phaseOf(twoPi<S>() * slip, sine, cosineMinusOne);
   const S dc = origin.c[0] * cosineMinusOne + origin.a[0] * sine;
   const S da = -origin.c[0] * sine + origin.a[0] * cosineMinusOne;
-  cached = Anchor{};
+  // fields set one by one: Anchor{} would zero the Taylor rows, once per period of a march
+  cached.taylorReady = false;
   cached.periods = periods;
   cached.c = {origin.c[0] + dc, origin.c[1]};
   cached.a = {origin.a[0] + da, origin.a[1]};
@@ -176,7 +175,7 @@ int Flight<S>::taylorTerms(const S& s) const {
 }
 
 template <typename S>
-void Flight<S>::modalPhases(const S& s, std::array<S, 2>& sine,
+inline void Flight<S>::modalPhases(const S& s, std::array<S, 2>& sine,
                             std::array<S, 2>& cosineMinusOne) const {
   if (m_chain->resonant) {
     // the fast phase is exactly twice the slow one: one sincos serves both

@@ -97,7 +97,12 @@ class Flight {
     // contact)
     std::array<std::array<S, 2>, kMaxTaylorOrder + 2> derivatives;
   };
-  const Anchor& anchor(long long periods) const;
+  // the anchor at 2 pi `periods`: the start, or the cached other one (built on a miss)
+  const Anchor& anchor(long long periods) const {
+    if (periods == 0 || m_chain->resonant) return m_anchors[0];
+    return m_anchors[1].periods == periods ? m_anchors[1] : newAnchor(periods);
+  }
+  const Anchor& newAnchor(long long periods) const;
   void fillTaylor(const Anchor& anchor) const;
   int taylorTerms(const S& s) const;
   // per-mode (sin(w_j s), cos(w_j s) - 1)

@@ -150,6 +150,28 @@ TEST(Contact, GapPolynomialIsTheGapInTheHalfAngleTangent) {
   }
 }
 
+TEST(Contact, CrossingNearHalfPeriodIsFoundInTheFarChart) {
+  // GLOM1 peaks at 0 and T2 / 2. Started a little after a peak with its amplitude raised by
+  // 1 + eps, the flight crosses just before the next peak, near theta = pi, where tan(theta/2)
+  // runs off to infinity: the far chart must find it, as the march does
+  const Model model = testing::resonantChain(0.5);
+  const Modes modes = computeModes(model);
+  const testing::PhysicalFlight glom1(model, gloData(model, modes, 0.0));
+  const double delay = 0.01 / modes.omegaSlow;
+  for (double eps : {1e-5, 1e-8, 1e-11, 1e-14}) {
+    const State start = (1 + eps) * glom1.at(delay);
+    ASSERT_LT(start.u2, model.gap);
+    const auto contact = testing::PhysicalFlight(model, start).nextContact(kInfinity);
+    const auto march = testing::PhysicalFlight(model, start, true).nextContact(modes.T2);
+    ASSERT_EQ(contact.kind, ContactKind::Crossing) << eps;
+    ASSERT_EQ(march.kind, ContactKind::Crossing) << eps;
+    EXPECT_NEAR(contact.time, march.time, 1e-11 * modes.T2) << eps;
+    // the crossing lies sqrt(2 eps) / 2 before the peak (in slow phase), to leading order
+    const double peak = modes.T2 / 2 - delay;
+    EXPECT_NEAR((peak - contact.time) * modes.omegaSlow / std::sqrt(2 * eps), 0.5, 0.05) << eps;
+  }
+}
+
 TEST(Contact, NearGrazingReturnIsResolvedToRelativePrecision) {
   // GLO_0.5 data with v2 = -eps: it hits at T2 - s*, s* = -2 v2 / acc2 (1 + O(eps)), arriving
   // with exactly the speed it left with; plain evaluation of u2 - gap would call it a grazing
