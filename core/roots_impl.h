@@ -129,11 +129,18 @@ template <int D, typename S>
 void rootsOfDegree(const S* c, const S& lo, const S& hi, S* out, int& count);
 
 // The roots of a degree-D polynomial's derivative (coefficients `derivative`, degree D - 1) in
-// [lo, hi], ascending: for a quartic in closed form, else by isolation.
+// [lo, hi], ascending: for a quartic in closed form, else by isolation. The closed form divides
+// by the leading coefficient: a small one (a root far outside, near theta = pi in the contact
+// search) would leave the others to cancellation, so isolation takes those too.
 template <int D, typename S>
 void stationaryPoints(const S* derivative, const S& lo, const S& hi, S* out, int& count) {
   if constexpr (D == 4) {
-    if (derivative[3] != 0) return cubicSplitPoints(derivative, lo, hi, out, count);
+    using std::abs;
+    using std::max;
+    const S largest = max(max(abs(derivative[0]), abs(derivative[1])), abs(derivative[2]));
+    if (S(64) * abs(derivative[3]) >= largest && derivative[3] != 0) {
+      return cubicSplitPoints(derivative, lo, hi, out, count);
+    }
   }
   rootsOfDegree<D - 1>(derivative, lo, hi, out, count);
 }

@@ -53,6 +53,20 @@ TEST(Roots, FerrarisDegenerateResolventLosesNothing) {
   for (double x : near) EXPECT_NEAR(c[0] + x * (c[1] + x * (c[2] + x * (c[3] + x * c[4]))), 0, 1e-14);
 }
 
+TEST(Roots, StationaryPointsWithATinyLeadingCoefficient) {
+  // p' = (eps x - 1)(x - 0.2)(x + 0.6): a third stationary point at 1/eps, far outside. A closed
+  // form for the cubic divides by eps and leaves the two inside to cancellation (~1e-4 at
+  // eps = 1e-12, ~1e-8 after a Newton step); they must come out to rounding
+  for (double eps : {1e-3, 1e-8, 1e-12, 1e-200}) {
+    const std::array<double, 5> c = {1.0, 0.12, (-0.12 * eps - 0.4) / 2, (0.4 * eps - 1) / 3,
+                                     eps / 4};
+    const auto points = stationaryPointsInInterval(c, -1.0, 1.0);
+    ASSERT_EQ(points.count, 2) << eps;
+    EXPECT_NEAR(points.values[0], -0.6, 1e-15) << eps;
+    EXPECT_NEAR(points.values[1], 0.2, 1e-15) << eps;
+  }
+}
+
 TEST(Roots, RandomQuarticsInEveryPrecision) {
   std::mt19937 random(4);
   std::uniform_real_distribution<double> uniform(-1, 1);
