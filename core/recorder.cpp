@@ -66,6 +66,18 @@ void Recorder<S>::sampleUntil(const ExactStepper<S>& stepper, const S& segmentSt
 }
 
 template <typename S>
+void Recorder<S>::samplePoint(const S& tau, const BasicState<S>& scaled) {
+  const SampleSpec& spec = m_needs.samples;
+  if (spec.spacing <= 0 || m_result.samplesTruncated) return;
+  const double t = toDouble(m_scale.toPhysicalTime(tau));
+  if (t < m_nextSampleTime || t > spec.tEnd) return;
+  addSample(t, convertState<double>(m_scale.toPhysical(scaled)));
+  // the next sample is due one spacing after this one (a coarse step skips the ones it jumps)
+  m_nextSampleIndex = std::int64_t(std::floor((t - spec.tBegin) / spec.spacing)) + 1;
+  m_nextSampleTime = spec.tBegin + double(m_nextSampleIndex) * spec.spacing;
+}
+
+template <typename S>
 void Recorder<S>::record(const Step<S>& step) {
   using std::abs;
   using std::ldexp;

@@ -117,6 +117,9 @@ class Recorder {
   void record(const Step<S>& step);
   /// Dense samples of the motion of `stepper`'s last step up to scaled time `tauEnd`.
   void sampleUntil(const ExactStepper<S>& stepper, const S& segmentStart, const S& tauEnd);
+  /// A state of a time-stepping method's own solution at scaled time tau, kept when a sample is
+  /// due (such a method has no motion between its steps to sample: its steps are its output).
+  void samplePoint(const S& tau, const BasicState<S>& scaled);
   /// Stores the final state (scaled, converted here) at physical time t.
   void finish(StopReason reason, const S& t, const BasicState<S>& scaled);
 

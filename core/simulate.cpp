@@ -65,9 +65,10 @@ BasicSimulator<S>::BasicSimulator(const BasicModel<S>& model, const BasicRequest
                                            : S(twoPi<S>() * S(request.flightSearchPeriods));
   m_stepper.emplace(chain, m_scale.gap);
   m_recorder.emplace(chain, m_scale, m_state.x, request.needs, request.onEvent, m_result);
-  // one entry per contact: reserve up front (capped) rather than regrow a long section
+  // one entry per contact: reserve up front, capped (a section longer than the cap regrows
+  // geometrically; a cap of millions costs a page-mapping of hundreds of MB for every short run)
   const std::size_t expected =
-      std::size_t(std::clamp<std::int64_t>(request.maxContacts, 0, 4'000'000));
+      std::size_t(std::clamp<std::int64_t>(request.maxContacts, 0, 1 << 16));
   if (request.needs.events && !std::isfinite(request.needs.eventsUntil)) {
     m_result.events.reserve(expected);
   }

@@ -8,7 +8,8 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build pkg-config          # compiler and build
   libeigen3-dev                             # linear algebra (core)
-  libboost-dev                              # binary128 and exact rationals (core)
+  libboost-dev                              # binary128, exact rationals, Odeint (core)
+  libsundials-dev                           # CVODE: the comparison methods (core)
   qt6-base-dev qt6-charts-dev qt6-svg-dev   # explorer and command line
   libqt6opengl6-dev                         # Qt Charts needs Qt6OpenGL (only recommended)
   libgl-dev libvulkan-dev libxkbcommon-dev  # headers Qt6's CMake packages look for

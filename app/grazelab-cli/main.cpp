@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// grazelab-cli: `info` and `simulate` (DESIGN.md "Command line"). Exit 0 on success, 2 on
+// grazelab-cli: `info`, `simulate`, `report` and `stability` (DESIGN.md "Command line"). Exit 0 on success, 2 on
 // invalid input with one line on stderr and nothing on stdout; an interrupted run (SIGINT,
 // SIGTERM) ends its output cleanly and exits 130.
+#include <QApplication>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
+#include <cstring>
+#include <memory>
 #include <thread>
 
 #include <signal.h>
@@ -18,6 +22,7 @@
 #include "cli_output.h"
 #include "core/simulate.h"
 #include "core/trust.h"
+#include "report_command.h"
 
 namespace {
 
@@ -119,20 +124,41 @@ int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher,
 
 }  // namespace
 
+// `report` draws its pictures with Qt Charts, which needs a QApplication; without a display it
+// renders off screen. The other commands need Qt Core only.
+bool drawsPictures(int argc, char* argv[]) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "report") == 0) return true;
+  }
+  return false;
+}
+
 int main(int argc, char* argv[]) {
   InterruptWatcher watcher;  // first: its signal mask is inherited by every later thread
-  QCoreApplication app(argc, argv);
+  std::unique_ptr<QCoreApplication> application;
+  if (drawsPictures(argc, argv)) {
+    if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr &&
+        std::getenv("QT_QPA_PLATFORM") == nullptr) {
+      setenv("QT_QPA_PLATFORM", "offscreen", 1);
+    }
+    application = std::make_unique<QApplication>(argc, argv);
+  } else {
+    application = std::make_unique<QCoreApplication>(argc, argv);
+  }
   QCoreApplication::setApplicationName("grazelab-cli");
   QCoreApplication::setApplicationVersion("0.2.0");
 
   QCommandLineParser parser;
   parser.setApplicationDescription(
       "Exact event-driven simulation of a 2-dof chain against a rigid stop in 1:2 internal "
-      "resonance.\nCommands: info (the model and its derived quantities), simulate (a run).");
-  parser.addPositionalArgument("command", "info | simulate");
+      "resonance.\nCommands: info (the model and its derived quantities), simulate (a run), "
+      "report (every method against the exact solver: error against run time, --out DIR), "
+      "stability (every method on stiff and extreme cases, --out DIR).");
+  parser.addPositionalArgument("command", "info | simulate | report | stability");
   const QCommandLineOption help = parser.addHelpOption();
   const QCommandLineOption version = parser.addVersionOption();
   grazelab::cli::addOptions(parser);
+  grazelab::cli::addReportOptions(parser);
 
   if (!parser.parse(QCoreApplication::arguments())) return fail(parser.errorText());
   if (parser.isSet(help)) {
@@ -148,8 +174,22 @@ int main(int argc, char* argv[]) {
     return fail(repeated.join(", ") + " given more than once: give each option once");
   }
   const QStringList positional = parser.positionalArguments();
-  if (positional.size() != 1) return fail("expected one command, info or simulate (see --help)");
+  if (positional.size() != 1) {
+    return fail("expected one command: info, simulate, report or stability (see --help)");
+  }
   const QString command = positional.first();
+  if (command == "report" || command == "stability") {
+    QString error;
+    const int code = command == "report" ? grazelab::cli::runReport(parser, watcher.token(), error)
+                                         : grazelab::cli::runStability(parser, watcher.token(), error);
+    if (code == grazelab::cli::kExitInvalidInput) return fail(error);
+    if (code != 0 && !error.isEmpty()) std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
+    return watcher.interrupted() ? kInterrupted : code;
+  }
+  const QStringList reportOnly = grazelab::cli::reportOnlyOptionsSet(parser);
+  if (!reportOnly.isEmpty()) {
+    return fail(reportOnly.join(", ") + " only apply to 'report' and 'stability'");
+  }
   QString error;
   const auto precision = grazelab::cli::parsePrecisionOption(parser, error);
   if (!precision) return fail(error);
@@ -179,5 +219,5 @@ int main(int argc, char* argv[]) {
         return simulate<grazelab::core::Quad>(parser, watcher, *trust);
     }
   }
-  return fail(QStringLiteral("unknown command '%1': use info or simulate").arg(command));
+  return fail(QStringLiteral("unknown command '%1': use info, simulate, report or stability").arg(command));
 }

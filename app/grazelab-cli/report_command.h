@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QString>
+
+#include <stop_token>
+
+class QCommandLineParser;
+
+namespace grazelab::cli {
+
+/// Registers the options of `report` and `stability` (--out, --methods, --quick).
+void addReportOptions(QCommandLineParser& parser);
+
+/// The options that only `report` and `stability` take and that are set.
+QStringList reportOnlyOptionsSet(const QCommandLineParser& parser);
+
+/// Exit codes shared by the commands.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitInvalidInput = 2;
+inline constexpr int kExitInterrupted = 130;
+
+/// `grazelab-cli report`: the work-precision report (issue 8). Writes DIR/results.csv,
+/// work_precision.svg/.png, convergence.svg/.png and report.md, each atomically; progress on
+/// stderr. On an invalid input: one line on stderr (`error`), exit 2, nothing written.
+int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& error);
+
+/// `grazelab-cli stability`: the matrix of stiff and extreme cases. Writes DIR/matrix.csv and
+/// DIR/matrix.md atomically.
+int runStability(const QCommandLineParser& parser, std::stop_token stop, QString& error);
+
+}  // namespace grazelab::cli

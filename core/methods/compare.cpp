@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/methods/compare.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/methods/scaled_run.h"
+#include "core/simulate.h"
+
+namespace grazelab::core::methods {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// the reference chain: lengths 3x, masses 5x, stiffnesses 15x, so times are 1/sqrt(3)
+constexpr int kLengthFactor = 3;
+constexpr int kMassFactor = 5;
+
+State backToTask(const BasicState<Quad>& x, const Quad& speedFactor) {
+  return {toDouble(Quad(x.u1 / kLengthFactor)), toDouble(Quad(x.u2 / kLengthFactor)),
+          toDouble(Quad(x.v1 / speedFactor)), toDouble(Quad(x.v2 / speedFactor))};
+}
+
+std::vector<const Event*> contactsOf(const Result& result) {
+  std::vector<const Event*> contacts;
+  for (const Event& event : result.events) {
+    if (isContact(event.type)) contacts.push_back(&event);
+  }
+  return contacts;
+}
+
+}  // namespace
+
+Reference makeReference(const Task& task, const WorkBudget& budget, std::stop_token stop) {
+  const auto started = std::chrono::steady_clock::now();
+  Reference reference;
+  const std::string problem = taskProblem(task);
+  if (!problem.empty()) {
+    reference.run = refusedRun(task, problem);
+    return reference;
+  }
+  const Chain<double> chain = *makeChain(task.model).chain;
+  reference.period = twoPi<double>() / chain.omegaSlow;
+  reference.positionScale = task.model.gap;
+  reference.velocityScale = chain.ratio * chain.omegaSlow * task.model.gap;
+
+  BasicModel<Quad> model = convertModel<Quad>(task.model);
+  model.m1 *= kMassFactor;
+  model.m2 *= kMassFactor;
+  model.k1 *= kMassFactor * kLengthFactor;
+  model.k2 *= kMassFactor * kLengthFactor;
+  model.gap *= kLengthFactor;
+  const Quad timeFactor = sqrt(Quad(kLengthFactor));  // reference times are the task's / this
+  const Quad speedFactor = Quad(kLengthFactor) * timeFactor;
+  const BasicState<Quad> start = convertState<Quad>(task.start);
+  BasicRequest<Quad> request;
+  request.initial = {start.u1 * kLengthFactor, start.u2 * kLengthFactor, start.v1 * speedFactor,
+                     start.v2 * speedFactor};
+  request.tEnd = Quad(task.tEnd) / timeFactor;
+  request.maxContacts = budget.maxSteps;
+  request.needs.events = true;
+  BasicSimulator<Quad> simulator(model, request);
+  while (!simulator.advance(4096, stop)) {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (seconds > budget.maxSeconds) break;
+  }
+  const BasicResult<Quad>& result = simulator.result();
+  MethodRun& run = reference.run;
+  for (const BasicEvent<Quad>& e : result.events) {
+    run.result.events.push_back({toDouble(Quad(e.t * timeFactor)), e.type,
+                                 backToTask(e.before, speedFactor),
+                                 backToTask(e.after, speedFactor)});
+  }
+  run.result.final = backToTask(result.final, speedFactor);
+  run.result.tFinal = toDouble(Quad(result.tFinal * timeFactor));
+  run.result.cost = result.cost;
+  run.result.stop = result.stop;
+  run.maxEnergyDrift = result.cost.maxRelEnergyDrift;
+  run.steps = result.cost.contacts;
+  if (!simulator.done()) {
+    run.status = RunStatus::Budget;
+    run.reason = "the binary128 reference ran out of its budget";
+  } else if (result.stop == StopReason::TimeLimit || result.stop == StopReason::NoFurtherContact) {
+    run.status = RunStatus::Completed;
+  } else if (result.stop == StopReason::Cancelled) {
+    run.status = RunStatus::Cancelled;
+    run.reason = "cancelled";
+  } else {
+    run.status = result.stop == StopReason::InvalidInput ? RunStatus::Refused : RunStatus::Budget;
+    run.reason = "binary128 reference: " +
+                 (result.message.empty() ? std::string(toString(result.stop)) : result.message);
+  }
+  reference.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  run.seconds = reference.seconds;
+  return reference;
+}
+
+Errors compare(const Reference& reference, const MethodRun& run) {
+  Errors errors;
+  errors.energyDrift = run.maxEnergyDrift;
+  const bool bothComplete =
+      run.status == RunStatus::Completed && reference.run.status == RunStatus::Completed;
+  if (bothComplete) {
+    const State& a = run.result.final;
+    const State& b = reference.run.result.final;
+    errors.state = std::max({std::abs(a.u1 - b.u1) / reference.positionScale,
+                             std::abs(a.u2 - b.u2) / reference.positionScale,
+                             std::abs(a.v1 - b.v1) / reference.velocityScale,
+                             std::abs(a.v2 - b.v2) / reference.velocityScale});
+    if (!std::isfinite(errors.state)) errors.state = kNaN;
+  } else {
+    errors.state = kNaN;
+  }
+  const std::vector<const Event*> ref = contactsOf(reference.run.result);
+  const std::vector<const Event*> own = contactsOf(run.result);
+  const double quarter = reference.period / 4;
+  auto window = [&](std::size_t i) {
+    double w = quarter;
+    if (i > 0) w = std::min(w, (ref[i]->t - ref[i - 1]->t) / 2);
+    if (i + 1 < ref.size()) w = std::min(w, (ref[i + 1]->t - ref[i]->t) / 2);
+    return w;
+  };
+  // contacts after the end of a run that stopped early are not judged
+  const double judgedUntil = std::min(run.result.tFinal, reference.run.result.tFinal);
+  double worstTime = 0, worstSpeed = 0;
+  bool anyImpact = false;
+  std::size_t i = 0, j = 0;
+  while (i < ref.size() && j < own.size()) {
+    const double offset = own[j]->t - ref[i]->t;
+    if (std::abs(offset) <= window(i)) {
+      ++errors.matched;
+      worstTime = std::max(worstTime, std::abs(offset) / reference.period);
+      if (ref[i]->type == EventType::Impact && own[j]->type == EventType::Impact) {
+        anyImpact = true;
+        worstSpeed = std::max(worstSpeed, std::abs(own[j]->before.v2 - ref[i]->before.v2) /
+                                              reference.velocityScale);
+      }
+      ++i;
+      ++j;
+    } else if (offset < 0) {
+      if (own[j]->t <= judgedUntil) ++errors.extra;
+      ++j;
+    } else {
+      if (ref[i]->t <= judgedUntil) ++errors.missed;
+      ++i;
+    }
+  }
+  for (; i < ref.size(); ++i) {
+    if (ref[i]->t <= judgedUntil) ++errors.missed;
+  }
+  for (; j < own.size(); ++j) {
+    if (own[j]->t <= judgedUntil) ++errors.extra;
+  }
+  errors.contactTime = errors.matched > 0 ? worstTime : kNaN;
+  errors.impactSpeed = anyImpact ? worstSpeed : kNaN;
+  if (ref.empty() && own.empty()) errors.contactTime = 0;
+  return errors;
+}
+
+}  // namespace grazelab::core::methods

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "core/methods/scaled_run.h"
+
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
+#include <sundials/sundials_nonlinearsolver.h>
+#include <sundials/sundials_nvector.h>
+
+namespace grazelab::core::methods {
+
+/// SUNDIALS CVODE on the scaled chain's four first-order equations, with one root function
+/// g = x2 - delta; owns every SUNDIALS object. Used as a user of the library would: one
+/// internal step at a time (CV_ONE_STEP, so that budgets and the stop token are checked), a
+/// stop time at the horizon, and a restart (CVodeReInit) after every impact or switch.
+class CvodeIntegrator {
+ public:
+  struct Options {
+    bool bdf = true;           ///< BDF + Newton with the exact Jacobian; else Adams + fixed point
+    double rtol = 1e-8;        ///< relative tolerance; absolute = rtol (the scaled state is O(1))
+    double stopStiffness = 0;  ///< penalty: the scaled k_c acting while in contact
+    int rootDirection = 1;     ///< +1: only crossings toward the stop; 0: both ways
+  };
+  enum class Outcome { Step, Root, End, Error };
+
+  CvodeIntegrator(const ScaledRun& run, const Options& options);
+  ~CvodeIntegrator();
+  CvodeIntegrator(const CvodeIntegrator&) = delete;
+  CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
+
+  /// (Re)starts at tau from x; `inContact` selects the penalty force (penalty only).
+  void restart(double tau, const State& x, bool inContact);
+  /// One internal step toward the horizon: tau and x are where it stopped.
+  Outcome step(double& tau, State& x);
+  /// The error of the last Outcome::Error: CVODE's flag name and its message.
+  const std::string& error() const { return m_error; }
+  std::int64_t rhsEvaluations() const { return m_evaluations; }
+
+ private:
+  static int rhs(double t, N_Vector y, N_Vector ydot, void* self);
+  static int jacobian(double t, N_Vector y, N_Vector fy,
+                      SUNMatrix J, void* self, N_Vector, N_Vector, N_Vector);
+  static int root(double t, N_Vector y, double* g, void* self);
+  static void errorHandler(int code, const char* module, const char* function, char* message,
+                           void* self);
+
+  const ScaledRun& m_run;
+  Options m_options;
+  bool m_inContact = false;
+  bool m_started = false;
+  std::int64_t m_evaluations = 0;
+  std::string m_error;
+  std::string m_lastMessage;
+  SUNContext m_context = nullptr;
+  N_Vector m_y = nullptr;
+  SUNMatrix m_matrix = nullptr;
+  SUNLinearSolver m_linearSolver = nullptr;
+  SUNNonlinearSolver m_nonlinearSolver = nullptr;
+  void* m_memory = nullptr;
+};
+
+}  // namespace grazelab::core::methods

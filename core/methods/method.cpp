@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/methods/method.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/methods/runners.h"
+#include "core/methods/scaled_run.h"
+
+namespace grazelab::core::methods {
+
+std::string_view methodName(MethodKind kind) {
+  switch (kind) {
+    case MethodKind::Exact:
+      return "exact";
+    case MethodKind::MoreauJean:
+      return "moreau-jean";
+    case MethodKind::MoreauJeanTheta1:
+      return "moreau-jean-theta1";
+    case MethodKind::SchatzmanPaoli:
+      return "schatzman-paoli";
+    case MethodKind::Dopri5Events:
+      return "dopri5-events";
+    case MethodKind::CvodeAdams:
+      return "cvode-adams";
+    case MethodKind::CvodeBdf:
+      return "cvode-bdf";
+    case MethodKind::Penalty:
+      return "penalty";
+  }
+  return "unknown";
+}
+
+std::optional<MethodKind> parseMethod(std::string_view name) {
+  for (MethodKind kind : kAllMethods) {
+    if (methodName(kind) == name) return kind;
+  }
+  return std::nullopt;
+}
+
+std::string_view parameterName(MethodKind kind) {
+  switch (kind) {
+    case MethodKind::Exact:
+      return "eps";
+    case MethodKind::MoreauJean:
+    case MethodKind::MoreauJeanTheta1:
+    case MethodKind::SchatzmanPaoli:
+      return "h";
+    case MethodKind::Dopri5Events:
+    case MethodKind::CvodeAdams:
+    case MethodKind::CvodeBdf:
+      return "rtol";
+    case MethodKind::Penalty:
+      return "k_c";
+  }
+  return "";
+}
+
+std::string_view toString(RunStatus status) {
+  switch (status) {
+    case RunStatus::Completed:
+      return "completed";
+    case RunStatus::Budget:
+      return "budget";
+    case RunStatus::Failed:
+      return "failed";
+    case RunStatus::Refused:
+      return "refused";
+    case RunStatus::Cancelled:
+      return "cancelled";
+  }
+  return "unknown";
+}
+
+double MethodSetting::parameterValue() const {
+  if (kind != MethodKind::Exact) return value;
+  switch (precision) {
+    case Precision::Double:
+      return std::ldexp(1.0, -53);
+    case Precision::Long:
+      return std::ldexp(1.0, -64);
+    case Precision::Quad:
+      return std::ldexp(1.0, -113);
+  }
+  return 0;
+}
+
+std::string MethodSetting::label() const {
+  std::ostringstream out;
+  out << methodName(kind) << ' ';
+  if (kind == MethodKind::Exact) {
+    out << toString(precision);
+  } else {
+    out.precision(3);
+    out << parameterName(kind) << '=' << value;
+  }
+  return out.str();
+}
+
+MethodRun runMethod(const Task& task, const MethodSetting& setting, const WorkBudget& budget,
+                    std::stop_token stop) {
+  const double value = setting.value;
+  if (setting.kind != MethodKind::Exact && !(value > 0 && std::isfinite(value))) {
+    return refusedRun(task, std::string(parameterName(setting.kind)) +
+                                " must be positive and finite");
+  }
+  switch (setting.kind) {
+    case MethodKind::Exact:
+      return runExact(task, setting.precision, budget, stop);
+    case MethodKind::MoreauJean:
+      return runMoreauJean(task, 0.5, value, budget, stop);
+    case MethodKind::MoreauJeanTheta1:
+      return runMoreauJean(task, 1.0, value, budget, stop);
+    case MethodKind::SchatzmanPaoli:
+      return runSchatzmanPaoli(task, value, budget, stop);
+    case MethodKind::Dopri5Events:
+      return runDopri5Events(task, value, budget, stop);
+    case MethodKind::CvodeAdams:
+      return runCvode(task, false, value, budget, stop);
+    case MethodKind::CvodeBdf:
+      return runCvode(task, true, value, budget, stop);
+    case MethodKind::Penalty:
+      return runPenalty(task, value, setting.penaltyRtol, budget, stop);
+  }
+  return refusedRun(task, "unknown method");
+}
+
+}  // namespace grazelab::core::methods

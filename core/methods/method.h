@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/model.h"
+#include "core/recorder.h"
+#include "core/scalar.h"
+
+namespace grazelab::core::methods {
+
+/// The methods that can run the chain (issue 8): the exact solver and the standard methods of
+/// nonsmooth mechanics it is compared with. One file each in core/methods/.
+enum class MethodKind {
+  Exact,             ///< closed-form flight, contacts from polynomial roots (double/long/quad)
+  MoreauJean,        ///< Moreau-Jean time stepping, theta = 1/2, Newton impact law at velocity level
+  MoreauJeanTheta1,  ///< the same with theta = 1 (implicit Euler)
+  SchatzmanPaoli,    ///< central differences with the impact law on positions
+  Dopri5Events,      ///< Dormand-Prince 5(4) with dense output, contacts located, restarted
+  CvodeAdams,        ///< SUNDIALS CVODE, Adams-Moulton, root finding, restarted at impacts
+  CvodeBdf,          ///< SUNDIALS CVODE, BDF, root finding, restarted at impacts
+  Penalty,           ///< the stop as a stiff spring k_c (u2 - d)+, CVODE BDF
+};
+
+inline constexpr MethodKind kAllMethods[] = {
+    MethodKind::Exact,          MethodKind::MoreauJean,   MethodKind::MoreauJeanTheta1,
+    MethodKind::SchatzmanPaoli, MethodKind::Dopri5Events, MethodKind::CvodeAdams,
+    MethodKind::CvodeBdf,       MethodKind::Penalty};
+
+/// "exact", "moreau-jean", "moreau-jean-theta1", "schatzman-paoli", "dopri5-events",
+/// "cvode-adams", "cvode-bdf", "penalty".
+std::string_view methodName(MethodKind kind);
+std::optional<MethodKind> parseMethod(std::string_view name);
+
+/// The knob of a method: "h" (a fixed step [time]), "rtol" (a relative tolerance), "k_c" (the
+/// penalty stiffness [force/length]) or "eps" (the exact solver's unit roundoff: its precision).
+std::string_view parameterName(MethodKind kind);
+
+/// One setting of one method.
+struct MethodSetting {
+  MethodKind kind = MethodKind::Exact;
+  /// h, rtol or k_c (see parameterName); ignored by the exact solver, whose knob is `precision`.
+  double value = 0;
+  Precision precision = Precision::Double;  ///< exact only
+  /// The penalty method's CVODE tolerance (its parameter is k_c).
+  double penaltyRtol = 1e-10;
+  /// The value in the parameter's column: `value`, or the unit roundoff of `precision`.
+  double parameterValue() const;
+  /// e.g. "moreau-jean h=0.001", "exact quad".
+  std::string label() const;
+};
+
+/// What a method may spend. Every method checks both (and its stop token) at least every few
+/// hundred steps, so none can hang.
+struct WorkBudget {
+  std::int64_t maxSteps = 200'000'000;  ///< time steps (or contacts, for the exact solver)
+  double maxSeconds = 60;               ///< wall time
+};
+
+/// How a method's run ended.
+enum class RunStatus {
+  Completed,  ///< reached the end time
+  Budget,     ///< ran out of steps or seconds first
+  Failed,     ///< the method broke down (a non-finite state, a solver error, chattering)
+  Refused,    ///< the method cannot take this input (and said why before running)
+  Cancelled,  ///< the stop token was triggered
+};
+std::string_view toString(RunStatus status);
+
+/// The same model, start and horizon for every method.
+struct Task {
+  Model model;
+  State start;
+  double tEnd = 0;  ///< the horizon [time]
+  Needs needs;      ///< what to keep (the events, samples for an overlay)
+};
+
+/// What every method returns: the recorder's result (events with their states, final state,
+/// energy, cost) plus the method's own work and why it stopped.
+struct MethodRun {
+  Result result;
+  std::int64_t steps = 0;           ///< time steps taken (contacts for the exact solver)
+  std::int64_t rhsEvaluations = 0;  ///< right-hand side evaluations, where the method has them
+  double seconds = 0;               ///< wall time of the run
+  double maxEnergyDrift = 0;        ///< max |E - E0| / E0 over the event states and the end
+  RunStatus status = RunStatus::Completed;
+  std::string reason;               ///< one line: why it stopped, or what it did at a tangency
+};
+
+/// Runs `setting` on `task`. Never throws for bad input: an unusable model or start is a
+/// Refused run with its reason.
+MethodRun runMethod(const Task& task, const MethodSetting& setting,
+                    const WorkBudget& budget = {}, std::stop_token stop = {});
+
+}  // namespace grazelab::core::methods

@@ -1,0 +1,358 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/methods/stability.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "core/methods/scaled_run.h"
+#include "core/orbits.h"
+#include "core/setup.h"
+#include "core/simulate.h"
+
+namespace grazelab::core::methods {
+namespace {
+
+/// The default problem's push, (0, 0, 0.05, -0.05) at w2 = 1/sqrt(2), d = 1, in units of w2 d.
+constexpr double kDefaultPush = 0.05 * 1.4142135623730951;
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+/// GLO_lambda of a chain pushed by `push` w2 d in (v1, -v2).
+StabilityCase gloCase(std::string name, std::string description, const Model& model,
+                      double lambda, double push) {
+  StabilityCase result{std::move(name), std::move(description), std::nullopt, {}, {}, {}, 0};
+  const std::string problem = describe(validate(model));
+  if (!problem.empty()) {
+    result.problem = problem;
+    return result;
+  }
+  const ChainOrProblem<double> formed = makeChain(model);
+  if (!formed.chain) {
+    result.problem = formed.problem;
+    return result;
+  }
+  const Chain<double>& chain = *formed.chain;
+  StartSpec<double> spec;
+  spec.kind = StartSpec<double>::Kind::Glo;
+  spec.lambda = lambda;
+  const double speed = push * chain.omegaSlow * model.gap;
+  if (push != 0) spec.perturbation = State{0, 0, speed, -speed};
+  const StartOrProblem<double> start = makeStart(chain, spec);
+  if (!start.start) {
+    result.problem = start.problem;
+    return result;
+  }
+  const double period = twoPi<double>() / chain.omegaSlow;
+  result.task = Task{model, start.start->state, kCasePeriods * period, {}};
+  return result;
+}
+
+Model designed(double beta, Branch branch, double gap = 1) {
+  Model model;
+  model.m1 = 1;
+  model.m2 = beta;
+  model.k1 = 1;
+  model.gap = gap;
+  model.design = branch;
+  model.k2 = designKappa(beta, branch);
+  return model;
+}
+
+/// k2/k1 of the chain with m1 = k1 = 1, m2 = beta whose frequencies have the ratio r (upper
+/// branch): from (1 + r^2)^2 / r^2 = s^2 / p with s = 1 + k + k / beta, p = k / beta, solved in
+/// long double and rounded once.
+double kappaForRatio(double beta, long double r) {
+  const long double c = (1 + r * r) * (1 + r * r) / (r * r);
+  const long double a = 1 + 1 / (long double)beta;
+  const long double b = c / beta - 2 * a;
+  return double((b + std::sqrt(b * b - 4 * a * a)) / (2 * a * a));
+}
+
+Model detuned(double beta, double kappa) {
+  Model model;
+  model.m2 = beta;
+  model.k2 = kappa;
+  model.design.reset();
+  return model;
+}
+
+}  // namespace
+
+std::string_view toString(CellVerdict verdict) {
+  switch (verdict) {
+    case CellVerdict::Ok:
+      return "ok";
+    case CellVerdict::Inaccurate:
+      return "inaccurate";
+    case CellVerdict::Refused:
+      return "refused";
+    case CellVerdict::Budget:
+      return "budget";
+    case CellVerdict::Failed:
+      return "failed";
+  }
+  return "failed";
+}
+
+std::vector<StabilityCase> stabilityCases(bool quick) {
+  std::vector<StabilityCase> cases;
+  const double push = kDefaultPush;
+  cases.push_back(gloCase("default", "m2/m1 = 1/2 upper, d = 1, GLO_0.5 pushed (the report's problem)",
+                          designed(0.5, Branch::Upper), 0.5, push));
+  const std::vector<double> ratios =
+      quick ? std::vector<double>{1e-12} : std::vector<double>{1e-12, 1e-6, 1e-3, 0.1, 0.5, 0.5625};
+  for (Branch branch : {Branch::Upper, Branch::Lower}) {
+    if (quick && branch == Branch::Lower) break;
+    for (double beta : ratios) {
+      const std::string b(toString(branch));
+      cases.push_back(gloCase("mass-ratio-" + number(beta) + "-" + b,
+                              "m2/m1 = " + number(beta) + ", " + b + " branch, GLO_0.5 pushed",
+                              designed(beta, branch), 0.5, push));
+    }
+  }
+  for (double kappa : quick ? std::vector<double>{1e6} : std::vector<double>{1e-6, 1e-3, 1, 1e3, 1e6}) {
+    cases.push_back(gloCase("detuned-k2-" + number(kappa),
+                            "detuned: k2/k1 = " + number(kappa) + ", m2/m1 = 1/2, GLO_0.5 data pushed",
+                            detuned(0.5, kappa), 0.5, push));
+  }
+  for (double offset : quick ? std::vector<double>{1e-13} : std::vector<double>{1e-4, 1e-7, 1e-10, 1e-13}) {
+    for (int sign : {+1, -1}) {
+      const Model model = detuned(0.5, kappaForRatio(0.5, 2.0L + sign * (long double)offset));
+      const ChainOrProblem<double> formed = makeChain(model);
+      const std::string ratio = std::string(sign > 0 ? "2+" : "2-") + number(offset);
+      const std::string actual =
+          formed.chain ? (formed.chain->resonant ? "exactly resonant after rounding"
+                                                 : "w1/w2 - 2 = " + number(formed.chain->detuning))
+                       : "no chain";
+      cases.push_back(gloCase("near-resonant-" + ratio, "w1/w2 = " + ratio + " (k2 rounded: " + actual + "), GLO_0.5 pushed",
+                              model, 0.5, push));
+    }
+  }
+  for (double gap : quick ? std::vector<double>{1e12} : std::vector<double>{1e-12, 1e12}) {
+    cases.push_back(gloCase("gap-" + number(gap), "gap d = " + number(gap) + ", GLO_0.5 pushed (push scaled with d)",
+                            designed(0.5, Branch::Upper, gap), 0.5, push));
+  }
+  for (double epsilon : quick ? std::vector<double>{1e-15} : std::vector<double>{1e-15, 1e-12, 1e-9, 1e-6, 1e-3, 1e-1}) {
+    cases.push_back(gloCase("perturbation-" + number(epsilon),
+                            "GLO_0.5 pushed by " + number(epsilon) + " w2 d in (v1, -v2): near grazing",
+                            designed(0.5, Branch::Upper), 0.5, epsilon));
+  }
+  for (double lambda : quick ? std::vector<double>{4.0 / 3.0} : std::vector<double>{0, 1, 4.0 / 3.0, 1.5}) {
+    const std::string what = lambda > 4.0 / 3.0 ? "pressed on the stop: sticks" : "grazing every T2";
+    cases.push_back(gloCase("lambda-" + number(lambda), "GLO_lambda, lambda = " + number(lambda) + ", unperturbed (" + what + ")",
+                            designed(0.5, Branch::Upper), lambda, 0));
+  }
+  {
+    StabilityCase sticking{"sticking-start", "on the stop at rest with u1 = 1.5 d: pressed, stuck, released",
+                           std::nullopt, {}, {}, {}, 0};
+    const Model model = designed(0.5, Branch::Upper);
+    const double period = twoPi<double>() / makeChain(model).chain->omegaSlow;
+    sticking.task = Task{model, State{1.5, 1, 0, 0}, kCasePeriods * period, {}};
+    cases.push_back(sticking);
+  }
+  for (double kc : quick ? std::vector<double>{1e12} : std::vector<double>{1e2, 1e4, 1e6, 1e8, 1e10, 1e12}) {
+    StabilityCase row = gloCase("penalty-kc-" + number(kc), "the default problem with penalty stiffness k_c = " + number(kc) + " k1",
+                                designed(0.5, Branch::Upper), 0.5, push);
+    row.only = MethodKind::Penalty;
+    row.penaltyStiffness = kc;
+    cases.push_back(row);
+  }
+  {
+    const std::int64_t contacts = quick ? 100'000 : 10'000'000;
+    StabilityCase row = gloCase("long-run-" + number(double(contacts)),
+                                number(double(contacts)) + " contacts of the default problem: energy drift and time per contact along the run",
+                                designed(0.5, Branch::Upper), 0.5, push);
+    row.longRunContacts = contacts;
+    cases.push_back(row);
+  }
+  return cases;
+}
+
+MethodSetting standardSetting(MethodKind kind, double period, double k1,
+                              std::optional<double> penaltyStiffness) {
+  switch (kind) {
+    case MethodKind::Exact:
+      return {kind, 0, Precision::Double};
+    case MethodKind::MoreauJean:
+    case MethodKind::MoreauJeanTheta1:
+    case MethodKind::SchatzmanPaoli:
+      return {kind, period / 1000};
+    case MethodKind::Dopri5Events:
+    case MethodKind::CvodeAdams:
+    case MethodKind::CvodeBdf:
+      return {kind, 1e-8};
+    case MethodKind::Penalty:
+      return {kind, k1 * penaltyStiffness.value_or(1e8), Precision::Double, 1e-10};
+  }
+  return {kind, 0};
+}
+
+namespace {
+
+CellVerdict verdictOf(RunStatus status) {
+  switch (status) {
+    case RunStatus::Completed:
+      return CellVerdict::Ok;
+    case RunStatus::Budget:
+      return CellVerdict::Budget;
+    case RunStatus::Refused:
+      return CellVerdict::Refused;
+    case RunStatus::Failed:
+    case RunStatus::Cancelled:
+      return CellVerdict::Failed;
+  }
+  return CellVerdict::Failed;
+}
+
+void judge(StabilityCell& cell, const MethodRun& run, double tolerance) {
+  cell.verdict = verdictOf(run.status);
+  if (cell.verdict != CellVerdict::Ok) {
+    cell.reason = run.reason.empty() ? std::string(toString(run.status)) : run.reason;
+    return;
+  }
+  std::vector<std::string> problems;
+  const Errors& e = cell.errors;
+  if (!(e.state <= tolerance)) problems.push_back("state error " + number(e.state) + " > " + number(tolerance));
+  if (e.contactTime > tolerance) problems.push_back("contact time error " + number(e.contactTime) + " T2");
+  if (e.missed > 0) problems.push_back(std::to_string(e.missed) + " contacts missed");
+  if (e.extra > 0) problems.push_back(std::to_string(e.extra) + " extra contacts");
+  if (!std::isfinite(e.energyDrift)) problems.push_back("energy not finite");
+  if (problems.empty()) return;
+  cell.verdict = CellVerdict::Inaccurate;
+  for (std::size_t i = 0; i < problems.size(); ++i) cell.reason += (i ? "; " : "") + problems[i];
+}
+
+void runLong(const StabilityCase& row, const std::vector<MethodKind>& methods,
+             const WorkBudget& budget, const std::function<void(const StabilityCell&)>& onCell,
+             std::vector<LongRunMark>* marks, std::stop_token stop) {
+  const Task& task = *row.task;
+  for (MethodKind kind : methods) {
+    StabilityCell cell;
+    cell.caseName = row.name;
+    cell.method = kind;
+    cell.setting = standardSetting(kind, task.tEnd / kCasePeriods, task.model.k1);
+    cell.errors.state = cell.errors.contactTime = cell.errors.impactSpeed =
+        std::numeric_limits<double>::quiet_NaN();
+    if (kind != MethodKind::Exact) {
+      // as long as the exact run takes, at most; the time steppers need ~1000 steps per T2
+      Task longTask = task;
+      longTask.tEnd = task.tEnd / kCasePeriods * double(row.longRunContacts);
+      longTask.needs.events = false;
+      WorkBudget shortBudget = budget;
+      shortBudget.maxSeconds = std::min(budget.maxSeconds, 2.0);
+      const MethodRun run = runMethod(longTask, cell.setting, shortBudget, stop);
+      cell.seconds = run.seconds;
+      cell.errors.energyDrift = run.maxEnergyDrift;
+      cell.verdict = verdictOf(run.status);
+      cell.reason = run.status == RunStatus::Completed ? "" : run.reason;
+      if (onCell) onCell(cell);
+      continue;
+    }
+    Request request;
+    request.initial = task.start;
+    request.maxContacts = row.longRunContacts;
+    request.needs.events = false;
+    Simulator simulator(task.model, request);
+    const auto started = std::chrono::steady_clock::now();
+    auto previous = started;
+    std::int64_t previousContacts = 0;
+    for (std::int64_t mark = 1000; mark <= row.longRunContacts && !stop.stop_requested(); mark *= 10) {
+      simulator.advance(mark - simulator.result().cost.contacts, stop);
+      const auto now = std::chrono::steady_clock::now();
+      const Result& result = simulator.result();
+      const std::int64_t contacts = result.cost.contacts;
+      if (marks) {
+        marks->push_back({contacts, simulator.scale().toPhysicalTime(simulator.state().tau),
+                          result.cost.maxRelEnergyDrift,
+                          std::chrono::duration<double, std::nano>(now - previous).count() /
+                              double(std::max<std::int64_t>(1, contacts - previousContacts))});
+      }
+      previous = now;
+      previousContacts = contacts;
+      if (simulator.done()) break;
+    }
+    const Result& result = simulator.result();
+    cell.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    cell.errors.energyDrift = result.cost.maxRelEnergyDrift;
+    if (stop.stop_requested()) {
+      cell.verdict = CellVerdict::Failed;
+      cell.reason = "cancelled";
+    } else if (result.cost.contacts < row.longRunContacts) {
+      cell.verdict = CellVerdict::Failed;
+      cell.reason = "stopped after " + std::to_string(result.cost.contacts) + " contacts: " +
+                    std::string(toString(result.stop));
+    } else if (!(result.cost.maxRelEnergyDrift <= kExactTolerance)) {
+      cell.verdict = CellVerdict::Inaccurate;
+      cell.reason = "energy drift " + number(result.cost.maxRelEnergyDrift);
+    }
+    if (onCell) onCell(cell);
+  }
+}
+
+}  // namespace
+
+void runStabilityCase(const StabilityCase& row, const std::vector<MethodKind>& methods,
+                      const WorkBudget& budget,
+                      const std::function<void(const StabilityCell&)>& onCell,
+                      std::vector<LongRunMark>* longRun, std::stop_token stop) {
+  auto refuseAll = [&](const std::string& reason) {
+    for (MethodKind kind : methods) {
+      StabilityCell cell;
+      cell.caseName = row.name;
+      cell.method = kind;
+      cell.verdict = CellVerdict::Refused;
+      cell.reason = reason;
+      cell.errors.state = cell.errors.contactTime = cell.errors.impactSpeed =
+          cell.errors.energyDrift = std::numeric_limits<double>::quiet_NaN();
+      if (onCell) onCell(cell);
+    }
+  };
+  if (!row.task) {
+    refuseAll("the case cannot be formed: " + row.problem);
+    return;
+  }
+  if (row.longRunContacts > 0) {
+    runLong(row, methods, budget, onCell, longRun, stop);
+    return;
+  }
+  const Task& task = *row.task;
+  Task withEvents = task;
+  withEvents.needs.events = true;
+  WorkBudget referenceBudget = budget;
+  referenceBudget.maxSeconds = std::max(budget.maxSeconds, 60.0);
+  const Reference reference = makeReference(withEvents, referenceBudget, stop);
+  const double period = reference.period;
+  for (MethodKind kind : methods) {
+    StabilityCell cell;
+    cell.caseName = row.name;
+    cell.method = kind;
+    cell.setting = standardSetting(kind, period, task.model.k1, row.penaltyStiffness);
+    if (row.only && *row.only != kind) {
+      cell.verdict = CellVerdict::Refused;
+      cell.reason = "not applicable: this row varies the penalty stiffness only (the other "
+                    "methods on this problem: row 'default')";
+      cell.errors.state = cell.errors.contactTime = cell.errors.impactSpeed =
+          cell.errors.energyDrift = std::numeric_limits<double>::quiet_NaN();
+      if (onCell) onCell(cell);
+      continue;
+    }
+    const MethodRun run = runMethod(withEvents, cell.setting, budget, stop);
+    cell.seconds = run.seconds;
+    cell.errors = compare(reference, run);
+    if (reference.run.status != RunStatus::Completed) {
+      cell.verdict = CellVerdict::Refused;
+      cell.reason = "not judged: no binary128 reference (" + reference.run.reason + ")";
+    } else {
+      judge(cell, run, kind == MethodKind::Exact ? kExactTolerance : kStabilityTolerance);
+    }
+    if (onCell) onCell(cell);
+  }
+}
+
+}  // namespace grazelab::core::methods

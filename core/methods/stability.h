@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "core/methods/compare.h"
+
+namespace grazelab::core::methods {
+
+/// One row of the stability matrix: a stiff or extreme problem, run by every method.
+struct StabilityCase {
+  std::string name;         ///< e.g. "mass-ratio-1e-12-upper"
+  std::string description;  ///< one line for the table
+  /// The problem; nothing when it cannot be formed (then `problem` says why, and every cell
+  /// is refused with that reason).
+  std::optional<Task> task;
+  std::string problem;
+  /// Only this method runs here (the penalty stiffness rows); the others are refused as not
+  /// applicable.
+  std::optional<MethodKind> only;
+  /// The penalty stiffness of this row (penalty rows), else the standard one.
+  std::optional<double> penaltyStiffness;
+  /// The long exact run: contacts instead of a horizon (no binary128 reference that long).
+  std::int64_t longRunContacts = 0;
+};
+
+/// The verdict of one cell.
+enum class CellVerdict { Ok, Inaccurate, Refused, Budget, Failed };
+std::string_view toString(CellVerdict verdict);
+
+/// A finished cell.
+struct StabilityCell {
+  std::string caseName;
+  MethodKind method = MethodKind::Exact;
+  MethodSetting setting;
+  double seconds = 0;
+  Errors errors;
+  CellVerdict verdict = CellVerdict::Ok;
+  std::string reason;  ///< one line; empty when ok
+};
+
+/// Measurements along the long exact run: drift and cost as contacts accumulate.
+struct LongRunMark {
+  std::int64_t contacts = 0;
+  double t = 0;
+  double energyDrift = 0;        ///< max |E - E0| / E0 so far
+  double nanosecondsPerContact = 0;  ///< over the stretch since the previous mark
+};
+
+/// Every case runs this many slow periods (the long run excepted).
+inline constexpr double kCasePeriods = 20;
+
+/// The accuracy an "ok" cell holds: every time stepper at its standard setting must reach it;
+/// the exact solver is held to its own contract (kOkTolerance of the trust estimate, 1e-9).
+inline constexpr double kStabilityTolerance = 1e-3;
+inline constexpr double kExactTolerance = 1e-9;
+
+/// The cases of the matrix. `quick`: a subset that runs in seconds (for ctest).
+std::vector<StabilityCase> stabilityCases(bool quick);
+
+/// The standard setting of each method in the matrix, for a problem of slow period T2 and
+/// spring k1: h = T2 / 1000, rtol = 1e-8, k_c = 1e8 k1 (rtol 1e-10), exact in double.
+MethodSetting standardSetting(MethodKind kind, double period, double k1,
+                              std::optional<double> penaltyStiffness = std::nullopt);
+
+/// Runs one case with every method (`methods`), calling `onCell` as each cell finishes.
+/// `longRun` receives the marks of a long exact run.
+void runStabilityCase(const StabilityCase& stabilityCase, const std::vector<MethodKind>& methods,
+                      const WorkBudget& budget,
+                      const std::function<void(const StabilityCell&)>& onCell,
+                      std::vector<LongRunMark>* longRun, std::stop_token stop = {});
+
+}  // namespace grazelab::core::methods

@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/methods/work_precision.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/simulate.h"
+
+namespace grazelab::core::methods {
+namespace {
+
+constexpr double kRoundingFloor = 1e-13;
+constexpr double kSaturated = 1e-2;
+
+double errorOf(const WorkPrecisionPoint& point, ErrorMeasure measure) {
+  return measure == ErrorMeasure::State ? point.errors.state : point.errors.contactTime;
+}
+
+bool usable(const WorkPrecisionPoint& point) {
+  return point.status == RunStatus::Completed && std::isfinite(point.errors.state) &&
+         point.secondsMin > 0;
+}
+
+}  // namespace
+
+WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
+                                const MethodSetting& setting, const WorkBudget& budget,
+                                const TimingPolicy& timing, std::stop_token stop) {
+  WorkPrecisionPoint point;
+  point.setting = setting;
+  std::vector<double> seconds;
+  double spent = 0;
+  for (int run = 0; run < std::max(1, timing.runs); ++run) {
+    MethodRun result = runMethod(task, setting, budget, stop);
+    seconds.push_back(result.seconds);
+    spent += result.seconds;
+    if (run == 0) {
+      point.errors = compare(reference, result);
+      point.status = result.status;
+      point.reason = result.reason;
+      point.steps = result.steps;
+    }
+    // a run that did not complete is not repeated: its time says nothing more
+    if (result.status != RunStatus::Completed || spent > timing.capSeconds ||
+        stop.stop_requested()) {
+      break;
+    }
+  }
+  std::sort(seconds.begin(), seconds.end());
+  point.runs = int(seconds.size());
+  point.secondsMin = seconds.front();
+  const std::size_t n = seconds.size();
+  point.secondsMedian = n % 2 == 1 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
+  return point;
+}
+
+std::vector<MethodSetting> reportSettings(MethodKind kind, double period, double k1, bool quick) {
+  std::vector<MethodSetting> settings;
+  auto add = [&](double value) { settings.push_back({kind, value}); };
+  switch (kind) {
+    case MethodKind::Exact:
+      for (Precision precision : {Precision::Double, Precision::Long, Precision::Quad}) {
+        settings.push_back({kind, 0, precision});
+      }
+      break;
+    case MethodKind::MoreauJean:
+    case MethodKind::MoreauJeanTheta1:
+    case MethodKind::SchatzmanPaoli: {
+      // h / T2 = 1e-3 ... 1e-6 (quick: ... 1e-5) in half decades
+      const int last = quick ? 4 : 6;
+      for (int i = 0; i <= last; ++i) add(period * 1e-3 * std::pow(10.0, -0.5 * i));
+      break;
+    }
+    case MethodKind::Dopri5Events:
+    case MethodKind::CvodeAdams:
+    case MethodKind::CvodeBdf:
+      for (int e = 3; e <= 13; e += quick ? 2 : 1) add(std::pow(10.0, -e));
+      break;
+    case MethodKind::Penalty:
+      for (int e = 2; e <= 12; e += quick ? 2 : 1) add(k1 * std::pow(10.0, e));
+      break;
+  }
+  return settings;
+}
+
+std::optional<Slope> fittedSlope(const std::vector<WorkPrecisionPoint>& points,
+                                 ErrorMeasure measure) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (const WorkPrecisionPoint& point : points) {
+    const double error = errorOf(point, measure);
+    if (!usable(point) || point.errors.missed > 0 || point.errors.extra > 0) continue;
+    if (!(error > kRoundingFloor && error < kSaturated)) continue;
+    // smaller is finer for every knob: h, rtol, eps, and 1 / k_c
+    const double knob = point.setting.parameterValue();
+    const double x = std::log10(point.setting.kind == MethodKind::Penalty ? 1 / knob : knob);
+    const double y = std::log10(error);
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+    ++n;
+  }
+  if (n < 3) return std::nullopt;
+  const double denominator = n * sxx - sx * sx;
+  if (!(denominator > 0)) return std::nullopt;
+  return Slope{(n * sxy - sx * sy) / denominator, n};
+}
+
+std::optional<double> secondsToReach(const std::vector<WorkPrecisionPoint>& points,
+                                     double target) {
+  std::vector<const WorkPrecisionPoint*> sorted;
+  for (const WorkPrecisionPoint& point : points) {
+    if (usable(point)) sorted.push_back(&point);
+  }
+  std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->secondsMin < b->secondsMin; });
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    const WorkPrecisionPoint& here = *sorted[i];
+    if (here.errors.state > target) continue;
+    // the first point (by cost) at the target: interpolate from the cheaper one before it
+    if (i == 0 || !(sorted[i - 1]->errors.state > 0) || !(here.errors.state > 0)) {
+      return here.secondsMin;
+    }
+    const WorkPrecisionPoint& before = *sorted[i - 1];
+    const double x0 = std::log10(before.errors.state), x1 = std::log10(here.errors.state);
+    const double y0 = std::log10(before.secondsMin), y1 = std::log10(here.secondsMin);
+    const double fraction = (std::log10(target) - x0) / (x1 - x0);
+    return std::pow(10.0, y0 + std::clamp(fraction, 0.0, 1.0) * (y1 - y0));
+  }
+  return std::nullopt;
+}
+
+const WorkPrecisionPoint* cheapestReaching(const std::vector<WorkPrecisionPoint>& points,
+                                           double target) {
+  const WorkPrecisionPoint* best = nullptr;
+  for (const WorkPrecisionPoint& point : points) {
+    if (!usable(point) || point.errors.state > target) continue;
+    if (best == nullptr || point.secondsMin < best->secondsMin) best = &point;
+  }
+  return best;
+}
+
+Trust startTrust(const Task& task, std::stop_token stop) {
+  BasicRequest<long double> shadowRequest;
+  shadowRequest.initial = convertState<long double>(task.start);
+  shadowRequest.tEnd = task.tEnd;
+  shadowRequest.maxContacts = std::numeric_limits<std::int64_t>::max();
+  TrustMonitor<double> monitor(convertModel<long double>(task.model), shadowRequest,
+                               TrustMode::Full);
+  Request request;
+  request.initial = task.start;
+  request.tEnd = task.tEnd;
+  request.maxContacts = std::numeric_limits<std::int64_t>::max();
+  request.needs.events = false;
+  request.onEvent = [&monitor](const Event& event) { monitor.observe(event); };
+  const Result result = simulate(task.model, request, stop);
+  return monitor.finish(result);
+}
+
+}  // namespace grazelab::core::methods

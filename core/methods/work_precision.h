@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "core/methods/compare.h"
+#include "core/trust.h"
+
+namespace grazelab::core::methods {
+
+/// How a setting is timed: a fixed number of runs, fewer once a time cap is spent (at least
+/// one), minimum and median kept (DiffEqDevTools' practice).
+struct TimingPolicy {
+  int runs = 5;
+  double capSeconds = 3;
+};
+
+/// One row of the work-precision report: one setting of one method.
+struct WorkPrecisionPoint {
+  MethodSetting setting;
+  double secondsMin = 0;
+  double secondsMedian = 0;
+  int runs = 0;
+  std::int64_t steps = 0;
+  Errors errors;
+  RunStatus status = RunStatus::Completed;
+  std::string reason;
+};
+
+/// Times `setting` on the task and measures its errors against the reference (from its first
+/// run; every run of a setting computes the same numbers).
+WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
+                                const MethodSetting& setting, const WorkBudget& budget,
+                                const TimingPolicy& timing, std::stop_token stop = {});
+
+/// The settings the report sweeps for a method on a problem with slow period T2: steps h from
+/// 1e-3 T2 down by half decades, tolerances 1e-3 ... 1e-13, k_c 1e2 ... 1e12 (k_c relative to
+/// k1 of the model), the exact solver in its three precisions. `quick`: fewer and cheaper ones.
+std::vector<MethodSetting> reportSettings(MethodKind kind, double period, double k1, bool quick);
+
+/// Which error a convergence fit uses.
+enum class ErrorMeasure { State, ContactTime };
+
+/// A least-squares slope of log(error) against log(parameter) over a method's points (for the
+/// penalty method against log(1 / k_c), so that every slope is positive when the error falls).
+struct Slope {
+  double value = 0;
+  int points = 0;  ///< points in the fit; no fit below 3
+};
+
+/// The fit over the asymptotic range: completed runs with every contact matched and the error
+/// above the double-rounding floor (1e-13) and below 1e-2 (beyond it the motion has already
+/// left the reference's path, and the error saturates). Nothing when fewer than 3 points qualify.
+std::optional<Slope> fittedSlope(const std::vector<WorkPrecisionPoint>& points,
+                                 ErrorMeasure measure);
+
+/// The run time at which a method's state error reaches `target`: log-log interpolation
+/// between its two points that bracket it (the cheapest one below it when none is above).
+/// Nothing when no completed setting reaches it.
+std::optional<double> secondsToReach(const std::vector<WorkPrecisionPoint>& points,
+                                     double target);
+
+/// The cheapest completed point whose state error is at most `target`.
+const WorkPrecisionPoint* cheapestReaching(const std::vector<WorkPrecisionPoint>& points,
+                                           double target);
+
+/// The predictability horizon of a task's start: the trust estimate of the exact double run
+/// (a long double shadow, issue 7).
+Trust startTrust(const Task& task, std::stop_token stop = {});
+
+}  // namespace grazelab::core::methods

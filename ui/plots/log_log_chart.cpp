@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/plots/log_log_chart.h"
+
+#include <QLineSeries>
+#include <QLogValueAxis>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace grazelab::ui {
+
+QColor curveColor(int index) {
+  // Okabe-Ito, with black first and the yellow (weak on white) last
+  static const QColor palette[] = {QColor(0x00, 0x00, 0x00), QColor(0xE6, 0x9F, 0x00),
+                                   QColor(0x56, 0xB4, 0xE9), QColor(0x00, 0x9E, 0x73),
+                                   QColor(0x00, 0x72, 0xB2), QColor(0xD5, 0x5E, 0x00),
+                                   QColor(0xCC, 0x79, 0xA7), QColor(0xB8, 0xA8, 0x00)};
+  return palette[index % 8];
+}
+
+Qt::PenStyle curveDash(int index) {
+  static const Qt::PenStyle dashes[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine,
+                                        Qt::DashDotLine, Qt::SolidLine, Qt::DashDotDotLine,
+                                        Qt::DashLine, Qt::DotLine};
+  return dashes[index % 8];
+}
+
+LogLogChart::LogLogChart(const QString& title, const QString& xTitle, const QString& yTitle,
+                         QWidget* parent)
+    : QChartView(parent) {
+  auto* chart = new QChart;
+  chart->setTitle(title);
+  chart->legend()->setAlignment(Qt::AlignRight);
+  m_axisX = new QLogValueAxis;
+  m_axisX->setTitleText(xTitle);
+  m_axisX->setBase(10);
+  m_axisX->setLabelFormat("%.0e");
+  m_axisX->setMinorTickCount(-1);
+  m_axisY = new QLogValueAxis;
+  m_axisY->setTitleText(yTitle);
+  m_axisY->setBase(10);
+  m_axisY->setLabelFormat("%.0e");
+  m_axisY->setMinorTickCount(-1);
+  chart->addAxis(m_axisX, Qt::AlignBottom);
+  chart->addAxis(m_axisY, Qt::AlignLeft);
+  setChart(chart);
+  setRenderHint(QPainter::Antialiasing);
+}
+
+void LogLogChart::clear() {
+  for (QLineSeries* series : m_series) {
+    chart()->removeSeries(series);
+    delete series;
+  }
+  m_series.clear();
+}
+
+int LogLogChart::addCurve(const QString& name) {
+  const int index = int(m_series.size());
+  auto* series = new QLineSeries;
+  series->setName(name);
+  QPen pen(curveColor(index));
+  pen.setWidthF(2.0);
+  pen.setStyle(curveDash(index));
+  series->setPen(pen);
+  series->setPointsVisible(true);
+  series->setMarkerSize(7);
+  chart()->addSeries(series);
+  series->attachAxis(m_axisX);
+  series->attachAxis(m_axisY);
+  m_series.push_back(series);
+  return index;
+}
+
+void LogLogChart::addPoint(int index, QPointF point) {
+  if (index < 0 || index >= int(m_series.size())) return;
+  if (!std::isfinite(point.x()) || !std::isfinite(point.y())) return;
+  point.setX(std::max(point.x(), kFloor));
+  point.setY(std::max(point.y(), kFloor));
+  m_series[std::size_t(index)]->append(point);
+  fitAxes();
+}
+
+void LogLogChart::setCurves(const std::vector<LogLogCurve>& curves) {
+  clear();
+  for (const LogLogCurve& curve : curves) {
+    const int index = addCurve(curve.name);
+    for (const QPointF& point : curve.points) {
+      if (!std::isfinite(point.x()) || !std::isfinite(point.y())) continue;
+      m_series[std::size_t(index)]->append(
+          QPointF(std::max(point.x(), kFloor), std::max(point.y(), kFloor)));
+    }
+  }
+  fitAxes();
+}
+
+void LogLogChart::fitAxes() {
+  double xMin = std::numeric_limits<double>::infinity(), xMax = 0;
+  double yMin = std::numeric_limits<double>::infinity(), yMax = 0;
+  for (const QLineSeries* series : m_series) {
+    for (const QPointF& p : series->points()) {
+      xMin = std::min(xMin, p.x());
+      xMax = std::max(xMax, p.x());
+      yMin = std::min(yMin, p.y());
+      yMax = std::max(yMax, p.y());
+    }
+  }
+  if (!(xMax > 0)) return;
+  // whole decades, so that every label is a power of ten
+  auto down = [](double v) { return std::pow(10.0, std::floor(std::log10(v))); };
+  auto up = [](double v) { return std::pow(10.0, std::ceil(std::log10(v) + 1e-9)); };
+  m_axisX->setRange(down(xMin), std::max(up(xMax), 10 * down(xMin)));
+  m_axisY->setRange(down(yMin), std::max(up(yMax), 10 * down(yMin)));
+}
+
+}  // namespace grazelab::ui

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QChartView>
+#include <QPointF>
+#include <QString>
+
+#include <vector>
+
+class QLineSeries;
+class QLogValueAxis;
+
+namespace grazelab::ui {
+
+/// One curve of a log-log chart (e.g. one method: run time against error).
+struct LogLogCurve {
+  QString name;
+  std::vector<QPointF> points;  ///< x, y > 0 (smaller values are drawn at the floor)
+};
+
+/// A chart with base-10 logarithmic axes on both sides, one line with markers per curve in the
+/// Okabe-Ito colours with a dash pattern as a second code. The work-precision and convergence
+/// pictures of `grazelab-cli report` and the explorer's Accuracy scene draw with it.
+class LogLogChart : public QChartView {
+  Q_OBJECT
+
+ public:
+  /// Values below this are drawn on it (an error of exactly 0, e.g. equal roundings).
+  static constexpr double kFloor = 1e-17;
+
+  LogLogChart(const QString& title, const QString& xTitle, const QString& yTitle,
+              QWidget* parent = nullptr);
+
+  /// Replaces every curve.
+  void setCurves(const std::vector<LogLogCurve>& curves);
+  /// Adds a point to curve `index` (created empty by setCurves or addCurve).
+  void addPoint(int index, QPointF point);
+  /// Adds an empty curve; returns its index.
+  int addCurve(const QString& name);
+  int curveCount() const { return int(m_series.size()); }
+  /// Removes every curve.
+  void clear();
+
+ private:
+  void fitAxes();
+
+  QLogValueAxis* m_axisX = nullptr;
+  QLogValueAxis* m_axisY = nullptr;
+  std::vector<QLineSeries*> m_series;
+};
+
+/// The colour and dash pattern of curve `index`.
+QColor curveColor(int index);
+Qt::PenStyle curveDash(int index);
+
+}  // namespace grazelab::ui
