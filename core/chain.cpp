@@ -71,20 +71,20 @@ ChainOrProblem<S> makeChain(const BasicModel<S>& model) {
 
 template <typename S>
 BasicState<S> Scale<S>::toScaled(const BasicState<S>& u) const {
-  using std::ldexp;
-  return {ldexp(u.u1, -exponent), ldexp(u.u2, -exponent), ldexp(u.v1 / omegaSlow, -exponent),
-          ldexp(u.v2 / omegaSlow, -exponent)};
+  return {timesPowerOfTwo(u.u1, -exponent), timesPowerOfTwo(u.u2, -exponent),
+          timesPowerOfTwo(S(u.v1 / omegaSlow), -exponent),
+          timesPowerOfTwo(S(u.v2 / omegaSlow), -exponent)};
 }
 
 template <typename S>
 BasicState<S> Scale<S>::toPhysical(const BasicState<S>& x) const {
-  using std::ldexp;
   // the order that cannot overflow on the way when the result itself is representable
   auto velocity = [&](const S& y) {
-    const S direct = ldexp(y * omegaSlow, exponent);
-    return isFinite(direct) && direct != 0 ? direct : S(ldexp(y, exponent) * omegaSlow);
+    const S direct = timesPowerOfTwo(S(y * omegaSlow), exponent);
+    return isFinite(direct) && direct != 0 ? direct : S(timesPowerOfTwo(y, exponent) * omegaSlow);
   };
-  return {ldexp(x.u1, exponent), ldexp(x.u2, exponent), velocity(x.v1), velocity(x.v2)};
+  return {timesPowerOfTwo(x.u1, exponent), timesPowerOfTwo(x.u2, exponent), velocity(x.v1),
+          velocity(x.v2)};
 }
 
 template <typename S>

@@ -80,7 +80,6 @@ void Recorder<S>::samplePoint(const S& tau, const BasicState<S>& scaled) {
 template <typename S>
 void Recorder<S>::record(const Step<S>& step) {
   using std::abs;
-  using std::ldexp;
   Cost& cost = m_result.cost;
   if (isContact(step.type)) {
     ++cost.contacts;
@@ -92,7 +91,7 @@ void Recorder<S>::record(const Step<S>& step) {
     const S drift = abs(scaledEnergy(m_chain, step.after) - e0) / (e0 > 0 ? e0 : S(1));
     cost.maxRelEnergyDrift = std::max(cost.maxRelEnergyDrift, toDouble(drift));
     cost.maxContactResidual =
-        std::max(cost.maxContactResidual, toDouble(ldexp(step.residual, m_scale.exponent)));
+        std::max(cost.maxContactResidual, toDouble(timesPowerOfTwo(step.residual, m_scale.exponent)));
   }
   if (step.endsFlight) {
     cost.maxFlightEnergyError = std::max(cost.maxFlightEnergyError, toDouble(step.flightEnergyError));

@@ -5,7 +5,9 @@
 #include <boost/math/constants/constants.hpp>
 #include <boost/multiprecision/float128.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -87,6 +89,20 @@ bool isFinite(const S& value) {
   using std::isfinite;
   using boost::multiprecision::isfinite;
   return isfinite(value);
+}
+
+/// x * 2^e, rounded once, as ldexp. For double the power of two is built from its bits and
+/// multiplied (the same correctly rounded result, without a library call) while it is a normal
+/// number; scaling to physical units after every event made the ldexp calls 6 % of a run.
+template <typename S>
+S timesPowerOfTwo(const S& x, int e) {
+  using std::ldexp;
+  return ldexp(x, e);
+}
+template <>
+inline double timesPowerOfTwo<double>(const double& x, int e) {
+  if (e >= -1022 && e <= 1023) return x * std::bit_cast<double>(std::uint64_t(e + 1023) << 52);
+  return std::ldexp(x, e);
 }
 
 }  // namespace grazelab::core

@@ -25,8 +25,10 @@
 #include "core/model.h"
 #include "ui/derived.h"
 #include "ui/parameter_panel.h"
+#include "ui/plots/accuracy_view.h"
 #include "ui/plots/make_plot.h"
 #include "ui/plots/plot_view.h"
+#include "ui/plots/trace_plot.h"
 #include "ui/readout_panel.h"
 #include "ui/sim_controller.h"
 
@@ -178,37 +180,60 @@ void MainWindow::buildMenus() {
 void MainWindow::buildPlots() {
   // out of the layout and out of sight now; deleted once control is back in the event loop
   // (headless mode has none running yet, so a deferred delete alone would leave them drawn)
-  for (PlotView* plot : m_plots) {
-    m_plotGrid->removeWidget(plot);
-    plot->hide();
-    plot->disconnect(this);
-    plot->deleteLater();
+  QList<QWidget*> old;
+  for (PlotView* plot : m_plots) old.append(plot);
+  if (m_accuracy) old.append(m_accuracy);
+  for (QWidget* view : old) {
+    m_plotGrid->removeWidget(view);
+    view->hide();
+    view->disconnect(this);
+    view->deleteLater();
   }
   m_plots.clear();
+  m_accuracy = nullptr;
   m_currentPlot = nullptr;
-  const QList<PlotKind> kinds = scene().plots();
-  for (PlotKind kind : kinds) {
+  QList<QWidget*> views;
+  for (PlotKind kind : scene().plots()) {
+    if (kind == PlotKind::WorkPrecision) {
+      m_accuracy = new AccuracyView(m_plotArea);
+      views.append(m_accuracy);
+      continue;
+    }
     PlotView* plot = makePlot(kind, m_plotArea);
     connect(plot, &PlotView::activated, this, [this](PlotView* active) { m_currentPlot = active; });
     m_plots.append(plot);
+    views.append(plot);
+  }
+  if (m_accuracy) {
+    // the chosen method's run is drawn over the exact u2(t)
+    for (PlotView* plot : m_plots) {
+      if (auto* trace = qobject_cast<TracePlot*>(plot)) {
+        connect(m_accuracy, &AccuracyView::overlayChosen, trace, &TracePlot::setOverlay);
+      }
+    }
   }
   for (int row = 0; row < 2; ++row) m_plotGrid->setRowStretch(row, 1);
   for (int column = 0; column < 3; ++column) m_plotGrid->setColumnStretch(column, 1);
-  if (m_plots.size() == 5) {
+  if (views.size() == 5) {
     // the time trace is wide; the three portraits of state space sit side by side
-    m_plotGrid->addWidget(m_plots[0], 0, 0, 1, 2);
-    m_plotGrid->addWidget(m_plots[1], 0, 2);
-    m_plotGrid->addWidget(m_plots[2], 1, 0);
-    m_plotGrid->addWidget(m_plots[3], 1, 1);
-    m_plotGrid->addWidget(m_plots[4], 1, 2);
-  } else if (m_plots.size() == 3) {
+    m_plotGrid->addWidget(views[0], 0, 0, 1, 2);
+    m_plotGrid->addWidget(views[1], 0, 2);
+    m_plotGrid->addWidget(views[2], 1, 0);
+    m_plotGrid->addWidget(views[3], 1, 1);
+    m_plotGrid->addWidget(views[4], 1, 2);
+  } else if (views.size() == 2) {
+    // two subjects side by side, each half the width and the full height
+    m_plotGrid->setColumnStretch(2, 0);
+    m_plotGrid->addWidget(views[0], 0, 0, 2, 1);
+    m_plotGrid->addWidget(views[1], 0, 1, 2, 1);
+  } else if (views.size() == 3) {
     // the first plot is the scene's subject: give it most of the room
-    m_plotGrid->addWidget(m_plots[0], 0, 0, 2, 2);
-    m_plotGrid->addWidget(m_plots[1], 0, 2);
-    m_plotGrid->addWidget(m_plots[2], 1, 2);
+    m_plotGrid->addWidget(views[0], 0, 0, 2, 2);
+    m_plotGrid->addWidget(views[1], 0, 2);
+    m_plotGrid->addWidget(views[2], 1, 2);
   } else {
-    for (int index = 0; index < m_plots.size(); ++index) {
-      m_plotGrid->addWidget(m_plots[index], index / 3, index % 3);
+    for (int index = 0; index < views.size(); ++index) {
+      m_plotGrid->addWidget(views[index], index / 3, index % 3);
     }
   }
   m_currentPlot = m_plots.isEmpty() ? nullptr : m_plots.first();
@@ -276,6 +301,7 @@ void MainWindow::recompute() {
   request.sceneName = scene().name();
   request.reference = job.reference;
   request.referenceLabel = job.referenceLabel;
+  request.accuracy = job.accuracy;
   m_controller->submit(std::move(request));
 }
 
@@ -324,6 +350,10 @@ void MainWindow::applyPending() {
     plot->show(*m_displayed);
     plot->refreshNow();
   }
+  if (m_accuracy) {
+    m_accuracy->show(*m_displayed);
+    for (PlotView* plot : m_plots) plot->refreshNow();  // the overlay it may have changed
+  }
   m_lastApplyCost = cost.elapsed();
   m_lastApply.start();
   showStatus(*m_displayed);
@@ -350,6 +380,11 @@ void MainWindow::showStatus(const SimUpdate& update) {
                 .arg(QString::fromUtf8(core::toString(trust.verdict).data()))
                 .arg(scientific(std::max(trust.stateError, trust.timeError)))
                 .arg(scientific(trust.horizon));
+  }
+  if (update.accuracy) {
+    text += tr(" · methods: %1 of %2 settings measured")
+                .arg(update.accuracy->points.size())
+                .arg(update.accuracy->total);
   }
   if (!update.final) {
     text += tr(" · computing…");

@@ -26,6 +26,7 @@ namespace grazelab::ui {
 
 class ParameterPanel;
 class PlotView;
+class AccuracyView;
 class ReadoutPanel;
 class SimController;
 
@@ -62,6 +63,7 @@ class MainWindow : public QMainWindow {
   const SimUpdate* displayed() const { return m_displayed ? &*m_displayed : nullptr; }
   const QList<PlotView*>& plots() const { return m_plots; }
   PlotView* currentPlot() const { return m_currentPlot; }
+  AccuracyView* accuracyView() const { return m_accuracy; }
   ParameterPanel* parameterPanel() const { return m_panel; }
   ReadoutPanel* readoutPanel() const { return m_readout; }
   SimController* controller() const { return m_controller; }
@@ -117,6 +119,7 @@ class MainWindow : public QMainWindow {
   QGridLayout* m_plotGrid = nullptr;
   QList<PlotView*> m_plots;
   PlotView* m_currentPlot = nullptr;
+  AccuracyView* m_accuracy = nullptr;  ///< the work-precision view, when the scene shows it
   SimController* m_controller = nullptr;
   QActionGroup* m_sceneActions = nullptr;
   QLabel* m_status = nullptr;

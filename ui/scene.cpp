@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/scene.h"
 
+#include "ui/scenes/accuracy_scene.h"
 #include "ui/scenes/grazing_family_scene.h"
 #include "ui/scenes/near_grazing_scene.h"
 #include "ui/scenes/one_ipp_scene.h"
@@ -42,6 +43,7 @@ std::vector<std::unique_ptr<Scene>> makeScenes() {
   scenes.push_back(std::make_unique<GrazingFamilyScene>());
   scenes.push_back(std::make_unique<NearGrazingScene>());
   scenes.push_back(std::make_unique<OneIppScene>());
+  scenes.push_back(std::make_unique<AccuracyScene>());
   return scenes;
 }
 

@@ -12,6 +12,7 @@
 #include "core/simulate.h"
 #include "ui/derived.h"
 #include "ui/params.h"
+#include "ui/sim_types.h"
 
 namespace grazelab::ui {
 
@@ -22,6 +23,7 @@ enum class PlotKind {
   PhaseU1V1,  ///< phase portrait (u1, v1)
   Poincare,   ///< (u1, v1) at each contact, coloured by contact index
   FreeFlight, ///< free-flight time against contact index, with the line FFT = T2
+  WorkPrecision,  ///< every method's error against its run time, with an overlay picker
 };
 
 /// What a scene asks the worker to compute, or why it cannot.
@@ -32,6 +34,7 @@ struct SceneJob {
   core::Request request;
   std::optional<core::State> reference;  ///< a state on H worth marking (e.g. GLO_lambda* data)
   QString referenceLabel;
+  std::optional<AccuracyJob> accuracy;  ///< the work-precision sweep, when the scene shows it
 };
 
 /// A named preset: which parameters are exposed, which plots are shown, and so what is computed.

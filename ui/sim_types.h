@@ -9,11 +9,34 @@
 #include <memory>
 #include <optional>
 
+#include "core/methods/work_precision.h"
 #include "core/simulate.h"
 #include "core/trust.h"
 #include "ui/params.h"
 
 namespace grazelab::ui {
+
+/// The work-precision sweep a scene asks for beside its exact run (the Accuracy scene): every
+/// setting is run on the same start, up to half a period past the exact run's last contact.
+struct AccuracyJob {
+  std::vector<core::methods::MethodSetting> settings;
+  core::methods::TimingPolicy timing{1, 0.5};
+  core::methods::WorkBudget budget{200'000'000, 5.0};
+};
+
+/// One finished setting of the sweep, with its run (events and samples over the trace's
+/// window) for the overlay on u2(t).
+struct AccuracyPoint {
+  core::methods::WorkPrecisionPoint point;
+  std::shared_ptr<const core::Result> run;
+};
+
+/// The sweep so far.
+struct AccuracyProgress {
+  std::vector<AccuracyPoint> points;
+  std::size_t total = 0;  ///< settings asked for
+  double tEnd = 0;        ///< the end of the comparison [time]
+};
 
 /// One computation asked of the worker, as a value. The controller stamps the id.
 struct SimRequest {
@@ -24,6 +47,7 @@ struct SimRequest {
   QString sceneName;
   std::optional<core::State> reference;
   QString referenceLabel;
+  std::optional<AccuracyJob> accuracy;  ///< the Accuracy scene's sweep
 };
 
 /// A partial or final result coming back from the worker, as a value. The result is shared
@@ -35,6 +59,7 @@ struct SimUpdate {
   bool final = false;   ///< the run is over (complete, cancelled or invalid)
   std::shared_ptr<const SimRequest> request;  ///< what was asked
   std::optional<core::Trust> trust;  ///< the error estimate, on the final update
+  std::shared_ptr<const AccuracyProgress> accuracy;  ///< the sweep so far (Accuracy scene)
 };
 
 }  // namespace grazelab::ui

@@ -3,6 +3,7 @@
 #include "ui/sim_worker.h"
 
 #include "core/budget.h"
+#include "core/chain.h"
 
 #include <QElapsedTimer>
 
@@ -10,6 +11,54 @@
 #include <cstdint>
 
 namespace grazelab::ui {
+
+namespace {
+
+/// The Accuracy scene's sweep, after its exact run: every setting on the same start up to half
+/// a period past the exact run's last contact, measured against the binary128 reference; a
+/// partial update after each setting (its point appears at once), then the final one.
+void sweepAccuracy(const SimRequest& request, SimUpdate last, std::stop_token stop,
+                   const std::function<void(const SimUpdate&)>& report) {
+  namespace methods = core::methods;
+  const AccuracyJob& job = *request.accuracy;
+  const core::ChainOrProblem<double> formed = core::makeChain(request.model);
+  if (!formed.chain) {
+    report(last);
+    return;
+  }
+  const double period = core::twoPi<double>() / formed.chain->omegaSlow;
+  // timed with the events only (every contact: the matching needs them all); the overlay's
+  // run again with the trace's samples, which would tilt the timing (the exact solver
+  // evaluates its flight at each sample, a time stepper only keeps its own steps)
+  methods::Task task{request.model, request.request.initial, last.result->tFinal + period / 2, {}};
+  task.needs.events = true;
+  methods::Task overlayTask = task;
+  overlayTask.needs.samples = request.request.needs.samples;
+  methods::Task referenceTask = task;
+  const methods::Reference reference = methods::makeReference(referenceTask, job.budget, stop);
+  auto progress = std::make_shared<AccuracyProgress>();
+  progress->total = job.settings.size();
+  progress->tEnd = task.tEnd;
+  for (const methods::MethodSetting& setting : job.settings) {
+    if (stop.stop_requested()) break;
+    const methods::WorkPrecisionPoint point =
+        methods::measurePoint(task, reference, setting, job.budget, job.timing, stop);
+    methods::MethodRun run = methods::runMethod(overlayTask, setting, job.budget, stop);
+    if (stop.stop_requested()) break;
+    auto next = std::make_shared<AccuracyProgress>(*progress);  // points are small; runs shared
+    next->points.push_back({point, std::make_shared<const core::Result>(std::move(run.result))});
+    progress = std::move(next);
+    SimUpdate partial = last;
+    partial.final = false;
+    partial.progress = double(progress->points.size()) / double(std::max<std::size_t>(1, progress->total));
+    partial.accuracy = progress;
+    report(partial);
+  }
+  last.accuracy = progress;
+  report(last);
+}
+
+}  // namespace
 
 SimWorker::SimWorker(std::shared_ptr<SimMailbox> mailbox) : m_mailbox(std::move(mailbox)) {}
 
@@ -80,6 +129,11 @@ void SimWorker::run(const SimRequest& request, std::stop_token stop, double chun
     last.trust = monitor.finish(simulator.result());
   }
   last.result = std::make_shared<const core::Result>(simulator.takeResult());
+  if (request.accuracy && last.result->stop != core::StopReason::InvalidInput &&
+      !stop.stop_requested()) {
+    sweepAccuracy(request, std::move(last), stop, report);
+    return;
+  }
   report(last);
 }
 

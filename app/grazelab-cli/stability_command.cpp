@@ -63,16 +63,15 @@ int runStability(const QCommandLineParser& parser, std::stop_token stop, QString
   const std::vector<StabilityCase> cases = stabilityCases(quick);
   std::vector<StabilityCell> cells;
   std::vector<LongRunMark> marks;
-  std::map<std::string, std::string> descriptions;
+  std::map<std::string, CaseHorizon> horizons;
   int index = 0;
   for (const StabilityCase& row : cases) {
     ++index;
-    descriptions[row.name] = row.description;
     progress("stability", QStringLiteral("[%1/%2] %3").arg(index).arg(cases.size())
                               .arg(QString::fromStdString(row.name)));
-    runStabilityCase(row, *methods, budget,
-                     [&cells](const StabilityCell& cell) { cells.push_back(cell); },
-                     &marks, stop);
+    horizons[row.name] = runStabilityCase(
+        row, *methods, budget, [&cells](const StabilityCell& cell) { cells.push_back(cell); },
+        &marks, stop);
     if (stop.stop_requested()) return kExitInterrupted;
   }
   const double seconds =
@@ -91,12 +90,14 @@ int runStability(const QCommandLineParser& parser, std::stop_token stop, QString
   }
 
   QString md = "# GrazeLab stability matrix\n\n";
-  md += QStringLiteral("Written by %1%2 in %3. Each case runs %4 slow periods T2 (the long run "
-                       "excepted) with every method at its standard setting: h = T2 / 1000, "
+  md += QStringLiteral("Written by %1%2 in %3. Each case runs %4 slow periods T2, or up to the "
+                       "predictability horizon of its start when that comes first (the long run "
+                       "excepted), with every method at its standard setting: h = T2 / 1000, "
                        "rtol = 1e-8, penalty k_c = 1e8 k1 (CVODE rtol 1e-10), the exact solver "
                        "in double; errors against the exact solver in binary128. A cell is ok "
                        "when the state error at the end and the contact-time error (/ T2) are at "
-                       "most 1e-3 (1e-9 for the exact solver) and no contact is missed or "
+                       "most 1e-3 (for the exact solver: 1e-9, or 10 times its own error estimate when that is "
+                       "larger) and no contact is missed or "
                        "invented; budget: %5 s per cell.\n\n")
             .arg(versionString(), quick ? " with --quick (a subset)" : "", humanSeconds(seconds))
             .arg(kCasePeriods)
@@ -120,7 +121,15 @@ int runStability(const QCommandLineParser& parser, std::stop_token stop, QString
   md += "\n## Cases\n\n";
   for (const StabilityCase& row : cases) {
     md += "- `" + QString::fromStdString(row.name) + "`: " +
-          QString::fromStdString(row.description) + "\n";
+          QString::fromStdString(row.description);
+    const CaseHorizon& h = horizons[row.name];
+    if (h.shortened) {
+      md += QStringLiteral(" — compared up to t = %1 (%2 T2), the predictability horizon of "
+                           "its start (the exact double run's error reaches 1e-6 there)")
+                .arg(h.tEnd, 0, 'g', 4)
+                .arg(h.tEnd / h.period, 0, 'g', 3);
+    }
+    md += "\n";
   }
   md += "\n## Why a cell is not ok\n\n";
   for (const StabilityCell& c : cells) {

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "core/methods/scaled_run.h"
+#include "core/methods/work_precision.h"
 #include "core/orbits.h"
 #include "core/setup.h"
 #include "core/simulate.h"
@@ -297,10 +298,11 @@ void runLong(const StabilityCase& row, const std::vector<MethodKind>& methods,
 
 }  // namespace
 
-void runStabilityCase(const StabilityCase& row, const std::vector<MethodKind>& methods,
-                      const WorkBudget& budget,
-                      const std::function<void(const StabilityCell&)>& onCell,
-                      std::vector<LongRunMark>* longRun, std::stop_token stop) {
+CaseHorizon runStabilityCase(const StabilityCase& row, const std::vector<MethodKind>& methods,
+                             const WorkBudget& budget,
+                             const std::function<void(const StabilityCell&)>& onCell,
+                             std::vector<LongRunMark>* longRun, std::stop_token stop) {
+  CaseHorizon horizon;
   auto refuseAll = [&](const std::string& reason) {
     for (MethodKind kind : methods) {
       StabilityCell cell;
@@ -315,18 +317,44 @@ void runStabilityCase(const StabilityCase& row, const std::vector<MethodKind>& m
   };
   if (!row.task) {
     refuseAll("the case cannot be formed: " + row.problem);
-    return;
-  }
-  if (row.longRunContacts > 0) {
-    runLong(row, methods, budget, onCell, longRun, stop);
-    return;
+    return horizon;
   }
   const Task& task = *row.task;
+  horizon.tEnd = task.tEnd;
+  horizon.period = twoPi<double>() / makeChain(task.model).chain->omegaSlow;
+  if (row.longRunContacts > 0) {
+    runLong(row, methods, budget, onCell, longRun, stop);
+    return horizon;
+  }
   Task withEvents = task;
   withEvents.needs.events = true;
+  Trust trust = startTrust(task, stop);
+  if (trust.horizon > 0 && trust.horizon < task.tEnd) {
+    // the horizon is the time of the last contact within tolerance: end an eighth of a period
+    // before it, so that the end does not fall on a contact
+    withEvents.tEnd = std::max(trust.horizon - horizon.period / 8, trust.horizon / 2);
+    horizon.tEnd = withEvents.tEnd;
+    horizon.shortened = true;
+    withEvents.needs.events = true;
+    trust = startTrust(withEvents, stop);
+  }
+  horizon.estimatedError = trust.stateError;
   WorkBudget referenceBudget = budget;
   referenceBudget.maxSeconds = std::max(budget.maxSeconds, 60.0);
   const Reference reference = makeReference(withEvents, referenceBudget, stop);
+  // the trust estimate is relative to the motion's own size, the errors here to d and w1 d
+  // (MODEL.md section 8): in the same units, the tolerance grows with the motion's amplitude
+  double amplitude = 1;
+  auto widen = [&](const State& x) {
+    amplitude = std::max({amplitude, std::abs(x.u1) / reference.positionScale,
+                          std::abs(x.u2) / reference.positionScale,
+                          std::abs(x.v1) / reference.velocityScale,
+                          std::abs(x.v2) / reference.velocityScale});
+  };
+  for (const Event& event : reference.run.result.events) widen(event.before);
+  widen(reference.run.result.final);
+  const double exactTolerance =
+      std::max(kExactTolerance, kEstimateMargin * trust.stateError * amplitude);
   const double period = reference.period;
   for (MethodKind kind : methods) {
     StabilityCell cell;
@@ -349,10 +377,11 @@ void runStabilityCase(const StabilityCase& row, const std::vector<MethodKind>& m
       cell.verdict = CellVerdict::Refused;
       cell.reason = "not judged: no binary128 reference (" + reference.run.reason + ")";
     } else {
-      judge(cell, run, kind == MethodKind::Exact ? kExactTolerance : kStabilityTolerance);
+      judge(cell, run, kind == MethodKind::Exact ? exactTolerance : kStabilityTolerance);
     }
     if (onCell) onCell(cell);
   }
+  return horizon;
 }
 
 }  // namespace grazelab::core::methods

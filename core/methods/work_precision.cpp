@@ -27,7 +27,8 @@ bool usable(const WorkPrecisionPoint& point) {
 
 WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
                                 const MethodSetting& setting, const WorkBudget& budget,
-                                const TimingPolicy& timing, std::stop_token stop) {
+                                const TimingPolicy& timing, std::stop_token stop,
+                                MethodRun* firstRun) {
   WorkPrecisionPoint point;
   point.setting = setting;
   std::vector<double> seconds;
@@ -43,10 +44,10 @@ WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
       point.steps = result.steps;
     }
     // a run that did not complete is not repeated: its time says nothing more
-    if (result.status != RunStatus::Completed || spent > timing.capSeconds ||
-        stop.stop_requested()) {
-      break;
-    }
+    const bool last = result.status != RunStatus::Completed || spent > timing.capSeconds ||
+                      stop.stop_requested() || run + 1 >= std::max(1, timing.runs);
+    if (run == 0 && firstRun != nullptr) *firstRun = std::move(result);
+    if (last) break;
   }
   std::sort(seconds.begin(), seconds.end());
   point.runs = int(seconds.size());
@@ -68,9 +69,10 @@ std::vector<MethodSetting> reportSettings(MethodKind kind, double period, double
     case MethodKind::MoreauJean:
     case MethodKind::MoreauJeanTheta1:
     case MethodKind::SchatzmanPaoli: {
-      // h / T2 = 1e-3 ... 1e-6 (quick: ... 1e-5) in half decades
-      const int last = quick ? 4 : 6;
-      for (int i = 0; i <= last; ++i) add(period * 1e-3 * std::pow(10.0, -0.5 * i));
+      // h / T2 = 1e-3 ... 1e-6 in quarter decades (quick: ... 1e-5 in half decades)
+      const int last = quick ? 4 : 12;
+      const double step = quick ? 0.5 : 0.25;
+      for (int i = 0; i <= last; ++i) add(period * 1e-3 * std::pow(10.0, -step * i));
       break;
     }
     case MethodKind::Dopri5Events:
@@ -79,7 +81,10 @@ std::vector<MethodSetting> reportSettings(MethodKind kind, double period, double
       for (int e = 3; e <= 13; e += quick ? 2 : 1) add(std::pow(10.0, -e));
       break;
     case MethodKind::Penalty:
-      for (int e = 2; e <= 12; e += quick ? 2 : 1) add(k1 * std::pow(10.0, e));
+      // a tight tolerance, so that the modelling error of a finite k_c shows, not CVODE's
+      for (int e = 2; e <= 12; e += quick ? 2 : 1) {
+        settings.push_back({kind, k1 * std::pow(10.0, e), Precision::Double, kPenaltyReportRtol});
+      }
       break;
   }
   return settings;

@@ -33,13 +33,18 @@ struct WorkPrecisionPoint {
 };
 
 /// Times `setting` on the task and measures its errors against the reference (from its first
-/// run; every run of a setting computes the same numbers).
+/// run; every run of a setting computes the same numbers). `firstRun`, when given, receives
+/// that first run (for an overlay of its trajectory).
 WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
                                 const MethodSetting& setting, const WorkBudget& budget,
-                                const TimingPolicy& timing, std::stop_token stop = {});
+                                const TimingPolicy& timing, std::stop_token stop = {},
+                                MethodRun* firstRun = nullptr);
+
+/// The CVODE tolerance of the penalty method in the report.
+inline constexpr double kPenaltyReportRtol = 1e-12;
 
 /// The settings the report sweeps for a method on a problem with slow period T2: steps h from
-/// 1e-3 T2 down by half decades, tolerances 1e-3 ... 1e-13, k_c 1e2 ... 1e12 (k_c relative to
+/// 1e-3 T2 down to 1e-6 T2 by quarter decades, tolerances 1e-3 ... 1e-13, k_c 1e2 ... 1e12 (k_c relative to
 /// k1 of the model), the exact solver in its three precisions. `quick`: fewer and cheaper ones.
 std::vector<MethodSetting> reportSettings(MethodKind kind, double period, double k1, bool quick);
 

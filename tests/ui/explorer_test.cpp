@@ -17,6 +17,8 @@
 #include "ui/derived.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
+#include "ui/plots/accuracy_view.h"
+#include "ui/plots/log_log_chart.h"
 #include "ui/plots/plot_view.h"
 #include "ui/readout_panel.h"
 #include "ui/sim_controller.h"
@@ -182,6 +184,56 @@ class ExplorerTest : public QObject {
     m_window->selectScene(1);
     QVERIFY(waitForLatestFinal(*m_window));
     QCOMPARE(m_window->plots().size(), qsizetype(3));
+  }
+
+  void accuracySceneMeasuresEveryMethodAndOverlaysTheChosenOne() {
+    m_window->selectScene(3);  // Accuracy
+    QCOMPARE(m_window->scene().alias(), QStringLiteral("accuracy"));
+    QVERIFY(waitForLatestFinal(*m_window, 120000));
+    const SimUpdate* shown = m_window->displayed();
+    QVERIFY(shown->accuracy);
+    QCOMPARE(shown->accuracy->points.size(), shown->accuracy->total);
+    AccuracyView* view = m_window->accuracyView();
+    QVERIFY(view);
+    // every method has a curve, and the exact solver is the most accurate of them
+    QCOMPARE(view->chart()->curveCount(), 8);
+    double exactError = 1, bestOther = 1;
+    for (const AccuracyPoint& point : shown->accuracy->points) {
+      const auto& p = point.point;
+      if (p.status != grazelab::core::methods::RunStatus::Completed) continue;
+      if (p.setting.kind == grazelab::core::methods::MethodKind::Exact) {
+        if (p.setting.precision == grazelab::core::Precision::Double) exactError = p.errors.state;
+      } else {
+        bestOther = std::min(bestOther, p.errors.state);
+      }
+    }
+    QVERIFY(exactError < 1e-9);
+    QVERIFY(exactError < bestOther);
+    // the overlay: the chosen run's u2 appears on the trace, and changes with the choice
+    auto overlayData = [this]() {
+      for (const PlotView::Entry& entry : m_window->plots().first()->entries()) {
+        if (entry.series->name().startsWith(QStringLiteral("moreau-jean")) ||
+            entry.series->name().startsWith(QStringLiteral("dopri5"))) {
+          return entry.data;
+        }
+      }
+      return std::vector<QPointF>{};
+    };
+    QVERIFY(!overlayData().empty());
+    int dopri = -1;
+    for (int i = 0; i < int(shown->accuracy->points.size()); ++i) {
+      if (shown->accuracy->points[std::size_t(i)].point.setting.kind ==
+          grazelab::core::methods::MethodKind::Dopri5Events) {
+        dopri = i;
+        break;
+      }
+    }
+    QVERIFY(dopri >= 0);
+    const std::vector<QPointF> before = overlayData();
+    view->chooseOverlay(dopri);
+    m_window->plots().first()->refreshNow();
+    QVERIFY(overlayData() != before);
+    QVERIFY(m_window->statusText().contains(QStringLiteral("settings measured")));
   }
 
   void resetViewFollowsDataAgain() {

@@ -47,10 +47,11 @@ class HeadlessTest : public QObject {
 
   void listsScenesOnePerLine() {
     const QStringList scenes = listScenes();
-    QCOMPARE(scenes.size(), qsizetype(3));
+    QCOMPARE(scenes.size(), qsizetype(4));
     QCOMPARE(scenes.first(), QStringLiteral("Grazing family GLO_lambda"));
     QVERIFY(scenes.contains(QStringLiteral("Near grazing: Poincaré points on H")));
     QVERIFY(scenes.contains(QStringLiteral("1IPP orbits approaching GLO_lambda*")));
+    QVERIFY(scenes.contains(QStringLiteral("Accuracy: methods against the exact solver")));
   }
 
   void rendersEveryScene() {

@@ -27,6 +27,25 @@ Qt::PenStyle curveDash(int index) {
   return dashes[index % 8];
 }
 
+namespace {
+
+/// At most this many labelled ticks on an axis: a range of many decades ticks every 2, 3, ...
+/// decades (a log axis ticks at each power of its base), so that no label is elided.
+constexpr int kMaxTicks = 7;
+
+/// Whole powers of the base at both ends, so that every label is a power of ten.
+void setLogRange(QLogValueAxis* axis, double low, double high) {
+  const double decades = std::max(1.0, std::ceil(std::log10(high) + 1e-9) - std::floor(std::log10(low)));
+  const int step = std::max(1, int(std::ceil(decades / kMaxTicks)));
+  const double base = std::pow(10.0, step);
+  axis->setBase(base);
+  const double first = std::floor(std::log10(low) / step) * step;
+  const double last = std::max(first + step, std::ceil(std::log10(high) / step - 1e-9) * step);
+  axis->setRange(std::pow(10.0, first), std::pow(10.0, last));
+}
+
+}  // namespace
+
 LogLogChart::LogLogChart(const QString& title, const QString& xTitle, const QString& yTitle,
                          QWidget* parent)
     : QChartView(parent) {
@@ -37,12 +56,12 @@ LogLogChart::LogLogChart(const QString& title, const QString& xTitle, const QStr
   m_axisX->setTitleText(xTitle);
   m_axisX->setBase(10);
   m_axisX->setLabelFormat("%.0e");
-  m_axisX->setMinorTickCount(-1);
+  m_axisX->setMinorTickCount(0);
   m_axisY = new QLogValueAxis;
   m_axisY->setTitleText(yTitle);
   m_axisY->setBase(10);
   m_axisY->setLabelFormat("%.0e");
-  m_axisY->setMinorTickCount(-1);
+  m_axisY->setMinorTickCount(0);
   chart->addAxis(m_axisX, Qt::AlignBottom);
   chart->addAxis(m_axisY, Qt::AlignLeft);
   setChart(chart);
@@ -108,11 +127,8 @@ void LogLogChart::fitAxes() {
     }
   }
   if (!(xMax > 0)) return;
-  // whole decades, so that every label is a power of ten
-  auto down = [](double v) { return std::pow(10.0, std::floor(std::log10(v))); };
-  auto up = [](double v) { return std::pow(10.0, std::ceil(std::log10(v) + 1e-9)); };
-  m_axisX->setRange(down(xMin), std::max(up(xMax), 10 * down(xMin)));
-  m_axisY->setRange(down(yMin), std::max(up(yMax), 10 * down(yMin)));
+  setLogRange(m_axisX, xMin, xMax);
+  setLogRange(m_axisY, yMin, yMax);
 }
 
 }  // namespace grazelab::ui

@@ -16,6 +16,7 @@ PlotView* makePlot(PlotKind kind, QWidget* parent) {
     case PlotKind::PhaseU1V1: return new PhasePlot(PhasePlot::Mass::One, parent);
     case PlotKind::Poincare: return new PoincarePlot(parent);
     case PlotKind::FreeFlight: return new FreeFlightPlot(parent);
+    case PlotKind::WorkPrecision: return nullptr;  // not a PlotView: MainWindow builds an AccuracyView
   }
   return nullptr;
 }

@@ -10,7 +10,7 @@ namespace grazelab::ui {
 
 class PlotView;
 
-/// Creates the plot widget for one kind of plot.
+/// Creates the plot widget for one kind of plot (nothing for WorkPrecision, an AccuracyView).
 PlotView* makePlot(PlotKind kind, QWidget* parent = nullptr);
 
 }  // namespace grazelab::ui

@@ -17,6 +17,7 @@ inline const QColor kStop{0x60, 0x60, 0x60};
 inline const QColor kImpact{0xc0, 0x1c, 0x28};
 inline const QColor kGrazing{0xe6, 0x61, 0x00};
 inline const QColor kReference{0x00, 0x00, 0x00};
+inline const QColor kOverlay{0x00, 0x9E, 0x73};  ///< another method's run over the exact one
 }  // namespace colors
 
 /// A solid line series of the given colour and width.

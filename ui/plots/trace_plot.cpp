@@ -41,7 +41,44 @@ void TracePlot::show(const SimUpdate& update) {
   setData(m_stop, {QPointF(0, gap), QPointF(tLast, gap)});
   setData(m_impacts, std::move(impacts));
   setData(m_grazings, std::move(others));
+  m_gap = gap;
+  m_window = tLast;
+  drawOverlay();
   scheduleRefresh();
+}
+
+void TracePlot::setOverlay(std::shared_ptr<const core::Result> run, const QString& name) {
+  m_overlayRun = std::move(run);
+  if (m_overlayRun && m_overlayTrace < 0) {
+    // created on first use: scenes without an overlay keep their legend as it was
+    m_overlayTrace = addEntry(makeLine(name, colors::kOverlay, 1.5, Qt::DashLine), Decimation::Trace);
+    auto* crosses = makeScatter(tr("its contacts"), colors::kOverlay, 9);
+    crosses->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+    useLightMarker(crosses);
+    m_overlayContacts = addEntry(crosses, Decimation::Scatter, false);
+  }
+  if (m_overlayTrace >= 0) entries()[std::size_t(m_overlayTrace)].series->setName(name);
+  drawOverlay();
+  scheduleRefresh();
+}
+
+void TracePlot::drawOverlay() {
+  if (m_overlayTrace < 0) return;
+  std::vector<QPointF> trace;
+  std::vector<QPointF> contacts;
+  if (m_overlayRun) {
+    for (const core::Sample& sample : m_overlayRun->samples) {
+      if (sample.t > m_window) break;
+      trace.emplace_back(sample.t, sample.state.u2);
+    }
+    for (const core::Event& event : m_overlayRun->events) {
+      if (event.t > m_window) break;
+      // drawn a little above the stop, so that they sit beside the exact contacts
+      if (core::isContact(event.type)) contacts.emplace_back(event.t, m_gap * 1.03);
+    }
+  }
+  setData(m_overlayTrace, std::move(trace));
+  setData(m_overlayContacts, std::move(contacts));
 }
 
 }  // namespace grazelab::ui
