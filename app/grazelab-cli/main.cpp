@@ -3,7 +3,9 @@
 // grazelab-cli: `info`, `simulate`, `report` and `stability` (DESIGN.md "Command line"). Exit 0 on success, 2 on
 // invalid input with one line on stderr and nothing on stdout; an interrupted run (SIGINT,
 // SIGTERM) ends its output cleanly and exits 130.
+#if GRAZELAB_CLI_PICTURES
 #include <QApplication>
+#endif
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
@@ -133,18 +135,28 @@ bool drawsPictures(int argc, char* argv[]) {
   return false;
 }
 
+// The off-screen platform's chatter (XDG_RUNTIME_DIR not set, size hints) would break the
+// contract of one line on stderr for an error: only Qt's critical messages get through.
+void quietQtMessages(QtMsgType type, const QMessageLogContext&, const QString& message) {
+  if (type == QtCriticalMsg || type == QtFatalMsg) {
+    std::fprintf(stderr, "grazelab-cli: Qt: %s\n", qPrintable(message));
+  }
+}
+
 int main(int argc, char* argv[]) {
   InterruptWatcher watcher;  // first: its signal mask is inherited by every later thread
   std::unique_ptr<QCoreApplication> application;
+#if GRAZELAB_CLI_PICTURES
   if (drawsPictures(argc, argv)) {
+    qInstallMessageHandler(quietQtMessages);
     if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr &&
         std::getenv("QT_QPA_PLATFORM") == nullptr) {
       setenv("QT_QPA_PLATFORM", "offscreen", 1);
     }
     application = std::make_unique<QApplication>(argc, argv);
-  } else {
-    application = std::make_unique<QCoreApplication>(argc, argv);
   }
+#endif
+  if (!application) application = std::make_unique<QCoreApplication>(argc, argv);
   QCoreApplication::setApplicationName("grazelab-cli");
   QCoreApplication::setApplicationVersion("0.2.0");
 

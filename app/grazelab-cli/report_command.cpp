@@ -16,8 +16,10 @@
 #include "cli_input.h"
 #include "core/methods/work_precision.h"
 #include "report_support.h"
+#if GRAZELAB_CLI_PICTURES
 #include "ui/export.h"
 #include "ui/plots/log_log_chart.h"
+#endif
 
 namespace grazelab::cli {
 namespace {
@@ -45,7 +47,7 @@ QString parameterText(const core::methods::MethodSetting& setting) {
 }
 
 /// Smaller is finer, dimensionless: h / T2, rtol, k1 / k_c, or the unit roundoff.
-double fineness(const core::methods::MethodSetting& setting, double period, double k1) {
+[[maybe_unused]] double fineness(const core::methods::MethodSetting& setting, double period, double k1) {
   switch (setting.kind) {
     case MethodKind::MoreauJean:
     case MethodKind::MoreauJeanTheta1:
@@ -133,7 +135,7 @@ std::optional<ReportInput> parseReportInput(const QCommandLineParser& parser, QS
                             .arg(contacts);
   } else {
     task.tEnd = kDefaultPeriods * input.period;
-    input.horizonNote = QStringLiteral("t_end = 200 T2 = %1 (default)").arg(task.tEnd, 0, 'g', 10);
+    input.horizonNote = QStringLiteral("t_end = %1 (the default, 200 T2)").arg(task.tEnd, 0, 'g', 10);
   }
   return input;
 }
@@ -163,7 +165,7 @@ QByteArray resultsCsv(const std::vector<WorkPrecisionPoint>& points) {
   return csv;
 }
 
-QJsonObject metadata(const ReportInput& input) {
+[[maybe_unused]] QJsonObject metadata(const ReportInput& input) {
   const core::Model& m = input.task.model;
   QJsonObject model{{"m1", m.m1}, {"m2", m.m2}, {"k1", m.k1}, {"k2", m.k2}, {"gap", m.gap}};
   if (m.design) model["branch"] = QString::fromUtf8(core::toString(*m.design).data());
@@ -174,6 +176,7 @@ QJsonObject metadata(const ReportInput& input) {
                      {"t_end", input.task.tEnd}};
 }
 
+#if GRAZELAB_CLI_PICTURES
 bool savePictures(ui::LogLogChart& chart, const QString& stem, const QByteArray& json,
                   QString& error) {
   chart.resize(1200, 760);
@@ -186,6 +189,46 @@ bool savePictures(ui::LogLogChart& chart, const QString& stem, const QByteArray&
   }
   return true;
 }
+
+/// The two pictures: the same chart class as the explorer's Accuracy scene.
+bool writePictures(const QString& dir, const ReportInput& input,
+                   const std::vector<MethodKind>& methods,
+                   const std::map<MethodKind, std::vector<WorkPrecisionPoint>>& byMethod,
+                   QString& error) {
+  using core::methods::RunStatus;
+  const QByteArray json = QJsonDocument(metadata(input)).toJson(QJsonDocument::Compact);
+  ui::LogLogChart work("Error against run time", "run time [s] (minimum of repeated runs)",
+                       "state error at t_end");
+  ui::LogLogChart convergence("Convergence", "h / T2, rtol, eps or k1 / k_c (finer to the left)",
+                              "contact-time error / T2");
+  for (MethodKind kind : methods) {
+    std::vector<WorkPrecisionPoint> points = byMethod.at(kind);
+    std::sort(points.begin(), points.end(),
+              [](const auto& a, const auto& b) { return a.secondsMin < b.secondsMin; });
+    ui::LogLogCurve curve{name(kind), {}};
+    ui::LogLogCurve order{name(kind), {}};
+    for (const WorkPrecisionPoint& p : points) {
+      if (p.status != RunStatus::Completed) continue;
+      curve.points.push_back({p.secondsMin, p.errors.state});
+      // an error of 0 (binary128 against binary128, seen in double) tells nothing about order
+      if (p.errors.contactTime > 0) {
+        order.points.push_back({fineness(p.setting, input.period, input.task.model.k1), p.errors.contactTime});
+      }
+    }
+    std::sort(order.points.begin(), order.points.end(),
+              [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
+    if (const auto slope = core::methods::fittedSlope(byMethod.at(kind), ErrorMeasure::ContactTime)) {
+      order.name += QStringLiteral(" (slope %1)").arg(slope->value, 0, 'f', 2);
+    }
+    const int index = work.addCurve(curve.name);
+    for (const QPointF& p : curve.points) work.addPoint(index, p);
+    const int orderIndex = convergence.addCurve(order.name);
+    for (const QPointF& p : order.points) convergence.addPoint(orderIndex, p);
+  }
+  return savePictures(work, dir + "/work_precision", json, error) &&
+         savePictures(convergence, dir + "/convergence", json, error);
+}
+#endif
 
 QString cell(const WorkPrecisionPoint* p) {
   if (p == nullptr) return "—";
@@ -429,46 +472,19 @@ int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& e
     all.push_back(point);
   }
 
-  // the pictures: the same chart class as the explorer's Accuracy scene
-  const QByteArray json = QJsonDocument(metadata(*input)).toJson(QJsonDocument::Compact);
-  ui::LogLogChart work("Error against run time", "run time [s] (minimum of repeated runs)",
-                       "state error at t_end");
-  ui::LogLogChart convergence("Convergence", "h / T2, rtol, eps or k1 / k_c (finer to the left)",
-                              "contact-time error / T2");
-  for (MethodKind kind : *methods) {
-    std::vector<WorkPrecisionPoint> points = byMethod[kind];
-    std::sort(points.begin(), points.end(),
-              [](const auto& a, const auto& b) { return a.secondsMin < b.secondsMin; });
-    ui::LogLogCurve curve{name(kind), {}};
-    ui::LogLogCurve order{name(kind), {}};
-    for (const WorkPrecisionPoint& p : points) {
-      if (p.status != RunStatus::Completed) continue;
-      curve.points.push_back({p.secondsMin, p.errors.state});
-      order.points.push_back({fineness(p.setting, input->period, task.model.k1), p.errors.contactTime});
-    }
-    std::sort(order.points.begin(), order.points.end(),
-              [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
-    if (const auto slope = fittedSlope(byMethod[kind], ErrorMeasure::ContactTime)) {
-      order.name += QStringLiteral(" (slope %1)").arg(slope->value, 0, 'f', 2);
-    }
-    std::vector<ui::LogLogCurve> one{curve};
-    const int index = work.addCurve(curve.name);
-    for (const QPointF& p : curve.points) work.addPoint(index, p);
-    const int orderIndex = convergence.addCurve(order.name);
-    for (const QPointF& p : order.points) convergence.addPoint(orderIndex, p);
-  }
-
   const QByteArray csv = resultsCsv(all);
   const QByteArray md = reportMarkdown(*input, trust, reference, *methods, byMethod, timing, quick);
   const QString dir = *directory;
-  if (!writeAtomically(dir + "/results.csv", csv, error) ||
-      !savePictures(work, dir + "/work_precision", json, error) ||
-      !savePictures(convergence, dir + "/convergence", json, error) ||
-      !writeAtomically(dir + "/report.md", md, error)) {
-    return 1;
-  }
-  progress("report", QStringLiteral("wrote %1/{results.csv, work_precision.svg/.png, "
-                                    "convergence.svg/.png, report.md}").arg(dir));
+  if (!writeAtomically(dir + "/results.csv", csv, error)) return 1;
+#if GRAZELAB_CLI_PICTURES
+  if (!writePictures(dir, *input, *methods, byMethod, error)) return 1;
+  const QString pictures = "work_precision.svg/.png, convergence.svg/.png, ";
+#else
+  const QString pictures;
+  progress("report", "this build has no explorer (GRAZELAB_BUILD_UI=OFF): no pictures");
+#endif
+  if (!writeAtomically(dir + "/report.md", md, error)) return 1;
+  progress("report", QStringLiteral("wrote %1/{results.csv, %2report.md}").arg(dir, pictures));
   return kExitOk;
 }
 

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "ui/export.h"
+#include <QSaveFile>
 
 namespace grazelab::cli {
 
@@ -71,9 +71,11 @@ std::optional<QString> prepareOutputDirectory(const QCommandLineParser& parser, 
 }
 
 bool writeAtomically(const QString& path, const QByteArray& bytes, QString& error) {
-  QString reason;
-  if (ui::saveFileAtomically(path, bytes, &reason)) return true;
-  error = QStringLiteral("cannot write %1: %2").arg(path, reason);
+  QSaveFile file(path);
+  if (file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size() && file.commit()) {
+    return true;
+  }
+  error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
   return false;
 }
 

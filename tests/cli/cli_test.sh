@@ -10,25 +10,7 @@ out=$(mktemp)
 err=$(mktemp)
 trap 'rm -f "$out" "$err"' EXIT
 
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-expect_invalid() {
-  "$cli" "$@" >"$out" 2>"$err"
-  local code=$?
-  if [ "$code" -ne 2 ]; then fail "exit $code, not 2, for: $*"; return; fi
-  if [ -s "$out" ]; then fail "stdout not empty for: $*"; fi
-  if [ "$(wc -l <"$err")" -ne 1 ]; then fail "stderr is not one line for: $* -> $(cat "$err")"; fi
-  if [ -n "${EXPECT_WORD:-}" ] && ! grep -q -- "$EXPECT_WORD" "$err"; then
-    fail "stderr lacks '$EXPECT_WORD' for: $* -> $(cat "$err")"
-  fi
-}
-
-expect_ok() {
-  "$cli" "$@" >"$out" 2>"$err"
-  local code=$?
-  if [ "$code" -ne 0 ]; then fail "exit $code for: $* -> $(cat "$err")"; return 1; fi
-  return 0
-}
+source "$(dirname "$0")/contract_lib.sh"
 
 # invalid input, each with the word its message must contain
 for bad in 0 -1 nan inf -inf abc; do

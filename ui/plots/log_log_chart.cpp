@@ -95,8 +95,7 @@ int LogLogChart::addCurve(const QString& name) {
 
 void LogLogChart::addPoint(int index, QPointF point) {
   if (index < 0 || index >= int(m_series.size())) return;
-  if (!std::isfinite(point.x()) || !std::isfinite(point.y())) return;
-  point.setX(std::max(point.x(), kFloor));
+  if (!std::isfinite(point.x()) || !std::isfinite(point.y()) || !(point.x() > 0)) return;
   point.setY(std::max(point.y(), kFloor));
   m_series[std::size_t(index)]->append(point);
   fitAxes();
@@ -107,9 +106,8 @@ void LogLogChart::setCurves(const std::vector<LogLogCurve>& curves) {
   for (const LogLogCurve& curve : curves) {
     const int index = addCurve(curve.name);
     for (const QPointF& point : curve.points) {
-      if (!std::isfinite(point.x()) || !std::isfinite(point.y())) continue;
-      m_series[std::size_t(index)]->append(
-          QPointF(std::max(point.x(), kFloor), std::max(point.y(), kFloor)));
+      if (!std::isfinite(point.x()) || !std::isfinite(point.y()) || !(point.x() > 0)) continue;
+      m_series[std::size_t(index)]->append(QPointF(point.x(), std::max(point.y(), kFloor)));
     }
   }
   fitAxes();

@@ -16,7 +16,7 @@ namespace grazelab::ui {
 /// One curve of a log-log chart (e.g. one method: run time against error).
 struct LogLogCurve {
   QString name;
-  std::vector<QPointF> points;  ///< x, y > 0 (smaller values are drawn at the floor)
+  std::vector<QPointF> points;  ///< x > 0 (others are left out); y <= kFloor drawn at it
 };
 
 /// A chart with base-10 logarithmic axes on both sides, one line with markers per curve in the
@@ -26,7 +26,7 @@ class LogLogChart : public QChartView {
   Q_OBJECT
 
  public:
-  /// Values below this are drawn on it (an error of exactly 0, e.g. equal roundings).
+  /// y values below this are drawn on it (an error of exactly 0, e.g. equal roundings).
   static constexpr double kFloor = 1e-17;
 
   LogLogChart(const QString& title, const QString& xTitle, const QString& yTitle,

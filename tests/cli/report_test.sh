@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 GrazeLab developers
+# The contracts of `report` and `stability` (issue 8): the files, their columns, the method
+# names, a verdict and a reason for every cell, exit 2 with one line for every invalid input.
+set -u
+cli="$1"
+failures=0
+dir=$(mktemp -d)
+out=$(mktemp)
+err=$(mktemp)
+trap 'rm -rf "$dir" "$out" "$err"' EXIT
+export QT_QPA_PLATFORM=offscreen
+
+source "$(dirname "$0")/contract_lib.sh"
+
+EXPECT_WORD=--out expect_invalid report --quick
+EXPECT_WORD=rk4 expect_invalid report --quick --out "$dir/x" --methods exact,rk4
+EXPECT_WORD=format expect_invalid report --quick --out "$dir/x" --format csv
+EXPECT_WORD=m2 expect_invalid report --quick --out "$dir/x" --m2 -1
+EXPECT_WORD=both expect_invalid report --quick --out "$dir/x" --t-end 10 --contacts 5
+EXPECT_WORD=stability expect_invalid stability --quick --out "$dir/x" --m2 0.3
+EXPECT_WORD=report expect_invalid simulate --out "$dir/x"
+[ -e "$dir/x/results.csv" ] && fail "an invalid report wrote files"
+
+# report --quick on the default problem
+if "$cli" report --quick --out "$dir/report" 2>"$err"; then
+  for f in results.csv work_precision.svg work_precision.png convergence.svg convergence.png report.md; do
+    [ -s "$dir/report/$f" ] || fail "report did not write $f"
+  done
+  grep -q "report: \[1/" "$err" || fail "no progress on stderr"
+  python3 - "$dir/report/results.csv" <<'PY' || fail "results.csv"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+header = open(sys.argv[1]).readline().strip().split(",")
+assert header == ["method", "parameter", "value", "seconds_min", "seconds_median", "runs",
+                  "state_error", "contact_time_error", "impact_speed_error", "missed_contacts",
+                  "extra_contacts", "energy_drift", "status", "reason"], header
+names = {"exact", "moreau-jean", "moreau-jean-theta1", "schatzman-paoli", "dopri5-events",
+         "cvode-adams", "cvode-bdf", "penalty"}
+seen = {r["method"] for r in rows}
+assert seen == names, seen
+params = {"exact": "eps", "moreau-jean": "h", "moreau-jean-theta1": "h", "schatzman-paoli": "h",
+          "dopri5-events": "rtol", "cvode-adams": "rtol", "cvode-bdf": "rtol", "penalty": "k_c"}
+for r in rows:
+    assert r["parameter"] == params[r["method"]], r
+    assert r["status"] in {"completed", "budget", "failed", "refused", "cancelled"}, r
+    if r["status"] == "completed":
+        assert float(r["seconds_min"]) > 0 and float(r["seconds_min"]) <= float(r["seconds_median"]) * (1 + 1e-9)
+        assert math.isfinite(float(r["state_error"]))
+    else:
+        assert r["reason"].strip('"'), r
+for m in names - {"exact"}:
+    assert sum(r["method"] == m for r in rows) >= 5, m
+exact = [r for r in rows if r["method"] == "exact"]
+assert float(exact[0]["state_error"]) <= 1e-12, exact[0]
+best_other = min(float(r["state_error"]) for r in rows if r["method"] != "exact" and r["status"] == "completed")
+assert float(exact[0]["state_error"]) < best_other
+PY
+  grep -q "moreau-jean | h |" "$dir/report/report.md" || fail "report.md: no Moreau-Jean slope"
+  grep -qi "predictability horizon" "$dir/report/report.md" || fail "report.md: no horizon"
+else
+  fail "report --quick failed: $(tail -3 "$err")"
+fi
+
+# stability --quick: every cell has a verdict, and a reason when it is not ok
+if "$cli" stability --quick --out "$dir/stability" 2>"$err"; then
+  [ -s "$dir/stability/matrix.md" ] || fail "no matrix.md"
+  python3 - "$dir/stability/matrix.csv" <<'PY' || fail "matrix.csv"
+import csv, sys
+header = open(sys.argv[1]).readline().strip().split(",")
+assert header == ["case", "method", "seconds", "state_error", "contact_time_error",
+                  "missed_contacts", "energy_drift", "verdict", "reason"], header
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) >= 8 * 8, len(rows)
+for r in rows:
+    assert r["verdict"] in {"ok", "inaccurate", "refused", "budget", "failed"}, r
+    assert (r["verdict"] == "ok") == (r["reason"].strip('"') == ""), r
+    if r["verdict"] == "ok":
+        assert r["state_error"] in ("",) or float(r["state_error"]) <= 1e-3, r
+    if r["method"] == "exact" and not r["case"].startswith("penalty-"):
+        assert r["verdict"] == "ok", r
+PY
+else
+  fail "stability --quick failed: $(tail -3 "$err")"
+fi
+
+if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
+echo "all report and stability checks passed"
