@@ -20,7 +20,7 @@ namespace grazelab::ui {
 /// setting is run on the same start, up to half a period past the exact run's last contact.
 struct AccuracyJob {
   std::vector<core::methods::MethodSetting> settings;
-  core::methods::TimingPolicy timing{1, 0.5};
+  core::methods::TimingPolicy timing{1, 0.5, 0.0, 1};
   core::methods::WorkBudget budget{200'000'000, 5.0};
 };
 

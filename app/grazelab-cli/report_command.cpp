@@ -41,9 +41,7 @@ QString parameterText(const core::methods::MethodSetting& setting) {
     const std::string_view p = core::toString(setting.precision);
     return QString::fromUtf8(p.data(), qsizetype(p.size()));
   }
-  const std::string_view p = core::methods::parameterName(setting.kind);
-  return QString::fromUtf8(p.data(), qsizetype(p.size())) + "=" +
-         QString::number(setting.value, 'g', 3);
+  return QString::fromStdString(setting.label()).section(' ', 1);
 }
 
 /// Smaller is finer, dimensionless: h / T2, rtol, k1 / k_c, or the unit roundoff.
@@ -54,7 +52,7 @@ QString parameterText(const core::methods::MethodSetting& setting) {
     case MethodKind::SchatzmanPaoli:
       return setting.value / period;
     case MethodKind::Penalty:
-      return k1 / setting.value;
+      return setting.penaltyToleranceSweep ? setting.penaltyRtol : k1 / setting.value;
     default:
       return setting.parameterValue();
   }
@@ -145,7 +143,7 @@ QByteArray resultsCsv(const std::vector<WorkPrecisionPoint>& points) {
       "method,parameter,value,seconds_min,seconds_median,runs,state_error,contact_time_error,"
       "impact_speed_error,missed_contacts,extra_contacts,energy_drift,status,reason\n";
   for (const WorkPrecisionPoint& p : points) {
-    const std::string_view parameter = core::methods::parameterName(p.setting.kind);
+    const std::string_view parameter = p.setting.parameter();
     QString reason = QString::fromStdString(p.reason);
     reason.replace('"', "'");
     const std::string_view status = core::methods::toString(p.status);
@@ -190,6 +188,22 @@ bool savePictures(ui::LogLogChart& chart, const QString& stem, const QByteArray&
   return true;
 }
 
+/// One curve per method, and a second one for the penalty method's tolerance sweep.
+std::vector<std::pair<MethodKind, bool>> curveKeys(
+    const std::vector<MethodKind>& methods,
+    const std::map<MethodKind, std::vector<WorkPrecisionPoint>>& byMethod) {
+  std::vector<std::pair<MethodKind, bool>> keys;
+  for (MethodKind kind : methods) {
+    keys.push_back({kind, false});
+    const auto& points = byMethod.at(kind);
+    if (std::any_of(points.begin(), points.end(),
+                    [](const auto& p) { return p.setting.penaltyToleranceSweep; })) {
+      keys.push_back({kind, true});
+    }
+  }
+  return keys;
+}
+
 /// The two pictures: the same chart class as the explorer's Accuracy scene.
 bool writePictures(const QString& dir, const ReportInput& input,
                    const std::vector<MethodKind>& methods,
@@ -201,14 +215,15 @@ bool writePictures(const QString& dir, const ReportInput& input,
                        "state error at t_end");
   ui::LogLogChart convergence("Convergence", "h / T2, rtol, eps or k1 / k_c (finer to the left)",
                               "contact-time error / T2");
-  for (MethodKind kind : methods) {
+  for (const auto& [kind, toleranceSweep] : curveKeys(methods, byMethod)) {
     std::vector<WorkPrecisionPoint> points = byMethod.at(kind);
     std::sort(points.begin(), points.end(),
               [](const auto& a, const auto& b) { return a.secondsMin < b.secondsMin; });
-    ui::LogLogCurve curve{name(kind), {}};
-    ui::LogLogCurve order{name(kind), {}};
+    const QString label = toleranceSweep ? name(kind) + " (rtol, k_c = 1e12 k1)" : name(kind);
+    ui::LogLogCurve curve{label, {}};
+    ui::LogLogCurve order{label, {}};
     for (const WorkPrecisionPoint& p : points) {
-      if (p.status != RunStatus::Completed) continue;
+      if (p.status != RunStatus::Completed || p.setting.penaltyToleranceSweep != toleranceSweep) continue;
       curve.points.push_back({p.secondsMin, p.errors.state});
       // an error of 0 (binary128 against binary128, seen in double) tells nothing about order
       if (p.errors.contactTime > 0) {
@@ -217,9 +232,8 @@ bool writePictures(const QString& dir, const ReportInput& input,
     }
     std::sort(order.points.begin(), order.points.end(),
               [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
-    if (const auto slope = core::methods::fittedSlope(byMethod.at(kind), ErrorMeasure::ContactTime)) {
-      order.name += QStringLiteral(" (slope %1)").arg(slope->value, 0, 'f', 2);
-    }
+    const auto slope = core::methods::fittedSlope(byMethod.at(kind), ErrorMeasure::ContactTime);
+    if (slope && !toleranceSweep) order.name += QStringLiteral(" (slope %1)").arg(slope->value, 0, 'f', 2);
     const int index = work.addCurve(curve.name);
     for (const QPointF& p : curve.points) work.addPoint(index, p);
     const int orderIndex = convergence.addCurve(order.name);
@@ -275,9 +289,10 @@ QByteArray reportMarkdown(const ReportInput& input, const core::Trust& trust,
             .arg(humanSeconds(reference.seconds));
   md += QStringLiteral("- Errors: state at t_end, max of |du| / d and |dv| / (w1 d); contact "
                        "times / T2 over contacts matched one to one; missed and extra contacts "
-                       "counted. Timing: minimum and median of up to %1 runs per setting (fewer "
-                       "once %2 s are spent), one core of this machine.\n\n")
-            .arg(timing.runs).arg(timing.capSeconds);
+                       "counted. Timing: minimum and median of %1 runs per setting (fewer once "
+                       "%2 s are spent; a short run repeated until %3 s are spent), one core of "
+                       "this machine.\n\n")
+            .arg(timing.runs).arg(timing.capSeconds).arg(timing.minSeconds);
 
   md += "## Which method reaches which state error, and at what cost\n\n";
   md += "The cheapest setting whose state error at t_end is at most the target, with its run time (minimum).\n\n";
@@ -317,6 +332,7 @@ QByteArray reportMarkdown(const ReportInput& input, const core::Trust& trust,
               .arg(core::methods::kPenaltyReportRtol);
     md += "| k_c | run time | steps | state error | contact-time error / T2 | status |\n|---|---|---|---|---|---|\n";
     for (const WorkPrecisionPoint& p : byMethod.at(MethodKind::Penalty)) {
+      if (p.setting.penaltyToleranceSweep) continue;
       md += QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 |\n")
                 .arg(p.setting.value, 0, 'g', 3)
                 .arg(humanSeconds(p.secondsMin))
@@ -326,7 +342,8 @@ QByteArray reportMarkdown(const ReportInput& input, const core::Trust& trust,
     }
     md += "\nThe contact lasts about pi sqrt(m2 / k_c); CVODE BDF restarts at each switch of the "
           "force, so its step count hardly grows with k_c, while the modelling error "
-          "(the contact's length) falls like k_c^(-1/2) until the tolerance takes over.\n";
+          "(the contact's length) falls like k_c^(-1/2) until the tolerance takes over. Its "
+          "cost is set by the tolerance instead (the rows with parameter rtol, at k_c = 1e12 k1).\n";
   }
 
   if (byMethod.count(MethodKind::Exact)) {
@@ -428,7 +445,7 @@ int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& e
   const auto directory = prepareOutputDirectory(parser, error);
   if (!directory) return kExitInvalidInput;
   const bool quick = parser.isSet("quick");
-  const TimingPolicy timing = quick ? TimingPolicy{2, 0.5} : TimingPolicy{5, 3.0};
+  const TimingPolicy timing = quick ? TimingPolicy{2, 0.5, 0.05, 1000} : TimingPolicy{5, 3.0, 0.2, 1000};
   WorkBudget budget;
   budget.maxSteps = 1'000'000'000;
   budget.maxSeconds = quick ? 5 : 60;

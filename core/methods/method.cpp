@@ -73,7 +73,12 @@ std::string_view toString(RunStatus status) {
   return "unknown";
 }
 
+std::string_view MethodSetting::parameter() const {
+  return kind == MethodKind::Penalty && penaltyToleranceSweep ? "rtol" : parameterName(kind);
+}
+
 double MethodSetting::parameterValue() const {
+  if (kind == MethodKind::Penalty && penaltyToleranceSweep) return penaltyRtol;
   if (kind != MethodKind::Exact) return value;
   switch (precision) {
     case Precision::Double:
@@ -93,7 +98,8 @@ std::string MethodSetting::label() const {
     out << toString(precision);
   } else {
     out.precision(3);
-    out << parameterName(kind) << '=' << value;
+    out << parameter() << '=' << parameterValue();
+    if (kind == MethodKind::Penalty && penaltyToleranceSweep) out << " (k_c=" << value << ')';
   }
   return out.str();
 }

@@ -50,7 +50,12 @@ struct MethodSetting {
   Precision precision = Precision::Double;  ///< exact only
   /// The penalty method's CVODE tolerance (its parameter is k_c).
   double penaltyRtol = 1e-10;
-  /// The value in the parameter's column: `value`, or the unit roundoff of `precision`.
+  /// Penalty only: this setting's knob is its CVODE tolerance, k_c held (a tolerance sweep).
+  bool penaltyToleranceSweep = false;
+  /// The knob of this setting: parameterName(kind), or "rtol" for a penalty tolerance sweep.
+  std::string_view parameter() const;
+  /// The value in the parameter's column: `value`, the unit roundoff of `precision`, or the
+  /// penalty's rtol in a tolerance sweep.
   double parameterValue() const;
   /// e.g. "moreau-jean h=0.001", "exact quad".
   std::string label() const;

@@ -33,7 +33,7 @@ WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
   point.setting = setting;
   std::vector<double> seconds;
   double spent = 0;
-  for (int run = 0; run < std::max(1, timing.runs); ++run) {
+  for (int run = 0;; ++run) {
     MethodRun result = runMethod(task, setting, budget, stop);
     seconds.push_back(result.seconds);
     spent += result.seconds;
@@ -44,8 +44,10 @@ WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
       point.steps = result.steps;
     }
     // a run that did not complete is not repeated: its time says nothing more
+    const bool enough = run + 1 >= std::max(1, timing.runs) &&
+                        (spent >= timing.minSeconds || run + 1 >= timing.maxRuns);
     const bool last = result.status != RunStatus::Completed || spent > timing.capSeconds ||
-                      stop.stop_requested() || run + 1 >= std::max(1, timing.runs);
+                      stop.stop_requested() || enough;
     if (run == 0 && firstRun != nullptr) *firstRun = std::move(result);
     if (last) break;
   }
@@ -78,12 +80,20 @@ std::vector<MethodSetting> reportSettings(MethodKind kind, double period, double
     case MethodKind::Dopri5Events:
     case MethodKind::CvodeAdams:
     case MethodKind::CvodeBdf:
-      for (int e = 3; e <= 13; e += quick ? 2 : 1) add(std::pow(10.0, -e));
+      for (int e = 3; e <= (quick ? 13 : 15); e += quick ? 2 : 1) add(std::pow(10.0, -e));
       break;
     case MethodKind::Penalty:
       // a tight tolerance, so that the modelling error of a finite k_c shows, not CVODE's
       for (int e = 2; e <= 12; e += quick ? 2 : 1) {
         settings.push_back({kind, k1 * std::pow(10.0, e), Precision::Double, kPenaltyReportRtol});
+      }
+      // and the stiffest spring at looser tolerances: the cost side of the method
+      if (!quick) {
+        for (int e = 4; e <= 10; e += 2) {
+          MethodSetting setting{kind, k1 * 1e12, Precision::Double, std::pow(10.0, -e)};
+          setting.penaltyToleranceSweep = true;
+          settings.push_back(setting);
+        }
       }
       break;
   }
@@ -97,6 +107,7 @@ std::optional<Slope> fittedSlope(const std::vector<WorkPrecisionPoint>& points,
   for (const WorkPrecisionPoint& point : points) {
     const double error = errorOf(point, measure);
     if (!usable(point) || point.errors.missed > 0 || point.errors.extra > 0) continue;
+    if (point.setting.penaltyToleranceSweep) continue;  // the penalty's order is in k_c
     if (!(error > kRoundingFloor && error < kSaturated)) continue;
     // smaller is finer for every knob: h, rtol, eps, and 1 / k_c
     const double knob = point.setting.parameterValue();

@@ -14,10 +14,14 @@
 namespace grazelab::core::methods {
 
 /// How a setting is timed: a fixed number of runs, fewer once a time cap is spent (at least
-/// one), minimum and median kept (DiffEqDevTools' practice).
+/// one), minimum and median kept (DiffEqDevTools' practice). A short run is repeated until
+/// `minSeconds` are spent (at most `maxRuns` times): the minimum of five 50-microsecond runs
+/// still carries a cold cache or a timer tick.
 struct TimingPolicy {
   int runs = 5;
   double capSeconds = 3;
+  double minSeconds = 0.2;
+  int maxRuns = 1000;
 };
 
 /// One row of the work-precision report: one setting of one method.
@@ -44,8 +48,9 @@ WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
 inline constexpr double kPenaltyReportRtol = 1e-12;
 
 /// The settings the report sweeps for a method on a problem with slow period T2: steps h from
-/// 1e-3 T2 down to 1e-6 T2 by quarter decades, tolerances 1e-3 ... 1e-13, k_c 1e2 ... 1e12 (k_c relative to
-/// k1 of the model), the exact solver in its three precisions. `quick`: fewer and cheaper ones.
+/// 1e-3 T2 down to 1e-6 T2 by quarter decades, tolerances 1e-3 ... 1e-15, k_c 1e2 ... 1e12
+/// (relative to k1 of the model; then k_c = 1e12 k1 at tolerances 1e-4 ... 1e-10), the exact
+/// solver in its three precisions. `quick`: fewer and cheaper ones.
 std::vector<MethodSetting> reportSettings(MethodKind kind, double period, double k1, bool quick);
 
 /// Which error a convergence fit uses.

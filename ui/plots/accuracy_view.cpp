@@ -30,7 +30,7 @@ QString accuracyLabel(const core::methods::WorkPrecisionPoint& point) {
   if (setting.kind == core::methods::MethodKind::Exact) {
     label += text(core::toString(setting.precision));
   } else {
-    label += text(core::methods::parameterName(setting.kind)) + '=' + QString::number(setting.value, 'g', 2);
+    label += text(setting.parameter()) + '=' + QString::number(setting.parameterValue(), 'g', 2);
   }
   if (point.status != core::methods::RunStatus::Completed) {
     return label + QStringLiteral(": %1").arg(text(core::methods::toString(point.status)));
@@ -96,13 +96,14 @@ void AccuracyView::show(const SimUpdate& update) {
     if (p.point.status != core::methods::RunStatus::Completed) continue;
     curves[p.point.setting.kind].push_back({p.point.secondsMin, p.point.errors.state});
   }
+  // every method has its curve from the start (empty until its first point), so that each
+  // keeps its colour, the one it has in the report's pictures
   std::vector<LogLogCurve> all;
   for (core::methods::MethodKind kind : core::methods::kAllMethods) {
-    auto found = curves.find(kind);
-    if (found == curves.end()) continue;
-    std::sort(found->second.begin(), found->second.end(),
+    std::vector<QPointF>& points = curves[kind];
+    std::sort(points.begin(), points.end(),
               [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
-    all.push_back({text(core::methods::methodName(kind)), found->second});
+    all.push_back({text(core::methods::methodName(kind)), points});
   }
   m_chart->setCurves(all);
   // the picker: every finished setting, the user's choice kept

@@ -12,19 +12,20 @@
 namespace grazelab::ui {
 
 QColor curveColor(int index) {
-  // Okabe-Ito, with black first and the yellow (weak on white) last
+  // Okabe-Ito, with black first and the yellow (weak on white) last, then a grey
   static const QColor palette[] = {QColor(0x00, 0x00, 0x00), QColor(0xE6, 0x9F, 0x00),
                                    QColor(0x56, 0xB4, 0xE9), QColor(0x00, 0x9E, 0x73),
                                    QColor(0x00, 0x72, 0xB2), QColor(0xD5, 0x5E, 0x00),
-                                   QColor(0xCC, 0x79, 0xA7), QColor(0xB8, 0xA8, 0x00)};
-  return palette[index % 8];
+                                   QColor(0xCC, 0x79, 0xA7), QColor(0xB8, 0xA8, 0x00),
+                                   QColor(0x8C, 0x8C, 0x8C)};
+  return palette[index % 9];
 }
 
 Qt::PenStyle curveDash(int index) {
   static const Qt::PenStyle dashes[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine,
                                         Qt::DashDotLine, Qt::SolidLine, Qt::DashDotDotLine,
-                                        Qt::DashLine, Qt::DotLine};
-  return dashes[index % 8];
+                                        Qt::DashLine, Qt::DotLine, Qt::DashDotLine};
+  return dashes[index % 9];
 }
 
 namespace {
@@ -102,15 +103,26 @@ void LogLogChart::addPoint(int index, QPointF point) {
 }
 
 void LogLogChart::setCurves(const std::vector<LogLogCurve>& curves) {
-  clear();
-  for (const LogLogCurve& curve : curves) {
-    const int index = addCurve(curve.name);
-    for (const QPointF& point : curve.points) {
+  // the series are kept and their points replaced: removing and re-adding them on every update
+  // left stale markers on screen (Qt Charts repaints only what it knows has changed)
+  while (m_series.size() > curves.size()) {
+    chart()->removeSeries(m_series.back());
+    delete m_series.back();
+    m_series.pop_back();
+  }
+  for (std::size_t index = 0; index < curves.size(); ++index) {
+    if (index >= m_series.size()) addCurve(curves[index].name);
+    QLineSeries* series = m_series[index];
+    series->setName(curves[index].name);
+    QList<QPointF> points;
+    for (const QPointF& point : curves[index].points) {
       if (!std::isfinite(point.x()) || !std::isfinite(point.y()) || !(point.x() > 0)) continue;
-      m_series[std::size_t(index)]->append(QPointF(point.x(), std::max(point.y(), kFloor)));
+      points.append(QPointF(point.x(), std::max(point.y(), kFloor)));
     }
+    series->replace(points);
   }
   fitAxes();
+  viewport()->update();
 }
 
 void LogLogChart::fitAxes() {
