@@ -195,6 +195,9 @@ int main(int argc, char* argv[]) {
     const int code = command == "report" ? grazelab::cli::runReport(parser, watcher.token(), error)
                                          : grazelab::cli::runStability(parser, watcher.token(), error);
     if (code == grazelab::cli::kExitInvalidInput) return fail(error);
+    if (code == grazelab::cli::kExitInterrupted) {
+      std::fprintf(stderr, "grazelab-cli: interrupted: nothing written\n");
+    }
     if (code != 0 && !error.isEmpty()) std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
     return watcher.interrupted() ? kInterrupted : code;
   }
