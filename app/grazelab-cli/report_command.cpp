@@ -249,7 +249,7 @@ QString cell(const WorkPrecisionPoint* p) {
   return parameterText(p->setting) + ", " + humanSeconds(p->secondsMin);
 }
 
-QByteArray reportMarkdown(const ReportInput& input, const core::Trust& trust,
+QByteArray reportMarkdown(const ReportInput& input, const core::methods::ComparisonEnd& end,
                           const core::methods::Reference& reference,
                           const std::vector<MethodKind>& methods,
                           const std::map<MethodKind, std::vector<WorkPrecisionPoint>>& byMethod,
@@ -276,14 +276,14 @@ QByteArray reportMarkdown(const ReportInput& input, const core::Trust& trust,
             .arg(reference.run.result.cost.contacts);
   md += QStringLiteral("- Predictability horizon of the start (trust of the exact double run, %1): "
                        "t = %2 (%3 T2); verdict %4, estimated state error %5 at t_end. %6\n")
-            .arg(QString::fromStdString(trust.horizonMethod))
-            .arg(trust.horizon, 0, 'g', 4)
-            .arg(trust.horizon / input.period, 0, 'g', 4)
-            .arg(core::toString(trust.verdict).data())
-            .arg(scientific(trust.stateError, 2))
-            .arg(input.task.tEnd <= trust.horizon
-                     ? QStringLiteral("The comparison stays inside it.")
-                     : QStringLiteral("The horizon asked for goes past it: the end was moved to it."));
+            .arg(QString::fromStdString(end.trust.horizonMethod))
+            .arg(end.horizon, 0, 'g', 4)
+            .arg(end.horizon / input.period, 0, 'g', 4)
+            .arg(core::toString(end.trust.verdict).data())
+            .arg(scientific(end.trust.stateError, 2))
+            .arg(end.shortened
+                     ? QStringLiteral("The horizon asked for goes past it: the end was moved before it.")
+                     : QStringLiteral("The comparison stays inside it."));
   md += QStringLiteral("- Reference: the exact solver in binary128 on the chain scaled 3x in length, "
                        "5x in mass and 1/sqrt(3) in time (other roundings, same physics), %1.\n")
             .arg(humanSeconds(reference.seconds));
@@ -452,10 +452,13 @@ int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& e
   Task& task = input->task;
 
   progress("report", QStringLiteral("estimating the predictability horizon of the start"));
-  const core::Trust trust = startTrust(task, stop);
-  if (trust.horizon > 0 && trust.horizon < task.tEnd) {
-    input->horizonNote += QStringLiteral("; moved to the predictability horizon %1").arg(trust.horizon);
-    task.tEnd = trust.horizon;
+  const ComparisonEnd end = comparisonEnd(task, stop);
+  if (end.shortened) {
+    input->horizonNote += QStringLiteral("; moved to t = %1, an eighth of T2 before the "
+                                         "predictability horizon of the start (%2)")
+                              .arg(end.tEnd, 0, 'g', 10)
+                              .arg(end.horizon, 0, 'g', 6);
+    task.tEnd = end.tEnd;
   }
   progress("report", QStringLiteral("binary128 reference to t = %1 (%2 T2)")
                          .arg(task.tEnd, 0, 'g', 6).arg(task.tEnd / input->period, 0, 'g', 4));
@@ -490,7 +493,8 @@ int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& e
   }
 
   const QByteArray csv = resultsCsv(all);
-  const QByteArray md = reportMarkdown(*input, trust, reference, *methods, byMethod, timing, quick);
+  const QByteArray md =
+      reportMarkdown(*input, end, reference, *methods, byMethod, timing, quick);
   const QString dir = *directory;
   if (!writeAtomically(dir + "/results.csv", csv, error)) return 1;
 #if GRAZELAB_CLI_PICTURES

@@ -328,16 +328,11 @@ CaseHorizon runStabilityCase(const StabilityCase& row, const std::vector<MethodK
   }
   Task withEvents = task;
   withEvents.needs.events = true;
-  Trust trust = startTrust(task, stop);
-  if (trust.horizon > 0 && trust.horizon < task.tEnd) {
-    // the horizon is the time of the last contact within tolerance: end an eighth of a period
-    // before it, so that the end does not fall on a contact
-    withEvents.tEnd = std::max(trust.horizon - horizon.period / 8, trust.horizon / 2);
-    horizon.tEnd = withEvents.tEnd;
-    horizon.shortened = true;
-    withEvents.needs.events = true;
-    trust = startTrust(withEvents, stop);
-  }
+  const ComparisonEnd end = comparisonEnd(task, stop);
+  const Trust& trust = end.trust;
+  withEvents.tEnd = end.tEnd;
+  horizon.tEnd = end.tEnd;
+  horizon.shortened = end.shortened;
   horizon.estimatedError = trust.stateError;
   WorkBudget referenceBudget = budget;
   referenceBudget.maxSeconds = std::max(budget.maxSeconds, 60.0);

@@ -175,4 +175,20 @@ Trust startTrust(const Task& task, std::stop_token stop) {
   return monitor.finish(result);
 }
 
+ComparisonEnd comparisonEnd(const Task& task, std::stop_token stop) {
+  ComparisonEnd end;
+  end.tEnd = task.tEnd;
+  end.trust = startTrust(task, stop);
+  end.horizon = end.trust.horizon;
+  if (end.horizon > 0 && end.horizon < task.tEnd) {
+    const double period = twoPi<double>() / makeChain(task.model).chain->omegaSlow;
+    end.tEnd = std::max(end.horizon - period / 8, end.horizon / 2);
+    end.shortened = true;
+    Task shorter = task;
+    shorter.tEnd = end.tEnd;
+    end.trust = startTrust(shorter, stop);
+  }
+  return end;
+}
+
 }  // namespace grazelab::core::methods

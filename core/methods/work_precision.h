@@ -83,4 +83,16 @@ const WorkPrecisionPoint* cheapestReaching(const std::vector<WorkPrecisionPoint>
 /// (a long double shadow, issue 7).
 Trust startTrust(const Task& task, std::stop_token stop = {});
 
+/// Where a comparison of methods on `task` may end: its own end, or, when the predictability
+/// horizon of the start comes first, an eighth of a period before it (the horizon is the time
+/// of the last contact within tolerance: an end on a contact would judge the methods on which
+/// side of it they fall). `trust` receives the estimate for that end.
+struct ComparisonEnd {
+  double tEnd = 0;
+  bool shortened = false;
+  double horizon = 0;  ///< the predictability horizon found
+  Trust trust;         ///< the estimate of the exact double run up to tEnd
+};
+ComparisonEnd comparisonEnd(const Task& task, std::stop_token stop = {});
+
 }  // namespace grazelab::core::methods
