@@ -29,67 +29,48 @@ MethodRun runCvode(const Task& task, bool bdf, double rtol, const WorkBudget& bu
   const double delta = run.gap();
   // beyond this the flight went through the stop unnoticed (far past the tolerance's reach)
   const double throughStop = delta + std::max(1e3 * rtol, 1e-6);
-  State x = run.scaledStart();
-  double tau = 0;
   double lastContact = -1;
   int restartsWithoutProgress = 0;
-  std::int64_t steps = 0;
-  cvode.restart(tau, x, false);
-  auto finishRun = [&]() {
-    run.run().steps = steps;
-    run.run().rhsEvaluations = cvode.rhsEvaluations();
-    return run.take();
-  };
-  while (true) {
-    if (steps % 64 == 0 && run.mustStop(steps, tau, x)) return finishRun();
-    const CvodeIntegrator::Outcome outcome = cvode.step(tau, x);
-    ++steps;
-    switch (outcome) {
-      case CvodeIntegrator::Outcome::Error:
-        run.finish(RunStatus::Failed, cvode.error(), tau, x);
-        return finishRun();
-      case CvodeIntegrator::Outcome::End:
-        run.complete(x);
-        return finishRun();
-      case CvodeIntegrator::Outcome::Step:
-        if (x.u2 > throughStop) {
-          run.finish(RunStatus::Failed,
-                     "passed through the stop (a root at the restart point is inactive in CVODE: "
-                     "a stuck phase is not seen)",
-                     tau, x);
-          return finishRun();
-        }
-        run.sample(tau, x);
-        break;
-      case CvodeIntegrator::Outcome::Root: {
-        State before = x;
-        before.u2 = delta;  // on the stop, to the resolution of the root
-        State after = before;
-        if (before.v2 > 0) {
-          after.v2 = -before.v2;
-          run.contact(EventType::Impact, tau, before, after);
-        } else {
-          run.contact(EventType::Grazing, tau, before, after);
-        }
-        if (tau - lastContact < kNoProgress * twoPi<double>()) {
-          if (++restartsWithoutProgress > kMaxRestartsWithoutProgress) {
-            run.finish(RunStatus::Failed,
-                       "chattering: restarts on the stop without progress (a stuck phase: "
-                       "this method has no stuck mode)",
-                       tau, after);
-            return finishRun();
-          }
-        } else {
-          restartsWithoutProgress = 0;
-        }
-        lastContact = tau;
-        x = after;
-        cvode.restart(tau, x, false);
-        run.sample(tau, x);
-        break;
-      }
+  cvode.restart(0, run.scaledStart(), false);
+  auto onStep = [&](double tau, const State& x) {
+    if (x.u2 > throughStop) {
+      run.finish(RunStatus::Failed,
+                 "passed through the stop (a root at the restart point is inactive in CVODE: "
+                 "a stuck phase is not seen)",
+                 tau, x);
+      return false;
     }
-  }
+    run.sample(tau, x);
+    return true;
+  };
+  auto onRoot = [&](double tau, State& x) {
+    State before = x;
+    before.u2 = delta;  // on the stop, to the resolution of the root
+    State after = before;
+    if (before.v2 > 0) {
+      after.v2 = -before.v2;
+      run.contact(EventType::Impact, tau, before, after);
+    } else {
+      run.contact(EventType::Grazing, tau, before, after);
+    }
+    if (tau - lastContact < kNoProgress * twoPi<double>()) {
+      if (++restartsWithoutProgress > kMaxRestartsWithoutProgress) {
+        run.finish(RunStatus::Failed,
+                   "chattering: restarts on the stop without progress (a stuck phase: this "
+                   "method has no stuck mode)",
+                   tau, after);
+        return false;
+      }
+    } else {
+      restartsWithoutProgress = 0;
+    }
+    lastContact = tau;
+    x = after;
+    cvode.restart(tau, x, false);
+    run.sample(tau, x);
+    return true;
+  };
+  return driveCvode(run, cvode, run.scaledStart(), onStep, onRoot);
 }
 
 }  // namespace grazelab::core::methods

@@ -65,4 +65,40 @@ class CvodeIntegrator {
   void* m_memory = nullptr;
 };
 
+/// The loop of every method built on CVODE: one internal step at a time from `x` at tau = 0,
+/// the budget and the stop token checked every 64 steps, a solver error or the horizon ending
+/// the run. `onStep(tau, x)` sees every step and `onRoot(tau, x)` every root; either returns
+/// false after finishing the run itself (a failure it detected). The integrator must have been
+/// started (restart()) at tau = 0.
+template <typename OnStep, typename OnRoot>
+MethodRun driveCvode(ScaledRun& run, CvodeIntegrator& cvode, State x, OnStep onStep,
+                     OnRoot onRoot) {
+  double tau = 0;
+  std::int64_t steps = 0;
+  auto finishRun = [&]() {
+    run.run().steps = steps;
+    run.run().rhsEvaluations = cvode.rhsEvaluations();
+    return run.take();
+  };
+  while (true) {
+    if (steps % 64 == 0 && run.mustStop(steps, tau, x)) return finishRun();
+    const CvodeIntegrator::Outcome outcome = cvode.step(tau, x);
+    ++steps;
+    switch (outcome) {
+      case CvodeIntegrator::Outcome::Error:
+        run.finish(RunStatus::Failed, cvode.error(), tau, x);
+        return finishRun();
+      case CvodeIntegrator::Outcome::End:
+        run.complete(x);
+        return finishRun();
+      case CvodeIntegrator::Outcome::Step:
+        if (!onStep(tau, x)) return finishRun();
+        break;
+      case CvodeIntegrator::Outcome::Root:
+        if (!onRoot(tau, x)) return finishRun();
+        break;
+    }
+  }
+}
+
 }  // namespace grazelab::core::methods

@@ -24,48 +24,31 @@ MethodRun runPenalty(const Task& task, double kc, double rtol, const WorkBudget&
   const double stiffness = run.scaledStopStiffness(kc);
   CvodeIntegrator cvode(run, {true, rtol, stiffness, 0});
   const double delta = run.gap();
-  State x = run.scaledStart();
-  double tau = 0;
-  std::int64_t steps = 0;
+  const State& x0 = run.scaledStart();
   // a start on the stop is in contact when it moves or is pushed into it
-  const auto a0 = run.acceleration(x.u1, x.u2);
-  bool inContact = x.u2 >= delta && (x.v2 > 0 || (x.v2 == 0 && a0[1] > 0));
+  const auto a0 = run.acceleration(x0.u1, x0.u2);
+  bool inContact = x0.u2 >= delta && (x0.v2 > 0 || (x0.v2 == 0 && a0[1] > 0));
   double entryTau = 0;
-  State entry = x;
-  cvode.restart(tau, x, inContact);
-  auto finishRun = [&]() {
-    run.run().steps = steps;
-    run.run().rhsEvaluations = cvode.rhsEvaluations();
-    return run.take();
+  State entry = x0;
+  cvode.restart(0, x0, inContact);
+  auto onStep = [&](double tau, const State& x) {
+    run.sample(tau, x);
+    return true;
   };
-  while (true) {
-    if (steps % 64 == 0 && run.mustStop(steps, tau, x)) return finishRun();
-    const CvodeIntegrator::Outcome outcome = cvode.step(tau, x);
-    ++steps;
-    switch (outcome) {
-      case CvodeIntegrator::Outcome::Error:
-        run.finish(RunStatus::Failed, cvode.error(), tau, x);
-        return finishRun();
-      case CvodeIntegrator::Outcome::End:
-        run.complete(x);
-        return finishRun();
-      case CvodeIntegrator::Outcome::Step:
-        run.sample(tau, x);
-        break;
-      case CvodeIntegrator::Outcome::Root:
-        if (!inContact) {
-          entryTau = tau;
-          entry = x;
-        } else {
-          run.contact(entry.v2 > 0 ? EventType::Impact : EventType::Stick, 0.5 * (entryTau + tau),
-                      entry, x);
-        }
-        inContact = !inContact;
-        cvode.restart(tau, x, inContact);
-        run.sample(tau, x);
-        break;
+  auto onRoot = [&](double tau, State& x) {
+    if (!inContact) {
+      entryTau = tau;
+      entry = x;
+    } else {
+      run.contact(entry.v2 > 0 ? EventType::Impact : EventType::Stick, 0.5 * (entryTau + tau),
+                  entry, x);
     }
-  }
+    inContact = !inContact;
+    cvode.restart(tau, x, inContact);
+    run.sample(tau, x);
+    return true;
+  };
+  return driveCvode(run, cvode, x0, onStep, onRoot);
 }
 
 }  // namespace grazelab::core::methods
