@@ -21,7 +21,8 @@ namespace grazelab::ui {
 struct AccuracyJob {
   std::vector<core::methods::MethodSetting> settings;
   core::methods::TimingPolicy timing{1, 0.5, 0.0, 1};
-  core::methods::WorkBudget budget{200'000'000, 5.0};
+  /// per run: a long horizon ends some runs on their budget (shown) rather than hold the sweep
+  core::methods::WorkBudget budget{200'000'000, 1.0};
 };
 
 /// One finished setting of the sweep, with its run (events and samples over the trace's

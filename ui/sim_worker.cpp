@@ -35,7 +35,9 @@ void sweepAccuracy(const SimRequest& request, SimUpdate last, std::stop_token st
   methods::Task overlayTask = task;
   overlayTask.needs.samples = request.request.needs.samples;
   methods::Task referenceTask = task;
-  const methods::Reference reference = methods::makeReference(referenceTask, job.budget, stop);
+  methods::WorkBudget referenceBudget = job.budget;
+  referenceBudget.maxSeconds = std::max(job.budget.maxSeconds, 60.0);  // it judges every run
+  const methods::Reference reference = methods::makeReference(referenceTask, referenceBudget, stop);
   auto progress = std::make_shared<AccuracyProgress>();
   progress->total = job.settings.size();
   progress->tEnd = task.tEnd;
