@@ -4,6 +4,7 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QGuiApplication>
 #include <QCloseEvent>
 #include <QElapsedTimer>
 #include <QGridLayout>
@@ -15,6 +16,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScreen>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -31,6 +33,7 @@
 #include "ui/plots/trace_plot.h"
 #include "ui/readout_panel.h"
 #include "ui/sim_controller.h"
+#include "ui/wrapped_tooltips.h"
 
 namespace grazelab::ui {
 namespace {
@@ -111,7 +114,13 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   connect(m_panel, &ParameterPanel::paramsChanged, this, &MainWindow::onParamsChanged);
 
   buildMenus();
-  resize(1600, 1000);
+  wrapToolTips();
+  // 1600x1000, or less on a smaller screen: the status bar and legends must stay on it
+  QSize size(1600, 1000);
+  if (const QScreen* screen = QGuiApplication::primaryScreen()) {
+    size = size.boundedTo(screen->availableGeometry().size() * 0.95);
+  }
+  resize(size);
 
   std::optional<Session> restored;
   if (m_options.useSettings) {
@@ -244,7 +253,8 @@ void MainWindow::selectScene(int index) {
   m_sceneIndex = index;
   m_displayed.reset();
   m_pending.reset();
-  setWindowTitle(tr("GrazeLab — %1").arg(scene().title()));
+  // Qt adds " — GrazeLab" (the application's display name) itself
+  setWindowTitle(scene().title());
   if (m_sceneActions && index < m_sceneActions->actions().size()) {
     m_sceneActions->actions()[index]->setChecked(true);
   }
@@ -365,12 +375,15 @@ void MainWindow::applyPending() {
 void MainWindow::showStatus(const SimUpdate& update) {
   const core::Result& result = *update.result;
   const core::Cost& cost = result.cost;
-  QString text = tr("%1 contacts (%2 impacts, %3 grazing, %4 sticks) · %5 ms · energy drift %6 · "
-                    "max |u₂ − d| at contacts %7")
-                     .arg(cost.contacts)
-                     .arg(cost.impacts)
-                     .arg(cost.grazings)
-                     .arg(cost.sticks)
+  // "1 stick", "2 sticks": the count decides the word
+  auto counted = [](std::int64_t n, const QString& one, const QString& many) {
+    return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
+  };
+  QString text = tr("%1 (%2, %3, %4) · %5 ms · energy drift %6 · max |u₂ − d| at contacts %7")
+                     .arg(counted(cost.contacts, tr("contact"), tr("contacts")),
+                          counted(cost.impacts, tr("impact"), tr("impacts")),
+                          counted(cost.grazings, tr("grazing"), tr("grazings")),
+                          counted(cost.sticks, tr("stick"), tr("sticks")))
                      .arg(cost.wallSeconds * 1e3, 0, 'f', 1)
                      .arg(scientific(cost.maxRelEnergyDrift))
                      .arg(scientific(cost.maxContactResidual));

@@ -18,14 +18,15 @@ ParamSpec paramSpec(ParamKey key) {
               tr("Which grazing linear orbit GLO_λ the run starts from: a mix (1 − λ) of the fast "
                  "mode and λ of the slow mode that just touches the stop. λ in [0, 1] gives the "
                  "convex family, (1, 4/3] the non-convex one; beyond 4/3 the motion starts stuck."),
-              0.0, 4.0 / 3.0, -0.5, 2.0, 4, false, {1.0, 4.0 / 3.0}};
+              -0.5, 2.0, -0.5, 2.0, 4, false, {0.0, 1.0, 4.0 / 3.0}};
     case ParamKey::M1:
       return {key, tr("m₁"), tr("Mass 1, tied to the wall by the spring k₁."), 0.1, 4.0, 0.01,
               100.0, 4, false, {}};
     case ParamKey::M2:
       return {key, tr("m₂"),
-              tr("Mass 2, the one that hits the stop. A 1:2 resonant chain needs m₂/m₁ ≤ 9/16."),
-              0.05, 2.0, 0.001, 100.0, 4, false, {}};
+              tr("Mass 2, the one that hits the stop. A 1:2 resonant chain needs m₂/m₁ ≤ 9/16: the "
+                 "slider covers that range (for m₁ = 1); type a larger value for a detuned chain."),
+              0.01, 0.5625, 0.001, 100.0, 4, false, {0.5625}};
     case ParamKey::Gap:
       return {key, tr("gap d"),
               tr("Distance from the rest position of mass 2 to the rigid stop."), 0.1, 4.0,

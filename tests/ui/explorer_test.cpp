@@ -5,10 +5,14 @@
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QGuiApplication>
+#include <QHelpEvent>
+#include <QScreen>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTest>
 #include <QTimer>
+#include <QToolTip>
 #include <QXYSeries>
 
 #include "core/orbits.h"
@@ -88,11 +92,11 @@ class ExplorerTest : public QObject {
   void spinBoxMovesSliderAndBack() {
     SliderSpin* control = m_window->parameterPanel()->control(ParamKey::Lambda);
     control->spinBox()->setValue(1.0);
-    QCOMPARE(control->slider()->value(), 750);  // 1 of 4/3 on a 0..1000 slider
+    QCOMPARE(control->slider()->value(), 600);  // 1 on the slider's -0.5 ... 2, 0..1000
     control->slider()->setValue(500);
-    QCOMPARE(control->spinBox()->value(), 0.6667);
+    QCOMPARE(control->spinBox()->value(), 0.75);
     QVERIFY(waitForLatestFinal(*m_window));
-    QCOMPARE(m_window->displayed()->request->params.lambda, 0.6667);
+    QCOMPARE(m_window->displayed()->request->params.lambda, 0.75);
   }
 
   void burstOfChangesEndsWithTheLastValue() {
@@ -234,6 +238,23 @@ class ExplorerTest : public QObject {
     m_window->plots().first()->refreshNow();
     QVERIFY(overlayData() != before);
     QVERIFY(m_window->statusText().contains(QStringLiteral("settings measured")));
+  }
+
+  void opensWithinTheScreenAndWrapsItsToolTips() {
+    // a window larger than a small screen hid its status bar (a classroom's 1280x720)
+    MainWindow fresh(MainWindow::Options{.synchronous = false, .useSettings = false});
+    const QSize available = QGuiApplication::primaryScreen()->availableGeometry().size();
+    QVERIFY(fresh.width() <= available.width());
+    QVERIFY(fresh.height() <= available.height());
+    // a plain-text tooltip is shown as a paragraph, which Qt wraps (it was one 1400-px line)
+    QWidget* control = m_window->parameterPanel()->control(ParamKey::Perturbation)->slider();
+    QVERIFY(control->toolTip().size() > 100);
+    const QPoint local(5, 5);
+    QHelpEvent help(QEvent::ToolTip, local, control->mapToGlobal(local));
+    QApplication::sendEvent(control, &help);
+    QTRY_VERIFY(QToolTip::isVisible());
+    QVERIFY(QToolTip::text().startsWith(QStringLiteral("<p>")));
+    QToolTip::hideText();
   }
 
   void resetViewFollowsDataAgain() {
