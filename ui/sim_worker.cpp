@@ -34,6 +34,8 @@ void sweepAccuracy(const SimRequest& request, SimUpdate last, std::stop_token st
   task.needs.events = true;
   methods::Task overlayTask = task;
   overlayTask.needs.samples = request.request.needs.samples;
+  // 40 runs are kept for the picker: each one's trace is capped (the first ~200 T2 of it)
+  overlayTask.needs.samples.maxCount = std::min<std::size_t>(overlayTask.needs.samples.maxCount, 20'000);
   methods::Task referenceTask = task;
   methods::WorkBudget referenceBudget = job.budget;
   referenceBudget.maxSeconds = std::max(job.budget.maxSeconds, 60.0);  // it judges every run
