@@ -99,7 +99,10 @@ class MainWindow : public QMainWindow {
   void showStatus(const SimUpdate& update);
   void setProgressVisible(bool visible);
   bool writeSnapshot(QWidget* widget, const QString& path, QString* error);
-  void reportFailure(const QString& what, const QString& error);
+  enum class FileAction { Read, Write };
+  /// A dialog: what failed, why, and what became of the window and the file.
+  void reportFailure(const QString& what, const QString& error,
+                     FileAction action = FileAction::Write);
   QString askSavePath(const QString& title, const QString& filters, const QString& suffix);
   void saveWindowSnapshotInteractive();
   void savePlotSnapshotInteractive();

@@ -61,10 +61,12 @@ bool MainWindow::openSession(const QString& path, QString* error) {
   return loaded && applySession(*loaded, error);
 }
 
-void MainWindow::reportFailure(const QString& what, const QString& error) {
-  QMessageBox::warning(this, what, tr("%1 failed:\n%2\n\nThe window keeps its state; a file "
-                                      "that could not be written was left as it was.")
-                                       .arg(what, error));
+void MainWindow::reportFailure(const QString& what, const QString& error, FileAction action) {
+  const QString consequence =
+      action == FileAction::Write
+          ? tr("The window keeps its state; a file that could not be written was left as it was.")
+          : tr("The window keeps its state: nothing was changed.");
+  QMessageBox::warning(this, what, tr("%1 failed:\n%2\n\n%3").arg(what, error, consequence));
 }
 
 QString MainWindow::askSavePath(const QString& title, const QString& filters, const QString& suffix) {
@@ -126,7 +128,7 @@ void MainWindow::openSessionInteractive() {
   if (path.isEmpty()) return;
   m_lastDirectory = QFileInfo(path).absolutePath();
   QString error;
-  if (!openSession(path, &error)) reportFailure(tr("Opening the session"), error);
+  if (!openSession(path, &error)) reportFailure(tr("Opening the session"), error, FileAction::Read);
 }
 
 void MainWindow::showAbout() {

@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // The explorer: argument parsing and wiring only (ui/ does the work).
 #include <QApplication>
+#include <QMessageBox>
 #include <QCommandLineParser>
 #include <QTextStream>
 
@@ -115,15 +116,27 @@ int main(int argc, char* argv[]) {
   }
 
   grazelab::ui::MainWindow window({});
+  // a session or scene the window cannot open is said on stderr at once (the stream is flushed
+  // here, not at exit) and in a dialog over the window, which opens on what it had
+  QStringList problems;
   QString error;
   if (parser.isSet(session) && !window.openSession(parser.value(session), &error)) {
-    err << "grazelab: " << error << '\n';
+    problems << QApplication::translate("main", "Cannot open the session: %1").arg(error);
   }
   if (parser.isSet(scene)) {
     const int index = grazelab::ui::findScene(window.scenes(), parser.value(scene));
-    if (index < 0) err << "grazelab: unknown scene \"" << parser.value(scene) << "\"\n";
-    else window.selectScene(index);
+    if (index < 0) {
+      problems << QApplication::translate("main", "Unknown scene \"%1\" (see --list-scenes)")
+                      .arg(parser.value(scene));
+    } else {
+      window.selectScene(index);
+    }
   }
+  for (const QString& problem : problems) err << "grazelab: " << problem << Qt::endl;
   window.show();
+  if (!problems.isEmpty()) {
+    QMessageBox::warning(&window, QApplication::translate("main", "GrazeLab"),
+                         problems.join(QStringLiteral("\n\n")));
+  }
   return app.exec();
 }
