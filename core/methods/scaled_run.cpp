@@ -87,10 +87,7 @@ void ScaledRun::contact(EventType type, double tau, const State& before, const S
   step.before = before;
   step.after = after;
   step.residual = std::abs(before.u2 - m_scale.gap);
-  m_recorder->record(step);
-  const double drift = std::abs(scaledEnergy(*m_chain, after) - m_initialEnergy) /
-                       (m_initialEnergy > 0 ? m_initialEnergy : 1.0);
-  if (std::isfinite(drift)) m_run.maxEnergyDrift = std::max(m_run.maxEnergyDrift, drift);
+  m_recorder->record(step);  // it keeps the energy drift at contacts (cost.maxRelEnergyDrift)
 }
 
 void ScaledRun::release(double tau, const State& x) {
@@ -152,6 +149,7 @@ void ScaledRun::finish(RunStatus status, std::string reason, double tau, const S
                                                            : StopReason::ContactLimit;
   m_recorder->finish(stop, m_scale.toPhysicalTime(tau), x);
   m_run.result.message = m_run.reason;
+  m_run.maxEnergyDrift = m_run.result.cost.maxRelEnergyDrift;
   if (finiteState(x)) {
     const double drift = std::abs(scaledEnergy(*m_chain, x) - m_initialEnergy) /
                          (m_initialEnergy > 0 ? m_initialEnergy : 1.0);
