@@ -139,6 +139,25 @@ OnePeriodicOrbit<double> onePeriodicOrbit(const Model& model, const Modes&, doub
   return onePeriodicOrbit(chainOf(model), T);
 }
 
+double onePeriodicLowerEnd(const Model& model, const Modes& modes) {
+  const Chain<double> chain = chainOf(model);
+  auto admissible = [&](double T) { return onePeriodicOrbit(chain, T).admissible; };
+  const double T2 = modes.T2;
+  const double step = T2 / 256;
+  double high = T2 * (1 - 1e-9);  // admissible: the family reaches T2 (Theorem 2.1)
+  double low = high - step;
+  while (low > 0 && admissible(low)) {
+    high = low;
+    low -= step;
+  }
+  if (low <= 0) return 0;
+  while (high - low > 1e-12 * T2) {
+    const double middle = 0.5 * (low + high);
+    (admissible(middle) ? high : low) = middle;
+  }
+  return high;
+}
+
 #define GRAZELAB_INSTANTIATE(S)                                              \
   template BasicState<S> glomData<S>(const Chain<S>&, Mode);                 \
   template GloKind classifyGlo<S>(const S&);                                 \

@@ -63,4 +63,10 @@ State gloData(const Model& model, const Modes& modes, double lambda);
 double lambdaStar(const Modes& modes);
 OnePeriodicOrbit<double> onePeriodicOrbit(const Model& model, const Modes& modes, double T);
 
+/// The lower end T_lo of the 1IPP family that ends at T2 (Theorem 2.1): every period in
+/// (T_lo, T2) has an admissible 1IPP orbit; just below T_lo the orbit would penetrate the stop
+/// or leave into it. Found by walking down from T2 in steps of T2/256 and bisecting the first
+/// inadmissible step (to 1e-12 T2), so a short inadmissible window below T2 is not jumped over.
+double onePeriodicLowerEnd(const Model& model, const Modes& modes);
+
 }  // namespace grazelab::core

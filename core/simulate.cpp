@@ -120,10 +120,19 @@ bool BasicSimulator<S>::advance(std::int64_t contactBudget, std::stop_token stop
         case Step<S>::Kind::End:
           finish(StopReason::TimeLimit, m_request.tEnd, step.before);
           break;
-        case Step<S>::Kind::NoFurtherContact:
+        case Step<S>::Kind::NoFurtherContact: {
+          // the motion is still drawn: its free orbit over the sample window (one slow period,
+          // 2 pi in scaled time, when the window is open-ended), or a plot would be blank
+          const double windowEnd = m_request.needs.samples.tEnd;
+          const S oneSlowPeriod = step.segmentStart + twoPi<S>();
+          const S tauSamplesEnd = std::isfinite(windowEnd)
+                                      ? m_scale.toScaledTime(S(windowEnd))
+                                      : oneSlowPeriod;
+          m_recorder->sampleUntil(*m_stepper, step.segmentStart, tauSamplesEnd);
           m_result.message = "the free motion stays below the stop forever: no further contact";
           finish(StopReason::NoFurtherContact, lastEventTime(), step.before);
           break;
+        }
         case Step<S>::Kind::SearchLimit:
           m_result.message = "no contact within " + std::to_string(m_request.flightSearchPeriods) +
                              " T2 of free flight";

@@ -108,5 +108,25 @@ TEST(Orbits, OnePeriodicDataAreRejectedWithAReason) {
   EXPECT_FALSE(onePeriodicOrbit(model, modes, std::nan("")).admissible);
 }
 
+// The explorer's T/T2 slider starts at this end: every period above it must be admissible
+// (sampled finely), the ones just below not, and the end must not depend on the grazing side.
+TEST(Orbits, OnePeriodicFamilyLowerEndBoundsTheAdmissiblePeriods) {
+  for (const auto& chain : testing::resonantChains()) {
+    const Model& model = chain.model;
+    const Modes modes = computeModes(model);
+    const double low = onePeriodicLowerEnd(model, modes);
+    ASSERT_GT(low, 0) << chain.name;
+    ASSERT_LT(low, modes.T2) << chain.name;
+    for (int i = 1; i < 400; ++i) {
+      const double T = low + (modes.T2 - low) * i / 400.0;
+      EXPECT_TRUE(onePeriodicOrbit(model, modes, T).admissible) << chain.name << " T/T2 " << T / modes.T2;
+    }
+    EXPECT_FALSE(onePeriodicOrbit(model, modes, low - 1e-9 * modes.T2).admissible) << chain.name;
+  }
+  // a value measured with the command line's --onepp by bisection: 0.6024 T2 for m2/m1 = 1/2
+  const Model half = testing::resonantChain(0.5);
+  EXPECT_NEAR(onePeriodicLowerEnd(half, computeModes(half)) / computeModes(half).T2, 0.6024, 1e-3);
+}
+
 }  // namespace
 }  // namespace grazelab::core

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "core/free_flight.h"
+#include "core/modes.h"
 #include "core/sticking.h"
 #include "support/cases.h"
 #include "support/physical_flight.h"
@@ -178,6 +179,29 @@ TEST(Simulate, MotionBelowTheStopEndsWithNoFurtherContact) {
   const Model detuned = testing::detunedChain();
   request.flightSearchPeriods = 20;
   EXPECT_EQ(simulate(detuned, request).stop, StopReason::SearchLimit);
+}
+
+// A motion that never reaches the stop is still a motion: the plots draw its free orbit over
+// the sample window (an explorer run pushed below the stop showed nothing but its start dot).
+TEST(Simulate, MotionBelowTheStopIsSampledOverTheWindow) {
+  const Model model = testing::resonantChain(0.5);
+  const Modes modes = computeModes(model);
+  Request request;
+  request.initial = {0.1, 0.2, 0.0, 0.1};
+  request.needs.samples.spacing = modes.T1 / 48;
+  request.needs.samples.tEnd = 3 * modes.T2;
+  Result result = simulate(model, request);
+  ASSERT_EQ(result.stop, StopReason::NoFurtherContact);
+  ASSERT_GT(result.samples.size(), 100u);
+  EXPECT_NEAR(result.samples.back().t, 3 * modes.T2, modes.T1 / 48);
+  // the free motion repeats after T2 and stays below the stop
+  const auto period = std::ptrdiff_t(std::llround(modes.T2 / (modes.T1 / 48)));
+  EXPECT_NEAR(result.samples[std::size_t(period)].state.u2, request.initial.u2, 1e-12);
+  for (const Sample& sample : result.samples) EXPECT_LT(sample.state.u2, model.gap);
+  // an open-ended window gets one slow period
+  request.needs.samples.tEnd = kInfinity;
+  result = simulate(model, request);
+  EXPECT_NEAR(result.samples.back().t, modes.T2, modes.T1 / 48);
 }
 
 TEST(Simulate, StartMovingIntoTheStopImpactsAtOnce) {
