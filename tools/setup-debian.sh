@@ -15,6 +15,7 @@ packages=(
   libgl-dev libvulkan-dev libxkbcommon-dev  # headers Qt6's CMake packages look for
   fonts-dejavu-core                         # text in offscreen snapshots
   libgtest-dev libbenchmark-dev             # tests and benchmarks
+  poppler-utils                             # pdftotext: tests read the text of PDF snapshots
   python3 python3-mpmath                    # the independent high-precision reference
 )
 

@@ -89,6 +89,45 @@ QList<QPointF> decimateScatter(std::span<const QPointF> points, const PixelFrame
   return out;
 }
 
+std::vector<QList<QPointF>> decimateScatterSets(const std::vector<std::span<const QPointF>>& sets,
+                                                const PixelFrame& frame) {
+  const int width = std::max(frame.width, 1);
+  const int height = std::max(frame.height, 1);
+  // per cell: the point with the smallest hash so far, as (hash, set, index)
+  struct Choice {
+    std::uint64_t hash = ~std::uint64_t(0);
+    std::uint32_t set = 0;
+    std::uint32_t index = 0;
+  };
+  std::vector<Choice> cells(std::size_t(width) * std::size_t(height));
+  auto mix = [](std::uint64_t x) {  // splitmix64: a fixed, well-spread hash
+    x += 0x9e3779b97f4a7c15ULL;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+  };
+  for (std::size_t set = 0; set < sets.size(); ++set) {
+    for (std::size_t index = 0; index < sets[set].size(); ++index) {
+      const QPointF& point = sets[set][index];
+      if (!finitePoint(point)) continue;
+      if (point.x() < frame.xMin || point.x() > frame.xMax || point.y() < frame.yMin ||
+          point.y() > frame.yMax) {
+        continue;
+      }
+      const auto column = std::min<std::int64_t>(cell(point.x(), frame.xMin, frame.xMax, width), width - 1);
+      const auto row = std::min<std::int64_t>(cell(point.y(), frame.yMin, frame.yMax, height), height - 1);
+      Choice& slot = cells[std::size_t(row) * std::size_t(width) + std::size_t(column)];
+      const std::uint64_t hash = mix((std::uint64_t(set) << 40) ^ std::uint64_t(index));
+      if (hash < slot.hash) slot = {hash, std::uint32_t(set), std::uint32_t(index)};
+    }
+  }
+  std::vector<QList<QPointF>> out(sets.size());
+  for (const Choice& choice : cells) {
+    if (choice.hash != ~std::uint64_t(0)) out[choice.set].append(sets[choice.set][choice.index]);
+  }
+  return out;
+}
+
 QList<QPointF> decimatePath(std::span<const QPointF> points, const PixelFrame& frame) {
   QList<QPointF> out;
   if (points.empty()) return out;

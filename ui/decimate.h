@@ -6,6 +6,7 @@
 #include <QPointF>
 
 #include <span>
+#include <vector>
 
 namespace grazelab::ui {
 
@@ -28,6 +29,13 @@ QList<QPointF> decimateTrace(std::span<const QPointF> points, const PixelFrame& 
 /// Reduces a scatter to at most one point per pixel cell (the first one found); points outside
 /// the frame and non-finite points are dropped.
 QList<QPointF> decimateScatter(std::span<const QPointF> points, const PixelFrame& frame);
+
+/// Reduces several scatters drawn over each other (colour classes of one cloud) jointly to at
+/// most one point per pixel cell, chosen at random (a fixed hash of its set and index) among
+/// every point of every set in that cell: each class shows in proportion to its share of the
+/// cell, and none hides the others by being drawn last. Returns one list per set.
+std::vector<QList<QPointF>> decimateScatterSets(const std::vector<std::span<const QPointF>>& sets,
+                                                const PixelFrame& frame);
 
 /// Reduces a polyline with any x order (a phase portrait) by dropping each point that falls in
 /// the same pixel cell as the point kept before it. The first and last points are kept.

@@ -2,6 +2,10 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/export.h"
 
+#include <QChart>
+#include <QChartView>
+#include <QLegend>
+#include <QPointer>
 #include <QFileInfo>
 #include <QImageWriter>
 #include <QJsonDocument>
@@ -25,6 +29,46 @@ bool commit(QSaveFile& file, QString* error) {
   if (error) *error = QStringLiteral("cannot write %1: %2").arg(file.fileName(), file.errorString());
   return false;
 }
+
+QString compactSession(const QByteArray& sessionJson) {
+  return QString::fromUtf8(QJsonDocument::fromJson(sessionJson).toJson(QJsonDocument::Compact));
+}
+
+// A minimal XMP packet with the session as the document's description.
+QByteArray xmpMetadata(const QByteArray& sessionJson) {
+  const QString description = compactSession(sessionJson).toHtmlEscaped();
+  return QStringLiteral(
+             "<?xpacket begin=\"\" id=\"W5M0MpCehiHzreSzNTczkc9d\"?>"
+             "<x:xmpmeta xmlns:x=\"adobe:ns:meta/\">"
+             "<rdf:RDF xmlns:rdf=\"http://www.w3.org/1999/02/22-rdf-syntax-ns#\">"
+             "<rdf:Description rdf:about=\"\" xmlns:dc=\"http://purl.org/dc/elements/1.1/\">"
+             "<dc:title><rdf:Alt><rdf:li xml:lang=\"x-default\">GrazeLab snapshot</rdf:li></rdf:Alt></dc:title>"
+             "<dc:creator><rdf:Seq><rdf:li>GrazeLab</rdf:li></rdf:Seq></dc:creator>"
+             "<dc:description><rdf:Alt><rdf:li xml:lang=\"x-default\">%1</rdf:li></rdf:Alt></dc:description>"
+             "</rdf:Description></rdf:RDF></x:xmpmeta><?xpacket end=\"w\"?>")
+      .arg(description)
+      .toUtf8();
+}
+
+// Qt Charts clips each legend to its shape; in a PDF painter that clip comes out empty (the
+// legends lost every label but the first, and their swatches). Off while the page is drawn:
+// the legend's items lie inside it anyway.
+class LegendClipping {
+ public:
+  explicit LegendClipping(QWidget* widget) {
+    for (QChartView* view : widget->findChildren<QChartView*>()) m_legends.append(view->chart()->legend());
+    if (auto* view = qobject_cast<QChartView*>(widget)) m_legends.append(view->chart()->legend());
+    for (QLegend* legend : m_legends) legend->setFlag(QGraphicsItem::ItemClipsChildrenToShape, false);
+  }
+  ~LegendClipping() {
+    for (QLegend* legend : m_legends) legend->setFlag(QGraphicsItem::ItemClipsChildrenToShape, true);
+  }
+  LegendClipping(const LegendClipping&) = delete;
+  LegendClipping& operator=(const LegendClipping&) = delete;
+
+ private:
+  QList<QPointer<QLegend>> m_legends;
+};
 
 }  // namespace
 
@@ -62,7 +106,7 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
       // the parameters travel inside the picture too; Qt joins texts as "key: value" pairs
       // separated by blank lines, so the JSON goes in compact, on one line
       writer.setText(QStringLiteral("GrazeLabSession"),
-                     QString::fromUtf8(QJsonDocument::fromJson(sessionJson).toJson(QJsonDocument::Compact)));
+                     compactSession(sessionJson));
       writer.setText(QStringLiteral("Software"), QStringLiteral("GrazeLab"));
       if (!writer.write(renderImage(widget))) {
         file.cancelWriting();
@@ -91,7 +135,12 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
     case SnapshotFormat::Pdf: {
       QPdfWriter writer(&file);
       writer.setCreator(QStringLiteral("GrazeLab"));
-      writer.setTitle(QStringLiteral("GrazeLab snapshot"));
+      // the parameters travel inside the document: in its title (what a viewer shows), in its
+      // XMP metadata (dc:description) and as an attached session file
+      writer.setTitle(QStringLiteral("GrazeLab snapshot: ") + compactSession(sessionJson));
+      writer.setDocumentXmpMetadata(xmpMetadata(sessionJson));
+      writer.addFileAttachment(QStringLiteral("session.json"), sessionJson,
+                               QStringLiteral("application/json"));
       writer.setResolution(300);
       // a page the size of the widget seen at 96 dpi, so nothing is cropped or distorted
       writer.setPageSize(QPageSize(QSizeF(widget->width(), widget->height()) * 25.4 / 96.0,
@@ -105,6 +154,7 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
       }
       const double scale = double(writer.width()) / widget->width();
       painter.scale(scale, scale);
+      const LegendClipping unclipped(widget);
       widget->render(&painter);
       painter.end();
       break;

@@ -235,6 +235,10 @@ void MainWindow::buildPlots() {
     m_plotGrid->setColumnStretch(2, 0);
     m_plotGrid->addWidget(views[0], 0, 0, 2, 1);
     m_plotGrid->addWidget(views[1], 0, 1, 2, 1);
+  } else if (views.size() == 4) {
+    // two rows of two: the scene's curves above, the motion below
+    m_plotGrid->setColumnStretch(2, 0);
+    for (int index = 0; index < 4; ++index) m_plotGrid->addWidget(views[index], index / 2, index % 2);
   } else if (views.size() == 3) {
     // the first plot is the scene's subject: give it most of the room
     m_plotGrid->addWidget(views[0], 0, 0, 2, 2);
@@ -250,6 +254,16 @@ void MainWindow::buildPlots() {
 
 void MainWindow::selectScene(int index) {
   if (index < 0 || index >= int(m_scenes.size())) return;
+  // the chain and the start come along; the new scene keeps only its own values
+  if (m_sceneChosen && index != m_sceneIndex) {
+    Params& entered = m_sceneParams[std::size_t(index)];
+    entered = enterScene(*m_scenes[std::size_t(index)], params(), entered);
+  }
+  showScene(index);
+}
+
+void MainWindow::showScene(int index) {
+  m_sceneChosen = true;
   m_sceneIndex = index;
   m_displayed.reset();
   m_pending.reset();
@@ -279,24 +293,34 @@ bool MainWindow::applySession(const Session& session, QString* error) {
     if (error) *error = tr("unknown scene \"%1\"").arg(session.scene);
     return false;
   }
+  // the session's parameters as saved, whatever the scene on screen had
   m_sceneParams[std::size_t(index)] = session.params;
-  selectScene(index);
+  showScene(index);
   return true;
 }
 
 void MainWindow::onParamsChanged(const Params& params) {
   m_sceneParams[std::size_t(m_sceneIndex)] = params;
+  // new data in a zoomed window may lie outside it and look blank: the plots fit it again
+  resetViews();
   recompute();
 }
 
 void MainWindow::recompute() {
-  const Params& current = params();
+  Params& current = m_sceneParams[std::size_t(m_sceneIndex)];
   const DerivedModel derived = deriveModel(current);
   if (!derived.ok) {
     showProblem(derived.message);
     return;
   }
-  const SceneJob job = scene().build(current, derived);
+  if (current.resonantDesign && current.k2 != derived.model.k2) {
+    // the designed k2 is the chain's k2: sessions and snapshots record it, and unticking the
+    // design starts the detuned chain from it (not from a value typed long ago)
+    current.k2 = derived.model.k2;
+    m_panel->setParams(current);
+  }
+  SceneJob job = scene().build(current, derived);
+  m_panel->setSliderRanges(job.sliderRanges);
   if (!job.ok) {
     showProblem(job.message);
     return;
@@ -312,6 +336,7 @@ void MainWindow::recompute() {
   request.reference = job.reference;
   request.referenceLabel = job.referenceLabel;
   request.accuracy = job.accuracy;
+  request.figures = std::move(job.figures);
   m_controller->submit(std::move(request));
 }
 
@@ -319,6 +344,7 @@ void MainWindow::showProblem(const QString& message) {
   // the last valid result stays on screen; only the message and the read-outs change
   m_problem = message;
   m_panel->setMessage(message);
+  for (PlotView* plot : m_plots) plot->setStale(m_displayed.has_value());
   m_readout->setStale(true);
   m_status->setText(tr("Not computed: %1 (showing the last valid result)").arg(message));
 }
@@ -356,8 +382,11 @@ void MainWindow::applyPending() {
   m_pending.reset();
   QElapsedTimer cost;
   cost.start();
+  // a result that is not the panel's (an infeasible edit came after it) stays marked stale
+  const bool stale = !m_problem.isEmpty();
   for (PlotView* plot : m_plots) {
     plot->show(*m_displayed);
+    plot->setStale(stale);
     plot->refreshNow();
   }
   if (m_accuracy) {

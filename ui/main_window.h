@@ -91,6 +91,8 @@ class MainWindow : public QMainWindow {
 
  private:
   void buildMenus();
+  /// Shows scene `index` with the parameters stored for it.
+  void showScene(int index);
   void buildPlots();
   void onParamsChanged(const Params& params);
   void onUpdate(const SimUpdate& update);
@@ -116,6 +118,7 @@ class MainWindow : public QMainWindow {
   std::vector<std::unique_ptr<Scene>> m_scenes;
   std::vector<Params> m_sceneParams;
   int m_sceneIndex = 0;
+  bool m_sceneChosen = false;  ///< a scene is on screen (its parameters carry over to the next)
   ParameterPanel* m_panel = nullptr;
   ReadoutPanel* m_readout = nullptr;
   QWidget* m_plotArea = nullptr;

@@ -15,7 +15,7 @@ ParamSpec paramSpec(ParamKey key) {
   switch (key) {
     case ParamKey::Lambda:
       return {key, tr("λ"),
-              tr("Which grazing linear orbit GLO_λ the run starts from: a mix (1 − λ) of the fast "
+              tr("Which grazing linear orbit GLO(λ) the run starts from: a mix (1 − λ) of the fast "
                  "mode and λ of the slow mode that just touches the stop. λ in [0, 1] gives the "
                  "convex family, (1, 4/3] the non-convex one; beyond 4/3 the motion starts stuck."),
               -0.5, 2.0, -0.5, 2.0, 4, false, {0.0, 1.0, 4.0 / 3.0}};
@@ -42,8 +42,9 @@ ParamSpec paramSpec(ParamKey key) {
     case ParamKey::Perturbation:
       return {key, tr("perturbation δ"),
               tr("Signed size of the push applied to the start state along the chosen direction. "
-                 "A push off the grazing-start plane (v₂ < 0 or u₂ < d) makes the motion impact; "
-                 "a push along it (u₁, v₁) only gives another grazing orbit."),
+                 "A push of v₂ below 0 makes the motion impact; lowering u₂ below d usually gives "
+                 "a motion that never reaches the stop; a push along the plane (u₁, v₁) only "
+                 "gives another grazing orbit."),
               -0.2, 0.2, -10.0, 10.0, 4, false, {0.0}};
     case ParamKey::Horizon:
       return {key, tr("contacts"),
@@ -52,7 +53,7 @@ ParamSpec paramSpec(ParamKey key) {
     case ParamKey::Period:
       return {key, tr("T / T₂"),
               tr("Period T of the one-impact-per-period orbit as a fraction of T₂, the slow "
-                 "period. As T → T₂ from below the orbit tends to GLO_λ* (Theorem 2.1)."),
+                 "period. As T → T₂ from below the orbit tends to GLO(λ*) (Theorem 2.1)."),
               0.5, 0.999, 0.01, 0.999999, 6, false, {}};
   }
   return {key, {}, {}, 0, 1, 0, 1, 3, false, {}};

@@ -73,13 +73,19 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   m_directionLabel->setMinimumWidth(92);
   m_direction = new QComboBox(start);
   m_direction->setObjectName(QStringLiteral("directionCombo"));
+  // the long item texts must not widen the panel past its scroll area (the popup shows them)
+  m_direction->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  m_direction->setMinimumContentsLength(14);
   m_direction->addItem(tr("v₂ (off the plane: impacts)"), int(PerturbDirection::V2));
-  m_direction->addItem(tr("u₂ (off the plane: impacts)"), int(PerturbDirection::U2));
+  m_direction->addItem(tr("u₂ (start below the stop: few or no contacts)"), int(PerturbDirection::U2));
   m_direction->addItem(tr("u₁ (along the plane: grazing)"), int(PerturbDirection::U1));
   m_direction->addItem(tr("v₁ (along the plane: grazing)"), int(PerturbDirection::V1));
   m_direction->setToolTip(tr("Which start value the perturbation δ changes. Pushing v₂ below 0 "
-                             "or u₂ below d leaves the grazing orbit so that impacts follow; "
-                             "pushing u₁ or v₁ only moves to another grazing orbit."));
+                             "sends mass 2 at the stop: impacts follow. Lowering u₂ below d "
+                             "starts mass 2 away from the stop: the motion usually never reaches "
+                             "it (the plots then show the free orbit alone); u₂ above d is inside "
+                             "the stop and refused. Pushing u₁ or v₁ only moves to another "
+                             "grazing orbit."));
   directionRow->addWidget(m_directionLabel);
   directionRow->addWidget(m_direction, 1);
   startLayout->addLayout(directionRow);
@@ -137,6 +143,16 @@ void ParameterPanel::setParams(const Params& params) {
   m_branch->setCurrentIndex(m_branch->findData(int(params.branch)));
   m_direction->setCurrentIndex(m_direction->findData(int(params.direction)));
   updateFeasibility();
+}
+
+void ParameterPanel::setSliderRanges(const std::map<ParamKey, std::pair<double, double>>& ranges) {
+  for (auto it = m_controls.begin(); it != m_controls.end(); ++it) {
+    const auto found = ranges.find(it.key());
+    const ParamSpec spec = paramSpec(it.key());
+    const auto [low, high] = found != ranges.end() ? found->second
+                                                   : std::pair(spec.sliderMin, spec.sliderMax);
+    it.value()->setSliderRange(low, high);
+  }
 }
 
 void ParameterPanel::setMessage(const QString& message) {

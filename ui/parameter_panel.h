@@ -5,6 +5,9 @@
 #include <QMap>
 #include <QWidget>
 
+#include <map>
+#include <utility>
+
 #include "ui/params.h"
 
 class QCheckBox;
@@ -29,6 +32,8 @@ class ParameterPanel : public QWidget {
   void setScene(const Scene& scene);
   /// Shows these values without emitting paramsChanged.
   void setParams(const Params& params);
+  /// The slider ends that depend on the chain (SceneJob::sliderRanges); others keep their spec.
+  void setSliderRanges(const std::map<ParamKey, std::pair<double, double>>& ranges);
   const Params& params() const { return m_params; }
 
   /// A plain-words problem with the current values (empty hides it).

@@ -28,7 +28,7 @@ ReadoutPanel::ReadoutPanel(QWidget* parent) : QWidget(parent) {
          tr("Period of the slow mode, 2π/ω₂. Every free motion of a resonant chain repeats "
             "after T₂, and no free flight lasts longer (Theorem 2.3)."));
   addRow(QStringLiteral("lambdaStar"), tr("λ*"),
-         tr("The grazing orbit GLO_λ* that one-impact-per-period orbits tend to as their period "
+         tr("The grazing orbit GLO(λ*) that one-impact-per-period orbits tend to as their period "
             "tends to T₂ (Theorem 2.1)."));
   addRow(QStringLiteral("energy"), tr("energy E"),
          tr("Mechanical energy of the start state, ½ vᵀMv + ½ uᵀKu; conserved by the motion "

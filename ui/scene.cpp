@@ -28,6 +28,12 @@ core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, dou
   return needs;
 }
 
+Params enterScene(const Scene& scene, const Params& session, const Params& own) {
+  Params params = session;
+  for (ParamKey key : scene.ownKeys()) params.setValue(key, own.value(key));
+  return params;
+}
+
 core::State perturbed(core::State state, const Params& params) {
   switch (params.direction) {
     case PerturbDirection::V2: state.v2 += params.perturbation; break;

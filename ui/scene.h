@@ -11,20 +11,12 @@
 
 #include "core/simulate.h"
 #include "ui/derived.h"
+#include "ui/figures.h"
 #include "ui/params.h"
 #include "ui/sim_types.h"
 
 namespace grazelab::ui {
 
-/// The kinds of plot a scene can show.
-enum class PlotKind {
-  TraceU2,    ///< u2(t) with the stop line and the contacts
-  PhaseU2V2,  ///< phase portrait (u2, v2)
-  PhaseU1V1,  ///< phase portrait (u1, v1)
-  Poincare,   ///< (u1, v1) at each contact, coloured by contact index
-  FreeFlight, ///< free-flight time against contact index, with the line FFT = T2
-  WorkPrecision,  ///< every method's error against its run time, with an overlay picker
-};
 
 /// What a scene asks the worker to compute, or why it cannot.
 struct SceneJob {
@@ -35,6 +27,9 @@ struct SceneJob {
   std::optional<core::State> reference;  ///< a state on H worth marking (e.g. GLO_lambda* data)
   QString referenceLabel;
   std::optional<AccuracyJob> accuracy;  ///< the work-precision sweep, when the scene shows it
+  Figures figures;  ///< curves the scene computed itself (one per CurvePlot it shows)
+  /// slider ranges that depend on the chain (the admissible T/T2 of the 1IPP family)
+  std::map<ParamKey, std::pair<double, double>> sliderRanges;
 };
 
 /// A named preset: which parameters are exposed, which plots are shown, and so what is computed.
@@ -53,6 +48,10 @@ class Scene {
   virtual Params defaults() const = 0;
   virtual QList<ParamKey> parameters() const = 0;
   virtual QList<PlotKind> plots() const = 0;
+  /// The parameters this scene keeps for itself when the user switches scenes; the others (the
+  /// chain and the start) belong to the session and carry over. By default the run's length
+  /// and the 1IPP period are the scene's own.
+  virtual QList<ParamKey> ownKeys() const { return {ParamKey::Horizon, ParamKey::Period}; }
   /// The run for these parameters (derived.ok is true).
   virtual SceneJob build(const Params& params, const DerivedModel& derived) const = 0;
 };
@@ -61,6 +60,10 @@ class Scene {
 /// portraits (over the first `sampleWindow` time units), Poincaré points and free flights only
 /// when plotted.
 core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, double sampleWindow);
+
+/// The parameters a scene runs with when it is entered: the session's chain and start, the
+/// scene's own values for its ownKeys().
+Params enterScene(const Scene& scene, const Params& session, const Params& own);
 
 /// Applies the signed perturbation along its direction.
 core::State perturbed(core::State state, const Params& params);

@@ -12,6 +12,7 @@
 #include "core/methods/work_precision.h"
 #include "core/simulate.h"
 #include "core/trust.h"
+#include "ui/figures.h"
 #include "ui/params.h"
 
 namespace grazelab::ui {
@@ -49,6 +50,7 @@ struct SimRequest {
   std::optional<core::State> reference;
   QString referenceLabel;
   std::optional<AccuracyJob> accuracy;  ///< the Accuracy scene's sweep
+  Figures figures;  ///< the scene's own curves, drawn as they are (computed by the scene)
 };
 
 /// A partial or final result coming back from the worker, as a value. The result is shared

@@ -99,6 +99,14 @@ void SliderSpin::setValue(double value) {
   m_slider->setValue(toPosition(value));
 }
 
+void SliderSpin::setSliderRange(double low, double high) {
+  if (!(low < high) || (low == m_spec.sliderMin && high == m_spec.sliderMax)) return;
+  const double value = m_spin->value();
+  m_spec.sliderMin = low;
+  m_spec.sliderMax = high;
+  setValue(value);
+}
+
 int SliderSpin::toPosition(double value) const {
   double fraction = 0;
   if (m_spec.logarithmic) {

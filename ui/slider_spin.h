@@ -40,6 +40,9 @@ class SliderSpin : public QWidget {
   double value() const;
   /// Sets the value without emitting valueChanged.
   void setValue(double value);
+  /// Moves the slider's ends (a range that depends on the chain); the value is kept, never
+  /// clamped, and no valueChanged is emitted.
+  void setSliderRange(double low, double high);
 
   QSlider* slider() const { return m_slider; }
   QDoubleSpinBox* spinBox() const { return m_spin; }

@@ -6,12 +6,14 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "ui/decimate.h"
 
 using grazelab::ui::decimatePath;
 using grazelab::ui::decimateScatter;
+using grazelab::ui::decimateScatterSets;
 using grazelab::ui::decimateTrace;
 using grazelab::ui::PixelFrame;
 
@@ -107,6 +109,33 @@ class DecimateTest : public QObject {
     QCOMPARE(out.size(), qsizetype(2));
     QCOMPARE(out[0], QPointF(0.5, 0.5));
     QCOMPARE(out[1], QPointF(1, 1));  // the closed upper edge belongs to the last cell
+  }
+
+  // Five colour classes filling the same cells (a near-grazing Poincaré cloud): drawn one
+  // after the other, the last covered the rest. Decimated jointly, each cell keeps one point of
+  // a class drawn at random, so every class keeps about its share, and each cell has one.
+  void scatterSetsShareTheCellsFairly() {
+    const int sets = 5;
+    std::vector<std::vector<QPointF>> data(sets);
+    for (int set = 0; set < sets; ++set) {
+      for (int i = 0; i < 4000; ++i) {
+        const double angle = 0.001 * (i * sets + set) * 2 * std::numbers::pi;  // the same ring
+        data[std::size_t(set)].emplace_back(std::cos(angle), std::sin(angle));
+      }
+    }
+    std::vector<std::span<const QPointF>> spans(data.begin(), data.end());
+    const PixelFrame frame{-1.1, 1.1, -1.1, 1.1, 100, 100};
+    const auto reduced = decimateScatterSets(spans, frame);
+    QCOMPARE(int(reduced.size()), sets);
+    qsizetype total = 0;
+    for (const auto& kept : reduced) total += kept.size();
+    // as many as the cells the ring covers, one point each
+    std::vector<QPointF> all;
+    for (const auto& set : data) all.insert(all.end(), set.begin(), set.end());
+    QCOMPARE(total, decimateScatter(all, frame).size());
+    for (const auto& kept : reduced) {
+      QVERIFY2(kept.size() > total / sets / 2, qPrintable(QString::number(kept.size())));
+    }
   }
 
   void pathDropsRepeatsInTheSameCell() {

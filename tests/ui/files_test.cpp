@@ -6,6 +6,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QImageReader>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -95,6 +96,33 @@ class FilesTest : public QObject {
     const QImage image = reader.read();
     QCOMPARE(image.size(), m_window->size() * 2);
     const auto session = sessionFromJson(text.toUtf8(), Params{}, &error);
+    QVERIFY2(session, qPrintable(error));
+    QVERIFY(session->params == m_window->params());
+  }
+
+  // A PDF keeps the legends (Qt Charts' legend clip came out empty in a PDF painter: only the
+  // first label showed) and carries its parameters in the document's metadata.
+  void pdfKeepsItsLegendsAndCarriesItsSession() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("window.pdf"));
+    QString error;
+    QVERIFY2(m_window->saveWindowSnapshot(path, &error), qPrintable(error));
+    QProcess pdftotext;
+    pdftotext.start(QStringLiteral("pdftotext"), {path, QStringLiteral("-")});
+    QVERIFY2(pdftotext.waitForFinished(20000), "pdftotext (poppler-utils) did not run");
+    const QString text = QString::fromUtf8(pdftotext.readAllStandardOutput());
+    for (const char* label : {"impacts", "grazings / sticks", "stop u₂ = d", "FFT = T₂", "orbit"}) {
+      QVERIFY2(text.contains(QString::fromUtf8(label)), label);
+    }
+    // the session in the XMP description, as a reader of the metadata finds it
+    const QByteArray pdf = readAll(path);
+    const QByteArray open = "<dc:description><rdf:Alt><rdf:li xml:lang=\"x-default\">";
+    const qsizetype begin = pdf.indexOf(open);
+    QVERIFY(begin >= 0);
+    const qsizetype end = pdf.indexOf("</rdf:li>", begin);
+    QByteArray json = pdf.mid(begin + open.size(), end - begin - open.size());
+    json.replace("&quot;", "\"").replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&");
+    const auto session = sessionFromJson(json, Params{}, &error);
     QVERIFY2(session, qPrintable(error));
     QVERIFY(session->params == m_window->params());
   }

@@ -7,6 +7,8 @@
 #include <QLineSeries>
 #include <QScatterSeries>
 
+#include <algorithm>
+
 #include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {
@@ -33,6 +35,18 @@ void FreeFlightPlot::show(const SimUpdate& update) {
   // T2 of the run's own chain (the model travels with the request, not in the result)
   const double T2 = core::computeModes(update.request->model).T2;
   const double last = flights.empty() ? 1.0 : std::max(1.0, flights.back().x());
+  // many flights per pixel column: small translucent dots, so that their density shows as
+  // shade instead of a solid block of overlapping squares
+  auto* series = qobject_cast<QScatterSeries*>(entries()[std::size_t(m_flights)].series);
+  const bool dense = double(flights.size()) > 2.0 * std::max(1, width());
+  const double size = dense ? 2.5 : 5.0;
+  if (series->markerSize() != size) {
+    QColor color = colors::kTrace;
+    if (dense) color.setAlpha(110);
+    series->setMarkerSize(size);
+    series->setColor(color);
+    useLightMarker(series);
+  }
   setData(m_flights, std::move(flights));
   setData(m_period, {QPointF(0, T2), QPointF(last, T2)});
   scheduleRefresh();

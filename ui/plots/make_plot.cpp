@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/make_plot.h"
 
+#include "ui/plots/curve_plot.h"
 #include "ui/plots/free_flight_plot.h"
 #include "ui/plots/phase_plot.h"
 #include "ui/plots/poincare_plot.h"
@@ -16,6 +17,8 @@ PlotView* makePlot(PlotKind kind, QWidget* parent) {
     case PlotKind::PhaseU1V1: return new PhasePlot(PhasePlot::Mass::One, parent);
     case PlotKind::Poincare: return new PoincarePlot(parent);
     case PlotKind::FreeFlight: return new FreeFlightPlot(parent);
+    case PlotKind::OnePeriodicData:
+    case PlotKind::ImpactSpeed: return new CurvePlot(kind, parent);
     case PlotKind::WorkPrecision: return nullptr;  // not a PlotView: MainWindow builds an AccuracyView
   }
   return nullptr;

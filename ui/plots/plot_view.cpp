@@ -4,6 +4,7 @@
 
 #include <QChart>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QScatterSeries>
 #include <QValueAxis>
@@ -54,7 +55,10 @@ void setRangeWithTicks(QValueAxis* axis, double low, double high) {
     axis->setRange(low, high);
     return;
   }
-  const bool plain = step >= 1e-9 && std::max(std::abs(low), std::abs(high)) < 1e6;
+  // whole steps print as whole numbers up to a billion (a contact-index axis to 10^6 read
+  // "0.0002, 2e+05": the anchor below, printed by %g); fractions as decimals below a million
+  const double largest = std::max(std::abs(low), std::abs(high));
+  const bool plain = (step >= 1e-9 && largest < 1e6) || (step >= 1 && largest < 1e9);
   const int decimals = std::max(0, int(std::ceil(-std::log10(step) - 1e-9)));
   const QString format = plain ? QStringLiteral("%.%1f").arg(decimals) : QStringLiteral("%.3g");
   if (axis->labelFormat() != format) axis->setLabelFormat(format);
@@ -120,8 +124,11 @@ void PlotView::setData(int index, std::vector<QPointF> data) {
   m_entries[std::size_t(index)].data = std::move(data);
 }
 
+void PlotView::joinScatters(std::vector<int> indices) { m_joinedScatters = std::move(indices); }
+
 void PlotView::includeInBounds(double x, double y) { m_extraBounds.push_back({x, y}); }
 void PlotView::clearExtraBounds() { m_extraBounds.clear(); }
+void PlotView::setFixedRange(std::optional<QRectF> range) { m_fixedRange = range; }
 
 void PlotView::scheduleRefresh() {
   if (!m_refreshTimer.isActive()) m_refreshTimer.start();
@@ -130,6 +137,23 @@ void PlotView::scheduleRefresh() {
 void PlotView::refreshNow() {
   m_refreshTimer.stop();
   refresh();
+}
+
+void PlotView::setStale(bool stale) {
+  if (stale == m_stale) return;
+  m_stale = stale;
+  if (!m_staleNote) {
+    m_staleNote = new QLabel(tr("stale: the last valid result, not the panel's values"), this);
+    m_staleNote->setObjectName(QStringLiteral("staleNote"));
+    m_staleNote->setStyleSheet(QStringLiteral(
+        "QLabel { background: #fff3cd; color: #7a1010; border: 1px solid #7a1010; padding: 2px; }"));
+    m_staleNote->setAttribute(Qt::WA_TransparentForMouseEvents);
+  }
+  m_staleNote->adjustSize();
+  m_staleNote->move(width() - m_staleNote->width() - 8, 4);
+  m_staleNote->setVisible(stale);
+  chart()->setPlotAreaBackgroundBrush(QColor(0xe8, 0xe8, 0xe8));
+  chart()->setPlotAreaBackgroundVisible(stale);
 }
 
 void PlotView::resetView() {
@@ -166,6 +190,11 @@ void PlotView::appendCsv(QString& csv) const {
 }
 
 void PlotView::fitAxes() {
+  if (m_fixedRange) {
+    setRangeWithTicks(m_axisX, m_fixedRange->left(), m_fixedRange->right());
+    setRangeWithTicks(m_axisY, m_fixedRange->top(), m_fixedRange->bottom());
+    return;
+  }
   double xLow = std::numeric_limits<double>::infinity();
   double xHigh = -xLow;
   double yLow = xLow;
@@ -214,7 +243,25 @@ void PlotView::refresh() {
   const QRectF area = chart()->plotArea();
   PixelFrame frame{m_axisX->min(), m_axisX->max(), m_axisY->min(), m_axisY->max(),
                    std::max(1, int(area.width())), std::max(1, int(area.height()))};
-  for (Entry& entry : m_entries) {
+  if (!m_joinedScatters.empty()) {
+    const auto* first = qobject_cast<QScatterSeries*>(m_entries[std::size_t(m_joinedScatters[0])].series);
+    const int cell = first ? std::max(1, int(first->markerSize() * 0.75)) : 1;
+    PixelFrame coarse = frame;
+    coarse.width = std::max(1, frame.width / cell);
+    coarse.height = std::max(1, frame.height / cell);
+    std::vector<std::span<const QPointF>> sets;
+    for (int index : m_joinedScatters) sets.emplace_back(m_entries[std::size_t(index)].data);
+    std::vector<QList<QPointF>> reduced = decimateScatterSets(sets, coarse);
+    for (std::size_t set = 0; set < reduced.size(); ++set) {
+      m_entries[std::size_t(m_joinedScatters[set])].series->replace(reduced[set]);
+    }
+  }
+  for (std::size_t index = 0; index < m_entries.size(); ++index) {
+    Entry& entry = m_entries[index];
+    if (std::find(m_joinedScatters.begin(), m_joinedScatters.end(), int(index)) !=
+        m_joinedScatters.end()) {
+      continue;
+    }
     QList<QPointF> points;
     switch (entry.decimation) {
       case Decimation::None:
@@ -317,6 +364,7 @@ void PlotView::keyPressEvent(QKeyEvent* event) {
 
 void PlotView::resizeEvent(QResizeEvent* event) {
   QChartView::resizeEvent(event);
+  if (m_staleNote) m_staleNote->move(width() - m_staleNote->width() - 8, 4);
   scheduleRefresh();
 }
 

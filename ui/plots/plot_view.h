@@ -4,13 +4,16 @@
 
 #include <QChartView>
 #include <QPointF>
+#include <QRectF>
 #include <QString>
 #include <QTimer>
 
+#include <optional>
 #include <vector>
 
 #include "ui/sim_types.h"
 
+class QLabel;
 class QValueAxis;
 class QXYSeries;
 
@@ -55,6 +58,11 @@ class PlotView : public QChartView {
   /// Applies pending data now instead of at the next turn of the event loop.
   void refreshNow();
 
+  /// Marks the plot as showing the last valid result, not the panel's parameters (greyed
+  /// plot area and a note in its corner), or clears the mark.
+  void setStale(bool stale);
+  bool isStale() const { return m_stale; }
+
  signals:
   /// The user clicked or focused this plot (it becomes the "current plot").
   void activated(grazelab::ui::PlotView* plot);
@@ -64,11 +72,17 @@ class PlotView : public QChartView {
  protected:
   int addEntry(QXYSeries* series, Decimation decimation, bool inBounds = true);
   void setData(int index, std::vector<QPointF> data);
+  /// Scatter entries drawn over each other as one cloud (colour classes): decimated jointly,
+  /// one point per cell chosen at random among all of them (decimateScatterSets).
+  void joinScatters(std::vector<int> indices);
   /// Called after setData()s: schedules one refresh (coalesced through a zero timer).
   void scheduleRefresh();
   /// Extra vertical/horizontal span to include in the automatic ranges (e.g. the stop line).
   void includeInBounds(double x, double y);
   void clearExtraBounds();
+  /// Axes that stay put while the data change (a family's curve, on which a point moves); the
+  /// user's zoom still overrides them until R. nullopt: the axes follow the data.
+  void setFixedRange(std::optional<QRectF> range);
 
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
@@ -88,6 +102,10 @@ class PlotView : public QChartView {
 
   std::vector<Entry> m_entries;
   std::vector<QPointF> m_extraBounds;
+  std::vector<int> m_joinedScatters;
+  std::optional<QRectF> m_fixedRange;
+  bool m_stale = false;
+  QLabel* m_staleNote = nullptr;
   QTimer m_refreshTimer;
   bool m_followData = true;
   bool m_panning = false;

@@ -22,8 +22,8 @@ const QColor kBinColors[] = {QColor(0x44, 0x01, 0x54), QColor(0x3b, 0x52, 0x8b),
 }  // namespace
 
 PoincarePlot::PoincarePlot(QWidget* parent)
-    : PlotView(tr("Poincaré points on H (u₂ = d)"), tr("u₁ at contact"), tr("v₁ at contact"),
-               parent) {
+    : PlotView(tr("Poincaré points on H (u₂ = d)"),
+               tr("u₁ at contact"), tr("v₁ at contact"), parent) {
   for (int bin = 0; bin < kBins; ++bin) {
     // squares: Qt Charts draws them far faster than circles, which matters for 10^5 points
     auto* series = makeScatter(QString(), kBinColors[bin], 4);
@@ -31,6 +31,8 @@ PoincarePlot::PoincarePlot(QWidget* parent)
     useLightMarker(series);
     m_bins[bin] = addEntry(series, Decimation::Scatter);
   }
+  // the bins are one cloud: the last one drawn must not cover the others
+  joinScatters(std::vector<int>(std::begin(m_bins), std::end(m_bins)));
   auto* reference = makeScatter(tr("reference"), colors::kReference, 11);
   reference->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
   reference->setColor(Qt::transparent);
@@ -39,7 +41,9 @@ PoincarePlot::PoincarePlot(QWidget* parent)
   m_reference = addEntry(reference, Decimation::None);
   setToolTip(tr("Each dot is the state (u₁, v₁) of mass 1 at a contact of mass 2 with the stop "
                 "(the section H: u₂ = d). Colours run from early contacts (purple) to late ones "
-                "(yellow). The square marks the reference grazing orbit's data."));
+                "(yellow); where many fall on one spot, the colour shown is one of them drawn at "
+                "random, so every stretch of the run shows in proportion. The square marks the "
+                "reference grazing orbit's data."));
 }
 
 void PoincarePlot::show(const SimUpdate& update) {
@@ -56,11 +60,11 @@ void PoincarePlot::show(const SimUpdate& update) {
   for (int bin = 0; bin < kBins; ++bin) {
     const std::int64_t first = bin * per;
     const std::int64_t last = std::min(count, first + per) - 1;
-    // the legend names the first and last bins only; the colours in between interpolate
+    // every bin is named in the legend (an empty one is left out)
     QXYSeries* series = entryList[std::size_t(m_bins[bin])].series;
-    series->setName(last >= first ? tr("contacts %1–%2").arg(first).arg(last) : QString());
-    const bool named = (bin == 0 || bin == kBins - 1) && last >= first;
-    for (QLegendMarker* marker : chart()->legend()->markers(series)) marker->setVisible(named);
+    const QString range = tr("%1–%2").arg(first).arg(last);
+    series->setName(last < first ? QString() : bin == 0 ? tr("contacts %1").arg(range) : range);
+    for (QLegendMarker* marker : chart()->legend()->markers(series)) marker->setVisible(last >= first);
     setData(m_bins[bin], std::move(bins[bin]));
   }
   std::vector<QPointF> reference;

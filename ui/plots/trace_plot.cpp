@@ -6,6 +6,7 @@
 #include <QLegend>
 #include <QLineSeries>
 #include <QScatterSeries>
+#include <QValueAxis>
 
 #include "ui/plots/plot_style.h"
 
@@ -43,6 +44,12 @@ void TracePlot::show(const SimUpdate& update) {
   setData(m_grazings, std::move(others));
   m_gap = gap;
   m_window = tLast;
+  // the trace keeps a window of the run (its first periods); say so when the run goes on
+  const bool cut = result.samplesTruncated || result.tFinal > tLast * (1 + 1e-9) + 1e-12;
+  m_axisX->setTitleText(cut ? tr("time t (first %1 of %2)")
+                                  .arg(tLast, 0, 'g', 3)
+                                  .arg(result.tFinal, 0, 'g', 3)
+                            : tr("time t"));
   drawOverlay();
   scheduleRefresh();
 }

@@ -19,10 +19,10 @@ QString tr(const char* text) {
 
 QString GrazingFamilyScene::name() const { return QStringLiteral("Grazing family GLO_lambda"); }
 QString GrazingFamilyScene::alias() const { return QStringLiteral("grazing"); }
-QString GrazingFamilyScene::title() const { return tr("Grazing family GLO_λ"); }
+QString GrazingFamilyScene::title() const { return tr("Grazing family GLO(λ)"); }
 
 QString GrazingFamilyScene::description() const {
-  return tr("Starts on the grazing linear orbit GLO_λ, pushed off the grazing-start plane so "
+  return tr("Starts on the grazing linear orbit GLO(λ), pushed off the grazing-start plane so "
             "that it impacts. Drag λ, the masses or the gap and watch every plot follow.");
 }
 
@@ -53,7 +53,7 @@ SceneJob GrazingFamilyScene::build(const Params& params, const DerivedModel& der
   // dense output over the whole run for short runs, over the first 400 T2 for long ones
   job.request.needs = needsFor(plots(), derived.modes, 400 * derived.modes.T2);
   job.reference = core::gloData(derived.model, derived.modes, params.lambda);
-  job.referenceLabel = tr("GLO_λ data");
+  job.referenceLabel = tr("GLO(λ) data");
   job.ok = true;
   return job;
 }

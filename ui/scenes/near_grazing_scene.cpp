@@ -51,7 +51,7 @@ SceneJob NearGrazingScene::build(const Params& params, const DerivedModel& deriv
   // the trace is a glance at the first periods only; the section is the point of the scene
   job.request.needs = needsFor(plots(), derived.modes, 30 * derived.modes.T2);
   job.reference = start;
-  job.referenceLabel = tr("GLO_λ data");
+  job.referenceLabel = tr("GLO(λ) data");
   job.ok = true;
   return job;
 }

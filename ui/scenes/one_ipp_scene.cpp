@@ -4,6 +4,9 @@
 
 #include <QCoreApplication>
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/orbits.h"
 
 namespace grazelab::ui {
@@ -13,15 +16,58 @@ QString tr(const char* text) {
   return QCoreApplication::translate("grazelab::ui::OneIppScene", text);
 }
 
+// The family's curves over (T_lo, T2): points crowd towards T2, where the theorem looks.
+struct Family {
+  std::vector<QPointF> u1;     // (T/T2, u1 at impact)
+  std::vector<QPointF> speed;  // (T/T2, |V|)
+};
+
+Family sampleFamily(const DerivedModel& derived, double lowEnd) {
+  Family family;
+  const double T2 = derived.modes.T2;
+  constexpr int kPoints = 240;
+  for (int i = kPoints; i >= 1; --i) {
+    const double s = double(i) / kPoints;
+    const double T = T2 - (T2 - lowEnd) * (1 - 1e-6) * s * s;
+    const core::OnePeriodicOrbit orbit = core::onePeriodicOrbit(derived.model, derived.modes, T);
+    if (!orbit.admissible) continue;
+    family.u1.emplace_back(T / T2, orbit.postImpact.u1);
+    family.speed.emplace_back(T / T2, std::abs(orbit.V));
+  }
+  return family;
+}
+
+// Axes that hold the upper 85 % of the family (near T_lo the data run off to infinity where
+// g2(T) -> 0, and would squash the approach to T2 that the scene is about) and `also`.
+void fixAxes(CurveFigure& figure, double lowFraction, double also) {
+  const double cut = lowFraction + 0.15 * (1 - lowFraction);
+  double low = also;
+  double high = also;
+  for (const QPointF& point : figure.curve) {
+    if (point.x() < cut) continue;
+    low = std::min(low, point.y());
+    high = std::max(high, point.y());
+  }
+  const double pad = 0.06 * std::max(high - low, 1e-12);
+  figure.xMin = lowFraction - 0.01 * (1 - lowFraction);
+  figure.xMax = 1 + 0.02 * (1 - lowFraction);
+  figure.yMin = low - pad;
+  figure.yMax = high + pad;
+}
+
 }  // namespace
 
 QString OneIppScene::name() const { return QStringLiteral("1IPP orbits approaching GLO_lambda*"); }
 QString OneIppScene::alias() const { return QStringLiteral("1ipp"); }
-QString OneIppScene::title() const { return tr("1IPP orbits approaching GLO_λ*"); }
+QString OneIppScene::title() const { return tr("Theorem 2.1: 1IPP orbits approach GLO(λ*)"); }
 
 QString OneIppScene::description() const {
-  return tr("One impact per period T. Slide T towards T₂ from below: the impact data (u₁, v₁) "
-            "moves to the GLO_λ* data and the impact velocity goes to zero (Theorem 2.1).");
+  return tr("<b>One impact per period T.</b> Slide T/T₂ up towards 1. <i>Look for:</i> the "
+            "impact data u₁ (left) run into the value of the grazing orbit GLO<sub>λ*</sub>, "
+            "and the impact speed |V| (right) falls to 0. <i>Why:</i> as T → T₂ the impact "
+            "becomes a touch; the only orbit that returns after T₂ touching the stop is the "
+            "grazing one with λ = λ*, fixed by the masses (Theorem 2.1). The red dot is the "
+            "current T; the plots below show its motion.");
 }
 
 Params OneIppScene::defaults() const {
@@ -35,33 +81,72 @@ Params OneIppScene::defaults() const {
 
 QList<ParamKey> OneIppScene::parameters() const {
   // k2 too: it is what the "1:2 design" box hands over to the user when unticked
-  return {ParamKey::Period, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
-          ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
+  return {ParamKey::Period, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
+          ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
 }
 
 QList<PlotKind> OneIppScene::plots() const {
-  return {PlotKind::TraceU2, PlotKind::FreeFlight, PlotKind::PhaseU2V2, PlotKind::PhaseU1V1,
-          PlotKind::Poincare};
+  return {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::TraceU2,
+          PlotKind::PhaseU2V2};
 }
 
 SceneJob OneIppScene::build(const Params& params, const DerivedModel& derived) const {
   SceneJob job;
   job.model = derived.model;
-  const double period = params.periodFraction * derived.modes.T2;
-  const core::OnePeriodicOrbit orbit =
-      core::onePeriodicOrbit(derived.model, derived.modes, period);
+  const double T2 = derived.modes.T2;
+  const double lowEnd = core::onePeriodicLowerEnd(derived.model, derived.modes);
+  const double lowFraction = lowEnd / T2;
+  // the slider starts on an admissible period of this chain (rounded up to its 3 decimals)
+  job.sliderRanges[ParamKey::Period] = {std::ceil(lowFraction * 1000 + 1e-9) / 1000, 0.999};
+  const double period = params.periodFraction * T2;
+  const core::OnePeriodicOrbit orbit = core::onePeriodicOrbit(derived.model, derived.modes, period);
   if (!orbit.admissible) {
-    job.message = tr("No one-impact-per-period orbit for T = %1 (T/T₂ = %2): %3")
-                      .arg(period, 0, 'g', 6)
+    job.message = tr("No one-impact-per-period orbit for T/T₂ = %1: this chain's family spans "
+                     "T/T₂ in (%2, 1) (%3)")
                       .arg(params.periodFraction, 0, 'g', 6)
+                      .arg(lowFraction, 0, 'f', 4)
                       .arg(QString::fromStdString(orbit.reason));
     return job;
   }
-  job.request.initial = perturbed(orbit.postImpact, params);
+  job.request.initial = orbit.postImpact;
   job.request.maxContacts = std::int64_t(params.horizon);
-  job.request.needs = needsFor(plots(), derived.modes, 400 * derived.modes.T2);
-  job.reference = core::gloData(derived.model, derived.modes, derived.lambdaStar);
-  job.referenceLabel = tr("GLO_λ* data");
+  job.request.needs = needsFor(plots(), derived.modes, 400 * T2);
+  const core::State star = core::gloData(derived.model, derived.modes, derived.lambdaStar);
+  job.reference = star;
+  job.referenceLabel = tr("GLO(λ*) data");
+
+  const Family family = sampleFamily(derived, lowEnd);
+  const QString lambdaStar = QString::number(derived.lambdaStar, 'f', 3);
+  CurveFigure data;
+  data.title = tr("Impact data u₁ of the 1IPP orbit against T/T₂");
+  data.xTitle = tr("T / T₂");
+  data.yTitle = tr("u₁ at impact");
+  data.toolTip = tr("Where mass 1 is when mass 2 hits the stop, for each period T of the "
+                    "one-impact-per-period family. As T → T₂ it tends to u₁ of the grazing "
+                    "orbit GLO(λ*) (dashed), λ* = %1 for these masses.").arg(lambdaStar);
+  data.curveName = tr("1IPP family");
+  data.curve = family.u1;
+  data.markerName = tr("T/T₂ = %1").arg(params.periodFraction, 0, 'g', 6);
+  data.markers = {QPointF(params.periodFraction, orbit.postImpact.u1)};
+  data.referenceName = tr("GLO(λ*), λ* = %1").arg(lambdaStar);
+  data.reference = {QPointF(lowFraction, star.u1), QPointF(1.0, star.u1)};
+  fixAxes(data, lowFraction, star.u1);
+  job.figures[PlotKind::OnePeriodicData] = std::move(data);
+
+  CurveFigure speed;
+  speed.title = tr("Impact speed |V| of the 1IPP orbit against T/T₂");
+  speed.xTitle = tr("T / T₂");
+  speed.yTitle = tr("|V| (speed of mass 2 at impact)");
+  speed.toolTip = tr("The speed at which mass 2 hits the stop on the one-impact-per-period "
+                     "orbit of period T. It goes to 0 as T → T₂: the impact becomes grazing.");
+  speed.curveName = tr("1IPP family");
+  speed.curve = family.speed;
+  speed.markerName = tr("|V| = %1").arg(std::abs(orbit.V), 0, 'g', 4);
+  speed.markers = {QPointF(params.periodFraction, std::abs(orbit.V))};
+  speed.referenceName = tr("T → T₂: V → 0");
+  speed.reference = {QPointF(1.0, 0.0)};
+  fixAxes(speed, lowFraction, 0.0);
+  job.figures[PlotKind::ImpactSpeed] = std::move(speed);
   job.ok = true;
   return job;
 }

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QPointF>
+#include <QString>
+
+#include <map>
+#include <vector>
+
+namespace grazelab::ui {
+
+/// The kinds of view a scene can show.
+enum class PlotKind {
+  TraceU2,          ///< u2(t) with the stop line and the contacts
+  PhaseU2V2,        ///< phase portrait (u2, v2)
+  PhaseU1V1,        ///< phase portrait (u1, v1)
+  Poincare,         ///< (u1, v1) at each contact, coloured by contact index
+  FreeFlight,       ///< free-flight time against contact index, with the line FFT = T2
+  WorkPrecision,    ///< every method's error against its run time, with an overlay picker
+  OnePeriodicData,  ///< the 1IPP impact data u1(T) against T/T2, with the GLO_lambda* value
+  ImpactSpeed,      ///< the 1IPP impact speed |V(T)| against T/T2, going to 0 at T2
+};
+
+/// A curve a scene computes itself (no run needed), drawn by a CurvePlot: the curve, the
+/// current parameter's point on it, and a reference (a line or a point) it is compared with.
+struct CurveFigure {
+  QString title;
+  QString xTitle;
+  QString yTitle;
+  QString toolTip;
+  QString curveName;
+  std::vector<QPointF> curve;
+  QString markerName;
+  std::vector<QPointF> markers;
+  QString referenceName;
+  std::vector<QPointF> reference;  ///< two points: a dashed line; one: a ringed point
+  /// fixed axes [xMin, xMax] x [yMin, yMax], so that the marker's motion is seen (empty: fit)
+  double xMin = 0, xMax = 0, yMin = 0, yMax = 0;
+};
+
+using Figures = std::map<PlotKind, CurveFigure>;
+
+}  // namespace grazelab::ui

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/plots/curve_plot.h"
+
+#include <QChart>
+#include <QLineSeries>
+#include <QScatterSeries>
+#include <QValueAxis>
+
+#include "ui/plots/plot_style.h"
+
+namespace grazelab::ui {
+
+CurvePlot::CurvePlot(PlotKind kind, QWidget* parent)
+    : PlotView(QString(), QString(), QString(), parent), m_kind(kind) {
+  m_curve = addEntry(makeLine(QString(), colors::kTrace, 2.0), Decimation::None);
+  m_reference = addEntry(makeLine(QString(), colors::kReference, 1.5, Qt::DashLine), Decimation::None);
+  auto* marker = makeScatter(QString(), colors::kImpact, 12);
+  marker->setPen(QPen(Qt::white, 1.5));
+  useLightMarker(marker, QPen(Qt::white, 1.5));
+  m_marker = addEntry(marker, Decimation::None);
+}
+
+void CurvePlot::show(const SimUpdate& update) {
+  const auto found = update.request->figures.find(m_kind);
+  if (found == update.request->figures.end()) return;
+  const CurveFigure& figure = found->second;
+  chart()->setTitle(figure.title);
+  m_axisX->setTitleText(figure.xTitle);
+  m_axisY->setTitleText(figure.yTitle);
+  setToolTip(figure.toolTip);
+  const auto& list = entries();
+  list[std::size_t(m_curve)].series->setName(figure.curveName);
+  list[std::size_t(m_marker)].series->setName(figure.markerName);
+  list[std::size_t(m_reference)].series->setName(figure.referenceName);
+  std::vector<QPointF> reference = figure.reference;
+  if (reference.size() == 1) reference.push_back(reference.front());  // a point: a zero-length line
+  setData(m_curve, figure.curve);
+  setData(m_marker, figure.markers);
+  setData(m_reference, std::move(reference));
+  if (figure.xMax > figure.xMin && figure.yMax > figure.yMin) {
+    setFixedRange(QRectF(QPointF(figure.xMin, figure.yMin), QPointF(figure.xMax, figure.yMax)));
+  } else {
+    setFixedRange(std::nullopt);
+  }
+  scheduleRefresh();
+}
+
+}  // namespace grazelab::ui
