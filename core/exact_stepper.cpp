@@ -40,6 +40,7 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
   Step<S> step;
   step.segmentStart = state.tau;
   m_segmentStart = state.tau;
+  m_segmentState = state.x;
   m_flight.reset();
   m_stuck.reset();
   const BasicState<S>& x = state.x;
@@ -139,7 +140,9 @@ template <typename S>
 BasicState<S> ExactStepper<S>::segmentAt(const S& tau) const {
   if (m_stuck) return m_stuck->at(tau - m_segmentStart);
   if (m_flight) return m_flight->at(FlightTime<S>::nearest(tau - m_segmentStart));
-  return {};
+  // a step that took no time (an impact or a stick at its start): the state it began from,
+  // not zeros (a sticking start drew a line from the origin)
+  return m_segmentState;
 }
 
 #define GRAZELAB_INSTANTIATE(S)  \

@@ -70,6 +70,7 @@ class ExactStepper {
   std::optional<Flight<S>> m_flight;
   std::optional<StuckMotion<S>> m_stuck;
   S m_segmentStart = 0;
+  BasicState<S> m_segmentState{};  ///< where the step began: the motion of a zero-length step
 };
 
 /// Moves a state on the stop back onto the energy level `target` (scaled), along the energy

@@ -92,6 +92,26 @@ std::optional<double> resonantK2(double m1, double m2, double k1, Branch branch)
   return designKappa(m2 / m1, branch) * k1;
 }
 
+std::optional<double> k2ForFrequencyRatio(double m1, double m2, double k1, double ratio,
+                                          Branch branch) {
+  const bool usable = std::isfinite(m1) && std::isfinite(m2) && std::isfinite(k1) &&
+                      std::isfinite(ratio) && m1 > 0 && m2 > 0 && k1 > 0 && ratio > 1;
+  if (!usable) return std::nullopt;
+  const double beta = m2 / m1;
+  const double r2 = ratio * ratio;
+  const double a = r2 * (1 + beta) * (1 + beta);
+  const double b = 2 * r2 * beta * (1 + beta) - beta * (1 + r2) * (1 + r2);
+  const double c = r2 * beta * beta;
+  const double discriminant = b * b - 4 * a * c;
+  if (discriminant < 0) return std::nullopt;
+  // the two roots multiply to c / a > 0 and add to -b / a: both positive when b < 0. The larger
+  // is taken as -b + sqrt(D) (no cancellation); the smaller from the product.
+  if (b >= 0) return std::nullopt;
+  const double upper = (-b + std::sqrt(discriminant)) / (2 * a);
+  const double lower = c / (a * upper);
+  return (branch == Branch::Upper ? upper : lower) * k1;
+}
+
 template <typename S>
 S resonanceDefect(const S& m1, const S& m2, const S& k1, const S& k2) {
   // D m1^2 k1^2 = 4 (m1 + m2)^2 k2^2 - m2 (17 m1 - 8 m2) k1 k2 + 4 m2^2 k1^2, and

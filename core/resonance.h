@@ -28,6 +28,13 @@ S designKappa(const S& beta, Branch branch);
 /// chain) or an input is not positive and finite.
 std::optional<double> resonantK2(double m1, double m2, double k1, Branch branch);
 
+/// k2 for which the chain's frequencies have the ratio w_fast / w_slow = ratio (> 1): a
+/// detuned chain near 1:2 for ratio near 2. With beta = m2/m1, kappa = k2/k1, r = ratio:
+/// r^2 (1+beta)^2 kappa^2 + [2 r^2 beta (1+beta) - beta (1+r^2)^2] kappa + r^2 beta^2 = 0
+/// (r = 2 gives the 1:2 design). Nothing when no positive k2 gives that ratio.
+std::optional<double> k2ForFrequencyRatio(double m1, double m2, double k1, double ratio,
+                                          Branch branch);
+
 /// The resonance defect of a chain given by its numbers, computed exactly from them (rational
 /// arithmetic on the binary values, then rounded once):
 ///   D / beta^2 = (lambdaFast - 4 lambdaSlow)(4 lambdaFast - lambdaSlow),

@@ -14,7 +14,7 @@ namespace grazelab::ui {
 
 DerivedModel deriveModel(const Params& params) {
   DerivedModel derived;
-  derived.model = {params.m1, params.m2, params.k1, params.k2, params.gap};
+  derived.model = {params.m1, params.m2, params.k1, params.k2, params.gap, std::nullopt};
   derived.massRatio = params.m2 / params.m1;
   auto tr = [](const char* text) {
     return QCoreApplication::translate("grazelab::ui::DerivedModel", text);

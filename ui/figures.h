@@ -20,6 +20,11 @@ enum class PlotKind {
   WorkPrecision,    ///< every method's error against its run time, with an overlay picker
   OnePeriodicData,  ///< the 1IPP impact data u1(T) against T/T2, with the GLO_lambda* value
   ImpactSpeed,      ///< the 1IPP impact speed |V(T)| against T/T2, going to 0 at T2
+  GrazingMaximum,   ///< Lemma 2.1: max u2/d of GLO(lambda) against lambda, = 1 on [0, 4/3]
+  SpreadAgainstSize,  ///< Theorem 2.2: the spread of FFT/T2 against the push size (log-log)
+  FlightHistogram,  ///< Theorem 2.3: histogram of FFT/T2 over random starts, bound at 1
+  DetunedFlights,   ///< detuned contrast: the detuned chain's FFT/T2 against contact index
+  ResonantFlights,  ///< detuned contrast: the resonant chain's FFT/T2 against contact index
 };
 
 /// A curve a scene computes itself (no run needed), drawn by a CurvePlot: the curve, the

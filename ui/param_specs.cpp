@@ -55,6 +55,12 @@ ParamSpec paramSpec(ParamKey key) {
               tr("Period T of the one-impact-per-period orbit as a fraction of T₂, the slow "
                  "period. As T → T₂ from below the orbit tends to GLO(λ*) (Theorem 2.1)."),
               0.5, 0.999, 0.01, 0.999999, 6, false, {}};
+    case ParamKey::FrequencyRatio:
+      return {key, tr("ω₁ / ω₂"),
+              tr("Ratio of the fast to the slow frequency of the detuned chain (k₂ is chosen to "
+                 "give it). At exactly 2 the chain is in 1:2 resonance and every free motion "
+                 "repeats after T₂; away from 2 it does not."),
+              1.8, 2.2, 1.01, 10.0, 4, false, {2.0}};
   }
   return {key, {}, {}, 0, 1, 0, 1, 3, false, {}};
 }

@@ -55,6 +55,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   designRow->addWidget(m_branch);
   chainLayout->addLayout(designRow);
   addControl(chainLayout, ParamKey::K2);
+  addControl(chainLayout, ParamKey::FrequencyRatio);
   m_feasibility = new QLabel(chain);
   m_feasibility->setObjectName(QStringLiteral("feasibility"));
   m_feasibility->setWordWrap(true);

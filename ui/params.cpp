@@ -14,7 +14,8 @@ namespace {
 
 constexpr std::array kAllKeys = {ParamKey::Lambda, ParamKey::M1,           ParamKey::M2,
                                  ParamKey::Gap,    ParamKey::K1,           ParamKey::K2,
-                                 ParamKey::Perturbation, ParamKey::Horizon, ParamKey::Period};
+                                 ParamKey::Perturbation, ParamKey::Horizon, ParamKey::Period,
+                                 ParamKey::FrequencyRatio};
 constexpr std::array kAllDirections = {PerturbDirection::V2, PerturbDirection::U2,
                                        PerturbDirection::U1, PerturbDirection::V1};
 
@@ -31,6 +32,7 @@ double Params::value(ParamKey key) const {
     case ParamKey::Perturbation: return perturbation;
     case ParamKey::Horizon: return horizon;
     case ParamKey::Period: return periodFraction;
+    case ParamKey::FrequencyRatio: return frequencyRatio;
   }
   return 0;
 }
@@ -46,6 +48,7 @@ void Params::setValue(ParamKey key, double value) {
     case ParamKey::Perturbation: perturbation = value; break;
     case ParamKey::Horizon: horizon = value; break;
     case ParamKey::Period: periodFraction = value; break;
+    case ParamKey::FrequencyRatio: frequencyRatio = value; break;
   }
 }
 
@@ -60,6 +63,7 @@ QString jsonKey(ParamKey key) {
     case ParamKey::Perturbation: return QStringLiteral("perturbation");
     case ParamKey::Horizon: return QStringLiteral("contacts");
     case ParamKey::Period: return QStringLiteral("periodOverT2");
+    case ParamKey::FrequencyRatio: return QStringLiteral("frequencyRatio");
   }
   return {};
 }

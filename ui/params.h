@@ -22,6 +22,7 @@ enum class ParamKey {
   Perturbation,  ///< signed size of the push off the chosen orbit
   Horizon,       ///< number of contacts to compute
   Period,        ///< T / T2 for the one-impact-per-period orbit
+  FrequencyRatio,  ///< w_fast / w_slow of a detuned chain (the detuned-contrast scene)
 };
 
 /// Which component of the start state the perturbation moves.
@@ -39,6 +40,7 @@ struct Params {
   PerturbDirection direction = PerturbDirection::V2;
   double horizon = 200;         ///< contacts
   double periodFraction = 0.9;  ///< T / T2 of the 1IPP orbit
+  double frequencyRatio = 2.05; ///< w_fast / w_slow of the detuned chain
   bool resonantDesign = true;   ///< k2 from the 1:2 design (core::resonantK2)
   core::Branch branch = core::Branch::Upper;
 

@@ -2,10 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/scene.h"
 
-#include "ui/scenes/accuracy_scene.h"
-#include "ui/scenes/grazing_family_scene.h"
-#include "ui/scenes/near_grazing_scene.h"
-#include "ui/scenes/one_ipp_scene.h"
+#include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {
 
@@ -45,12 +42,24 @@ core::State perturbed(core::State state, const Params& params) {
 }
 
 std::vector<std::unique_ptr<Scene>> makeScenes() {
+  // the table of scenes, in the order of the note: a new scene is one line here and a file
+  const std::vector<Scene::Spec (*)()> table = {
+      grazingFamilyScene, onePeriodicScene, perturbationScene, randomStartsScene,
+      stickingScene,      detunedScene,     nearGrazingScene,  accuracyScene,
+  };
   std::vector<std::unique_ptr<Scene>> scenes;
-  scenes.push_back(std::make_unique<GrazingFamilyScene>());
-  scenes.push_back(std::make_unique<NearGrazingScene>());
-  scenes.push_back(std::make_unique<OneIppScene>());
-  scenes.push_back(std::make_unique<AccuracyScene>());
+  for (auto make : table) scenes.push_back(std::make_unique<Scene>(make()));
   return scenes;
+}
+
+std::vector<QPointF> flightsOverT2(const core::Result& result, double T2) {
+  std::vector<QPointF> points;
+  points.reserve(result.freeFlights.size());
+  for (const core::FreeFlight& flight : result.freeFlights) {
+    // 1 - shortfall / T2: exact near T2, where FFT / T2 itself would round to 1
+    points.emplace_back(double(flight.contactIndex), 1.0 - flight.shortfall / T2);
+  }
+  return points;
 }
 
 int findScene(const std::vector<std::unique_ptr<Scene>>& scenes, const QString& name) {

@@ -5,6 +5,7 @@
 #include <QList>
 #include <QString>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -32,28 +33,42 @@ struct SceneJob {
   std::map<ParamKey, std::pair<double, double>> sliderRanges;
 };
 
-/// A named preset: which parameters are exposed, which plots are shown, and so what is computed.
-/// Adding a scene is one new file in ui/scenes/ plus one line in makeScenes().
+/// A named preset: which parameters are exposed, which views are shown, and so what is
+/// computed. Scenes are data: a Spec each, made by one function in its own file under
+/// ui/scenes/ and listed once in the table of makeScenes().
 class Scene {
  public:
-  virtual ~Scene() = default;
-  /// Stable English name, used on the command line and in session files.
-  virtual QString name() const = 0;
-  /// Short alias for the command line ("grazing").
-  virtual QString alias() const = 0;
-  /// Translated name for menus.
-  virtual QString title() const = 0;
-  /// One or two sentences on what the scene shows.
-  virtual QString description() const = 0;
-  virtual Params defaults() const = 0;
-  virtual QList<ParamKey> parameters() const = 0;
-  virtual QList<PlotKind> plots() const = 0;
-  /// The parameters this scene keeps for itself when the user switches scenes; the others (the
-  /// chain and the start) belong to the session and carry over. By default the run's length
-  /// and the 1IPP period are the scene's own.
-  virtual QList<ParamKey> ownKeys() const { return {ParamKey::Horizon, ParamKey::Period}; }
-  /// The run for these parameters (derived.ok is true).
-  virtual SceneJob build(const Params& params, const DerivedModel& derived) const = 0;
+  struct Spec {
+    QString name;   ///< stable English name, used on the command line and in session files
+    QString alias;  ///< short name for the command line ("grazing")
+    QString title;  ///< translated name for menus
+    /// what to look for and why, for students (rich text), beside the plots and in the README
+    QString text;
+    Params defaults;
+    QList<ParamKey> parameters;
+    QList<PlotKind> plots;
+    /// the parameters the scene keeps for itself when the user switches scenes; the others
+    /// (the chain and the start) belong to the session and carry over
+    QList<ParamKey> ownKeys{ParamKey::Horizon, ParamKey::Period};
+    /// the run for these parameters (derived.ok is true)
+    std::function<SceneJob(const Scene&, const Params&, const DerivedModel&)> build;
+  };
+
+  explicit Scene(Spec spec) : m_spec(std::move(spec)) {}
+  QString name() const { return m_spec.name; }
+  QString alias() const { return m_spec.alias; }
+  QString title() const { return m_spec.title; }
+  QString description() const { return m_spec.text; }
+  Params defaults() const { return m_spec.defaults; }
+  QList<ParamKey> parameters() const { return m_spec.parameters; }
+  QList<PlotKind> plots() const { return m_spec.plots; }
+  QList<ParamKey> ownKeys() const { return m_spec.ownKeys; }
+  SceneJob build(const Params& params, const DerivedModel& derived) const {
+    return m_spec.build(*this, params, derived);
+  }
+
+ private:
+  Spec m_spec;
 };
 
 /// The needs implied by a set of visible plots: dense samples only for traces and phase

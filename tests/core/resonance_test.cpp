@@ -68,6 +68,28 @@ TEST(Resonance, EveryFeasibleRatioGivesOneToTwoOnBothBranches) {
   }
 }
 
+// The detuned-contrast scene's chains: the asked frequency ratio, and the 1:2 design at 2.
+TEST(Resonance, StiffnessForAFrequencyRatioGivesThatRatio) {
+  for (const double beta : {0.05, 0.3, 0.5, 0.5625}) {
+    for (const Branch branch : {Branch::Upper, Branch::Lower}) {
+      const auto designed = resonantK2(1.0, beta, 1.0, branch);
+      const auto atTwo = k2ForFrequencyRatio(1.0, beta, 1.0, 2.0, branch);
+      ASSERT_TRUE(designed && atTwo);
+      EXPECT_NEAR(*atTwo, *designed, 1e-12 * *designed) << beta;
+      for (const double ratio : {1.9, 1.97, 2.03, 2.2, 3.0}) {
+        const auto k2 = k2ForFrequencyRatio(2.0, 2.0 * beta, 3.0, ratio, branch);
+        if (!k2) continue;  // this mass ratio reaches no such frequency ratio
+        const Modes modes = computeModes(Model{2.0, 2.0 * beta, 3.0, *k2, 1.0, std::nullopt});
+        EXPECT_NEAR(modes.omegaFast / modes.omegaSlow, ratio, 1e-12) << beta << " " << ratio;
+      }
+    }
+  }
+  EXPECT_FALSE(k2ForFrequencyRatio(1.0, 0.5, 1.0, 1.0, Branch::Upper));
+  EXPECT_FALSE(k2ForFrequencyRatio(1.0, -0.5, 1.0, 2.0, Branch::Upper));
+  // 1 + beta small: a ratio below ~ the chain's least reachable one has no stiffness
+  EXPECT_FALSE(k2ForFrequencyRatio(1.0, 0.5625, 1.0, 1.5, Branch::Upper));
+}
+
 TEST(Resonance, BranchNamesRoundTrip) {
   EXPECT_EQ(parseBranch(toString(Branch::Upper)), Branch::Upper);
   EXPECT_EQ(parseBranch(toString(Branch::Lower)), Branch::Lower);

@@ -9,7 +9,9 @@
 
 #include <cmath>
 
+#include "core/modes.h"
 #include "core/orbits.h"
+#include "core/simulate.h"
 #include "support/cases.h"
 
 namespace grazelab::core {
@@ -24,6 +26,31 @@ TEST(Sticking, PressedOnlyWhenTheSpringPushesIntoTheStop) {
   EXPECT_FALSE(pressedOnStop<double>({0.8, 1.0, 0.0, 0.0}, model.gap));
   EXPECT_FALSE(pressedOnStop<double>({1.2, 1.0, 0.0, -0.1}, model.gap));
   EXPECT_FALSE(pressedOnStop<double>({1.2, 0.9, 0.0, 0.0}, model.gap));
+}
+
+// A start pressed on the stop sticks at t = 0, a step that takes no time. Its dense samples
+// must be the motion (mass 2 on the stop, mass 1 moving), not zeros: the explorer drew a line
+// from the origin to the start.
+TEST(Sticking, SamplesOfAStuckStartStayOnTheStop) {
+  const Model model = testing::resonantChain(0.5);
+  const Modes modes = computeModes(model);
+  Request request;
+  request.initial = gloData(model, modes, 1.6);
+  request.maxContacts = 3;
+  request.needs.samples.spacing = modes.T1 / 48;
+  request.needs.samples.tEnd = 5 * modes.T2;
+  const Result result = simulate(model, request);
+  ASSERT_EQ(result.events.front().type, EventType::Stick);
+  ASSERT_FALSE(result.samples.empty());
+  EXPECT_EQ(result.samples.front().t, 0.0);
+  EXPECT_EQ(result.samples.front().state.u1, request.initial.u1);
+  EXPECT_EQ(result.samples.front().state.u2, model.gap);
+  // until the release, mass 2 is on the stop
+  const double release = result.events[1].t;
+  for (const Sample& sample : result.samples) {
+    if (sample.t < release) EXPECT_NEAR(sample.state.u2, model.gap, 1e-12 * model.gap);
+    EXPECT_LE(sample.state.u2, model.gap * (1 + 1e-12));
+  }
 }
 
 TEST(Sticking, ReleaseWhenTheReactionVanishes) {

@@ -150,7 +150,7 @@ class ExplorerTest : public QObject {
   }
 
   void longRunStreamsAndStaysResponsive() {
-    m_window->selectScene(1);  // near grazing
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("near-grazing")));
     QVERIFY(waitForLatestFinal(*m_window));
     Params params = m_window->params();
     params.horizon = 1e6;
@@ -175,7 +175,7 @@ class ExplorerTest : public QObject {
   }
 
   void scenesChangePlotsAndParameters() {
-    m_window->selectScene(2);  // 1IPP
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("1ipp")));
     QVERIFY(waitForLatestFinal(*m_window));
     QCOMPARE(m_window->plots().size(), qsizetype(4));
     QVERIFY(!m_window->parameterPanel()->control(ParamKey::Lambda)->isVisibleTo(m_window.get()));
@@ -187,13 +187,13 @@ class ExplorerTest : public QObject {
     for (std::size_t i = 1; i < shown->result->events.size(); ++i) {
       QVERIFY(std::abs(shown->result->events[i].t - shown->result->events[i - 1].t - period) < 1e-6);
     }
-    m_window->selectScene(1);
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("near-grazing")));
     QVERIFY(waitForLatestFinal(*m_window));
     QCOMPARE(m_window->plots().size(), qsizetype(3));
   }
 
   void accuracySceneMeasuresEveryMethodAndOverlaysTheChosenOne() {
-    m_window->selectScene(3);  // Accuracy
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("accuracy")));
     QCOMPARE(m_window->scene().alias(), QStringLiteral("accuracy"));
     QVERIFY(waitForLatestFinal(*m_window, 120000));
     const SimUpdate* shown = m_window->displayed();

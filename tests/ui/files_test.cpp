@@ -163,7 +163,7 @@ class FilesTest : public QObject {
     QVERIFY2(m_window->saveSession(path, &error), qPrintable(error));
     QVERIFY(QFileInfo(path).size() > 0);
 
-    m_window->selectScene(2);
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("1ipp")));
     m_window->setParams(m_window->scene().defaults());
     QVERIFY(waitForLatestFinal(*m_window));
     QVERIFY2(m_window->openSession(path, &error), qPrintable(error));

@@ -47,11 +47,15 @@ class HeadlessTest : public QObject {
 
   void listsScenesOnePerLine() {
     const QStringList scenes = listScenes();
-    QCOMPARE(scenes.size(), qsizetype(4));
+    QCOMPARE(scenes.size(), qsizetype(8));
     QCOMPARE(scenes.first(), QStringLiteral("Grazing family GLO_lambda"));
     QVERIFY(scenes.contains(QStringLiteral("Near grazing: Poincaré points on H")));
     QVERIFY(scenes.contains(QStringLiteral("1IPP orbits approaching GLO_lambda*")));
     QVERIFY(scenes.contains(QStringLiteral("Accuracy: methods against the exact solver")));
+    QVERIFY(scenes.contains(QStringLiteral("Theorem 2.2: perturbations of a grazing orbit")));
+    QVERIFY(scenes.contains(QStringLiteral("Theorem 2.3: random starts")));
+    QVERIFY(scenes.contains(QStringLiteral("Sticking: a start pressed on the stop")));
+    QVERIFY(scenes.contains(QStringLiteral("Detuned contrast: off 1:2 resonance")));
   }
 
   void rendersEveryScene() {

@@ -18,7 +18,12 @@ PlotView* makePlot(PlotKind kind, QWidget* parent) {
     case PlotKind::Poincare: return new PoincarePlot(parent);
     case PlotKind::FreeFlight: return new FreeFlightPlot(parent);
     case PlotKind::OnePeriodicData:
-    case PlotKind::ImpactSpeed: return new CurvePlot(kind, parent);
+    case PlotKind::ImpactSpeed:
+    case PlotKind::GrazingMaximum:
+    case PlotKind::SpreadAgainstSize:
+    case PlotKind::FlightHistogram:
+    case PlotKind::DetunedFlights:
+    case PlotKind::ResonantFlights: return new CurvePlot(kind, parent);
     case PlotKind::WorkPrecision: return nullptr;  // not a PlotView: MainWindow builds an AccuracyView
   }
   return nullptr;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-#include "ui/scenes/accuracy_scene.h"
+#include "ui/scenes/scenes.h"
 
 #include <QCoreApplication>
 
@@ -16,51 +16,47 @@ QString tr(const char* text) {
 
 }  // namespace
 
-QString AccuracyScene::name() const { return QStringLiteral("Accuracy: methods against the exact solver"); }
-QString AccuracyScene::alias() const { return QStringLiteral("accuracy"); }
-QString AccuracyScene::title() const { return tr("Accuracy: methods against the exact solver"); }
-
-QString AccuracyScene::description() const {
-  return tr("The standard methods of nonsmooth mechanics (Moreau–Jean, Schatzman–Paoli, "
-            "event-driven Runge–Kutta, CVODE, a penalty spring) on the same start, each at "
-            "several step sizes or tolerances: their error against their run time. Pick one to "
-            "draw its u₂(t) over the exact motion.");
-}
-
-Params AccuracyScene::defaults() const {
-  Params params;
-  params.lambda = 0.5;
-  params.perturbation = -0.05;
-  params.direction = PerturbDirection::V2;
-  params.horizon = 50;
-  return params;
-}
-
-QList<ParamKey> AccuracyScene::parameters() const {
-  return {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
-          ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
-}
-
-QList<PlotKind> AccuracyScene::plots() const {
-  return {PlotKind::TraceU2, PlotKind::WorkPrecision};
-}
-
-SceneJob AccuracyScene::build(const Params& params, const DerivedModel& derived) const {
-  SceneJob job;
-  job.model = derived.model;
-  job.request.initial = perturbed(core::gloData(derived.model, derived.modes, params.lambda), params);
-  job.request.maxContacts = std::int64_t(params.horizon);
-  // the trace shows the whole comparison: it is what the overlay is drawn on
-  job.request.needs = needsFor(plots(), derived.modes, (params.horizon + 1) * derived.modes.T2);
-  AccuracyJob accuracy;
-  for (core::methods::MethodKind kind : core::methods::kAllMethods) {
-    for (const auto& setting : core::methods::reportSettings(kind, derived.modes.T2, derived.model.k1, true)) {
-      accuracy.settings.push_back(setting);
+Scene::Spec accuracyScene() {
+  Scene::Spec scene;
+  scene.name = QStringLiteral("Accuracy: methods against the exact solver");
+  scene.alias = QStringLiteral("accuracy");
+  scene.title = tr("Accuracy: methods against the exact solver");
+  scene.text = tr("<b>How good is a numerical method?</b> The standard methods of nonsmooth "
+                  "mechanics (Moreau–Jean, Schatzman–Paoli, event-driven Runge–Kutta, CVODE, a "
+                  "penalty spring) run on the same start at several step sizes or tolerances. "
+                  "<i>Look for:</i> each method's error against its run time (right), and the "
+                  "exact solver far below and to the left. Pick a run to draw its u₂(t) over "
+                  "the exact motion: missed or extra contacts show as gaps and spikes. "
+                  "<i>Why:</i> near grazing a small error in a contact time changes which "
+                  "contacts happen at all.");
+  scene.defaults.lambda = 0.5;
+  scene.defaults.perturbation = -0.05;
+  scene.defaults.direction = PerturbDirection::V2;
+  scene.defaults.horizon = 50;
+  scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
+                      ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
+  scene.plots = {PlotKind::TraceU2, PlotKind::WorkPrecision};
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
+    SceneJob job;
+    job.model = derived.model;
+    job.request.initial =
+        perturbed(core::gloData(derived.model, derived.modes, params.lambda), params);
+    job.request.maxContacts = std::int64_t(params.horizon);
+    // the trace shows the whole comparison: it is what the overlay is drawn on
+    job.request.needs =
+        needsFor(self.plots(), derived.modes, (params.horizon + 1) * derived.modes.T2);
+    AccuracyJob accuracy;
+    for (core::methods::MethodKind kind : core::methods::kAllMethods) {
+      for (const auto& setting :
+           core::methods::reportSettings(kind, derived.modes.T2, derived.model.k1, true)) {
+        accuracy.settings.push_back(setting);
+      }
     }
-  }
-  job.accuracy = std::move(accuracy);
-  job.ok = true;
-  return job;
+    job.accuracy = std::move(accuracy);
+    job.ok = true;
+    return job;
+  };
+  return scene;
 }
 
 }  // namespace grazelab::ui

@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-#include "ui/scenes/grazing_family_scene.h"
-
 #include <QCoreApplication>
 
 #include <algorithm>
 
 #include "core/orbits.h"
+#include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {
 namespace {
@@ -15,47 +14,84 @@ QString tr(const char* text) {
   return QCoreApplication::translate("grazelab::ui::GrazingFamilyScene", text);
 }
 
+// Lemma 2.1: M(lambda) = max over s of (1 - lambda) cos 2s + lambda cos s, the highest u2 / d
+// of the linear orbit GLO(lambda). With c = cos s the expression is the quadratic
+// 2 (1 - lambda) c^2 + lambda c - (1 - lambda) on [-1, 1]: its ends give 1 and 1 - 2 lambda, its
+// vertex (when it is a maximum inside) -(1 - lambda) - lambda^2 / (8 (1 - lambda)).
+double highestReach(double lambda) {
+  double best = std::max(1.0, 1 - 2 * lambda);
+  const double a = 1 - lambda;
+  if (a < 0) {
+    const double vertex = -lambda / (4 * a);
+    if (vertex > -1 && vertex < 1) best = std::max(best, -a - lambda * lambda / (8 * a));
+  }
+  return best;
+}
+
+CurveFigure lemmaFigure(double lambda) {
+  CurveFigure figure;
+  figure.title = tr("Lemma 2.1: the highest point of GLO(λ), max u₂ / d");
+  figure.xTitle = tr("λ");
+  figure.yTitle = tr("max over a period of u₂ / d");
+  figure.toolTip = tr("The linear orbit (1 − λ) GLOM₁ + λ GLOM₂ reaches at most "
+                      "max[(1 − λ) cos 2s + λ cos s] times the gap. It is exactly 1 (the orbit "
+                      "touches the stop and stays below it: a grazing orbit) for λ in [0, 4/3]; "
+                      "outside, the linear motion would pass through the stop.");
+  figure.curveName = tr("max u₂ / d");
+  constexpr int kPoints = 500;
+  for (int i = 0; i <= kPoints; ++i) {
+    const double x = -0.5 + 2.5 * i / kPoints;
+    figure.curve.emplace_back(x, highestReach(x));
+  }
+  figure.markerName = tr("λ = %1").arg(lambda, 0, 'g', 4);
+  figure.markers = {QPointF(lambda, highestReach(lambda))};
+  figure.referenceName = tr("= 1 on [0, 4/3]: grazing");
+  figure.reference = {QPointF(0, 1), QPointF(4.0 / 3.0, 1)};
+  figure.xMin = -0.55;
+  figure.xMax = 2.05;
+  figure.yMin = 0.9;
+  figure.yMax = highestReach(2.0) + 0.05;
+  return figure;
+}
+
 }  // namespace
 
-QString GrazingFamilyScene::name() const { return QStringLiteral("Grazing family GLO_lambda"); }
-QString GrazingFamilyScene::alias() const { return QStringLiteral("grazing"); }
-QString GrazingFamilyScene::title() const { return tr("Grazing family GLO(λ)"); }
-
-QString GrazingFamilyScene::description() const {
-  return tr("Starts on the grazing linear orbit GLO(λ), pushed off the grazing-start plane so "
-            "that it impacts. Drag λ, the masses or the gap and watch every plot follow.");
-}
-
-Params GrazingFamilyScene::defaults() const {
-  Params params;
-  params.lambda = 0.5;
-  params.perturbation = -0.05;
-  params.direction = PerturbDirection::V2;
-  params.horizon = 60;
-  return params;
-}
-
-QList<ParamKey> GrazingFamilyScene::parameters() const {
-  return {ParamKey::Lambda, ParamKey::M1,           ParamKey::M2,     ParamKey::Gap,
-          ParamKey::K1,     ParamKey::K2,           ParamKey::Perturbation, ParamKey::Horizon};
-}
-
-QList<PlotKind> GrazingFamilyScene::plots() const {
-  return {PlotKind::TraceU2, PlotKind::FreeFlight, PlotKind::PhaseU2V2, PlotKind::PhaseU1V1,
-          PlotKind::Poincare};
-}
-
-SceneJob GrazingFamilyScene::build(const Params& params, const DerivedModel& derived) const {
-  SceneJob job;
-  job.model = derived.model;
-  job.request.initial = perturbed(core::gloData(derived.model, derived.modes, params.lambda), params);
-  job.request.maxContacts = std::int64_t(params.horizon);
-  // dense output over the whole run for short runs, over the first 400 T2 for long ones
-  job.request.needs = needsFor(plots(), derived.modes, 400 * derived.modes.T2);
-  job.reference = core::gloData(derived.model, derived.modes, params.lambda);
-  job.referenceLabel = tr("GLO(λ) data");
-  job.ok = true;
-  return job;
+Scene::Spec grazingFamilyScene() {
+  Scene::Spec scene;
+  scene.name = QStringLiteral("Grazing family GLO_lambda");
+  scene.alias = QStringLiteral("grazing");
+  scene.title = tr("Lemma 2.1: the grazing family GLO(λ)");
+  scene.text = tr("<b>Grazing orbits.</b> Each λ mixes the fast mode (1 − λ) and the slow mode "
+                  "(λ) so that mass 2 just touches the stop. <i>Look for:</i> the red dot on "
+                  "the curve (top right) stays on the line 1 for λ in [0, 4/3]: the orbit "
+                  "touches and stays below the stop. Outside that range the linear motion "
+                  "would pass through the stop: for λ > 4/3 mass 2 starts pressed on it and "
+                  "sticks. The push δ sends the start off the orbit so that it impacts; the "
+                  "free-flight times stay at or below T₂. <i>Why:</i> every free motion repeats "
+                  "after T₂ (ω₁ = 2 ω₂).");
+  scene.defaults.lambda = 0.5;
+  scene.defaults.perturbation = -0.05;
+  scene.defaults.direction = PerturbDirection::V2;
+  scene.defaults.horizon = 60;
+  scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
+                      ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
+  scene.plots = {PlotKind::TraceU2, PlotKind::GrazingMaximum, PlotKind::PhaseU2V2,
+                 PlotKind::FreeFlight, PlotKind::Poincare};
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
+    SceneJob job;
+    job.model = derived.model;
+    const core::State start = core::gloData(derived.model, derived.modes, params.lambda);
+    job.request.initial = perturbed(start, params);
+    job.request.maxContacts = std::int64_t(params.horizon);
+    // dense output over the whole run for short runs, over the first 400 T2 for long ones
+    job.request.needs = needsFor(self.plots(), derived.modes, 400 * derived.modes.T2);
+    job.reference = start;
+    job.referenceLabel = tr("GLO(λ) data");
+    job.figures[PlotKind::GrazingMaximum] = lemmaFigure(params.lambda);
+    job.ok = true;
+    return job;
+  };
+  return scene;
 }
 
 }  // namespace grazelab::ui

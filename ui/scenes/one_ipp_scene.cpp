@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-#include "ui/scenes/one_ipp_scene.h"
-
 #include <QCoreApplication>
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/orbits.h"
+#include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {
 namespace {
@@ -57,98 +56,86 @@ void fixAxes(CurveFigure& figure, double lowFraction, double also) {
 
 }  // namespace
 
-QString OneIppScene::name() const { return QStringLiteral("1IPP orbits approaching GLO_lambda*"); }
-QString OneIppScene::alias() const { return QStringLiteral("1ipp"); }
-QString OneIppScene::title() const { return tr("Theorem 2.1: 1IPP orbits approach GLO(λ*)"); }
-
-QString OneIppScene::description() const {
-  return tr("<b>One impact per period T.</b> Slide T/T₂ up towards 1. <i>Look for:</i> the "
-            "impact data u₁ (left) run into the value of the grazing orbit GLO<sub>λ*</sub>, "
-            "and the impact speed |V| (right) falls to 0. <i>Why:</i> as T → T₂ the impact "
-            "becomes a touch; the only orbit that returns after T₂ touching the stop is the "
-            "grazing one with λ = λ*, fixed by the masses (Theorem 2.1). The red dot is the "
-            "current T; the plots below show its motion.");
-}
-
-Params OneIppScene::defaults() const {
-  Params params;
-  params.periodFraction = 0.9;
-  params.perturbation = 0;
-  params.direction = PerturbDirection::V2;
-  params.horizon = 20;
-  return params;
-}
-
-QList<ParamKey> OneIppScene::parameters() const {
+Scene::Spec onePeriodicScene() {
+  Scene::Spec scene;
+  scene.name = QStringLiteral("1IPP orbits approaching GLO_lambda*");
+  scene.alias = QStringLiteral("1ipp");
+  scene.title = tr("Theorem 2.1: 1IPP orbits approach GLO(λ*)");
+  scene.text = tr("<b>One impact per period T.</b> Slide T/T₂ up towards 1. <i>Look for:</i> the "
+                  "impact data u₁ (left) run into the value of the grazing orbit GLO(λ*), and "
+                  "the impact speed |V| (right) falls to 0. <i>Why:</i> as T → T₂ the impact "
+                  "becomes a touch; the only orbit that returns after T₂ touching the stop is "
+                  "the grazing one with λ = λ*, fixed by the masses (Theorem 2.1). The red dot "
+                  "is the current T; the plots below show its motion.");
+  scene.defaults.periodFraction = 0.9;
+  scene.defaults.perturbation = 0;
+  scene.defaults.horizon = 20;
   // k2 too: it is what the "1:2 design" box hands over to the user when unticked
-  return {ParamKey::Period, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
-          ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
-}
+  scene.parameters = {ParamKey::Period, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
+                      ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
+  scene.plots = {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::TraceU2,
+                 PlotKind::PhaseU2V2};
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
+    SceneJob job;
+    job.model = derived.model;
+    const double T2 = derived.modes.T2;
+    const double lowEnd = core::onePeriodicLowerEnd(derived.model, derived.modes);
+    const double lowFraction = lowEnd / T2;
+    // the slider starts on an admissible period of this chain (rounded up to its 3 decimals)
+    job.sliderRanges[ParamKey::Period] = {std::ceil(lowFraction * 1000 + 1e-9) / 1000, 0.999};
+    const double period = params.periodFraction * T2;
+    const core::OnePeriodicOrbit orbit = core::onePeriodicOrbit(derived.model, derived.modes, period);
+    if (!orbit.admissible) {
+      job.message = tr("No one-impact-per-period orbit for T/T₂ = %1: this chain's family spans "
+                       "T/T₂ in (%2, 1) (%3)")
+                        .arg(params.periodFraction, 0, 'g', 6)
+                        .arg(lowFraction, 0, 'f', 4)
+                        .arg(QString::fromStdString(orbit.reason));
+      return job;
+    }
+    job.request.initial = orbit.postImpact;
+    job.request.maxContacts = std::int64_t(params.horizon);
+    job.request.needs = needsFor(self.plots(), derived.modes, 400 * T2);
+    const core::State star = core::gloData(derived.model, derived.modes, derived.lambdaStar);
+    job.reference = star;
+    job.referenceLabel = tr("GLO(λ*) data");
 
-QList<PlotKind> OneIppScene::plots() const {
-  return {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::TraceU2,
-          PlotKind::PhaseU2V2};
-}
+    const Family family = sampleFamily(derived, lowEnd);
+    const QString lambdaStar = QString::number(derived.lambdaStar, 'f', 3);
+    CurveFigure data;
+    data.title = tr("Impact data u₁ of the 1IPP orbit against T/T₂");
+    data.xTitle = tr("T / T₂");
+    data.yTitle = tr("u₁ at impact");
+    data.toolTip = tr("Where mass 1 is when mass 2 hits the stop, for each period T of the "
+                      "one-impact-per-period family. As T → T₂ it tends to u₁ of the grazing "
+                      "orbit GLO(λ*) (dashed), λ* = %1 for these masses.").arg(lambdaStar);
+    data.curveName = tr("1IPP family");
+    data.curve = family.u1;
+    data.markerName = tr("T/T₂ = %1").arg(params.periodFraction, 0, 'g', 6);
+    data.markers = {QPointF(params.periodFraction, orbit.postImpact.u1)};
+    data.referenceName = tr("GLO(λ*), λ* = %1").arg(lambdaStar);
+    data.reference = {QPointF(lowFraction, star.u1), QPointF(1.0, star.u1)};
+    fixAxes(data, lowFraction, star.u1);
+    job.figures[PlotKind::OnePeriodicData] = std::move(data);
 
-SceneJob OneIppScene::build(const Params& params, const DerivedModel& derived) const {
-  SceneJob job;
-  job.model = derived.model;
-  const double T2 = derived.modes.T2;
-  const double lowEnd = core::onePeriodicLowerEnd(derived.model, derived.modes);
-  const double lowFraction = lowEnd / T2;
-  // the slider starts on an admissible period of this chain (rounded up to its 3 decimals)
-  job.sliderRanges[ParamKey::Period] = {std::ceil(lowFraction * 1000 + 1e-9) / 1000, 0.999};
-  const double period = params.periodFraction * T2;
-  const core::OnePeriodicOrbit orbit = core::onePeriodicOrbit(derived.model, derived.modes, period);
-  if (!orbit.admissible) {
-    job.message = tr("No one-impact-per-period orbit for T/T₂ = %1: this chain's family spans "
-                     "T/T₂ in (%2, 1) (%3)")
-                      .arg(params.periodFraction, 0, 'g', 6)
-                      .arg(lowFraction, 0, 'f', 4)
-                      .arg(QString::fromStdString(orbit.reason));
+    CurveFigure speed;
+    speed.title = tr("Impact speed |V| of the 1IPP orbit against T/T₂");
+    speed.xTitle = tr("T / T₂");
+    speed.yTitle = tr("|V| (speed of mass 2 at impact)");
+    speed.toolTip = tr("The speed at which mass 2 hits the stop on the one-impact-per-period "
+                       "orbit of period T. It goes to 0 as T → T₂: the impact becomes grazing.");
+    speed.curveName = tr("1IPP family");
+    speed.curve = family.speed;
+    speed.markerName = tr("|V| = %1").arg(std::abs(orbit.V), 0, 'g', 4);
+    speed.markers = {QPointF(params.periodFraction, std::abs(orbit.V))};
+    speed.referenceName = tr("T → T₂: V → 0");
+    speed.reference = {QPointF(1.0, 0.0)};
+    fixAxes(speed, lowFraction, 0.0);
+    job.figures[PlotKind::ImpactSpeed] = std::move(speed);
+    job.ok = true;
     return job;
-  }
-  job.request.initial = orbit.postImpact;
-  job.request.maxContacts = std::int64_t(params.horizon);
-  job.request.needs = needsFor(plots(), derived.modes, 400 * T2);
-  const core::State star = core::gloData(derived.model, derived.modes, derived.lambdaStar);
-  job.reference = star;
-  job.referenceLabel = tr("GLO(λ*) data");
-
-  const Family family = sampleFamily(derived, lowEnd);
-  const QString lambdaStar = QString::number(derived.lambdaStar, 'f', 3);
-  CurveFigure data;
-  data.title = tr("Impact data u₁ of the 1IPP orbit against T/T₂");
-  data.xTitle = tr("T / T₂");
-  data.yTitle = tr("u₁ at impact");
-  data.toolTip = tr("Where mass 1 is when mass 2 hits the stop, for each period T of the "
-                    "one-impact-per-period family. As T → T₂ it tends to u₁ of the grazing "
-                    "orbit GLO(λ*) (dashed), λ* = %1 for these masses.").arg(lambdaStar);
-  data.curveName = tr("1IPP family");
-  data.curve = family.u1;
-  data.markerName = tr("T/T₂ = %1").arg(params.periodFraction, 0, 'g', 6);
-  data.markers = {QPointF(params.periodFraction, orbit.postImpact.u1)};
-  data.referenceName = tr("GLO(λ*), λ* = %1").arg(lambdaStar);
-  data.reference = {QPointF(lowFraction, star.u1), QPointF(1.0, star.u1)};
-  fixAxes(data, lowFraction, star.u1);
-  job.figures[PlotKind::OnePeriodicData] = std::move(data);
-
-  CurveFigure speed;
-  speed.title = tr("Impact speed |V| of the 1IPP orbit against T/T₂");
-  speed.xTitle = tr("T / T₂");
-  speed.yTitle = tr("|V| (speed of mass 2 at impact)");
-  speed.toolTip = tr("The speed at which mass 2 hits the stop on the one-impact-per-period "
-                     "orbit of period T. It goes to 0 as T → T₂: the impact becomes grazing.");
-  speed.curveName = tr("1IPP family");
-  speed.curve = family.speed;
-  speed.markerName = tr("|V| = %1").arg(std::abs(orbit.V), 0, 'g', 4);
-  speed.markers = {QPointF(params.periodFraction, std::abs(orbit.V))};
-  speed.referenceName = tr("T → T₂: V → 0");
-  speed.reference = {QPointF(1.0, 0.0)};
-  fixAxes(speed, lowFraction, 0.0);
-  job.figures[PlotKind::ImpactSpeed] = std::move(speed);
-  job.ok = true;
-  return job;
+  };
+  return scene;
 }
 
 }  // namespace grazelab::ui

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/orbits.h"
+#include "ui/scenes/scenes.h"
+
+namespace grazelab::ui {
+namespace {
+
+QString tr(const char* text) {
+  return QCoreApplication::translate("grazelab::ui::PerturbationScene", text);
+}
+
+constexpr int kSpreadContacts = 200;  // contacts per push size in the spread curve
+
+// max over the first contacts of 1 - FFT/T2 after a push of size epsilon (its sign and
+// direction from the panel); 0 when no flight ended (no contact) or all lasted T2 exactly
+double spreadAfterPush(const DerivedModel& derived, const Params& params, double epsilon) {
+  Params pushed = params;
+  pushed.perturbation = std::copysign(epsilon, params.perturbation == 0 ? -1.0 : params.perturbation);
+  core::Request request;
+  request.initial = perturbed(core::gloData(derived.model, derived.modes, params.lambda), pushed);
+  request.maxContacts = kSpreadContacts;
+  request.needs.events = false;
+  request.needs.freeFlights = true;
+  const core::Result result = core::simulate(derived.model, request);
+  double spread = 0;
+  for (const core::FreeFlight& flight : result.freeFlights) {
+    spread = std::max(spread, flight.shortfall / derived.modes.T2);
+  }
+  return spread;
+}
+
+CurveFigure spreadFigure(const DerivedModel& derived, const Params& params) {
+  CurveFigure figure;
+  figure.title = tr("Theorem 2.2: how far FFT falls below T₂, against the push ε");
+  figure.xTitle = tr("log₁₀ ε (size of the push)");
+  figure.yTitle = tr("log₁₀ max (1 − FFT/T₂)");
+  figure.toolTip = tr("For pushes of size ε off GLO(λ) (in the panel's direction), the largest "
+                      "shortfall 1 − FFT/T₂ over the first %1 contacts. It shrinks with ε: "
+                      "near a grazing orbit every free flight lasts almost T₂ and never more "
+                      "(Theorem 2.2; GLOM₁, λ = 0, is the exception).")
+                      .arg(kSpreadContacts);
+  figure.curveName = tr("first %1 contacts").arg(kSpreadContacts);
+  for (int step = 0; step <= 24; ++step) {
+    const double exponent = -7.0 + 0.25 * step;
+    const double spread = spreadAfterPush(derived, params, std::pow(10.0, exponent));
+    if (spread > 0) figure.curve.emplace_back(exponent, std::log10(spread));
+  }
+  const double size = std::abs(params.perturbation);
+  const double current = size > 0 ? spreadAfterPush(derived, params, size) : 0;
+  if (current > 0) {
+    figure.markerName = tr("ε = %1").arg(size, 0, 'g', 3);
+    figure.markers = {QPointF(std::log10(size), std::log10(current))};
+  }
+  return figure;
+}
+
+}  // namespace
+
+Scene::Spec perturbationScene() {
+  Scene::Spec scene;
+  scene.name = QStringLiteral("Theorem 2.2: perturbations of a grazing orbit");
+  scene.alias = QStringLiteral("perturbations");
+  scene.title = tr("Theorem 2.2: perturbations of a grazing orbit");
+  scene.text = tr("<b>Pushed a little off a grazing orbit.</b> A push of size ε (perturbation "
+                  "δ) sends GLO(λ) into the stop. <i>Look for:</i> every free-flight time "
+                  "(left) stays at or just below T₂, and (top right) the largest shortfall "
+                  "1 − FFT/T₂ shrinks steadily as ε does. <i>Why:</i> the motion stays close to "
+                  "a T₂-periodic grazing orbit, and a contact cannot come later than T₂ "
+                  "(Theorem 2.2). Try λ = 0 (GLOM₁), the exception.");
+  scene.defaults.lambda = 0.5;
+  scene.defaults.perturbation = -0.001;
+  scene.defaults.direction = PerturbDirection::V2;
+  scene.defaults.horizon = 200;
+  scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
+                      ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
+  scene.plots = {PlotKind::FreeFlight, PlotKind::SpreadAgainstSize, PlotKind::TraceU2};
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
+    SceneJob job;
+    job.model = derived.model;
+    const core::State start = core::gloData(derived.model, derived.modes, params.lambda);
+    job.request.initial = perturbed(start, params);
+    job.request.maxContacts = std::int64_t(params.horizon);
+    job.request.needs = needsFor(self.plots(), derived.modes, 40 * derived.modes.T2);
+    job.reference = start;
+    job.referenceLabel = tr("GLO(λ) data");
+    job.figures[PlotKind::SpreadAgainstSize] = spreadFigure(derived, params);
+    job.ok = true;
+    return job;
+  };
+  return scene;
+}
+
+}  // namespace grazelab::ui

@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+// One function per scene, each in its own file; makeScenes() lists them in the order of the note.
+#include "ui/scene.h"
+
+namespace grazelab::ui {
+
+Scene::Spec grazingFamilyScene();   // Lemma 2.1
+Scene::Spec onePeriodicScene();     // Theorem 2.1
+Scene::Spec perturbationScene();    // Theorem 2.2
+Scene::Spec randomStartsScene();    // Theorem 2.3
+Scene::Spec stickingScene();        // lambda > 4/3
+Scene::Spec detunedScene();         // off 1:2
+Scene::Spec nearGrazingScene();     // Poincaré section
+Scene::Spec accuracyScene();        // methods against the exact solver
+
+/// The free-flight times of a run, FFT / T2 against contact index (the theorems' quantity).
+std::vector<QPointF> flightsOverT2(const core::Result& result, double T2);
+
+}  // namespace grazelab::ui
