@@ -17,7 +17,8 @@ QStringList sceneNames() {
 }
 
 bool renderSceneSnapshot(const QString& sceneName, const QString& sessionPath,
-                         const QString& outputPath, QSize size, QString* error) {
+                         const QString& outputPath, QSize size, QString* error,
+                         bool presentation) {
   MainWindow window({.synchronous = true, .useSettings = false});
   Session session = window.session();
   if (!sessionPath.isEmpty()) {
@@ -45,6 +46,9 @@ bool renderSceneSnapshot(const QString& sceneName, const QString& sessionPath,
 
   // lay the window out at its final size without mapping it, then let the plots re-decimate
   window.setAttribute(Qt::WA_DontShowOnScreen);
+  // the picture stands for a projected screen of its own height; the look first, then the
+  // size (larger text on the old size would widen the window past the size asked)
+  if (presentation) window.setPresentation(true, size.height(), false);
   window.resize(size);
   window.show();
   QCoreApplication::processEvents();

@@ -16,6 +16,7 @@ QStringList sceneNames();
 /// `sceneName` may be empty when a session file names the scene; when both are given the
 /// session's parameters are used with the named scene. Returns false and a reason on failure.
 bool renderSceneSnapshot(const QString& sceneName, const QString& sessionPath,
-                         const QString& outputPath, QSize size, QString* error);
+                         const QString& outputPath, QSize size, QString* error,
+                         bool presentation = false);
 
 }  // namespace grazelab::ui

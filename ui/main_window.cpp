@@ -3,6 +3,7 @@
 #include "ui/main_window.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QActionGroup>
 #include <QGuiApplication>
 #include <QCloseEvent>
@@ -76,6 +77,7 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   scroll->setWidgetResizable(true);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   scroll->setMinimumWidth(390);
+  m_side = scroll;
 
   m_plotArea = new QWidget;
   m_plotGrid = new QGridLayout(m_plotArea);
@@ -92,6 +94,9 @@ MainWindow::MainWindow(Options options, QWidget* parent)
 
   m_status = new QLabel;
   m_status->setObjectName(QStringLiteral("statusText"));
+  // a long status line is cut at the window's edge (the tooltip explains it), never widens the
+  // window past the screen (in presentation mode its text is twice as large)
+  m_status->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   m_status->setToolTip(tr("Work done and its accuracy: contacts computed, compute time, the "
                           "largest relative energy drift at contacts and the largest |u₂ − d| "
                           "at the contact times found (both should be near round-off), and "
@@ -169,7 +174,30 @@ void MainWindow::buildMenus() {
   add(view, tr("&Reset view"), {QKeySequence(Qt::Key_R), QKeySequence(tr("Ctrl+0"))},
       tr("Undo zoom and pan in every plot"), &MainWindow::resetViews);
   add(view, tr("&Cancel computation"), {QKeySequence(Qt::Key_Escape)},
-      tr("Stop the running computation"), [this] { m_controller->cancel(); });
+      tr("Stop the running computation (and put an enlarged plot back)"), [this] {
+        m_controller->cancel();
+        if (m_enlarged) toggleEnlarged(m_enlarged);
+      });
+  view->addSeparator();
+  m_presentationAction = add(
+      view, tr("&Presentation mode"), {QKeySequence(Qt::Key_F5), QKeySequence(Qt::Key_F11)},
+      tr("Full screen for a projector: large text, thick lines, white page. PageDown and PageUp "
+         "step through the scenes; double-click a plot to enlarge it."),
+      [this](bool on) {
+        const QScreen* screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
+        setPresentation(on, screen ? screen->geometry().height() : height(), true);
+      });
+  m_presentationAction->setCheckable(true);
+  m_panelAction = add(view, tr("Show the &parameters"), {QKeySequence(Qt::Key_F9)},
+                      tr("Show or hide the parameter panel (more room for the plots)"),
+                      &MainWindow::setPanelVisible);
+  m_panelAction->setCheckable(true);
+  m_panelAction->setChecked(true);
+  add(view, tr("&Next scene"), {QKeySequence(Qt::Key_PageDown)},
+      tr("The next scene in the order of the note (a presenter's clicker sends this key)"),
+      [this] { stepScene(+1); });
+  add(view, tr("P&revious scene"), {QKeySequence(Qt::Key_PageUp)},
+      tr("The previous scene in the order of the note"), [this] { stepScene(-1); });
 
   QMenu* scenes = menuBar()->addMenu(tr("S&cenes"));
   m_sceneActions = new QActionGroup(this);
@@ -221,8 +249,28 @@ void MainWindow::buildPlots() {
       }
     }
   }
+  for (PlotView* plot : m_plots) {
+    connect(plot, &PlotView::enlargeRequested, this, [this](PlotView* view) { toggleEnlarged(view); });
+    if (m_presentation) plot->setPresentation(true, m_presentationText);
+  }
+  m_views = views;
+  m_enlarged = nullptr;
+  layoutViews();
+  m_currentPlot = m_plots.isEmpty() ? nullptr : m_plots.first();
+}
+
+void MainWindow::layoutViews() {
+  const QList<QWidget*>& views = m_views;
+  for (QWidget* view : views) m_plotGrid->removeWidget(view);
   for (int row = 0; row < 2; ++row) m_plotGrid->setRowStretch(row, 1);
   for (int column = 0; column < 3; ++column) m_plotGrid->setColumnStretch(column, 1);
+  if (m_enlarged) {
+    // one view over the whole area; the others wait hidden
+    for (QWidget* view : views) view->setVisible(view == m_enlarged);
+    m_plotGrid->addWidget(m_enlarged, 0, 0, 2, 3);
+    return;
+  }
+  for (QWidget* view : views) view->setVisible(true);
   if (views.size() == 5) {
     // the time trace is wide; the three portraits of state space sit side by side
     m_plotGrid->addWidget(views[0], 0, 0, 1, 2);
@@ -249,7 +297,57 @@ void MainWindow::buildPlots() {
       m_plotGrid->addWidget(views[index], index / 3, index % 3);
     }
   }
-  m_currentPlot = m_plots.isEmpty() ? nullptr : m_plots.first();
+}
+
+void MainWindow::toggleEnlarged(QWidget* view) {
+  m_enlarged = m_enlarged == view ? nullptr : view;
+  layoutViews();
+}
+
+void MainWindow::stepScene(int step) {
+  const int count = int(m_scenes.size());
+  selectScene(((m_sceneIndex + step) % count + count) % count);
+}
+
+void MainWindow::setPanelVisible(bool visible) {
+  m_side->setVisible(visible);
+  if (m_panelAction) m_panelAction->setChecked(visible);
+}
+
+void MainWindow::setPresentation(bool on, int screenHeight, bool fullScreen) {
+  if (on && !m_presentation) {
+    m_deskFont = QApplication::font();
+    m_deskPalette = QApplication::palette();
+  }
+  m_presentation = on;
+  m_presentationText = std::max(12, (screenHeight + 49) / 50);  // at least 1/50 of the height
+  if (m_presentationAction) m_presentationAction->setChecked(on);
+  if (on) {
+    QFont font = m_deskFont;
+    font.setPixelSize(m_presentationText);
+    QApplication::setFont(font);
+    // a white page with black text: the projector profile
+    QPalette palette = m_deskPalette;
+    palette.setColor(QPalette::Window, Qt::white);
+    palette.setColor(QPalette::Base, Qt::white);
+    palette.setColor(QPalette::WindowText, Qt::black);
+    palette.setColor(QPalette::Text, Qt::black);
+    QApplication::setPalette(palette);
+  } else if (m_deskFont != QFont()) {
+    QApplication::setFont(m_deskFont);
+    QApplication::setPalette(m_deskPalette);
+  }
+  for (PlotView* plot : m_plots) plot->setPresentation(on, m_presentationText);
+  if (m_accuracy) m_accuracy->setPresentation(on, m_presentationText);
+  // the larger text needs a wider panel
+  if (auto* splitter = qobject_cast<QSplitter*>(centralWidget())) {
+    const int side = on ? std::max(390, width() * 3 / 10) : 400;
+    splitter->setSizes({side, std::max(1, width() - side)});
+  }
+  if (fullScreen) {
+    if (on) showFullScreen();
+    else showNormal();
+  }
 }
 
 void MainWindow::selectScene(int index) {

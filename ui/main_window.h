@@ -4,7 +4,9 @@
 
 #include <QElapsedTimer>
 #include <QList>
+#include <QFont>
 #include <QMainWindow>
+#include <QPalette>
 #include <QTimer>
 
 #include <memory>
@@ -16,6 +18,7 @@
 #include "ui/session.h"
 #include "ui/sim_types.h"
 
+class QAction;
 class QActionGroup;
 class QGridLayout;
 class QLabel;
@@ -82,6 +85,19 @@ class MainWindow : public QMainWindow {
   void resetViews();
   void recompute();
 
+  /// Presentation mode: text at 1/50 of `screenHeight` pixels, lines of 3 px and more, a white
+  /// page; full screen when `fullScreen` (not for headless snapshots). Off: the desk look.
+  void setPresentation(bool on, int screenHeight, bool fullScreen);
+  bool presentation() const { return m_presentation; }
+  /// Steps through the scenes in the order of the note (PageDown +1, PageUp -1), wrapping.
+  void stepScene(int step);
+  /// Shows this view alone over the whole plot area, or puts the views back when it is shown
+  /// alone already (double-click).
+  void toggleEnlarged(QWidget* view);
+  QWidget* enlargedView() const { return m_enlarged; }
+  /// Shows or hides the parameter panel (F9).
+  void setPanelVisible(bool visible);
+
  signals:
   /// The plots now show an update of request `id` (final or partial).
   void plotsUpdated(quint64 id, bool final);
@@ -94,6 +110,7 @@ class MainWindow : public QMainWindow {
   /// Shows scene `index` with the parameters stored for it.
   void showScene(int index);
   void buildPlots();
+  void layoutViews();
   void onParamsChanged(const Params& params);
   void onUpdate(const SimUpdate& update);
   void applyPending();
@@ -126,6 +143,15 @@ class MainWindow : public QMainWindow {
   QList<PlotView*> m_plots;
   PlotView* m_currentPlot = nullptr;
   AccuracyView* m_accuracy = nullptr;  ///< the work-precision view, when the scene shows it
+  QWidget* m_side = nullptr;           ///< the parameter panel's scroll area
+  QWidget* m_enlarged = nullptr;       ///< the view shown alone, if any
+  QList<QWidget*> m_views;             ///< every view of the scene, in its order
+  bool m_presentation = false;
+  int m_presentationText = 0;          ///< text size in presentation mode [px]
+  QFont m_deskFont;
+  QPalette m_deskPalette;
+  QAction* m_presentationAction = nullptr;
+  QAction* m_panelAction = nullptr;
   SimController* m_controller = nullptr;
   QActionGroup* m_sceneActions = nullptr;
   QLabel* m_status = nullptr;

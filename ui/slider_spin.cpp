@@ -37,7 +37,9 @@ void MarkedSlider::paintEvent(QPaintEvent* event) {
   QPainter painter(this);
   painter.setPen(palette().color(QPalette::WindowText));
   QFont font = painter.font();
-  font.setPointSizeF(font.pointSizeF() * 0.8);
+  // smaller than the labels; the font may be set in pixels (presentation mode) or in points
+  if (font.pixelSize() > 0) font.setPixelSize(std::max(8, int(font.pixelSize() * 0.8)));
+  else font.setPointSizeF(font.pointSizeF() * 0.8);
   painter.setFont(font);
   const int span = groove.width() - handle.width();
   const int top = height() - painter.fontMetrics().height() - 4;

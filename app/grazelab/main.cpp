@@ -3,6 +3,7 @@
 // The explorer: argument parsing and wiring only (ui/ does the work).
 #include <QApplication>
 #include <QMessageBox>
+#include <QScreen>
 #include <QCommandLineParser>
 #include <QTextStream>
 
@@ -85,7 +86,11 @@ int main(int argc, char* argv[]) {
                                 QStringLiteral("WxH"), QStringLiteral("1600x1000"));
   const QCommandLineOption bench(QStringLiteral("bench"),
                                  QApplication::translate("main", "Measure plot latency and drag frame rate."));
-  parser.addOptions({listScenes, scene, session, snapshot, size, bench});
+  const QCommandLineOption presentation(
+      QStringLiteral("presentation"),
+      QApplication::translate("main", "Open in presentation mode (full screen, large text; F5 "
+                                      "toggles it); with --snapshot, render that look."));
+  parser.addOptions({listScenes, scene, session, snapshot, size, bench, presentation});
   parser.process(app);
 
   QTextStream out(stdout);
@@ -108,7 +113,8 @@ int main(int argc, char* argv[]) {
     }
     QString error;
     if (!grazelab::ui::renderSceneSnapshot(parser.value(scene), parser.value(session),
-                                           parser.value(snapshot), pixels, &error)) {
+                                           parser.value(snapshot), pixels, &error,
+                                           parser.isSet(presentation))) {
       err << "grazelab: " << error << '\n';
       return 1;
     }
@@ -134,6 +140,10 @@ int main(int argc, char* argv[]) {
   }
   for (const QString& problem : problems) err << "grazelab: " << problem << Qt::endl;
   window.show();
+  if (parser.isSet(presentation)) {
+    const QScreen* screen = window.screen();
+    window.setPresentation(true, screen ? screen->geometry().height() : 1080, true);
+  }
   if (!problems.isEmpty()) {
     QMessageBox::warning(&window, QApplication::translate("main", "GrazeLab"),
                          problems.join(QStringLiteral("\n\n")));

@@ -3,6 +3,7 @@
 // What a first trial of the explorer in front of a class tripped over (issue 9, "Fix first"):
 // each problem found there has a test here that fails if it comes back.
 #include <QAction>
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -11,6 +12,7 @@
 #include <QLegendMarker>
 #include <QMenuBar>
 #include <QProcess>
+#include <QScatterSeries>
 #include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
@@ -310,6 +312,48 @@ class ClassroomTest : public QObject {
     process.kill();
     process.waitForFinished(5000);
     QVERIFY2(err.contains("bad.json"), err.constData());
+  }
+
+  // presentation mode: text of at least 1/50 of the screen height, lines of 3 px or more, the
+  // scenes in the order of the note on PageDown / PageUp, a plot enlarged by a double-click
+  void presentationModeIsReadableAndSteppable() {
+    m_window->setPresentation(true, 1080, false);
+    QVERIFY(QApplication::font().pixelSize() >= 1080 / 50);
+    for (const PlotView* plot : m_window->plots()) {
+      QVERIFY(plot->chart()->legend()->font().pixelSize() >= 1080 / 50);
+      QVERIFY(axis(*plot, Qt::Horizontal)->labelsFont().pixelSize() >= 1080 / 50);
+      for (const PlotView::Entry& entry : plot->entries()) {
+        if (!qobject_cast<QScatterSeries*>(entry.series)) QVERIFY(entry.series->pen().widthF() >= 3.0);
+      }
+    }
+    // a scene opened in presentation mode gets the look too
+    QTest::keyClick(m_window.get(), Qt::Key_PageDown);
+    QCOMPARE(m_window->sceneIndex(), 1);
+    QVERIFY(waitForLatestFinal(*m_window));
+    for (const PlotView* plot : m_window->plots()) {
+      QVERIFY(plot->chart()->legend()->font().pixelSize() >= 1080 / 50);
+    }
+    QTest::keyClick(m_window.get(), Qt::Key_PageUp);
+    QTest::keyClick(m_window.get(), Qt::Key_PageUp);
+    QCOMPARE(m_window->sceneIndex(), int(m_window->scenes().size()) - 1);  // wraps
+    QTest::keyClick(m_window.get(), Qt::Key_PageDown);
+    QCOMPARE(m_window->sceneIndex(), 0);
+    QVERIFY(waitForLatestFinal(*m_window));
+    // double-click: that plot alone; again: all back
+    PlotView* plot = m_window->plots().last();
+    QTest::mouseDClick(plot->viewport(), Qt::LeftButton, {}, plot->viewport()->rect().center());
+    QCOMPARE(m_window->enlargedView(), plot);
+    for (const PlotView* other : m_window->plots()) QCOMPARE(other->isVisibleTo(m_window.get()), other == plot);
+    QTest::mouseDClick(plot->viewport(), Qt::LeftButton, {}, plot->viewport()->rect().center());
+    QVERIFY(!m_window->enlargedView());
+    for (const PlotView* other : m_window->plots()) QVERIFY(other->isVisibleTo(m_window.get()));
+    // the panel hides and comes back (F9)
+    QTest::keyClick(m_window.get(), Qt::Key_F9);
+    QVERIFY(!m_window->parameterPanel()->isVisibleTo(m_window.get()));
+    QTest::keyClick(m_window.get(), Qt::Key_F9);
+    QVERIFY(m_window->parameterPanel()->isVisibleTo(m_window.get()));
+    m_window->setPresentation(false, 1080, false);
+    QVERIFY(QApplication::font().pixelSize() < 1080 / 50);
   }
 
  private:

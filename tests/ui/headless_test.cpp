@@ -58,14 +58,24 @@ class HeadlessTest : public QObject {
     QVERIFY(scenes.contains(QStringLiteral("Detuned contrast: off 1:2 resonance")));
   }
 
+  void rendersEveryScene_data() {
+    QTest::addColumn<bool>("presentation");
+    QTest::newRow("desk") << false;
+    QTest::newRow("presentation") << true;
+  }
+
   void rendersEveryScene() {
+    QFETCH(bool, presentation);
     QTemporaryDir dir;
     int index = 0;
     for (const QString& scene : listScenes()) {
       const QString path = dir.filePath(QStringLiteral("scene%1.png").arg(index++));
-      const Run run = runApp({QStringLiteral("--scene"), scene, QStringLiteral("--snapshot"), path,
-                              QStringLiteral("--size"), QStringLiteral("1200x800")});
+      QStringList arguments{QStringLiteral("--scene"), scene, QStringLiteral("--snapshot"), path,
+                            QStringLiteral("--size"), QStringLiteral("1200x800")};
+      if (presentation) arguments << QStringLiteral("--presentation");
+      const Run run = runApp(arguments);
       QVERIFY2(run.exitCode == 0, run.err.constData());
+      QVERIFY2(!run.err.contains("QFont"), run.err.constData());
       const QImage image(path);
       QCOMPARE(image.size(), QSize(2400, 1600));
       QVERIFY(QFileInfo::exists(sessionPathFor(path)));

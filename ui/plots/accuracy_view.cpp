@@ -55,9 +55,11 @@ AccuracyView::AccuracyView(QWidget* parent) : QWidget(parent) {
   m_overlay->setToolTip(tr("Draw this method's u₂(t) and its contacts over the exact ones: "
                            "watch a time stepper miss a graze or invent an impact."));
   m_overlay->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  m_overlay->setMinimumContentsLength(24);
+  m_overlay->setMinimumContentsLength(16);
   label->setBuddy(m_overlay);
   m_summary = new QLabel(this);
+  // the summary takes what room is left (in presentation mode its text would widen the window)
+  m_summary->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   row->addWidget(label);
   row->addWidget(m_overlay, 1);
   row->addWidget(m_summary);
@@ -75,6 +77,10 @@ void AccuracyView::chooseOverlay(int index) {
   m_overlay->setCurrentIndex(index);
   m_chosenLabel = m_overlay->currentText().section(':', 0, 0);
   emitOverlay();
+}
+
+void AccuracyView::setPresentation(bool on, int textPixels) {
+  m_chart->setPresentation(on, textPixels);
 }
 
 void AccuracyView::show(const SimUpdate& update) {

@@ -26,6 +26,8 @@ class AccuracyView : public QWidget {
 
   /// Shows the sweep of an update (nothing when it has none).
   void show(const SimUpdate& update);
+  /// Presentation mode for its chart (ui/plots/log_log_chart.h).
+  void setPresentation(bool on, int textPixels);
   LogLogChart* chart() const { return m_chart; }
   /// The runs offered for the overlay, in the picker's order.
   int overlayCount() const;

@@ -3,6 +3,7 @@
 #include "ui/plots/log_log_chart.h"
 
 #include <QLineSeries>
+#include <QLegend>
 #include <QLogValueAxis>
 
 #include <algorithm>
@@ -77,12 +78,32 @@ void LogLogChart::clear() {
   m_series.clear();
 }
 
+void LogLogChart::setPresentation(bool on, int textPixels) {
+  if (!m_deskFont) m_deskFont = chart()->legend()->font();
+  QFont font = *m_deskFont;
+  if (on) font.setPixelSize(textPixels);
+  QFont title = font;
+  title.setBold(true);
+  chart()->setTitleFont(title);
+  chart()->legend()->setFont(font);
+  for (QAbstractAxis* axis : {static_cast<QAbstractAxis*>(m_axisX), static_cast<QAbstractAxis*>(m_axisY)}) {
+    axis->setLabelsFont(font);
+    axis->setTitleFont(title);
+  }
+  m_presentation = on;
+  for (QLineSeries* series : m_series) {
+    QPen pen = series->pen();
+    pen.setWidthF(lineWidth());
+    series->setPen(pen);
+  }
+}
+
 int LogLogChart::addCurve(const QString& name) {
   const int index = int(m_series.size());
   auto* series = new QLineSeries;
   series->setName(name);
   QPen pen(curveColor(index));
-  pen.setWidthF(2.0);
+  pen.setWidthF(lineWidth());
   pen.setStyle(curveDash(index));
   series->setPen(pen);
   series->setPointsVisible(true);

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <QChartView>
+#include <QFont>
 #include <QPointF>
 #include <QString>
 
+#include <optional>
 #include <vector>
 
 class QLineSeries;
@@ -42,9 +44,15 @@ class LogLogChart : public QChartView {
   /// Removes every curve.
   void clear();
 
+ /// Presentation mode: text of `textPixels`, lines of 3.5 px (off: the desk look).
+  void setPresentation(bool on, int textPixels);
+
  private:
   void fitAxes();
+  double lineWidth() const { return m_presentation ? 3.5 : 2.0; }
 
+  bool m_presentation = false;
+  std::optional<QFont> m_deskFont;
   QLogValueAxis* m_axisX = nullptr;
   QLogValueAxis* m_axisY = nullptr;
   std::vector<QLineSeries*> m_series;

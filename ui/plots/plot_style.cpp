@@ -6,6 +6,7 @@
 #include <QLineSeries>
 #include <QPainter>
 #include <QScatterSeries>
+#include <QVariant>
 
 #include <algorithm>
 #include <cmath>
@@ -46,13 +47,18 @@ void useLightMarker(QScatterSeries* series, const QPen& outline) {
   painter.setBrush(series->color());
   const double inset = pen.style() == Qt::NoPen ? 0.0 : 0.5 * pen.widthF();
   const QRectF box(inset, inset, pixels - 2 * inset, pixels - 2 * inset);
-  if (series->markerShape() == QScatterSeries::MarkerShapeRectangle) {
-    painter.drawRect(box);
-  } else {
-    painter.drawEllipse(box);
+  switch (series->markerShape()) {
+    case QScatterSeries::MarkerShapeRectangle: painter.drawRect(box); break;
+    case QScatterSeries::MarkerShapeTriangle:
+      painter.drawPolygon(QPolygonF({QPointF(box.center().x(), box.top()), box.bottomRight(),
+                                     box.bottomLeft()}));
+      break;
+    default: painter.drawEllipse(box); break;
   }
   painter.end();
   series->setLightMarker(image);
+  // kept so that a change of size (presentation mode) can draw the marker again
+  series->setProperty("grazelabOutline", QVariant::fromValue(outline));
 }
 
 }  // namespace grazelab::ui

@@ -4,6 +4,7 @@
 
 #include <QChart>
 #include <QKeyEvent>
+#include <QLegend>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QScatterSeries>
@@ -16,6 +17,7 @@
 #include <limits>
 
 #include "ui/decimate.h"
+#include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {
 namespace {
@@ -116,8 +118,50 @@ int PlotView::addEntry(QXYSeries* series, Decimation decimation, bool inBounds) 
   chart()->addSeries(series);
   series->attachAxis(m_axisX);
   series->attachAxis(m_axisY);
-  m_entries.push_back({series, {}, decimation, inBounds});
+  const auto* scatter = qobject_cast<QScatterSeries*>(series);
+  const double base = scatter ? scatter->markerSize() : series->pen().widthF();
+  m_entries.push_back({series, {}, decimation, inBounds, base});
+  if (m_presentation) {
+    m_presentation = false;  // applies the look to the new series too
+    setPresentation(true, chart()->legend()->font().pixelSize());
+  }
   return int(m_entries.size()) - 1;
+}
+
+void PlotView::setPresentation(bool on, int textPixels) {
+  QChart* chart = this->chart();
+  if (!m_deskFonts) {
+    m_deskFonts = Fonts{chart->titleFont(), m_axisX->labelsFont(), m_axisX->titleFont(),
+                        chart->legend()->font()};
+  }
+  auto sized = [&](QFont font, double factor) {
+    font.setPixelSize(std::max(1, int(std::lround(textPixels * factor))));
+    return font;
+  };
+  const Fonts fonts = on ? Fonts{sized(m_deskFonts->title, 1.15), sized(m_deskFonts->labels, 1.0),
+                                 sized(m_deskFonts->axisTitles, 1.0), sized(m_deskFonts->legend, 1.0)}
+                         : *m_deskFonts;
+  chart->setTitleFont(fonts.title);
+  chart->legend()->setFont(fonts.legend);
+  for (QValueAxis* axis : {m_axisX, m_axisY}) {
+    axis->setLabelsFont(fonts.labels);
+    axis->setTitleFont(fonts.axisTitles);
+  }
+  // a white page with no rounded, shaded card: what a projector shows best
+  chart->setBackgroundRoundness(on ? 0 : 4);
+  chart->setDropShadowEnabled(!on);
+  for (Entry& entry : m_entries) {
+    if (auto* scatter = qobject_cast<QScatterSeries*>(entry.series)) {
+      scatter->setMarkerSize(on ? std::max(8.0, 1.5 * entry.baseWidth) : entry.baseWidth);
+      useLightMarker(scatter, scatter->property("grazelabOutline").value<QPen>());
+    } else {
+      QPen pen = entry.series->pen();
+      pen.setWidthF(on ? std::max(3.0, 2.0 * entry.baseWidth) : entry.baseWidth);
+      entry.series->setPen(pen);
+    }
+  }
+  m_presentation = on;
+  scheduleRefresh();
 }
 
 void PlotView::setData(int index, std::vector<QPointF> data) {
@@ -366,6 +410,11 @@ void PlotView::resizeEvent(QResizeEvent* event) {
   QChartView::resizeEvent(event);
   if (m_staleNote) m_staleNote->move(width() - m_staleNote->width() - 8, 4);
   scheduleRefresh();
+}
+
+void PlotView::mouseDoubleClickEvent(QMouseEvent* event) {
+  emit enlargeRequested(this);
+  event->accept();
 }
 
 void PlotView::focusInEvent(QFocusEvent* event) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QChartView>
+#include <QFont>
 #include <QPointF>
 #include <QRectF>
 #include <QString>
@@ -36,6 +37,7 @@ class PlotView : public QChartView {
     std::vector<QPointF> data;
     Decimation decimation = Decimation::None;
     bool inBounds = true;  ///< counts for the automatic axis ranges
+    double baseWidth = 0;   ///< the desk look: line width or marker size
   };
 
   PlotView(const QString& title, const QString& xTitle, const QString& yTitle,
@@ -58,12 +60,18 @@ class PlotView : public QChartView {
   /// Applies pending data now instead of at the next turn of the event loop.
   void refreshNow();
 
+  /// Presentation mode: text of `textPixels` (titles a little larger), lines at least 3 px,
+  /// markers half again as large; off restores the desk look.
+  void setPresentation(bool on, int textPixels);
+
   /// Marks the plot as showing the last valid result, not the panel's parameters (greyed
   /// plot area and a note in its corner), or clears the mark.
   void setStale(bool stale);
   bool isStale() const { return m_stale; }
 
  signals:
+  /// The user double-clicked the plot: enlarge it (or put it back).
+  void enlargeRequested(grazelab::ui::PlotView* plot);
   /// The user clicked or focused this plot (it becomes the "current plot").
   void activated(grazelab::ui::PlotView* plot);
   /// The series were replaced with new decimated data.
@@ -91,6 +99,7 @@ class PlotView : public QChartView {
   void keyPressEvent(QKeyEvent* event) override;
   void resizeEvent(QResizeEvent* event) override;
   void focusInEvent(QFocusEvent* event) override;
+  void mouseDoubleClickEvent(QMouseEvent* event) override;
 
   QValueAxis* m_axisX = nullptr;
   QValueAxis* m_axisY = nullptr;
@@ -105,6 +114,11 @@ class PlotView : public QChartView {
   std::vector<int> m_joinedScatters;
   std::optional<QRectF> m_fixedRange;
   bool m_stale = false;
+  bool m_presentation = false;
+  struct Fonts {
+    QFont title, labels, axisTitles, legend;
+  };
+  std::optional<Fonts> m_deskFonts;  ///< the fonts before presentation mode
   QLabel* m_staleNote = nullptr;
   QTimer m_refreshTimer;
   bool m_followData = true;

@@ -12,21 +12,13 @@
 #include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {
-namespace {
-
-// a viridis-like ramp, darkened at the yellow end so it stays visible on white
-const QColor kBinColors[] = {QColor(0x44, 0x01, 0x54), QColor(0x3b, 0x52, 0x8b),
-                             QColor(0x21, 0x91, 0x8c), QColor(0x3a, 0xa8, 0x4a),
-                             QColor(0xd0, 0xa0, 0x00)};
-
-}  // namespace
 
 PoincarePlot::PoincarePlot(QWidget* parent)
     : PlotView(tr("Poincaré points on H (u₂ = d)"),
                tr("u₁ at contact"), tr("v₁ at contact"), parent) {
   for (int bin = 0; bin < kBins; ++bin) {
     // squares: Qt Charts draws them far faster than circles, which matters for 10^5 points
-    auto* series = makeScatter(QString(), kBinColors[bin], 4);
+    auto* series = makeScatter(QString(), kViridis[bin], 4);
     series->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
     useLightMarker(series);
     m_bins[bin] = addEntry(series, Decimation::Scatter);

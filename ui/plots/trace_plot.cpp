@@ -17,10 +17,12 @@ TracePlot::TracePlot(QWidget* parent)
   m_trace = addEntry(makeLine(tr("u₂(t)"), colors::kTrace, 1.0), Decimation::Trace);
   m_stop = addEntry(makeLine(tr("stop u₂ = d"), colors::kStop, 1.5, Qt::DashLine), Decimation::None);
   m_impacts = addEntry(makeScatter(tr("impacts"), colors::kImpact, 6), Decimation::Scatter, false);
-  m_grazings = addEntry(makeScatter(tr("grazings / sticks"), colors::kGrazing, 7),
-                        Decimation::Scatter, false);
+  auto* touches = makeScatter(tr("grazings / sticks"), colors::kGrazing, 8);
+  touches->setMarkerShape(QScatterSeries::MarkerShapeTriangle);
+  useLightMarker(touches);
+  m_grazings = addEntry(touches, Decimation::Scatter, false);
   setToolTip(tr("Displacement u₂ of mass 2 against time. The dashed line is the stop u₂ = d; "
-                "dots mark the contacts (impacts red, grazing touches and sticks orange).\n"
+                "dots mark the contacts (impacts: vermillion circles; grazing touches and sticks: orange triangles).\n"
                 "Drag to zoom, Shift+drag or middle button to pan, wheel to zoom, R to reset."));
 }
 
