@@ -25,6 +25,7 @@ enum class PlotKind {
   FlightHistogram,  ///< Theorem 2.3: histogram of FFT/T2 over random starts, bound at 1
   DetunedFlights,   ///< detuned contrast: the detuned chain's FFT/T2 against contact index
   ResonantFlights,  ///< detuned contrast: the resonant chain's FFT/T2 against contact index
+  Chain,            ///< the chain moving (ChainView), the time cursor of the other views
 };
 
 /// A curve a scene computes itself (no run needed), drawn by a CurvePlot: the curve, the

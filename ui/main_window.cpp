@@ -29,6 +29,7 @@
 #include "ui/derived.h"
 #include "ui/parameter_panel.h"
 #include "ui/plots/accuracy_view.h"
+#include "ui/plots/chain_view.h"
 #include "ui/plots/make_plot.h"
 #include "ui/plots/plot_view.h"
 #include "ui/plots/trace_plot.h"
@@ -220,6 +221,7 @@ void MainWindow::buildPlots() {
   QList<QWidget*> old;
   for (PlotView* plot : m_plots) old.append(plot);
   if (m_accuracy) old.append(m_accuracy);
+  if (m_chain) old.append(m_chain);
   for (QWidget* view : old) {
     m_plotGrid->removeWidget(view);
     view->hide();
@@ -228,12 +230,18 @@ void MainWindow::buildPlots() {
   }
   m_plots.clear();
   m_accuracy = nullptr;
+  m_chain = nullptr;
   m_currentPlot = nullptr;
   QList<QWidget*> views;
   for (PlotKind kind : scene().plots()) {
     if (kind == PlotKind::WorkPrecision) {
       m_accuracy = new AccuracyView(m_plotArea);
       views.append(m_accuracy);
+      continue;
+    }
+    if (kind == PlotKind::Chain) {
+      m_chain = new ChainView(m_plotArea);
+      views.append(m_chain);
       continue;
     }
     PlotView* plot = makePlot(kind, m_plotArea);
@@ -253,6 +261,12 @@ void MainWindow::buildPlots() {
     connect(plot, &PlotView::enlargeRequested, this, [this](PlotView* view) { toggleEnlarged(view); });
     if (m_presentation) plot->setPresentation(true, m_presentationText);
   }
+  if (m_chain) {
+    // the animation's time is the cursor of every time-based plot
+    for (PlotView* plot : m_plots) connect(m_chain, &ChainView::timeChanged, plot, &PlotView::setTimeCursor);
+    if (m_presentation) m_chain->setPresentation(true, m_presentationText);
+  }
+  if (m_accuracy && m_presentation) m_accuracy->setPresentation(true, m_presentationText);
   m_views = views;
   m_enlarged = nullptr;
   layoutViews();
@@ -271,7 +285,9 @@ void MainWindow::layoutViews() {
     return;
   }
   for (QWidget* view : views) view->setVisible(true);
-  if (views.size() == 5) {
+  if (views.size() == 6) {
+    for (int index = 0; index < 6; ++index) m_plotGrid->addWidget(views[index], index / 3, index % 3);
+  } else if (views.size() == 5) {
     // the time trace is wide; the three portraits of state space sit side by side
     m_plotGrid->addWidget(views[0], 0, 0, 1, 2);
     m_plotGrid->addWidget(views[1], 0, 2);
@@ -339,6 +355,7 @@ void MainWindow::setPresentation(bool on, int screenHeight, bool fullScreen) {
   }
   for (PlotView* plot : m_plots) plot->setPresentation(on, m_presentationText);
   if (m_accuracy) m_accuracy->setPresentation(on, m_presentationText);
+  if (m_chain) m_chain->setPresentation(on, m_presentationText);
   // the larger text needs a wider panel
   if (auto* splitter = qobject_cast<QSplitter*>(centralWidget())) {
     const int side = on ? std::max(390, width() * 3 / 10) : 400;
@@ -487,6 +504,7 @@ void MainWindow::applyPending() {
     plot->setStale(stale);
     plot->refreshNow();
   }
+  if (m_chain) m_chain->show(*m_displayed);
   if (m_accuracy) {
     m_accuracy->show(*m_displayed);
     for (PlotView* plot : m_plots) plot->refreshNow();  // the overlay it may have changed

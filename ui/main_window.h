@@ -30,6 +30,7 @@ namespace grazelab::ui {
 class ParameterPanel;
 class PlotView;
 class AccuracyView;
+class ChainView;
 class ReadoutPanel;
 class SimController;
 
@@ -67,6 +68,7 @@ class MainWindow : public QMainWindow {
   const QList<PlotView*>& plots() const { return m_plots; }
   PlotView* currentPlot() const { return m_currentPlot; }
   AccuracyView* accuracyView() const { return m_accuracy; }
+  ChainView* chainView() const { return m_chain; }
   ParameterPanel* parameterPanel() const { return m_panel; }
   ReadoutPanel* readoutPanel() const { return m_readout; }
   SimController* controller() const { return m_controller; }
@@ -143,6 +145,7 @@ class MainWindow : public QMainWindow {
   QList<PlotView*> m_plots;
   PlotView* m_currentPlot = nullptr;
   AccuracyView* m_accuracy = nullptr;  ///< the work-precision view, when the scene shows it
+  ChainView* m_chain = nullptr;        ///< the animation, when the scene shows it
   QWidget* m_side = nullptr;           ///< the parameter panel's scroll area
   QWidget* m_enlarged = nullptr;       ///< the view shown alone, if any
   QList<QWidget*> m_views;             ///< every view of the scene, in its order

@@ -9,9 +9,9 @@ namespace grazelab::ui {
 core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, double sampleWindow) {
   core::Needs needs;
   const bool dense = plots.contains(PlotKind::TraceU2) || plots.contains(PlotKind::PhaseU2V2) ||
-                     plots.contains(PlotKind::PhaseU1V1);
-  // contacts are marked on the u2(t) trace only, which shows the sample window
-  needs.events = plots.contains(PlotKind::TraceU2);
+                     plots.contains(PlotKind::PhaseU1V1) || plots.contains(PlotKind::Chain);
+  // contacts are marked on the u2(t) trace and flash in the animation, over the sample window
+  needs.events = plots.contains(PlotKind::TraceU2) || plots.contains(PlotKind::Chain);
   needs.eventsUntil = sampleWindow;
   needs.poincare = plots.contains(PlotKind::Poincare);
   needs.freeFlights = plots.contains(PlotKind::FreeFlight);

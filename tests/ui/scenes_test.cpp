@@ -3,12 +3,14 @@
 // Tests for ui/scenes/: every scene opens with its views and asks only for what they draw, and
 // each picture agrees with the result of the theory it illustrates.
 #include <QTest>
+#include <QXYSeries>
 
 #include <algorithm>
 
 #include "core/modes.h"
 #include "tests/ui/explorer_test_support.h"
 #include "ui/main_window.h"
+#include "ui/plots/chain_view.h"
 #include "ui/plots/plot_view.h"
 
 using namespace grazelab::ui;
@@ -45,13 +47,16 @@ class ScenesTest : public QObject {
       QVERIFY2(m_window->problem().isEmpty(), qPrintable(name + ": " + m_window->problem()));
       const auto& needs = m_window->displayed()->request->request.needs;
       const bool dense = shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::PhaseU2V2) ||
-                         shows(scene, PlotKind::PhaseU1V1);
+                         shows(scene, PlotKind::PhaseU1V1) || shows(scene, PlotKind::Chain);
       QVERIFY2((needs.samples.spacing > 0) == dense, qPrintable(name));
       QVERIFY2(needs.poincare == shows(scene, PlotKind::Poincare), qPrintable(name));
       QVERIFY2(needs.freeFlights == shows(scene, PlotKind::FreeFlight), qPrintable(name));
-      QVERIFY2(needs.events == shows(scene, PlotKind::TraceU2), qPrintable(name));
+      QVERIFY2(needs.events == (shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::Chain)),
+               qPrintable(name));
+      QVERIFY2(bool(m_window->chainView()) == shows(scene, PlotKind::Chain), qPrintable(name));
       // every view it lists is on screen, each curve view with its figure
-      const qsizetype views = m_window->plots().size() + (m_window->accuracyView() ? 1 : 0);
+      const qsizetype views = m_window->plots().size() + (m_window->accuracyView() ? 1 : 0) +
+                              (m_window->chainView() ? 1 : 0);
       QCOMPARE(views, scene.plots().size());
       for (PlotKind kind : scene.plots()) {
         const bool curve = kind == PlotKind::OnePeriodicData || kind == PlotKind::ImpactSpeed ||
@@ -134,6 +139,39 @@ class ScenesTest : public QObject {
     const auto& model = m_window->displayed()->request->model;
     const auto modes = grazelab::core::computeModes(model);
     QVERIFY(std::abs(modes.omegaFast / modes.omegaSlow - m_window->params().frequencyRatio) < 1e-9);
+  }
+
+  // the animated chain: plays forward at its rate, steps from contact to contact, and its time
+  // is the cursor of the trace and the phase portrait
+  void chainAnimationPlaysStepsAndMovesTheCursors() {
+    ChainView* chain = m_window->chainView();
+    QVERIFY(chain);  // the default scene shows it
+    const auto& events = m_window->displayed()->result->events;
+    QVERIFY(events.size() > 3);
+    chain->setTime(0);
+    chain->stepContact(+1);
+    QCOMPARE(chain->time(), events[0].t);
+    chain->stepContact(+1);
+    QCOMPARE(chain->time(), events[1].t);
+    chain->stepContact(-1);
+    QCOMPARE(chain->time(), events[0].t);
+    // at a contact the state shown is on the stop
+    QVERIFY(std::abs(chain->stateAt(chain->time()).u2 - m_window->params().gap) < 1e-3);
+    // the trace's cursor line stands at that time
+    PlotView* trace = m_window->plots().first();
+    QXYSeries* cursor = nullptr;
+    for (QAbstractSeries* series : trace->chart()->series()) {
+      auto* xy = qobject_cast<QXYSeries*>(series);
+      if (xy && xy->count() == 2 && xy->at(0).x() == xy->at(1).x() && xy->at(0).x() == chain->time()) cursor = xy;
+    }
+    QVERIFY(cursor);
+    // playing moves time forward, about at the rate asked (generous: a loaded machine)
+    chain->setTime(0);
+    chain->setPlaying(true);
+    QTest::qWait(400);
+    chain->setPlaying(false);
+    QVERIFY(chain->time() > 0.1 * 0.4 * chain->rate());
+    QVERIFY(chain->time() < 3 * 0.4 * chain->rate());
   }
 
  private:

@@ -24,6 +24,7 @@ PlotView* makePlot(PlotKind kind, QWidget* parent) {
     case PlotKind::FlightHistogram:
     case PlotKind::DetunedFlights:
     case PlotKind::ResonantFlights: return new CurvePlot(kind, parent);
+    case PlotKind::Chain:
     case PlotKind::WorkPrecision: return nullptr;  // not a PlotView: MainWindow builds an AccuracyView
   }
   return nullptr;

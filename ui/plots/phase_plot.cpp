@@ -4,10 +4,16 @@
 
 #include <QLineSeries>
 #include <QScatterSeries>
+#include <QValueAxis>
 
 #include <algorithm>
 
 #include "ui/plots/plot_style.h"
+
+#include <QChart>
+#include <QLegend>
+#include <QLegendMarker>
+#include <QScatterSeries>
 
 namespace grazelab::ui {
 
@@ -28,6 +34,18 @@ PhasePlot::PhasePlot(Mass mass, QWidget* parent)
                       "u₂ = d) an impact flips v₂ to −v₂: the vertical jumps.")
                  : tr("Velocity v₁ of mass 1 against its displacement u₁. Mass 1 never touches "
                       "the stop; it feels the impacts through the spring k₂."));
+}
+
+void PhasePlot::setTimeCursor(double, const core::State& state) {
+  if (!m_cursor) {
+    auto* dot = makeScatter(QString(), colors::kAccent, 12);
+    chart()->addSeries(dot);
+    dot->attachAxis(m_axisX);
+    dot->attachAxis(m_axisY);
+    for (QLegendMarker* marker : chart()->legend()->markers(dot)) marker->setVisible(false);
+    m_cursor = dot;
+  }
+  m_cursor->replace({m_mass == Mass::Two ? QPointF(state.u2, state.v2) : QPointF(state.u1, state.v1)});
 }
 
 void PhasePlot::show(const SimUpdate& update) {

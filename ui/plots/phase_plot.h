@@ -14,12 +14,14 @@ class PhasePlot final : public PlotView {
   enum class Mass { One, Two };
   explicit PhasePlot(Mass mass, QWidget* parent = nullptr);
   void show(const SimUpdate& update) override;
+  void setTimeCursor(double t, const core::State& state) override;
 
  private:
   Mass m_mass;
   int m_path = 0;
   int m_stop = -1;
   int m_start = 0;
+  QXYSeries* m_cursor = nullptr;  ///< the animation's state, made on first use
 };
 
 }  // namespace grazelab::ui

@@ -60,6 +60,10 @@ class PlotView : public QChartView {
   /// Applies pending data now instead of at the next turn of the event loop.
   void refreshNow();
 
+  /// The animation's time and state: time-based plots mark it (a line on u2(t), a dot on a
+  /// phase portrait); others ignore it. Drawn at once, without re-decimating the data.
+  virtual void setTimeCursor(double t, const core::State& state);
+
   /// Presentation mode: text of `textPixels` (titles a little larger), lines at least 3 px,
   /// markers half again as large; off restores the desk look.
   void setPresentation(bool on, int textPixels);

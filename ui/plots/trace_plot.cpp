@@ -4,6 +4,7 @@
 
 #include <QChart>
 #include <QLegend>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QScatterSeries>
 #include <QValueAxis>
@@ -54,6 +55,18 @@ void TracePlot::show(const SimUpdate& update) {
                             : tr("time t"));
   drawOverlay();
   scheduleRefresh();
+}
+
+void TracePlot::setTimeCursor(double t, const core::State&) {
+  if (!m_cursor) {
+    // not an entry: it never counts for the axes, the CSV or the decimation
+    m_cursor = makeLine(QString(), colors::kAccent, 2.0);
+    chart()->addSeries(m_cursor);
+    m_cursor->attachAxis(m_axisX);
+    m_cursor->attachAxis(m_axisY);
+    for (QLegendMarker* marker : chart()->legend()->markers(m_cursor)) marker->setVisible(false);
+  }
+  m_cursor->replace({QPointF(t, m_axisY->min()), QPointF(t, m_axisY->max())});
 }
 
 void TracePlot::setOverlay(std::shared_ptr<const core::Result> run, const QString& name) {

@@ -17,6 +17,7 @@ class TracePlot final : public PlotView {
   /// Draws another method's run over the exact one (its u2 at its own steps, dashed, and its
   /// contacts as crosses); an empty run removes the overlay.
   void setOverlay(std::shared_ptr<const core::Result> run, const QString& name);
+  void setTimeCursor(double t, const core::State& state) override;
 
  private:
   void drawOverlay();
@@ -30,6 +31,7 @@ class TracePlot final : public PlotView {
   int m_stop = 0;
   int m_impacts = 0;
   int m_grazings = 0;
+  QXYSeries* m_cursor = nullptr;  ///< the animation's time, made on first use
 };
 
 }  // namespace grazelab::ui

@@ -75,8 +75,8 @@ Scene::Spec grazingFamilyScene() {
   scene.defaults.horizon = 60;
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::TraceU2, PlotKind::GrazingMaximum, PlotKind::PhaseU2V2,
-                 PlotKind::FreeFlight, PlotKind::Poincare};
+  scene.plots = {PlotKind::TraceU2, PlotKind::Chain,      PlotKind::GrazingMaximum,
+                 PlotKind::PhaseU2V2, PlotKind::FreeFlight, PlotKind::Poincare};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
     SceneJob job;
     job.model = derived.model;

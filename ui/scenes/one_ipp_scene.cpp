@@ -74,7 +74,7 @@ Scene::Spec onePeriodicScene() {
   scene.parameters = {ParamKey::Period, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
   scene.plots = {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::TraceU2,
-                 PlotKind::PhaseU2V2};
+                 PlotKind::Chain};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
     SceneJob job;
     job.model = derived.model;

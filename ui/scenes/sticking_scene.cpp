@@ -32,7 +32,7 @@ Scene::Spec stickingScene() {
   scene.ownKeys = {ParamKey::Horizon, ParamKey::Period, ParamKey::Lambda};
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
-  scene.plots = {PlotKind::TraceU2, PlotKind::PhaseU2V2, PlotKind::PhaseU1V1};
+  scene.plots = {PlotKind::TraceU2, PlotKind::Chain, PlotKind::PhaseU2V2, PlotKind::PhaseU1V1};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
     SceneJob job;
     job.model = derived.model;
