@@ -149,8 +149,9 @@ class ChainView::Canvas : public QWidget {
 ChainView::ChainView(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(4, 4, 4, 4);
-  auto* title = new QLabel(tr("<b>The chain, moving</b> (lengths true to scale)"), this);
+  auto* title = new QLabel(tr("<b>The chain, moving</b> (true to scale)"), this);
   title->setAlignment(Qt::AlignHCenter);
+  title->setWordWrap(true);
   layout->addWidget(title);
   m_canvas = new Canvas(this);
   layout->addWidget(m_canvas, 1);
@@ -177,16 +178,21 @@ ChainView::ChainView(QWidget* parent) : QWidget(parent) {
   m_speed->setCurrentIndex(3);
   m_speed->setToolTip(tr("Playing speed; at 1× one slow period T₂ takes two seconds."));
   controls->addWidget(m_speed);
-  m_slowNearContacts = new QCheckBox(tr("slow near contacts"), this);
+  m_slowNearContacts = new QCheckBox(tr("slow at contacts"), this);
   m_slowNearContacts->setChecked(true);
   m_slowNearContacts->setToolTip(tr("Play at %1× of the speed within T₂/40 of a contact, so "
                                     "that the impact can be seen.").arg(kSlowMotion));
-  controls->addWidget(m_slowNearContacts);
+  controls->addStretch(1);
+  layout->addLayout(controls);
+  // the time slider on a second row: the view stays narrow enough for a third of a small screen
+  auto* timeRow = new QHBoxLayout;
+  timeRow->addWidget(m_slowNearContacts);
   m_slider = new QSlider(Qt::Horizontal, this);
   m_slider->setRange(0, kSliderSteps);
+  m_slider->setMinimumWidth(40);
   m_slider->setToolTip(tr("Drag to any time of the motion"));
-  controls->addWidget(m_slider, 1);
-  layout->addLayout(controls);
+  timeRow->addWidget(m_slider, 1);
+  layout->addLayout(timeRow);
 
   setFocusPolicy(Qt::StrongFocus);
   setToolTip(tr("The two masses on their springs and the rigid stop, moving as computed. The "
