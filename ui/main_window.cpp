@@ -356,14 +356,22 @@ void MainWindow::setPresentation(bool on, int screenHeight, bool fullScreen) {
   for (PlotView* plot : m_plots) plot->setPresentation(on, m_presentationText);
   if (m_accuracy) m_accuracy->setPresentation(on, m_presentationText);
   if (m_chain) m_chain->setPresentation(on, m_presentationText);
-  // the larger text needs a wider panel
-  if (auto* splitter = qobject_cast<QSplitter*>(centralWidget())) {
-    const int side = on ? std::max(390, width() * 3 / 10) : 400;
-    splitter->setSizes({side, std::max(1, width() - side)});
-  }
   if (fullScreen) {
-    if (on) showFullScreen();
-    else showNormal();
+    if (on) {
+      m_deskGeometry = geometry();
+      showFullScreen();
+      // without a window manager (a bare X server, a kiosk) full screen is only a wish: the
+      // window takes the screen's size itself
+      if (const QScreen* screen = this->screen()) setGeometry(screen->geometry());
+    } else {
+      showNormal();
+      if (m_deskGeometry.isValid()) setGeometry(m_deskGeometry);
+    }
+  }
+  // the larger text needs a wider panel: about 24 characters' worth, at most 40 % of the window
+  if (auto* splitter = qobject_cast<QSplitter*>(centralWidget())) {
+    const int side = on ? std::clamp(24 * m_presentationText, 390, width() * 2 / 5) : 400;
+    splitter->setSizes({side, std::max(1, width() - side)});
   }
 }
 

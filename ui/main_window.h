@@ -152,6 +152,7 @@ class MainWindow : public QMainWindow {
   bool m_presentation = false;
   int m_presentationText = 0;          ///< text size in presentation mode [px]
   QFont m_deskFont;
+  QRect m_deskGeometry;  ///< where the window was before presentation mode
   QPalette m_deskPalette;
   QAction* m_presentationAction = nullptr;
   QAction* m_panelAction = nullptr;
