@@ -73,6 +73,9 @@ int runLatencyBenchmark(QTextStream& out) {
   window.show();
   for (int sceneIndex = 0; sceneIndex < int(window.scenes().size()); ++sceneIndex) {
     window.selectScene(sceneIndex);
+    // each scene on its own defaults, as on a class's first visit (the chain and the start
+    // would otherwise carry over from the scene before)
+    window.setParams(window.scene().defaults());
     waitForFinal(window, 60'000);
     QSlider* slider = dragSlider(window);
     const int base = slider->value();

@@ -24,7 +24,9 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 
+#include "core/chain.h"
 #include "core/model.h"
 #include "ui/derived.h"
 #include "ui/parameter_panel.h"
@@ -32,6 +34,7 @@
 #include "ui/plots/chain_view.h"
 #include "ui/plots/make_plot.h"
 #include "ui/plots/plot_view.h"
+#include "ui/plots/poincare_plot.h"
 #include "ui/plots/trace_plot.h"
 #include "ui/readout_panel.h"
 #include "ui/sim_controller.h"
@@ -259,6 +262,9 @@ void MainWindow::buildPlots() {
   }
   for (PlotView* plot : m_plots) {
     connect(plot, &PlotView::enlargeRequested, this, [this](PlotView* view) { toggleEnlarged(view); });
+    if (qobject_cast<PoincarePlot*>(plot)) {
+      connect(plot, &PlotView::clickedAt, this, [this](QPointF value) { startFromSection(value); });
+    }
     if (m_presentation) plot->setPresentation(true, m_presentationText);
   }
   if (m_chain) {
@@ -387,6 +393,7 @@ void MainWindow::selectScene(int index) {
 
 void MainWindow::showScene(int index) {
   m_sceneChosen = true;
+  m_clickedStart.reset();
   m_sceneIndex = index;
   m_displayed.reset();
   m_pending.reset();
@@ -422,7 +429,30 @@ bool MainWindow::applySession(const Session& session, QString* error) {
   return true;
 }
 
+bool MainWindow::startFromSection(QPointF u1v1) {
+  if (!m_displayed) return false;
+  const core::Model& model = m_displayed->request->model;
+  const double level = core::energy(model, m_displayed->request->request.initial);
+  core::State start{u1v1.x(), model.gap, u1v1.y(), 0.0};
+  // what is left for v2 after the springs and mass 1 take their share of the energy
+  const double rest = level - core::energy(model, start);
+  if (!(rest >= 0)) {
+    m_status->setText(tr("No state of this energy (E = %1) at u₁ = %2, v₁ = %3 on H: the "
+                         "springs and mass 1 alone would hold more. Click inside the points.")
+                          .arg(level, 0, 'g', 6)
+                          .arg(u1v1.x(), 0, 'g', 4)
+                          .arg(u1v1.y(), 0, 'g', 4));
+    return false;
+  }
+  start.v2 = -std::sqrt(2 * rest / model.m2);  // leaving the stop, as after an impact
+  m_clickedStart = start;
+  resetViews();
+  recompute();
+  return true;
+}
+
 void MainWindow::onParamsChanged(const Params& params) {
+  m_clickedStart.reset();  // an edit goes back to the scene's own start
   m_sceneParams[std::size_t(m_sceneIndex)] = params;
   // new data in a zoomed window may lie outside it and look blank: the plots fit it again
   resetViews();
@@ -444,6 +474,7 @@ void MainWindow::recompute() {
   }
   SceneJob job = scene().build(current, derived);
   m_panel->setSliderRanges(job.sliderRanges);
+  if (m_clickedStart && job.ok) job.request.initial = *m_clickedStart;
   if (!job.ok) {
     showProblem(job.message);
     return;

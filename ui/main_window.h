@@ -97,6 +97,10 @@ class MainWindow : public QMainWindow {
   /// alone already (double-click).
   void toggleEnlarged(QWidget* view);
   QWidget* enlargedView() const { return m_enlarged; }
+  /// Starts a run from the point (u1, v1) of the section H: u2 = d and v2 <= 0 (leaving the
+  /// stop) on the energy level of the run shown. False (and why, on the status line) when no
+  /// state of that energy lies there. The next parameter edit goes back to the scene's start.
+  bool startFromSection(QPointF u1v1);
   /// Shows or hides the parameter panel (F9).
   void setPanelVisible(bool visible);
 
@@ -152,7 +156,8 @@ class MainWindow : public QMainWindow {
   bool m_presentation = false;
   int m_presentationText = 0;          ///< text size in presentation mode [px]
   QFont m_deskFont;
-  QRect m_deskGeometry;  ///< where the window was before presentation mode
+  QRect m_deskGeometry;
+  std::optional<core::State> m_clickedStart;  ///< a start chosen on H, until the next edit  ///< where the window was before presentation mode
   QPalette m_deskPalette;
   QAction* m_presentationAction = nullptr;
   QAction* m_panelAction = nullptr;

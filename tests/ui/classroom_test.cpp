@@ -21,6 +21,7 @@
 
 #include <algorithm>
 
+#include "core/chain.h"
 #include "core/modes.h"
 #include "core/orbits.h"
 #include "core/resonance.h"
@@ -312,6 +313,38 @@ class ClassroomTest : public QObject {
     process.kill();
     process.waitForFinished(5000);
     QVERIFY2(err.contains("bad.json"), err.constData());
+  }
+
+  // click a point of the section H: a run starts there, on the same energy, leaving the stop
+  void aClickOnTheSectionStartsARunThere() {
+    PlotView* poincare = plotTitled(*m_window, QStringLiteral("Poincaré"));
+    QVERIFY(poincare);
+    QTRY_VERIFY(poincare->entries().front().series->count() > 0);
+    const auto& model = m_window->displayed()->request->model;
+    const double level = grazelab::core::energy(model, m_window->displayed()->request->request.initial);
+    // a point the run itself reached (on the energy level by conservation)
+    const QPointF target = poincare->entries().front().data.at(3);
+    const QPoint at = poincare->chart()->mapToPosition(target).toPoint();
+    QTest::mouseClick(poincare->viewport(), Qt::LeftButton, {}, at);
+    QVERIFY(waitForLatestFinal(*m_window));
+    const grazelab::core::State start = m_window->displayed()->request->request.initial;
+    QCOMPARE(start.u2, model.gap);
+    QVERIFY(start.v2 <= 0);
+    const double pixel = (axis(*poincare, Qt::Horizontal)->max() - axis(*poincare, Qt::Horizontal)->min()) / 100;
+    QVERIFY(std::abs(start.u1 - target.x()) < pixel);
+    QVERIFY(std::abs(grazelab::core::energy(model, start) - level) < 1e-12 * level);
+    // a point outside the energy level is refused with a reason, nothing recomputed
+    const std::uint64_t before = m_window->displayed()->id;
+    QVERIFY(!m_window->startFromSection(QPointF(100 * model.gap, 0)));
+    QVERIFY(m_window->statusText().contains(QStringLiteral("No state of this energy")));
+    QCOMPARE(m_window->displayed()->id, before);
+    // an edit goes back to the scene's own start
+    Params params = m_window->params();
+    params.horizon = 30;
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window));
+    const auto glo = grazelab::core::gloData(model, grazelab::core::computeModes(model), params.lambda);
+    QCOMPARE(m_window->displayed()->request->request.initial.u1, glo.u1);
   }
 
   // presentation mode: text of at least 1/50 of the screen height, lines of 3 px or more, the

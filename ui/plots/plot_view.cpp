@@ -353,6 +353,7 @@ void PlotView::mousePressEvent(QMouseEvent* event) {
     event->accept();
     return;
   }
+  m_pressPosition = event->position().toPoint();
   QChartView::mousePressEvent(event);
 }
 
@@ -383,6 +384,13 @@ void PlotView::mouseReleaseEvent(QMouseEvent* event) {
   if (before != QPointF(m_axisX->min(), m_axisX->max()) ||
       beforeY != QPointF(m_axisY->min(), m_axisY->max())) {
     userMovedView();
+    return;
+  }
+  // a click, not a rubber band: where, in the data's coordinates
+  const QPoint position = event->position().toPoint();
+  if (event->button() == Qt::LeftButton && (position - m_pressPosition).manhattanLength() < 4 &&
+      chart()->plotArea().contains(position)) {
+    emit clickedAt(chart()->mapToValue(position));
   }
 }
 

@@ -76,6 +76,8 @@ class PlotView : public QChartView {
  signals:
   /// The user double-clicked the plot: enlarge it (or put it back).
   void enlargeRequested(grazelab::ui::PlotView* plot);
+  /// A left click without a drag inside the plot area, at data coordinates `value`.
+  void clickedAt(QPointF value);
   /// The user clicked or focused this plot (it becomes the "current plot").
   void activated(grazelab::ui::PlotView* plot);
   /// The series were replaced with new decimated data.
@@ -128,6 +130,7 @@ class PlotView : public QChartView {
   bool m_followData = true;
   bool m_panning = false;
   QPoint m_lastPanPosition;
+  QPoint m_pressPosition;  ///< where the left button went down (a click or a rubber band)
 };
 
 }  // namespace grazelab::ui

@@ -35,7 +35,8 @@ PoincarePlot::PoincarePlot(QWidget* parent)
                 "(the section H: u₂ = d). Colours run from early contacts (purple) to late ones "
                 "(yellow); where many fall on one spot, the colour shown is one of them drawn at "
                 "random, so every stretch of the run shows in proportion. The square marks the "
-                "reference grazing orbit's data."));
+                "reference grazing orbit's data. Click a point of the plane to start a run there, on "
+                "the same energy (mass 2 leaving the stop); edit any value to go back."));
 }
 
 void PoincarePlot::show(const SimUpdate& update) {
