@@ -4,6 +4,10 @@
 
 #include "ui/scenes/scenes.h"
 
+#include <QCoreApplication>
+
+#include "core/orbits.h"
+
 namespace grazelab::ui {
 
 core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, double sampleWindow) {
@@ -29,6 +33,20 @@ Params enterScene(const Scene& scene, const Params& session, const Params& own) 
   Params params = session;
   for (ParamKey key : scene.ownKeys()) params.setValue(key, own.value(key));
   return params;
+}
+
+SceneJob gloStartJob(const Scene& scene, const Params& params, const DerivedModel& derived,
+                     double sampleWindow) {
+  SceneJob job;
+  job.model = derived.model;
+  const core::State start = core::gloData(derived.model, derived.modes, params.lambda);
+  job.request.initial = perturbed(start, params);
+  job.request.maxContacts = std::int64_t(params.horizon);
+  job.request.needs = needsFor(scene.plots(), derived.modes, sampleWindow);
+  job.reference = start;
+  job.referenceLabel = QCoreApplication::translate("grazelab::ui::Scene", "GLO(λ) data");
+  job.ok = true;
+  return job;
 }
 
 core::State perturbed(core::State state, const Params& params) {

@@ -80,6 +80,12 @@ core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, dou
 /// scene's own values for its ownKeys().
 Params enterScene(const Scene& scene, const Params& session, const Params& own);
 
+/// The start most scenes share: GLO(lambda) data pushed by the panel's perturbation, run for
+/// the panel's number of contacts with the needs of the scene's views over `sampleWindow`, and
+/// the GLO data marked on H.
+SceneJob gloStartJob(const Scene& scene, const Params& params, const DerivedModel& derived,
+                     double sampleWindow);
+
 /// Applies the signed perturbation along its direction.
 core::State perturbed(core::State state, const Params& params);
 

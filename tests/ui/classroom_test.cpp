@@ -320,7 +320,7 @@ class ClassroomTest : public QObject {
     PlotView* poincare = plotTitled(*m_window, QStringLiteral("Poincaré"));
     QVERIFY(poincare);
     QTRY_VERIFY(poincare->entries().front().series->count() > 0);
-    const auto& model = m_window->displayed()->request->model;
+    const grazelab::core::Model model = m_window->displayed()->request->model;  // a copy: the click replaces what is shown
     const double level = grazelab::core::energy(model, m_window->displayed()->request->request.initial);
     // a point the run itself reached (on the energy level by conservation)
     const QPointF target = poincare->entries().front().data.at(3);

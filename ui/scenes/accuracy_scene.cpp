@@ -37,14 +37,8 @@ Scene::Spec accuracyScene() {
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::TraceU2, PlotKind::WorkPrecision};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
-    SceneJob job;
-    job.model = derived.model;
-    job.request.initial =
-        perturbed(core::gloData(derived.model, derived.modes, params.lambda), params);
-    job.request.maxContacts = std::int64_t(params.horizon);
     // the trace shows the whole comparison: it is what the overlay is drawn on
-    job.request.needs =
-        needsFor(self.plots(), derived.modes, (params.horizon + 1) * derived.modes.T2);
+    SceneJob job = gloStartJob(self, params, derived, (params.horizon + 1) * derived.modes.T2);
     AccuracyJob accuracy;
     for (core::methods::MethodKind kind : core::methods::kAllMethods) {
       for (const auto& setting :
@@ -53,7 +47,6 @@ Scene::Spec accuracyScene() {
       }
     }
     job.accuracy = std::move(accuracy);
-    job.ok = true;
     return job;
   };
   return scene;

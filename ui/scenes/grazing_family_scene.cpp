@@ -78,17 +78,9 @@ Scene::Spec grazingFamilyScene() {
   scene.plots = {PlotKind::TraceU2, PlotKind::Chain,      PlotKind::GrazingMaximum,
                  PlotKind::PhaseU2V2, PlotKind::FreeFlight, PlotKind::Poincare};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
-    SceneJob job;
-    job.model = derived.model;
-    const core::State start = core::gloData(derived.model, derived.modes, params.lambda);
-    job.request.initial = perturbed(start, params);
-    job.request.maxContacts = std::int64_t(params.horizon);
     // dense output over the whole run for short runs, over the first 400 T2 for long ones
-    job.request.needs = needsFor(self.plots(), derived.modes, 400 * derived.modes.T2);
-    job.reference = start;
-    job.referenceLabel = tr("GLO(λ) data");
+    SceneJob job = gloStartJob(self, params, derived, 400 * derived.modes.T2);
     job.figures[PlotKind::GrazingMaximum] = lemmaFigure(params.lambda);
-    job.ok = true;
     return job;
   };
   return scene;

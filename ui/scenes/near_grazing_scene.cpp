@@ -33,17 +33,8 @@ Scene::Spec nearGrazingScene() {
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::Poincare, PlotKind::FreeFlight, PlotKind::TraceU2};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
-    SceneJob job;
-    job.model = derived.model;
-    const core::State start = core::gloData(derived.model, derived.modes, params.lambda);
-    job.request.initial = perturbed(start, params);
-    job.request.maxContacts = std::int64_t(params.horizon);
     // the trace is a glance at the first periods only; the section is the point of the scene
-    job.request.needs = needsFor(self.plots(), derived.modes, 30 * derived.modes.T2);
-    job.reference = start;
-    job.referenceLabel = tr("GLO(λ) data");
-    job.ok = true;
-    return job;
+    return gloStartJob(self, params, derived, 30 * derived.modes.T2);
   };
   return scene;
 }

@@ -81,16 +81,8 @@ Scene::Spec perturbationScene() {
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::FreeFlight, PlotKind::SpreadAgainstSize, PlotKind::TraceU2};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
-    SceneJob job;
-    job.model = derived.model;
-    const core::State start = core::gloData(derived.model, derived.modes, params.lambda);
-    job.request.initial = perturbed(start, params);
-    job.request.maxContacts = std::int64_t(params.horizon);
-    job.request.needs = needsFor(self.plots(), derived.modes, 40 * derived.modes.T2);
-    job.reference = start;
-    job.referenceLabel = tr("GLO(λ) data");
+    SceneJob job = gloStartJob(self, params, derived, 40 * derived.modes.T2);
     job.figures[PlotKind::SpreadAgainstSize] = spreadFigure(derived, params);
-    job.ok = true;
     return job;
   };
   return scene;
