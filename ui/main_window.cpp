@@ -509,6 +509,14 @@ void MainWindow::onUpdate(const SimUpdate& update) {
     showProblem(QString::fromStdString(update.result->message));
     return;
   }
+  if (m_displayed && m_displayed->trustPending && update.id == m_displayed->id &&
+      update.result == m_displayed->result) {
+    // the same result again, now with its error estimate: only the status line changes
+    m_displayed->trust = update.trust;
+    m_displayed->trustPending = update.trustPending;
+    showStatus(*m_displayed);
+    return;
+  }
   m_pending = update;
   if (m_options.synchronous) {
     applyPending();
@@ -578,6 +586,7 @@ void MainWindow::showStatus(const SimUpdate& update) {
                 .arg(scientific(std::max(trust.stateError, trust.timeError)))
                 .arg(scientific(trust.horizon));
   }
+  if (update.trustPending) text += tr(" · trust: estimating…");
   if (update.accuracy) {
     text += tr(" · methods: %1 of %2 settings measured")
                 .arg(update.accuracy->points.size())

@@ -63,7 +63,7 @@ void SimController::cancel() {
 
 void SimController::receive(const SimUpdate& update) {
   if (update.id != m_latestId) return;  // stale: a newer request exists
-  if (update.final) m_busy = false;
+  if (update.final && !update.trustPending) m_busy = false;
   emit updated(update);
 }
 

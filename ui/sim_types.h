@@ -62,6 +62,9 @@ struct SimUpdate {
   bool final = false;   ///< the run is over (complete, cancelled or invalid)
   std::shared_ptr<const SimRequest> request;  ///< what was asked
   std::optional<core::Trust> trust;  ///< the error estimate, on the final update
+  /// the final result, sent before its error estimate; another final update with the same
+  /// result and its trust follows (the plots need not wait for the shadow run)
+  bool trustPending = false;
   std::shared_ptr<const AccuracyProgress> accuracy;  ///< the sweep so far (Accuracy scene)
 };
 

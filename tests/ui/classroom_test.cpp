@@ -183,6 +183,8 @@ class ClassroomTest : public QObject {
       return total;
     };
     QTRY_VERIFY(drawnTotal() > 20);
+    QTest::qWait(50);
+    poincare->refreshNow();  // at the laid-out size
     int named = 0;
     int fairBins = 0;
     for (const PlotView::Entry& entry : poincare->entries()) {
