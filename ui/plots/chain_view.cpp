@@ -300,6 +300,7 @@ double ChainView::speedFactor() const {
 }
 
 void ChainView::tick() {
+  ++m_framesPlayed;
   // wall time since the last frame (a late frame does not make the motion jump far)
   const double seconds = std::min(0.1, m_clockTimer.restart() / 1000.0);
   double t = m_time + seconds * m_rate * speedFactor();

@@ -6,6 +6,7 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -44,6 +45,9 @@ class ChainView : public QWidget {
   void stepContact(int direction);
   /// Time units of the run per second of wall time at speed 1 (one slow period in 2 s).
   double rate() const { return m_rate; }
+  /// Animation steps taken while playing (one per timer tick, at most 62.5 a second): the
+  /// latency benchmark's animation rate.
+  std::int64_t framesPlayed() const { return m_framesPlayed; }
 
  signals:
   /// The animation shows time t, state `state` (the plots draw their cursor there).
@@ -77,6 +81,7 @@ class ChainView : public QWidget {
   QTimer m_timer;
   QElapsedTimer m_clockTimer;
   bool m_presentation = false;
+  std::int64_t m_framesPlayed = 0;
 };
 
 }  // namespace grazelab::ui
