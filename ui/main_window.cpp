@@ -32,7 +32,7 @@
 #include "ui/parameter_panel.h"
 #include "ui/plots/accuracy_view.h"
 #include "ui/plots/chain_view.h"
-#include "ui/plots/make_plot.h"
+#include "ui/plots/scene_view.h"
 #include "ui/plots/plot_view.h"
 #include "ui/plots/poincare_plot.h"
 #include "ui/plots/trace_plot.h"
@@ -221,36 +221,34 @@ void MainWindow::buildMenus() {
 void MainWindow::buildPlots() {
   // out of the layout and out of sight now; deleted once control is back in the event loop
   // (headless mode has none running yet, so a deferred delete alone would leave them drawn)
-  QList<QWidget*> old;
-  for (PlotView* plot : m_plots) old.append(plot);
-  if (m_accuracy) old.append(m_accuracy);
-  if (m_chain) old.append(m_chain);
-  for (QWidget* view : old) {
+  for (QWidget* view : m_views) {
     m_plotGrid->removeWidget(view);
     view->hide();
     view->disconnect(this);
     view->deleteLater();
   }
+  m_sceneViews.clear();
   m_plots.clear();
   m_accuracy = nullptr;
   m_chain = nullptr;
   m_currentPlot = nullptr;
   QList<QWidget*> views;
   for (PlotKind kind : scene().plots()) {
-    if (kind == PlotKind::WorkPrecision) {
-      m_accuracy = new AccuracyView(m_plotArea);
-      views.append(m_accuracy);
-      continue;
+    SceneView* view = makeView(kind, m_plotArea);
+    m_sceneViews.append(view);
+    views.append(view->widget());
+    if (m_presentation) view->setPresentation(true, m_presentationText);
+    // the few views with more to say than show(): found by their type
+    if (auto* accuracy = dynamic_cast<AccuracyView*>(view)) m_accuracy = accuracy;
+    if (auto* chain = dynamic_cast<ChainView*>(view)) m_chain = chain;
+    if (auto* plot = dynamic_cast<PlotView*>(view)) {
+      m_plots.append(plot);
+      connect(plot, &PlotView::activated, this, [this](PlotView* active) { m_currentPlot = active; });
+      connect(plot, &PlotView::enlargeRequested, this, [this](PlotView* plot) { toggleEnlarged(plot); });
+      if (qobject_cast<PoincarePlot*>(plot)) {
+        connect(plot, &PlotView::clickedAt, this, [this](QPointF value) { startFromSection(value); });
+      }
     }
-    if (kind == PlotKind::Chain) {
-      m_chain = new ChainView(m_plotArea);
-      views.append(m_chain);
-      continue;
-    }
-    PlotView* plot = makePlot(kind, m_plotArea);
-    connect(plot, &PlotView::activated, this, [this](PlotView* active) { m_currentPlot = active; });
-    m_plots.append(plot);
-    views.append(plot);
   }
   if (m_accuracy) {
     // the chosen method's run is drawn over the exact u2(t)
@@ -260,19 +258,12 @@ void MainWindow::buildPlots() {
       }
     }
   }
-  for (PlotView* plot : m_plots) {
-    connect(plot, &PlotView::enlargeRequested, this, [this](PlotView* view) { toggleEnlarged(view); });
-    if (qobject_cast<PoincarePlot*>(plot)) {
-      connect(plot, &PlotView::clickedAt, this, [this](QPointF value) { startFromSection(value); });
-    }
-    if (m_presentation) plot->setPresentation(true, m_presentationText);
-  }
   if (m_chain) {
-    // the animation's time is the cursor of every time-based plot
-    for (PlotView* plot : m_plots) connect(m_chain, &ChainView::timeChanged, plot, &PlotView::setTimeCursor);
-    if (m_presentation) m_chain->setPresentation(true, m_presentationText);
+    // the animation's time is the cursor of every view
+    connect(m_chain, &ChainView::timeChanged, this, [this](double t, const core::State& state) {
+      for (SceneView* view : m_sceneViews) view->setTimeCursor(t, state);
+    });
   }
-  if (m_accuracy && m_presentation) m_accuracy->setPresentation(true, m_presentationText);
   m_views = views;
   m_enlarged = nullptr;
   layoutViews();
@@ -359,9 +350,7 @@ void MainWindow::setPresentation(bool on, int screenHeight, bool fullScreen) {
     QApplication::setFont(m_deskFont);
     QApplication::setPalette(m_deskPalette);
   }
-  for (PlotView* plot : m_plots) plot->setPresentation(on, m_presentationText);
-  if (m_accuracy) m_accuracy->setPresentation(on, m_presentationText);
-  if (m_chain) m_chain->setPresentation(on, m_presentationText);
+  for (SceneView* view : m_sceneViews) view->setPresentation(on, m_presentationText);
   if (fullScreen) {
     if (on) {
       m_deskGeometry = geometry();
@@ -546,16 +535,13 @@ void MainWindow::applyPending() {
   cost.start();
   // a result that is not the panel's (an infeasible edit came after it) stays marked stale
   const bool stale = !m_problem.isEmpty();
+  for (SceneView* view : m_sceneViews) view->show(*m_displayed);
+  // after every show: the accuracy view may have changed the trace's overlay
   for (PlotView* plot : m_plots) {
-    plot->show(*m_displayed);
     plot->setStale(stale);
     plot->refreshNow();
   }
-  if (m_chain) m_chain->show(*m_displayed);
-  if (m_accuracy) {
-    m_accuracy->show(*m_displayed);
-    for (PlotView* plot : m_plots) plot->refreshNow();  // the overlay it may have changed
-  }
+  if (m_chain) m_chain->setTime(m_chain->time());  // the cursors again, on the refitted axes
   m_lastApplyCost = cost.elapsed();
   m_lastApply.start();
   showStatus(*m_displayed);

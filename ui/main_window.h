@@ -31,6 +31,7 @@ class ParameterPanel;
 class PlotView;
 class AccuracyView;
 class ChainView;
+class SceneView;
 class ReadoutPanel;
 class SimController;
 
@@ -152,7 +153,8 @@ class MainWindow : public QMainWindow {
   ChainView* m_chain = nullptr;        ///< the animation, when the scene shows it
   QWidget* m_side = nullptr;           ///< the parameter panel's scroll area
   QWidget* m_enlarged = nullptr;       ///< the view shown alone, if any
-  QList<QWidget*> m_views;             ///< every view of the scene, in its order
+  QList<SceneView*> m_sceneViews;      ///< every view of the scene, in its order
+  QList<QWidget*> m_views;             ///< their widgets, for the layout
   bool m_presentation = false;
   int m_presentationText = 0;          ///< text size in presentation mode [px]
   QFont m_deskFont;

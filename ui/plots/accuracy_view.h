@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include "ui/plots/scene_view.h"
 #include "ui/sim_types.h"
 
 class QComboBox;
@@ -18,16 +19,17 @@ class LogLogChart;
 /// The Accuracy scene's view: every method's state error against its run time (the chart of
 /// `grazelab-cli report`), points appearing as the worker finishes them, and a picker of the
 /// run to overlay on the u2(t) trace.
-class AccuracyView : public QWidget {
+class AccuracyView : public QWidget, public SceneView {
   Q_OBJECT
 
  public:
   explicit AccuracyView(QWidget* parent = nullptr);
 
   /// Shows the sweep of an update (nothing when it has none).
-  void show(const SimUpdate& update);
+  QWidget* widget() override { return this; }
+  void show(const SimUpdate& update) override;
   /// Presentation mode for its chart (ui/plots/log_log_chart.h).
-  void setPresentation(bool on, int textPixels);
+  void setPresentation(bool on, int textPixels) override;
   LogLogChart* chart() const { return m_chart; }
   /// The runs offered for the overlay, in the picker's order.
   int overlayCount() const;

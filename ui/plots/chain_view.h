@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/simulate.h"
+#include "ui/plots/scene_view.h"
 #include "ui/sim_types.h"
 
 class QCheckBox;
@@ -26,14 +27,15 @@ namespace grazelab::ui {
 /// linear interpolation between them) and its contacts, which flash. Play / pause (Space),
 /// speed, slow motion near contacts, step to the next or previous contact ([ and ]), and a
 /// time slider; the time it shows is the cursor of every time-based plot (timeChanged).
-class ChainView : public QWidget {
+class ChainView : public QWidget, public SceneView {
   Q_OBJECT
 
  public:
   explicit ChainView(QWidget* parent = nullptr);
 
-  void show(const SimUpdate& update);
-  void setPresentation(bool on, int textPixels);
+  QWidget* widget() override { return this; }
+  void show(const SimUpdate& update) override;
+  void setPresentation(bool on, int textPixels) override;
 
   double time() const { return m_time; }
   bool playing() const { return m_timer.isActive(); }

@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "ui/plots/scene_view.h"
 #include "ui/sim_types.h"
 
 class QLabel;
@@ -27,7 +28,7 @@ enum class Decimation { None, Trace, Scatter, Path };
 /// Shift + drag, arrow keys) and reset (R). It keeps the full data of every series and hands
 /// Qt Charts only what the pixels can show, re-decimating after each zoom, pan or resize.
 /// While the user has not zoomed or panned, the axes follow the data.
-class PlotView : public QChartView {
+class PlotView : public QChartView, public SceneView {
   Q_OBJECT
 
  public:
@@ -43,8 +44,7 @@ class PlotView : public QChartView {
   PlotView(const QString& title, const QString& xTitle, const QString& yTitle,
            QWidget* parent = nullptr);
 
-  /// Fills the plot from an update of the worker.
-  virtual void show(const SimUpdate& update) = 0;
+  QWidget* widget() override { return this; }
 
   /// Forgets zoom and pan: the axes follow the data again.
   void resetView();
@@ -62,11 +62,11 @@ class PlotView : public QChartView {
 
   /// The animation's time and state: time-based plots mark it (a line on u2(t), a dot on a
   /// phase portrait); others ignore it. Drawn at once, without re-decimating the data.
-  virtual void setTimeCursor(double t, const core::State& state);
+  void setTimeCursor(double t, const core::State& state) override;
 
   /// Presentation mode: text of `textPixels` (titles a little larger), lines at least 3 px,
   /// markers half again as large; off restores the desk look.
-  void setPresentation(bool on, int textPixels);
+  void setPresentation(bool on, int textPixels) override;
 
   /// Marks the plot as showing the last valid result, not the panel's parameters (greyed
   /// plot area and a note in its corner), or clears the mark.

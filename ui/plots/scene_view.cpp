@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-#include "ui/plots/make_plot.h"
+#include "ui/plots/scene_view.h"
 
+#include "ui/plots/accuracy_view.h"
+#include "ui/plots/chain_view.h"
 #include "ui/plots/curve_plot.h"
 #include "ui/plots/free_flight_plot.h"
 #include "ui/plots/phase_plot.h"
@@ -10,7 +12,7 @@
 
 namespace grazelab::ui {
 
-PlotView* makePlot(PlotKind kind, QWidget* parent) {
+SceneView* makeView(PlotKind kind, QWidget* parent) {
   switch (kind) {
     case PlotKind::TraceU2: return new TracePlot(parent);
     case PlotKind::PhaseU2V2: return new PhasePlot(PhasePlot::Mass::Two, parent);
@@ -24,8 +26,8 @@ PlotView* makePlot(PlotKind kind, QWidget* parent) {
     case PlotKind::FlightHistogram:
     case PlotKind::DetunedFlights:
     case PlotKind::ResonantFlights: return new CurvePlot(kind, parent);
-    case PlotKind::Chain:
-    case PlotKind::WorkPrecision: return nullptr;  // not a PlotView: MainWindow builds an AccuracyView
+    case PlotKind::Chain: return new ChainView(parent);
+    case PlotKind::WorkPrecision: return new AccuracyView(parent);
   }
   return nullptr;
 }
