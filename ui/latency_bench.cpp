@@ -6,6 +6,7 @@
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QGuiApplication>
+#include <QKeyEvent>
 #include <QSlider>
 #include <QTextStream>
 #include <QTimer>
@@ -17,6 +18,7 @@
 #include "ui/plots/chain_view.h"
 #include "ui/parameter_panel.h"
 #include "ui/plots/plot_view.h"
+#include "ui/plots/poincare_plot.h"
 #include "ui/sim_controller.h"
 #include "ui/slider_spin.h"
 
@@ -141,6 +143,37 @@ int runLatencyBenchmark(QTextStream& out) {
                .arg(chain ? QString::number(chainFps, 'f', 1) : QStringLiteral("-"), 13);
     out.flush();
   }
+
+  // 10^6 Poincaré points: a pan of the section, from the key press to the repainted plot
+  window.selectScene(findScene(window.scenes(), QStringLiteral("near-grazing")));
+  Params params = window.scene().defaults();
+  params.horizon = 1'000'000;
+  window.setParams(params);
+  waitForFinal(window, 300'000);
+  PlotView* section = nullptr;
+  for (PlotView* plot : window.plots()) {
+    if (qobject_cast<PoincarePlot*>(plot)) section = plot;
+  }
+  if (!section) return 0;
+  std::size_t held = 0;
+  for (const PlotView::Entry& entry : section->entries()) held += entry.data.size();
+  std::vector<double> pans;
+  for (int step = 0; step < 21; ++step) {
+    QElapsedTimer clock;
+    clock.start();
+    QKeyEvent key(QEvent::KeyPress, step % 2 == 0 ? Qt::Key_Right : Qt::Key_Left, Qt::NoModifier);
+    QCoreApplication::sendEvent(section, &key);
+    section->refreshNow();
+    section->viewport()->repaint();
+    if (step > 0) pans.push_back(clock.nsecsElapsed() * 1e-6);  // the first warms up
+  }
+  out << QStringLiteral("%1 Poincaré points held (near grazing, %2 contacts), %3 drawn: a pan "
+                        "takes %4 ms (median), %5 ms (slowest 10 %)\n")
+             .arg(held)
+             .arg(window.displayed()->result->cost.contacts)
+             .arg(section->drawnPointCount())
+             .arg(percentile(pans, 0.5), 0, 'f', 1)
+             .arg(percentile(pans, 0.9), 0, 'f', 1);
   return 0;
 }
 
