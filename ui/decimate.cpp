@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace grazelab::ui {
@@ -20,6 +21,20 @@ std::int64_t cell(double value, double low, double high, int pixels) {
 
 bool finitePoint(const QPointF& point) {
   return std::isfinite(point.x()) && std::isfinite(point.y());
+}
+
+// The index of the width x height cell a scatter point falls in (the right and top edges
+// belong to the last cell); nothing for a point outside the frame or not finite.
+std::optional<std::size_t> scatterCell(const QPointF& point, const PixelFrame& frame, int width,
+                                       int height) {
+  if (!finitePoint(point)) return std::nullopt;
+  if (point.x() < frame.xMin || point.x() > frame.xMax || point.y() < frame.yMin ||
+      point.y() > frame.yMax) {
+    return std::nullopt;
+  }
+  const auto column = std::min<std::int64_t>(cell(point.x(), frame.xMin, frame.xMax, width), width - 1);
+  const auto row = std::min<std::int64_t>(cell(point.y(), frame.yMin, frame.yMax, height), height - 1);
+  return std::size_t(row) * std::size_t(width) + std::size_t(column);
 }
 
 }  // namespace
@@ -73,17 +88,9 @@ QList<QPointF> decimateScatter(std::span<const QPointF> points, const PixelFrame
   const int height = std::max(frame.height, 1);
   std::vector<bool> taken(std::size_t(width) * std::size_t(height), false);
   for (const QPointF& point : points) {
-    if (!finitePoint(point)) continue;
-    if (point.x() < frame.xMin || point.x() > frame.xMax || point.y() < frame.yMin ||
-        point.y() > frame.yMax) {
-      continue;
-    }
-    // the right and top edges belong to the last cell
-    const auto column = std::min<std::int64_t>(cell(point.x(), frame.xMin, frame.xMax, width), width - 1);
-    const auto row = std::min<std::int64_t>(cell(point.y(), frame.yMin, frame.yMax, height), height - 1);
-    const std::size_t slot = std::size_t(row) * std::size_t(width) + std::size_t(column);
-    if (taken[slot]) continue;
-    taken[slot] = true;
+    const auto slot = scatterCell(point, frame, width, height);
+    if (!slot || taken[*slot]) continue;
+    taken[*slot] = true;
     out.append(point);
   }
   return out;
@@ -108,15 +115,9 @@ std::vector<QList<QPointF>> decimateScatterSets(const std::vector<std::span<cons
   };
   for (std::size_t set = 0; set < sets.size(); ++set) {
     for (std::size_t index = 0; index < sets[set].size(); ++index) {
-      const QPointF& point = sets[set][index];
-      if (!finitePoint(point)) continue;
-      if (point.x() < frame.xMin || point.x() > frame.xMax || point.y() < frame.yMin ||
-          point.y() > frame.yMax) {
-        continue;
-      }
-      const auto column = std::min<std::int64_t>(cell(point.x(), frame.xMin, frame.xMax, width), width - 1);
-      const auto row = std::min<std::int64_t>(cell(point.y(), frame.yMin, frame.yMax, height), height - 1);
-      Choice& slot = cells[std::size_t(row) * std::size_t(width) + std::size_t(column)];
+      const auto found = scatterCell(sets[set][index], frame, width, height);
+      if (!found) continue;
+      Choice& slot = cells[*found];
       const std::uint64_t hash = mix((std::uint64_t(set) << 40) ^ std::uint64_t(index));
       if (hash < slot.hash) slot = {hash, std::uint32_t(set), std::uint32_t(index)};
     }
