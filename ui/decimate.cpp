@@ -40,21 +40,81 @@ std::optional<std::size_t> scatterCell(const QPointF& point, const PixelFrame& f
 }  // namespace
 
 QList<QPointF> decimateTrace(std::span<const QPointF> points, const PixelFrame& frame) {
-  QList<QPointF> out;
-  if (points.empty()) return out;
-  const int width = std::max(frame.width, 1);
-  out.reserve(std::min<std::size_t>(points.size(), std::size_t(4 * width + 2)));
+  IncrementalDecimation once(IncrementalDecimation::Kind::Trace);
+  return once.update(points, frame, true);
+}
 
-  // the visible slice, widened by one point on each side
+QList<QPointF> decimateScatter(std::span<const QPointF> points, const PixelFrame& frame) {
+  IncrementalDecimation once(IncrementalDecimation::Kind::Scatter);
+  return once.update(points, frame, true);
+}
+
+QList<QPointF> decimatePath(std::span<const QPointF> points, const PixelFrame& frame) {
+  IncrementalDecimation once(IncrementalDecimation::Kind::Path);
+  return once.update(points, frame, true);
+}
+
+std::vector<QList<QPointF>> decimateScatterSets(const std::vector<std::span<const QPointF>>& sets,
+                                                const PixelFrame& frame) {
+  IncrementalScatterSets once;
+  return once.update(sets, frame, true);
+}
+
+void IncrementalDecimation::restart(const PixelFrame& frame) {
+  m_frame = frame;
+  m_frame.width = std::max(frame.width, 1);
+  m_frame.height = std::max(frame.height, 1);
+  m_started = true;
+  m_startedOver = true;
+  m_consumed = 0;
+  m_kept.clear();
+  m_traceFirst = 0;
+  m_openColumn = 0;
+  m_taken.assign(m_kind == Kind::Scatter ? std::size_t(m_frame.width) * std::size_t(m_frame.height) : 0,
+                 false);
+  m_lastColumn = 0;
+  m_lastRow = 0;
+  m_lastKept = SIZE_MAX;
+}
+
+const QList<QPointF>& IncrementalDecimation::update(std::span<const QPointF> data,
+                                                    const PixelFrame& frame, bool replaced) {
+  PixelFrame usable = frame;
+  usable.width = std::max(frame.width, 1);
+  usable.height = std::max(frame.height, 1);
+  m_startedOver = false;
+  if (replaced || !m_started || !(usable == m_frame) || data.size() < m_consumed) restart(usable);
+  switch (m_kind) {
+    case Kind::Trace: feedTrace(data); break;
+    case Kind::Scatter: feedScatter(data); break;
+    case Kind::Path: feedPath(data); break;
+  }
+  m_consumed = data.size();
+  return m_points;
+}
+
+// Columns from the first visible point (one before the frame's left edge) to one past its
+// right edge; the last column met may still grow, so it stays open: its points are not settled
+// into m_kept, and the next update resumes at its start.
+void IncrementalDecimation::feedTrace(std::span<const QPointF> points) {
+  const PixelFrame& frame = m_frame;
+  const int width = frame.width;
   const auto byX = [](const QPointF& point, double x) { return point.x() < x; };
   auto first = std::lower_bound(points.begin(), points.end(), frame.xMin, byX);
   auto last = std::upper_bound(points.begin(), points.end(), frame.xMax,
                                [](double x, const QPointF& point) { return x < point.x(); });
   if (first != points.begin()) --first;
   if (last != points.end()) ++last;
-
-  std::size_t columnStart = std::size_t(first - points.begin());
-  const std::size_t end = std::size_t(last - points.begin());
+  const auto firstIndex = std::size_t(first - points.begin());
+  // appended points moved the visible slice's start (all the data lay left of the frame)
+  if (m_consumed > 0 && firstIndex != m_traceFirst) restart(m_frame);
+  if (m_consumed == 0) {
+    m_traceFirst = firstIndex;
+    m_openColumn = firstIndex;
+  }
+  m_points = m_kept;
+  std::size_t columnStart = m_openColumn;
+  const std::size_t end = std::max(std::size_t(last - points.begin()), columnStart);
   while (columnStart < end) {
     const std::int64_t column = std::clamp<std::int64_t>(
         cell(points[columnStart].x(), frame.xMin, frame.xMax, width), -1, width);
@@ -69,88 +129,94 @@ QList<QPointF> decimateTrace(std::span<const QPointF> points, const PixelFrame& 
       if (points[index].y() > points[highest].y()) highest = index;
     }
     const std::size_t columnEnd = index - 1;
+    const bool open = index == end;  // the data may continue it
+    QList<QPointF>& out = open ? m_points : m_kept;
     // first, extremes in their order, last; no duplicates
-    std::size_t picks[4] = {columnStart, std::min(lowest, highest), std::max(lowest, highest),
-                            columnEnd};
+    const std::size_t picks[4] = {columnStart, std::min(lowest, highest), std::max(lowest, highest),
+                                  columnEnd};
     std::size_t previous = SIZE_MAX;
     for (std::size_t pick : picks) {
-      if (pick != previous) out.append(points[pick]);
+      if (pick != previous) {
+        out.append(points[pick]);
+        if (!open) m_points.append(points[pick]);
+      }
       previous = pick;
     }
+    if (open) m_openColumn = columnStart;
     columnStart = index;
   }
-  return out;
 }
 
-QList<QPointF> decimateScatter(std::span<const QPointF> points, const PixelFrame& frame) {
-  QList<QPointF> out;
-  const int width = std::max(frame.width, 1);
-  const int height = std::max(frame.height, 1);
-  std::vector<bool> taken(std::size_t(width) * std::size_t(height), false);
-  for (const QPointF& point : points) {
-    const auto slot = scatterCell(point, frame, width, height);
-    if (!slot || taken[*slot]) continue;
-    taken[*slot] = true;
-    out.append(point);
+void IncrementalDecimation::feedScatter(std::span<const QPointF> points) {
+  for (std::size_t index = m_consumed; index < points.size(); ++index) {
+    const auto slot = scatterCell(points[index], m_frame, m_frame.width, m_frame.height);
+    if (!slot || m_taken[*slot]) continue;
+    m_taken[*slot] = true;
+    m_kept.append(points[index]);
   }
-  return out;
+  m_points = m_kept;
 }
 
-std::vector<QList<QPointF>> decimateScatterSets(const std::vector<std::span<const QPointF>>& sets,
-                                                const PixelFrame& frame) {
-  const int width = std::max(frame.width, 1);
-  const int height = std::max(frame.height, 1);
-  // per cell: the point with the smallest hash so far, as (hash, set, index)
-  struct Choice {
-    std::uint64_t hash = ~std::uint64_t(0);
-    std::uint32_t set = 0;
-    std::uint32_t index = 0;
-  };
-  std::vector<Choice> cells(std::size_t(width) * std::size_t(height));
+// Each point that falls in the same cell as the point kept before it is dropped; the last
+// point is always drawn (kept aside: a later point may follow it).
+void IncrementalDecimation::feedPath(std::span<const QPointF> points) {
+  for (std::size_t index = m_consumed; index < points.size(); ++index) {
+    const QPointF& point = points[index];
+    if (!finitePoint(point)) continue;
+    const std::int64_t column = cell(point.x(), m_frame.xMin, m_frame.xMax, m_frame.width);
+    const std::int64_t row = cell(point.y(), m_frame.yMin, m_frame.yMax, m_frame.height);
+    if (m_lastKept == SIZE_MAX || column != m_lastColumn || row != m_lastRow) {
+      m_kept.append(point);
+      m_lastColumn = column;
+      m_lastRow = row;
+      m_lastKept = index;
+    }
+  }
+  m_points = m_kept;
+  const std::size_t lastIndex = points.size() - 1;
+  if (!points.empty() && lastIndex != m_lastKept && finitePoint(points[lastIndex])) {
+    m_points.append(points[lastIndex]);
+  }
+}
+
+const std::vector<QList<QPointF>>& IncrementalScatterSets::update(
+    const std::vector<std::span<const QPointF>>& sets, const PixelFrame& frame, bool replaced) {
+  PixelFrame usable = frame;
+  usable.width = std::max(frame.width, 1);
+  usable.height = std::max(frame.height, 1);
+  bool shrunk = m_consumed.size() != sets.size();
+  for (std::size_t set = 0; set < sets.size() && !shrunk; ++set) {
+    shrunk = sets[set].size() < m_consumed[set];
+  }
+  m_startedOver = replaced || !m_started || !(usable == m_frame) || shrunk;
+  if (m_startedOver) {
+    m_frame = usable;
+    m_started = true;
+    m_consumed.assign(sets.size(), 0);
+    m_cells.assign(std::size_t(usable.width) * std::size_t(usable.height), Choice{});
+  }
   auto mix = [](std::uint64_t x) {  // splitmix64: a fixed, well-spread hash
     x += 0x9e3779b97f4a7c15ULL;
     x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
     x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
     return x ^ (x >> 31);
   };
+  // per cell: the point with the smallest hash so far, as (hash, set, index)
   for (std::size_t set = 0; set < sets.size(); ++set) {
-    for (std::size_t index = 0; index < sets[set].size(); ++index) {
-      const auto found = scatterCell(sets[set][index], frame, width, height);
+    for (std::size_t index = m_consumed[set]; index < sets[set].size(); ++index) {
+      const auto found = scatterCell(sets[set][index], m_frame, m_frame.width, m_frame.height);
       if (!found) continue;
-      Choice& slot = cells[*found];
+      Choice& slot = m_cells[*found];
       const std::uint64_t hash = mix((std::uint64_t(set) << 40) ^ std::uint64_t(index));
       if (hash < slot.hash) slot = {hash, std::uint32_t(set), std::uint32_t(index)};
     }
+    m_consumed[set] = sets[set].size();
   }
-  std::vector<QList<QPointF>> out(sets.size());
-  for (const Choice& choice : cells) {
-    if (choice.hash != ~std::uint64_t(0)) out[choice.set].append(sets[choice.set][choice.index]);
+  m_points.assign(sets.size(), QList<QPointF>());
+  for (const Choice& choice : m_cells) {
+    if (choice.hash != ~std::uint64_t(0)) m_points[choice.set].append(sets[choice.set][choice.index]);
   }
-  return out;
-}
-
-QList<QPointF> decimatePath(std::span<const QPointF> points, const PixelFrame& frame) {
-  QList<QPointF> out;
-  if (points.empty()) return out;
-  const int width = std::max(frame.width, 1);
-  const int height = std::max(frame.height, 1);
-  std::int64_t lastColumn = 0;
-  std::int64_t lastRow = 0;
-  bool any = false;
-  for (std::size_t index = 0; index < points.size(); ++index) {
-    const QPointF& point = points[index];
-    if (!finitePoint(point)) continue;
-    const std::int64_t column = cell(point.x(), frame.xMin, frame.xMax, width);
-    const std::int64_t row = cell(point.y(), frame.yMin, frame.yMax, height);
-    const bool isLast = index + 1 == points.size();
-    if (!any || column != lastColumn || row != lastRow || isLast) {
-      out.append(point);
-      lastColumn = column;
-      lastRow = row;
-      any = true;
-    }
-  }
-  return out;
+  return m_points;
 }
 
 }  // namespace grazelab::ui

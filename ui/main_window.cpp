@@ -34,6 +34,7 @@
 #include "ui/plots/chain_view.h"
 #include "ui/plots/scene_view.h"
 #include "ui/plots/plot_view.h"
+#include "ui/plots/phase_plot.h"
 #include "ui/plots/poincare_plot.h"
 #include "ui/plots/trace_plot.h"
 #include "ui/readout_panel.h"
@@ -248,6 +249,15 @@ void MainWindow::buildPlots() {
       if (qobject_cast<PoincarePlot*>(plot)) {
         connect(plot, &PlotView::clickedAt, this, [this](QPointF value) { startFromSection(value); });
       }
+      auto* phase = qobject_cast<PhasePlot*>(plot);
+      if (phase && phase->mass() == PhasePlot::Mass::Two) {
+        connect(plot, &PlotView::clickedAt, this, [this, phase](QPointF value) {
+          // 8 pixels either side of the stop line count as on it
+          const double perPixel = std::abs(phase->chart()->mapToValue(QPointF(100, 0)).x() -
+                                           phase->chart()->mapToValue(QPointF(0, 0)).x()) / 100;
+          startFromStopLine(value, 8 * perPixel);
+        });
+      }
     }
   }
   if (m_accuracy) {
@@ -434,17 +444,47 @@ bool MainWindow::startFromSection(QPointF u1v1) {
     return false;
   }
   start.v2 = -std::sqrt(2 * rest / model.m2);  // leaving the stop, as after an impact
-  m_clickedStart = start;
-  resetViews();
-  recompute();
+  startFromClick(start);
   return true;
+}
+
+bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
+  if (!m_displayed) return false;
+  const core::Model& model = m_displayed->request->model;
+  if (!(std::abs(u2v2.x() - model.gap) <= tolerance)) {
+    m_status->setText(tr("Click on the stop line u₂ = d (dashed) to start mass 2 from the stop "
+                         "at that speed."));
+    return false;
+  }
+  const core::State& shown = m_displayed->request->request.initial;
+  const double level = core::energy(model, shown);
+  core::State start{shown.u1, model.gap, 0.0, -std::abs(u2v2.y())};
+  // what is left for mass 1's speed once its position and mass 2 take their share
+  const double rest = level - core::energy(model, start);
+  if (!(rest >= 0)) {
+    m_status->setText(tr("No state of this energy (E = %1) with mass 2 leaving the stop at "
+                         "speed %2 and mass 1 at u₁ = %3: click nearer v₂ = 0.")
+                          .arg(level, 0, 'g', 6)
+                          .arg(std::abs(u2v2.y()), 0, 'g', 4)
+                          .arg(shown.u1, 0, 'g', 4));
+    return false;
+  }
+  start.v1 = std::copysign(std::sqrt(2 * rest / model.m1), shown.v1);
+  startFromClick(start);
+  return true;
+}
+
+void MainWindow::startFromClick(const core::State& start) {
+  m_clickedStart = start;
+  followDataFromNextUpdate();
+  recompute();
 }
 
 void MainWindow::onParamsChanged(const Params& params) {
   m_clickedStart.reset();  // an edit goes back to the scene's own start
   m_sceneParams[std::size_t(m_sceneIndex)] = params;
   // new data in a zoomed window may lie outside it and look blank: the plots fit it again
-  resetViews();
+  followDataFromNextUpdate();
   recompute();
 }
 
@@ -539,6 +579,7 @@ void MainWindow::applyPending() {
   // after every show: the accuracy view may have changed the trace's overlay
   for (PlotView* plot : m_plots) {
     plot->setStale(stale);
+    plot->setGrowing(!m_displayed->final);
     plot->refreshNow();
   }
   if (m_chain) m_chain->setTime(m_chain->time());  // the cursors again, on the refitted axes
@@ -596,6 +637,10 @@ void MainWindow::setProgressVisible(bool visible) {
 
 QString MainWindow::statusText() const { return m_status->text(); }
 QString MainWindow::problem() const { return m_problem; }
+
+void MainWindow::followDataFromNextUpdate() {
+  for (PlotView* plot : m_plots) plot->followDataFromNextUpdate();
+}
 
 void MainWindow::resetViews() {
   for (PlotView* plot : m_plots) plot->resetView();

@@ -102,6 +102,11 @@ class MainWindow : public QMainWindow {
   /// stop) on the energy level of the run shown. False (and why, on the status line) when no
   /// state of that energy lies there. The next parameter edit goes back to the scene's start.
   bool startFromSection(QPointF u1v1);
+  /// Starts a run from a click on the (u2, v2) portrait within `tolerance` of the stop line
+  /// u2 = d: mass 2 leaves the stop at speed |v2| (v2 <= 0), mass 1 keeps the position of the
+  /// run's start and takes the speed (in the same direction) that keeps the energy level.
+  /// False (and why, on the status line) off the line or when no such state exists.
+  bool startFromStopLine(QPointF u2v2, double tolerance);
   /// Shows or hides the parameter panel (F9).
   void setPanelVisible(bool visible);
 
@@ -121,6 +126,10 @@ class MainWindow : public QMainWindow {
   void onParamsChanged(const Params& params);
   void onUpdate(const SimUpdate& update);
   void applyPending();
+  /// Runs from a clicked state until the next parameter edit.
+  void startFromClick(const core::State& start);
+  /// Every plot fits the next result (after an edit; the one on screen is not redrawn).
+  void followDataFromNextUpdate();
   void showProblem(const QString& message);
   void showStatus(const SimUpdate& update);
   void setProgressVisible(bool visible);

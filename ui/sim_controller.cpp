@@ -64,7 +64,34 @@ void SimController::cancel() {
 void SimController::receive(const SimUpdate& update) {
   if (update.id != m_latestId) return;  // stale: a newer request exists
   if (update.final && !update.trustPending) m_busy = false;
-  emit updated(update);
+  if (!update.chunk) {
+    m_run.reset();  // the final (whole) result, or a sweep's update that carries it
+    emit updated(update);
+    return;
+  }
+  if (!m_run || m_runId != update.id) {
+    m_run = std::make_shared<core::Result>();
+    m_runId = update.id;
+  }
+  appendChunk(*m_run, *update.chunk);
+  SimUpdate assembled = update;
+  assembled.chunk.reset();
+  assembled.result = m_run;
+  emit updated(assembled);
+}
+
+void appendChunk(core::Result& run, const core::Result& chunk) {
+  run.events.insert(run.events.end(), chunk.events.begin(), chunk.events.end());
+  run.poincare.insert(run.poincare.end(), chunk.poincare.begin(), chunk.poincare.end());
+  run.freeFlights.insert(run.freeFlights.end(), chunk.freeFlights.begin(), chunk.freeFlights.end());
+  run.samples.insert(run.samples.end(), chunk.samples.begin(), chunk.samples.end());
+  run.samplesTruncated = chunk.samplesTruncated;
+  run.tFinal = chunk.tFinal;
+  run.final = chunk.final;
+  run.initialEnergy = chunk.initialEnergy;
+  run.cost = chunk.cost;
+  run.stop = chunk.stop;
+  run.message = chunk.message;
 }
 
 }  // namespace grazelab::ui

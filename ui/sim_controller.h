@@ -22,7 +22,9 @@ struct SimMailbox;
 /// submit() stamps the request with an increasing id, stops the running job through its
 /// std::stop_source (safe from any thread), puts the request in a one-slot mailbox and queues a
 /// wake-up for the worker. Updates come back by queued signal; any whose id is not the latest
-/// are dropped here, so the display only ever sees the newest request's results.
+/// are dropped here, so the display only ever sees the newest request's results. Partial
+/// updates bring only what is new (SimUpdate::chunk): the controller keeps the run so far and
+/// appends each chunk to it, so a run of n contacts costs O(n) to hand over, not O(n^2).
 class SimController : public QObject {
   Q_OBJECT
 
@@ -57,8 +59,14 @@ class SimController : public QObject {
   SimWorker* m_worker = nullptr;
   std::shared_ptr<SimMailbox> m_mailbox;
   std::uint64_t m_latestId = 0;
+  /// the run so far of request m_runId, grown by each partial update, dropped at the final
+  std::shared_ptr<core::Result> m_run;
+  std::uint64_t m_runId = 0;
   bool m_busy = false;
   bool m_synchronous = false;
 };
+
+/// Appends a partial update's chunk (new items and present totals) to the run so far.
+void appendChunk(core::Result& run, const core::Result& chunk);
 
 }  // namespace grazelab::ui

@@ -57,7 +57,13 @@ struct SimRequest {
 /// read-only between the worker's copy and the display, never written after it is sent.
 struct SimUpdate {
   std::uint64_t id = 0;
+  /// The run so far. A partial update leaves the worker without it, carrying only `chunk`;
+  /// the controller appends the chunk to its copy of the run (on the GUI thread, where the
+  /// views read it) and sets this. The final update carries the worker's whole result.
   std::shared_ptr<const core::Result> result;
+  /// What the run added since the worker's previous report: the new events, points, flights
+  /// and samples, and the run's present totals (time, state, cost, stop reason).
+  std::shared_ptr<const core::Result> chunk;
   double progress = 0;  ///< fraction of the requested work done, [0, 1]
   bool final = false;   ///< the run is over (complete, cancelled or invalid)
   std::shared_ptr<const SimRequest> request;  ///< what was asked

@@ -63,6 +63,37 @@ void sweepAccuracy(const SimRequest& request, SimUpdate last, std::stop_token st
   report(last);
 }
 
+// How many of each kind of item a run had when it was last reported.
+struct ResultCounts {
+  std::size_t events = 0;
+  std::size_t poincare = 0;
+  std::size_t freeFlights = 0;
+  std::size_t samples = 0;
+};
+
+ResultCounts countsOf(const core::Result& result) {
+  return {result.events.size(), result.poincare.size(), result.freeFlights.size(),
+          result.samples.size()};
+}
+
+// The items past `sent`, with the run's present totals.
+core::Result newSince(const core::Result& result, const ResultCounts& sent) {
+  core::Result chunk;
+  chunk.events.assign(result.events.begin() + std::ptrdiff_t(sent.events), result.events.end());
+  chunk.poincare.assign(result.poincare.begin() + std::ptrdiff_t(sent.poincare), result.poincare.end());
+  chunk.freeFlights.assign(result.freeFlights.begin() + std::ptrdiff_t(sent.freeFlights),
+                           result.freeFlights.end());
+  chunk.samples.assign(result.samples.begin() + std::ptrdiff_t(sent.samples), result.samples.end());
+  chunk.samplesTruncated = result.samplesTruncated;
+  chunk.tFinal = result.tFinal;
+  chunk.final = result.final;
+  chunk.initialEnergy = result.initialEnergy;
+  chunk.cost = result.cost;
+  chunk.stop = result.stop;
+  chunk.message = result.message;
+  return chunk;
+}
+
 }  // namespace
 
 SimWorker::SimWorker(std::shared_ptr<SimMailbox> mailbox) : m_mailbox(std::move(mailbox)) {}
@@ -112,6 +143,7 @@ void SimWorker::run(const SimRequest& request, std::stop_token stop, double chun
   QElapsedTimer sinceReport;
   sinceReport.start();
   double copySeconds = 0;
+  ResultCounts sent;
   bool done = simulator.done();
   while (!done) {
     clock.start();
@@ -119,13 +151,15 @@ void SimWorker::run(const SimRequest& request, std::stop_token stop, double chun
     const double seconds = std::max(clock.nsecsElapsed() * 1e-9, 1e-6);
     if (done || stop.stop_requested()) break;
     budget = core::nextChunkContacts(budget, seconds, chunkSeconds);
-    // a partial result is a full copy: when copies grow costly, send them less often so
-    // that copying never takes more than a fifth of the worker's time
+    // a partial update carries what is new since the last one; if even that grows costly
+    // (many samples per contact), it is sent less often: copying never takes more than a
+    // fifth of the worker's time
     if (sinceReport.nsecsElapsed() * 1e-9 < std::max(chunkSeconds, 4 * copySeconds)) continue;
     clock.start();
     SimUpdate partial;
     partial.id = request.id;
-    partial.result = std::make_shared<const core::Result>(simulator.result());
+    partial.chunk = std::make_shared<const core::Result>(newSince(simulator.result(), sent));
+    sent = countsOf(simulator.result());
     partial.progress = simulator.progress();
     partial.request = asked;
     copySeconds = clock.nsecsElapsed() * 1e-9;

@@ -85,7 +85,8 @@ int main(int argc, char* argv[]) {
                                 QApplication::translate("main", "Snapshot size in pixels, WxH."),
                                 QStringLiteral("WxH"), QStringLiteral("1600x1000"));
   const QCommandLineOption bench(QStringLiteral("bench"),
-                                 QApplication::translate("main", "Measure plot latency and drag frame rate."));
+                                 QApplication::translate("main", "Measure plot latency and drag frame rate (of every "
+                                                                 "scene, or of the one named by --scene)."));
   const QCommandLineOption presentation(
       QStringLiteral("presentation"),
       QApplication::translate("main", "Open in presentation mode (full screen, large text; F5 "
@@ -99,7 +100,7 @@ int main(int argc, char* argv[]) {
     for (const QString& name : grazelab::ui::sceneNames()) out << name << '\n';
     return 0;
   }
-  if (parser.isSet(bench)) return grazelab::ui::runLatencyBenchmark(out);
+  if (parser.isSet(bench)) return grazelab::ui::runLatencyBenchmark(out, parser.value(scene));
   if (parser.isSet(snapshot)) {
     const QStringList parts = parser.value(size).split(QLatin1Char('x'));
     const QSize pixels = parts.size() == 2 ? QSize(parts[0].toInt(), parts[1].toInt()) : QSize();

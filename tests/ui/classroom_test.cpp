@@ -349,6 +349,41 @@ class ClassroomTest : public QObject {
     QCOMPARE(m_window->displayed()->request->request.initial.u1, glo.u1);
   }
 
+  // the (u2, v2) portrait: a click on the stop line starts mass 2 from the stop at the
+  // clicked speed, mass 1 where the run started, on the same energy
+  void aClickOnTheStopLineStartsARunThere() {
+    PlotView* phase = plotTitled(*m_window, QStringLiteral("Phase portrait of mass 2"));
+    QVERIFY(phase);
+    QTRY_VERIFY(phase->entries().front().series->count() > 0);
+    const grazelab::core::Model model = m_window->displayed()->request->model;
+    const grazelab::core::State shown = m_window->displayed()->request->request.initial;
+    const double level = grazelab::core::energy(model, shown);
+    // a speed the run itself reached at the stop: the largest |v2| of its path there
+    double speed = 0;
+    for (const QPointF& point : phase->entries().front().data) {
+      if (std::abs(point.x() - model.gap) < 1e-9 * model.gap) speed = std::max(speed, std::abs(point.y()));
+    }
+    QVERIFY(speed > 0);
+    const QPointF target(model.gap, -0.5 * speed);
+    const QPoint at = phase->chart()->mapToPosition(target).toPoint() + QPoint(3, 0);  // 3 px off
+    QTest::mouseClick(phase->viewport(), Qt::LeftButton, {}, at);
+    QVERIFY(waitForLatestFinal(*m_window));
+    const grazelab::core::State start = m_window->displayed()->request->request.initial;
+    QCOMPARE(start.u2, model.gap);
+    QCOMPARE(start.u1, shown.u1);
+    const double pixel = (axis(*phase, Qt::Vertical)->max() - axis(*phase, Qt::Vertical)->min()) / 100;
+    QVERIFY(std::abs(start.v2 - target.y()) < pixel);
+    QVERIFY(std::abs(grazelab::core::energy(model, start) - level) < 1e-12 * level);
+    QVERIFY(m_window->displayed()->result->cost.contacts > 0);
+    // off the line, or a speed beyond the energy: refused with a reason, nothing recomputed
+    const std::uint64_t before = m_window->displayed()->id;
+    QVERIFY(!m_window->startFromStopLine(QPointF(0.5 * model.gap, -0.5 * speed), 0.01 * model.gap));
+    QVERIFY(m_window->statusText().contains(QStringLiteral("Click on the stop line")));
+    QVERIFY(!m_window->startFromStopLine(QPointF(model.gap, -100 * speed), 0.01 * model.gap));
+    QVERIFY(m_window->statusText().contains(QStringLiteral("No state of this energy")));
+    QCOMPARE(m_window->displayed()->id, before);
+  }
+
   // presentation mode: text of at least 1/50 of the screen height, lines of 3 px or more, the
   // scenes in the order of the note on PageDown / PageUp, a plot enlarged by a double-click
   void presentationModeIsReadableAndSteppable() {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <span>
 #include <vector>
 
@@ -157,6 +158,61 @@ class DecimateTest : public QObject {
                             int(std::floor((out[i].y() + 1.1) / 2.2 * 200)) ==
                                 int(std::floor((out[i - 1].y() + 1.1) / 2.2 * 200));
       QVERIFY(!sameCell);
+    }
+  }
+
+  // A run's points arrive in chunks: each kind, fed only the new points, must give exactly
+  // what the one-shot reduction of everything so far gives, without starting over.
+  void appendedPointsReduceAsTheWholeData() {
+    using grazelab::ui::IncrementalDecimation;
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<QPointF> trace;   // x rising from left of the frame to right of it
+    std::vector<QPointF> cloud;   // a scatter and a path, anywhere (some outside)
+    const PixelFrame frame{10, 90, -1, 1, 300, 120};
+    IncrementalDecimation traceCut(IncrementalDecimation::Kind::Trace);
+    IncrementalDecimation scatterCut(IncrementalDecimation::Kind::Scatter);
+    IncrementalDecimation pathCut(IncrementalDecimation::Kind::Path);
+    int restartsInside = 0;
+    for (int chunk = 0; chunk < 120; ++chunk) {
+      const bool allLeft = !trace.empty() && trace.back().x() < frame.xMin;
+      const int count = 1 + int(unit(random) * 900);
+      for (int i = 0; i < count; ++i) {
+        trace.emplace_back(100.0 * double(trace.size()) / 45'000.0, std::sin(double(trace.size())) * unit(random));
+        cloud.emplace_back(100 * unit(random), 2.4 * unit(random) - 1.2);
+      }
+      QCOMPARE(traceCut.update(trace, frame, chunk == 0), decimateTrace(trace, frame));
+      QCOMPARE(scatterCut.update(cloud, frame, chunk == 0), decimateScatter(cloud, frame));
+      QCOMPARE(pathCut.update(cloud, frame, chunk == 0), decimatePath(cloud, frame));
+      if (chunk > 0) {
+        QVERIFY(!scatterCut.startedOver());
+        QVERIFY(!pathCut.startedOver());
+        restartsInside += traceCut.startedOver() && !allLeft ? 1 : 0;
+      }
+    }
+    // the trace starts over only while all its points lie left of the frame (its visible
+    // slice's first point moves); once inside, never
+    QCOMPARE(restartsInside, 0);
+    QVERIFY(trace.back().x() > frame.xMax);
+    // a new frame (a zoom) or replaced data start over
+    const PixelFrame zoomed{20, 40, -1, 1, 300, 120};
+    QCOMPARE(traceCut.update(trace, zoomed, false), decimateTrace(trace, zoomed));
+    QVERIFY(traceCut.startedOver());
+  }
+
+  void appendedSetsReduceAsTheWholeSets() {
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<std::vector<QPointF>> sets(5);
+    const PixelFrame frame{0, 1, 0, 1, 80, 60};
+    grazelab::ui::IncrementalScatterSets cut;
+    for (int chunk = 0; chunk < 60; ++chunk) {
+      // the bins fill one after the other, as a run's colour bins do
+      auto& set = sets[std::size_t(std::min(4, chunk / 12))];
+      for (int i = 0; i < 500; ++i) set.emplace_back(unit(random), unit(random));
+      std::vector<std::span<const QPointF>> spans(sets.begin(), sets.end());
+      QCOMPARE(cut.update(spans, frame, chunk == 0), decimateScatterSets(spans, frame));
+      if (chunk > 0) QVERIFY(!cut.startedOver());
     }
   }
 };

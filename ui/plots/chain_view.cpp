@@ -210,24 +210,32 @@ ChainView::ChainView(QWidget* parent) : QWidget(parent) {
 
 void ChainView::show(const SimUpdate& update) {
   m_result = update.result;
-  m_model = update.request->model;
   const core::Result& result = *m_result;
-  const double T2 = core::computeModes(m_model).T2;
-  m_rate = T2 / 2;
-  m_nearContact = T2 / 40;
-  m_end = result.samples.empty() ? 0 : result.samples.back().t;
-  m_amplitude = m_model.gap;
-  for (const core::Sample& sample : result.samples) {
-    m_amplitude = std::max({m_amplitude, std::abs(sample.state.u1), std::abs(sample.state.u2)});
+  if (m_taken.startsOver(update)) {
+    m_model = update.request->model;
+    const double T2 = core::computeModes(m_model).T2;
+    m_rate = T2 / 2;
+    m_nearContact = T2 / 40;
+    m_amplitude = m_model.gap;
+    m_contactTimes.clear();
+    m_contactTypes.clear();
   }
-  m_contactTimes.clear();
-  m_contactTypes.clear();
-  for (const core::Event& event : result.events) {
-    if (event.t > m_end) break;
+  // only what the run added since the last update
+  for (std::size_t index = m_taken.samples; index < result.samples.size(); ++index) {
+    const core::State& state = result.samples[index].state;
+    m_amplitude = std::max({m_amplitude, std::abs(state.u1), std::abs(state.u2)});
+  }
+  m_taken.samples = result.samples.size();
+  m_end = result.samples.empty() ? 0 : result.samples.back().t;
+  // contacts within the samples' window; later ones wait for the samples that reach them
+  std::size_t next = m_taken.events;
+  for (; next < result.events.size() && result.events[next].t <= m_end; ++next) {
+    const core::Event& event = result.events[next];
     if (!core::isContact(event.type)) continue;
     m_contactTimes.push_back(event.t);
     m_contactTypes.push_back(event.type);
   }
+  m_taken.events = next;
   setTime(std::min(m_time, m_end));
 }
 

@@ -84,6 +84,7 @@ class ChainView : public QWidget, public SceneView {
   QElapsedTimer m_clockTimer;
   bool m_presentation = false;
   std::int64_t m_framesPlayed = 0;
+  RunProgress m_taken;  ///< samples and events already taken in
 };
 
 }  // namespace grazelab::ui

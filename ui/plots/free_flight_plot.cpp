@@ -27,18 +27,26 @@ FreeFlightPlot::FreeFlightPlot(QWidget* parent)
 
 void FreeFlightPlot::show(const SimUpdate& update) {
   const core::Result& result = *update.result;
+  if (m_taken.startsOver(update)) {
+    startNewRun();
+    setData(m_flights, {});
+  }
   std::vector<QPointF> flights;
-  flights.reserve(result.freeFlights.size());
-  for (const core::FreeFlight& flight : result.freeFlights) {
+  flights.reserve(result.freeFlights.size() - m_taken.freeFlights);
+  for (std::size_t index = m_taken.freeFlights; index < result.freeFlights.size(); ++index) {
+    const core::FreeFlight& flight = result.freeFlights[index];
     flights.emplace_back(double(flight.contactIndex), flight.duration);
   }
+  m_taken.freeFlights = result.freeFlights.size();
+  appendData(m_flights, flights);
+  const std::vector<QPointF>& all = entries()[std::size_t(m_flights)].data;
   // T2 of the run's own chain (the model travels with the request, not in the result)
   const double T2 = core::computeModes(update.request->model).T2;
-  const double last = flights.empty() ? 1.0 : std::max(1.0, flights.back().x());
+  const double last = all.empty() ? 1.0 : std::max(1.0, all.back().x());
   // many flights per pixel column: small translucent dots, so that their density shows as
   // shade instead of a solid block of overlapping squares
   auto* series = qobject_cast<QScatterSeries*>(entries()[std::size_t(m_flights)].series);
-  const bool dense = double(flights.size()) > 2.0 * std::max(1, width());
+  const bool dense = double(all.size()) > 2.0 * std::max(1, width());
   const double size = dense ? 2.5 : 5.0;
   if (series->markerSize() != size) {
     QColor color = colors::kTrace;
@@ -47,7 +55,6 @@ void FreeFlightPlot::show(const SimUpdate& update) {
     series->setColor(color);
     useLightMarker(series);
   }
-  setData(m_flights, std::move(flights));
   setData(m_period, {QPointF(0, T2), QPointF(last, T2)});
   scheduleRefresh();
 }

@@ -16,6 +16,7 @@ class FreeFlightPlot final : public PlotView {
  private:
   int m_flights = 0;
   int m_period = 0;
+  RunProgress m_taken;  ///< flights already drawn
 };
 
 }  // namespace grazelab::ui

@@ -31,7 +31,9 @@ PhasePlot::PhasePlot(Mass mass, QWidget* parent)
   m_start = addEntry(makeScatter(tr("start"), colors::kImpact, 8), Decimation::None);
   setToolTip(mass == Mass::Two
                  ? tr("Velocity v₂ of mass 2 against its displacement u₂. At the stop (dashed, "
-                      "u₂ = d) an impact flips v₂ to −v₂: the vertical jumps.")
+                      "u₂ = d) an impact flips v₂ to −v₂: the vertical jumps. Click on the stop "
+                      "line to start a run there: mass 2 leaves the stop at the clicked speed, "
+                      "mass 1 keeps its start position, on the same energy; edit any value to go back.")
                  : tr("Velocity v₁ of mass 1 against its displacement u₁. Mass 1 never touches "
                       "the stop; it feels the impacts through the spring k₂."));
 }
@@ -50,23 +52,28 @@ void PhasePlot::setTimeCursor(double, const core::State& state) {
 
 void PhasePlot::show(const SimUpdate& update) {
   const core::Result& result = *update.result;
-  std::vector<QPointF> path;
-  path.reserve(result.samples.size());
-  double vLow = 0;
-  double vHigh = 0;
-  for (const core::Sample& sample : result.samples) {
-    const core::State& state = sample.state;
-    path.push_back(m_mass == Mass::Two ? QPointF(state.u2, state.v2) : QPointF(state.u1, state.v1));
-    vLow = std::min(vLow, path.back().y());
-    vHigh = std::max(vHigh, path.back().y());
+  if (m_taken.startsOver(update)) {
+    startNewRun();
+    setData(m_path, {});
+    m_vLow = 0;
+    m_vHigh = 0;
   }
+  std::vector<QPointF> path;
+  path.reserve(result.samples.size() - m_taken.samples);
+  for (std::size_t index = m_taken.samples; index < result.samples.size(); ++index) {
+    const core::State& state = result.samples[index].state;
+    path.push_back(m_mass == Mass::Two ? QPointF(state.u2, state.v2) : QPointF(state.u1, state.v1));
+    m_vLow = std::min(m_vLow, path.back().y());
+    m_vHigh = std::max(m_vHigh, path.back().y());
+  }
+  m_taken.samples = result.samples.size();
+  appendData(m_path, path);
   const core::State& initial = update.request->request.initial;
   setData(m_start, {m_mass == Mass::Two ? QPointF(initial.u2, initial.v2)
                                         : QPointF(initial.u1, initial.v1)});
-  setData(m_path, std::move(path));
   if (m_stop >= 0) {
     const double gap = update.request->model.gap;
-    setData(m_stop, {QPointF(gap, vLow), QPointF(gap, vHigh)});
+    setData(m_stop, {QPointF(gap, m_vLow), QPointF(gap, m_vHigh)});
   }
   scheduleRefresh();
 }

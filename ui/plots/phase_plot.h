@@ -15,6 +15,7 @@ class PhasePlot final : public PlotView {
   explicit PhasePlot(Mass mass, QWidget* parent = nullptr);
   void show(const SimUpdate& update) override;
   void setTimeCursor(double t, const core::State& state) override;
+  Mass mass() const { return m_mass; }
 
  private:
   Mass m_mass;
@@ -22,6 +23,9 @@ class PhasePlot final : public PlotView {
   int m_stop = -1;
   int m_start = 0;
   QXYSeries* m_cursor = nullptr;  ///< the animation's state, made on first use
+  RunProgress m_taken;  ///< samples already drawn
+  double m_vLow = 0;    ///< the velocity range so far (the stop line spans it)
+  double m_vHigh = 0;
 };
 
 }  // namespace grazelab::ui

@@ -120,7 +120,19 @@ int PlotView::addEntry(QXYSeries* series, Decimation decimation, bool inBounds) 
   series->attachAxis(m_axisY);
   const auto* scatter = qobject_cast<QScatterSeries*>(series);
   const double base = scatter ? scatter->markerSize() : series->pen().widthF();
-  m_entries.push_back({series, {}, decimation, inBounds, base});
+  Entry entry;
+  entry.series = series;
+  entry.decimation = decimation;
+  entry.inBounds = inBounds;
+  entry.baseWidth = base;
+  using Kind = IncrementalDecimation::Kind;
+  switch (decimation) {
+    case Decimation::None: break;
+    case Decimation::Trace: entry.reduced = std::make_shared<IncrementalDecimation>(Kind::Trace); break;
+    case Decimation::Scatter: entry.reduced = std::make_shared<IncrementalDecimation>(Kind::Scatter); break;
+    case Decimation::Path: entry.reduced = std::make_shared<IncrementalDecimation>(Kind::Path); break;
+  }
+  m_entries.push_back(std::move(entry));
   if (m_presentation) {
     m_presentation = false;  // applies the look to the new series too
     setPresentation(true, chart()->legend()->font().pixelSize());
@@ -167,7 +179,15 @@ void PlotView::setPresentation(bool on, int textPixels) {
 }
 
 void PlotView::setData(int index, std::vector<QPointF> data) {
-  m_entries[std::size_t(index)].data = std::move(data);
+  Entry& entry = m_entries[std::size_t(index)];
+  entry.data = std::move(data);
+  entry.replaced = true;
+  entry.boundsCounted = 0;
+}
+
+void PlotView::appendData(int index, std::span<const QPointF> points) {
+  Entry& entry = m_entries[std::size_t(index)];
+  entry.data.insert(entry.data.end(), points.begin(), points.end());
 }
 
 void PlotView::joinScatters(std::vector<int> indices) { m_joinedScatters = std::move(indices); }
@@ -235,28 +255,40 @@ void PlotView::appendCsv(QString& csv) const {
   }
 }
 
-void PlotView::fitAxes() {
-  if (m_fixedRange) {
-    setRangeWithTicks(m_axisX, m_fixedRange->left(), m_fixedRange->right());
-    setRangeWithTicks(m_axisY, m_fixedRange->top(), m_fixedRange->bottom());
-    return;
-  }
-  double xLow = std::numeric_limits<double>::infinity();
-  double xHigh = -xLow;
-  double yLow = xLow;
-  double yHigh = -xLow;
-  auto take = [&](const QPointF& point) {
-    if (!std::isfinite(point.x()) || !std::isfinite(point.y())) return;
-    xLow = std::min(xLow, point.x());
-    xHigh = std::max(xHigh, point.x());
-    yLow = std::min(yLow, point.y());
-    yHigh = std::max(yHigh, point.y());
-  };
-  for (const Entry& entry : m_entries) {
+void PlotView::Extent::take(const QPointF& point) {
+  if (!std::isfinite(point.x()) || !std::isfinite(point.y())) return;
+  xLow = std::min(xLow, point.x());
+  xHigh = std::max(xHigh, point.x());
+  yLow = std::min(yLow, point.y());
+  yHigh = std::max(yHigh, point.y());
+}
+
+void PlotView::Extent::take(const Extent& other) {
+  xLow = std::min(xLow, other.xLow);
+  xHigh = std::max(xHigh, other.xHigh);
+  yLow = std::min(yLow, other.yLow);
+  yHigh = std::max(yHigh, other.yHigh);
+}
+
+PlotView::Extent PlotView::dataBounds() {
+  // each entry's extent is kept and widened by the points appended since
+  Extent all;
+  for (Entry& entry : m_entries) {
     if (!entry.inBounds) continue;
-    for (const QPointF& point : entry.data) take(point);
+    if (entry.boundsCounted == 0) entry.bounds = Extent{};
+    for (std::size_t index = entry.boundsCounted; index < entry.data.size(); ++index) {
+      entry.bounds.take(entry.data[index]);
+    }
+    entry.boundsCounted = entry.data.size();
+    all.take(entry.bounds);
   }
-  for (const QPointF& point : m_extraBounds) take(point);
+  for (const QPointF& point : m_extraBounds) all.take(point);
+  return all;
+}
+
+QRectF PlotView::wantedRange() {
+  if (m_fixedRange) return *m_fixedRange;
+  const auto [xLow, xHigh, yLow, yHigh] = dataBounds();
   // each axis is padded on its own scale (an FFT axis near 8.9 must not inherit the 20 000 of
   // its contact-index axis), but never below 1e-3 of the plot's overall scale, so that a
   // coordinate that is zero up to round-off stays a flat line
@@ -267,39 +299,75 @@ void PlotView::fitAxes() {
     const double floored = std::max(scale, 1e-3 * overall);
     return std::isfinite(floored) && floored > 0 ? floored : 1.0;
   };
-  const auto [x0, x1] = padded(xLow, xHigh, usable(scaleX));
-  const auto [y0, y1] = padded(yLow, yHigh, usable(scaleY));
-  setRangeWithTicks(m_axisX, x0, x1);
-  setRangeWithTicks(m_axisY, y0, y1);
+  auto [x0, x1] = padded(xLow, xHigh, usable(scaleX));
+  auto [y0, y1] = padded(yLow, yHigh, usable(scaleY));
+  if (m_growing) {
+    const QRectF shown(QPointF(m_axisX->min(), m_axisY->min()), QPointF(m_axisX->max(), m_axisY->max()));
+    const bool fits = !m_newRun && shown.left() <= x0 && x1 <= shown.right() &&
+                      shown.top() <= y0 && y1 <= shown.bottom();
+    if (fits) return shown;
+    const double dx = 0.25 * (x1 - x0);
+    const double dy = 0.25 * (y1 - y0);
+    x0 -= dx;
+    x1 += dx;
+    y0 -= dy;
+    y1 += dy;
+  }
+  return QRectF(QPointF(x0, y0), QPointF(x1, y1));
 }
 
 void PlotView::refresh() {
-  // empty the line series first: every axis change makes Qt Charts recompute and re-stroke the
-  // path of every point a line holds, and the old points are about to be replaced anyway.
-  // Scatter series keep theirs: Qt Charts reuses their marker items across a replace().
-  for (Entry& entry : m_entries) {
-    if (entry.series->count() > 0 && !qobject_cast<QScatterSeries*>(entry.series)) {
-      entry.series->replace(QList<QPointF>());
+  if (m_followData) {
+    const QRectF range = wantedRange();
+    const bool moves = range.left() != m_axisX->min() || range.right() != m_axisX->max() ||
+                       range.top() != m_axisY->min() || range.bottom() != m_axisY->max();
+    if (moves) {
+      // empty the line series first: every axis change makes Qt Charts recompute and
+      // re-stroke the path of every point a line holds, and the old points are about to be
+      // replaced anyway. Scatter series keep theirs: Qt Charts reuses their marker items.
+      for (Entry& entry : m_entries) {
+        if (entry.series->count() > 0 && !qobject_cast<QScatterSeries*>(entry.series)) {
+          entry.series->replace(QList<QPointF>());
+        }
+      }
+      setRangeWithTicks(m_axisX, range.left(), range.right());
+      setRangeWithTicks(m_axisY, range.top(), range.bottom());
     }
+  } else {
+    // after a zoom or pan by the user: new ticks for the new range
+    setRangeWithTicks(m_axisX, m_axisX->min(), m_axisX->max());
+    setRangeWithTicks(m_axisY, m_axisY->min(), m_axisY->max());
   }
-  if (m_followData) fitAxes();
-  // after a zoom or pan by the user: new ticks for the new range
-  setRangeWithTicks(m_axisX, m_axisX->min(), m_axisX->max());
-  setRangeWithTicks(m_axisY, m_axisY->min(), m_axisY->max());
+  m_newRun = false;
   const QRectF area = chart()->plotArea();
   PixelFrame frame{m_axisX->min(), m_axisX->max(), m_axisY->min(), m_axisY->max(),
                    std::max(1, int(area.width())), std::max(1, int(area.height()))};
-  if (!m_joinedScatters.empty()) {
-    const auto* first = qobject_cast<QScatterSeries*>(m_entries[std::size_t(m_joinedScatters[0])].series);
-    const int cell = first ? std::max(1, int(first->markerSize() * 0.75)) : 1;
+  // one marker per marker-sized cell (at least 2 px: Qt Charts spends ~2 us on each marker
+  // it holds, and a 2.5 px dot per pixel is 300 000 of them on a full plot): more would
+  // overdraw the same pixels
+  auto markerCells = [&frame](const QXYSeries* series) {
+    const auto* scatter = qobject_cast<const QScatterSeries*>(series);
+    const int cell = scatter ? std::max(2, int(scatter->markerSize() * 0.75)) : 1;
     PixelFrame coarse = frame;
     coarse.width = std::max(1, frame.width / cell);
     coarse.height = std::max(1, frame.height / cell);
+    return coarse;
+  };
+  bool scratch = false;  // some series decimated from its first point
+  if (!m_joinedScatters.empty()) {
     std::vector<std::span<const QPointF>> sets;
-    for (int index : m_joinedScatters) sets.emplace_back(m_entries[std::size_t(index)].data);
-    std::vector<QList<QPointF>> reduced = decimateScatterSets(sets, coarse);
+    bool replaced = false;
+    for (int index : m_joinedScatters) {
+      sets.emplace_back(m_entries[std::size_t(index)].data);
+      replaced = replaced || m_entries[std::size_t(index)].replaced;
+    }
+    const PixelFrame coarse = markerCells(m_entries[std::size_t(m_joinedScatters[0])].series);
+    const std::vector<QList<QPointF>>& reduced = m_joinedReduced.update(sets, coarse, replaced);
+    for (const auto& set : sets) scratch = scratch || (m_joinedReduced.startedOver() && !set.empty());
     for (std::size_t set = 0; set < reduced.size(); ++set) {
-      m_entries[std::size_t(m_joinedScatters[set])].series->replace(reduced[set]);
+      Entry& entry = m_entries[std::size_t(m_joinedScatters[set])];
+      entry.series->replace(reduced[set]);
+      entry.replaced = false;
     }
   }
   for (std::size_t index = 0; index < m_entries.size(); ++index) {
@@ -308,13 +376,14 @@ void PlotView::refresh() {
         m_joinedScatters.end()) {
       continue;
     }
-    QList<QPointF> points;
+    const bool replaced = entry.replaced;
+    entry.replaced = false;
     switch (entry.decimation) {
       case Decimation::None:
-        points = QList<QPointF>(entry.data.begin(), entry.data.end());
+        entry.series->replace(QList<QPointF>(entry.data.begin(), entry.data.end()));
         break;
       case Decimation::Trace:
-        points = decimateTrace(entry.data, frame);
+        entry.series->replace(entry.reduced->update(entry.data, frame, replaced));
         break;
       case Decimation::Path: {
         // 2-pixel cells: Qt Charts strokes a hover shape for every line point, so each point
@@ -322,23 +391,16 @@ void PlotView::refresh() {
         PixelFrame coarse = frame;
         coarse.width = std::max(1, frame.width / 2);
         coarse.height = std::max(1, frame.height / 2);
-        points = decimatePath(entry.data, coarse);
+        entry.series->replace(entry.reduced->update(entry.data, coarse, replaced));
         break;
       }
-      case Decimation::Scatter: {
-        // one marker per marker-sized cell: more would overdraw the same pixels
-        const auto* scatter = qobject_cast<QScatterSeries*>(entry.series);
-        const int cell = scatter ? std::max(1, int(scatter->markerSize() * 0.75)) : 1;
-        PixelFrame coarse = frame;
-        coarse.width = std::max(1, frame.width / cell);
-        coarse.height = std::max(1, frame.height / cell);
-        points = decimateScatter(entry.data, coarse);
+      case Decimation::Scatter:
+        entry.series->replace(entry.reduced->update(entry.data, markerCells(entry.series), replaced));
         break;
-      }
     }
-    // one bulk replace per series: Qt Charts redraws once instead of once per point
-    entry.series->replace(points);
+    if (entry.reduced && entry.reduced->startedOver() && !entry.data.empty()) scratch = true;
   }
+  if (scratch) ++m_decimationsFromScratch;
   emit refreshed();
 }
 

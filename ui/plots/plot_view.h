@@ -9,9 +9,13 @@
 #include <QString>
 #include <QTimer>
 
+#include <limits>
+#include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
+#include "ui/decimate.h"
 #include "ui/plots/scene_view.h"
 #include "ui/sim_types.h"
 
@@ -32,6 +36,15 @@ class PlotView : public QChartView, public SceneView {
   Q_OBJECT
 
  public:
+  /// The extent of some points (empty: low > high).
+  struct Extent {
+    double xLow = std::numeric_limits<double>::infinity();
+    double xHigh = -std::numeric_limits<double>::infinity();
+    double yLow = std::numeric_limits<double>::infinity();
+    double yHigh = -std::numeric_limits<double>::infinity();
+    void take(const QPointF& point);  ///< widens it to a finite point (others are ignored)
+    void take(const Extent& other);
+  };
   /// One series and the full-resolution data behind it.
   struct Entry {
     QXYSeries* series = nullptr;
@@ -39,6 +52,12 @@ class PlotView : public QChartView, public SceneView {
     Decimation decimation = Decimation::None;
     bool inBounds = true;  ///< counts for the automatic axis ranges
     double baseWidth = 0;   ///< the desk look: line width or marker size
+    /// what has been drawn of `data`, kept while points are only appended
+    std::shared_ptr<IncrementalDecimation> reduced;
+    bool replaced = true;  ///< `data` were set anew since the last refresh (not appended to)
+    /// the finite points' extent, over the first `boundsCounted` points
+    Extent bounds;
+    std::size_t boundsCounted = 0;
   };
 
   PlotView(const QString& title, const QString& xTitle, const QString& yTitle,
@@ -48,9 +67,19 @@ class PlotView : public QChartView, public SceneView {
 
   /// Forgets zoom and pan: the axes follow the data again.
   void resetView();
+  /// While a run grows, axes that must widen widen by a quarter of the span on each side, so
+  /// that they (and the drawing of every point) change a few times over the run, not at every
+  /// update; the final result is fitted tightly.
+  void setGrowing(bool growing) { m_growing = growing; }
+  /// Forgets zoom and pan at the next update, without redrawing the data shown now (a new
+  /// result is on its way: refitting and repainting the old one would only delay it).
+  void followDataFromNextUpdate() { m_followData = true; }
   bool followsData() const { return m_followData; }
 
   const std::vector<Entry>& entries() const { return m_entries; }
+  /// Refreshes that had to decimate some series from the start (its data replaced, or the
+  /// axes or the plot's size changed) rather than only the points appended since.
+  int decimationsFromScratch() const { return m_decimationsFromScratch; }
   /// Number of points currently handed to Qt Charts, summed over series.
   qsizetype drawnPointCount() const;
   /// Appends the plotted data at full resolution as CSV rows "plot,series,x,y" (no header).
@@ -86,6 +115,11 @@ class PlotView : public QChartView, public SceneView {
  protected:
   int addEntry(QXYSeries* series, Decimation decimation, bool inBounds = true);
   void setData(int index, std::vector<QPointF> data);
+  /// Adds points after those of the entry (a run going on): the next refresh draws only them,
+  /// plus what the pixels show, unless the axes moved.
+  void appendData(int index, std::span<const QPointF> points);
+  /// The plot shows a new run (not the one it was showing, grown): the next fit is tight.
+  void startNewRun() { m_newRun = true; }
   /// Scatter entries drawn over each other as one cloud (colour classes): decimated jointly,
   /// one point per cell chosen at random among all of them (decimateScatterSets).
   void joinScatters(std::vector<int> indices);
@@ -112,12 +146,19 @@ class PlotView : public QChartView, public SceneView {
 
  private:
   void refresh();
-  void fitAxes();
+  /// The ranges the axes should show when they follow the data: fixed, fitted, or (while the
+  /// run grows) the present ones if the data still fit.
+  QRectF wantedRange();
+  Extent dataBounds();
   void userMovedView();
 
   std::vector<Entry> m_entries;
   std::vector<QPointF> m_extraBounds;
   std::vector<int> m_joinedScatters;
+  IncrementalScatterSets m_joinedReduced;
+  bool m_growing = false;
+  bool m_newRun = true;
+  int m_decimationsFromScratch = 0;
   std::optional<QRectF> m_fixedRange;
   bool m_stale = false;
   bool m_presentation = false;

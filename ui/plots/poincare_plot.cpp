@@ -42,23 +42,40 @@ PoincarePlot::PoincarePlot(QWidget* parent)
 void PoincarePlot::show(const SimUpdate& update) {
   const core::Result& result = *update.result;
   const auto count = std::int64_t(result.poincare.size());
-  // equal-width bins over the contact index of this run
-  const std::int64_t per = std::max<std::int64_t>(1, (count + kBins - 1) / kBins);
+  // equal-width bins over the contact index: while the run goes on, over the contacts asked
+  // for (so that a point keeps its bin and the bins only grow); at the end over those made
+  const std::int64_t asked = update.request->request.maxContacts;
+  const std::int64_t planned =
+      update.final || asked <= 0 || asked > std::int64_t(1) << 40 ? count : std::max(asked, count);
+  const std::int64_t per = std::max<std::int64_t>(1, (planned + kBins - 1) / kBins);
+  if (m_taken.startsOver(update) || per != m_perBin) {
+    m_taken = RunProgress{};
+    m_taken.runId = update.id;
+    m_perBin = per;
+    startNewRun();
+    for (int bin = 0; bin < kBins; ++bin) setData(m_bins[bin], {});
+  }
   std::vector<QPointF> bins[kBins];
-  for (std::int64_t index = 0; index < count; ++index) {
+  for (auto index = std::int64_t(m_taken.poincare); index < count; ++index) {
     const core::PoincarePoint& point = result.poincare[std::size_t(index)];
     bins[std::min<std::int64_t>(index / per, kBins - 1)].emplace_back(point.u1, point.v1);
   }
+  m_taken.poincare = std::size_t(count);
   const auto& entryList = entries();
   for (int bin = 0; bin < kBins; ++bin) {
+    appendData(m_bins[bin], bins[bin]);
     const std::int64_t first = bin * per;
-    const std::int64_t last = std::min(count, first + per) - 1;
-    // every bin is named in the legend (an empty one is left out)
+    const std::int64_t last = std::min(planned, first + per) - 1;
+    const bool shown = !entryList[std::size_t(m_bins[bin])].data.empty();
+    // every bin is named in the legend (an empty one is left out); set only on a change:
+    // each new name lays the chart out again
     QXYSeries* series = entryList[std::size_t(m_bins[bin])].series;
     const QString range = tr("%1–%2").arg(first).arg(last);
-    series->setName(last < first ? QString() : bin == 0 ? tr("contacts %1").arg(range) : range);
-    for (QLegendMarker* marker : chart()->legend()->markers(series)) marker->setVisible(last >= first);
-    setData(m_bins[bin], std::move(bins[bin]));
+    const QString name = last < first ? QString() : bin == 0 ? tr("contacts %1").arg(range) : range;
+    if (series->name() != name) series->setName(name);
+    for (QLegendMarker* marker : chart()->legend()->markers(series)) {
+      if (marker->isVisible() != shown) marker->setVisible(shown);
+    }
   }
   std::vector<QPointF> reference;
   clearExtraBounds();
@@ -71,7 +88,10 @@ void PoincarePlot::show(const SimUpdate& update) {
     includeInBounds(data.u1, data.v1 - margin);
     includeInBounds(data.u1, data.v1 + margin);
   }
-  entryList[std::size_t(m_reference)].series->setName(update.request->referenceLabel);
+  QXYSeries* referenceSeries = entryList[std::size_t(m_reference)].series;
+  if (referenceSeries->name() != update.request->referenceLabel) {
+    referenceSeries->setName(update.request->referenceLabel);
+  }
   setData(m_reference, std::move(reference));
   scheduleRefresh();
 }

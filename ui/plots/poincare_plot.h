@@ -17,6 +17,8 @@ class PoincarePlot final : public PlotView {
   static constexpr int kBins = 5;
   int m_bins[kBins] = {};
   int m_reference = 0;
+  RunProgress m_taken;      ///< points already binned
+  std::int64_t m_perBin = 0;  ///< contacts per colour bin, fixed for the run's updates
 };
 
 }  // namespace grazelab::ui

@@ -12,6 +12,17 @@
 
 namespace grazelab::ui {
 
+bool RunProgress::startsOver(const SimUpdate& update) {
+  const core::Result& result = *update.result;
+  const bool grown = runId == update.id && events <= result.events.size() &&
+                     poincare <= result.poincare.size() &&
+                     freeFlights <= result.freeFlights.size() && samples <= result.samples.size();
+  if (grown) return false;
+  *this = RunProgress{};
+  runId = update.id;
+  return true;
+}
+
 SceneView* makeView(PlotKind kind, QWidget* parent) {
   switch (kind) {
     case PlotKind::TraceU2: return new TracePlot(parent);

@@ -30,29 +30,45 @@ TracePlot::TracePlot(QWidget* parent)
 void TracePlot::show(const SimUpdate& update) {
   const core::Result& result = *update.result;
   const double gap = update.request->model.gap;
+  if (m_taken.startsOver(update)) {
+    startNewRun();
+    setData(m_trace, {});
+    setData(m_impacts, {});
+    setData(m_grazings, {});
+  }
+  // only what the run added since the last update
   std::vector<QPointF> trace;
-  trace.reserve(result.samples.size());
-  for (const core::Sample& sample : result.samples) trace.emplace_back(sample.t, sample.state.u2);
-  const double tLast = trace.empty() ? result.tFinal : trace.back().x();
+  trace.reserve(result.samples.size() - m_taken.samples);
+  for (std::size_t index = m_taken.samples; index < result.samples.size(); ++index) {
+    trace.emplace_back(result.samples[index].t, result.samples[index].state.u2);
+  }
+  m_taken.samples = result.samples.size();
+  appendData(m_trace, trace);
+  const std::vector<QPointF>& drawn = entries()[std::size_t(m_trace)].data;
+  const double tLast = drawn.empty() ? result.tFinal : drawn.back().x();
+  // contacts within the trace's window; later ones wait for the samples that reach them
   std::vector<QPointF> impacts;
   std::vector<QPointF> others;
-  for (const core::Event& event : result.events) {
-    if (event.t > tLast) break;
+  std::size_t next = m_taken.events;
+  for (; next < result.events.size() && result.events[next].t <= tLast; ++next) {
+    const core::Event& event = result.events[next];
     if (event.type == core::EventType::Impact) impacts.emplace_back(event.t, gap);
     else if (core::isContact(event.type)) others.emplace_back(event.t, gap);
   }
-  setData(m_trace, std::move(trace));
+  m_taken.events = next;
+  appendData(m_impacts, impacts);
+  appendData(m_grazings, others);
   setData(m_stop, {QPointF(0, gap), QPointF(tLast, gap)});
-  setData(m_impacts, std::move(impacts));
-  setData(m_grazings, std::move(others));
   m_gap = gap;
   m_window = tLast;
   // the trace keeps a window of the run (its first periods); say so when the run goes on
   const bool cut = result.samplesTruncated || result.tFinal > tLast * (1 + 1e-9) + 1e-12;
-  m_axisX->setTitleText(cut ? tr("time t (first %1 of %2)")
+  const QString title = cut ? tr("time t (first %1 of %2)")
                                   .arg(tLast, 0, 'g', 3)
                                   .arg(result.tFinal, 0, 'g', 3)
-                            : tr("time t"));
+                            : tr("time t");
+  // set only when it changes: each new title lays the chart out again
+  if (m_axisX->titleText() != title) m_axisX->setTitleText(title);
   drawOverlay();
   scheduleRefresh();
 }

@@ -32,6 +32,7 @@ class TracePlot final : public PlotView {
   int m_impacts = 0;
   int m_grazings = 0;
   QXYSeries* m_cursor = nullptr;  ///< the animation's time, made on first use
+  RunProgress m_taken;  ///< samples and events already drawn
 };
 
 }  // namespace grazelab::ui
