@@ -50,6 +50,8 @@ bool renderSceneSnapshot(const QString& sceneName, const QString& sessionPath,
   // size (larger text on the old size would widen the window past the size asked)
   if (presentation) window.setPresentation(true, size.height(), false);
   window.resize(size);
+  // and the panel's share again, now of the final width
+  if (presentation) window.setPresentation(true, size.height(), false);
   window.show();
   QCoreApplication::processEvents();
   for (PlotView* plot : window.plots()) plot->refreshNow();

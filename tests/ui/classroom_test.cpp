@@ -170,6 +170,26 @@ class ClassroomTest : public QObject {
     QVERIFY(std::abs(u1 - star) < 0.1 * std::abs(u1Far - star) + 1e-12);
   }
 
+  // legends were cut to "sto...", "imp..." (or to bare swatches) on a 1280x720 screen: each
+  // plot's legend now wraps and names every named series in full
+  void legendsNameEverySeriesInFullAt1280x720() {
+    m_window->resize(1280, 720);
+    for (int scene = 0; scene < int(m_window->scenes().size()); ++scene) {
+      m_window->selectScene(scene);
+      QVERIFY(waitForLatestFinal(*m_window, 60000));
+      QTest::qWait(20);  // laid out at the window's size
+      for (PlotView* plot : m_window->plots()) {
+        plot->refreshNow();
+        QVERIFY2(plot->legendFits(), qPrintable(plot->title()));
+        for (const PlotView::Entry& entry : plot->entries()) {
+          const QString name = entry.series->name();
+          if (name.isEmpty() || entry.data.empty()) continue;
+          QVERIFY2(plot->legendNames().contains(name), qPrintable(plot->title() + QStringLiteral(": ") + name));
+        }
+      }
+    }
+  }
+
   // the last colour bin covered the others and the legend named two bins of five
   void everyPoincareBinIsNamedAndShows() {
     m_window->selectScene(sceneIndex(*m_window, QStringLiteral("near-grazing")));
@@ -182,6 +202,8 @@ class ClassroomTest : public QObject {
       for (const PlotView::Entry& entry : poincare->entries()) total += entry.series->count();
       return total;
     };
+    // alone over the plot area: enough cells on the ring for the shares to be measured
+    m_window->toggleEnlarged(poincare);
     QTRY_VERIFY(drawnTotal() > 20);
     QTest::qWait(50);
     poincare->refreshNow();  // at the laid-out size
@@ -189,8 +211,7 @@ class ClassroomTest : public QObject {
     int fairBins = 0;
     for (const PlotView::Entry& entry : poincare->entries()) {
       if (entry.data.empty() || entry.series->name().startsWith(QStringLiteral("GLO"))) continue;
-      const auto markers = poincare->chart()->legend()->markers(entry.series);
-      if (!markers.isEmpty() && markers.first()->isVisible() && !entry.series->name().isEmpty()) ++named;
+      if (poincare->legendNames().contains(entry.series->name())) ++named;
       // 20 000 contacts fill the same ring: each fifth of the run keeps about a fifth of it
       if (entry.series->count() > drawnTotal() / 10) ++fairBins;
     }

@@ -3,8 +3,6 @@
 #include "ui/plots/curve_plot.h"
 
 #include <QChart>
-#include <QLegend>
-#include <QLegendMarker>
 #include <QLineSeries>
 #include <QScatterSeries>
 #include <QValueAxis>
@@ -35,13 +33,6 @@ void CurvePlot::show(const SimUpdate& update) {
   list[std::size_t(m_curve)].series->setName(figure.curveName);
   list[std::size_t(m_marker)].series->setName(figure.markerName);
   list[std::size_t(m_reference)].series->setName(figure.referenceName);
-  // a series without a name (no marker in this scene) has no legend entry
-  for (const int index : {m_curve, m_marker, m_reference}) {
-    QXYSeries* series = list[std::size_t(index)].series;
-    for (QLegendMarker* marker : chart()->legend()->markers(series)) {
-      marker->setVisible(!series->name().isEmpty());
-    }
-  }
   std::vector<QPointF> reference = figure.reference;
   if (reference.size() == 1) reference.push_back(reference.front());  // a point: a zero-length line
   setData(m_curve, figure.curve);

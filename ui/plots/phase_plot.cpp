@@ -11,8 +11,6 @@
 #include "ui/plots/plot_style.h"
 
 #include <QChart>
-#include <QLegend>
-#include <QLegendMarker>
 #include <QScatterSeries>
 
 namespace grazelab::ui {
@@ -44,7 +42,7 @@ void PhasePlot::setTimeCursor(double, const core::State& state) {
     chart()->addSeries(dot);
     dot->attachAxis(m_axisX);
     dot->attachAxis(m_axisY);
-    for (QLegendMarker* marker : chart()->legend()->markers(dot)) marker->setVisible(false);
+    setInLegend(dot, false);
     m_cursor = dot;
   }
   m_cursor->replace({m_mass == Mass::Two ? QPointF(state.u2, state.v2) : QPointF(state.u1, state.v1)});

@@ -6,6 +6,8 @@
 #include <QFont>
 #include <QPointF>
 #include <QRectF>
+#include <QSet>
+#include <QStringList>
 #include <QString>
 #include <QTimer>
 
@@ -19,6 +21,7 @@
 #include "ui/plots/scene_view.h"
 #include "ui/sim_types.h"
 
+class QGraphicsTextItem;
 class QLabel;
 class QValueAxis;
 class QXYSeries;
@@ -80,6 +83,11 @@ class PlotView : public QChartView, public SceneView {
   /// Refreshes that had to decimate some series from the start (its data replaced, or the
   /// axes or the plot's size changed) rather than only the points appended since.
   int decimationsFromScratch() const { return m_decimationsFromScratch; }
+  /// The names in the plot's legend, in its order.
+  const QStringList& legendNames() const { return m_legendNames; }
+  /// Whether the legend shows every name whole, on as many lines as it needs (false when it
+  /// had to be cut to 40 % of the chart's height, or is not laid out yet).
+  bool legendFits() const { return m_legendFits; }
   /// Number of points currently handed to Qt Charts, summed over series.
   qsizetype drawnPointCount() const;
   /// Appends the plotted data at full resolution as CSV rows "plot,series,x,y" (no header).
@@ -115,6 +123,9 @@ class PlotView : public QChartView, public SceneView {
  protected:
   int addEntry(QXYSeries* series, Decimation decimation, bool inBounds = true);
   void setData(int index, std::vector<QPointF> data);
+  /// Leaves a series out of the legend (a cursor, an empty bin) or puts it back; a series
+  /// without a name is never in it.
+  void setInLegend(QXYSeries* series, bool shown);
   /// Adds points after those of the entry (a run going on): the next refresh draws only them,
   /// plus what the pixels show, unless the axes moved.
   void appendData(int index, std::span<const QPointF> points);
@@ -146,6 +157,10 @@ class PlotView : public QChartView, public SceneView {
 
  private:
   void refresh();
+  /// The legend, drawn as wrapped text under the plot (Qt Charts' own legend keeps one row
+  /// and cut the labels of narrow plots to "sto..."): one coloured symbol and name per
+  /// visible marker of Qt's legend, which stays the model (hidden).
+  void updateLegend();
   /// The ranges the axes should show when they follow the data: fixed, fitted, or (while the
   /// run grows) the present ones if the data still fit.
   QRectF wantedRange();
@@ -167,6 +182,11 @@ class PlotView : public QChartView, public SceneView {
   };
   std::optional<Fonts> m_deskFonts;  ///< the fonts before presentation mode
   QLabel* m_staleNote = nullptr;
+  QGraphicsTextItem* m_legendText = nullptr;
+  QString m_legendHtml;
+  QStringList m_legendNames;
+  bool m_legendFits = false;
+  QSet<QXYSeries*> m_leftOutOfLegend;
   QTimer m_refreshTimer;
   bool m_followData = true;
   bool m_panning = false;

@@ -3,8 +3,6 @@
 #include "ui/plots/poincare_plot.h"
 
 #include <QChart>
-#include <QLegend>
-#include <QLegendMarker>
 #include <QScatterSeries>
 
 #include <algorithm>
@@ -73,9 +71,7 @@ void PoincarePlot::show(const SimUpdate& update) {
     const QString range = tr("%1–%2").arg(first).arg(last);
     const QString name = last < first ? QString() : bin == 0 ? tr("contacts %1").arg(range) : range;
     if (series->name() != name) series->setName(name);
-    for (QLegendMarker* marker : chart()->legend()->markers(series)) {
-      if (marker->isVisible() != shown) marker->setVisible(shown);
-    }
+    setInLegend(series, shown);
   }
   std::vector<QPointF> reference;
   clearExtraBounds();

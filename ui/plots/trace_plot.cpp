@@ -3,8 +3,6 @@
 #include "ui/plots/trace_plot.h"
 
 #include <QChart>
-#include <QLegend>
-#include <QLegendMarker>
 #include <QLineSeries>
 #include <QScatterSeries>
 #include <QValueAxis>
@@ -80,7 +78,7 @@ void TracePlot::setTimeCursor(double t, const core::State&) {
     chart()->addSeries(m_cursor);
     m_cursor->attachAxis(m_axisX);
     m_cursor->attachAxis(m_axisY);
-    for (QLegendMarker* marker : chart()->legend()->markers(m_cursor)) marker->setVisible(false);
+    setInLegend(m_cursor, false);
   }
   m_cursor->replace({QPointF(t, m_axisY->min()), QPointF(t, m_axisY->max())});
 }

@@ -30,7 +30,7 @@ double highestReach(double lambda) {
 
 CurveFigure lemmaFigure(double lambda) {
   CurveFigure figure;
-  figure.title = tr("Lemma 2.1: the highest point of GLO(λ), max u₂ / d");
+  figure.title = tr("Lemma 2.1: top of GLO(λ), max u₂ / d");
   figure.xTitle = tr("λ");
   figure.yTitle = tr("max over a period of u₂ / d");
   figure.toolTip = tr("The linear orbit (1 − λ) GLOM₁ + λ GLOM₂ reaches at most "
