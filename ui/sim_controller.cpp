@@ -85,13 +85,7 @@ void appendChunk(core::Result& run, const core::Result& chunk) {
   run.poincare.insert(run.poincare.end(), chunk.poincare.begin(), chunk.poincare.end());
   run.freeFlights.insert(run.freeFlights.end(), chunk.freeFlights.begin(), chunk.freeFlights.end());
   run.samples.insert(run.samples.end(), chunk.samples.begin(), chunk.samples.end());
-  run.samplesTruncated = chunk.samplesTruncated;
-  run.tFinal = chunk.tFinal;
-  run.final = chunk.final;
-  run.initialEnergy = chunk.initialEnergy;
-  run.cost = chunk.cost;
-  run.stop = chunk.stop;
-  run.message = chunk.message;
+  copyTotals(chunk, run);
 }
 
 }  // namespace grazelab::ui

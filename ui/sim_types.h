@@ -53,6 +53,18 @@ struct SimRequest {
   Figures figures;  ///< the scene's own curves, drawn as they are (computed by the scene)
 };
 
+/// Copies a run's present totals (everything but its item lists: time, final state, energy,
+/// cost, stop reason, message), as a partial update's chunk carries them.
+inline void copyTotals(const core::Result& from, core::Result& to) {
+  to.samplesTruncated = from.samplesTruncated;
+  to.tFinal = from.tFinal;
+  to.final = from.final;
+  to.initialEnergy = from.initialEnergy;
+  to.cost = from.cost;
+  to.stop = from.stop;
+  to.message = from.message;
+}
+
 /// A partial or final result coming back from the worker, as a value. The result is shared
 /// read-only between the worker's copy and the display, never written after it is sent.
 struct SimUpdate {

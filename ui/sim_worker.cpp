@@ -84,13 +84,7 @@ core::Result newSince(const core::Result& result, const ResultCounts& sent) {
   chunk.freeFlights.assign(result.freeFlights.begin() + std::ptrdiff_t(sent.freeFlights),
                            result.freeFlights.end());
   chunk.samples.assign(result.samples.begin() + std::ptrdiff_t(sent.samples), result.samples.end());
-  chunk.samplesTruncated = result.samplesTruncated;
-  chunk.tFinal = result.tFinal;
-  chunk.final = result.final;
-  chunk.initialEnergy = result.initialEnergy;
-  chunk.cost = result.cost;
-  chunk.stop = result.stop;
-  chunk.message = result.message;
+  copyTotals(result, chunk);
   return chunk;
 }
 
