@@ -14,6 +14,8 @@ packages=(
   libqt6opengl6-dev                         # Qt Charts needs Qt6OpenGL (only recommended)
   libgl-dev libvulkan-dev libxkbcommon-dev  # headers Qt6's CMake packages look for
   fonts-dejavu-core                         # text in offscreen snapshots
+  libtbb-dev                                # oneTBB: maps on all cores
+  parallel                                  # GNU parallel: the sharded-map test
   libgtest-dev libbenchmark-dev             # tests and benchmarks
   poppler-utils                             # pdftotext: tests read the text of PDF snapshots
   python3 python3-mpmath                    # the independent high-precision reference

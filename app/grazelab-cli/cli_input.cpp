@@ -146,13 +146,9 @@ Parsed<ModelInput<S>> parseModel(const QCommandLineParser& parser) {
 }
 
 template <typename S>
-Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
-  Parsed<ModelInput<S>> model = parseModel<S>(parser);
-  if (!model.value) return {std::nullopt, model.error};
-  RunInput<S> run{*model.value, {}, {}, {}, Format::Json};
-  const core::Chain<S>& chain = run.model.chain;
+Parsed<core::StartSpec<S>> parseStartSpec(const QCommandLineParser& parser,
+                                          const core::BasicModel<S>& model) {
   QString error;
-
   const int starts = int(parser.isSet("glo")) + int(parser.isSet("onepp")) +
                      int(parser.isSet("state"));
   if (starts > 1) return {std::nullopt, "give one of --glo, --onepp, --state, not several"};
@@ -179,15 +175,28 @@ Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
   if (parser.isSet("perturb")) {
     const auto delta = toState<S>("perturb", parser.value("perturb"), error);
     if (!delta) return {std::nullopt, error};
-    const auto problems = core::validateState(run.model.model, *delta, "perturb");
+    const auto problems = core::validateState(model, *delta, "perturb");
     for (const auto& problem : problems) {
       if (problem.field != "perturb.u2") return {std::nullopt, fromStd(core::describe({problem}))};
     }
     spec.perturbation = *delta;
   }
-  core::StartOrProblem<S> start = core::makeStart(chain, spec);
+  return {spec, {}};
+}
+
+template <typename S>
+Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
+  Parsed<ModelInput<S>> model = parseModel<S>(parser);
+  if (!model.value) return {std::nullopt, model.error};
+  RunInput<S> run{*model.value, {}, {}, {}, Format::Json};
+  const core::Chain<S>& chain = run.model.chain;
+  QString error;
+
+  Parsed<core::StartSpec<S>> spec = parseStartSpec<S>(parser, run.model.model);
+  if (!spec.value) return {std::nullopt, spec.error};
+  core::StartOrProblem<S> start = core::makeStart(chain, *spec.value);
   if (!start.start) {
-    const QString option = spec.kind == core::StartSpec<S>::Kind::OnePeriodic ? "--onepp: " : "";
+    const QString option = spec.value->kind == core::StartSpec<S>::Kind::OnePeriodic ? "--onepp: " : "";
     return {std::nullopt, option + fromStd(start.problem)};
   }
   const auto stateProblems = core::validateState(run.model.model, start.start->state, "initial");
@@ -236,6 +245,8 @@ Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
 
 #define GRAZELAB_INSTANTIATE(S)                                                     \
   template Parsed<ModelInput<S>> parseModel<S>(const QCommandLineParser&);          \
+  template Parsed<core::StartSpec<S>> parseStartSpec<S>(const QCommandLineParser&,  \
+                                                        const core::BasicModel<S>&); \
   template Parsed<RunInput<S>> parseRun<S>(const QCommandLineParser&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)

@@ -12,6 +12,7 @@
 #include "core/chain.h"
 #include "core/model.h"
 #include "core/resonance.h"
+#include "core/setup.h"
 #include "core/simulate.h"
 #include "core/trust.h"
 
@@ -64,6 +65,10 @@ struct Parsed {
 
 template <typename S>
 Parsed<ModelInput<S>> parseModel(const QCommandLineParser& parser);
+/// The start options (--glo, --onepp, --state, --perturb) as a spec: GLO_0.5 when none is given.
+template <typename S>
+Parsed<core::StartSpec<S>> parseStartSpec(const QCommandLineParser& parser,
+                                          const core::BasicModel<S>& model);
 template <typename S>
 Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser);
 

@@ -24,6 +24,7 @@
 #include "cli_output.h"
 #include "core/simulate.h"
 #include "core/trust.h"
+#include "map_command.h"
 #include "report_command.h"
 
 namespace {
@@ -130,7 +131,9 @@ int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher,
 // renders off screen. The other commands need Qt Core only.
 bool drawsPictures(int argc, char* argv[]) {
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "report") == 0) return true;
+    for (const char* command : {"report", "map", "merge", "family"}) {
+      if (std::strcmp(argv[i], command) == 0) return true;
+    }
   }
   return false;
 }
@@ -165,12 +168,15 @@ int main(int argc, char* argv[]) {
       "Exact event-driven simulation of a 2-dof chain against a rigid stop in 1:2 internal "
       "resonance.\nCommands: info (the model and its derived quantities), simulate (a run), "
       "report (every method against the exact solver: error against run time, --out DIR), "
-      "stability (every method on stiff and extreme cases, --out DIR).");
-  parser.addPositionalArgument("command", "info | simulate | report | stability");
+      "stability (every method on stiff and extreme cases, --out DIR), map (a 2-D grid of runs "
+      "reduced to summaries: --x, --y, --out PREFIX), merge (join a map's stripes: --out PREFIX "
+      "PART1 ... PARTN), family --onepp (the 1IPP family: --out PREFIX).");
+  parser.addPositionalArgument("command", "info | simulate | report | stability | map | merge | family");
   const QCommandLineOption help = parser.addHelpOption();
   const QCommandLineOption version = parser.addVersionOption();
   grazelab::cli::addOptions(parser);
   grazelab::cli::addReportOptions(parser);
+  grazelab::cli::addMapOptions(parser);
 
   if (!parser.parse(QCoreApplication::arguments())) return fail(parser.errorText());
   if (parser.isSet(help)) {
@@ -186,10 +192,30 @@ int main(int argc, char* argv[]) {
     return fail(repeated.join(", ") + " given more than once: give each option once");
   }
   const QStringList positional = parser.positionalArguments();
+  if (!positional.isEmpty() && positional.first() == "merge") {
+    QString error;
+    const int code = grazelab::cli::runMerge(parser, positional.mid(1), error);
+    if (code == grazelab::cli::kExitInvalidInput) return fail(error);
+    if (code != 0) std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
+    return code;
+  }
   if (positional.size() != 1) {
     return fail("expected one command: info, simulate, report or stability (see --help)");
   }
   const QString command = positional.first();
+  if (command == "map") {
+    QString error;
+    const int code = grazelab::cli::runMap(parser, watcher.token(), error);
+    if (code == grazelab::cli::kExitInvalidInput) return fail(error);
+    if (code == grazelab::cli::kExitInterrupted) {
+      std::fprintf(stderr, "grazelab-cli: interrupted: nothing written\n");
+    } else if (code != 0) {
+      std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
+    }
+    return code;
+  }
+  const QStringList mapOnly = grazelab::cli::mapOnlyOptionsSet(parser);
+  if (!mapOnly.isEmpty()) return fail(mapOnly.join(", ") + " only apply to 'map'");
   if (command == "report" || command == "stability") {
     QString error;
     const int code = command == "report" ? grazelab::cli::runReport(parser, watcher.token(), error)

@@ -1,0 +1,299 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "map_command.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+
+#include "cli_input.h"
+#include "map_files.h"
+#include "map_picture.h"
+#include "parallel/tbb_parallel_for.h"
+#include "report_command.h"
+
+namespace grazelab::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// "NAME:from:to:count"
+std::optional<core::SweepAxis> parseAxis(const QString& option, const QString& text,
+                                         QString& error) {
+  const QStringList parts = text.split(':');
+  if (parts.size() != 4) {
+    error = QStringLiteral("--%1: '%2' is not NAME:from:to:count").arg(option, text);
+    return std::nullopt;
+  }
+  const auto variable = core::parseSweepVariable(parts[0].toStdString());
+  if (!variable) {
+    error = QStringLiteral("--%1: '%2' is not a variable; use one of %3")
+                .arg(option, parts[0], QString::fromStdString(core::sweepVariableNames()));
+    return std::nullopt;
+  }
+  bool okFrom = false, okTo = false, okCount = false;
+  core::SweepAxis axis;
+  axis.variable = *variable;
+  axis.from = parts[1].toDouble(&okFrom);
+  axis.to = parts[2].toDouble(&okTo);
+  axis.count = parts[3].toLongLong(&okCount);
+  if (!okFrom || !okTo) {
+    error = QStringLiteral("--%1: '%2' and '%3' must be numbers").arg(option, parts[1], parts[2]);
+    return std::nullopt;
+  }
+  if (!okCount || axis.count < 1) {
+    error = QStringLiteral("--%1: '%2' is not a count (a whole number >= 1)").arg(option, parts[3]);
+    return std::nullopt;
+  }
+  return axis;
+}
+
+struct Shard {
+  std::int64_t k = 1;
+  std::int64_t n = 1;
+};
+
+std::optional<Shard> parseShard(const QString& text, QString& error) {
+  const QStringList parts = text.split('/');
+  bool okK = false, okN = false;
+  Shard shard;
+  if (parts.size() == 2) {
+    shard.k = parts[0].toLongLong(&okK);
+    shard.n = parts[1].toLongLong(&okN);
+  }
+  if (!okK || !okN || shard.n < 1 || shard.k < 1 || shard.k > shard.n) {
+    error = QStringLiteral("--shard: '%1' is not K/N with 1 <= K <= N (stripes count from 1)").arg(text);
+    return std::nullopt;
+  }
+  return shard;
+}
+
+// --out PREFIX: its folder is made if missing
+std::optional<QString> parsePrefix(const QCommandLineParser& parser, QString& error) {
+  if (!parser.isSet("out")) {
+    error = "--out PREFIX is required (the files are PREFIX.json, PREFIX-QUANTITY.npy, ...)";
+    return std::nullopt;
+  }
+  const QString prefix = parser.value("out");
+  const QFileInfo info(prefix);
+  if (prefix.isEmpty() || prefix.endsWith('/') || info.isDir()) {
+    error = QStringLiteral("--out: '%1' is a folder; give a prefix such as %1/map").arg(prefix);
+    return std::nullopt;
+  }
+  if (!QDir().mkpath(info.absolutePath())) {
+    error = QStringLiteral("--out: cannot make the folder %1").arg(info.absolutePath());
+    return std::nullopt;
+  }
+  return prefix;
+}
+
+QStringList foreignOptions(const QCommandLineParser& parser, const QStringList& names) {
+  QStringList set;
+  for (const QString& name : names) {
+    if (parser.isSet(name)) set << "--" + name;
+  }
+  return set;
+}
+
+std::optional<core::SweepSpec> parseSpec(const QCommandLineParser& parser, QString& error) {
+  core::SweepSpec spec;
+  for (const char* name : {"x", "y"}) {
+    if (!parser.isSet(name)) {
+      error = QStringLiteral("--%1 NAME:from:to:count is required").arg(name);
+      return std::nullopt;
+    }
+  }
+  const auto x = parseAxis("x", parser.value("x"), error);
+  if (!x) return std::nullopt;
+  const auto y = parseAxis("y", parser.value("y"), error);
+  if (!y) return std::nullopt;
+  spec.x = *x;
+  spec.y = *y;
+  const Parsed<ModelInput<double>> model = parseModel<double>(parser);
+  if (!model.value) {
+    error = model.error;
+    return std::nullopt;
+  }
+  spec.model = model.value->model;
+  if (parser.isSet("glo") || parser.isSet("onepp") || parser.isSet("state") || parser.isSet("perturb")) {
+    Parsed<core::StartSpec<double>> start = parseStartSpec<double>(parser, spec.model);
+    if (!start.value) {
+      error = start.error;
+      return std::nullopt;
+    }
+    spec.perturbation = start.value->perturbation;
+    start.value->perturbation.reset();
+    // --perturb alone: on the grazing-start plane
+    if (parser.isSet("glo") || parser.isSet("onepp") || parser.isSet("state")) spec.start = start.value;
+  }
+  if (parser.isSet("contacts")) {
+    bool ok = false;
+    spec.contacts = parser.value("contacts").toLongLong(&ok);
+    if (!ok || spec.contacts < 1) {
+      error = QStringLiteral("--contacts: '%1' is not a count >= 1").arg(parser.value("contacts"));
+      return std::nullopt;
+    }
+  }
+  if (parser.isSet("trust")) {
+    const QString trust = parser.value("trust");
+    if (trust != "off" && trust != "auto") {
+      error = QStringLiteral("--trust: '%1' is not off or auto (a map estimates each point's "
+                             "horizon with auto)").arg(trust);
+      return std::nullopt;
+    }
+    spec.estimateHorizon = trust == "auto";
+  }
+  const std::string problem = core::checkSweep(spec);
+  if (!problem.empty()) {
+    error = QString::fromStdString(problem);
+    return std::nullopt;
+  }
+  return spec;
+}
+
+// a line on stderr at most every two seconds while a long map computes
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::int64_t total) : m_total(total) {}
+  void operator()(std::int64_t done) {
+    const std::int64_t now = Clock::now().time_since_epoch().count();
+    std::int64_t last = m_last.load();
+    const std::int64_t every = std::chrono::duration_cast<Clock::duration>(std::chrono::seconds(2)).count();
+    if (now - last < every || !m_last.compare_exchange_strong(last, now)) return;
+    std::fprintf(stderr, "grazelab-cli: map: %lld of %lld points (%.0f %%)\n", (long long)done,
+                 (long long)m_total, 100.0 * double(done) / double(m_total));
+  }
+
+ private:
+  std::int64_t m_total;
+  std::atomic<std::int64_t> m_last = Clock::now().time_since_epoch().count();
+};
+
+}  // namespace
+
+void addMapOptions(QCommandLineParser& parser) {
+  parser.addOptions({
+      {"x", QStringLiteral("map: the columns, NAME:from:to:count; NAME is one of %1.")
+                .arg(QString::fromStdString(core::sweepVariableNames())), "NAME:from:to:count"},
+      {"y", "map: the rows, NAME:from:to:count.", "NAME:from:to:count"},
+      {"threads", "map: threads (default: all cores).", "T"},
+      {"shard", "map: compute stripe K of N of the rows only (K from 1 to N); join the "
+                "stripes with merge.", "K/N"},
+      {"picture", "map: the quantity drawn in PREFIX.png/.svg (default fft_first).", "QUANTITY"},
+      {"count", "family: periods T in (0, T2) (default 2000).", "N"},
+  });
+}
+
+QStringList mapOnlyOptionsSet(const QCommandLineParser& parser) {
+  return foreignOptions(parser, {"x", "y", "threads", "shard", "picture"});
+}
+
+int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
+  const QStringList foreign = foreignOptions(parser, {"format", "t-end", "methods", "quick", "count"});
+  if (!foreign.isEmpty()) {
+    error = foreign.join(", ") + " do not apply to 'map'";
+    return kExitInvalidInput;
+  }
+  if (parser.value("precision") != "double") {
+    error = "--precision: a map runs in double (use simulate for one run in long or quad)";
+    return kExitInvalidInput;
+  }
+  const auto spec = parseSpec(parser, error);
+  if (!spec) return kExitInvalidInput;
+  Shard shard;
+  if (parser.isSet("shard")) {
+    const auto parsed = parseShard(parser.value("shard"), error);
+    if (!parsed) return kExitInvalidInput;
+    shard = *parsed;
+  }
+  int threads = parallel::defaultThreadCount();
+  if (parser.isSet("threads")) {
+    bool ok = false;
+    threads = parser.value("threads").toInt(&ok);
+    if (!ok || threads < 1) {
+      error = QStringLiteral("--threads: '%1' is not a count >= 1").arg(parser.value("threads"));
+      return kExitInvalidInput;
+    }
+  }
+  const QString picture = parser.isSet("picture") ? parser.value("picture") : "fft_first";
+  if (!core::parseQuantity(picture.toStdString())) {
+    QStringList names;
+    for (const auto& info : core::quantities()) names << QString::fromUtf8(info.name);
+    error = QStringLiteral("--picture: '%1' is not a quantity; use one of %2").arg(picture, names.join(", "));
+    return kExitInvalidInput;
+  }
+  const auto prefix = parsePrefix(parser, error);
+  if (!prefix) return kExitInvalidInput;
+
+  const core::RowRange rows = core::stripe(spec->y.count, shard.k, shard.n);
+  const std::int64_t points = (rows.rowEnd - rows.rowBegin) * spec->x.count;
+  ProgressLine progress(points);
+  const auto started = Clock::now();
+  const core::SweepMap computed = core::sweep(
+      *spec, rows, parallel::tbbParallelFor(threads), stop,
+      [&progress](std::int64_t done) { progress(done); });
+  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  if (!computed.complete) return kExitInterrupted;
+
+  map::StoredMap stored;
+  stored.description.spec = map::specJson(*spec, computed.period, picture);
+  stored.description.run = {{"seconds", seconds},
+                            {"threads", threads},
+                            {"shard", parser.isSet("shard") ? parser.value("shard") : QString("1/1")},
+                            {"complete", true}};
+  stored.rows = rows;
+  stored.columns = computed.columns;
+  stored.totalRows = spec->y.count;
+  stored.points = computed.points;
+  if (!map::writeMapFiles(*prefix, stored, error)) return 1;
+  const bool whole = rows.rowBegin == 0 && rows.rowEnd == spec->y.count;
+  if (whole && map::picturesAvailable() && !map::writeMapPicture(*prefix, stored, error)) return 1;
+  std::fprintf(stderr, "grazelab-cli: map: %lld points in %.3f s on %d thread%s (%.0f runs/s): %s.json\n",
+               (long long)points, seconds, threads, threads == 1 ? "" : "s",
+               seconds > 0 ? double(points) / seconds : 0.0, qPrintable(*prefix));
+  return kExitOk;
+}
+
+int runMerge(const QCommandLineParser& parser, const QStringList& parts, QString& error) {
+  const QStringList foreign = foreignOptions(
+      parser, {"x", "y", "threads", "shard", "picture", "count", "glo", "onepp", "state",
+               "perturb", "contacts", "t-end", "format", "trust", "methods", "quick", "m1", "m2",
+               "k1", "k2", "gap", "branch"});
+  if (!foreign.isEmpty()) {
+    error = foreign.join(", ") + " do not apply to 'merge' (the parts say what the map is)";
+    return kExitInvalidInput;
+  }
+  if (parts.isEmpty()) {
+    error = "merge: give the parts' prefixes after --out PREFIX";
+    return kExitInvalidInput;
+  }
+  const auto prefix = parsePrefix(parser, error);
+  if (!prefix) return kExitInvalidInput;
+  std::vector<map::StoredMap> stored;
+  for (const QString& part : parts) {
+    QString reason;
+    auto read = map::readMapFiles(part, reason);
+    if (!read) {
+      error = "merge: " + reason;
+      return kExitInvalidInput;
+    }
+    stored.push_back(std::move(*read));
+  }
+  auto whole = map::mergeStripes(std::move(stored), error);
+  if (!whole) {
+    error = "merge: " + error;
+    return kExitInvalidInput;
+  }
+  if (!map::writeMapFiles(*prefix, *whole, error)) return 1;
+  if (map::picturesAvailable() && !map::writeMapPicture(*prefix, *whole, error)) return 1;
+  std::fprintf(stderr, "grazelab-cli: merge: %lld parts, %lld x %lld points: %s.json\n",
+               (long long)parts.size(), (long long)whole->totalRows, (long long)whole->columns,
+               qPrintable(*prefix));
+  return kExitOk;
+}
+
+}  // namespace grazelab::cli

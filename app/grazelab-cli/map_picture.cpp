@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// A map's picture, drawn by the explorer's heat-map painter (built with the explorer only).
+#include "map_picture.h"
+
+#if GRAZELAB_CLI_PICTURES
+#include <QBuffer>
+#include <QJsonDocument>
+#include <QPainter>
+#include <QSaveFile>
+#include <QSvgGenerator>
+
+#include "ui/export.h"
+#include "ui/plots/heat_map.h"
+#endif
+
+namespace grazelab::cli::map {
+
+#if GRAZELAB_CLI_PICTURES
+namespace {
+
+constexpr int kWidth = 1000;
+constexpr int kHeight = 820;
+
+QString axisTitle(const QJsonObject& spec, const char* which) {
+  const QString name = spec[which].toObject()["variable"].toString();
+  if (name == "u1" || name == "gap") return name + " [length]";
+  if (name == "v1" || name == "v2") return name + " [length/time]";
+  if (name == "mass-ratio") return "m2 / m1";
+  if (name == "detuning") return "detuning w1/w2 - 2";
+  if (name == "epsilon") return "epsilon (size of the push)";
+  return name;
+}
+
+ui::HeatMapData heatMapOf(const StoredMap& map) {
+  const QJsonObject& spec = map.description.spec;
+  const QString quantity = spec["picture"].toString();
+  const auto which = core::parseQuantity(quantity.toStdString()).value_or(core::Quantity::FftFirst);
+  const QJsonObject info = spec["quantities"].toObject()[quantity].toObject();
+  ui::HeatMapData data;
+  data.columns = map.columns;
+  data.rows = map.rows.rowEnd - map.rows.rowBegin;
+  for (const core::PointSummary& point : map.points) data.values.push_back(core::valueOf(point, which));
+  const core::SweepAxis x = axisOf(spec, "x");
+  const core::SweepAxis y = axisOf(spec, "y");
+  data.xFrom = x.from;
+  data.xTo = x.to;
+  data.yFrom = y.at(map.rows.rowBegin);
+  data.yTo = y.at(map.rows.rowEnd - 1);
+  data.title = QStringLiteral("%1: %2 (%3 contacts per run)")
+                   .arg(quantity, info["meaning"].toString())
+                   .arg(spec["contacts"].toInteger());
+  data.xTitle = axisTitle(spec, "x");
+  data.yTitle = axisTitle(spec, "y");
+  const QString unit = info["unit"].toString();
+  data.valueTitle = unit == "count" ? quantity : QStringLiteral("%1 [%2]").arg(quantity, unit);
+  return data;
+}
+
+void paint(QPaintDevice& device, const ui::HeatMapData& data) {
+  QPainter painter(&device);
+  QFont font("DejaVu Sans");
+  font.setPixelSize(15);
+  painter.setFont(font);
+  paintHeatMap(painter, QRectF(0, 0, kWidth, kHeight), data);
+}
+
+bool save(const QString& path, const QByteArray& bytes, QString& error) {
+  QSaveFile file(path);
+  if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+    error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool picturesAvailable() { return true; }
+
+bool writeMapPicture(const QString& prefix, const StoredMap& map, QString& error) {
+  const ui::HeatMapData data = heatMapOf(map);
+  const QByteArray description = QJsonDocument(map.description.spec).toJson(QJsonDocument::Compact);
+  QImage image(kWidth, kHeight, QImage::Format_RGB32);
+  paint(image, data);
+  image.setText("GrazeLabMap", QString::fromUtf8(description));
+  QByteArray png;
+  QBuffer pngBuffer(&png);
+  pngBuffer.open(QIODevice::WriteOnly);
+  image.save(&pngBuffer, "PNG");
+  if (!save(prefix + ".png", png, error)) return false;
+
+  QByteArray svg;
+  QBuffer svgBuffer(&svg);
+  QSvgGenerator generator;
+  generator.setOutputDevice(&svgBuffer);
+  generator.setSize(QSize(kWidth, kHeight));
+  generator.setViewBox(QRect(0, 0, kWidth, kHeight));
+  generator.setTitle(data.title);
+  generator.setDescription(QString::fromUtf8(description));
+  paint(generator, data);
+  return save(prefix + ".svg", svg, error);
+}
+
+#else
+
+bool picturesAvailable() { return false; }
+bool writeMapPicture(const QString&, const StoredMap&, QString&) { return true; }
+
+#endif
+
+}  // namespace grazelab::cli::map

@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QString>
+
+#include "map_files.h"
+
+namespace grazelab::cli::map {
+
+/// True when this build draws pictures (it was built with the explorer's code).
+bool picturesAvailable();
+
+/// PREFIX.png and PREFIX.svg: the quantity named in the spec ("picture") as a viridis colour
+/// map with labelled axes and a colour bar; NaN cells grey, infinite ones white.
+bool writeMapPicture(const QString& prefix, const StoredMap& map, QString& error);
+
+}  // namespace grazelab::cli::map

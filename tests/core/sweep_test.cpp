@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Maps (issue 10): the grazing family's FFT is T2 exactly, no first flight lasts longer, the
+// result does not depend on threads or stripes, and bad specs are refused.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <thread>
+
+#include "core/chain.h"
+#include "core/orbits.h"
+#include "core/sweep.h"
+#include "parallel/tbb_parallel_for.h"
+
+namespace grazelab::core {
+namespace {
+
+SweepSpec grazingPlane(std::int64_t columns, std::int64_t rows, std::int64_t contacts) {
+  SweepSpec spec;
+  spec.model.design = Branch::Upper;
+  spec.x = {SweepVariable::U1, -1.0, 2.0, columns};
+  spec.y = {SweepVariable::V1, -1.5, 1.5, rows};
+  spec.contacts = contacts;
+  return spec;
+}
+
+// the same numbers bit for bit (NaN included), field by field
+bool sameBits(const PointSummary& a, const PointSummary& b) {
+  const double da[] = {a.fftFirst, a.fftMin, a.fftMax, a.fftMean, a.firstImpactTime, a.horizon};
+  const double db[] = {b.fftFirst, b.fftMin, b.fftMax, b.fftMean, b.firstImpactTime, b.horizon};
+  for (int i = 0; i < 6; ++i) {
+    if (std::bit_cast<std::uint64_t>(da[i]) != std::bit_cast<std::uint64_t>(db[i])) return false;
+  }
+  return a.impacts == b.impacts && a.grazings == b.grazings && a.sticks == b.sticks &&
+         a.valid == b.valid;
+}
+
+double periodOf(const Model& model) {
+  Model designed = model;
+  designed.k2 = designKappa(model.m2 / model.m1, *model.design) * model.k1;
+  return twoPi<double>() / makeChain(designed).chain->omegaSlow;
+}
+
+TEST(SweepTest, theGrazingFamilyFliesExactlyT2OverMassRatiosAndLambdas) {
+  SweepSpec spec;
+  spec.model.design = Branch::Upper;
+  spec.x = {SweepVariable::Lambda, 0.0, 4.0 / 3.0, 9};
+  spec.y = {SweepVariable::MassRatio, 0.05, 0.55, 6};
+  spec.contacts = 12;
+  ASSERT_EQ(checkSweep(spec), "");
+  const SweepMap map = sweep(spec, {0, spec.y.count}, serialFor());
+  ASSERT_TRUE(map.complete);
+  for (std::int64_t r = 0; r < spec.y.count; ++r) {
+    Model model = spec.model;
+    model.m2 = spec.y.at(r) * model.m1;
+    const double period = periodOf(model);
+    for (std::int64_t c = 0; c < spec.x.count; ++c) {
+      const PointSummary& p = map.points[std::size_t(r * spec.x.count + c)];
+      SCOPED_TRACE("lambda " + std::to_string(spec.x.at(c)) + ", m2/m1 " + std::to_string(spec.y.at(r)));
+      ASSERT_TRUE(p.valid);
+      if (c == 0) {
+        // lambda = 0 is GLOM1, the fast mode alone: it touches every T1 = T2 / 2
+        EXPECT_EQ(p.fftFirst, period / 2);
+        continue;
+      }
+      EXPECT_EQ(p.fftFirst, period);
+      EXPECT_EQ(p.fftMin, 1.0);
+      EXPECT_EQ(p.fftMax, 1.0);
+      EXPECT_EQ(p.fftMean, 1.0);
+      EXPECT_EQ(p.impacts, 0);
+      EXPECT_EQ(p.grazings, spec.contacts);
+      EXPECT_TRUE(std::isnan(p.firstImpactTime));
+    }
+  }
+}
+
+TEST(SweepTest, noFirstFlightOnTheGrazingStartPlaneLastsLongerThanT2) {
+  const SweepSpec spec = grazingPlane(41, 37, 1);
+  const SweepMap map = sweep(spec, {0, spec.y.count}, serialFor());
+  int atT2 = 0, below = 0;
+  for (const PointSummary& p : map.points) {
+    ASSERT_TRUE(p.valid);
+    ASSERT_TRUE(std::isfinite(p.fftFirst));  // every start on H leaves and comes back
+    EXPECT_LE(p.fftFirst, map.period);
+    EXPECT_LE(p.fftMax, 1.0);
+    (p.fftFirst == map.period ? atT2 : below) += 1;
+    // starts with u1 > gap are pressed on the stop: they stick first, then fly
+    EXPECT_EQ(p.impacts + p.grazings + p.sticks >= 1, true);
+  }
+  // both kinds are there: the grazing set (a disc around the origin) and the rest
+  EXPECT_GT(atT2, 100);
+  EXPECT_GT(below, 100);
+}
+
+TEST(SweepTest, aStartPressedOnTheStopFliesAfterItsStuckPhase) {
+  SweepSpec spec = grazingPlane(1, 1, 1);
+  spec.x = {SweepVariable::U1, 1.5, 1.5, 1};
+  spec.y = {SweepVariable::V1, 0.3, 0.3, 1};
+  const PointSummary p = sweepPoint(spec, 0, 0);
+  EXPECT_EQ(p.sticks, 1);
+  EXPECT_TRUE(std::isfinite(p.fftFirst));
+  EXPECT_LT(p.fftFirst, periodOf(spec.model));
+}
+
+TEST(SweepTest, onAllCoresTheMapIsTheSerialOneBitForBit) {
+  SweepSpec spec = grazingPlane(48, 40, 30);
+  const SweepMap serial = sweep(spec, {0, spec.y.count}, serialFor());
+  const SweepMap parallel = sweep(spec, {0, spec.y.count}, parallel::tbbParallelFor(2));
+  // and with the pieces run backwards on two plain threads
+  const ParallelFor backwards = [](std::int64_t count, const std::function<void(std::int64_t, std::int64_t)>& body) {
+    std::thread other([&] {
+      for (std::int64_t i = count - 1; i >= count / 2; --i) body(i, i + 1);
+    });
+    for (std::int64_t i = count / 2 - 1; i >= 0; --i) body(i, i + 1);
+    other.join();
+  };
+  const SweepMap shuffled = sweep(spec, {0, spec.y.count}, backwards);
+  ASSERT_EQ(serial.points.size(), parallel.points.size());
+  for (std::size_t i = 0; i < serial.points.size(); ++i) {
+    ASSERT_TRUE(sameBits(serial.points[i], parallel.points[i])) << "point " << i;
+    ASSERT_TRUE(sameBits(serial.points[i], shuffled.points[i])) << "point " << i;
+  }
+}
+
+TEST(SweepTest, stripesCoverEveryRowOnceAndJoinToTheWholeMap) {
+  for (std::int64_t rows : {1, 5, 37, 512}) {
+    for (std::int64_t n : {1, 2, 3, 4, 7}) {
+      std::int64_t next = 0;
+      for (std::int64_t k = 1; k <= n; ++k) {
+        const RowRange r = stripe(rows, k, n);
+        EXPECT_EQ(r.rowBegin, next);
+        EXPECT_GE(r.rowEnd, r.rowBegin);
+        next = r.rowEnd;
+      }
+      EXPECT_EQ(next, rows);
+    }
+  }
+  SweepSpec spec = grazingPlane(16, 11, 8);
+  const SweepMap whole = sweep(spec, {0, 11}, serialFor());
+  std::vector<PointSummary> joined;
+  for (std::int64_t k = 1; k <= 4; ++k) {
+    const SweepMap part = sweep(spec, stripe(11, k, 4), serialFor());
+    joined.insert(joined.end(), part.points.begin(), part.points.end());
+  }
+  ASSERT_EQ(joined.size(), whole.points.size());
+  for (std::size_t i = 0; i < joined.size(); ++i) ASSERT_TRUE(sameBits(joined[i], whole.points[i]));
+}
+
+TEST(SweepTest, axesAreNumpyLinspace) {
+  const SweepAxis axis{SweepVariable::MassRatio, 0.1, 0.7, 4};
+  EXPECT_EQ(axis.at(0), 0.1);
+  EXPECT_EQ(axis.at(3), 0.7);
+  const double step = (0.7 - 0.1) / 3;
+  EXPECT_EQ(axis.at(1), 1 * step + 0.1);
+  EXPECT_EQ(axis.at(2), 2 * step + 0.1);
+  EXPECT_EQ((SweepAxis{SweepVariable::Gap, 2.0, 5.0, 1}).at(0), 2.0);
+}
+
+TEST(SweepTest, pointsWithoutAChainOrAStartAreNaNNotNumbers) {
+  SweepSpec spec;
+  spec.model.design = Branch::Upper;
+  spec.x = {SweepVariable::MassRatio, 0.5, 0.7, 2};  // 0.7 > 9/16: no 1:2 chain
+  spec.y = {SweepVariable::Gap, 1.0, 1.0, 1};
+  const SweepMap map = sweep(spec, {0, 1}, serialFor());
+  EXPECT_TRUE(map.points[0].valid);
+  EXPECT_FALSE(map.points[1].valid);
+  EXPECT_TRUE(std::isnan(map.points[1].fftFirst));
+  // a start beyond the stop
+  SweepSpec past = grazingPlane(1, 1, 1);
+  past.start = StartSpec<double>{};
+  past.start->kind = StartSpec<double>::Kind::Explicit;
+  past.start->state = State{0, 1.5, 0, 0};
+  EXPECT_FALSE(sweepPoint(past, 0, 0).valid);
+}
+
+TEST(SweepTest, aStopEndsTheMapIncomplete) {
+  std::stop_source source;
+  source.request_stop();
+  const SweepSpec spec = grazingPlane(8, 8, 1);
+  const SweepMap map = sweep(spec, {0, 8}, serialFor(), source.get_token());
+  EXPECT_FALSE(map.complete);
+  EXPECT_EQ(map.computed, 0);
+}
+
+TEST(SweepTest, progressCountsEveryPointOnce) {
+  const SweepSpec spec = grazingPlane(30, 10, 1);
+  std::atomic<std::int64_t> last = 0;
+  sweep(spec, {0, 10}, parallel::tbbParallelFor(2), {},
+        [&last](std::int64_t done) { last = std::max<std::int64_t>(last, done); });
+  EXPECT_EQ(last.load(), 300);
+}
+
+TEST(SweepTest, specsThatMakeNoSenseAreRefusedWithAReason) {
+  SweepSpec spec = grazingPlane(4, 4, 1);
+  spec.y.variable = SweepVariable::U1;
+  EXPECT_NE(checkSweep(spec).find("both u1"), std::string::npos);
+  spec = grazingPlane(4, 4, 1);
+  spec.x.variable = SweepVariable::Lambda;
+  EXPECT_NE(checkSweep(spec).find("lambda sets the whole start"), std::string::npos);
+  spec = grazingPlane(0, 4, 1);
+  EXPECT_NE(checkSweep(spec).find("count"), std::string::npos);
+  spec = grazingPlane(4, 4, 0);
+  EXPECT_NE(checkSweep(spec).find("contacts"), std::string::npos);
+  spec = grazingPlane(4, 4, 1);
+  spec.x.to = INFINITY;
+  EXPECT_NE(checkSweep(spec).find("finite"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace grazelab::core
