@@ -56,7 +56,7 @@ def load(path):
     return h, a
 meta = json.load(open(work + '/whole/map.json'))
 spec, run = meta['spec'], meta['run']
-assert spec['x'] == {'variable': 'u1', 'from': -1, 'to': 2, 'count': 40}, spec['x']
+assert {k: spec['x'][k] for k in ('variable', 'from', 'to', 'count')} == {'variable': 'u1', 'from': -1, 'to': 2, 'count': 40}, spec['x']
 assert run['shape'] == [27, 40] and run['rows'] == [0, 27]
 for q, info in spec['quantities'].items():
     h, a = load(work + '/whole/map-%s.npy' % q)
