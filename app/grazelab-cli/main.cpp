@@ -24,6 +24,7 @@
 #include "cli_output.h"
 #include "core/simulate.h"
 #include "core/trust.h"
+#include "family_command.h"
 #include "map_command.h"
 #include "report_command.h"
 
@@ -178,7 +179,17 @@ int main(int argc, char* argv[]) {
   grazelab::cli::addReportOptions(parser);
   grazelab::cli::addMapOptions(parser);
 
-  if (!parser.parse(QCoreApplication::arguments())) return fail(parser.errorText());
+  // `family --onepp` names the family: the option takes no period there
+  QStringList arguments = QCoreApplication::arguments();
+  if (arguments.contains("family")) {
+    for (qsizetype i = 0; i < arguments.size(); ++i) {
+      const bool bare = arguments[i] == "--onepp" &&
+                        (i + 1 == arguments.size() || arguments[i + 1].startsWith("--") ||
+                         arguments[i + 1] == "family");
+      if (bare) arguments[i] = "--onepp=family";
+    }
+  }
+  if (!parser.parse(arguments)) return fail(parser.errorText());
   if (parser.isSet(help)) {
     write(parser.helpText().toUtf8());
     return 0;
@@ -212,6 +223,13 @@ int main(int argc, char* argv[]) {
     } else if (code != 0) {
       std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
     }
+    return code;
+  }
+  if (command == "family") {
+    QString error;
+    const int code = grazelab::cli::runFamily(parser, error);
+    if (code == grazelab::cli::kExitInvalidInput) return fail(error);
+    if (code != 0) std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
     return code;
   }
   const QStringList mapOnly = grazelab::cli::mapOnlyOptionsSet(parser);

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// `grazelab-cli family --onepp`: the one-impact-per-period family of the chain (issue 10).
+#include "family_command.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+
+#include "cli_input.h"
+#include "core/family.h"
+#include "core/orbits.h"
+#include "npy.h"
+#include "report_command.h"
+
+#if GRAZELAB_CLI_PICTURES
+#include <QBuffer>
+#include <QImage>
+#include <QPainter>
+#include <QSvgGenerator>
+
+#include "ui/plots/family_picture.h"
+#endif
+
+namespace grazelab::cli {
+namespace {
+
+bool save(const QString& path, const QByteArray& bytes, QString& error) {
+  QSaveFile file(path);
+  if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+    error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+    return false;
+  }
+  return true;
+}
+
+QByteArray number(double value) { return QByteArray::number(value, 'g', 17); }
+
+QJsonObject pointJson(const core::FamilyPoint& p) {
+  return {{"T", p.T}, {"omega", p.omega}, {"V", p.V}, {"u1", p.u1}, {"energy", p.energy}};
+}
+
+#if GRAZELAB_CLI_PICTURES
+bool writePictures(const QString& prefix, const std::vector<core::FamilyPoint>& family,
+                   const core::FamilyPoint& end, const QString& title, const QByteArray& json,
+                   QString& error) {
+  constexpr int kWidth = 1100, kHeight = 760;
+  auto paint = [&](QPaintDevice& device) {
+    QPainter painter(&device);
+    QFont font("DejaVu Sans");
+    font.setPixelSize(15);
+    painter.setFont(font);
+    ui::paintFrequencyEnergy(painter, QRectF(0, 0, kWidth, kHeight), family, end, title);
+  };
+  QImage image(kWidth, kHeight, QImage::Format_RGB32);
+  paint(image);
+  image.setText("GrazeLabFamily", QString::fromUtf8(json));
+  QByteArray png;
+  QBuffer pngBuffer(&png);
+  pngBuffer.open(QIODevice::WriteOnly);
+  image.save(&pngBuffer, "PNG");
+  if (!save(prefix + ".png", png, error)) return false;
+  QByteArray svg;
+  QBuffer svgBuffer(&svg);
+  QSvgGenerator generator;
+  generator.setOutputDevice(&svgBuffer);
+  generator.setSize(QSize(kWidth, kHeight));
+  generator.setViewBox(QRect(0, 0, kWidth, kHeight));
+  generator.setTitle(title);
+  generator.setDescription(QString::fromUtf8(json));
+  paint(generator);
+  return save(prefix + ".svg", svg, error);
+}
+#endif
+
+}  // namespace
+
+int runFamily(const QCommandLineParser& parser, QString& error) {
+  if (!parser.isSet("onepp")) {
+    error = "family: name the family: --onepp (one impact per period)";
+    return kExitInvalidInput;
+  }
+  for (const char* name : {"glo", "state", "perturb", "contacts", "t-end", "format", "trust", "x",
+                           "y", "threads", "shard", "picture", "methods", "quick"}) {
+    if (parser.isSet(name)) {
+      error = QStringLiteral("--%1 does not apply to 'family'").arg(name);
+      return kExitInvalidInput;
+    }
+  }
+  if (parser.value("precision") != "double") {
+    error = "--precision: the family is computed in double";
+    return kExitInvalidInput;
+  }
+  std::int64_t count = 2000;
+  if (parser.isSet("count")) {
+    bool ok = false;
+    count = parser.value("count").toLongLong(&ok);
+    if (!ok || count < 1 || count > 10'000'000) {
+      error = QStringLiteral("--count: '%1' is not a count from 1 to 10000000").arg(parser.value("count"));
+      return kExitInvalidInput;
+    }
+  }
+  const Parsed<ModelInput<double>> model = parseModel<double>(parser);
+  if (!model.value) {
+    error = model.error;
+    return kExitInvalidInput;
+  }
+  if (!model.value->chain.resonant) {
+    error = "family: the 1IPP family of Theorem 2.1 needs the 1:2 resonant chain (give no --k2)";
+    return kExitInvalidInput;
+  }
+  if (!parser.isSet("out")) {
+    error = "--out PREFIX is required (the files are PREFIX.csv, PREFIX.npy, PREFIX.json, ...)";
+    return kExitInvalidInput;
+  }
+  const QString prefix = parser.value("out");
+  if (prefix.isEmpty() || prefix.endsWith('/') || QFileInfo(prefix).isDir() ||
+      !QDir().mkpath(QFileInfo(prefix).absolutePath())) {
+    error = QStringLiteral("--out: '%1' is not a usable prefix (give e.g. out/family)").arg(prefix);
+    return kExitInvalidInput;
+  }
+
+  const core::Chain<double>& chain = model.value->chain;
+  const std::vector<core::FamilyPoint> family = core::onePeriodicFamily(chain, count);
+  const core::FamilyPoint end = core::grazingEnd(chain);
+
+  QByteArray csv = "T,omega,V,u1,energy,admissible\n";
+  NpyArray array;
+  array.rows = std::int64_t(family.size());
+  array.columns = 6;
+  for (const core::FamilyPoint& p : family) {
+    csv += number(p.T) + "," + number(p.omega) + "," + number(p.V) + "," + number(p.u1) + "," +
+           number(p.energy) + "," + (p.admissible ? "1" : "0") + "\n";
+    for (double v : {p.T, p.omega, p.V, p.u1, p.energy, p.admissible ? 1.0 : 0.0}) array.reals.push_back(v);
+  }
+  const core::Model& m = chain.model;
+  const QJsonObject json{
+      {"format", "grazelab-family"},
+      {"family", "onepp"},
+      {"model", QJsonObject{{"m1", m.m1}, {"m2", m.m2}, {"k1", m.k1}, {"k2", m.k2}, {"gap", m.gap},
+                            {"T2", core::twoPi<double>() / chain.omegaSlow}}},
+      {"lambda_star", core::lambdaStar(chain)},
+      {"grazing_end", pointJson(end)},
+      {"columns", QJsonArray{"T", "omega", "V", "u1", "energy", "admissible"}},
+      {"rows", qint64(family.size())},
+      {"periods", QStringLiteral("T2 k / (count + 1) for k = 1 ... %1, and T2 (1 - 2^-k) for k = 8 ... 40, "
+                                 "sorted; multiples of T1 left out").arg(count)},
+      {"energy", "E = 1/2 v^T M v + 1/2 u^T K u of the post-impact state (constant on the orbit)"},
+      {"admissible", "1 when V < 0 and the free flight from the data first returns to the stop "
+                     "at T (exact contact search), else 0"},
+      {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
+  const QByteArray jsonBytes = QJsonDocument(json).toJson();
+  if (!save(prefix + ".csv", csv, error) || !save(prefix + ".npy", encodeNpy(array), error) ||
+      !save(prefix + ".json", jsonBytes, error)) {
+    return 1;
+  }
+#if GRAZELAB_CLI_PICTURES
+  const QString title = QStringLiteral("1IPP family: frequency against energy (m2/m1 = %1, λ* = %2)")
+                            .arg(m.m2 / m.m1, 0, 'g', 4)
+                            .arg(core::lambdaStar(chain), 0, 'g', 4);
+  if (!writePictures(prefix, family, end, title, QJsonDocument(json).toJson(QJsonDocument::Compact), error)) {
+    return 1;
+  }
+#endif
+  std::int64_t admissible = 0;
+  for (const auto& p : family) admissible += p.admissible ? 1 : 0;
+  std::fprintf(stderr, "grazelab-cli: family: %lld orbits (%lld admissible): %s.csv\n",
+               (long long)family.size(), (long long)admissible, qPrintable(prefix));
+  return kExitOk;
+}
+
+}  // namespace grazelab::cli

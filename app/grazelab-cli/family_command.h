@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QString>
+
+class QCommandLineParser;
+
+namespace grazelab::cli {
+
+/// `grazelab-cli family --onepp [model] --out PREFIX [--count N]`: the 1IPP family as a table
+/// (PREFIX.csv: T,omega,V,u1,energy,admissible; PREFIX.npy: the same columns; PREFIX.json) and
+/// a frequency-energy picture (PREFIX.png, PREFIX.svg). Exit 2 with `error` on invalid input.
+int runFamily(const QCommandLineParser& parser, QString& error);
+
+}  // namespace grazelab::cli

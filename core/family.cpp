@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/family.h"
+
+#include <algorithm>
+
+#include "core/orbits.h"
+
+namespace grazelab::core {
+
+std::vector<FamilyPoint> onePeriodicFamily(const Chain<double>& chain, std::int64_t count) {
+  const double T2 = twoPi<double>() / chain.omegaSlow;
+  std::vector<double> periods;
+  for (std::int64_t k = 1; k <= count; ++k) periods.push_back(T2 * double(k) / double(count + 1));
+  // towards the grazing end: V and the distance to GLO_lambda* fall like T2 - T
+  for (int k = 8; k <= 40; ++k) periods.push_back(T2 * (1 - std::ldexp(1.0, -k)));
+  std::sort(periods.begin(), periods.end());
+  std::vector<FamilyPoint> family;
+  family.reserve(periods.size());
+  for (double T : periods) {
+    const OnePeriodicOrbit<double> orbit = onePeriodicOrbit(chain, T);
+    if (orbit.V == 0 && !orbit.admissible) continue;  // a multiple of T1 or T2: no data at all
+    FamilyPoint point;
+    point.T = T;
+    point.omega = twoPi<double>() / T;
+    point.V = orbit.V;
+    point.u1 = orbit.postImpact.u1;
+    point.energy = physicalEnergy(chain, orbit.postImpact);
+    point.admissible = orbit.admissible;
+    family.push_back(point);
+  }
+  return family;
+}
+
+FamilyPoint grazingEnd(const Chain<double>& chain) {
+  const State data = gloData(chain, lambdaStar(chain));
+  FamilyPoint end;
+  end.T = twoPi<double>() / chain.omegaSlow;
+  end.omega = chain.omegaSlow;
+  end.V = 0;
+  end.u1 = data.u1;
+  end.energy = physicalEnergy(chain, data);
+  end.admissible = true;
+  return end;
+}
+
+}  // namespace grazelab::core

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 GrazeLab developers
+# `family --onepp` (issue 10): the table's columns, its grazing end on the lambda* data, and
+# refusals. Usage: family_test.sh GRAZELAB_CLI
+set -uo pipefail
+cli="$1"
+here="$(cd "$(dirname "$0")" && pwd)"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+out="$work/stdout"
+err="$work/stderr"
+failures=0
+source "$here/contract_lib.sh"
+
+expect_ok family --onepp --m2 0.3 --count 300 --out "$work/f/family" || exit 1
+python3 - "$work" <<'PY' || fail "family table"
+import array, ast, json, sys
+work = sys.argv[1]
+lines = open(work + '/f/family.csv').read().splitlines()
+assert lines[0] == 'T,omega,V,u1,energy,admissible', lines[0]
+rows = [list(map(float, l.split(','))) for l in lines[1:]]
+meta = json.load(open(work + '/f/family.json'))
+assert meta['rows'] == len(rows) >= 300
+b = open(work + '/f/family.npy', 'rb').read(); n = b[8] | (b[9] << 8)
+h = ast.literal_eval(b[10:10 + n].decode('latin1')); a = array.array('d'); a.frombytes(b[10 + n:])
+assert h['shape'] == (len(rows), 6), h
+assert all(a[6 * i + j] == rows[i][j] for i in range(len(rows)) for j in range(6))
+T2, end = meta['model']['T2'], meta['grazing_end']
+assert all(0 < r[0] < T2 for r in rows) and all(x[0] < y[0] for x, y in zip(rows, rows[1:]))
+last = rows[-1]
+assert last[5] == 1 and -1e-10 < last[2] < 0, last
+assert abs(last[3] - end['u1']) < 1e-10 and abs(last[4] - end['energy']) < 1e-10 * end['energy'], (last, end)
+assert all(r[2] < 0 for r in rows if r[5] == 1), 'an admissible orbit with V >= 0'
+PY
+EXPECT_WORD="--onepp" expect_invalid family --out "$work/bad/f"
+EXPECT_WORD="resonant" expect_invalid family --onepp --k2 0.6 --out "$work/bad/f"
+EXPECT_WORD="--out" expect_invalid family --onepp
+EXPECT_WORD="--count" expect_invalid family --onepp --count 0 --out "$work/bad/f"
+EXPECT_WORD="does not apply" expect_invalid family --onepp --contacts 5 --out "$work/bad/f"
+[ ! -e "$work/bad" ] || [ -z "$(ls -A "$work/bad")" ] || fail "a refused family wrote files"
+if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
+echo "family: all checks passed"

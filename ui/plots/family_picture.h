@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QRectF>
+
+#include <vector>
+
+#include "core/family.h"
+
+class QPainter;
+
+namespace grazelab::ui {
+
+/// The frequency-energy curve of the 1IPP family: 2 pi / T against the energy (log scale),
+/// admissible orbits a solid line, inadmissible ones grey crosses, the grazing end (T -> T2,
+/// V -> 0, GLO_lambda*) a marked point. The window is the admissible part's.
+void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
+                          const std::vector<core::FamilyPoint>& family,
+                          const core::FamilyPoint& grazingEnd, const QString& title);
+
+}  // namespace grazelab::ui
