@@ -47,9 +47,10 @@ ui::HeatMapData heatMapOf(const StoredMap& map) {
   data.xTo = x.to;
   data.yFrom = y.at(map.rows.rowBegin);
   data.yTo = y.at(map.rows.rowEnd - 1);
-  data.title = QStringLiteral("%1: %2 (%3 contacts per run)")
-                   .arg(quantity, info["meaning"].toString())
-                   .arg(spec["contacts"].toInteger());
+  const qint64 contacts = spec["contacts"].toInteger();
+  QString meaning = info["meaning"].toString();
+  meaning[0] = meaning[0].toUpper();
+  data.title = QStringLiteral("%1 (%2 contact%3 per run)").arg(meaning).arg(contacts).arg(contacts == 1 ? "" : "s");
   data.xTitle = axisTitle(spec, "x");
   data.yTitle = axisTitle(spec, "y");
   const QString unit = info["unit"].toString();

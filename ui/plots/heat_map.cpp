@@ -111,7 +111,10 @@ void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data
   QFont titleFont = font;
   titleFont.setBold(true);
   painter.setFont(titleFont);
-  painter.drawText(QRectF(area.left(), area.top(), area.width(), 2 * line), Qt::AlignCenter, data.title);
+  // over the map only (the colour bar's title is on the same line to the right), cut if too long
+  const QFontMetricsF boldMetrics(titleFont);
+  const QString title = boldMetrics.elidedText(data.title, Qt::ElideRight, plot.right() - area.left());
+  painter.drawText(QRectF(area.left(), area.top(), plot.right() - area.left(), 2 * line), Qt::AlignCenter, title);
   painter.setFont(font);
 
   // the cells, without smoothing: each is one value
