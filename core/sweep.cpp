@@ -142,6 +142,15 @@ PointRun runPoint(const Model& model, const State& start, std::int64_t contacts,
   return run;
 }
 
+// T2 of the model as given (NaN when it cannot be formed)
+double basePeriod(const Model& given) {
+  if (!validate(given).empty()) return kNaN;
+  const std::optional<Model> model =
+      given.design ? designedModel(given.m1, given.m2, given.k1, given.gap, *given.design) : given;
+  const ChainOrProblem<double> formed = model ? makeChain(*model) : ChainOrProblem<double>{};
+  return formed.chain ? twoPi<double>() / formed.chain->omegaSlow : kNaN;
+}
+
 PointSummary invalidPoint() {
   return {kNaN, kNaN, kNaN, kNaN, 0, 0, 0, kNaN, kNaN, false};
 }
@@ -328,14 +337,7 @@ SweepMap sweep(const SweepSpec& spec, RowRange rows, const ParallelFor& parallel
   map.columns = spec.x.count;
   const std::int64_t count = (rows.rowEnd - rows.rowBegin) * map.columns;
   map.points.assign(std::size_t(count), invalidPoint());
-  const ChainOrProblem<double> base = validate(spec.model).empty()
-                                          ? makeChain(spec.model.design
-                                                          ? *designedModel(spec.model.m1, spec.model.m2,
-                                                                           spec.model.k1, spec.model.gap,
-                                                                           *spec.model.design)
-                                                          : spec.model)
-                                          : ChainOrProblem<double>{};
-  map.period = base.chain ? twoPi<double>() / base.chain->omegaSlow : kNaN;
+  map.period = basePeriod(spec.model);
 
   std::atomic<std::int64_t> done = 0;
   parallelFor((count + kPiece - 1) / kPiece, [&](std::int64_t pieceBegin, std::int64_t pieceEnd) {

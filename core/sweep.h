@@ -114,7 +114,9 @@ struct SweepMap {
   RowRange rows;
   std::int64_t columns = 0;
   std::vector<PointSummary> points;  ///< (rowEnd - rowBegin) x columns
-  double period = 0;        ///< T2 of the base model [time] (NaN if it cannot be formed)
+  /// T2 of the model as given [time] (NaN if it cannot be formed); with a mass-ratio or
+  /// detuning axis each point's FFT/T2 uses that point's own T2
+  double period = 0;
   bool complete = false;    ///< false when stopped early: points not reached stay invalid
   std::int64_t computed = 0;  ///< points computed
 };

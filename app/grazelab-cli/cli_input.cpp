@@ -57,7 +57,8 @@ void addOptions(QCommandLineParser& parser) {
       {"precision", "Arithmetic of the run: double (default), long or quad (binary128). Numbers "
                     "are read and written in it.", "double|long|quad", "double"},
       {"glo", "Start on GLO_lambda data, any real lambda (default 0.5).", "lambda"},
-      {"onepp", "Start on the one-impact-per-period orbit of period T (T < T2 near T2).", "T"},
+      {"onepp", "Start on the one-impact-per-period orbit of period T (T < T2 near T2). With "
+                "'family', --onepp takes no value: it names the family.", "T"},
       {"state", "Start from the state u1,u2,v1,v2.", "u1,u2,v1,v2"},
       {"perturb", "Add du1,du2,dv1,dv2 to the initial state.", "du1,du2,dv1,dv2"},
       {"contacts", "Stop after N contacts (default 100 when no --t-end).", "N"},
@@ -67,7 +68,8 @@ void addOptions(QCommandLineParser& parser) {
        "json|jsonl|csv|summary", "json"},
       {"trust", "Error estimate of the run: auto (default: a shadow run one precision up while "
                 "it costs about the run itself, then extrapolation), full (the shadow to the "
-                "end) or off.", "off|auto|full", "auto"},
+                "end) or off. For 'map': off (default: horizon NaN) or auto (a shadow per "
+                "point).", "off|auto|full", "auto"},
   });
 }
 

@@ -151,6 +151,13 @@ int runFamily(const QCommandLineParser& parser, QString& error) {
       {"periods", QStringLiteral("T2 k / (count + 1) for k = 1 ... %1, and T2 (1 - 2^-k) for k = 8 ... 40, "
                                  "sorted; multiples of T1 left out").arg(count)},
       {"energy", "E = 1/2 v^T M v + 1/2 u^T K u of the post-impact state (constant on the orbit)"},
+      {"post_impact_state", "u1 = u1, u2 = gap, v1 = 0, v2 = V"},
+      {"conditioning", "near T2, V is conditioned like T2 / (T2 - T) in T: recomputed from the "
+                       "printed 17-digit T (T2 (1 - 2^-k), rounded) it differs by up to that "
+                       "factor times 1e-16 relatively"},
+      {"files", QJsonObject{{"csv", QFileInfo(prefix).fileName() + ".csv"},
+                            {"npy", QFileInfo(prefix).fileName() + ".npy (float64, rows x 6 "
+                                    "columns in the CSV's order, admissible as 1.0 / 0.0)"}}},
       {"admissible", "1 when V < 0 and the free flight from the data first returns to the stop "
                      "at T (exact contact search), else 0"},
       {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};

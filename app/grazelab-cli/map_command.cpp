@@ -231,6 +231,14 @@ int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& erro
 
   const core::RowRange rows = core::stripe(spec->y.count, shard.k, shard.n);
   const std::int64_t points = (rows.rowEnd - rows.rowBegin) * spec->x.count;
+  // a summary is 80 bytes: beyond 2^27 points (10.7 GB) a process should take a stripe
+  constexpr std::int64_t kMaxPointsInMemory = std::int64_t(1) << 27;
+  if (points > kMaxPointsInMemory) {
+    error = QStringLiteral("%1 points (%2 GB in memory) in one process: split the rows with "
+                           "--shard K/N and join the stripes with merge")
+                .arg(points).arg(double(points) * 80 / 1e9, 0, 'f', 1);
+    return kExitInvalidInput;
+  }
   ProgressLine progress(points);
   const auto started = Clock::now();
   const core::SweepMap computed = core::sweep(
