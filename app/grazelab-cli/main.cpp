@@ -211,7 +211,7 @@ int main(int argc, char* argv[]) {
     return code;
   }
   if (positional.size() != 1) {
-    return fail("expected one command: info, simulate, report or stability (see --help)");
+    return fail("expected one command: info, simulate, report, stability, map, merge or family (see --help)");
   }
   const QString command = positional.first();
   if (command == "map") {
@@ -278,5 +278,5 @@ int main(int argc, char* argv[]) {
         return simulate<grazelab::core::Quad>(parser, watcher, *trust);
     }
   }
-  return fail(QStringLiteral("unknown command '%1': use info, simulate, report or stability").arg(command));
+  return fail(QStringLiteral("unknown command '%1': use info, simulate, report, stability, map, merge or family").arg(command));
 }
