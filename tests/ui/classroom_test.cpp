@@ -190,6 +190,27 @@ class ClassroomTest : public QObject {
     }
   }
 
+  // Qt Charts cut long titles to "...": "Free-flight time at each contact" in three columns at
+  // 1920x1080 presentation, the 1IPP scene's "|V| (speed of mass 2 at impact)"
+  void noTitleOrLabelIsCutOnAnySceneAtDeskOrProjectorSize() {
+    for (const auto& [width, height, presentation] : {std::tuple{1280, 720, false}, std::tuple{1920, 1080, true}}) {
+      m_window->setPresentation(presentation, height, false);
+      m_window->resize(width, height);
+      for (int scene = 0; scene < int(m_window->scenes().size()); ++scene) {
+        m_window->selectScene(scene);
+        QVERIFY(waitForLatestFinal(*m_window, 60000));
+        QTest::qWait(20);  // laid out at the window's size
+        for (PlotView* plot : m_window->plots()) plot->refreshNow();
+        QTest::qWait(30);  // the charts laid out again with the wrapped titles
+        for (PlotView* plot : m_window->plots()) {
+          QVERIFY2(plot->cutTexts().isEmpty(),
+                   qPrintable(QStringLiteral("%1x%2: %3").arg(width).arg(height).arg(plot->cutTexts().join(" | "))));
+        }
+      }
+    }
+    m_window->setPresentation(false, 1080, false);
+  }
+
   // the last colour bin covered the others and the legend named two bins of five
   void everyPoincareBinIsNamedAndShows() {
     m_window->selectScene(sceneIndex(*m_window, QStringLiteral("near-grazing")));

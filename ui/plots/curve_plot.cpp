@@ -25,9 +25,7 @@ void CurvePlot::show(const SimUpdate& update) {
   const auto found = update.request->figures.find(m_kind);
   if (found == update.request->figures.end()) return;
   const CurveFigure& figure = found->second;
-  chart()->setTitle(figure.title);
-  m_axisX->setTitleText(figure.xTitle);
-  m_axisY->setTitleText(figure.yTitle);
+  setTitles(figure.title, figure.xTitle, figure.yTitle);
   setToolTip(figure.toolTip);
   const auto& list = entries();
   list[std::size_t(m_curve)].series->setName(figure.curveName);

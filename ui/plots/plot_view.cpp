@@ -3,6 +3,7 @@
 #include "ui/plots/plot_view.h"
 
 #include <QChart>
+#include <QFontMetricsF>
 #include <QKeyEvent>
 #include <QLegend>
 #include <QGraphicsTextItem>
@@ -83,13 +84,32 @@ void setRangeWithTicks(QValueAxis* axis, double low, double high) {
   }
 }
 
+// `text` as is when it fits in `width`, else its words on lines that fit, as HTML (Qt Charts
+// draws titles as rich text and sizes them to all their lines)
+QString wrappedTitle(const QString& text, const QFont& font, double width) {
+  const QFontMetricsF metrics(font);
+  if (metrics.horizontalAdvance(text) <= width || width <= 0) return text;
+  QStringList lines;
+  QString line;
+  for (const QString& word : text.split(' ', Qt::SkipEmptyParts)) {
+    const QString longer = line.isEmpty() ? word : line + ' ' + word;
+    if (!line.isEmpty() && metrics.horizontalAdvance(longer) > width) {
+      lines << line.toHtmlEscaped();
+      line = word;
+    } else {
+      line = longer;
+    }
+  }
+  lines << line.toHtmlEscaped();
+  return lines.join("<br>");
+}
+
 }  // namespace
 
 PlotView::PlotView(const QString& title, const QString& xTitle, const QString& yTitle,
                    QWidget* parent)
     : QChartView(new QChart, parent) {
   QChart* chart = this->chart();
-  chart->setTitle(title);
   chart->setTheme(QChart::ChartThemeLight);
   chart->setAnimationOptions(QChart::NoAnimation);
   chart->setMargins(QMargins(4, 4, 4, 4));
@@ -103,8 +123,6 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
 
   m_axisX = new QValueAxis;
   m_axisY = new QValueAxis;
-  m_axisX->setTitleText(xTitle);
-  m_axisY->setTitleText(yTitle);
   chart->addAxis(m_axisX, Qt::AlignBottom);
   chart->addAxis(m_axisY, Qt::AlignLeft);
 
@@ -113,6 +131,7 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
   setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(240, 180);  // again after each resize (resizeEvent)
 
+  setTitles(title, xTitle, yTitle);
   m_refreshTimer.setSingleShot(true);
   m_refreshTimer.setInterval(0);
   connect(&m_refreshTimer, &QTimer::timeout, this, &PlotView::refresh);
@@ -179,6 +198,7 @@ void PlotView::setPresentation(bool on, int textPixels) {
     }
   }
   m_presentation = on;
+  fitTitles();
   updateLegend();
   scheduleRefresh();
 }
@@ -237,7 +257,49 @@ void PlotView::userMovedView() {
   scheduleRefresh();
 }
 
-QString PlotView::title() const { return chart()->title(); }
+QString PlotView::title() const { return m_title; }
+
+void PlotView::setTitles(const QString& title, const QString& xTitle, const QString& yTitle) {
+  m_title = title;
+  m_xTitle = xTitle;
+  m_yTitle = yTitle;
+  fitTitles();
+}
+
+void PlotView::setXTitle(const QString& xTitle) {
+  m_xTitle = xTitle;
+  fitTitles();
+}
+
+QStringList PlotView::cutTexts() const {
+  QStringList cut;
+  for (const QGraphicsItem* item : chart()->childItems()) {
+    for (const QGraphicsItem* child : item->childItems() + QList<QGraphicsItem*>{const_cast<QGraphicsItem*>(item)}) {
+      if (const auto* text = dynamic_cast<const QGraphicsTextItem*>(child)) {
+        if (text != m_legendText && text->isVisible() && text->toPlainText().endsWith("...")) {
+          cut << text->toPlainText();
+        }
+      }
+    }
+  }
+  return cut;
+}
+
+void PlotView::fitTitles() {
+  // the plot area once laid out; before that, the view less room for ticks and margins
+  // (Qt draws a title as a text document with a margin of 4 px each side: 12 px spare)
+  const QRectF area = chart()->plotArea();
+  const double titleWidth = width() - 2 * 4 - 12 - 12;
+  const double xWidth = (area.width() > 0 ? area.width() : width() - 80) - 12;
+  const double yWidth = (area.height() > 0 ? area.height() : height() - 100) - 12;
+  const QString title = wrappedTitle(m_title, chart()->titleFont(), titleWidth);
+  const QString x = wrappedTitle(m_xTitle, m_axisX->titleFont(), xWidth);
+  const QString y = wrappedTitle(m_yTitle, m_axisY->titleFont(), yWidth);
+  // set only when changed: every new title lays the chart out again
+  if (chart()->title() != title) chart()->setTitle(title);
+  if (m_axisX->titleText() != x) m_axisX->setTitleText(x);
+  if (m_axisY->titleText() != y) m_axisY->setTitleText(y);
+}
 
 qsizetype PlotView::drawnPointCount() const {
   qsizetype count = 0;
@@ -322,6 +384,7 @@ QRectF PlotView::wantedRange() {
 }
 
 void PlotView::refresh() {
+  fitTitles();  // to the plot area as laid out now
   if (m_followData) {
     const QRectF range = wantedRange();
     const bool moves = range.left() != m_axisX->min() || range.right() != m_axisX->max() ||
@@ -542,6 +605,7 @@ void PlotView::keyPressEvent(QKeyEvent* event) {
 
 void PlotView::resizeEvent(QResizeEvent* event) {
   QChartView::resizeEvent(event);
+  fitTitles();
   updateLegend();  // wraps to the new width
   // QChartView raises its own minimum size to the chart's and never lowers it: a legend of
   // many lines once would keep the plot (and the window) tall for good

@@ -88,11 +88,18 @@ class PlotView : public QChartView, public SceneView {
   /// Whether the legend shows every name whole, on as many lines as it needs (false when it
   /// had to be cut to 40 % of the chart's height, or is not laid out yet).
   bool legendFits() const { return m_legendFits; }
+  /// The texts Qt Charts draws cut short ("..."): titles, axis titles, tick labels. Empty when
+  /// every text shows whole.
+  QStringList cutTexts() const;
   /// Number of points currently handed to Qt Charts, summed over series.
   qsizetype drawnPointCount() const;
   /// Appends the plotted data at full resolution as CSV rows "plot,series,x,y" (no header).
   void appendCsv(QString& csv) const;
   QString title() const;
+  /// The chart's title and axis titles, kept whole: each is wrapped onto more lines where the
+  /// view is too narrow for it (Qt Charts would cut it to "…").
+  void setTitles(const QString& title, const QString& xTitle, const QString& yTitle);
+  void setXTitle(const QString& xTitle);
 
   /// Applies pending data now instead of at the next turn of the event loop.
   void refreshNow();
@@ -180,6 +187,9 @@ class PlotView : public QChartView, public SceneView {
   struct Fonts {
     QFont title, labels, axisTitles, legend;
   };
+  /// Wraps the titles to the view's current size.
+  void fitTitles();
+  QString m_title, m_xTitle, m_yTitle;  ///< whole, as set
   std::optional<Fonts> m_deskFonts;  ///< the fonts before presentation mode
   QLabel* m_staleNote = nullptr;
   QGraphicsTextItem* m_legendText = nullptr;

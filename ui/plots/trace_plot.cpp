@@ -65,8 +65,7 @@ void TracePlot::show(const SimUpdate& update) {
                                   .arg(tLast, 0, 'g', 3)
                                   .arg(result.tFinal, 0, 'g', 3)
                             : tr("time t");
-  // set only when it changes: each new title lays the chart out again
-  if (m_axisX->titleText() != title) m_axisX->setTitleText(title);
+  setXTitle(title);
   drawOverlay();
   scheduleRefresh();
 }
