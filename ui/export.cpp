@@ -11,6 +11,7 @@
 #include <QJsonDocument>
 #include <QPainter>
 #include <QPdfWriter>
+#include <QScrollArea>
 #include <QSaveFile>
 #include <QSvgGenerator>
 #include <QWidget>
@@ -68,6 +69,40 @@ class LegendClipping {
 
  private:
   QList<QPointer<QLegend>> m_legends;
+};
+
+// Qt's PDF engine does not clip a scroll area's content to its viewport: the parameter panel's
+// rows below its visible part were drawn over the status bar. While the page is drawn, each
+// visible scroll area's content is hidden and its viewport goes in as a picture of what it
+// shows (3x), the rest as vectors.
+class ScrollAreasAsPictures {
+ public:
+  explicit ScrollAreasAsPictures(QWidget* root) {
+    for (QScrollArea* area : root->findChildren<QScrollArea*>()) {
+      QWidget* content = area->widget();
+      if (!area->isVisibleTo(root) || !content || !content->isVisibleTo(root)) continue;
+      QWidget* viewport = area->viewport();
+      m_pictures.append({QRect(viewport->mapTo(root, QPoint(0, 0)), viewport->size()),
+                         renderImage(viewport, 3)});
+      content->hide();
+      m_hidden.append(content);
+    }
+  }
+  ~ScrollAreasAsPictures() {
+    for (QWidget* content : m_hidden) {
+      if (content) content->show();
+    }
+  }
+  ScrollAreasAsPictures(const ScrollAreasAsPictures&) = delete;
+  ScrollAreasAsPictures& operator=(const ScrollAreasAsPictures&) = delete;
+
+  void paint(QPainter& painter) const {
+    for (const auto& [rect, image] : m_pictures) painter.drawImage(QRectF(rect), image);
+  }
+
+ private:
+  QList<QPair<QRect, QImage>> m_pictures;
+  QList<QPointer<QWidget>> m_hidden;
 };
 
 }  // namespace
@@ -155,7 +190,9 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
       const double scale = double(writer.width()) / widget->width();
       painter.scale(scale, scale);
       const LegendClipping unclipped(widget);
+      const ScrollAreasAsPictures pictures(widget);
       widget->render(&painter);
+      pictures.paint(painter);
       painter.end();
       break;
     }

@@ -7,6 +7,8 @@
 #include <QFileInfo>
 #include <QImageReader>
 #include <QProcess>
+#include <QScrollArea>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -125,6 +127,48 @@ class FilesTest : public QObject {
     const auto session = sessionFromJson(json, Params{}, &error);
     QVERIFY2(session, qPrintable(error));
     QVERIFY(session->params == m_window->params());
+  }
+
+  // Qt's PDF engine did not clip the parameter panel's scroll area: its rows below the visible
+  // part were drawn over the status bar. The status bar's strip of the page must be the same
+  // with the panel shown (overflowing: presentation text) and hidden.
+  void pdfClipsTheParameterPanelToWhatItShows() {
+    m_window->setPresentation(true, 1080, false);
+    m_window->resize(1920, 1080);  // the readout box then straddles the panel's lower edge
+    QTest::qWait(300);
+    const auto* side = m_window->findChild<QScrollArea*>();
+    QVERIFY(side && side->widget());
+    QVERIFY2(side->widget()->height() > side->viewport()->height(), "the panel does not overflow");
+    QTemporaryDir dir;
+    auto statusStrip = [&](const QString& name) {
+      const QString pdf = dir.filePath(name + QStringLiteral(".pdf"));
+      QString error;
+      if (!m_window->saveWindowSnapshot(pdf, &error)) return QImage();
+      QProcess pdftoppm;
+      pdftoppm.start(QStringLiteral("pdftoppm"), {QStringLiteral("-r"), QStringLiteral("96"),
+                                                  QStringLiteral("-png"), QStringLiteral("-singlefile"),
+                                                  pdf, dir.filePath(name)});
+      if (!pdftoppm.waitForFinished(30000)) return QImage();
+      const QImage page(dir.filePath(name + QStringLiteral(".png")));
+      const QRect bar(m_window->statusBar()->mapTo(m_window.get(), QPoint(0, 0)), m_window->statusBar()->size());
+      return page.copy(bar).convertToFormat(QImage::Format_RGB32);
+    };
+    const QImage shown = statusStrip(QStringLiteral("shown"));
+    m_window->setPanelVisible(false);
+    QTest::qWait(300);
+    const QImage hidden = statusStrip(QStringLiteral("hidden"));
+    m_window->setPanelVisible(true);
+    m_window->setPresentation(false, 1080, false);
+    QVERIFY2(!shown.isNull() && shown.size() == hidden.size(), "pdftoppm (poppler-utils) did not run");
+    qsizetype differing = 0;
+    for (int y = 0; y < shown.height(); ++y) {
+      for (int x = 0; x < shown.width(); ++x) {
+        const QRgb a = shown.pixel(x, y), b = hidden.pixel(x, y);
+        if (std::abs(qGray(a) - qGray(b)) > 48) ++differing;
+      }
+    }
+    QVERIFY2(differing < shown.width() * shown.height() / 200,
+             qPrintable(QStringLiteral("%1 status-bar pixels differ").arg(differing)));
   }
 
   void snapshotCarriesTheParametersOfWhatItShows() {
