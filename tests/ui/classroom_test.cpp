@@ -28,6 +28,7 @@
 #include "tests/ui/explorer_test_support.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
+#include "ui/plots/log_log_chart.h"
 #include "ui/plots/plot_view.h"
 #include "ui/session.h"
 #include "ui/slider_spin.h"
@@ -205,6 +206,13 @@ class ClassroomTest : public QObject {
         for (PlotView* plot : m_window->plots()) {
           QVERIFY2(plot->cutTexts().isEmpty(),
                    qPrintable(QStringLiteral("%1x%2: %3").arg(width).arg(height).arg(plot->cutTexts().join(" | "))));
+        }
+        // the Accuracy scene's log-log chart: its legend (Qt's cut "moreau-jean-the...") names
+        // every method in full
+        for (const LogLogChart* chart : m_window->findChildren<LogLogChart*>()) {
+          if (!chart->isVisible() || chart->curveCount() == 0) continue;
+          QVERIFY2(chart->legendFits(), qPrintable(QStringLiteral("%1x%2").arg(width).arg(height)));
+          QCOMPARE(chart->legendNames().size(), chart->curveCount());
         }
       }
     }

@@ -4,11 +4,15 @@
 
 #include <QLineSeries>
 #include <QLegend>
+#include <QFontMetricsF>
 #include <QLogValueAxis>
+#include <QTimer>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "ui/plots/wrapped_legend.h"
 
 namespace grazelab::ui {
 
@@ -31,14 +35,14 @@ Qt::PenStyle curveDash(int index) {
 
 namespace {
 
-/// At most this many labelled ticks on an axis: a range of many decades ticks every 2, 3, ...
-/// decades (a log axis ticks at each power of its base), so that no label is elided.
+/// At most this many labelled ticks on an axis, fewer where its labels would touch: a range
+/// of many decades ticks every 2, 3, ... decades (a log axis ticks at each power of its base).
 constexpr int kMaxTicks = 7;
 
 /// Whole powers of the base at both ends, so that every label is a power of ten.
-void setLogRange(QLogValueAxis* axis, double low, double high) {
+void setLogRange(QLogValueAxis* axis, double low, double high, int maxTicks) {
   const double decades = std::max(1.0, std::ceil(std::log10(high) + 1e-9) - std::floor(std::log10(low)));
-  const int step = std::max(1, int(std::ceil(decades / kMaxTicks)));
+  const int step = std::max(1, int(std::ceil(decades / maxTicks)));
   const double base = std::pow(10.0, step);
   axis->setBase(base);
   const double first = std::floor(std::log10(low) / step) * step;
@@ -53,7 +57,6 @@ LogLogChart::LogLogChart(const QString& title, const QString& xTitle, const QStr
     : QChartView(parent) {
   auto* chart = new QChart;
   chart->setTitle(title);
-  chart->legend()->setAlignment(Qt::AlignRight);
   m_axisX = new QLogValueAxis;
   m_axisX->setTitleText(xTitle);
   m_axisX->setBase(10);
@@ -67,7 +70,21 @@ LogLogChart::LogLogChart(const QString& title, const QString& xTitle, const QStr
   chart->addAxis(m_axisX, Qt::AlignBottom);
   chart->addAxis(m_axisY, Qt::AlignLeft);
   setChart(chart);
+  m_legend = std::make_unique<WrappedLegend>(chart);
   setRenderHint(QPainter::Antialiasing);
+}
+
+LogLogChart::~LogLogChart() = default;
+
+QStringList LogLogChart::legendNames() const { return m_legend->names(); }
+bool LogLogChart::legendFits() const { return m_legend->fits(); }
+
+void LogLogChart::resizeEvent(QResizeEvent* event) {
+  QChartView::resizeEvent(event);
+  m_legend->update();
+  fitAxes();
+  // and once the chart is laid out at this size (the ticks depend on the plot area)
+  QTimer::singleShot(0, this, [this] { fitAxes(); });
 }
 
 void LogLogChart::clear() {
@@ -76,6 +93,7 @@ void LogLogChart::clear() {
     delete series;
   }
   m_series.clear();
+  m_legend->update();
 }
 
 void LogLogChart::setPresentation(bool on, int textPixels) {
@@ -96,6 +114,7 @@ void LogLogChart::setPresentation(bool on, int textPixels) {
     pen.setWidthF(lineWidth());
     series->setPen(pen);
   }
+  fitAxes();  // the legend and the ticks for the new font
 }
 
 int LogLogChart::addCurve(const QString& name) {
@@ -112,6 +131,7 @@ int LogLogChart::addCurve(const QString& name) {
   series->attachAxis(m_axisX);
   series->attachAxis(m_axisY);
   m_series.push_back(series);
+  m_legend->update();
   return index;
 }
 
@@ -157,9 +177,17 @@ void LogLogChart::fitAxes() {
       yMax = std::max(yMax, p.y());
     }
   }
+  m_legend->update();
   if (!(xMax > 0)) return;
-  setLogRange(m_axisX, xMin, xMax);
-  setLogRange(m_axisY, yMin, yMax);
+  // as many ticks as labels fit side by side (x) or one above the other (y)
+  const QFontMetricsF metrics(m_axisX->labelsFont());
+  const QRectF area = chart()->plotArea();
+  const double labelWidth = 1.5 * metrics.horizontalAdvance(QStringLiteral("1e-05"));
+  const double labelHeight = 1.8 * metrics.height();
+  const int xTicks = area.width() > 0 ? std::clamp(int(area.width() / labelWidth), 2, kMaxTicks) : kMaxTicks;
+  const int yTicks = area.height() > 0 ? std::clamp(int(area.height() / labelHeight), 2, kMaxTicks) : kMaxTicks;
+  setLogRange(m_axisX, xMin, xMax, xTicks);
+  setLogRange(m_axisY, yMin, yMax, yTicks);
 }
 
 }  // namespace grazelab::ui

@@ -7,6 +7,7 @@
 #include <QPointF>
 #include <QString>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -14,6 +15,8 @@ class QLineSeries;
 class QLogValueAxis;
 
 namespace grazelab::ui {
+
+class WrappedLegend;
 
 /// One curve of a log-log chart (e.g. one method: run time against error).
 struct LogLogCurve {
@@ -33,6 +36,11 @@ class LogLogChart : public QChartView {
 
   LogLogChart(const QString& title, const QString& xTitle, const QString& yTitle,
               QWidget* parent = nullptr);
+  ~LogLogChart() override;
+
+  /// The names the legend shows, and whether each shows whole.
+  QStringList legendNames() const;
+  bool legendFits() const;
 
   /// Replaces every curve.
   void setCurves(const std::vector<LogLogCurve>& curves);
@@ -47,6 +55,9 @@ class LogLogChart : public QChartView {
  /// Presentation mode: text of `textPixels`, lines of 3.5 px (off: the desk look).
   void setPresentation(bool on, int textPixels);
 
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+
  private:
   void fitAxes();
   double lineWidth() const { return m_presentation ? 3.5 : 2.0; }
@@ -56,6 +67,7 @@ class LogLogChart : public QChartView {
   QLogValueAxis* m_axisX = nullptr;
   QLogValueAxis* m_axisY = nullptr;
   std::vector<QLineSeries*> m_series;
+  std::unique_ptr<WrappedLegend> m_legend;
 };
 
 /// The colour and dash pattern of curve `index`.

@@ -20,6 +20,7 @@
 
 #include "ui/decimate.h"
 #include "ui/plots/plot_style.h"
+#include "ui/plots/wrapped_legend.h"
 
 namespace grazelab::ui {
 namespace {
@@ -114,9 +115,7 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
   chart->setAnimationOptions(QChart::NoAnimation);
   chart->setMargins(QMargins(4, 4, 4, 4));
   chart->legend()->setAlignment(Qt::AlignBottom);
-  chart->legend()->setVisible(false);  // drawn by updateLegend(): it wraps
-  m_legendText = new QGraphicsTextItem(chart);
-  m_legendText->setAcceptedMouseButtons(Qt::NoButton);
+  m_legend = std::make_unique<WrappedLegend>(chart);
   QFont titleFont = chart->titleFont();
   titleFont.setBold(true);
   chart->setTitleFont(titleFont);
@@ -136,6 +135,8 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
   m_refreshTimer.setInterval(0);
   connect(&m_refreshTimer, &QTimer::timeout, this, &PlotView::refresh);
 }
+
+PlotView::~PlotView() = default;
 
 int PlotView::addEntry(QXYSeries* series, Decimation decimation, bool inBounds) {
   chart()->addSeries(series);
@@ -276,7 +277,7 @@ QStringList PlotView::cutTexts() const {
   for (const QGraphicsItem* item : chart()->childItems()) {
     for (const QGraphicsItem* child : item->childItems() + QList<QGraphicsItem*>{const_cast<QGraphicsItem*>(item)}) {
       if (const auto* text = dynamic_cast<const QGraphicsTextItem*>(child)) {
-        if (text != m_legendText && text->isVisible() && text->toPlainText().endsWith("...")) {
+        if (text != m_legend->item() && text->isVisible() && text->toPlainText().endsWith("...")) {
           cut << text->toPlainText();
         }
       }
@@ -474,60 +475,12 @@ void PlotView::refresh() {
 }
 
 void PlotView::setInLegend(QXYSeries* series, bool shown) {
-  if (shown) m_leftOutOfLegend.remove(series);
-  else m_leftOutOfLegend.insert(series);
+  m_legend->setShown(series, shown);
 }
 
-void PlotView::updateLegend() {
-  // one entry per named series not left out: a symbol in the series' colour (its marker's
-  // shape, a dash for dashed lines, a bar for lines) and the name; an entry never breaks
-  QString html;
-  m_legendNames.clear();
-  for (QAbstractSeries* abstract : chart()->series()) {
-    auto* series = qobject_cast<QXYSeries*>(abstract);
-    if (!series || series->name().isEmpty() || m_leftOutOfLegend.contains(series)) continue;
-    QString symbol = series->pen().style() == Qt::SolidLine ? QStringLiteral("━") : QStringLiteral("╍");
-    QColor color = series->pen().color();
-    if (auto* scatter = qobject_cast<QScatterSeries*>(series)) {
-      // hollow markers (a transparent fill) show their outline colour
-      const QColor fill = scatter->color();
-      color = fill.alpha() == 0 ? scatter->pen().color() : fill;
-      symbol = scatter->markerShape() == QScatterSeries::MarkerShapeRectangle
-                   ? (fill.alpha() == 0 ? QStringLiteral("□") : QStringLiteral("■"))
-               : scatter->markerShape() == QScatterSeries::MarkerShapeTriangle ? QStringLiteral("▲")
-                                                                               : QStringLiteral("●");
-    }
-    color.setAlpha(255);
-    m_legendNames.append(series->name());
-    if (!html.isEmpty()) html += QStringLiteral(" &nbsp; ");
-    html += QStringLiteral("<nobr><span style=\"color:%1\">%2</span>&nbsp;%3</nobr>")
-                .arg(color.name(), symbol,
-                     // a range "4000–7999" breaks at its dash otherwise (word joiners hold it)
-                     series->name().toHtmlEscaped().replace(QStringLiteral("–"), QStringLiteral("\u2060–\u2060")));
-  }
-  const QFont font = chart()->legend()->font();
-  const double width = std::max(40.0, chart()->size().width() - 12);
-  const bool changed = html != m_legendHtml || m_legendText->font() != font ||
-                       std::abs(m_legendText->textWidth() - width) > 0.5;
-  if (changed) {
-    m_legendHtml = html;
-    m_legendText->setFont(font);
-    m_legendText->setTextWidth(width);
-    m_legendText->setHtml(QStringLiteral("<div align=\"center\">%1</div>").arg(html));
-  }
-  // a chart not laid out yet (a few pixels wide) would wrap every word onto a line of its
-  // own; the legend never takes more than 40 % of the chart's height
-  const double chartHeight = chart()->size().height();
-  const bool laidOut = chart()->size().width() >= 120 && chartHeight >= 90;
-  const double full = m_legendText->boundingRect().height();
-  const double height = html.isEmpty() || !laidOut ? 0.0 : std::min(full, 0.4 * chartHeight);
-  m_legendFits = html.isEmpty() || (laidOut && height >= full);
-  m_legendText->setVisible(height > 0);
-  m_legendText->setPos(6, chart()->size().height() - height - 2);
-  // room under the axes for the text: the chart lays out again only when its height changes
-  const QMargins margins(4, 4, 4, 4 + int(std::ceil(height)));
-  if (chart()->margins() != margins) chart()->setMargins(margins);
-}
+void PlotView::updateLegend() { m_legend->update(); }
+const QStringList& PlotView::legendNames() const { return m_legend->names(); }
+bool PlotView::legendFits() const { return m_legend->fits(); }
 
 void PlotView::mousePressEvent(QMouseEvent* event) {
   emit activated(this);

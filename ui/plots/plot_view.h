@@ -28,6 +28,8 @@ class QXYSeries;
 
 namespace grazelab::ui {
 
+class WrappedLegend;
+
 /// How a series is reduced to the pixels before it reaches Qt Charts (ui/decimate.h).
 enum class Decimation { None, Trace, Scatter, Path };
 
@@ -63,6 +65,7 @@ class PlotView : public QChartView, public SceneView {
     std::size_t boundsCounted = 0;
   };
 
+  ~PlotView() override;
   PlotView(const QString& title, const QString& xTitle, const QString& yTitle,
            QWidget* parent = nullptr);
 
@@ -84,10 +87,10 @@ class PlotView : public QChartView, public SceneView {
   /// axes or the plot's size changed) rather than only the points appended since.
   int decimationsFromScratch() const { return m_decimationsFromScratch; }
   /// The names in the plot's legend, in its order.
-  const QStringList& legendNames() const { return m_legendNames; }
+  const QStringList& legendNames() const;
   /// Whether the legend shows every name whole, on as many lines as it needs (false when it
   /// had to be cut to 40 % of the chart's height, or is not laid out yet).
-  bool legendFits() const { return m_legendFits; }
+  bool legendFits() const;
   /// The texts Qt Charts draws cut short ("..."): titles, axis titles, tick labels. Empty when
   /// every text shows whole.
   QStringList cutTexts() const;
@@ -192,11 +195,7 @@ class PlotView : public QChartView, public SceneView {
   QString m_title, m_xTitle, m_yTitle;  ///< whole, as set
   std::optional<Fonts> m_deskFonts;  ///< the fonts before presentation mode
   QLabel* m_staleNote = nullptr;
-  QGraphicsTextItem* m_legendText = nullptr;
-  QString m_legendHtml;
-  QStringList m_legendNames;
-  bool m_legendFits = false;
-  QSet<QXYSeries*> m_leftOutOfLegend;
+  std::unique_ptr<WrappedLegend> m_legend;
   QTimer m_refreshTimer;
   bool m_followData = true;
   bool m_panning = false;
