@@ -32,6 +32,8 @@ struct StartSpec {
   S period = 0;                   ///< OnePeriodic: T [time]
   BasicState<S> state;            ///< Explicit
   std::optional<BasicState<S>> perturbation;  ///< added afterwards
+
+  friend bool operator==(const StartSpec&, const StartSpec&) = default;
 };
 
 /// A start state with the words that describe it.

@@ -46,6 +46,8 @@ struct SweepAxis {
   /// The i-th value as numpy.linspace(from, to, count)[i] computes it: i * step + from, the
   /// last one `to` exactly.
   double at(std::int64_t i) const;
+
+  friend bool operator==(const SweepAxis&, const SweepAxis&) = default;
 };
 
 /// A map: the chain, the start the axes modify, the two axes, the length of each run.
@@ -61,6 +63,8 @@ struct SweepSpec {
   SweepAxis y;  ///< rows
   std::int64_t contacts = 1;  ///< contacts of each run
   bool estimateHorizon = false;  ///< a shadow run per point (TrustMode::Auto); costs about 2x
+
+  friend bool operator==(const SweepSpec&, const SweepSpec&) = default;
 };
 
 /// Why the spec cannot be run (one line), or empty: counts >= 1 and at most 2^24 points along

@@ -26,6 +26,7 @@ enum class PlotKind {
   DetunedFlights,   ///< detuned contrast: the detuned chain's FFT/T2 against contact index
   ResonantFlights,  ///< detuned contrast: the resonant chain's FFT/T2 against contact index
   Chain,            ///< the chain moving (ChainView), the time cursor of the other views
+  Landscape,        ///< a map over the grazing-start plane, the run's section over it
 };
 
 /// A curve a scene computes itself (no run needed), drawn by a CurvePlot: the curve, the

@@ -31,6 +31,7 @@
 #include "ui/derived.h"
 #include "ui/parameter_panel.h"
 #include "ui/plots/accuracy_view.h"
+#include "ui/plots/landscape_view.h"
 #include "ui/plots/chain_view.h"
 #include "ui/plots/scene_view.h"
 #include "ui/plots/plot_view.h"
@@ -232,6 +233,7 @@ void MainWindow::buildPlots() {
   m_plots.clear();
   m_accuracy = nullptr;
   m_chain = nullptr;
+  m_landscape = nullptr;
   m_currentPlot = nullptr;
   QList<QWidget*> views;
   for (PlotKind kind : scene().plots()) {
@@ -242,6 +244,14 @@ void MainWindow::buildPlots() {
     // the few views with more to say than show(): found by their type
     if (auto* accuracy = dynamic_cast<AccuracyView*>(view)) m_accuracy = accuracy;
     if (auto* chain = dynamic_cast<ChainView*>(view)) m_chain = chain;
+    if (auto* landscape = dynamic_cast<LandscapeView*>(view)) {
+      m_landscape = landscape;
+      landscape->setBackEnabled(!m_regionHistory.empty());
+      connect(landscape, &LandscapeView::startRequested, this,
+              [this](const core::State& start) { startFromClick(start); });
+      connect(landscape, &LandscapeView::regionRequested, this, &MainWindow::showMapRegion);
+      connect(landscape, &LandscapeView::backRequested, this, [this] { mapRegionBack(); });
+    }
     if (auto* plot = dynamic_cast<PlotView*>(view)) {
       m_plots.append(plot);
       connect(plot, &PlotView::activated, this, [this](PlotView* active) { m_currentPlot = active; });
@@ -474,6 +484,28 @@ bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
   return true;
 }
 
+void MainWindow::showMapRegion(QRectF region) {
+  Params& current = m_sceneParams[std::size_t(m_sceneIndex)];
+  const DerivedModel derived = deriveModel(current);
+  if (!derived.ok || region.width() <= 0 || region.height() <= 0) return;
+  // kept in units of d and d w2, so that it frames the same part of the plane for any chain
+  const double d = derived.model.gap;
+  const double v = d * derived.modes.omegaSlow;
+  m_regionHistory.push_back(current.mapRegion);
+  current.mapRegion = {region.left() / d, region.right() / d, region.top() / v, region.bottom() / v};
+  if (m_landscape) m_landscape->setBackEnabled(true);
+  recompute();
+}
+
+bool MainWindow::mapRegionBack() {
+  if (m_regionHistory.empty()) return false;
+  m_sceneParams[std::size_t(m_sceneIndex)].mapRegion = m_regionHistory.back();
+  m_regionHistory.pop_back();
+  if (m_landscape) m_landscape->setBackEnabled(!m_regionHistory.empty());
+  recompute();
+  return true;
+}
+
 void MainWindow::startFromClick(const core::State& start) {
   m_clickedStart = start;
   followDataFromNextUpdate();
@@ -519,6 +551,7 @@ void MainWindow::recompute() {
   request.reference = job.reference;
   request.referenceLabel = job.referenceLabel;
   request.accuracy = job.accuracy;
+  request.map = job.map;
   request.figures = std::move(job.figures);
   m_controller->submit(std::move(request));
 }

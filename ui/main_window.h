@@ -30,6 +30,7 @@ namespace grazelab::ui {
 class ParameterPanel;
 class PlotView;
 class AccuracyView;
+class LandscapeView;
 class ChainView;
 class SceneView;
 class ReadoutPanel;
@@ -70,6 +71,12 @@ class MainWindow : public QMainWindow {
   PlotView* currentPlot() const { return m_currentPlot; }
   AccuracyView* accuracyView() const { return m_accuracy; }
   ChainView* chainView() const { return m_chain; }
+  LandscapeView* landscapeView() const { return m_landscape; }
+  /// The landscape shows [u1From, u1To] x [v1From, v1To] (physical values) next; the region
+  /// before it is kept for Back.
+  void showMapRegion(QRectF region);
+  /// Back to the region before the last one (false when there is none).
+  bool mapRegionBack();
   ParameterPanel* parameterPanel() const { return m_panel; }
   ReadoutPanel* readoutPanel() const { return m_readout; }
   SimController* controller() const { return m_controller; }
@@ -160,6 +167,8 @@ class MainWindow : public QMainWindow {
   PlotView* m_currentPlot = nullptr;
   AccuracyView* m_accuracy = nullptr;  ///< the work-precision view, when the scene shows it
   ChainView* m_chain = nullptr;        ///< the animation, when the scene shows it
+  LandscapeView* m_landscape = nullptr;  ///< the landscape's map, when the scene shows it
+  std::vector<Params::MapRegion> m_regionHistory;  ///< the regions before, for Back
   QWidget* m_side = nullptr;           ///< the parameter panel's scroll area
   QWidget* m_enlarged = nullptr;       ///< the view shown alone, if any
   QList<SceneView*> m_sceneViews;      ///< every view of the scene, in its order

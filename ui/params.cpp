@@ -4,8 +4,10 @@
 
 #include "ui/param_specs.h"
 
+#include <QJsonArray>
 #include <QJsonValue>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -85,6 +87,8 @@ QJsonObject toJson(const Params& params) {
   object.insert(QStringLiteral("resonantDesign"), params.resonantDesign);
   object.insert(QStringLiteral("branch"),
                 QString::fromUtf8(core::toString(params.branch).data()));
+  const Params::MapRegion& r = params.mapRegion;
+  object.insert(QStringLiteral("mapRegion"), QJsonArray{r.u1From, r.u1To, r.v1From, r.v1To});
   return object;
 }
 
@@ -132,6 +136,16 @@ std::optional<Params> paramsFromJson(const QJsonObject& object, const Params& ba
     const auto branch = core::parseBranch(value.toString().toStdString());
     if (!branch) return fail(QStringLiteral("\"branch\" must be \"upper\" or \"lower\""));
     params.branch = *branch;
+  }
+  if (const QJsonValue value = object.value(QStringLiteral("mapRegion")); !value.isUndefined()) {
+    const QJsonArray r = value.toArray();
+    const bool numbers = r.size() == 4 && std::all_of(r.begin(), r.end(), [](const QJsonValue& v) {
+      return v.isDouble() && std::isfinite(v.toDouble()) && std::abs(v.toDouble()) <= 1e6;
+    });
+    if (!numbers || !(r[0].toDouble() < r[1].toDouble()) || !(r[2].toDouble() < r[3].toDouble())) {
+      return fail(QStringLiteral("\"mapRegion\" must be [u1From, u1To, v1From, v1To] with From < To"));
+    }
+    params.mapRegion = {r[0].toDouble(), r[1].toDouble(), r[2].toDouble(), r[3].toDouble()};
   }
   return params;
 }

@@ -42,6 +42,13 @@ struct Params {
   double periodFraction = 0.9;  ///< T / T2 of the 1IPP orbit
   double frequencyRatio = 2.05; ///< w_fast / w_slow of the detuned chain
   bool resonantDesign = true;   ///< k2 from the 1:2 design (core::resonantK2)
+  /// The landscape's region of the grazing-start plane, u1 in units of the gap d and v1 in
+  /// units of d w2 (so that it frames the grazing family whatever the chain)
+  struct MapRegion {
+    double u1From = -1.5, u1To = 2.0, v1From = -2.2, v1To = 2.2;
+    friend bool operator==(const MapRegion&, const MapRegion&) = default;
+  };
+  MapRegion mapRegion;
   core::Branch branch = core::Branch::Upper;
 
   double value(ParamKey key) const;

@@ -17,7 +17,8 @@ core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, dou
   // contacts are marked on the u2(t) trace and flash in the animation, over the sample window
   needs.events = plots.contains(PlotKind::TraceU2) || plots.contains(PlotKind::Chain);
   needs.eventsUntil = sampleWindow;
-  needs.poincare = plots.contains(PlotKind::Poincare);
+  // the landscape draws the run's points on H over its map
+  needs.poincare = plots.contains(PlotKind::Poincare) || plots.contains(PlotKind::Landscape);
   needs.freeFlights = plots.contains(PlotKind::FreeFlight);
   if (dense) {
     // 48 samples per fast period draw a smooth curve at any zoom a screen can show
@@ -63,7 +64,8 @@ std::vector<std::unique_ptr<Scene>> makeScenes() {
   // the table of scenes, in the order of the note: a new scene is one line here and a file
   const std::vector<Scene::Spec (*)()> table = {
       grazingFamilyScene, onePeriodicScene, perturbationScene, randomStartsScene,
-      stickingScene,      detunedScene,     nearGrazingScene,  accuracyScene,
+      stickingScene,      detunedScene,     nearGrazingScene,  landscapeScene,
+      accuracyScene,
   };
   std::vector<std::unique_ptr<Scene>> scenes;
   for (auto make : table) scenes.push_back(std::make_unique<Scene>(make()));

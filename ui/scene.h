@@ -28,6 +28,7 @@ struct SceneJob {
   std::optional<core::State> reference;  ///< a state on H worth marking (e.g. GLO_lambda* data)
   QString referenceLabel;
   std::optional<AccuracyJob> accuracy;  ///< the work-precision sweep, when the scene shows it
+  std::optional<MapJob> map;            ///< the landscape's map, when the scene shows it
   Figures figures;  ///< curves the scene computed itself (one per CurvePlot it shows)
   /// slider ranges that depend on the chain (the admissible T/T2 of the 1IPP family)
   std::map<ParamKey, std::pair<double, double>> sliderRanges;

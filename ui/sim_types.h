@@ -11,6 +11,7 @@
 
 #include "core/methods/work_precision.h"
 #include "core/simulate.h"
+#include "core/sweep.h"
 #include "core/trust.h"
 #include "ui/figures.h"
 #include "ui/params.h"
@@ -40,6 +41,22 @@ struct AccuracyProgress {
   double tEnd = 0;        ///< the end of the comparison [time]
 };
 
+/// The landscape scene's map, computed by the worker after the run, on all cores.
+struct MapJob {
+  core::SweepSpec spec;
+};
+
+/// A map as it is being computed: the worker fills `points` row after row and publishes how
+/// many rows are done with each update; a reader looks only at the rows below that count (the
+/// worker never writes them again), so the grid is shared without copies.
+struct MapProgress {
+  core::SweepSpec spec;
+  std::shared_ptr<std::vector<core::PointSummary>> points;  ///< y.count x x.count, row-major
+  std::int64_t rowsDone = 0;
+  bool complete = false;
+  double seconds = 0;  ///< computing time so far
+};
+
 /// One computation asked of the worker, as a value. The controller stamps the id.
 struct SimRequest {
   std::uint64_t id = 0;
@@ -50,6 +67,7 @@ struct SimRequest {
   std::optional<core::State> reference;
   QString referenceLabel;
   std::optional<AccuracyJob> accuracy;  ///< the Accuracy scene's sweep
+  std::optional<MapJob> map;            ///< the landscape scene's map
   Figures figures;  ///< the scene's own curves, drawn as they are (computed by the scene)
 };
 
@@ -84,6 +102,8 @@ struct SimUpdate {
   /// result and its trust follows (the plots need not wait for the shadow run)
   bool trustPending = false;
   std::shared_ptr<const AccuracyProgress> accuracy;  ///< the sweep so far (Accuracy scene)
+  /// the map so far (landscape scene); rows below its rowsDone are final
+  std::optional<MapProgress> map;
 };
 
 }  // namespace grazelab::ui

@@ -4,11 +4,13 @@
 
 #include "core/budget.h"
 #include "core/chain.h"
+#include "parallel/tbb_parallel_for.h"
 
 #include <QElapsedTimer>
 
 #include <algorithm>
 #include <cstdint>
+#include <mutex>
 #include <vector>
 
 namespace grazelab::ui {
@@ -60,6 +62,63 @@ void sweepAccuracy(const SimRequest& request, SimUpdate last, std::stop_token st
     report(partial);
   }
   last.accuracy = progress;
+  report(last);
+}
+
+/// The last complete map: a click on the landscape, or a slider the map does not depend on,
+/// asks for the same map again, which is then shown at once.
+struct MapCache {
+  std::mutex mutex;
+  std::optional<MapProgress> map;
+};
+MapCache& mapCache() {
+  static MapCache cache;
+  return cache;
+}
+
+/// The landscape scene's map, after its run: bands of rows on all cores, a partial update after
+/// each band (its rows appear at once), then the final one.
+void sweepMap(const SimRequest& request, SimUpdate last, std::stop_token stop,
+              const std::function<void(const SimUpdate&)>& report) {
+  const core::SweepSpec& spec = request.map->spec;
+  {
+    const std::lock_guard lock(mapCache().mutex);
+    if (mapCache().map && mapCache().map->spec == spec) {
+      last.map = mapCache().map;
+      report(last);
+      return;
+    }
+  }
+  MapProgress progress;
+  progress.spec = spec;
+  const std::int64_t columns = spec.x.count;
+  const std::int64_t rows = spec.y.count;
+  progress.points = std::make_shared<std::vector<core::PointSummary>>(std::size_t(columns * rows));
+  const core::ParallelFor executor = parallel::tbbParallelFor(0);
+  // bands of about 8192 points: a few milliseconds each on two cores
+  const std::int64_t band = std::max<std::int64_t>(1, 8192 / std::max<std::int64_t>(1, columns));
+  QElapsedTimer clock;
+  clock.start();
+  for (std::int64_t row = 0; row < rows && !stop.stop_requested(); row += band) {
+    const core::SweepMap part = core::sweep(spec, {row, std::min(rows, row + band)}, executor, stop);
+    if (!part.complete) break;
+    // rows past progress.rowsDone: no reader looks at them yet
+    std::copy(part.points.begin(), part.points.end(), progress.points->begin() + std::ptrdiff_t(row * columns));
+    progress.rowsDone = part.rows.rowEnd;
+    progress.seconds = clock.nsecsElapsed() * 1e-9;
+    progress.complete = progress.rowsDone == rows;
+    if (progress.complete) break;
+    SimUpdate partial = last;
+    partial.final = false;
+    partial.progress = double(progress.rowsDone) / double(rows);
+    partial.map = progress;
+    report(partial);
+  }
+  if (progress.complete) {
+    const std::lock_guard lock(mapCache().mutex);
+    mapCache().map = progress;
+  }
+  last.map = progress;
   report(last);
 }
 
@@ -183,6 +242,10 @@ void SimWorker::run(const SimRequest& request, std::stop_token stop, double chun
   if (request.accuracy && last.result->stop != core::StopReason::InvalidInput &&
       !stop.stop_requested()) {
     sweepAccuracy(request, std::move(last), stop, report);
+    return;
+  }
+  if (request.map && !stop.stop_requested()) {
+    sweepMap(request, std::move(last), stop, report);
     return;
   }
   report(last);

@@ -47,7 +47,7 @@ class HeadlessTest : public QObject {
 
   void listsScenesOnePerLine() {
     const QStringList scenes = listScenes();
-    QCOMPARE(scenes.size(), qsizetype(8));
+    QCOMPARE(scenes.size(), qsizetype(9));
     QCOMPARE(scenes.first(), QStringLiteral("Grazing family GLO_lambda"));
     QVERIFY(scenes.contains(QStringLiteral("Near grazing: Poincaré points on H")));
     QVERIFY(scenes.contains(QStringLiteral("1IPP orbits approaching GLO_lambda*")));
@@ -56,6 +56,7 @@ class HeadlessTest : public QObject {
     QVERIFY(scenes.contains(QStringLiteral("Theorem 2.3: random starts")));
     QVERIFY(scenes.contains(QStringLiteral("Sticking: a start pressed on the stop")));
     QVERIFY(scenes.contains(QStringLiteral("Detuned contrast: off 1:2 resonance")));
+    QVERIFY(scenes.contains(QStringLiteral("Landscape: free flights over the grazing-start plane")));
   }
 
   void rendersEveryScene_data() {

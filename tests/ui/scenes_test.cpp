@@ -2,15 +2,21 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // Tests for ui/scenes/: every scene opens with its views and asks only for what they draw, and
 // each picture agrees with the result of the theory it illustrates.
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QMouseEvent>
 #include <QTest>
+#include <QTimer>
 #include <QXYSeries>
 
 #include <algorithm>
+#include <bit>
 
 #include "core/modes.h"
 #include "tests/ui/explorer_test_support.h"
 #include "ui/main_window.h"
 #include "ui/plots/chain_view.h"
+#include "ui/plots/landscape_view.h"
 #include "ui/plots/plot_view.h"
 
 using namespace grazelab::ui;
@@ -49,14 +55,17 @@ class ScenesTest : public QObject {
       const bool dense = shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::PhaseU2V2) ||
                          shows(scene, PlotKind::PhaseU1V1) || shows(scene, PlotKind::Chain);
       QVERIFY2((needs.samples.spacing > 0) == dense, qPrintable(name));
-      QVERIFY2(needs.poincare == shows(scene, PlotKind::Poincare), qPrintable(name));
+      QVERIFY2(needs.poincare == (shows(scene, PlotKind::Poincare) || shows(scene, PlotKind::Landscape)),
+               qPrintable(name));
+      QVERIFY2(m_window->displayed()->request->map.has_value() == shows(scene, PlotKind::Landscape),
+               qPrintable(name));
       QVERIFY2(needs.freeFlights == shows(scene, PlotKind::FreeFlight), qPrintable(name));
       QVERIFY2(needs.events == (shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::Chain)),
                qPrintable(name));
       QVERIFY2(bool(m_window->chainView()) == shows(scene, PlotKind::Chain), qPrintable(name));
       // every view it lists is on screen, each curve view with its figure
       const qsizetype views = m_window->plots().size() + (m_window->accuracyView() ? 1 : 0) +
-                              (m_window->chainView() ? 1 : 0);
+                              (m_window->chainView() ? 1 : 0) + (m_window->landscapeView() ? 1 : 0);
       QCOMPARE(views, scene.plots().size());
       for (PlotKind kind : scene.plots()) {
         const bool curve = kind == PlotKind::OnePeriodicData || kind == PlotKind::ImpactSpeed ||
@@ -67,6 +76,101 @@ class ScenesTest : public QObject {
       }
       QVERIFY2(!scene.description().isEmpty(), qPrintable(name));
     }
+  }
+
+  // the landscape (issue 10): the map is computed in the worker on all cores while the window
+  // stays live, and it is the core's map; the grazing set flies T2 exactly
+  void landscapeIsComputedOffTheWindowAndIsTheCoresMap() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("landscape")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    // a chain whose map nobody computed yet (the worker keeps the last complete one)
+    Params params = m_window->params();
+    params.m2 = 0.4125;
+    QElapsedTimer clock;
+    qint64 last = 0, longestGap = 0;
+    QTimer ticker;
+    ticker.setInterval(5);
+    connect(&ticker, &QTimer::timeout, this, [&] {
+      longestGap = std::max(longestGap, clock.elapsed() - last);
+      last = clock.elapsed();
+    });
+    clock.start();
+    ticker.start();
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    ticker.stop();
+    const SimUpdate& shown = *m_window->displayed();
+    QVERIFY(shown.map && shown.map->complete);
+    const MapProgress& map = *shown.map;
+    QCOMPARE(map.spec.model.m2, 0.4125);
+    QCOMPARE(map.spec.x.count, 256);
+    // the event loop kept turning while the map was computed (a map on the GUI thread would
+    // have held it for the whole computation)
+    qInfo("map %.3f s, longest pause of the event loop %lld ms", map.seconds, longestGap);
+    QVERIFY2(longestGap < 100, qPrintable(QStringLiteral("the window stood still for %1 ms").arg(longestGap)));
+    QVERIFY(m_window->landscapeView()->map().has_value());
+    // the cells are core::sweepPoint's, bit for bit
+    for (const auto& [column, row] : {std::pair{0, 0}, std::pair{128, 128}, std::pair{255, 17}, std::pair{40, 200}}) {
+      const grazelab::core::PointSummary expected = grazelab::core::sweepPoint(map.spec, column, row);
+      const grazelab::core::PointSummary& got = (*map.points)[std::size_t(row * 256 + column)];
+      QCOMPARE(std::bit_cast<std::uint64_t>(got.fftFirst), std::bit_cast<std::uint64_t>(expected.fftFirst));
+      QCOMPARE(got.impacts, expected.impacts);
+    }
+    // FFT = T2 somewhere (the grazing set), never above it
+    const grazelab::core::ChainOrProblem<double> formed = grazelab::core::makeChain(map.spec.model);
+    const double T2 = grazelab::core::twoPi<double>() / formed.chain->omegaSlow;
+    int atT2 = 0;
+    for (const auto& point : *map.points) {
+      if (std::isfinite(point.fftFirst)) QVERIFY(point.fftFirst <= T2);
+      atT2 += point.fftFirst == T2;
+    }
+    QVERIFY(atT2 > 1000);
+  }
+
+  // a click runs from that point of the plane; a dragged rectangle is computed anew at the
+  // same resolution; Back returns to the region before
+  void landscapeClickRunsFromThePointAndARectangleZooms() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("landscape")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    LandscapeView* view = m_window->landscapeView();
+    QVERIFY(view && view->map() && view->map()->complete);
+    const double gap = m_window->displayed()->request->model.gap;
+    // one pixel in value units, either way
+    const QPointF a = *view->valueAt(view->positionOf(QPointF(0, 0)) + QPointF(1, 1));
+    const QPointF b = *view->valueAt(view->positionOf(QPointF(0, 0)));
+    const QPointF pixel(std::abs(a.x() - b.x()), std::abs(a.y() - b.y()));
+
+    QTest::mouseClick(view, Qt::LeftButton, {}, view->positionOf(QPointF(0.3, 0.2)).toPoint());
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const grazelab::core::State start = m_window->displayed()->request->request.initial;
+    QCOMPARE(start.u2, gap);
+    QCOMPARE(start.v2, 0.0);
+    QVERIFY(std::abs(start.u1 - 0.3) <= 1.5 * pixel.x());
+    QVERIFY(std::abs(start.v1 - 0.2) <= 1.5 * pixel.y());
+    QVERIFY(!m_window->displayed()->result->poincare.empty());  // its contacts, over the map
+
+    const Params::MapRegion before = m_window->params().mapRegion;
+    const QPoint from = view->positionOf(QPointF(0.0, -0.5)).toPoint();
+    const QPoint to = view->positionOf(QPointF(0.8, 0.5)).toPoint();
+    QTest::mousePress(view, Qt::LeftButton, {}, from);
+    QMouseEvent move(QEvent::MouseMove, QPointF(to), view->mapToGlobal(QPointF(to)), Qt::NoButton,
+                     Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(view, &move);
+    QTest::mouseRelease(view, Qt::LeftButton, {}, to);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const auto& spec = m_window->displayed()->map->spec;
+    QVERIFY(std::abs(spec.x.from - 0.0) <= 1.5 * pixel.x());
+    QVERIFY(std::abs(spec.x.to - 0.8) <= 1.5 * pixel.x());
+    QVERIFY(std::abs(spec.y.from + 0.5) <= 1.5 * pixel.y());
+    QVERIFY(std::abs(spec.y.to - 0.5) <= 1.5 * pixel.y());
+    QCOMPARE(spec.x.count, 256);  // computed at full resolution, not a zoom of pixels
+    QVERIFY(m_window->displayed()->map->complete);
+    QVERIFY(!(m_window->params().mapRegion == before));
+
+    QVERIFY(m_window->mapRegionBack());
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    QVERIFY(m_window->params().mapRegion == before);
+    QVERIFY(!m_window->mapRegionBack());  // nothing further back
   }
 
   // Lemma 2.1: max u2/d of GLO(lambda) is 1 exactly on [0, 4/3], above 1 outside

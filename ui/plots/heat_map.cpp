@@ -19,11 +19,7 @@ const QColor kViridisStops[9] = {
 const QColor kNanColor(0xb0, 0xb0, 0xb0);
 const QColor kInfColor(Qt::white);
 
-// the extent of the cells along an axis: the values are their centres
-std::pair<double, double> cellExtent(double from, double to, std::int64_t count) {
-  const double half = count > 1 ? 0.5 * (to - from) / double(count - 1) : 0.5;
-  return {from - half, to + half};
-}
+const QColor kPendingColor(0xee, 0xee, 0xee);
 
 QString tickLabel(double value) {
   if (value == 0) return "0";
@@ -31,6 +27,11 @@ QString tickLabel(double value) {
 }
 
 }  // namespace
+
+std::pair<double, double> cellExtent(double from, double to, std::int64_t count) {
+  const double half = count > 1 ? 0.5 * (to - from) / double(count - 1) : 0.5;
+  return {from - half, to + half};
+}
 
 QColor viridis(double t) {
   if (!(t > 0)) return kViridisStops[0];
@@ -60,9 +61,15 @@ std::pair<double, double> finiteRange(const std::vector<double>& values) {
 
 QImage heatMapImage(const HeatMapData& data) {
   QImage image(int(data.columns), int(data.rows), QImage::Format_RGB32);
-  const auto [lo, hi] = finiteRange(data.values);
+  const std::int64_t ready = data.rowsReady < 0 ? data.rows : std::min(data.rowsReady, data.rows);
+  const auto [lo, hi] = finiteRange(std::vector<double>(data.values.begin(),
+                                                        data.values.begin() + ready * data.columns));
   for (std::int64_t r = 0; r < data.rows; ++r) {
     auto* line = reinterpret_cast<QRgb*>(image.scanLine(int(data.rows - 1 - r)));
+    if (r >= ready) {
+      std::fill(line, line + data.columns, kPendingColor.rgb());
+      continue;
+    }
     for (std::int64_t c = 0; c < data.columns; ++c) {
       const double v = data.values[std::size_t(r * data.columns + c)];
       const QColor color = std::isnan(v) ? kNanColor : std::isinf(v) ? kInfColor : viridis((v - lo) / (hi - lo));
@@ -147,7 +154,9 @@ void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data
   painter.restore();
 
   // the colour bar: the finite range, then keys for NaN and inf cells when there are any
-  const auto [lo, hi] = finiteRange(data.values);
+  const std::int64_t ready = data.rowsReady < 0 ? data.rows : std::min(data.rowsReady, data.rows);
+  const std::vector<double> readyValues(data.values.begin(), data.values.begin() + ready * data.columns);
+  const auto [lo, hi] = finiteRange(readyValues);
   const QRectF bar(plot.right() + 1.5 * line, plot.top(), 1.2 * line, plot.height() * 0.75);
   QLinearGradient gradient(bar.bottomLeft(), bar.topLeft());
   for (int i = 0; i <= 8; ++i) gradient.setColorAt(i / 8.0, kViridisStops[i]);
@@ -162,8 +171,8 @@ void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data
   painter.drawText(QRectF(bar.left() - line, bar.top() - 1.6 * line, 10 * line, 1.4 * line),
                    Qt::AlignLeft | Qt::AlignVCenter, data.valueTitle);
   double keyY = bar.bottom() + 0.8 * line;
-  const bool anyNan = std::any_of(data.values.begin(), data.values.end(), [](double v) { return std::isnan(v); });
-  const bool anyInf = std::any_of(data.values.begin(), data.values.end(), [](double v) { return std::isinf(v); });
+  const bool anyNan = std::any_of(readyValues.begin(), readyValues.end(), [](double v) { return std::isnan(v); });
+  const bool anyInf = std::any_of(readyValues.begin(), readyValues.end(), [](double v) { return std::isinf(v); });
   for (const auto& [present, color, label] :
        {std::tuple{anyNan, kNanColor, QString("not defined")}, std::tuple{anyInf, kInfColor, QString("infinite")}}) {
     if (!present) continue;

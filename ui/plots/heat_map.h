@@ -25,7 +25,13 @@ struct HeatMapData {
   std::vector<double> values;
   double xFrom = 0, xTo = 1, yFrom = 0, yTo = 1;
   QString title, xTitle, yTitle, valueTitle;
+  /// rows from this one on are still being computed: drawn pale, left out of the colour range
+  /// and of the keys (-1: all rows are ready)
+  std::int64_t rowsReady = -1;
 };
+
+/// The extent of `count` cells centred on the values from..to (one cell: +-0.5).
+std::pair<double, double> cellExtent(double from, double to, std::int64_t count);
 
 /// The finite range of the values (lo == hi widened by one unit; nothing finite: [0, 1]).
 std::pair<double, double> finiteRange(const std::vector<double>& values);

@@ -6,6 +6,7 @@
 #include "ui/plots/chain_view.h"
 #include "ui/plots/curve_plot.h"
 #include "ui/plots/free_flight_plot.h"
+#include "ui/plots/landscape_view.h"
 #include "ui/plots/phase_plot.h"
 #include "ui/plots/poincare_plot.h"
 #include "ui/plots/trace_plot.h"
@@ -39,6 +40,7 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::ResonantFlights: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);
     case PlotKind::WorkPrecision: return new AccuracyView(parent);
+    case PlotKind::Landscape: return new LandscapeView(parent);
   }
   return nullptr;
 }

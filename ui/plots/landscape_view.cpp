@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/plots/landscape_view.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QToolButton>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/chain.h"
+#include "core/orbits.h"
+#include "ui/plots/heat_map.h"
+#include "ui/plots/plot_style.h"
+
+namespace grazelab::ui {
+namespace {
+
+constexpr int kClickSlack = 4;  // pixels a press may move and still be a click
+
+QString quantityLabel(const core::QuantityInfo& info) {
+  const QString unit = QString::fromUtf8(info.unit);
+  return unit == "count" ? QString::fromUtf8(info.name)
+                         : QStringLiteral("%1 [%2]").arg(QString::fromUtf8(info.name), unit);
+}
+
+}  // namespace
+
+LandscapeView::LandscapeView(QWidget* parent) : QWidget(parent) {
+  auto* bar = new QHBoxLayout;
+  bar->setContentsMargins(6, 4, 6, 0);
+  auto* label = new QLabel(tr("Show:"));
+  m_quantityBox = new QComboBox;
+  for (const core::QuantityInfo& info : core::quantities()) {
+    if (info.quantity == core::Quantity::Horizon) continue;  // the map is not estimated
+    m_quantityBox->addItem(QString::fromUtf8(info.meaning), int(info.quantity));
+  }
+  m_quantityBox->setToolTip(tr("The quantity of each run drawn on the map (each point is a run "
+                               "of 10 contacts from that start)"));
+  label->setBuddy(m_quantityBox);
+  m_back = new QToolButton;
+  m_back->setText(tr("Back"));
+  m_back->setToolTip(tr("The region shown before the last rectangle (Alt+Left)"));
+  m_back->setShortcut(QKeySequence(Qt::ALT | Qt::Key_Left));
+  m_back->setEnabled(false);
+  m_status = new QLabel;
+  m_status->setTextInteractionFlags(Qt::NoTextInteraction);
+  m_status->setWordWrap(true);
+  m_status->setContentsMargins(6, 0, 6, 0);
+  bar->addWidget(label);
+  bar->addWidget(m_quantityBox, 1);
+  bar->addWidget(m_back);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addLayout(bar);
+  layout->addWidget(m_status);
+  layout->addStretch(1);
+  connect(m_quantityBox, &QComboBox::currentIndexChanged, this, [this] {
+    m_quantity = core::Quantity(m_quantityBox->currentData().toInt());
+    update();
+  });
+  connect(m_back, &QToolButton::clicked, this, &LandscapeView::backRequested);
+  setMouseTracking(false);
+  setMinimumSize(320, 280);
+  setToolTip(tr("Click: a run from that start (u₁, d, v₁, 0). Drag a rectangle: that region "
+                "computed anew at full resolution. Back: the region before."));
+}
+
+void LandscapeView::setQuantity(core::Quantity quantity) {
+  const int index = m_quantityBox->findData(int(quantity));
+  if (index >= 0) m_quantityBox->setCurrentIndex(index);
+}
+
+void LandscapeView::setBackEnabled(bool enabled) { m_back->setEnabled(enabled); }
+
+void LandscapeView::show(const SimUpdate& update) {
+  // a map being computed again for the same region (a new run's request) is the one shown
+  const bool sameAsShown = update.map && m_map && m_map->complete && m_map->spec == update.map->spec;
+  if (update.map && !sameAsShown) {
+    m_map = update.map;
+    const auto& spec = update.map->spec;
+    const QString cost = update.map->complete
+                             ? tr("%1 × %2 runs of %3 contacts in %4 s")
+                                   .arg(spec.x.count)
+                                   .arg(spec.y.count)
+                                   .arg(spec.contacts)
+                                   .arg(update.map->seconds, 0, 'f', 2)
+                             : tr("computing: %1 of %2 rows")
+                                   .arg(update.map->rowsDone)
+                                   .arg(spec.y.count);
+    // the key of the marks over the map, and what the map cost
+    m_status->setText(tr("<span style=\"color:%1\">●</span> the run's (u₁, v₁) at each contact · "
+                         "<span style=\"color:%2\">✚</span> its start · ╍ GLO(λ), λ in [0, 4/3] · %3")
+                          .arg(colors::kImpact.name(), colors::kAccent.name(), cost));
+  }
+  const SimRequest& request = *update.request;
+  m_gap = request.model.gap;
+  // the grazing family and its two modes, from the run's chain
+  const core::ChainOrProblem<double> formed = core::makeChain(request.model);
+  m_family.clear();
+  if (formed.chain && formed.chain->resonant) {
+    for (int step = 0; step <= 64; ++step) {
+      const core::State data = core::gloData(*formed.chain, 4.0 / 3.0 * step / 64);
+      m_family.emplace_back(data.u1, data.v1);
+    }
+    const core::State fast = core::glomData(*formed.chain, core::Mode::Fast);
+    const core::State slow = core::glomData(*formed.chain, core::Mode::Slow);
+    m_glom1 = QPointF(fast.u1, fast.v1);
+    m_glom2 = QPointF(slow.u1, slow.v1);
+  }
+  m_section.clear();
+  for (const core::PoincarePoint& point : update.result->poincare) m_section.emplace_back(point.u1, point.v1);
+  const core::State& start = request.request.initial;
+  m_start.reset();
+  if (start.u2 == m_gap && start.v2 == 0) m_start = QPointF(start.u1, start.v1);
+  QWidget::update();
+}
+
+void LandscapeView::setPresentation(bool on, int textPixels) {
+  m_textPixels = on ? textPixels : 0;
+  QFont font = this->font();
+  if (on) {
+    font.setPixelSize(textPixels);
+  } else {
+    font = QFont();
+  }
+  setFont(font);
+  update();
+}
+
+QRectF LandscapeView::mapArea() const {
+  const double top = m_status->geometry().bottom() + 4;
+  return QRectF(0, top, width(), height() - top);
+}
+
+QRectF LandscapeView::plotRect() const { return heatMapPlotArea(mapArea(), font()); }
+
+std::optional<QPointF> LandscapeView::valueAt(QPointF position) const {
+  if (!m_map) return std::nullopt;
+  const QRectF plot = plotRect();
+  if (!plot.contains(position)) return std::nullopt;
+  const auto& spec = m_map->spec;
+  const auto [x0, x1] = cellExtent(spec.x.from, spec.x.to, spec.x.count);
+  const auto [y0, y1] = cellExtent(spec.y.from, spec.y.to, spec.y.count);
+  return QPointF(x0 + (position.x() - plot.left()) / plot.width() * (x1 - x0),
+                 y0 + (plot.bottom() - position.y()) / plot.height() * (y1 - y0));
+}
+
+QPointF LandscapeView::positionOf(QPointF value) const {
+  if (!m_map) return {};
+  const QRectF plot = plotRect();
+  const auto& spec = m_map->spec;
+  const auto [x0, x1] = cellExtent(spec.x.from, spec.x.to, spec.x.count);
+  const auto [y0, y1] = cellExtent(spec.y.from, spec.y.to, spec.y.count);
+  return QPointF(plot.left() + (value.x() - x0) / (x1 - x0) * plot.width(),
+                 plot.bottom() - (value.y() - y0) / (y1 - y0) * plot.height());
+}
+
+void LandscapeView::paintEvent(QPaintEvent*) {
+  QPainter painter(this);
+  painter.fillRect(rect(), Qt::white);
+  if (!m_map) {
+    painter.drawText(mapArea(), Qt::AlignCenter, tr("computing the map…"));
+    return;
+  }
+  const MapProgress& map = *m_map;
+  const core::QuantityInfo& info = core::quantities()[std::size_t(m_quantity)];
+  HeatMapData data;
+  data.columns = map.spec.x.count;
+  data.rows = map.spec.y.count;
+  data.values.reserve(std::size_t(data.columns * data.rows));
+  for (const core::PointSummary& point : *map.points) data.values.push_back(core::valueOf(point, m_quantity));
+  data.rowsReady = map.rowsDone;
+  data.xFrom = map.spec.x.from;
+  data.xTo = map.spec.x.to;
+  data.yFrom = map.spec.y.from;
+  data.yTo = map.spec.y.to;
+  data.title = QString::fromUtf8(info.meaning);
+  data.title[0] = data.title[0].toUpper();
+  data.xTitle = tr("u₁ of the start (u₂ = d, v₂ = 0)");
+  data.yTitle = tr("v₁ of the start");
+  data.valueTitle = quantityLabel(info);
+  painter.setFont(font());
+  paintHeatMap(painter, mapArea(), data);
+
+  // over the cells: the grazing family, its modes, the run's section and its start
+  const QRectF plot = plotRect();
+  painter.save();
+  painter.setClipRect(plot);
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  const double line = m_textPixels > 0 ? 3.0 : 2.0;
+  if (!m_family.empty()) {
+    QPainterPath family;
+    family.moveTo(positionOf(m_family.front()));
+    for (const QPointF& p : m_family) family.lineTo(positionOf(p));
+    painter.setPen(QPen(Qt::white, line + 2));
+    painter.drawPath(family);
+    painter.setPen(QPen(Qt::black, line, Qt::DashLine));
+    painter.drawPath(family);
+    const QFontMetricsF metrics(font());
+    for (const auto& [value, name] : {std::pair{m_glom1, QStringLiteral("GLOM₁")}, std::pair{m_glom2, QStringLiteral("GLOM₂")}}) {
+      const QPointF at = positionOf(value);
+      painter.setPen(QPen(Qt::black, 1.5));
+      painter.setBrush(Qt::white);
+      painter.drawEllipse(at, 5 + line, 5 + line);
+      const QRectF box(at + QPointF(-metrics.horizontalAdvance(name) / 2 - 3, -2.4 * metrics.height()),
+                       QSizeF(metrics.horizontalAdvance(name) + 6, metrics.height() + 2));
+      painter.fillRect(box, QColor(255, 255, 255, 210));
+      painter.drawText(box, Qt::AlignCenter, name);
+    }
+  }
+  painter.setPen(Qt::NoPen);
+  painter.setBrush(colors::kImpact);
+  for (const QPointF& p : m_section) painter.drawEllipse(positionOf(p), 2.0 + line / 2, 2.0 + line / 2);
+  if (m_start) {
+    const QPointF at = positionOf(*m_start);
+    painter.setPen(QPen(Qt::white, line + 2));
+    painter.drawLine(at + QPointF(-8, 0), at + QPointF(8, 0));
+    painter.drawLine(at + QPointF(0, -8), at + QPointF(0, 8));
+    painter.setPen(QPen(colors::kAccent, line));
+    painter.drawLine(at + QPointF(-8, 0), at + QPointF(8, 0));
+    painter.drawLine(at + QPointF(0, -8), at + QPointF(0, 8));
+  }
+  if (m_pressAt && (m_dragTo - *m_pressAt).manhattanLength() > kClickSlack) {
+    painter.setPen(QPen(Qt::white, 1.5, Qt::DashLine));
+    painter.setBrush(QColor(255, 255, 255, 50));
+    painter.drawRect(QRectF(*m_pressAt, m_dragTo).normalized());
+  }
+  painter.restore();
+}
+
+void LandscapeView::mousePressEvent(QMouseEvent* event) {
+  if (event->button() != Qt::LeftButton || !valueAt(event->position())) {
+    QWidget::mousePressEvent(event);
+    return;
+  }
+  m_pressAt = event->position().toPoint();
+  m_dragTo = *m_pressAt;
+  event->accept();
+}
+
+void LandscapeView::mouseMoveEvent(QMouseEvent* event) {
+  if (!m_pressAt) return;
+  const QRectF plot = plotRect();
+  m_dragTo = QPoint(int(std::clamp(event->position().x(), plot.left(), plot.right())),
+                    int(std::clamp(event->position().y(), plot.top(), plot.bottom())));
+  update();
+}
+
+void LandscapeView::mouseReleaseEvent(QMouseEvent* event) {
+  if (!m_pressAt || event->button() != Qt::LeftButton) return;
+  const QPoint pressed = *m_pressAt;
+  m_pressAt.reset();
+  update();
+  const auto from = valueAt(pressed);
+  if (!from) return;
+  if ((m_dragTo - pressed).manhattanLength() <= kClickSlack) {
+    emit startRequested(core::State{from->x(), m_gap, from->y(), 0});
+    return;
+  }
+  const auto to = valueAt(m_dragTo);
+  if (!to) return;
+  emit regionRequested(QRectF(*from, *to).normalized());
+}
+
+}  // namespace grazelab::ui
