@@ -20,6 +20,7 @@ enum class PlotKind {
   WorkPrecision,    ///< every method's error against its run time, with an overlay picker
   OnePeriodicData,  ///< the 1IPP impact data u1(T) against T/T2, with the GLO_lambda* value
   ImpactSpeed,      ///< the 1IPP impact speed |V(T)| against T/T2, going to 0 at T2
+  FrequencyEnergy,  ///< the 1IPP family's frequency 2 pi / T against its energy (log), to GLO(lambda*)
   GrazingMaximum,   ///< Lemma 2.1: max u2/d of GLO(lambda) against lambda, = 1 on [0, 4/3]
   SpreadAgainstSize,  ///< Theorem 2.2: the spread of FFT/T2 against the push size (log-log)
   FlightHistogram,  ///< Theorem 2.3: histogram of FFT/T2 over random starts, bound at 1

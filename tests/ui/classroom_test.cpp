@@ -20,6 +20,7 @@
 #include <QXYSeries>
 
 #include <algorithm>
+#include <numbers>
 
 #include "core/chain.h"
 #include "core/modes.h"
@@ -169,6 +170,32 @@ class ClassroomTest : public QObject {
     const double star = seriesNamed(*data, QStringLiteral("GLO"))->data.front().y();
     const double u1Far = seriesNamed(*data, QStringLiteral("1IPP"))->data.front().y();
     QVERIFY(std::abs(u1 - star) < 0.1 * std::abs(u1Far - star) + 1e-12);
+  }
+
+  // issue 10: the family's frequency-energy curve with the current T on it, ending at the
+  // grazing orbit GLO(lambda*): energy of its data, frequency w2
+  void theFrequencyEnergyCurveEndsAtTheGrazingOrbit() {
+    m_window->selectScene(sceneIndex(*m_window, QStringLiteral("1ipp")));
+    QVERIFY(waitForLatestFinal(*m_window));
+    const CurveFigure& figure = m_window->displayed()->request->figures.at(PlotKind::FrequencyEnergy);
+    QVERIFY(figure.curve.size() > 100);
+    const DerivedModel derived = deriveModel(m_window->params());
+    const grazelab::core::State star = grazelab::core::gloData(derived.model, derived.modes, derived.lambdaStar);
+    const QPointF end(std::log10(grazelab::core::energy(derived.model, star)), derived.modes.omegaSlow);
+    QCOMPARE(figure.reference.size(), std::size_t(1));
+    QVERIFY(std::abs(figure.reference[0].x() - end.x()) < 1e-12);
+    // the curve's point nearest T2 is within 1e-3 of the end (T = T2 (1 - 1e-6) there)
+    const QPointF last = *std::max_element(figure.curve.begin(), figure.curve.end(),
+                                           [](QPointF a, QPointF b) { return a.y() > b.y(); });
+    QVERIFY2(std::abs(last.x() - end.x()) < 1e-3 && std::abs(last.y() - end.y()) < 1e-3 * end.y(),
+             qPrintable(QStringLiteral("(%1, %2) against (%3, %4)").arg(last.x()).arg(last.y()).arg(end.x()).arg(end.y())));
+    // the marker is the current T's orbit
+    const double T = m_window->params().periodFraction * derived.modes.T2;
+    const auto orbit = grazelab::core::onePeriodicOrbit(derived.model, derived.modes, T);
+    QVERIFY(std::abs(figure.markers.at(0).x() - std::log10(grazelab::core::energy(derived.model, orbit.postImpact))) < 1e-12);
+    QVERIFY(std::abs(figure.markers.at(0).y() - 2 * std::numbers::pi / T) < 1e-12);
+    // the family's energy falls towards the grazing end as T grows (the frequency falls)
+    QVERIFY(figure.curve.front().x() > last.x());
   }
 
   // legends were cut to "sto...", "imp..." (or to bare swatches) on a 1280x720 screen: each

@@ -182,7 +182,7 @@ class ExplorerTest : public QObject {
   void scenesChangePlotsAndParameters() {
     m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("1ipp")));
     QVERIFY(waitForLatestFinal(*m_window));
-    QCOMPARE(m_window->plots().size(), qsizetype(3));
+    QCOMPARE(m_window->plots().size(), qsizetype(4));
     QVERIFY(m_window->chainView());
     QVERIFY(!m_window->parameterPanel()->control(ParamKey::Lambda)->isVisibleTo(m_window.get()));
     QVERIFY(m_window->parameterPanel()->control(ParamKey::Period)->isVisibleTo(m_window.get()));

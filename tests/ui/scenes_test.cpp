@@ -69,6 +69,7 @@ class ScenesTest : public QObject {
       QCOMPARE(views, scene.plots().size());
       for (PlotKind kind : scene.plots()) {
         const bool curve = kind == PlotKind::OnePeriodicData || kind == PlotKind::ImpactSpeed ||
+                           kind == PlotKind::FrequencyEnergy ||
                            kind == PlotKind::GrazingMaximum || kind == PlotKind::SpreadAgainstSize ||
                            kind == PlotKind::FlightHistogram || kind == PlotKind::DetunedFlights ||
                            kind == PlotKind::ResonantFlights;

@@ -15,6 +15,12 @@ CurvePlot::CurvePlot(PlotKind kind, QWidget* parent)
     : PlotView(QString(), QString(), QString(), parent), m_kind(kind) {
   m_curve = addEntry(makeLine(QString(), colors::kTrace, 2.0), Decimation::None);
   m_reference = addEntry(makeLine(QString(), colors::kReference, 1.5, Qt::DashLine), Decimation::None);
+  // a one-point reference is a ring (a zero-length dashed line drew nothing)
+  auto* ring = makeScatter(QString(), colors::kReference, 14);
+  ring->setColor(Qt::transparent);
+  ring->setPen(QPen(colors::kReference, 2.5));
+  useLightMarker(ring, QPen(colors::kReference, 2.5));
+  m_referencePoint = addEntry(ring, Decimation::None);
   auto* marker = makeScatter(QString(), colors::kImpact, 12);
   marker->setPen(QPen(Qt::white, 1.5));
   useLightMarker(marker, QPen(Qt::white, 1.5));
@@ -30,12 +36,13 @@ void CurvePlot::show(const SimUpdate& update) {
   const auto& list = entries();
   list[std::size_t(m_curve)].series->setName(figure.curveName);
   list[std::size_t(m_marker)].series->setName(figure.markerName);
-  list[std::size_t(m_reference)].series->setName(figure.referenceName);
-  std::vector<QPointF> reference = figure.reference;
-  if (reference.size() == 1) reference.push_back(reference.front());  // a point: a zero-length line
+  const bool point = figure.reference.size() == 1;
+  list[std::size_t(m_reference)].series->setName(point ? QString() : figure.referenceName);
+  list[std::size_t(m_referencePoint)].series->setName(point ? figure.referenceName : QString());
   setData(m_curve, figure.curve);
   setData(m_marker, figure.markers);
-  setData(m_reference, std::move(reference));
+  setData(m_reference, point ? std::vector<QPointF>{} : figure.reference);
+  setData(m_referencePoint, point ? figure.reference : std::vector<QPointF>{});
   if (figure.xMax > figure.xMin && figure.yMax > figure.yMin) {
     setFixedRange(QRectF(QPointF(figure.xMin, figure.yMin), QPointF(figure.xMax, figure.yMax)));
   } else {

@@ -19,7 +19,8 @@ class CurvePlot final : public PlotView {
  private:
   PlotKind m_kind;
   int m_curve = 0;
-  int m_reference = 0;
+  int m_reference = 0;       ///< a dashed line (two points)
+  int m_referencePoint = 0;  ///< a ring (one point)
   int m_marker = 0;
 };
 

@@ -33,6 +33,7 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::FreeFlight: return new FreeFlightPlot(parent);
     case PlotKind::OnePeriodicData:
     case PlotKind::ImpactSpeed:
+    case PlotKind::FrequencyEnergy:
     case PlotKind::GrazingMaximum:
     case PlotKind::SpreadAgainstSize:
     case PlotKind::FlightHistogram:

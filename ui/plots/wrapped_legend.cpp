@@ -39,7 +39,8 @@ void WrappedLegend::update() {
       symbol = scatter->markerShape() == QScatterSeries::MarkerShapeRectangle
                    ? (fill.alpha() == 0 ? QStringLiteral("□") : QStringLiteral("■"))
                : scatter->markerShape() == QScatterSeries::MarkerShapeTriangle ? QStringLiteral("▲")
-                                                                               : QStringLiteral("●");
+               : fill.alpha() == 0 ? QStringLiteral("○")
+                                   : QStringLiteral("●");
     }
     color.setAlpha(255);
     m_names.append(series->name());
@@ -49,7 +50,8 @@ void WrappedLegend::update() {
                      series->name()
                          .toHtmlEscaped()
                          .replace(QStringLiteral("–"), QStringLiteral("\u2060–\u2060"))
-                         .replace(QStringLiteral("-"), QStringLiteral("\u2011")));  // no break at a hyphen
+                         .replace(QStringLiteral("-"), QStringLiteral("\u2011"))  // no break at a hyphen
+                         .replace(QStringLiteral("/"), QStringLiteral("/\u2060")));  // nor after a slash
   }
   const QFont font = m_chart->legend()->font();
   const double width = std::max(40.0, m_chart->size().width() - 12);

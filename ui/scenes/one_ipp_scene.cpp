@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/orbits.h"
 #include "ui/scenes/scenes.h"
@@ -17,8 +18,10 @@ QString tr(const char* text) {
 
 // The family's curves over (T_lo, T2): points crowd towards T2, where the theorem looks.
 struct Family {
-  std::vector<QPointF> u1;     // (T/T2, u1 at impact)
-  std::vector<QPointF> speed;  // (T/T2, |V|)
+  std::vector<QPointF> u1;      // (T/T2, u1 at impact)
+  std::vector<QPointF> speed;   // (T/T2, |V|)
+  std::vector<QPointF> energy;  // (log10 E, 2 pi / T): the frequency-energy curve
+  std::vector<double> fraction;  // T/T2 of each point of `energy`
 };
 
 Family sampleFamily(const DerivedModel& derived, double lowEnd) {
@@ -32,6 +35,11 @@ Family sampleFamily(const DerivedModel& derived, double lowEnd) {
     if (!orbit.admissible) continue;
     family.u1.emplace_back(T / T2, orbit.postImpact.u1);
     family.speed.emplace_back(T / T2, std::abs(orbit.V));
+    const double E = core::energy(derived.model, orbit.postImpact);
+    if (E > 0) {
+      family.energy.emplace_back(std::log10(E), 2 * std::numbers::pi / T);
+      family.fraction.push_back(T / T2);
+    }
   }
   return family;
 }
@@ -66,15 +74,16 @@ Scene::Spec onePeriodicScene() {
                   "the impact speed |V| (right) falls to 0. <i>Why:</i> as T → T₂ the impact "
                   "becomes a touch; the only orbit that returns after T₂ touching the stop is "
                   "the grazing one with λ = λ*, fixed by the masses (Theorem 2.1). The red dot "
-                  "is the current T; the plots below show its motion.");
+                  "is the current T; the frequency–energy curve (bottom left) ends at that "
+                  "grazing orbit's energy and ω₂; the plots beside it show the motion.");
   scene.defaults.periodFraction = 0.9;
   scene.defaults.perturbation = 0;
   scene.defaults.horizon = 20;
   // k2 too: it is what the "1:2 design" box hands over to the user when unticked
   scene.parameters = {ParamKey::Period, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
-  scene.plots = {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::TraceU2,
-                 PlotKind::Chain};
+  scene.plots = {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::FrequencyEnergy,
+                 PlotKind::TraceU2, PlotKind::Chain};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
     SceneJob job;
     job.model = derived.model;
@@ -132,6 +141,43 @@ Scene::Spec onePeriodicScene() {
     speed.reference = {QPointF(1.0, 0.0)};
     fixAxes(speed, lowFraction, 0.0);
     job.figures[PlotKind::ImpactSpeed] = std::move(speed);
+
+    const double starEnergy = core::energy(derived.model, star);
+    CurveFigure energy;
+    energy.title = tr("Frequency against energy of the 1IPP family");
+    energy.xTitle = tr("log₁₀ E (energy of the orbit)");
+    energy.yTitle = tr("frequency 2π / T");
+    energy.toolTip = tr("The frequency–energy curve of the one-impact-per-period family, the "
+                        "picture of nonsmooth modal analysis: as T → T₂ the frequency falls to "
+                        "ω₂ and the energy to that of the grazing orbit GLO(λ*) (ringed), where "
+                        "the family ends. grazelab-cli family --onepp writes the whole family, "
+                        "admissible or not.");
+    energy.curveName = tr("1IPP family");
+    energy.curve = family.energy;
+    const double currentEnergy = core::energy(derived.model, orbit.postImpact);
+    energy.markerName = tr("T/T₂ = %1").arg(params.periodFraction, 0, 'g', 6);
+    energy.markers = {QPointF(std::log10(currentEnergy), 2 * std::numbers::pi / period)};
+    energy.referenceName = tr("grazing end GLO(λ*): E = %1, ω₂").arg(starEnergy, 0, 'g', 4);
+    energy.reference = {QPointF(std::log10(starEnergy), derived.modes.omegaSlow)};
+    // the axes of the upper 85 % of the family, as the other two curves (the energy runs off
+    // to infinity towards T_lo)
+    const double cut = lowFraction + 0.15 * (1 - lowFraction);
+    double xLow = energy.reference[0].x(), xHigh = xLow;
+    double yLow = energy.reference[0].y(), yHigh = yLow;
+    for (std::size_t i = 0; i < family.energy.size(); ++i) {
+      if (family.fraction[i] < cut) continue;
+      xLow = std::min(xLow, family.energy[i].x());
+      xHigh = std::max(xHigh, family.energy[i].x());
+      yLow = std::min(yLow, family.energy[i].y());
+      yHigh = std::max(yHigh, family.energy[i].y());
+    }
+    const double xPad = 0.06 * std::max(xHigh - xLow, 1e-9);
+    const double yPad = 0.06 * std::max(yHigh - yLow, 1e-9);
+    energy.xMin = xLow - xPad;
+    energy.xMax = xHigh + xPad;
+    energy.yMin = yLow - yPad;
+    energy.yMax = yHigh + yPad;
+    job.figures[PlotKind::FrequencyEnergy] = std::move(energy);
     job.ok = true;
     return job;
   };
