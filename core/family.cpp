@@ -10,6 +10,12 @@ namespace grazelab::core {
 
 std::vector<FamilyPoint> onePeriodicFamily(const Chain<double>& chain, std::int64_t count) {
   const double T2 = twoPi<double>() / chain.omegaSlow;
+  // each member in binary128 from its (double) period, rounded once: near T2, V ~ (T2 - T) is
+  // conditioned like T2 / (T2 - T) in T, and a double evaluation lost up to 1e-4 of it there
+  // (an independent 40-digit check at the printed periods); this way every row is right to
+  // double precision for the period it prints
+  const ChainOrProblem<Quad> quad = makeChain(convertModel<Quad>(chain.model));
+  if (!quad.chain) return {};
   std::vector<double> periods;
   for (std::int64_t k = 1; k <= count; ++k) periods.push_back(T2 * double(k) / double(count + 1));
   // towards the grazing end: V and the distance to GLO_lambda* fall like T2 - T
@@ -18,14 +24,14 @@ std::vector<FamilyPoint> onePeriodicFamily(const Chain<double>& chain, std::int6
   std::vector<FamilyPoint> family;
   family.reserve(periods.size());
   for (double T : periods) {
-    const OnePeriodicOrbit<double> orbit = onePeriodicOrbit(chain, T);
+    const OnePeriodicOrbit<Quad> orbit = onePeriodicOrbit(*quad.chain, Quad(T));
     if (orbit.V == 0 && !orbit.admissible) continue;  // a multiple of T1 or T2: no data at all
     FamilyPoint point;
     point.T = T;
     point.omega = twoPi<double>() / T;
-    point.V = orbit.V;
-    point.u1 = orbit.postImpact.u1;
-    point.energy = physicalEnergy(chain, orbit.postImpact);
+    point.V = toDouble(orbit.V);
+    point.u1 = toDouble(orbit.postImpact.u1);
+    point.energy = toDouble(physicalEnergy(*quad.chain, orbit.postImpact));
     point.admissible = orbit.admissible;
     family.push_back(point);
   }

@@ -23,7 +23,8 @@ struct FamilyPoint {
 
 /// The 1IPP orbits of the chain for `count` periods evenly spaced in (0, T2), T2 k/(count+1),
 /// and for T2 (1 - 2^-k), k = 8 ... 40, where the family ends on the grazing orbit GLO_lambda*
-/// (V -> 0), sorted by T. Periods at a multiple of T1 or T2 (no orbit) are left out.
+/// (V -> 0), sorted by T. Periods at a multiple of T1 or T2 (no orbit) are left out. Each
+/// member is computed in binary128 from its double period and rounded once.
 std::vector<FamilyPoint> onePeriodicFamily(const Chain<double>& chain, std::int64_t count);
 
 /// The grazing end of the family: the GLO_lambda* data (V = 0, u1 of GLO_lambda*) and its energy.

@@ -152,9 +152,10 @@ int runFamily(const QCommandLineParser& parser, QString& error) {
                                  "sorted; multiples of T1 left out").arg(count)},
       {"energy", "E = 1/2 v^T M v + 1/2 u^T K u of the post-impact state (constant on the orbit)"},
       {"post_impact_state", "u1 = u1, u2 = gap, v1 = 0, v2 = V"},
-      {"conditioning", "near T2, V is conditioned like T2 / (T2 - T) in T: recomputed from the "
-                       "printed 17-digit T (T2 (1 - 2^-k), rounded) it differs by up to that "
-                       "factor times 1e-16 relatively"},
+      {"conditioning", "each row is computed in binary128 from its double period and rounded "
+                       "once; near T2, V is conditioned like T2 / (T2 - T) in T and in the "
+                       "masses: a mass that is not a binary number (m2 = 0.3) read exactly moves "
+                       "V there by up to that factor times 1e-17"},
       {"files", QJsonObject{{"csv", QFileInfo(prefix).fileName() + ".csv"},
                             {"npy", QFileInfo(prefix).fileName() + ".npy (float64, rows x 6 "
                                     "columns in the CSV's order, admissible as 1.0 / 0.0)"}}},
