@@ -8,7 +8,8 @@
 
 namespace grazelab::core {
 
-std::vector<FamilyPoint> onePeriodicFamily(const Chain<double>& chain, std::int64_t count) {
+std::vector<FamilyPoint> onePeriodicFamily(const Chain<double>& chain, std::int64_t count,
+                                           std::stop_token stop) {
   const double T2 = twoPi<double>() / chain.omegaSlow;
   // each member in binary128 from its (double) period, rounded once: near T2, V ~ (T2 - T) is
   // conditioned like T2 / (T2 - T) in T, and a double evaluation lost up to 1e-4 of it there
@@ -24,6 +25,7 @@ std::vector<FamilyPoint> onePeriodicFamily(const Chain<double>& chain, std::int6
   std::vector<FamilyPoint> family;
   family.reserve(periods.size());
   for (double T : periods) {
+    if (stop.stop_requested()) break;
     const OnePeriodicOrbit<Quad> orbit = onePeriodicOrbit(*quad.chain, Quad(T));
     if (orbit.V == 0 && !orbit.admissible) continue;  // a multiple of T1 or T2: no data at all
     FamilyPoint point;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stop_token>
 #include <vector>
 
 #include "core/chain.h"
@@ -25,7 +26,9 @@ struct FamilyPoint {
 /// and for T2 (1 - 2^-k), k = 8 ... 40, where the family ends on the grazing orbit GLO_lambda*
 /// (V -> 0), sorted by T. Periods at a multiple of T1 or T2 (no orbit) are left out. Each
 /// member is computed in binary128 from its double period and rounded once.
-std::vector<FamilyPoint> onePeriodicFamily(const Chain<double>& chain, std::int64_t count);
+/// A stop ends it early (the members so far).
+std::vector<FamilyPoint> onePeriodicFamily(const Chain<double>& chain, std::int64_t count,
+                                           std::stop_token stop = {});
 
 /// The grazing end of the family: the GLO_lambda* data (V = 0, u1 of GLO_lambda*) and its energy.
 FamilyPoint grazingEnd(const Chain<double>& chain);

@@ -56,7 +56,16 @@ std::optional<Model> pointModel(const SweepSpec& spec, const PointValues& values
   if (model.design) {
     model = *designedModel(model.m1, model.m2, model.k1, model.gap, *model.design);
   }
-  if (const auto detuning = values.of(SweepVariable::Detuning); detuning && *detuning != 0) {
+  const auto detuning = values.of(SweepVariable::Detuning);
+  if (detuning && *detuning == 0 && !model.design) {
+    // ratio 2 is the 1:2 design itself (exactly resonant), as the axis's other values are the
+    // k2 for their ratio on the upper branch
+    const std::optional<Model> designed =
+        designedModel(model.m1, model.m2, model.k1, model.gap, Branch::Upper);
+    if (!designed) return std::nullopt;
+    model = *designed;
+  }
+  if (detuning && *detuning != 0) {
     const Branch branch = model.design.value_or(Branch::Upper);
     const auto k2 = k2ForFrequencyRatio(model.m1, model.m2, model.k1, 2 + *detuning, branch);
     if (!k2) return std::nullopt;
@@ -152,7 +161,7 @@ double basePeriod(const Model& given) {
 }
 
 PointSummary invalidPoint() {
-  return {kNaN, kNaN, kNaN, kNaN, 0, 0, 0, kNaN, kNaN, false};
+  return {kNaN, kNaN, kNaN, kNaN, -1, -1, -1, kNaN, kNaN, false};
 }
 
 // the run's flights from the stop reduced to first, min, max, mean (min/max/mean over T2)
@@ -270,6 +279,7 @@ std::optional<Quantity> parseQuantity(std::string_view name) {
 }
 
 double valueOf(const PointSummary& point, Quantity quantity) {
+  if (!point.valid) return kNaN;  // its counts are -1: nothing was run there
   switch (quantity) {
     case Quantity::FftFirst: return point.fftFirst;
     case Quantity::FftMin: return point.fftMin;
@@ -353,7 +363,10 @@ SweepMap sweep(const SweepSpec& spec, RowRange rows, const ParallelFor& parallel
       const std::int64_t last = std::min(count, first + kPiece);
       for (std::int64_t i = first; i < last; ++i) {
         const std::int64_t row = rows.rowBegin + i / map.columns;
-        map.points[std::size_t(i)] = sweepPoint(spec, i % map.columns, row, localStop);
+        const PointSummary point = sweepPoint(spec, i % map.columns, row, localStop);
+        // a run cut short by the stop is not the point's summary: it stays invalid
+        if (localStop.stop_requested()) return;
+        map.points[std::size_t(i)] = point;
       }
       const std::int64_t total = done.fetch_add(last - first) + (last - first);
       if (progress) progress(total);

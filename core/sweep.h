@@ -29,7 +29,8 @@ enum class SweepVariable {
   Epsilon,    ///< size of the push: start + epsilon * direction
   MassRatio,  ///< m2/m1 (m1 fixed; a designed chain keeps its 1:2 k2)
   Gap,        ///< the gap d [length]
-  Detuning,   ///< w1/w2 - 2 (k2 chosen for that ratio on the model's branch)
+  Detuning,   ///< w1/w2 - 2: k2 for that ratio on the model's branch (upper for a chain given
+              ///< by k2); 0 is the 1:2 design itself
 };
 /// "u1", "v1", "v2", "lambda", "epsilon", "mass-ratio", "gap", "detuning".
 std::string_view toString(SweepVariable variable);
@@ -74,7 +75,8 @@ std::string checkSweep(const SweepSpec& spec);
 
 /// The summary of one run. NaN where a value is not defined (no flight from the stop ended
 /// within the run, no impact, an unusable model or start at that point); +infinity where the
-/// run proved that it never comes (a resonant free flight that never reaches the stop).
+/// run proved that it never comes (a resonant free flight that never reaches the stop). At a
+/// point with no run (valid false) the counts are -1.
 struct PointSummary {
   double fftFirst = 0;  ///< FFT of the first flight that leaves the stop [time]
   double fftMin = 0;    ///< min FFT / T2 over the run's flights from the stop
@@ -103,6 +105,7 @@ struct QuantityInfo {
 };
 const std::array<QuantityInfo, 9>& quantities();
 std::optional<Quantity> parseQuantity(std::string_view name);
+/// The quantity as a number (counts too); NaN at a point with no run.
 double valueOf(const PointSummary& point, Quantity quantity);
 
 /// Rows [rowBegin, rowEnd) of the grid: all of it, or stripe k (1-based) of n.

@@ -10,6 +10,7 @@
 #include <QImageWriter>
 #include <QJsonDocument>
 #include <QPainter>
+#include <QApplication>
 #include <QPdfWriter>
 #include <QScrollArea>
 #include <QSaveFile>
@@ -77,7 +78,7 @@ class LegendClipping {
 // shows (3x), the rest as vectors.
 class ScrollAreasAsPictures {
  public:
-  explicit ScrollAreasAsPictures(QWidget* root) {
+  explicit ScrollAreasAsPictures(QWidget* root) : m_focus(QApplication::focusWidget()) {
     for (QScrollArea* area : root->findChildren<QScrollArea*>()) {
       QWidget* content = area->widget();
       if (!area->isVisibleTo(root) || !content || !content->isVisibleTo(root)) continue;
@@ -92,6 +93,8 @@ class ScrollAreasAsPictures {
     for (QWidget* content : m_hidden) {
       if (content) content->show();
     }
+    // hiding moved the focus out of the panel: it goes back where the user had it
+    if (m_focus) m_focus->setFocus(Qt::OtherFocusReason);
   }
   ScrollAreasAsPictures(const ScrollAreasAsPictures&) = delete;
   ScrollAreasAsPictures& operator=(const ScrollAreasAsPictures&) = delete;
@@ -103,6 +106,7 @@ class ScrollAreasAsPictures {
  private:
   QList<QPair<QRect, QImage>> m_pictures;
   QList<QPointer<QWidget>> m_hidden;
+  QPointer<QWidget> m_focus;
 };
 
 }  // namespace

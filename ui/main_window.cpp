@@ -487,7 +487,15 @@ bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
 void MainWindow::showMapRegion(QRectF region) {
   Params& current = m_sceneParams[std::size_t(m_sceneIndex)];
   const DerivedModel derived = deriveModel(current);
-  if (!derived.ok || region.width() <= 0 || region.height() <= 0) return;
+  if (!derived.ok) return;
+  // a region a few ulps wide would have no distinct cells (and no ticks): refused, said
+  const auto tooNarrow = [](double low, double high) {
+    return !(high - low > 1e-9 * std::max({1.0, std::abs(low), std::abs(high)}));
+  };
+  if (tooNarrow(region.left(), region.right()) || tooNarrow(region.top(), region.bottom())) {
+    m_status->setText(tr("That region is too small to compute apart from its neighbours: drag a larger one"));
+    return;
+  }
   // kept in units of d and d w2, so that it frames the same part of the plane for any chain
   const double d = derived.model.gap;
   const double v = d * derived.modes.omegaSlow;

@@ -80,7 +80,7 @@ bool writePictures(const QString& prefix, const std::vector<core::FamilyPoint>& 
 
 }  // namespace
 
-int runFamily(const QCommandLineParser& parser, QString& error) {
+int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
   if (!parser.isSet("onepp")) {
     error = "family: name the family: --onepp (one impact per period)";
     return kExitInvalidInput;
@@ -126,7 +126,8 @@ int runFamily(const QCommandLineParser& parser, QString& error) {
   }
 
   const core::Chain<double>& chain = model.value->chain;
-  const std::vector<core::FamilyPoint> family = core::onePeriodicFamily(chain, count);
+  const std::vector<core::FamilyPoint> family = core::onePeriodicFamily(chain, count, stop);
+  if (stop.stop_requested()) return kExitInterrupted;
   const core::FamilyPoint end = core::grazingEnd(chain);
 
   QByteArray csv = "T,omega,V,u1,energy,admissible\n";

@@ -4,6 +4,8 @@
 
 #include <QString>
 
+#include <stop_token>
+
 class QCommandLineParser;
 
 namespace grazelab::cli {
@@ -11,6 +13,7 @@ namespace grazelab::cli {
 /// `grazelab-cli family --onepp [model] --out PREFIX [--count N]`: the 1IPP family as a table
 /// (PREFIX.csv: T,omega,V,u1,energy,admissible; PREFIX.npy: the same columns; PREFIX.json) and
 /// a frequency-energy picture (PREFIX.png, PREFIX.svg). Exit 2 with `error` on invalid input.
-int runFamily(const QCommandLineParser& parser, QString& error);
+/// Exit 130 (nothing written) when `stop` is requested.
+int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

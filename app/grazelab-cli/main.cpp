@@ -205,9 +205,13 @@ int main(int argc, char* argv[]) {
   const QStringList positional = parser.positionalArguments();
   if (!positional.isEmpty() && positional.first() == "merge") {
     QString error;
-    const int code = grazelab::cli::runMerge(parser, positional.mid(1), error);
+    const int code = grazelab::cli::runMerge(parser, positional.mid(1), watcher.token(), error);
     if (code == grazelab::cli::kExitInvalidInput) return fail(error);
-    if (code != 0) std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
+    if (code == grazelab::cli::kExitInterrupted) {
+      std::fprintf(stderr, "grazelab-cli: interrupted: nothing written\n");
+    } else if (code != 0) {
+      std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
+    }
     return code;
   }
   if (positional.size() != 1) {
@@ -227,13 +231,17 @@ int main(int argc, char* argv[]) {
   }
   if (command == "family") {
     QString error;
-    const int code = grazelab::cli::runFamily(parser, error);
+    const int code = grazelab::cli::runFamily(parser, watcher.token(), error);
     if (code == grazelab::cli::kExitInvalidInput) return fail(error);
-    if (code != 0) std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
+    if (code == grazelab::cli::kExitInterrupted) {
+      std::fprintf(stderr, "grazelab-cli: interrupted: nothing written\n");
+    } else if (code != 0) {
+      std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
+    }
     return code;
   }
   const QStringList mapOnly = grazelab::cli::mapOnlyOptionsSet(parser);
-  if (!mapOnly.isEmpty()) return fail(mapOnly.join(", ") + " only apply to 'map'");
+  if (!mapOnly.isEmpty()) return fail(mapOnly.join(", ") + " only apply to 'map' (--count to 'family')");
   if (command == "report" || command == "stability") {
     QString error;
     const int code = command == "report" ? grazelab::cli::runReport(parser, watcher.token(), error)

@@ -65,7 +65,8 @@ std::optional<Shard> parseShard(const QString& text, QString& error) {
     shard.k = parts[0].toLongLong(&okK);
     shard.n = parts[1].toLongLong(&okN);
   }
-  if (!okK || !okN || shard.n < 1 || shard.k < 1 || shard.k > shard.n) {
+  constexpr std::int64_t kMaxStripes = std::int64_t(1) << 31;
+  if (!okK || !okN || shard.n < 1 || shard.n > kMaxStripes || shard.k < 1 || shard.k > shard.n) {
     error = QStringLiteral("--shard: '%1' is not K/N with 1 <= K <= N (stripes count from 1)").arg(text);
     return std::nullopt;
   }
@@ -152,6 +153,20 @@ std::optional<core::SweepSpec> parseSpec(const QCommandLineParser& parser, QStri
     error = QString::fromStdString(problem);
     return std::nullopt;
   }
+  // a base start that cannot be made (an inadmissible --onepp T) would give a map of NaN: said
+  // here, when no axis changes the chain it is made on
+  const auto changesChain = [](core::SweepVariable v) {
+    return v == core::SweepVariable::MassRatio || v == core::SweepVariable::Gap ||
+           v == core::SweepVariable::Detuning;
+  };
+  if (spec.start && !changesChain(spec.x.variable) && !changesChain(spec.y.variable)) {
+    const core::StartOrProblem<double> start = core::makeStart(model.value->chain, *spec.start);
+    if (!start.start) {
+      const bool onepp = spec.start->kind == core::StartSpec<double>::Kind::OnePeriodic;
+      error = (onepp ? QStringLiteral("--onepp: ") : QString()) + QString::fromStdString(start.problem);
+      return std::nullopt;
+    }
+  }
   return spec;
 }
 
@@ -189,7 +204,7 @@ void addMapOptions(QCommandLineParser& parser) {
 }
 
 QStringList mapOnlyOptionsSet(const QCommandLineParser& parser) {
-  return foreignOptions(parser, {"x", "y", "threads", "shard", "picture"});
+  return foreignOptions(parser, {"x", "y", "threads", "shard", "picture", "count"});
 }
 
 int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
@@ -266,11 +281,12 @@ int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& erro
   return kExitOk;
 }
 
-int runMerge(const QCommandLineParser& parser, const QStringList& parts, QString& error) {
+int runMerge(const QCommandLineParser& parser, const QStringList& parts, std::stop_token stop,
+             QString& error) {
   const QStringList foreign = foreignOptions(
       parser, {"x", "y", "threads", "shard", "picture", "count", "glo", "onepp", "state",
                "perturb", "contacts", "t-end", "format", "trust", "methods", "quick", "m1", "m2",
-               "k1", "k2", "gap", "branch"});
+               "k1", "k2", "gap", "branch", "precision"});
   if (!foreign.isEmpty()) {
     error = foreign.join(", ") + " do not apply to 'merge' (the parts say what the map is)";
     return kExitInvalidInput;
@@ -283,6 +299,7 @@ int runMerge(const QCommandLineParser& parser, const QStringList& parts, QString
   if (!prefix) return kExitInvalidInput;
   std::vector<map::StoredMap> stored;
   for (const QString& part : parts) {
+    if (stop.stop_requested()) return kExitInterrupted;
     QString reason;
     auto read = map::readMapFiles(part, reason);
     if (!read) {
@@ -296,6 +313,7 @@ int runMerge(const QCommandLineParser& parser, const QStringList& parts, QString
     error = "merge: " + error;
     return kExitInvalidInput;
   }
+  if (stop.stop_requested()) return kExitInterrupted;
   if (!map::writeMapFiles(*prefix, *whole, error)) return 1;
   if (map::picturesAvailable() && !map::writeMapPicture(*prefix, *whole, error)) return 1;
   std::fprintf(stderr, "grazelab-cli: merge: %lld parts, %lld x %lld points: %s.json\n",

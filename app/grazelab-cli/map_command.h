@@ -15,7 +15,7 @@ namespace grazelab::cli {
 /// --picture, --count; --out is shared with `report`).
 void addMapOptions(QCommandLineParser& parser);
 
-/// The options only `map` takes that are set (for refusing them elsewhere).
+/// The options only `map` (or `family`: --count) takes that are set (for refusing them elsewhere).
 QStringList mapOnlyOptionsSet(const QCommandLineParser& parser);
 
 /// `grazelab-cli map`: a 2-D grid of exact runs reduced to summaries (issue 10). Exit 0, 2 on
@@ -23,6 +23,7 @@ QStringList mapOnlyOptionsSet(const QCommandLineParser& parser);
 int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& error);
 
 /// `grazelab-cli merge --out PREFIX PART1 ... PARTN`: the stripes of one map joined.
-int runMerge(const QCommandLineParser& parser, const QStringList& parts, QString& error);
+int runMerge(const QCommandLineParser& parser, const QStringList& parts, std::stop_token stop,
+             QString& error);
 
 }  // namespace grazelab::cli

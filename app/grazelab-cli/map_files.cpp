@@ -162,13 +162,22 @@ QJsonObject specJson(const core::SweepSpec& spec, double period, const QString& 
                                            : "not estimated (--trust off): NaN; give --trust auto"},
           {"missing_values", "NaN: not defined at that point (no such flight or impact in the "
                              "run, or the model or start is unusable there); inf: the run proved "
-                             "it never comes (a resonant flight that never returns)"},
+                             "it never comes (a resonant flight that never returns); the counts "
+                             "are -1 where the model or start is unusable (no run)"},
           {"picture", pictureQuantity},
           {"quantities", quantities}};
 }
 
 bool writeMapFiles(const QString& prefix, const StoredMap& map, QString& error) {
   const std::int64_t rows = map.rows.rowEnd - map.rows.rowBegin;
+  // a map written over another: its description goes first and comes back last, so that a
+  // write that fails half-way leaves no JSON describing a mixture of old and new arrays
+  for (const QString& stale : {prefix + ".json", prefix + ".csv"}) {
+    if (QFile::exists(stale) && !QFile::remove(stale)) {
+      error = QStringLiteral("cannot replace %1").arg(stale);
+      return false;
+    }
+  }
   QJsonObject files;
   for (const core::QuantityInfo& info : core::quantities()) {
     NpyArray array;
@@ -246,6 +255,7 @@ std::optional<StoredMap> readMapFiles(const QString& prefix, QString& error) {
                info.integer ? array->integers[i] : 0);
     }
   }
+  for (PointSummary& point : map.points) point.valid = point.impacts >= 0;  // -1: no run there
   return map;
 }
 
@@ -254,8 +264,15 @@ std::optional<StoredMap> mergeStripes(std::vector<StoredMap> parts, QString& err
     error = "nothing to merge";
     return std::nullopt;
   }
-  std::sort(parts.begin(), parts.end(),
-            [](const StoredMap& a, const StoredMap& b) { return a.rows.rowBegin < b.rows.rowBegin; });
+  // empty stripes (more stripes than rows) hold nothing to place
+  std::erase_if(parts, [](const StoredMap& part) { return part.rows.rowEnd == part.rows.rowBegin; });
+  if (parts.empty()) {
+    error = "every part is an empty stripe";
+    return std::nullopt;
+  }
+  std::sort(parts.begin(), parts.end(), [](const StoredMap& a, const StoredMap& b) {
+    return std::pair(a.rows.rowBegin, a.rows.rowEnd) < std::pair(b.rows.rowBegin, b.rows.rowEnd);
+  });
   StoredMap whole;
   whole.description.spec = parts.front().description.spec;
   whole.columns = parts.front().columns;

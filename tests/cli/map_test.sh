@@ -93,7 +93,26 @@ if [ "$pictures" = pictures ]; then
   [ ! -e "$work/parts/part1.png" ] || fail "a stripe drew a picture of itself"
 fi
 
+# more stripes than rows: the empty ones merge away
+parallel "$cli" map --x u1:-1:2:5 --y v1:-1:1:3 --threads 1 --shard {}/4 --out "$work/few/part{}" \
+  ::: 1 2 3 4 2>"$err" || fail "shards of 3 rows: $(cat "$err")"
+expect_ok merge --out "$work/few/merged" "$work/few/part4" "$work/few/part2" "$work/few/part1" "$work/few/part3"
+expect_ok map --x u1:-1:2:5 --y v1:-1:1:3 --out "$work/few/whole"
+cmp -s "$work/few/whole-fft_first.npy" "$work/few/merged-fft_first.npy" || fail "3 rows in 4 stripes merge wrong"
+
+# counts at points with no run are -1, not 0 (a designed chain has no m2/m1 above 9/16)
+expect_ok map --x mass-ratio:0.5:0.7:3 --y v1:0:0:1 --out "$work/ratio/map"
+python3 - "$work" <<'PY' || fail "counts where nothing was run"
+import sys
+rows = [l.split(',') for l in open(sys.argv[1] + '/ratio/map.csv').read().splitlines()]
+head = rows[0]
+last = rows[-1]  # m2/m1 = 0.7
+assert last[head.index('impacts')] == '-1' and last[head.index('fft_first')] == 'nan', last
+assert rows[1][head.index('impacts')] != '-1', rows[1]
+PY
+
 # refused, with one line, nothing written
+EXPECT_WORD="--onepp" expect_invalid map --x u1:0:1:3 --y v1:0:1:3 --onepp 100 --out "$work/bad/a"
 EXPECT_WORD="different variables" expect_invalid map --x u1:0:1:3 --y u1:0:1:3 --out "$work/bad/a"
 EXPECT_WORD="mass-ratio" expect_invalid map --x speed:0:1:3 --y v1:0:1:3 --out "$work/bad/a"
 EXPECT_WORD="count from 1" expect_invalid map --x u1:0:1:3 --y v1:0:1:3 --shard 0/4 --out "$work/bad/a"

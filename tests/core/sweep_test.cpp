@@ -166,12 +166,31 @@ TEST(SweepTest, pointsWithoutAChainOrAStartAreNaNNotNumbers) {
   EXPECT_TRUE(map.points[0].valid);
   EXPECT_FALSE(map.points[1].valid);
   EXPECT_TRUE(std::isnan(map.points[1].fftFirst));
+  // no run there: no count either (a 0 would read as "a run without impacts")
+  EXPECT_EQ(map.points[1].impacts, -1);
+  for (const QuantityInfo& info : quantities()) EXPECT_TRUE(std::isnan(valueOf(map.points[1], info.quantity)));
   // a start beyond the stop
   SweepSpec past = grazingPlane(1, 1, 1);
   past.start = StartSpec<double>{};
   past.start->kind = StartSpec<double>::Kind::Explicit;
   past.start->state = State{0, 1.5, 0, 0};
   EXPECT_FALSE(sweepPoint(past, 0, 0).valid);
+}
+
+TEST(SweepTest, detuningZeroIsTheResonantDesignWhateverK2WasGiven) {
+  SweepSpec spec;
+  spec.model = Model{1.0, 0.5, 1.0, 0.3, 1.0, std::nullopt};  // a chain given by its k2
+  spec.x = {SweepVariable::Detuning, -0.1, 0.1, 3};
+  spec.y = {SweepVariable::Lambda, 0.5, 0.5, 1};
+  spec.contacts = 5;
+  const SweepMap map = sweep(spec, {0, 1}, serialFor());
+  // the middle column: the 1:2 chain, where GLO_0.5 grazes every T2
+  SweepSpec designed = spec;
+  designed.model.design = Branch::Upper;
+  designed.x = {SweepVariable::Gap, 1.0, 1.0, 1};
+  EXPECT_TRUE(sameBits(map.points[1], sweepPoint(designed, 0, 0)));
+  EXPECT_EQ(map.points[1].grazings, 5);
+  EXPECT_EQ(map.points[1].fftFirst, periodOf(designed.model));
 }
 
 TEST(SweepTest, aStopEndsTheMapIncomplete) {

@@ -16,6 +16,7 @@
 #include "tests/ui/explorer_test_support.h"
 #include "ui/main_window.h"
 #include "ui/plots/chain_view.h"
+#include "ui/plots/heat_map.h"
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/plot_view.h"
 
@@ -172,6 +173,15 @@ class ScenesTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     QVERIFY(m_window->params().mapRegion == before);
     QVERIFY(!m_window->mapRegionBack());  // nothing further back
+  }
+
+  // a map a few ulps wide (zoomed eight times) made the tick loop spin forever: t += step did
+  // not move t
+  void heatMapTicksEndOnASpanOfAFewUlps() {
+    const double lo = 1.0;
+    const double hi = std::nextafter(std::nextafter(lo, 2.0), 2.0);
+    const std::vector<double> ticks = niceTicks(lo, hi);
+    QVERIFY(!ticks.empty() && ticks.size() <= 64);
   }
 
   // Lemma 2.1: max u2/d of GLO(lambda) is 1 exactly on [0, 4/3], above 1 outside

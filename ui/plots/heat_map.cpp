@@ -90,7 +90,9 @@ std::vector<double> niceTicks(double from, double to, int target) {
     step = m * power;
     if (step >= raw) break;
   }
-  for (double t = std::ceil(lo / step) * step; t <= hi + 1e-9 * step; t += step) {
+  // a span of a few ulps has a step below an ulp of the values: t += step would not move
+  for (double t = std::ceil(lo / step) * step; t <= hi + 1e-9 * step && ticks.size() < 64; t += step) {
+    if (!ticks.empty() && t == ticks.back()) break;
     ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
   }
   return ticks;

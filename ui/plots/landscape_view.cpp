@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/chain.h"
 #include "core/orbits.h"
@@ -173,8 +174,10 @@ void LandscapeView::paintEvent(QPaintEvent*) {
   HeatMapData data;
   data.columns = map.spec.x.count;
   data.rows = map.spec.y.count;
-  data.values.reserve(std::size_t(data.columns * data.rows));
-  for (const core::PointSummary& point : *map.points) data.values.push_back(core::valueOf(point, m_quantity));
+  // only the rows the worker has finished: it may be writing the others right now
+  const std::size_t ready = std::size_t(map.rowsDone * data.columns);
+  data.values.assign(std::size_t(data.columns * data.rows), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < ready; ++i) data.values[i] = core::valueOf((*map.points)[i], m_quantity);
   data.rowsReady = map.rowsDone;
   data.xFrom = map.spec.x.from;
   data.xTo = map.spec.x.to;
@@ -239,7 +242,7 @@ void LandscapeView::mousePressEvent(QMouseEvent* event) {
     QWidget::mousePressEvent(event);
     return;
   }
-  m_pressAt = event->position().toPoint();
+  m_pressAt = event->position();
   m_dragTo = *m_pressAt;
   event->accept();
 }
@@ -247,14 +250,14 @@ void LandscapeView::mousePressEvent(QMouseEvent* event) {
 void LandscapeView::mouseMoveEvent(QMouseEvent* event) {
   if (!m_pressAt) return;
   const QRectF plot = plotRect();
-  m_dragTo = QPoint(int(std::clamp(event->position().x(), plot.left(), plot.right())),
-                    int(std::clamp(event->position().y(), plot.top(), plot.bottom())));
+  m_dragTo = QPointF(std::clamp(event->position().x(), plot.left(), plot.right()),
+                     std::clamp(event->position().y(), plot.top(), plot.bottom()));
   update();
 }
 
 void LandscapeView::mouseReleaseEvent(QMouseEvent* event) {
   if (!m_pressAt || event->button() != Qt::LeftButton) return;
-  const QPoint pressed = *m_pressAt;
+  const QPointF pressed = *m_pressAt;
   m_pressAt.reset();
   update();
   const auto from = valueAt(pressed);

@@ -73,8 +73,8 @@ class LandscapeView : public QWidget, public SceneView {
   QPointF m_glom1, m_glom2;           ///< GLOM1 and GLOM2 data
   std::vector<QPointF> m_section;     ///< the run's (u1, v1) at each contact
   std::optional<QPointF> m_start;     ///< the run's start, when it lies on the plane
-  std::optional<QPoint> m_pressAt;    ///< where a press began (a click or a drag)
-  QPoint m_dragTo;
+  std::optional<QPointF> m_pressAt;   ///< where a press began (a click or a drag)
+  QPointF m_dragTo;
   int m_textPixels = 0;               ///< presentation text size (0: the desk look)
 };
 
