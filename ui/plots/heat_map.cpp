@@ -108,7 +108,8 @@ QRectF heatMapPlotArea(const QRectF& area, const QFont& font) {
   return area.adjusted(left, top, -right, -bottom);
 }
 
-void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data) {
+void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data,
+                  const QImage* image) {
   painter.save();
   const QFont font = painter.font();
   const QFontMetricsF metrics(font);
@@ -128,7 +129,7 @@ void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data
 
   // the cells, without smoothing: each is one value
   painter.setRenderHint(QPainter::SmoothPixmapTransform, false);
-  painter.drawImage(plot, heatMapImage(data));
+  painter.drawImage(plot, image ? *image : heatMapImage(data));
   painter.setRenderHint(QPainter::Antialiasing, true);
   painter.setPen(QPen(Qt::black, 1));
   painter.drawRect(plot);

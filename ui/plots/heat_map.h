@@ -44,7 +44,9 @@ QRectF heatMapPlotArea(const QRectF& area, const QFont& font);
 
 /// Paints the map into `area`: title, the cells (nearest neighbour, no smoothing), axes with
 /// ticks and titles, and a colour bar with its range and a key for NaN and inf cells.
-void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data);
+/// `image`, when given, is heatMapImage(data) made before (a view repainting an unchanged map).
+void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data,
+                  const QImage* image = nullptr);
 
 /// Ticks at 1, 2 or 5 times a power of ten inside [from, to] (about `target` of them).
 std::vector<double> niceTicks(double from, double to, int target = 6);

@@ -162,14 +162,7 @@ QPointF LandscapeView::positionOf(QPointF value) const {
                  plot.bottom() - (value.y() - y0) / (y1 - y0) * plot.height());
 }
 
-void LandscapeView::paintEvent(QPaintEvent*) {
-  QPainter painter(this);
-  painter.fillRect(rect(), Qt::white);
-  if (!m_map) {
-    painter.drawText(mapArea(), Qt::AlignCenter, tr("computing the map…"));
-    return;
-  }
-  const MapProgress& map = *m_map;
+HeatMapData LandscapeView::heatMapDataOf(const MapProgress& map) const {
   const core::QuantityInfo& info = core::quantities()[std::size_t(m_quantity)];
   HeatMapData data;
   data.columns = map.spec.x.count;
@@ -188,8 +181,27 @@ void LandscapeView::paintEvent(QPaintEvent*) {
   data.xTitle = tr("u₁ of the start (u₂ = d, v₂ = 0)");
   data.yTitle = tr("v₁ of the start");
   data.valueTitle = quantityLabel(info);
+  return data;
+}
+
+void LandscapeView::paintEvent(QPaintEvent*) {
+  QPainter painter(this);
+  painter.fillRect(rect(), Qt::white);
+  if (!m_map) {
+    painter.drawText(mapArea(), Qt::AlignCenter, tr("computing the map…"));
+    return;
+  }
+  const MapProgress& map = *m_map;
+  // the cells' values and picture are made again only when the map, its finished rows or the
+  // quantity change (65 536 cells: most of a repaint's time otherwise)
+  const CacheKey key{map.points.get(), map.spec, map.rowsDone, m_quantity};
+  if (!(key == m_cacheKey)) {
+    m_cacheKey = key;
+    m_data = heatMapDataOf(map);
+    m_image = heatMapImage(m_data);
+  }
   painter.setFont(font());
-  paintHeatMap(painter, mapArea(), data);
+  paintHeatMap(painter, mapArea(), m_data, &m_image);
 
   // over the cells: the grazing family, its modes, the run's section and its start
   const QRectF plot = plotRect();

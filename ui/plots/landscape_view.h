@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
+#include <QImage>
 #include <QPointF>
 #include <QRectF>
 #include <QWidget>
@@ -11,6 +12,7 @@
 
 #include "core/state.h"
 #include "core/sweep.h"
+#include "ui/plots/heat_map.h"
 #include "ui/plots/scene_view.h"
 #include "ui/sim_types.h"
 
@@ -62,6 +64,7 @@ class LandscapeView : public QWidget, public SceneView {
  private:
   QRectF mapArea() const;  ///< where the map, its axes and colour bar are painted
   QRectF plotRect() const;  ///< the cells' rectangle inside mapArea()
+  HeatMapData heatMapDataOf(const MapProgress& map) const;  ///< the chosen quantity's cells
 
   QComboBox* m_quantityBox = nullptr;
   QToolButton* m_back = nullptr;
@@ -76,6 +79,16 @@ class LandscapeView : public QWidget, public SceneView {
   std::optional<QPointF> m_pressAt;   ///< where a press began (a click or a drag)
   QPointF m_dragTo;
   int m_textPixels = 0;               ///< presentation text size (0: the desk look)
+  struct CacheKey {
+    const void* points = nullptr;
+    core::SweepSpec spec;  ///< with the grid's address: a freed grid's address may come back
+    std::int64_t rowsDone = -1;
+    core::Quantity quantity = core::Quantity::FftFirst;
+    friend bool operator==(const CacheKey&, const CacheKey&) = default;
+  };
+  CacheKey m_cacheKey;  ///< what m_data and m_image show
+  HeatMapData m_data;
+  QImage m_image;
 };
 
 }  // namespace grazelab::ui
