@@ -160,7 +160,8 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
       generator.setSize(widget->size());
       generator.setViewBox(QRect(QPoint(0, 0), widget->size()));
       generator.setTitle(QStringLiteral("GrazeLab"));
-      generator.setDescription(description);
+      // Qt 6.4 writes the description as it is: a "<" in it would make the file unreadable
+      generator.setDescription(description.toHtmlEscaped());
       QPainter painter(&generator);
       if (!painter.isActive()) {
         file.cancelWriting();

@@ -72,7 +72,7 @@ bool writePictures(const QString& prefix, const std::vector<core::FamilyPoint>& 
   generator.setSize(QSize(kWidth, kHeight));
   generator.setViewBox(QRect(0, 0, kWidth, kHeight));
   generator.setTitle(title);
-  generator.setDescription(QString::fromUtf8(json));
+  generator.setDescription(QString::fromUtf8(json).toHtmlEscaped());  // written unescaped by Qt 6.4
   paint(generator);
   return save(prefix + ".svg", svg, error);
 }

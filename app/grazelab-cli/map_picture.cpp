@@ -98,7 +98,7 @@ bool writeMapPicture(const QString& prefix, const StoredMap& map, QString& error
   generator.setSize(QSize(kWidth, kHeight));
   generator.setViewBox(QRect(0, 0, kWidth, kHeight));
   generator.setTitle(data.title);
-  generator.setDescription(QString::fromUtf8(description));
+  generator.setDescription(QString::fromUtf8(description).toHtmlEscaped());  // written unescaped by Qt 6.4
   paint(generator, data);
   return save(prefix + ".svg", svg, error);
 }

@@ -33,6 +33,14 @@ assert last[5] == 1 and -1e-10 < last[2] < 0, last
 assert abs(last[3] - end['u1']) < 1e-10 and abs(last[4] - end['energy']) < 1e-10 * end['energy'], (last, end)
 assert all(r[2] < 0 for r in rows if r[5] == 1), 'an admissible orbit with V >= 0'
 PY
+if [ -e "$work/f/family.svg" ]; then
+  # its description holds "V < 0": Qt 6.4 wrote it unescaped, and no reader could open the file
+  python3 - "$work/f/family.svg" <<'PY' || fail "family.svg is not well-formed or lacks its table's description"
+import json, sys, xml.etree.ElementTree as ET
+desc = ET.parse(sys.argv[1]).getroot().find('{http://www.w3.org/2000/svg}desc').text
+assert json.loads(desc)['format'] == 'grazelab-family'
+PY
+fi
 EXPECT_WORD="--onepp" expect_invalid family --out "$work/bad/f"
 EXPECT_WORD="resonant" expect_invalid family --onepp --k2 0.6 --out "$work/bad/f"
 EXPECT_WORD="--out" expect_invalid family --onepp

@@ -91,6 +91,12 @@ if [ "$pictures" = pictures ]; then
     [ -s "$work/merged/map.$suffix" ] || fail "no merged map.$suffix"
   done
   [ ! -e "$work/parts/part1.png" ] || fail "a stripe drew a picture of itself"
+  # well-formed XML whose description is the map's spec
+  python3 - "$work/whole/map.svg" <<'PY' || fail "map.svg is not well-formed or lacks its spec"
+import json, sys, xml.etree.ElementTree as ET
+desc = ET.parse(sys.argv[1]).getroot().find('{http://www.w3.org/2000/svg}desc').text
+assert json.loads(desc)['format'] == 'grazelab-map'
+PY
 fi
 
 # more stripes than rows: the empty ones merge away

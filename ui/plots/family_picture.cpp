@@ -70,11 +70,14 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
     const double py = plot.bottom() - (w - wLo) / (wHi - wLo) * plot.height();
     painter.drawLine(QPointF(plot.left(), py), QPointF(plot.right(), py));
   }
-  // inadmissible orbits: grey crosses; admissible: a solid line through consecutive members
+  // inadmissible orbits: grey crosses; admissible: a solid line through consecutive members.
+  // Points outside the plot are left out rather than clipped: an SVG painter ignores clips.
   painter.setPen(QPen(QColor(0x99, 0x99, 0x99), 1.2));
+  const QRectF inner = plot.adjusted(4, 4, -4, -4);
   for (const core::FamilyPoint& p : family) {
     if (p.admissible || !(p.energy > 0)) continue;
     const QPointF q = at(p.energy, p.omega);
+    if (!inner.contains(q)) continue;
     painter.drawLine(q + QPointF(-3, -3), q + QPointF(3, 3));
     painter.drawLine(q + QPointF(-3, 3), q + QPointF(3, -3));
   }
@@ -82,11 +85,11 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
   QPainterPath path;
   bool drawing = false;
   for (const core::FamilyPoint& p : family) {
-    if (!p.admissible) {
+    const QPointF q = p.energy > 0 ? at(p.energy, p.omega) : QPointF();
+    if (!p.admissible || !plot.contains(q)) {
       drawing = false;
       continue;
     }
-    const QPointF q = at(p.energy, p.omega);
     drawing ? path.lineTo(q) : path.moveTo(q);
     drawing = true;
   }
