@@ -35,7 +35,7 @@ QByteArray encodeNpy(const NpyArray& array) {
   const std::size_t count = std::size_t(array.rows * array.columns);
   const char* data = array.integer ? reinterpret_cast<const char*>(array.integers.data())
                                    : reinterpret_cast<const char*>(array.reals.data());
-  bytes.append(data, qsizetype(count * 8));
+  if (count > 0) bytes.append(data, qsizetype(count * 8));
   return bytes;
 }
 
@@ -71,6 +71,7 @@ std::optional<NpyArray> decodeNpy(const QByteArray& bytes, QString& error) {
     return std::nullopt;
   }
   const char* data = bytes.constData() + 10 + headerSize;
+  if (count == 0) return array;  // an empty stripe: no data (and memcpy takes no null pointer)
   if (array.integer) {
     array.integers.resize(count);
     std::memcpy(array.integers.data(), data, count * 8);
