@@ -10,19 +10,16 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 
 #include "cli_input.h"
 #include "core/family.h"
 #include "core/orbits.h"
 #include "npy.h"
+#include "output_files.h"
 #include "report_command.h"
 
 #if GRAZELAB_CLI_PICTURES
-#include <QBuffer>
-#include <QImage>
 #include <QPainter>
-#include <QSvgGenerator>
 
 #include "ui/plots/family_picture.h"
 #endif
@@ -30,53 +27,12 @@
 namespace grazelab::cli {
 namespace {
 
-bool save(const QString& path, const QByteArray& bytes, QString& error) {
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-    error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    return false;
-  }
-  return true;
-}
-
 QByteArray number(double value) { return QByteArray::number(value, 'g', 17); }
 
 QJsonObject pointJson(const core::FamilyPoint& p) {
   return {{"T", p.T}, {"omega", p.omega}, {"V", p.V}, {"u1", p.u1}, {"energy", p.energy}};
 }
 
-#if GRAZELAB_CLI_PICTURES
-bool writePictures(const QString& prefix, const std::vector<core::FamilyPoint>& family,
-                   const core::FamilyPoint& end, const QString& title, const QByteArray& json,
-                   QString& error) {
-  constexpr int kWidth = 1100, kHeight = 760;
-  auto paint = [&](QPaintDevice& device) {
-    QPainter painter(&device);
-    QFont font("DejaVu Sans");
-    font.setPixelSize(15);
-    painter.setFont(font);
-    ui::paintFrequencyEnergy(painter, QRectF(0, 0, kWidth, kHeight), family, end, title);
-  };
-  QImage image(kWidth, kHeight, QImage::Format_RGB32);
-  paint(image);
-  image.setText("GrazeLabFamily", QString::fromUtf8(json));
-  QByteArray png;
-  QBuffer pngBuffer(&png);
-  pngBuffer.open(QIODevice::WriteOnly);
-  image.save(&pngBuffer, "PNG");
-  if (!save(prefix + ".png", png, error)) return false;
-  QByteArray svg;
-  QBuffer svgBuffer(&svg);
-  QSvgGenerator generator;
-  generator.setOutputDevice(&svgBuffer);
-  generator.setSize(QSize(kWidth, kHeight));
-  generator.setViewBox(QRect(0, 0, kWidth, kHeight));
-  generator.setTitle(title);
-  generator.setDescription(QString::fromUtf8(json).toHtmlEscaped());  // written unescaped by Qt 6.4
-  paint(generator);
-  return save(prefix + ".svg", svg, error);
-}
-#endif
 
 }  // namespace
 
@@ -164,17 +120,23 @@ int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& e
                      "at T (exact contact search), else 0"},
       {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
   const QByteArray jsonBytes = QJsonDocument(json).toJson();
-  if (!save(prefix + ".csv", csv, error) || !save(prefix + ".npy", encodeNpy(array), error) ||
-      !save(prefix + ".json", jsonBytes, error)) {
+  if (!saveAtomically(prefix + ".csv", csv, error) ||
+      !saveAtomically(prefix + ".npy", encodeNpy(array), error) ||
+      !saveAtomically(prefix + ".json", jsonBytes, error)) {
     return 1;
   }
 #if GRAZELAB_CLI_PICTURES
   const QString title = QStringLiteral("1IPP family: frequency against energy (m2/m1 = %1, λ* = %2)")
                             .arg(m.m2 / m.m1, 0, 'g', 4)
                             .arg(core::lambdaStar(chain), 0, 'g', 4);
-  if (!writePictures(prefix, family, end, title, QJsonDocument(json).toJson(QJsonDocument::Compact), error)) {
-    return 1;
-  }
+  const QSize size(1100, 760);
+  const bool drawn = savePngAndSvg(
+      prefix, size, title, "GrazeLabFamily", QJsonDocument(json).toJson(QJsonDocument::Compact),
+      [&](QPainter& painter) {
+        ui::paintFrequencyEnergy(painter, QRectF(QPointF(0, 0), size), family, end, title);
+      },
+      error);
+  if (!drawn) return 1;
 #endif
   std::int64_t admissible = 0;
   for (const auto& p : family) admissible += p.admissible ? 1 : 0;

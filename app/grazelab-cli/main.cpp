@@ -38,6 +38,18 @@ int fail(const QString& message) {
   return kInvalidInput;
 }
 
+// The end of a command that writes files: one line for invalid input (exit 2), a note for an
+// interrupt (130: nothing written), the reason of a failed write.
+int ended(int code, const QString& error) {
+  if (code == kInvalidInput) return fail(error);
+  if (code == kInterrupted) {
+    std::fprintf(stderr, "grazelab-cli: interrupted: nothing written\n");
+  } else if (code != 0) {
+    std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
+  }
+  return code;
+}
+
 void write(const QByteArray& bytes) { std::fwrite(bytes.constData(), 1, bytes.size(), stdout); }
 
 // SIGINT and SIGTERM are blocked in every thread and taken by this watcher with sigtimedwait:
@@ -205,14 +217,7 @@ int main(int argc, char* argv[]) {
   const QStringList positional = parser.positionalArguments();
   if (!positional.isEmpty() && positional.first() == "merge") {
     QString error;
-    const int code = grazelab::cli::runMerge(parser, positional.mid(1), watcher.token(), error);
-    if (code == grazelab::cli::kExitInvalidInput) return fail(error);
-    if (code == grazelab::cli::kExitInterrupted) {
-      std::fprintf(stderr, "grazelab-cli: interrupted: nothing written\n");
-    } else if (code != 0) {
-      std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
-    }
-    return code;
+    return ended(grazelab::cli::runMerge(parser, positional.mid(1), watcher.token(), error), error);
   }
   if (positional.size() != 1) {
     return fail("expected one command: info, simulate, report, stability, map, merge or family (see --help)");
@@ -220,25 +225,11 @@ int main(int argc, char* argv[]) {
   const QString command = positional.first();
   if (command == "map") {
     QString error;
-    const int code = grazelab::cli::runMap(parser, watcher.token(), error);
-    if (code == grazelab::cli::kExitInvalidInput) return fail(error);
-    if (code == grazelab::cli::kExitInterrupted) {
-      std::fprintf(stderr, "grazelab-cli: interrupted: nothing written\n");
-    } else if (code != 0) {
-      std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
-    }
-    return code;
+    return ended(grazelab::cli::runMap(parser, watcher.token(), error), error);
   }
   if (command == "family") {
     QString error;
-    const int code = grazelab::cli::runFamily(parser, watcher.token(), error);
-    if (code == grazelab::cli::kExitInvalidInput) return fail(error);
-    if (code == grazelab::cli::kExitInterrupted) {
-      std::fprintf(stderr, "grazelab-cli: interrupted: nothing written\n");
-    } else if (code != 0) {
-      std::fprintf(stderr, "grazelab-cli: %s\n", qPrintable(error));
-    }
-    return code;
+    return ended(grazelab::cli::runFamily(parser, watcher.token(), error), error);
   }
   const QStringList mapOnly = grazelab::cli::mapOnlyOptionsSet(parser);
   if (!mapOnly.isEmpty()) return fail(mapOnly.join(", ") + " only apply to 'map' (--count to 'family')");

@@ -6,27 +6,18 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
 
 #include "npy.h"
+#include "output_files.h"
 
 namespace grazelab::cli::map {
 namespace {
 
 using core::PointSummary;
 using core::Quantity;
-
-bool saveAtomically(const QString& path, const QByteArray& bytes, QString& error) {
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-    error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    return false;
-  }
-  return true;
-}
 
 QJsonArray stateArray(const core::State& s) { return {s.u1, s.u2, s.v1, s.v2}; }
 

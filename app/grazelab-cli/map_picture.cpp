@@ -4,13 +4,10 @@
 #include "map_picture.h"
 
 #if GRAZELAB_CLI_PICTURES
-#include <QBuffer>
 #include <QJsonDocument>
 #include <QPainter>
-#include <QSaveFile>
-#include <QSvgGenerator>
 
-#include "ui/export.h"
+#include "output_files.h"
 #include "ui/plots/heat_map.h"
 #endif
 
@@ -58,23 +55,6 @@ ui::HeatMapData heatMapOf(const StoredMap& map) {
   return data;
 }
 
-void paint(QPaintDevice& device, const ui::HeatMapData& data) {
-  QPainter painter(&device);
-  QFont font("DejaVu Sans");
-  font.setPixelSize(15);
-  painter.setFont(font);
-  paintHeatMap(painter, QRectF(0, 0, kWidth, kHeight), data);
-}
-
-bool save(const QString& path, const QByteArray& bytes, QString& error) {
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-    error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 bool picturesAvailable() { return true; }
@@ -82,25 +62,9 @@ bool picturesAvailable() { return true; }
 bool writeMapPicture(const QString& prefix, const StoredMap& map, QString& error) {
   const ui::HeatMapData data = heatMapOf(map);
   const QByteArray description = QJsonDocument(map.description.spec).toJson(QJsonDocument::Compact);
-  QImage image(kWidth, kHeight, QImage::Format_RGB32);
-  paint(image, data);
-  image.setText("GrazeLabMap", QString::fromUtf8(description));
-  QByteArray png;
-  QBuffer pngBuffer(&png);
-  pngBuffer.open(QIODevice::WriteOnly);
-  image.save(&pngBuffer, "PNG");
-  if (!save(prefix + ".png", png, error)) return false;
-
-  QByteArray svg;
-  QBuffer svgBuffer(&svg);
-  QSvgGenerator generator;
-  generator.setOutputDevice(&svgBuffer);
-  generator.setSize(QSize(kWidth, kHeight));
-  generator.setViewBox(QRect(0, 0, kWidth, kHeight));
-  generator.setTitle(data.title);
-  generator.setDescription(QString::fromUtf8(description).toHtmlEscaped());  // written unescaped by Qt 6.4
-  paint(generator, data);
-  return save(prefix + ".svg", svg, error);
+  return savePngAndSvg(
+      prefix, QSize(kWidth, kHeight), data.title, "GrazeLabMap", description,
+      [&](QPainter& painter) { paintHeatMap(painter, QRectF(0, 0, kWidth, kHeight), data); }, error);
 }
 
 #else
