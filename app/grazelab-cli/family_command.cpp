@@ -70,16 +70,9 @@ int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& e
     error = "family: the 1IPP family of Theorem 2.1 needs the 1:2 resonant chain (give no --k2)";
     return kExitInvalidInput;
   }
-  if (!parser.isSet("out")) {
-    error = "--out PREFIX is required (the files are PREFIX.csv, PREFIX.npy, PREFIX.json, ...)";
-    return kExitInvalidInput;
-  }
-  const QString prefix = parser.value("out");
-  if (prefix.isEmpty() || prefix.endsWith('/') || QFileInfo(prefix).isDir() ||
-      !QDir().mkpath(QFileInfo(prefix).absolutePath())) {
-    error = QStringLiteral("--out: '%1' is not a usable prefix (give e.g. out/family)").arg(prefix);
-    return kExitInvalidInput;
-  }
+  const auto output = parseOutputPrefix(parser, "PREFIX.csv, PREFIX.npy, PREFIX.json, ...", "family", error);
+  if (!output) return kExitInvalidInput;
+  const QString& prefix = *output;
 
   const core::Chain<double>& chain = model.value->chain;
   const std::vector<core::FamilyPoint> family = core::onePeriodicFamily(chain, count, stop);

@@ -13,6 +13,7 @@
 #include "cli_input.h"
 #include "map_files.h"
 #include "map_picture.h"
+#include "output_files.h"
 #include "parallel/tbb_parallel_for.h"
 #include "report_command.h"
 
@@ -71,25 +72,6 @@ std::optional<Shard> parseShard(const QString& text, QString& error) {
     return std::nullopt;
   }
   return shard;
-}
-
-// --out PREFIX: its folder is made if missing
-std::optional<QString> parsePrefix(const QCommandLineParser& parser, QString& error) {
-  if (!parser.isSet("out")) {
-    error = "--out PREFIX is required (the files are PREFIX.json, PREFIX-QUANTITY.npy, ...)";
-    return std::nullopt;
-  }
-  const QString prefix = parser.value("out");
-  const QFileInfo info(prefix);
-  if (prefix.isEmpty() || prefix.endsWith('/') || info.isDir()) {
-    error = QStringLiteral("--out: '%1' is a folder; give a prefix such as %1/map").arg(prefix);
-    return std::nullopt;
-  }
-  if (!QDir().mkpath(info.absolutePath())) {
-    error = QStringLiteral("--out: cannot make the folder %1").arg(info.absolutePath());
-    return std::nullopt;
-  }
-  return prefix;
 }
 
 QStringList foreignOptions(const QCommandLineParser& parser, const QStringList& names) {
@@ -241,7 +223,7 @@ int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& erro
     error = QStringLiteral("--picture: '%1' is not a quantity; use one of %2").arg(picture, names.join(", "));
     return kExitInvalidInput;
   }
-  const auto prefix = parsePrefix(parser, error);
+  const auto prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
   if (!prefix) return kExitInvalidInput;
 
   const core::RowRange rows = core::stripe(spec->y.count, shard.k, shard.n);
@@ -295,7 +277,7 @@ int runMerge(const QCommandLineParser& parser, const QStringList& parts, std::st
     error = "merge: give the parts' prefixes after --out PREFIX";
     return kExitInvalidInput;
   }
-  const auto prefix = parsePrefix(parser, error);
+  const auto prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
   if (!prefix) return kExitInvalidInput;
   std::vector<map::StoredMap> stored;
   for (const QString& part : parts) {

@@ -2,6 +2,9 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "output_files.h"
 
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
 #include <QSaveFile>
 
 #if GRAZELAB_CLI_PICTURES
@@ -13,6 +16,25 @@
 #endif
 
 namespace grazelab::cli {
+
+std::optional<QString> parseOutputPrefix(const QCommandLineParser& parser, const char* files,
+                                         const char* example, QString& error) {
+  if (!parser.isSet("out")) {
+    error = QStringLiteral("--out PREFIX is required (the files are %1)").arg(files);
+    return std::nullopt;
+  }
+  const QString prefix = parser.value("out");
+  const QFileInfo info(prefix);
+  if (prefix.isEmpty() || prefix.endsWith('/') || info.isDir()) {
+    error = QStringLiteral("--out: '%1' is a folder; give a prefix such as %1/%2").arg(prefix, example);
+    return std::nullopt;
+  }
+  if (!QDir().mkpath(info.absolutePath())) {
+    error = QStringLiteral("--out: cannot make the folder %1").arg(info.absolutePath());
+    return std::nullopt;
+  }
+  return prefix;
+}
 
 bool saveAtomically(const QString& path, const QByteArray& bytes, QString& error) {
   QSaveFile file(path);

@@ -7,10 +7,17 @@
 #include <QString>
 
 #include <functional>
+#include <optional>
 
+class QCommandLineParser;
 class QPainter;
 
 namespace grazelab::cli {
+
+/// --out PREFIX of a command that writes PREFIX.* files (`files` names them in the message for a
+/// missing --out; `example` ends the suggested prefix): not a folder; its folder made if missing.
+std::optional<QString> parseOutputPrefix(const QCommandLineParser& parser, const char* files,
+                                         const char* example, QString& error);
 
 /// Writes a file whole or not at all (QSaveFile); false with "cannot write PATH: reason".
 bool saveAtomically(const QString& path, const QByteArray& bytes, QString& error);
