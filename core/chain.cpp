@@ -66,6 +66,18 @@ ChainOrProblem<S> makeChain(const BasicModel<S>& model) {
             "the ratios m2/m1 = " + formatScalar(beta) + " and k2/k1 = " + formatScalar(kappa) +
                 " are beyond the range of this precision (try --precision long or quad)"};
   }
+  // the fast phase over one slow period is ratio * 2 pi, known to ratio * 2 pi * eps: beyond
+  // 1e-6 rad the fast mode's contribution (and with it every contact time) is rounding, and
+  // the detuned search would march ~ratio steps per period: refused, never answered with noise
+  const S phaseError = chain.ratio * twoPi<S>() * epsilon<S>();
+  if (phaseError > S(1e-6)) {
+    return {std::nullopt,
+            "w1/w2 = " + formatScalar(chain.ratio) +
+                ": the fast mode turns so often per slow period that its phase is rounding in " +
+                std::string(toString(precisionOf<S>())) + " (at most " +
+                formatScalar(S(S(1e-6) / (twoPi<S>() * epsilon<S>()))) +
+                "; --precision quad resolves more)"};
+  }
   return {chain, {}};
 }
 

@@ -49,7 +49,8 @@ struct MarchPoint {
 };
 
 template <typename S>
-Contact<S> nextContactDetuned(const Flight<S>& flight, const S& horizon, std::stop_token stop) {
+Contact<S> nextContactDetuned(const Flight<S>& flight, const S& horizon, std::stop_token stop,
+                              std::int64_t steps) {
   using std::abs;
   using std::max;
   using std::min;
@@ -79,7 +80,8 @@ Contact<S> nextContactDetuned(const Flight<S>& flight, const S& horizon, std::st
 
   auto timeOf = [](const MarchPoint<S>& p) { return twoPi<S>() * S(p.anchor) + p.offset; };
   MarchPoint<S> previous = point;
-  for (long long step = 0; step < 2'000'000'000LL && timeOf(point) <= horizon; ++step) {
+  for (std::int64_t step = 0; timeOf(point) <= horizon; ++step) {
+    if (step >= steps) return {ContactKind::Budget, {point.anchor, point.offset}, S(0), false};
     if ((step & 4095) == 4095 && stop.stop_requested()) return {ContactKind::Cancelled, {}, S(0), false};
     const FlightTime<S> here{point.anchor, point.offset};
     const auto [value, rate] = flight.gapAndRate(here);
@@ -150,13 +152,14 @@ Contact<S> nextContactDetuned(const Flight<S>& flight, const S& horizon, std::st
 }  // namespace
 
 template <typename S>
-Contact<S> nextContact(const Flight<S>& flight, const S& horizon, std::stop_token stop) {
+Contact<S> nextContact(const Flight<S>& flight, const S& horizon, std::stop_token stop,
+                       std::int64_t steps) {
   return flight.chain().resonant ? nextContactResonant(flight)
-                                 : nextContactDetuned(flight, horizon, std::move(stop));
+                                 : nextContactDetuned(flight, horizon, std::move(stop), steps);
 }
 
 #define GRAZELAB_INSTANTIATE(S) \
-  template Contact<S> nextContact<S>(const Flight<S>&, const S&, std::stop_token);
+  template Contact<S> nextContact<S>(const Flight<S>&, const S&, std::stop_token, std::int64_t);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

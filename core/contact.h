@@ -15,7 +15,12 @@ enum class ContactKind {
   Crossing,   ///< x2 - delta changes sign: an impact, arriving with y2 > 0
   Tangent,    ///< x2 reaches the stop with y2 = 0: a grazing touch (double root)
   Cancelled,  ///< the stop token ended a long (detuned) search
+  Budget,     ///< the detuned search took its budget of steps without deciding; `time` is
+              ///< how far it got
 };
+
+/// Default budget of a detuned flight's march (steps); about a minute of search at most.
+inline constexpr std::int64_t kDefaultSearchSteps = 200'000'000;
 
 /// The first contact of a free flight after its start.
 template <typename S>
@@ -42,10 +47,11 @@ struct Contact {
 /// Detuned chains: a march that cannot step over a contact. From a point with gap f < 0 and rate
 /// f', no contact can happen before the positive root h of f + f' h + A h^2 / 2 = 0, A bounding
 /// |x2''|. The march runs in (period, offset) coordinates, so near every near-return it uses the
-/// anchored Taylor form with relative precision; it stops at `horizon` (scaled time) or when
-/// `stop` is requested.
+/// anchored Taylor form with relative precision; it stops at `horizon` (scaled time), after
+/// `steps` steps (ContactKind::Budget: undecided, not "no contact") or when `stop` is requested.
 template <typename S>
-Contact<S> nextContact(const Flight<S>& flight, const S& horizon, std::stop_token stop = {});
+Contact<S> nextContact(const Flight<S>& flight, const S& horizon, std::stop_token stop = {},
+                       std::int64_t steps = kDefaultSearchSteps);
 
 /// The gap of a resonant flight as a quartic: with x = tan(theta / 2), theta = tau,
 ///   (1 + x^2)^2 (x2 - delta) = G(x) = sum_i c_i x^i,

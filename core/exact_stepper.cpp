@@ -35,7 +35,8 @@ ExactStepper<S>::ExactStepper(const Chain<S>& chain, const S& scaledGap)
 
 template <typename S>
 Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
-                                 const S& searchHorizon, std::stop_token stop) {
+                                 const S& searchHorizon, std::stop_token stop,
+                                 std::int64_t searchSteps) {
   using std::min;
   Step<S> step;
   step.segmentStart = state.tau;
@@ -56,7 +57,7 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
     return step;
   }
 
-  if (pressedOnStop(x, m_gap)) {
+  if (pressedOnStop(x, m_gap, state.u1Residual)) {
     if (!state.stuck) {
       // the contact that starts the phase; stopping here leaves the run on the stop, stuck
       state.stuck = true;
@@ -74,19 +75,20 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
       return step;
     }
     step.type = EventType::Release;
-    step.tau = state.tau + release;
+    state.advanceTime(0, release);
+    step.tau = state.tau;
     step.before = m_stuck->at(release);
     step.after = m_stuck->releaseState();
-    state.tau = step.tau;
     state.x = step.after;
+    state.u1Residual = 0;  // released where u1 = gap exactly
     state.stuck = false;
     return step;
   }
 
-  m_flight.emplace(m_chain, m_gap, x);
+  m_flight.emplace(m_chain, m_gap, x, state.u1Residual);
   const Flight<S>& flight = *m_flight;
   const S remaining = tauEnd - state.tau;
-  const Contact<S> contact = nextContact(flight, min(remaining, searchHorizon), stop);
+  const Contact<S> contact = nextContact(flight, min(remaining, searchHorizon), stop, searchSteps);
   auto endAt = [&](const S& tau, typename Step<S>::Kind kind) {
     step.kind = kind;
     step.tau = tau;
@@ -99,6 +101,9 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
     step.tau = state.tau;
     step.before = step.after = x;
     return step;
+  }
+  if (contact.kind == ContactKind::Budget) {
+    return endAt(state.tau + contact.time.value(), Step<S>::Kind::SearchBudget);
   }
   if (contact.kind == ContactKind::None) {
     if (isFinite(remaining) && (m_chain.resonant || remaining <= searchHorizon)) {
@@ -116,13 +121,16 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
   const S duration = contact.time.value();
   if (state.tau + duration > tauEnd) return endAt(tauEnd, Step<S>::Kind::End);
 
-  BasicState<S> arrival = flight.at(contact.time);
+  S u1Residual = 0;
+  BasicState<S> arrival = flight.at(contact.time, &u1Residual);
   arrival.u2 = m_gap;
+  // restoring the energy moves the stored u1 on purpose; the residual is what is below it
   step.flightEnergyError = restoreEnergy(m_chain, arrival, scaledEnergy(m_chain, x));
   const ContactOutcome<S> outcome =
-      applyImpactLaw(arrival, m_gap, contact.kind == ContactKind::Tangent);
+      applyImpactLaw(arrival, m_gap, contact.kind == ContactKind::Tangent, u1Residual);
   step.type = outcome.type;
-  step.tau = state.tau + duration;
+  state.advanceTime(contact.time.periods, contact.time.offset);
+  step.tau = state.tau;
   step.before = outcome.before;
   step.after = outcome.after;
   step.residual = contact.residual;
@@ -130,8 +138,8 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
   step.endsFlight = true;
   step.flightFromStop = flight.startsOnStop();
   step.flightDuration = contact.time;
-  state.tau = step.tau;
   state.x = outcome.after;
+  state.u1Residual = u1Residual;
   state.stuck = outcome.type == EventType::Stick;
   return step;
 }

@@ -20,6 +20,25 @@ struct IntegrationState {
   S tau = 0;              ///< scaled time since the start of the run (w2 t)
   BasicState<S> x;        ///< scaled state
   bool stuck = false;     ///< a Stick event was recorded; the stuck motion runs next
+  /// exact u1 minus x.u1 (scaled) after a contact: at a return a hair below the stop, u1 - gap
+  /// is far below an ulp of u1, and it decides how the next flight leaves (or whether it sticks)
+  S u1Residual = 0;
+  // tau kept without drift: whole slow periods counted apart from the sum of the offsets, which
+  // is compensated (Kahan), so that tau = 2 pi periods + offset rounds once however long the run
+  // (a plain sum of 10^6 flights of 2 pi was off by 1.5e-6 T2)
+  long long periods = 0;
+  S offset = 0;
+  S offsetCompensation = 0;
+
+  /// Moves tau on by `elapsed` (whole periods and an offset).
+  void advanceTime(long long elapsedPeriods, const S& elapsedOffset) {
+    periods += elapsedPeriods;
+    const S term = elapsedOffset - offsetCompensation;
+    const S sum = offset + term;
+    offsetCompensation = (sum - offset) - term;
+    offset = sum;
+    tau = periods == 0 ? offset : S(twoPi<S>() * S(periods) + offset);
+  }
 };
 
 /// What one step of the exact method did.
@@ -30,6 +49,7 @@ struct Step {
     End,               ///< the end time came first; the state is at it
     NoFurtherContact,  ///< resonant: the free motion never reaches the stop
     SearchLimit,       ///< detuned: no contact within the search horizon
+    SearchBudget,      ///< detuned: the search ran out of steps before the horizon
     Cancelled,         ///< the stop token ended a long search
   };
   Kind kind = Kind::Event;
@@ -57,9 +77,9 @@ class ExactStepper {
   ExactStepper(const Chain<S>& chain, const S& scaledGap);
 
   /// Advances `state` to the next event, or to `tauEnd` if it comes first. `searchHorizon`
-  /// bounds a detuned flight's search (scaled time).
+  /// bounds a detuned flight's search (scaled time), `searchSteps` the steps of its march.
   Step<S> advance(IntegrationState<S>& state, const S& tauEnd, const S& searchHorizon,
-                  std::stop_token stop = {});
+                  std::stop_token stop = {}, std::int64_t searchSteps = kDefaultSearchSteps);
 
   /// The state at absolute scaled time `tau` inside the motion of the last step.
   BasicState<S> segmentAt(const S& tau) const;

@@ -60,8 +60,14 @@ FlightTime<S> FlightTime<S>::nearest(const S& tau) {
 }
 
 template <typename S>
-Flight<S>::Flight(const Chain<S>& chain, const S& gap, const BasicState<S>& start)
-    : m_chain(&chain), m_gap(gap), m_start(start), m_startsOnStop(start.u2 == gap) {
+Flight<S>::Flight(const Chain<S>& chain, const S& gap, const BasicState<S>& start,
+                  const S& u1Residual)
+    : m_chain(&chain),
+      m_gap(gap),
+      m_start(start),
+      m_startU1Residual(u1Residual),
+      m_startStretch((start.u1 - start.u2) + u1Residual),
+      m_startsOnStop(start.u2 == gap) {
   using std::abs;
   using std::hypot;
   using std::sqrt;
@@ -129,15 +135,25 @@ namespace {
 // d^n x / dtau^n from d^(n-2): x1'' = -(p x1 + q (x1 - x2)), x2'' = w (x1 - x2), the spring
 // stretch kept as one difference. One definition, so that every use rounds alike.
 template <typename S>
+std::array<S, 2> taylorRowOfStretch(const Chain<S>& chain, const S& first, const S& stretch) {
+  return {-(chain.p * first + chain.q * stretch), chain.w * stretch};
+}
+template <typename S>
 std::array<S, 2> nextTaylorRow(const Chain<S>& chain, const std::array<S, 2>& twoBefore) {
-  const S stretch = twoBefore[0] - twoBefore[1];
-  return {-(chain.p * twoBefore[0] + chain.q * stretch), chain.w * stretch};
+  return taylorRowOfStretch(chain, twoBefore[0], S(twoBefore[0] - twoBefore[1]));
+}
+
+// a + b = sum + error exactly (Knuth's TwoSum)
+template <typename S>
+S additionError(const S& a, const S& b, const S& sum) {
+  const S bPart = sum - a;
+  return (a - (sum - bPart)) + (b - bPart);
 }
 }  // namespace
 
 template <typename S>
 std::array<S, 5> Flight<S>::lowGapDerivatives() const {
-  const std::array<S, 2> d2 = nextTaylorRow(*m_chain, {m_start.u1, m_start.u2});
+  const std::array<S, 2> d2 = taylorRowOfStretch(*m_chain, m_start.u1, m_startStretch);
   const std::array<S, 2> d3 = nextTaylorRow(*m_chain, {m_start.v1, m_start.v2});
   const std::array<S, 2> d4 = nextTaylorRow(*m_chain, d2);
   return {m_start.u2 - m_gap, m_start.v2, d2[1], d3[1], d4[1]};
@@ -153,7 +169,12 @@ void Flight<S>::fillTaylor(const Anchor& anchor) const {
   d[0] = {anchor.state.u1, anchor.state.u2};
   d[1] = {anchor.state.v1, anchor.state.v2};
   // x1'' = -(p x1 + q (x1 - x2)), x2'' = w (x1 - x2): the spring stretch stays one difference
-  for (int n = 2; n < m_taylorOrder + 2; ++n) d[n] = nextTaylorRow(chain, d[n - 2]);
+  // (at the start, the exact one)
+  for (int n = 2; n < m_taylorOrder + 2; ++n) {
+    d[n] = n == 2 && &anchor == &m_anchors[0]
+               ? taylorRowOfStretch(chain, anchor.state.u1, m_startStretch)
+               : nextTaylorRow(chain, d[n - 2]);
+  }
 }
 
 template <typename S>
@@ -189,7 +210,7 @@ inline void Flight<S>::modalPhases(const S& s, std::array<S, 2>& sine,
 }
 
 template <typename S>
-BasicState<S> Flight<S>::modalAt(const Anchor& anchor, const S& s) const {
+BasicState<S> Flight<S>::modalAt(const Anchor& anchor, const S& s, S* u1Residual) const {
   std::array<S, 2> sine, cosineMinusOne;
   modalPhases(s, sine, cosineMinusOne);
   const S omega[2] = {m_chain->ratio, S(1)};
@@ -199,35 +220,52 @@ BasicState<S> Flight<S>::modalAt(const Anchor& anchor, const S& s) const {
     dRate[j] = omega[j] * (-anchor.c[j] * sine[j] + anchor.a[j] * cosineMinusOne[j]);
   }
   const Chain<S>& chain = *m_chain;
-  return {anchor.state.u1 + (chain.rhoFast * dc[0] + chain.rhoSlow * dc[1]),
+  const S increment1 = chain.rhoFast * dc[0] + chain.rhoSlow * dc[1];
+  const S u1 = anchor.state.u1 + increment1;
+  if (u1Residual) {
+    *u1Residual = additionError(anchor.state.u1, increment1, u1) +
+                  (&anchor == &m_anchors[0] ? m_startU1Residual : S(0));
+  }
+  return {u1,
           anchor.state.u2 + (dc[0] + dc[1]),
           anchor.state.v1 + (chain.rhoFast * dRate[0] + chain.rhoSlow * dRate[1]),
           anchor.state.v2 + (dRate[0] + dRate[1])};
 }
 
 template <typename S>
-BasicState<S> Flight<S>::taylorAt(const Anchor& anchor, const S& s) const {
+BasicState<S> Flight<S>::taylorAt(const Anchor& anchor, const S& s, S* u1Residual) const {
   fillTaylor(anchor);
   const auto& d = anchor.derivatives;
   S position[2] = {0, 0};
   S velocity[2] = {0, 0};
-  for (int n = taylorTerms(s); n >= 0; --n) {
+  for (int n = taylorTerms(s); n >= 1; --n) {
     const S& f = inverseFactorial<S>(n);
     for (int i = 0; i < 2; ++i) {
       position[i] = position[i] * s + d[n][i] * f;
       velocity[i] = velocity[i] * s + d[n + 1][i] * f;
     }
   }
+  // the last Horner step (n = 0) by hand: x1's increment and its rounding apart
+  const S increment1 = position[0] * s;
+  position[0] = d[0][0] + increment1;
+  position[1] = position[1] * s + d[0][1];
+  velocity[0] = velocity[0] * s + d[1][0];
+  velocity[1] = velocity[1] * s + d[1][1];
+  if (u1Residual) {
+    *u1Residual = additionError(d[0][0], increment1, position[0]) +
+                  (&anchor == &m_anchors[0] ? m_startU1Residual : S(0));
+  }
   return {position[0], position[1], velocity[0], velocity[1]};
 }
 
 template <typename S>
-BasicState<S> Flight<S>::at(const FlightTime<S>& time) const {
+BasicState<S> Flight<S>::at(const FlightTime<S>& time, S* u1Residual) const {
   using std::abs;
   FlightTime<S> t = time;
   if (abs(t.offset) > pi<S>()) t = FlightTime<S>::nearest(time.value());
   const Anchor& a = anchor(t.periods);
-  return abs(t.offset) <= m_taylorRadius ? taylorAt(a, t.offset) : modalAt(a, t.offset);
+  return abs(t.offset) <= m_taylorRadius ? taylorAt(a, t.offset, u1Residual)
+                                         : modalAt(a, t.offset, u1Residual);
 }
 
 template <typename S>

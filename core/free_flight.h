@@ -42,7 +42,10 @@ template <typename S>
 class Flight {
  public:
   /// Precondition: `start` is a scaled state of `chain`, `gap` the scaled stop delta.
-  Flight(const Chain<S>& chain, const S& gap, const BasicState<S>& start);
+  /// `u1Residual` is exact x1 minus start.u1 (what the start's x1 lost to rounding): the spring
+  /// stretch x1 - x2, which sets how a flight from the stop leaves it, uses it.
+  Flight(const Chain<S>& chain, const S& gap, const BasicState<S>& start,
+         const S& u1Residual = S(0));
 
   const Chain<S>& chain() const { return *m_chain; }
   const BasicState<S>& start() const { return m_start; }
@@ -50,8 +53,9 @@ class Flight {
   /// True when the flight starts on the contact plane H (x2 == delta exactly).
   bool startsOnStop() const { return m_startsOnStop; }
 
-  /// State at a flight time.
-  BasicState<S> at(const FlightTime<S>& time) const;
+  /// State at a flight time; `u1Residual`, when given, receives exact x1 minus the returned u1
+  /// (the part of x1 below its rounding, from the start's residual and the last addition).
+  BasicState<S> at(const FlightTime<S>& time, S* u1Residual = nullptr) const;
   /// (x2 - delta, y2), evaluated without cancellation.
   std::pair<S, S> gapAndRate(const FlightTime<S>& time) const;
   /// x2'' at a flight time.
@@ -107,12 +111,14 @@ class Flight {
   int taylorTerms(const S& s) const;
   // per-mode (sin(w_j s), cos(w_j s) - 1)
   void modalPhases(const S& s, std::array<S, 2>& sine, std::array<S, 2>& cosineMinusOne) const;
-  BasicState<S> modalAt(const Anchor& anchor, const S& s) const;
-  BasicState<S> taylorAt(const Anchor& anchor, const S& s) const;
+  BasicState<S> modalAt(const Anchor& anchor, const S& s, S* u1Residual) const;
+  BasicState<S> taylorAt(const Anchor& anchor, const S& s, S* u1Residual) const;
 
   const Chain<S>* m_chain;
   S m_gap;
   BasicState<S> m_start;
+  S m_startU1Residual = 0;
+  S m_startStretch = 0;  ///< x1 - x2 at the start, with the residual
   bool m_startsOnStop = false;
   int m_contactOrder = 0;
   int m_taylorOrder = 11;

@@ -86,7 +86,8 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
   for (int j = 0; j < 2; ++j) {
     const S half = omega[j] * tau / S(2);
     const S sine = sin(half);
-    if (abs(sine) <= S(1e-12)) {
+    // a multiple of T_j only within the rounding of the phase itself (T2 (1 - 8e-14) is not)
+    if (abs(sine) <= S(4) * epsilon<S>() * abs(half)) {
       orbit.reason = "T = " + formatScalar(T) + " is a multiple of T" + std::to_string(j + 1) +
                      " = " + formatScalar(S(T2 / omega[j])) + ": no 1IPP orbit";
       return orbit;
@@ -108,6 +109,10 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
   const Flight<S> flight(chain, scale.gap, scale.toScaled(orbit.postImpact));
   const Contact<S> contact = nextContact(flight, S(1.5) * tau);
   const S arrival = contact.time.value();
+  if (contact.kind == ContactKind::Budget) {
+    orbit.reason = "the contact search from the data ran out of its budget: not decided";
+    return orbit;
+  }
   if (contact.kind == ContactKind::None || contact.kind == ContactKind::Cancelled) {
     orbit.reason = "the free flight from the data never comes back to the stop";
     return orbit;

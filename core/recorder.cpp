@@ -17,6 +17,10 @@ std::string_view toString(StopReason reason) {
       return "no-further-contact";
     case StopReason::SearchLimit:
       return "search-limit";
+    case StopReason::SearchBudget:
+      return "search-budget";
+    case StopReason::Undecided:
+      return "undecided";
     case StopReason::Cancelled:
       return "cancelled";
     case StopReason::InvalidInput:
@@ -86,7 +90,10 @@ void Recorder<S>::record(const Step<S>& step) {
     if (step.type == EventType::Impact) ++cost.impacts;
     if (step.type == EventType::Grazing) ++cost.grazings;
     if (step.type == EventType::Stick) ++cost.sticks;
-    if (step.undecided) ++cost.undecidedTouches;
+    if (step.undecided && cost.undecidedTouches++ == 0) {
+      cost.firstUndecidedContact = cost.contacts;
+      cost.firstUndecidedTime = toDouble(m_scale.toPhysicalTime(step.tau));
+    }
     const S e0 = m_initialScaledEnergy;
     const S drift = abs(scaledEnergy(m_chain, step.after) - e0) / (e0 > 0 ? e0 : S(1));
     cost.maxRelEnergyDrift = std::max(cost.maxRelEnergyDrift, toDouble(drift));

@@ -66,6 +66,9 @@ struct Cost {
   std::int64_t grazings = 0;
   std::int64_t sticks = 0;
   std::int64_t undecidedTouches = 0;  ///< touch-or-crossing decisions within rounding
+  /// The first of them: its contact number (1-based; 0 when there is none) and time [time]
+  std::int64_t firstUndecidedContact = 0;
+  double firstUndecidedTime = 0;
   double wallSeconds = 0;          ///< time spent in the solver
   double maxRelEnergyDrift = 0;    ///< max |E - E0| / E0 over contact states
   /// max relative energy error of one computed free flight, before its end state is restored
@@ -80,6 +83,9 @@ enum class StopReason {
   TimeLimit,         ///< tEnd reached
   NoFurtherContact,  ///< a resonant free flight that never reaches the stop (linear forever)
   SearchLimit,       ///< detuned: no contact within the search horizon
+  SearchBudget,      ///< detuned: the search ran out of its step budget before deciding
+  Undecided,         ///< a contact whose class (touch or crossing) the precision cannot decide,
+                     ///< and the request asked to stop there (to go on in a higher precision)
   Cancelled,         ///< the stop token was triggered
   InvalidInput,      ///< the model or the initial state is unusable (see message)
 };

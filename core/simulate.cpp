@@ -19,6 +19,9 @@ std::vector<Problem> validateRequest(const BasicRequest<S>& request) {
     add("contacts", "must not be negative", std::to_string(request.maxContacts));
   }
   if (!(request.tEnd >= 0)) add("t-end", "must be >= 0", formatScalar(request.tEnd));
+  if (request.flightSearchSteps < 1) {
+    add("flightSearchSteps", "must be at least 1", std::to_string(request.flightSearchSteps));
+  }
   if (!std::isfinite(request.flightSearchPeriods) || request.flightSearchPeriods <= 0) {
     add("flightSearchPeriods", "must be positive and finite",
         std::to_string(request.flightSearchPeriods));
@@ -111,7 +114,19 @@ bool BasicSimulator<S>::advance(std::int64_t contactBudget, std::stop_token stop
     } else if (m_state.tau >= m_tauEnd) {
       finish(StopReason::TimeLimit, m_request.tEnd, m_state.x);
     } else {
-      const Step<S> step = m_stepper->advance(m_state, m_tauEnd, m_searchHorizon, stop);
+      const IntegrationState<S> before = m_state;
+      const Step<S> step = m_stepper->advance(m_state, m_tauEnd, m_searchHorizon, stop,
+                                              m_request.flightSearchSteps);
+      if (step.kind == Step<S>::Kind::Event && step.undecided && m_request.stopAtUndecided) {
+        m_state = before;
+        m_result.message = "contact " + std::to_string(cost.contacts + 1) + " (t = " +
+                           formatScalar(m_scale.toPhysicalTime(step.tau)) +
+                           ") touches the stop within rounding: " +
+                           std::string(toString(precisionOf<S>())) +
+                           " cannot tell a graze from an impact there";
+        finish(StopReason::Undecided, lastEventTime(), m_state.x);
+        break;
+      }
       m_recorder->sampleUntil(*m_stepper, step.segmentStart, step.tau);
       switch (step.kind) {
         case Step<S>::Kind::Event:
@@ -137,6 +152,13 @@ bool BasicSimulator<S>::advance(std::int64_t contactBudget, std::stop_token stop
           m_result.message = "no contact within " + std::to_string(m_request.flightSearchPeriods) +
                              " T2 of free flight";
           finish(StopReason::SearchLimit, m_scale.toPhysicalTime(step.tau), step.before);
+          break;
+        case Step<S>::Kind::SearchBudget:
+          m_result.message = "the contact search of a flight ran out of its budget of " +
+                             std::to_string(m_request.flightSearchSteps) +
+                             " steps at t = " + formatScalar(m_scale.toPhysicalTime(step.tau)) +
+                             " without deciding whether the stop is reached";
+          finish(StopReason::SearchBudget, m_scale.toPhysicalTime(step.tau), step.before);
           break;
         case Step<S>::Kind::Cancelled:
           finish(StopReason::Cancelled, lastEventTime(), m_state.x);

@@ -23,6 +23,14 @@ struct BasicRequest {
   /// Detuned chains without an end time: the longest free flight searched for a contact, in
   /// units of T2. A resonant flight needs no limit (one period decides).
   double flightSearchPeriods = 1000;
+  /// Detuned chains: the most march steps one flight's contact search may take. Running out
+  /// ends the run with StopReason::SearchBudget (never "no contact": the search did not decide).
+  std::int64_t flightSearchSteps = kDefaultSearchSteps;
+  /// Stop, with StopReason::Undecided and the state before that flight, at the first contact
+  /// whose class (touch or crossing) the precision cannot decide: --precision auto then runs
+  /// again in a higher one. Off: such a contact is taken as a touch and counted
+  /// (Cost::undecidedTouches), and the error estimate says so.
+  bool stopAtUndecided = false;
   Needs needs;
   /// Called with every event as it happens, whatever `needs` keeps (streaming output).
   std::function<void(const BasicEvent<S>&)> onEvent;

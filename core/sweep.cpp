@@ -77,74 +77,84 @@ std::optional<Model> pointModel(const SweepSpec& spec, const PointValues& values
 }
 
 // the start at this point: the base start, its coordinates from the axes, then the push
-std::optional<State> pointStart(const SweepSpec& spec, const Chain<double>& chain,
-                                const PointValues& values) {
-  State state{0, chain.model.gap, 0, 0};
+template <typename S>
+std::optional<BasicState<S>> pointStart(const SweepSpec& spec, const Chain<S>& chain,
+                                        const PointValues& values) {
+  BasicState<S> state{0, chain.model.gap, 0, 0};
   using Kind = StartSpec<double>::Kind;
   const auto lambda = values.of(SweepVariable::Lambda);
   if (lambda) {
-    state = gloData(chain, *lambda);
+    state = gloData(chain, S(*lambda));
   } else if (spec.start) {
     switch (spec.start->kind) {
       case Kind::Glo:
-        state = gloData(chain, spec.start->lambda);
+        state = gloData(chain, S(spec.start->lambda));
         break;
       case Kind::Glom:
         state = glomData(chain, spec.start->mode);
         break;
       case Kind::OnePeriodic: {
-        const OnePeriodicOrbit<double> orbit = onePeriodicOrbit(chain, spec.start->period);
+        const OnePeriodicOrbit<S> orbit = onePeriodicOrbit(chain, S(spec.start->period));
         if (!orbit.admissible) return std::nullopt;
         state = orbit.postImpact;
         break;
       }
       case Kind::Explicit:
-        state = spec.start->state;
+        state = convertState<S>(spec.start->state);
         break;
     }
   }
-  if (const auto u1 = values.of(SweepVariable::U1)) state.u1 = *u1;
-  if (const auto v1 = values.of(SweepVariable::V1)) state.v1 = *v1;
-  if (const auto v2 = values.of(SweepVariable::V2)) state.v2 = *v2;
+  if (const auto u1 = values.of(SweepVariable::U1)) state.u1 = S(*u1);
+  if (const auto v1 = values.of(SweepVariable::V1)) state.v1 = S(*v1);
+  if (const auto v2 = values.of(SweepVariable::V2)) state.v2 = S(*v2);
   const std::optional<State>& given = spec.perturbation;
   if (const auto epsilon = values.of(SweepVariable::Epsilon)) {
-    state = state + *epsilon * given.value_or(State{0, 0, 0, -1});
+    state = state + S(*epsilon) * convertState<S>(given.value_or(State{0, 0, 0, -1}));
   } else if (given) {
-    state = state + *given;
+    state = state + convertState<S>(*given);
   }
   if (!validateState(chain.model, state, "initial").empty()) return std::nullopt;
   return state;
 }
 
+template <typename S>
 struct PointRun {
-  Result result;
+  BasicResult<S> result;
   double firstImpact = kNaN;
   double horizon = kNaN;
 };
 
 // one run of `contacts` contacts keeping only its flights from the stop, with the time of its
-// first impact and, when asked, its predictability horizon (a shadow run in long double)
-PointRun runPoint(const Model& model, const State& start, std::int64_t contacts,
-                  bool estimateHorizon, std::stop_token stop) {
-  PointRun run;
-  Request request;
+// first impact and, when asked, its predictability horizon (a shadow run one precision up);
+// with `stopAtUndecided` it stops at a contact its precision cannot decide (StopReason::Undecided)
+template <typename S>
+PointRun<S> runPoint(const BasicModel<S>& model, const BasicState<S>& start,
+                     std::int64_t contacts, bool estimateHorizon, bool stopAtUndecided,
+                     std::stop_token stop) {
+  using H = ShadowScalar<S>;
+  PointRun<S> run;
+  BasicRequest<S> request;
   request.initial = start;
   request.maxContacts = contacts;
   request.needs.events = false;
   request.needs.freeFlights = true;
-  std::optional<TrustMonitor<double>> monitor;
+  request.stopAtUndecided = stopAtUndecided;
+  std::optional<TrustMonitor<S>> monitor;
   if (estimateHorizon) {
-    BasicRequest<long double> shadow;
-    shadow.initial = convertState<long double>(start);
+    BasicRequest<H> shadow;
+    shadow.initial = convertState<H>(start);
     shadow.maxContacts = contacts;
-    monitor.emplace(convertModel<long double>(model), shadow, TrustMode::Auto);
+    monitor.emplace(convertModel<H>(model), shadow, TrustMode::Auto, stop);
   }
-  request.onEvent = [&run, &monitor](const Event& event) {
-    if (event.type == EventType::Impact && std::isnan(run.firstImpact)) run.firstImpact = event.t;
+  request.onEvent = [&run, &monitor](const BasicEvent<S>& event) {
+    if (event.type == EventType::Impact && std::isnan(run.firstImpact)) {
+      run.firstImpact = toDouble(event.t);
+    }
     if (monitor) monitor->observe(event);
   };
   run.result = simulate(model, request, stop);
-  if (monitor && run.result.stop != StopReason::InvalidInput) {
+  if (monitor && run.result.stop != StopReason::InvalidInput &&
+      run.result.stop != StopReason::Undecided) {
     const Trust trust = monitor->finish(run.result);
     if (trust.verdict != Verdict::Unchecked) run.horizon = trust.horizon;
   }
@@ -165,7 +175,8 @@ PointSummary invalidPoint() {
 }
 
 // the run's flights from the stop reduced to first, min, max, mean (min/max/mean over T2)
-void summarizeFlights(const Result& result, double period, bool startsOnStop,
+template <typename S>
+void summarizeFlights(const BasicResult<S>& result, double period, bool startsOnStop,
                       PointSummary& summary) {
   const auto& flights = result.freeFlights;
   if (flights.empty()) {
@@ -192,6 +203,53 @@ void summarizeFlights(const Result& result, double period, bool startsOnStop,
   summary.fftMin = low / period;
   summary.fftMax = high / period;
   summary.fftMean = (first + deviation / double(flights.size())) / period;
+}
+
+// The summary of one point computed in precision S. Returns false (and leaves `summary`
+// alone) when the run stopped at a contact S cannot decide and `stopAtUndecided` asked for that.
+template <typename S>
+bool summarizePoint(const SweepSpec& spec, const Model& given, const PointValues& values,
+                    bool stopAtUndecided, std::stop_token stop, PointSummary& summary) {
+  const BasicModel<S> model = convertModel<S>(given);
+  const ChainOrProblem<S> formed = makeChain(model);
+  if (!formed.chain) {
+    summary = invalidPoint();
+    return true;
+  }
+  const std::optional<BasicState<S>> start = pointStart(spec, *formed.chain, values);
+  if (!start) {
+    summary = invalidPoint();
+    return true;
+  }
+  const double period = toDouble(S(twoPi<S>() / formed.chain->omegaSlow));
+
+  // beyond the contacts asked for, the run goes on until its first flight from the stop has
+  // ended (a start pressed on the stop sticks first): at most three contacts more, each try a
+  // whole run (so that its error estimate sees a finished run)
+  PointRun<S> run;
+  for (std::int64_t extra = 0; extra <= 3; ++extra) {
+    run = runPoint(model, *start, spec.contacts + extra, spec.estimateHorizon, stopAtUndecided,
+                   stop);
+    if (!run.result.freeFlights.empty() || run.result.stop != StopReason::ContactLimit) break;
+  }
+  if (run.result.stop == StopReason::Undecided) return false;
+  if (run.result.stop == StopReason::InvalidInput) {
+    summary = invalidPoint();
+    return true;
+  }
+  const BasicResult<S>& result = run.result;
+  summary = PointSummary{};
+  summary.valid = true;
+  summarizeFlights(result, period, start->u2 == model.gap, summary);
+  summary.impacts = result.cost.impacts;
+  summary.grazings = result.cost.grazings;
+  summary.sticks = result.cost.sticks;
+  summary.firstImpactTime = run.firstImpact;
+  if (std::isnan(run.firstImpact) && result.stop == StopReason::NoFurtherContact) {
+    summary.firstImpactTime = std::numeric_limits<double>::infinity();
+  }
+  summary.horizon = run.horizon;
+  return true;
 }
 
 }  // namespace
@@ -309,34 +367,12 @@ PointSummary sweepPoint(const SweepSpec& spec, std::int64_t column, std::int64_t
   const PointValues values{spec, spec.x.at(column), spec.y.at(row)};
   const std::optional<Model> model = pointModel(spec, values);
   if (!model) return invalidPoint();
-  const ChainOrProblem<double> formed = makeChain(*model);
-  if (!formed.chain) return invalidPoint();
-  const std::optional<State> start = pointStart(spec, *formed.chain, values);
-  if (!start) return invalidPoint();
-  const double period = twoPi<double>() / formed.chain->omegaSlow;
-
-  // beyond the contacts asked for, the run goes on until its first flight from the stop has
-  // ended (a start pressed on the stop sticks first): at most three contacts more, each try a
-  // whole run (so that its error estimate sees a finished run)
-  PointRun run;
-  for (std::int64_t extra = 0; extra <= 3; ++extra) {
-    run = runPoint(*model, *start, spec.contacts + extra, spec.estimateHorizon, stop);
-    if (!run.result.freeFlights.empty() || run.result.stop != StopReason::ContactLimit) break;
-  }
-  if (run.result.stop == StopReason::InvalidInput) return invalidPoint();
-  const Result& result = run.result;
-
+  // precision auto: double, and the whole point again one precision up (model and start formed
+  // there) when a contact is a touch its precision cannot tell from a crossing
   PointSummary summary;
-  summary.valid = true;
-  summarizeFlights(result, period, start->u2 == model->gap, summary);
-  summary.impacts = result.cost.impacts;
-  summary.grazings = result.cost.grazings;
-  summary.sticks = result.cost.sticks;
-  summary.firstImpactTime = run.firstImpact;
-  if (std::isnan(run.firstImpact) && result.stop == StopReason::NoFurtherContact) {
-    summary.firstImpactTime = std::numeric_limits<double>::infinity();
-  }
-  summary.horizon = run.horizon;
+  if (summarizePoint<double>(spec, *model, values, true, stop, summary)) return summary;
+  if (summarizePoint<long double>(spec, *model, values, true, stop, summary)) return summary;
+  summarizePoint<Quad>(spec, *model, values, false, stop, summary);
   return summary;
 }
 

@@ -67,6 +67,13 @@ struct ShadowOf<Quad> {
 template <typename S>
 using ShadowScalar = typename ShadowOf<S>::type;
 
+/// Which parameters of the model were read exactly (a decimal like 0.5 is exact in binary,
+/// 0.1 is not). A shadow of the same precision nudges the others by one rounding, so that
+/// their representation counts as error (near m2/m1 = 9/16 the design amplifies it ~1e7).
+struct ExactParameters {
+  bool m1 = false, m2 = false, k1 = false, k2 = false, gap = false;
+};
+
 /// Estimates the error of a run of precision S by running the same algorithm beside it on a
 /// shadow (ShadowOf), in lockstep event by event, so that it costs no memory however long the
 /// run. Feed it every event of the run (observe), then finish with the run's result.
@@ -78,8 +85,9 @@ class TrustMonitor {
 
   /// `model` and `request` describe the same run as the primary's, read in precision H from the
   /// same input (so that the input's own rounding counts as error). Needs and onEvent of the
-  /// request are replaced.
-  TrustMonitor(const BasicModel<H>& model, const BasicRequest<H>& request, TrustMode mode);
+  /// request are replaced. The shadow watches `stop` as the run does (an interrupt ends both).
+  TrustMonitor(const BasicModel<H>& model, const BasicRequest<H>& request, TrustMode mode,
+               std::stop_token stop = {}, ExactParameters exact = {});
   TrustMonitor(const TrustMonitor&) = delete;
   TrustMonitor& operator=(const TrustMonitor&) = delete;
 
@@ -94,6 +102,7 @@ class TrustMonitor {
     double error = 0;
   };
 
+  Trust estimate(const BasicResult<S>& primary);
   bool shadowing() const { return m_shadow != nullptr && m_active; }
   bool withinBudget();
   std::optional<BasicEvent<H>> nextShadowEvent();
@@ -105,6 +114,7 @@ class TrustMonitor {
   std::string shadowName() const;
 
   TrustMode m_mode;
+  std::stop_token m_stop;
   H m_lengthFactor = 1;  ///< the shadow's lengths are this many times the primary's
   H m_timeFactor = 1;    ///< the shadow's times are the primary's divided by this
   std::unique_ptr<BasicSimulator<H>> m_shadow;
@@ -126,5 +136,13 @@ class TrustMonitor {
   bool m_crossed = false;
   std::vector<GrowthPoint> m_growth;  ///< the envelope at geometrically spaced times
 };
+
+/// Contacts that touched the stop within rounding (Cost::undecidedTouches) in the precision of
+/// the result: whether they graze or impact is not known, so the verdict is at best degraded,
+/// the reason names the first, and the error estimate is at least the size a crossing hidden
+/// in rounding could have (an impact speed of about sqrt(32 eps) of the velocity scale, and
+/// the same share of T2 in time). Applied by TrustMonitor::finish, and by callers without one.
+template <typename S>
+void accountForUndecidedTouches(Trust& trust, const BasicResult<S>& result);
 
 }  // namespace grazelab::core

@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "cli_input.h"
 
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 
@@ -54,8 +56,10 @@ void addOptions(QCommandLineParser& parser) {
       {"gap", "Gap d between mass 2 at rest and the stop (default 1).", "value", "1"},
       {"k2", "Stiffness m1-m2 as given: no resonance imposed (excludes --branch).", "value"},
       {"branch", "k2 from the 1:2 design: upper (default) or lower.", "upper|lower"},
-      {"precision", "Arithmetic of the run: double (default), long or quad (binary128). Numbers "
-                    "are read and written in it.", "double|long|quad", "double"},
+      {"precision", "Arithmetic of the run: auto (default: double, and the whole run again in "
+                    "long double, then binary128, from its input, when a contact touches the "
+                    "stop within rounding), double, long or quad (binary128). Numbers are read "
+                    "and written in it.", "auto|double|long|quad", "auto"},
       {"glo", "Start on GLO_lambda data, any real lambda (default 0.5).", "lambda"},
       {"onepp", "Start on the one-impact-per-period orbit of period T (T < T2 near T2). With "
                 "'family', --onepp takes no value: it names the family.", "T"},
@@ -97,12 +101,35 @@ std::optional<core::TrustMode> parseTrustOption(const QCommandLineParser& parser
   return mode;
 }
 
-std::optional<core::Precision> parsePrecisionOption(const QCommandLineParser& parser,
+std::optional<PrecisionOption> parsePrecisionOption(const QCommandLineParser& parser,
                                                     QString& error) {
   const QString text = parser.value("precision");
+  if (text == "auto") return PrecisionOption{};
   const auto precision = core::parsePrecision(text.toStdString());
-  if (!precision) error = QStringLiteral("--precision: '%1' is not double, long or quad").arg(text);
-  return precision;
+  if (!precision) {
+    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(text);
+    return std::nullopt;
+  }
+  return PrecisionOption{precision};
+}
+
+template <typename S>
+core::ExactParameters exactParameters(const QCommandLineParser& parser) {
+  // the decimal read with 400 bits: equal to the value read in S only when S holds it exactly
+  using Wide = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<400, boost::multiprecision::digit_base_2>>;
+  auto exact = [&](const char* name) {
+    const QString text = parser.value(name);
+    if (text.isEmpty()) return true;
+    QString error;
+    const auto value = toNumber<S>(name, text, error);
+    if (!value) return false;
+    try {
+      return Wide(text.toStdString()) == Wide(*value);
+    } catch (const std::exception&) {
+      return false;
+    }
+  };
+  return {exact("m1"), exact("m2"), exact("k1"), exact("k2"), exact("gap")};
 }
 
 template <typename S>
@@ -246,6 +273,7 @@ Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                     \
+  template core::ExactParameters exactParameters<S>(const QCommandLineParser&);     \
   template Parsed<ModelInput<S>> parseModel<S>(const QCommandLineParser&);          \
   template Parsed<core::StartSpec<S>> parseStartSpec<S>(const QCommandLineParser&,  \
                                                         const core::BasicModel<S>&); \

@@ -30,11 +30,21 @@ QStringList repeatedOptions(const QCommandLineParser& parser);
 QStringList simulateOnlyOptionsSet(const QCommandLineParser& parser);
 
 /// --precision, checked ("double" when absent).
-std::optional<core::Precision> parsePrecisionOption(const QCommandLineParser& parser,
+/// --precision as given: one arithmetic, or auto (`fixed` empty: double, the run raised to a
+/// higher precision where a contact needs it).
+struct PrecisionOption {
+  std::optional<core::Precision> fixed;
+};
+std::optional<PrecisionOption> parsePrecisionOption(const QCommandLineParser& parser,
                                                     QString& error);
 
 /// --trust, checked ("auto" when absent).
 std::optional<core::TrustMode> parseTrustOption(const QCommandLineParser& parser, QString& error);
+
+/// Which model parameters the command line gives exactly in precision S (its decimal text is a
+/// number of S; parameters not given are exact defaults).
+template <typename S>
+core::ExactParameters exactParameters(const QCommandLineParser& parser);
 
 /// The model as the command line describes it, in precision S, with its nondimensional chain.
 template <typename S>

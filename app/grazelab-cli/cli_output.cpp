@@ -46,7 +46,7 @@ std::string stateJson(const S& t, const core::BasicState<S>& state) {
 }
 
 template <typename S>
-std::string modelJson(const ModelInput<S>& input) {
+std::string modelJson(const ModelInput<S>& input, const std::string& precision) {
   const core::BasicModel<S>& model = input.model;
   const core::Chain<S>& chain = input.chain;
   const S omegaFast = chain.ratio * chain.omegaSlow;
@@ -82,7 +82,7 @@ std::string modelJson(const ModelInput<S>& input) {
   field("mode_labelling", quoted("mode 1 is the fast mode, mode 2 the slow one (omega1 = 2 omega2)"));
   field("P", "[[" + number(p[0][0]) + ", " + number(p[0][1]) + "], [" + number(p[1][0]) + ", " +
                  number(p[1][1]) + "]]");
-  field("precision", quoted(std::string(core::toString(core::precisionOf<S>()))));
+  field("precision", quoted(precision));
   field("lambda_star", chain.resonant ? number(core::lambdaStar(chain)) : std::string("null"), true);
   return out + "  }";
 }
@@ -117,9 +117,20 @@ std::string trustJson(const core::Trust& trust) {
                  {"reason", quoted(trust.reason)}});
 }
 
+std::string precisionJson(const PrecisionReport& precision) {
+  std::string escalations = "[";
+  for (const std::string& line : precision.escalations) {
+    escalations += (escalations.size() > 1 ? ", " : "") + quoted(line);
+  }
+  return object({{"requested", quoted(precision.requested)},
+                 {"used", quoted(precision.used)},
+                 {"escalations", escalations + "]"}});
+}
+
 template <typename S>
 std::string endFields(const core::BasicResult<S>& result, bool interrupted,
-                      const core::Trust& trust, const std::string& indent) {
+                      const core::Trust& trust, const PrecisionReport& precision,
+                      const std::string& indent) {
   const core::Cost& cost = result.cost;
   auto field = [&](const char* key, const std::string& value) {
     return indent + quoted(key) + ": " + value;
@@ -141,6 +152,7 @@ std::string endFields(const core::BasicResult<S>& result, bool interrupted,
   out += field("accuracy", object({{"max_contact_residual", number(cost.maxContactResidual)}})) +
          ",\n";
   out += field("trust", trustJson(trust)) + ",\n";
+  out += field("precision", precisionJson(precision)) + ",\n";
   out += field("timing", object({{"seconds", number(cost.wallSeconds)},
                                  {"contacts_per_second", number(contactsPerSecond(cost))}}));
   return out;
@@ -150,7 +162,8 @@ std::string endFields(const core::BasicResult<S>& result, bool interrupted,
 
 template <typename S>
 std::string infoJson(const ModelInput<S>& model) {
-  return "{\n  \"model\": " + modelJson(model) + "\n}\n";
+  return "{\n  \"model\": " + modelJson(model, std::string(core::toString(core::precisionOf<S>()))) +
+         "\n}\n";
 }
 
 template <typename S>
@@ -165,11 +178,11 @@ void RunWriter<S>::begin(const core::BasicResult<S>&) {
       ", \"state\": " + stateJson(S(0), m_run.request.initial) + "}";
   switch (m_run.format) {
     case Format::Json:
-      write("{\n  \"model\": " + modelJson(m_run.model) + ",\n  \"initial\": " + initial +
+      write("{\n  \"model\": " + modelJson(m_run.model, m_precision) + ",\n  \"initial\": " + initial +
             ",\n  \"events\": [");
       break;
     case Format::JsonLines: {
-      std::string model = modelJson(m_run.model);
+      std::string model = modelJson(m_run.model, m_precision);
       std::string flat;
       for (char c : model) {
         if (c != '\n') flat += c;
@@ -211,13 +224,13 @@ void RunWriter<S>::event(const core::BasicEvent<S>& event) {
 
 template <typename S>
 void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
-                       const core::Trust& trust) {
+                       const core::Trust& trust, const PrecisionReport& precision) {
   switch (m_run.format) {
     case Format::Json:
-      write((m_events == 0 ? "],\n" : "\n  ],\n") + endFields(result, interrupted, trust, "  ") + "\n}\n");
+      write((m_events == 0 ? "],\n" : "\n  ],\n") + endFields(result, interrupted, trust, precision, "  ") + "\n}\n");
       break;
     case Format::JsonLines: {
-      std::string fields = endFields(result, interrupted, trust, "");
+      std::string fields = endFields(result, interrupted, trust, precision, "");
       std::string flat;
       for (char c : fields) flat += c == '\n' ? ' ' : c;
       write("{\"record\": \"end\", " + flat + "}\n");
@@ -253,6 +266,11 @@ void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
       std::snprintf(line, sizeof line, "|u2 - gap|     %.3g (max at contacts)\n",
                     cost.maxContactResidual);
       text += line;
+      text += "precision      " + precision.used +
+              (precision.requested == "auto" ? " (auto)" : std::string()) + "\n";
+      for (const std::string& line : precision.escalations) {
+        text += "               raised: " + line + "\n";
+      }
       text += "trust          " + std::string(core::toString(trust.verdict)) + ": " + trust.reason + "\n";
       if (trust.verdict != core::Verdict::Unchecked) {
         std::snprintf(line, sizeof line,

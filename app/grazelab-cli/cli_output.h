@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "cli_input.h"
 #include "core/simulate.h"
@@ -15,6 +16,14 @@ namespace grazelab::cli {
 template <typename S>
 std::string infoJson(const ModelInput<S>& model);
 
+/// The arithmetic of a run as its output reports it: asked for ("auto", "double", ...), used
+/// in the end, and each raise of --precision auto (one line: from where and why).
+struct PrecisionReport {
+  std::string requested;
+  std::string used;
+  std::vector<std::string> escalations;
+};
+
 /// Writes a run as it happens (DESIGN.md "Command line"): json (one document, the events array
 /// streamed), jsonl (one record per line: the run, each event, the end), csv (one row per
 /// event) or summary (a few lines at the end). Numbers carry the digits of the run's precision.
@@ -22,19 +31,26 @@ std::string infoJson(const ModelInput<S>& model);
 template <typename S>
 class RunWriter {
  public:
-  RunWriter(const RunInput<S>& run, std::FILE* out) : m_run(run), m_out(out) {}
+  /// `precision` is what the run was asked for (the model's "precision" field).
+  RunWriter(const RunInput<S>& run, std::FILE* out, std::string precision)
+      : m_run(run), m_out(out), m_precision(std::move(precision)) {}
 
   /// Everything known before the first event.
   void begin(const core::BasicResult<S>& result);
+  /// Goes on after `written` events an earlier writer of the same output wrote (a run of
+  /// --precision auto raised to a higher precision): begin() is not called again.
+  void resumeAfter(std::int64_t written) { m_events = written; }
   void event(const core::BasicEvent<S>& event);
   /// Everything known at the end; `interrupted` when a signal ended the run.
-  void end(const core::BasicResult<S>& result, bool interrupted, const core::Trust& trust);
+  void end(const core::BasicResult<S>& result, bool interrupted, const core::Trust& trust,
+           const PrecisionReport& precision);
 
  private:
   void write(const std::string& text);
 
   const RunInput<S>& m_run;
   std::FILE* m_out;
+  std::string m_precision;
   std::int64_t m_events = 0;
 };
 

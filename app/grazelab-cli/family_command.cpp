@@ -48,7 +48,7 @@ int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& e
       return kExitInvalidInput;
     }
   }
-  if (parser.value("precision") != "double") {
+  if (parser.value("precision") != "auto" && parser.value("precision") != "double") {
     error = "--precision: the family is computed in double";
     return kExitInvalidInput;
   }

@@ -17,6 +17,7 @@
 #include <cstring>
 #include <memory>
 #include <thread>
+#include <vector>
 
 #include <signal.h>
 
@@ -91,50 +92,106 @@ int info(const QCommandLineParser& parser) {
   return 0;
 }
 
+// A run of --precision auto in progress: what its output holds so far, so that a run raised to
+// a higher precision (again from its input) goes on where the lower one stopped writing.
+struct AutoRun {
+  bool begun = false;          ///< the output's head is written
+  std::int64_t written = 0;    ///< events written
+  grazelab::core::EventType lastType = grazelab::core::EventType::Impact;
+  long double lastTime = 0;    ///< time of the last event written
+  std::vector<std::string> escalations;
+  std::string mismatch;        ///< the raised run disagrees with an event already written
+};
+// simulate<S> stopped at a contact S cannot decide: run again one precision up
+constexpr int kRaisePrecision = -1;
+
 template <typename S>
 int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher,
-             grazelab::core::TrustMode trustMode) {
+             grazelab::core::TrustMode trustMode, AutoRun* autoRun) {
   using namespace grazelab;
+  constexpr bool kTopPrecision = std::is_same_v<S, core::Quad>;
+  const std::string precisionName(core::toString(core::precisionOf<S>()));
   auto parsed = cli::parseRun<S>(parser);
   if (!parsed.value) return fail(parsed.error);
   cli::RunInput<S>& run = *parsed.value;
-  cli::RunWriter<S> writer(run, stdout);
+  run.request.stopAtUndecided = autoRun != nullptr && !kTopPrecision;
+  cli::RunWriter<S> writer(run, stdout, autoRun ? std::string("auto") : precisionName);
   // the error estimate: the same input read one precision up, run beside this one
   std::optional<core::TrustMonitor<S>> monitor;
   std::string noShadow;
   if (trustMode != core::TrustMode::Off) {
     const auto shadow = cli::parseRun<core::ShadowScalar<S>>(parser);
     if (shadow.value) {
-      monitor.emplace(shadow.value->model.model, shadow.value->request, trustMode);
+      monitor.emplace(shadow.value->model.model, shadow.value->request, trustMode,
+                      watcher.token(), cli::exactParameters<core::ShadowScalar<S>>(parser));
     } else {
       noShadow = "no shadow run: " + shadow.error.toStdString();
     }
   }
-  run.request.onEvent = [&writer, &monitor](const core::BasicEvent<S>& event) {
-    writer.event(event);
+  // a raised run computes the events already written again: they are checked, not rewritten
+  const std::int64_t alreadyWritten = autoRun ? autoRun->written : 0;
+  const long double period = static_cast<long double>(S(core::twoPi<S>() / run.model.chain.omegaSlow));
+  std::int64_t index = 0;
+  run.request.onEvent = [&](const core::BasicEvent<S>& event) {
+    ++index;
     if (monitor) monitor->observe(event);
+    if (index == alreadyWritten && autoRun->mismatch.empty()) {
+      const long double t = static_cast<long double>(event.t);
+      if (event.type != autoRun->lastType || std::fabs(t - autoRun->lastTime) > 1e-6L * period) {
+        autoRun->mismatch = "event " + std::to_string(index) + " as written before the raise to " +
+                            precisionName + " differs from the " + precisionName + " run";
+      }
+    }
+    if (index <= alreadyWritten) return;
+    writer.event(event);
+    if (autoRun) {
+      autoRun->written = index;
+      autoRun->lastType = event.type;
+      autoRun->lastTime = static_cast<long double>(event.t);
+    }
   };
   core::BasicSimulator<S> simulator(run.model.model, run.request);
   if (simulator.result().stop == core::StopReason::InvalidInput) {
     return fail(QString::fromStdString(simulator.result().message));
   }
   if (!core::isFinite(simulator.result().initialEnergy)) {
+    if (autoRun && !kTopPrecision) {
+      autoRun->escalations.push_back("from " + precisionName +
+                                     ": the energy of this start is beyond its range");
+      return kRaisePrecision;
+    }
     return fail("the energy of this start is beyond the range of this precision (try "
                 "--precision long or quad, whose range is wider)");
   }
-  for (const std::string& note : run.notes) {
-    std::fprintf(stderr, "grazelab-cli: note: %s\n", note.c_str());
+  if (!autoRun || !autoRun->begun) {
+    for (const std::string& note : run.notes) {
+      std::fprintf(stderr, "grazelab-cli: note: %s\n", note.c_str());
+    }
+    writer.begin(simulator.result());
+    if (autoRun) autoRun->begun = true;
+  } else {
+    writer.resumeAfter(autoRun->written);
   }
-  writer.begin(simulator.result());
   while (!simulator.advance(std::numeric_limits<std::int64_t>::max(), watcher.token())) {
+  }
+  if (simulator.result().stop == core::StopReason::Undecided) {
+    autoRun->escalations.push_back("from " + precisionName + ": " + simulator.result().message);
+    return kRaisePrecision;
   }
   core::Trust trust;
   if (monitor) {
     trust = monitor->finish(simulator.result());
   } else {
     trust.reason = noShadow.empty() ? "not estimated (--trust off)" : noShadow;
+    core::accountForUndecidedTouches(trust, simulator.result());
   }
-  writer.end(simulator.result(), watcher.interrupted(), trust);
+  if (autoRun && !autoRun->mismatch.empty()) {
+    trust.verdict = core::Verdict::Unreliable;
+    trust.reason = autoRun->mismatch + "; " + trust.reason;
+  }
+  cli::PrecisionReport precision{autoRun ? "auto" : precisionName, precisionName,
+                                 autoRun ? autoRun->escalations : std::vector<std::string>{}};
+  writer.end(simulator.result(), watcher.interrupted(), trust, precision);
   return watcher.interrupted() ? kInterrupted : 0;
 }
 
@@ -258,7 +315,7 @@ int main(int argc, char* argv[]) {
   if (command == "info") {
     const QStringList extra = grazelab::cli::simulateOnlyOptionsSet(parser);
     if (!extra.isEmpty()) return fail(extra.join(", ") + " only apply to 'simulate'");
-    switch (*precision) {
+    switch (precision->fixed.value_or(Precision::Double)) {
       case Precision::Double:
         return info<double>(parser);
       case Precision::Long:
@@ -268,13 +325,23 @@ int main(int argc, char* argv[]) {
     }
   }
   if (command == "simulate") {
-    switch (*precision) {
+    if (!precision->fixed) {
+      // auto: double, and from the input again one precision up while a contact needs it
+      AutoRun autoRun;
+      int code = simulate<double>(parser, watcher, *trust, &autoRun);
+      if (code == kRaisePrecision) code = simulate<long double>(parser, watcher, *trust, &autoRun);
+      if (code == kRaisePrecision) {
+        code = simulate<grazelab::core::Quad>(parser, watcher, *trust, &autoRun);
+      }
+      return code;
+    }
+    switch (*precision->fixed) {
       case Precision::Double:
-        return simulate<double>(parser, watcher, *trust);
+        return simulate<double>(parser, watcher, *trust, nullptr);
       case Precision::Long:
-        return simulate<long double>(parser, watcher, *trust);
+        return simulate<long double>(parser, watcher, *trust, nullptr);
       case Precision::Quad:
-        return simulate<grazelab::core::Quad>(parser, watcher, *trust);
+        return simulate<grazelab::core::Quad>(parser, watcher, *trust, nullptr);
     }
   }
   return fail(QStringLiteral("unknown command '%1': use info, simulate, report, stability, map, merge or family").arg(command));

@@ -195,8 +195,9 @@ int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& erro
     error = foreign.join(", ") + " do not apply to 'map'";
     return kExitInvalidInput;
   }
-  if (parser.value("precision") != "double") {
-    error = "--precision: a map runs in double (use simulate for one run in long or quad)";
+  if (parser.value("precision") != "auto" && parser.value("precision") != "double") {
+    error = "--precision: a map runs in auto precision (double, each point raised to long double "
+            "or binary128 where a contact needs it); use simulate for one run in long or quad";
     return kExitInvalidInput;
   }
   const auto spec = parseSpec(parser, error);

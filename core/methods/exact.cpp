@@ -76,6 +76,11 @@ MethodRun runIn(const Task& task, const WorkBudget& budget, std::stop_token stop
       run.status = RunStatus::Budget;
       run.reason = "contact budget (" + std::to_string(budget.maxSteps) + " contacts) spent";
       break;
+    case StopReason::SearchBudget:
+    case StopReason::Undecided:
+      run.status = RunStatus::Budget;
+      run.reason = result.message;
+      break;
     case StopReason::Cancelled:
       run.status = RunStatus::Cancelled;
       run.reason = "cancelled";

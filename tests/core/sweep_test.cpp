@@ -60,8 +60,9 @@ TEST(SweepTest, theGrazingFamilyFliesExactlyT2OverMassRatiosAndLambdas) {
       SCOPED_TRACE("lambda " + std::to_string(spec.x.at(c)) + ", m2/m1 " + std::to_string(spec.y.at(r)));
       ASSERT_TRUE(p.valid);
       if (c == 0) {
-        // lambda = 0 is GLOM1, the fast mode alone: it touches every T1 = T2 / 2
-        EXPECT_EQ(p.fftFirst, period / 2);
+        // lambda = 0 is GLOM1, the fast mode alone: it touches every T1 = T2 / 2, a touch no
+        // precision decides (the map raises it to binary128): T1 to the rounding of T1
+        EXPECT_DOUBLE_EQ(p.fftFirst, period / 2);
         continue;
       }
       EXPECT_EQ(p.fftFirst, period);
