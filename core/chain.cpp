@@ -76,7 +76,7 @@ ChainOrProblem<S> makeChain(const BasicModel<S>& model) {
                 ": the fast mode turns so often per slow period that its phase is rounding in " +
                 std::string(toString(precisionOf<S>())) + " (at most " +
                 formatScalar(S(S(1e-6) / (twoPi<S>() * epsilon<S>()))) +
-                "; --precision quad resolves more)"};
+                (std::is_same_v<S, Quad> ? ")" : "; --precision quad resolves more)")};
   }
   return {chain, {}};
 }

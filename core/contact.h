@@ -19,8 +19,9 @@ enum class ContactKind {
               ///< how far it got
 };
 
-/// Default budget of a detuned flight's march (steps); about a minute of search at most.
-inline constexpr std::int64_t kDefaultSearchSteps = 200'000'000;
+/// Default budget of a detuned flight's march (steps): about a second of search in double,
+/// half a minute in binary128.
+inline constexpr std::int64_t kDefaultSearchSteps = 10'000'000;
 
 /// The first contact of a free flight after its start.
 template <typename S>

@@ -258,6 +258,11 @@ template <typename S>
 Trust TrustMonitor<S>::finish(const BasicResult<S>& primary) {
   Trust trust = estimate(primary);
   accountForUndecidedTouches(trust, primary);
+  if (primary.stop == StopReason::SearchBudget) {
+    // the run stopped undecided: whatever came before holds, what follows is not known
+    if (trust.verdict != Verdict::Unreliable) trust.verdict = Verdict::Degraded;
+    trust.reason = primary.message + "; " + trust.reason;
+  }
   return trust;
 }
 

@@ -112,7 +112,15 @@ int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher,
   constexpr bool kTopPrecision = std::is_same_v<S, core::Quad>;
   const std::string precisionName(core::toString(core::precisionOf<S>()));
   auto parsed = cli::parseRun<S>(parser);
-  if (!parsed.value) return fail(parsed.error);
+  if (!parsed.value) {
+    // a chain or start beyond this precision's reach (its refusal names --precision): auto
+    // goes higher
+    if (autoRun && !kTopPrecision && !autoRun->begun && parsed.error.contains("--precision")) {
+      autoRun->escalations.push_back("from " + precisionName + ": " + parsed.error.toStdString());
+      return kRaisePrecision;
+    }
+    return fail(parsed.error);
+  }
   cli::RunInput<S>& run = *parsed.value;
   run.request.stopAtUndecided = autoRun != nullptr && !kTopPrecision;
   cli::RunWriter<S> writer(run, stdout, autoRun ? std::string("auto") : precisionName);
@@ -152,7 +160,14 @@ int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher,
   };
   core::BasicSimulator<S> simulator(run.model.model, run.request);
   if (simulator.result().stop == core::StopReason::InvalidInput) {
-    return fail(QString::fromStdString(simulator.result().message));
+    // a chain beyond this precision's reach (its refusal names --precision): auto goes higher
+    const std::string& message = simulator.result().message;
+    if (autoRun && !kTopPrecision && !autoRun->begun &&
+        message.find("--precision") != std::string::npos) {
+      autoRun->escalations.push_back("from " + precisionName + ": " + message);
+      return kRaisePrecision;
+    }
+    return fail(QString::fromStdString(message));
   }
   if (!core::isFinite(simulator.result().initialEnergy)) {
     if (autoRun && !kTopPrecision) {
