@@ -57,8 +57,11 @@ S rounded(const cpp_rational& value) {
   S result = 0;
   const long bits = long(msb(quotient)) + 1;
   for (long top = bits; top > 0; top -= 32) {
+    // the bits [low, top): the last chunk may be shorter than 32 bits (a 32-bit mask there
+    // counted the bits below `top` twice: binary128's detuning was off by 7e-30)
     const long low = std::max(0L, top - 32);
-    const cpp_int chunk = cpp_int((quotient >> low) & cpp_int(0xffffffffu));
+    const cpp_int mask = (cpp_int(1) << (top - low)) - 1;
+    const cpp_int chunk = cpp_int((quotient >> low) & mask);
     result += ldexp(S(static_cast<unsigned long long>(chunk)), int(low - shift));
   }
   return negative ? S(-result) : result;

@@ -304,7 +304,11 @@ Trust TrustMonitor<S>::estimate(const BasicResult<S>& primary) {
   }
   const bool interrupted = primary.stop == StopReason::Cancelled || m_stop.stop_requested();
   const bool complete = shadowing() && m_failure.empty();
-  if (complete && !interrupted) {
+  // a run that stopped undecided (a search out of budget) is compared up to there: its shadow
+  // is not marched on to an end the run never reached
+  const bool undecidedEnd =
+      primary.stop == StopReason::SearchBudget || primary.stop == StopReason::Undecided;
+  if (complete && !interrupted && !undecidedEnd) {
     // the shadow ends its own run (at most the rest of its last flight), then the final states
     // are compared
     while (!m_shadow->done()) m_shadow->advance(1, m_stop);

@@ -175,7 +175,7 @@ void SimWorker::run(const SimRequest& request, std::stop_token stop, double chun
   shadowRequest.tEnd = request.request.tEnd;
   shadowRequest.flightSearchPeriods = request.request.flightSearchPeriods;
   core::TrustMonitor<double> monitor(core::convertModel<long double>(request.model),
-                                     shadowRequest, core::TrustMode::Auto);
+                                     shadowRequest, core::TrustMode::Auto, stop);
   // Up to this many contacts the shadow runs after the result is shown, on the run's events
   // kept meanwhile (~1.6 MB for 20 000); beyond, in lockstep, at no memory cost. The shadow
   // took 7/8 of a 20 000-contact run's time: the plots no longer wait for it.

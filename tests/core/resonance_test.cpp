@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
 #include "core/modes.h"
 
 namespace grazelab::core {
@@ -88,6 +90,24 @@ TEST(Resonance, StiffnessForAFrequencyRatioGivesThatRatio) {
   EXPECT_FALSE(k2ForFrequencyRatio(1.0, -0.5, 1.0, 2.0, Branch::Upper));
   // 1 + beta small: a ratio below ~ the chain's least reachable one has no stiffness
   EXPECT_FALSE(k2ForFrequencyRatio(1.0, 0.5625, 1.0, 1.5, Branch::Upper));
+}
+
+TEST(Resonance, TheDefectIsBinary128sRoundingOfTheExactValue) {
+  // the defect comes from exact rationals, rounded once: checked against 400-bit arithmetic on
+  // the same binary128 inputs (a chunked rounding counted some bits twice: 7e-30 off, and every
+  // detuned binary128 run lost four digits)
+  using Wide = boost::multiprecision::number<
+      boost::multiprecision::cpp_bin_float<400, boost::multiprecision::digit_base_2>>;
+  for (const char* text : {"0.37", "0.1", "1e-3", "0.4999", "3.7"}) {
+    const Quad k2 = parseScalar<Quad>(text).value.value();
+    const Quad beta = Quad(0.5);
+    const Wide b(beta), k(k2);
+    const Wide exact = (4 * (1 + b) * (1 + b) * k * k - b * (17 - 8 * b) * k + 4 * b * b) / (b * b);
+    const Quad defect = resonanceDefect(Quad(1), beta, Quad(1), k2);
+    const Wide error = abs(Wide(defect) - exact) / abs(exact);
+    EXPECT_LE(error.convert_to<double>(), std::numeric_limits<Quad>::epsilon().convert_to<double>())
+        << text;
+  }
 }
 
 TEST(Resonance, BranchNamesRoundTrip) {
