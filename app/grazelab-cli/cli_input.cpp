@@ -4,6 +4,9 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <cmath>
+#include <cstdio>
+
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 
@@ -14,7 +17,7 @@ namespace {
 
 const QStringList kModelOptions = {"m1", "m2", "k1", "gap", "k2", "branch", "precision"};
 const QStringList kSimulateOnly = {"glo", "onepp", "state", "perturb", "contacts", "t-end",
-                                   "format", "trust"};
+                                   "format", "trust", "search-steps"};
 
 QString fromStd(const std::string& text) { return QString::fromStdString(text); }
 
@@ -67,6 +70,9 @@ void addOptions(QCommandLineParser& parser) {
       {"perturb", "Add du1,du2,dv1,dv2 to the initial state.", "du1,du2,dv1,dv2"},
       {"contacts", "Stop after N contacts (default 100 when no --t-end).", "N"},
       {"t-end", "Stop at time T (it also bounds the contact search of a detuned chain).", "T"},
+      {"search-steps", "Detuned chains: the most steps one flight's contact search may take "
+                       "(default 10000000, about a second in double); running out stops the run "
+                       "with stop_reason search-budget, never 'no contact'.", "N"},
       {"format", "Output: json (default), jsonl (JSON Lines), csv or summary. json, jsonl and "
                  "csv stream: memory stays bounded and an interrupt leaves complete records.",
        "json|jsonl|csv|summary", "json"},
@@ -253,6 +259,27 @@ Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
               QStringLiteral("--t-end: '%1' is not a time >= 0").arg(parser.value("t-end"))};
     }
     run.request.tEnd = *tEnd;
+  }
+  if (parser.isSet("search-steps")) {
+    bool ok = false;
+    const qlonglong steps = parser.value("search-steps").toLongLong(&ok);
+    if (!ok || steps < 1) {
+      return {std::nullopt, QStringLiteral("--search-steps: '%1' is not a count >= 1")
+                                .arg(parser.value("search-steps"))};
+    }
+    run.request.flightSearchSteps = steps;
+  }
+  // a request whose length is astronomical is said to be so up front (it still runs, and an
+  // interrupt ends it with complete records)
+  const S slowPeriod = core::twoPi<S>() / run.model.chain.omegaSlow;
+  const double periods = core::toDouble(S(run.request.tEnd / slowPeriod));
+  if (!parser.isSet("contacts") && std::isfinite(periods) && periods > 1e12) {
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "--t-end spans %.2g slow periods (T2 = %.3g) and no --contacts bounds the run: "
+                  "at ~1e7 contacts a second that could take %.2g years",
+                  periods, core::toDouble(slowPeriod), periods / 1e7 / 3.15e7);
+    run.notes.push_back(line);
   }
   const QString format = parser.value("format");
   if (format == "json") {

@@ -42,7 +42,7 @@ int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& e
     return kExitInvalidInput;
   }
   for (const char* name : {"glo", "state", "perturb", "contacts", "t-end", "format", "trust", "x",
-                           "y", "threads", "shard", "picture", "methods", "quick"}) {
+                           "y", "threads", "shard", "picture", "methods", "quick", "search-steps"}) {
     if (parser.isSet(name)) {
       error = QStringLiteral("--%1 does not apply to 'family'").arg(name);
       return kExitInvalidInput;

@@ -10,6 +10,7 @@
 #include <QCoreApplication>
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include <signal.h>
+#include <unistd.h>
 
 #include "cli_input.h"
 #include "cli_output.h"
@@ -91,6 +93,42 @@ int info(const QCommandLineParser& parser) {
   write(QByteArray::fromStdString(grazelab::cli::infoJson(*model.value)));
   return 0;
 }
+
+// Progress of a long run on stderr, when stderr is a terminal: contacts, simulated time, rate
+// and, where the run is bounded, the time left; once a second, on one line rewritten in place.
+class ProgressLine {
+ public:
+  bool enabled() const { return m_enabled; }
+  void show(std::int64_t contacts, double simulatedTime, double fraction,
+            const std::string& precision) {
+    const double elapsed = seconds(m_started);
+    if (!m_enabled || elapsed - m_lastShown < 1.0) return;
+    m_lastShown = elapsed;
+    const double rate = double(contacts) / elapsed;
+    char left[64] = "";
+    if (fraction > 0 && fraction < 1) {
+      std::snprintf(left, sizeof left, ", %.0f%%, about %.0f s left", 100 * fraction,
+                    elapsed * (1 - fraction) / fraction);
+    }
+    std::fprintf(stderr, "\r\033[Kgrazelab-cli: %lld contacts, t = %.6g, %.3g contacts/s (%s)%s",
+                 static_cast<long long>(contacts), simulatedTime, rate, precision.c_str(), left);
+    std::fflush(stderr);
+    m_shown = true;
+  }
+  void clear() {
+    if (m_shown) std::fprintf(stderr, "\r\033[K");
+    m_shown = false;
+  }
+
+ private:
+  static double seconds(std::chrono::steady_clock::time_point since) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+  }
+  bool m_enabled = isatty(STDERR_FILENO) != 0;
+  bool m_shown = false;
+  std::chrono::steady_clock::time_point m_started = std::chrono::steady_clock::now();
+  double m_lastShown = 0;
+};
 
 // A run of --precision auto in progress: what its output holds so far, so that a run raised to
 // a higher precision (again from its input) goes on where the lower one stopped writing.
@@ -187,8 +225,14 @@ int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher,
   } else {
     writer.resumeAfter(autoRun->written);
   }
-  while (!simulator.advance(std::numeric_limits<std::int64_t>::max(), watcher.token())) {
+  ProgressLine progress;
+  while (!simulator.advance(progress.enabled() ? 65536 : std::numeric_limits<std::int64_t>::max(),
+                            watcher.token())) {
+    progress.show(simulator.result().cost.contacts,
+                  core::toDouble(simulator.scale().toPhysicalTime(simulator.state().tau)),
+                  simulator.progress(), precisionName);
   }
+  progress.clear();
   if (simulator.result().stop == core::StopReason::Undecided) {
     autoRun->escalations.push_back("from " + precisionName + ": " + simulator.result().message);
     return kRaisePrecision;

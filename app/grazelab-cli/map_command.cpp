@@ -190,7 +190,8 @@ QStringList mapOnlyOptionsSet(const QCommandLineParser& parser) {
 }
 
 int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
-  const QStringList foreign = foreignOptions(parser, {"format", "t-end", "methods", "quick", "count"});
+  const QStringList foreign =
+      foreignOptions(parser, {"format", "t-end", "methods", "quick", "count", "search-steps"});
   if (!foreign.isEmpty()) {
     error = foreign.join(", ") + " do not apply to 'map'";
     return kExitInvalidInput;
@@ -269,7 +270,7 @@ int runMerge(const QCommandLineParser& parser, const QStringList& parts, std::st
   const QStringList foreign = foreignOptions(
       parser, {"x", "y", "threads", "shard", "picture", "count", "glo", "onepp", "state",
                "perturb", "contacts", "t-end", "format", "trust", "methods", "quick", "m1", "m2",
-               "k1", "k2", "gap", "branch", "precision"});
+               "k1", "k2", "gap", "branch", "precision", "search-steps"});
   if (!foreign.isEmpty()) {
     error = foreign.join(", ") + " do not apply to 'merge' (the parts say what the map is)";
     return kExitInvalidInput;

@@ -68,7 +68,7 @@ constexpr double kDefaultPeriods = 200;
 const core::State kDefaultPush{0, 0, 0.05, -0.05};
 
 std::optional<ReportInput> parseReportInput(const QCommandLineParser& parser, QString& error) {
-  for (const char* option : {"format", "trust", "precision"}) {
+  for (const char* option : {"format", "trust", "precision", "search-steps"}) {
     if (parser.isSet(option)) {
       error = QStringLiteral("--%1 does not apply here (the report runs every method and every "
                              "precision of the exact solver itself)").arg(option);
