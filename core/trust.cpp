@@ -216,6 +216,12 @@ void TrustMonitor<S>::observe(const BasicEvent<S>& event) {
     return;
   }
   const std::optional<BasicEvent<H>> shadow = nextShadowEvent();
+  if (!shadow && m_stop.stop_requested()) {
+    // interrupted: the estimate holds up to here, the shadow took no other path
+    m_active = false;
+    m_stopNote = "the shadow was interrupted at event " + std::to_string(m_observed);
+    return;
+  }
   if (!shadow) {
     m_failure = "the shadow run ended before event " + std::to_string(m_observed) + " (t = " +
                 formatScalar(event.t) + ")";

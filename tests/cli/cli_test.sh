@@ -106,5 +106,45 @@ assert d['model']['resonant'] is False and d['final']['t']==50 and d['stop_reaso
     || fail "detuned run to t-end"
 fi
 
+# issue 20: a touch double cannot decide is decided in binary128 (--precision auto, the
+# default), and says so; in a fixed precision the verdict is not ok
+if expect_ok simulate --glo 0 --perturb 0,0,0,-3e-9 --contacts 60; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['model']['precision'] == 'auto', d['model']['precision']
+assert d['precision']['used'] == 'quad' and len(d['precision']['escalations']) == 2, d['precision']
+assert d['contacts']['impacts'] == 60 and d['contacts']['undecided_touches'] == 0, d['contacts']
+assert abs(d['final']['t'] - 359.87351789519487) < 1e-9, d['final']['t']" || fail "auto precision"
+fi
+if expect_ok simulate --glo 0 --perturb 0,0,0,-3e-9 --contacts 60 --precision double; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['contacts']['undecided_touches'] > 0 and d['trust']['verdict'] != 'ok', d['trust']
+assert 'contact 1' in d['trust']['reason'], d['trust']['reason']" || fail "undecided verdict"
+fi
+# an exhausted search is its own stop, never 'no contact'
+if expect_ok simulate --k2 1e-6 --state 0,0.999,0,0 --contacts 1 --search-steps 10; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['stop_reason'] == 'search-budget' and d['trust']['verdict'] != 'ok', d" \
+    || fail "search budget"
+fi
+EXPECT_WORD=search-steps expect_invalid simulate --search-steps 0
+EXPECT_WORD="w1/w2" expect_invalid simulate --k1 0.5e-55 --k2 1 --t-end 1.62
+# SIGTERM during a long detuned search, shadow run included, ends the command within 2 s with
+# complete records and exit 130
+"$cli" simulate --k2 1e-9 --glo 0.5 --perturb 0,0,0,-1e-3 --contacts 100000000 --format csv \
+  >"$out" 2>"$err" &
+pid=$!
+sleep 1
+started=$(date +%s%N)
+kill -TERM "$pid"
+wait "$pid"
+code=$?
+elapsed_ms=$((($(date +%s%N) - started) / 1000000))
+[ "$code" -eq 130 ] || fail "interrupted run exit $code, not 130"
+[ "$elapsed_ms" -le 2000 ] || fail "interrupt took $elapsed_ms ms"
+[ "$(tail -c1 "$out" | od -An -c | tr -d ' ')" = '\n' ] || fail "interrupted csv ends mid-record"
+
 if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
 echo "all CLI contract checks passed"

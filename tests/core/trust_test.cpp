@@ -98,6 +98,33 @@ TEST(Trust, NamesAChaoticRunPastItsHorizon) {
   EXPECT_LE(truth, 10 * early.trust.stateError);
 }
 
+TEST(Trust, AnInterruptStopsTheShadowAndTheEstimateSaysSo) {
+  // the shadow watches the run's stop token: once it is requested the shadow does not march on
+  // (a long detuned search in the shadow ignored it for minutes), and the estimate covers what
+  // was compared, not "another path"
+  const Model model = testing::resonantChain(0.5);
+  const State start = testing::nearGrazingStart(model, 0.5, 0.05);
+  std::stop_source source;
+  BasicRequest<long double> shadow;
+  shadow.initial = convertState<long double>(start);
+  shadow.maxContacts = 1000;
+  TrustMonitor<double> monitor(convertModel<long double>(model), shadow, TrustMode::Full,
+                               source.get_token());
+  Request request;
+  request.initial = start;
+  request.maxContacts = 1000;
+  std::int64_t seen = 0;
+  request.onEvent = [&](const Event& event) {
+    if (++seen == 10) source.request_stop();
+    monitor.observe(event);
+  };
+  const Result run = simulate(model, request);
+  ASSERT_EQ(run.cost.contacts, 1000);  // the run itself did not watch this token
+  const Trust trust = monitor.finish(run);
+  EXPECT_NE(trust.verdict, Verdict::Unreliable) << trust.reason;
+  EXPECT_NE(trust.reason.find("interrupted at event 10"), std::string::npos) << trust.reason;
+}
+
 TEST(Trust, OffEstimatesNothing) {
   const Model model = testing::resonantChain(0.5);
   const Checked checked =
