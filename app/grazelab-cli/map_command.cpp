@@ -9,6 +9,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <thread>
 
 #include "cli_input.h"
 #include "map_files.h"
@@ -238,12 +239,18 @@ int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& erro
                 .arg(points).arg(double(points) * 80 / 1e9, 0, 'f', 1);
     return kExitInvalidInput;
   }
+  const bool whole = rows.rowBegin == 0 && rows.rowEnd == spec->y.count;
+  const bool drawsPicture = whole && map::picturesAvailable();
+  // the fonts load while the points are computed (the picture needs them afterwards)
+  std::thread fontThread;
+  if (drawsPicture) fontThread = std::thread(map::prepareFonts);
   ProgressLine progress(points);
   const auto started = Clock::now();
   const core::SweepMap computed = core::sweep(
       *spec, rows, parallel::tbbParallelFor(threads), stop,
       [&progress](std::int64_t done) { progress(done); });
   const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  if (fontThread.joinable()) fontThread.join();
   if (!computed.complete) return kExitInterrupted;
 
   map::StoredMap stored;
@@ -256,9 +263,23 @@ int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& erro
   stored.columns = computed.columns;
   stored.totalRows = spec->y.count;
   stored.points = computed.points;
-  if (!map::writeMapFiles(*prefix, stored, error)) return 1;
-  const bool whole = rows.rowBegin == 0 && rows.rowEnd == spec->y.count;
-  if (whole && map::picturesAvailable() && !map::writeMapPicture(*prefix, stored, error)) return 1;
+  // the picture (fonts, painting, PNG and SVG encoding: more than the arrays) is drawn on a
+  // thread of its own while the arrays are written, so that on two cores the files add no wall
+  // time (QPainter draws on images in any thread; the two write different files)
+  bool pictureWritten = true;
+  QString pictureError;
+  std::thread pictureThread;
+  if (drawsPicture) {
+    pictureThread = std::thread(
+        [&] { pictureWritten = map::writeMapPicture(*prefix, stored, pictureError); });
+  }
+  const bool filesWritten = map::writeMapFiles(*prefix, stored, error);
+  if (pictureThread.joinable()) pictureThread.join();
+  if (!filesWritten) return 1;
+  if (!pictureWritten) {
+    error = pictureError;
+    return 1;
+  }
   std::fprintf(stderr, "grazelab-cli: map: %lld points in %.3f s on %d thread%s (%.0f runs/s): %s.json\n",
                (long long)points, seconds, threads, threads == 1 ? "" : "s",
                seconds > 0 ? double(points) / seconds : 0.0, qPrintable(*prefix));

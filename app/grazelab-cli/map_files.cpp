@@ -175,6 +175,11 @@ bool writeMapFiles(const QString& prefix, const StoredMap& map, QString& error) 
     array.integer = info.integer;
     array.rows = rows;
     array.columns = map.columns;
+    if (info.integer) {
+      array.integers.reserve(map.points.size());
+    } else {
+      array.reals.reserve(map.points.size());
+    }
     for (const PointSummary& point : map.points) {
       if (info.integer) {
         array.integers.push_back(integerOf(point, info.quantity));

@@ -4,6 +4,7 @@
 #include "map_picture.h"
 
 #if GRAZELAB_CLI_PICTURES
+#include <QImage>
 #include <QJsonDocument>
 #include <QPainter>
 
@@ -59,6 +60,12 @@ ui::HeatMapData heatMapOf(const StoredMap& map) {
 
 bool picturesAvailable() { return true; }
 
+void prepareFonts() {
+  QImage image(64, 16, QImage::Format_ARGB32_Premultiplied);
+  QPainter painter(&image);
+  painter.drawText(QPointF(0, 12), QStringLiteral("0.5 T2"));
+}
+
 bool writeMapPicture(const QString& prefix, const StoredMap& map, QString& error) {
   const ui::HeatMapData data = heatMapOf(map);
   const QByteArray description = QJsonDocument(map.description.spec).toJson(QJsonDocument::Compact);
@@ -70,6 +77,7 @@ bool writeMapPicture(const QString& prefix, const StoredMap& map, QString& error
 #else
 
 bool picturesAvailable() { return false; }
+void prepareFonts() {}
 bool writeMapPicture(const QString&, const StoredMap&, QString&) { return true; }
 
 #endif
