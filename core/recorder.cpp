@@ -142,6 +142,30 @@ void Recorder<S>::finish(StopReason reason, const S& t, const BasicState<S>& sca
   m_result.final = m_scale.toPhysical(scaled);
 }
 
+template <typename S>
+Result toDoubleResult(const BasicResult<S>& from) {
+  Result to;
+  to.events.reserve(from.events.size());
+  for (const BasicEvent<S>& e : from.events) {
+    to.events.push_back({toDouble(e.t), e.type, convertState<double>(e.before),
+                         convertState<double>(e.after)});
+  }
+  to.poincare = from.poincare;
+  to.freeFlights = from.freeFlights;
+  to.samples = from.samples;
+  to.samplesTruncated = from.samplesTruncated;
+  to.tFinal = toDouble(from.tFinal);
+  to.final = convertState<double>(from.final);
+  to.initialEnergy = toDouble(from.initialEnergy);
+  to.cost = from.cost;
+  to.stop = from.stop;
+  to.message = from.message;
+  return to;
+}
+
+template Result toDoubleResult<double>(const BasicResult<double>&);
+template Result toDoubleResult<long double>(const BasicResult<long double>&);
+template Result toDoubleResult<Quad>(const BasicResult<Quad>&);
 template class Recorder<double>;
 template class Recorder<long double>;
 template class Recorder<Quad>;

@@ -109,6 +109,11 @@ struct BasicResult {
 
 using Result = BasicResult<double>;
 
+/// The same result in double (for display and for callers that hold doubles): events and
+/// states rounded once, everything else as it is.
+template <typename S>
+Result toDoubleResult(const BasicResult<S>& from);
+
 /// Keeps what Needs asks for, in physical units, and the cost; hands every event to `onEvent`
 /// as it happens (streaming callers store nothing).
 template <typename S>

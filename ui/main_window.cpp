@@ -655,6 +655,11 @@ void MainWindow::showStatus(const SimUpdate& update) {
                 .arg(scientific(trust.horizon));
   }
   if (update.trustPending) text += tr(" · trust: estimating…");
+  if (update.attempt > 0) {
+    text += tr(" · computed in %1: %2")
+                .arg(update.attempt == 1 ? tr("long double") : tr("binary128"))
+                .arg(QString::fromStdString(update.precisionNote));
+  }
   if (update.accuracy) {
     text += tr(" · methods: %1 of %2 settings measured")
                 .arg(update.accuracy->points.size())

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "core/methods/work_precision.h"
 #include "core/simulate.h"
@@ -101,6 +102,12 @@ struct SimUpdate {
   /// the final result, sent before its error estimate; another final update with the same
   /// result and its trust follows (the plots need not wait for the shadow run)
   bool trustPending = false;
+  /// 0: the run as computed in double; 1 or 2: the run again in long double or binary128 from
+  /// its start, because double met a contact it cannot decide (--precision auto's rule). A new
+  /// attempt is a new run for the views: they draw it from the start.
+  int attempt = 0;
+  /// Why the run was raised (the contact double could not decide); empty when it was not.
+  std::string precisionNote;
   std::shared_ptr<const AccuracyProgress> accuracy;  ///< the sweep so far (Accuracy scene)
   /// the map so far (landscape scene); rows below its rowsDone are final
   std::optional<MapProgress> map;

@@ -4,6 +4,7 @@
 
 #include "core/budget.h"
 #include "core/chain.h"
+#include "core/trust.h"
 #include "parallel/tbb_parallel_for.h"
 
 #include <QElapsedTimer>
@@ -11,11 +12,46 @@
 #include <algorithm>
 #include <cstdint>
 #include <mutex>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace grazelab::ui {
 
 namespace {
+
+// --precision auto's rule in the explorer: the run again in S (long double, then binary128)
+// from its start, when double met a contact it cannot decide; with its own error estimate.
+// Nothing when S cannot decide either (and a higher precision is left), or on a stop.
+template <typename S>
+std::optional<std::pair<core::Result, core::Trust>> runRaised(const SimRequest& request,
+                                                              bool lastResort,
+                                                              std::stop_token stop) {
+  using H = core::ShadowScalar<S>;
+  const core::Request& asked = request.request;
+  core::BasicRequest<S> raised;
+  raised.initial = core::convertState<S>(asked.initial);
+  raised.maxContacts = asked.maxContacts;
+  raised.tEnd = S(asked.tEnd);
+  raised.flightSearchPeriods = asked.flightSearchPeriods;
+  raised.flightSearchSteps = asked.flightSearchSteps;
+  raised.needs = asked.needs;
+  raised.stopAtUndecided = !lastResort;
+  core::BasicRequest<H> shadow;
+  shadow.initial = core::convertState<H>(asked.initial);
+  shadow.maxContacts = asked.maxContacts;
+  shadow.tEnd = H(asked.tEnd);
+  shadow.flightSearchPeriods = asked.flightSearchPeriods;
+  shadow.flightSearchSteps = asked.flightSearchSteps;
+  core::TrustMonitor<S> monitor(core::convertModel<H>(request.model), shadow,
+                                core::TrustMode::Auto, stop);
+  raised.onEvent = [&monitor](const core::BasicEvent<S>& event) { monitor.observe(event); };
+  const core::BasicResult<S> result =
+      core::simulate(core::convertModel<S>(request.model), raised, stop);
+  if (result.stop == core::StopReason::Undecided || stop.stop_requested()) return std::nullopt;
+  core::Trust trust = monitor.finish(result);
+  return std::pair{core::toDoubleResult(result), std::move(trust)};
+}
 
 /// The Accuracy scene's sweep, after its exact run: every setting on the same start up to half
 /// a period past the exact run's last contact, measured against the binary128 reference; a
@@ -183,6 +219,7 @@ void SimWorker::run(const SimRequest& request, std::stop_token stop, double chun
   const bool trustAfter = request.request.maxContacts <= kTrustAfterContacts && !request.accuracy;
   std::vector<core::Event> events;
   core::Request primary = request.request;
+  primary.stopAtUndecided = true;  // then the run again in a higher precision (below)
   primary.onEvent = [&monitor, &request, &events, trustAfter](const core::Event& event) {
     if (trustAfter) events.push_back(event);
     else monitor.observe(event);
@@ -224,9 +261,23 @@ void SimWorker::run(const SimRequest& request, std::stop_token stop, double chun
   last.progress = 1.0;
   last.final = true;
   last.request = asked;
-  const bool estimate = simulator.result().stop != core::StopReason::InvalidInput;
+  if (simulator.result().stop == core::StopReason::Undecided && !stop.stop_requested()) {
+    // a contact double cannot tell a graze from an impact: long double, then binary128
+    auto raised = runRaised<long double>(request, false, stop);
+    last.attempt = 1;
+    if (!raised && !stop.stop_requested()) {
+      raised = runRaised<core::Quad>(request, true, stop);
+      last.attempt = 2;
+    }
+    if (raised) {
+      last.result = std::make_shared<const core::Result>(std::move(raised->first));
+      last.trust = std::move(raised->second);
+      last.precisionNote = simulator.result().message;
+    }
+  }
+  const bool estimate = !last.result && simulator.result().stop != core::StopReason::InvalidInput;
   if (estimate && !trustAfter) last.trust = monitor.finish(simulator.result());
-  last.result = std::make_shared<const core::Result>(simulator.takeResult());
+  if (!last.result) last.result = std::make_shared<const core::Result>(simulator.takeResult());
   if (estimate && trustAfter) {
     SimUpdate shown = last;
     shown.trustPending = true;

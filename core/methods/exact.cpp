@@ -14,27 +14,6 @@ namespace grazelab::core::methods {
 namespace {
 
 template <typename S>
-Result toDoubleResult(const BasicResult<S>& from) {
-  Result to;
-  to.events.reserve(from.events.size());
-  for (const BasicEvent<S>& e : from.events) {
-    to.events.push_back({toDouble(e.t), e.type, convertState<double>(e.before),
-                         convertState<double>(e.after)});
-  }
-  to.poincare = from.poincare;
-  to.freeFlights = from.freeFlights;
-  to.samples = from.samples;
-  to.samplesTruncated = from.samplesTruncated;
-  to.tFinal = toDouble(from.tFinal);
-  to.final = convertState<double>(from.final);
-  to.initialEnergy = toDouble(from.initialEnergy);
-  to.cost = from.cost;
-  to.stop = from.stop;
-  to.message = from.message;
-  return to;
-}
-
-template <typename S>
 MethodRun runIn(const Task& task, const WorkBudget& budget, std::stop_token stop) {
   const auto started = std::chrono::steady_clock::now();
   BasicRequest<S> request;

@@ -15,8 +15,10 @@
 #include <QToolTip>
 #include <QXYSeries>
 
+#include <optional>
 #include <random>
 
+#include "core/chain.h"
 #include "core/orbits.h"
 #include "tests/ui/explorer_test_support.h"
 #include "core/modes.h"
@@ -286,6 +288,29 @@ class ExplorerTest : public QObject {
     QVERIFY(m_window->displayed()->trust);
     QVERIFY(m_window->statusText().contains(QStringLiteral("trust: ok")));
     QVERIFY(!m_window->statusText().contains(QStringLiteral("estimating")));
+  }
+
+  // A touch double cannot decide (GLOM1 pushed by 3e-9: the crossing at T1 rises ~1e-17 above
+  // the stop) is decided again in a higher precision by the worker, as --precision auto does:
+  // impacts, not grazings, and the views are told to start over.
+  void theWorkerRaisesARunWhoseTouchDoubleCannotDecide() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("near-grazing")));
+    QVERIFY(waitForLatestFinal(*m_window));
+    SimRequest request = *m_window->displayed()->request;
+    const grazelab::core::Chain<double> chain = *grazelab::core::makeChain(request.model).chain;
+    request.request.initial = grazelab::core::gloData(chain, 0.0);
+    request.request.initial.v2 -= 3e-9;
+    request.request.maxContacts = 20;
+    std::optional<SimUpdate> last;
+    SimWorker::run(request, {}, 0.002, [&](const SimUpdate& update) {
+      if (update.final && !update.trustPending) last = update;
+    });
+    QVERIFY(last);
+    QVERIFY2(last->attempt > 0, "not raised");
+    QCOMPARE(last->result->cost.impacts, std::int64_t(20));
+    QCOMPARE(last->result->cost.undecidedTouches, std::int64_t(0));
+    QVERIFY(last->trust);
+    QVERIFY(QString::fromStdString(last->precisionNote).contains(QStringLiteral("contact 1")));
   }
 
   // The worker hands over only what is new; the pieces, appended, are the whole run.

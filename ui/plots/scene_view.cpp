@@ -15,12 +15,14 @@ namespace grazelab::ui {
 
 bool RunProgress::startsOver(const SimUpdate& update) {
   const core::Result& result = *update.result;
-  const bool grown = runId == update.id && events <= result.events.size() &&
+  const bool grown = runId == update.id && attempt == update.attempt &&
+                     events <= result.events.size() &&
                      poincare <= result.poincare.size() &&
                      freeFlights <= result.freeFlights.size() && samples <= result.samples.size();
   if (grown) return false;
   *this = RunProgress{};
   runId = update.id;
+  attempt = update.attempt;
   return true;
 }
 

@@ -31,6 +31,7 @@ class SceneView {
 /// request id: the run grown) hands it only the items after them.
 struct RunProgress {
   std::uint64_t runId = 0;  ///< 0: nothing taken yet
+  int attempt = 0;          ///< SimUpdate::attempt of the run taken
   std::size_t events = 0;
   std::size_t poincare = 0;
   std::size_t freeFlights = 0;
