@@ -647,6 +647,12 @@ void MainWindow::showStatus(const SimUpdate& update) {
                      .arg(cost.wallSeconds * 1e3, 0, 'f', 1)
                      .arg(scientific(cost.maxRelEnergyDrift))
                      .arg(scientific(cost.maxContactResidual));
+  // a run raised to a higher precision says so early in the line; why, in the tooltip
+  m_status->setToolTip(QString::fromStdString(update.precisionNote));
+  if (update.attempt > 0) {
+    const int counts = int(text.indexOf(QStringLiteral(" · ")));
+    text.insert(counts, tr(" in %1").arg(update.attempt == 1 ? tr("long double") : tr("binary128")));
+  }
   if (update.trust) {
     const core::Trust& trust = *update.trust;
     text += tr(" · trust: %1 (error ≈ %2, holds 1e-6 until t ≈ %3)")
@@ -655,11 +661,7 @@ void MainWindow::showStatus(const SimUpdate& update) {
                 .arg(scientific(trust.horizon));
   }
   if (update.trustPending) text += tr(" · trust: estimating…");
-  if (update.attempt > 0) {
-    text += tr(" · computed in %1: %2")
-                .arg(update.attempt == 1 ? tr("long double") : tr("binary128"))
-                .arg(QString::fromStdString(update.precisionNote));
-  }
+
   if (update.accuracy) {
     text += tr(" · methods: %1 of %2 settings measured")
                 .arg(update.accuracy->points.size())
