@@ -36,7 +36,7 @@ ExactStepper<S>::ExactStepper(const Chain<S>& chain, const S& scaledGap)
 template <typename S>
 Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
                                  const S& searchHorizon, std::stop_token stop,
-                                 std::int64_t searchSteps) {
+                                 std::int64_t searchSteps, bool stopAtUndecided) {
   using std::min;
   Step<S> step;
   step.segmentStart = state.tau;
@@ -120,6 +120,12 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
 
   const S duration = contact.time.value();
   if (state.tau + duration > tauEnd) return endAt(tauEnd, Step<S>::Kind::End);
+  if (contact.undecided && stopAtUndecided) {
+    step.kind = Step<S>::Kind::Undecided;
+    step.tau = state.tau + duration;
+    step.before = step.after = x;
+    return step;
+  }
 
   S u1Residual = 0;
   BasicState<S> arrival = flight.at(contact.time, &u1Residual);

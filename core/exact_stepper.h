@@ -50,6 +50,8 @@ struct Step {
     NoFurtherContact,  ///< resonant: the free motion never reaches the stop
     SearchLimit,       ///< detuned: no contact within the search horizon
     SearchBudget,      ///< detuned: the search ran out of steps before the horizon
+    Undecided,         ///< a contact its precision cannot decide, and the caller asked to stop
+                       ///< there: the state is left where the flight began, `tau` is the contact's
     Cancelled,         ///< the stop token ended a long search
   };
   Kind kind = Kind::Event;
@@ -78,8 +80,11 @@ class ExactStepper {
 
   /// Advances `state` to the next event, or to `tauEnd` if it comes first. `searchHorizon`
   /// bounds a detuned flight's search (scaled time), `searchSteps` the steps of its march.
+  /// With `stopAtUndecided`, a contact whose class the precision cannot decide is not taken:
+  /// the step is Kind::Undecided and the state stays as it was.
   Step<S> advance(IntegrationState<S>& state, const S& tauEnd, const S& searchHorizon,
-                  std::stop_token stop = {}, std::int64_t searchSteps = kDefaultSearchSteps);
+                  std::stop_token stop = {}, std::int64_t searchSteps = kDefaultSearchSteps,
+                  bool stopAtUndecided = false);
 
   /// The state at absolute scaled time `tau` inside the motion of the last step.
   BasicState<S> segmentAt(const S& tau) const;

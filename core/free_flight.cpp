@@ -170,11 +170,9 @@ void Flight<S>::fillTaylor(const Anchor& anchor) const {
   d[1] = {anchor.state.v1, anchor.state.v2};
   // x1'' = -(p x1 + q (x1 - x2)), x2'' = w (x1 - x2): the spring stretch stays one difference
   // (at the start, the exact one)
-  for (int n = 2; n < m_taylorOrder + 2; ++n) {
-    d[n] = n == 2 && &anchor == &m_anchors[0]
-               ? taylorRowOfStretch(chain, anchor.state.u1, m_startStretch)
-               : nextTaylorRow(chain, d[n - 2]);
-  }
+  d[2] = &anchor == &m_anchors[0] ? taylorRowOfStretch(chain, anchor.state.u1, m_startStretch)
+                                   : nextTaylorRow(chain, d[0]);
+  for (int n = 3; n < m_taylorOrder + 2; ++n) d[n] = nextTaylorRow(chain, d[n - 2]);
 }
 
 template <typename S>

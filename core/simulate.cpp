@@ -114,11 +114,11 @@ bool BasicSimulator<S>::advance(std::int64_t contactBudget, std::stop_token stop
     } else if (m_state.tau >= m_tauEnd) {
       finish(StopReason::TimeLimit, m_request.tEnd, m_state.x);
     } else {
-      const IntegrationState<S> before = m_state;
       const Step<S> step = m_stepper->advance(m_state, m_tauEnd, m_searchHorizon, stop,
-                                              m_request.flightSearchSteps);
-      if (step.kind == Step<S>::Kind::Event && step.undecided && m_request.stopAtUndecided) {
-        m_state = before;
+                                              m_request.flightSearchSteps,
+                                              m_request.stopAtUndecided);
+      if (step.kind == Step<S>::Kind::Undecided) {
+        // the state is where the flight began: a higher precision goes on from the input
         m_result.message = "contact " + std::to_string(cost.contacts + 1) + " (t = " +
                            formatScalar(m_scale.toPhysicalTime(step.tau)) +
                            ") touches the stop within rounding: " +
@@ -163,6 +163,8 @@ bool BasicSimulator<S>::advance(std::int64_t contactBudget, std::stop_token stop
         case Step<S>::Kind::Cancelled:
           finish(StopReason::Cancelled, lastEventTime(), m_state.x);
           break;
+        case Step<S>::Kind::Undecided:
+          break;  // ended above
       }
     }
   }
