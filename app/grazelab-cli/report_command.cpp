@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "cli_input.h"
 #include "report_internal.h"
@@ -140,7 +141,35 @@ std::optional<ReportInput> parseReportInput(const QCommandLineParser& parser, QS
 }
 
 
-QByteArray resultsCsv(const std::vector<WorkPrecisionPoint>& points) {
+// The errors are differences of runs handed back in double: below about one rounding of double
+// (the state, relative to its scales) or of t_end (contact times, in T2) the comparison cannot see
+// them, and an error of exactly 0 would claim more than it knows. Such an error is written as
+// that bound, and the row's reason says so.
+struct Resolution {
+  double state = 0;
+  double contactTime = 0;
+};
+
+Resolution comparisonResolution(double tEnd, double period) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  return {eps, period > 0 ? eps * std::max(1.0, tEnd / period) : eps};
+}
+
+QByteArray resultsCsv(std::vector<WorkPrecisionPoint> points, const Resolution& resolution) {
+  for (WorkPrecisionPoint& p : points) {
+    core::methods::Errors& e = p.errors;
+    const bool below = (e.state < resolution.state) || (e.contactTime < resolution.contactTime) ||
+                       (e.impactSpeed < resolution.state);
+    if (!below) continue;
+    e.state = std::max(e.state, resolution.state);
+    e.contactTime = std::max(e.contactTime, resolution.contactTime);
+    e.impactSpeed = std::max(e.impactSpeed, resolution.state);
+    const std::string note = "errors below the comparison's resolution (double: " +
+                             scientific(resolution.state, 2).toStdString() + " in state, " +
+                             scientific(resolution.contactTime, 2).toStdString() +
+                             " T2 in contact times) are written as that bound";
+    p.reason = p.reason.empty() ? note : p.reason + "; " + note;
+  }
   QByteArray csv =
       "method,parameter,value,seconds_min,seconds_median,runs,state_error,contact_time_error,"
       "impact_speed_error,missed_contacts,extra_contacts,energy_drift,status,reason\n";
@@ -242,7 +271,7 @@ int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& e
     all.push_back(point);
   }
 
-  const QByteArray csv = resultsCsv(all);
+  const QByteArray csv = resultsCsv(all, comparisonResolution(task.tEnd, reference.period));
   const QByteArray md =
       reportMarkdown(*input, end, reference, *methods, byMethod, timing, quick);
   const QString dir = *directory;

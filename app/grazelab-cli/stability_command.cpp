@@ -125,10 +125,14 @@ int runStability(const QCommandLineParser& parser, std::stop_token stop, QString
           QString::fromStdString(row.description);
     const CaseHorizon& h = horizons[row.name];
     if (h.shortened) {
-      md += QStringLiteral(" — compared up to t = %1 (%2 T2), the predictability horizon of "
-                           "its start (the exact double run's error reaches 1e-6 there)")
+      md += QStringLiteral(" — compared up to t = %1 (%2 T2), before the predictability horizon "
+                           "t = %3 of its start, where the exact double run's error reaches 1e-6 "
+                           "(a long-double shadow of the whole run, as `simulate --trust full`; "
+                           "the default `--trust auto` stops shadowing when it gets costly and "
+                           "extrapolates, so its horizon can differ)")
                 .arg(h.tEnd, 0, 'g', 4)
-                .arg(h.tEnd / h.period, 0, 'g', 3);
+                .arg(h.tEnd / h.period, 0, 'g', 3)
+                .arg(h.horizon, 0, 'g', 4);
     }
     md += "\n";
   }

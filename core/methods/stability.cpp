@@ -333,6 +333,7 @@ CaseHorizon runStabilityCase(const StabilityCase& row, const std::vector<MethodK
   withEvents.tEnd = end.tEnd;
   horizon.tEnd = end.tEnd;
   horizon.shortened = end.shortened;
+  horizon.horizon = end.horizon;
   horizon.estimatedError = trust.stateError;
   WorkBudget referenceBudget = budget;
   referenceBudget.maxSeconds = std::max(budget.maxSeconds, 60.0);

@@ -76,6 +76,7 @@ struct CaseHorizon {
   double period = 0;     ///< T2 [time]
   bool shortened = false;  ///< the predictability horizon came before kCasePeriods T2
   double estimatedError = 0;  ///< the trust estimate of the exact double run at tEnd
+  double horizon = 0;    ///< the predictability horizon of the start [time] (full shadow run)
 };
 
 /// Runs one case with every method (`methods`), calling `onCell` as each cell finishes.
