@@ -9,6 +9,7 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -139,6 +140,11 @@ struct AutoRun {
   long double lastTime = 0;    ///< time of the last event written
   std::vector<std::string> escalations;
   std::string mismatch;        ///< the raised run disagrees with an event already written
+  // the error estimate of the events written by a lower precision (its shadow, up to the raise):
+  // they stay on the output, so the final estimate is at least theirs
+  std::int64_t writtenBeforeRaise = 0;
+  double writtenStateError = 0;
+  double writtenTimeError = 0;
 };
 // simulate<S> stopped at a contact S cannot decide: run again one precision up
 constexpr int kRaisePrecision = -1;
@@ -235,6 +241,12 @@ int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher,
   progress.clear();
   if (simulator.result().stop == core::StopReason::Undecided) {
     autoRun->escalations.push_back("from " + precisionName + ": " + simulator.result().message);
+    if (monitor && autoRun->written > alreadyWritten) {
+      const core::Trust written = monitor->finish(simulator.result());
+      autoRun->writtenBeforeRaise = autoRun->written;
+      autoRun->writtenStateError = std::max(autoRun->writtenStateError, written.stateError);
+      autoRun->writtenTimeError = std::max(autoRun->writtenTimeError, written.timeError);
+    }
     return kRaisePrecision;
   }
   core::Trust trust;
@@ -243,6 +255,22 @@ int simulate(const QCommandLineParser& parser, InterruptWatcher& watcher,
   } else {
     trust.reason = noShadow.empty() ? "not estimated (--trust off)" : noShadow;
     core::accountForUndecidedTouches(trust, simulator.result());
+  }
+  if (autoRun && autoRun->writtenBeforeRaise > 0 && trust.verdict != core::Verdict::Unchecked) {
+    trust.stateError = std::max(trust.stateError, autoRun->writtenStateError);
+    trust.timeError = std::max(trust.timeError, autoRun->writtenTimeError);
+    const double worst = std::max(trust.stateError, trust.timeError);
+    if (trust.verdict == core::Verdict::Ok && worst > core::kOkTolerance) {
+      trust.verdict = worst > core::kHorizonTolerance ? core::Verdict::Unreliable
+                                                      : core::Verdict::Degraded;
+    }
+    char note[160];
+    std::snprintf(note, sizeof note,
+                  "events 1 to %lld were written before the raise, in a lower precision "
+                  "(estimated error %.2g)",
+                  static_cast<long long>(autoRun->writtenBeforeRaise),
+                  std::max(autoRun->writtenStateError, autoRun->writtenTimeError));
+    trust.reason = std::string(note) + "; " + trust.reason;
   }
   if (autoRun && !autoRun->mismatch.empty()) {
     trust.verdict = core::Verdict::Unreliable;

@@ -122,6 +122,16 @@ import json; d=json.load(open('$out'))
 assert d['contacts']['undecided_touches'] > 0 and d['trust']['verdict'] != 'ok', d['trust']
 assert 'contact 1' in d['trust']['reason'], d['trust']['reason']" || fail "undecided verdict"
 fi
+# events written in long double before a raise to binary128 keep long double's error (event 1
+# here is 1.6e-12 T2 off the 50-digit reference): the estimate covers them
+if expect_ok simulate --glo 0 --perturb 0,0,0,-7e-9 --contacts 30 --branch lower; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['precision']['used'] == 'quad', d['precision']
+assert d['trust']['estimated_time_error'] >= 1e-12, d['trust']
+assert 'written before the raise' in d['trust']['reason'], d['trust']['reason']" \
+    || fail "estimate of events written before a raise"
+fi
 # an exhausted search is its own stop, never 'no contact'
 if expect_ok simulate --k2 1e-6 --state 0,0.999,0,0 --contacts 1 --search-steps 10; then
   python3 -c "
