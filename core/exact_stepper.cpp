@@ -66,7 +66,7 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
       step.before = step.after = x;
       return step;
     }
-    m_stuck.emplace(m_chain, m_gap, x);
+    m_stuck.emplace(m_chain, m_gap, x, state.u1Residual);
     const S release = m_stuck->releaseTime();
     if (state.tau + release > tauEnd) {
       step.kind = Step<S>::Kind::End;

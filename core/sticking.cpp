@@ -8,13 +8,14 @@
 namespace grazelab::core {
 
 template <typename S>
-StuckMotion<S>::StuckMotion(const Chain<S>& chain, const S& gap, const BasicState<S>& start)
+StuckMotion<S>::StuckMotion(const Chain<S>& chain, const S& gap, const BasicState<S>& start,
+                            const S& u1Residual)
     : m_gap(gap), m_start(start), m_omega(chain.stuckOmega) {
   using std::atan;
   using std::sqrt;
   // centre = kappa delta / (1 + kappa), so delta - centre = delta / (1 + kappa) exactly-ish
   const S gapAboveCentre = gap / (S(1) + chain.kappa);
-  const S excess = start.u1 - gap;  // e0 >= 0 for a pressed state
+  const S excess = (start.u1 - gap) + u1Residual;  // e0 >= 0 for a pressed state
   m_amplitude = excess + gapAboveCentre;
   m_rate = start.v1 / m_omega;
   // with z = tan(W t / 2): (excess) (1 + z^2) - 2 A z^2 + 2 B z = 0, i.e.

@@ -18,8 +18,10 @@ namespace grazelab::core {
 template <typename S>
 class StuckMotion {
  public:
-  /// Precondition: pressedOnStop(start, gap).
-  StuckMotion(const Chain<S>& chain, const S& gap, const BasicState<S>& start);
+  /// Precondition: pressedOnStop(start, gap, u1Residual). `u1Residual` is exact x1 minus
+  /// start.u1 (a pressing below the rounding of u1 lasts accordingly short).
+  StuckMotion(const Chain<S>& chain, const S& gap, const BasicState<S>& start,
+              const S& u1Residual = S(0));
 
   /// State tau after the start of the phase (x2 = delta, y2 = 0 throughout).
   BasicState<S> at(const S& tau) const;
