@@ -144,7 +144,9 @@ PointRun<S> runPoint(const BasicModel<S>& model, const BasicState<S>& start,
     BasicRequest<H> shadow;
     shadow.initial = convertState<H>(start);
     shadow.maxContacts = contacts;
-    monitor.emplace(convertModel<H>(model), shadow, TrustMode::Auto, stop);
+    // a map's parameters are the numbers it was given (no decimal was rounded to form them)
+    monitor.emplace(convertModel<H>(model), shadow, TrustMode::Auto, stop,
+                    ExactParameters{true, true, true, true, true});
   }
   request.onEvent = [&run, &monitor](const BasicEvent<S>& event) {
     if (event.type == EventType::Impact && std::isnan(run.firstImpact)) {

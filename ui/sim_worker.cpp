@@ -43,8 +43,10 @@ std::optional<std::pair<core::Result, core::Trust>> runRaised(const SimRequest& 
   shadow.tEnd = H(asked.tEnd);
   shadow.flightSearchPeriods = asked.flightSearchPeriods;
   shadow.flightSearchSteps = asked.flightSearchSteps;
+  // the explorer's parameters are the doubles of its panel, exact as they stand
   core::TrustMonitor<S> monitor(core::convertModel<H>(request.model), shadow,
-                                core::TrustMode::Auto, stop);
+                                core::TrustMode::Auto, stop,
+                                core::ExactParameters{true, true, true, true, true});
   raised.onEvent = [&monitor](const core::BasicEvent<S>& event) { monitor.observe(event); };
   const core::BasicResult<S> result =
       core::simulate(core::convertModel<S>(request.model), raised, stop);
