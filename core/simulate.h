@@ -38,6 +38,20 @@ struct BasicRequest {
 
 using Request = BasicRequest<double>;
 
+/// The same request in another precision (the start widened exactly); no onEvent.
+template <typename To, typename From>
+BasicRequest<To> convertRequest(const BasicRequest<From>& from) {
+  BasicRequest<To> to;
+  to.initial = convertState<To>(from.initial);
+  to.maxContacts = from.maxContacts;
+  to.tEnd = To(from.tEnd);
+  to.flightSearchPeriods = from.flightSearchPeriods;
+  to.flightSearchSteps = from.flightSearchSteps;
+  to.stopAtUndecided = from.stopAtUndecided;
+  to.needs = from.needs;
+  return to;
+}
+
 /// A run in pieces, for callers that stream partial results: each advance() does at most a
 /// given number of contacts; the result grows in place. The exact stepper moves a small
 /// IntegrationState; the recorder keeps what the request needs (DESIGN.md "Inside core").

@@ -28,21 +28,9 @@ std::optional<std::pair<core::Result, core::Trust>> runRaised(const SimRequest& 
                                                               bool lastResort,
                                                               std::stop_token stop) {
   using H = core::ShadowScalar<S>;
-  const core::Request& asked = request.request;
-  core::BasicRequest<S> raised;
-  raised.initial = core::convertState<S>(asked.initial);
-  raised.maxContacts = asked.maxContacts;
-  raised.tEnd = S(asked.tEnd);
-  raised.flightSearchPeriods = asked.flightSearchPeriods;
-  raised.flightSearchSteps = asked.flightSearchSteps;
-  raised.needs = asked.needs;
+  core::BasicRequest<S> raised = core::convertRequest<S>(request.request);
   raised.stopAtUndecided = !lastResort;
-  core::BasicRequest<H> shadow;
-  shadow.initial = core::convertState<H>(asked.initial);
-  shadow.maxContacts = asked.maxContacts;
-  shadow.tEnd = H(asked.tEnd);
-  shadow.flightSearchPeriods = asked.flightSearchPeriods;
-  shadow.flightSearchSteps = asked.flightSearchSteps;
+  const core::BasicRequest<H> shadow = core::convertRequest<H>(request.request);
   // the explorer's parameters are the doubles of its panel, exact as they stand
   core::TrustMonitor<S> monitor(core::convertModel<H>(request.model), shadow,
                                 core::TrustMode::Auto, stop,
@@ -207,11 +195,7 @@ void SimWorker::run(const SimRequest& request, std::stop_token stop, double chun
                     const std::function<void(const SimUpdate&)>& report) {
   const auto asked = std::make_shared<const SimRequest>(request);
   // the error estimate: a long double shadow of the same run, in lockstep, while it is cheap
-  core::BasicRequest<long double> shadowRequest;
-  shadowRequest.initial = core::convertState<long double>(request.request.initial);
-  shadowRequest.maxContacts = request.request.maxContacts;
-  shadowRequest.tEnd = request.request.tEnd;
-  shadowRequest.flightSearchPeriods = request.request.flightSearchPeriods;
+  core::BasicRequest<long double> shadowRequest = core::convertRequest<long double>(request.request);
   core::TrustMonitor<double> monitor(core::convertModel<long double>(request.model),
                                      shadowRequest, core::TrustMode::Auto, stop);
   // Up to this many contacts the shadow runs after the result is shown, on the run's events
