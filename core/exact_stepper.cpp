@@ -120,16 +120,19 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
 
   const S duration = contact.time.value();
   if (state.tau + duration > tauEnd) return endAt(tauEnd, Step<S>::Kind::End);
-  if (contact.undecided && stopAtUndecided) {
+  S u1Residual = 0;
+  BasicState<S> arrival = flight.at(contact.time, &u1Residual);
+  arrival.u2 = m_gap;
+  // a crossing whose arrival speed is below the range of S (it underflows to 0) cannot be told
+  // from a touch in S: an impact of speed 1e-450 after a release needs binary128's exponents
+  const bool undecided =
+      contact.undecided || (contact.kind == ContactKind::Crossing && !(arrival.v2 > 0));
+  if (undecided && stopAtUndecided) {
     step.kind = Step<S>::Kind::Undecided;
     step.tau = state.tau + duration;
     step.before = step.after = x;
     return step;
   }
-
-  S u1Residual = 0;
-  BasicState<S> arrival = flight.at(contact.time, &u1Residual);
-  arrival.u2 = m_gap;
   // restoring the energy moves the stored u1 on purpose; the residual is what is below it
   step.flightEnergyError = restoreEnergy(m_chain, arrival, scaledEnergy(m_chain, x));
   const ContactOutcome<S> outcome =
@@ -140,7 +143,7 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
   step.before = outcome.before;
   step.after = outcome.after;
   step.residual = contact.residual;
-  step.undecided = contact.undecided;
+  step.undecided = undecided;
   step.endsFlight = true;
   step.flightFromStop = flight.startsOnStop();
   step.flightDuration = contact.time;

@@ -117,6 +117,13 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
     orbit.reason = "the free flight from the data never comes back to the stop";
     return orbit;
   }
+  if (contact.undecided && abs(arrival - tau) > S(1e-9) * max(tau, twoPi<S>())) {
+    orbit.reason = "the free flight from the data touches the stop at t = " +
+                   formatScalar(S(arrival / chain.omegaSlow)) + " within the rounding of " +
+                   std::string(toString(precisionOf<S>())) +
+                   ": whether it returns first at T is not decided (--precision auto goes higher)";
+    return orbit;
+  }
   if (abs(arrival - tau) > S(1e-9) * max(tau, twoPi<S>())) {
     orbit.reason = "the free flight from the data first comes back to the stop at t = " +
                    formatScalar(S(arrival / chain.omegaSlow)) + ", not at the period T = " +

@@ -25,7 +25,7 @@ struct BasicRequest {
   double flightSearchPeriods = 1000;
   /// Detuned chains: the most march steps one flight's contact search may take. Running out
   /// ends the run with StopReason::SearchBudget (never "no contact": the search did not decide).
-  std::int64_t flightSearchSteps = kDefaultSearchSteps;
+  std::int64_t flightSearchSteps = defaultSearchSteps<S>();
   /// Stop, with StopReason::Undecided and the state before that flight, at the first contact
   /// whose class (touch or crossing) the precision cannot decide: --precision auto then runs
   /// again in a higher one. Off: such a contact is taken as a touch and counted

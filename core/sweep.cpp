@@ -220,6 +220,10 @@ bool summarizePoint(const SweepSpec& spec, const Model& given, const PointValues
   }
   const std::optional<BasicState<S>> start = pointStart(spec, *formed.chain, values);
   if (!start) {
+    // a 1IPP start refused in S may be one whose first return S cannot decide: ask one up
+    const bool onePeriodic =
+        spec.start && spec.start->kind == StartSpec<double>::Kind::OnePeriodic;
+    if (onePeriodic && stopAtUndecided) return false;
     summary = invalidPoint();
     return true;
   }

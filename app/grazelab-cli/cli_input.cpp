@@ -71,8 +71,9 @@ void addOptions(QCommandLineParser& parser) {
       {"contacts", "Stop after N contacts (default 100 when no --t-end).", "N"},
       {"t-end", "Stop at time T (it also bounds the contact search of a detuned chain).", "T"},
       {"search-steps", "Detuned chains: the most steps one flight's contact search may take "
-                       "(default 10000000, about a second in double); running out stops the run "
-                       "with stop_reason search-budget, never 'no contact'.", "N"},
+                       "(default: about a second's worth, 10000000 in double, 3000000 in long, "
+                       "300000 in quad); running out stops the run with stop_reason "
+                       "search-budget, never 'no contact'.", "N"},
       {"format", "Output: json (default), jsonl (JSON Lines), csv or summary. json, jsonl and "
                  "csv stream: memory stays bounded and an interrupt leaves complete records.",
        "json|jsonl|csv|summary", "json"},

@@ -99,6 +99,24 @@ TEST(Decisions, AU1RoundedOntoTheStopDoesNotInventMicroImpacts) {
   }
 }
 
+TEST(Decisions, AnImpactWhoseSpeedUnderflowsIsUndecidedNotAGraze) {
+  // released from the stop with v1 = -1e-150, the motion crosses the stop 4e-150 before T2 and
+  // impacts at ~(8/3) 1e-450: below double's range, so double must not call it a grazing
+  const Model model = testing::resonantChain(0.5);
+  Request request;
+  request.initial = {1, 1, 1e-150, 0};
+  request.maxContacts = 4;
+  request.stopAtUndecided = true;
+  const Result inDouble = simulate(model, request);
+  EXPECT_EQ(inDouble.stop, StopReason::Undecided) << inDouble.message;
+  EXPECT_EQ(inDouble.cost.grazings, 0);
+  BasicRequest<long double> wide = convertRequest<long double>(request);
+  const BasicResult<long double> inLong = simulate(convertModel<long double>(model), wide);
+  ASSERT_EQ(inLong.stop, StopReason::ContactLimit) << inLong.message;
+  EXPECT_EQ(inLong.cost.impacts, 3);
+  EXPECT_EQ(inLong.cost.grazings, 0);
+}
+
 TEST(Decisions, TimesDoNotDriftOverAMillionContacts) {
   const Model model = testing::resonantChain(0.5);
   const Chain<double> chain = *makeChain(model).chain;
@@ -156,6 +174,18 @@ TEST(Decisions, OnePeriodicOrbitsCloseToT2AreNotTakenForMultiplesOfT1) {
   EXPECT_EQ(nearT2.reason.find("multiple"), std::string::npos) << nearT2.reason;
   const OnePeriodicOrbit<double> tiny = onePeriodicOrbit(chain, 1e-300);
   EXPECT_EQ(tiny.reason.find("multiple"), std::string::npos) << tiny.reason;
+}
+
+TEST(Decisions, AnAdmissibilityDoubleCannotDecideSaysSoAndLongDoubleDecides) {
+  // 3e-9 below T1 the flight touches the stop near T1 within double's rounding: not "the first
+  // return is at 4.44288294", but undecided; long double finds the return at T
+  const Model model = testing::resonantChain(0.5);
+  const OnePeriodicOrbit<double> inDouble = onePeriodicOrbit(*makeChain(model).chain, 4.44288293);
+  EXPECT_FALSE(inDouble.admissible);
+  EXPECT_NE(inDouble.reason.find("not decided"), std::string::npos) << inDouble.reason;
+  const OnePeriodicOrbit<long double> inLong =
+      onePeriodicOrbit(*makeChain(convertModel<long double>(model)).chain, 4.44288293L);
+  EXPECT_TRUE(inLong.admissible) << inLong.reason;
 }
 
 }  // namespace
