@@ -111,9 +111,15 @@ const typename Flight<S>::Anchor& Flight<S>::newAnchor(long long periods) const 
   Anchor& cached = m_anchors[1];
   using std::round;
   const Anchor& origin = m_anchors[0];
-  // the fast phase slips by 2 pi k (w1/w2 - 2) per k slow periods
-  S slip = S(periods) * m_chain->detuning;
-  slip -= round(slip);
+  // the fast phase slips by 2 pi k (w1/w2 - 2) per k slow periods; k times the detuning is
+  // formed exactly (its rounding by fma) before the whole turns are taken off, so that the slip
+  // keeps full relative precision however many periods a flight lasts (its rounding grew with k
+  // and, the same in every shadow of the same precision, stayed out of the error estimate)
+  using std::fma;
+  const S turns = S(periods);
+  const S product = turns * m_chain->detuning;
+  const S productError = fma(turns, m_chain->detuning, S(-product));
+  const S slip = (product - round(product)) + productError;
   S sine, cosineMinusOne;
   phaseOf(twoPi<S>() * slip, sine, cosineMinusOne);
   const S dc = origin.c[0] * cosineMinusOne + origin.a[0] * sine;

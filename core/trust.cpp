@@ -92,17 +92,24 @@ TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicRequest<H>&
     // state, and of the chain (a mass ratio near 9/16 amplifies its rounding ~1e7 in the
     // designed k2; m2/m1 is nudged down, toward the feasible side of the design)
     using std::abs;
-    const H eps = epsilon<H>() / H(2);  // the unit roundoff: the most a read can be off
+    // a read is off by at most half an ulp, but a nudge that small is undone by the roundings
+    // that follow (x (1 + 2^-113) rounds back to x; k2 * 15 / 15 rounds back to k2): the shadow
+    // then had the run's own chain and missed its dominant error (a detuned chain amplifying
+    // k2/k1's rounding to 6e-16 T2 in 20 contacts, estimated 1e-18). Four ulps survive them.
+    // (the chain's parameters). The state keeps the half-ulp nudge: its rounding mostly stays,
+    // and a whole ulp off a periodic orbit (1IPP) drifted 1000 times further than the run did
+    const H eps = H(4) * epsilon<H>();
+    const H stateEps = epsilon<H>() / H(2);
     const bool onStop = x.u2 == shadowModel.gap;
     if (!exact.m1) shadowModel.m1 += shadowModel.m1 * eps;
     if (!exact.m2) shadowModel.m2 -= shadowModel.m2 * eps;
     if (!exact.k1) shadowModel.k1 += shadowModel.k1 * eps;
     if (!exact.k2) shadowModel.k2 -= shadowModel.k2 * eps;
     if (!exact.gap) shadowModel.gap += shadowModel.gap * eps;
-    x.u1 += abs(x.u1) * eps;
-    x.u2 = onStop ? shadowModel.gap : H(x.u2 - abs(x.u2) * eps);
-    x.v1 -= x.v1 * eps;
-    x.v2 += x.v2 * eps;
+    x.u1 += abs(x.u1) * stateEps;
+    x.u2 = onStop ? shadowModel.gap : H(x.u2 - abs(x.u2) * stateEps);
+    x.v1 -= x.v1 * stateEps;
+    x.v2 += x.v2 * stateEps;
     shadowRequest.tEnd = shadowRequest.tEnd / m_timeFactor;
   }
   shadowRequest.needs = Needs{};
