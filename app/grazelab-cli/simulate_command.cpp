@@ -9,8 +9,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -83,17 +85,19 @@ int simulateIn(const QCommandLineParser& parser, core::TrustMode trustMode, Auto
                std::stop_token stop, QString& error) {
   constexpr bool kTopPrecision = std::is_same_v<S, core::Quad>;
   const std::string precisionName(core::toString(core::precisionOf<S>()));
-  auto parsed = parseRun<S>(parser);
-  if (!parsed.value) {
-    // a chain or start beyond this precision's reach (its refusal names --precision): auto
-    // goes higher
-    if (autoRun && !kTopPrecision && !autoRun->begun && parsed.error.contains("--precision")) {
-      autoRun->escalations.push_back("from " + precisionName + ": " + parsed.error.toStdString());
+  // a refusal that names --precision (a chain or start beyond this precision's reach): auto
+  // goes higher before anything is written; any other is the answer
+  auto refused = [&](const std::string& message) {
+    if (autoRun && !kTopPrecision && !autoRun->begun &&
+        message.find("--precision") != std::string::npos) {
+      autoRun->escalations.push_back("from " + precisionName + ": " + message);
       return kRaisePrecision;
     }
-    error = parsed.error;
+    error = QString::fromStdString(message);
     return kExitInvalidInput;
-  }
+  };
+  auto parsed = parseRun<S>(parser);
+  if (!parsed.value) return refused(parsed.error.toStdString());
   RunInput<S>& run = *parsed.value;
   run.request.stopAtUndecided = autoRun != nullptr && !kTopPrecision;
   RunWriter<S> writer(run, stdout, autoRun ? std::string("auto") : precisionName);
@@ -133,15 +137,7 @@ int simulateIn(const QCommandLineParser& parser, core::TrustMode trustMode, Auto
   };
   core::BasicSimulator<S> simulator(run.model.model, run.request);
   if (simulator.result().stop == core::StopReason::InvalidInput) {
-    // a chain beyond this precision's reach (its refusal names --precision): auto goes higher
-    const std::string& message = simulator.result().message;
-    if (autoRun && !kTopPrecision && !autoRun->begun &&
-        message.find("--precision") != std::string::npos) {
-      autoRun->escalations.push_back("from " + precisionName + ": " + message);
-      return kRaisePrecision;
-    }
-    error = QString::fromStdString(message);
-    return kExitInvalidInput;
+    return refused(simulator.result().message);
   }
   if (!core::isFinite(simulator.result().initialEnergy)) {
     if (autoRun && !kTopPrecision) {
