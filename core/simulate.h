@@ -38,7 +38,8 @@ struct BasicRequest {
 
 using Request = BasicRequest<double>;
 
-/// The same request in another precision (the start widened exactly); no onEvent.
+/// The same request in another precision (the start widened exactly); no onEvent. A search
+/// budget left at its default becomes the default of the new precision (about a second's worth).
 template <typename To, typename From>
 BasicRequest<To> convertRequest(const BasicRequest<From>& from) {
   BasicRequest<To> to;
@@ -46,7 +47,9 @@ BasicRequest<To> convertRequest(const BasicRequest<From>& from) {
   to.maxContacts = from.maxContacts;
   to.tEnd = To(from.tEnd);
   to.flightSearchPeriods = from.flightSearchPeriods;
-  to.flightSearchSteps = from.flightSearchSteps;
+  if (from.flightSearchSteps != defaultSearchSteps<From>()) {
+    to.flightSearchSteps = from.flightSearchSteps;
+  }
   to.stopAtUndecided = from.stopAtUndecided;
   to.needs = from.needs;
   return to;

@@ -661,7 +661,6 @@ void MainWindow::showStatus(const SimUpdate& update) {
                 .arg(scientific(trust.horizon));
   }
   if (update.trustPending) text += tr(" · trust: estimating…");
-
   if (update.accuracy) {
     text += tr(" · methods: %1 of %2 settings measured")
                 .arg(update.accuracy->points.size())
