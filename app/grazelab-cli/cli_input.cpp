@@ -21,6 +21,20 @@ const QStringList kSimulateOnly = {"glo", "onepp", "state", "perturb", "contacts
 
 QString fromStd(const std::string& text) { return QString::fromStdString(text); }
 
+// --NAME as a whole number >= least, or the reason it is not one
+std::optional<std::int64_t> countOption(const QCommandLineParser& parser, const QString& name,
+                                        std::int64_t least, QString& error) {
+  bool ok = false;
+  const qlonglong value = parser.value(name).toLongLong(&ok);
+  if (!ok || value < least) {
+    error = QStringLiteral("--%1: '%2' is not a count (a whole number >= %3)")
+                .arg(name, parser.value(name))
+                .arg(least);
+    return std::nullopt;
+  }
+  return value;
+}
+
 // a number in precision S, or the reason it is not one ("is out of range ...")
 template <typename S>
 std::optional<S> toNumber(const QString& option, const QString& text, QString& error) {
@@ -242,13 +256,9 @@ Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
   run.notes = start.start->notes;
 
   if (parser.isSet("contacts")) {
-    bool ok = false;
-    const qlonglong contacts = parser.value("contacts").toLongLong(&ok);
-    if (!ok || contacts < 0) {
-      return {std::nullopt, QStringLiteral("--contacts: '%1' is not a count (a whole number >= 0)")
-                                .arg(parser.value("contacts"))};
-    }
-    run.request.maxContacts = contacts;
+    const auto contacts = countOption(parser, "contacts", 0, error);
+    if (!contacts) return {std::nullopt, error};
+    run.request.maxContacts = *contacts;
   } else {
     run.request.maxContacts = parser.isSet("t-end") ? std::numeric_limits<std::int64_t>::max() : 100;
   }
@@ -262,13 +272,9 @@ Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
     run.request.tEnd = *tEnd;
   }
   if (parser.isSet("search-steps")) {
-    bool ok = false;
-    const qlonglong steps = parser.value("search-steps").toLongLong(&ok);
-    if (!ok || steps < 1) {
-      return {std::nullopt, QStringLiteral("--search-steps: '%1' is not a count >= 1")
-                                .arg(parser.value("search-steps"))};
-    }
-    run.request.flightSearchSteps = steps;
+    const auto steps = countOption(parser, "search-steps", 1, error);
+    if (!steps) return {std::nullopt, error};
+    run.request.flightSearchSteps = *steps;
   }
   // a request whose length is astronomical is said to be so up front (it still runs, and an
   // interrupt ends it with complete records)
