@@ -35,12 +35,16 @@ std::vector<std::string> renameSessionOption(int argc, char* argv[]) {
   return arguments;
 }
 
-// True when the arguments ask for headless work (a snapshot or the scene list).
+// True when the arguments ask for headless work (a snapshot, the scene list, the help or the
+// version: none of them needs a display, and on a machine without one they must still answer).
 bool headlessRequested(int argc, char* argv[]) {
   for (int i = 1; i < argc; ++i) {
     const std::string_view argument(argv[i]);
     for (std::string_view option : {"--snapshot", "-snapshot", "--list-scenes", "-list-scenes"}) {
       if (argument.substr(0, option.size()) == option) return true;
+    }
+    for (std::string_view option : {"--help", "-help", "-h", "-?", "--help-all", "--version", "-v"}) {
+      if (argument == option) return true;
     }
   }
   return false;
