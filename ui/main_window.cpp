@@ -123,6 +123,7 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   m_applyTimer.setSingleShot(true);
   connect(&m_applyTimer, &QTimer::timeout, this, &MainWindow::applyPending);
   connect(m_panel, &ParameterPanel::paramsChanged, this, &MainWindow::onParamsChanged);
+  connect(m_panel, &ParameterPanel::inputRefused, m_status, &QLabel::setText);
 
   buildMenus();
   wrapToolTips();
@@ -180,9 +181,19 @@ void MainWindow::buildMenus() {
   add(view, tr("&Reset view"), {QKeySequence(Qt::Key_R), QKeySequence(tr("Ctrl+0"))},
       tr("Undo zoom and pan in every plot"), &MainWindow::resetViews);
   add(view, tr("&Cancel computation"), {QKeySequence(Qt::Key_Escape)},
-      tr("Stop the running computation (and put an enlarged plot back)"), [this] {
+      tr("Leave presentation mode; otherwise stop the running computation (and put an enlarged "
+         "plot back)"),
+      [this] {
+        if (m_presentation) {
+          m_presentationAction->trigger();  // Esc is how everyone leaves full screen
+          return;
+        }
         m_controller->cancel();
         if (m_enlarged) toggleEnlarged(m_enlarged);
+      });
+  add(view, tr("Play / &pause the motion"), {QKeySequence(Qt::Key_Space)},
+      tr("Start or stop the animated chain (scenes that show it)"), [this] {
+        if (m_chain) m_chain->setPlaying(!m_chain->playing());
       });
   view->addSeparator();
   m_presentationAction = add(
@@ -206,6 +217,11 @@ void MainWindow::buildMenus() {
       tr("The previous scene in the order of the note"), [this] { stepScene(-1); });
 
   QMenu* scenes = menuBar()->addMenu(tr("S&cenes"));
+  add(scenes, tr("Reset to scene &defaults"), {QKeySequence(tr("Ctrl+Shift+R"))},
+      tr("Put every parameter of this scene, the chain included, back to the values the scene "
+         "starts with"),
+      &MainWindow::resetToSceneDefaults);
+  scenes->addSeparator();
   m_sceneActions = new QActionGroup(this);
   for (std::size_t index = 0; index < m_scenes.size(); ++index) {
     QAction* action = scenes->addAction(m_scenes[index]->title());
@@ -392,10 +408,10 @@ void MainWindow::setPresentation(bool on, int screenHeight, bool fullScreen) {
 
 void MainWindow::selectScene(int index) {
   if (index < 0 || index >= int(m_scenes.size())) return;
-  // the chain and the start come along; the new scene keeps only its own values
+  // the chain comes along; the scene keeps its own start, push and length
   if (m_sceneChosen && index != m_sceneIndex) {
     Params& entered = m_sceneParams[std::size_t(index)];
-    entered = enterScene(*m_scenes[std::size_t(index)], params(), entered);
+    entered = enterScene(entered, params());
   }
   showScene(index);
 }
@@ -415,6 +431,13 @@ void MainWindow::showScene(int index) {
   m_panel->setScene(scene());
   m_panel->setParams(m_sceneParams[std::size_t(index)]);
   recompute();
+}
+
+void MainWindow::resetToSceneDefaults() {
+  m_regionHistory.clear();
+  if (m_landscape) m_landscape->setBackEnabled(false);
+  setParams(scene().defaults());
+  m_status->setText(tr("%1: every parameter back to the scene's defaults.").arg(scene().title()));
 }
 
 const Params& MainWindow::params() const { return m_sceneParams[std::size_t(m_sceneIndex)]; }

@@ -55,6 +55,8 @@ class MainWindow : public QMainWindow {
   int sceneIndex() const { return m_sceneIndex; }
   const Scene& scene() const { return *m_scenes[std::size_t(m_sceneIndex)]; }
   void selectScene(int index);
+  /// Every parameter of the scene on screen, the chain included, back to the scene's defaults.
+  void resetToSceneDefaults();
 
   const Params& params() const;
   /// Shows these parameters and recomputes.

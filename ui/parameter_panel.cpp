@@ -32,6 +32,11 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
       m_params.setValue(key, value);
       changed();
     });
+    connect(control, &SliderSpin::refused, this, [this](const QString& reason) {
+      m_refusal->setText(reason);
+      m_refusal->show();
+      emit inputRefused(reason);
+    });
   };
 
   // the chain
@@ -104,6 +109,12 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   m_message->setStyleSheet(QStringLiteral("QLabel { color: #a01010; font-weight: bold; }"));
   m_message->hide();
   layout->addWidget(m_message);
+  m_refusal = new QLabel(this);
+  m_refusal->setObjectName(QStringLiteral("refusal"));
+  m_refusal->setWordWrap(true);
+  m_refusal->setStyleSheet(QStringLiteral("QLabel { color: #a01010; }"));
+  m_refusal->hide();
+  layout->addWidget(m_refusal);
 
   connect(m_design, &QCheckBox::toggled, this, [this](bool on) {
     m_params.resonantDesign = on;
@@ -163,7 +174,10 @@ void ParameterPanel::setMessage(const QString& message) {
 
 QString ParameterPanel::message() const { return m_message->isVisible() ? m_message->text() : QString(); }
 
+QString ParameterPanel::refusal() const { return m_refusal->isVisible() ? m_refusal->text() : QString(); }
+
 void ParameterPanel::changed() {
+  m_refusal->hide();  // a value taken answers the last refusal
   updateFeasibility();
   emit paramsChanged(m_params);
 }

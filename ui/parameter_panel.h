@@ -39,11 +39,15 @@ class ParameterPanel : public QWidget {
   /// A plain-words problem with the current values (empty hides it).
   void setMessage(const QString& message);
   QString message() const;
+  /// Why the last typed value was refused, until a value is taken (empty when none was).
+  QString refusal() const;
 
   SliderSpin* control(ParamKey key) const { return m_controls.value(key); }
 
  signals:
   void paramsChanged(const grazelab::ui::Params& params);
+  /// A typed value was refused and the previous one kept.
+  void inputRefused(const QString& reason);
 
  private:
   void changed();
@@ -58,6 +62,7 @@ class ParameterPanel : public QWidget {
   QLabel* m_directionLabel = nullptr;
   QLabel* m_feasibility = nullptr;
   QLabel* m_message = nullptr;
+  QLabel* m_refusal = nullptr;
   QLabel* m_sceneText = nullptr;
 };
 

@@ -30,9 +30,15 @@ core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, dou
   return needs;
 }
 
-Params enterScene(const Scene& scene, const Params& session, const Params& own) {
-  Params params = session;
-  for (ParamKey key : scene.ownKeys()) params.setValue(key, own.value(key));
+Params enterScene(const Params& own, const Params& chain) {
+  Params params = own;
+  params.m1 = chain.m1;
+  params.m2 = chain.m2;
+  params.gap = chain.gap;
+  params.k1 = chain.k1;
+  params.k2 = chain.k2;
+  params.resonantDesign = chain.resonantDesign;
+  params.branch = chain.branch;
   return params;
 }
 

@@ -48,9 +48,6 @@ class Scene {
     Params defaults;
     QList<ParamKey> parameters;
     QList<PlotKind> plots;
-    /// the parameters the scene keeps for itself when the user switches scenes; the others
-    /// (the chain and the start) belong to the session and carry over
-    QList<ParamKey> ownKeys{ParamKey::Horizon, ParamKey::Period};
     /// the run for these parameters (derived.ok is true)
     std::function<SceneJob(const Scene&, const Params&, const DerivedModel&)> build;
   };
@@ -63,7 +60,6 @@ class Scene {
   Params defaults() const { return m_spec.defaults; }
   QList<ParamKey> parameters() const { return m_spec.parameters; }
   QList<PlotKind> plots() const { return m_spec.plots; }
-  QList<ParamKey> ownKeys() const { return m_spec.ownKeys; }
   SceneJob build(const Params& params, const DerivedModel& derived) const {
     return m_spec.build(*this, params, derived);
   }
@@ -77,9 +73,10 @@ class Scene {
 /// when plotted.
 core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, double sampleWindow);
 
-/// The parameters a scene runs with when it is entered: the session's chain and start, the
-/// scene's own values for its ownKeys().
-Params enterScene(const Scene& scene, const Params& session, const Params& own);
+/// The parameters a scene runs with when it is entered: its own settings (start, push, length,
+/// map region) as it last had them, on the chain the user was looking at (the chain is shared
+/// on purpose: it is what the scenes compare).
+Params enterScene(const Params& own, const Params& chain);
 
 /// The start most scenes share: GLO(lambda) data pushed by the panel's perturbation, run for
 /// the panel's number of contacts with the needs of the scene's views over `sampleWindow`, and

@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/slider_spin.h"
 
+#include "ui/number_box.h"
+
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -62,12 +64,10 @@ SliderSpin::SliderSpin(const ParamSpec& spec, QWidget* parent) : QWidget(parent)
   m_slider->setObjectName(key + QStringLiteral("Slider"));
   m_slider->setRange(0, kSteps);
   m_slider->setPageStep(kSteps / 20);
-  m_spin = new QDoubleSpinBox(this);
+  // the spin box keeps what is typed exactly; `decimals` only rounds what the slider gives
+  m_spin = new NumberBox(spec.label, spec.spinMin, spec.spinMax, spec.decimals == 0, this);
   m_spin->setObjectName(key + QStringLiteral("Spin"));
-  m_spin->setDecimals(spec.decimals);
-  m_spin->setRange(spec.spinMin, spec.spinMax);
   m_spin->setSingleStep(spec.logarithmic ? 1.0 : (spec.sliderMax - spec.sliderMin) / 100.0);
-  m_spin->setKeyboardTracking(false);
   m_spin->setMinimumWidth(96);
   m_spin->setAlignment(Qt::AlignRight);
 
@@ -90,6 +90,7 @@ SliderSpin::SliderSpin(const ParamSpec& spec, QWidget* parent) : QWidget(parent)
 
   connect(m_slider, &QSlider::valueChanged, this, &SliderSpin::sliderMoved);
   connect(m_spin, &QDoubleSpinBox::valueChanged, this, &SliderSpin::spinChanged);
+  connect(m_spin, &NumberBox::refused, this, &SliderSpin::refused);
 }
 
 double SliderSpin::value() const { return m_spin->value(); }
@@ -123,17 +124,21 @@ int SliderSpin::toPosition(double value) const {
 
 double SliderSpin::fromPosition(int position) const {
   const double fraction = double(position) / kSteps;
+  double value = m_spec.sliderMin + fraction * (m_spec.sliderMax - m_spec.sliderMin);
   if (m_spec.logarithmic) {
     const double low = std::log(m_spec.sliderMin);
-    return std::exp(low + fraction * (std::log(m_spec.sliderMax) - low));
+    value = std::exp(low + fraction * (std::log(m_spec.sliderMax) - low));
   }
-  return m_spec.sliderMin + fraction * (m_spec.sliderMax - m_spec.sliderMin);
+  // a dragged value is rounded to the parameter's decimals, so that it reads as a short number
+  // (0.3025, not 0.30249999999999999) and a session records what the panel shows
+  const double scale = std::pow(10.0, m_spec.decimals);
+  return std::clamp(std::round(value * scale) / scale, m_spec.spinMin, m_spec.spinMax);
 }
 
 void SliderSpin::sliderMoved(int position) {
   {
     const QSignalBlocker block(m_spin);
-    m_spin->setValue(fromPosition(position));  // rounded to the spin box's decimals
+    m_spin->setValue(fromPosition(position));
   }
   emit valueChanged(m_spin->value());
 }

@@ -7,10 +7,11 @@
 
 #include "ui/param_specs.h"
 
-class QDoubleSpinBox;
 class QLabel;
 
 namespace grazelab::ui {
+
+class NumberBox;
 
 /// A horizontal slider that paints small marks with labels under chosen values (λ = 1, 4/3).
 class MarkedSlider : public QSlider {
@@ -45,11 +46,13 @@ class SliderSpin : public QWidget {
   void setSliderRange(double low, double high);
 
   QSlider* slider() const { return m_slider; }
-  QDoubleSpinBox* spinBox() const { return m_spin; }
+  NumberBox* spinBox() const { return m_spin; }
   ParamKey key() const { return m_spec.key; }
 
  signals:
   void valueChanged(double value);
+  /// A typed value was refused (and the previous one kept); `reason` says why.
+  void refused(const QString& reason);
 
  private:
   int toPosition(double value) const;
@@ -60,7 +63,7 @@ class SliderSpin : public QWidget {
   ParamSpec m_spec;
   QLabel* m_label = nullptr;
   MarkedSlider* m_slider = nullptr;
-  QDoubleSpinBox* m_spin = nullptr;
+  NumberBox* m_spin = nullptr;
 };
 
 }  // namespace grazelab::ui

@@ -28,6 +28,7 @@
 #include "core/resonance.h"
 #include "tests/ui/explorer_test_support.h"
 #include "ui/main_window.h"
+#include "ui/number_box.h"
 #include "ui/parameter_panel.h"
 #include "ui/plots/log_log_chart.h"
 #include "ui/plots/plot_view.h"
@@ -289,8 +290,9 @@ class ClassroomTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window));
     QCOMPARE(m_window->params().m2, 0.3);
     QCOMPARE(m_window->params().gap, 2.0);
-    QCOMPARE(m_window->params().lambda, 0.75);
-    QVERIFY(m_window->params().horizon != 33);  // the run's length is the scene's
+    // the start and the run's length are the scene's own
+    QCOMPARE(m_window->params().lambda, m_window->scenes()[std::size_t(m_window->sceneIndex())]->defaults().lambda);
+    QVERIFY(m_window->params().horizon != 33);
     // a session saved in one scene restores its chain, and the next scene keeps it
     Params other = m_window->params();
     other.m2 = 0.2;
@@ -303,6 +305,127 @@ class ClassroomTest : public QObject {
     m_window->selectScene(sceneIndex(*m_window, QStringLiteral("1ipp")));
     QCOMPARE(m_window->params().m2, 0.3);
     QCOMPARE(m_window->params().gap, 2.0);
+  }
+
+  // the trial: Ctrl+5 (Sticking, lambda = 1.9) then Ctrl+6 ran Detuned at lambda = 1.9, saved it,
+  // and brought it back after a restart
+  void sceneSettingsStayInTheirScene() {
+    const int sticking = sceneIndex(*m_window, QStringLiteral("sticking"));
+    QTest::keyClick(m_window.get(), Qt::Key_1 + sticking, Qt::ControlModifier);
+    QCOMPARE(m_window->sceneIndex(), sticking);
+    QCOMPARE(m_window->params().lambda, 1.9);
+    QVERIFY(waitForLatestFinal(*m_window));
+    for (const char* alias : {"detuned", "near-grazing", "grazing"}) {
+      const int index = sceneIndex(*m_window, QString::fromLatin1(alias));
+      QTest::keyClick(m_window.get(), Qt::Key_1 + index, Qt::ControlModifier);
+      QCOMPARE(m_window->sceneIndex(), index);
+      QCOMPARE(m_window->params().lambda, m_window->scenes()[std::size_t(index)]->defaults().lambda);
+      QVERIFY(m_window->params().lambda != 1.9);
+      QVERIFY(waitForLatestFinal(*m_window));
+      QString error;
+      const auto saved = sessionFromJson(sessionToJson(m_window->session()), Params{}, &error);
+      QVERIFY2(saved, qPrintable(error));
+      QCOMPARE(saved->params.lambda, m_window->params().lambda);
+    }
+    // a scene's own edit stays in it when the user comes back; the chain follows the user
+    Params grazing = m_window->params();
+    grazing.lambda = 0.25;
+    grazing.m2 = 0.4;
+    m_window->setParams(grazing);
+    QTest::keyClick(m_window.get(), Qt::Key_1 + sticking, Qt::ControlModifier);
+    QCOMPARE(m_window->params().lambda, 1.9);
+    QCOMPARE(m_window->params().m2, 0.4);
+    QTest::keyClick(m_window.get(), Qt::Key_1, Qt::ControlModifier);
+    QCOMPARE(m_window->params().lambda, 0.25);
+    // Reset to scene defaults: everything, the chain included
+    QTest::keyClick(m_window.get(), Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(m_window->params() == m_window->scenes()[0]->defaults());
+    QCOMPARE(m_window->parameterPanel()->control(ParamKey::Lambda)->value(), 0.5);
+  }
+
+  // typed "-1" became 1, "1e300" 13, "99999" 99, and -1e-5 became 0 (four decimals): a typed
+  // value is taken exactly or refused with a reason, never changed
+  void typedValuesAreTakenExactlyOrRefused() {
+    const auto type = [this](ParamKey key, const QString& text) {
+      NumberBox* box = m_window->parameterPanel()->control(key)->spinBox();
+      box->setFocus();
+      box->selectAll();
+      QTest::keyClicks(box, text);
+      QTest::keyClick(box, Qt::Key_Return);
+      return box;
+    };
+    const auto refusal = [this] { return m_window->parameterPanel()->refusal(); };
+    NumberBox* push = type(ParamKey::Perturbation, QStringLiteral("-1e-5"));
+    QCOMPARE(m_window->params().perturbation, -1e-5);
+    QCOMPARE(push->text(), QStringLiteral("-1e-05"));
+    QVERIFY(refusal().isEmpty());
+    type(ParamKey::Perturbation, QStringLiteral("-3.0000000000000001e-9"));
+    QCOMPARE(m_window->params().perturbation, -3e-9);
+    QCOMPARE(readNumber(QStringLiteral(" −0.5e-3 ")).value_or(0), -0.5e-3);  // a copied minus sign
+    type(ParamKey::Perturbation, QStringLiteral("-0.0123456789012345"));
+    QCOMPARE(m_window->params().perturbation, -0.0123456789012345);
+    // the exact value is what a saved session records
+    QString error;
+    auto saved = sessionFromJson(sessionToJson(m_window->session()), Params{}, &error);
+    QVERIFY2(saved, qPrintable(error));
+    QCOMPARE(saved->params.perturbation, -0.0123456789012345);
+
+    const Params before = m_window->params();
+    type(ParamKey::M2, QStringLiteral("-1"));
+    QCOMPARE(m_window->params().m2, before.m2);
+    QVERIFY2(refusal().contains(QStringLiteral("-1")), qPrintable(refusal()));
+    QVERIFY(m_window->statusText().contains(QStringLiteral("refused")));
+    type(ParamKey::M2, QStringLiteral("1e300"));
+    QCOMPARE(m_window->params().m2, before.m2);
+    QVERIFY(refusal().contains(QStringLiteral("1e300")));
+    type(ParamKey::Horizon, QStringLiteral("0"));
+    QCOMPARE(m_window->params().horizon, before.horizon);
+    QVERIFY(!refusal().isEmpty());
+    type(ParamKey::Horizon, QStringLiteral("2.5"));
+    QCOMPARE(m_window->params().horizon, before.horizon);
+    QVERIFY(refusal().contains(QStringLiteral("whole")));
+    type(ParamKey::Horizon, QStringLiteral("99999"));
+    QCOMPARE(m_window->params().horizon, 99999.0);
+    QVERIFY(refusal().isEmpty());
+    type(ParamKey::M1, QStringLiteral("2.5e0"));
+    QCOMPARE(m_window->params().m1, 2.5);
+    QVERIFY(waitForLatestFinal(*m_window));
+    // a dragged value is a short decimal
+    QSlider* slider = m_window->parameterPanel()->control(ParamKey::Lambda)->slider();
+    slider->setValue(301);
+    const double dragged = m_window->params().lambda;
+    QCOMPARE(QString::number(dragged, 'g', 17).size() <= 7, true);
+  }
+
+  // Ctrl+E and Space did nothing while a spin box had the focus; Esc did not leave presentation
+  void shortcutsWorkWhileTypingAndEscLeavesPresentation() {
+    NumberBox* box = m_window->parameterPanel()->control(ParamKey::Lambda)->spinBox();
+    box->setFocus();
+    QTest::keyClick(box, Qt::Key_PageDown);
+    QCOMPARE(m_window->sceneIndex(), 1);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QTest::keyClick(m_window.get(), Qt::Key_1, Qt::ControlModifier);
+    QVERIFY(waitForLatestFinal(*m_window));
+    box = m_window->parameterPanel()->control(ParamKey::Lambda)->spinBox();
+    box->setFocus();
+    // the line edit inside claims Ctrl+E and Space unless the box gives them to the window
+    QKeyEvent overrideCtrlE(QEvent::ShortcutOverride, Qt::Key_E, Qt::ControlModifier);
+    overrideCtrlE.ignore();
+    QApplication::sendEvent(box, &overrideCtrlE);
+    QVERIFY(!overrideCtrlE.isAccepted());
+    QKeyEvent overrideSpace(QEvent::ShortcutOverride, Qt::Key_Space, Qt::NoModifier, QStringLiteral(" "));
+    overrideSpace.ignore();
+    QApplication::sendEvent(box, &overrideSpace);
+    QVERIFY(!overrideSpace.isAccepted());
+    QKeyEvent overrideDigit(QEvent::ShortcutOverride, Qt::Key_5, Qt::NoModifier, QStringLiteral("5"));
+    overrideDigit.ignore();
+    QApplication::sendEvent(box, &overrideDigit);
+    QVERIFY(overrideDigit.isAccepted());  // typing digits stays typing
+    m_window->setPresentation(true, 720, false);
+    QVERIFY(m_window->presentation());
+    QTest::keyClick(m_window.get(), Qt::Key_Escape);
+    QVERIFY(!m_window->presentation());
+    QVERIFY(QApplication::font().pixelSize() < 720 / 50);  // the desk font, in points (-1 px)
   }
 
   // after a zoom, a parameter change kept it and the plot could go blank with no hint; a stale

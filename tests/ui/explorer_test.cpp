@@ -24,6 +24,7 @@
 #include "core/modes.h"
 #include "ui/derived.h"
 #include "ui/main_window.h"
+#include "ui/number_box.h"
 #include "ui/parameter_panel.h"
 #include "ui/plots/accuracy_view.h"
 #include "ui/plots/free_flight_plot.h"

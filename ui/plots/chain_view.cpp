@@ -318,7 +318,7 @@ void ChainView::tick() {
 
 void ChainView::keyPressEvent(QKeyEvent* event) {
   switch (event->key()) {
-    case Qt::Key_Space: setPlaying(!playing()); break;
+    // Space is the window's play / pause shortcut (it works wherever the focus is)
     case Qt::Key_BracketRight: stepContact(+1); break;
     case Qt::Key_BracketLeft: stepContact(-1); break;
     default: QWidget::keyPressEvent(event); return;

@@ -29,7 +29,6 @@ Scene::Spec stickingScene() {
   scene.defaults.lambda = 1.9;
   scene.defaults.perturbation = 0;
   scene.defaults.horizon = 12;
-  scene.ownKeys = {ParamKey::Horizon, ParamKey::Period, ParamKey::Lambda};
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
   scene.plots = {PlotKind::TraceU2, PlotKind::Chain, PlotKind::PhaseU2V2, PlotKind::PhaseU1V1};
