@@ -11,8 +11,8 @@
 
 namespace grazelab::core {
 
-/// The chain in nondimensional form (MODEL.md sections 2 and 7), computed once from a model and
-/// const afterwards. Time is measured by the slow frequency (tau = w2 t), so the slow mode has
+/// The chain in nondimensional form (docs/model.md sections 2 and 7), computed once from a model
+/// and const afterwards. Time is measured by the slow frequency (tau = w2 t), so the slow mode has
 /// frequency 1 and period 2 pi, the fast one `ratio` (2 exactly when resonant).
 ///
 /// Everything is formed from the ratios beta = m2/m1 and kappa = k2/k1 in closed form, never from
@@ -50,7 +50,7 @@ struct ChainOrProblem {
 template <typename S>
 ChainOrProblem<S> makeChain(const BasicModel<S>& model);
 
-/// The scales of one run (MODEL.md section 7): lengths by L = 2^exponent (a power of two, so
+/// The scales of one run (docs/model.md section 7): lengths by L = 2^exponent (a power of two, so
 /// scaling is exact), velocities by w2 L, time by 1 / w2.
 template <typename S>
 struct Scale {

@@ -39,8 +39,9 @@ struct Contact {
   bool undecided = false;
 };
 
-/// The first tau > 0 with x2(tau) = delta (MODEL.md sections 3-4), in scaled units. A flight that
-/// starts on the stop must leave it (its first nonzero derivative of x2 - delta is negative).
+/// The first tau > 0 with x2(tau) = delta (docs/model.md sections 3-4), in scaled units. A flight
+/// that starts on the stop must leave it (its first nonzero derivative of x2 - delta is
+/// negative).
 ///
 /// Resonant chains: the real roots of the quartic G below are the contacts. Its stationary
 /// points split each chart into pieces on which the gap is monotone (closed form; none can be

@@ -10,7 +10,7 @@
 
 namespace grazelab::core {
 
-/// What happens when mass 2 reaches the stop (MODEL.md section 4).
+/// What happens when mass 2 reaches the stop (docs/model.md section 4).
 enum class EventType : std::uint8_t {
   Impact,   ///< arrives with v2 > 0 and leaves with -v2 (elastic, e = 1)
   Grazing,  ///< touches with v2 = 0 and is pulled away: the flight goes on unchanged

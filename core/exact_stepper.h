@@ -69,9 +69,9 @@ struct Step {
   S flightEnergyError = 0;             ///< relative energy error before restoring (see .cpp)
 };
 
-/// The exact event-driven method (MODEL.md sections 3-4): closed-form free flight, contact times
-/// from polynomial roots, the impact law, stuck phases in closed form. Each advance() moves the
-/// state to the next event; the motion of that step stays available for dense samples.
+/// The exact event-driven method (docs/model.md sections 3-4): closed-form free flight, contact
+/// times from polynomial roots, the impact law, stuck phases in closed form. Each advance() moves
+/// the state to the next event; the motion of that step stays available for dense samples.
 template <typename S>
 class ExactStepper {
  public:

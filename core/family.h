@@ -11,7 +11,7 @@
 
 namespace grazelab::core {
 
-/// One member of the one-impact-per-period family (MODEL.md section 5), as a frequency-energy
+/// One member of the one-impact-per-period family (docs/model.md section 5), as a frequency-energy
 /// curve shows it.
 struct FamilyPoint {
   double T = 0;          ///< period [time]

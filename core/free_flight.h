@@ -26,7 +26,7 @@ struct FlightTime {
   static FlightTime nearest(const S& tau);
 };
 
-/// Exact free motion of the chain from a start state, in scaled units (MODEL.md sections 3
+/// Exact free motion of the chain from a start state, in scaled units (docs/model.md sections 3
 /// and 7): no time stepping. Modes have unit mass-2 components, so
 ///   x2(tau) - delta = (x2(0) - delta) + sum_j [c_j (cos w_j tau - 1) + a_j sin w_j tau],
 /// w = (ratio, 1), written as increments (cos x - 1 = -2 sin^2(x/2)) so that it never subtracts

@@ -7,7 +7,7 @@
 
 namespace grazelab::core {
 
-/// True when a state on the stop at rest (x2 = delta, y2 = 0) is pressed into it (MODEL.md
+/// True when a state on the stop at rest (x2 = delta, y2 = 0) is pressed into it (docs/model.md
 /// section 4): the spring pushes mass 2 toward the stop, u1 > gap, or u1 = gap with v1 > 0.
 /// Works in physical or scaled units alike (`gap` in the same units as the state).
 /// `u1Residual` is what u1 lost to rounding (exact u1 minus state.u1): a u1 a hair below the
@@ -27,7 +27,7 @@ struct ContactOutcome {
   BasicState<S> after;
 };
 
-/// Newton's impact law with e = 1 and the touch rules of MODEL.md section 4, in one place:
+/// Newton's impact law with e = 1 and the touch rules of docs/model.md section 4, in one place:
 /// mass 2 arrives on the stop (`arrival.u2` is set to the gap) with velocity v2. A crossing with
 /// v2 > 0 is an impact (v2 -> -v2, everything else continuous). A tangent touch, or an arrival
 /// with no speed left, has v2 = 0: pressed into the stop it sticks, else it grazes and the

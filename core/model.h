@@ -11,7 +11,7 @@
 
 namespace grazelab::core {
 
-/// The chain  wall --k1-- [m1] --k2-- [m2] |<- gap ->| stop  (MODEL.md section 1).
+/// The chain  wall --k1-- [m1] --k2-- [m2] |<- gap ->| stop  (docs/model.md section 1).
 /// Plain parameters; every one must be positive and finite (see validate()).
 ///
 /// `design` says where k2 comes from. Set, the chain IS the 1:2 resonant chain of that branch:

@@ -8,10 +8,10 @@
 
 namespace grazelab::core {
 
-/// Normal modes of the chain in physical units, for display and reports (MODEL.md section 2):
+/// Normal modes of the chain in physical units, for display and reports (docs/model.md section 2):
 /// P^T M P = I, P^T K P = diag(w1^2, w2^2). Mode 1 is the FAST mode and mode 2 the SLOW one (the
-/// "Labelling" note of MODEL.md): the proofs need w1 = 2 w2, so T2 = 2 T1 and every free motion
-/// of a resonant chain is T2-periodic. Eigen indices are 0-based: P(0, j) is the mass-1 row,
+/// "Labelling" note of docs/model.md): the proofs need w1 = 2 w2, so T2 = 2 T1 and every free
+/// motion of a resonant chain is T2-periodic. Eigen indices are 0-based: P(0, j) is the mass-1 row,
 /// P(1, j) the mass-2 row, column 0 the fast mode, column 1 the slow mode; P(1, j) > 0.
 /// Built from the closed forms of core/chain.h (the solver itself works with those).
 struct Modes {

@@ -10,10 +10,10 @@
 
 namespace grazelab::core {
 
-/// Which of the two modes: 1 is the fast mode, 2 the slow one (MODEL.md "Labelling").
+/// Which of the two modes: 1 is the fast mode, 2 the slow one (docs/model.md "Labelling").
 enum class Mode { Fast = 1, Slow = 2 };
 
-/// GLOM_i data on H (MODEL.md section 5): u1 = gap u1/u2 of mode i, u2 = gap, v = 0.
+/// GLOM_i data on H (docs/model.md section 5): u1 = gap u1/u2 of mode i, u2 = gap, v = 0.
 template <typename S>
 BasicState<S> glomData(const Chain<S>& chain, Mode mode);
 
@@ -41,7 +41,7 @@ BasicState<S> gloData(const Chain<S>& chain, const S& lambda);
 template <typename S>
 S lambdaStar(const Chain<S>& chain);
 
-/// One-impact-per-period (1IPP) orbit of period T (MODEL.md section 5).
+/// One-impact-per-period (1IPP) orbit of period T (docs/model.md section 5).
 template <typename S>
 struct OnePeriodicOrbit {
   bool admissible = false;

@@ -26,7 +26,7 @@ struct SampleSpec {
   bool includeContacts = true;       ///< add the states just before and after each contact
 };
 
-/// What the caller will look at; nothing else is stored (DESIGN.md "Needs").
+/// What the caller will look at; nothing else is stored (docs/design.md "Needs").
 struct Needs {
   bool events = true;              ///< the event list
   double eventsUntil = kInfinity;  ///< keep only events up to this time (a plot's window)
@@ -44,7 +44,7 @@ struct PoincarePoint {
   EventType type = EventType::Impact;
 };
 
-/// A free flight between a departure from the stop and the next contact (MODEL.md section 4).
+/// A free flight between a departure from the stop and the next contact (docs/model.md section 4).
 struct FreeFlight {
   std::int64_t contactIndex = 0;  ///< index (0-based) of the contact that ends it
   double duration = 0;            ///< FFT [time]
@@ -59,7 +59,7 @@ struct Sample {
   State state;
 };
 
-/// What the run cost and how good it is (DESIGN.md "Numerical contract").
+/// What the run cost and how good it is (docs/design.md "Numerical contract").
 struct Cost {
   std::int64_t contacts = 0;  ///< impacts + grazings + sticks
   std::int64_t impacts = 0;

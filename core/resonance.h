@@ -7,7 +7,7 @@
 
 namespace grazelab::core {
 
-/// The two stiffness branches of the 1:2 design (MODEL.md section 2): "+" root is Upper.
+/// The two stiffness branches of the 1:2 design (docs/model.md section 2): "+" root is Upper.
 enum class Branch { Upper, Lower };
 
 /// Largest mass ratio m2/m1 for which a 1:2 resonant chain exists; the branches meet there.
@@ -39,7 +39,7 @@ std::optional<double> k2ForFrequencyRatio(double m1, double m2, double k1, doubl
 /// arithmetic on the binary values, then rounded once):
 ///   D / beta^2 = (lambdaFast - 4 lambdaSlow)(4 lambdaFast - lambdaSlow),
 /// with lambda = w^2 m1 / k1 and D = 4 (1+beta)^2 kappa^2 - beta (17 - 8 beta) kappa + 4 beta^2,
-/// the 1:2 condition of MODEL.md section 2. Zero exactly when the chain is exactly resonant.
+/// the 1:2 condition of docs/model.md section 2. Zero exactly when the chain is exactly resonant.
 template <typename S>
 S resonanceDefect(const S& m1, const S& m2, const S& k1, const S& k2);
 

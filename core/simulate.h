@@ -57,7 +57,7 @@ BasicRequest<To> convertRequest(const BasicRequest<From>& from) {
 
 /// A run in pieces, for callers that stream partial results: each advance() does at most a
 /// given number of contacts; the result grows in place. The exact stepper moves a small
-/// IntegrationState; the recorder keeps what the request needs (DESIGN.md "Inside core").
+/// IntegrationState; the recorder keeps what the request needs (docs/design.md "Inside core").
 /// Holds references to its own members: neither copied nor moved.
 template <typename S>
 class BasicSimulator {

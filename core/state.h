@@ -6,9 +6,9 @@
 
 namespace grazelab::core {
 
-/// Position and velocity of the chain (MODEL.md section 1). Displacements are measured from the
-/// spring equilibrium, so the stop sits at u2 = gap. The same struct carries nondimensional
-/// states inside the solver (MODEL.md section 7: x = u / L, y = v / (w2 L)).
+/// Position and velocity of the chain (docs/model.md section 1). Displacements are measured from
+/// the spring equilibrium, so the stop sits at u2 = gap. The same struct carries nondimensional
+/// states inside the solver (docs/model.md section 7: x = u / L, y = v / (w2 L)).
 template <typename S>
 struct BasicState {
   S u1 = 0;  ///< displacement of mass 1 [length]

@@ -7,7 +7,7 @@
 
 namespace grazelab::core {
 
-/// The stuck phase, in scaled units (MODEL.md section 4): mass 2 held at x2 = delta (reaction
+/// The stuck phase, in scaled units (docs/model.md section 4): mass 2 held at x2 = delta (reaction
 /// R = -k2 (u1 - gap) <= 0) while mass 1 oscillates alone about the centre
 /// kappa delta / (1 + kappa) < delta, at the frequency chain.stuckOmega. It ends when x1 falls
 /// back to delta (R reaches 0), always in finite time.

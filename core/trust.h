@@ -32,7 +32,7 @@ inline constexpr double kHorizonTolerance = 1e-6;
 /// Below this estimated error a run is "ok".
 inline constexpr double kOkTolerance = 1e-9;
 
-/// How far a run can be trusted (issue 7, DESIGN.md "Numerical contract").
+/// How far a run can be trusted (issue 7, docs/design.md "Numerical contract").
 struct Trust {
   Verdict verdict = Verdict::Unchecked;
   /// Estimated error of the final state: the largest over u1, u2, v1, v2 of the error relative

@@ -20,7 +20,7 @@ class QCommandLineParser;
 
 namespace grazelab::cli {
 
-/// Registers every option of `info` and `simulate` (DESIGN.md, "Command line").
+/// Registers every option of `info` and `simulate` (docs/design.md, "Command line").
 void addOptions(QCommandLineParser& parser);
 
 /// Options given more than once (the last would silently win): refused with their names.

@@ -24,7 +24,7 @@ struct PrecisionReport {
   std::vector<std::string> escalations;
 };
 
-/// Writes a run as it happens (DESIGN.md "Command line"): json (one document, the events array
+/// Writes a run as it happens (docs/design.md "Command line"): json (one document, the events array
 /// streamed), jsonl (one record per line: the run, each event, the end), csv (one row per
 /// event) or summary (a few lines at the end). Numbers carry the digits of the run's precision.
 /// Every record is written whole, so an interrupted run leaves complete records.

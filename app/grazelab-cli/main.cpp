@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// grazelab-cli: `info`, `simulate`, `report` and `stability` (DESIGN.md "Command line"). Exit 0 on success, 2 on
-// invalid input with one line on stderr and nothing on stdout; an interrupted run (SIGINT,
-// SIGTERM) ends its output cleanly and exits 130.
+// grazelab-cli: `info`, `simulate`, `report` and `stability` (docs/design.md "Command line").
+// Exit 0 on success, 2 on invalid input with one line on stderr and nothing on stdout; an
+// interrupted run (SIGINT, SIGTERM) ends its output cleanly and exits 130.
 #if GRAZELAB_CLI_PICTURES
 #include <QApplication>
 #endif

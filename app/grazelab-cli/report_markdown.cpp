@@ -30,7 +30,7 @@ QByteArray reportMarkdown(const ReportInput& input, const core::methods::Compari
   QString md;
   md += "# GrazeLab work-precision report\n\n";
   md += QStringLiteral("Written by %1%2. Every error is measured against the exact solver in "
-                       "binary128 (MODEL.md section 8).\n\n")
+                       "binary128 (docs/model.md section 8).\n\n")
             .arg(versionString(), quick ? " with --quick (fewer settings and runs)" : "");
   md += "## Problem\n\n";
   md += QStringLiteral("- Chain: m1 = %1, m2 = %2, k1 = %3, k2 = %4%5, gap d = %6; T2 = %7.\n")
@@ -103,7 +103,7 @@ QByteArray reportMarkdown(const ReportInput& input, const core::methods::Compari
   md += "Least-squares slopes of log(error) against log(h), log(rtol), log(eps) or log(1/k_c), over the "
         "settings that completed with every contact matched and an error between 1e-13 and 1e-2. "
         "The contact-time error is the order measure: the end state of this sensitive motion "
-        "amplifies each step's error by a factor that depends on its direction (MODEL.md "
+        "amplifies each step's error by a factor that depends on its direction (docs/model.md "
         "section 6), so its slope scatters (it is given beside it).\n\n";
   md += "| method | knob | slope (contact times) | slope (end state) | settings in the fit |\n|---|---|---|---|---|\n";
   for (MethodKind kind : methods) {

@@ -17,7 +17,7 @@ namespace grazelab::core::methods {
 struct Reference {
   MethodRun run;            ///< in the task's units (double)
   double period = 0;        ///< T2 [time]
-  double positionScale = 0; ///< X = d (MODEL.md section 8)
+  double positionScale = 0; ///< X = d (docs/model.md section 8)
   double velocityScale = 0; ///< V = w1 X
   double seconds = 0;       ///< its cost
 };
@@ -26,7 +26,7 @@ struct Reference {
 Reference makeReference(const Task& task, const WorkBudget& budget = {},
                         std::stop_token stop = {});
 
-/// A method's errors against the reference (MODEL.md section 8). Errors that cannot be formed
+/// A method's errors against the reference (docs/model.md section 8). Errors that cannot be formed
 /// (a run that did not reach the end, no matched contact) are NaN, and the status says why.
 struct Errors {
   double state = 0;         ///< final state: max |du| / X, |dv| / V

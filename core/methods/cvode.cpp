@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// SUNDIALS CVODE, Adams or BDF, event-driven (MODEL.md section 8): a contact is a root of
+// SUNDIALS CVODE, Adams or BDF, event-driven (docs/model.md section 8): a contact is a root of
 // u2 - d crossed toward the stop, found by CVODE's root finding; at an impact v2 -> -v2 and the
 // integrator restarts (CVodeReInit) from the stop.
 //

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// Event-driven Dormand-Prince 5(4) (MODEL.md section 8) through Boost.Odeint's dense-output
+// Event-driven Dormand-Prince 5(4) (docs/model.md section 8) through Boost.Odeint's dense-output
 // stepper. A contact is a sign change of u2 - d at the end of an accepted step, located on the
 // dense output; at an impact v2 -> -v2 and the stepper restarts from the stop.
 //

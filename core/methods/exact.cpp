@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// The exact solver (MODEL.md sections 3-4) behind the methods' interface, in double, long
+// The exact solver (docs/model.md sections 3-4) behind the methods' interface, in double, long
 // double or binary128: the model and start are read exactly (widening is exact), the result is
 // handed back in double.
 #include <chrono>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// Moreau-Jean time stepping (MODEL.md section 8; Jean 1999, Acary & Brogliato 2008 ch. 10,
+// Moreau-Jean time stepping (docs/model.md section 8; Jean 1999, Acary & Brogliato 2008 ch. 10,
 // Siconos MoreauJeanOSI): the theta-method at velocity level with Newton's impact law, e = 1.
 #include <Eigen/Dense>
 

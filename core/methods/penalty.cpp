@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// The penalty method (MODEL.md section 8): the stop as a stiff spring k_c (u2 - d)+ on mass 2,
+// The penalty method (docs/model.md section 8): the stop as a stiff spring k_c (u2 - d)+ on mass 2,
 // integrated by CVODE BDF with the exact Jacobian. The force switches on and off where u2 = d:
 // CVODE's root finding stops there and the integrator restarts with the other force, so that
 // each segment it integrates is smooth. A contact is the interval spent past the stop; it is

@@ -15,8 +15,9 @@
 namespace grazelab::core::methods {
 
 /// The run of a comparison method: every method integrates the same nondimensional chain
-/// (MODEL.md section 7: tau = w2 t, x = u / L, y = v / (w2 L)), so that none of them is judged on
-/// the units of its input, and hands its events to the same Recorder as the exact solver.
+/// (docs/model.md section 7: tau = w2 t, x = u / L, y = v / (w2 L)), so that none of them is
+/// judged on the units of its input, and hands its events to the same Recorder as the exact
+/// solver.
 /// Holds references to its own members: neither copied nor moved.
 class ScaledRun {
  public:

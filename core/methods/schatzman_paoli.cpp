@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// Schatzman-Paoli (MODEL.md section 8; Paoli & Schatzman 2002): central differences on positions
-// with the impact law written on positions, g((q_{k+1} + e q_{k-1}) / (1 + e)) >= 0, e = 1.
+// Schatzman-Paoli (docs/model.md section 8; Paoli & Schatzman 2002): central differences on
+// positions with the impact law written on positions, g((q_{k+1} + e q_{k-1}) / (1 + e)) >= 0,
+// e = 1.
 #include <cmath>
 
 #include "core/methods/impulse_steps.h"

@@ -339,7 +339,7 @@ CaseHorizon runStabilityCase(const StabilityCase& row, const std::vector<MethodK
   referenceBudget.maxSeconds = std::max(budget.maxSeconds, 60.0);
   const Reference reference = makeReference(withEvents, referenceBudget, stop);
   // the trust estimate is relative to the motion's own size, the errors here to d and w1 d
-  // (MODEL.md section 8): in the same units, the tolerance grows with the motion's amplitude
+  // (docs/model.md section 8): in the same units, the tolerance grows with the motion's amplitude
   double amplitude = 1;
   auto widen = [&](const State& x) {
     amplitude = std::max({amplitude, std::abs(x.u1) / reference.positionScale,

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
-# The command-line contract of DESIGN.md: outputs on success, exit 2 with one line on stderr and
-# nothing on stdout for every invalid input.
+# The command-line contract of docs/design.md: outputs on success, exit 2 with one line on stderr
+# and nothing on stdout for every invalid input.
 set -u
 cli="$1"
 failures=0

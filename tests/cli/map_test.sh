@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
 # `map` and `merge` (issue 10): four stripes computed through GNU parallel and merged equal the
-# unsharded map byte for byte; the files are what the README promises; bad input is refused.
+# unsharded map byte for byte; the files are what docs/cli.md promises; bad input is refused.
 # Usage: map_test.sh GRAZELAB_CLI pictures|no-pictures
 set -uo pipefail
 cli="$1"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// The statements of MODEL.md section 5, checked numerically on every canonical resonant chain:
+// The statements of docs/model.md section 5, checked numerically on every canonical resonant chain:
 // energy conservation, FFT <= T2 (< T2 after an impact, = T2 on GLO_lambda), 1IPP periodicity,
 // the lambda* limit, scaling with the gap, sticking starts, and a detuned chain for contrast.
 #include <gtest/gtest.h>
@@ -134,7 +134,7 @@ TEST_P(Theorems, ContactTimesAreUnchangedWhenGapAndStateScaleTogether) {
   request.initial = start;
   request.maxContacts = 40;
   const Result reference = simulate(model(), request);
-  // impacting motions amplify round-off (MODEL.md section 6): measure how far a one-ulp nudge
+  // impacting motions amplify round-off (docs/model.md section 6): measure how far a one-ulp nudge
   // of the start drifts, and allow a hundred times that (and never less than 1e-11)
   request.initial.u1 = std::nextafter(start.u1, 1.0);
   const Result nudged = simulate(model(), request);

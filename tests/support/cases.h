@@ -60,7 +60,7 @@ inline std::vector<Chain> resonantChains() {
 inline core::Model detunedChain() { return {1.0, 0.5, 1.0, 0.45, 1.0}; }
 
 /// GLO_lambda data pushed off the grazing-start plane by dv2 = -push * w2 * gap (v2 < 0), so
-/// that it impacts (a push along the plane gives another grazing orbit, MODEL.md section 5).
+/// that it impacts (a push along the plane gives another grazing orbit, docs/model.md section 5).
 inline core::State nearGrazingStart(const core::Model& model, double lambda, double push) {
   const core::Modes modes = core::computeModes(model);
   core::State state = core::gloData(model, modes, lambda);

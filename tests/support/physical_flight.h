@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // The scaled free flight of core/free_flight.h seen in physical units (time t, lengths, speeds),
-// so that tests state their properties in the units of MODEL.md.
+// so that tests state their properties in the units of docs/model.md.
 #pragma once
 
 #include <cmath>

@@ -19,7 +19,7 @@ Over the first 50 events the script reports
         reference run with `--nudge 1e-16`)
 and PASS if every error is <= --tol (default 1e-10) with no type or count mismatch;
 PASS~ if an error is above --tol but below --sensitivity-factor (100) times the effect of
-the 1e-16 nudge at that event: no binary64 program can do better there (MODEL.md
+the 1e-16 nudge at that event: no binary64 program can do better there (docs/model.md
 section 6); `--strict` turns PASS~ into FAIL. Cases run with --t-end also compare the
 `final` state. Exit status: 0 if every case is PASS or PASS~, 1 otherwise (including a
 missing or failing CLI, or a failing reference run).
@@ -160,7 +160,7 @@ def compare_case(ref_out, probe_out, cli_out, tol, factor):
 
     probe_out is the reference nudged by NUDGE (binary64 round-off size): its distance to
     the reference, times `factor`, is what a correct binary64 program may be off by where
-    the motion amplifies errors (MODEL.md section 6). Returns (err, n, amplification,
+    the motion amplifies errors (docs/model.md section 6). Returns (err, n, amplification,
     strict_ok, problems) with problems empty if the case passes within that allowance.
     """
     mp.dps = 40
@@ -321,7 +321,7 @@ def main():
              time.perf_counter() - started))
     if not args.ref_only:
         print("amplif = largest growth of a 1e-16 nudge of the initial state over the run; "
-              "PASS~ = error above tol but below %g x that effect (MODEL.md section 6)"
+              "PASS~ = error above tol but below %g x that effect (docs/model.md section 6)"
               % args.sensitivity_factor)
     return 1 if failures else 0
 

@@ -3,7 +3,7 @@
 
     wall --k1-- [m1] --k2-- [m2] |<-- gap d -->| rigid stop
 
-This module implements the mathematics of /work/shared/MODEL.md (sections 1-5) from
+This module implements the mathematics of docs/model.md (sections 1-5) from
 scratch in Python with mpmath, at a configurable decimal precision (default 40 digits).
 It shares no code, no algorithm for contact finding and no floating-point type with the
 C++ core: it exists to check `grazelab-cli simulate` (see compare.py beside this file).
@@ -11,7 +11,7 @@ C++ core: it exists to check `grazelab-cli simulate` (see compare.py beside this
 Method
 ------
 - Modes: the 2x2 generalized eigenproblem K p = w^2 M p in closed form, P^T M P = I,
-  P[2][j] > 0, mode 1 = FAST, mode 2 = slow (MODEL.md section 2, "Labelling").
+  P[2][j] > 0, mode 1 = FAST, mode 2 = slow (docs/model.md section 2, "Labelling").
   With `--branch` the chain is exactly 1:2 resonant and w1 is set to exactly 2 w2.
 - Free flight: closed-form modal solution; u2(t) - d is evaluated in the
   cancellation-free form  (u2(0) - d) + sum_j P[2][j] (q_j (cos(wj t) - 1) + q_j'/wj sin(wj t))
@@ -26,7 +26,7 @@ Method
   For a resonant chain one scan covers (0, T2 + 3h]: every free motion is T2-periodic, so
   no contact there means no contact ever. A detuned chain is scanned up to
   `--max-flight` slow periods (or t-end).
-- Events (MODEL.md section 4): impact (v2 -> -v2), grazing (touch with v2 = 0 and
+- Events (docs/model.md section 4): impact (v2 -> -v2), grazing (touch with v2 = 0 and
   u1 <= d: flight goes on with u2 := d, v2 := 0), sticking (touch or start on H with v2 = 0
   and u1 > d, or u1 = d and v1 > 0): mass 1 oscillates alone,
   m1 u1'' + (k1 + k2) u1 = k2 d, closed form, until u1 falls back to d; release starts a
@@ -45,7 +45,7 @@ only if v1 > vs * 10^-((dps-8)/2) (the fourth-order touch of GLO_4/3 is located 
 
 Output
 ------
-JSON on stdout in the shape of `grazelab-cli simulate --format json` (DESIGN.md):
+JSON on stdout in the shape of `grazelab-cli simulate --format json` (docs/design.md):
 `model`, `events` [{t, type, u1, u2, v1, v2_pre, v2_post}], `final` {t, u1, u2, v1, v2},
 `energy` {initial, max_rel_drift}, `timing`, plus a `reference` block describing the run.
 ALL REAL NUMBERS ARE WRITTEN AS JSON NUMBERS (not strings) WITH `--digits` SIGNIFICANT
@@ -91,7 +91,7 @@ class InputError(ValueError):
 
 
 def resonant_kappa(beta, branch):
-    """kappa = k2/k1 of the 1:2 resonant chain (MODEL.md section 2), in mpmath."""
+    """kappa = k2/k1 of the 1:2 resonant chain (docs/model.md section 2), in mpmath."""
     if beta > mpf(9) / 16:
         raise InputError(
             "m2/m1 = %s > 9/16: no 1:2 resonant chain exists (use --k2 for a detuned chain)"
@@ -110,7 +110,7 @@ def resonant_kappa_double(beta, branch):
 
 
 class Chain:
-    """Model, modes and derived quantities (MODEL.md sections 1-2), all in mpmath.
+    """Model, modes and derived quantities (docs/model.md sections 1-2), all in mpmath.
 
     Index convention: w[0], P[.][0] = mode 1 (FAST); w[1], P[.][1] = mode 2 (slow).
     P[k][j] with k = 0 for mass 1, k = 1 for mass 2.
@@ -171,13 +171,13 @@ class Chain:
                 + (k1 + k2) * u1 * u1 - 2 * k2 * u1 * u2 + k2 * u2 * u2) / 2
 
     def glo_state(self, lam):
-        """GLO_lambda data on the grazing-start plane (MODEL.md section 5)."""
+        """GLO_lambda data on the grazing-start plane (docs/model.md section 5)."""
         P, d = self.P, self.gap
         u1 = d * ((1 - lam) * P[0][0] / P[1][0] + lam * P[0][1] / P[1][1])
         return [u1, d, mpf(0), mpf(0)]
 
     def onepp_state(self, period):
-        """Post-impact data of the 1IPP orbit of period T (MODEL.md section 5)."""
+        """Post-impact data of the 1IPP orbit of period T (docs/model.md section 5)."""
         g = [mpf(0), mpf(0)]
         for j in range(2):
             half = self.w[j] * period / 2
@@ -194,7 +194,7 @@ class Chain:
 
 
 class Flight:
-    """Closed-form free flight from a state at local time 0 (MODEL.md section 3)."""
+    """Closed-form free flight from a state at local time 0 (docs/model.md section 3)."""
 
     def __init__(self, chain, state):
         self.chain = chain
@@ -313,7 +313,7 @@ def bracket_root(func, a, b, fa, fb, xtol, max_iter=600):
 
 
 class Simulator:
-    """Event-driven exact simulation (MODEL.md section 4)."""
+    """Event-driven exact simulation (docs/model.md section 4)."""
 
     def __init__(self, chain, samples_per_period=2000, max_flight_periods=1000):
         self.chain = chain

@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""Self-checks of reference_sim.py against MODEL.md, without the C++ program.
+"""Self-checks of reference_sim.py against docs/model.md, without the C++ program.
 
     python3 selftest.py          # exit 0 if every check passes
 
 Checks: modes (P^T M P = I, P^T K P = diag(w^2), w_fast = 2 w_slow on both branches,
-the design examples of MODEL.md section 2), free flight against an independent Taylor ODE
+the design examples of docs/model.md section 2), free flight against an independent Taylor ODE
 integration (mpmath.odefun), energy conservation to 1e-35 on impacting, sticking and
 detuned runs, GLO_lambda grazing every T2 for lambda in (0, 4/3], 1IPP data returning to
 itself after T, FFT <= T2 after impacts (Theorem 2.3), the near-grazing impact time
