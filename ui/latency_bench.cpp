@@ -101,6 +101,33 @@ class PaintWatch : public QObject {
   QHash<QObject*, int> m_paints;
 };
 
+// The longest the event loop went without turning, while it watches: a timer that should fire
+// every 2 ms notes the largest gap between two of its ticks. A scene switch or an edit that
+// computed on the GUI thread would show here (the budget: 50 ms).
+class StallWatch : public QObject {
+ public:
+  StallWatch() {
+    m_timer.setTimerType(Qt::PreciseTimer);
+    m_timer.setInterval(2);
+    connect(&m_timer, &QTimer::timeout, this, [this] {
+      m_longest = std::max(m_longest, m_sinceTick.nsecsElapsed() * 1e-6);
+      m_sinceTick.start();
+    });
+  }
+  void start() {
+    m_longest = 0;
+    m_sinceTick.start();
+    m_timer.start();
+  }
+  /// The longest gap since start() [ms], the last (still open) one included.
+  double longest() const { return std::max(m_longest, m_sinceTick.nsecsElapsed() * 1e-6); }
+
+ private:
+  QTimer m_timer;
+  QElapsedTimer m_sinceTick;
+  double m_longest = 0;
+};
+
 double percentile(std::vector<double> values, double fraction) {
   if (values.empty()) return 0;
   std::sort(values.begin(), values.end());
@@ -118,7 +145,7 @@ QSlider* dragSlider(MainWindow& window) {
 
 int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
   out << "GrazeLab explorer latency (platform " << QGuiApplication::platformName() << ")\n";
-  out << QStringLiteral("%1 | %2 | %3 | %4 | %7 | %5 | %6 | %8\n")
+  out << QStringLiteral("%1 | %2 | %3 | %4 | %7 | %5 | %6 | %8 | %9\n")
              .arg(QStringLiteral("scene"), -40)
              .arg(QStringLiteral("median ms"), 9)
              .arg(QStringLiteral("p90 ms"), 7)
@@ -126,7 +153,8 @@ int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
              .arg(QStringLiteral("drag fps"), 8)
              .arg(QStringLiteral("frames/changes"), 14)
              .arg(QStringLiteral("paint ms"), 8)
-             .arg(QStringLiteral("animation fps"), 13);
+             .arg(QStringLiteral("animation fps"), 13)
+             .arg(QStringLiteral("longest stall ms"), 16);
   MainWindow window({.synchronous = false, .useSettings = false});
   window.resize(1600, 1000);
   window.show();
@@ -137,6 +165,9 @@ int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
   }
   for (int sceneIndex = 0; sceneIndex < int(window.scenes().size()); ++sceneIndex) {
     if (only >= 0 && sceneIndex != only) continue;
+    // from the switch on: every turn of the event loop is timed (switch, edits, drag)
+    StallWatch stalls;
+    stalls.start();
     window.selectScene(sceneIndex);
     // each scene on its own defaults, as on a class's first visit (the chain and the start
     // would otherwise carry over from the scene before)
@@ -190,8 +221,9 @@ int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
     const double chainFps = chain ? double(chain->framesPlayed() - chainFramesBefore) / seconds : 0;
     if (chain) chain->setPlaying(false);
     waitForFinal(window, 60'000);
+    const double longestStall = stalls.longest();
 
-    out << QStringLiteral("%1 | %2 | %3 | %4 | %7 | %5 | %6 | %8\n")
+    out << QStringLiteral("%1 | %2 | %3 | %4 | %7 | %5 | %6 | %8 | %9\n")
                .arg(window.scene().name(), -40)
                .arg(percentile(latencies, 0.5), 9, 'f', 1)
                .arg(percentile(latencies, 0.9), 7, 'f', 1)
@@ -199,7 +231,8 @@ int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
                .arg(frames / seconds, 8, 'f', 1)
                .arg(QStringLiteral("%1/%2").arg(frames).arg(changes), 14)
                .arg(percentile(paint, 0.5), 8, 'f', 1)
-               .arg(chain ? QString::number(chainFps, 'f', 1) : QStringLiteral("-"), 13);
+               .arg(chain ? QString::number(chainFps, 'f', 1) : QStringLiteral("-"), 13)
+               .arg(longestStall, 16, 'f', 1);
     out.flush();
   }
 

@@ -463,8 +463,8 @@ bool MainWindow::applySession(const Session& session, QString* error) {
 
 bool MainWindow::startFromSection(QPointF u1v1) {
   if (!m_displayed) return false;
-  const core::Model& model = m_displayed->request->model;
-  const double level = core::energy(model, m_displayed->request->request.initial);
+  const core::Model& model = m_displayed->request->job.model;
+  const double level = core::energy(model, m_displayed->request->job.request.initial);
   core::State start{u1v1.x(), model.gap, u1v1.y(), 0.0};
   // what is left for v2 after the springs and mass 1 take their share of the energy
   const double rest = level - core::energy(model, start);
@@ -483,13 +483,13 @@ bool MainWindow::startFromSection(QPointF u1v1) {
 
 bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
   if (!m_displayed) return false;
-  const core::Model& model = m_displayed->request->model;
+  const core::Model& model = m_displayed->request->job.model;
   if (!(std::abs(u2v2.x() - model.gap) <= tolerance)) {
     m_status->setText(tr("Click on the stop line u₂ = d (dashed) to start mass 2 from the stop "
                          "at that speed."));
     return false;
   }
-  const core::State& shown = m_displayed->request->request.initial;
+  const core::State& shown = m_displayed->request->job.request.initial;
   const double level = core::energy(model, shown);
   core::State start{shown.u1, model.gap, 0.0, -std::abs(u2v2.y())};
   // what is left for mass 1's speed once its position and mass 2 take their share
@@ -564,26 +564,19 @@ void MainWindow::recompute() {
     current.k2 = derived.model.k2;
     m_panel->setParams(current);
   }
-  SceneJob job = scene().build(current, derived);
-  m_panel->setSliderRanges(job.sliderRanges);
-  if (m_clickedStart && job.ok) job.request.initial = *m_clickedStart;
-  if (!job.ok) {
-    showProblem(job.message);
-    return;
-  }
   m_problem.clear();
   m_panel->setMessage(QString());
-  m_readout->showModel(derived, core::energy(job.model, job.request.initial));
+  // described here, computed by the worker: the scene's curves and surveys as well as the run
   SimRequest request;
-  request.model = job.model;
-  request.request = job.request;
   request.params = current;
   request.sceneName = scene().name();
-  request.reference = job.reference;
-  request.referenceLabel = job.referenceLabel;
-  request.accuracy = job.accuracy;
-  request.map = job.map;
-  request.figures = std::move(job.figures);
+  request.derived = derived;
+  request.prepare = [scene = m_scenes[std::size_t(m_sceneIndex)].get(), params = current, derived,
+                     clicked = m_clickedStart](std::stop_token stop) {
+    SceneJob job = scene->build(params, derived, stop);
+    if (clicked && job.ok) job.request.initial = *clicked;
+    return job;
+  };
   m_controller->submit(std::move(request));
 }
 
@@ -597,6 +590,12 @@ void MainWindow::showProblem(const QString& message) {
 }
 
 void MainWindow::onUpdate(const SimUpdate& update) {
+  const SceneJob& job = update.request->job;
+  if (update.request->sceneName == scene().name()) m_panel->setSliderRanges(job.sliderRanges);
+  if (!job.ok && update.result->stop == core::StopReason::Cancelled) {
+    setProgressVisible(false);  // stopped before the scene had anything to run
+    return;
+  }
   if (update.result->stop == core::StopReason::InvalidInput) {
     setProgressVisible(false);
     showProblem(QString::fromStdString(update.result->message));
@@ -635,6 +634,9 @@ void MainWindow::applyPending() {
   }
   m_displayed = std::move(m_pending);
   m_pending.reset();
+  if (const SimRequest& shown = *m_displayed->request; shown.derived.ok) {
+    m_readout->showModel(shown.derived, core::energy(shown.job.model, shown.job.request.initial));
+  }
   QElapsedTimer cost;
   cost.start();
   // a result that is not the panel's (an infeasible edit came after it) stays marked stale

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <stop_token>
 #include <vector>
 
 #include "core/simulate.h"
@@ -18,21 +19,6 @@
 
 namespace grazelab::ui {
 
-
-/// What a scene asks the worker to compute, or why it cannot.
-struct SceneJob {
-  bool ok = false;
-  QString message;  ///< why not ok
-  core::Model model;
-  core::Request request;
-  std::optional<core::State> reference;  ///< a state on H worth marking (e.g. GLO_lambda* data)
-  QString referenceLabel;
-  std::optional<AccuracyJob> accuracy;  ///< the work-precision sweep, when the scene shows it
-  std::optional<MapJob> map;            ///< the landscape's map, when the scene shows it
-  Figures figures;  ///< curves the scene computed itself (one per CurvePlot it shows)
-  /// slider ranges that depend on the chain (the admissible T/T2 of the 1IPP family)
-  std::map<ParamKey, std::pair<double, double>> sliderRanges;
-};
 
 /// A named preset: which parameters are exposed, which views are shown, and so what is
 /// computed. Scenes are data: a Spec each, made by one function in its own file under
@@ -48,8 +34,11 @@ class Scene {
     Params defaults;
     QList<ParamKey> parameters;
     QList<PlotKind> plots;
-    /// the run for these parameters (derived.ok is true)
-    std::function<SceneJob(const Scene&, const Params&, const DerivedModel&)> build;
+    /// everything the scene computes for these parameters (derived.ok is true): its curves,
+    /// surveys and the run's start. Called by the worker, never on the GUI thread; long loops
+    /// end early when `stop` is requested.
+    std::function<SceneJob(const Scene&, const Params&, const DerivedModel&, std::stop_token stop)>
+        build;
   };
 
   explicit Scene(Spec spec) : m_spec(std::move(spec)) {}
@@ -60,8 +49,8 @@ class Scene {
   Params defaults() const { return m_spec.defaults; }
   QList<ParamKey> parameters() const { return m_spec.parameters; }
   QList<PlotKind> plots() const { return m_spec.plots; }
-  SceneJob build(const Params& params, const DerivedModel& derived) const {
-    return m_spec.build(*this, params, derived);
+  SceneJob build(const Params& params, const DerivedModel& derived, std::stop_token stop = {}) const {
+    return m_spec.build(*this, params, derived, stop);
   }
 
  private:

@@ -6,14 +6,18 @@
 #include <QString>
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <memory>
 #include <optional>
+#include <stop_token>
 #include <string>
 
 #include "core/methods/work_precision.h"
 #include "core/simulate.h"
 #include "core/sweep.h"
 #include "core/trust.h"
+#include "ui/derived.h"
 #include "ui/figures.h"
 #include "ui/params.h"
 
@@ -58,18 +62,35 @@ struct MapProgress {
   double seconds = 0;  ///< computing time so far
 };
 
-/// One computation asked of the worker, as a value. The controller stamps the id.
-struct SimRequest {
-  std::uint64_t id = 0;
+/// What a scene computes for its parameters: its own curves and surveys, the run (model and
+/// request) and what goes with it, or why there is nothing to run.
+struct SceneJob {
+  bool ok = false;
+  QString message;  ///< why not ok
   core::Model model;
   core::Request request;
+  std::optional<core::State> reference;  ///< a state on H worth marking (e.g. GLO_lambda* data)
+  QString referenceLabel;
+  std::optional<AccuracyJob> accuracy;  ///< the work-precision sweep, when the scene shows it
+  std::optional<MapJob> map;            ///< the landscape's map, when the scene shows it
+  Figures figures;  ///< curves the scene computed itself (one per CurvePlot it shows)
+  /// slider ranges that depend on the chain (the admissible T/T2 of the 1IPP family)
+  std::map<ParamKey, std::pair<double, double>> sliderRanges;
+};
+
+/// One computation asked of the worker, as a value. The controller stamps the id.
+///
+/// The GUI thread only describes it (scene, parameters, derived chain): `prepare` is the
+/// scene's own computation and runs on the worker, which stores what it gives in `job` before
+/// the run, so that no scene can stall the window and latest-wins covers all of its work.
+struct SimRequest {
+  std::uint64_t id = 0;
   Params params;       ///< the parameters that produced it (for the display and snapshots)
   QString sceneName;
-  std::optional<core::State> reference;
-  QString referenceLabel;
-  std::optional<AccuracyJob> accuracy;  ///< the Accuracy scene's sweep
-  std::optional<MapJob> map;            ///< the landscape scene's map
-  Figures figures;  ///< the scene's own curves, drawn as they are (computed by the scene)
+  DerivedModel derived;  ///< the chain of `params`, as the panel derived it
+  /// the scene's computation; empty when `job` is already set (tests and benchmarks)
+  std::function<SceneJob(std::stop_token)> prepare;
+  SceneJob job;  ///< what the scene computed (filled by the worker from `prepare`)
 };
 
 /// Copies a run's present totals (everything but its item lists: time, final state, energy,

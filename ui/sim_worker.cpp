@@ -28,16 +28,16 @@ std::optional<std::pair<core::Result, core::Trust>> runRaised(const SimRequest& 
                                                               bool lastResort,
                                                               std::stop_token stop) {
   using H = core::ShadowScalar<S>;
-  core::BasicRequest<S> raised = core::convertRequest<S>(request.request);
+  core::BasicRequest<S> raised = core::convertRequest<S>(request.job.request);
   raised.stopAtUndecided = !lastResort;
-  const core::BasicRequest<H> shadow = core::convertRequest<H>(request.request);
+  const core::BasicRequest<H> shadow = core::convertRequest<H>(request.job.request);
   // the explorer's parameters are the doubles of its panel, exact as they stand
-  core::TrustMonitor<S> monitor(core::convertModel<H>(request.model), shadow,
+  core::TrustMonitor<S> monitor(core::convertModel<H>(request.job.model), shadow,
                                 core::TrustMode::Auto, stop,
                                 core::ExactParameters{true, true, true, true, true});
   raised.onEvent = [&monitor](const core::BasicEvent<S>& event) { monitor.observe(event); };
   const core::BasicResult<S> result =
-      core::simulate(core::convertModel<S>(request.model), raised, stop);
+      core::simulate(core::convertModel<S>(request.job.model), raised, stop);
   if (result.stop == core::StopReason::Undecided || stop.stop_requested()) return std::nullopt;
   core::Trust trust = monitor.finish(result);
   return std::pair{core::toDoubleResult(result), std::move(trust)};
@@ -49,8 +49,8 @@ std::optional<std::pair<core::Result, core::Trust>> runRaised(const SimRequest& 
 void sweepAccuracy(const SimRequest& request, SimUpdate last, std::stop_token stop,
                    const std::function<void(const SimUpdate&)>& report) {
   namespace methods = core::methods;
-  const AccuracyJob& job = *request.accuracy;
-  const core::ChainOrProblem<double> formed = core::makeChain(request.model);
+  const AccuracyJob& job = *request.job.accuracy;
+  const core::ChainOrProblem<double> formed = core::makeChain(request.job.model);
   if (!formed.chain) {
     report(last);
     return;
@@ -59,10 +59,10 @@ void sweepAccuracy(const SimRequest& request, SimUpdate last, std::stop_token st
   // timed with the events only (every contact: the matching needs them all); the overlay's
   // run again with the trace's samples, which would tilt the timing (the exact solver
   // evaluates its flight at each sample, a time stepper only keeps its own steps)
-  methods::Task task{request.model, request.request.initial, last.result->tFinal + period / 2, {}};
+  methods::Task task{request.job.model, request.job.request.initial, last.result->tFinal + period / 2, {}};
   task.needs.events = true;
   methods::Task overlayTask = task;
-  overlayTask.needs.samples = request.request.needs.samples;
+  overlayTask.needs.samples = request.job.request.needs.samples;
   // 40 runs are kept for the picker: each one's trace is capped (the first ~200 T2 of it)
   overlayTask.needs.samples.maxCount = std::min<std::size_t>(overlayTask.needs.samples.maxCount, 20'000);
   methods::Task referenceTask = task;
@@ -106,7 +106,7 @@ MapCache& mapCache() {
 /// each band (its rows appear at once), then the final one.
 void sweepMap(const SimRequest& request, SimUpdate last, std::stop_token stop,
               const std::function<void(const SimUpdate&)>& report) {
-  const core::SweepSpec& spec = request.map->spec;
+  const core::SweepSpec& spec = request.job.map->spec;
   {
     const std::lock_guard lock(mapCache().mutex);
     if (mapCache().map && mapCache().map->spec == spec) {
@@ -191,27 +191,49 @@ void SimWorker::wake() {
   run(*request, stop, 0.030, [this](const SimUpdate& update) { emit updated(update); });
 }
 
-void SimWorker::run(const SimRequest& request, std::stop_token stop, double chunkSeconds,
+void SimWorker::run(const SimRequest& described, std::stop_token stop, double chunkSeconds,
                     const std::function<void(const SimUpdate&)>& report) {
-  const auto asked = std::make_shared<const SimRequest>(request);
+  // the scene's own computations first (curves, surveys, the start), here and not on the GUI
+  // thread; what they give travels with every update
+  SimRequest prepared = described;
+  if (prepared.prepare) {
+    prepared.job = prepared.prepare(stop);
+    prepared.prepare = nullptr;
+  }
+  const auto asked = std::make_shared<const SimRequest>(std::move(prepared));
+  const SimRequest& request = *asked;
+  if (!request.job.ok || stop.stop_requested()) {
+    // nothing to run: the final update says why (or that it was stopped before it began)
+    auto nothing = std::make_shared<core::Result>();
+    nothing->stop = stop.stop_requested() ? core::StopReason::Cancelled : core::StopReason::InvalidInput;
+    nothing->message = request.job.message.toStdString();
+    SimUpdate last;
+    last.id = request.id;
+    last.progress = 1.0;
+    last.final = true;
+    last.request = asked;
+    last.result = std::move(nothing);
+    report(last);
+    return;
+  }
   // the error estimate: a long double shadow of the same run, in lockstep, while it is cheap
-  core::BasicRequest<long double> shadowRequest = core::convertRequest<long double>(request.request);
-  core::TrustMonitor<double> monitor(core::convertModel<long double>(request.model),
+  core::BasicRequest<long double> shadowRequest = core::convertRequest<long double>(request.job.request);
+  core::TrustMonitor<double> monitor(core::convertModel<long double>(request.job.model),
                                      shadowRequest, core::TrustMode::Auto, stop);
   // Up to this many contacts the shadow runs after the result is shown, on the run's events
   // kept meanwhile (~1.6 MB for 20 000); beyond, in lockstep, at no memory cost. The shadow
   // took 7/8 of a 20 000-contact run's time: the plots no longer wait for it.
   constexpr std::int64_t kTrustAfterContacts = 200'000;
-  const bool trustAfter = request.request.maxContacts <= kTrustAfterContacts && !request.accuracy;
+  const bool trustAfter = request.job.request.maxContacts <= kTrustAfterContacts && !request.job.accuracy;
   std::vector<core::Event> events;
-  core::Request primary = request.request;
+  core::Request primary = request.job.request;
   primary.stopAtUndecided = true;  // then the run again in a higher precision (below)
   primary.onEvent = [&monitor, &request, &events, trustAfter](const core::Event& event) {
     if (trustAfter) events.push_back(event);
     else monitor.observe(event);
-    if (request.request.onEvent) request.request.onEvent(event);
+    if (request.job.request.onEvent) request.job.request.onEvent(event);
   };
-  core::Simulator simulator(request.model, primary);
+  core::Simulator simulator(request.job.model, primary);
   // the chunk is sized in contacts and adapted to the measured speed, so that each partial
   // result costs about chunkSeconds; the first chunk is small to show something at once
   std::int64_t budget = 256;
@@ -276,12 +298,12 @@ void SimWorker::run(const SimRequest& request, std::stop_token stop, double chun
     }
     if (!stop.stop_requested()) last.trust = monitor.finish(*last.result);
   }
-  if (request.accuracy && last.result->stop != core::StopReason::InvalidInput &&
+  if (request.job.accuracy && last.result->stop != core::StopReason::InvalidInput &&
       !stop.stop_requested()) {
     sweepAccuracy(request, std::move(last), stop, report);
     return;
   }
-  if (request.map && !stop.stop_requested()) {
+  if (request.job.map && !stop.stop_requested()) {
     sweepMap(request, std::move(last), stop, report);
     return;
   }

@@ -28,8 +28,8 @@ CurvePlot::CurvePlot(PlotKind kind, QWidget* parent)
 }
 
 void CurvePlot::show(const SimUpdate& update) {
-  const auto found = update.request->figures.find(m_kind);
-  if (found == update.request->figures.end()) return;
+  const auto found = update.request->job.figures.find(m_kind);
+  if (found == update.request->job.figures.end()) return;
   const CurveFigure& figure = found->second;
   setTitles(figure.title, figure.xTitle, figure.yTitle);
   setToolTip(figure.toolTip);

@@ -41,7 +41,7 @@ void FreeFlightPlot::show(const SimUpdate& update) {
   appendData(m_flights, flights);
   const std::vector<QPointF>& all = entries()[std::size_t(m_flights)].data;
   // T2 of the run's own chain (the model travels with the request, not in the result)
-  const double T2 = core::computeModes(update.request->model).T2;
+  const double T2 = core::computeModes(update.request->job.model).T2;
   const double last = all.empty() ? 1.0 : std::max(1.0, all.back().x());
   // many flights per pixel column: small translucent dots, so that their density shows as
   // shade instead of a solid block of overlapping squares

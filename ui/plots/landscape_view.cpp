@@ -100,9 +100,9 @@ void LandscapeView::show(const SimUpdate& update) {
                           .arg(colors::kImpact.name(), colors::kAccent.name(), cost));
   }
   const SimRequest& request = *update.request;
-  m_gap = request.model.gap;
+  m_gap = request.job.model.gap;
   // the grazing family and its two modes, from the run's chain
-  const core::ChainOrProblem<double> formed = core::makeChain(request.model);
+  const core::ChainOrProblem<double> formed = core::makeChain(request.job.model);
   m_family.clear();
   if (formed.chain && formed.chain->resonant) {
     for (int step = 0; step <= 64; ++step) {
@@ -116,7 +116,7 @@ void LandscapeView::show(const SimUpdate& update) {
   }
   m_section.clear();
   for (const core::PoincarePoint& point : update.result->poincare) m_section.emplace_back(point.u1, point.v1);
-  const core::State& start = request.request.initial;
+  const core::State& start = request.job.request.initial;
   m_start.reset();
   if (start.u2 == m_gap && start.v2 == 0) m_start = QPointF(start.u1, start.v1);
   QWidget::update();

@@ -66,11 +66,11 @@ void PhasePlot::show(const SimUpdate& update) {
   }
   m_taken.samples = result.samples.size();
   appendData(m_path, path);
-  const core::State& initial = update.request->request.initial;
+  const core::State& initial = update.request->job.request.initial;
   setData(m_start, {m_mass == Mass::Two ? QPointF(initial.u2, initial.v2)
                                         : QPointF(initial.u1, initial.v1)});
   if (m_stop >= 0) {
-    const double gap = update.request->model.gap;
+    const double gap = update.request->job.model.gap;
     setData(m_stop, {QPointF(gap, m_vLow), QPointF(gap, m_vHigh)});
   }
   scheduleRefresh();

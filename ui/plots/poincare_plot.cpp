@@ -42,7 +42,7 @@ void PoincarePlot::show(const SimUpdate& update) {
   const auto count = std::int64_t(result.poincare.size());
   // equal-width bins over the contact index: while the run goes on, over the contacts asked
   // for (so that a point keeps its bin and the bins only grow); at the end over those made
-  const std::int64_t asked = update.request->request.maxContacts;
+  const std::int64_t asked = update.request->job.request.maxContacts;
   const std::int64_t planned =
       update.final || asked <= 0 || asked > std::int64_t(1) << 40 ? count : std::max(asked, count);
   const std::int64_t per = std::max<std::int64_t>(1, (planned + kBins - 1) / kBins);
@@ -75,8 +75,8 @@ void PoincarePlot::show(const SimUpdate& update) {
   }
   std::vector<QPointF> reference;
   clearExtraBounds();
-  if (update.request->reference) {
-    const core::State& data = *update.request->reference;
+  if (update.request->job.reference) {
+    const core::State& data = *update.request->job.reference;
     reference.emplace_back(data.u1, data.v1);
     // points that coincide (a 1IPP orbit hits the same spot every period) still get a window
     // of a few percent of the gap around them, not one zoomed into round-off
@@ -85,8 +85,8 @@ void PoincarePlot::show(const SimUpdate& update) {
     includeInBounds(data.u1, data.v1 + margin);
   }
   QXYSeries* referenceSeries = entryList[std::size_t(m_reference)].series;
-  if (referenceSeries->name() != update.request->referenceLabel) {
-    referenceSeries->setName(update.request->referenceLabel);
+  if (referenceSeries->name() != update.request->job.referenceLabel) {
+    referenceSeries->setName(update.request->job.referenceLabel);
   }
   setData(m_reference, std::move(reference));
   scheduleRefresh();

@@ -27,7 +27,7 @@ TracePlot::TracePlot(QWidget* parent)
 
 void TracePlot::show(const SimUpdate& update) {
   const core::Result& result = *update.result;
-  const double gap = update.request->model.gap;
+  const double gap = update.request->job.model.gap;
   if (m_taken.startsOver(update)) {
     startNewRun();
     setData(m_trace, {});

@@ -77,7 +77,7 @@ Scene::Spec detunedScene() {
                       ParamKey::M2,             ParamKey::Gap,          ParamKey::K1,
                       ParamKey::Perturbation,   ParamKey::Horizon};
   scene.plots = {PlotKind::DetunedFlights, PlotKind::ResonantFlights, PlotKind::TraceU2};
-  scene.build = [](const Scene& self, const Params& params, const DerivedModel&) {
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token) {
     SceneJob job;
     const auto k2 = core::k2ForFrequencyRatio(params.m1, params.m2, params.k1,
                                               params.frequencyRatio, params.branch);

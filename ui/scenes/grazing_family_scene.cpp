@@ -77,7 +77,8 @@ Scene::Spec grazingFamilyScene() {
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::TraceU2, PlotKind::Chain,      PlotKind::GrazingMaximum,
                  PlotKind::PhaseU2V2, PlotKind::FreeFlight, PlotKind::Poincare};
-  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
+                  std::stop_token) {
     // dense output over the whole run for short runs, over the first 400 T2 for long ones
     SceneJob job = gloStartJob(self, params, derived, 400 * derived.modes.T2);
     job.figures[PlotKind::GrazingMaximum] = lemmaFigure(params.lambda);

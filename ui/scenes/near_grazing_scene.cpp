@@ -32,7 +32,8 @@ Scene::Spec nearGrazingScene() {
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::Poincare, PlotKind::FreeFlight, PlotKind::TraceU2};
-  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
+                  std::stop_token) {
     // the trace is a glance at the first periods only; the section is the point of the scene
     return gloStartJob(self, params, derived, 30 * derived.modes.T2);
   };

@@ -84,7 +84,8 @@ Scene::Spec onePeriodicScene() {
                       ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
   scene.plots = {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::FrequencyEnergy,
                  PlotKind::TraceU2, PlotKind::Chain};
-  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
+                  std::stop_token) {
     SceneJob job;
     job.model = derived.model;
     const double T2 = derived.modes.T2;

@@ -19,7 +19,8 @@ constexpr int kSpreadContacts = 200;  // contacts per push size in the spread cu
 
 // max over the first contacts of 1 - FFT/T2 after a push of size epsilon (its sign and
 // direction from the panel); 0 when no flight ended (no contact) or all lasted T2 exactly
-double spreadAfterPush(const DerivedModel& derived, const Params& params, double epsilon) {
+double spreadAfterPush(const DerivedModel& derived, const Params& params, double epsilon,
+                       std::stop_token stop) {
   Params pushed = params;
   pushed.perturbation = std::copysign(epsilon, params.perturbation == 0 ? -1.0 : params.perturbation);
   core::Request request;
@@ -27,7 +28,7 @@ double spreadAfterPush(const DerivedModel& derived, const Params& params, double
   request.maxContacts = kSpreadContacts;
   request.needs.events = false;
   request.needs.freeFlights = true;
-  const core::Result result = core::simulate(derived.model, request);
+  const core::Result result = core::simulate(derived.model, request, stop);
   double spread = 0;
   for (const core::FreeFlight& flight : result.freeFlights) {
     spread = std::max(spread, flight.shortfall / derived.modes.T2);
@@ -35,7 +36,7 @@ double spreadAfterPush(const DerivedModel& derived, const Params& params, double
   return spread;
 }
 
-CurveFigure spreadFigure(const DerivedModel& derived, const Params& params) {
+CurveFigure spreadFigure(const DerivedModel& derived, const Params& params, std::stop_token stop) {
   CurveFigure figure;
   figure.title = tr("Theorem 2.2: how far FFT falls below T₂, against the push ε");
   figure.xTitle = tr("log₁₀ ε (size of the push)");
@@ -46,13 +47,13 @@ CurveFigure spreadFigure(const DerivedModel& derived, const Params& params) {
                       "(Theorem 2.2; GLOM₁, λ = 0, is the exception).")
                       .arg(kSpreadContacts);
   figure.curveName = tr("first %1 contacts").arg(kSpreadContacts);
-  for (int step = 0; step <= 24; ++step) {
+  for (int step = 0; step <= 24 && !stop.stop_requested(); ++step) {
     const double exponent = -7.0 + 0.25 * step;
-    const double spread = spreadAfterPush(derived, params, std::pow(10.0, exponent));
+    const double spread = spreadAfterPush(derived, params, std::pow(10.0, exponent), stop);
     if (spread > 0) figure.curve.emplace_back(exponent, std::log10(spread));
   }
   const double size = std::abs(params.perturbation);
-  const double current = size > 0 ? spreadAfterPush(derived, params, size) : 0;
+  const double current = size > 0 ? spreadAfterPush(derived, params, size, stop) : 0;
   if (current > 0) {
     figure.markerName = tr("ε = %1").arg(size, 0, 'g', 3);
     figure.markers = {QPointF(std::log10(size), std::log10(current))};
@@ -80,9 +81,10 @@ Scene::Spec perturbationScene() {
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::FreeFlight, PlotKind::SpreadAgainstSize, PlotKind::TraceU2};
-  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
+                  std::stop_token stop) {
     SceneJob job = gloStartJob(self, params, derived, 40 * derived.modes.T2);
-    job.figures[PlotKind::SpreadAgainstSize] = spreadFigure(derived, params);
+    job.figures[PlotKind::SpreadAgainstSize] = spreadFigure(derived, params, stop);
     return job;
   };
   return scene;

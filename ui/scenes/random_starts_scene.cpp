@@ -30,7 +30,7 @@ struct Survey {
 
 // Random starts below the stop, within 1.5 gaps and 1.5 w2 gaps per coordinate, the same ones
 // for a given chain (a fixed seed), each run to `contacts` contacts.
-Survey survey(const DerivedModel& derived, std::int64_t contacts) {
+Survey survey(const DerivedModel& derived, std::int64_t contacts, std::stop_token stop) {
   Survey result;
   std::mt19937_64 generator(20261123);
   const double d = derived.model.gap;
@@ -38,14 +38,14 @@ Survey survey(const DerivedModel& derived, std::int64_t contacts) {
   std::uniform_real_distribution<double> position(-1.5 * d, 1.5 * d);
   std::uniform_real_distribution<double> below(-1.5 * d, d);
   std::uniform_real_distribution<double> velocity(-speed, speed);
-  for (int start = 0; start < kStarts; ++start) {
+  for (int start = 0; start < kStarts && !stop.stop_requested(); ++start) {
     core::Request request;
     request.initial = {position(generator), below(generator), velocity(generator),
                        velocity(generator)};
     request.maxContacts = contacts;
     request.needs.events = false;
     request.needs.freeFlights = true;
-    const core::Result run = core::simulate(derived.model, request);
+    const core::Result run = core::simulate(derived.model, request, stop);
     if (run.cost.contacts == 0) {
       ++result.neverTouch;
     } else if (run.cost.contacts >= contacts) {
@@ -123,12 +123,13 @@ Scene::Spec randomStartsScene() {
   scene.parameters = {ParamKey::M1, ParamKey::M2, ParamKey::Gap, ParamKey::K1, ParamKey::K2,
                       ParamKey::Horizon};
   scene.plots = {PlotKind::FlightHistogram, PlotKind::FreeFlight, PlotKind::TraceU2};
-  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
+                  std::stop_token stop) {
     SceneJob job;
     job.model = derived.model;
-    // short enough for the GUI thread: 300 starts x at most 200 contacts
+    // 300 starts x at most 200 contacts: the survey stays short
     const auto contacts = std::int64_t(std::min(params.horizon, 200.0));
-    const Survey found = survey(derived, contacts);
+    const Survey found = survey(derived, contacts, stop);
     job.figures[PlotKind::FlightHistogram] = histogram(found, contacts);
     if (!found.shown) {
       job.message = tr("none of the %1 random starts touches the stop").arg(kStarts);

@@ -32,7 +32,8 @@ Scene::Spec stickingScene() {
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
   scene.plots = {PlotKind::TraceU2, PlotKind::Chain, PlotKind::PhaseU2V2, PlotKind::PhaseU1V1};
-  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived) {
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
+                  std::stop_token) {
     SceneJob job;
     job.model = derived.model;
     const core::State start = core::gloData(derived.model, derived.modes, params.lambda);
