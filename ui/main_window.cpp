@@ -30,6 +30,7 @@
 #include "core/model.h"
 #include "ui/derived.h"
 #include "ui/parameter_panel.h"
+#include "ui/status_line.h"
 #include "ui/plots/accuracy_view.h"
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/chain_view.h"
@@ -98,17 +99,16 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   splitter->setSizes({400, 1200});
   setCentralWidget(splitter);
 
-  m_status = new QLabel;
+  m_status = new StatusLine;
   m_status->setObjectName(QStringLiteral("statusText"));
-  // a long status line is cut at the window's edge (the tooltip explains it), never widens the
-  // window past the screen (in presentation mode its text is twice as large)
-  m_status->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-  m_status->setToolTip(tr("Work done and its accuracy: contacts computed, compute time, the "
-                          "largest relative energy drift at contacts and the largest |u₂ − d| "
-                          "at the contact times found (both should be near round-off), and "
-                          "trust: the estimated error of the final state and contact times from "
-                          "a shadow run in long double (ok below 1e-9, degraded below 1e-6, "
-                          "else unreliable: the run went past its predictability horizon)."));
+  m_statusExplanation = (tr("Work done and its accuracy: contacts computed, compute time, the "
+                              "largest relative energy drift at contacts and the largest |u₂ − d| "
+                              "at the contact times found (both should be near round-off), and "
+                              "trust: the estimated error of the final state and contact times "
+                              "from a shadow run in long double (ok below 1e-9, degraded below "
+                              "1e-6, else unreliable: the run went past its predictability "
+                              "horizon)."));
+  m_status->setExplanation(m_statusExplanation);
   m_progress = new QProgressBar;
   m_progress->setRange(0, 1000);
   m_progress->setMaximumWidth(200);
@@ -123,7 +123,7 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   m_applyTimer.setSingleShot(true);
   connect(&m_applyTimer, &QTimer::timeout, this, &MainWindow::applyPending);
   connect(m_panel, &ParameterPanel::paramsChanged, this, &MainWindow::onParamsChanged);
-  connect(m_panel, &ParameterPanel::inputRefused, m_status, &QLabel::setText);
+  connect(m_panel, &ParameterPanel::inputRefused, m_status, &StatusLine::setMessage);
 
   buildMenus();
   wrapToolTips();
@@ -191,6 +191,14 @@ void MainWindow::buildMenus() {
         m_controller->cancel();
         if (m_enlarged) toggleEnlarged(m_enlarged);
       });
+  m_wholeRunAction = add(
+      view, tr("Show the &whole run"), {QKeySequence(Qt::Key_W)},
+      tr("u₂(t) and the phase portraits: the whole run, or a window of a few slow periods at the "
+         "animation's time (a long run drawn whole fills the plot)"),
+      [this](bool whole) {
+        for (SceneView* view : m_sceneViews) view->setWholeRun(whole);
+      });
+  m_wholeRunAction->setCheckable(true);
   add(view, tr("Play / &pause the motion"), {QKeySequence(Qt::Key_Space)},
       tr("Start or stop the animated chain (scenes that show it)"), [this] {
         if (m_chain) m_chain->setPlaying(!m_chain->playing());
@@ -427,7 +435,9 @@ void MainWindow::showScene(int index) {
   if (m_sceneActions && index < m_sceneActions->actions().size()) {
     m_sceneActions->actions()[index]->setChecked(true);
   }
+  m_wholeRunAction->setChecked(scene().wholeRun());
   buildPlots();
+  for (SceneView* view : m_sceneViews) view->setWholeRun(scene().wholeRun());
   m_panel->setScene(scene());
   m_panel->setParams(m_sceneParams[std::size_t(index)]);
   recompute();
@@ -437,7 +447,7 @@ void MainWindow::resetToSceneDefaults() {
   m_regionHistory.clear();
   if (m_landscape) m_landscape->setBackEnabled(false);
   setParams(scene().defaults());
-  m_status->setText(tr("%1: every parameter back to the scene's defaults.").arg(scene().title()));
+  m_status->setMessage(tr("%1: every parameter back to the scene's defaults.").arg(scene().title()));
 }
 
 const Params& MainWindow::params() const { return m_sceneParams[std::size_t(m_sceneIndex)]; }
@@ -469,7 +479,7 @@ bool MainWindow::startFromSection(QPointF u1v1) {
   // what is left for v2 after the springs and mass 1 take their share of the energy
   const double rest = level - core::energy(model, start);
   if (!(rest >= 0)) {
-    m_status->setText(tr("No state of this energy (E = %1) at u₁ = %2, v₁ = %3 on H: the "
+    m_status->setMessage(tr("No state of this energy (E = %1) at u₁ = %2, v₁ = %3 on H: the "
                          "springs and mass 1 alone would hold more. Click inside the points.")
                           .arg(level, 0, 'g', 6)
                           .arg(u1v1.x(), 0, 'g', 4)
@@ -485,7 +495,7 @@ bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
   if (!m_displayed) return false;
   const core::Model& model = m_displayed->request->job.model;
   if (!(std::abs(u2v2.x() - model.gap) <= tolerance)) {
-    m_status->setText(tr("Click on the stop line u₂ = d (dashed) to start mass 2 from the stop "
+    m_status->setMessage(tr("Click on the stop line u₂ = d (dashed) to start mass 2 from the stop "
                          "at that speed."));
     return false;
   }
@@ -495,7 +505,7 @@ bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
   // what is left for mass 1's speed once its position and mass 2 take their share
   const double rest = level - core::energy(model, start);
   if (!(rest >= 0)) {
-    m_status->setText(tr("No state of this energy (E = %1) with mass 2 leaving the stop at "
+    m_status->setMessage(tr("No state of this energy (E = %1) with mass 2 leaving the stop at "
                          "speed %2 and mass 1 at u₁ = %3: click nearer v₂ = 0.")
                           .arg(level, 0, 'g', 6)
                           .arg(std::abs(u2v2.y()), 0, 'g', 4)
@@ -516,7 +526,7 @@ void MainWindow::showMapRegion(QRectF region) {
     return !(high - low > 1e-9 * std::max({1.0, std::abs(low), std::abs(high)}));
   };
   if (tooNarrow(region.left(), region.right()) || tooNarrow(region.top(), region.bottom())) {
-    m_status->setText(tr("That region is too small to compute apart from its neighbours: drag a larger one"));
+    m_status->setMessage(tr("That region is too small to compute apart from its neighbours: drag a larger one"));
     return;
   }
   // kept in units of d and d w2, so that it frames the same part of the plane for any chain
@@ -586,7 +596,7 @@ void MainWindow::showProblem(const QString& message) {
   m_panel->setMessage(message);
   for (PlotView* plot : m_plots) plot->setStale(m_displayed.has_value());
   m_readout->setStale(true);
-  m_status->setText(tr("Not computed: %1 (showing the last valid result)").arg(message));
+  m_status->setMessage(tr("Not computed: %1 (showing the last valid result)").arg(message));
 }
 
 void MainWindow::onUpdate(const SimUpdate& update) {
@@ -673,7 +683,10 @@ void MainWindow::showStatus(const SimUpdate& update) {
                      .arg(scientific(cost.maxRelEnergyDrift))
                      .arg(scientific(cost.maxContactResidual));
   // a run raised to a higher precision says so early in the line; why, in the tooltip
-  m_status->setToolTip(QString::fromStdString(update.precisionNote));
+  m_status->setExplanation(m_statusExplanation + (update.precisionNote.empty()
+                                                      ? QString()
+                                                      : QStringLiteral("\n\n") +
+                                                            QString::fromStdString(update.precisionNote)));
   if (update.attempt > 0) {
     const int counts = int(text.indexOf(QStringLiteral(" · ")));
     text.insert(counts, tr(" in %1").arg(update.attempt == 1 ? tr("long double") : tr("binary128")));
@@ -699,7 +712,7 @@ void MainWindow::showStatus(const SimUpdate& update) {
     text += QStringLiteral(" · ") + QString::fromStdString(result.message);
   }
   if (!m_problem.isEmpty()) text = tr("Not computed: %1 (showing the last valid result)").arg(m_problem);
-  m_status->setText(text);
+  m_status->setMessage(text);
 }
 
 void MainWindow::setProgressVisible(bool visible) {
@@ -707,7 +720,7 @@ void MainWindow::setProgressVisible(bool visible) {
   m_cancel->setVisible(visible);
 }
 
-QString MainWindow::statusText() const { return m_status->text(); }
+QString MainWindow::statusText() const { return m_status->message(); }
 QString MainWindow::problem() const { return m_problem; }
 
 void MainWindow::followDataFromNextUpdate() {

@@ -33,6 +33,7 @@ class AccuracyView;
 class LandscapeView;
 class ChainView;
 class SceneView;
+class StatusLine;
 class ReadoutPanel;
 class SimController;
 
@@ -182,10 +183,12 @@ class MainWindow : public QMainWindow {
   std::optional<core::State> m_clickedStart;  ///< a start chosen on H, until the next edit  ///< where the window was before presentation mode
   QPalette m_deskPalette;
   QAction* m_presentationAction = nullptr;
+  QAction* m_wholeRunAction = nullptr;  ///< checked: time-based views show the whole run
   QAction* m_panelAction = nullptr;
   SimController* m_controller = nullptr;
   QActionGroup* m_sceneActions = nullptr;
-  QLabel* m_status = nullptr;
+  StatusLine* m_status = nullptr;
+  QString m_statusExplanation;  ///< what the status line shows, in words (its tooltip)
   QProgressBar* m_progress = nullptr;
   QPushButton* m_cancel = nullptr;
   QTimer m_applyTimer;

@@ -463,7 +463,15 @@ class ClassroomTest : public QObject {
     m_window->setParams(params);
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     PlotView* trace = plotTitled(*m_window, QStringLiteral("Displacement"));
+    // a window of three slow periods of the samples' stretch, then (W) all the samples
+    QVERIFY2(axis(*trace, Qt::Horizontal)->titleText().contains(QStringLiteral("3 T₂ of")),
+             qPrintable(axis(*trace, Qt::Horizontal)->titleText()));
+    const double T2 = grazelab::core::computeModes(m_window->displayed()->request->job.model).T2;
+    QVERIFY(axis(*trace, Qt::Horizontal)->max() - axis(*trace, Qt::Horizontal)->min() <= 3 * T2 * (1 + 1e-9));
+    QTest::keyClick(m_window.get(), Qt::Key_W);
+    trace->refreshNow();
     QVERIFY(axis(*trace, Qt::Horizontal)->titleText().contains(QStringLiteral("first")));
+    QVERIFY(axis(*trace, Qt::Horizontal)->max() - axis(*trace, Qt::Horizontal)->min() > 4 * T2);
     PlotView* flights = plotTitled(*m_window, QStringLiteral("Free-flight"));
     QValueAxis* index = axis(*flights, Qt::Horizontal);
     QVERIFY(index->max() > 1.9e5);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 
+#include "core/modes.h"
 #include "ui/plots/plot_style.h"
 
 #include <QChart>
@@ -22,6 +23,9 @@ PhasePlot::PhasePlot(Mass mass, QWidget* parent)
                parent),
       m_mass(mass) {
   m_path = addEntry(makeLine(tr("orbit"), colors::kTrace, 1.0), Decimation::Path);
+  m_recent = addEntry(makeLine(tr("%1 T₂ at the cursor").arg(RunWindow::kPeriods), colors::kTrace, 1.5),
+                      Decimation::Path);
+  setInLegend(entries()[std::size_t(m_recent)].series, false);
   if (mass == Mass::Two) {
     m_stop = addEntry(makeLine(tr("stop u₂ = d"), colors::kStop, 1.5, Qt::DashLine),
                       Decimation::None);
@@ -36,7 +40,13 @@ PhasePlot::PhasePlot(Mass mass, QWidget* parent)
                       "the stop; it feels the impacts through the spring k₂."));
 }
 
-void PhasePlot::setTimeCursor(double, const core::State& state) {
+void PhasePlot::setTimeCursor(double t, const core::State& state) {
+  m_cursorTime = t;
+  const double tLast = m_times.empty() ? 0 : m_times.back();
+  if (!m_whole && !m_runWindow.wholeFits(tLast, m_T2) && m_runWindow.follow(t, tLast, m_T2)) {
+    placeWindow();
+    scheduleRefresh();
+  }
   if (!m_cursor) {
     auto* dot = makeScatter(QString(), colors::kAccent, 12);
     chart()->addSeries(dot);
@@ -53,6 +63,7 @@ void PhasePlot::show(const SimUpdate& update) {
   if (m_taken.startsOver(update)) {
     startNewRun();
     setData(m_path, {});
+    m_times.clear();
     m_vLow = 0;
     m_vHigh = 0;
   }
@@ -61,6 +72,7 @@ void PhasePlot::show(const SimUpdate& update) {
   for (std::size_t index = m_taken.samples; index < result.samples.size(); ++index) {
     const core::State& state = result.samples[index].state;
     path.push_back(m_mass == Mass::Two ? QPointF(state.u2, state.v2) : QPointF(state.u1, state.v1));
+    m_times.push_back(result.samples[index].t);
     m_vLow = std::min(m_vLow, path.back().y());
     m_vHigh = std::max(m_vHigh, path.back().y());
   }
@@ -73,6 +85,38 @@ void PhasePlot::show(const SimUpdate& update) {
     const double gap = update.request->job.model.gap;
     setData(m_stop, {QPointF(gap, m_vLow), QPointF(gap, m_vHigh)});
   }
+  m_T2 = core::computeModes(update.request->job.model).T2;
+  placeWindow();
+  scheduleRefresh();
+}
+
+void PhasePlot::placeWindow() {
+  const double tLast = m_times.empty() ? 0 : m_times.back();
+  const bool windowed = !m_whole && !m_runWindow.wholeFits(tLast, m_T2);
+  if (windowed) {
+    m_runWindow.follow(m_cursorTime, tLast, m_T2);
+    const auto begin = std::lower_bound(m_times.begin(), m_times.end(), m_runWindow.from());
+    const auto end = std::upper_bound(begin, m_times.end(), m_runWindow.to());
+    const std::vector<QPointF>& whole = entries()[std::size_t(m_path)].data;
+    setData(m_recent, std::vector<QPointF>(whole.begin() + (begin - m_times.begin()),
+                                           whole.begin() + (end - m_times.begin())));
+  } else if (m_windowed) {
+    setData(m_recent, {});
+  }
+  if (windowed == m_windowed) return;
+  // the whole run stays behind the window, pale, so that the window's place in it shows
+  m_windowed = windowed;
+  QXYSeries* path = entries()[std::size_t(m_path)].series;
+  QPen pen = path->pen();
+  pen.setColor(windowed ? colors::kWholeRun : colors::kTrace);
+  path->setPen(pen);
+  path->setName(windowed ? tr("whole run (W)") : tr("orbit"));
+  setInLegend(entries()[std::size_t(m_recent)].series, windowed);
+}
+
+void PhasePlot::setWholeRun(bool whole) {
+  m_whole = whole;
+  placeWindow();
   scheduleRefresh();
 }
 

@@ -15,11 +15,22 @@ class PhasePlot final : public PlotView {
   explicit PhasePlot(Mass mass, QWidget* parent = nullptr);
   void show(const SimUpdate& update) override;
   void setTimeCursor(double t, const core::State& state) override;
+  void setWholeRun(bool whole) override;
   Mass mass() const { return m_mass; }
 
  private:
   Mass m_mass;
-  int m_path = 0;
+  /// Draws the window's stretch of the path over the pale whole run, or the whole run alone.
+  void placeWindow();
+
+  int m_path = 0;    ///< the whole run
+  int m_recent = 0;  ///< the window's stretch, over it
+  std::vector<double> m_times;  ///< the time of each point of the whole run
+  RunWindow m_runWindow;
+  double m_T2 = 0;
+  double m_cursorTime = 0;
+  bool m_whole = false;
+  bool m_windowed = false;  ///< what the series show now
   int m_stop = -1;
   int m_start = 0;
   QXYSeries* m_cursor = nullptr;  ///< the animation's state, made on first use

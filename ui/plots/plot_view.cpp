@@ -222,6 +222,12 @@ void PlotView::includeInBounds(double x, double y) { m_extraBounds.push_back({x,
 void PlotView::clearExtraBounds() { m_extraBounds.clear(); }
 void PlotView::setFixedRange(std::optional<QRectF> range) { m_fixedRange = range; }
 
+void PlotView::setXWindow(std::optional<std::pair<double, double>> window) {
+  if (window == m_xWindow) return;
+  m_xWindow = window;
+  scheduleRefresh();
+}
+
 void PlotView::scheduleRefresh() {
   if (!m_refreshTimer.isActive()) m_refreshTimer.start();
 }
@@ -369,12 +375,18 @@ QRectF PlotView::wantedRange() {
   };
   auto [x0, x1] = padded(xLow, xHigh, usable(scaleX));
   auto [y0, y1] = padded(yLow, yHigh, usable(scaleY));
+  if (m_xWindow) {
+    // a window of a long run: the time axis shows it, the other axis the whole run's range
+    // (so that it does not jump while the window moves)
+    x0 = m_xWindow->first;
+    x1 = m_xWindow->second;
+  }
   if (m_growing) {
     const QRectF shown(QPointF(m_axisX->min(), m_axisY->min()), QPointF(m_axisX->max(), m_axisY->max()));
     const bool fits = !m_newRun && shown.left() <= x0 && x1 <= shown.right() &&
                       shown.top() <= y0 && y1 <= shown.bottom();
     if (fits) return shown;
-    const double dx = 0.25 * (x1 - x0);
+    const double dx = m_xWindow ? 0.0 : 0.25 * (x1 - x0);
     const double dy = 0.25 * (y1 - y0);
     x0 -= dx;
     x1 += dx;

@@ -152,6 +152,9 @@ class PlotView : public QChartView, public SceneView {
   /// Axes that stay put while the data change (a family's curve, on which a point moves); the
   /// user's zoom still overrides them until R. nullopt: the axes follow the data.
   void setFixedRange(std::optional<QRectF> range);
+  /// Shows only [first, second] of the x axis while the view follows its data (a window of a
+  /// long run); nothing: the whole extent.
+  void setXWindow(std::optional<std::pair<double, double>> window);
 
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
@@ -185,6 +188,7 @@ class PlotView : public QChartView, public SceneView {
   bool m_newRun = true;
   int m_decimationsFromScratch = 0;
   std::optional<QRectF> m_fixedRange;
+  std::optional<std::pair<double, double>> m_xWindow;
   bool m_stale = false;
   bool m_presentation = false;
   struct Fonts {

@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/scene_view.h"
 
+#include <algorithm>
+
 #include "ui/plots/accuracy_view.h"
 #include "ui/plots/chain_view.h"
 #include "ui/plots/curve_plot.h"
@@ -46,6 +48,22 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::Landscape: return new LandscapeView(parent);
   }
   return nullptr;
+}
+
+bool RunWindow::follow(double cursor, double tLast, double T2) {
+  const double width = kPeriods * T2;
+  const double last = std::max(0.0, tLast - width);  // the latest start the window can have
+  if (m_to - m_from == width && m_from <= last) {
+    // kept while the time is in its middle half, or beyond it on a side where the run ends
+    const bool lowSide = cursor >= m_from + width / 4 || m_from <= 0;
+    const bool highSide = cursor <= m_to - width / 4 || m_from >= last;
+    if (lowSide && highSide) return false;
+  }
+  const double from = std::clamp(cursor - width / 2, 0.0, last);
+  if (from == m_from && from + width == m_to) return false;
+  m_from = from;
+  m_to = from + width;
+  return true;
 }
 
 }  // namespace grazelab::ui

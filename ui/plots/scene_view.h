@@ -25,6 +25,27 @@ class SceneView {
     (void)t;
     (void)state;
   }
+  /// Time-based views show a readable window of a long run (a few slow periods at the
+  /// animation's time) unless the whole run is asked for.
+  virtual void setWholeRun(bool whole) { (void)whole; }
+};
+
+/// The stretch of a long run that time-based views show: `periods` slow periods that hold the
+/// animation's time. It moves only when the time leaves its middle half, so that it stays still
+/// while the animation plays through it (a plot redrawn every frame would flicker and cost).
+class RunWindow {
+ public:
+  static constexpr double kPeriods = 3;
+  /// Follows `cursor` within a run of `tLast` with slow period `T2`; true when it moved.
+  bool follow(double cursor, double tLast, double T2);
+  /// The whole run is short enough to be read whole: no window.
+  bool wholeFits(double tLast, double T2) const { return !(tLast > 1.5 * kPeriods * T2); }
+  double from() const { return m_from; }
+  double to() const { return m_to; }
+
+ private:
+  double m_from = 0;
+  double m_to = 0;
 };
 
 /// Which items of a run a view has taken, so that the next update of the same run (same

@@ -7,6 +7,7 @@
 #include <QScatterSeries>
 #include <QValueAxis>
 
+#include "core/modes.h"
 #include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {
@@ -59,18 +60,43 @@ void TracePlot::show(const SimUpdate& update) {
   setData(m_stop, {QPointF(0, gap), QPointF(tLast, gap)});
   m_gap = gap;
   m_window = tLast;
-  // the trace keeps a window of the run (its first periods); say so when the run goes on
-  const bool cut = result.samplesTruncated || result.tFinal > tLast * (1 + 1e-9) + 1e-12;
-  const QString title = cut ? tr("time t (first %1 of %2)")
-                                  .arg(tLast, 0, 'g', 3)
-                                  .arg(result.tFinal, 0, 'g', 3)
-                            : tr("time t");
-  setXTitle(title);
+  m_T2 = core::computeModes(update.request->job.model).T2;
+  m_samplesCut = result.samplesTruncated || result.tFinal > tLast * (1 + 1e-9) + 1e-12;
+  m_tFinal = result.tFinal;
+  placeWindow();
   drawOverlay();
   scheduleRefresh();
 }
 
+void TracePlot::placeWindow() {
+  if (m_whole || m_runWindow.wholeFits(m_window, m_T2)) {
+    setXWindow(std::nullopt);
+    // the samples may cover only the run's first periods; say so when the run goes on
+    setXTitle(m_samplesCut ? tr("time t (first %1 of %2)")
+                                 .arg(m_window, 0, 'g', 3)
+                                 .arg(m_tFinal, 0, 'g', 3)
+                           : tr("time t"));
+    return;
+  }
+  m_runWindow.follow(m_cursorTime, m_window, m_T2);
+  setXWindow(std::pair(m_runWindow.from(), m_runWindow.to()));
+  setXTitle(tr("time t (%1 T₂ of %2; W: all)")
+                .arg(RunWindow::kPeriods)
+                .arg(m_samplesCut ? m_window : m_tFinal, 0, 'g', 3));
+}
+
+void TracePlot::setWholeRun(bool whole) {
+  m_whole = whole;
+  placeWindow();
+  scheduleRefresh();
+}
+
 void TracePlot::setTimeCursor(double t, const core::State&) {
+  m_cursorTime = t;
+  if (!m_whole && !m_runWindow.wholeFits(m_window, m_T2) && m_runWindow.follow(t, m_window, m_T2)) {
+    placeWindow();
+    scheduleRefresh();
+  }
   if (!m_cursor) {
     // not an entry: it never counts for the axes, the CSV or the decimation
     m_cursor = makeLine(QString(), colors::kAccent, 2.0);

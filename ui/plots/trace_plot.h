@@ -18,13 +18,22 @@ class TracePlot final : public PlotView {
   /// contacts as crosses); an empty run removes the overlay.
   void setOverlay(std::shared_ptr<const core::Result> run, const QString& name);
   void setTimeCursor(double t, const core::State& state) override;
+  void setWholeRun(bool whole) override;
 
  private:
   void drawOverlay();
+  /// The time axis: a few slow periods at the animation's time, or the whole run.
+  void placeWindow();
 
   std::shared_ptr<const core::Result> m_overlayRun;
   double m_gap = 1;
-  double m_window = 0;
+  double m_window = 0;  ///< the end of the drawn samples
+  double m_T2 = 0;
+  double m_cursorTime = 0;
+  bool m_whole = false;
+  bool m_samplesCut = false;  ///< the run goes on past its samples
+  double m_tFinal = 0;
+  RunWindow m_runWindow;
   int m_overlayTrace = -1;
   int m_overlayContacts = -1;
   int m_trace = 0;
