@@ -4,6 +4,8 @@
 
 #include <QCoreApplication>
 
+#include <algorithm>
+
 #include "ui/main_window.h"
 #include "ui/plots/plot_view.h"
 #include "ui/scene.h"
@@ -12,8 +14,23 @@ namespace grazelab::ui {
 
 QStringList sceneNames() {
   QStringList names;
-  for (const auto& scene : makeScenes()) names.append(scene->name());
+  for (const auto& scene : makeScenes()) names.append(scene->alias());
   return names;
+}
+
+QStringList sceneList() {
+  // "id  title": the id --scene takes, the title as the Scenes menu shows it (with its key)
+  QStringList lines;
+  int index = 0;
+  int width = 0;
+  const auto scenes = makeScenes();
+  for (const auto& scene : scenes) width = std::max(width, int(scene->alias().size()));
+  for (const auto& scene : scenes) {
+    ++index;
+    const QString key = index <= 9 ? QStringLiteral("Ctrl+%1").arg(index) : QString();
+    lines.append(QStringLiteral("%1  %2  %3").arg(scene->alias(), -width).arg(key, -6).arg(scene->title()));
+  }
+  return lines;
 }
 
 bool renderSceneSnapshot(const QString& sceneName, const QString& sessionPath,

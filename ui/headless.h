@@ -10,6 +10,9 @@ namespace grazelab::ui {
 
 /// The English scene names, in menu order (for --list-scenes).
 QStringList sceneNames();
+/// One line per scene, in menu order: the id `--scene` accepts, its menu shortcut and its title
+/// as the Scenes menu shows it.
+QStringList sceneList();
 
 /// Renders a scene into a picture without a display: builds the window off screen, computes
 /// synchronously, writes `outputPath` (.png, .svg or .pdf) and its session file beside it.

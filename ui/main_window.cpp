@@ -241,7 +241,12 @@ void MainWindow::buildMenus() {
   }
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
-  add(help, tr("&About GrazeLab"), {}, tr("What this program shows"), &MainWindow::showAbout);
+  add(help, tr("&Guide to this scene"), {QKeySequence(Qt::Key_F1)},
+      tr("What the scene on screen shows and what to look for"), &MainWindow::showSceneGuide);
+  add(help, tr("Keyboard &shortcuts"), {QKeySequence(tr("Ctrl+F1"))}, tr("Every key the window takes"),
+      &MainWindow::showShortcuts);
+  add(help, tr("&About GrazeLab"), {}, tr("What this program shows, and its version"),
+      &MainWindow::showAbout);
 }
 
 void MainWindow::buildPlots() {
@@ -691,13 +696,7 @@ void MainWindow::showStatus(const SimUpdate& update) {
     const int counts = int(text.indexOf(QStringLiteral(" · ")));
     text.insert(counts, tr(" in %1").arg(update.attempt == 1 ? tr("long double") : tr("binary128")));
   }
-  if (update.trust) {
-    const core::Trust& trust = *update.trust;
-    text += tr(" · trust: %1 (error ≈ %2, holds 1e-6 until t ≈ %3)")
-                .arg(QString::fromUtf8(core::toString(trust.verdict).data()))
-                .arg(scientific(std::max(trust.stateError, trust.timeError)))
-                .arg(scientific(trust.horizon));
-  }
+  if (update.trust) text += QStringLiteral(" · ") + trustInWords(*update.trust, result.tFinal);
   if (update.trustPending) text += tr(" · trust: estimating…");
   if (update.accuracy) {
     text += tr(" · methods: %1 of %2 settings measured")
@@ -713,6 +712,27 @@ void MainWindow::showStatus(const SimUpdate& update) {
   }
   if (!m_problem.isEmpty()) text = tr("Not computed: %1 (showing the last valid result)").arg(m_problem);
   m_status->setMessage(text);
+}
+
+QString MainWindow::trustInWords(const core::Trust& trust, double tEnd) {
+  const QString error = scientific(std::max(trust.stateError, trust.timeError));
+  const QString horizon = scientific(trust.horizon);
+  if (trust.verdict == core::Verdict::Unreliable && trust.horizon > 0 && trust.horizon < tEnd) {
+    // the usual case on ordinary settings: chaos, not a fault; say what still holds
+    return tr("chaotic: after t ≈ %1 the exact path depends on rounding (error ≈ %2 at the end); "
+              "the statistics shown still hold")
+        .arg(horizon, error);
+  }
+  switch (trust.verdict) {
+    case core::Verdict::Ok:
+      return tr("trust: ok (error ≈ %1; the path holds to 1e-6 until t ≈ %2)").arg(error, horizon);
+    case core::Verdict::Degraded:
+      return tr("trust: degraded (error ≈ %1; the path holds to 1e-6 until t ≈ %2)").arg(error, horizon);
+    case core::Verdict::Unreliable:
+      return tr("trust: unreliable (error ≈ %1): %2").arg(error, QString::fromStdString(trust.reason));
+    case core::Verdict::Unchecked: break;
+  }
+  return tr("trust: not checked");
 }
 
 void MainWindow::setProgressVisible(bool visible) {

@@ -14,6 +14,10 @@
 #include <vector>
 
 #include "ui/params.h"
+
+namespace grazelab::core {
+struct Trust;
+}
 #include "ui/scene.h"
 #include "ui/session.h"
 #include "ui/sim_types.h"
@@ -58,6 +62,10 @@ class MainWindow : public QMainWindow {
   void selectScene(int index);
   /// Every parameter of the scene on screen, the chain included, back to the scene's defaults.
   void resetToSceneDefaults();
+  /// The error estimate in words a class understands ("chaotic: after t ≈ 292 …").
+  /// Every key the window takes, as a rich-text table (Help ▸ Keyboard shortcuts).
+  QString shortcutsText() const;
+  static QString trustInWords(const core::Trust& trust, double tEnd);
 
   const Params& params() const;
   /// Shows these parameters and recomputes.
@@ -156,6 +164,8 @@ class MainWindow : public QMainWindow {
   void saveSessionInteractive();
   void openSessionInteractive();
   void showAbout();
+  void showShortcuts();
+  void showSceneGuide();
 
   Options m_options;
   std::vector<std::unique_ptr<Scene>> m_scenes;

@@ -131,15 +131,4 @@ void MainWindow::openSessionInteractive() {
   if (!openSession(path, &error)) reportFailure(tr("Opening the session"), error, FileAction::Read);
 }
 
-void MainWindow::showAbout() {
-  QMessageBox::about(
-      this, tr("About GrazeLab"),
-      tr("<p><b>GrazeLab</b> explores a two-mass chain against a rigid stop in 1:2 internal "
-         "resonance: exact free flight between contacts, elastic impacts, grazing and "
-         "sticking.</p><p><b>Mode 1 is the fast mode, mode 2 the slow one</b> (ω₁ = 2 ω₂, so "
-         "T₂ = 2 T₁): the proofs of the underlying note need this labelling, and every free "
-         "motion of the chain repeats after T₂.</p><p>Zoom a plot by dragging a rectangle, pan "
-         "with Shift+drag or the middle button, reset with R.</p>"));
-}
-
 }  // namespace grazelab::ui

@@ -70,6 +70,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
 
   // where the run starts
   auto* start = new QGroupBox(tr("Start"), this);
+  m_startBox = start;
   auto* startLayout = new QVBoxLayout(start);
   addControl(startLayout, ParamKey::Lambda);
   addControl(startLayout, ParamKey::Period);
@@ -99,6 +100,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
 
   // how long
   auto* run = new QGroupBox(tr("Run"), this);
+  m_runBox = run;
   auto* runLayout = new QVBoxLayout(run);
   addControl(runLayout, ParamKey::Horizon);
   layout->addWidget(run);
@@ -140,6 +142,10 @@ void ParameterPanel::setScene(const Scene& scene) {
   const bool perturb = m_sceneKeys.contains(ParamKey::Perturbation);
   m_direction->setVisible(perturb);
   m_directionLabel->setVisible(perturb);
+  // a box with nothing the scene exposes is not shown empty (the random starts pick their own)
+  m_startBox->setVisible(perturb || m_sceneKeys.contains(ParamKey::Lambda) ||
+                         m_sceneKeys.contains(ParamKey::Period));
+  m_runBox->setVisible(m_sceneKeys.contains(ParamKey::Horizon));
   updateFeasibility();
 }
 

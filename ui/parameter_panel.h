@@ -64,6 +64,8 @@ class ParameterPanel : public QWidget {
   QLabel* m_message = nullptr;
   QLabel* m_refusal = nullptr;
   QLabel* m_sceneText = nullptr;
+  QWidget* m_startBox = nullptr;
+  QWidget* m_runBox = nullptr;
 };
 
 }  // namespace grazelab::ui

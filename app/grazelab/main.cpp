@@ -74,7 +74,8 @@ int main(int argc, char* argv[]) {
   parser.addHelpOption();
   parser.addVersionOption();
   const QCommandLineOption listScenes(QStringLiteral("list-scenes"),
-                                      QApplication::translate("main", "Print the scene names, one per line."));
+                                      QApplication::translate("main", "Print the scenes, one per line: the id --scene takes, "
+                                                                      "its shortcut and its title."));
   const QCommandLineOption scene(QStringLiteral("scene"),
                                  QApplication::translate("main", "Scene to open or render."),
                                  QStringLiteral("NAME"));
@@ -101,7 +102,7 @@ int main(int argc, char* argv[]) {
   QTextStream out(stdout);
   QTextStream err(stderr);
   if (parser.isSet(listScenes)) {
-    for (const QString& name : grazelab::ui::sceneNames()) out << name << '\n';
+    for (const QString& line : grazelab::ui::sceneList()) out << line << '\n';
     return 0;
   }
   if (parser.isSet(bench)) return grazelab::ui::runLatencyBenchmark(out, parser.value(scene));

@@ -3,6 +3,7 @@
 // What a first trial of the explorer in front of a class tripped over (issue 9, "Fix first"):
 // each problem found there has a test here that fails if it comes back.
 #include <QAction>
+#include <QGroupBox>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
@@ -426,6 +427,33 @@ class ClassroomTest : public QObject {
     QTest::keyClick(m_window.get(), Qt::Key_Escape);
     QVERIFY(!m_window->presentation());
     QVERIFY(QApplication::font().pixelSize() < 720 / 50);  // the desk font, in points (-1 px)
+  }
+
+  // "trust: unreliable (error ≈ 140)" on ordinary settings, FFT in time units in one scene and
+  // in T2 in another, an empty "Start" box, no list of shortcuts
+  void wordsAClassUnderstands() {
+    Params params = m_window->params();
+    params.lambda = 0.25;  // chaotic within the scene's 60 contacts
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->statusText().contains(QStringLiteral("chaotic")), 20000);
+    QVERIFY2(m_window->statusText().contains(QStringLiteral("the statistics shown still hold")),
+             qPrintable(m_window->statusText()));
+    QVERIFY(!m_window->statusText().contains(QStringLiteral("unreliable")));
+    PlotView* flights = plotTitled(*m_window, QStringLiteral("Free-flight"));
+    QVERIFY(axis(*flights, Qt::Vertical)->titleText().contains(QStringLiteral("T₂")));
+    for (const QPointF& point : seriesNamed(*flights, QStringLiteral("FFT"))->data) QVERIFY(point.y() <= 1.0);
+    m_window->selectScene(sceneIndex(*m_window, QStringLiteral("random-starts")));
+    for (const QGroupBox* box : m_window->parameterPanel()->findChildren<QGroupBox*>()) {
+      if (!box->isVisibleTo(m_window.get())) continue;
+      bool shows = false;
+      for (const QWidget* child : box->findChildren<QWidget*>()) shows |= child->isVisibleTo(box);
+      QVERIFY2(shows, qPrintable(box->title()));
+    }
+    const QString keys = m_window->shortcutsText();
+    for (const char* key : {"Ctrl+Shift+R", "Space", "F5", "Esc", "PgDown", "Ctrl+9"}) {
+      QVERIFY2(keys.contains(QString::fromLatin1(key)), key);
+    }
   }
 
   // after a zoom, a parameter change kept it and the plot could go blank with no hint; a stale

@@ -227,8 +227,9 @@ class ExplorerTest : public QObject {
     // the overlay: the chosen run's u2 appears on the trace, and changes with the choice
     auto overlayData = [this]() {
       for (const PlotView::Entry& entry : m_window->plots().first()->entries()) {
-        if (entry.series->name().startsWith(QStringLiteral("moreau-jean")) ||
-            entry.series->name().startsWith(QStringLiteral("dopri5"))) {
+        // named in words, as the overlay picker says them
+        if (entry.series->name().startsWith(QStringLiteral("Moreau–Jean")) ||
+            entry.series->name().startsWith(QStringLiteral("Dormand–Prince"))) {
           return entry.data;
         }
       }
@@ -387,7 +388,8 @@ class ExplorerTest : public QObject {
       for (int i = 0; i < 1000; ++i) {
         const auto index = std::int64_t(run->poincare.size());
         // flights a little shorter than T2, as near a grazing orbit
-        run->freeFlights.push_back({index, T2 * (1 - std::abs(spread(random))), 0});
+        const double shortfall = T2 * std::abs(spread(random));
+        run->freeFlights.push_back({index, T2 - shortfall, shortfall});
         const double angle = 6.283 * unit(random);
         run->poincare.push_back({double(index), std::cos(angle), 0.5 * std::sin(angle), -0.1});
       }

@@ -22,16 +22,45 @@ QString text(std::string_view view) { return QString::fromUtf8(view.data(), qsiz
 /// class sees a time stepper miss a graze or invent an impact.
 constexpr auto kDefaultOverlay = core::methods::MethodKind::MoreauJean;
 
+/// The method as a class says it (the command line's ids, "moreau-jean-theta1", are for files).
+QString methodInWords(core::methods::MethodKind kind) {
+  using core::methods::MethodKind;
+  switch (kind) {
+    case MethodKind::Exact: return AccuracyView::tr("exact solver");
+    case MethodKind::MoreauJean: return AccuracyView::tr("Moreau–Jean, θ = 1/2");
+    case MethodKind::MoreauJeanTheta1: return AccuracyView::tr("Moreau–Jean, θ = 1");
+    case MethodKind::SchatzmanPaoli: return AccuracyView::tr("Schatzman–Paoli");
+    case MethodKind::Dopri5Events: return AccuracyView::tr("Dormand–Prince 5(4) with events");
+    case MethodKind::CvodeAdams: return AccuracyView::tr("CVODE Adams");
+    case MethodKind::CvodeBdf: return AccuracyView::tr("CVODE BDF");
+    case MethodKind::Penalty: return AccuracyView::tr("penalty spring");
+  }
+  return text(core::methods::methodName(kind));
+}
+
+/// Its setting in words: "step h = 0.01", "tolerance 1e-06", "stiffness 1e+06", "in binary128".
+QString settingInWords(const core::methods::MethodSetting& setting) {
+  using core::methods::MethodKind;
+  const QString value = QString::number(setting.parameterValue(), 'g', 2);
+  switch (setting.kind) {
+    case MethodKind::Exact:
+      return AccuracyView::tr("in %1").arg(text(core::toString(setting.precision)));
+    case MethodKind::MoreauJean:
+    case MethodKind::MoreauJeanTheta1:
+    case MethodKind::SchatzmanPaoli: return AccuracyView::tr("step h = %1").arg(value);
+    case MethodKind::Dopri5Events:
+    case MethodKind::CvodeAdams:
+    case MethodKind::CvodeBdf: return AccuracyView::tr("tolerance %1").arg(value);
+    case MethodKind::Penalty: return AccuracyView::tr("stiffness %1").arg(value);
+  }
+  return value;
+}
+
 }  // namespace
 
 QString accuracyLabel(const core::methods::WorkPrecisionPoint& point) {
   const auto& setting = point.setting;
-  QString label = text(core::methods::methodName(setting.kind)) + ' ';
-  if (setting.kind == core::methods::MethodKind::Exact) {
-    label += text(core::toString(setting.precision));
-  } else {
-    label += text(setting.parameter()) + '=' + QString::number(setting.parameterValue(), 'g', 2);
-  }
+  const QString label = methodInWords(setting.kind) + QStringLiteral(", ") + settingInWords(setting);
   if (point.status != core::methods::RunStatus::Completed) {
     return label + QStringLiteral(": %1").arg(text(core::methods::toString(point.status)));
   }
@@ -109,7 +138,7 @@ void AccuracyView::show(const SimUpdate& update) {
     std::vector<QPointF>& points = curves[kind];
     std::sort(points.begin(), points.end(),
               [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
-    all.push_back({text(core::methods::methodName(kind)), points});
+    all.push_back({methodInWords(kind), points});
   }
   m_chart->setCurves(all);
   // the picker: every finished setting, the user's choice kept

@@ -14,15 +14,15 @@
 namespace grazelab::ui {
 
 FreeFlightPlot::FreeFlightPlot(QWidget* parent)
-    : PlotView(tr("Free-flight time at each contact"), tr("contact index"), tr("FFT"), parent) {
-  auto* flights = makeScatter(tr("FFT"), colors::kTrace, 5);
+    : PlotView(tr("Free-flight time at each contact"), tr("contact index"), tr("FFT / T₂"), parent) {
+  auto* flights = makeScatter(tr("FFT / T₂"), colors::kTrace, 5);
   flights->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
   useLightMarker(flights);
   m_flights = addEntry(flights, Decimation::Scatter);
   m_period = addEntry(makeLine(tr("FFT = T₂"), colors::kImpact, 1.5, Qt::DashLine), Decimation::None);
   setToolTip(tr("Free-flight time (FFT): the time from leaving the stop to the next contact, "
-                "against the index of that contact. Theorem 2.3: FFT ≤ T₂ (the slow period, "
-                "dashed), with equality only on a grazing orbit."));
+                "against the index of that contact, in units of T₂, the slow period. Theorem 2.3: FFT ≤ T₂ "
+                "(dashed: FFT / T₂ = 1), with equality only on a grazing orbit."));
 }
 
 void FreeFlightPlot::show(const SimUpdate& update) {
@@ -31,17 +31,18 @@ void FreeFlightPlot::show(const SimUpdate& update) {
     startNewRun();
     setData(m_flights, {});
   }
+  // T2 of the run's own chain (the model travels with the request, not in the result)
+  const double T2 = core::computeModes(update.request->job.model).T2;
   std::vector<QPointF> flights;
   flights.reserve(result.freeFlights.size() - m_taken.freeFlights);
   for (std::size_t index = m_taken.freeFlights; index < result.freeFlights.size(); ++index) {
     const core::FreeFlight& flight = result.freeFlights[index];
-    flights.emplace_back(double(flight.contactIndex), flight.duration);
+    // 1 - shortfall / T2: exact near T2, where FFT / T2 itself would round to 1
+    flights.emplace_back(double(flight.contactIndex), 1.0 - flight.shortfall / T2);
   }
   m_taken.freeFlights = result.freeFlights.size();
   appendData(m_flights, flights);
   const std::vector<QPointF>& all = entries()[std::size_t(m_flights)].data;
-  // T2 of the run's own chain (the model travels with the request, not in the result)
-  const double T2 = core::computeModes(update.request->job.model).T2;
   const double last = all.empty() ? 1.0 : std::max(1.0, all.back().x());
   // many flights per pixel column: small translucent dots, so that their density shows as
   // shade instead of a solid block of overlapping squares
@@ -55,7 +56,7 @@ void FreeFlightPlot::show(const SimUpdate& update) {
     series->setColor(color);
     useLightMarker(series);
   }
-  setData(m_period, {QPointF(0, T2), QPointF(last, T2)});
+  setData(m_period, {QPointF(0, 1.0), QPointF(last, 1.0)});
   scheduleRefresh();
 }
 

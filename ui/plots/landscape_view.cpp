@@ -17,6 +17,7 @@
 #include "core/chain.h"
 #include "core/orbits.h"
 #include "ui/plots/heat_map.h"
+#include "core/modes.h"
 #include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {
@@ -24,10 +25,27 @@ namespace {
 
 constexpr int kClickSlack = 4;  // pixels a press may move and still be a click
 
-QString quantityLabel(const core::QuantityInfo& info) {
-  const QString unit = QString::fromUtf8(info.unit);
-  return unit == "count" ? QString::fromUtf8(info.name)
-                         : QStringLiteral("%1 [%2]").arg(QString::fromUtf8(info.name), unit);
+/// The colour bar's title in words, and whether the map's values (in time) are shown in units
+/// of T2, as every scene shows free-flight times ("fft_first [time]" meant nothing to a class).
+struct QuantityInWords {
+  QString title;
+  bool overT2 = false;
+};
+
+QuantityInWords inWords(core::Quantity quantity) {
+  using core::Quantity;
+  switch (quantity) {
+    case Quantity::FftFirst: return {LandscapeView::tr("first free flight / T₂"), true};
+    case Quantity::FftMin: return {LandscapeView::tr("shortest free flight / T₂"), false};
+    case Quantity::FftMax: return {LandscapeView::tr("longest free flight / T₂"), false};
+    case Quantity::FftMean: return {LandscapeView::tr("mean free flight / T₂"), false};
+    case Quantity::Impacts: return {LandscapeView::tr("number of impacts"), false};
+    case Quantity::Grazings: return {LandscapeView::tr("number of grazings"), false};
+    case Quantity::Sticks: return {LandscapeView::tr("number of stuck phases"), false};
+    case Quantity::FirstImpactTime: return {LandscapeView::tr("time of the first impact / T₂"), true};
+    case Quantity::Horizon: return {LandscapeView::tr("predictability horizon / T₂"), true};
+  }
+  return {};
 }
 
 }  // namespace
@@ -104,6 +122,7 @@ void LandscapeView::show(const SimUpdate& update) {
   // the grazing family and its two modes, from the run's chain
   const core::ChainOrProblem<double> formed = core::makeChain(request.job.model);
   m_family.clear();
+  m_T2 = core::computeModes(request.job.model).T2;
   if (formed.chain && formed.chain->resonant) {
     for (int step = 0; step <= 64; ++step) {
       const core::State data = core::gloData(*formed.chain, 4.0 / 3.0 * step / 64);
@@ -170,7 +189,9 @@ HeatMapData LandscapeView::heatMapDataOf(const MapProgress& map) const {
   // only the rows the worker has finished: it may be writing the others right now
   const std::size_t ready = std::size_t(map.rowsDone * data.columns);
   data.values.assign(std::size_t(data.columns * data.rows), std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t i = 0; i < ready; ++i) data.values[i] = core::valueOf((*map.points)[i], m_quantity);
+  const QuantityInWords words = inWords(m_quantity);
+  const double scale = words.overT2 && m_T2 > 0 ? 1 / m_T2 : 1.0;
+  for (std::size_t i = 0; i < ready; ++i) data.values[i] = core::valueOf((*map.points)[i], m_quantity) * scale;
   data.rowsReady = map.rowsDone;
   data.xFrom = map.spec.x.from;
   data.xTo = map.spec.x.to;
@@ -180,7 +201,7 @@ HeatMapData LandscapeView::heatMapDataOf(const MapProgress& map) const {
   data.title[0] = data.title[0].toUpper();
   data.xTitle = tr("u₁ of the start (u₂ = d, v₂ = 0)");
   data.yTitle = tr("v₁ of the start");
-  data.valueTitle = quantityLabel(info);
+  data.valueTitle = words.title;
   return data;
 }
 

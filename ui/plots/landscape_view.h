@@ -71,6 +71,7 @@ class LandscapeView : public QWidget, public SceneView {
   QLabel* m_status = nullptr;
   core::Quantity m_quantity = core::Quantity::FftFirst;
   std::optional<MapProgress> m_map;
+  double m_T2 = 0;  ///< the chain's slow period: times on the map are shown in its units
   double m_gap = 1;
   std::vector<QPointF> m_family;      ///< GLO(λ) data (u1, v1) for λ in [0, 4/3]
   QPointF m_glom1, m_glom2;           ///< GLOM1 and GLOM2 data

@@ -62,7 +62,7 @@ Scene::Spec grazingFamilyScene() {
   scene.alias = QStringLiteral("grazing");
   scene.title = tr("Lemma 2.1: the grazing family GLO(λ)");
   scene.text = tr("<b>Grazing orbits.</b> Each λ mixes the fast mode (1 − λ) and the slow mode "
-                  "(λ) so that mass 2 just touches the stop. <i>Look for:</i> the red dot on "
+                  "(λ) so that mass 2 just touches the stop. <i>Look for:</i> the orange-red dot on "
                   "the curve (top right) stays on the line 1 for λ in [0, 4/3]: the orbit "
                   "touches and stays below the stop. Outside that range the linear motion "
                   "would pass through the stop: for λ > 4/3 mass 2 starts pressed on it and "

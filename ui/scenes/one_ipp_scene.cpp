@@ -73,7 +73,7 @@ Scene::Spec onePeriodicScene() {
                   "impact data u₁ (left) run into the value of the grazing orbit GLO(λ*), and "
                   "the impact speed |V| (right) falls to 0. <i>Why:</i> as T → T₂ the impact "
                   "becomes a touch; the only orbit that returns after T₂ touching the stop is "
-                  "the grazing one with λ = λ*, fixed by the masses (Theorem 2.1). The red dot "
+                  "the grazing one with λ = λ*, fixed by the masses (Theorem 2.1). The orange-red dot "
                   "is the current T; the frequency–energy curve (bottom left) ends at that "
                   "grazing orbit's energy and ω₂; the plots beside it show the motion.");
   scene.defaults.periodFraction = 0.9;

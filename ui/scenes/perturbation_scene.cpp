@@ -38,11 +38,11 @@ double spreadAfterPush(const DerivedModel& derived, const Params& params, double
 
 CurveFigure spreadFigure(const DerivedModel& derived, const Params& params, std::stop_token stop) {
   CurveFigure figure;
-  figure.title = tr("Theorem 2.2: how far FFT falls below T₂, against the push ε");
-  figure.xTitle = tr("log₁₀ ε (size of the push)");
+  figure.title = tr("Theorem 2.2: how far FFT falls below T₂, against the push |δ|");
+  figure.xTitle = tr("log₁₀ |δ| (size of the push)");
   figure.yTitle = tr("log₁₀ max (1 − FFT/T₂)");
-  figure.toolTip = tr("For pushes of size ε off GLO(λ) (in the panel's direction), the largest "
-                      "shortfall 1 − FFT/T₂ over the first %1 contacts. It shrinks with ε: "
+  figure.toolTip = tr("For pushes of size |δ| off GLO(λ) (in the panel's direction), the largest "
+                      "shortfall 1 − FFT/T₂ over the first %1 contacts. It shrinks with |δ|: "
                       "near a grazing orbit every free flight lasts almost T₂ and never more "
                       "(Theorem 2.2; GLOM₁, λ = 0, is the exception).")
                       .arg(kSpreadContacts);
@@ -55,7 +55,7 @@ CurveFigure spreadFigure(const DerivedModel& derived, const Params& params, std:
   const double size = std::abs(params.perturbation);
   const double current = size > 0 ? spreadAfterPush(derived, params, size, stop) : 0;
   if (current > 0) {
-    figure.markerName = tr("ε = %1").arg(size, 0, 'g', 3);
+    figure.markerName = tr("|δ| = %1").arg(size, 0, 'g', 3);
     figure.markers = {QPointF(std::log10(size), std::log10(current))};
   }
   return figure;
@@ -68,10 +68,10 @@ Scene::Spec perturbationScene() {
   scene.name = QStringLiteral("Theorem 2.2: perturbations of a grazing orbit");
   scene.alias = QStringLiteral("perturbations");
   scene.title = tr("Theorem 2.2: perturbations of a grazing orbit");
-  scene.text = tr("<b>Pushed a little off a grazing orbit.</b> A push of size ε (perturbation "
-                  "δ) sends GLO(λ) into the stop. <i>Look for:</i> every free-flight time "
+  scene.text = tr("<b>Pushed a little off a grazing orbit.</b> A push δ (the panel's "
+                  "perturbation) sends GLO(λ) into the stop. <i>Look for:</i> every free-flight time "
                   "(left) stays at or just below T₂, and (top right) the largest shortfall "
-                  "1 − FFT/T₂ shrinks steadily as ε does. <i>Why:</i> the motion stays close to "
+                  "1 − FFT/T₂ shrinks steadily with |δ|. <i>Why:</i> the motion stays close to "
                   "a T₂-periodic grazing orbit, and a contact cannot come later than T₂ "
                   "(Theorem 2.2). Try λ = 0 (GLOM₁), the exception.");
   scene.defaults.lambda = 0.5;

@@ -21,7 +21,7 @@ Scene::Spec stickingScene() {
   scene.title = tr("Sticking: a start pressed on the stop");
   scene.text = tr("<b>Pressed on the stop.</b> For λ beyond 4/3 the grazing data put mass 1 "
                   "past the gap (u₁ > d): its spring pushes mass 2 into the stop. <i>Look "
-                  "for:</i> u₂(t) stays flat on the stop (orange mark: stick) until the push "
+                  "for:</i> u₂(t) stays flat on the stop (orange triangle: stick) until the push "
                   "turns into a pull (release), then ordinary impacts follow. <i>Why:</i> the "
                   "stop can push but not pull, so mass 2 stays on it while the force points "
                   "into it; the motion then is that of mass 1 alone. At λ = 4/3 exactly the "
