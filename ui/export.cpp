@@ -130,7 +130,7 @@ QImage renderImage(QWidget* widget, qreal pixelRatio) {
 }
 
 bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessionJson,
-                  QString* error) {
+                  const QString& title, QString* error) {
   const auto format = snapshotFormat(path);
   if (!format) {
     if (error) *error = QStringLiteral("unknown picture type for %1: use .png, .svg or .pdf").arg(path);
@@ -147,6 +147,7 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
       writer.setText(QStringLiteral("GrazeLabSession"),
                      compactSession(sessionJson));
       writer.setText(QStringLiteral("Software"), QStringLiteral("GrazeLab"));
+      writer.setText(QStringLiteral("Title"), title);
       if (!writer.write(renderImage(widget))) {
         file.cancelWriting();
         if (error) *error = QStringLiteral("cannot encode %1: %2").arg(path, writer.errorString());
@@ -159,7 +160,7 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
       generator.setOutputDevice(&file);
       generator.setSize(widget->size());
       generator.setViewBox(QRect(QPoint(0, 0), widget->size()));
-      generator.setTitle(QStringLiteral("GrazeLab"));
+      generator.setTitle(title.toHtmlEscaped());
       // Qt 6.4 writes the description as it is: a "<" in it would make the file unreadable
       generator.setDescription(description.toHtmlEscaped());
       QPainter painter(&generator);
@@ -175,9 +176,9 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
     case SnapshotFormat::Pdf: {
       QPdfWriter writer(&file);
       writer.setCreator(QStringLiteral("GrazeLab"));
-      // the parameters travel inside the document: in its title (what a viewer shows), in its
-      // XMP metadata (dc:description) and as an attached session file
-      writer.setTitle(QStringLiteral("GrazeLab snapshot: ") + compactSession(sessionJson));
+      // the title is what a viewer shows: words; the parameters travel inside the document in
+      // its XMP metadata (dc:description) and as an attached session file
+      writer.setTitle(title);
       writer.setDocumentXmpMetadata(xmpMetadata(sessionJson));
       writer.addFileAttachment(QStringLiteral("session.json"), sessionJson,
                                QStringLiteral("application/json"));

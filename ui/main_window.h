@@ -96,9 +96,14 @@ class MainWindow : public QMainWindow {
   QString problem() const;
 
   bool saveWindowSnapshot(const QString& path, QString* error);
-  bool savePlotSnapshot(const QString& path, QString* error);
+  /// The plot last clicked; at `size` (pixels) when given, laid out anew for it.
+  bool savePlotSnapshot(const QString& path, QString* error, QSize size = {});
   /// Every visible plot's full-resolution data as CSV "plot,series,x,y".
   QString plottedDataCsv() const;
+  /// The last directory used if it can be written, else Pictures, Documents, home.
+  QString saveDirectory() const;
+  /// "grazing-lambda0.5-window.png"
+  QString suggestedFileName(const QString& what, const QString& suffix) const;
   bool exportCsv(const QString& path, QString* error);
   bool saveSession(const QString& path, QString* error);
   bool openSession(const QString& path, QString* error);
@@ -156,7 +161,10 @@ class MainWindow : public QMainWindow {
   /// A dialog: what failed, why, and what became of the window and the file.
   void reportFailure(const QString& what, const QString& error,
                      FileAction action = FileAction::Write);
-  QString askSavePath(const QString& title, const QString& filters, const QString& suffix);
+  /// A save dialog opened in saveDirectory() on suggestedFileName(what, suffix).
+  QString askSavePath(const QString& title, const QString& filters, const QString& suffix,
+                      const QString& what);
+
   void saveWindowSnapshotInteractive();
   void savePlotSnapshotInteractive();
   void exportCsvInteractive();

@@ -5,20 +5,28 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QFileDialog>
+#include <QDir>
 #include <QFileInfo>
+#include <QInputDialog>
+#include <QJsonDocument>
+#include <QStandardPaths>
 #include <QMessageBox>
 #include <QMimeData>
 
 #include "ui/export.h"
 #include "ui/main_window.h"
+#include "ui/number_box.h"
 #include "ui/plots/plot_view.h"
+#include "ui/plots/scene_view.h"
+#include "ui/scene.h"
 
 namespace grazelab::ui {
 
 bool MainWindow::writeSnapshot(QWidget* widget, const QString& path, QString* error) {
-  const QByteArray json = sessionToJson(displayedSession());
+  const Session shown = displayedSession();
+  const QByteArray json = sessionToJson(shown);
   // the picture first: a session file beside a missing picture would only confuse
-  if (!saveSnapshot(widget, path, json, error)) return false;
+  if (!saveSnapshot(widget, path, json, sessionTitle(shown), error)) return false;
   return saveFileAtomically(sessionPathFor(path), json, error);
 }
 
@@ -26,16 +34,42 @@ bool MainWindow::saveWindowSnapshot(const QString& path, QString* error) {
   return writeSnapshot(this, path, error);
 }
 
-bool MainWindow::savePlotSnapshot(const QString& path, QString* error) {
+bool MainWindow::savePlotSnapshot(const QString& path, QString* error, QSize size) {
   if (!m_currentPlot) {
     if (error) *error = tr("there is no plot to save");
     return false;
   }
-  return writeSnapshot(m_currentPlot, path, error);
+  if (!size.isValid() || size == m_currentPlot->size() || !m_displayed) {
+    return writeSnapshot(m_currentPlot, path, error);
+  }
+  // at another size: the same view made again off screen, laid out for that size (its text
+  // keeps its size; a scaled picture would only enlarge it)
+  const qsizetype index = m_plots.indexOf(m_currentPlot);
+  PlotKind kind = PlotKind::TraceU2;
+  for (int i = 0, seen = 0; i < int(scene().plots().size()); ++i) {
+    SceneView* view = m_sceneViews.value(i);
+    if (!view || !qobject_cast<PlotView*>(view->widget())) continue;
+    if (seen++ == index) kind = scene().plots()[i];
+  }
+  std::unique_ptr<SceneView> copy(makeView(kind));
+  QWidget* widget = copy->widget();
+  widget->setAttribute(Qt::WA_DontShowOnScreen);
+  widget->resize(size);
+  widget->show();
+  copy->setPresentation(m_presentation, m_presentationText);
+  copy->setWholeRun(m_wholeRunAction->isChecked());
+  copy->show(*m_displayed);
+  if (auto* plot = qobject_cast<PlotView*>(widget)) plot->refreshNow();
+  return writeSnapshot(widget, path, error);
 }
 
 QString MainWindow::plottedDataCsv() const {
-  QString csv = QStringLiteral("plot,series,x,y\n");
+  // the parameters first, as comments (pandas: comment="#"; R: comment.char = "#")
+  const Session shown = displayedSession();
+  QString csv = QStringLiteral("# %1\n# session: %2\nplot,series,x,y\n")
+                    .arg(sessionTitle(shown),
+                         QString::fromUtf8(QJsonDocument::fromJson(sessionToJson(shown))
+                                               .toJson(QJsonDocument::Compact)));
   for (const PlotView* plot : m_plots) plot->appendCsv(csv);
   return csv;
 }
@@ -69,9 +103,36 @@ void MainWindow::reportFailure(const QString& what, const QString& error, FileAc
   QMessageBox::warning(this, what, tr("%1 failed:\n%2\n\n%3").arg(what, error, consequence));
 }
 
-QString MainWindow::askSavePath(const QString& title, const QString& filters, const QString& suffix) {
+QString MainWindow::saveDirectory() const {
+  // a directory that cannot be written is not offered again (the dialog hung listing /proc)
+  for (const QString& candidate :
+       {m_lastDirectory, QStandardPaths::writableLocation(QStandardPaths::PicturesLocation),
+        QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation), QDir::homePath(),
+        QDir::currentPath()}) {
+    const QFileInfo info(candidate);
+    if (!candidate.isEmpty() && info.isDir() && info.isWritable() &&
+        !info.absoluteFilePath().startsWith(QStringLiteral("/proc")) &&
+        !info.absoluteFilePath().startsWith(QStringLiteral("/sys"))) {
+      return info.absoluteFilePath();
+    }
+  }
+  return QDir::tempPath();
+}
+
+QString MainWindow::suggestedFileName(const QString& what, const QString& suffix) const {
+  // "grazing-lambda0.5-window.png": the scene, its main value and what was saved
+  const Params& shown = displayedSession().params;
+  const QString value = scene().parameters().contains(ParamKey::Lambda)
+                            ? QStringLiteral("-lambda%1").arg(shortestText(shown.lambda))
+                            : QString();
+  return QStringLiteral("%1%2-%3%4").arg(scene().alias(), value, what, suffix);
+}
+
+QString MainWindow::askSavePath(const QString& title, const QString& filters, const QString& suffix,
+                                const QString& what) {
   QString selected;
-  QString path = QFileDialog::getSaveFileName(this, title, m_lastDirectory, filters, &selected);
+  const QString start = QDir(saveDirectory()).filePath(suggestedFileName(what, suffix));
+  QString path = QFileDialog::getSaveFileName(this, title, start, filters, &selected);
   if (path.isEmpty()) return {};
   if (QFileInfo(path).suffix().isEmpty()) {
     // take the suffix from the chosen filter, "PNG image (*.png)" -> ".png"
@@ -85,22 +146,40 @@ QString MainWindow::askSavePath(const QString& title, const QString& filters, co
 void MainWindow::saveWindowSnapshotInteractive() {
   const QString path = askSavePath(
       tr("Save snapshot of the window"),
-      tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"), QStringLiteral(".png"));
+      tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"), QStringLiteral(".png"),
+      QStringLiteral("window"));
   QString error;
   if (!path.isEmpty() && !saveWindowSnapshot(path, &error)) reportFailure(tr("Saving the snapshot"), error);
 }
 
 void MainWindow::savePlotSnapshotInteractive() {
+  if (!m_currentPlot) return;
+  // the size first: a figure for a paper or slides has its own
+  const QSize onScreen = m_currentPlot->size();
+  const QList<QSize> sizes{onScreen, {800, 600}, {1200, 900}, {1600, 1000}, {1920, 1080}};
+  QStringList items;
+  for (const QSize& size : sizes) {
+    items << (size == onScreen ? tr("%1 × %2 (as on screen)") : QStringLiteral("%1 × %2"))
+                 .arg(size.width())
+                 .arg(size.height());
+  }
+  bool chosen = false;
+  const QString item = QInputDialog::getItem(this, tr("Save current plot"),
+                                             tr("Size (pixels; PNG pictures are twice as dense):"),
+                                             items, 0, false, &chosen);
+  if (!chosen) return;
+  const QSize size = sizes.value(items.indexOf(item), onScreen);
   const QString path = askSavePath(
       tr("Save current plot"), tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"),
-      QStringLiteral(".png"));
+      QStringLiteral(".png"), QStringLiteral("plot"));
   QString error;
-  if (!path.isEmpty() && !savePlotSnapshot(path, &error)) reportFailure(tr("Saving the plot"), error);
+  if (!path.isEmpty() && !savePlotSnapshot(path, &error, size)) reportFailure(tr("Saving the plot"), error);
 }
 
 void MainWindow::exportCsvInteractive() {
   const QString path =
-      askSavePath(tr("Export plotted data"), tr("CSV table (*.csv)"), QStringLiteral(".csv"));
+      askSavePath(tr("Export plotted data"), tr("CSV table (*.csv)"), QStringLiteral(".csv"),
+                  QStringLiteral("data"));
   QString error;
   if (!path.isEmpty() && !exportCsv(path, &error)) reportFailure(tr("Exporting CSV"), error);
 }
@@ -117,13 +196,13 @@ void MainWindow::copyCurrentPlot() {
 
 void MainWindow::saveSessionInteractive() {
   const QString path = askSavePath(tr("Save session"), tr("GrazeLab session (*.json)"),
-                                   QStringLiteral(".json"));
+                                   QStringLiteral(".json"), QStringLiteral("session"));
   QString error;
   if (!path.isEmpty() && !saveSession(path, &error)) reportFailure(tr("Saving the session"), error);
 }
 
 void MainWindow::openSessionInteractive() {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Open session"), m_lastDirectory,
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open session"), saveDirectory(),
                                                     tr("GrazeLab session (*.json)"));
   if (path.isEmpty()) return;
   m_lastDirectory = QFileInfo(path).absolutePath();

@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/session.h"
 
+#include "ui/number_box.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -48,8 +50,17 @@ std::optional<Session> sessionFromJson(const QByteArray& json, const Params& def
 }
 
 QString sessionPathFor(const QString& snapshotPath) {
+  // the whole name: a PNG, an SVG and a CSV saved under one base name each keep their own
   const QFileInfo info(snapshotPath);
-  return info.dir().filePath(info.completeBaseName() + QStringLiteral(".session.json"));
+  return info.dir().filePath(info.fileName() + QStringLiteral(".session.json"));
+}
+
+QString sessionTitle(const Session& session) {
+  const Params& p = session.params;
+  const auto n = [](double value) { return shortestText(value); };
+  return QStringLiteral("GrazeLab: %1 (λ = %2, δ = %3, m₁ = %4, m₂ = %5, k₁ = %6, k₂ = %7, d = %8, %9 contacts)")
+      .arg(session.scene, n(p.lambda), n(p.perturbation), n(p.m1), n(p.m2), n(p.k1), n(p.k2), n(p.gap))
+      .arg(n(p.horizon));
 }
 
 std::optional<Session> readSessionFile(const QString& path, const Params& defaults,

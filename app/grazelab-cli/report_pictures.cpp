@@ -7,6 +7,8 @@
 
 #include "report_internal.h"
 #include "ui/export.h"
+#include <QFileInfo>
+
 #include "ui/plots/log_log_chart.h"
 
 namespace grazelab::cli::report {
@@ -19,7 +21,8 @@ bool savePictures(ui::LogLogChart& chart, const QString& stem, const QByteArray&
   chart.resize(1200, 760);
   for (const char* suffix : {".svg", ".png"}) {
     QString reason;
-    if (!ui::saveSnapshot(&chart, stem + suffix, json, &reason)) {
+    const QString title = QStringLiteral("GrazeLab report: %1").arg(QFileInfo(stem).fileName());
+    if (!ui::saveSnapshot(&chart, stem + suffix, json, title, &reason)) {
       error = reason;
       return false;
     }

@@ -16,6 +16,7 @@
 #include "tests/ui/explorer_test_support.h"
 #include "ui/export.h"
 #include "ui/main_window.h"
+#include "ui/number_box.h"
 #include "ui/session.h"
 
 using namespace grazelab::ui;
@@ -99,6 +100,37 @@ class FilesTest : public QObject {
     QVERIFY2(session, qPrintable(parseError));
     QCOMPARE(session->scene, m_window->scene().name());
     QVERIFY(session->params == m_window->params());
+  }
+
+  // window.png, window.svg and window.csv shared (and overwrote) one window.session.json; the
+  // PDF's title was a JSON blob; a plot could only be saved at its size on screen
+  void savedFilesKeepTheirOwnSideFileTitleAndSize() {
+    QTemporaryDir dir;
+    QString error;
+    QVERIFY2(m_window->saveWindowSnapshot(dir.filePath(QStringLiteral("fig.png")), &error), qPrintable(error));
+    QVERIFY2(m_window->exportCsv(dir.filePath(QStringLiteral("fig.csv")), &error), qPrintable(error));
+    QVERIFY(sessionPathFor(dir.filePath(QStringLiteral("fig.png"))) !=
+            sessionPathFor(dir.filePath(QStringLiteral("fig.csv"))));
+    QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("fig.png.session.json"))));
+    QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("fig.csv.session.json"))));
+
+    const QString pdf = dir.filePath(QStringLiteral("fig.pdf"));
+    QVERIFY2(m_window->saveWindowSnapshot(pdf, &error), qPrintable(error));
+    QProcess info;
+    info.start(QStringLiteral("pdfinfo"), {pdf});
+    QVERIFY2(info.waitForFinished(20000), "pdfinfo (poppler-utils) did not run");
+    const QString title = QString::fromUtf8(info.readAllStandardOutput()).section(QLatin1Char('\n'), 0, 0);
+    const QString lambda = shortestText(m_window->params().lambda);
+    QVERIFY2(title.contains(QStringLiteral("λ = ") + lambda) && !title.contains(QLatin1Char('{')),
+             qPrintable(title));
+
+    const QString plot = dir.filePath(QStringLiteral("plot.png"));
+    QVERIFY2(m_window->savePlotSnapshot(plot, &error, QSize(800, 600)), qPrintable(error));
+    QCOMPARE(QImage(plot).size(), QSize(1600, 1200));
+
+    QVERIFY(m_window->suggestedFileName(QStringLiteral("window"), QStringLiteral(".png"))
+                .startsWith(QStringLiteral("grazing-lambda") + lambda + QStringLiteral("-window")));
+    QVERIFY(!m_window->saveDirectory().startsWith(QStringLiteral("/proc")));
   }
 
   void pngCarriesItsSessionAndDoublePixels() {
@@ -236,7 +268,10 @@ class FilesTest : public QObject {
     QString error;
     QVERIFY2(m_window->exportCsv(path, &error), qPrintable(error));
     const QList<QByteArray> lines = readAll(path).split('\n');
-    QCOMPARE(lines.first(), QByteArray("plot,series,x,y"));
+    // the parameters first, in comment lines, then the table
+    QVERIFY(lines[0].startsWith("# GrazeLab: "));
+    QVERIFY(lines[1].startsWith("# session: {"));
+    QCOMPARE(lines[2], QByteArray("plot,series,x,y"));
     const auto& samples = m_window->displayed()->result->samples;
     QVERIFY(lines.size() > qsizetype(samples.size()));
     QVERIFY(QFileInfo::exists(sessionPathFor(path)));
