@@ -145,7 +145,7 @@ QSlider* dragSlider(MainWindow& window) {
 
 int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
   out << "GrazeLab explorer latency (platform " << QGuiApplication::platformName() << ")\n";
-  out << QStringLiteral("%1 | %2 | %3 | %4 | %7 | %5 | %6 | %8 | %9\n")
+  out << QStringLiteral("%1 | %2 | %3 | %4 | %7 | %5 | %6 | %8 | %9 | %10\n")
              .arg(QStringLiteral("scene"), -40)
              .arg(QStringLiteral("median ms"), 9)
              .arg(QStringLiteral("p90 ms"), 7)
@@ -154,7 +154,8 @@ int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
              .arg(QStringLiteral("frames/changes"), 14)
              .arg(QStringLiteral("paint ms"), 8)
              .arg(QStringLiteral("animation fps"), 13)
-             .arg(QStringLiteral("longest stall ms"), 16);
+             .arg(QStringLiteral("longest stall ms"), 16)
+             .arg(QStringLiteral("slowest view (ms to take an update)"));
   MainWindow window({.synchronous = false, .useSettings = false});
   window.resize(1600, 1000);
   window.show();
@@ -180,6 +181,8 @@ int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
     std::vector<double> latencies;
     std::vector<double> compute;
     std::vector<double> paint;
+    QHash<const QWidget*, double> viewCost;
+    int viewSteps = 0;
     PaintWatch watch(window);
     for (int step = 0; step < 21; ++step) {
       QElapsedTimer clock;
@@ -194,6 +197,20 @@ int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
       latencies.push_back(clock.nsecsElapsed() * 1e-6);
       paint.push_back(clock.nsecsElapsed() * 1e-6 - drawn);
       compute.push_back(window.displayed()->result->cost.wallSeconds * 1e3);
+      for (auto it = window.viewCosts().begin(); it != window.viewCosts().end(); ++it) {
+        viewCost[it.key()] += it.value();
+      }
+      ++viewSteps;
+    }
+    // the view that took longest to take in an update, on average
+    QString slowest = QStringLiteral("-");
+    double slowestMs = 0;
+    for (auto it = viewCost.begin(); it != viewCost.end(); ++it) {
+      if (it.value() / std::max(1, viewSteps) <= slowestMs) continue;
+      slowestMs = it.value() / std::max(1, viewSteps);
+      const auto* plot = qobject_cast<const PlotView*>(it.key());
+      slowest = plot ? plot->title().section(QLatin1Char(':'), 0, 0).left(24)
+                     : QString::fromLatin1(it.key()->metaObject()->className()).section(QStringLiteral("::"), -1);
     }
 
     // a drag: one slider step every 8 ms for 2 s; a frame is one paint of every plot
@@ -223,7 +240,7 @@ int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
     waitForFinal(window, 60'000);
     const double longestStall = stalls.longest();
 
-    out << QStringLiteral("%1 | %2 | %3 | %4 | %7 | %5 | %6 | %8 | %9\n")
+    out << QStringLiteral("%1 | %2 | %3 | %4 | %7 | %5 | %6 | %8 | %9 | %10\n")
                .arg(window.scene().name(), -40)
                .arg(percentile(latencies, 0.5), 9, 'f', 1)
                .arg(percentile(latencies, 0.9), 7, 'f', 1)
@@ -232,7 +249,8 @@ int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
                .arg(QStringLiteral("%1/%2").arg(frames).arg(changes), 14)
                .arg(percentile(paint, 0.5), 8, 'f', 1)
                .arg(chain ? QString::number(chainFps, 'f', 1) : QStringLiteral("-"), 13)
-               .arg(longestStall, 16, 'f', 1);
+               .arg(longestStall, 16, 'f', 1)
+               .arg(QStringLiteral("%1 %2").arg(slowest).arg(slowestMs, 0, 'f', 2));
     out.flush();
   }
 

@@ -259,6 +259,7 @@ void MainWindow::buildPlots() {
     view->deleteLater();
   }
   m_sceneViews.clear();
+  m_viewCosts.clear();
   m_plots.clear();
   m_accuracy = nullptr;
   m_chain = nullptr;
@@ -656,12 +657,20 @@ void MainWindow::applyPending() {
   cost.start();
   // a result that is not the panel's (an infeasible edit came after it) stays marked stale
   const bool stale = !m_problem.isEmpty();
-  for (SceneView* view : m_sceneViews) view->show(*m_displayed);
+  // each view's share is kept (grazelab --bench names the slowest)
+  QElapsedTimer viewClock;
+  for (SceneView* view : m_sceneViews) {
+    viewClock.start();
+    view->show(*m_displayed);
+    m_viewCosts[view->widget()] = viewClock.nsecsElapsed() * 1e-6;
+  }
   // after every show: the accuracy view may have changed the trace's overlay
   for (PlotView* plot : m_plots) {
+    viewClock.start();
     plot->setStale(stale);
     plot->setGrowing(!m_displayed->final);
     plot->refreshNow();
+    m_viewCosts[plot] += viewClock.nsecsElapsed() * 1e-6;
   }
   if (m_chain) m_chain->setTime(m_chain->time());  // the cursors again, on the refitted axes
   m_lastApplyCost = cost.elapsed();

@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <QList>
 #include <QFont>
+#include <QHash>
 #include <QMainWindow>
 #include <QPalette>
 #include <QTimer>
@@ -65,6 +66,8 @@ class MainWindow : public QMainWindow {
   /// The error estimate in words a class understands ("chaotic: after t ≈ 292 …").
   /// Every key the window takes, as a rich-text table (Help ▸ Keyboard shortcuts).
   QString shortcutsText() const;
+  /// What each view of the scene took to take in the last update drawn [ms], by widget.
+  const QHash<const QWidget*, double>& viewCosts() const { return m_viewCosts; }
   static QString trustInWords(const core::Trust& trust, double tEnd);
 
   const Params& params() const;
@@ -206,7 +209,8 @@ class MainWindow : public QMainWindow {
   SimController* m_controller = nullptr;
   QActionGroup* m_sceneActions = nullptr;
   StatusLine* m_status = nullptr;
-  QString m_statusExplanation;  ///< what the status line shows, in words (its tooltip)
+  QString m_statusExplanation;
+  QHash<const QWidget*, double> m_viewCosts;  ///< what the status line shows, in words (its tooltip)
   QProgressBar* m_progress = nullptr;
   QPushButton* m_cancel = nullptr;
   QTimer m_applyTimer;

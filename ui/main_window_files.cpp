@@ -9,6 +9,7 @@
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QJsonDocument>
+#include <QScopeGuard>
 #include <QStandardPaths>
 #include <QMessageBox>
 #include <QMimeData>
@@ -25,6 +26,15 @@ namespace grazelab::ui {
 bool MainWindow::writeSnapshot(QWidget* widget, const QString& path, QString* error) {
   const Session shown = displayedSession();
   const QByteArray json = sessionToJson(shown);
+  // the picture shows the run of its session, which is valid: no "stale" banner in it
+  QList<PlotView*> stale;
+  for (PlotView* plot : m_plots) {
+    if (plot->isStale()) stale.append(plot);
+  }
+  for (PlotView* plot : stale) plot->setStale(false);
+  const auto restore = qScopeGuard([&stale] {
+    for (PlotView* plot : stale) plot->setStale(true);
+  });
   // the picture first: a session file beside a missing picture would only confuse
   if (!saveSnapshot(widget, path, json, sessionTitle(shown), error)) return false;
   return saveFileAtomically(sessionPathFor(path), json, error);

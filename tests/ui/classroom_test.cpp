@@ -213,7 +213,8 @@ class ClassroomTest : public QObject {
         QVERIFY2(plot->legendFits(), qPrintable(plot->title()));
         for (const PlotView::Entry& entry : plot->entries()) {
           const QString name = entry.series->name();
-          if (name.isEmpty() || entry.data.empty()) continue;
+          // a hidden series (the whole run behind a window) is not in the legend either
+          if (name.isEmpty() || entry.data.empty() || !entry.series->isVisible()) continue;
           QVERIFY2(plot->legendNames().contains(name), qPrintable(plot->title() + QStringLiteral(": ") + name));
         }
       }
@@ -590,7 +591,7 @@ class ClassroomTest : public QObject {
   void aClickOnTheStopLineStartsARunThere() {
     PlotView* phase = plotTitled(*m_window, QStringLiteral("Phase portrait of mass 2"));
     QVERIFY(phase);
-    QTRY_VERIFY(phase->entries().front().series->count() > 0);
+    QTRY_VERIFY(!phase->entries().front().data.empty());
     const grazelab::core::Model model = m_window->displayed()->request->job.model;
     const grazelab::core::State shown = m_window->displayed()->request->job.request.initial;
     const double level = grazelab::core::energy(model, shown);

@@ -23,7 +23,8 @@ PhasePlot::PhasePlot(Mass mass, QWidget* parent)
                parent),
       m_mass(mass) {
   m_path = addEntry(makeLine(tr("orbit"), colors::kTrace, 1.0), Decimation::Path);
-  m_recent = addEntry(makeLine(tr("%1 T₂ at the cursor").arg(RunWindow::kPeriods), colors::kTrace, 1.5),
+  m_recent = addEntry(makeLine(tr("orbit, %1 T₂ at the cursor (W: all)").arg(RunWindow::kPeriods),
+                               colors::kTrace, 1.0),
                       Decimation::Path);
   setInLegend(entries()[std::size_t(m_recent)].series, false);
   if (mass == Mass::Two) {
@@ -104,13 +105,12 @@ void PhasePlot::placeWindow() {
     setData(m_recent, {});
   }
   if (windowed == m_windowed) return;
-  // the whole run stays behind the window, pale, so that the window's place in it shows
+  // the whole run still sets the axes (they do not jump as the window moves) but is not drawn:
+  // sixty turns of a quasi-periodic orbit fill a disc, and cost a stroked point each
   m_windowed = windowed;
   QXYSeries* path = entries()[std::size_t(m_path)].series;
-  QPen pen = path->pen();
-  pen.setColor(windowed ? colors::kWholeRun : colors::kTrace);
-  path->setPen(pen);
-  path->setName(windowed ? tr("whole run (W)") : tr("orbit"));
+  path->setVisible(!windowed);
+  setInLegend(path, !windowed);
   setInLegend(entries()[std::size_t(m_recent)].series, windowed);
 }
 

@@ -21,7 +21,6 @@ inline const QColor kGrazing{0xE6, 0x9F, 0x00};    ///< orange
 inline const QColor kReference{0x00, 0x00, 0x00};  ///< black
 inline const QColor kOverlay{0x00, 0x9E, 0x73};    ///< bluish green: another method's run
 inline const QColor kAccent{0xCC, 0x79, 0xA7};     ///< reddish purple
-inline const QColor kWholeRun{0xC6, 0xD9, 0xE8};   ///< pale blue: the whole run behind its window
 }  // namespace colors
 
 /// A solid line series of the given colour and width.

@@ -246,12 +246,23 @@ void PlotView::setStale(bool stale) {
     m_staleNote->setStyleSheet(QStringLiteral(
         "QLabel { background: #fff3cd; color: #7a1010; border: 1px solid #7a1010; padding: 2px; }"));
     m_staleNote->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_staleNote->setWordWrap(true);
   }
-  m_staleNote->adjustSize();
-  m_staleNote->move(width() - m_staleNote->width() - 8, 4);
   m_staleNote->setVisible(stale);
+  placeStaleNote();
   chart()->setPlotAreaBackgroundBrush(QColor(0xe8, 0xe8, 0xe8));
   chart()->setPlotAreaBackgroundVisible(stale);
+}
+
+void PlotView::placeStaleNote() {
+  if (!m_staleNote || !m_staleNote->isVisible()) return;
+  // inside the plot area's top right corner, wrapped to its width: over the title (and cut at
+  // the plot's edge) it hid what the plot is
+  const QRect area = mapFromScene(chart()->mapToScene(chart()->plotArea())).boundingRect();
+  const int room = std::max(60, area.width() - 8);
+  m_staleNote->setMaximumWidth(room);
+  m_staleNote->adjustSize();
+  m_staleNote->move(std::max(0, area.right() - m_staleNote->width() - 4), area.top() + 4);
 }
 
 void PlotView::resetView() {
@@ -420,6 +431,7 @@ void PlotView::refresh() {
     setRangeWithTicks(m_axisY, m_axisY->min(), m_axisY->max());
   }
   m_newRun = false;
+  placeStaleNote();
   const QRectF area = chart()->plotArea();
   PixelFrame frame{m_axisX->min(), m_axisX->max(), m_axisY->min(), m_axisY->max(),
                    std::max(1, int(area.width())), std::max(1, int(area.height()))};
@@ -455,6 +467,12 @@ void PlotView::refresh() {
     Entry& entry = m_entries[index];
     if (std::find(m_joinedScatters.begin(), m_joinedScatters.end(), int(index)) !=
         m_joinedScatters.end()) {
+      continue;
+    }
+    if (!entry.series->isVisible()) {
+      // hidden (its data still set the axes): nothing drawn, decimated afresh when shown
+      if (entry.series->count() > 0) entry.series->clear();
+      entry.replaced = true;
       continue;
     }
     const bool replaced = entry.replaced;
@@ -575,7 +593,7 @@ void PlotView::resizeEvent(QResizeEvent* event) {
   // QChartView raises its own minimum size to the chart's and never lowers it: a legend of
   // many lines once would keep the plot (and the window) tall for good
   setMinimumSize(240, 180);
-  if (m_staleNote) m_staleNote->move(width() - m_staleNote->width() - 8, 4);
+  placeStaleNote();
   scheduleRefresh();
 }
 

@@ -199,6 +199,7 @@ class PlotView : public QChartView, public SceneView {
   QString m_title, m_xTitle, m_yTitle;  ///< whole, as set
   std::optional<Fonts> m_deskFonts;  ///< the fonts before presentation mode
   QLabel* m_staleNote = nullptr;
+  void placeStaleNote();
   std::unique_ptr<WrappedLegend> m_legend;
   QTimer m_refreshTimer;
   bool m_followData = true;

@@ -80,7 +80,7 @@ void TracePlot::placeWindow() {
   }
   m_runWindow.follow(m_cursorTime, m_window, m_T2);
   setXWindow(std::pair(m_runWindow.from(), m_runWindow.to()));
-  setXTitle(tr("time t (%1 T₂ of %2; W: all)")
+  setXTitle(tr("time t (%1 T₂ of %2 shown; W: all)")
                 .arg(RunWindow::kPeriods)
                 .arg(m_samplesCut ? m_window : m_tFinal, 0, 'g', 3));
 }

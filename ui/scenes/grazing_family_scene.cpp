@@ -50,7 +50,14 @@ CurveFigure lemmaFigure(double lambda) {
   figure.xMin = -0.55;
   figure.xMax = 2.05;
   figure.yMin = 0.9;
-  figure.yMax = highestReach(2.0) + 0.05;
+  // the whole curve and the current lambda's dot inside the axes: a line past the plot's edge
+  // ran over its title in SVG exports (Qt Charts clips on screen only)
+  double top = 1.0;
+  for (const QPointF& point : figure.curve) top = std::max(top, point.y());
+  top = std::max(top, figure.markers.front().y());
+  figure.xMin = std::min(figure.xMin, lambda - 0.05);
+  figure.xMax = std::max(figure.xMax, lambda + 0.05);
+  figure.yMax = top + 0.05 * (top - figure.yMin);
   return figure;
 }
 
