@@ -83,7 +83,8 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   scroll->setWidget(left);
   scroll->setWidgetResizable(true);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  scroll->setMinimumWidth(390);
+  // narrow enough that a 1024-pixel projector holds the panel and three columns of plots
+  scroll->setMinimumWidth(320);
   m_side = scroll;
 
   m_plotArea = new QWidget;
@@ -415,7 +416,7 @@ void MainWindow::setPresentation(bool on, int screenHeight, bool fullScreen) {
   }
   // the larger text needs a wider panel: about 24 characters' worth, at most 40 % of the window
   if (auto* splitter = qobject_cast<QSplitter*>(centralWidget())) {
-    const int side = on ? std::clamp(24 * m_presentationText, 390, width() * 2 / 5) : 400;
+    const int side = on ? std::max(320, std::min(24 * m_presentationText, width() * 2 / 5)) : 400;
     splitter->setSizes({side, std::max(1, width() - side)});
   }
 }

@@ -52,8 +52,10 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
                           "the slow one (ω₁ = 2 ω₂). Off: type k₂ yourself (a detuned chain)."));
   m_branch = new QComboBox(chain);
   m_branch->setObjectName(QStringLiteral("branchCombo"));
-  m_branch->addItem(tr("upper branch"), int(core::Branch::Upper));
-  m_branch->addItem(tr("lower branch"), int(core::Branch::Lower));
+  // short items: the row also holds the design box, and a squeezed combo read "upper branc"
+  m_branch->addItem(tr("upper k₂"), int(core::Branch::Upper));
+  m_branch->addItem(tr("lower k₂"), int(core::Branch::Lower));
+  m_branch->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
   m_branch->setToolTip(tr("The 1:2 design has two solutions for k₂ (they meet at m₂/m₁ = 9/16): "
                           "the upper (stiffer) and the lower one."));
   designRow->addWidget(m_design);

@@ -5,6 +5,7 @@
 #include "ui/number_box.h"
 
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
@@ -25,8 +26,39 @@ MarkedSlider::MarkedSlider(QWidget* parent) : QSlider(Qt::Horizontal, parent) {}
 
 void MarkedSlider::setMarks(QList<QPair<int, QString>> marks) {
   m_marks = std::move(marks);
-  if (!m_marks.isEmpty()) setMinimumHeight(sizeHint().height() + fontMetrics().height());
+  reserveLabelRoom();
   update();
+}
+
+QFont MarkedSlider::labelFont() const {
+  // smaller than the labels; the font may be set in pixels (presentation mode) or in points
+  QFont small = font();
+  if (small.pixelSize() > 0) small.setPixelSize(std::max(8, int(small.pixelSize() * 0.8)));
+  else small.setPointSizeF(small.pointSizeF() * 0.8);
+  return small;
+}
+
+void MarkedSlider::reserveLabelRoom() {
+  // the slider in the top strip, the labels in a strip of their own below it: drawn over the
+  // slider they hid its handle ("0.5625" on m2's)
+  const int labels = m_marks.isEmpty() ? 0 : QFontMetrics(labelFont()).height() + 5;
+  setMinimumHeight(QSlider::sizeHint().height() + labels);
+}
+
+void MarkedSlider::changeEvent(QEvent* event) {
+  QSlider::changeEvent(event);
+  if (event->type() == QEvent::FontChange || event->type() == QEvent::StyleChange) reserveLabelRoom();
+}
+
+void MarkedSlider::initStyleOption(QStyleOptionSlider* option) const {
+  QSlider::initStyleOption(option);
+  // drawn and hit-tested in the top strip (the style centres a slider in its rect); sizeHint()
+  // asks for the option too, hence the guard
+  if (m_marks.isEmpty() || m_measuring) return;
+  m_measuring = true;
+  const int strip = QSlider::sizeHint().height();
+  m_measuring = false;
+  option->rect.setHeight(std::min(height(), strip));
 }
 
 void MarkedSlider::paintEvent(QPaintEvent* event) {
@@ -38,20 +70,20 @@ void MarkedSlider::paintEvent(QPaintEvent* event) {
   const QRect handle = style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, this);
   QPainter painter(this);
   painter.setPen(palette().color(QPalette::WindowText));
-  QFont font = painter.font();
-  // smaller than the labels; the font may be set in pixels (presentation mode) or in points
-  if (font.pixelSize() > 0) font.setPixelSize(std::max(8, int(font.pixelSize() * 0.8)));
-  else font.setPointSizeF(font.pointSizeF() * 0.8);
-  painter.setFont(font);
+  painter.setFont(labelFont());
+  const QFontMetrics metrics = painter.fontMetrics();
   const int span = groove.width() - handle.width();
-  const int top = height() - painter.fontMetrics().height() - 4;
+  const int top = option.rect.bottom() + 1;
+  // left to right; a label that would touch the one before moves right (its tick stays)
+  int free = 0;
   for (const auto& [position, label] : m_marks) {
     const int x = groove.x() + handle.width() / 2 +
                   QStyle::sliderPositionFromValue(minimum(), maximum(), position, span);
-    painter.drawLine(x, top - 3, x, top + 1);
-    const int textWidth = painter.fontMetrics().horizontalAdvance(label);
-    const int left = std::clamp(x - textWidth / 2, 0, width() - textWidth);
-    painter.drawText(left, height() - painter.fontMetrics().descent() - 1, label);
+    painter.drawLine(x, top, x, top + 3);
+    const int textWidth = metrics.horizontalAdvance(label);
+    const int left = std::clamp(std::max(x - textWidth / 2, free), 0, std::max(0, width() - textWidth));
+    painter.drawText(left, top + 3 + metrics.ascent(), label);
+    free = left + textWidth + metrics.horizontalAdvance(QLatin1Char(' '));
   }
 }
 

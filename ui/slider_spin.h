@@ -24,9 +24,15 @@ class MarkedSlider : public QSlider {
 
  protected:
   void paintEvent(QPaintEvent* event) override;
+  void changeEvent(QEvent* event) override;
+  void initStyleOption(QStyleOptionSlider* option) const override;
 
  private:
+  QFont labelFont() const;
+  void reserveLabelRoom();
+
   QList<QPair<int, QString>> m_marks;
+  mutable bool m_measuring = false;  ///< within sizeHint(): the option of the whole widget
 };
 
 /// A labelled slider and spin box bound both ways: dragging moves the spin box, typing an exact

@@ -47,7 +47,7 @@ QPainterPath springPath(double x0, double x1, double y, double rise, int coils) 
 class ChainView::Canvas : public QWidget {
  public:
   explicit Canvas(ChainView* view) : QWidget(view), m_view(view) {
-    setMinimumSize(240, 120);
+    setMinimumSize(200, 120);
     setAttribute(Qt::WA_OpaquePaintEvent);
   }
 

@@ -98,11 +98,45 @@ std::vector<double> niceTicks(double from, double to, int target) {
   return ticks;
 }
 
-QRectF heatMapPlotArea(const QRectF& area, const QFont& font) {
+namespace {
+
+/// The widest of the labels of `ticks`.
+double widestLabel(const QFontMetricsF& metrics, const std::vector<double>& ticks) {
+  double widest = 0;
+  for (double t : ticks) widest = std::max(widest, metrics.horizontalAdvance(tickLabel(t)));
+  return widest;
+}
+
+/// The colour bar's range: the finite values of the rows computed so far.
+std::pair<double, double> readyRange(const HeatMapData& data) {
+  const std::int64_t ready = data.rowsReady < 0 ? data.rows : std::min(data.rowsReady, data.rows);
+  return finiteRange(std::vector<double>(data.values.begin(), data.values.begin() + ready * data.columns));
+}
+
+/// As many x ticks as fit under a map `width` wide without their labels touching.
+std::vector<double> xTicks(const QFontMetricsF& metrics, double x0, double x1, double width) {
+  for (int target = 6; target > 1; --target) {
+    const std::vector<double> ticks = niceTicks(x0, x1, target);
+    const double room = width / double(std::max<std::size_t>(1, ticks.size()));
+    if (widestLabel(metrics, ticks) + metrics.height() <= room) return ticks;
+  }
+  return {x0, x1};
+}
+
+}  // namespace
+
+QRectF heatMapPlotArea(const QRectF& area, const QFont& font, const HeatMapData& data) {
+  // margins from the labels drawn in them: fixed margins for the longest possible label left
+  // a map a few pixels wide on a small window with large text
   const QFontMetricsF metrics(font);
   const double line = metrics.height();
-  const double left = 4.5 * line + metrics.horizontalAdvance("-0.00000");
-  const double right = 7 * line + metrics.horizontalAdvance("-0.000000");
+  const double tick = 0.4 * line;
+  const auto [y0, y1] = cellExtent(data.yFrom, data.yTo, data.rows);
+  const auto [lo, hi] = readyRange(data);
+  const double left = 2.0 * line + widestLabel(metrics, niceTicks(y0, y1)) + tick + 0.3 * line;
+  const double keys = std::max(metrics.horizontalAdvance(QStringLiteral("not defined")),
+                               widestLabel(metrics, niceTicks(lo, hi, 5)));
+  const double right = 2.7 * line + 1.5 * tick + keys + 0.4 * line + 1.8 * line;
   const double top = 2.2 * line;
   const double bottom = 3.5 * line;
   return area.adjusted(left, top, -right, -bottom);
@@ -114,17 +148,18 @@ void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data
   const QFont font = painter.font();
   const QFontMetricsF metrics(font);
   const double line = metrics.height();
-  const QRectF plot = heatMapPlotArea(area, font);
+  const QRectF plot = heatMapPlotArea(area, font, data);
   painter.fillRect(area, Qt::white);
   painter.setPen(Qt::black);
 
   QFont titleFont = font;
   titleFont.setBold(true);
   painter.setFont(titleFont);
-  // over the map only (the colour bar's title is on the same line to the right), cut if too long
+  // across the whole width (the colour bar's title stands along its side), cut only if even
+  // that is too short
   const QFontMetricsF boldMetrics(titleFont);
-  const QString title = boldMetrics.elidedText(data.title, Qt::ElideRight, plot.right() - area.left());
-  painter.drawText(QRectF(area.left(), area.top(), plot.right() - area.left(), 2 * line), Qt::AlignCenter, title);
+  const QString title = boldMetrics.elidedText(data.title, Qt::ElideRight, area.width());
+  painter.drawText(QRectF(area.left(), area.top(), area.width(), 2 * line), Qt::AlignCenter, title);
   painter.setFont(font);
 
   // the cells, without smoothing: each is one value
@@ -137,7 +172,7 @@ void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data
   const auto [x0, x1] = cellExtent(data.xFrom, data.xTo, data.columns);
   const auto [y0, y1] = cellExtent(data.yFrom, data.yTo, data.rows);
   const double tick = 0.4 * line;
-  for (double t : niceTicks(x0, x1)) {
+  for (double t : xTicks(metrics, x0, x1, plot.width())) {
     const double px = plot.left() + (t - x0) / (x1 - x0) * plot.width();
     painter.drawLine(QPointF(px, plot.bottom()), QPointF(px, plot.bottom() + tick));
     painter.drawText(QRectF(px - 4 * line, plot.bottom() + tick, 8 * line, line), Qt::AlignCenter, tickLabel(t));
@@ -148,8 +183,11 @@ void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data
     painter.drawText(QRectF(plot.left() - tick - 8 * line, py - line / 2, 8 * line - 0.3 * line, line),
                      Qt::AlignRight | Qt::AlignVCenter, tickLabel(t));
   }
-  painter.drawText(QRectF(plot.left(), plot.bottom() + tick + 1.2 * line, plot.width(), 1.5 * line),
-                   Qt::AlignCenter, data.xTitle);
+  // centred under the map, as wide as the whole area allows
+  const double xTitleWidth = std::min(area.width(), metrics.horizontalAdvance(data.xTitle) + line);
+  const double xTitleLeft = std::clamp(plot.center().x() - xTitleWidth / 2, area.left(), area.right() - xTitleWidth);
+  painter.drawText(QRectF(xTitleLeft, plot.bottom() + tick + 1.2 * line, xTitleWidth, 1.5 * line), Qt::AlignCenter,
+                   metrics.elidedText(data.xTitle, Qt::ElideRight, area.width()));
   painter.save();
   painter.translate(area.left() + 0.8 * line, plot.center().y());
   painter.rotate(-90);
@@ -171,8 +209,15 @@ void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data
     painter.drawText(QRectF(bar.right() + 1.5 * tick, py - line / 2, 6 * line, line),
                      Qt::AlignLeft | Qt::AlignVCenter, tickLabel(t));
   }
-  painter.drawText(QRectF(bar.left() - line, bar.top() - 1.6 * line, 10 * line, 1.4 * line),
-                   Qt::AlignLeft | Qt::AlignVCenter, data.valueTitle);
+  // the colour bar's title along its right side, turned like the y axis title: above the bar
+  // it ran into the map's title and past the window's edge
+  painter.save();
+  painter.translate(area.right() - 0.9 * line, area.center().y());
+  painter.rotate(-90);
+  const QString valueTitle = metrics.elidedText(data.valueTitle, Qt::ElideRight, area.height() - line);
+  painter.drawText(QRectF(-area.height() / 2, -0.8 * line, area.height(), 1.6 * line), Qt::AlignCenter,
+                   valueTitle);
+  painter.restore();
   double keyY = bar.bottom() + 0.8 * line;
   const bool anyNan = std::any_of(readyValues.begin(), readyValues.end(), [](double v) { return std::isnan(v); });
   const bool anyInf = std::any_of(readyValues.begin(), readyValues.end(), [](double v) { return std::isinf(v); });

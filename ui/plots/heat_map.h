@@ -40,7 +40,7 @@ std::pair<double, double> finiteRange(const std::vector<double>& values);
 QImage heatMapImage(const HeatMapData& data);
 
 /// The plot area of the map inside `area` once titles, ticks and the colour bar are placed.
-QRectF heatMapPlotArea(const QRectF& area, const QFont& font);
+QRectF heatMapPlotArea(const QRectF& area, const QFont& font, const HeatMapData& data);
 
 /// Paints the map into `area`: title, the cells (nearest neighbour, no smoothing), axes with
 /// ticks and titles, and a colour bar with its range and a key for NaN and inf cells.

@@ -158,7 +158,7 @@ QRectF LandscapeView::mapArea() const {
   return QRectF(0, top, width(), height() - top);
 }
 
-QRectF LandscapeView::plotRect() const { return heatMapPlotArea(mapArea(), font()); }
+QRectF LandscapeView::plotRect() const { return heatMapPlotArea(mapArea(), font(), m_data); }
 
 std::optional<QPointF> LandscapeView::valueAt(QPointF position) const {
   if (!m_map) return std::nullopt;
@@ -182,7 +182,6 @@ QPointF LandscapeView::positionOf(QPointF value) const {
 }
 
 HeatMapData LandscapeView::heatMapDataOf(const MapProgress& map) const {
-  const core::QuantityInfo& info = core::quantities()[std::size_t(m_quantity)];
   HeatMapData data;
   data.columns = map.spec.x.count;
   data.rows = map.spec.y.count;
@@ -197,7 +196,8 @@ HeatMapData LandscapeView::heatMapDataOf(const MapProgress& map) const {
   data.xTo = map.spec.x.to;
   data.yFrom = map.spec.y.from;
   data.yTo = map.spec.y.to;
-  data.title = QString::fromUtf8(info.meaning);
+  // short enough to stand over the map whole; the combo box above says it in a sentence
+  data.title = tr("%1, for each start").arg(words.title);
   data.title[0] = data.title[0].toUpper();
   data.xTitle = tr("u₁ of the start (u₂ = d, v₂ = 0)");
   data.yTitle = tr("v₁ of the start");
@@ -239,13 +239,18 @@ void LandscapeView::paintEvent(QPaintEvent*) {
     painter.setPen(QPen(Qt::black, line, Qt::DashLine));
     painter.drawPath(family);
     const QFontMetricsF metrics(font());
+    QRectF taken;  // the first label's box: the second goes below its point if they would meet
     for (const auto& [value, name] : {std::pair{m_glom1, QStringLiteral("GLOM₁")}, std::pair{m_glom2, QStringLiteral("GLOM₂")}}) {
       const QPointF at = positionOf(value);
       painter.setPen(QPen(Qt::black, 1.5));
       painter.setBrush(Qt::white);
       painter.drawEllipse(at, 5 + line, 5 + line);
-      const QRectF box(at + QPointF(-metrics.horizontalAdvance(name) / 2 - 3, -2.4 * metrics.height()),
-                       QSizeF(metrics.horizontalAdvance(name) + 6, metrics.height() + 2));
+      const QSizeF size(metrics.horizontalAdvance(name) + 6, metrics.height() + 2);
+      QRectF box(at + QPointF(-size.width() / 2, -2.4 * metrics.height()), size);
+      if (box.intersects(taken)) box.moveTop(at.y() + 1.2 * metrics.height());
+      // whole inside the map (the painter clips to it)
+      box.moveLeft(std::clamp(box.left(), plot.left(), std::max(plot.left(), plot.right() - box.width())));
+      taken = box;
       painter.fillRect(box, QColor(255, 255, 255, 210));
       painter.drawText(box, Qt::AlignCenter, name);
     }

@@ -23,7 +23,7 @@ PhasePlot::PhasePlot(Mass mass, QWidget* parent)
                parent),
       m_mass(mass) {
   m_path = addEntry(makeLine(tr("orbit"), colors::kTrace, 1.0), Decimation::Path);
-  m_recent = addEntry(makeLine(tr("orbit, %1 T₂ at the cursor (W: all)").arg(RunWindow::kPeriods),
+  m_recent = addEntry(makeLine(tr("orbit, %1 T₂").arg(RunWindow::kPeriods),
                                colors::kTrace, 1.0),
                       Decimation::Path);
   setInLegend(entries()[std::size_t(m_recent)].series, false);

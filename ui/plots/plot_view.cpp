@@ -52,20 +52,48 @@ double niceStep(double low, double high) {
   return (ratio < 1.5 ? 1.0 : ratio < 3.5 ? 2.0 : ratio < 7.5 ? 5.0 : 10.0) * magnitude;
 }
 
+// The next nice step above `step` (1, 2, 5 times a power of ten).
+double nextNiceStep(double step) {
+  const double magnitude = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+  const double ratio = step / magnitude;
+  return (ratio < 1.5 ? 2.0 : ratio < 3.5 ? 5.0 : 10.0) * magnitude;
+}
+
+// How the labels of ticks `step` apart over [low, high] print: whole steps as whole numbers up
+// to a billion (a contact-index axis to 10^6 read "0.0002, 2e+05": the anchor below, printed by
+// %g); fractions as decimals below a million
+QString tickFormat(double low, double high, double step) {
+  const double largest = std::max(std::abs(low), std::abs(high));
+  const bool plain = (step >= 1e-9 && largest < 1e6) || (step >= 1 && largest < 1e9);
+  const int decimals = std::max(0, int(std::ceil(-std::log10(step) - 1e-9)));
+  return plain ? QStringLiteral("%.%1f").arg(decimals) : QStringLiteral("%.3g");
+}
+
 // Sets range and tick interval together. The order matters: Qt Charts lays the ticks out on
 // each change, and a small interval over a large range would create millions of tick items.
-void setRangeWithTicks(QValueAxis* axis, double low, double high) {
-  const double step = niceStep(low, high);
+// `pixels` is the axis' length on screen (0 when not laid out yet): the step grows until every
+// label fits beside its neighbours (Qt Charts elides labels that do not: "-…", "100…").
+void setRangeWithTicks(QValueAxis* axis, double low, double high, double pixels) {
+  double step = niceStep(low, high);
   if (step <= 0) {
     axis->setRange(low, high);
     return;
   }
-  // whole steps print as whole numbers up to a billion (a contact-index axis to 10^6 read
-  // "0.0002, 2e+05": the anchor below, printed by %g); fractions as decimals below a million
-  const double largest = std::max(std::abs(low), std::abs(high));
-  const bool plain = (step >= 1e-9 && largest < 1e6) || (step >= 1 && largest < 1e9);
-  const int decimals = std::max(0, int(std::ceil(-std::log10(step) - 1e-9)));
-  const QString format = plain ? QStringLiteral("%.%1f").arg(decimals) : QStringLiteral("%.3g");
+  const QFontMetricsF metrics(axis->labelsFont());
+  const bool horizontal = axis->orientation() == Qt::Horizontal;
+  for (int widen = 0; widen < 4 && pixels > 0; ++widen) {
+    const QString format = tickFormat(low, high, step);
+    // the widest label is at one end, or a negative one in between
+    double widest = 0;
+    for (double value : {low, high, -step, step}) {
+      widest = std::max(widest, metrics.horizontalAdvance(QString::asprintf(qPrintable(format), value)));
+    }
+    const double each = horizontal ? widest + metrics.height() : 1.6 * metrics.height();
+    const double ticks = std::floor((high - low) / step) + 1;
+    if (ticks * each <= pixels || ticks <= 2) break;
+    step = nextNiceStep(step);
+  }
+  const QString format = tickFormat(low, high, step);
   if (axis->labelFormat() != format) axis->setLabelFormat(format);
   if (axis->tickType() != QValueAxis::TicksDynamic) {
     axis->setTickInterval(std::max(step, axis->max() - axis->min()));
@@ -128,7 +156,7 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
   setRenderHint(QPainter::Antialiasing);
   setRubberBand(QChartView::RectangleRubberBand);
   setFocusPolicy(Qt::StrongFocus);
-  setMinimumSize(240, 180);  // again after each resize (resizeEvent)
+  setMinimumSize(200, 160);  // again after each resize (resizeEvent)
 
   setTitles(title, xTitle, yTitle);
   m_refreshTimer.setSingleShot(true);
@@ -422,13 +450,18 @@ void PlotView::refresh() {
           entry.series->replace(QList<QPointF>());
         }
       }
-      setRangeWithTicks(m_axisX, range.left(), range.right());
-      setRangeWithTicks(m_axisY, range.top(), range.bottom());
+      setRangeWithTicks(m_axisX, range.left(), range.right(), chart()->plotArea().width());
+      setRangeWithTicks(m_axisY, range.top(), range.bottom(), chart()->plotArea().height());
+    } else if (chart()->plotArea().size() != m_tickedArea) {
+      // the same range on another size (a resize, presentation mode): ticks that fit it
+      setRangeWithTicks(m_axisX, range.left(), range.right(), chart()->plotArea().width());
+      setRangeWithTicks(m_axisY, range.top(), range.bottom(), chart()->plotArea().height());
     }
+    m_tickedArea = chart()->plotArea().size();
   } else {
     // after a zoom or pan by the user: new ticks for the new range
-    setRangeWithTicks(m_axisX, m_axisX->min(), m_axisX->max());
-    setRangeWithTicks(m_axisY, m_axisY->min(), m_axisY->max());
+    setRangeWithTicks(m_axisX, m_axisX->min(), m_axisX->max(), chart()->plotArea().width());
+    setRangeWithTicks(m_axisY, m_axisY->min(), m_axisY->max(), chart()->plotArea().height());
   }
   m_newRun = false;
   placeStaleNote();
@@ -592,7 +625,7 @@ void PlotView::resizeEvent(QResizeEvent* event) {
   updateLegend();  // wraps to the new width
   // QChartView raises its own minimum size to the chart's and never lowers it: a legend of
   // many lines once would keep the plot (and the window) tall for good
-  setMinimumSize(240, 180);
+  setMinimumSize(200, 160);
   placeStaleNote();
   scheduleRefresh();
 }

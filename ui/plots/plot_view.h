@@ -189,6 +189,7 @@ class PlotView : public QChartView, public SceneView {
   int m_decimationsFromScratch = 0;
   std::optional<QRectF> m_fixedRange;
   std::optional<std::pair<double, double>> m_xWindow;
+  QSizeF m_tickedArea;  ///< the plot area the ticks were chosen for
   bool m_stale = false;
   bool m_presentation = false;
   struct Fonts {

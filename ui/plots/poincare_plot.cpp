@@ -13,7 +13,7 @@ namespace grazelab::ui {
 
 PoincarePlot::PoincarePlot(QWidget* parent)
     : PlotView(tr("Poincaré points on H (u₂ = d)"),
-               tr("u₁ at contact"), tr("v₁ at contact"), parent) {
+               tr("u₁ at contact"), tr("v₁"), parent) {
   for (int bin = 0; bin < kBins; ++bin) {
     // squares: Qt Charts draws them far faster than circles, which matters for 10^5 points
     auto* series = makeScatter(QString(), kViridis[bin], 4);

@@ -23,6 +23,7 @@ TracePlot::TracePlot(QWidget* parent)
   m_grazings = addEntry(touches, Decimation::Scatter, false);
   setToolTip(tr("Displacement u₂ of mass 2 against time. The dashed line is the stop u₂ = d; "
                 "dots mark the contacts (impacts: vermillion circles; grazing touches and sticks: orange triangles).\n"
+                "A long run shows three slow periods at the animation's time; W shows all of it.\n"
                 "Drag to zoom, Shift+drag or middle button to pan, wheel to zoom, R to reset."));
 }
 
@@ -80,7 +81,8 @@ void TracePlot::placeWindow() {
   }
   m_runWindow.follow(m_cursorTime, m_window, m_T2);
   setXWindow(std::pair(m_runWindow.from(), m_runWindow.to()));
-  setXTitle(tr("time t (%1 T₂ of %2 shown; W: all)")
+  // short: a longer title wrapped to three lines and was cut; W is in the tooltip and menu
+  setXTitle(tr("time t (%1 T₂ of %2)")
                 .arg(RunWindow::kPeriods)
                 .arg(m_samplesCut ? m_window : m_tFinal, 0, 'g', 3));
 }

@@ -3,6 +3,7 @@
 #include "ui/plots/wrapped_legend.h"
 
 #include <QChart>
+#include <QFontMetricsF>
 #include <QGraphicsTextItem>
 #include <QLegend>
 #include <QScatterSeries>
@@ -25,6 +26,9 @@ void WrappedLegend::setShown(QXYSeries* series, bool shown) {
 
 void WrappedLegend::update() {
   // an entry never breaks inside: <nobr>, and word joiners around the dash of a range
+  const QFont font = m_chart->legend()->font();
+  const QFontMetricsF legendMetrics(font);
+  const double width = std::max(40.0, m_chart->size().width() - 12);
   QString html;
   m_names.clear();
   for (QAbstractSeries* abstract : m_chart->series()) {
@@ -45,7 +49,11 @@ void WrappedLegend::update() {
     color.setAlpha(255);
     m_names.append(series->name());
     if (!html.isEmpty()) html += QStringLiteral(" &nbsp; ");
-    html += QStringLiteral("<nobr><span style=\"color:%1\">%2</span>&nbsp;%3</nobr>")
+    // an entry wider than the whole legend breaks between its words, never inside one (kept
+    // whole, the text engine broke it anywhere: "grazi / ng")
+    const bool whole = legendMetrics.horizontalAdvance(symbol + QLatin1Char(' ') + series->name()) <= width;
+    html += QString::fromLatin1(whole ? "<nobr><span style=\"color:%1\">%2</span>&nbsp;%3</nobr>"
+                                      : "<span style=\"color:%1\">%2</span>&nbsp;%3")
                 .arg(color.name(), symbol,
                      series->name()
                          .toHtmlEscaped()
@@ -53,8 +61,6 @@ void WrappedLegend::update() {
                          .replace(QStringLiteral("-"), QStringLiteral("\u2011"))  // no break at a hyphen
                          .replace(QStringLiteral("/"), QStringLiteral("/\u2060")));  // nor after a slash
   }
-  const QFont font = m_chart->legend()->font();
-  const double width = std::max(40.0, m_chart->size().width() - 12);
   const bool changed = html != m_html || m_text->font() != font ||
                        std::abs(m_text->textWidth() - width) > 0.5;
   if (changed) {

@@ -32,7 +32,7 @@ CurveFigure lemmaFigure(double lambda) {
   CurveFigure figure;
   figure.title = tr("Lemma 2.1: top of GLO(λ), max u₂ / d");
   figure.xTitle = tr("λ");
-  figure.yTitle = tr("max over a period of u₂ / d");
+  figure.yTitle = tr("max u₂ / d");
   figure.toolTip = tr("The linear orbit (1 − λ) GLOM₁ + λ GLOM₂ reaches at most "
                       "max[(1 − λ) cos 2s + λ cos s] times the gap. It is exactly 1 (the orbit "
                       "touches the stop and stays below it: a grazing orbit) for λ in [0, 4/3]; "
