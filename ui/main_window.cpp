@@ -17,7 +17,9 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QFontInfo>
 #include <QScreen>
+#include <QStyleFactory>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -30,6 +32,7 @@
 #include "core/model.h"
 #include "ui/derived.h"
 #include "ui/parameter_panel.h"
+#include "ui/presentation_style.h"
 #include "ui/status_line.h"
 #include "ui/plots/accuracy_view.h"
 #include "ui/plots/landscape_view.h"
@@ -382,10 +385,20 @@ void MainWindow::setPresentation(bool on, int screenHeight, bool fullScreen) {
   if (on && !m_presentation) {
     m_deskFont = QApplication::font();
     m_deskPalette = QApplication::palette();
+    m_deskStyle = QApplication::style()->name();
   }
+  const bool changes = on != m_presentation;
   m_presentation = on;
   m_presentationText = std::max(12, (screenHeight + 49) / 50);  // at least 1/50 of the height
   if (m_presentationAction) m_presentationAction->setChecked(on);
+  // the controls grow with the text (a style resets the palette: it comes first)
+  const double scale = double(m_presentationText) / std::max(1, QFontInfo(m_deskFont).pixelSize());
+  const auto* scaled = qobject_cast<const PresentationStyle*>(QApplication::style());
+  if (on && scale > 1.05 && (!scaled || scaled->scale() != scale)) {
+    QApplication::setStyle(new PresentationStyle(QStyleFactory::create(m_deskStyle), scale));
+  } else if (!on && changes && scaled) {
+    QApplication::setStyle(QStyleFactory::create(m_deskStyle));
+  }
   if (on) {
     QFont font = m_deskFont;
     font.setPixelSize(m_presentationText);

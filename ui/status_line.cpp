@@ -9,7 +9,6 @@ namespace grazelab::ui {
 namespace {
 
 const QString kSeparator = QStringLiteral(" · ");
-constexpr int kLines = 2;
 
 }  // namespace
 
@@ -43,12 +42,13 @@ void StatusLine::changeEvent(QEvent* event) {
 
 void StatusLine::fit() {
   const QFontMetrics metrics(font());
-  const int height = kLines * metrics.lineSpacing() + 2;
+  // two lines as the text engine lays them out (a little more than twice a line)
+  const int height = metrics.boundingRect(QRect(0, 0, 1000, 1000), Qt::TextWordWrap, QStringLiteral("X\nX")).height() + 2;
   if (minimumHeight() != height || maximumHeight() != height) setFixedHeight(height);
   const int width = std::max(1, contentsRect().width());
   const auto fits = [&](const QString& text) {
     return metrics.boundingRect(QRect(0, 0, width, 100 * height), Qt::TextWordWrap, text).height() <=
-           kLines * metrics.lineSpacing();
+           height - 2;
   };
   QString shown = m_message;
   if (!fits(shown)) {

@@ -49,7 +49,10 @@ void PhasePlot::setTimeCursor(double t, const core::State& state) {
     scheduleRefresh();
   }
   if (!m_cursor) {
-    auto* dot = makeScatter(QString(), colors::kAccent, 12);
+    // a ring: the start marker (and the orbit) show through it at t = 0
+    auto* dot = makeScatter(QString(), colors::kAccent, 14);
+    dot->setColor(Qt::transparent);
+    dot->setPen(QPen(colors::kAccent, 2.5));
     chart()->addSeries(dot);
     dot->attachAxis(m_axisX);
     dot->attachAxis(m_axisY);

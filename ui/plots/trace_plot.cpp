@@ -101,7 +101,10 @@ void TracePlot::setTimeCursor(double t, const core::State&) {
   }
   if (!m_cursor) {
     // not an entry: it never counts for the axes, the CSV or the decimation
-    m_cursor = makeLine(QString(), colors::kAccent, 2.0);
+    // see-through: a contact at the cursor's time (a stick at t = 0) shows under it
+    QColor through = colors::kAccent;
+    through.setAlpha(120);
+    m_cursor = makeLine(QString(), through, 2.0);
     chart()->addSeries(m_cursor);
     m_cursor->attachAxis(m_axisX);
     m_cursor->attachAxis(m_axisY);

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QProxyStyle>
+
+namespace grazelab::ui {
+
+/// The application's style with its controls scaled like presentation mode's text: check
+/// boxes, slider handles, spin-box arrows and tool-button icons stayed desk-sized next to text
+/// twice as large, and were hard to hit and to see on a projector.
+class PresentationStyle : public QProxyStyle {
+  Q_OBJECT
+
+ public:
+  /// `base` is owned from now on; `scale` > 1 enlarges.
+  PresentationStyle(QStyle* base, double scale);
+
+  double scale() const { return m_scale; }
+  int pixelMetric(PixelMetric metric, const QStyleOption* option = nullptr,
+                  const QWidget* widget = nullptr) const override;
+
+ private:
+  double m_scale = 1;
+};
+
+}  // namespace grazelab::ui
