@@ -455,9 +455,9 @@ void MainWindow::showScene(int index) {
   if (m_sceneActions && index < m_sceneActions->actions().size()) {
     m_sceneActions->actions()[index]->setChecked(true);
   }
-  m_wholeRunAction->setChecked(scene().wholeRun());
   buildPlots();
-  for (SceneView* view : m_sceneViews) view->setWholeRun(scene().wholeRun());
+  // the user's choice (W) holds across scenes
+  for (SceneView* view : m_sceneViews) view->setWholeRun(m_wholeRunAction->isChecked());
   m_panel->setScene(scene());
   m_panel->setParams(m_sceneParams[std::size_t(index)]);
   recompute();

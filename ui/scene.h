@@ -34,9 +34,6 @@ class Scene {
     Params defaults;
     QList<ParamKey> parameters;
     QList<PlotKind> plots;
-    /// time-based views show the whole run at first (otherwise a few slow periods at the
-    /// animation's time: a long run drawn whole is a solid block)
-    bool wholeRun = false;
     /// everything the scene computes for these parameters (derived.ok is true): its curves,
     /// surveys and the run's start. Called by the worker, never on the GUI thread; long loops
     /// end early when `stop` is requested.
@@ -52,7 +49,6 @@ class Scene {
   Params defaults() const { return m_spec.defaults; }
   QList<ParamKey> parameters() const { return m_spec.parameters; }
   QList<PlotKind> plots() const { return m_spec.plots; }
-  bool wholeRun() const { return m_spec.wholeRun; }
   SceneJob build(const Params& params, const DerivedModel& derived, std::stop_token stop = {}) const {
     return m_spec.build(*this, params, derived, stop);
   }

@@ -44,20 +44,28 @@ void FreeFlightPlot::show(const SimUpdate& update) {
   appendData(m_flights, flights);
   const std::vector<QPointF>& all = entries()[std::size_t(m_flights)].data;
   const double last = all.empty() ? 1.0 : std::max(1.0, all.back().x());
-  // many flights per pixel column: small translucent dots, so that their density shows as
-  // shade instead of a solid block of overlapping squares
-  auto* series = qobject_cast<QScatterSeries*>(entries()[std::size_t(m_flights)].series);
-  const bool dense = double(all.size()) > 2.0 * std::max(1, width());
-  const double size = dense ? 2.5 : 5.0;
-  if (series->markerSize() != size) {
-    QColor color = colors::kTrace;
-    if (dense) color.setAlpha(110);
-    series->setMarkerSize(size);
-    series->setColor(color);
-    useLightMarker(series);
-  }
+  m_dense = double(all.size()) > 2.0 * std::max(1, width());
+  applyMarkers();
   setData(m_period, {QPointF(0, 1.0), QPointF(last, 1.0)});
   scheduleRefresh();
+}
+
+void FreeFlightPlot::setPresentation(bool on, int textPixels) {
+  PlotView::setPresentation(on, textPixels);
+  applyMarkers();  // the presentation look enlarges every marker: not these, when dense
+}
+
+void FreeFlightPlot::applyMarkers() {
+  // many flights per pixel column: small translucent dots, so that their density shows as
+  // shade instead of a solid block of overlapping squares (projected too)
+  auto* series = qobject_cast<QScatterSeries*>(entries()[std::size_t(m_flights)].series);
+  const double size = m_dense ? (presentation() ? 3.5 : 2.5) : (presentation() ? 8.0 : 5.0);
+  if (series->markerSize() == size) return;
+  QColor color = colors::kTrace;
+  if (m_dense) color.setAlpha(110);
+  series->setMarkerSize(size);
+  series->setColor(color);
+  useLightMarker(series);
 }
 
 }  // namespace grazelab::ui

@@ -12,8 +12,12 @@ class FreeFlightPlot final : public PlotView {
  public:
   explicit FreeFlightPlot(QWidget* parent = nullptr);
   void show(const SimUpdate& update) override;
+  void setPresentation(bool on, int textPixels) override;
 
  private:
+  void applyMarkers();
+
+  bool m_dense = false;  ///< more flights than pixel columns
   int m_flights = 0;
   int m_period = 0;
   RunProgress m_taken;  ///< flights already drawn

@@ -41,6 +41,10 @@ constexpr int kMaxTicks = 7;
 
 /// Whole powers of the base at both ends, so that every label is a power of ten.
 void setLogRange(QLogValueAxis* axis, double low, double high, int maxTicks) {
+  // a marker within a tenth of a decade of an end would be cut in half by the frame: the end
+  // moves out by a power
+  low /= std::pow(10.0, 0.1);
+  high *= std::pow(10.0, 0.1);
   const double decades = std::max(1.0, std::ceil(std::log10(high) + 1e-9) - std::floor(std::log10(low)));
   const int step = std::max(1, int(std::ceil(decades / maxTicks)));
   const double base = std::pow(10.0, step);

@@ -114,6 +114,7 @@ class PlotView : public QChartView, public SceneView {
   /// Presentation mode: text of `textPixels` (titles a little larger), lines at least 3 px,
   /// markers half again as large; off restores the desk look.
   void setPresentation(bool on, int textPixels) override;
+  bool presentation() const { return m_presentation; }
 
   /// Marks the plot as showing the last valid result, not the panel's parameters (greyed
   /// plot area and a note in its corner), or clears the mark.

@@ -36,7 +36,6 @@ Scene::Spec accuracyScene() {
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::TraceU2, PlotKind::WorkPrecision};
-  scene.wholeRun = true;  // a method's run drifts away late: the comparison is over all of it
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token) {
     // the trace shows the whole comparison: it is what the overlay is drawn on
