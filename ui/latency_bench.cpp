@@ -27,21 +27,25 @@
 namespace grazelab::ui {
 namespace {
 
-// waits until the plots show the final result of the latest request; false on timeout
-bool waitForFinal(MainWindow& window, int timeoutMs) {
+// waits until the plots show the latest request's whole run (`runOnly`), or its final update
+// (the Accuracy scene's sweep and the landscape's map after the run); false on timeout
+bool waitForFinal(MainWindow& window, int timeoutMs, bool runOnly = false) {
+  const auto done = [&window, runOnly] {
+    const SimUpdate* shown = window.displayed();
+    return shown && shown->id == window.controller()->latestId() &&
+           (shown->final || (runOnly && shown->runDone));
+  };
   QEventLoop loop;
   QTimer timeout;
   timeout.setSingleShot(true);
   QObject::connect(&timeout, &QTimer::timeout, &loop, &QEventLoop::quit);
-  const auto connection =
-      QObject::connect(&window, &MainWindow::plotsUpdated, &loop, [&](quint64 id, bool final) {
-        if (final && id == window.controller()->latestId()) loop.quit();
-      });
+  const auto connection = QObject::connect(&window, &MainWindow::plotsUpdated, &loop, [&] {
+    if (done()) loop.quit();
+  });
   timeout.start(timeoutMs);
-  loop.exec();
+  if (!done()) loop.exec();
   QObject::disconnect(connection);
-  const SimUpdate* shown = window.displayed();
-  return shown && shown->final && shown->id == window.controller()->latestId();
+  return done();
 }
 
 // Counts the paints of every plot's viewport: the bench waits for the paint that follows an
@@ -188,7 +192,8 @@ int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
       QElapsedTimer clock;
       clock.start();
       slider->setValue(base + (step % 2 == 0 ? 3 : -3));
-      if (!waitForFinal(window, 60'000)) break;
+      // the run drawn: a sweep or map after it goes on, its points appearing as they come
+      if (!waitForFinal(window, 60'000, true)) break;
       const double drawn = clock.nsecsElapsed() * 1e-6;
       // the paint that the update scheduled
       watch.reset();

@@ -648,7 +648,10 @@ void MainWindow::onUpdate(const SimUpdate& update) {
   // 33 ms and never more often than three times their drawing cost, so that a huge run
   // cannot keep the GUI thread busy drawing
   int delay = 0;
-  if (!update.final && m_lastApply.isValid()) {
+  // the run's first whole update (the Accuracy scene's exact run, before its sweep) at once
+  const bool runShown = update.runDone && update.id != m_runShownId;
+  if (runShown) m_runShownId = update.id;
+  if (!update.final && !runShown && m_lastApply.isValid()) {
     const qint64 spacing = std::max<qint64>(33, 3 * m_lastApplyCost);
     delay = int(std::max<qint64>(0, spacing - m_lastApply.elapsed()));
   }

@@ -10,6 +10,7 @@
 #include <QPalette>
 #include <QTimer>
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -211,7 +212,8 @@ class MainWindow : public QMainWindow {
   QActionGroup* m_sceneActions = nullptr;
   StatusLine* m_status = nullptr;
   QString m_statusExplanation;
-  QHash<const QWidget*, double> m_viewCosts;  ///< what the status line shows, in words (its tooltip)
+  QHash<const QWidget*, double> m_viewCosts;
+  std::uint64_t m_runShownId = 0;  ///< the request whose whole run was last put on screen  ///< what the status line shows, in words (its tooltip)
   QProgressBar* m_progress = nullptr;
   QPushButton* m_cancel = nullptr;
   QTimer m_applyTimer;

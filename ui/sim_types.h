@@ -118,6 +118,9 @@ struct SimUpdate {
   std::shared_ptr<const core::Result> chunk;
   double progress = 0;  ///< fraction of the requested work done, [0, 1]
   bool final = false;   ///< the run is over (complete, cancelled or invalid)
+  /// the run itself is over and this update carries all of it; a sweep or map after it may
+  /// still be going (final is then false)
+  bool runDone = false;
   std::shared_ptr<const SimRequest> request;  ///< what was asked
   std::optional<core::Trust> trust;  ///< the error estimate, on the final update
   /// the final result, sent before its error estimate; another final update with the same

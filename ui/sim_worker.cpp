@@ -65,6 +65,13 @@ void sweepAccuracy(const SimRequest& request, SimUpdate last, std::stop_token st
   overlayTask.needs.samples = request.job.request.needs.samples;
   // 40 runs are kept for the picker: each one's trace is capped (the first ~200 T2 of it)
   overlayTask.needs.samples.maxCount = std::min<std::size_t>(overlayTask.needs.samples.maxCount, 20'000);
+  {
+    // the exact run at once: the reference and the settings take a while
+    SimUpdate shown = last;
+    shown.final = false;
+    shown.progress = 0;
+    report(shown);
+  }
   methods::Task referenceTask = task;
   methods::WorkBudget referenceBudget = job.budget;
   referenceBudget.maxSeconds = std::max(job.budget.maxSeconds, 60.0);  // it judges every run
@@ -268,6 +275,7 @@ void SimWorker::run(const SimRequest& described, std::stop_token stop, double ch
   last.id = request.id;
   last.progress = 1.0;
   last.final = true;
+  last.runDone = true;
   last.request = asked;
   if (simulator.result().stop == core::StopReason::Undecided && !stop.stop_requested()) {
     // a contact double cannot tell a graze from an impact: long double, then binary128
