@@ -2,7 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include "core/sweep.h"
+#include "core/maps.h"
 
 namespace grazelab::parallel {
 

@@ -59,6 +59,7 @@ QString scientific(double value) { return QString::number(value, 'g', 3); }
 
 MainWindow::MainWindow(Options options, QWidget* parent)
     : QMainWindow(parent), m_options(options), m_scenes(makeScenes()) {
+  installPresentationStyle();  // before the panel's widgets (and their style sheets) exist
   setWindowIcon(QIcon::fromTheme(QStringLiteral("grazelab"), QIcon(QStringLiteral(":/icons/grazelab.svg"))));
   for (const auto& scene : m_scenes) m_sceneParams.push_back(scene->defaults());
 
@@ -150,7 +151,12 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   if (!restored || !applySession(*restored, &error)) selectScene(0);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // the worker first: it may be running a scene's computation, which reads this window's
+  // scenes and must not outlive them (the controller, a child, would go only after them)
+  delete m_controller;
+  m_controller = nullptr;
+}
 
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -385,19 +391,16 @@ void MainWindow::setPresentation(bool on, int screenHeight, bool fullScreen) {
   if (on && !m_presentation) {
     m_deskFont = QApplication::font();
     m_deskPalette = QApplication::palette();
-    m_deskStyle = QApplication::style()->name();
   }
-  const bool changes = on != m_presentation;
   m_presentation = on;
   m_presentationText = std::max(12, (screenHeight + 49) / 50);  // at least 1/50 of the height
   if (m_presentationAction) m_presentationAction->setChecked(on);
-  // the controls grow with the text (a style resets the palette: it comes first)
-  const double scale = double(m_presentationText) / std::max(1, QFontInfo(m_deskFont).pixelSize());
-  const auto* scaled = qobject_cast<const PresentationStyle*>(QApplication::style());
-  if (on && scale > 1.05 && (!scaled || scaled->scale() != scale)) {
-    QApplication::setStyle(new PresentationStyle(QStyleFactory::create(m_deskStyle), scale));
-  } else if (!on && changes && scaled) {
-    QApplication::setStyle(QStyleFactory::create(m_deskStyle));
+  // the controls grow with the text: the style's scale, read again when the font change below
+  // lays every widget out anew (replacing the application's style at run time instead broke
+  // the style sheets' hold on it: a heap corruption)
+  if (auto* scaled = qobject_cast<PresentationStyle*>(QApplication::style())) {
+    const double scale = double(m_presentationText) / std::max(1, QFontInfo(m_deskFont).pixelSize());
+    scaled->setScale(on ? std::max(1.0, scale) : 1.0);
   }
   if (on) {
     QFont font = m_deskFont;
@@ -601,9 +604,10 @@ void MainWindow::recompute() {
   request.params = current;
   request.sceneName = scene().name();
   request.derived = derived;
-  request.prepare = [scene = m_scenes[std::size_t(m_sceneIndex)].get(), params = current, derived,
+  // the scene travels as a copy (texts and a function): the worker never reads the window's
+  request.prepare = [scene = *m_scenes[std::size_t(m_sceneIndex)], params = current, derived,
                      clicked = m_clickedStart](std::stop_token stop) {
-    SceneJob job = scene->build(params, derived, stop);
+    SceneJob job = scene.build(params, derived, stop);
     if (clicked && job.ok) job.request.initial = *clicked;
     return job;
   };

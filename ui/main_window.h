@@ -205,7 +205,6 @@ class MainWindow : public QMainWindow {
   std::optional<core::State> m_clickedStart;  ///< a start chosen on H, until the next edit  ///< where the window was before presentation mode
   QPalette m_deskPalette;
   QAction* m_presentationAction = nullptr;
-  QString m_deskStyle;  ///< the style's name before presentation mode scaled it
   QAction* m_wholeRunAction = nullptr;  ///< checked: time-based views show the whole run
   QAction* m_panelAction = nullptr;
   SimController* m_controller = nullptr;

@@ -2,6 +2,9 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/presentation_style.h"
 
+#include <QApplication>
+#include <QStyleFactory>
+
 #include <cmath>
 
 namespace grazelab::ui {
@@ -28,6 +31,11 @@ int PresentationStyle::pixelMetric(PixelMetric metric, const QStyleOption* optio
     default:
       return size;
   }
+}
+
+void installPresentationStyle() {
+  if (qobject_cast<PresentationStyle*>(QApplication::style())) return;
+  QApplication::setStyle(new PresentationStyle(QStyleFactory::create(QApplication::style()->name()), 1.0));
 }
 
 }  // namespace grazelab::ui

@@ -13,15 +13,22 @@ class PresentationStyle : public QProxyStyle {
   Q_OBJECT
 
  public:
-  /// `base` is owned from now on; `scale` > 1 enlarges.
+  /// `base` is owned from now on; `scale` > 1 enlarges. Installed once, as the application's
+  /// style (installPresentationStyle), and rescaled in place.
   PresentationStyle(QStyle* base, double scale);
 
   double scale() const { return m_scale; }
+  /// Takes effect as widgets lay out again (presentation mode changes the font right after).
+  void setScale(double scale) { m_scale = scale; }
   int pixelMetric(PixelMetric metric, const QStyleOption* option = nullptr,
                   const QWidget* widget = nullptr) const override;
 
  private:
   double m_scale = 1;
 };
+
+/// Makes the application's style a PresentationStyle (at scale 1) unless it is one already.
+/// Call before any widget exists: widgets with style sheets keep a hold on the style they met.
+void installPresentationStyle();
 
 }  // namespace grazelab::ui

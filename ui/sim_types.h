@@ -15,7 +15,7 @@
 
 #include "core/methods/work_precision.h"
 #include "core/simulate.h"
-#include "core/sweep.h"
+#include "core/maps.h"
 #include "core/trust.h"
 #include "ui/derived.h"
 #include "ui/figures.h"
@@ -48,14 +48,14 @@ struct AccuracyProgress {
 
 /// The landscape scene's map, computed by the worker after the run, on all cores.
 struct MapJob {
-  core::SweepSpec spec;
+  core::MapSpec spec;
 };
 
 /// A map as it is being computed: the worker fills `points` row after row and publishes how
 /// many rows are done with each update; a reader looks only at the rows below that count (the
 /// worker never writes them again), so the grid is shared without copies.
 struct MapProgress {
-  core::SweepSpec spec;
+  core::MapSpec spec;
   std::shared_ptr<std::vector<core::PointSummary>> points;  ///< y.count x x.count, row-major
   std::int64_t rowsDone = 0;
   bool complete = false;

@@ -113,7 +113,7 @@ MapCache& mapCache() {
 /// each band (its rows appear at once), then the final one.
 void sweepMap(const SimRequest& request, SimUpdate last, std::stop_token stop,
               const std::function<void(const SimUpdate&)>& report) {
-  const core::SweepSpec& spec = request.job.map->spec;
+  const core::MapSpec& spec = request.job.map->spec;
   {
     const std::lock_guard lock(mapCache().mutex);
     if (mapCache().map && mapCache().map->spec == spec) {
@@ -133,7 +133,7 @@ void sweepMap(const SimRequest& request, SimUpdate last, std::stop_token stop,
   QElapsedTimer clock;
   clock.start();
   for (std::int64_t row = 0; row < rows && !stop.stop_requested(); row += band) {
-    const core::SweepMap part = core::sweep(spec, {row, std::min(rows, row + band)}, executor, stop);
+    const core::MapRows part = core::computeMap(spec, {row, std::min(rows, row + band)}, executor, stop);
     if (!part.complete) break;
     // rows past progress.rowsDone: no reader looks at them yet
     std::copy(part.points.begin(), part.points.end(), progress.points->begin() + std::ptrdiff_t(row * columns));

@@ -24,21 +24,21 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // "NAME:from:to:count"
-std::optional<core::SweepAxis> parseAxis(const QString& option, const QString& text,
+std::optional<core::MapAxis> parseAxis(const QString& option, const QString& text,
                                          QString& error) {
   const QStringList parts = text.split(':');
   if (parts.size() != 4) {
     error = QStringLiteral("--%1: '%2' is not NAME:from:to:count").arg(option, text);
     return std::nullopt;
   }
-  const auto variable = core::parseSweepVariable(parts[0].toStdString());
+  const auto variable = core::parseMapVariable(parts[0].toStdString());
   if (!variable) {
     error = QStringLiteral("--%1: '%2' is not a variable; use one of %3")
-                .arg(option, parts[0], QString::fromStdString(core::sweepVariableNames()));
+                .arg(option, parts[0], QString::fromStdString(core::mapVariableNames()));
     return std::nullopt;
   }
   bool okFrom = false, okTo = false, okCount = false;
-  core::SweepAxis axis;
+  core::MapAxis axis;
   axis.variable = *variable;
   axis.from = parts[1].toDouble(&okFrom);
   axis.to = parts[2].toDouble(&okTo);
@@ -83,8 +83,8 @@ QStringList foreignOptions(const QCommandLineParser& parser, const QStringList& 
   return set;
 }
 
-std::optional<core::SweepSpec> parseSpec(const QCommandLineParser& parser, QString& error) {
-  core::SweepSpec spec;
+std::optional<core::MapSpec> parseSpec(const QCommandLineParser& parser, QString& error) {
+  core::MapSpec spec;
   for (const char* name : {"x", "y"}) {
     if (!parser.isSet(name)) {
       error = QStringLiteral("--%1 NAME:from:to:count is required").arg(name);
@@ -131,16 +131,16 @@ std::optional<core::SweepSpec> parseSpec(const QCommandLineParser& parser, QStri
     }
     spec.estimateHorizon = trust == "auto";
   }
-  const std::string problem = core::checkSweep(spec);
+  const std::string problem = core::checkMap(spec);
   if (!problem.empty()) {
     error = QString::fromStdString(problem);
     return std::nullopt;
   }
   // a base start that cannot be made (an inadmissible --onepp T) would give a map of NaN: said
   // here, when no axis changes the chain it is made on
-  const auto changesChain = [](core::SweepVariable v) {
-    return v == core::SweepVariable::MassRatio || v == core::SweepVariable::Gap ||
-           v == core::SweepVariable::Detuning;
+  const auto changesChain = [](core::MapVariable v) {
+    return v == core::MapVariable::MassRatio || v == core::MapVariable::Gap ||
+           v == core::MapVariable::Detuning;
   };
   if (spec.start && !changesChain(spec.x.variable) && !changesChain(spec.y.variable)) {
     const core::StartOrProblem<double> start = core::makeStart(model.value->chain, *spec.start);
@@ -176,7 +176,7 @@ class ProgressLine {
 void addMapOptions(QCommandLineParser& parser) {
   parser.addOptions({
       {"x", QStringLiteral("map: the columns, NAME:from:to:count; NAME is one of %1.")
-                .arg(QString::fromStdString(core::sweepVariableNames())), "NAME:from:to:count"},
+                .arg(QString::fromStdString(core::mapVariableNames())), "NAME:from:to:count"},
       {"y", "map: the rows, NAME:from:to:count.", "NAME:from:to:count"},
       {"threads", "map: threads (default: all cores).", "T"},
       {"shard", "map: compute stripe K of N of the rows only (K from 1 to N); join the "
@@ -246,7 +246,7 @@ int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& erro
   if (drawsPicture) fontThread = std::thread(map::prepareFonts);
   ProgressLine progress(points);
   const auto started = Clock::now();
-  const core::SweepMap computed = core::sweep(
+  const core::MapRows computed = core::computeMap(
       *spec, rows, parallel::tbbParallelFor(threads), stop,
       [&progress](std::int64_t done) { progress(done); });
   const double seconds = std::chrono::duration<double>(Clock::now() - started).count();

@@ -21,7 +21,7 @@ using core::Quantity;
 
 QJsonArray stateArray(const core::State& s) { return {s.u1, s.u2, s.v1, s.v2}; }
 
-QJsonObject axisJson(const core::SweepAxis& axis) {
+QJsonObject axisJson(const core::MapAxis& axis) {
   return {{"variable", QString::fromUtf8(core::toString(axis.variable))},
           {"from", axis.from},
           {"to", axis.to},
@@ -29,7 +29,7 @@ QJsonObject axisJson(const core::SweepAxis& axis) {
           {"values", "numpy.linspace(from, to, count)"}};
 }
 
-QJsonObject startJson(const core::SweepSpec& spec) {
+QJsonObject startJson(const core::MapSpec& spec) {
   using Kind = core::StartSpec<double>::Kind;
   QJsonObject start;
   if (!spec.start) {
@@ -43,8 +43,8 @@ QJsonObject startJson(const core::SweepSpec& spec) {
       case Kind::Explicit: start = {{"kind", "state"}, {"state", stateArray(spec.start->state)}}; break;
     }
   }
-  const bool epsilonAxis = spec.x.variable == core::SweepVariable::Epsilon ||
-                           spec.y.variable == core::SweepVariable::Epsilon;
+  const bool epsilonAxis = spec.x.variable == core::MapVariable::Epsilon ||
+                           spec.y.variable == core::MapVariable::Epsilon;
   if (spec.perturbation && !epsilonAxis) start["perturbation"] = stateArray(*spec.perturbation);
   if (epsilonAxis) {
     start["epsilon_direction"] = stateArray(spec.perturbation.value_or(core::State{0, 0, 0, -1}));
@@ -89,8 +89,8 @@ QByteArray csvNumber(double value) {
 }
 
 QByteArray csvText(const StoredMap& map) {
-  const core::SweepAxis x = axisOf(map.description.spec, "x");
-  const core::SweepAxis y = axisOf(map.description.spec, "y");
+  const core::MapAxis x = axisOf(map.description.spec, "x");
+  const core::MapAxis y = axisOf(map.description.spec, "y");
   QByteArray text = "column,row," + QByteArray(core::toString(x.variable).data()) + "," +
                     QByteArray(core::toString(y.variable).data());
   for (const core::QuantityInfo& info : core::quantities()) text += "," + QByteArray(info.name.data());
@@ -112,18 +112,18 @@ QByteArray csvText(const StoredMap& map) {
 
 }  // namespace
 
-core::SweepAxis axisOf(const QJsonObject& spec, const char* which) {
+core::MapAxis axisOf(const QJsonObject& spec, const char* which) {
   const QJsonObject axis = spec[which].toObject();
-  core::SweepAxis result;
-  result.variable = core::parseSweepVariable(axis["variable"].toString().toStdString())
-                        .value_or(core::SweepVariable::U1);
+  core::MapAxis result;
+  result.variable = core::parseMapVariable(axis["variable"].toString().toStdString())
+                        .value_or(core::MapVariable::U1);
   result.from = axis["from"].toDouble();
   result.to = axis["to"].toDouble();
   result.count = axis["count"].toInteger();
   return result;
 }
 
-QJsonObject specJson(const core::SweepSpec& spec, double period, const QString& pictureQuantity) {
+QJsonObject specJson(const core::MapSpec& spec, double period, const QString& pictureQuantity) {
   const core::Model& m = spec.model;
   QJsonObject model{{"m1", m.m1}, {"m2", m.m2}, {"k1", m.k1}, {"gap", m.gap}, {"T2", period}};
   if (m.design) {

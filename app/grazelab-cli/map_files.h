@@ -7,7 +7,7 @@
 
 #include <optional>
 
-#include "core/sweep.h"
+#include "core/maps.h"
 
 namespace grazelab::cli::map {
 
@@ -27,7 +27,7 @@ struct MapDescription {
 
 /// The spec object of a map: format, version, axes (with their values), model (with T2),
 /// start, contacts, the trust setting, the picture's quantity and the quantities' units.
-QJsonObject specJson(const core::SweepSpec& spec, double period, const QString& pictureQuantity);
+QJsonObject specJson(const core::MapSpec& spec, double period, const QString& pictureQuantity);
 
 /// A map as its files hold it: a stripe (rows of totalRows) or the whole map.
 struct StoredMap {
@@ -50,6 +50,6 @@ std::optional<StoredMap> readMapFiles(const QString& prefix, QString& error);
 std::optional<StoredMap> mergeStripes(std::vector<StoredMap> parts, QString& error);
 
 /// An axis as the spec object describes it.
-core::SweepAxis axisOf(const QJsonObject& spec, const char* which);
+core::MapAxis axisOf(const QJsonObject& spec, const char* which);
 
 }  // namespace grazelab::cli::map

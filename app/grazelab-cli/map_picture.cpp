@@ -39,8 +39,8 @@ ui::HeatMapData heatMapOf(const StoredMap& map) {
   data.columns = map.columns;
   data.rows = map.rows.rowEnd - map.rows.rowBegin;
   for (const core::PointSummary& point : map.points) data.values.push_back(core::valueOf(point, which));
-  const core::SweepAxis x = axisOf(spec, "x");
-  const core::SweepAxis y = axisOf(spec, "y");
+  const core::MapAxis x = axisOf(spec, "x");
+  const core::MapAxis y = axisOf(spec, "y");
   data.xFrom = x.from;
   data.xTo = x.to;
   data.yFrom = y.at(map.rows.rowBegin);

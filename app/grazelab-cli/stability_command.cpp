@@ -7,7 +7,7 @@
 #include <chrono>
 #include <map>
 
-#include "core/methods/stability.h"
+#include "core/methods/stress_matrix.h"
 #include "report_command.h"
 #include "report_support.h"
 
@@ -16,7 +16,7 @@ namespace {
 
 using core::methods::CellVerdict;
 using core::methods::MethodKind;
-using core::methods::StabilityCell;
+using core::methods::StressCell;
 
 QString name(MethodKind kind) {
   const std::string_view text = core::methods::methodName(kind);
@@ -61,17 +61,17 @@ int runStability(const QCommandLineParser& parser, std::stop_token stop, QString
   budget.maxSeconds = quick ? 0.5 : 20;
   const auto started = std::chrono::steady_clock::now();
 
-  const std::vector<StabilityCase> cases = stabilityCases(quick);
-  std::vector<StabilityCell> cells;
+  const std::vector<StressCase> cases = stressCases(quick);
+  std::vector<StressCell> cells;
   std::vector<LongRunMark> marks;
   std::map<std::string, CaseHorizon> horizons;
   int index = 0;
-  for (const StabilityCase& row : cases) {
+  for (const StressCase& row : cases) {
     ++index;
     progress("stability", QStringLiteral("[%1/%2] %3").arg(index).arg(cases.size())
                               .arg(QString::fromStdString(row.name)));
-    horizons[row.name] = runStabilityCase(
-        row, *methods, budget, [&cells](const StabilityCell& cell) { cells.push_back(cell); },
+    horizons[row.name] = runStressCase(
+        row, *methods, budget, [&cells](const StressCell& cell) { cells.push_back(cell); },
         &marks, stop);
     if (stop.stop_requested()) return kExitInterrupted;
   }
@@ -80,7 +80,7 @@ int runStability(const QCommandLineParser& parser, std::stop_token stop, QString
 
   QByteArray csv = "case,method,seconds,state_error,contact_time_error,missed_contacts,"
                    "energy_drift,verdict,reason\n";
-  for (const StabilityCell& c : cells) {
+  for (const StressCell& c : cells) {
     csv += QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9\n")
                .arg(QString::fromStdString(c.caseName), name(c.method), scientific(c.seconds, 4),
                     scientific(c.errors.state), scientific(c.errors.contactTime))
@@ -108,9 +108,9 @@ int runStability(const QCommandLineParser& parser, std::stop_token stop, QString
   md += "\n|---|";
   for (std::size_t i = 0; i < methods->size(); ++i) md += "---|";
   md += "\n";
-  std::map<std::pair<std::string, MethodKind>, const StabilityCell*> byCell;
-  for (const StabilityCell& c : cells) byCell[{c.caseName, c.method}] = &c;
-  for (const StabilityCase& row : cases) {
+  std::map<std::pair<std::string, MethodKind>, const StressCell*> byCell;
+  for (const StressCell& c : cells) byCell[{c.caseName, c.method}] = &c;
+  for (const StressCase& row : cases) {
     md += "| " + QString::fromStdString(row.name) + " |";
     for (MethodKind kind : *methods) {
       const auto found = byCell.find({row.name, kind});
@@ -120,7 +120,7 @@ int runStability(const QCommandLineParser& parser, std::stop_token stop, QString
     md += "\n";
   }
   md += "\n## Cases\n\n";
-  for (const StabilityCase& row : cases) {
+  for (const StressCase& row : cases) {
     md += "- `" + QString::fromStdString(row.name) + "`: " +
           QString::fromStdString(row.description);
     const CaseHorizon& h = horizons[row.name];
@@ -137,7 +137,7 @@ int runStability(const QCommandLineParser& parser, std::stop_token stop, QString
     md += "\n";
   }
   md += "\n## Why a cell is not ok\n\n";
-  for (const StabilityCell& c : cells) {
+  for (const StressCell& c : cells) {
     if (c.verdict == CellVerdict::Ok) continue;
     md += QStringLiteral("- %1 / %2 (%3): %4 — %5\n")
               .arg(QString::fromStdString(c.caseName), name(c.method), settingText(c.setting),

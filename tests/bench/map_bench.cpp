@@ -5,21 +5,21 @@
 // Run: ./build/tests/bench/grazelab_map_bench
 #include <benchmark/benchmark.h>
 
-#include "core/sweep.h"
+#include "core/maps.h"
 #include "parallel/tbb_parallel_for.h"
 
 namespace grazelab {
 namespace {
 
 void mapOfGrazingPlane(benchmark::State& state, std::int64_t side, std::int64_t contacts) {
-  core::SweepSpec spec;
+  core::MapSpec spec;
   spec.model.design = core::Branch::Upper;
-  spec.x = {core::SweepVariable::U1, -1.0, 2.0, side};
-  spec.y = {core::SweepVariable::V1, -1.5, 1.5, side};
+  spec.x = {core::MapVariable::U1, -1.0, 2.0, side};
+  spec.y = {core::MapVariable::V1, -1.5, 1.5, side};
   spec.contacts = contacts;
   const core::ParallelFor executor = parallel::tbbParallelFor(int(state.range(0)));
   for (auto _ : state) {
-    const core::SweepMap map = core::sweep(spec, {0, side}, executor);
+    const core::MapRows map = core::computeMap(spec, {0, side}, executor);
     benchmark::DoNotOptimize(map.points.data());
   }
   state.SetItemsProcessed(state.iterations() * side * side);

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "core/methods/compare.h"
-#include "core/methods/stability.h"
+#include "core/methods/stress_matrix.h"
 #include "support/cases.h"
 
 namespace grazelab {

@@ -10,7 +10,7 @@
 #include "core/orbits.h"
 #include "core/setup.h"
 #include "core/simulate.h"
-#include "core/sweep.h"
+#include "core/maps.h"
 #include "core/trust.h"
 #include "support/cases.h"
 
@@ -65,15 +65,15 @@ TEST(Decisions, Binary128DecidesTheCrossingsAndMatchesTheReference) {
 }
 
 TEST(Decisions, MapPointsAreRaisedToThePrecisionTheirContactsNeed) {
-  SweepSpec spec;
+  MapSpec spec;
   spec.model = testing::resonantChain(0.5);
-  spec.x = {SweepVariable::Epsilon, 1e-9, 4e-9, 4};
-  spec.y = {SweepVariable::Lambda, 0, 0, 1};
+  spec.x = {MapVariable::Epsilon, 1e-9, 4e-9, 4};
+  spec.y = {MapVariable::Lambda, 0, 0, 1};
   spec.perturbation = State{0, 0, 0, -1};
   spec.contacts = 20;
-  ASSERT_EQ(checkSweep(spec), "");
+  ASSERT_EQ(checkMap(spec), "");
   for (std::int64_t column = 0; column < spec.x.count; ++column) {
-    const PointSummary point = sweepPoint(spec, column, 0);
+    const PointSummary point = mapPoint(spec, column, 0);
     SCOPED_TRACE(column);
     ASSERT_TRUE(point.valid);
     EXPECT_EQ(point.impacts, 20);  // double alone reported 0 impacts and fft_max 0.5

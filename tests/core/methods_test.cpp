@@ -9,7 +9,7 @@
 #include <stop_token>
 
 #include "core/methods/compare.h"
-#include "core/methods/stability.h"
+#include "core/methods/stress_matrix.h"
 #include "core/methods/work_precision.h"
 #include "core/simulate.h"
 #include "support/cases.h"
@@ -258,17 +258,17 @@ TEST(WorkPrecision, SlopeOfAFirstOrderLaw) {
 }
 
 TEST(Stability, QuickMatrixEndsEveryCellWithAVerdictAndAReason) {
-  std::vector<StabilityCell> cells;
+  std::vector<StressCell> cells;
   WorkBudget budget;
   budget.maxSeconds = 0.5;
   const std::vector<MethodKind> methods(std::begin(kAllMethods), std::end(kAllMethods));
-  for (const StabilityCase& row : stabilityCases(true)) {
+  for (const StressCase& row : stressCases(true)) {
     if (row.longRunContacts > 0) continue;  // the long run is the command's, not a unit test's
-    runStabilityCase(row, methods, budget, [&cells](const StabilityCell& c) { cells.push_back(c); }, nullptr);
+    runStressCase(row, methods, budget, [&cells](const StressCell& c) { cells.push_back(c); }, nullptr);
   }
   ASSERT_FALSE(cells.empty());
   int ok = 0;
-  for (const StabilityCell& cell : cells) {
+  for (const StressCell& cell : cells) {
     SCOPED_TRACE(cell.caseName + " / " + std::string(methodName(cell.method)));
     if (cell.verdict == CellVerdict::Ok) {
       ++ok;

@@ -111,9 +111,9 @@ class ScenesTest : public QObject {
     qInfo("map %.3f s, longest pause of the event loop %lld ms", map.seconds, longestGap);
     QVERIFY2(longestGap < 100, qPrintable(QStringLiteral("the window stood still for %1 ms").arg(longestGap)));
     QVERIFY(m_window->landscapeView()->map().has_value());
-    // the cells are core::sweepPoint's, bit for bit
+    // the cells are core::mapPoint's, bit for bit
     for (const auto& [column, row] : {std::pair{0, 0}, std::pair{128, 128}, std::pair{255, 17}, std::pair{40, 200}}) {
-      const grazelab::core::PointSummary expected = grazelab::core::sweepPoint(map.spec, column, row);
+      const grazelab::core::PointSummary expected = grazelab::core::mapPoint(map.spec, column, row);
       const grazelab::core::PointSummary& got = (*map.points)[std::size_t(row * 256 + column)];
       QCOMPARE(std::bit_cast<std::uint64_t>(got.fftFirst), std::bit_cast<std::uint64_t>(expected.fftFirst));
       QCOMPARE(got.impacts, expected.impacts);

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/state.h"
-#include "core/sweep.h"
+#include "core/maps.h"
 #include "ui/plots/heat_map.h"
 #include "ui/plots/scene_view.h"
 #include "ui/sim_types.h"
@@ -82,7 +82,7 @@ class LandscapeView : public QWidget, public SceneView {
   int m_textPixels = 0;               ///< presentation text size (0: the desk look)
   struct CacheKey {
     const void* points = nullptr;
-    core::SweepSpec spec;  ///< with the grid's address: a freed grid's address may come back
+    core::MapSpec spec;  ///< with the grid's address: a freed grid's address may come back
     std::int64_t rowsDone = -1;
     core::Quantity quantity = core::Quantity::FftFirst;
     friend bool operator==(const CacheKey&, const CacheKey&) = default;

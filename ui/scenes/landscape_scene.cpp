@@ -19,14 +19,14 @@ constexpr std::int64_t kMapContacts = 10;
 
 }  // namespace
 
-core::SweepSpec landscapeSpec(const Params& params, const DerivedModel& derived) {
-  core::SweepSpec spec;
+core::MapSpec landscapeSpec(const Params& params, const DerivedModel& derived) {
+  core::MapSpec spec;
   spec.model = derived.model;
   const double d = derived.model.gap;
   const double v = d * derived.modes.omegaSlow;
   const Params::MapRegion& r = params.mapRegion;
-  spec.x = {core::SweepVariable::U1, r.u1From * d, r.u1To * d, kResolution};
-  spec.y = {core::SweepVariable::V1, r.v1From * v, r.v1To * v, kResolution};
+  spec.x = {core::MapVariable::U1, r.u1From * d, r.u1To * d, kResolution};
+  spec.y = {core::MapVariable::V1, r.v1From * v, r.v1To * v, kResolution};
   spec.contacts = kMapContacts;
   return spec;
 }

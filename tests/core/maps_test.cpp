@@ -10,17 +10,17 @@
 
 #include "core/chain.h"
 #include "core/orbits.h"
-#include "core/sweep.h"
+#include "core/maps.h"
 #include "parallel/tbb_parallel_for.h"
 
 namespace grazelab::core {
 namespace {
 
-SweepSpec grazingPlane(std::int64_t columns, std::int64_t rows, std::int64_t contacts) {
-  SweepSpec spec;
+MapSpec grazingPlane(std::int64_t columns, std::int64_t rows, std::int64_t contacts) {
+  MapSpec spec;
   spec.model.design = Branch::Upper;
-  spec.x = {SweepVariable::U1, -1.0, 2.0, columns};
-  spec.y = {SweepVariable::V1, -1.5, 1.5, rows};
+  spec.x = {MapVariable::U1, -1.0, 2.0, columns};
+  spec.y = {MapVariable::V1, -1.5, 1.5, rows};
   spec.contacts = contacts;
   return spec;
 }
@@ -42,14 +42,14 @@ double periodOf(const Model& model) {
   return twoPi<double>() / makeChain(designed).chain->omegaSlow;
 }
 
-TEST(SweepTest, theGrazingFamilyFliesExactlyT2OverMassRatiosAndLambdas) {
-  SweepSpec spec;
+TEST(MapsTest, theGrazingFamilyFliesExactlyT2OverMassRatiosAndLambdas) {
+  MapSpec spec;
   spec.model.design = Branch::Upper;
-  spec.x = {SweepVariable::Lambda, 0.0, 4.0 / 3.0, 9};
-  spec.y = {SweepVariable::MassRatio, 0.05, 0.55, 6};
+  spec.x = {MapVariable::Lambda, 0.0, 4.0 / 3.0, 9};
+  spec.y = {MapVariable::MassRatio, 0.05, 0.55, 6};
   spec.contacts = 12;
-  ASSERT_EQ(checkSweep(spec), "");
-  const SweepMap map = sweep(spec, {0, spec.y.count}, serialFor());
+  ASSERT_EQ(checkMap(spec), "");
+  const MapRows map = computeMap(spec, {0, spec.y.count}, serialFor());
   ASSERT_TRUE(map.complete);
   for (std::int64_t r = 0; r < spec.y.count; ++r) {
     Model model = spec.model;
@@ -76,9 +76,9 @@ TEST(SweepTest, theGrazingFamilyFliesExactlyT2OverMassRatiosAndLambdas) {
   }
 }
 
-TEST(SweepTest, noFirstFlightOnTheGrazingStartPlaneLastsLongerThanT2) {
-  const SweepSpec spec = grazingPlane(41, 37, 1);
-  const SweepMap map = sweep(spec, {0, spec.y.count}, serialFor());
+TEST(MapsTest, noFirstFlightOnTheGrazingStartPlaneLastsLongerThanT2) {
+  const MapSpec spec = grazingPlane(41, 37, 1);
+  const MapRows map = computeMap(spec, {0, spec.y.count}, serialFor());
   int atT2 = 0, below = 0;
   for (const PointSummary& p : map.points) {
     ASSERT_TRUE(p.valid);
@@ -94,20 +94,20 @@ TEST(SweepTest, noFirstFlightOnTheGrazingStartPlaneLastsLongerThanT2) {
   EXPECT_GT(below, 100);
 }
 
-TEST(SweepTest, aStartPressedOnTheStopFliesAfterItsStuckPhase) {
-  SweepSpec spec = grazingPlane(1, 1, 1);
-  spec.x = {SweepVariable::U1, 1.5, 1.5, 1};
-  spec.y = {SweepVariable::V1, 0.3, 0.3, 1};
-  const PointSummary p = sweepPoint(spec, 0, 0);
+TEST(MapsTest, aStartPressedOnTheStopFliesAfterItsStuckPhase) {
+  MapSpec spec = grazingPlane(1, 1, 1);
+  spec.x = {MapVariable::U1, 1.5, 1.5, 1};
+  spec.y = {MapVariable::V1, 0.3, 0.3, 1};
+  const PointSummary p = mapPoint(spec, 0, 0);
   EXPECT_EQ(p.sticks, 1);
   EXPECT_TRUE(std::isfinite(p.fftFirst));
   EXPECT_LT(p.fftFirst, periodOf(spec.model));
 }
 
-TEST(SweepTest, onAllCoresTheMapIsTheSerialOneBitForBit) {
-  SweepSpec spec = grazingPlane(48, 40, 30);
-  const SweepMap serial = sweep(spec, {0, spec.y.count}, serialFor());
-  const SweepMap parallel = sweep(spec, {0, spec.y.count}, parallel::tbbParallelFor(2));
+TEST(MapsTest, onAllCoresTheMapIsTheSerialOneBitForBit) {
+  MapSpec spec = grazingPlane(48, 40, 30);
+  const MapRows serial = computeMap(spec, {0, spec.y.count}, serialFor());
+  const MapRows parallel = computeMap(spec, {0, spec.y.count}, parallel::tbbParallelFor(2));
   // and with the pieces run backwards on two plain threads
   const ParallelFor backwards = [](std::int64_t count, const std::function<void(std::int64_t, std::int64_t)>& body) {
     std::thread other([&] {
@@ -116,7 +116,7 @@ TEST(SweepTest, onAllCoresTheMapIsTheSerialOneBitForBit) {
     for (std::int64_t i = count / 2 - 1; i >= 0; --i) body(i, i + 1);
     other.join();
   };
-  const SweepMap shuffled = sweep(spec, {0, spec.y.count}, backwards);
+  const MapRows shuffled = computeMap(spec, {0, spec.y.count}, backwards);
   ASSERT_EQ(serial.points.size(), parallel.points.size());
   for (std::size_t i = 0; i < serial.points.size(); ++i) {
     ASSERT_TRUE(sameBits(serial.points[i], parallel.points[i])) << "point " << i;
@@ -124,7 +124,7 @@ TEST(SweepTest, onAllCoresTheMapIsTheSerialOneBitForBit) {
   }
 }
 
-TEST(SweepTest, stripesCoverEveryRowOnceAndJoinToTheWholeMap) {
+TEST(MapsTest, stripesCoverEveryRowOnceAndJoinToTheWholeMap) {
   for (std::int64_t rows : {1, 5, 37, 512}) {
     for (std::int64_t n : {1, 2, 3, 4, 7}) {
       std::int64_t next = 0;
@@ -137,33 +137,33 @@ TEST(SweepTest, stripesCoverEveryRowOnceAndJoinToTheWholeMap) {
       EXPECT_EQ(next, rows);
     }
   }
-  SweepSpec spec = grazingPlane(16, 11, 8);
-  const SweepMap whole = sweep(spec, {0, 11}, serialFor());
+  MapSpec spec = grazingPlane(16, 11, 8);
+  const MapRows whole = computeMap(spec, {0, 11}, serialFor());
   std::vector<PointSummary> joined;
   for (std::int64_t k = 1; k <= 4; ++k) {
-    const SweepMap part = sweep(spec, stripe(11, k, 4), serialFor());
+    const MapRows part = computeMap(spec, stripe(11, k, 4), serialFor());
     joined.insert(joined.end(), part.points.begin(), part.points.end());
   }
   ASSERT_EQ(joined.size(), whole.points.size());
   for (std::size_t i = 0; i < joined.size(); ++i) ASSERT_TRUE(sameBits(joined[i], whole.points[i]));
 }
 
-TEST(SweepTest, axesAreNumpyLinspace) {
-  const SweepAxis axis{SweepVariable::MassRatio, 0.1, 0.7, 4};
+TEST(MapsTest, axesAreNumpyLinspace) {
+  const MapAxis axis{MapVariable::MassRatio, 0.1, 0.7, 4};
   EXPECT_EQ(axis.at(0), 0.1);
   EXPECT_EQ(axis.at(3), 0.7);
   const double step = (0.7 - 0.1) / 3;
   EXPECT_EQ(axis.at(1), 1 * step + 0.1);
   EXPECT_EQ(axis.at(2), 2 * step + 0.1);
-  EXPECT_EQ((SweepAxis{SweepVariable::Gap, 2.0, 5.0, 1}).at(0), 2.0);
+  EXPECT_EQ((MapAxis{MapVariable::Gap, 2.0, 5.0, 1}).at(0), 2.0);
 }
 
-TEST(SweepTest, pointsWithoutAChainOrAStartAreNaNNotNumbers) {
-  SweepSpec spec;
+TEST(MapsTest, pointsWithoutAChainOrAStartAreNaNNotNumbers) {
+  MapSpec spec;
   spec.model.design = Branch::Upper;
-  spec.x = {SweepVariable::MassRatio, 0.5, 0.7, 2};  // 0.7 > 9/16: no 1:2 chain
-  spec.y = {SweepVariable::Gap, 1.0, 1.0, 1};
-  const SweepMap map = sweep(spec, {0, 1}, serialFor());
+  spec.x = {MapVariable::MassRatio, 0.5, 0.7, 2};  // 0.7 > 9/16: no 1:2 chain
+  spec.y = {MapVariable::Gap, 1.0, 1.0, 1};
+  const MapRows map = computeMap(spec, {0, 1}, serialFor());
   EXPECT_TRUE(map.points[0].valid);
   EXPECT_FALSE(map.points[1].valid);
   EXPECT_TRUE(std::isnan(map.points[1].fftFirst));
@@ -171,60 +171,60 @@ TEST(SweepTest, pointsWithoutAChainOrAStartAreNaNNotNumbers) {
   EXPECT_EQ(map.points[1].impacts, -1);
   for (const QuantityInfo& info : quantities()) EXPECT_TRUE(std::isnan(valueOf(map.points[1], info.quantity)));
   // a start beyond the stop
-  SweepSpec past = grazingPlane(1, 1, 1);
+  MapSpec past = grazingPlane(1, 1, 1);
   past.start = StartSpec<double>{};
   past.start->kind = StartSpec<double>::Kind::Explicit;
   past.start->state = State{0, 1.5, 0, 0};
-  EXPECT_FALSE(sweepPoint(past, 0, 0).valid);
+  EXPECT_FALSE(mapPoint(past, 0, 0).valid);
 }
 
-TEST(SweepTest, detuningZeroIsTheResonantDesignWhateverK2WasGiven) {
-  SweepSpec spec;
+TEST(MapsTest, detuningZeroIsTheResonantDesignWhateverK2WasGiven) {
+  MapSpec spec;
   spec.model = Model{1.0, 0.5, 1.0, 0.3, 1.0, std::nullopt};  // a chain given by its k2
-  spec.x = {SweepVariable::Detuning, -0.1, 0.1, 3};
-  spec.y = {SweepVariable::Lambda, 0.5, 0.5, 1};
+  spec.x = {MapVariable::Detuning, -0.1, 0.1, 3};
+  spec.y = {MapVariable::Lambda, 0.5, 0.5, 1};
   spec.contacts = 5;
-  const SweepMap map = sweep(spec, {0, 1}, serialFor());
+  const MapRows map = computeMap(spec, {0, 1}, serialFor());
   // the middle column: the 1:2 chain, where GLO_0.5 grazes every T2
-  SweepSpec designed = spec;
+  MapSpec designed = spec;
   designed.model.design = Branch::Upper;
-  designed.x = {SweepVariable::Gap, 1.0, 1.0, 1};
-  EXPECT_TRUE(sameBits(map.points[1], sweepPoint(designed, 0, 0)));
+  designed.x = {MapVariable::Gap, 1.0, 1.0, 1};
+  EXPECT_TRUE(sameBits(map.points[1], mapPoint(designed, 0, 0)));
   EXPECT_EQ(map.points[1].grazings, 5);
   EXPECT_EQ(map.points[1].fftFirst, periodOf(designed.model));
 }
 
-TEST(SweepTest, aStopEndsTheMapIncomplete) {
+TEST(MapsTest, aStopEndsTheMapIncomplete) {
   std::stop_source source;
   source.request_stop();
-  const SweepSpec spec = grazingPlane(8, 8, 1);
-  const SweepMap map = sweep(spec, {0, 8}, serialFor(), source.get_token());
+  const MapSpec spec = grazingPlane(8, 8, 1);
+  const MapRows map = computeMap(spec, {0, 8}, serialFor(), source.get_token());
   EXPECT_FALSE(map.complete);
   EXPECT_EQ(map.computed, 0);
 }
 
-TEST(SweepTest, progressCountsEveryPointOnce) {
-  const SweepSpec spec = grazingPlane(30, 10, 1);
+TEST(MapsTest, progressCountsEveryPointOnce) {
+  const MapSpec spec = grazingPlane(30, 10, 1);
   std::atomic<std::int64_t> last = 0;
-  sweep(spec, {0, 10}, parallel::tbbParallelFor(2), {},
+  computeMap(spec, {0, 10}, parallel::tbbParallelFor(2), {},
         [&last](std::int64_t done) { last = std::max<std::int64_t>(last, done); });
   EXPECT_EQ(last.load(), 300);
 }
 
-TEST(SweepTest, specsThatMakeNoSenseAreRefusedWithAReason) {
-  SweepSpec spec = grazingPlane(4, 4, 1);
-  spec.y.variable = SweepVariable::U1;
-  EXPECT_NE(checkSweep(spec).find("both u1"), std::string::npos);
+TEST(MapsTest, specsThatMakeNoSenseAreRefusedWithAReason) {
+  MapSpec spec = grazingPlane(4, 4, 1);
+  spec.y.variable = MapVariable::U1;
+  EXPECT_NE(checkMap(spec).find("both u1"), std::string::npos);
   spec = grazingPlane(4, 4, 1);
-  spec.x.variable = SweepVariable::Lambda;
-  EXPECT_NE(checkSweep(spec).find("lambda sets the whole start"), std::string::npos);
+  spec.x.variable = MapVariable::Lambda;
+  EXPECT_NE(checkMap(spec).find("lambda sets the whole start"), std::string::npos);
   spec = grazingPlane(0, 4, 1);
-  EXPECT_NE(checkSweep(spec).find("count"), std::string::npos);
+  EXPECT_NE(checkMap(spec).find("count"), std::string::npos);
   spec = grazingPlane(4, 4, 0);
-  EXPECT_NE(checkSweep(spec).find("contacts"), std::string::npos);
+  EXPECT_NE(checkMap(spec).find("contacts"), std::string::npos);
   spec = grazingPlane(4, 4, 1);
   spec.x.to = INFINITY;
-  EXPECT_NE(checkSweep(spec).find("finite"), std::string::npos);
+  EXPECT_NE(checkMap(spec).find("finite"), std::string::npos);
 }
 
 }  // namespace

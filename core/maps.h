@@ -21,7 +21,7 @@ namespace grazelab::core {
 /// or on all cores; every grid point is computed alone, so the result does not depend on it.
 
 /// What an axis of a map varies.
-enum class SweepVariable {
+enum class MapVariable {
   U1,         ///< u1 of the start [length]
   V1,         ///< v1 of the start [length/time]
   V2,         ///< v2 of the start [length/time] (<= 0 on H: leaving the stop)
@@ -33,14 +33,14 @@ enum class SweepVariable {
               ///< by k2); 0 is the 1:2 design itself
 };
 /// "u1", "v1", "v2", "lambda", "epsilon", "mass-ratio", "gap", "detuning".
-std::string_view toString(SweepVariable variable);
-std::optional<SweepVariable> parseSweepVariable(std::string_view text);
-/// Every name parseSweepVariable takes, for error messages: "u1, v1, ..., detuning".
-std::string sweepVariableNames();
+std::string_view toString(MapVariable variable);
+std::optional<MapVariable> parseMapVariable(std::string_view text);
+/// Every name parseMapVariable takes, for error messages: "u1, v1, ..., detuning".
+std::string mapVariableNames();
 
 /// `count` values from `from` to `to`, both included (one value: `from`).
-struct SweepAxis {
-  SweepVariable variable = SweepVariable::U1;
+struct MapAxis {
+  MapVariable variable = MapVariable::U1;
   double from = 0;
   double to = 1;
   std::int64_t count = 1;
@@ -48,11 +48,11 @@ struct SweepAxis {
   /// last one `to` exactly.
   double at(std::int64_t i) const;
 
-  friend bool operator==(const SweepAxis&, const SweepAxis&) = default;
+  friend bool operator==(const MapAxis&, const MapAxis&) = default;
 };
 
 /// A map: the chain, the start the axes modify, the two axes, the length of each run.
-struct SweepSpec {
+struct MapSpec {
   Model model;  ///< as given (design set: k2 follows m2/m1; unset: k2 as given)
   /// How each run starts before the axes change it (its own perturbation is not used). Nothing:
   /// the grazing-start plane (u1, gap, v1, 0) with u1 = v1 = 0 where no axis sets them.
@@ -60,18 +60,18 @@ struct SweepSpec {
   /// Added to the start after the axes set its coordinates; on an epsilon axis, the direction
   /// that epsilon scales (default (0, 0, 0, -1): mass 2 pushed off the stop).
   std::optional<State> perturbation;
-  SweepAxis x;  ///< columns
-  SweepAxis y;  ///< rows
+  MapAxis x;  ///< columns
+  MapAxis y;  ///< rows
   std::int64_t contacts = 1;  ///< contacts of each run
   bool estimateHorizon = false;  ///< a shadow run per point (TrustMode::Auto); costs about 2x
 
-  friend bool operator==(const SweepSpec&, const SweepSpec&) = default;
+  friend bool operator==(const MapSpec&, const MapSpec&) = default;
 };
 
 /// Why the spec cannot be run (one line), or empty: counts >= 1 and at most 2^24 points along
 /// an axis, finite ranges, two different variables, combinations that make sense (lambda sets
 /// the whole start: no u1/v1/v2 axis and no explicit start beside it).
-std::string checkSweep(const SweepSpec& spec);
+std::string checkMap(const MapSpec& spec);
 
 /// The summary of one run. NaN where a value is not defined (no flight from the stop ended
 /// within the run, no impact, an unusable model or start at that point); +infinity where the
@@ -117,7 +117,7 @@ struct RowRange {
 RowRange stripe(std::int64_t rows, std::int64_t k, std::int64_t n);
 
 /// The computed part of a map: row-major (row = y index, column = x index).
-struct SweepMap {
+struct MapRows {
   RowRange rows;
   std::int64_t columns = 0;
   std::vector<PointSummary> points;  ///< (rowEnd - rowBegin) x columns
@@ -137,14 +137,14 @@ ParallelFor serialFor();
 
 /// Called after each piece with the number of points done so far; may be called from several
 /// threads at once.
-using SweepProgress = std::function<void(std::int64_t done)>;
+using MapRowsProgress = std::function<void(std::int64_t done)>;
 
-/// Computes rows `rows` of the map. Precondition: checkSweep(spec) is empty.
-SweepMap sweep(const SweepSpec& spec, RowRange rows, const ParallelFor& parallelFor,
-               std::stop_token stop = {}, const SweepProgress& progress = {});
+/// Computes rows `rows` of the map. Precondition: checkMap(spec) is empty.
+MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parallelFor,
+               std::stop_token stop = {}, const MapRowsProgress& progress = {});
 
 /// One point of the map, alone (what sweep computes at column i, row j).
-PointSummary sweepPoint(const SweepSpec& spec, std::int64_t column, std::int64_t row,
+PointSummary mapPoint(const MapSpec& spec, std::int64_t column, std::int64_t row,
                         std::stop_token stop = {});
 
 }  // namespace grazelab::core

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-#include "core/methods/stability.h"
+#include "core/methods/stress_matrix.h"
 
 #include <chrono>
 #include <cmath>
@@ -25,9 +25,9 @@ std::string number(double value) {
 }
 
 /// GLO_lambda of a chain pushed by `push` w2 d in (v1, -v2).
-StabilityCase gloCase(std::string name, std::string description, const Model& model,
+StressCase gloCase(std::string name, std::string description, const Model& model,
                       double lambda, double push) {
-  StabilityCase result{std::move(name), std::move(description), std::nullopt, {}, {}, {}, 0};
+  StressCase result{std::move(name), std::move(description), std::nullopt, {}, {}, {}, 0};
   const std::string problem = describe(validate(model));
   if (!problem.empty()) {
     result.problem = problem;
@@ -101,8 +101,8 @@ std::string_view toString(CellVerdict verdict) {
   return "failed";
 }
 
-std::vector<StabilityCase> stabilityCases(bool quick) {
-  std::vector<StabilityCase> cases;
+std::vector<StressCase> stressCases(bool quick) {
+  std::vector<StressCase> cases;
   const double push = kDefaultPush;
   cases.push_back(gloCase("default", "m2/m1 = 1/2 upper, d = 1, GLO_0.5 pushed (the report's problem)",
                           designed(0.5, Branch::Upper), 0.5, push));
@@ -150,7 +150,7 @@ std::vector<StabilityCase> stabilityCases(bool quick) {
                             designed(0.5, Branch::Upper), lambda, 0));
   }
   {
-    StabilityCase sticking{"sticking-start", "on the stop at rest with u1 = 1.5 d: pressed, stuck, released",
+    StressCase sticking{"sticking-start", "on the stop at rest with u1 = 1.5 d: pressed, stuck, released",
                            std::nullopt, {}, {}, {}, 0};
     const Model model = designed(0.5, Branch::Upper);
     const double period = twoPi<double>() / makeChain(model).chain->omegaSlow;
@@ -158,7 +158,7 @@ std::vector<StabilityCase> stabilityCases(bool quick) {
     cases.push_back(sticking);
   }
   for (double kc : quick ? std::vector<double>{1e12} : std::vector<double>{1e2, 1e4, 1e6, 1e8, 1e10, 1e12}) {
-    StabilityCase row = gloCase("penalty-kc-" + number(kc), "the default problem with penalty stiffness k_c = " + number(kc) + " k1",
+    StressCase row = gloCase("penalty-kc-" + number(kc), "the default problem with penalty stiffness k_c = " + number(kc) + " k1",
                                 designed(0.5, Branch::Upper), 0.5, push);
     row.only = MethodKind::Penalty;
     row.penaltyStiffness = kc;
@@ -166,7 +166,7 @@ std::vector<StabilityCase> stabilityCases(bool quick) {
   }
   {
     const std::int64_t contacts = quick ? 100'000 : 10'000'000;
-    StabilityCase row = gloCase("long-run-" + number(double(contacts)),
+    StressCase row = gloCase("long-run-" + number(double(contacts)),
                                 number(double(contacts)) + " contacts of the default problem: energy drift and time per contact along the run",
                                 designed(0.5, Branch::Upper), 0.5, push);
     row.longRunContacts = contacts;
@@ -211,7 +211,7 @@ CellVerdict verdictOf(RunStatus status) {
   return CellVerdict::Failed;
 }
 
-void judge(StabilityCell& cell, const MethodRun& run, double tolerance) {
+void judge(StressCell& cell, const MethodRun& run, double tolerance) {
   cell.verdict = verdictOf(run.status);
   if (cell.verdict != CellVerdict::Ok) {
     cell.reason = run.reason.empty() ? std::string(toString(run.status)) : run.reason;
@@ -229,12 +229,12 @@ void judge(StabilityCell& cell, const MethodRun& run, double tolerance) {
   for (std::size_t i = 0; i < problems.size(); ++i) cell.reason += (i ? "; " : "") + problems[i];
 }
 
-void runLong(const StabilityCase& row, const std::vector<MethodKind>& methods,
-             const WorkBudget& budget, const std::function<void(const StabilityCell&)>& onCell,
+void runLong(const StressCase& row, const std::vector<MethodKind>& methods,
+             const WorkBudget& budget, const std::function<void(const StressCell&)>& onCell,
              std::vector<LongRunMark>* marks, std::stop_token stop) {
   const Task& task = *row.task;
   for (MethodKind kind : methods) {
-    StabilityCell cell;
+    StressCell cell;
     cell.caseName = row.name;
     cell.method = kind;
     cell.setting = standardSetting(kind, task.tEnd / kCasePeriods, task.model.k1);
@@ -298,14 +298,14 @@ void runLong(const StabilityCase& row, const std::vector<MethodKind>& methods,
 
 }  // namespace
 
-CaseHorizon runStabilityCase(const StabilityCase& row, const std::vector<MethodKind>& methods,
+CaseHorizon runStressCase(const StressCase& row, const std::vector<MethodKind>& methods,
                              const WorkBudget& budget,
-                             const std::function<void(const StabilityCell&)>& onCell,
+                             const std::function<void(const StressCell&)>& onCell,
                              std::vector<LongRunMark>* longRun, std::stop_token stop) {
   CaseHorizon horizon;
   auto refuseAll = [&](const std::string& reason) {
     for (MethodKind kind : methods) {
-      StabilityCell cell;
+      StressCell cell;
       cell.caseName = row.name;
       cell.method = kind;
       cell.verdict = CellVerdict::Refused;
@@ -353,7 +353,7 @@ CaseHorizon runStabilityCase(const StabilityCase& row, const std::vector<MethodK
       std::max(kExactTolerance, kEstimateMargin * trust.stateError * amplitude);
   const double period = reference.period;
   for (MethodKind kind : methods) {
-    StabilityCell cell;
+    StressCell cell;
     cell.caseName = row.name;
     cell.method = kind;
     cell.setting = standardSetting(kind, period, task.model.k1, row.penaltyStiffness);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-#include "core/sweep.h"
+#include "core/maps.h"
 
 #include <algorithm>
 #include <atomic>
@@ -21,26 +21,26 @@ constexpr std::int64_t kMaxAxisCount = std::int64_t(1) << 24;
 constexpr std::int64_t kPiece = 64;
 
 struct VariableName {
-  SweepVariable variable;
+  MapVariable variable;
   std::string_view name;
 };
 constexpr VariableName kVariableNames[] = {
-    {SweepVariable::U1, "u1"},          {SweepVariable::V1, "v1"},
-    {SweepVariable::V2, "v2"},          {SweepVariable::Lambda, "lambda"},
-    {SweepVariable::Epsilon, "epsilon"}, {SweepVariable::MassRatio, "mass-ratio"},
-    {SweepVariable::Gap, "gap"},        {SweepVariable::Detuning, "detuning"},
+    {MapVariable::U1, "u1"},          {MapVariable::V1, "v1"},
+    {MapVariable::V2, "v2"},          {MapVariable::Lambda, "lambda"},
+    {MapVariable::Epsilon, "epsilon"}, {MapVariable::MassRatio, "mass-ratio"},
+    {MapVariable::Gap, "gap"},        {MapVariable::Detuning, "detuning"},
 };
 
-bool isStartCoordinate(SweepVariable v) {
-  return v == SweepVariable::U1 || v == SweepVariable::V1 || v == SweepVariable::V2;
+bool isStartCoordinate(MapVariable v) {
+  return v == MapVariable::U1 || v == MapVariable::V1 || v == MapVariable::V2;
 }
 
 // the value an axis gives at this point, if one of the two axes is `variable`
 struct PointValues {
-  const SweepSpec& spec;
+  const MapSpec& spec;
   double xValue;
   double yValue;
-  std::optional<double> of(SweepVariable variable) const {
+  std::optional<double> of(MapVariable variable) const {
     if (spec.x.variable == variable) return xValue;
     if (spec.y.variable == variable) return yValue;
     return std::nullopt;
@@ -48,15 +48,15 @@ struct PointValues {
 };
 
 // the model at this point: the base one with its mass ratio, gap and detuning from the axes
-std::optional<Model> pointModel(const SweepSpec& spec, const PointValues& values) {
+std::optional<Model> pointModel(const MapSpec& spec, const PointValues& values) {
   Model model = spec.model;
-  if (const auto ratio = values.of(SweepVariable::MassRatio)) model.m2 = *ratio * model.m1;
-  if (const auto gap = values.of(SweepVariable::Gap)) model.gap = *gap;
+  if (const auto ratio = values.of(MapVariable::MassRatio)) model.m2 = *ratio * model.m1;
+  if (const auto gap = values.of(MapVariable::Gap)) model.gap = *gap;
   if (!validate(model).empty()) return std::nullopt;
   if (model.design) {
     model = *designedModel(model.m1, model.m2, model.k1, model.gap, *model.design);
   }
-  const auto detuning = values.of(SweepVariable::Detuning);
+  const auto detuning = values.of(MapVariable::Detuning);
   if (detuning && *detuning == 0 && !model.design) {
     // ratio 2 is the 1:2 design itself (exactly resonant), as the axis's other values are the
     // k2 for their ratio on the upper branch
@@ -78,11 +78,11 @@ std::optional<Model> pointModel(const SweepSpec& spec, const PointValues& values
 
 // the start at this point: the base start, its coordinates from the axes, then the push
 template <typename S>
-std::optional<BasicState<S>> pointStart(const SweepSpec& spec, const Chain<S>& chain,
+std::optional<BasicState<S>> pointStart(const MapSpec& spec, const Chain<S>& chain,
                                         const PointValues& values) {
   BasicState<S> state{0, chain.model.gap, 0, 0};
   using Kind = StartSpec<double>::Kind;
-  const auto lambda = values.of(SweepVariable::Lambda);
+  const auto lambda = values.of(MapVariable::Lambda);
   if (lambda) {
     state = gloData(chain, S(*lambda));
   } else if (spec.start) {
@@ -104,11 +104,11 @@ std::optional<BasicState<S>> pointStart(const SweepSpec& spec, const Chain<S>& c
         break;
     }
   }
-  if (const auto u1 = values.of(SweepVariable::U1)) state.u1 = S(*u1);
-  if (const auto v1 = values.of(SweepVariable::V1)) state.v1 = S(*v1);
-  if (const auto v2 = values.of(SweepVariable::V2)) state.v2 = S(*v2);
+  if (const auto u1 = values.of(MapVariable::U1)) state.u1 = S(*u1);
+  if (const auto v1 = values.of(MapVariable::V1)) state.v1 = S(*v1);
+  if (const auto v2 = values.of(MapVariable::V2)) state.v2 = S(*v2);
   const std::optional<State>& given = spec.perturbation;
-  if (const auto epsilon = values.of(SweepVariable::Epsilon)) {
+  if (const auto epsilon = values.of(MapVariable::Epsilon)) {
     state = state + S(*epsilon) * convertState<S>(given.value_or(State{0, 0, 0, -1}));
   } else if (given) {
     state = state + convertState<S>(*given);
@@ -210,7 +210,7 @@ void summarizeFlights(const BasicResult<S>& result, double period, bool startsOn
 // The summary of one point computed in precision S. Returns false (and leaves `summary`
 // alone) when the run stopped at a contact S cannot decide and `stopAtUndecided` asked for that.
 template <typename S>
-bool summarizePoint(const SweepSpec& spec, const Model& given, const PointValues& values,
+bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& values,
                     bool stopAtUndecided, std::stop_token stop, PointSummary& summary) {
   const BasicModel<S> model = convertModel<S>(given);
   const ChainOrProblem<S> formed = makeChain(model);
@@ -260,21 +260,21 @@ bool summarizePoint(const SweepSpec& spec, const Model& given, const PointValues
 
 }  // namespace
 
-std::string_view toString(SweepVariable variable) {
+std::string_view toString(MapVariable variable) {
   for (const VariableName& entry : kVariableNames) {
     if (entry.variable == variable) return entry.name;
   }
   return "?";
 }
 
-std::optional<SweepVariable> parseSweepVariable(std::string_view text) {
+std::optional<MapVariable> parseMapVariable(std::string_view text) {
   for (const VariableName& entry : kVariableNames) {
     if (entry.name == text) return entry.variable;
   }
   return std::nullopt;
 }
 
-std::string sweepVariableNames() {
+std::string mapVariableNames() {
   std::string names;
   for (const VariableName& entry : kVariableNames) {
     if (!names.empty()) names += ", ";
@@ -283,7 +283,7 @@ std::string sweepVariableNames() {
   return names;
 }
 
-double SweepAxis::at(std::int64_t i) const {
+double MapAxis::at(std::int64_t i) const {
   if (count <= 1) return from;
   if (i == count - 1) return to;
   // numpy.linspace's own arithmetic, so that a script rebuilding the axis gets the same numbers
@@ -291,8 +291,8 @@ double SweepAxis::at(std::int64_t i) const {
   return double(i) * step + from;
 }
 
-std::string checkSweep(const SweepSpec& spec) {
-  for (const SweepAxis* axis : {&spec.x, &spec.y}) {
+std::string checkMap(const MapSpec& spec) {
+  for (const MapAxis* axis : {&spec.x, &spec.y}) {
     const std::string name(toString(axis->variable));
     if (axis->count < 1 || axis->count > kMaxAxisCount) {
       return name + ": the count must be between 1 and " + std::to_string(kMaxAxisCount);
@@ -305,7 +305,7 @@ std::string checkSweep(const SweepSpec& spec) {
     return "x and y are both " + std::string(toString(spec.x.variable)) + ": give two different variables";
   }
   if (spec.contacts < 1) return "contacts must be at least 1";
-  const bool lambdaAxis = spec.x.variable == SweepVariable::Lambda || spec.y.variable == SweepVariable::Lambda;
+  const bool lambdaAxis = spec.x.variable == MapVariable::Lambda || spec.y.variable == MapVariable::Lambda;
   if (lambdaAxis) {
     if (isStartCoordinate(spec.x.variable) || isStartCoordinate(spec.y.variable)) {
       return "lambda sets the whole start (GLO_lambda data): it cannot be swept with u1, v1 or v2";
@@ -368,7 +368,7 @@ ParallelFor serialFor() {
   };
 }
 
-PointSummary sweepPoint(const SweepSpec& spec, std::int64_t column, std::int64_t row,
+PointSummary mapPoint(const MapSpec& spec, std::int64_t column, std::int64_t row,
                         std::stop_token stop) {
   const PointValues values{spec, spec.x.at(column), spec.y.at(row)};
   const std::optional<Model> model = pointModel(spec, values);
@@ -382,9 +382,9 @@ PointSummary sweepPoint(const SweepSpec& spec, std::int64_t column, std::int64_t
   return summary;
 }
 
-SweepMap sweep(const SweepSpec& spec, RowRange rows, const ParallelFor& parallelFor,
-               std::stop_token stop, const SweepProgress& progress) {
-  SweepMap map;
+MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parallelFor,
+               std::stop_token stop, const MapRowsProgress& progress) {
+  MapRows map;
   map.rows = rows;
   map.columns = spec.x.count;
   const std::int64_t count = (rows.rowEnd - rows.rowBegin) * map.columns;
@@ -405,7 +405,7 @@ SweepMap sweep(const SweepSpec& spec, RowRange rows, const ParallelFor& parallel
       const std::int64_t last = std::min(count, first + kPiece);
       for (std::int64_t i = first; i < last; ++i) {
         const std::int64_t row = rows.rowBegin + i / map.columns;
-        const PointSummary point = sweepPoint(spec, i % map.columns, row, localStop);
+        const PointSummary point = mapPoint(spec, i % map.columns, row, localStop);
         // a run cut short by the stop is not the point's summary: it stays invalid
         if (localStop.stop_requested()) return;
         map.points[std::size_t(i)] = point;

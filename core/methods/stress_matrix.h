@@ -13,7 +13,7 @@
 namespace grazelab::core::methods {
 
 /// One row of the stability matrix: a stiff or extreme problem, run by every method.
-struct StabilityCase {
+struct StressCase {
   std::string name;         ///< e.g. "mass-ratio-1e-12-upper"
   std::string description;  ///< one line for the table
   /// The problem; nothing when it cannot be formed (then `problem` says why, and every cell
@@ -34,7 +34,7 @@ enum class CellVerdict { Ok, Inaccurate, Refused, Budget, Failed };
 std::string_view toString(CellVerdict verdict);
 
 /// A finished cell.
-struct StabilityCell {
+struct StressCell {
   std::string caseName;
   MethodKind method = MethodKind::Exact;
   MethodSetting setting;
@@ -63,7 +63,7 @@ inline constexpr double kExactTolerance = 1e-9;
 inline constexpr double kEstimateMargin = 10;
 
 /// The cases of the matrix. `quick`: a subset that runs in seconds (for ctest).
-std::vector<StabilityCase> stabilityCases(bool quick);
+std::vector<StressCase> stressCases(bool quick);
 
 /// The standard setting of each method in the matrix, for a problem of slow period T2 and
 /// spring k1: h = T2 / 1000, rtol = 1e-8, k_c = 1e8 k1 (rtol 1e-10), exact in double.
@@ -86,9 +86,9 @@ struct CaseHorizon {
 /// its own error estimate, put in the units of the errors here): both its accuracy and the
 /// honesty of its estimate are tested.
 /// `longRun` receives the marks of a long exact run.
-CaseHorizon runStabilityCase(const StabilityCase& stabilityCase, const std::vector<MethodKind>& methods,
+CaseHorizon runStressCase(const StressCase& stabilityCase, const std::vector<MethodKind>& methods,
                       const WorkBudget& budget,
-                      const std::function<void(const StabilityCell&)>& onCell,
+                      const std::function<void(const StressCell&)>& onCell,
                       std::vector<LongRunMark>* longRun, std::stop_token stop = {});
 
 }  // namespace grazelab::core::methods
