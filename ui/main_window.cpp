@@ -17,9 +17,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
-#include <QFontInfo>
 #include <QScreen>
-#include <QStyleFactory>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -53,7 +51,6 @@ const QString kGeometryKey = QStringLiteral("window/geometry");
 const QString kStateKey = QStringLiteral("window/state");
 const QString kSessionKey = QStringLiteral("session/last");
 
-QString scientific(double value) { return QString::number(value, 'g', 3); }
 
 }  // namespace
 
@@ -302,10 +299,10 @@ void MainWindow::buildPlots() {
       auto* phase = qobject_cast<PhasePlot*>(plot);
       if (phase && phase->mass() == PhasePlot::Mass::Two) {
         connect(plot, &PlotView::clickedAt, this, [this, phase](QPointF value) {
-          // 8 pixels either side of the stop line count as on it
+          // a band a hand hits on a projector: kStopLineBand pixels either side of the line
           const double perPixel = std::abs(phase->chart()->mapToValue(QPointF(100, 0)).x() -
                                            phase->chart()->mapToValue(QPointF(0, 0)).x()) / 100;
-          startFromStopLine(value, 8 * perPixel);
+          startFromStopLine(value, kStopLineBand * perPixel);
         });
       }
     }
@@ -372,71 +369,6 @@ void MainWindow::layoutViews() {
   }
 }
 
-void MainWindow::toggleEnlarged(QWidget* view) {
-  m_enlarged = m_enlarged == view ? nullptr : view;
-  layoutViews();
-}
-
-void MainWindow::stepScene(int step) {
-  const int count = int(m_scenes.size());
-  selectScene(((m_sceneIndex + step) % count + count) % count);
-}
-
-void MainWindow::setPanelVisible(bool visible) {
-  m_side->setVisible(visible);
-  if (m_panelAction) m_panelAction->setChecked(visible);
-}
-
-void MainWindow::setPresentation(bool on, int screenHeight, bool fullScreen) {
-  if (on && !m_presentation) {
-    m_deskFont = QApplication::font();
-    m_deskPalette = QApplication::palette();
-  }
-  m_presentation = on;
-  m_presentationText = std::max(12, (screenHeight + 49) / 50);  // at least 1/50 of the height
-  if (m_presentationAction) m_presentationAction->setChecked(on);
-  // the controls grow with the text: the style's scale, read again when the font change below
-  // lays every widget out anew (replacing the application's style at run time instead broke
-  // the style sheets' hold on it: a heap corruption)
-  if (auto* scaled = qobject_cast<PresentationStyle*>(QApplication::style())) {
-    const double scale = double(m_presentationText) / std::max(1, QFontInfo(m_deskFont).pixelSize());
-    scaled->setScale(on ? std::max(1.0, scale) : 1.0);
-  }
-  if (on) {
-    QFont font = m_deskFont;
-    font.setPixelSize(m_presentationText);
-    QApplication::setFont(font);
-    // a white page with black text: the projector profile
-    QPalette palette = m_deskPalette;
-    palette.setColor(QPalette::Window, Qt::white);
-    palette.setColor(QPalette::Base, Qt::white);
-    palette.setColor(QPalette::WindowText, Qt::black);
-    palette.setColor(QPalette::Text, Qt::black);
-    QApplication::setPalette(palette);
-  } else if (m_deskFont != QFont()) {
-    QApplication::setFont(m_deskFont);
-    QApplication::setPalette(m_deskPalette);
-  }
-  for (SceneView* view : m_sceneViews) view->setPresentation(on, m_presentationText);
-  if (fullScreen) {
-    if (on) {
-      m_deskGeometry = geometry();
-      showFullScreen();
-      // without a window manager (a bare X server, a kiosk) full screen is only a wish: the
-      // window takes the screen's size itself
-      if (const QScreen* screen = this->screen()) setGeometry(screen->geometry());
-    } else {
-      showNormal();
-      if (m_deskGeometry.isValid()) setGeometry(m_deskGeometry);
-    }
-  }
-  // the larger text needs a wider panel: about 24 characters' worth, at most 40 % of the window
-  if (auto* splitter = qobject_cast<QSplitter*>(centralWidget())) {
-    const int side = on ? std::max(320, std::min(24 * m_presentationText, width() * 2 / 5)) : 400;
-    splitter->setSizes({side, std::max(1, width() - side)});
-  }
-}
-
 void MainWindow::selectScene(int index) {
   if (index < 0 || index >= int(m_scenes.size())) return;
   // the chain comes along; the scene keeps its own start, push and length
@@ -450,6 +382,7 @@ void MainWindow::selectScene(int index) {
 void MainWindow::showScene(int index) {
   m_sceneChosen = true;
   m_clickedStart.reset();
+  m_panel->setClickedStart(std::nullopt);
   m_sceneIndex = index;
   m_displayed.reset();
   m_pending.reset();
@@ -494,90 +427,9 @@ bool MainWindow::applySession(const Session& session, QString* error) {
   return true;
 }
 
-bool MainWindow::startFromSection(QPointF u1v1) {
-  if (!m_displayed) return false;
-  const core::Model& model = m_displayed->request->job.model;
-  const double level = core::energy(model, m_displayed->request->job.request.initial);
-  core::State start{u1v1.x(), model.gap, u1v1.y(), 0.0};
-  // what is left for v2 after the springs and mass 1 take their share of the energy
-  const double rest = level - core::energy(model, start);
-  if (!(rest >= 0)) {
-    m_status->setMessage(tr("No state of this energy (E = %1) at u₁ = %2, v₁ = %3 on H: the "
-                         "springs and mass 1 alone would hold more. Click inside the points.")
-                          .arg(level, 0, 'g', 6)
-                          .arg(u1v1.x(), 0, 'g', 4)
-                          .arg(u1v1.y(), 0, 'g', 4));
-    return false;
-  }
-  start.v2 = -std::sqrt(2 * rest / model.m2);  // leaving the stop, as after an impact
-  startFromClick(start);
-  return true;
-}
-
-bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
-  if (!m_displayed) return false;
-  const core::Model& model = m_displayed->request->job.model;
-  if (!(std::abs(u2v2.x() - model.gap) <= tolerance)) {
-    m_status->setMessage(tr("Click on the stop line u₂ = d (dashed) to start mass 2 from the stop "
-                         "at that speed."));
-    return false;
-  }
-  const core::State& shown = m_displayed->request->job.request.initial;
-  const double level = core::energy(model, shown);
-  core::State start{shown.u1, model.gap, 0.0, -std::abs(u2v2.y())};
-  // what is left for mass 1's speed once its position and mass 2 take their share
-  const double rest = level - core::energy(model, start);
-  if (!(rest >= 0)) {
-    m_status->setMessage(tr("No state of this energy (E = %1) with mass 2 leaving the stop at "
-                         "speed %2 and mass 1 at u₁ = %3: click nearer v₂ = 0.")
-                          .arg(level, 0, 'g', 6)
-                          .arg(std::abs(u2v2.y()), 0, 'g', 4)
-                          .arg(shown.u1, 0, 'g', 4));
-    return false;
-  }
-  start.v1 = std::copysign(std::sqrt(2 * rest / model.m1), shown.v1);
-  startFromClick(start);
-  return true;
-}
-
-void MainWindow::showMapRegion(QRectF region) {
-  Params& current = m_sceneParams[std::size_t(m_sceneIndex)];
-  const DerivedModel derived = deriveModel(current);
-  if (!derived.ok) return;
-  // a region a few ulps wide would have no distinct cells (and no ticks): refused, said
-  const auto tooNarrow = [](double low, double high) {
-    return !(high - low > 1e-9 * std::max({1.0, std::abs(low), std::abs(high)}));
-  };
-  if (tooNarrow(region.left(), region.right()) || tooNarrow(region.top(), region.bottom())) {
-    m_status->setMessage(tr("That region is too small to compute apart from its neighbours: drag a larger one"));
-    return;
-  }
-  // kept in units of d and d w2, so that it frames the same part of the plane for any chain
-  const double d = derived.model.gap;
-  const double v = d * derived.modes.omegaSlow;
-  m_regionHistory.push_back(current.mapRegion);
-  current.mapRegion = {region.left() / d, region.right() / d, region.top() / v, region.bottom() / v};
-  if (m_landscape) m_landscape->setBackEnabled(true);
-  recompute();
-}
-
-bool MainWindow::mapRegionBack() {
-  if (m_regionHistory.empty()) return false;
-  m_sceneParams[std::size_t(m_sceneIndex)].mapRegion = m_regionHistory.back();
-  m_regionHistory.pop_back();
-  if (m_landscape) m_landscape->setBackEnabled(!m_regionHistory.empty());
-  recompute();
-  return true;
-}
-
-void MainWindow::startFromClick(const core::State& start) {
-  m_clickedStart = start;
-  followDataFromNextUpdate();
-  recompute();
-}
-
 void MainWindow::onParamsChanged(const Params& params) {
   m_clickedStart.reset();  // an edit goes back to the scene's own start
+  m_panel->setClickedStart(std::nullopt);
   m_sceneParams[std::size_t(m_sceneIndex)] = params;
   // new data in a zoomed window may lie outside it and look blank: the plots fit it again
   followDataFromNextUpdate();
@@ -612,15 +464,6 @@ void MainWindow::recompute() {
     return job;
   };
   m_controller->submit(std::move(request));
-}
-
-void MainWindow::showProblem(const QString& message) {
-  // the last valid result stays on screen; only the message and the read-outs change
-  m_problem = message;
-  m_panel->setMessage(message);
-  for (PlotView* plot : m_plots) plot->setStale(m_displayed.has_value());
-  m_readout->setStale(true);
-  m_status->setMessage(tr("Not computed: %1 (showing the last valid result)").arg(message));
 }
 
 void MainWindow::onUpdate(const SimUpdate& update) {
@@ -702,76 +545,6 @@ void MainWindow::applyPending() {
   emit plotsUpdated(m_displayed->id, m_displayed->final);
 }
 
-void MainWindow::showStatus(const SimUpdate& update) {
-  const core::Result& result = *update.result;
-  const core::Cost& cost = result.cost;
-  // "1 stick", "2 sticks": the count decides the word
-  auto counted = [](std::int64_t n, const QString& one, const QString& many) {
-    return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
-  };
-  QString text = tr("%1 (%2, %3, %4) · %5 ms · energy drift %6 · max |u₂ − d| at contacts %7")
-                     .arg(counted(cost.contacts, tr("contact"), tr("contacts")),
-                          counted(cost.impacts, tr("impact"), tr("impacts")),
-                          counted(cost.grazings, tr("grazing"), tr("grazings")),
-                          counted(cost.sticks, tr("stick"), tr("sticks")))
-                     .arg(cost.wallSeconds * 1e3, 0, 'f', 1)
-                     .arg(scientific(cost.maxRelEnergyDrift))
-                     .arg(scientific(cost.maxContactResidual));
-  // a run raised to a higher precision says so early in the line; why, in the tooltip
-  m_status->setExplanation(m_statusExplanation + (update.precisionNote.empty()
-                                                      ? QString()
-                                                      : QStringLiteral("\n\n") +
-                                                            QString::fromStdString(update.precisionNote)));
-  if (update.attempt > 0) {
-    const int counts = int(text.indexOf(QStringLiteral(" · ")));
-    text.insert(counts, tr(" in %1").arg(update.attempt == 1 ? tr("long double") : tr("binary128")));
-  }
-  if (update.trust) text += QStringLiteral(" · ") + trustInWords(*update.trust, result.tFinal);
-  if (update.trustPending) text += tr(" · trust: estimating…");
-  if (update.accuracy) {
-    text += tr(" · methods: %1 of %2 settings measured")
-                .arg(update.accuracy->points.size())
-                .arg(update.accuracy->total);
-  }
-  if (!update.final) {
-    text += tr(" · computing…");
-  } else if (result.stop == core::StopReason::Cancelled) {
-    text += tr(" · cancelled");
-  } else if (!result.message.empty()) {
-    text += QStringLiteral(" · ") + QString::fromStdString(result.message);
-  }
-  if (!m_problem.isEmpty()) text = tr("Not computed: %1 (showing the last valid result)").arg(m_problem);
-  m_status->setMessage(text);
-}
-
-QString MainWindow::trustInWords(const core::Trust& trust, double tEnd) {
-  const QString error = scientific(std::max(trust.stateError, trust.timeError));
-  const QString horizon = scientific(trust.horizon);
-  if (trust.verdict == core::Verdict::Unreliable && trust.horizon > 0 && trust.horizon < tEnd) {
-    // the usual case on ordinary settings: chaos, not a fault; say what still holds
-    return tr("chaotic: after t ≈ %1 the exact path depends on rounding (error ≈ %2 at the end); "
-              "the statistics shown still hold")
-        .arg(horizon, error);
-  }
-  switch (trust.verdict) {
-    case core::Verdict::Ok:
-      return tr("trust: ok (error ≈ %1; the path holds to 1e-6 until t ≈ %2)").arg(error, horizon);
-    case core::Verdict::Degraded:
-      return tr("trust: degraded (error ≈ %1; the path holds to 1e-6 until t ≈ %2)").arg(error, horizon);
-    case core::Verdict::Unreliable:
-      return tr("trust: unreliable (error ≈ %1): %2").arg(error, QString::fromStdString(trust.reason));
-    case core::Verdict::Unchecked: break;
-  }
-  return tr("trust: not checked");
-}
-
-void MainWindow::setProgressVisible(bool visible) {
-  m_progress->setVisible(visible);
-  m_cancel->setVisible(visible);
-}
-
-QString MainWindow::statusText() const { return m_status->message(); }
-QString MainWindow::problem() const { return m_problem; }
 
 void MainWindow::followDataFromNextUpdate() {
   for (PlotView* plot : m_plots) plot->followDataFromNextUpdate();

@@ -210,6 +210,8 @@ class MainWindow : public QMainWindow {
   SimController* m_controller = nullptr;
   QActionGroup* m_sceneActions = nullptr;
   StatusLine* m_status = nullptr;
+  /// Pixels either side of the (u2, v2) portrait's stop line that a click counts as on it.
+  static constexpr int kStopLineBand = 16;
   QString m_statusExplanation;
   QHash<const QWidget*, double> m_viewCosts;
   std::uint64_t m_runShownId = 0;  ///< the request whose whole run was last put on screen  ///< what the status line shows, in words (its tooltip)

@@ -119,6 +119,13 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   m_refusal->setStyleSheet(QStringLiteral("QLabel { color: #a01010; }"));
   m_refusal->hide();
   layout->addWidget(m_refusal);
+  m_clickedStart = new QLabel(this);
+  m_clickedStart->setObjectName(QStringLiteral("clickedStart"));
+  m_clickedStart->setWordWrap(true);
+  m_clickedStart->setStyleSheet(QStringLiteral("QLabel { background: #e8f1f8; padding: 3px; }"));
+  m_clickedStart->hide();
+  // under the scene's text, where the eye looks for what is running
+  layout->insertWidget(1, m_clickedStart);
 
   connect(m_design, &QCheckBox::toggled, this, [this](bool on) {
     m_params.resonantDesign = on;
@@ -181,6 +188,22 @@ void ParameterPanel::setMessage(const QString& message) {
 }
 
 QString ParameterPanel::message() const { return m_message->isVisible() ? m_message->text() : QString(); }
+
+void ParameterPanel::setClickedStart(const std::optional<core::State>& start) {
+  if (!start) {
+    m_clickedStart->hide();
+    return;
+  }
+  const auto n = [](double value) { return QString::number(value, 'g', 4); };
+  m_clickedStart->setText(tr("<b>Running from a clicked start</b>: u₁ = %1, u₂ = %2, v₁ = %3, v₂ = %4 "
+                             "(not the panel's; edit any value to go back)")
+                              .arg(n(start->u1), n(start->u2), n(start->v1), n(start->v2)));
+  m_clickedStart->show();
+}
+
+QString ParameterPanel::clickedStartText() const {
+  return m_clickedStart->isVisible() ? m_clickedStart->text() : QString();
+}
 
 QString ParameterPanel::refusal() const { return m_refusal->isVisible() ? m_refusal->text() : QString(); }
 

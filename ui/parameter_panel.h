@@ -5,9 +5,12 @@
 #include <QMap>
 #include <QWidget>
 
+#include <optional>
+
 #include <map>
 #include <utility>
 
+#include "core/state.h"
 #include "ui/params.h"
 
 class QCheckBox;
@@ -36,6 +39,10 @@ class ParameterPanel : public QWidget {
   void setSliderRanges(const std::map<ParamKey, std::pair<double, double>>& ranges);
   const Params& params() const { return m_params; }
 
+  /// Says that a run starts from a clicked state (nothing: the scene's own start again).
+  void setClickedStart(const std::optional<core::State>& start);
+  QString clickedStartText() const;
+
   /// A plain-words problem with the current values (empty hides it).
   void setMessage(const QString& message);
   QString message() const;
@@ -63,6 +70,7 @@ class ParameterPanel : public QWidget {
   QLabel* m_feasibility = nullptr;
   QLabel* m_message = nullptr;
   QLabel* m_refusal = nullptr;
+  QLabel* m_clickedStart = nullptr;
   QLabel* m_sceneText = nullptr;
   QWidget* m_startBox = nullptr;
   QWidget* m_runBox = nullptr;

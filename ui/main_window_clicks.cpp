@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Starts chosen with the mouse: a click on the section H or on the stop line of the (u2, v2)
+// portrait starts a run there on the same energy; the landscape's rectangles and its way back.
+#include <QLabel>
+
+#include <cmath>
+
+#include "core/model.h"
+#include "ui/derived.h"
+#include "ui/main_window.h"
+#include "ui/parameter_panel.h"
+#include "ui/plots/landscape_view.h"
+#include "ui/status_line.h"
+
+namespace grazelab::ui {
+
+bool MainWindow::startFromSection(QPointF u1v1) {
+  if (!m_displayed) return false;
+  const core::Model& model = m_displayed->request->job.model;
+  const double level = core::energy(model, m_displayed->request->job.request.initial);
+  core::State start{u1v1.x(), model.gap, u1v1.y(), 0.0};
+  // what is left for v2 after the springs and mass 1 take their share of the energy
+  const double rest = level - core::energy(model, start);
+  if (!(rest >= 0)) {
+    m_status->setMessage(tr("No state of this energy (E = %1) at u₁ = %2, v₁ = %3 on H: the "
+                         "springs and mass 1 alone would hold more. Click inside the points.")
+                          .arg(level, 0, 'g', 6)
+                          .arg(u1v1.x(), 0, 'g', 4)
+                          .arg(u1v1.y(), 0, 'g', 4));
+    return false;
+  }
+  start.v2 = -std::sqrt(2 * rest / model.m2);  // leaving the stop, as after an impact
+  startFromClick(start);
+  return true;
+}
+
+bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
+  if (!m_displayed) return false;
+  const core::Model& model = m_displayed->request->job.model;
+  if (!(std::abs(u2v2.x() - model.gap) <= tolerance)) {
+    m_status->setMessage(tr("Click within %1 pixels of the stop line u₂ = d (dashed) to start mass 2 "
+                            "from the stop at that speed.")
+                             .arg(kStopLineBand));
+    return false;
+  }
+  const core::State& shown = m_displayed->request->job.request.initial;
+  const double level = core::energy(model, shown);
+  core::State start{shown.u1, model.gap, 0.0, -std::abs(u2v2.y())};
+  // what is left for mass 1's speed once its position and mass 2 take their share
+  const double rest = level - core::energy(model, start);
+  if (!(rest >= 0)) {
+    m_status->setMessage(tr("No state of this energy (E = %1) with mass 2 leaving the stop at "
+                         "speed %2 and mass 1 at u₁ = %3: click nearer v₂ = 0.")
+                          .arg(level, 0, 'g', 6)
+                          .arg(std::abs(u2v2.y()), 0, 'g', 4)
+                          .arg(shown.u1, 0, 'g', 4));
+    return false;
+  }
+  start.v1 = std::copysign(std::sqrt(2 * rest / model.m1), shown.v1);
+  startFromClick(start);
+  return true;
+}
+
+void MainWindow::showMapRegion(QRectF region) {
+  Params& current = m_sceneParams[std::size_t(m_sceneIndex)];
+  const DerivedModel derived = deriveModel(current);
+  if (!derived.ok) return;
+  // a region a few ulps wide would have no distinct cells (and no ticks): refused, said
+  const auto tooNarrow = [](double low, double high) {
+    return !(high - low > 1e-9 * std::max({1.0, std::abs(low), std::abs(high)}));
+  };
+  if (tooNarrow(region.left(), region.right()) || tooNarrow(region.top(), region.bottom())) {
+    m_status->setMessage(tr("That region is too small to compute apart from its neighbours: drag a larger one"));
+    return;
+  }
+  // kept in units of d and d w2, so that it frames the same part of the plane for any chain
+  const double d = derived.model.gap;
+  const double v = d * derived.modes.omegaSlow;
+  m_regionHistory.push_back(current.mapRegion);
+  current.mapRegion = {region.left() / d, region.right() / d, region.top() / v, region.bottom() / v};
+  if (m_landscape) m_landscape->setBackEnabled(true);
+  recompute();
+}
+
+bool MainWindow::mapRegionBack() {
+  if (m_regionHistory.empty()) return false;
+  m_sceneParams[std::size_t(m_sceneIndex)].mapRegion = m_regionHistory.back();
+  m_regionHistory.pop_back();
+  if (m_landscape) m_landscape->setBackEnabled(!m_regionHistory.empty());
+  recompute();
+  return true;
+}
+
+void MainWindow::startFromClick(const core::State& start) {
+  m_clickedStart = start;
+  m_panel->setClickedStart(start);
+  followDataFromNextUpdate();
+  recompute();
+}
+
+}  // namespace grazelab::ui
