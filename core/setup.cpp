@@ -53,7 +53,7 @@ StartOrProblem<S> makeStart(const Chain<S>& chain, const StartSpec<S>& spec) {
         start.notes.push_back("the perturbation d" + std::string(names[i]) + " = " +
                               formatScalar(deltas[i]) + " is below one ulp of " + names[i] +
                               " = " + formatScalar(before[i]) +
-                              " and vanishes in this precision (try --precision quad)");
+                              " and vanishes in this precision");
       }
     }
     start.description += ", perturbed by (" + formatScalar(delta.u1) + ", " +

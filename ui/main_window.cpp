@@ -514,6 +514,7 @@ void MainWindow::applyPending() {
   }
   m_displayed = std::move(m_pending);
   m_pending.reset();
+  m_panel->setNotes(m_displayed->request->job.notes);
   if (const SimRequest& shown = *m_displayed->request; shown.derived.ok) {
     m_readout->showModel(shown.derived, core::energy(shown.job.model, shown.job.request.initial));
   }

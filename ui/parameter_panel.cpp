@@ -126,6 +126,12 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   m_clickedStart->hide();
   // under the scene's text, where the eye looks for what is running
   layout->insertWidget(1, m_clickedStart);
+  m_notes = new QLabel(this);
+  m_notes->setObjectName(QStringLiteral("startNotes"));
+  m_notes->setWordWrap(true);
+  m_notes->setStyleSheet(QStringLiteral("QLabel { background: #fff3cd; padding: 3px; }"));
+  m_notes->hide();
+  layout->insertWidget(2, m_notes);
 
   connect(m_design, &QCheckBox::toggled, this, [this](bool on) {
     m_params.resonantDesign = on;
@@ -200,6 +206,13 @@ void ParameterPanel::setClickedStart(const std::optional<core::State>& start) {
                               .arg(n(start->u1), n(start->u2), n(start->v1), n(start->v2)));
   m_clickedStart->show();
 }
+
+void ParameterPanel::setNotes(const QStringList& notes) {
+  m_notes->setText(tr("Note: %1.").arg(notes.join(QStringLiteral("; "))));
+  m_notes->setVisible(!notes.isEmpty());
+}
+
+QString ParameterPanel::notes() const { return m_notes->isVisible() ? m_notes->text() : QString(); }
 
 QString ParameterPanel::clickedStartText() const {
   return m_clickedStart->isVisible() ? m_clickedStart->text() : QString();

@@ -42,6 +42,9 @@ class ParameterPanel : public QWidget {
   /// Says that a run starts from a clicked state (nothing: the scene's own start again).
   void setClickedStart(const std::optional<core::State>& start);
   QString clickedStartText() const;
+  /// Notes on the start the run uses (a push lost in rounding); empty hides them.
+  void setNotes(const QStringList& notes);
+  QString notes() const;
 
   /// A plain-words problem with the current values (empty hides it).
   void setMessage(const QString& message);
@@ -71,6 +74,7 @@ class ParameterPanel : public QWidget {
   QLabel* m_message = nullptr;
   QLabel* m_refusal = nullptr;
   QLabel* m_clickedStart = nullptr;
+  QLabel* m_notes = nullptr;
   QLabel* m_sceneText = nullptr;
   QWidget* m_startBox = nullptr;
   QWidget* m_runBox = nullptr;

@@ -6,7 +6,9 @@
 
 #include <QCoreApplication>
 
+#include "core/chain.h"
 #include "core/orbits.h"
+#include "core/setup.h"
 
 namespace grazelab::ui {
 
@@ -42,12 +44,30 @@ Params enterScene(const Params& own, const Params& chain) {
   return params;
 }
 
+core::StartOrProblem<double> gloStart(const DerivedModel& derived, const Params& params) {
+  // core's one place for starts, as the command line's --glo L --perturb ...: the same state
+  // and the same notes (a push below one ulp of the start)
+  const core::ChainOrProblem<double> formed = core::makeChain(derived.model);
+  if (!formed.chain) return {std::nullopt, formed.problem};
+  core::StartSpec<double> spec;
+  spec.kind = core::StartSpec<double>::Kind::Glo;
+  spec.lambda = params.lambda;
+  if (params.perturbation != 0) spec.perturbation = perturbed(core::State{}, params);
+  return core::makeStart(*formed.chain, spec);
+}
+
 SceneJob gloStartJob(const Scene& scene, const Params& params, const DerivedModel& derived,
                      double sampleWindow) {
   SceneJob job;
   job.model = derived.model;
+  const core::StartOrProblem<double> made = gloStart(derived, params);
+  if (!made.start) {
+    job.message = QString::fromStdString(made.problem);
+    return job;
+  }
+  for (const std::string& note : made.start->notes) job.notes.append(QString::fromStdString(note));
   const core::State start = core::gloData(derived.model, derived.modes, params.lambda);
-  job.request.initial = perturbed(start, params);
+  job.request.initial = made.start->state;
   job.request.maxContacts = std::int64_t(params.horizon);
   job.request.needs = needsFor(scene.plots(), derived.modes, sampleWindow);
   job.reference = start;

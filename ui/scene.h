@@ -11,6 +11,7 @@
 #include <stop_token>
 #include <vector>
 
+#include "core/setup.h"
 #include "core/simulate.h"
 #include "ui/derived.h"
 #include "ui/figures.h"
@@ -72,6 +73,10 @@ Params enterScene(const Params& own, const Params& chain);
 /// the GLO data marked on H.
 SceneJob gloStartJob(const Scene& scene, const Params& params, const DerivedModel& derived,
                      double sampleWindow);
+
+/// GLO(lambda) data pushed by the panel's perturbation, made by core's makeStart (as the
+/// command line makes it), with its notes; or why there is none.
+core::StartOrProblem<double> gloStart(const DerivedModel& derived, const Params& params);
 
 /// Applies the signed perturbation along its direction.
 core::State perturbed(core::State state, const Params& params);

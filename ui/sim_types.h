@@ -4,6 +4,7 @@
 
 #include <QMetaType>
 #include <QString>
+#include <QStringList>
 
 #include <cstdint>
 #include <functional>
@@ -67,6 +68,7 @@ struct MapProgress {
 struct SceneJob {
   bool ok = false;
   QString message;  ///< why not ok
+  QStringList notes;  ///< what the user should know about the start (core's makeStart notes)
   core::Model model;
   core::Request request;
   std::optional<core::State> reference;  ///< a state on H worth marking (e.g. GLO_lambda* data)

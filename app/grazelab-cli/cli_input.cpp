@@ -253,7 +253,8 @@ Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
   if (!stateProblems.empty()) return {std::nullopt, fromStd(core::describe(stateProblems))};
   run.request.initial = start.start->state;
   run.initialDescription = fromStd(start.start->description);
-  run.notes = start.start->notes;
+  // core's notes on the start are about rounding: the command line can raise the precision
+  for (const std::string& note : start.start->notes) run.notes.push_back(note + " (try --precision quad)");
 
   if (parser.isSet("contacts")) {
     const auto contacts = countOption(parser, "contacts", 0, error);

@@ -457,6 +457,22 @@ class ClassroomTest : public QObject {
     }
   }
 
+  // the explorer made its starts itself and said nothing when a push vanished in rounding; it
+  // now takes them from core's makeStart, as the command line does, with the same notes
+  void aPushLostInRoundingIsSaid() {
+    Params params = m_window->params();
+    params.direction = PerturbDirection::U2;
+    params.perturbation = -1e-20;  // u2 = d = 1: far below one ulp
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY2(m_window->parameterPanel()->notes().contains(QStringLiteral("below one ulp")),
+             qPrintable(m_window->parameterPanel()->notes()));
+    params.perturbation = -1e-3;
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY(m_window->parameterPanel()->notes().isEmpty());
+  }
+
   // after a zoom, a parameter change kept it and the plot could go blank with no hint; a stale
   // result after an infeasible edit was not marked on the plots
   void aParameterChangeRefitsAndAStaleResultIsMarked() {
