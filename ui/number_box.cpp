@@ -5,6 +5,7 @@
 #include <QKeyEvent>
 #include <QRegularExpression>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -57,6 +58,12 @@ QString NumberBox::textFromValue(double value) const { return shortestText(value
 
 double NumberBox::valueFromText(const QString& text) const {
   return readNumber(text).value_or(value());
+}
+
+void NumberBox::stepBy(int steps) {
+  const double scale = std::pow(10.0, m_stepDecimals);
+  const double stepped = std::round((value() + steps * singleStep()) * scale) / scale;
+  setValue(std::clamp(stepped, minimum(), maximum()));
 }
 
 QString NumberBox::refusal(const QString& text) const {

@@ -24,6 +24,11 @@ class NumberBox : public QDoubleSpinBox {
   QValidator::State validate(QString& text, int& position) const override;
   void fixup(QString& text) const override;
 
+  /// Arrow keys and the wheel step to multiples rounded to this many decimals (0.1 + 0.2 would
+  /// otherwise show as 0.30000000000000004).
+  void setStepDecimals(int decimals) { m_stepDecimals = decimals; }
+  void stepBy(int steps) override;
+
   /// Why `text` cannot be used, or an empty string when it can.
   QString refusal(const QString& text) const;
 
@@ -37,6 +42,7 @@ class NumberBox : public QDoubleSpinBox {
  private:
   QString m_name;
   bool m_whole = false;
+  int m_stepDecimals = 6;
 };
 
 /// The shortest decimal text that reads back to exactly `value` ("0.5625", "-3e-09", "60").

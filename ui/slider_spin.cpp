@@ -100,6 +100,7 @@ SliderSpin::SliderSpin(const ParamSpec& spec, QWidget* parent) : QWidget(parent)
   m_spin = new NumberBox(spec.label, spec.spinMin, spec.spinMax, spec.decimals == 0, this);
   m_spin->setObjectName(key + QStringLiteral("Spin"));
   m_spin->setSingleStep(spec.logarithmic ? 1.0 : (spec.sliderMax - spec.sliderMin) / 100.0);
+  m_spin->setStepDecimals(spec.decimals);
   m_spin->setMinimumWidth(96);
   m_spin->setAlignment(Qt::AlignRight);
 

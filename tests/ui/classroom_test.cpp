@@ -392,6 +392,11 @@ class ClassroomTest : public QObject {
     type(ParamKey::M1, QStringLiteral("2.5e0"));
     QCOMPARE(m_window->params().m1, 2.5);
     QVERIFY(waitForLatestFinal(*m_window));
+    // an arrow key steps to a short decimal (0.3 + 0.025, not 0.32500000000000001)
+    NumberBox* lambda = type(ParamKey::Lambda, QStringLiteral("0.3"));
+    QTest::keyClick(lambda, Qt::Key_Up);
+    QCOMPARE(lambda->text(), QStringLiteral("0.325"));
+    QCOMPARE(m_window->params().lambda, 0.325);
     // a dragged value is a short decimal
     QSlider* slider = m_window->parameterPanel()->control(ParamKey::Lambda)->slider();
     slider->setValue(301);
