@@ -107,30 +107,23 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   addControl(runLayout, ParamKey::Horizon);
   layout->addWidget(run);
 
-  m_message = new QLabel(this);
-  m_message->setObjectName(QStringLiteral("message"));
-  m_message->setWordWrap(true);
-  m_message->setStyleSheet(QStringLiteral("QLabel { color: #a01010; font-weight: bold; }"));
-  m_message->hide();
+  // the panel's messages: hidden until there is something to say
+  auto note = [this](const char* name, const char* style) {
+    auto* label = new QLabel(this);
+    label->setObjectName(QString::fromLatin1(name));
+    label->setWordWrap(true);
+    label->setStyleSheet(QString::fromLatin1(style));
+    label->hide();
+    return label;
+  };
+  m_message = note("message", "QLabel { color: #a01010; font-weight: bold; }");
+  m_refusal = note("refusal", "QLabel { color: #a01010; }");
+  m_clickedStart = note("clickedStart", "QLabel { background: #e8f1f8; padding: 3px; }");
+  m_notes = note("startNotes", "QLabel { background: #fff3cd; padding: 3px; }");
   layout->addWidget(m_message);
-  m_refusal = new QLabel(this);
-  m_refusal->setObjectName(QStringLiteral("refusal"));
-  m_refusal->setWordWrap(true);
-  m_refusal->setStyleSheet(QStringLiteral("QLabel { color: #a01010; }"));
-  m_refusal->hide();
   layout->addWidget(m_refusal);
-  m_clickedStart = new QLabel(this);
-  m_clickedStart->setObjectName(QStringLiteral("clickedStart"));
-  m_clickedStart->setWordWrap(true);
-  m_clickedStart->setStyleSheet(QStringLiteral("QLabel { background: #e8f1f8; padding: 3px; }"));
-  m_clickedStart->hide();
   // under the scene's text, where the eye looks for what is running
   layout->insertWidget(1, m_clickedStart);
-  m_notes = new QLabel(this);
-  m_notes->setObjectName(QStringLiteral("startNotes"));
-  m_notes->setWordWrap(true);
-  m_notes->setStyleSheet(QStringLiteral("QLabel { background: #fff3cd; padding: 3px; }"));
-  m_notes->hide();
   layout->insertWidget(2, m_notes);
 
   connect(m_design, &QCheckBox::toggled, this, [this](bool on) {
