@@ -103,13 +103,13 @@ MainWindow::MainWindow(Options options, QWidget* parent)
 
   m_status = new StatusLine;
   m_status->setObjectName(QStringLiteral("statusText"));
-  m_statusExplanation = (tr("Work done and its accuracy: contacts computed, compute time, the "
-                              "largest relative energy drift at contacts and the largest |u₂ − d| "
-                              "at the contact times found (both should be near round-off), and "
-                              "trust: the estimated error of the final state and contact times "
-                              "from a shadow run in long double (ok below 1e-9, degraded below "
-                              "1e-6, else unreliable: the run went past its predictability "
-                              "horizon)."));
+  m_statusExplanation = tr("Work done and its accuracy: contacts computed, compute time, the "
+                           "largest relative energy drift at contacts and the largest |u₂ − d| "
+                           "at the contact times found (both should be near round-off), and "
+                           "trust: the estimated error of the final state and contact times "
+                           "from a shadow run in long double (ok below 1e-9, degraded below "
+                           "1e-6, else unreliable: the run went past its predictability "
+                           "horizon).");
   m_status->setExplanation(m_statusExplanation);
   m_progress = new QProgressBar;
   m_progress->setRange(0, 1000);

@@ -11,6 +11,7 @@
 #include <QVBoxLayout>
 
 #include "core/resonance.h"
+#include "ui/eliding_combo_box.h"
 #include "ui/scene.h"
 #include "ui/slider_spin.h"
 
@@ -80,7 +81,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   auto* directionRow = new QHBoxLayout;
   m_directionLabel = new QLabel(tr("direction"), start);
   m_directionLabel->setMinimumWidth(92);
-  m_direction = new QComboBox(start);
+  m_direction = new ElidingComboBox(start);
   m_direction->setObjectName(QStringLiteral("directionCombo"));
   // the long item texts must not widen the panel past its scroll area (the popup shows them)
   m_direction->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);

@@ -448,7 +448,7 @@ class ClassroomTest : public QObject {
     QVERIFY(!m_window->statusText().contains(QStringLiteral("unreliable")));
     PlotView* flights = plotTitled(*m_window, QStringLiteral("Free-flight"));
     QVERIFY(axis(*flights, Qt::Vertical)->titleText().contains(QStringLiteral("T₂")));
-    for (const QPointF& point : seriesNamed(*flights, QStringLiteral("FFT"))->data) QVERIFY(point.y() <= 1.0);
+    for (const QPointF& point : seriesNamed(*flights, QStringLiteral("flights"))->data) QVERIFY(point.y() <= 1.0);
     m_window->selectScene(sceneIndex(*m_window, QStringLiteral("random-starts")));
     for (const QGroupBox* box : m_window->parameterPanel()->findChildren<QGroupBox*>()) {
       if (!box->isVisibleTo(m_window.get())) continue;

@@ -3,6 +3,8 @@
 #include "ui/plots/accuracy_view.h"
 
 #include <QComboBox>
+
+#include "ui/eliding_combo_box.h"
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLegend>
@@ -80,7 +82,7 @@ AccuracyView::AccuracyView(QWidget* parent) : QWidget(parent) {
   layout->addWidget(m_chart, 1);
   auto* row = new QHBoxLayout;
   auto* label = new QLabel(tr("Overlay on u₂(t):"), this);
-  m_overlay = new QComboBox(this);
+  m_overlay = new ElidingComboBox(this);
   m_overlay->setToolTip(tr("Draw this method's u₂(t) and its contacts over the exact ones: "
                            "watch a time stepper miss a graze or invent an impact."));
   m_overlay->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);

@@ -189,7 +189,7 @@ ChainView::ChainView(QWidget* parent) : QWidget(parent) {
   timeRow->addWidget(m_slowNearContacts);
   m_slider = new QSlider(Qt::Horizontal, this);
   m_slider->setRange(0, kSliderSteps);
-  m_slider->setMinimumWidth(40);
+  m_slider->setMinimumWidth(90);  // a track to drag along, beside the (scaled) check box
   m_slider->setToolTip(tr("Drag to any time of the motion"));
   timeRow->addWidget(m_slider, 1);
   layout->addLayout(timeRow);

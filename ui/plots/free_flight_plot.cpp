@@ -14,12 +14,12 @@
 namespace grazelab::ui {
 
 FreeFlightPlot::FreeFlightPlot(QWidget* parent)
-    : PlotView(tr("Free-flight time at each contact"), tr("contact index"), tr("FFT / T₂"), parent) {
-  auto* flights = makeScatter(tr("FFT / T₂"), colors::kTrace, 5);
+    : PlotView(tr("Free-flight time at each contact"), tr("contact index"), tr("flight time / T₂"), parent) {
+  auto* flights = makeScatter(tr("flights"), colors::kTrace, 5);
   flights->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
   useLightMarker(flights);
   m_flights = addEntry(flights, Decimation::Scatter);
-  m_period = addEntry(makeLine(tr("FFT = T₂"), colors::kImpact, 1.5, Qt::DashLine), Decimation::None);
+  m_period = addEntry(makeLine(tr("bound: T₂"), colors::kImpact, 1.5, Qt::DashLine), Decimation::None);
   setToolTip(tr("Free-flight time (FFT): the time from leaving the stop to the next contact, "
                 "against the index of that contact, in units of T₂, the slow period. Theorem 2.3: FFT ≤ T₂ "
                 "(dashed: FFT / T₂ = 1), with equality only on a grazing orbit."));

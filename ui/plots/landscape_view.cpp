@@ -3,6 +3,8 @@
 #include "ui/plots/landscape_view.h"
 
 #include <QComboBox>
+
+#include "ui/eliding_combo_box.h"
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMouseEvent>
@@ -54,7 +56,7 @@ LandscapeView::LandscapeView(QWidget* parent) : QWidget(parent) {
   auto* bar = new QHBoxLayout;
   bar->setContentsMargins(6, 4, 6, 0);
   auto* label = new QLabel(tr("Show:"));
-  m_quantityBox = new QComboBox;
+  m_quantityBox = new ElidingComboBox;
   for (const core::QuantityInfo& info : core::quantities()) {
     if (info.quantity == core::Quantity::Horizon) continue;  // the map is not estimated
     m_quantityBox->addItem(QString::fromUtf8(info.meaning), int(info.quantity));

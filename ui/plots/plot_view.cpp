@@ -90,8 +90,11 @@ void setRangeWithTicks(QValueAxis* axis, double low, double high, double pixels)
     }
     const double each = horizontal ? widest + metrics.height() : 1.6 * metrics.height();
     const double ticks = std::floor((high - low) / step) + 1;
-    if (ticks * each <= pixels || ticks <= 2) break;
-    step = nextNiceStep(step);
+    if (ticks * each <= pixels) break;
+    // never fewer than two labelled ticks inside the axis: one number is no scale
+    const double wider = nextNiceStep(step);
+    if (std::floor(high / wider) - std::ceil(low / wider) + 1 < 2) break;
+    step = wider;
   }
   const QString format = tickFormat(low, high, step);
   if (axis->labelFormat() != format) axis->setLabelFormat(format);

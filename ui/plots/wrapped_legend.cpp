@@ -51,7 +51,9 @@ void WrappedLegend::update() {
     if (!html.isEmpty()) html += QStringLiteral(" &nbsp; ");
     // an entry wider than the whole legend breaks between its words, never inside one (kept
     // whole, the text engine broke it anywhere: "grazi / ng")
-    const bool whole = legendMetrics.horizontalAdvance(symbol + QLatin1Char(' ') + series->name()) <= width;
+    // (a chart not laid out yet is a few pixels wide: every entry would count as too wide)
+    const bool whole = m_chart->size().width() < 120 ||
+                       legendMetrics.horizontalAdvance(symbol + QLatin1Char(' ') + series->name()) <= width;
     html += QString::fromLatin1(whole ? "<nobr><span style=\"color:%1\">%2</span>&nbsp;%3</nobr>"
                                       : "<span style=\"color:%1\">%2</span>&nbsp;%3")
                 .arg(color.name(), symbol,

@@ -131,7 +131,7 @@ Scene::Spec onePeriodicScene() {
     CurveFigure speed;
     speed.title = tr("Impact speed |V| of the 1IPP orbit against T/T₂");
     speed.xTitle = tr("T / T₂");
-    speed.yTitle = tr("impact speed |V|");
+    speed.yTitle = tr("|V|");
     speed.toolTip = tr("The speed at which mass 2 hits the stop on the one-impact-per-period "
                        "orbit of period T. It goes to 0 as T → T₂: the impact becomes grazing.");
     speed.curveName = tr("1IPP family");
@@ -146,8 +146,8 @@ Scene::Spec onePeriodicScene() {
     const double starEnergy = core::energy(derived.model, star);
     CurveFigure energy;
     energy.title = tr("Frequency against energy of the 1IPP family");
-    energy.xTitle = tr("log₁₀ E (orbit energy)");
-    energy.yTitle = tr("frequency 2π/T");
+    energy.xTitle = tr("log₁₀ E");
+    energy.yTitle = tr("2π/T");
     energy.toolTip = tr("The frequency–energy curve of the one-impact-per-period family, the "
                         "picture of nonsmooth modal analysis: as T → T₂ the frequency falls to "
                         "ω₂ and the energy to that of the grazing orbit GLO(λ*) (ringed), where "

@@ -36,8 +36,15 @@ Scene::Spec stickingScene() {
                   std::stop_token) {
     SceneJob job;
     job.model = derived.model;
-    const core::State start = core::gloData(derived.model, derived.modes, params.lambda);
-    job.request.initial = start;  // unperturbed: the press is the point
+    Params pressed = params;
+    pressed.perturbation = 0;  // unperturbed: the press is the point
+    const core::StartOrProblem<double> made = gloStart(derived, pressed);
+    if (!made.start) {
+      job.message = QString::fromStdString(made.problem);
+      return job;
+    }
+    const core::State start = made.start->state;
+    job.request.initial = start;
     job.request.maxContacts = std::int64_t(params.horizon);
     job.request.needs = needsFor(self.plots(), derived.modes, 400 * derived.modes.T2);
     job.reference = start;

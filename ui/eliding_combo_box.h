@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QComboBox>
+
+namespace grazelab::ui {
+
+/// A combo box that shows its current text elided with "…" where it is too narrow, and the
+/// whole text in its tooltip. Qt's clipped the text at the arrow: "Moreau–Jean, θ = 1/2" read
+/// "Moreau–Jean, θ = 1", the name of another method.
+class ElidingComboBox : public QComboBox {
+  Q_OBJECT
+
+ public:
+  explicit ElidingComboBox(QWidget* parent = nullptr);
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+};
+
+}  // namespace grazelab::ui
