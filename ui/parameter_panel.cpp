@@ -47,7 +47,8 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     addControl(chainLayout, key);
   }
   auto* designRow = new QHBoxLayout;
-  m_design = new QCheckBox(tr("1:2 design (k₂ derived)"), chain);
+  // short: the row also holds the branch, and a projector panel is narrow (the tooltip says more)
+  m_design = new QCheckBox(tr("1:2 design"), chain);
   m_design->setObjectName(QStringLiteral("designCheck"));
   m_design->setToolTip(tr("Choose k₂ so that the fast mode has exactly twice the frequency of "
                           "the slow one (ω₁ = 2 ω₂). Off: type k₂ yourself (a detuned chain)."));

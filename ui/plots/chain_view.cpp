@@ -184,15 +184,14 @@ ChainView::ChainView(QWidget* parent) : QWidget(parent) {
                                     "that the impact can be seen.").arg(kSlowMotion));
   controls->addStretch(1);
   layout->addLayout(controls);
-  // the time slider on a second row: the view stays narrow enough for a third of a small screen
-  auto* timeRow = new QHBoxLayout;
-  timeRow->addWidget(m_slowNearContacts);
+  // the time slider on a row of its own, the whole width: the view stays narrow enough for a
+  // third of a small screen (beside the check box it shrank to a bare handle in presentation)
+  layout->addWidget(m_slowNearContacts);
   m_slider = new QSlider(Qt::Horizontal, this);
   m_slider->setRange(0, kSliderSteps);
-  m_slider->setMinimumWidth(90);  // a track to drag along, beside the (scaled) check box
+  m_slider->setMinimumWidth(40);
   m_slider->setToolTip(tr("Drag to any time of the motion"));
-  timeRow->addWidget(m_slider, 1);
-  layout->addLayout(timeRow);
+  layout->addWidget(m_slider);
 
   setFocusPolicy(Qt::StrongFocus);
   setToolTip(tr("The two masses on their springs and the rigid stop, moving as computed. The "
