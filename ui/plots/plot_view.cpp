@@ -403,7 +403,14 @@ PlotView::Extent PlotView::dataBounds() {
 }
 
 QRectF PlotView::wantedRange() {
-  if (m_fixedRange) return *m_fixedRange;
+  if (m_fixedRange) {
+    // a fixed range, widened by 5 % of its span each side (not by pixels: the axes must not
+    // move when a legend's height does): a marker on its edge (the 1IPP family's end at
+    // T = T2) was cut in half by the frame
+    QRectF range = *m_fixedRange;
+    range.adjust(-0.05 * range.width(), -0.05 * range.height(), 0.05 * range.width(), 0.05 * range.height());
+    return range;
+  }
   const auto [xLow, xHigh, yLow, yHigh] = dataBounds();
   // each axis is padded on its own scale (an FFT axis near 8.9 must not inherit the 20 000 of
   // its contact-index axis), but never below 1e-3 of the plot's overall scale, so that a

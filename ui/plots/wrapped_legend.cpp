@@ -61,7 +61,11 @@ void WrappedLegend::update() {
                          .toHtmlEscaped()
                          .replace(QStringLiteral("–"), QStringLiteral("\u2060–\u2060"))
                          .replace(QStringLiteral("-"), QStringLiteral("\u2011"))  // no break at a hyphen
-                         .replace(QStringLiteral("/"), QStringLiteral("/\u2060")));  // nor after a slash
+                         .replace(QStringLiteral("/"), QStringLiteral("/\u2060"))  // nor after a slash
+                         // and, in an entry kept whole, at no space either (<nobr> alone let
+                         // "● |V| = 0.31" break after the "|", a break opportunity of its own)
+                         .replace(QLatin1Char(' '), whole ? QStringLiteral("&nbsp;") : QStringLiteral(" "))
+                         .replace(QLatin1Char('|'), whole ? QStringLiteral("|\u2060") : QStringLiteral("|")));
   }
   const bool changed = html != m_html || m_text->font() != font ||
                        std::abs(m_text->textWidth() - width) > 0.5;
