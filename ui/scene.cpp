@@ -98,16 +98,6 @@ std::vector<std::unique_ptr<Scene>> makeScenes() {
   return scenes;
 }
 
-std::vector<QPointF> flightsOverT2(const core::Result& result, double T2) {
-  std::vector<QPointF> points;
-  points.reserve(result.freeFlights.size());
-  for (const core::FreeFlight& flight : result.freeFlights) {
-    // 1 - shortfall / T2: exact near T2, where FFT / T2 itself would round to 1
-    points.emplace_back(double(flight.contactIndex), 1.0 - flight.shortfall / T2);
-  }
-  return points;
-}
-
 int findScene(const std::vector<std::unique_ptr<Scene>>& scenes, const QString& name) {
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     if (scenes[i]->name().compare(name, Qt::CaseInsensitive) == 0) return int(i);

@@ -8,6 +8,7 @@
 #include "core/orbits.h"
 #include "core/resonance.h"
 #include "core/setup.h"
+#include "core/experiments.h"
 #include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {
@@ -21,14 +22,13 @@ QString tr(const char* text) {
 constexpr double kSearchPeriods = 200;
 
 std::vector<QPointF> flights(const core::Model& model, const core::State& start,
-                             std::int64_t contacts) {
-  core::Request request;
-  request.initial = start;
-  request.maxContacts = contacts;
-  request.flightSearchPeriods = kSearchPeriods;
-  request.needs.events = false;
-  request.needs.freeFlights = true;
-  return flightsOverT2(core::simulate(model, request), core::computeModes(model).T2);
+                             std::int64_t contacts, std::stop_token stop) {
+  std::vector<QPointF> points;
+  for (const auto& [index, fraction] :
+       core::experiments::flightTimesOverT2(model, start, contacts, kSearchPeriods, stop)) {
+    points.emplace_back(index, fraction);
+  }
+  return points;
 }
 
 CurveFigure flightFigure(const QString& title, std::vector<QPointF> points, bool fixed,
@@ -36,13 +36,13 @@ CurveFigure flightFigure(const QString& title, std::vector<QPointF> points, bool
   CurveFigure figure;
   figure.title = title;
   figure.xTitle = tr("contact index");
-  figure.yTitle = tr("FFT / T₂");
+  figure.yTitle = tr("flight time / T₂");
   figure.toolTip = tr("Free-flight time at each contact over the chain's own slow period T₂. "
                       "In 1:2 resonance it never passes 1; detuned, it wanders and can be far "
                       "longer (flights searched up to %1 T₂).").arg(kSearchPeriods);
-  figure.curveName = tr("FFT / T₂");
+  figure.curveName = tr("flights");
   figure.curve = std::move(points);
-  figure.referenceName = tr("FFT = T₂");
+  figure.referenceName = tr("T₂");
   figure.reference = {QPointF(0, 1), QPointF(double(std::max<std::int64_t>(contacts, 1)), 1)};
   if (fixed) {
     double lowest = 1;
@@ -77,7 +77,7 @@ Scene::Spec detunedScene() {
                       ParamKey::M2,             ParamKey::Gap,          ParamKey::K1,
                       ParamKey::Perturbation,   ParamKey::Horizon};
   scene.plots = {PlotKind::DetunedFlights, PlotKind::ResonantFlights, PlotKind::TraceU2};
-  scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token) {
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token stop) {
     SceneJob job;
     const auto k2 = core::k2ForFrequencyRatio(params.m1, params.m2, params.k1,
                                               params.frequencyRatio, params.branch);
@@ -98,13 +98,13 @@ Scene::Spec detunedScene() {
     const core::Modes resonantModes = core::computeModes(*resonant);
     const core::State start =
         perturbed(core::gloData(*resonant, resonantModes, params.lambda), params);
-    // short enough for the GUI thread: at most 2000 contacts a chain
+    // at most 2000 contacts a chain: the pair is drawn whole, on fixed axes
     const auto contacts = std::int64_t(std::min(params.horizon, 2000.0));
     job.figures[PlotKind::DetunedFlights] = flightFigure(
-        tr("Detuned, ω₁/ω₂ = %1: FFT / T₂").arg(params.frequencyRatio, 0, 'g', 5),
-        flights(detuned, start, contacts), false, contacts);
+        tr("Detuned, ω₁/ω₂ = %1: flight time / T₂").arg(params.frequencyRatio, 0, 'g', 5),
+        flights(detuned, start, contacts, stop), false, contacts);
     job.figures[PlotKind::ResonantFlights] =
-        flightFigure(tr("In 1:2 resonance: FFT / T₂"), flights(*resonant, start, contacts),
+        flightFigure(tr("In 1:2 resonance: flight time / T₂"), flights(*resonant, start, contacts, stop),
                      true, contacts);
     job.model = detuned;
     job.request.initial = start;

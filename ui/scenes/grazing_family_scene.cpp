@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "core/experiments.h"
 #include "core/orbits.h"
 #include "ui/scenes/scenes.h"
 
@@ -12,20 +13,6 @@ namespace {
 
 QString tr(const char* text) {
   return QCoreApplication::translate("grazelab::ui::GrazingFamilyScene", text);
-}
-
-// Lemma 2.1: M(lambda) = max over s of (1 - lambda) cos 2s + lambda cos s, the highest u2 / d
-// of the linear orbit GLO(lambda). With c = cos s the expression is the quadratic
-// 2 (1 - lambda) c^2 + lambda c - (1 - lambda) on [-1, 1]: its ends give 1 and 1 - 2 lambda, its
-// vertex (when it is a maximum inside) -(1 - lambda) - lambda^2 / (8 (1 - lambda)).
-double highestReach(double lambda) {
-  double best = std::max(1.0, 1 - 2 * lambda);
-  const double a = 1 - lambda;
-  if (a < 0) {
-    const double vertex = -lambda / (4 * a);
-    if (vertex > -1 && vertex < 1) best = std::max(best, -a - lambda * lambda / (8 * a));
-  }
-  return best;
 }
 
 CurveFigure lemmaFigure(double lambda) {
@@ -41,10 +28,10 @@ CurveFigure lemmaFigure(double lambda) {
   constexpr int kPoints = 500;
   for (int i = 0; i <= kPoints; ++i) {
     const double x = -0.5 + 2.5 * i / kPoints;
-    figure.curve.emplace_back(x, highestReach(x));
+    figure.curve.emplace_back(x, core::experiments::gloHighestReach(x));
   }
   figure.markerName = tr("λ = %1").arg(lambda, 0, 'g', 4);
-  figure.markers = {QPointF(lambda, highestReach(lambda))};
+  figure.markers = {QPointF(lambda, core::experiments::gloHighestReach(lambda))};
   figure.referenceName = tr("= 1 on [0, 4/3]: grazing");
   figure.reference = {QPointF(0, 1), QPointF(4.0 / 3.0, 1)};
   figure.xMin = -0.55;

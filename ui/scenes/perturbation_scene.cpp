@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/experiments.h"
 #include "core/orbits.h"
 #include "ui/scenes/scenes.h"
 
@@ -23,17 +24,8 @@ double spreadAfterPush(const DerivedModel& derived, const Params& params, double
                        std::stop_token stop) {
   Params pushed = params;
   pushed.perturbation = std::copysign(epsilon, params.perturbation == 0 ? -1.0 : params.perturbation);
-  core::Request request;
-  request.initial = perturbed(core::gloData(derived.model, derived.modes, params.lambda), pushed);
-  request.maxContacts = kSpreadContacts;
-  request.needs.events = false;
-  request.needs.freeFlights = true;
-  const core::Result result = core::simulate(derived.model, request, stop);
-  double spread = 0;
-  for (const core::FreeFlight& flight : result.freeFlights) {
-    spread = std::max(spread, flight.shortfall / derived.modes.T2);
-  }
-  return spread;
+  const core::State start = perturbed(core::gloData(derived.model, derived.modes, params.lambda), pushed);
+  return core::experiments::largestShortfall(derived.model, start, kSpreadContacts, stop).value_or(0.0);
 }
 
 CurveFigure spreadFigure(const DerivedModel& derived, const Params& params, std::stop_token stop) {

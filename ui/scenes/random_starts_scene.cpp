@@ -3,8 +3,8 @@
 #include <QCoreApplication>
 
 #include <algorithm>
-#include <random>
 
+#include "core/experiments.h"
 #include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {
@@ -18,56 +18,10 @@ constexpr int kStarts = 300;
 constexpr double kBinWidth = 0.025;  // of FFT / T2
 constexpr int kBins = 44;            // [0, 1.1)
 
-struct Survey {
-  std::vector<int> counts = std::vector<int>(kBins, 0);
-  int flights = 0;
-  int neverTouch = 0;
-  int reachedLimit = 0;
-  int other = 0;
-  double longest = 0;  // largest FFT / T2 seen
-  std::optional<core::State> shown;  // the first start that touches: the run on the plots
-};
-
-// Random starts below the stop, within 1.5 gaps and 1.5 w2 gaps per coordinate, the same ones
-// for a given chain (a fixed seed), each run to `contacts` contacts.
-Survey survey(const DerivedModel& derived, std::int64_t contacts, std::stop_token stop) {
-  Survey result;
-  std::mt19937_64 generator(20261123);
-  const double d = derived.model.gap;
-  const double speed = 1.5 * derived.modes.omegaSlow * d;
-  std::uniform_real_distribution<double> position(-1.5 * d, 1.5 * d);
-  std::uniform_real_distribution<double> below(-1.5 * d, d);
-  std::uniform_real_distribution<double> velocity(-speed, speed);
-  for (int start = 0; start < kStarts && !stop.stop_requested(); ++start) {
-    core::Request request;
-    request.initial = {position(generator), below(generator), velocity(generator),
-                       velocity(generator)};
-    request.maxContacts = contacts;
-    request.needs.events = false;
-    request.needs.freeFlights = true;
-    const core::Result run = core::simulate(derived.model, request, stop);
-    if (run.cost.contacts == 0) {
-      ++result.neverTouch;
-    } else if (run.cost.contacts >= contacts) {
-      ++result.reachedLimit;
-      if (!result.shown) result.shown = request.initial;
-    } else {
-      ++result.other;
-    }
-    for (const QPointF& flight : flightsOverT2(run, derived.modes.T2)) {
-      ++result.flights;
-      result.longest = std::max(result.longest, flight.y());
-      const int bin = std::clamp(int(flight.y() / kBinWidth), 0, kBins - 1);
-      ++result.counts[std::size_t(bin)];
-    }
-  }
-  return result;
-}
-
-CurveFigure histogram(const Survey& survey, std::int64_t contacts) {
+CurveFigure histogram(const core::experiments::FlightSurvey& survey, std::int64_t contacts) {
   CurveFigure figure;
   figure.title = tr("Theorem 2.3: free-flight times of %1 random starts").arg(kStarts);
-  figure.xTitle = tr("FFT / T₂");
+  figure.xTitle = tr("flight time / T₂");
   figure.yTitle = tr("number of flights");
   figure.toolTip = tr("Every free flight that starts on the stop, from %1 random starts below "
                       "it, each run to %2 contacts: %3 starts never touch the stop, %4 reach "
@@ -94,7 +48,7 @@ CurveFigure histogram(const Survey& survey, std::int64_t contacts) {
     figure.curve.emplace_back(left + kBinWidth, count);
     figure.curve.emplace_back(left + kBinWidth, 0);
   }
-  figure.referenceName = tr("bound FFT = T₂");
+  figure.referenceName = tr("bound: T₂");
   figure.reference = {QPointF(1, 0), QPointF(1, 1.05 * highest)};
   figure.xMin = 0;
   figure.xMax = kBins * kBinWidth;
@@ -129,13 +83,15 @@ Scene::Spec randomStartsScene() {
     job.model = derived.model;
     // 300 starts x at most 200 contacts: the survey stays short
     const auto contacts = std::int64_t(std::min(params.horizon, 200.0));
-    const Survey found = survey(derived, contacts, stop);
+    // the same starts for a given chain (a fixed seed)
+    const core::experiments::FlightSurvey found =
+        core::experiments::surveyRandomStarts(derived.model, kStarts, contacts, 20261123, kBins, kBinWidth, stop);
     job.figures[PlotKind::FlightHistogram] = histogram(found, contacts);
-    if (!found.shown) {
+    if (!found.firstTouching) {
       job.message = tr("none of the %1 random starts touches the stop").arg(kStarts);
       return job;
     }
-    job.request.initial = *found.shown;
+    job.request.initial = *found.firstTouching;
     job.request.maxContacts = std::int64_t(params.horizon);
     job.request.needs = needsFor(self.plots(), derived.modes, 40 * derived.modes.T2);
     job.ok = true;

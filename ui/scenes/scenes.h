@@ -21,7 +21,4 @@ Scene::Spec accuracyScene();        // methods against the exact solver
 /// params.mapRegion (u1 in units of d, v1 in units of d w2), 256 x 256 runs of 10 contacts.
 core::MapSpec landscapeSpec(const Params& params, const DerivedModel& derived);
 
-/// The free-flight times of a run, FFT / T2 against contact index (the theorems' quantity).
-std::vector<QPointF> flightsOverT2(const core::Result& result, double T2);
-
 }  // namespace grazelab::ui
