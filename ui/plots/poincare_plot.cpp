@@ -79,10 +79,13 @@ void PoincarePlot::show(const SimUpdate& update) {
     const core::State& data = *update.request->job.reference;
     reference.emplace_back(data.u1, data.v1);
     // points that coincide (a 1IPP orbit hits the same spot every period) still get a window
-    // of a few percent of the gap around them, not one zoomed into round-off
+    // of a few percent of the gap around them, not one zoomed into round-off; and the square
+    // marking the data is whole where it is the section's outermost point
     const double margin = 0.05 * update.request->params.gap;
     includeInBounds(data.u1, data.v1 - margin);
     includeInBounds(data.u1, data.v1 + margin);
+    includeInBounds(data.u1 - margin, data.v1);
+    includeInBounds(data.u1 + margin, data.v1);
   }
   QXYSeries* referenceSeries = entryList[std::size_t(m_reference)].series;
   if (referenceSeries->name() != update.request->job.referenceLabel) {

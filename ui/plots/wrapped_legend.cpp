@@ -83,10 +83,11 @@ void WrappedLegend::update() {
   const double height = html.isEmpty() || !laidOut ? 0.0 : std::min(full, 0.4 * chartHeight);
   m_fits = html.isEmpty() || (laidOut && height >= full);
   m_text->setVisible(height > 0);
-  m_text->setPos(6, chartHeight - height - 2);
+  // clear of the card's rounded bottom edge (a last line sat on it)
+  m_text->setPos(6, chartHeight - height - 6);
   // room under the axes for the text: the chart lays out again only when its height changes
   QMargins margins = m_chart->margins();
-  margins.setBottom(4 + int(std::ceil(height)));
+  margins.setBottom(8 + int(std::ceil(height)));
   if (m_chart->margins() != margins) m_chart->setMargins(margins);
 }
 
