@@ -52,7 +52,7 @@ void PhasePlot::setTimeCursor(double t, const core::State& state) {
     // a ring: the start marker (and the orbit) show through it at t = 0
     auto* dot = makeScatter(QString(), colors::kAccent, 14);
     dot->setColor(Qt::transparent);
-    dot->setPen(QPen(colors::kAccent, 2.5));
+    useLightMarker(dot, QPen(colors::kAccent, 2.5));  // the marker's picture, drawn again hollow
     chart()->addSeries(dot);
     dot->attachAxis(m_axisX);
     dot->attachAxis(m_axisY);
