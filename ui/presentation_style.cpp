@@ -25,7 +25,6 @@ int PresentationStyle::pixelMetric(PixelMetric metric, const QStyleOption* optio
     case PM_ButtonIconSize:
     case PM_SmallIconSize:
     case PM_ToolBarIconSize:
-    case PM_SpinBoxSliderHeight:
       return int(std::lround(size * m_scale));
     default:
       return size;
