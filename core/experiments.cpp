@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 
+#include "core/orbits.h"
 #include "core/simulate.h"
 
 namespace grazelab::core::experiments {
@@ -96,6 +97,22 @@ std::vector<std::array<double, 2>> flightTimesOverT2(const Model& model, const S
     flights.push_back({double(flight.contactIndex), 1.0 - flight.shortfall / T2});
   }
   return flights;
+}
+
+std::vector<OnePeriodicSample> onePeriodicFamilySamples(const Model& model, const Modes& modes,
+                                                        double lowEnd, int points,
+                                                        std::stop_token stop) {
+  std::vector<OnePeriodicSample> samples;
+  const double T2 = modes.T2;
+  for (int i = points; i >= 1 && !stop.stop_requested(); --i) {
+    // squared spacing: the points crowd towards T2; 1e-6 keeps the first clear of the low end
+    const double s = double(i) / points;
+    const double T = T2 - (T2 - lowEnd) * (1 - 1e-6) * s * s;
+    const OnePeriodicOrbit orbit = onePeriodicOrbit(model, modes, T);
+    if (!orbit.admissible) continue;
+    samples.push_back({T, orbit.postImpact.u1, orbit.V, energy(model, orbit.postImpact)});
+  }
+  return samples;
 }
 
 }  // namespace grazelab::core::experiments

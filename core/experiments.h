@@ -51,4 +51,20 @@ std::vector<std::array<double, 2>> flightTimesOverT2(const Model& model, const S
                                                      std::int64_t contacts, double searchPeriods,
                                                      std::stop_token stop = {});
 
+/// One orbit of the 1IPP family (Theorem 2.1): its period, the impact data u1 and speed V, and
+/// its energy.
+struct OnePeriodicSample {
+  double period = 0;  ///< T [time]
+  double u1 = 0;      ///< u1 just after the impact
+  double V = 0;       ///< the impact speed of mass 2
+  double energy = 0;
+};
+
+/// The admissible orbits of the 1IPP family at `points` periods from just above `lowEnd` up to
+/// T2 (crowding towards T2, where the theorem looks), in increasing period; what was computed
+/// when stopped.
+std::vector<OnePeriodicSample> onePeriodicFamilySamples(const Model& model, const Modes& modes,
+                                                        double lowEnd, int points,
+                                                        std::stop_token stop = {});
+
 }  // namespace grazelab::core::experiments

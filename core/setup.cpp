@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "core/setup.h"
 
+#include <cmath>
+
 namespace grazelab::core {
 
 template <typename S>
@@ -73,5 +75,24 @@ GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)
 #undef GRAZELAB_INSTANTIATE
+
+std::optional<State> sectionStateAtEnergy(const Model& model, double level, double u1, double v1) {
+  State state{u1, model.gap, v1, 0.0};
+  // what is left for v2 after the springs and mass 1 take their share of the energy
+  const double rest = level - energy(model, state);
+  if (!(rest >= 0)) return std::nullopt;
+  state.v2 = -std::sqrt(2 * rest / model.m2);
+  return state;
+}
+
+std::optional<State> stopLineStateAtEnergy(const Model& model, double level, double u1,
+                                           double speed, double v1Sign) {
+  State state{u1, model.gap, 0.0, -std::abs(speed)};
+  // what is left for mass 1's speed once its position and mass 2 take their share
+  const double rest = level - energy(model, state);
+  if (!(rest >= 0)) return std::nullopt;
+  state.v1 = std::copysign(std::sqrt(2 * rest / model.m1), v1Sign);
+  return state;
+}
 
 }  // namespace grazelab::core

@@ -54,4 +54,16 @@ struct StartOrProblem {
 template <typename S>
 StartOrProblem<S> makeStart(const Chain<S>& chain, const StartSpec<S>& spec);
 
+/// A state on the section H (u2 = gap) of energy `level` with mass 1 at (u1, v1), mass 2
+/// leaving the stop (v2 <= 0, as after an impact) at the speed the energy leaves it (a start
+/// chosen on the section at the energy of the run shown); nothing when mass 1 and the springs
+/// alone hold more than `level`.
+std::optional<State> sectionStateAtEnergy(const Model& model, double level, double u1, double v1);
+
+/// A state on H of energy `level` with mass 2 leaving the stop at `speed` and mass 1 at `u1`,
+/// moving the way `v1Sign` says (a start chosen on the stop line of the (u2, v2) portrait);
+/// nothing when mass 2's speed and the springs alone hold more than `level`.
+std::optional<State> stopLineStateAtEnergy(const Model& model, double level, double u1,
+                                           double speed, double v1Sign);
+
 }  // namespace grazelab::core

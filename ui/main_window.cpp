@@ -460,7 +460,7 @@ void MainWindow::recompute() {
   request.prepare = [scene = *m_scenes[std::size_t(m_sceneIndex)], params = current, derived,
                      clicked = m_clickedStart](std::stop_token stop) {
     SceneJob job = scene.build(params, derived, stop);
-    if (clicked && job.ok) job.request.initial = *clicked;
+    if (clicked && job.ok) job.spec.run.initial = *clicked;
     return job;
   };
   m_controller->submit(std::move(request));
@@ -516,7 +516,7 @@ void MainWindow::applyPending() {
   m_pending.reset();
   m_panel->setNotes(m_displayed->request->job.notes);
   if (const SimRequest& shown = *m_displayed->request; shown.derived.ok) {
-    m_readout->showModel(shown.derived, core::energy(shown.job.model, shown.job.request.initial));
+    m_readout->showModel(shown.derived, core::energy(shown.job.spec.model, shown.job.spec.run.initial));
   }
   QElapsedTimer cost;
   cost.start();

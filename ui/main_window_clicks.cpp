@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/model.h"
+#include "core/setup.h"
 #include "ui/derived.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
@@ -17,12 +18,10 @@ namespace grazelab::ui {
 
 bool MainWindow::startFromSection(QPointF u1v1) {
   if (!m_displayed) return false;
-  const core::Model& model = m_displayed->request->job.model;
-  const double level = core::energy(model, m_displayed->request->job.request.initial);
-  core::State start{u1v1.x(), model.gap, u1v1.y(), 0.0};
-  // what is left for v2 after the springs and mass 1 take their share of the energy
-  const double rest = level - core::energy(model, start);
-  if (!(rest >= 0)) {
+  const core::Model& model = m_displayed->request->job.spec.model;
+  const double level = core::energy(model, m_displayed->request->job.spec.run.initial);
+  const std::optional<core::State> start = core::sectionStateAtEnergy(model, level, u1v1.x(), u1v1.y());
+  if (!start) {
     m_status->setMessage(tr("No state of this energy (E = %1) at u₁ = %2, v₁ = %3 on H: the "
                          "springs and mass 1 alone would hold more. Click inside the points.")
                           .arg(level, 0, 'g', 6)
@@ -30,26 +29,24 @@ bool MainWindow::startFromSection(QPointF u1v1) {
                           .arg(u1v1.y(), 0, 'g', 4));
     return false;
   }
-  start.v2 = -std::sqrt(2 * rest / model.m2);  // leaving the stop, as after an impact
-  startFromClick(start);
+  startFromClick(*start);
   return true;
 }
 
 bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
   if (!m_displayed) return false;
-  const core::Model& model = m_displayed->request->job.model;
+  const core::Model& model = m_displayed->request->job.spec.model;
   if (!(std::abs(u2v2.x() - model.gap) <= tolerance)) {
     m_status->setMessage(tr("Click within %1 pixels of the stop line u₂ = d (dashed) to start mass 2 "
                             "from the stop at that speed.")
                              .arg(kStopLineBand));
     return false;
   }
-  const core::State& shown = m_displayed->request->job.request.initial;
+  const core::State& shown = m_displayed->request->job.spec.run.initial;
   const double level = core::energy(model, shown);
-  core::State start{shown.u1, model.gap, 0.0, -std::abs(u2v2.y())};
-  // what is left for mass 1's speed once its position and mass 2 take their share
-  const double rest = level - core::energy(model, start);
-  if (!(rest >= 0)) {
+  const std::optional<core::State> start =
+      core::stopLineStateAtEnergy(model, level, shown.u1, u2v2.y(), shown.v1);
+  if (!start) {
     m_status->setMessage(tr("No state of this energy (E = %1) with mass 2 leaving the stop at "
                          "speed %2 and mass 1 at u₁ = %3: click nearer v₂ = 0.")
                           .arg(level, 0, 'g', 6)
@@ -57,8 +54,7 @@ bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
                           .arg(shown.u1, 0, 'g', 4));
     return false;
   }
-  start.v1 = std::copysign(std::sqrt(2 * rest / model.m1), shown.v1);
-  startFromClick(start);
+  startFromClick(*start);
   return true;
 }
 

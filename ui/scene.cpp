@@ -44,10 +44,10 @@ Params enterScene(const Params& own, const Params& chain) {
   return params;
 }
 
-core::StartOrProblem<double> gloStart(const DerivedModel& derived, const Params& params) {
+core::StartOrProblem<double> gloStart(const core::Model& model, const Params& params) {
   // core's one place for starts, as the command line's --glo L --perturb ...: the same state
   // and the same notes (a push below one ulp of the start)
-  const core::ChainOrProblem<double> formed = core::makeChain(derived.model);
+  const core::ChainOrProblem<double> formed = core::makeChain(model);
   if (!formed.chain) return {std::nullopt, formed.problem};
   core::StartSpec<double> spec;
   spec.kind = core::StartSpec<double>::Kind::Glo;
@@ -59,17 +59,17 @@ core::StartOrProblem<double> gloStart(const DerivedModel& derived, const Params&
 SceneJob gloStartJob(const Scene& scene, const Params& params, const DerivedModel& derived,
                      double sampleWindow) {
   SceneJob job;
-  job.model = derived.model;
-  const core::StartOrProblem<double> made = gloStart(derived, params);
+  job.spec.model = derived.model;
+  const core::StartOrProblem<double> made = gloStart(derived.model, params);
   if (!made.start) {
     job.message = QString::fromStdString(made.problem);
     return job;
   }
   for (const std::string& note : made.start->notes) job.notes.append(QString::fromStdString(note));
   const core::State start = core::gloData(derived.model, derived.modes, params.lambda);
-  job.request.initial = made.start->state;
-  job.request.maxContacts = std::int64_t(params.horizon);
-  job.request.needs = needsFor(scene.plots(), derived.modes, sampleWindow);
+  job.spec.run.initial = made.start->state;
+  job.spec.run.maxContacts = std::int64_t(params.horizon);
+  job.spec.run.needs = needsFor(scene.plots(), derived.modes, sampleWindow);
   job.reference = start;
   job.referenceLabel = QCoreApplication::translate("grazelab::ui::Scene", "GLO(λ) data");
   job.ok = true;

@@ -76,7 +76,7 @@ SceneJob gloStartJob(const Scene& scene, const Params& params, const DerivedMode
 
 /// GLO(lambda) data pushed by the panel's perturbation, made by core's makeStart (as the
 /// command line makes it), with its notes; or why there is none.
-core::StartOrProblem<double> gloStart(const DerivedModel& derived, const Params& params);
+core::StartOrProblem<double> gloStart(const core::Model& model, const Params& params);
 
 /// Applies the signed perturbation along its direction.
 core::State perturbed(core::State state, const Params& params);

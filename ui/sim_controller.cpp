@@ -85,7 +85,7 @@ void appendChunk(core::Result& run, const core::Result& chunk) {
   run.poincare.insert(run.poincare.end(), chunk.poincare.begin(), chunk.poincare.end());
   run.freeFlights.insert(run.freeFlights.end(), chunk.freeFlights.begin(), chunk.freeFlights.end());
   run.samples.insert(run.samples.end(), chunk.samples.begin(), chunk.samples.end());
-  copyTotals(chunk, run);
+  core::experiments::copyTotals(chunk, run);
 }
 
 }  // namespace grazelab::ui

@@ -6,6 +6,8 @@
 
 #include "core/chain.h"
 #include "core/contact.h"
+#include "core/experiment_run.h"
+#include "core/modes.h"
 #include "core/free_flight.h"
 #include "core/orbits.h"
 #include "core/simulate.h"
@@ -77,6 +79,28 @@ void NextContactResonant(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(NextContactResonant);
+
+// The explorer's default experiment as its worker computes it (core::experiments::run): the
+// run in pieces of 30 ms with its trace samples over 400 T2, then its error estimate; against
+// NearGrazingUpper, the cost of the pieces and the estimate.
+void DefaultSceneExperiment(benchmark::State& state) {
+  core::experiments::Spec spec;
+  spec.model = testing::resonantChain(0.5);
+  spec.run.initial = testing::nearGrazingStart(spec.model, 0.5, 0.05);
+  spec.run.maxContacts = state.range(0);
+  spec.run.needs.events = true;
+  spec.run.needs.poincare = true;
+  const core::Modes modes = core::computeModes(spec.model);
+  spec.run.needs.samples.spacing = modes.T1 / 48;
+  spec.run.needs.samples.tEnd = 400 * modes.T2;
+  for (auto _ : state) {
+    const core::experiments::Update last =
+        core::experiments::run(spec, {}, core::experiments::Options{}, [](const auto&) {});
+    benchmark::DoNotOptimize(last.trust);
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(DefaultSceneExperiment)->Arg(20'000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace grazelab

@@ -90,7 +90,7 @@ class ClassroomTest : public QObject {
     QVERIFY(trace);
     const auto& data = trace->entries().front().data;
     QVERIFY(data.size() > 100);
-    const double T2 = grazelab::core::computeModes(shown->request->job.model).T2;
+    const double T2 = grazelab::core::computeModes(shown->request->job.spec.model).T2;
     QVERIFY(data.back().x() > 0.99 * T2);  // at least a whole slow period, not a +-4e-7 axis
     QVERIFY(axis(*trace, Qt::Horizontal)->max() - axis(*trace, Qt::Horizontal)->min() > T2);
     QVERIFY(m_window->statusText().contains(QStringLiteral("no further contact")));
@@ -119,7 +119,7 @@ class ClassroomTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window));
     QVERIFY(!m_window->params().resonantDesign);
     QCOMPARE(m_window->params().k2, designed);
-    QCOMPARE(m_window->displayed()->request->job.model.k2, designed);
+    QCOMPARE(m_window->displayed()->request->job.spec.model.k2, designed);
   }
 
   // the T/T2 slider began at 0.5, itself a period without a 1IPP orbit
@@ -131,9 +131,9 @@ class ClassroomTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window));
     QVERIFY2(m_window->problem().isEmpty(), qPrintable(m_window->problem()));
     const double lowEnd = grazelab::core::onePeriodicLowerEnd(
-        m_window->displayed()->request->job.model,
-        grazelab::core::computeModes(m_window->displayed()->request->job.model));
-    const double T2 = grazelab::core::computeModes(m_window->displayed()->request->job.model).T2;
+        m_window->displayed()->request->job.spec.model,
+        grazelab::core::computeModes(m_window->displayed()->request->job.spec.model));
+    const double T2 = grazelab::core::computeModes(m_window->displayed()->request->job.spec.model).T2;
     QVERIFY(m_window->params().periodFraction > lowEnd / T2);
     QVERIFY(m_window->params().periodFraction < lowEnd / T2 + 0.002);
     // other masses, another end: the slider follows the chain
@@ -516,7 +516,7 @@ class ClassroomTest : public QObject {
     // a window of three slow periods of the samples' stretch, then (W) all the samples
     QVERIFY2(axis(*trace, Qt::Horizontal)->titleText().contains(QStringLiteral("3 T₂ of")),
              qPrintable(axis(*trace, Qt::Horizontal)->titleText()));
-    const double T2 = grazelab::core::computeModes(m_window->displayed()->request->job.model).T2;
+    const double T2 = grazelab::core::computeModes(m_window->displayed()->request->job.spec.model).T2;
     QVERIFY(axis(*trace, Qt::Horizontal)->max() - axis(*trace, Qt::Horizontal)->min() <= 3 * T2 * (1 + 1e-9));
     QTest::keyClick(m_window.get(), Qt::Key_W);
     trace->refreshNow();
@@ -580,14 +580,14 @@ class ClassroomTest : public QObject {
     PlotView* poincare = plotTitled(*m_window, QStringLiteral("Poincaré"));
     QVERIFY(poincare);
     QTRY_VERIFY(poincare->entries().front().series->count() > 0);
-    const grazelab::core::Model model = m_window->displayed()->request->job.model;  // a copy: the click replaces what is shown
-    const double level = grazelab::core::energy(model, m_window->displayed()->request->job.request.initial);
+    const grazelab::core::Model model = m_window->displayed()->request->job.spec.model;  // a copy: the click replaces what is shown
+    const double level = grazelab::core::energy(model, m_window->displayed()->request->job.spec.run.initial);
     // a point the run itself reached (on the energy level by conservation)
     const QPointF target = poincare->entries().front().data.at(3);
     const QPoint at = poincare->chart()->mapToPosition(target).toPoint();
     QTest::mouseClick(poincare->viewport(), Qt::LeftButton, {}, at);
     QVERIFY(waitForLatestFinal(*m_window));
-    const grazelab::core::State start = m_window->displayed()->request->job.request.initial;
+    const grazelab::core::State start = m_window->displayed()->request->job.spec.run.initial;
     QCOMPARE(start.u2, model.gap);
     QVERIFY(start.v2 <= 0);
     const double pixel = (axis(*poincare, Qt::Horizontal)->max() - axis(*poincare, Qt::Horizontal)->min()) / 100;
@@ -604,7 +604,7 @@ class ClassroomTest : public QObject {
     m_window->setParams(params);
     QVERIFY(waitForLatestFinal(*m_window));
     const auto glo = grazelab::core::gloData(model, grazelab::core::computeModes(model), params.lambda);
-    QCOMPARE(m_window->displayed()->request->job.request.initial.u1, glo.u1);
+    QCOMPARE(m_window->displayed()->request->job.spec.run.initial.u1, glo.u1);
   }
 
   // the (u2, v2) portrait: a click on the stop line starts mass 2 from the stop at the
@@ -613,8 +613,8 @@ class ClassroomTest : public QObject {
     PlotView* phase = plotTitled(*m_window, QStringLiteral("Phase portrait of mass 2"));
     QVERIFY(phase);
     QTRY_VERIFY(!phase->entries().front().data.empty());
-    const grazelab::core::Model model = m_window->displayed()->request->job.model;
-    const grazelab::core::State shown = m_window->displayed()->request->job.request.initial;
+    const grazelab::core::Model model = m_window->displayed()->request->job.spec.model;
+    const grazelab::core::State shown = m_window->displayed()->request->job.spec.run.initial;
     const double level = grazelab::core::energy(model, shown);
     // a speed the run itself reached at the stop: the largest |v2| of its path there
     double speed = 0;
@@ -627,7 +627,7 @@ class ClassroomTest : public QObject {
     const QPoint at = phase->chart()->mapToPosition(target).toPoint() + QPoint(-12, 0);
     QTest::mouseClick(phase->viewport(), Qt::LeftButton, {}, at);
     QVERIFY(waitForLatestFinal(*m_window));
-    const grazelab::core::State start = m_window->displayed()->request->job.request.initial;
+    const grazelab::core::State start = m_window->displayed()->request->job.spec.run.initial;
     QCOMPARE(start.u2, model.gap);
     QCOMPARE(start.u1, shown.u1);
     const double pixel = (axis(*phase, Qt::Vertical)->max() - axis(*phase, Qt::Vertical)->min()) / 100;

@@ -191,7 +191,7 @@ class ExplorerTest : public QObject {
     QVERIFY(m_window->parameterPanel()->control(ParamKey::Period)->isVisibleTo(m_window.get()));
     // one impact per period: the impacts are T apart
     const SimUpdate* shown = m_window->displayed();
-    const double period = m_window->params().periodFraction * grazelab::core::computeModes(shown->request->job.model).T2;
+    const double period = m_window->params().periodFraction * grazelab::core::computeModes(shown->request->job.spec.model).T2;
     QVERIFY(shown->result->events.size() > 2);
     for (std::size_t i = 1; i < shown->result->events.size(); ++i) {
       QVERIFY(std::abs(shown->result->events[i].t - shown->result->events[i - 1].t - period) < 1e-6);
@@ -299,10 +299,10 @@ class ExplorerTest : public QObject {
     m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("near-grazing")));
     QVERIFY(waitForLatestFinal(*m_window));
     SimRequest request = *m_window->displayed()->request;
-    const grazelab::core::Chain<double> chain = *grazelab::core::makeChain(request.job.model).chain;
-    request.job.request.initial = grazelab::core::gloData(chain, 0.0);
-    request.job.request.initial.v2 -= 3e-9;
-    request.job.request.maxContacts = 20;
+    const grazelab::core::Chain<double> chain = *grazelab::core::makeChain(request.job.spec.model).chain;
+    request.job.spec.run.initial = grazelab::core::gloData(chain, 0.0);
+    request.job.spec.run.initial.v2 -= 3e-9;
+    request.job.spec.run.maxContacts = 20;
     std::optional<SimUpdate> last;
     SimWorker::run(request, {}, 0.002, [&](const SimUpdate& update) {
       if (update.final && !update.trustPending) last = update;
@@ -320,7 +320,7 @@ class ExplorerTest : public QObject {
     m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("near-grazing")));
     QVERIFY(waitForLatestFinal(*m_window));
     SimRequest request = *m_window->displayed()->request;
-    request.job.request.maxContacts = 100'000;
+    request.job.spec.run.maxContacts = 100'000;
     grazelab::core::Result assembled;
     std::shared_ptr<const grazelab::core::Result> whole;
     int pieces = 0;
@@ -364,8 +364,8 @@ class ExplorerTest : public QObject {
   // every update.
   void plotsAppendWhatIsNewAndDrawAsTheWholeRun() {
     auto request = std::make_shared<SimRequest>(*m_window->displayed()->request);
-    request->job.request.maxContacts = 100'000;
-    const double T2 = grazelab::core::computeModes(request->job.model).T2;
+    request->job.spec.run.maxContacts = 100'000;
+    const double T2 = grazelab::core::computeModes(request->job.spec.model).T2;
     std::mt19937_64 random(3);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     auto run = std::make_shared<grazelab::core::Result>();

@@ -52,13 +52,13 @@ class ScenesTest : public QObject {
       const Scene& scene = m_window->scene();
       const QString name = scene.name();
       QVERIFY2(m_window->problem().isEmpty(), qPrintable(name + ": " + m_window->problem()));
-      const auto& needs = m_window->displayed()->request->job.request.needs;
+      const auto& needs = m_window->displayed()->request->job.spec.run.needs;
       const bool dense = shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::PhaseU2V2) ||
                          shows(scene, PlotKind::PhaseU1V1) || shows(scene, PlotKind::Chain);
       QVERIFY2((needs.samples.spacing > 0) == dense, qPrintable(name));
       QVERIFY2(needs.poincare == (shows(scene, PlotKind::Poincare) || shows(scene, PlotKind::Landscape)),
                qPrintable(name));
-      QVERIFY2(m_window->displayed()->request->job.map.has_value() == shows(scene, PlotKind::Landscape),
+      QVERIFY2(m_window->displayed()->request->job.spec.map.has_value() == shows(scene, PlotKind::Landscape),
                qPrintable(name));
       QVERIFY2(needs.freeFlights == shows(scene, PlotKind::FreeFlight), qPrintable(name));
       QVERIFY2(needs.events == (shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::Chain)),
@@ -140,7 +140,7 @@ class ScenesTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     LandscapeView* view = m_window->landscapeView();
     QVERIFY(view && view->map() && view->map()->complete);
-    const double gap = m_window->displayed()->request->job.model.gap;
+    const double gap = m_window->displayed()->request->job.spec.model.gap;
     // one pixel in value units, either way
     const QPointF a = *view->valueAt(view->positionOf(QPointF(0, 0)) + QPointF(1, 1));
     const QPointF b = *view->valueAt(view->positionOf(QPointF(0, 0)));
@@ -148,7 +148,7 @@ class ScenesTest : public QObject {
 
     QTest::mouseClick(view, Qt::LeftButton, {}, view->positionOf(QPointF(0.3, 0.2)).toPoint());
     QVERIFY(waitForLatestFinal(*m_window, 60000));
-    const grazelab::core::State start = m_window->displayed()->request->job.request.initial;
+    const grazelab::core::State start = m_window->displayed()->request->job.spec.run.initial;
     QCOMPARE(start.u2, gap);
     QCOMPARE(start.v2, 0.0);
     QVERIFY(std::abs(start.u1 - 0.3) <= 1.5 * pixel.x());
@@ -255,7 +255,7 @@ class ScenesTest : public QObject {
     };
     QVERIFY(highest(detuned) > 1.05);
     QVERIFY(highest(resonant) <= 1.0);
-    const auto& model = m_window->displayed()->request->job.model;
+    const auto& model = m_window->displayed()->request->job.spec.model;
     const auto modes = grazelab::core::computeModes(model);
     QVERIFY(std::abs(modes.omegaFast / modes.omegaSlow - m_window->params().frequencyRatio) < 1e-9);
   }

@@ -211,7 +211,7 @@ void ChainView::show(const SimUpdate& update) {
   m_result = update.result;
   const core::Result& result = *m_result;
   if (m_taken.startsOver(update)) {
-    m_model = update.request->job.model;
+    m_model = update.request->job.spec.model;
     const double T2 = core::computeModes(m_model).T2;
     m_rate = T2 / 2;
     m_nearContact = T2 / 40;

@@ -32,7 +32,7 @@ void FreeFlightPlot::show(const SimUpdate& update) {
     setData(m_flights, {});
   }
   // T2 of the run's own chain (the model travels with the request, not in the result)
-  const double T2 = core::computeModes(update.request->job.model).T2;
+  const double T2 = core::computeModes(update.request->job.spec.model).T2;
   std::vector<QPointF> flights;
   flights.reserve(result.freeFlights.size() - m_taken.freeFlights);
   for (std::size_t index = m_taken.freeFlights; index < result.freeFlights.size(); ++index) {
@@ -46,13 +46,13 @@ void FreeFlightPlot::show(const SimUpdate& update) {
   const double last = all.empty() ? 1.0 : std::max(1.0, all.back().x());
   // decided by the run's length, not the flights so far: a look that changed mid-run made Qt
   // Charts build every marker again (57 ms for 20 000 contacts)
-  const double flightsAsked = std::max(double(all.size()), double(update.request->job.request.maxContacts));
+  const double flightsAsked = std::max(double(all.size()), double(update.request->job.spec.run.maxContacts));
   m_dense = flightsAsked > 2.0 * std::max(1, width());
   applyMarkers();
   // the whole run's contact range from its first update: an axis that grew as the run came
   // in moved every marker each time (25-50 ms a move for 20 000 contacts)
   clearExtraBounds();
-  includeInBounds(double(std::max<std::int64_t>(1, update.request->job.request.maxContacts)), 1.0);
+  includeInBounds(double(std::max<std::int64_t>(1, update.request->job.spec.run.maxContacts)), 1.0);
   setData(m_period, {QPointF(0, 1.0), QPointF(last, 1.0)});
   scheduleRefresh();
 }

@@ -120,11 +120,11 @@ void LandscapeView::show(const SimUpdate& update) {
                           .arg(colors::kImpact.name(), colors::kAccent.name(), cost));
   }
   const SimRequest& request = *update.request;
-  m_gap = request.job.model.gap;
+  m_gap = request.job.spec.model.gap;
   // the grazing family and its two modes, from the run's chain
-  const core::ChainOrProblem<double> formed = core::makeChain(request.job.model);
+  const core::ChainOrProblem<double> formed = core::makeChain(request.job.spec.model);
   m_family.clear();
-  m_T2 = core::computeModes(request.job.model).T2;
+  m_T2 = core::computeModes(request.job.spec.model).T2;
   if (formed.chain && formed.chain->resonant) {
     for (int step = 0; step <= 64; ++step) {
       const core::State data = core::gloData(*formed.chain, 4.0 / 3.0 * step / 64);
@@ -137,7 +137,7 @@ void LandscapeView::show(const SimUpdate& update) {
   }
   m_section.clear();
   for (const core::PoincarePoint& point : update.result->poincare) m_section.emplace_back(point.u1, point.v1);
-  const core::State& start = request.job.request.initial;
+  const core::State& start = request.job.spec.run.initial;
   m_start.reset();
   if (start.u2 == m_gap && start.v2 == 0) m_start = QPointF(start.u1, start.v1);
   QWidget::update();

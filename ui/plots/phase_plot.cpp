@@ -82,14 +82,14 @@ void PhasePlot::show(const SimUpdate& update) {
   }
   m_taken.samples = result.samples.size();
   appendData(m_path, path);
-  const core::State& initial = update.request->job.request.initial;
+  const core::State& initial = update.request->job.spec.run.initial;
   setData(m_start, {m_mass == Mass::Two ? QPointF(initial.u2, initial.v2)
                                         : QPointF(initial.u1, initial.v1)});
   if (m_stop >= 0) {
-    const double gap = update.request->job.model.gap;
+    const double gap = update.request->job.spec.model.gap;
     setData(m_stop, {QPointF(gap, m_vLow), QPointF(gap, m_vHigh)});
   }
-  m_T2 = core::computeModes(update.request->job.model).T2;
+  m_T2 = core::computeModes(update.request->job.spec.model).T2;
   placeWindow();
   scheduleRefresh();
 }

@@ -42,7 +42,7 @@ void PoincarePlot::show(const SimUpdate& update) {
   const auto count = std::int64_t(result.poincare.size());
   // equal-width bins over the contact index: while the run goes on, over the contacts asked
   // for (so that a point keeps its bin and the bins only grow); at the end over those made
-  const std::int64_t asked = update.request->job.request.maxContacts;
+  const std::int64_t asked = update.request->job.spec.run.maxContacts;
   const std::int64_t planned =
       update.final || asked <= 0 || asked > std::int64_t(1) << 40 ? count : std::max(asked, count);
   const std::int64_t per = std::max<std::int64_t>(1, (planned + kBins - 1) / kBins);

@@ -29,7 +29,7 @@ TracePlot::TracePlot(QWidget* parent)
 
 void TracePlot::show(const SimUpdate& update) {
   const core::Result& result = *update.result;
-  const double gap = update.request->job.model.gap;
+  const double gap = update.request->job.spec.model.gap;
   if (m_taken.startsOver(update)) {
     startNewRun();
     setData(m_trace, {});
@@ -61,7 +61,7 @@ void TracePlot::show(const SimUpdate& update) {
   setData(m_stop, {QPointF(0, gap), QPointF(tLast, gap)});
   m_gap = gap;
   m_window = tLast;
-  m_T2 = core::computeModes(update.request->job.model).T2;
+  m_T2 = core::computeModes(update.request->job.spec.model).T2;
   m_samplesCut = result.samplesTruncated || result.tFinal > tLast * (1 + 1e-9) + 1e-12;
   m_tFinal = result.tFinal;
   placeWindow();

@@ -40,14 +40,14 @@ Scene::Spec accuracyScene() {
                   std::stop_token) {
     // the trace shows the whole comparison: it is what the overlay is drawn on
     SceneJob job = gloStartJob(self, params, derived, (params.horizon + 1) * derived.modes.T2);
-    AccuracyJob accuracy;
+    core::experiments::AccuracySweep accuracy;
     for (core::methods::MethodKind kind : core::methods::kAllMethods) {
       for (const auto& setting :
            core::methods::reportSettings(kind, derived.modes.T2, derived.model.k1, true)) {
         accuracy.settings.push_back(setting);
       }
     }
-    job.accuracy = std::move(accuracy);
+    job.spec.accuracy = std::move(accuracy);
     return job;
   };
   return scene;

@@ -96,8 +96,15 @@ Scene::Spec detunedScene() {
     }
     const core::Model detuned{params.m1, params.m2, params.k1, *k2, params.gap, std::nullopt};
     const core::Modes resonantModes = core::computeModes(*resonant);
-    const core::State start =
-        perturbed(core::gloData(*resonant, resonantModes, params.lambda), params);
+    // the same start on both chains: GLO(lambda) of the resonant one, pushed, made as the
+    // command line makes it (with its notes)
+    const core::StartOrProblem<double> made = gloStart(*resonant, params);
+    if (!made.start) {
+      job.message = QString::fromStdString(made.problem);
+      return job;
+    }
+    for (const std::string& note : made.start->notes) job.notes.append(QString::fromStdString(note));
+    const core::State start = made.start->state;
     // at most 2000 contacts a chain: the pair is drawn whole, on fixed axes
     const auto contacts = std::int64_t(std::min(params.horizon, 2000.0));
     job.figures[PlotKind::DetunedFlights] = flightFigure(
@@ -106,11 +113,11 @@ Scene::Spec detunedScene() {
     job.figures[PlotKind::ResonantFlights] =
         flightFigure(tr("In 1:2 resonance: flight time / T₂"), flights(*resonant, start, contacts, stop),
                      true, contacts);
-    job.model = detuned;
-    job.request.initial = start;
-    job.request.maxContacts = std::int64_t(params.horizon);
-    job.request.flightSearchPeriods = kSearchPeriods;
-    job.request.needs = needsFor(self.plots(), core::computeModes(detuned), 40 * resonantModes.T2);
+    job.spec.model = detuned;
+    job.spec.run.initial = start;
+    job.spec.run.maxContacts = std::int64_t(params.horizon);
+    job.spec.run.flightSearchPeriods = kSearchPeriods;
+    job.spec.run.needs = needsFor(self.plots(), core::computeModes(detuned), 40 * resonantModes.T2);
     job.ok = true;
     return job;
   };

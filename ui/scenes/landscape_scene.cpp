@@ -59,7 +59,7 @@ Scene::Spec landscapeScene() {
       job.message = tr("the landscape needs the 1:2 resonant chain: tick the 1:2 design");
       return job;
     }
-    job.map = MapJob{landscapeSpec(params, derived)};
+    job.spec.map = landscapeSpec(params, derived);
     return job;
   };
   return scene;

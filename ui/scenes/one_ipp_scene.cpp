@@ -6,7 +6,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/chain.h"
+#include "core/experiments.h"
 #include "core/orbits.h"
+#include "core/setup.h"
 #include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {
@@ -16,7 +19,7 @@ QString tr(const char* text) {
   return QCoreApplication::translate("grazelab::ui::OneIppScene", text);
 }
 
-// The family's curves over (T_lo, T2): points crowd towards T2, where the theorem looks.
+// The family's curves over (T_lo, T2), from core's samples.
 struct Family {
   std::vector<QPointF> u1;      // (T/T2, u1 at impact)
   std::vector<QPointF> speed;   // (T/T2, |V|)
@@ -24,21 +27,16 @@ struct Family {
   std::vector<double> fraction;  // T/T2 of each point of `energy`
 };
 
-Family sampleFamily(const DerivedModel& derived, double lowEnd) {
+Family sampleFamily(const DerivedModel& derived, double lowEnd, std::stop_token stop) {
   Family family;
   const double T2 = derived.modes.T2;
-  constexpr int kPoints = 240;
-  for (int i = kPoints; i >= 1; --i) {
-    const double s = double(i) / kPoints;
-    const double T = T2 - (T2 - lowEnd) * (1 - 1e-6) * s * s;
-    const core::OnePeriodicOrbit orbit = core::onePeriodicOrbit(derived.model, derived.modes, T);
-    if (!orbit.admissible) continue;
-    family.u1.emplace_back(T / T2, orbit.postImpact.u1);
-    family.speed.emplace_back(T / T2, std::abs(orbit.V));
-    const double E = core::energy(derived.model, orbit.postImpact);
-    if (E > 0) {
-      family.energy.emplace_back(std::log10(E), 2 * std::numbers::pi / T);
-      family.fraction.push_back(T / T2);
+  for (const core::experiments::OnePeriodicSample& orbit :
+       core::experiments::onePeriodicFamilySamples(derived.model, derived.modes, lowEnd, 240, stop)) {
+    family.u1.emplace_back(orbit.period / T2, orbit.u1);
+    family.speed.emplace_back(orbit.period / T2, std::abs(orbit.V));
+    if (orbit.energy > 0) {
+      family.energy.emplace_back(std::log10(orbit.energy), 2 * std::numbers::pi / orbit.period);
+      family.fraction.push_back(orbit.period / T2);
     }
   }
   return family;
@@ -85,9 +83,9 @@ Scene::Spec onePeriodicScene() {
   scene.plots = {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::FrequencyEnergy,
                  PlotKind::TraceU2, PlotKind::Chain};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
-                  std::stop_token) {
+                  std::stop_token stop) {
     SceneJob job;
-    job.model = derived.model;
+    job.spec.model = derived.model;
     const double T2 = derived.modes.T2;
     const double lowEnd = core::onePeriodicLowerEnd(derived.model, derived.modes);
     const double lowFraction = lowEnd / T2;
@@ -103,14 +101,29 @@ Scene::Spec onePeriodicScene() {
                         .arg(QString::fromStdString(orbit.reason));
       return job;
     }
-    job.request.initial = orbit.postImpact;
-    job.request.maxContacts = std::int64_t(params.horizon);
-    job.request.needs = needsFor(self.plots(), derived.modes, 400 * T2);
+    // the run's start as the command line's --onepp T makes it (core's one place for starts)
+    const core::ChainOrProblem<double> formed = core::makeChain(derived.model);
+    if (!formed.chain) {
+      job.message = QString::fromStdString(formed.problem);
+      return job;
+    }
+    core::StartSpec<double> start;
+    start.kind = core::StartSpec<double>::Kind::OnePeriodic;
+    start.period = period;
+    const core::StartOrProblem<double> made = core::makeStart(*formed.chain, start);
+    if (!made.start) {
+      job.message = QString::fromStdString(made.problem);
+      return job;
+    }
+    for (const std::string& note : made.start->notes) job.notes.append(QString::fromStdString(note));
+    job.spec.run.initial = made.start->state;
+    job.spec.run.maxContacts = std::int64_t(params.horizon);
+    job.spec.run.needs = needsFor(self.plots(), derived.modes, 400 * T2);
     const core::State star = core::gloData(derived.model, derived.modes, derived.lambdaStar);
     job.reference = star;
     job.referenceLabel = tr("GLO(λ*) data");
 
-    const Family family = sampleFamily(derived, lowEnd);
+    const Family family = sampleFamily(derived, lowEnd, stop);
     const QString lambdaStar = QString::number(derived.lambdaStar, 'f', 3);
     CurveFigure data;
     data.title = tr("Impact data u₁ of the 1IPP orbit against T/T₂");

@@ -80,7 +80,7 @@ Scene::Spec randomStartsScene() {
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token stop) {
     SceneJob job;
-    job.model = derived.model;
+    job.spec.model = derived.model;
     // 300 starts x at most 200 contacts: the survey stays short
     const auto contacts = std::int64_t(std::min(params.horizon, 200.0));
     // the same starts for a given chain (a fixed seed)
@@ -91,9 +91,9 @@ Scene::Spec randomStartsScene() {
       job.message = tr("none of the %1 random starts touches the stop").arg(kStarts);
       return job;
     }
-    job.request.initial = *found.firstTouching;
-    job.request.maxContacts = std::int64_t(params.horizon);
-    job.request.needs = needsFor(self.plots(), derived.modes, 40 * derived.modes.T2);
+    job.spec.run.initial = *found.firstTouching;
+    job.spec.run.maxContacts = std::int64_t(params.horizon);
+    job.spec.run.needs = needsFor(self.plots(), derived.modes, 40 * derived.modes.T2);
     job.ok = true;
     return job;
   };

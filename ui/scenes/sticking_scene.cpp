@@ -35,18 +35,18 @@ Scene::Spec stickingScene() {
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token) {
     SceneJob job;
-    job.model = derived.model;
+    job.spec.model = derived.model;
     Params pressed = params;
     pressed.perturbation = 0;  // unperturbed: the press is the point
-    const core::StartOrProblem<double> made = gloStart(derived, pressed);
+    const core::StartOrProblem<double> made = gloStart(derived.model, pressed);
     if (!made.start) {
       job.message = QString::fromStdString(made.problem);
       return job;
     }
     const core::State start = made.start->state;
-    job.request.initial = start;
-    job.request.maxContacts = std::int64_t(params.horizon);
-    job.request.needs = needsFor(self.plots(), derived.modes, 400 * derived.modes.T2);
+    job.spec.run.initial = start;
+    job.spec.run.maxContacts = std::int64_t(params.horizon);
+    job.spec.run.needs = needsFor(self.plots(), derived.modes, 400 * derived.modes.T2);
     job.reference = start;
     job.referenceLabel = tr("GLO(λ) data");
     job.ok = true;
