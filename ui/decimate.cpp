@@ -39,22 +39,22 @@ std::optional<std::size_t> scatterCell(const QPointF& point, const PixelFrame& f
 
 }  // namespace
 
-QList<QPointF> decimateTrace(std::span<const QPointF> points, const PixelFrame& frame) {
+QList<QPointF> decimateTrace(PointSpan points, const PixelFrame& frame) {
   IncrementalDecimation once(IncrementalDecimation::Kind::Trace);
   return once.update(points, frame, true);
 }
 
-QList<QPointF> decimateScatter(std::span<const QPointF> points, const PixelFrame& frame) {
+QList<QPointF> decimateScatter(PointSpan points, const PixelFrame& frame) {
   IncrementalDecimation once(IncrementalDecimation::Kind::Scatter);
   return once.update(points, frame, true);
 }
 
-QList<QPointF> decimatePath(std::span<const QPointF> points, const PixelFrame& frame) {
+QList<QPointF> decimatePath(PointSpan points, const PixelFrame& frame) {
   IncrementalDecimation once(IncrementalDecimation::Kind::Path);
   return once.update(points, frame, true);
 }
 
-std::vector<QList<QPointF>> decimateScatterSets(const std::vector<std::span<const QPointF>>& sets,
+std::vector<QList<QPointF>> decimateScatterSets(const std::vector<PointSpan>& sets,
                                                 const PixelFrame& frame) {
   IncrementalScatterSets once;
   return once.update(sets, frame, true);
@@ -77,7 +77,7 @@ void IncrementalDecimation::restart(const PixelFrame& frame) {
   m_lastKept = SIZE_MAX;
 }
 
-const QList<QPointF>& IncrementalDecimation::update(std::span<const QPointF> data,
+const QList<QPointF>& IncrementalDecimation::update(PointSpan data,
                                                     const PixelFrame& frame, bool replaced) {
   PixelFrame usable = frame;
   usable.width = std::max(frame.width, 1);
@@ -96,16 +96,32 @@ const QList<QPointF>& IncrementalDecimation::update(std::span<const QPointF> dat
 // Columns from the first visible point (one before the frame's left edge) to one past its
 // right edge; the last column met may still grow, so it stays open: its points are not settled
 // into m_kept, and the next update resumes at its start.
-void IncrementalDecimation::feedTrace(std::span<const QPointF> points) {
+void IncrementalDecimation::feedTrace(PointSpan points) {
   const PixelFrame& frame = m_frame;
   const int width = frame.width;
-  const auto byX = [](const QPointF& point, double x) { return point.x() < x; };
-  auto first = std::lower_bound(points.begin(), points.end(), frame.xMin, byX);
-  auto last = std::upper_bound(points.begin(), points.end(), frame.xMax,
-                               [](double x, const QPointF& point) { return x < point.x(); });
-  if (first != points.begin()) --first;
-  if (last != points.end()) ++last;
-  const auto firstIndex = std::size_t(first - points.begin());
+  // the visible slice by binary search on x (non-decreasing), one point beyond on each side
+  const auto firstNotBelow = [&points](double x) {
+    std::size_t low = 0, high = points.size();
+    while (low < high) {
+      const std::size_t middle = low + (high - low) / 2;
+      if (points[middle].x() < x) low = middle + 1;
+      else high = middle;
+    }
+    return low;
+  };
+  const auto firstAbove = [&points](double x) {
+    std::size_t low = 0, high = points.size();
+    while (low < high) {
+      const std::size_t middle = low + (high - low) / 2;
+      if (x < points[middle].x()) high = middle;
+      else low = middle + 1;
+    }
+    return low;
+  };
+  std::size_t firstIndex = firstNotBelow(frame.xMin);
+  std::size_t lastIndex = firstAbove(frame.xMax);
+  if (firstIndex != 0) --firstIndex;
+  if (lastIndex != points.size()) ++lastIndex;
   // appended points moved the visible slice's start (all the data lay left of the frame)
   if (m_consumed > 0 && firstIndex != m_traceFirst) restart(m_frame);
   if (m_consumed == 0) {
@@ -114,7 +130,7 @@ void IncrementalDecimation::feedTrace(std::span<const QPointF> points) {
   }
   m_points = m_kept;
   std::size_t columnStart = m_openColumn;
-  const std::size_t end = std::max(std::size_t(last - points.begin()), columnStart);
+  const std::size_t end = std::max(lastIndex, columnStart);
   while (columnStart < end) {
     const std::int64_t column = std::clamp<std::int64_t>(
         cell(points[columnStart].x(), frame.xMin, frame.xMax, width), -1, width);
@@ -147,7 +163,7 @@ void IncrementalDecimation::feedTrace(std::span<const QPointF> points) {
   }
 }
 
-void IncrementalDecimation::feedScatter(std::span<const QPointF> points) {
+void IncrementalDecimation::feedScatter(PointSpan points) {
   for (std::size_t index = m_consumed; index < points.size(); ++index) {
     const auto slot = scatterCell(points[index], m_frame, m_frame.width, m_frame.height);
     if (!slot || m_taken[*slot]) continue;
@@ -159,7 +175,7 @@ void IncrementalDecimation::feedScatter(std::span<const QPointF> points) {
 
 // Each point that falls in the same cell as the point kept before it is dropped; the last
 // point is always drawn (kept aside: a later point may follow it).
-void IncrementalDecimation::feedPath(std::span<const QPointF> points) {
+void IncrementalDecimation::feedPath(PointSpan points) {
   for (std::size_t index = m_consumed; index < points.size(); ++index) {
     const QPointF& point = points[index];
     if (!finitePoint(point)) continue;
@@ -180,7 +196,7 @@ void IncrementalDecimation::feedPath(std::span<const QPointF> points) {
 }
 
 const std::vector<QList<QPointF>>& IncrementalScatterSets::update(
-    const std::vector<std::span<const QPointF>>& sets, const PixelFrame& frame, bool replaced) {
+    const std::vector<PointSpan>& sets, const PixelFrame& frame, bool replaced) {
   PixelFrame usable = frame;
   usable.width = std::max(frame.width, 1);
   usable.height = std::max(frame.height, 1);

@@ -73,7 +73,7 @@ void SimController::receive(const SimUpdate& update) {
     m_run = std::make_shared<core::Result>();
     m_runId = update.id;
   }
-  appendChunk(*m_run, *update.chunk);
+  m_run = appendChunkInPlace(std::move(m_run), *update.chunk);
   SimUpdate assembled = update;
   assembled.chunk.reset();
   assembled.result = m_run;
@@ -86,6 +86,45 @@ void appendChunk(core::Result& run, const core::Result& chunk) {
   run.freeFlights.insert(run.freeFlights.end(), chunk.freeFlights.begin(), chunk.freeFlights.end());
   run.samples.insert(run.samples.end(), chunk.samples.begin(), chunk.samples.end());
   core::experiments::copyTotals(chunk, run);
+}
+
+namespace {
+
+template <typename T>
+bool hasRoom(const std::vector<T>& items, const std::vector<T>& more) {
+  return items.size() + more.size() <= items.capacity();
+}
+
+// `items` with room for `more` and as many again (the copies are amortised: each item is
+// copied a bounded number of times over a run)
+template <typename T>
+std::vector<T> roomyCopy(const std::vector<T>& items, const std::vector<T>& more) {
+  std::vector<T> copy;
+  copy.reserve(2 * (items.size() + more.size()));
+  copy.assign(items.begin(), items.end());
+  return copy;
+}
+
+}  // namespace
+
+std::shared_ptr<core::Result> appendChunkInPlace(std::shared_ptr<core::Result> run,
+                                                 const core::Result& chunk) {
+  const bool room = hasRoom(run->events, chunk.events) && hasRoom(run->poincare, chunk.poincare) &&
+                    hasRoom(run->freeFlights, chunk.freeFlights) &&
+                    hasRoom(run->samples, chunk.samples);
+  if (!room) {
+    // a reader may hold `run` and read its items in place: they must not move
+    auto grown = std::make_shared<core::Result>();
+    grown->events = roomyCopy(run->events, chunk.events);
+    grown->poincare = roomyCopy(run->poincare, chunk.poincare);
+    grown->freeFlights = roomyCopy(run->freeFlights, chunk.freeFlights);
+    grown->samples = roomyCopy(run->samples, chunk.samples);
+    core::experiments::copyTotals(*run, *grown);
+    run = std::move(grown);
+  }
+  // within capacity: past the end of what any reader was shown, nothing moves
+  appendChunk(*run, chunk);
+  return run;
 }
 
 }  // namespace grazelab::ui

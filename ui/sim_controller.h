@@ -59,7 +59,9 @@ class SimController : public QObject {
   SimWorker* m_worker = nullptr;
   std::shared_ptr<SimMailbox> m_mailbox;
   std::uint64_t m_latestId = 0;
-  /// the run so far of request m_runId, grown by each partial update, dropped at the final
+  /// the run so far of request m_runId, grown by each partial update, dropped at the final.
+  /// Views read its items in place (no copy of a run): it grows only into room it already
+  /// has (appendChunkInPlace), so nothing a view holds moves.
   std::shared_ptr<core::Result> m_run;
   std::uint64_t m_runId = 0;
   bool m_busy = false;
@@ -68,5 +70,12 @@ class SimController : public QObject {
 
 /// Appends a partial update's chunk (new items and present totals) to the run so far.
 void appendChunk(core::Result& run, const core::Result& chunk);
+
+/// Appends `chunk` to `run` without moving any item already in it, for readers that hold the
+/// run and read its items where they are: when an item list has no room left for the chunk,
+/// the run is copied into a new one with room to grow (the readers keep the old one, intact,
+/// until they take the new one). Returns the run that holds the chunk.
+std::shared_ptr<core::Result> appendChunkInPlace(std::shared_ptr<core::Result> run,
+                                                 const core::Result& chunk);
 
 }  // namespace grazelab::ui

@@ -88,7 +88,7 @@ class ClassroomTest : public QObject {
     QCOMPARE(shown->result->cost.contacts, std::int64_t(0));
     PlotView* trace = plotTitled(*m_window, QStringLiteral("Displacement"));
     QVERIFY(trace);
-    const auto& data = trace->entries().front().data;
+    const auto& data = trace->entries().front().points().toVector();
     QVERIFY(data.size() > 100);
     const double T2 = grazelab::core::computeModes(shown->request->job.spec.model).T2;
     QVERIFY(data.back().x() > 0.99 * T2);  // at least a whole slow period, not a +-4e-7 axis
@@ -214,7 +214,7 @@ class ClassroomTest : public QObject {
         for (const PlotView::Entry& entry : plot->entries()) {
           const QString name = entry.series->name();
           // a hidden series (the whole run behind a window) is not in the legend either
-          if (name.isEmpty() || entry.data.empty() || !entry.series->isVisible()) continue;
+          if (name.isEmpty() || entry.points().empty() || !entry.series->isVisible()) continue;
           QVERIFY2(plot->legendNames().contains(name), qPrintable(plot->title() + QStringLiteral(": ") + name));
         }
       }
@@ -269,7 +269,7 @@ class ClassroomTest : public QObject {
     int named = 0;
     int fairBins = 0;
     for (const PlotView::Entry& entry : poincare->entries()) {
-      if (entry.data.empty() || entry.series->name().startsWith(QStringLiteral("GLO"))) continue;
+      if (entry.points().empty() || entry.series->name().startsWith(QStringLiteral("GLO"))) continue;
       if (poincare->legendNames().contains(entry.series->name())) ++named;
       // 20 000 contacts fill the same ring: each fifth of the run keeps about a fifth of it
       if (entry.series->count() > drawnTotal() / 10) ++fairBins;
@@ -583,7 +583,7 @@ class ClassroomTest : public QObject {
     const grazelab::core::Model model = m_window->displayed()->request->job.spec.model;  // a copy: the click replaces what is shown
     const double level = grazelab::core::energy(model, m_window->displayed()->request->job.spec.run.initial);
     // a point the run itself reached (on the energy level by conservation)
-    const QPointF target = poincare->entries().front().data.at(3);
+    const QPointF target = poincare->entries().front().points().toVector().at(3);
     const QPoint at = poincare->chart()->mapToPosition(target).toPoint();
     QTest::mouseClick(poincare->viewport(), Qt::LeftButton, {}, at);
     QVERIFY(waitForLatestFinal(*m_window));
@@ -612,13 +612,13 @@ class ClassroomTest : public QObject {
   void aClickOnTheStopLineStartsARunThere() {
     PlotView* phase = plotTitled(*m_window, QStringLiteral("Phase portrait of mass 2"));
     QVERIFY(phase);
-    QTRY_VERIFY(!phase->entries().front().data.empty());
+    QTRY_VERIFY(!phase->entries().front().points().empty());
     const grazelab::core::Model model = m_window->displayed()->request->job.spec.model;
     const grazelab::core::State shown = m_window->displayed()->request->job.spec.run.initial;
     const double level = grazelab::core::energy(model, shown);
     // a speed the run itself reached at the stop: the largest |v2| of its path there
     double speed = 0;
-    for (const QPointF& point : phase->entries().front().data) {
+    for (const QPointF& point : phase->entries().front().points().toVector()) {
       if (std::abs(point.x() - model.gap) < 1e-9 * model.gap) speed = std::max(speed, std::abs(point.y()));
     }
     QVERIFY(speed > 0);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ui/decimate.h"
+#include "ui/plots/run_points.h"
 
 using grazelab::ui::decimatePath;
 using grazelab::ui::decimateScatter;
@@ -81,6 +82,35 @@ class DecimateTest : public QObject {
     QCOMPARE(out.size(), qsizetype(103));  // fewer points than pixels: all kept
   }
 
+  // A run's samples read where they are (the views hold no copy) reduce exactly as the same
+  // points copied out of them, for a trace (t, u2) and a path (u2, v2).
+  void pointsReadInPlaceReduceAsTheirCopy() {
+    std::vector<grazelab::core::Sample> samples;
+    for (int i = 0; i < 50'000; ++i) {
+      const double t = 0.01 * i;
+      samples.push_back({t, {std::cos(t), std::sin(2 * t), -std::sin(t), 2 * std::cos(2 * t)}});
+    }
+    grazelab::core::Result run;
+    run.samples = samples;
+    std::vector<QPointF> trace;
+    std::vector<QPointF> path;
+    for (const auto& sample : samples) {
+      trace.emplace_back(sample.t, sample.state.u2);
+      path.emplace_back(sample.state.u2, sample.state.v2);
+    }
+    const PixelFrame frame{0, 500, -1.1, 1.1, 640, 240};
+    const grazelab::ui::PointSpan inPlace = grazelab::ui::samplePoints(run, grazelab::ui::SampleAxes::TimeU2);
+    QCOMPARE(inPlace.size(), trace.size());
+    QCOMPARE(inPlace[777], trace[777]);
+    QCOMPARE(decimateTrace(inPlace, frame), decimateTrace(trace, frame));
+    const PixelFrame phase{-1.1, 1.1, -2.2, 2.2, 300, 300};
+    QCOMPARE(decimatePath(grazelab::ui::samplePoints(run, grazelab::ui::SampleAxes::U2V2), phase),
+             decimatePath(path, phase));
+    // a stretch of them, as the phase portrait's window takes it
+    QCOMPARE(inPlace.subspan(1000, 300).toVector(),
+             std::vector<QPointF>(trace.begin() + 1000, trace.begin() + 1300));
+  }
+
   void traceOfNothingIsNothing() {
     QVERIFY(decimateTrace({}, PixelFrame{}).isEmpty());
     QVERIFY(decimateScatter({}, PixelFrame{}).isEmpty());
@@ -124,7 +154,7 @@ class DecimateTest : public QObject {
         data[std::size_t(set)].emplace_back(std::cos(angle), std::sin(angle));
       }
     }
-    std::vector<std::span<const QPointF>> spans(data.begin(), data.end());
+    std::vector<grazelab::ui::PointSpan> spans(data.begin(), data.end());
     const PixelFrame frame{-1.1, 1.1, -1.1, 1.1, 100, 100};
     const auto reduced = decimateScatterSets(spans, frame);
     QCOMPARE(int(reduced.size()), sets);
@@ -210,7 +240,7 @@ class DecimateTest : public QObject {
       // the bins fill one after the other, as a run's colour bins do
       auto& set = sets[std::size_t(std::min(4, chunk / 12))];
       for (int i = 0; i < 500; ++i) set.emplace_back(unit(random), unit(random));
-      std::vector<std::span<const QPointF>> spans(sets.begin(), sets.end());
+      std::vector<grazelab::ui::PointSpan> spans(sets.begin(), sets.end());
       QCOMPARE(cut.update(spans, frame, chunk == 0), decimateScatterSets(spans, frame));
       if (chunk > 0) QVERIFY(!cut.startedOver());
     }

@@ -44,15 +44,15 @@ namespace {
 
 // the data of the first series of the first plot (the u2 trace on the default scene)
 std::vector<QPointF> firstSeries(const MainWindow& window) {
-  return window.plots().first()->entries().front().data;
+  return window.plots().first()->entries().front().points().toVector();
 }
 
 // the reference square on the Poincaré plot: the GLO_lambda data the run started from
 QPointF poincareReference(const MainWindow& window) {
   for (const PlotView* plot : window.plots()) {
     for (const PlotView::Entry& entry : plot->entries()) {
-      if (entry.series->name().startsWith(QStringLiteral("GLO")) && !entry.data.empty()) {
-        return entry.data.front();
+      if (entry.series->name().startsWith(QStringLiteral("GLO")) && !entry.points().empty()) {
+        return entry.points()[0];
       }
     }
   }
@@ -230,7 +230,7 @@ class ExplorerTest : public QObject {
         // named in words, as the overlay picker says them
         if (entry.series->name().startsWith(QStringLiteral("Moreau–Jean")) ||
             entry.series->name().startsWith(QStringLiteral("Dormand–Prince"))) {
-          return entry.data;
+          return entry.points().toVector();
         }
       }
       return std::vector<QPointF>{};
@@ -313,6 +313,32 @@ class ExplorerTest : public QObject {
     QCOMPARE(last->result->cost.undecidedTouches, std::int64_t(0));
     QVERIFY(last->trust);
     QVERIFY(QString::fromStdString(last->precisionNote).contains(QStringLiteral("contact 1")));
+  }
+
+  // The views read a run's items where the controller keeps them: appending a piece never moves
+  // an item a view holds (the run is copied with room to grow when it has none), and copies are
+  // few (amortised).
+  void aRunGrowsWithoutMovingWhatAViewReads() {
+    auto run = std::make_shared<grazelab::core::Result>();
+    std::shared_ptr<const grazelab::core::Result> held = run;  // what a view holds
+    const grazelab::core::Sample* heldData = nullptr;
+    std::size_t heldCount = 0;
+    int copies = 0;
+    for (int chunk = 0; chunk < 200; ++chunk) {
+      grazelab::core::Result piece;
+      for (int i = 0; i < 37; ++i) piece.samples.push_back({double(chunk * 37 + i), {}});
+      const auto before = run;
+      run = appendChunkInPlace(run, piece);
+      if (run != before) ++copies;
+      // what the view holds is where it was, with its values
+      QCOMPARE(held->samples.data(), heldData);
+      for (std::size_t k = 0; k < heldCount; ++k) QCOMPARE(heldData[k].t, double(k));
+      held = run;
+      heldData = run->samples.data();
+      heldCount = run->samples.size();
+    }
+    QCOMPARE(run->samples.size(), std::size_t(200 * 37));
+    QVERIFY2(copies <= 16, qPrintable(QString::number(copies)));
   }
 
   // The worker hands over only what is new; the pieces, appended, are the whole run.
@@ -415,7 +441,7 @@ class ExplorerTest : public QObject {
                                    std::pair<PlotView*, PlotView*>{&growingSection, &onceSection}}) {
       QCOMPARE(appended->entries().size(), whole->entries().size());
       for (std::size_t i = 0; i < whole->entries().size(); ++i) {
-        QCOMPARE(appended->entries()[i].data, whole->entries()[i].data);
+        QCOMPARE(appended->entries()[i].points().toVector(), whole->entries()[i].points().toVector());
         QCOMPARE(appended->entries()[i].series->points(), whole->entries()[i].series->points());
       }
       // the contact-index axis widens by a quarter of its span each side when it must: a

@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "core/modes.h"
+#include "ui/plots/run_points.h"
 #include "ui/plots/plot_style.h"
 
 #include <QChart>
@@ -41,9 +42,13 @@ PhasePlot::PhasePlot(Mass mass, QWidget* parent)
                       "the stop; it feels the impacts through the spring k₂."));
 }
 
+double PhasePlot::lastTime() const {
+  return m_samples == 0 ? 0 : m_run->samples[m_samples - 1].t;
+}
+
 void PhasePlot::setTimeCursor(double t, const core::State& state) {
   m_cursorTime = t;
-  const double tLast = m_times.empty() ? 0 : m_times.back();
+  const double tLast = lastTime();
   if (!m_whole && !m_runWindow.wholeFits(tLast, m_T2) && m_runWindow.follow(t, tLast, m_T2)) {
     placeWindow();
     scheduleRefresh();
@@ -64,24 +69,22 @@ void PhasePlot::setTimeCursor(double t, const core::State& state) {
 
 void PhasePlot::show(const SimUpdate& update) {
   const core::Result& result = *update.result;
-  if (m_taken.startsOver(update)) {
+  const bool grown = !m_taken.startsOver(update);
+  if (!grown) {
     startNewRun();
-    setData(m_path, {});
-    m_times.clear();
     m_vLow = 0;
     m_vHigh = 0;
   }
-  std::vector<QPointF> path;
-  path.reserve(result.samples.size() - m_taken.samples);
-  for (std::size_t index = m_taken.samples; index < result.samples.size(); ++index) {
-    const core::State& state = result.samples[index].state;
-    path.push_back(m_mass == Mass::Two ? QPointF(state.u2, state.v2) : QPointF(state.u1, state.v1));
-    m_times.push_back(result.samples[index].t);
-    m_vLow = std::min(m_vLow, path.back().y());
-    m_vHigh = std::max(m_vHigh, path.back().y());
+  // the run's samples as they are, no copy: only the new ones widen the velocity range
+  const PointSpan path = samplePoints(result, m_mass == Mass::Two ? SampleAxes::U2V2 : SampleAxes::U1V1);
+  for (std::size_t index = m_taken.samples; index < path.size(); ++index) {
+    m_vLow = std::min(m_vLow, path[index].y());
+    m_vHigh = std::max(m_vHigh, path[index].y());
   }
-  m_taken.samples = result.samples.size();
-  appendData(m_path, path);
+  m_taken.samples = path.size();
+  m_run = update.result;
+  m_samples = path.size();
+  showInPlace(m_path, path, update.result, grown);
   const core::State& initial = update.request->job.spec.run.initial;
   setData(m_start, {m_mass == Mass::Two ? QPointF(initial.u2, initial.v2)
                                         : QPointF(initial.u1, initial.v1)});
@@ -95,15 +98,19 @@ void PhasePlot::show(const SimUpdate& update) {
 }
 
 void PhasePlot::placeWindow() {
-  const double tLast = m_times.empty() ? 0 : m_times.back();
+  const double tLast = lastTime();
   const bool windowed = !m_whole && !m_runWindow.wholeFits(tLast, m_T2);
   if (windowed) {
     m_runWindow.follow(m_cursorTime, tLast, m_T2);
-    const auto begin = std::lower_bound(m_times.begin(), m_times.end(), m_runWindow.from());
-    const auto end = std::upper_bound(begin, m_times.end(), m_runWindow.to());
-    const std::vector<QPointF>& whole = entries()[std::size_t(m_path)].data;
-    setData(m_recent, std::vector<QPointF>(whole.begin() + (begin - m_times.begin()),
-                                           whole.begin() + (end - m_times.begin())));
+    // the window's stretch of the same samples, in place
+    const auto first = m_run->samples.begin();
+    const auto last = first + std::ptrdiff_t(m_samples);
+    const auto byTime = [](const core::Sample& sample, double t) { return sample.t < t; };
+    const auto begin = std::lower_bound(first, last, m_runWindow.from(), byTime);
+    const auto end = std::upper_bound(begin, last, m_runWindow.to(),
+                                      [](double t, const core::Sample& sample) { return t < sample.t; });
+    const PointSpan whole = entries()[std::size_t(m_path)].points();
+    showInPlace(m_recent, whole.subspan(std::size_t(begin - first), std::size_t(end - begin)), m_run, false);
   } else if (m_windowed) {
     setData(m_recent, {});
   }

@@ -22,10 +22,13 @@ class PhasePlot final : public PlotView {
   Mass m_mass;
   /// Draws the window's stretch of the path over the pale whole run, or the whole run alone.
   void placeWindow();
+  double lastTime() const;  ///< the time of the last sample shown (0 when none)
 
   int m_path = 0;    ///< the whole run
   int m_recent = 0;  ///< the window's stretch, over it
-  std::vector<double> m_times;  ///< the time of each point of the whole run
+  /// the run shown, whose samples the path reads in place (their times place the window)
+  std::shared_ptr<const core::Result> m_run;
+  std::size_t m_samples = 0;  ///< how many of its samples were shown
   RunWindow m_runWindow;
   double m_T2 = 0;
   double m_cursorTime = 0;

@@ -238,13 +238,34 @@ void PlotView::setPresentation(bool on, int textPixels) {
 void PlotView::setData(int index, std::vector<QPointF> data) {
   Entry& entry = m_entries[std::size_t(index)];
   entry.data = std::move(data);
+  entry.inPlace = {};
+  entry.owner.reset();
   entry.replaced = true;
   entry.boundsCounted = 0;
 }
 
 void PlotView::appendData(int index, std::span<const QPointF> points) {
   Entry& entry = m_entries[std::size_t(index)];
+  if (entry.owner) {
+    // it was reading a run in place: it holds its own points from now on
+    entry.inPlace = {};
+    entry.owner.reset();
+    entry.replaced = true;
+    entry.boundsCounted = 0;
+  }
   entry.data.insert(entry.data.end(), points.begin(), points.end());
+}
+
+void PlotView::showInPlace(int index, PointSpan points, std::shared_ptr<const void> owner, bool grown) {
+  Entry& entry = m_entries[std::size_t(index)];
+  if (!entry.data.empty()) std::vector<QPointF>().swap(entry.data);
+  grown = grown && entry.owner && points.size() >= entry.inPlace.size();
+  entry.inPlace = points;
+  entry.owner = std::move(owner);
+  if (!grown) {
+    entry.replaced = true;
+    entry.boundsCounted = 0;
+  }
 }
 
 void PlotView::joinScatters(std::vector<int> indices) { m_joinedScatters = std::move(indices); }
@@ -364,7 +385,9 @@ void PlotView::appendCsv(QString& csv) const {
   const QString plot = quote(title());
   for (const Entry& entry : m_entries) {
     const QString quoted = plot + QLatin1Char(',') + quote(entry.series->name());
-    for (const QPointF& point : entry.data) {
+    const PointSpan points = entry.points();
+    for (std::size_t index = 0; index < points.size(); ++index) {
+      const QPointF point = points[index];
       csv += quoted + QLatin1Char(',') + QString::number(point.x(), 'g', 17) + QLatin1Char(',') +
              QString::number(point.y(), 'g', 17) + QLatin1Char('\n');
     }
@@ -392,10 +415,11 @@ PlotView::Extent PlotView::dataBounds() {
   for (Entry& entry : m_entries) {
     if (!entry.inBounds) continue;
     if (entry.boundsCounted == 0) entry.bounds = Extent{};
-    for (std::size_t index = entry.boundsCounted; index < entry.data.size(); ++index) {
-      entry.bounds.take(entry.data[index]);
+    const PointSpan points = entry.points();
+    for (std::size_t index = entry.boundsCounted; index < points.size(); ++index) {
+      entry.bounds.take(points[index]);
     }
-    entry.boundsCounted = entry.data.size();
+    entry.boundsCounted = points.size();
     all.take(entry.bounds);
   }
   for (const QPointF& point : m_extraBounds) all.take(point);
@@ -491,10 +515,10 @@ void PlotView::refresh() {
   };
   bool scratch = false;  // some series decimated from its first point
   if (!m_joinedScatters.empty()) {
-    std::vector<std::span<const QPointF>> sets;
+    std::vector<PointSpan> sets;
     bool replaced = false;
     for (int index : m_joinedScatters) {
-      sets.emplace_back(m_entries[std::size_t(index)].data);
+      sets.push_back(m_entries[std::size_t(index)].points());
       replaced = replaced || m_entries[std::size_t(index)].replaced;
     }
     const PixelFrame coarse = markerCells(m_entries[std::size_t(m_joinedScatters[0])].series);
@@ -520,12 +544,17 @@ void PlotView::refresh() {
     }
     const bool replaced = entry.replaced;
     entry.replaced = false;
+    const PointSpan points = entry.points();
     switch (entry.decimation) {
-      case Decimation::None:
-        entry.series->replace(QList<QPointF>(entry.data.begin(), entry.data.end()));
+      case Decimation::None: {
+        QList<QPointF> all;
+        all.reserve(qsizetype(points.size()));
+        for (std::size_t index = 0; index < points.size(); ++index) all.append(points[index]);
+        entry.series->replace(all);
         break;
+      }
       case Decimation::Trace:
-        entry.series->replace(entry.reduced->update(entry.data, frame, replaced));
+        entry.series->replace(entry.reduced->update(points, frame, replaced));
         break;
       case Decimation::Path: {
         // 2-pixel cells: Qt Charts strokes a hover shape for every line point, so each point
@@ -533,14 +562,14 @@ void PlotView::refresh() {
         PixelFrame coarse = frame;
         coarse.width = std::max(1, frame.width / 2);
         coarse.height = std::max(1, frame.height / 2);
-        entry.series->replace(entry.reduced->update(entry.data, coarse, replaced));
+        entry.series->replace(entry.reduced->update(points, coarse, replaced));
         break;
       }
       case Decimation::Scatter:
-        entry.series->replace(entry.reduced->update(entry.data, markerCells(entry.series), replaced));
+        entry.series->replace(entry.reduced->update(points, markerCells(entry.series), replaced));
         break;
     }
-    if (entry.reduced && entry.reduced->startedOver() && !entry.data.empty()) scratch = true;
+    if (entry.reduced && entry.reduced->startedOver() && !points.empty()) scratch = true;
   }
   if (scratch) ++m_decimationsFromScratch;
   updateLegend();

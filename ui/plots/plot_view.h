@@ -53,7 +53,11 @@ class PlotView : public QChartView, public SceneView {
   /// One series and the full-resolution data behind it.
   struct Entry {
     QXYSeries* series = nullptr;
-    std::vector<QPointF> data;
+    std::vector<QPointF> data;  ///< the points, when the view holds them itself
+    /// or the points read in place from records `owner` keeps alive (a run's samples)
+    PointSpan inPlace;
+    std::shared_ptr<const void> owner;
+    PointSpan points() const { return owner ? inPlace : PointSpan(data); }
     Decimation decimation = Decimation::None;
     bool inBounds = true;  ///< counts for the automatic axis ranges
     double baseWidth = 0;   ///< the desk look: line width or marker size
@@ -140,6 +144,10 @@ class PlotView : public QChartView, public SceneView {
   /// Adds points after those of the entry (a run going on): the next refresh draws only them,
   /// plus what the pixels show, unless the axes moved.
   void appendData(int index, std::span<const QPointF> points);
+  /// Shows `points` read in place from records that `owner` keeps alive (a run): no copy.
+  /// `grown`: the points shown before, with more after them (the run went on), so that the
+  /// next refresh draws only the new ones.
+  void showInPlace(int index, PointSpan points, std::shared_ptr<const void> owner, bool grown);
   /// The plot shows a new run (not the one it was showing, grown): the next fit is tight.
   void startNewRun() { m_newRun = true; }
   /// Scatter entries drawn over each other as one cloud (colour classes): decimated jointly,

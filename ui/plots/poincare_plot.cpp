@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "ui/plots/plot_style.h"
+#include "ui/plots/run_points.h"
 
 namespace grazelab::ui {
 
@@ -46,25 +47,27 @@ void PoincarePlot::show(const SimUpdate& update) {
   const std::int64_t planned =
       update.final || asked <= 0 || asked > std::int64_t(1) << 40 ? count : std::max(asked, count);
   const std::int64_t per = std::max<std::int64_t>(1, (planned + kBins - 1) / kBins);
-  if (m_taken.startsOver(update) || per != m_perBin) {
+  bool grown = !m_taken.startsOver(update);
+  if (!grown || per != m_perBin) {
     m_taken = RunProgress{};
     m_taken.runId = update.id;
+    m_taken.attempt = update.attempt;
     m_perBin = per;
     startNewRun();
-    for (int bin = 0; bin < kBins; ++bin) setData(m_bins[bin], {});
+    grown = false;
   }
-  std::vector<QPointF> bins[kBins];
-  for (auto index = std::int64_t(m_taken.poincare); index < count; ++index) {
-    const core::PoincarePoint& point = result.poincare[std::size_t(index)];
-    bins[std::min<std::int64_t>(index / per, kBins - 1)].emplace_back(point.u1, point.v1);
-  }
+  // each bin is a stretch of contacts: the run's points as they are, no copy (the last bin
+  // holds the rest)
+  const PointSpan points = sectionPoints(result);
   m_taken.poincare = std::size_t(count);
   const auto& entryList = entries();
   for (int bin = 0; bin < kBins; ++bin) {
-    appendData(m_bins[bin], bins[bin]);
+    const std::int64_t from = std::min<std::int64_t>(bin * per, count);
+    const std::int64_t to = bin == kBins - 1 ? count : std::min<std::int64_t>((bin + 1) * per, count);
+    showInPlace(m_bins[bin], points.subspan(std::size_t(from), std::size_t(to - from)), update.result, grown);
     const std::int64_t first = bin * per;
     const std::int64_t last = std::min(planned, first + per) - 1;
-    const bool shown = !entryList[std::size_t(m_bins[bin])].data.empty();
+    const bool shown = to > from;
     // every bin is named in the legend (an empty one is left out); set only on a change:
     // each new name lays the chart out again
     QXYSeries* series = entryList[std::size_t(m_bins[bin])].series;

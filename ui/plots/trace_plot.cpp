@@ -8,6 +8,7 @@
 #include <QValueAxis>
 
 #include "core/modes.h"
+#include "ui/plots/run_points.h"
 #include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {
@@ -30,21 +31,16 @@ TracePlot::TracePlot(QWidget* parent)
 void TracePlot::show(const SimUpdate& update) {
   const core::Result& result = *update.result;
   const double gap = update.request->job.spec.model.gap;
-  if (m_taken.startsOver(update)) {
+  const bool grown = !m_taken.startsOver(update);
+  if (!grown) {
     startNewRun();
-    setData(m_trace, {});
     setData(m_impacts, {});
     setData(m_grazings, {});
   }
-  // only what the run added since the last update
-  std::vector<QPointF> trace;
-  trace.reserve(result.samples.size() - m_taken.samples);
-  for (std::size_t index = m_taken.samples; index < result.samples.size(); ++index) {
-    trace.emplace_back(result.samples[index].t, result.samples[index].state.u2);
-  }
-  m_taken.samples = result.samples.size();
-  appendData(m_trace, trace);
-  const std::vector<QPointF>& drawn = entries()[std::size_t(m_trace)].data;
+  // the run's samples as they are, no copy (the view holds the run while it shows it)
+  const PointSpan drawn = samplePoints(result, SampleAxes::TimeU2);
+  m_taken.samples = drawn.size();
+  showInPlace(m_trace, drawn, update.result, grown);
   const double tLast = drawn.empty() ? result.tFinal : drawn.back().x();
   // contacts within the trace's window; later ones wait for the samples that reach them
   std::vector<QPointF> impacts;
