@@ -39,6 +39,9 @@ struct CurveFigure {
   QString toolTip;
   QString curveName;
   std::vector<QPointF> curve;
+  /// the curve's points are values at separate events (a flight per contact): drawn as dots,
+  /// not joined by a line (joined spikes merge into a block on a projector)
+  bool dots = false;
   QString markerName;
   std::vector<QPointF> markers;
   QString referenceName;

@@ -18,6 +18,7 @@ class CurvePlot final : public PlotView {
 
  private:
   PlotKind m_kind;
+  int m_dots = 0;  ///< the curve as dots (CurveFigure::dots)
   int m_curve = 0;
   int m_reference = 0;       ///< a dashed line (two points)
   int m_referencePoint = 0;  ///< a ring (one point)

@@ -426,6 +426,16 @@ PlotView::Extent PlotView::dataBounds() {
   return all;
 }
 
+double PlotView::largestMarkerRadius() const {
+  double radius = 0;
+  for (const Entry& entry : m_entries) {
+    const auto* scatter = qobject_cast<const QScatterSeries*>(entry.series);
+    if (!scatter || !entry.inBounds || !scatter->isVisible() || entry.points().empty()) continue;
+    radius = std::max(radius, 0.5 * scatter->markerSize() + 1.5);
+  }
+  return radius;
+}
+
 QRectF PlotView::wantedRange() {
   if (m_fixedRange) {
     // a fixed range, widened by 5 % of its span each side (not by pixels: the axes must not
@@ -448,6 +458,17 @@ QRectF PlotView::wantedRange() {
   };
   auto [x0, x1] = padded(xLow, xHigh, usable(scaleX));
   auto [y0, y1] = padded(yLow, yHigh, usable(scaleY));
+  // a marker on the data's edge is drawn whole: room for the largest marker's radius (and its
+  // outline) beyond the padding, in pixels of the plot area (the start dot of mass 1 was cut)
+  const double radius = largestMarkerRadius();
+  const auto makeRoom = [radius](double& low, double& high, double pixels) {
+    if (!(radius > 0) || !(pixels > 4 * radius)) return;
+    const double room = (high - low) * radius / (pixels - 2 * radius);
+    low -= room;
+    high += room;
+  };
+  makeRoom(x0, x1, chart()->plotArea().width());
+  makeRoom(y0, y1, chart()->plotArea().height());
   if (m_xWindow) {
     // a window of a long run: the time axis shows it, the other axis the whole run's range
     // (so that it does not jump while the window moves)

@@ -164,6 +164,8 @@ class PlotView : public QChartView, public SceneView {
   /// Shows only [first, second] of the x axis while the view follows its data (a window of a
   /// long run); nothing: the whole extent.
   void setXWindow(std::optional<std::pair<double, double>> window);
+  /// Half the largest marker (with its outline) of the scatters that set the axes [pixels].
+  double largestMarkerRadius() const;
 
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;

@@ -42,6 +42,7 @@ CurveFigure flightFigure(const QString& title, std::vector<QPointF> points, bool
                       "longer (flights searched up to %1 T₂).").arg(kSearchPeriods);
   figure.curveName = tr("flights");
   figure.curve = std::move(points);
+  figure.dots = true;  // one flight per contact
   figure.referenceName = tr("T₂");
   figure.reference = {QPointF(0, 1), QPointF(double(std::max<std::int64_t>(contacts, 1)), 1)};
   if (fixed) {
