@@ -34,7 +34,7 @@ Matrix4<S> multiply(const Matrix4<S>& a, const Matrix4<S>& b) {
 }
 
 template <typename S>
-std::array<S, 4> apply(const Matrix4<S>& a, const std::array<S, 4>& x) {
+std::array<S, 4> times(const Matrix4<S>& a, const std::array<S, 4>& x) {
   std::array<S, 4> y{};
   for (int i = 0; i < 4; ++i) {
     S sum = 0;
@@ -102,7 +102,7 @@ template <typename S>
 S flightClearance(const Chain<S>& chain, const BasicState<S>& from, const S& tau) {
   constexpr int kSamples = 256;
   const std::array<S, 4> x0 = asArray(from);
-  const auto at = [&](const S& t) { return apply(flowMatrix(chain, t), x0); };
+  const auto at = [&](const S& t) { return times(flowMatrix(chain, t), x0); };
   S least = std::numeric_limits<S>::infinity();
   std::array<S, 4> previous = x0;
   S tPrevious = 0;
@@ -292,7 +292,7 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
   const std::array<S, 4> flow = field(chain, end);
   std::array<std::array<S, 4>, 3> carried{};
   for (int c = 0; c < 3; ++c) {
-    std::array<S, 4> y = apply(monodromy, lifts[std::size_t(c)]);
+    std::array<S, 4> y = times(monodromy, lifts[std::size_t(c)]);
     const S along = y[1] / flow[1];  // the time shift that brings u2 back onto H
     for (int i = 0; i < 4; ++i) y[i] -= along * flow[i];
     carried[std::size_t(c)] = y;

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Periodic impacting orbits and their exact stability (docs/model.md section 10): the flow
+// matrix is the solver's flight, the identities det DP = 1, M's trivial pair at 1 and
+// tr M = 2 + tr DP hold on every orbit, the exact Jacobian is the map's finite differences,
+// Newton finds the 1IPP orbit of the closed form, double agrees with binary128, and the
+// symmetry of type A is recognised.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+
+#include "core/chain.h"
+#include "core/orbits.h"
+#include "core/periodic_orbit.h"
+#include "core/setup.h"
+#include "core/simulate.h"
+
+namespace grazelab::core {
+namespace {
+
+template <typename S = double>
+Chain<S> resonantChain(double m2 = 0.5, Branch branch = Branch::Upper) {
+  return *makeChain(*designedModel<S>(S(1), S(m2), S(1), S(1), branch)).chain;
+}
+
+template <typename S>
+S slowPeriod(const Chain<S>& chain) {
+  return twoPi<S>() / chain.omegaSlow;
+}
+
+TEST(PeriodicOrbitTest, theFlowMatrixCarriesAStateAsTheSolverDoes) {
+  const Chain<double> chain = resonantChain();
+  const State start{0.1, -0.2, 0.05, 0.1};  // small: a free flight that stays below the stop
+  for (double tau : {0.1, 1.7, 5.3, 8.8}) {
+    Request request;
+    request.initial = start;
+    request.tEnd = tau;
+    request.maxContacts = 10;
+    const Result run = simulate(chain.model, request);
+    ASSERT_TRUE(run.events.empty()) << tau;
+    const Matrix4<double> phi = flowMatrix(chain, tau);
+    const double x[4] = {start.u1, start.u2, start.v1, start.v2};
+    const double expected[4] = {run.final.u1, run.final.u2, run.final.v1, run.final.v2};
+    for (int i = 0; i < 4; ++i) {
+      double y = 0;
+      for (int k = 0; k < 4; ++k) y += phi[i][k] * x[k];
+      EXPECT_NEAR(y, expected[i], 1e-13) << "tau " << tau << " row " << i;
+    }
+  }
+}
+
+TEST(PeriodicOrbitTest, everyOnePeriodicOrbitSatisfiesTheIdentities) {
+  for (Branch branch : {Branch::Upper, Branch::Lower}) {
+    const Chain<double> chain = resonantChain(0.5, branch);
+    const double T2 = slowPeriod(chain);
+    int checked = 0;
+    for (double fraction = 0.52; fraction < 0.999; fraction += 0.013) {
+      const OrbitSearch<double> found = onePeriodicOrbitStability(chain, fraction * T2);
+      if (!found.orbit) continue;
+      const PeriodicOrbit<double>& orbit = *found.orbit;
+      ++checked;
+      EXPECT_NEAR(orbit.period, fraction * T2, 1e-12 * T2);
+      EXPECT_LT(std::abs(orbit.checks.detMinus1), 1e-12) << fraction;
+      // a double eigenvalue moves by the square root of the rounding
+      EXPECT_LT(orbit.checks.trivialPair, 1e-6) << fraction;
+      EXPECT_LT(orbit.checks.periodicityResidual, 1e-13) << fraction;
+      double traceM = 0;
+      for (int i = 0; i < 4; ++i) traceM += orbit.monodromy[i][i];
+      EXPECT_NEAR(traceM - 2, orbit.trace, 1e-10 * std::max(1.0, std::abs(orbit.trace))) << fraction;
+      // the multipliers' product is det = 1 and their sum the trace
+      const auto& mu = orbit.multipliers;
+      EXPECT_NEAR(mu[0][0] + mu[1][0], orbit.trace, 1e-12 * std::max(1.0, std::abs(orbit.trace)));
+      EXPECT_NEAR(mu[0][0] * mu[1][0] - mu[0][1] * mu[1][1], 1.0, 1e-10);
+      EXPECT_EQ(orbitSymmetry(orbit, 1e-12), "A");  // v1 = 0 at the impact
+    }
+    EXPECT_GT(checked, 10);
+  }
+}
+
+// The Jacobian from flow and saltation matrices against central differences of the return map
+// at fixed energy (which keep only about half of double's digits). Periods on both admissible
+// parts of the family (below T1 and above).
+TEST(PeriodicOrbitTest, theExactJacobianIsTheMapsFiniteDifference) {
+  const Chain<double> chain = resonantChain();
+  const double T2 = slowPeriod(chain);
+  for (double fraction : {0.45, 0.8, 0.93}) {
+    const OrbitSearch<double> found = onePeriodicOrbitStability(chain, fraction * T2);
+    ASSERT_TRUE(found.orbit) << found.problem;
+    const PeriodicOrbit<double>& orbit = *found.orbit;
+    const auto map = [&](double u1, double v1) {
+      const std::optional<State> start = sectionState(chain, orbit.energy, u1, v1);
+      EXPECT_TRUE(start);
+      if (!start) return std::array<double, 2>{};
+      const PeriodicOrbit<double> image = evaluateOrbit(chain, *start, 1, 1.0);
+      EXPECT_EQ(image.events.size(), 1u) << image.reason;
+      return std::array<double, 2>{image.events.back().after.u1, image.events.back().after.v1};
+    };
+    const double h = 1e-6;
+    const auto plusU = map(orbit.state.u1 + h, orbit.state.v1);
+    const auto minusU = map(orbit.state.u1 - h, orbit.state.v1);
+    const auto plusV = map(orbit.state.u1, orbit.state.v1 + h);
+    const auto minusV = map(orbit.state.u1, orbit.state.v1 - h);
+    for (int i = 0; i < 2; ++i) {
+      const double byU = (plusU[std::size_t(i)] - minusU[std::size_t(i)]) / (2 * h);
+      const double byV = (plusV[std::size_t(i)] - minusV[std::size_t(i)]) / (2 * h);
+      EXPECT_NEAR(orbit.reduced[std::size_t(i)][0], byU, 1e-6 * std::max(1.0, std::abs(byU))) << fraction;
+      EXPECT_NEAR(orbit.reduced[std::size_t(i)][1], byV, 1e-6 * std::max(1.0, std::abs(byV))) << fraction;
+    }
+    // and the energy derivative, at fixed (u1, v1)
+    const auto atEnergy = [&](double energy) {
+      const std::optional<State> start = sectionState(chain, energy, orbit.state.u1, orbit.state.v1);
+      EXPECT_TRUE(start);
+      if (!start) return std::array<double, 2>{};
+      const PeriodicOrbit<double> image = evaluateOrbit(chain, *start, 1, 1.0);
+      return std::array<double, 2>{image.events.back().after.u1, image.events.back().after.v1};
+    };
+    const double e = 1e-6 * orbit.energy;
+    const auto up = atEnergy(orbit.energy + e);
+    const auto down = atEnergy(orbit.energy - e);
+    for (int i = 0; i < 2; ++i) {
+      const double byE = (up[std::size_t(i)] - down[std::size_t(i)]) / (2 * e);
+      EXPECT_NEAR(orbit.energyDerivative[std::size_t(i)], byE, 1e-5 * std::max(1.0, std::abs(byE))) << fraction;
+    }
+  }
+}
+
+TEST(PeriodicOrbitTest, newtonFindsTheOnePeriodicOrbitOfTheClosedForm) {
+  const Chain<double> chain = resonantChain();
+  const double T2 = slowPeriod(chain);
+  for (double fraction : {0.45, 0.8, 0.95}) {
+    const OrbitSearch<double> closedForm = onePeriodicOrbitStability(chain, fraction * T2);
+    ASSERT_TRUE(closedForm.orbit) << closedForm.problem;
+    const PeriodicOrbit<double>& exact = *closedForm.orbit;
+    const OrbitSearch<double> found =
+        findOrbit(chain, exact.energy, exact.state.u1 + 1e-3, exact.state.v1 - 2e-3, 1);
+    ASSERT_TRUE(found.orbit) << found.problem;
+    EXPECT_NEAR(found.orbit->state.u1, exact.state.u1, 1e-12);
+    EXPECT_NEAR(found.orbit->state.v1, 0.0, 1e-12);
+    EXPECT_NEAR(found.orbit->period, fraction * T2, 1e-11 * T2);
+    EXPECT_NEAR(found.orbit->trace, exact.trace, 1e-9);
+    EXPECT_LT(found.iterations, 10);  // quadratic convergence
+  }
+}
+
+TEST(PeriodicOrbitTest, binary128AgreesWithDoubleAndMeetsTheIdentitiesTo1e28) {
+  const Chain<double> chain = resonantChain();
+  const Chain<Quad> exact = resonantChain<Quad>();
+  const double T2 = slowPeriod(chain);
+  for (double fraction : {0.45, 0.72, 0.9}) {
+    const OrbitSearch<double> inDouble = onePeriodicOrbitStability(chain, fraction * T2);
+    ASSERT_TRUE(inDouble.orbit) << inDouble.problem;
+    const PeriodicOrbit<double>& orbit = *inDouble.orbit;
+    const OrbitSearch<Quad> found = onePeriodicOrbitStability(exact, Quad(fraction) * slowPeriod(exact));
+    ASSERT_TRUE(found.orbit) << found.problem;
+    const PeriodicOrbit<Quad>& quad = *found.orbit;
+    EXPECT_NEAR(orbit.trace, double(quad.trace), 1e-10 * std::max(1.0, std::abs(orbit.trace)));
+    EXPECT_LT(abs(quad.checks.detMinus1), Quad(1e-28));
+    EXPECT_LT(quad.checks.periodicityResidual, Quad(1e-30));
+    EXPECT_LT(quad.checks.trivialPair, Quad(1e-14));
+  }
+}
+
+TEST(PeriodicOrbitTest, aPathThatIsNotTheOrbitIsRefusedWithItsReason) {
+  const Chain<double> chain = resonantChain();
+  const double T2 = slowPeriod(chain);
+  const OrbitSearch<double> found = onePeriodicOrbitStability(chain, 0.8 * T2);
+  ASSERT_TRUE(found.orbit) << found.problem;
+  const PeriodicOrbit<double>& orbit = *found.orbit;
+  // the same orbit, asked to close after 2 impacts: a 1-impact orbit repeated
+  const PeriodicOrbit<double> twice = evaluateOrbit(chain, orbit.state, 2, defaultCloseTolerance<double>());
+  EXPECT_FALSE(twice.admissible);
+  EXPECT_NE(twice.reason.find("1-impact orbit repeated"), std::string::npos) << twice.reason;
+  // a nearby start does not close
+  State off = orbit.state;
+  off.u1 += 1e-3;
+  const std::optional<State> offStart = sectionState(chain, orbit.energy, off.u1, off.v1);
+  ASSERT_TRUE(offStart);
+  const PeriodicOrbit<double> open = evaluateOrbit(chain, *offStart, 1, defaultCloseTolerance<double>());
+  EXPECT_FALSE(open.admissible);
+  EXPECT_NE(open.reason.find("does not close"), std::string::npos) << open.reason;
+  // no state of that energy there
+  EXPECT_FALSE(findOrbit(chain, orbit.energy, 50.0, 0.0, 1).orbit);
+}
+
+}  // namespace
+}  // namespace grazelab::core
