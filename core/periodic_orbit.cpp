@@ -399,6 +399,13 @@ OrbitSearch<S> onePeriodicOrbitStability(const Chain<S>& chain, const S& T) {
     return search;
   }
   PeriodicOrbit<S> orbit = evaluateOrbit(chain, data.postImpact, 1, defaultCloseTolerance<S>());
+  if (!orbit.admissible && orbit.reason.find("does not close") != std::string::npos) {
+    // near a multiple of T1 the closed form loses digits like 1 / (T1 - T): its data are
+    // polished by Newton at their energy (the orbit itself is well conditioned there)
+    OrbitSearch<S> polished = findOrbit(chain, orbit.energy, data.postImpact.u1, data.postImpact.v1, 1);
+    using std::abs;
+    if (polished.orbit && abs(polished.orbit->period - T) <= S(1e-6) * T) orbit = std::move(*polished.orbit);
+  }
   if (!orbit.admissible) {
     search.problem = "the 1IPP orbit of period " + formatScalar(T) + " is not admissible: " + orbit.reason;
     return search;

@@ -11,9 +11,14 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <cmath>
+#include <optional>
+#include <type_traits>
+
 #include "cli_input.h"
 #include "core/family.h"
 #include "core/orbits.h"
+#include "core/periodic_family.h"
 #include "npy.h"
 #include "output_files.h"
 #include "report_command.h"
@@ -34,6 +39,86 @@ QJsonObject pointJson(const core::FamilyPoint& p) {
 }
 
 
+// A stability class as a number for the .npy file (NaN where there is no admissible orbit).
+double stabilityCode(core::Stability stability) {
+  return double(int(stability));
+}
+
+template <typename S>
+QJsonValue scalarJson(const S& value) {
+  // binary128's digits would be lost in a JSON double: such numbers are written as text too
+  if constexpr (std::is_same_v<S, double>) return value;
+  else return QString::fromStdString(core::formatScalar(value));
+}
+
+template <typename S>
+QJsonObject stateJson(const core::BasicState<S>& x) {
+  return {{"u1", scalarJson(x.u1)}, {"u2", scalarJson(x.u2)}, {"v1", scalarJson(x.v1)}, {"v2", scalarJson(x.v2)}};
+}
+
+// The stability along the family in precision S: the trace of each admissible row, and the
+// bifurcations over (0, T2) with the 2-impact orbit born at each flip.
+template <typename S>
+struct FamilyStability {
+  std::vector<double> traces;
+  std::vector<double> codes;
+  QJsonArray bifurcations;
+};
+
+template <typename S>
+std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& parser,
+                                                  const std::vector<core::FamilyPoint>& family,
+                                                  std::stop_token stop, QString& error) {
+  const Parsed<ModelInput<S>> model = parseModel<S>(parser);
+  if (!model.value) {
+    error = model.error;
+    return std::nullopt;
+  }
+  const core::Chain<S>& chain = model.value->chain;
+  FamilyStability<S> result;
+  for (const core::FamilyPoint& p : family) {
+    if (stop.stop_requested()) return std::nullopt;
+    const core::OrbitSearch<S> found = p.admissible ? core::onePeriodicOrbitStability(chain, S(p.T))
+                                                    : core::OrbitSearch<S>{};
+    result.traces.push_back(found.orbit ? double(found.orbit->trace) : std::nan(""));
+    result.codes.push_back(found.orbit ? stabilityCode(found.orbit->stability) : std::nan(""));
+  }
+  const S T2 = core::twoPi<S>() / chain.omegaSlow;
+  for (const core::FamilyBifurcation<S>& b : core::onePeriodicBifurcations(chain, 2000, stop)) {
+    QJsonObject point{{"kind", QString::fromStdString(b.kind)},
+                      {"T", scalarJson(b.T)},
+                      {"T_over_T2", scalarJson(S(b.T / T2))},
+                      {"energy", scalarJson(b.energy)},
+                      {"trace", scalarJson(b.trace)},
+                      {"state", stateJson(b.state)}};
+    if (b.kind == "undecided") {
+      point["note"] = "not a bifurcation: beyond this period the orbit's data lose their digits "
+                      "(near a multiple of T1) or a contact cannot be decided in this precision; "
+                      "a higher --precision moves the point";
+    }
+    if (b.kind == "period-doubling") {
+      const core::FlipSwitch<S> born = core::switchAtFlip(chain, b, stop);
+      if (born.search.orbit) {
+        const core::PeriodicOrbit<S>& o = *born.search.orbit;
+        const std::string symmetry = core::orbitSymmetry(o, S(1e-9));
+        point["born"] = QJsonObject{{"impacts", o.impacts},
+                                    {"side", QString::fromStdString(born.side)},
+                                    {"energy", scalarJson(o.energy)},
+                                    {"period", scalarJson(o.period)},
+                                    {"trace", scalarJson(o.trace)},
+                                    {"stability", QString::fromStdString(std::string(core::toString(o.stability)))},
+                                    {"symmetry", symmetry.empty() ? QJsonValue() : QJsonValue(QString::fromStdString(symmetry))},
+                                    {"state", stateJson(o.state)}};
+      } else {
+        point["born"] = QJsonObject{{"impacts", 2}, {"problem", QString::fromStdString(born.search.problem)}};
+      }
+    }
+    result.bifurcations.append(point);
+  }
+  if (stop.stop_requested()) return std::nullopt;
+  return result;
+}
+
 }  // namespace
 
 int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
@@ -48,8 +133,9 @@ int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& e
       return kExitInvalidInput;
     }
   }
-  if (parser.value("precision") != "auto" && parser.value("precision") != "double") {
-    error = "--precision: the family is computed in double";
+  const QString precision = parser.value("precision");
+  if (!QStringList{"auto", "double", "long", "quad"}.contains(precision)) {
+    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
     return kExitInvalidInput;
   }
   std::int64_t count = 2000;
@@ -78,15 +164,37 @@ int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& e
   const std::vector<core::FamilyPoint> family = core::onePeriodicFamily(chain, count, stop);
   if (stop.stop_requested()) return kExitInterrupted;
   const core::FamilyPoint end = core::grazingEnd(chain);
+  // the stability of every admissible orbit and the family's bifurcations, in the precision asked
+  std::vector<double> traces;
+  std::vector<double> codes;
+  QJsonArray bifurcations;
+  const auto take = [&](auto stability) {
+    if (!stability) return false;
+    traces = std::move(stability->traces);
+    codes = std::move(stability->codes);
+    bifurcations = std::move(stability->bifurcations);
+    return true;
+  };
+  const bool computed = precision == "long"   ? take(familyStability<long double>(parser, family, stop, error))
+                        : precision == "quad" ? take(familyStability<core::Quad>(parser, family, stop, error))
+                                              : take(familyStability<double>(parser, family, stop, error));
+  if (stop.stop_requested()) return kExitInterrupted;
+  if (!computed) return kExitInvalidInput;
 
-  QByteArray csv = "T,omega,V,u1,energy,admissible\n";
+  QByteArray csv = "T,omega,V,u1,energy,admissible,trace,stability\n";
   NpyArray array;
   array.rows = std::int64_t(family.size());
-  array.columns = 6;
-  for (const core::FamilyPoint& p : family) {
+  array.columns = 8;
+  for (std::size_t i = 0; i < family.size(); ++i) {
+    const core::FamilyPoint& p = family[i];
+    const QByteArray stability = std::isnan(codes[i]) ? QByteArray()
+                                 : QByteArray(core::toString(core::Stability(int(codes[i]))).data());
     csv += number(p.T) + "," + number(p.omega) + "," + number(p.V) + "," + number(p.u1) + "," +
-           number(p.energy) + "," + (p.admissible ? "1" : "0") + "\n";
-    for (double v : {p.T, p.omega, p.V, p.u1, p.energy, p.admissible ? 1.0 : 0.0}) array.reals.push_back(v);
+           number(p.energy) + "," + (p.admissible ? "1" : "0") + "," +
+           (std::isnan(traces[i]) ? QByteArray() : number(traces[i])) + "," + stability + "\n";
+    for (double v : {p.T, p.omega, p.V, p.u1, p.energy, p.admissible ? 1.0 : 0.0, traces[i], codes[i]}) {
+      array.reals.push_back(v);
+    }
   }
   const core::Model& m = chain.model;
   const QJsonObject json{
@@ -96,7 +204,13 @@ int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& e
                             {"T2", core::twoPi<double>() / chain.omegaSlow}}},
       {"lambda_star", core::lambdaStar(chain)},
       {"grazing_end", pointJson(end)},
-      {"columns", QJsonArray{"T", "omega", "V", "u1", "energy", "admissible"}},
+      {"columns", QJsonArray{"T", "omega", "V", "u1", "energy", "admissible", "trace", "stability"}},
+      {"stability_precision", precision == "auto" ? QStringLiteral("double") : precision},
+      {"trace", "tr DP of the return map at fixed energy (exact: flow and saltation matrices), in "
+                "the stability precision; empty (NaN in the .npy) where the orbit is not admissible"},
+      {"stability", "elliptic (|tr| < 2), hyperbolic (tr > 2), flip-hyperbolic (tr < -2), parabolic "
+                    "(|tr| = 2 within rounding); in the .npy 0, 1, 2, 3 (NaN: not admissible)"},
+      {"bifurcations", bifurcations},
       {"rows", qint64(family.size())},
       {"periods", QStringLiteral("T2 k / (count + 1) for k = 1 ... %1, and T2 (1 - 2^-k) for k = 8 ... 40, "
                                  "sorted; multiples of T1 left out").arg(count)},
@@ -107,8 +221,9 @@ int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& e
                        "masses: a mass that is not a binary number (m2 = 0.3) read exactly moves "
                        "V there by up to that factor times 1e-17"},
       {"files", QJsonObject{{"csv", QFileInfo(prefix).fileName() + ".csv"},
-                            {"npy", QFileInfo(prefix).fileName() + ".npy (float64, rows x 6 "
-                                    "columns in the CSV's order, admissible as 1.0 / 0.0)"}}},
+                            {"npy", QFileInfo(prefix).fileName() + ".npy (float64, rows x 8 "
+                                    "columns in the CSV's order, admissible as 1.0 / 0.0, "
+                                    "stability as 0..3)"}}},
       {"admissible", "1 when V < 0 and the free flight from the data first returns to the stop "
                      "at T (exact contact search), else 0"},
       {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};

@@ -24,6 +24,7 @@
 #include "cli_output.h"
 #include "core/trust.h"
 #include "family_command.h"
+#include "orbit_command.h"
 #include "map_command.h"
 #include "report_command.h"
 #include "simulate_command.h"
@@ -136,22 +137,25 @@ int main(int argc, char* argv[]) {
       "report (every method against the exact solver: error against run time, --out DIR), "
       "stability (every method on stiff and extreme cases, --out DIR), map (a 2-D grid of runs "
       "reduced to summaries: --x, --y, --out PREFIX), merge (join a map's stripes: --out PREFIX "
-      "PART1 ... PARTN), family --onepp (the 1IPP family: --out PREFIX).");
-  parser.addPositionalArgument("command", "info | simulate | report | stability | map | merge | family");
+      "PART1 ... PARTN), family --onepp (the 1IPP family: --out PREFIX), orbit (one periodic impacting orbit with its "
+      "exact multipliers: --onepp --period T, or --impacts K --energy E --guess U1,V1).");
+  parser.addPositionalArgument("command", "info | simulate | report | stability | map | merge | family | orbit");
   const QCommandLineOption help = parser.addHelpOption();
   const QCommandLineOption version = parser.addVersionOption();
   grazelab::cli::addOptions(parser);
   grazelab::cli::addReportOptions(parser);
   grazelab::cli::addMapOptions(parser);
+  grazelab::cli::addOrbitOptions(parser);
 
-  // `family --onepp` names the family: the option takes no period there
+  // `family --onepp` and `orbit --onepp` name the family: the option takes no period there
   QStringList arguments = QCoreApplication::arguments();
-  if (arguments.contains("family")) {
+  for (const QString& command : {QStringLiteral("family"), QStringLiteral("orbit")}) {
+    if (!arguments.contains(command)) continue;
     for (qsizetype i = 0; i < arguments.size(); ++i) {
       const bool bare = arguments[i] == "--onepp" &&
                         (i + 1 == arguments.size() || arguments[i + 1].startsWith("--") ||
-                         arguments[i + 1] == "family");
-      if (bare) arguments[i] = "--onepp=family";
+                         arguments[i + 1] == command);
+      if (bare) arguments[i] = "--onepp=" + command;
     }
   }
   if (!parser.parse(arguments)) return fail(parser.errorText());
@@ -173,9 +177,17 @@ int main(int argc, char* argv[]) {
     return ended(grazelab::cli::runMerge(parser, positional.mid(1), watcher.token(), error), error);
   }
   if (positional.size() != 1) {
-    return fail("expected one command: info, simulate, report, stability, map, merge or family (see --help)");
+    return fail("expected one command: info, simulate, report, stability, map, merge, family or orbit (see --help)");
   }
   const QString command = positional.first();
+  if (command == "orbit") {
+    QString error;
+    const int code = grazelab::cli::runOrbit(parser, watcher.token(), error);
+    if (code == kInvalidInput) return fail(error);
+    return code;
+  }
+  const QStringList orbitOnly = grazelab::cli::orbitOnlyOptionsSet(parser);
+  if (!orbitOnly.isEmpty()) return fail(orbitOnly.join(", ") + " only apply to 'orbit'");
   if (command == "map") {
     QString error;
     return ended(grazelab::cli::runMap(parser, watcher.token(), error), error);
@@ -225,5 +237,5 @@ int main(int argc, char* argv[]) {
     const int code = grazelab::cli::runSimulate(parser, *precision, *trust, watcher.token(), error);
     return code == kInvalidInput ? fail(error) : code;
   }
-  return fail(QStringLiteral("unknown command '%1': use info, simulate, report, stability, map, merge or family").arg(command));
+  return fail(QStringLiteral("unknown command '%1': use info, simulate, report, stability, map, merge, family or orbit").arg(command));
 }

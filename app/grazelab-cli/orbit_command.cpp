@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// `grazelab-cli orbit`: one periodic impacting orbit, its multipliers, stability and checks.
+#include "orbit_command.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+#include <cstdio>
+#include <string>
+
+#include "cli_input.h"
+#include "core/periodic_orbit.h"
+#include "report_command.h"
+
+namespace grazelab::cli {
+namespace {
+
+const QStringList kOrbitOnly = {"period", "impacts", "energy", "guess"};
+
+template <typename S>
+std::string number(const S& value) {
+  return core::isFinite(value) ? core::formatScalar(value) : std::string("null");
+}
+
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+template <typename S>
+std::string stateJson(const core::BasicState<S>& x) {
+  return "{\"u1\": " + number(x.u1) + ", \"u2\": " + number(x.u2) + ", \"v1\": " + number(x.v1) +
+         ", \"v2\": " + number(x.v2) + "}";
+}
+
+template <typename S>
+std::string orbitJson(const core::PeriodicOrbit<S>& orbit, const core::Chain<S>& chain,
+                      const std::string& precision) {
+  const S T2 = core::twoPi<S>() / chain.omegaSlow;
+  std::string events = "[";
+  for (std::size_t i = 0; i < orbit.events.size(); ++i) {
+    const core::BasicEvent<S>& e = orbit.events[i];
+    if (i > 0) events += ", ";
+    events += "{\"t\": " + number(e.t) + ", \"type\": " + quoted(std::string(core::toString(e.type))) +
+              ", \"before\": " + stateJson(e.before) + ", \"after\": " + stateJson(e.after) + "}";
+  }
+  events += "]";
+  const auto& mu = orbit.multipliers;
+  const std::string symmetry = core::orbitSymmetry(orbit, S(1e-9));
+  const core::BasicModel<S>& m = chain.model;
+  std::string out = "{\n";
+  out += "  \"format\": \"grazelab-orbit\",\n";
+  out += "  \"precision\": " + quoted(precision) + ",\n";
+  out += "  \"model\": {\"m1\": " + number(m.m1) + ", \"m2\": " + number(m.m2) + ", \"k1\": " +
+         number(m.k1) + ", \"k2\": " + number(S(chain.kappa * m.k1)) + ", \"gap\": " + number(m.gap) +
+         ", \"T2\": " + number(T2) + "},\n";
+  out += "  \"period\": " + number(orbit.period) + ",\n";
+  out += "  \"T_over_T2\": " + number(S(orbit.period / T2)) + ",\n";
+  out += "  \"energy\": " + number(orbit.energy) + ",\n";
+  out += "  \"impacts\": " + std::to_string(orbit.impacts) + ",\n";
+  out += "  \"state\": " + stateJson(orbit.state) + ",\n";
+  out += "  \"events\": " + events + ",\n";
+  out += "  \"trace\": " + number(orbit.trace) + ",\n";
+  out += "  \"multipliers\": [[" + number(mu[0][0]) + ", " + number(mu[0][1]) + "], [" +
+         number(mu[1][0]) + ", " + number(mu[1][1]) + "]],\n";
+  out += "  \"stability\": " + quoted(std::string(core::toString(orbit.stability))) + ",\n";
+  out += "  \"symmetry\": " + (symmetry.empty() ? std::string("null") : quoted(symmetry)) + ",\n";
+  out += "  \"checks\": {\"det_minus_1\": " + number(orbit.checks.detMinus1) +
+         ", \"trivial_pair\": " + number(orbit.checks.trivialPair) +
+         ", \"periodicity_residual\": " + number(orbit.checks.periodicityResidual) + "},\n";
+  out += "  \"min_impact_speed\": " + number(orbit.minImpactSpeed) + ",\n";
+  out += "  \"min_clearance\": " + number(orbit.minClearance) + ",\n";
+  out += "  \"admissible\": true,\n";
+  out += "  \"reason\": null,\n";
+  out += "  \"generator\": " + quoted("grazelab-cli " + QCoreApplication::applicationVersion().toStdString()) + "\n";
+  out += "}\n";
+  return out;
+}
+
+// Reads --NAME as a number of S, or says why not.
+template <typename S>
+std::optional<S> scalarOption(const QCommandLineParser& parser, const char* name, QString& error) {
+  const core::ParsedScalar<S> parsed = core::parseScalar<S>(parser.value(name).toStdString());
+  if (!parsed.value) {
+    error = QStringLiteral("--%1: '%2' %3").arg(name, parser.value(name), QString::fromStdString(parsed.error));
+  }
+  return parsed.value;
+}
+
+enum class Outcome { Found, Undecided, Refused };
+
+// The orbit in precision S: written to stdout when found; `error` says why not.
+template <typename S>
+Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, std::stop_token stop,
+                QString& error) {
+  const Parsed<ModelInput<S>> model = parseModel<S>(parser);
+  if (!model.value) {
+    error = model.error;
+    return Outcome::Refused;
+  }
+  const core::Chain<S>& chain = model.value->chain;
+  core::OrbitSearch<S> search;
+  if (parser.isSet("onepp")) {
+    const std::optional<S> T = scalarOption<S>(parser, "period", error);
+    if (!T) return Outcome::Refused;
+    search = core::onePeriodicOrbitStability(chain, *T);
+  } else {
+    bool ok = false;
+    const int impacts = parser.value("impacts").toInt(&ok);
+    if (!ok || impacts < 1 || impacts > 64) {
+      error = QStringLiteral("--impacts: '%1' is not a number of impacts from 1 to 64").arg(parser.value("impacts"));
+      return Outcome::Refused;
+    }
+    const std::optional<S> energy = scalarOption<S>(parser, "energy", error);
+    if (!energy) return Outcome::Refused;
+    const QStringList guess = parser.value("guess").split(',');
+    if (guess.size() != 2) {
+      error = QStringLiteral("--guess: '%1' is not two numbers u1,v1").arg(parser.value("guess"));
+      return Outcome::Refused;
+    }
+    const core::ParsedScalar<S> u1 = core::parseScalar<S>(guess[0].trimmed().toStdString());
+    const core::ParsedScalar<S> v1 = core::parseScalar<S>(guess[1].trimmed().toStdString());
+    if (!u1.value || !v1.value) {
+      error = QStringLiteral("--guess: '%1' is not two numbers u1,v1").arg(parser.value("guess"));
+      return Outcome::Refused;
+    }
+    search = core::findOrbit(chain, *energy, *u1.value, *v1.value, impacts, stop);
+  }
+  if (!search.orbit) {
+    error = QString::fromStdString("orbit: " + search.problem);
+    return search.problem.find("too near tangent") != std::string::npos ? Outcome::Undecided
+                                                                          : Outcome::Refused;
+  }
+  const std::string json = orbitJson(*search.orbit, chain, precision);
+  std::fwrite(json.data(), 1, json.size(), stdout);
+  return Outcome::Found;
+}
+
+}  // namespace
+
+void addOrbitOptions(QCommandLineParser& parser) {
+  parser.addOptions({
+      {"period", "orbit --onepp: the period T of the 1IPP orbit.", "T"},
+      {"impacts", "orbit: impacts per period K of the orbit sought.", "K"},
+      {"energy", "orbit: the energy E of the orbit sought.", "E"},
+      {"guess", "orbit: a guess of the orbit's point just after an impact on H.", "u1,v1"},
+  });
+}
+
+QStringList orbitOnlyOptionsSet(const QCommandLineParser& parser) {
+  QStringList set;
+  for (const QString& name : kOrbitOnly) {
+    if (parser.isSet(name)) set << "--" + name;
+  }
+  return set;
+}
+
+int runOrbit(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
+  for (const char* name : {"glo", "state", "perturb", "contacts", "t-end", "trust", "x", "y",
+                           "threads", "shard", "picture", "methods", "quick", "count", "out",
+                           "search-steps"}) {
+    if (parser.isSet(name)) {
+      error = QStringLiteral("--%1 does not apply to 'orbit'").arg(name);
+      return kExitInvalidInput;
+    }
+  }
+  if (parser.isSet("format") && parser.value("format") != "json") {
+    error = "orbit: --format json is the only format";
+    return kExitInvalidInput;
+  }
+  const bool onePeriodic = parser.isSet("onepp");
+  if (onePeriodic == parser.isSet("impacts")) {
+    error = "orbit: give --onepp --period T, or --impacts K --energy E --guess U1,V1";
+    return kExitInvalidInput;
+  }
+  if (onePeriodic && (!parser.isSet("period") || parser.isSet("energy") || parser.isSet("guess"))) {
+    error = "orbit --onepp: give --period T (and no --energy or --guess)";
+    return kExitInvalidInput;
+  }
+  if (!onePeriodic && (!parser.isSet("energy") || !parser.isSet("guess") || parser.isSet("period"))) {
+    error = "orbit --impacts K: give --energy E and --guess U1,V1 (and no --period)";
+    return kExitInvalidInput;
+  }
+  const QString precision = parser.value("precision");
+  Outcome outcome = Outcome::Refused;
+  if (precision == "double") outcome = orbitIn<double>(parser, "double", stop, error);
+  else if (precision == "long") outcome = orbitIn<long double>(parser, "long", stop, error);
+  else if (precision == "quad") outcome = orbitIn<core::Quad>(parser, "quad", stop, error);
+  else if (precision == "auto") {
+    // double, and again in long double then binary128 when a contact is too near tangent
+    outcome = orbitIn<double>(parser, "double", stop, error);
+    if (outcome == Outcome::Undecided) outcome = orbitIn<long double>(parser, "long", stop, error);
+    if (outcome == Outcome::Undecided) outcome = orbitIn<core::Quad>(parser, "quad", stop, error);
+  } else {
+    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
+    return kExitInvalidInput;
+  }
+  if (stop.stop_requested()) return kExitInterrupted;
+  return outcome == Outcome::Found ? kExitOk : kExitInvalidInput;
+}
+
+}  // namespace grazelab::cli

@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 GrazeLab developers
+# `orbit` (issue 22): a 1IPP orbit agrees with the family's table and meets its identities in
+# double and binary128; a 2-impact orbit is found from the family's flip; refusals are one line
+# with exit 2. Usage: orbit_test.sh GRAZELAB_CLI
+set -uo pipefail
+cli="$1"
+here="$(cd "$(dirname "$0")" && pwd)"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+out="$work/stdout"
+err="$work/stderr"
+failures=0
+source "$here/contract_lib.sh"
+
+expect_ok family --onepp --count 300 --out "$work/f" || exit 1
+# the admissible row nearest 0.9 T2, and the first flip of the family
+read -r period trace < <(python3 - "$work/f.csv" "$work/f.json" <<'PY'
+import json, sys
+T2 = json.load(open(sys.argv[2]))['model']['T2']
+rows = [l.split(',') for l in open(sys.argv[1]).read().splitlines()[1:]]
+row = min((r for r in rows if r[5] == '1'), key=lambda r: abs(float(r[0]) - 0.9 * T2))
+print(row[0], row[6])
+PY
+)
+expect_ok orbit --onepp --period "$period" || exit 1
+python3 - "$out" "$period" "$trace" <<'PY' || fail "1IPP orbit"
+import json, sys
+o = json.load(open(sys.argv[1])); T = float(sys.argv[2]); trace = float(sys.argv[3])
+assert o['format'] == 'grazelab-orbit' and o['admissible'] is True and o['impacts'] == 1, o
+assert o['period'] == T and o['trace'] == trace, (o['period'], T, o['trace'], trace)  # the table's, bit for bit
+assert abs(o['checks']['det_minus_1']) < 1e-13 and o['checks']['periodicity_residual'] < 1e-13, o['checks']
+assert o['checks']['trivial_pair'] < 1e-6, o['checks']
+mu = o['multipliers']
+assert abs(mu[0][0] + mu[1][0] - o['trace']) < 1e-12
+assert o['stability'] == ('elliptic' if abs(o['trace']) < 2 else 'hyperbolic' if o['trace'] > 2 else 'flip-hyperbolic')
+assert o['symmetry'] == 'A' and o['state']['v1'] == 0 and o['state']['u2'] == 1 and o['state']['v2'] < 0
+assert len(o['events']) == 1 and o['events'][0]['type'] == 'impact' and abs(o['events'][0]['t'] - T) < 1e-12 * T
+PY
+# binary128: its digits, and its identities to ~1e-30
+expect_ok orbit --onepp --period "$period" --precision quad || exit 1
+python3 - "$out" "$trace" <<'PY' || fail "1IPP orbit in binary128"
+import json, re, sys
+text = open(sys.argv[1]).read()
+o = json.loads(text)
+assert o['precision'] == 'quad'
+digits = re.search(r'"trace": (-?[0-9.e+-]+)', text).group(1)
+assert len(digits.replace('-', '').replace('.', '').split('e')[0]) >= 30, digits
+assert abs(o['trace'] - float(sys.argv[2])) < 1e-12
+assert abs(o['checks']['det_minus_1']) < 1e-30 and o['checks']['periodicity_residual'] < 1e-30, o['checks']
+PY
+# the 2-impact orbit born at the first flip, from its state and energy
+read -r energy guess bornPeriod < <(python3 - "$work/f.json" <<'PY'
+import json, sys
+flip = next(b for b in json.load(open(sys.argv[1]))['bifurcations'] if b['kind'] == 'period-doubling')
+born = flip['born']
+print(repr(born['energy']), '%r,%r' % (born['state']['u1'] + 1e-6, born['state']['v1']), repr(born['period']))
+PY
+)
+expect_ok orbit --impacts 2 --energy "$energy" --guess "$guess" || exit 1
+python3 - "$out" "$bornPeriod" <<'PY' || fail "2-impact orbit"
+import json, sys
+o = json.load(open(sys.argv[1]))
+assert o['impacts'] == 2 and len(o['events']) == 2 and all(e['type'] == 'impact' for e in o['events'])
+assert abs(o['period'] - float(sys.argv[2])) < 1e-9 * o['period'], (o['period'], sys.argv[2])
+assert o['symmetry'] in ('A', 'B'), o['symmetry']
+assert abs(o['checks']['det_minus_1']) < 1e-12
+PY
+
+EXPECT_WORD="--period" expect_invalid orbit --onepp
+EXPECT_WORD="--impacts" expect_invalid orbit --impacts 0 --energy 1 --guess 0,0
+EXPECT_WORD="--guess" expect_invalid orbit --impacts 1 --energy 1 --guess 0.5
+EXPECT_WORD="no state of energy" expect_invalid orbit --impacts 1 --energy 0.01 --guess 3,0
+EXPECT_WORD="no admissible 1IPP orbit" expect_invalid orbit --onepp --period 9.5
+EXPECT_WORD="does not apply" expect_invalid orbit --onepp --period 6 --contacts 3
+EXPECT_WORD="only apply to 'orbit'" expect_invalid simulate --energy 2
+if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
+echo "orbit: all checks passed"
