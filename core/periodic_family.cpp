@@ -117,13 +117,16 @@ std::vector<FamilyBifurcation<S>> onePeriodicBifurcations(const Chain<S>& chain,
 
 template <typename S>
 FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& flip,
-                           std::stop_token stop) {
+                           int impacts, std::stop_token stop) {
   using std::abs;
   using std::sqrt;
   FlipSwitch<S> result;
-  const std::optional<PeriodicOrbit<S>> orbit = orbitAt(chain, flip.T);
+  // the flip's orbit again, with its Jacobian (a located point closes to the last bits)
+  const PeriodicOrbit<S> evaluated = evaluateOrbit(chain, flip.state, impacts, S(1e6) * defaultCloseTolerance<S>());
+  const std::optional<PeriodicOrbit<S>> orbit =
+      evaluated.admissible ? std::optional<PeriodicOrbit<S>>(evaluated) : std::nullopt;
   if (!orbit) {
-    result.search.problem = "no admissible 1IPP orbit at the flip";
+    result.search.problem = "the orbit at the flip is not admissible: " + evaluated.reason;
     return result;
   }
   // the eigenvector of DP for -1: (DP + I) e = 0, from the row with the larger entries
@@ -140,7 +143,7 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
   const S size = sqrt(eu * eu / (d * d) + ev * ev / (d * d * w * w));
   eu /= size;
   ev /= size;
-  for (const double offset : {1e-5, 1e-4, 1e-3}) {
+  for (const double offset : {1e-3, 1e-4, 1e-5}) {
     for (const int sign : {-1, 1}) {
       for (const double reach : {0.3, 1.0, 3.0}) {
         for (const int direction : {1, -1}) {
@@ -152,7 +155,7 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
           // the new orbit's distance grows like the square root of the energy offset
           const S push = S(direction * reach * std::sqrt(offset));
           OrbitSearch<S> search = findOrbit(chain, energy, S(orbit->state.u1 + push * eu),
-                                            S(orbit->state.v1 + push * ev), 2, stop);
+                                            S(orbit->state.v1 + push * ev), 2 * impacts, stop);
           if (!search.orbit) {
             result.search.problem = search.problem;
             continue;
@@ -165,7 +168,7 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
       }
     }
   }
-  result.search.problem = "no 2-impact orbit found near the flip at T = " + formatScalar(flip.T) +
+  result.search.problem = "no " + std::to_string(2 * impacts) + "-impact orbit found near the flip at T = " + formatScalar(flip.T) +
                           " (last: " + result.search.problem + ")";
   return result;
 }
@@ -173,7 +176,7 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
 #define GRAZELAB_INSTANTIATE(S)                                                                   \
   template std::vector<FamilyBifurcation<S>> onePeriodicBifurcations<S>(const Chain<S>&, int,     \
                                                                         std::stop_token);         \
-  template FlipSwitch<S> switchAtFlip<S>(const Chain<S>&, const FamilyBifurcation<S>&,            \
+  template FlipSwitch<S> switchAtFlip<S>(const Chain<S>&, const FamilyBifurcation<S>&, int,       \
                                          std::stop_token);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)

@@ -38,9 +38,9 @@ template <typename S>
 std::vector<FamilyBifurcation<S>> onePeriodicBifurcations(const Chain<S>& chain, int samples,
                                                           std::stop_token stop = {});
 
-/// The 2-impact orbit born at a flip of the 1IPP family: Newton on P^2 from the flip orbit
-/// pushed along the eigenvector of -1, at energies a little below and above the flip's (the
-/// new family exists on one side only). `side` says which ("below" or "above").
+/// The 2k-impact orbit born at a flip of a k-impact family: Newton on P^2k from the flip orbit
+/// (`flip.state`) pushed along the eigenvector of -1, at energies a little below and above the
+/// flip's (the new family exists on one side only). `side` says which ("below" or "above").
 template <typename S>
 struct FlipSwitch {
   OrbitSearch<S> search;
@@ -49,6 +49,6 @@ struct FlipSwitch {
 };
 template <typename S>
 FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& flip,
-                           std::stop_token stop = {});
+                           int impacts = 1, std::stop_token stop = {});
 
 }  // namespace grazelab::core

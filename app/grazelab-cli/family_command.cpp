@@ -97,7 +97,7 @@ std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& pars
                       "a higher --precision moves the point";
     }
     if (b.kind == "period-doubling") {
-      const core::FlipSwitch<S> born = core::switchAtFlip(chain, b, stop);
+      const core::FlipSwitch<S> born = core::switchAtFlip(chain, b, 1, stop);
       if (born.search.orbit) {
         const core::PeriodicOrbit<S>& o = *born.search.orbit;
         const std::string symmetry = core::orbitSymmetry(o, S(1e-9));

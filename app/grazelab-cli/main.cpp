@@ -26,6 +26,7 @@
 #include "family_command.h"
 #include "orbit_command.h"
 #include "map_command.h"
+#include "modes_command.h"
 #include "report_command.h"
 #include "simulate_command.h"
 
@@ -98,7 +99,7 @@ int info(const QCommandLineParser& parser) {
 // renders off screen. The other commands need Qt Core only.
 bool drawsPictures(int argc, char* argv[]) {
   for (int i = 1; i < argc; ++i) {
-    for (const char* command : {"report", "map", "merge", "family"}) {
+    for (const char* command : {"report", "map", "merge", "family", "modes"}) {
       if (std::strcmp(argv[i], command) == 0) return true;
     }
   }
@@ -138,14 +139,16 @@ int main(int argc, char* argv[]) {
       "stability (every method on stiff and extreme cases, --out DIR), map (a 2-D grid of runs "
       "reduced to summaries: --x, --y, --out PREFIX), merge (join a map's stripes: --out PREFIX "
       "PART1 ... PARTN), family --onepp (the 1IPP family: --out PREFIX), orbit (one periodic impacting orbit with its "
-      "exact multipliers: --onepp --period T, or --impacts K --energy E --guess U1,V1).");
-  parser.addPositionalArgument("command", "info | simulate | report | stability | map | merge | family | orbit");
+      "exact multipliers: --onepp --period T, or --impacts K --energy E --guess U1,V1), modes (the "
+      "atlas of the chain's periodic impacting families up to --max-impacts K: --out PREFIX).");
+  parser.addPositionalArgument("command", "info | simulate | report | stability | map | merge | family | orbit | modes");
   const QCommandLineOption help = parser.addHelpOption();
   const QCommandLineOption version = parser.addVersionOption();
   grazelab::cli::addOptions(parser);
   grazelab::cli::addReportOptions(parser);
   grazelab::cli::addMapOptions(parser);
   grazelab::cli::addOrbitOptions(parser);
+  grazelab::cli::addModesOptions(parser);
 
   // `family --onepp` and `orbit --onepp` name the family: the option takes no period there
   QStringList arguments = QCoreApplication::arguments();
@@ -177,9 +180,13 @@ int main(int argc, char* argv[]) {
     return ended(grazelab::cli::runMerge(parser, positional.mid(1), watcher.token(), error), error);
   }
   if (positional.size() != 1) {
-    return fail("expected one command: info, simulate, report, stability, map, merge, family or orbit (see --help)");
+    return fail("expected one command: info, simulate, report, stability, map, merge, family, orbit or modes (see --help)");
   }
   const QString command = positional.first();
+  if (command == "modes") {
+    QString error;
+    return ended(grazelab::cli::runModes(parser, watcher.token(), error), error);
+  }
   if (command == "orbit") {
     QString error;
     const int code = grazelab::cli::runOrbit(parser, watcher.token(), error);
@@ -237,5 +244,5 @@ int main(int argc, char* argv[]) {
     const int code = grazelab::cli::runSimulate(parser, *precision, *trust, watcher.token(), error);
     return code == kInvalidInput ? fail(error) : code;
   }
-  return fail(QStringLiteral("unknown command '%1': use info, simulate, report, stability, map, merge, family or orbit").arg(command));
+  return fail(QStringLiteral("unknown command '%1': use info, simulate, report, stability, map, merge, family, orbit or modes").arg(command));
 }

@@ -8,6 +8,9 @@
 #include "core/contact.h"
 #include "core/experiment_run.h"
 #include "core/modes.h"
+#include "core/nonlinear_modes.h"
+#include "core/periodic_orbit.h"
+#include "core/setup.h"
 #include "core/free_flight.h"
 #include "core/orbits.h"
 #include "core/simulate.h"
@@ -101,6 +104,55 @@ void DefaultSceneExperiment(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 BENCHMARK(DefaultSceneExperiment)->Arg(20'000)->Unit(benchmark::kMillisecond);
+
+// Periodic orbits (issue 22): one orbit with its monodromy and checks; the continuation of
+// the 1IPP family (items = orbits); the atlas up to K impacts (the budgets: K = 2 under 10 s,
+// K = 4 under 60 s on two cores).
+template <typename S>
+void OnePeriodicOrbitWithStability(benchmark::State& state) {
+  const core::Chain<S> chain = *core::makeChain(*core::designedModel<S>(S(1), S(0.5), S(1), S(1), core::Branch::Upper)).chain;
+  const S T = S(0.8) * core::twoPi<S>() / chain.omegaSlow;
+  for (auto _ : state) benchmark::DoNotOptimize(core::onePeriodicOrbitStability(chain, T).orbit->trace);
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(OnePeriodicOrbitWithStability<double>);
+BENCHMARK(OnePeriodicOrbitWithStability<core::Quad>);
+
+void TwoImpactOrbitByNewton(benchmark::State& state) {
+  const core::Chain<double> chain = *core::makeChain(testing::resonantChain(0.5)).chain;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(core::findOrbit(chain, 1.99998, 0.8, 0.05, 2).orbit->period);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(TwoImpactOrbitByNewton);
+
+void ContinueOnePeriodicFamily(benchmark::State& state) {
+  const core::Chain<double> chain = *core::makeChain(testing::resonantChain(0.5)).chain;
+  const double T2 = core::twoPi<double>() / chain.omegaSlow;
+  const core::PeriodicOrbit<double> start = *core::onePeriodicOrbitStability(chain, 0.9 * T2).orbit;
+  core::ContinuationOptions<double> options;
+  options.energyLow = 1e-3;
+  options.energyHigh = 1e3;
+  std::size_t orbits = 0;
+  for (auto _ : state) {
+    const core::ContinuedFamily<double> family = core::continueFamily(chain, start, 1, options);
+    orbits += family.orbits.size();
+  }
+  state.SetItemsProcessed(std::int64_t(orbits));
+}
+BENCHMARK(ContinueOnePeriodicFamily)->Unit(benchmark::kMillisecond);
+
+void ModesAtlas(benchmark::State& state) {
+  const core::Chain<double> chain = *core::makeChain(testing::resonantChain(0.5)).chain;
+  const double grazing = core::physicalEnergy(chain, core::gloData(chain, core::lambdaStar(chain)));
+  for (auto _ : state) {
+    const core::ModesAtlas<double> atlas =
+        core::computeModesAtlas(chain, int(state.range(0)), grazing / 100, grazing * 1e4);
+    benchmark::DoNotOptimize(atlas.families.size());
+  }
+}
+BENCHMARK(ModesAtlas)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace grazelab

@@ -1,0 +1,238 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// `grazelab-cli modes`: the atlas of the chain's nonlinear normal modes (issue 22).
+#include "modes_command.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cmath>
+#include <type_traits>
+
+#include "cli_input.h"
+#include "core/nonlinear_modes.h"
+#include "core/orbits.h"
+#include "npy.h"
+#include "output_files.h"
+#include "report_command.h"
+
+#if GRAZELAB_CLI_PICTURES
+#include <QPainter>
+
+#include "ui/plots/modes_picture.h"
+#endif
+
+namespace grazelab::cli {
+namespace {
+
+template <typename S>
+QJsonValue scalarJson(const S& value) {
+  if (!core::isFinite(value)) return QJsonValue();
+  // binary128's digits would be lost in a JSON double: written as text
+  if constexpr (std::is_same_v<S, double>) return value;
+  else return QString::fromStdString(core::formatScalar(value));
+}
+
+QByteArray cell(double value) { return std::isfinite(value) ? QByteArray::number(value, 'g', 17) : QByteArray(); }
+
+template <typename S>
+QJsonObject stateJson(const core::BasicState<S>& x) {
+  return {{"u1", scalarJson(x.u1)}, {"u2", scalarJson(x.u2)}, {"v1", scalarJson(x.v1)}, {"v2", scalarJson(x.v2)}};
+}
+
+template <typename S>
+QJsonObject endJson(const core::FamilyEnd<S>& end) {
+  return {{"kind", QString::fromStdString(end.kind)}, {"energy", scalarJson(end.energy)},
+          {"period", scalarJson(end.period)}, {"state", stateJson(end.state)}};
+}
+
+const char* const kColumns = "energy,period,omega,trace,stability,u1,v1,min_impact_speed,min_clearance";
+
+template <typename S>
+int modesIn(const QCommandLineParser& parser, const QString& prefix, const QString& precision, int maxImpacts,
+            std::stop_token stop, QString& error) {
+  const Parsed<ModelInput<S>> model = parseModel<S>(parser);
+  if (!model.value) {
+    error = model.error;
+    return kExitInvalidInput;
+  }
+  const core::Chain<S>& chain = model.value->chain;
+  if (!chain.resonant) {
+    error = "modes: the atlas starts from the 1IPP family of the 1:2 resonant chain (give no --k2)";
+    return kExitInvalidInput;
+  }
+  const S T2 = core::twoPi<S>() / chain.omegaSlow;
+  const S grazingEnergy = core::physicalEnergy(chain, core::gloData(chain, core::lambdaStar(chain)));
+  S low = grazingEnergy / S(100);
+  S high = grazingEnergy * S(10000);
+  if (parser.isSet("energy-range")) {
+    const QStringList parts = parser.value("energy-range").split(':');
+    const auto a = parts.size() == 2 ? core::parseScalar<S>(parts[0].toStdString()) : core::ParsedScalar<S>{};
+    const auto b = parts.size() == 2 ? core::parseScalar<S>(parts[1].toStdString()) : core::ParsedScalar<S>{};
+    if (!a.value || !b.value || !(*a.value > 0) || !(*b.value > *a.value)) {
+      error = QStringLiteral("--energy-range: '%1' is not A:B with 0 < A < B").arg(parser.value("energy-range"));
+      return kExitInvalidInput;
+    }
+    low = *a.value;
+    high = *b.value;
+  }
+  const core::ModesAtlas<S> atlas = core::computeModesAtlas(chain, maxImpacts, low, high, stop);
+  if (stop.stop_requested() || !atlas.complete) return kExitInterrupted;
+
+  const QString base = QFileInfo(prefix).fileName();
+  QJsonArray families;
+  std::vector<std::pair<QString, QByteArray>> files;
+#if GRAZELAB_CLI_PICTURES
+  std::vector<ui::ModesPictureFamily> curves;
+  std::vector<ui::ModesPictureMark> marks;
+#endif
+  for (const core::ModeFamily<S>& family : atlas.families) {
+    QByteArray csv = QByteArray(kColumns) + "\n";
+    NpyArray array;
+    array.rows = std::int64_t(family.orbits.size());
+    array.columns = 9;
+#if GRAZELAB_CLI_PICTURES
+    ui::ModesPictureFamily curve;
+    curve.impacts = family.impacts;
+#endif
+    for (const core::FamilyOrbit<S>& o : family.orbits) {
+      const double energy = double(o.energy), period = double(o.period);
+      const double omega = 2 * M_PI / period;
+      const double row[9] = {energy, period, omega, double(o.trace), double(int(o.stability)),
+                             double(o.state.u1), double(o.state.v1), double(o.minImpactSpeed),
+                             double(o.minClearance)};
+      csv += cell(row[0]) + "," + cell(row[1]) + "," + cell(row[2]) + "," + cell(row[3]) + "," +
+             QByteArray(core::toString(o.stability).data()) + "," + cell(row[5]) + "," + cell(row[6]) + "," +
+             cell(row[7]) + "," + cell(row[8]) + "\n";
+      array.reals.insert(array.reals.end(), row, row + 9);
+#if GRAZELAB_CLI_PICTURES
+      curve.points.emplace_back(std::log10(energy), omega);
+      curve.stable.push_back(o.stability == core::Stability::Elliptic);
+#endif
+    }
+    const QString name = QStringLiteral("%1-family-%2").arg(base).arg(family.id);
+    files.emplace_back(prefix + QStringLiteral("-family-%1.csv").arg(family.id), csv);
+    files.emplace_back(prefix + QStringLiteral("-family-%1.npy").arg(family.id), encodeNpy(array));
+    QJsonArray bifurcations;
+    for (const core::FamilyBifurcation<S>& b : family.bifurcations) {
+      bifurcations.append(QJsonObject{{"kind", QString::fromStdString(b.kind)},
+                                      {"T", scalarJson(b.T)},
+                                      {"T_over_T2", scalarJson(S(b.T / T2))},
+                                      {"energy", scalarJson(b.energy)},
+                                      {"trace", scalarJson(b.trace)},
+                                      {"state", stateJson(b.state)}});
+#if GRAZELAB_CLI_PICTURES
+      marks.push_back({QPointF(std::log10(double(b.energy)), 2 * M_PI / double(b.T)),
+                       b.kind == "period-doubling" ? QStringLiteral("flip") : QString::fromStdString(b.kind)});
+#endif
+    }
+#if GRAZELAB_CLI_PICTURES
+    for (const core::FamilyEnd<S>* end : {&family.end, &family.startEnd}) {
+      if (end->kind == "period-doubling" || end->kind.empty() || !(end->period > 0)) continue;
+      QString label = QString::fromStdString(end->kind);
+      if (end->kind == "energy-limit" || end->kind == "step-limit") continue;  // not an end of the family
+      marks.push_back({QPointF(std::log10(double(end->energy)), 2 * M_PI / double(end->period)), label});
+    }
+    curves.push_back(std::move(curve));
+#endif
+    QJsonObject born{{"kind", QString::fromStdString(family.bornKind)},
+                     {"family", family.parent < 0 ? QJsonValue() : QJsonValue(family.parent)},
+                     {"energy", scalarJson(family.bornEnergy)},
+                     {"T", scalarJson(family.bornPeriod)}};
+    families.append(QJsonObject{
+        {"id", family.id},
+        {"impacts", family.impacts},
+        {"symmetry", family.symmetry.empty() ? QJsonValue() : QJsonValue(QString::fromStdString(family.symmetry))},
+        {"born_at", born},
+        {"side", family.side.empty() ? QJsonValue() : QJsonValue(QString::fromStdString(family.side))},
+        {"start", endJson(family.startEnd)},
+        {"end", endJson(family.end)},
+        {"bifurcations", bifurcations},
+        {"orbits", qint64(family.orbits.size())},
+        {"file", name + ".csv"}});
+  }
+  const core::BasicModel<S>& m = chain.model;
+  const QJsonObject json{
+      {"format", "grazelab-modes"},
+      {"precision", precision},
+      {"model", QJsonObject{{"m1", scalarJson(m.m1)}, {"m2", scalarJson(m.m2)}, {"k1", scalarJson(m.k1)},
+                            {"k2", scalarJson(S(chain.kappa * m.k1))}, {"gap", scalarJson(m.gap)},
+                            {"T2", scalarJson(T2)}}},
+      {"max_impacts", maxImpacts},
+      {"energy_range", QJsonArray{scalarJson(low), scalarJson(high)}},
+      {"families", families},
+      {"columns", QString(kColumns)},
+      {"stability", "elliptic (|tr| < 2, stable), hyperbolic (tr > 2), flip-hyperbolic (tr < -2), "
+                    "parabolic (|tr| = 2 within rounding); in the .npy 0, 1, 2, 3"},
+      {"start", "a 1IPP part: its low-energy end; a family born at a flip: the flip (at twice its period)"},
+      {"end", "grazing-orbit (every impact speed, or one with a clearance, tends to 0: a grazing linear "
+              "orbit), interior-grazing (a flight touches the stop), impact-speed-zero (one impact fades), "
+              "energy-limit (the --energy-range), step-limit, undecided (the continuation cannot go on "
+              "with no event in sight); an end is classified from the last orbit within 5 % of w2 d or "
+              "of the gap, not located to full precision (the bifurcations are)"},
+      {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
+  files.emplace_back(prefix + ".json", QJsonDocument(json).toJson());
+  for (const auto& [path, bytes] : files) {
+    if (!saveAtomically(path, bytes, error)) return 1;
+  }
+#if GRAZELAB_CLI_PICTURES
+  const QString title = QStringLiteral("Nonlinear modes: frequency against energy (m2/m1 = %1, up to %2 impacts)")
+                            .arg(double(m.m2 / m.m1), 0, 'g', 4)
+                            .arg(maxImpacts);
+  const QSize size(1100, 760);
+  const bool drawn = savePngAndSvg(
+      prefix, size, title, "GrazeLabModes", QJsonDocument(json).toJson(QJsonDocument::Compact),
+      [&](QPainter& painter) { ui::paintModes(painter, QRectF(QPointF(0, 0), size), curves, marks, title); },
+      error);
+  if (!drawn) return 1;
+#endif
+  std::fprintf(stderr, "grazelab-cli: modes: %lld families: %s.json\n", (long long)atlas.families.size(),
+               qPrintable(prefix));
+  return kExitOk;
+}
+
+}  // namespace
+
+void addModesOptions(QCommandLineParser& parser) {
+  parser.addOptions({
+      {"max-impacts", "modes: the most impacts per period of the families followed (default 4).", "K"},
+      {"energy-range", "modes: follow families with energies in [A, B] (default: 1/100 to 10000 "
+                       "times the grazing end's energy).", "A:B"},
+  });
+}
+
+int runModes(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
+  for (const char* name : {"glo", "onepp", "state", "perturb", "contacts", "t-end", "trust", "x", "y",
+                           "threads", "shard", "picture", "methods", "quick", "count", "format",
+                           "search-steps", "period", "impacts", "energy", "guess"}) {
+    if (parser.isSet(name)) {
+      error = QStringLiteral("--%1 does not apply to 'modes'").arg(name);
+      return kExitInvalidInput;
+    }
+  }
+  int maxImpacts = 4;
+  if (parser.isSet("max-impacts")) {
+    bool ok = false;
+    maxImpacts = parser.value("max-impacts").toInt(&ok);
+    if (!ok || maxImpacts < 1 || maxImpacts > 64) {
+      error = QStringLiteral("--max-impacts: '%1' is not a number from 1 to 64").arg(parser.value("max-impacts"));
+      return kExitInvalidInput;
+    }
+  }
+  const QString precision = parser.value("precision");
+  if (!QStringList{"auto", "double", "long", "quad"}.contains(precision)) {
+    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
+    return kExitInvalidInput;
+  }
+  const auto output = parseOutputPrefix(parser, "PREFIX.json, PREFIX-family-N.csv, ...", "modes", error);
+  if (!output) return kExitInvalidInput;
+  if (precision == "long") return modesIn<long double>(parser, *output, precision, maxImpacts, stop, error);
+  if (precision == "quad") return modesIn<core::Quad>(parser, *output, precision, maxImpacts, stop, error);
+  return modesIn<double>(parser, *output, "double", maxImpacts, stop, error);
+}
+
+}  // namespace grazelab::cli

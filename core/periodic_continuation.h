@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "core/periodic_family.h"
+#include "core/periodic_orbit.h"
+
+/// A family of k-impact orbits followed in energy by pseudo-arclength continuation on
+/// (u1, v1, E) with the exact Jacobian [DP^k - I | dP^k/dE] (docs/model.md section 10): a
+/// predictor along the tangent, a Newton corrector on the family and the arclength, step
+/// control, and the special points located by bisection of the step to the precision of S.
+namespace grazelab::core {
+
+/// One orbit of a continued family, in the few numbers a table keeps (its full path is
+/// recomputed on demand from `state`).
+template <typename S>
+struct FamilyOrbit {
+  S energy = 0;
+  S period = 0;
+  S trace = 0;
+  Stability stability = Stability::Elliptic;
+  BasicState<S> state;  ///< just after an impact
+  S minImpactSpeed = 0;
+  S minClearance = 0;
+};
+
+/// Where a continued family ends.
+template <typename S>
+struct FamilyEnd {
+  /// "grazing-orbit" (every impact speed, or an impact speed and a clearance, tend to 0: the
+  /// family becomes a grazing linear orbit), "interior-grazing" (a flight touches the stop),
+  /// "impact-speed-zero" (one impact fades),
+  /// "energy-limit" (the energy range asked for), "step-limit", "undecided" (the corrector
+  /// fails with no event in sight, or a contact cannot be decided in S), "stopped"
+  std::string kind;
+  S energy = 0;
+  S period = 0;
+  BasicState<S> state;
+};
+
+template <typename S>
+struct ContinuationOptions {
+  S energyLow = 0;                 ///< the family is followed while its energy stays in
+  S energyHigh = 0;                ///< [energyLow, energyHigh]
+  int maxSteps = 4000;
+  /// the first step along (u1 / d, v1 / (w2 d), ln E); steps grow to `maxStep` and shrink to
+  /// `minStep` on their own. The end is classified from the last orbit (within 5 % of the
+  /// speed w2 d or of the gap), not located to full precision
+  double firstStep = 1e-3;
+  double maxStep = 0.1;
+  double minStep = 1e-12;
+};
+
+template <typename S>
+struct ContinuedFamily {
+  int impacts = 0;
+  std::vector<FamilyOrbit<S>> orbits;              ///< in the order followed
+  std::vector<FamilyBifurcation<S>> bifurcations;  ///< flips, folds, branch points, in order
+  FamilyEnd<S> end;
+};
+
+/// Follows the family through `start` (an admissible k-impact orbit) with its energy first
+/// moving the way of `direction` (+1: up, -1: down), until it ends.
+template <typename S>
+ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>& start,
+                                  int direction, const ContinuationOptions<S>& options,
+                                  std::stop_token stop = {});
+
+}  // namespace grazelab::core

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 GrazeLab developers
+# `modes` (issue 22): the atlas's files and their agreement, the families born at flips, and
+# refusals. Usage: modes_test.sh GRAZELAB_CLI
+set -uo pipefail
+cli="$1"
+here="$(cd "$(dirname "$0")" && pwd)"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+out="$work/stdout"
+err="$work/stderr"
+failures=0
+source "$here/contract_lib.sh"
+
+expect_ok modes --max-impacts 4 --out "$work/m/atlas" || exit 1
+python3 - "$work/m" <<'PY' || fail "modes files"
+import array, ast, json, math, os, sys
+d = sys.argv[1]
+meta = json.load(open(d + '/atlas.json'))
+assert meta['format'] == 'grazelab-modes' and meta['max_impacts'] == 4
+fams = meta['families']
+assert [f['id'] for f in fams] == list(range(len(fams)))
+ones = [f for f in fams if f['impacts'] == 1]
+assert ones and all(f['born_at']['kind'] == 'one-periodic' for f in ones)
+T2 = meta['model']['T2']
+for f in fams:
+    lines = open(os.path.join(d, f['file'])).read().splitlines()
+    assert lines[0] == meta['columns'] == 'energy,period,omega,trace,stability,u1,v1,min_impact_speed,min_clearance'
+    rows = [l.split(',') for l in lines[1:]]
+    assert len(rows) == f['orbits'] > 0
+    b = open(os.path.join(d, f['file'][:-4] + '.npy'), 'rb').read(); n = b[8] | (b[9] << 8)
+    h = ast.literal_eval(b[10:10 + n].decode('latin1')); a = array.array('d'); a.frombytes(b[10 + n:])
+    assert h['shape'] == (len(rows), 9), h
+    for i, r in enumerate(rows):
+        assert float(r[0]) == a[9 * i] and float(r[1]) == a[9 * i + 1] and float(r[3]) == a[9 * i + 3]
+        assert abs(float(r[2]) - 2 * math.pi / float(r[1])) < 1e-12 * float(r[2])
+        tr = float(r[3])
+        assert r[4] == ('elliptic' if abs(tr) < 2 else 'hyperbolic' if tr > 2 else 'flip-hyperbolic') or r[4] == 'parabolic', r
+    assert f['end']['kind'] in ('grazing-orbit', 'interior-grazing', 'impact-speed-zero', 'energy-limit', 'step-limit', 'undecided'), f['end']
+    for x in f['bifurcations']:
+        if x['kind'] == 'period-doubling':
+            assert abs(x['trace'] + 2) < 1e-8, x
+            kids = [g for g in fams if g['born_at']['kind'] == 'period-doubling' and g['born_at']['family'] == f['id']
+                    and g['born_at']['energy'] == x['energy']]
+            if 2 * f['impacts'] <= 4:
+                assert len(kids) == 1 and kids[0]['impacts'] == 2 * f['impacts'] and kids[0]['side'] in ('below', 'above'), (x, kids)
+# the 1IPP family of the grazing end: from GLO(lambda*) at T2
+ends = [f for f in ones if f['start']['kind'] == 'grazing-orbit' and abs(f['start']['period'] - T2) < 1e-5 * T2]
+assert len(ends) == 1, [f['start'] for f in ones]
+assert any(f['impacts'] == 4 for f in fams)
+PY
+[ -e "$work/m/atlas.png" ] && [ -e "$work/m/atlas.svg" ] || [ ! -e "$work/m/atlas.svg" ] || fail "modes picture"
+
+EXPECT_WORD="--max-impacts" expect_invalid modes --max-impacts 0 --out "$work/bad/m"
+EXPECT_WORD="--energy-range" expect_invalid modes --energy-range 2:1 --out "$work/bad/m"
+EXPECT_WORD="resonant" expect_invalid modes --k2 0.6 --out "$work/bad/m"
+EXPECT_WORD="--out" expect_invalid modes
+EXPECT_WORD="does not apply" expect_invalid modes --contacts 3 --out "$work/bad/m"
+[ ! -e "$work/bad" ] || [ -z "$(ls -A "$work/bad")" ] || fail "a refused atlas wrote files"
+if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
+echo "modes: all checks passed"
