@@ -28,6 +28,8 @@ enum class PlotKind {
   ResonantFlights,  ///< detuned contrast: the resonant chain's FFT/T2 against contact index
   Chain,            ///< the chain moving (ChainView), the time cursor of the other views
   Landscape,        ///< a map over the grazing-start plane, the run's section over it
+  ModesAtlas,       ///< the periodic impacting families: 2 pi / T against log E, click an orbit
+  Multipliers,      ///< the chosen orbit's multipliers against the unit circle
 };
 
 /// A curve a scene computes itself (no run needed), drawn by a CurvePlot: the curve, the

@@ -27,7 +27,7 @@ QStringList sceneList() {
   for (const auto& scene : scenes) width = std::max(width, int(scene->alias().size()));
   for (const auto& scene : scenes) {
     ++index;
-    const QString key = index <= 9 ? QStringLiteral("Ctrl+%1").arg(index) : QString();
+    const QString key = sceneShortcut(index - 1);
     lines.append(QStringLiteral("%1  %2  %3").arg(scene->alias(), -width).arg(key, -6).arg(scene->title()));
   }
   return lines;

@@ -32,6 +32,7 @@
 #include "ui/parameter_panel.h"
 #include "ui/presentation_style.h"
 #include "ui/status_line.h"
+#include "ui/plots/modes_plot.h"
 #include "ui/plots/accuracy_view.h"
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/chain_view.h"
@@ -242,7 +243,7 @@ void MainWindow::buildMenus() {
     QAction* action = scenes->addAction(m_scenes[index]->title());
     action->setCheckable(true);
     action->setToolTip(m_scenes[index]->description());
-    if (index < 9) action->setShortcut(QKeySequence(tr("Ctrl+%1").arg(index + 1)));
+    if (const QString key = sceneShortcut(int(index)); !key.isEmpty()) action->setShortcut(QKeySequence(key));
     m_sceneActions->addAction(action);
     connect(action, &QAction::triggered, this, [this, index] { selectScene(int(index)); });
   }
@@ -288,6 +289,13 @@ void MainWindow::buildPlots() {
               [this](const core::State& start) { startFromClick(start); });
       connect(landscape, &LandscapeView::regionRequested, this, &MainWindow::showMapRegion);
       connect(landscape, &LandscapeView::backRequested, this, [this] { mapRegionBack(); });
+    }
+    if (auto* modes = dynamic_cast<ModesPlot*>(view)) {
+      connect(modes, &ModesPlot::orbitChosen, this, [this](const core::State& start) { startFromClick(start); });
+      connect(modes, &ModesPlot::missed, this, [this] {
+        m_status->setMessage(tr("Click within %1 pixels of a family's dots to follow that orbit.")
+                                 .arg(ModesPlot::kChoiceRadius));
+      });
     }
     if (auto* plot = dynamic_cast<PlotView*>(view)) {
       m_plots.append(plot);
@@ -459,7 +467,7 @@ void MainWindow::recompute() {
   // the scene travels as a copy (texts and a function): the worker never reads the window's
   request.prepare = [scene = *m_scenes[std::size_t(m_sceneIndex)], params = current, derived,
                      clicked = m_clickedStart](std::stop_token stop) {
-    SceneJob job = scene.build(params, derived, stop);
+    SceneJob job = scene.build(params, derived, stop, clicked);
     if (clicked && job.ok) job.spec.run.initial = *clicked;
     return job;
   };

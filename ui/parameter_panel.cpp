@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/parameter_panel.h"
 
+#include <QEvent>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QGroupBox>
@@ -200,6 +202,16 @@ void ParameterPanel::setClickedStart(const std::optional<core::State>& start) {
                              "(not the panel's; edit any value to go back)")
                               .arg(n(start->u1), n(start->u2), n(start->v1), n(start->v2)));
   m_clickedStart->show();
+}
+
+void ParameterPanel::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() != QEvent::FontChange) return;
+  for (QLabel* label : {m_message, m_refusal, m_clickedStart, m_notes}) {
+    QFont font = this->font();
+    font.setBold(label == m_message);
+    label->setFont(font);
+  }
 }
 
 void ParameterPanel::setNotes(const QStringList& notes) {

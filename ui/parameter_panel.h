@@ -59,6 +59,11 @@ class ParameterPanel : public QWidget {
   /// A typed value was refused and the previous one kept.
   void inputRefused(const QString& reason);
 
+ protected:
+  /// The messages have style sheets, which stop Qt from handing them the panel's font: given
+  /// again on every change (presentation mode scales it).
+  void changeEvent(QEvent* event) override;
+
  private:
   void changed();
   void updateFeasibility();

@@ -86,12 +86,18 @@ core::State perturbed(core::State state, const Params& params) {
   return state;
 }
 
+QString sceneShortcut(int index) {
+  if (index < 9) return QStringLiteral("Ctrl+%1").arg(index + 1);
+  if (index == 9) return QStringLiteral("Ctrl+M");
+  return {};
+}
+
 std::vector<std::unique_ptr<Scene>> makeScenes() {
   // the table of scenes, in the order of the note: a new scene is one line here and a file
   const std::vector<Scene::Spec (*)()> table = {
       grazingFamilyScene, onePeriodicScene, perturbationScene, randomStartsScene,
       stickingScene,      detunedScene,     nearGrazingScene,  landscapeScene,
-      accuracyScene,
+      accuracyScene,      modesScene,
   };
   std::vector<std::unique_ptr<Scene>> scenes;
   for (auto make : table) scenes.push_back(std::make_unique<Scene>(make()));

@@ -40,6 +40,11 @@ class Scene {
     /// end early when `stop` is requested.
     std::function<SceneJob(const Scene&, const Params&, const DerivedModel&, std::stop_token stop)>
         build;
+    /// instead of `build`, for a scene whose computation depends on a start chosen with the
+    /// mouse (the Nonlinear modes scene: the orbit clicked); `clicked` is empty otherwise
+    std::function<SceneJob(const Scene&, const Params&, const DerivedModel&,
+                           const std::optional<core::State>& clicked, std::stop_token stop)>
+        buildFromStart;
   };
 
   explicit Scene(Spec spec) : m_spec(std::move(spec)) {}
@@ -50,7 +55,9 @@ class Scene {
   Params defaults() const { return m_spec.defaults; }
   QList<ParamKey> parameters() const { return m_spec.parameters; }
   QList<PlotKind> plots() const { return m_spec.plots; }
-  SceneJob build(const Params& params, const DerivedModel& derived, std::stop_token stop = {}) const {
+  SceneJob build(const Params& params, const DerivedModel& derived, std::stop_token stop = {},
+                 const std::optional<core::State>& clicked = std::nullopt) const {
+    if (m_spec.buildFromStart) return m_spec.buildFromStart(*this, params, derived, clicked, stop);
     return m_spec.build(*this, params, derived, stop);
   }
 
@@ -80,6 +87,10 @@ core::StartOrProblem<double> gloStart(const core::Model& model, const Params& pa
 
 /// Applies the signed perturbation along its direction.
 core::State perturbed(core::State state, const Params& params);
+
+/// The key that chooses the scene at `index` (0-based) in the menu order: Ctrl+1 ... Ctrl+9,
+/// then Ctrl+M for the tenth (Ctrl+0 resets the view); empty beyond.
+QString sceneShortcut(int index);
 
 /// All scenes, in menu order (the first is the default).
 std::vector<std::unique_ptr<Scene>> makeScenes();

@@ -15,6 +15,8 @@
 #include <string>
 
 #include "core/experiment_run.h"
+#include "core/nonlinear_modes.h"
+#include "core/periodic_orbit.h"
 #include "ui/derived.h"
 #include "ui/figures.h"
 #include "ui/params.h"
@@ -37,6 +39,10 @@ struct SceneJob {
   std::optional<core::State> reference;  ///< a state on H worth marking (e.g. GLO_lambda* data)
   QString referenceLabel;
   Figures figures;  ///< curves the scene computed itself (one per CurvePlot it shows)
+  /// the atlas of the chain's periodic impacting families (the Nonlinear modes scene)
+  std::shared_ptr<const core::ModesAtlas<double>> modes;
+  /// the periodic orbit the run follows, with its multipliers (the Nonlinear modes scene)
+  std::optional<core::PeriodicOrbit<double>> orbit;
   /// slider ranges that depend on the chain (the admissible T/T2 of the 1IPP family)
   std::map<ParamKey, std::pair<double, double>> sliderRanges;
 };

@@ -24,6 +24,7 @@
 #include <numbers>
 
 #include "core/chain.h"
+#include "core/nonlinear_modes.h"
 #include "core/modes.h"
 #include "core/orbits.h"
 #include "core/resonance.h"
@@ -573,6 +574,70 @@ class ClassroomTest : public QObject {
     process.kill();
     process.waitForFinished(5000);
     QVERIFY2(err.contains("bad.json"), err.constData());
+  }
+
+  // the Nonlinear modes scene: the atlas and the 1IPP orbit of the slider at first; a click on a
+  // dot of a 2-impact family follows that orbit (its multipliers shown, the run repeating after
+  // 2 impacts); a click on no family says how near to click
+  void aClickOnTheModesPictureFollowsThatOrbit() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("modes")));
+    QVERIFY(waitForLatestFinal(*m_window));
+    const auto first = m_window->displayed()->request;  // held: a click replaces what is shown
+    const SceneJob& job = first->job;
+    QVERIFY(job.ok);
+    QVERIFY(job.modes && job.modes->families.size() >= 4);
+    QVERIFY(job.orbit && job.orbit->impacts == 1);
+    PlotView* modes = plotTitled(*m_window, QStringLiteral("Modes"));
+    PlotView* multipliers = plotTitled(*m_window, QStringLiteral("Multipliers"));
+    QVERIFY(modes && multipliers);
+    QCOMPARE(multipliers->entries()[1].points().size(), std::size_t(2));
+    // a 2-impact orbit in the middle of its family, where the picture has it
+    const grazelab::core::ModeFamily<double>* two = nullptr;
+    for (const auto& family : job.modes->families) {
+      if (family.impacts == 2 && !two) two = &family;
+    }
+    QVERIFY(two && two->orbits.size() > 10);
+    const auto target = two->orbits[two->orbits.size() / 2];
+    const QPointF value(std::log10(target.energy), 2 * std::numbers::pi / target.period);
+    QTRY_VERIFY(modes->drawnPointCount() > 0);
+    const QPoint at = modes->chart()->mapToPosition(value).toPoint();
+    QTest::mouseClick(modes->viewport(), Qt::LeftButton, {}, at);
+    QTRY_VERIFY(m_window->displayed()->request->job.orbit && m_window->displayed()->request->job.orbit->impacts == 2);
+    QVERIFY(waitForLatestFinal(*m_window));
+    const SimUpdate& shown = *m_window->displayed();
+    QCOMPARE(shown.request->job.orbit->impacts, 2);
+    // the orbit drawn nearest the click (two families may share those pixels)
+    const QPointF drawn = modes->chart()->mapToPosition(
+        QPointF(std::log10(shown.request->job.orbit->energy), 2 * std::numbers::pi / shown.request->job.orbit->period));
+    QVERIFY2(std::hypot(drawn.x() - at.x(), drawn.y() - at.y()) < 4,
+             qPrintable(QStringLiteral("%1,%2 vs %3,%4").arg(drawn.x()).arg(drawn.y()).arg(at.x()).arg(at.y())));
+    // the run repeats: after 2 impacts it is back where it started
+    const auto& events = shown.result->events;
+    QVERIFY(events.size() >= 4);
+    QVERIFY(std::abs(events[1].after.u1 - shown.request->job.spec.run.initial.u1) < 1e-8);
+    QVERIFY(std::abs(events[3].t - 2 * events[1].t) < 1e-8 * events[3].t);
+    // a click far from every family changes nothing and says why
+    const std::uint64_t before = shown.id;
+    const QRectF area = modes->chart()->plotArea();
+    QPoint empty;
+    double farthest = 0;
+    for (int i = 1; i < 20; ++i) {
+      for (int j = 1; j < 20; ++j) {
+        const QPointF candidate(area.left() + area.width() * i / 20, area.top() + area.height() * j / 20);
+        double nearest = 1e9;
+        for (const auto& family : job.modes->families) {
+          for (const auto& orbit : family.orbits) {
+            const QPointF p = modes->chart()->mapToPosition(QPointF(std::log10(orbit.energy), 2 * std::numbers::pi / orbit.period));
+            nearest = std::min(nearest, std::hypot(p.x() - candidate.x(), p.y() - candidate.y()));
+          }
+        }
+        if (nearest > farthest) farthest = nearest, empty = candidate.toPoint();
+      }
+    }
+    QVERIFY(farthest > 30);
+    QTest::mouseClick(modes->viewport(), Qt::LeftButton, {}, empty);
+    QTRY_VERIFY(m_window->statusText().contains(QStringLiteral("pixels of a family")));
+    QCOMPARE(m_window->displayed()->id, before);
   }
 
   // click a point of the section H: a run starts there, on the same energy, leaving the stop

@@ -56,13 +56,15 @@ class HeadlessTest : public QObject {
   // ids --scene takes, with the titles as the menu shows them
   void listsScenesOnePerLine() {
     const QStringList lines = listScenes();
-    QCOMPARE(lines.size(), qsizetype(9));
+    QCOMPARE(lines.size(), qsizetype(10));
     QVERIFY2(lines.first().startsWith(QStringLiteral("grazing ")), qPrintable(lines.first()));
     QVERIFY(lines.first().contains(QStringLiteral("Ctrl+1")));
-    QVERIFY(lines.last().contains(QStringLiteral("Accuracy: methods against the exact solver")));
+    QVERIFY(lines[8].contains(QStringLiteral("Accuracy: methods against the exact solver")));
+    QVERIFY2(lines.last().startsWith(QStringLiteral("modes ")) && lines.last().contains(QStringLiteral("Ctrl+M")),
+             qPrintable(lines.last()));
     const QStringList ids = listSceneIds();
     for (const char* id : {"grazing", "1ipp", "perturbations", "random-starts", "sticking",
-                           "detuned", "near-grazing", "landscape", "accuracy"}) {
+                           "detuned", "near-grazing", "landscape", "accuracy", "modes"}) {
       QVERIFY2(ids.contains(QString::fromLatin1(id)), id);
     }
   }

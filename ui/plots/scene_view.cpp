@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/plots/modes_plot.h"
+#include "ui/plots/multipliers_plot.h"
 #include "ui/plots/scene_view.h"
 
 #include <algorithm>
@@ -46,6 +48,8 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::Chain: return new ChainView(parent);
     case PlotKind::WorkPrecision: return new AccuracyView(parent);
     case PlotKind::Landscape: return new LandscapeView(parent);
+    case PlotKind::ModesAtlas: return new ModesPlot(parent);
+    case PlotKind::Multipliers: return new MultipliersPlot(parent);
   }
   return nullptr;
 }

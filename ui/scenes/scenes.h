@@ -16,6 +16,7 @@ Scene::Spec detunedScene();         // off 1:2
 Scene::Spec nearGrazingScene();     // Poincaré section
 Scene::Spec landscapeScene();       // a map of first flights over the grazing-start plane
 Scene::Spec accuracyScene();        // methods against the exact solver
+Scene::Spec modesScene();           // nonlinear normal modes: periodic impacting families
 
 /// The landscape's map for these parameters: the grazing-start plane over the region of
 /// params.mapRegion (u1 in units of d, v1 in units of d w2), 256 x 256 runs of 10 contacts.

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/plots/modes_plot.h"
+
+#include <QChart>
+#include <QScatterSeries>
+
+#include <cmath>
+#include <limits>
+
+#include "ui/plots/modes_picture.h"
+#include "ui/plots/plot_style.h"
+
+namespace grazelab::ui {
+
+namespace {
+
+int impactClass(int impacts) { return impacts == 1 ? 0 : impacts == 2 ? 1 : impacts == 4 ? 2 : 3; }
+
+QString impactsText(int cls) {
+  switch (cls) {
+    case 0: return ModesPlot::tr("1 impact");
+    case 1: return ModesPlot::tr("2 impacts");
+    case 2: return ModesPlot::tr("4 impacts");
+    default: return ModesPlot::tr("8+ impacts");
+  }
+}
+
+QPointF picturePoint(double energy, double period) {
+  return {std::log10(energy), 2 * M_PI / period};
+}
+
+}  // namespace
+
+ModesPlot::ModesPlot(QWidget* parent)
+    : PlotView(tr("Modes: frequency against energy"), tr("log₁₀ E"), tr("frequency 2π/T"), parent) {
+  // the legend names the colours once; rings say "unstable" in an entry of their own
+  for (int cls = 0; cls < 4; ++cls) {
+    const QColor colour = modesColor(cls == 0 ? 1 : cls == 1 ? 2 : cls == 2 ? 4 : 8);
+    auto* stable = makeScatter(impactsText(cls), colour, 5.5);
+    useLightMarker(stable);
+    m_dots[cls][0] = addEntry(stable, Decimation::Scatter);
+    auto* unstable = makeScatter(QString(), colour, 6);
+    unstable->setColor(Qt::white);
+    unstable->setPen(QPen(colour, 1.5));
+    useLightMarker(unstable, QPen(colour, 1.5));
+    m_dots[cls][1] = addEntry(unstable, Decimation::Scatter);
+  }
+  auto* ring = makeScatter(tr("ring: unstable"), Qt::white, 6);
+  ring->setPen(QPen(Qt::darkGray, 1.5));
+  useLightMarker(ring, QPen(Qt::darkGray, 1.5));
+  m_unstableKey = addEntry(ring, Decimation::None, false);
+  setInLegend(ring, true);
+  auto* flips = makeScatter(tr("flip"), colors::kReference, 11);
+  flips->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+  flips->setColor(Qt::transparent);
+  flips->setPen(QPen(colors::kReference, 2));
+  useLightMarker(flips, QPen(colors::kReference, 2));
+  m_flips = addEntry(flips, Decimation::None);
+  auto* ends = makeScatter(tr("grazing ends"), colors::kReference, 9);
+  useLightMarker(ends);
+  m_ends = addEntry(ends, Decimation::None);
+  auto* chosen = makeScatter(tr("orbit shown"), colors::kAccent, 16);
+  chosen->setColor(Qt::transparent);
+  useLightMarker(chosen, QPen(colors::kAccent, 3));
+  m_chosen = addEntry(chosen, Decimation::None, false);
+  setToolTip(tr("Every periodic motion with impacts that the chain has, up to 4 impacts per period, "
+                "as its frequency 2π/T against its energy (log scale): one dot per computed orbit, "
+                "filled where it is stable, a ring where it is not. Squares are flips, where a family "
+                "with twice the impacts is born; black dots are grazing ends.\n"
+                "Click a family to follow that orbit in the other views."));
+  connect(this, &PlotView::clickedAt, this, &ModesPlot::choose);
+}
+
+void ModesPlot::show(const SimUpdate& update) {
+  const SceneJob& job = update.request->job;
+  if (!job.modes) return;
+  if (job.modes != m_atlas) {
+    m_atlas = job.modes;
+    std::vector<QPointF> dots[4][2];
+    std::vector<QPointF> flips;
+    std::vector<QPointF> ends;
+    for (const core::ModeFamily<double>& family : m_atlas->families) {
+      const int cls = impactClass(family.impacts);
+      for (const core::FamilyOrbit<double>& orbit : family.orbits) {
+        const bool stable = orbit.stability == core::Stability::Elliptic;
+        dots[cls][stable ? 0 : 1].push_back(picturePoint(orbit.energy, orbit.period));
+      }
+      for (const auto& b : family.bifurcations) {
+        if (b.kind == "period-doubling") flips.push_back(picturePoint(b.energy, b.T));
+      }
+      for (const core::FamilyEnd<double>* end : {&family.end, &family.startEnd}) {
+        if (end->kind == "grazing-orbit" && end->period > 0) ends.push_back(picturePoint(end->energy, end->period));
+      }
+    }
+    const auto& list = entries();
+    for (int cls = 0; cls < 4; ++cls) {
+      for (int stable = 0; stable < 2; ++stable) {
+        if (stable == 0) {
+          // a class is named when it has orbits at all
+          setInLegend(list[std::size_t(m_dots[cls][0])].series, !dots[cls][0].empty() || !dots[cls][1].empty());
+        }
+        setData(m_dots[cls][stable], std::move(dots[cls][stable]));
+      }
+    }
+    setData(m_flips, std::move(flips));
+    setData(m_ends, std::move(ends));
+    startNewRun();
+  }
+  std::vector<QPointF> chosen;
+  if (job.orbit) chosen.push_back(picturePoint(job.orbit->energy, job.orbit->period));
+  setData(m_chosen, std::move(chosen));
+  scheduleRefresh();
+}
+
+void ModesPlot::choose(QPointF value) {
+  if (!m_atlas) return;
+  const QPointF clicked = chart()->mapToPosition(value);
+  double best = kChoiceRadius;
+  const core::FamilyOrbit<double>* found = nullptr;
+  for (const core::ModeFamily<double>& family : m_atlas->families) {
+    for (const core::FamilyOrbit<double>& orbit : family.orbits) {
+      const QPointF at = chart()->mapToPosition(picturePoint(orbit.energy, orbit.period));
+      const double distance = std::hypot(at.x() - clicked.x(), at.y() - clicked.y());
+      if (distance < best) {
+        best = distance;
+        found = &orbit;
+      }
+    }
+  }
+  if (found) emit orbitChosen(found->state);
+  else emit missed();
+}
+
+}  // namespace grazelab::ui

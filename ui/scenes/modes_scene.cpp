@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include <QCoreApplication>
+
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <optional>
+
+#include "core/chain.h"
+#include "core/nonlinear_modes.h"
+#include "core/orbits.h"
+#include "core/periodic_orbit.h"
+#include "ui/scenes/scenes.h"
+
+namespace grazelab::ui {
+namespace {
+
+QString tr(const char* text) {
+  return QCoreApplication::translate("grazelab::ui::ModesScene", text);
+}
+
+// The orbit through a start chosen on the atlas: the fewest impacts (1, 2, 4, 8) after which
+// its path closes (the atlas's states close to ~1e-14; a state moved by rounding still does to
+// 1e-9).
+std::optional<core::PeriodicOrbit<double>> orbitThrough(const core::Chain<double>& chain,
+                                                        const core::State& start) {
+  for (int impacts : {1, 2, 4, 8}) {
+    core::PeriodicOrbit<double> orbit = core::evaluateOrbit(chain, start, impacts, 1e-9);
+    if (orbit.admissible) return orbit;
+  }
+  return std::nullopt;
+}
+
+// The last atlas computed: it depends on the chain only, so moving T/T2, the run's length or a
+// click asks for it again and gets it at once (the worker runs one scene job at a time; the
+// lock is for the tests, which may compute on their own thread).
+struct AtlasCache {
+  std::mutex mutex;
+  std::optional<core::Model> model;
+  std::shared_ptr<const core::ModesAtlas<double>> atlas;
+};
+
+std::shared_ptr<const core::ModesAtlas<double>> atlasOf(const core::Chain<double>& chain, const DerivedModel& derived,
+                                                        std::stop_token stop) {
+  static AtlasCache cache;
+  {
+    const std::lock_guard lock(cache.mutex);
+    if (cache.model == derived.model) return cache.atlas;
+  }
+  // up to 4 impacts per period (0.1 s for the default chain)
+  const double grazing = core::energy(derived.model, core::gloData(derived.model, derived.modes, derived.lambdaStar));
+  auto atlas = std::make_shared<const core::ModesAtlas<double>>(
+      core::computeModesAtlas<double>(chain, 4, grazing / 100, grazing * 1e4, stop));
+  if (!atlas->complete) return nullptr;
+  const std::lock_guard lock(cache.mutex);
+  cache.model = derived.model;
+  cache.atlas = atlas;
+  return atlas;
+}
+
+}  // namespace
+
+Scene::Spec modesScene() {
+  Scene::Spec scene;
+  scene.name = QStringLiteral("Nonlinear modes: periodic motions with impacts");
+  scene.alias = QStringLiteral("modes");
+  scene.title = tr("Nonlinear modes: periodic motions with impacts");
+  scene.text = tr("<b>The chain's periodic motions with impacts.</b> Each dot of the top-left "
+                  "picture is a motion that repeats after k impacts, at its frequency and energy; "
+                  "the families of them are the chain's <i>nonlinear normal modes</i>. Filled dots "
+                  "are stable, rings unstable. <i>Look for:</i> the one-impact family (blue) ends at "
+                  "low energy on the grazing orbit GLO(λ*); where its multipliers (top middle) meet "
+                  "at −1 it <i>flips</i> (squares): it turns unstable and a family with twice the "
+                  "impacts (orange) is born at half the frequency. <i>Click</i> any dot to see that "
+                  "motion repeat in u₂(t), its phase portrait, its impacts on H and the chain.");
+  scene.defaults.periodFraction = 0.9;
+  scene.defaults.perturbation = 0;
+  scene.defaults.horizon = 40;
+  scene.parameters = {ParamKey::Period, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
+                      ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
+  scene.plots = {PlotKind::ModesAtlas, PlotKind::Multipliers, PlotKind::TraceU2,
+                 PlotKind::PhaseU2V2,  PlotKind::Poincare,    PlotKind::Chain};
+  scene.buildFromStart = [](const Scene& self, const Params& params, const DerivedModel& derived,
+                            const std::optional<core::State>& clicked, std::stop_token stop) {
+    SceneJob job;
+    job.spec.model = derived.model;
+    const core::ChainOrProblem<double> formed = core::makeChain(derived.model);
+    if (!formed.chain) {
+      job.message = QString::fromStdString(formed.problem);
+      return job;
+    }
+    const core::Chain<double>& chain = *formed.chain;
+    if (!chain.resonant) {
+      job.message = tr("the nonlinear modes start from the one-impact family of the 1:2 resonant "
+                       "chain: tick the 1:2 design");
+      return job;
+    }
+    const double T2 = derived.modes.T2;
+    const double lowFraction = core::onePeriodicLowerEnd(derived.model, derived.modes) / T2;
+    job.sliderRanges[ParamKey::Period] = {std::ceil(lowFraction * 1000 + 1e-9) / 1000, 0.999};
+    job.modes = atlasOf(chain, derived, stop);
+    if (!job.modes) return job;  // stopped
+    // the orbit followed: the one clicked on the atlas, or the 1IPP orbit of the slider's period
+    if (clicked) {
+      job.orbit = orbitThrough(chain, *clicked);
+      if (!job.orbit) {
+        job.message = tr("the start chosen is not a periodic orbit with 1, 2, 4 or 8 impacts: "
+                         "click a dot of the modes picture");
+        return job;
+      }
+    } else {
+      const core::OrbitSearch<double> found = core::onePeriodicOrbitStability(chain, params.periodFraction * T2);
+      if (!found.orbit) {
+        job.message = tr("No one-impact orbit of stable form for T/T₂ = %1 (%2): move the slider")
+                          .arg(params.periodFraction, 0, 'g', 6)
+                          .arg(QString::fromStdString(found.problem));
+        return job;
+      }
+      job.orbit = found.orbit;
+    }
+    const core::PeriodicOrbit<double>& orbit = *job.orbit;
+    const std::string symmetry = core::orbitSymmetry(orbit, 1e-9);
+    job.notes.append(tr("The orbit shown: %1 impact(s) per period T = %2 (%3 T₂), energy %4, %5%6")
+                         .arg(orbit.impacts)
+                         .arg(orbit.period, 0, 'g', 6)
+                         .arg(orbit.period / T2, 0, 'g', 5)
+                         .arg(orbit.energy, 0, 'g', 5)
+                         .arg(QString::fromUtf8(core::toString(orbit.stability).data()))
+                         .arg(symmetry.empty() ? QString() : tr(", symmetric (type %1)").arg(QString::fromStdString(symmetry))));
+    job.spec.run.initial = orbit.state;
+    job.spec.run.maxContacts = std::int64_t(params.horizon);
+    job.spec.run.needs = needsFor(self.plots(), derived.modes, 400 * T2);
+    job.reference = orbit.state;
+    job.referenceLabel = tr("the orbit's impact");
+    job.ok = true;
+    return job;
+  };
+  return scene;
+}
+
+}  // namespace grazelab::ui
