@@ -113,6 +113,36 @@ TEST(PeriodicContinuationTest, theAtlasFamiliesBornAtFlipsHaveTwiceTheImpactsAnd
   EXPECT_GE(born, 3);  // two 2-impact families from the 1IPP flips, a 4-impact one from a 2-impact flip
 }
 
+// The default chain's atlas has symmetric families of both kinds; on a type-B orbit the
+// impacts come in mirror pairs (u1, v1), (u1, -v1), on a type-A one every impact has v1 = 0,
+// checked on the orbit's own path.
+TEST(PeriodicContinuationTest, theAtlasHasSymmetricFamiliesOfBothTypes) {
+  const Chain<double> chain = resonantChain(0.5);
+  const ModesAtlas<double> atlas = computeModesAtlas<double>(chain, 2, grazingEnergy(chain) / 100, grazingEnergy(chain) * 1e4);
+  bool a = false, b = false;
+  for (const ModeFamily<double>& family : atlas.families) {
+    const FamilyOrbit<double>& middle = family.orbits[family.orbits.size() / 2];
+    const PeriodicOrbit<double> orbit = evaluateOrbit(chain, middle.state, family.impacts, 1e-9);
+    ASSERT_TRUE(orbit.admissible) << orbit.reason;
+    const double speed = chain.omegaSlow * chain.model.gap;
+    if (family.symmetry == "A") {
+      a = true;
+      for (const auto& event : orbit.events) EXPECT_LT(std::abs(event.after.v1), 1e-9 * speed);
+    }
+    if (family.symmetry == "B") {
+      b = true;
+      ASSERT_EQ(orbit.events.size(), 2u);
+      const auto& first = orbit.events[0].after;
+      const auto& second = orbit.events[1].after;
+      EXPECT_NEAR(first.u1, second.u1, 1e-9);
+      EXPECT_NEAR(first.v1, -second.v1, 1e-9 * speed);
+      EXPECT_GT(std::abs(first.v1), 1e-3 * speed);  // not type A in disguise
+    }
+  }
+  EXPECT_TRUE(a);
+  EXPECT_TRUE(b);
+}
+
 TEST(PeriodicContinuationTest, aStopLeavesTheAtlasIncomplete) {
   const Chain<double> chain = resonantChain(0.5);
   std::stop_source stopper;
