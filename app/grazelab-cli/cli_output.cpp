@@ -8,14 +8,8 @@
 #include "core/orbits.h"
 
 namespace grazelab::cli {
-namespace {
 
-template <typename S>
-std::string number(const S& value) {
-  return core::isFinite(value) ? core::formatScalar(value) : std::string("null");
-}
-
-std::string quoted(const std::string& text) {
+std::string jsonQuoted(const std::string& text) {
   std::string out = "\"";
   for (char c : text) {
     if (c == '"' || c == '\\') out += '\\';
@@ -23,6 +17,15 @@ std::string quoted(const std::string& text) {
   }
   return out + "\"";
 }
+
+namespace {
+
+template <typename S>
+std::string number(const S& value) {
+  return jsonNumber(value);
+}
+
+std::string quoted(const std::string& text) { return jsonQuoted(text); }
 
 // a flat JSON object from (key, already formatted value) pairs
 std::string object(std::initializer_list<std::pair<const char*, std::string>> fields) {

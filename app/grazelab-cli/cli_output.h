@@ -12,6 +12,15 @@
 
 namespace grazelab::cli {
 
+/// A number as JSON with the digits of its precision; null when it is not finite.
+template <typename S>
+std::string jsonNumber(const S& value) {
+  return core::isFinite(value) ? core::formatScalar(value) : std::string("null");
+}
+
+/// A string as JSON (quotes and backslashes escaped).
+std::string jsonQuoted(const std::string& text);
+
 /// `info`: the model with its derived quantities (k2, w1, w2, T1, T2, P, lambda*), as JSON.
 template <typename S>
 std::string infoJson(const ModelInput<S>& model);

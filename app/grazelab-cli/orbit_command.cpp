@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli_input.h"
+#include "cli_output.h"
 #include "core/periodic_orbit.h"
 #include "report_command.h"
 
@@ -19,23 +20,9 @@ namespace {
 const QStringList kOrbitOnly = {"period", "impacts", "energy", "guess"};
 
 template <typename S>
-std::string number(const S& value) {
-  return core::isFinite(value) ? core::formatScalar(value) : std::string("null");
-}
-
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
-template <typename S>
 std::string stateJson(const core::BasicState<S>& x) {
-  return "{\"u1\": " + number(x.u1) + ", \"u2\": " + number(x.u2) + ", \"v1\": " + number(x.v1) +
-         ", \"v2\": " + number(x.v2) + "}";
+  return "{\"u1\": " + jsonNumber(x.u1) + ", \"u2\": " + jsonNumber(x.u2) + ", \"v1\": " + jsonNumber(x.v1) +
+         ", \"v2\": " + jsonNumber(x.v2) + "}";
 }
 
 template <typename S>
@@ -46,7 +33,7 @@ std::string orbitJson(const core::PeriodicOrbit<S>& orbit, const core::Chain<S>&
   for (std::size_t i = 0; i < orbit.events.size(); ++i) {
     const core::BasicEvent<S>& e = orbit.events[i];
     if (i > 0) events += ", ";
-    events += "{\"t\": " + number(e.t) + ", \"type\": " + quoted(std::string(core::toString(e.type))) +
+    events += "{\"t\": " + jsonNumber(e.t) + ", \"type\": " + jsonQuoted(std::string(core::toString(e.type))) +
               ", \"before\": " + stateJson(e.before) + ", \"after\": " + stateJson(e.after) + "}";
   }
   events += "]";
@@ -55,29 +42,29 @@ std::string orbitJson(const core::PeriodicOrbit<S>& orbit, const core::Chain<S>&
   const core::BasicModel<S>& m = chain.model;
   std::string out = "{\n";
   out += "  \"format\": \"grazelab-orbit\",\n";
-  out += "  \"precision\": " + quoted(precision) + ",\n";
-  out += "  \"model\": {\"m1\": " + number(m.m1) + ", \"m2\": " + number(m.m2) + ", \"k1\": " +
-         number(m.k1) + ", \"k2\": " + number(S(chain.kappa * m.k1)) + ", \"gap\": " + number(m.gap) +
-         ", \"T2\": " + number(T2) + "},\n";
-  out += "  \"period\": " + number(orbit.period) + ",\n";
-  out += "  \"T_over_T2\": " + number(S(orbit.period / T2)) + ",\n";
-  out += "  \"energy\": " + number(orbit.energy) + ",\n";
+  out += "  \"precision\": " + jsonQuoted(precision) + ",\n";
+  out += "  \"model\": {\"m1\": " + jsonNumber(m.m1) + ", \"m2\": " + jsonNumber(m.m2) + ", \"k1\": " +
+         jsonNumber(m.k1) + ", \"k2\": " + jsonNumber(S(chain.kappa * m.k1)) + ", \"gap\": " + jsonNumber(m.gap) +
+         ", \"T2\": " + jsonNumber(T2) + "},\n";
+  out += "  \"period\": " + jsonNumber(orbit.period) + ",\n";
+  out += "  \"T_over_T2\": " + jsonNumber(S(orbit.period / T2)) + ",\n";
+  out += "  \"energy\": " + jsonNumber(orbit.energy) + ",\n";
   out += "  \"impacts\": " + std::to_string(orbit.impacts) + ",\n";
   out += "  \"state\": " + stateJson(orbit.state) + ",\n";
   out += "  \"events\": " + events + ",\n";
-  out += "  \"trace\": " + number(orbit.trace) + ",\n";
-  out += "  \"multipliers\": [[" + number(mu[0][0]) + ", " + number(mu[0][1]) + "], [" +
-         number(mu[1][0]) + ", " + number(mu[1][1]) + "]],\n";
-  out += "  \"stability\": " + quoted(std::string(core::toString(orbit.stability))) + ",\n";
-  out += "  \"symmetry\": " + (symmetry.empty() ? std::string("null") : quoted(symmetry)) + ",\n";
-  out += "  \"checks\": {\"det_minus_1\": " + number(orbit.checks.detMinus1) +
-         ", \"trivial_pair\": " + number(orbit.checks.trivialPair) +
-         ", \"periodicity_residual\": " + number(orbit.checks.periodicityResidual) + "},\n";
-  out += "  \"min_impact_speed\": " + number(orbit.minImpactSpeed) + ",\n";
-  out += "  \"min_clearance\": " + number(orbit.minClearance) + ",\n";
+  out += "  \"trace\": " + jsonNumber(orbit.trace) + ",\n";
+  out += "  \"multipliers\": [[" + jsonNumber(mu[0][0]) + ", " + jsonNumber(mu[0][1]) + "], [" +
+         jsonNumber(mu[1][0]) + ", " + jsonNumber(mu[1][1]) + "]],\n";
+  out += "  \"stability\": " + jsonQuoted(std::string(core::toString(orbit.stability))) + ",\n";
+  out += "  \"symmetry\": " + (symmetry.empty() ? std::string("null") : jsonQuoted(symmetry)) + ",\n";
+  out += "  \"checks\": {\"det_minus_1\": " + jsonNumber(orbit.checks.detMinus1) +
+         ", \"trivial_pair\": " + jsonNumber(orbit.checks.trivialPair) +
+         ", \"periodicity_residual\": " + jsonNumber(orbit.checks.periodicityResidual) + "},\n";
+  out += "  \"min_impact_speed\": " + jsonNumber(orbit.minImpactSpeed) + ",\n";
+  out += "  \"min_clearance\": " + jsonNumber(orbit.minClearance) + ",\n";
   out += "  \"admissible\": true,\n";
   out += "  \"reason\": null,\n";
-  out += "  \"generator\": " + quoted("grazelab-cli " + QCoreApplication::applicationVersion().toStdString()) + "\n";
+  out += "  \"generator\": " + jsonQuoted("grazelab-cli " + QCoreApplication::applicationVersion().toStdString()) + "\n";
   out += "}\n";
   return out;
 }

@@ -15,6 +15,7 @@
 #include "core/setup.h"
 #include "core/simulate.h"
 #include "parallel/tbb_parallel_for.h"
+#include "support/point_bits.h"
 
 namespace grazelab::core::experiments {
 namespace {
@@ -109,15 +110,7 @@ TEST(ExperimentRunTest, aStopEndsItWithAFinalReport) {
   EXPECT_LT(last.result->cost.impacts, 50'000'000);
 }
 
-bool sameBits(const PointSummary& a, const PointSummary& b) {
-  const double da[] = {a.fftFirst, a.fftMin, a.fftMax, a.fftMean, a.firstImpactTime, a.horizon};
-  const double db[] = {b.fftFirst, b.fftMin, b.fftMax, b.fftMean, b.firstImpactTime, b.horizon};
-  for (int i = 0; i < 6; ++i) {
-    if (std::bit_cast<std::uint64_t>(da[i]) != std::bit_cast<std::uint64_t>(db[i])) return false;
-  }
-  return a.impacts == b.impacts && a.grazings == b.grazings && a.sticks == b.sticks &&
-         a.valid == b.valid;
-}
+using testing::sameBits;
 
 TEST(ExperimentRunTest, itsMapIsTheMapComputedWholeAndIsRemembered) {
   Spec spec = gloRun(0.5, -0.05, 10);

@@ -12,6 +12,7 @@
 #include "core/orbits.h"
 #include "core/maps.h"
 #include "parallel/tbb_parallel_for.h"
+#include "support/point_bits.h"
 
 namespace grazelab::core {
 namespace {
@@ -25,16 +26,7 @@ MapSpec grazingPlane(std::int64_t columns, std::int64_t rows, std::int64_t conta
   return spec;
 }
 
-// the same numbers bit for bit (NaN included), field by field
-bool sameBits(const PointSummary& a, const PointSummary& b) {
-  const double da[] = {a.fftFirst, a.fftMin, a.fftMax, a.fftMean, a.firstImpactTime, a.horizon};
-  const double db[] = {b.fftFirst, b.fftMin, b.fftMax, b.fftMean, b.firstImpactTime, b.horizon};
-  for (int i = 0; i < 6; ++i) {
-    if (std::bit_cast<std::uint64_t>(da[i]) != std::bit_cast<std::uint64_t>(db[i])) return false;
-  }
-  return a.impacts == b.impacts && a.grazings == b.grazings && a.sticks == b.sticks &&
-         a.valid == b.valid;
-}
+using testing::sameBits;
 
 double periodOf(const Model& model) {
   Model designed = model;

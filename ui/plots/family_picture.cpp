@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ui/plots/heat_map.h"
+#include "ui/plots/energy_frame.h"
 #include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {
@@ -36,10 +36,8 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
   const double ePad = std::max(0.05 * (eHi - eLo), 0.05);
   const double wPad = std::max(0.05 * (wHi - wLo), 0.02 * wHi);
   eLo -= ePad, eHi += ePad, wLo -= wPad, wHi += wPad;
-  auto at = [&](double energy, double omega) {
-    return QPointF(plot.left() + (std::log10(energy) - eLo) / (eHi - eLo) * plot.width(),
-                   plot.bottom() - (omega - wLo) / (wHi - wLo) * plot.height());
-  };
+  const EnergyFrame frame = makeEnergyFrame(plot, eLo, eHi, wLo, wHi);
+  auto at = [&](double energy, double omega) { return frame.at(std::log10(energy), omega); };
 
   const QFont font = painter.font();
   QFont bold = font;
@@ -50,26 +48,8 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
   painter.setFont(font);
 
   painter.setRenderHint(QPainter::Antialiasing, true);
-  painter.setPen(QPen(QColor(0xdd, 0xdd, 0xdd), 1));
-  const double tick = 0.4 * line;
-  // x: decades (and 2, 5 between them when few decades show)
-  std::vector<double> xTicks;
-  for (double d = std::floor(eLo); d <= eHi; d += 1) {
-    for (double m : {1.0, 2.0, 5.0}) {
-      const double v = std::log10(m) + d;
-      if (v >= eLo && v <= eHi && (m == 1 || eHi - eLo < 3)) xTicks.push_back(v);
-    }
-  }
   painter.setClipRect(plot);
-  for (double v : xTicks) {
-    const double px = plot.left() + (v - eLo) / (eHi - eLo) * plot.width();
-    painter.drawLine(QPointF(px, plot.top()), QPointF(px, plot.bottom()));
-  }
-  const std::vector<double> yTicks = niceTicks(wLo, wHi, 6);
-  for (double w : yTicks) {
-    const double py = plot.bottom() - (w - wLo) / (wHi - wLo) * plot.height();
-    painter.drawLine(QPointF(plot.left(), py), QPointF(plot.right(), py));
-  }
+  paintEnergyGrid(painter, frame);
   // inadmissible orbits: grey crosses; admissible: a solid line through consecutive members.
   // Points outside the plot are left out rather than clipped: an SVG painter ignores clips.
   painter.setPen(QPen(QColor(0x99, 0x99, 0x99), 1.2));
@@ -100,32 +80,10 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
   painter.drawEllipse(end, 6, 6);
   painter.setClipping(false);
 
-  painter.setBrush(Qt::NoBrush);
-  painter.setPen(QPen(Qt::black, 1));
-  painter.drawRect(plot);
-  for (double v : xTicks) {
-    const double px = plot.left() + (v - eLo) / (eHi - eLo) * plot.width();
-    painter.drawLine(QPointF(px, plot.bottom()), QPointF(px, plot.bottom() + tick));
-    painter.drawText(QRectF(px - 3 * line, plot.bottom() + tick, 6 * line, line), Qt::AlignCenter,
-                     QString::number(std::pow(10.0, v), 'g', 3));
-  }
-  for (double w : yTicks) {
-    const double py = plot.bottom() - (w - wLo) / (wHi - wLo) * plot.height();
-    painter.drawLine(QPointF(plot.left() - tick, py), QPointF(plot.left(), py));
-    painter.drawText(QRectF(plot.left() - tick - 5 * line, py - line / 2, 5 * line - 0.3 * line, line),
-                     Qt::AlignRight | Qt::AlignVCenter, QString::number(w, 'g', 4));
-  }
-  painter.drawText(QRectF(plot.left(), plot.bottom() + tick + 1.1 * line, plot.width(), 1.4 * line),
-                   Qt::AlignCenter, "energy E of the orbit (log scale)");
-  painter.save();
-  painter.translate(area.left() + 0.9 * line, plot.center().y());
-  painter.rotate(-90);
-  painter.drawText(QRectF(-plot.height() / 2, -0.8 * line, plot.height(), 1.6 * line), Qt::AlignCenter,
-                   "frequency 2π / T");
-  painter.restore();
+  paintEnergyAxes(painter, frame, area, line);
 
   // the key under the axis title
-  const double keyY = plot.bottom() + tick + 3 * line;
+  const double keyY = plot.bottom() + 0.4 * line + 3 * line;
   double x = plot.left();
   painter.setPen(QPen(colors::kTrace, 2.5));
   painter.drawLine(QPointF(x, keyY + line / 2), QPointF(x + 2 * line, keyY + line / 2));

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <set>
 
-#include "ui/plots/heat_map.h"
+#include "ui/plots/energy_frame.h"
 #include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {
@@ -47,10 +47,8 @@ void paintModes(QPainter& painter, const QRectF& area, const std::vector<ModesPi
   const double ePad = std::max(0.05 * (eHi - eLo), 0.05);
   const double wPad = std::max(0.05 * (wHi - wLo), 0.02 * std::abs(wHi));
   eLo -= ePad, eHi += ePad, wLo -= wPad, wHi += wPad;
-  const auto at = [&](const QPointF& p) {
-    return QPointF(plot.left() + (p.x() - eLo) / (eHi - eLo) * plot.width(),
-                   plot.bottom() - (p.y() - wLo) / (wHi - wLo) * plot.height());
-  };
+  const EnergyFrame frame = makeEnergyFrame(plot, eLo, eHi, wLo, wHi);
+  const auto at = [&](const QPointF& p) { return frame.at(p.x(), p.y()); };
 
   const QFont font = painter.font();
   QFont bold = font;
@@ -60,25 +58,7 @@ void paintModes(QPainter& painter, const QRectF& area, const std::vector<ModesPi
   painter.drawText(QRectF(area.left(), area.top(), area.width(), 2 * line), Qt::AlignCenter, title);
   painter.setFont(font);
   painter.setRenderHint(QPainter::Antialiasing, true);
-
-  // grid: decades of energy, round frequencies
-  painter.setPen(QPen(QColor(0xdd, 0xdd, 0xdd), 1));
-  std::vector<double> xTicks;
-  for (double d = std::floor(eLo); d <= eHi; d += 1) {
-    for (double m : {1.0, 2.0, 5.0}) {
-      const double v = std::log10(m) + d;
-      if (v >= eLo && v <= eHi && (m == 1 || eHi - eLo < 3)) xTicks.push_back(v);
-    }
-  }
-  const std::vector<double> yTicks = niceTicks(wLo, wHi, 6);
-  for (double v : xTicks) {
-    const double px = at(QPointF(v, wLo)).x();
-    painter.drawLine(QPointF(px, plot.top()), QPointF(px, plot.bottom()));
-  }
-  for (double w : yTicks) {
-    const double py = at(QPointF(eLo, w)).y();
-    painter.drawLine(QPointF(plot.left(), py), QPointF(plot.right(), py));
-  }
+  paintEnergyGrid(painter, frame);
 
   // the families: runs of stable points solid, unstable dashed (points outside are left out:
   // an SVG painter ignores clips)
@@ -149,34 +129,11 @@ void paintModes(QPainter& painter, const QRectF& area, const std::vector<ModesPi
     painter.drawText(chosen, Qt::AlignCenter, text);
   }
 
-  painter.setBrush(Qt::NoBrush);
-  painter.setPen(QPen(Qt::black, 1));
-  painter.drawRect(plot);
-  const double tick = 0.4 * line;
-  for (double v : xTicks) {
-    const double px = at(QPointF(v, wLo)).x();
-    painter.drawLine(QPointF(px, plot.bottom()), QPointF(px, plot.bottom() + tick));
-    painter.drawText(QRectF(px - 3 * line, plot.bottom() + tick, 6 * line, line), Qt::AlignCenter,
-                     QString::number(std::pow(10.0, v), 'g', 3));
-  }
-  for (double w : yTicks) {
-    const double py = at(QPointF(eLo, w)).y();
-    painter.drawLine(QPointF(plot.left() - tick, py), QPointF(plot.left(), py));
-    painter.drawText(QRectF(plot.left() - tick - 5 * line, py - line / 2, 5 * line - 0.3 * line, line),
-                     Qt::AlignRight | Qt::AlignVCenter, QString::number(w, 'g', 4));
-  }
-  painter.drawText(QRectF(plot.left(), plot.bottom() + tick + 1.1 * line, plot.width(), 1.4 * line),
-                   Qt::AlignCenter, "energy E of the orbit (log scale)");
-  painter.save();
-  painter.translate(area.left() + 0.9 * line, plot.center().y());
-  painter.rotate(-90);
-  painter.drawText(QRectF(-plot.height() / 2, -0.8 * line, plot.height(), 1.6 * line), Qt::AlignCenter,
-                   "frequency 2π / T");
-  painter.restore();
+  paintEnergyAxes(painter, frame, area, line);
 
   // the key: one entry per number of impacts shown, then the line styles and the flip mark;
   // an entry that would pass the right edge starts a new row
-  double keyY = plot.bottom() + tick + 3 * line;
+  double keyY = plot.bottom() + 0.4 * line + 3 * line;
   double x = plot.left();
   const auto room = [&](double width) {
     if (x + width > area.right() - line && x > plot.left()) {
