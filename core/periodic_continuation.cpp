@@ -171,6 +171,9 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
   Evaluation<S> here = evaluate(chain, units, y, k);
   const auto finish = [&](const std::string& kind, const PeriodicOrbit<S>& last) {
     family.end = {kind, last.energy, last.period, last.state};
+    if (kind == "grazing-orbit") {
+      family.end.gloLambda = (last.state.u1 / chain.model.gap - chain.rhoFast) / (chain.rhoSlow - chain.rhoFast);
+    }
     return family;
   };
   if (!here.usable) return finish("undecided", start);

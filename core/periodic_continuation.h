@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
+#include <limits>
 #include <stop_token>
 #include <string>
 #include <vector>
@@ -40,6 +41,10 @@ struct FamilyEnd {
   S energy = 0;
   S period = 0;
   BasicState<S> state;
+  /// a grazing-orbit end: the lambda of the grazing linear orbit GLO_lambda that the family
+  /// tends to, from the last orbit's impact data u1 = d [(1 - lambda) rho_fast + lambda rho_slow]
+  /// (as near to the limit as the last orbit is); NaN for other ends
+  S gloLambda = std::numeric_limits<S>::quiet_NaN();
 };
 
 template <typename S>

@@ -46,8 +46,10 @@ QJsonObject stateJson(const core::BasicState<S>& x) {
 
 template <typename S>
 QJsonObject endJson(const core::FamilyEnd<S>& end) {
-  return {{"kind", QString::fromStdString(end.kind)}, {"energy", scalarJson(end.energy)},
-          {"period", scalarJson(end.period)}, {"state", stateJson(end.state)}};
+  QJsonObject json{{"kind", QString::fromStdString(end.kind)}, {"energy", scalarJson(end.energy)},
+                   {"period", scalarJson(end.period)}, {"state", stateJson(end.state)}};
+  if (core::isFinite(end.gloLambda)) json["glo_lambda"] = scalarJson(end.gloLambda);
+  return json;
 }
 
 const char* const kColumns = "energy,period,omega,trace,stability,u1,v1,min_impact_speed,min_clearance";
@@ -134,6 +136,12 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
     for (const core::FamilyEnd<S>* end : {&family.end, &family.startEnd}) {
       if (end->kind == "period-doubling" || end->kind.empty() || !(end->period > 0)) continue;
       QString label = QString::fromStdString(end->kind);
+      // a grazing end named by the grazing linear orbit it tends to
+      if (core::isFinite(end->gloLambda)) {
+        // to the three decimals a picture shows (no "-0.000" for a lambda of -2e-7)
+        const double lambda = std::round(double(end->gloLambda) * 1000) / 1000 + 0.0;
+        label = QStringLiteral("GLO(λ ≈ %1)").arg(lambda, 0, 'f', 3);
+      }
       if (end->kind == "energy-limit" || end->kind == "step-limit") continue;  // not an end of the family
       marks.push_back({QPointF(std::log10(double(end->energy)), 2 * M_PI / double(end->period)), label});
     }
@@ -173,7 +181,9 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
               "orbit), interior-grazing (a flight touches the stop), impact-speed-zero (one impact fades), "
               "energy-limit (the --energy-range), step-limit, undecided (the continuation cannot go on "
               "with no event in sight); an end is classified from the last orbit within 5 % of w2 d or "
-              "of the gap, not located to full precision (the bifurcations are)"},
+              "of the gap, not located to full precision (the bifurcations are); energy, period and "
+              "state are the last orbit's; a grazing-orbit end gives glo_lambda, the GLO_lambda the "
+              "family tends to (lambda* for the 1IPP family, 0 for GLOM1)"},
       {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
   files.emplace_back(prefix + ".json", QJsonDocument(json).toJson());
   for (const auto& [path, bytes] : files) {

@@ -79,6 +79,7 @@ TEST(PeriodicContinuationTest, itsFlipsAreTheClosedFormsAndItEndsOnTheGrazingOrb
   EXPECT_NEAR(closed[0], 0.7, 1e-12);
   EXPECT_NEAR(closed[1], 2.0, 1e-12);
   EXPECT_EQ(down.end.kind, "grazing-orbit");
+  EXPECT_NEAR(down.end.gloLambda, lambdaStar(chain), 1e-6);  // Theorem 2.1: it ends on GLO(lambda*)
   EXPECT_NEAR(down.end.energy, grazingEnergy(chain), 1e-6 * grazingEnergy(chain));
   EXPECT_NEAR(down.end.period, T2, 1e-6 * T2);
   EXPECT_EQ(up.end.kind, "energy-limit");
@@ -141,6 +142,17 @@ TEST(PeriodicContinuationTest, theAtlasHasSymmetricFamiliesOfBothTypes) {
   }
   EXPECT_TRUE(a);
   EXPECT_TRUE(b);
+  // the 2-impact family born at E = 2 and the 1IPP part below T1 end on GLOM1 (lambda = 0,
+  // E = 1.5 for this chain)
+  int onGlom1 = 0;
+  for (const ModeFamily<double>& family : atlas.families) {
+    for (const FamilyEnd<double>* end : {&family.end, &family.startEnd}) {
+      if (end->kind != "grazing-orbit" || std::abs(end->gloLambda) > 1e-3) continue;
+      ++onGlom1;
+      EXPECT_NEAR(end->energy, 1.5, 1e-4);
+    }
+  }
+  EXPECT_EQ(onGlom1, 2);
 }
 
 TEST(PeriodicContinuationTest, aStopLeavesTheAtlasIncomplete) {
