@@ -156,6 +156,32 @@ std::optional<PeriodicOrbit<S>> locate(const Chain<S>& chain, const Units<S>& un
   return best;
 }
 
+// An end where impact speeds tend to 0 is a square-root singularity of the family in its
+// energy (the speeds go like the root of the distance to the end): the arclength steps stall
+// short of it. The energy is bisected instead between `inside` (an orbit of the family) and
+// `outside` (no orbit of the family), each trial solved by Newton at fixed energy from the
+// nearest orbit found, down to the precision of S or to where S cannot decide the impacts.
+template <typename S>
+PeriodicOrbit<S> approachInEnergy(const Chain<S>& chain, const Units<S>& units, PeriodicOrbit<S> inside,
+                                  S outside, int impacts) {
+  using std::abs;
+  const auto onFamily = [&](const S& energy) -> std::optional<PeriodicOrbit<S>> {
+    OrbitSearch<S> found = findOrbit(chain, energy, inside.state.u1, inside.state.v1, impacts);
+    if (!found.orbit) return std::nullopt;
+    const bool near = abs(found.orbit->state.u1 - inside.state.u1) < S(0.05) * units.position &&
+                      abs(found.orbit->state.v1 - inside.state.v1) < S(0.05) * units.speed;
+    return near ? std::move(found.orbit) : std::nullopt;
+  };
+  if (onFamily(outside)) return inside;  // the family goes on there: nothing to refine
+  for (int step = 0; step < 200; ++step) {
+    const S middle = (inside.energy + outside) / S(2);
+    if (middle == inside.energy || middle == outside) break;
+    if (std::optional<PeriodicOrbit<S>> found = onFamily(middle)) inside = std::move(*found);
+    else outside = middle;
+  }
+  return inside;
+}
+
 }  // namespace
 
 template <typename S>
@@ -213,6 +239,13 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
       if (allSlow || (slow && close)) kind = "grazing-orbit";
       else if (slow) kind = "impact-speed-zero";
       else if (close || touches) kind = "interior-grazing";
+      if (slow) {
+        // located in the energy, past where the arclength steps stalled
+        using std::exp;
+        const S beyond = last.energy * exp(S(t[2] > 0 ? 1 : -1) * std::max(S(4) * h, S(1e-3)));
+        last = approachInEnergy(chain, units, last, beyond, k);
+        family.orbits.push_back(summary(last));
+      }
       return finish(kind, last);
     }
     const Vector3<S> next = corrected->first;

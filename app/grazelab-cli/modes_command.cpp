@@ -181,8 +181,9 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
               "orbit), interior-grazing (a flight touches the stop), impact-speed-zero (one impact fades), "
               "energy-limit (the --energy-range), step-limit, undecided (the continuation cannot go on "
               "with no event in sight); an end is classified from the last orbit within 5 % of w2 d or "
-              "of the gap, not located to full precision (the bifurcations are); energy, period and "
-              "state are the last orbit's; a grazing-orbit end gives glo_lambda, the GLO_lambda the "
+              "of the gap; where impact speeds tend to 0 it is located by bisection in the energy "
+              "when Newton at fixed energy can follow (the 1IPP family's end to 1e-12), else it is "
+              "where the arclength steps stalled; energy, period and state are the last orbit's; a grazing-orbit end gives glo_lambda, the GLO_lambda the "
               "family tends to (lambda* for the 1IPP family, 0 for GLOM1)"},
       {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
   files.emplace_back(prefix + ".json", QJsonDocument(json).toJson());
