@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "core/periodic_continuation.h"
 
+#include "core/orbits.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -182,6 +184,36 @@ PeriodicOrbit<S> approachInEnergy(const Chain<S>& chain, const Units<S>& units, 
   return inside;
 }
 
+// A family whose impacts all fade ends on a grazing linear orbit. Two such limits are known
+// exactly: a period tending to an odd number of fast periods T1 belongs to GLOM1 alone (every
+// free motion repeats after T2 = 2 T1; only the pure fast mode after T1), and the one-impact
+// family ends on GLO_lambda* at T2 (Theorem 2.1). The end then is the limit orbit itself.
+template <typename S>
+void endOnGrazingOrbit(const Chain<S>& chain, int impacts, FamilyEnd<S>& end) {
+  using std::abs;
+  using std::round;
+  if (!chain.resonant) return;
+  const S T2 = twoPi<S>() / chain.omegaSlow;
+  const S T1 = T2 / S(2);
+  const S fastPeriods = end.period / T1;
+  const S nearest = round(fastPeriods);
+  const bool odd = nearest > S(0) && static_cast<long long>(toDouble(nearest)) % 2 == 1;
+  if (odd && abs(fastPeriods - nearest) < S(1e-2) && abs(end.gloLambda) < S(1e-2)) {
+    end.state = glomData(chain, Mode::Fast);
+    end.gloLambda = S(0);
+    end.period = nearest * T1;
+  } else if (impacts == 1 && abs(end.period / T2 - S(1)) < S(1e-2) &&
+             abs(end.gloLambda - lambdaStar(chain)) < S(1e-2)) {
+    end.gloLambda = lambdaStar(chain);
+    end.state = gloData(chain, end.gloLambda);
+    end.period = T2;
+  } else {
+    return;
+  }
+  end.energy = physicalEnergy(chain, end.state);
+  end.exact = true;
+}
+
 }  // namespace
 
 template <typename S>
@@ -197,8 +229,10 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
   Evaluation<S> here = evaluate(chain, units, y, k);
   const auto finish = [&](const std::string& kind, const PeriodicOrbit<S>& last) {
     family.end = {kind, last.energy, last.period, last.state};
+    family.end.lastEnergy = last.energy;
     if (kind == "grazing-orbit") {
       family.end.gloLambda = (last.state.u1 / chain.model.gap - chain.rhoFast) / (chain.rhoSlow - chain.rhoFast);
+      endOnGrazingOrbit(chain, k, family.end);
     }
     return family;
   };

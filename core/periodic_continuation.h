@@ -45,6 +45,12 @@ struct FamilyEnd {
   /// tends to, from the last orbit's impact data u1 = d [(1 - lambda) rho_fast + lambda rho_slow]
   /// (as near to the limit as the last orbit is); NaN for other ends
   S gloLambda = std::numeric_limits<S>::quiet_NaN();
+  /// energy, period, state and gloLambda are the limit orbit's, exactly, not the last orbit's:
+  /// a family whose period tends to an odd number of fast periods T1 can only end on GLOM1 (a
+  /// free motion repeats after T2; only the pure fast mode after T1), and the one-impact family
+  /// ends on GLO_lambda* at T2 (Theorem 2.1)
+  bool exact = false;
+  S lastEnergy = 0;  ///< the energy of the last orbit computed, to see how near it came
 };
 
 template <typename S>

@@ -49,6 +49,10 @@ QJsonObject endJson(const core::FamilyEnd<S>& end) {
   QJsonObject json{{"kind", QString::fromStdString(end.kind)}, {"energy", scalarJson(end.energy)},
                    {"period", scalarJson(end.period)}, {"state", stateJson(end.state)}};
   if (core::isFinite(end.gloLambda)) json["glo_lambda"] = scalarJson(end.gloLambda);
+  if (end.kind == "grazing-orbit") {
+    json["exact"] = end.exact;
+    json["last_energy"] = scalarJson(end.lastEnergy);
+  }
   return json;
 }
 
@@ -137,7 +141,9 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
       if (end->kind == "period-doubling" || end->kind.empty() || !(end->period > 0)) continue;
       QString label = QString::fromStdString(end->kind);
       // a grazing end named by the grazing linear orbit it tends to
-      if (core::isFinite(end->gloLambda)) {
+      if (end->exact) {
+        label = end->gloLambda == 0 ? QStringLiteral("GLOM₁") : QStringLiteral("GLO(λ*)");
+      } else if (core::isFinite(end->gloLambda)) {
         // to the three decimals a picture shows (no "-0.000" for a lambda of -2e-7)
         const double lambda = std::round(double(end->gloLambda) * 1000) / 1000 + 0.0;
         label = QStringLiteral("GLO(λ ≈ %1)").arg(lambda, 0, 'f', 3);

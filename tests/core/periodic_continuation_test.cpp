@@ -82,8 +82,11 @@ TEST(PeriodicContinuationTest, itsFlipsAreTheClosedFormsAndItEndsOnTheGrazingOrb
   EXPECT_NEAR(down.end.gloLambda, lambdaStar(chain), 1e-6);  // Theorem 2.1: it ends on GLO(lambda*)
   // located in the energy past where the arclength steps stall (impact speeds go like the root
   // of the distance to the end)
-  EXPECT_NEAR(down.end.energy, grazingEnergy(chain), 1e-12 * grazingEnergy(chain));
-  EXPECT_NEAR(down.end.period, T2, 1e-6 * T2);
+  EXPECT_NEAR(down.end.lastEnergy, grazingEnergy(chain), 1e-12 * grazingEnergy(chain));
+  // and named by its limit, GLO(lambda*) exactly (Theorem 2.1)
+  EXPECT_TRUE(down.end.exact);
+  EXPECT_EQ(down.end.energy, grazingEnergy(chain));
+  EXPECT_EQ(down.end.period, T2);
   EXPECT_EQ(up.end.kind, "energy-limit");
 }
 
@@ -151,9 +154,13 @@ TEST(PeriodicContinuationTest, theAtlasHasSymmetricFamiliesOfBothTypes) {
     for (const FamilyEnd<double>* end : {&family.end, &family.startEnd}) {
       if (end->kind != "grazing-orbit" || std::abs(end->gloLambda) > 1e-3) continue;
       ++onGlom1;
-      // here the energy bisection cannot start (below the last orbit's energy there is no
-      // state at its point of H): the end is where the arclength steps stalled
-      EXPECT_NEAR(end->energy, 1.5, 1e-5);
+      // Newton at fixed energy cannot follow the family to this end (DP - I turns singular):
+      // the last orbit is where the arclength steps stalled, and the end, whose period tends
+      // to an odd number of fast periods, is GLOM1 itself
+      EXPECT_NEAR(end->lastEnergy, 1.5, 1e-5);
+      EXPECT_TRUE(end->exact);
+      EXPECT_EQ(end->gloLambda, 0.0);
+      EXPECT_NEAR(end->energy, 1.5, 1e-15);
     }
   }
   EXPECT_EQ(onGlom1, 2);
