@@ -466,8 +466,8 @@ void MainWindow::recompute() {
   request.derived = derived;
   // the scene travels as a copy (texts and a function): the worker never reads the window's
   request.prepare = [scene = *m_scenes[std::size_t(m_sceneIndex)], params = current, derived,
-                     clicked = m_clickedStart](std::stop_token stop) {
-    SceneJob job = scene.build(params, derived, stop, clicked);
+                     clicked = m_clickedStart](std::stop_token stop, const ScenePartial& partial) {
+    SceneJob job = scene.build(params, derived, stop, clicked, partial);
     if (clicked && job.ok) job.spec.run.initial = *clicked;
     return job;
   };
@@ -476,6 +476,17 @@ void MainWindow::recompute() {
 
 void MainWindow::onUpdate(const SimUpdate& update) {
   const SceneJob& job = update.request->job;
+  if (update.scenePartial) {
+    // the scene's own computation so far (the atlas, family by family): only the views that
+    // draw it take it; the run comes later
+    if (update.request->sceneName != scene().name()) return;
+    for (SceneView* view : m_sceneViews) {
+      if (view->drawsSceneDataOnly()) view->show(update);
+    }
+    setProgressVisible(true);
+    m_progress->setValue(int(update.progress * 1000));
+    return;
+  }
   if (update.request->sceneName == scene().name()) m_panel->setSliderRanges(job.sliderRanges);
   if (!job.ok && update.result->stop == core::StopReason::Cancelled) {
     setProgressVisible(false);  // stopped before the scene had anything to run

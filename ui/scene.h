@@ -43,7 +43,8 @@ class Scene {
     /// instead of `build`, for a scene whose computation depends on a start chosen with the
     /// mouse (the Nonlinear modes scene: the orbit clicked); `clicked` is empty otherwise
     std::function<SceneJob(const Scene&, const Params&, const DerivedModel&,
-                           const std::optional<core::State>& clicked, std::stop_token stop)>
+                           const std::optional<core::State>& clicked, std::stop_token stop,
+                           const ScenePartial& partial)>
         buildFromStart;
   };
 
@@ -56,8 +57,9 @@ class Scene {
   QList<ParamKey> parameters() const { return m_spec.parameters; }
   QList<PlotKind> plots() const { return m_spec.plots; }
   SceneJob build(const Params& params, const DerivedModel& derived, std::stop_token stop = {},
-                 const std::optional<core::State>& clicked = std::nullopt) const {
-    if (m_spec.buildFromStart) return m_spec.buildFromStart(*this, params, derived, clicked, stop);
+                 const std::optional<core::State>& clicked = std::nullopt,
+                 const ScenePartial& partial = {}) const {
+    if (m_spec.buildFromStart) return m_spec.buildFromStart(*this, params, derived, clicked, stop, partial);
     return m_spec.build(*this, params, derived, stop);
   }
 

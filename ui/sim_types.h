@@ -47,6 +47,9 @@ struct SceneJob {
   std::map<ParamKey, std::pair<double, double>> sliderRanges;
 };
 
+/// What a scene's own computation has so far, with the fraction of it done (0 when unknown).
+using ScenePartial = std::function<void(const SceneJob& sofar, double progress)>;
+
 /// One computation asked of the worker, as a value. The controller stamps the id.
 ///
 /// The GUI thread only describes it (scene, parameters, derived chain): `prepare` is the
@@ -57,8 +60,9 @@ struct SimRequest {
   Params params;       ///< the parameters that produced it (for the display and snapshots)
   QString sceneName;
   DerivedModel derived;  ///< the chain of `params`, as the panel derived it
-  /// the scene's computation; empty when `job` is already set (tests and benchmarks)
-  std::function<SceneJob(std::stop_token)> prepare;
+  /// the scene's computation; empty when `job` is already set (tests and benchmarks). A long
+  /// one may show what it has so far through `partial` (the modes atlas, family by family).
+  std::function<SceneJob(std::stop_token, const ScenePartial& partial)> prepare;
   SceneJob job;  ///< what the scene computed (filled by the worker from `prepare`)
 };
 
@@ -69,6 +73,9 @@ struct SimRequest {
 struct SimUpdate : core::experiments::Update {
   std::uint64_t id = 0;
   std::shared_ptr<const SimRequest> request;  ///< what was asked
+  /// the scene's own computation so far (request->job holds it), before the run: no run yet
+  /// (result is empty); only the views that draw the scene's data take it
+  bool scenePartial = false;
 };
 
 }  // namespace grazelab::ui

@@ -40,7 +40,20 @@ void SimWorker::run(const SimRequest& described, std::stop_token stop, double ch
   // thread; what they give travels with every update
   SimRequest prepared = described;
   if (prepared.prepare) {
-    prepared.job = prepared.prepare(stop);
+    // what the scene has so far goes out as it comes, with an empty run
+    const auto partial = [&described, &report](const SceneJob& sofar, double progress) {
+      auto request = std::make_shared<SimRequest>(described);
+      request->prepare = nullptr;
+      request->job = sofar;
+      SimUpdate update;
+      update.id = described.id;
+      update.request = std::move(request);
+      update.result = std::make_shared<const core::Result>();
+      update.progress = progress;
+      update.scenePartial = true;
+      report(update);
+    };
+    prepared.job = prepared.prepare(stop, partial);
     prepared.prepare = nullptr;
   }
   const auto asked = std::make_shared<const SimRequest>(std::move(prepared));

@@ -35,6 +35,8 @@
 #include "ui/plots/log_log_chart.h"
 #include "ui/plots/plot_view.h"
 #include "ui/session.h"
+#include "ui/sim_worker.h"
+#include "ui/derived.h"
 #include "ui/slider_spin.h"
 
 using namespace grazelab::ui;
@@ -638,6 +640,40 @@ class ClassroomTest : public QObject {
     QTest::mouseClick(modes->viewport(), Qt::LeftButton, {}, empty);
     QTRY_VERIFY(m_window->statusText().contains(QStringLiteral("pixels of a family")));
     QCOMPARE(m_window->displayed()->id, before);
+  }
+
+  // the atlas is computed in the worker and shown family by family: partial updates carry
+  // the families so far, each one more than the last, before the run's final update
+  void theModesAtlasArrivesFamilyByFamily() {
+    const std::vector<std::unique_ptr<Scene>> scenes = grazelab::ui::makeScenes();
+    const Scene& scene = *scenes[std::size_t(findScene(scenes, QStringLiteral("modes")))];
+    Params params = scene.defaults();
+    params.m2 = 0.45;  // a chain no atlas was computed for yet (the scene keeps the last one)
+    const DerivedModel derived = grazelab::ui::deriveModel(params);
+    QVERIFY(derived.ok);
+    SimRequest request;
+    request.id = 7;
+    request.params = params;
+    request.sceneName = scene.name();
+    request.derived = derived;
+    request.prepare = [&scene, params, derived](std::stop_token stop, const grazelab::ui::ScenePartial& partial) {
+      return scene.build(params, derived, stop, std::nullopt, partial);
+    };
+    std::vector<std::size_t> partials;
+    std::optional<SimUpdate> last;
+    SimWorker::run(request, {}, 0.030, [&](const SimUpdate& update) {
+      if (update.scenePartial) {
+        QVERIFY(update.request->job.modes);
+        QVERIFY(update.result && update.result->events.empty());
+        partials.push_back(update.request->job.modes->families.size());
+      } else if (update.final && !update.trustPending) {
+        last = update;
+      }
+    });
+    QVERIFY(last && last->request->job.ok);
+    const std::size_t families = last->request->job.modes->families.size();
+    QCOMPARE(partials.size(), families);
+    for (std::size_t i = 0; i < partials.size(); ++i) QCOMPARE(partials[i], i + 1);
   }
 
   // click a point of the section H: a run starts there, on the same energy, leaving the stop

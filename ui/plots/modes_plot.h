@@ -19,6 +19,7 @@ class ModesPlot final : public PlotView {
  public:
   explicit ModesPlot(QWidget* parent = nullptr);
   void show(const SimUpdate& update) override;
+  bool drawsSceneDataOnly() const override { return true; }
   /// How near a click must fall to a family's orbit to choose it [pixels].
   static constexpr double kChoiceRadius = 24;
 

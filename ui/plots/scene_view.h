@@ -28,6 +28,9 @@ class SceneView {
   /// Time-based views show a readable window of a long run (a few slow periods at the
   /// animation's time) unless the whole run is asked for.
   virtual void setWholeRun(bool whole) { (void)whole; }
+  /// Whether the view draws the scene's own data only (no run), so that it can show what the
+  /// scene has computed so far (SimUpdate::scenePartial).
+  virtual bool drawsSceneDataOnly() const { return false; }
 };
 
 /// The stretch of a long run that time-based views show: `periods` slow periods that hold the

@@ -42,7 +42,7 @@ struct AtlasCache {
 };
 
 std::shared_ptr<const core::ModesAtlas<double>> atlasOf(const core::Chain<double>& chain, const DerivedModel& derived,
-                                                        std::stop_token stop) {
+                                                        std::stop_token stop, const ScenePartial& partial) {
   static AtlasCache cache;
   {
     const std::lock_guard lock(cache.mutex);
@@ -50,8 +50,18 @@ std::shared_ptr<const core::ModesAtlas<double>> atlasOf(const core::Chain<double
   }
   // up to 4 impacts per period (0.1 s for the default chain)
   const double grazing = core::energy(derived.model, core::gloData(derived.model, derived.modes, derived.lambdaStar));
+  // each family shown as it is finished
+  core::ModesAtlas<double> sofar;
+  const auto familyDone = [&](const core::ModeFamily<double>& family) {
+    sofar.families.push_back(family);
+    if (!partial) return;
+    SceneJob job;
+    job.spec.model = derived.model;
+    job.modes = std::make_shared<const core::ModesAtlas<double>>(sofar);
+    partial(job, 0.0);
+  };
   auto atlas = std::make_shared<const core::ModesAtlas<double>>(
-      core::computeModesAtlas<double>(chain, 4, grazing / 100, grazing * 1e4, stop));
+      core::computeModesAtlas<double>(chain, 4, grazing / 100, grazing * 1e4, stop, familyDone));
   if (!atlas->complete) return nullptr;
   const std::lock_guard lock(cache.mutex);
   cache.model = derived.model;
@@ -82,7 +92,8 @@ Scene::Spec modesScene() {
   scene.plots = {PlotKind::ModesAtlas, PlotKind::Multipliers, PlotKind::TraceU2,
                  PlotKind::PhaseU2V2,  PlotKind::Poincare,    PlotKind::Chain};
   scene.buildFromStart = [](const Scene& self, const Params& params, const DerivedModel& derived,
-                            const std::optional<core::State>& clicked, std::stop_token stop) {
+                            const std::optional<core::State>& clicked, std::stop_token stop,
+                            const ScenePartial& partial) {
     SceneJob job;
     job.spec.model = derived.model;
     const core::ChainOrProblem<double> formed = core::makeChain(derived.model);
@@ -99,7 +110,7 @@ Scene::Spec modesScene() {
     const double T2 = derived.modes.T2;
     const double lowFraction = core::onePeriodicLowerEnd(derived.model, derived.modes) / T2;
     job.sliderRanges[ParamKey::Period] = {std::ceil(lowFraction * 1000 + 1e-9) / 1000, 0.999};
-    job.modes = atlasOf(chain, derived, stop);
+    job.modes = atlasOf(chain, derived, stop, partial);
     if (!job.modes) return job;  // stopped
     // the orbit followed: the one clicked on the atlas, or the 1IPP orbit of the slider's period
     if (clicked) {
