@@ -277,8 +277,11 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
         // located in the energy, past where the arclength steps stalled
         using std::exp;
         const S beyond = last.energy * exp(S(t[2] > 0 ? 1 : -1) * std::max(S(4) * h, S(1e-3)));
-        last = approachInEnergy(chain, units, last, beyond, k);
-        family.orbits.push_back(summary(last));
+        PeriodicOrbit<S> nearer = approachInEnergy(chain, units, last, beyond, k);
+        if (nearer.energy != last.energy) {
+          last = std::move(nearer);
+          family.orbits.push_back(summary(last));  // a row of its own only when it got nearer
+        }
       }
       return finish(kind, last);
     }

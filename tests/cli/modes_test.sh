@@ -32,6 +32,7 @@ for f in fams:
     b = open(os.path.join(d, f['file'][:-4] + '.npy'), 'rb').read(); n = b[8] | (b[9] << 8)
     h = ast.literal_eval(b[10:10 + n].decode('latin1')); a = array.array('d'); a.frombytes(b[10 + n:])
     assert h['shape'] == (len(rows), 9), h
+    assert all(x != y for x, y in zip(rows, rows[1:])), 'a row repeated in ' + f['file']
     for i, r in enumerate(rows):
         assert float(r[0]) == a[9 * i] and float(r[1]) == a[9 * i + 1] and float(r[3]) == a[9 * i + 3]
         assert abs(float(r[2]) - 2 * math.pi / float(r[1])) < 1e-12 * float(r[2])
