@@ -17,12 +17,14 @@ namespace {
 
 int impactClass(int impacts) { return impacts == 1 ? 0 : impacts == 2 ? 1 : impacts == 4 ? 2 : 3; }
 
+// short: the legend shares a small card with the picture (k as in the scene's text: the
+// motion repeats after k impacts)
 QString impactsText(int cls) {
   switch (cls) {
-    case 0: return ModesPlot::tr("1 impact");
-    case 1: return ModesPlot::tr("2 impacts");
-    case 2: return ModesPlot::tr("4 impacts");
-    default: return ModesPlot::tr("8+ impacts");
+    case 0: return ModesPlot::tr("k = 1");
+    case 1: return ModesPlot::tr("k = 2");
+    case 2: return ModesPlot::tr("k = 4");
+    default: return ModesPlot::tr("k ≥ 8");
   }
 }
 
@@ -46,7 +48,7 @@ ModesPlot::ModesPlot(QWidget* parent)
     useLightMarker(unstable, QPen(colour, 1.5));
     m_dots[cls][1] = addEntry(unstable, Decimation::Scatter);
   }
-  auto* ring = makeScatter(tr("ring: unstable"), Qt::white, 6);
+  auto* ring = makeScatter(tr("○ unstable"), Qt::white, 6);
   ring->setPen(QPen(Qt::darkGray, 1.5));
   useLightMarker(ring, QPen(Qt::darkGray, 1.5));
   m_unstableKey = addEntry(ring, Decimation::None, false);
@@ -57,17 +59,18 @@ ModesPlot::ModesPlot(QWidget* parent)
   flips->setPen(QPen(colors::kReference, 2));
   useLightMarker(flips, QPen(colors::kReference, 2));
   m_flips = addEntry(flips, Decimation::None);
-  auto* ends = makeScatter(tr("grazing ends"), colors::kReference, 9);
+  auto* ends = makeScatter(tr("grazing end"), colors::kReference, 9);
   useLightMarker(ends);
   m_ends = addEntry(ends, Decimation::None);
-  auto* chosen = makeScatter(tr("orbit shown"), colors::kAccent, 16);
+  auto* chosen = makeScatter(tr("shown"), colors::kAccent, 16);
   chosen->setColor(Qt::transparent);
   useLightMarker(chosen, QPen(colors::kAccent, 3));
   m_chosen = addEntry(chosen, Decimation::None, false);
   setToolTip(tr("Every periodic motion with impacts that the chain has, up to 4 impacts per period, "
                 "as its frequency 2π/T against its energy (log scale): one dot per computed orbit, "
-                "filled where it is stable, a ring where it is not. Squares are flips, where a family "
-                "with twice the impacts is born; black dots are grazing ends.\n"
+                "coloured by k, its impacts per period, filled where it is stable, a ring where it is "
+                "not. Squares are flips, where a family with twice the impacts is born; black dots "
+                "are grazing ends; the large ring is the orbit shown in the other views.\n"
                 "Click a family to follow that orbit in the other views."));
   connect(this, &PlotView::clickedAt, this, &ModesPlot::choose);
 }
