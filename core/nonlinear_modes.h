@@ -10,9 +10,10 @@
 #include "core/periodic_continuation.h"
 
 /// The atlas of the chain's nonlinear normal modes up to K impacts per period (docs/model.md
-/// section 10): every admissible part of the 1IPP family, continued in energy both ways, and
-/// every family born from one of them at a flip (recursively, while 2k <= K), each continued
-/// to its end.
+/// section 10): every admissible part of the 1IPP family that reaches into the energy range,
+/// continued in energy both ways from an orbit of it in the range, and every family born from
+/// one of them at a flip inside the range (recursively, while 2k <= K), each continued to its
+/// end or the range's.
 namespace grazelab::core {
 
 template <typename S>
@@ -20,8 +21,9 @@ struct ModeFamily {
   int id = 0;
   int impacts = 0;
   std::string symmetry;  ///< "A", "B" or empty, of the orbit the family was started from
-  /// how it was found: kind "one-periodic" (from the 1IPP closed form, family -1) or
-  /// "period-doubling" (born at a flip of family `parent`)
+  /// how it was found: kind "one-periodic" (a part of the 1IPP family, started from its
+  /// closed-form orbit of energy bornEnergy and period bornPeriod, family -1) or
+  /// "period-doubling" (born at a flip of family `parent`, at bornEnergy and bornPeriod)
   std::string bornKind;
   int parent = -1;
   S bornEnergy = 0;

@@ -101,8 +101,8 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
   orbit.postImpact = {gap * g[0] / g[1], gap, S(0), orbit.V};
   if (!(orbit.V < 0)) {
     orbit.reason = "V = " + formatScalar(orbit.V) +
-                   " >= 0: the data would leave into the stop, not away from it (1IPP orbits near "
-                   "T2 need T < T2 = " + formatScalar(T2) + ")";
+                   " >= 0: the data would leave into the stop, not away from it";
+    if (T > T2) orbit.reason += " (1IPP orbits near T2 need T < T2 = " + formatScalar(T2) + ")";
     return orbit;
   }
   const Scale<S> scale = chooseScale(chain, orbit.postImpact);

@@ -116,6 +116,26 @@ std::vector<FamilyBifurcation<S>> onePeriodicBifurcations(const Chain<S>& chain,
 }
 
 template <typename S>
+std::vector<std::array<S, 2>> onePeriodicParts(const Chain<S>& chain, int samples) {
+  const S T2 = twoPi<S>() / chain.omegaSlow;
+  std::vector<std::array<S, 2>> parts;
+  std::optional<S> first;
+  S last = 0;
+  for (int i = 1; i <= samples + 1; ++i) {
+    const S T = T2 * S(i) / S(samples + 1);
+    const bool admissible = i <= samples && orbitAt(chain, T).has_value();
+    if (admissible) {
+      if (!first) first = T;
+      last = T;
+    } else if (first) {
+      parts.push_back({*first, last});
+      first.reset();
+    }
+  }
+  return parts;
+}
+
+template <typename S>
 FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& flip,
                            int impacts, std::stop_token stop) {
   using std::abs;
@@ -176,6 +196,7 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
 #define GRAZELAB_INSTANTIATE(S)                                                                   \
   template std::vector<FamilyBifurcation<S>> onePeriodicBifurcations<S>(const Chain<S>&, int,     \
                                                                         std::stop_token);         \
+  template std::vector<std::array<S, 2>> onePeriodicParts<S>(const Chain<S>&, int);             \
   template FlipSwitch<S> switchAtFlip<S>(const Chain<S>&, const FamilyBifurcation<S>&, int,       \
                                          std::stop_token);
 GRAZELAB_INSTANTIATE(double)

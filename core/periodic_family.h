@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
+#include <array>
 #include <stop_token>
 #include <string>
 #include <vector>
@@ -37,6 +38,11 @@ struct FamilyBifurcation {
 template <typename S>
 std::vector<FamilyBifurcation<S>> onePeriodicBifurcations(const Chain<S>& chain, int samples,
                                                           std::stop_token stop = {});
+
+/// The admissible runs of the 1IPP family over (0, T2), sampled at T2 i / (samples + 1): each
+/// as the first and last sampled period of the run (to that resolution).
+template <typename S>
+std::vector<std::array<S, 2>> onePeriodicParts(const Chain<S>& chain, int samples);
 
 /// The 2k-impact orbit born at a flip of a k-impact family: Newton on P^2k from the flip orbit
 /// (`flip.state`) pushed along the eigenvector of -1, at energies a little below and above the

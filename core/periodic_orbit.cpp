@@ -351,9 +351,17 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
       return search;
     }
     const std::optional<BasicState<S>> start = sectionState(chain, energy, x, y);
+    if (!start && iteration == 0) {
+      search.problem = "no state of energy " + formatScalar(energy) + " at the guess u1 = " +
+                       formatScalar(x) + ", v1 = " + formatScalar(y) +
+                       " on H: mass 1 and the springs alone hold more there; give a guess nearer "
+                       "u1 = k2 d / (k1 + k2), v1 = 0";
+      return search;
+    }
     if (!start) {
-      search.problem = "no state of energy " + formatScalar(energy) + " on H at u1 = " +
-                       formatScalar(x) + ", v1 = " + formatScalar(y);
+      search.problem = "Newton left the energy level at iteration " + std::to_string(iteration + 1) +
+                       " (u1 = " + formatScalar(x) + ", v1 = " + formatScalar(y) +
+                       "): give a guess nearer the orbit";
       return search;
     }
     PeriodicOrbit<S> orbit = evaluateOrbit(chain, *start, impacts, tolerance);

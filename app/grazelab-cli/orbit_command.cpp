@@ -11,6 +11,7 @@
 
 #include "cli_input.h"
 #include "cli_output.h"
+#include "core/periodic_family.h"
 #include "core/periodic_orbit.h"
 #include "report_command.h"
 
@@ -96,6 +97,18 @@ Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, 
     const std::optional<S> T = scalarOption<S>(parser, "period", error);
     if (!T) return Outcome::Refused;
     search = core::onePeriodicOrbitStability(chain, *T);
+    if (!search.orbit && search.problem.find("too near tangent") == std::string::npos) {
+      // say where the family is, to the resolution of a scan of 400 periods
+      const S T2 = core::twoPi<S>() / chain.omegaSlow;
+      std::string parts;
+      for (const auto& part : core::onePeriodicParts(chain, 400)) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%s[%.4f, %.4f]", parts.empty() ? "" : " and ",
+                      core::toDouble(S(part[0] / T2)), core::toDouble(S(part[1] / T2)));
+        parts += text;
+      }
+      if (!parts.empty()) search.problem += "; this chain's 1IPP orbits have T/T2 in about " + parts;
+    }
   } else {
     bool ok = false;
     const int impacts = parser.value("impacts").toInt(&ok);
@@ -105,6 +118,10 @@ Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, 
     }
     const std::optional<S> energy = scalarOption<S>(parser, "energy", error);
     if (!energy) return Outcome::Refused;
+    if (!(*energy > 0)) {
+      error = QStringLiteral("--energy: '%1' is not a positive energy").arg(parser.value("energy"));
+      return Outcome::Refused;
+    }
     const QStringList guess = parser.value("guess").split(',');
     if (guess.size() != 2) {
       error = QStringLiteral("--guess: '%1' is not two numbers u1,v1").arg(parser.value("guess"));

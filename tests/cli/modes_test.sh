@@ -53,6 +53,20 @@ assert any(f['impacts'] == 4 for f in fams)
 PY
 [ -e "$work/m/atlas.png" ] && [ -e "$work/m/atlas.svg" ] || [ ! -e "$work/m/atlas.svg" ] || fail "modes picture"
 
+# an energy range finds the families that reach into it, wherever they were started
+expect_ok modes --energy-range 0.2:1 --out "$work/r/atlas" || exit 1
+python3 - "$work/r/atlas.json" <<'PY' || fail "modes --energy-range"
+import json, sys
+fams = json.load(open(sys.argv[1]))['families']
+assert any(f['impacts'] == 1 for f in fams), fams
+two = [f for f in fams if f['impacts'] == 2]
+assert len(two) == 1 and abs(two[0]['born_at']['energy'] - 0.7) < 1e-9, two  # born at the flip at E = 0.7
+for f in fams:
+    assert f['end']['kind'] == 'energy-limit' and f['end']['energy'] <= 1, f['end']
+PY
+expect_ok modes --energy-range 0.01:0.1 --out "$work/r/none" || exit 1
+python3 -c "import json,sys; assert json.load(open(sys.argv[1]))['families'] == []" "$work/r/none.json" || fail "an empty range"
+
 EXPECT_WORD="--max-impacts" expect_invalid modes --max-impacts 0 --out "$work/bad/m"
 EXPECT_WORD="--energy-range" expect_invalid modes --energy-range 2:1 --out "$work/bad/m"
 EXPECT_WORD="resonant" expect_invalid modes --k2 0.6 --out "$work/bad/m"

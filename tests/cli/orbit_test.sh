@@ -71,8 +71,11 @@ PY
 EXPECT_WORD="--period" expect_invalid orbit --onepp
 EXPECT_WORD="--impacts" expect_invalid orbit --impacts 0 --energy 1 --guess 0,0
 EXPECT_WORD="--guess" expect_invalid orbit --impacts 1 --energy 1 --guess 0.5
-EXPECT_WORD="no state of energy" expect_invalid orbit --impacts 1 --energy 0.01 --guess 3,0
+EXPECT_WORD="at the guess" expect_invalid orbit --impacts 1 --energy 0.01 --guess 3,0
+EXPECT_WORD="positive energy" expect_invalid orbit --impacts 1 --energy -1 --guess 0,0
 EXPECT_WORD="no admissible 1IPP orbit" expect_invalid orbit --onepp --period 9.5
+# a period between the family's parts: where the parts are is said
+EXPECT_WORD="T/T2 in about" expect_invalid orbit --onepp --period 5
 EXPECT_WORD="does not apply" expect_invalid orbit --onepp --period 6 --contacts 3
 EXPECT_WORD="only apply to 'orbit'" expect_invalid simulate --energy 2
 if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi

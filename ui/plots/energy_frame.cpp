@@ -49,7 +49,7 @@ void paintEnergyAxes(QPainter& painter, const EnergyFrame& frame, const QRectF& 
     const double px = frame.at(v, frame.wLo).x();
     painter.drawLine(QPointF(px, plot.bottom()), QPointF(px, plot.bottom() + tick));
     painter.drawText(QRectF(px - 3 * line, plot.bottom() + tick, 6 * line, line), Qt::AlignCenter,
-                     QString::number(std::pow(10.0, v), 'g', 3));
+                     QString::number(std::pow(10.0, v), 'g', 7));  // 1000, not 1e+03
   }
   for (double w : frame.yTicks) {
     const double py = frame.at(frame.eLo, w).y();

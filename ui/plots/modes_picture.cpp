@@ -98,12 +98,13 @@ void paintModes(QPainter& painter, const QRectF& area, const std::vector<ModesPi
   for (const ModesPictureMark& mark : marks) {
     const QPointF q = at(mark.at);
     if (!plot.contains(q)) continue;
-    painter.setBrush(Qt::white);
+    // as in the explorer: flips are squares, ends black dots
     if (mark.label == "flip") {
-      QPolygonF diamond({q + QPointF(0, -6), q + QPointF(6, 0), q + QPointF(0, 6), q + QPointF(-6, 0)});
-      painter.drawPolygon(diamond);
+      painter.setBrush(Qt::white);
+      painter.drawRect(QRectF(q - QPointF(5.5, 5.5), QSizeF(11, 11)));
     } else {
-      painter.drawEllipse(q, 5, 5);
+      painter.setBrush(Qt::black);
+      painter.drawEllipse(q, 4.5, 4.5);
     }
     taken.push_back(QRectF(q - QPointF(6, 6), QSizeF(12, 12)));
   }
@@ -163,7 +164,9 @@ void paintModes(QPainter& painter, const QRectF& area, const std::vector<ModesPi
   room(1.4 * line + metrics.horizontalAdvance(flipText));
   painter.setPen(QPen(Qt::black, 1.3));
   const QPointF d(x + line / 2, keyY + line / 2);
-  painter.drawPolygon(QPolygonF({d + QPointF(0, -6), d + QPointF(6, 0), d + QPointF(0, 6), d + QPointF(-6, 0)}));
+  painter.setBrush(Qt::white);
+  painter.drawRect(QRectF(d - QPointF(5.5, 5.5), QSizeF(11, 11)));
+  painter.setBrush(Qt::NoBrush);
   painter.drawText(QPointF(x + 1.4 * line, keyY + 0.8 * line), flipText);
   painter.restore();
 }

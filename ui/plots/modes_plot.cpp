@@ -62,7 +62,7 @@ ModesPlot::ModesPlot(QWidget* parent)
   auto* ends = makeScatter(tr("grazing end"), colors::kReference, 9);
   useLightMarker(ends);
   m_ends = addEntry(ends, Decimation::None);
-  auto* chosen = makeScatter(tr("shown"), colors::kAccent, 16);
+  auto* chosen = makeScatter(tr("the orbit shown"), colors::kAccent, 16);
   chosen->setColor(Qt::transparent);
   useLightMarker(chosen, QPen(colors::kAccent, 3));
   m_chosen = addEntry(chosen, Decimation::None, false);

@@ -2,9 +2,11 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/multipliers_plot.h"
 
+#include <QChart>
 #include <QLineSeries>
 #include <QScatterSeries>
 
+#include <algorithm>
 #include <cmath>
 
 #include "ui/plots/plot_style.h"
@@ -24,6 +26,7 @@ MultipliersPlot::MultipliersPlot(QWidget* parent)
     circle.emplace_back(std::cos(angle), std::sin(angle));
   }
   setData(m_circle, std::move(circle));
+  connect(chart(), &QChart::plotAreaChanged, this, [this] { fitEqualScale(); });
   setToolTip(tr("The two multipliers μ and 1/μ of the orbit: how a small change of it grows or "
                 "shrinks after one period (its other two are 1: the flow and the energy). On the "
                 "unit circle the orbit is stable; a real pair off it is unstable; when they meet "
@@ -38,7 +41,26 @@ void MultipliersPlot::show(const SimUpdate& update) {
     entries()[std::size_t(m_multipliers)].series->setName(
         tr("μ, 1/μ: tr = %1, %2").arg(orbit->trace, 0, 'g', 4).arg(QString::fromUtf8(core::toString(orbit->stability).data())));
   }
+  m_reach = 1.15;
+  for (const QPointF& mu : points) m_reach = std::max(m_reach, 1.1 * std::hypot(mu.x(), mu.y()));
   setData(m_multipliers, std::move(points));
+  fitEqualScale();
+  scheduleRefresh();
+}
+
+void MultipliersPlot::fitEqualScale() {
+  const QRectF area = chart()->plotArea();
+  if (!(area.width() > 0 && area.height() > 0)) return;
+  const double wide = area.width() / area.height();
+  const double x = m_reach * std::max(1.0, wide);
+  const double y = m_reach * std::max(1.0, 1.0 / wide);
+  const QRectF range(QPointF(-x, -y), QPointF(x, y));
+  if (m_fitted && std::abs(m_fitted->width() - range.width()) <= 1e-3 * range.width() &&
+      std::abs(m_fitted->height() - range.height()) <= 1e-3 * range.height()) {
+    return;  // the same within a pixel: no new layout
+  }
+  m_fitted = range;
+  setFixedRange(range);
   scheduleRefresh();
 }
 

@@ -2,6 +2,10 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
+#include <QRectF>
+
+#include <optional>
+
 #include "ui/plots/plot_view.h"
 
 namespace grazelab::ui {
@@ -17,6 +21,12 @@ class MultipliersPlot final : public PlotView {
   void show(const SimUpdate& update) override;
 
  private:
+  /// Axes of equal scale in both directions, so that the unit circle is a circle: the range
+  /// that holds the circle and the multipliers, widened along the longer side of the plot.
+  void fitEqualScale();
+
+  double m_reach = 1.15;
+  std::optional<QRectF> m_fitted;  ///< the range last set  ///< the half-width that holds the circle and the multipliers
   int m_circle = 0;
   int m_multipliers = 0;
 };

@@ -48,9 +48,10 @@ std::shared_ptr<const core::ModesAtlas<double>> atlasOf(const core::Chain<double
     const std::lock_guard lock(cache.mutex);
     if (cache.model == derived.model) return cache.atlas;
   }
-  // up to 4 impacts per period (0.1 s for the default chain)
   const double grazing = core::energy(derived.model, core::gloData(derived.model, derived.modes, derived.lambdaStar));
-  // each family shown as it is finished
+  // energies from a tenth to a hundred times the grazing end's: where the families are born
+  // and end (a wider range squeezes them into a corner of the picture); each family shown as
+  // it is finished
   core::ModesAtlas<double> sofar;
   const auto familyDone = [&](const core::ModeFamily<double>& family) {
     sofar.families.push_back(family);
@@ -61,7 +62,7 @@ std::shared_ptr<const core::ModesAtlas<double>> atlasOf(const core::Chain<double
     partial(job, 0.0);
   };
   auto atlas = std::make_shared<const core::ModesAtlas<double>>(
-      core::computeModesAtlas<double>(chain, 4, grazing / 100, grazing * 1e4, stop, familyDone));
+      core::computeModesAtlas<double>(chain, 4, grazing / 10, grazing * 100, stop, familyDone));
   if (!atlas->complete) return nullptr;
   const std::lock_guard lock(cache.mutex);
   cache.model = derived.model;
@@ -79,11 +80,13 @@ Scene::Spec modesScene() {
   scene.text = tr("<b>The chain's periodic motions with impacts.</b> Each dot of the top-left "
                   "picture is a motion that repeats after k impacts, at its frequency and energy; "
                   "the families of them are the chain's <i>nonlinear normal modes</i>. Filled dots "
-                  "are stable, rings unstable. <i>Look for:</i> the one-impact family (blue) ends at "
-                  "low energy on the grazing orbit GLO(λ*); where its multipliers (top middle) meet "
-                  "at −1 it <i>flips</i> (squares): it turns unstable and a family with twice the "
-                  "impacts (orange) is born at half the frequency. <i>Click</i> any dot to see that "
-                  "motion repeat in u₂(t), its phase portrait, its impacts on H and the chain.");
+                  "are stable, rings unstable; colours count the impacts k. <i>Look for:</i> the "
+                  "lower one-impact branch (blue, k = 1) ends at low energy on the grazing orbit "
+                  "GLO(λ*) (black dot; the upper blue branch ends on GLOM₁); where its multipliers "
+                  "(top middle) meet at −1 it <i>flips</i> (squares): it turns unstable and a family "
+                  "with twice the impacts (orange, k = 2) is born at half the frequency, which can "
+                  "flip again (green, k = 4). <i>Click</i> any dot to see that motion repeat in "
+                  "u₂(t), its phase portrait, its impacts on H and the chain.");
   scene.defaults.periodFraction = 0.9;
   scene.defaults.perturbation = 0;
   scene.defaults.horizon = 40;
@@ -132,8 +135,8 @@ Scene::Spec modesScene() {
     }
     const core::PeriodicOrbit<double>& orbit = *job.orbit;
     const std::string symmetry = core::orbitSymmetry(orbit, 1e-9);
-    job.notes.append(tr("The orbit shown: %1 impact(s) per period T = %2 (%3 T₂), energy %4, %5%6")
-                         .arg(orbit.impacts)
+    job.notes.append(tr("The orbit shown: %1 per period T = %2 (%3 T₂), energy %4, %5%6")
+                         .arg(orbit.impacts == 1 ? tr("1 impact") : tr("%1 impacts").arg(orbit.impacts))
                          .arg(orbit.period, 0, 'g', 6)
                          .arg(orbit.period / T2, 0, 'g', 5)
                          .arg(orbit.energy, 0, 'g', 5)
