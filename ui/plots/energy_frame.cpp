@@ -27,6 +27,16 @@ EnergyFrame makeEnergyFrame(const QRectF& plot, double eLo, double eHi, double w
   return frame;
 }
 
+void paintPictureTitle(QPainter& painter, const QRectF& area, const QString& title, double line) {
+  const QFont font = painter.font();
+  QFont bold = font;
+  bold.setBold(true);
+  painter.setFont(bold);
+  painter.setPen(Qt::black);
+  painter.drawText(QRectF(area.left(), area.top(), area.width(), 2 * line), Qt::AlignCenter, title);
+  painter.setFont(font);
+}
+
 void paintEnergyGrid(QPainter& painter, const EnergyFrame& frame) {
   painter.setPen(QPen(QColor(0xdd, 0xdd, 0xdd), 1));
   for (double v : frame.xTicks) {

@@ -4,6 +4,7 @@
 
 #include <QPointF>
 #include <QRectF>
+#include <QString>
 
 #include <vector>
 
@@ -26,6 +27,9 @@ struct EnergyFrame {
 
 /// A frame over [eLo, eHi] x [wLo, wHi] (already padded) with its ticks.
 EnergyFrame makeEnergyFrame(const QRectF& plot, double eLo, double eHi, double wLo, double wHi);
+
+/// The picture's title, bold, centred over its top two lines.
+void paintPictureTitle(QPainter& painter, const QRectF& area, const QString& title, double line);
 
 /// The grid lines, under the curves.
 void paintEnergyGrid(QPainter& painter, const EnergyFrame& frame);

@@ -39,13 +39,7 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
   const EnergyFrame frame = makeEnergyFrame(plot, eLo, eHi, wLo, wHi);
   auto at = [&](double energy, double omega) { return frame.at(std::log10(energy), omega); };
 
-  const QFont font = painter.font();
-  QFont bold = font;
-  bold.setBold(true);
-  painter.setFont(bold);
-  painter.setPen(Qt::black);
-  painter.drawText(QRectF(area.left(), area.top(), area.width(), 2 * line), Qt::AlignCenter, title);
-  painter.setFont(font);
+  paintPictureTitle(painter, area, title, line);
 
   painter.setRenderHint(QPainter::Antialiasing, true);
   painter.setClipRect(plot);

@@ -50,13 +50,7 @@ void paintModes(QPainter& painter, const QRectF& area, const std::vector<ModesPi
   const EnergyFrame frame = makeEnergyFrame(plot, eLo, eHi, wLo, wHi);
   const auto at = [&](const QPointF& p) { return frame.at(p.x(), p.y()); };
 
-  const QFont font = painter.font();
-  QFont bold = font;
-  bold.setBold(true);
-  painter.setFont(bold);
-  painter.setPen(Qt::black);
-  painter.drawText(QRectF(area.left(), area.top(), area.width(), 2 * line), Qt::AlignCenter, title);
-  painter.setFont(font);
+  paintPictureTitle(painter, area, title, line);
   painter.setRenderHint(QPainter::Antialiasing, true);
   paintEnergyGrid(painter, frame);
 
