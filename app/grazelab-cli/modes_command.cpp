@@ -166,7 +166,7 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
         {"start", endJson(family.startEnd)},
         {"end", endJson(family.end)},
         {"bifurcations", bifurcations},
-        {"orbits", qint64(family.orbits.size())},
+        {"rows", qint64(family.orbits.size())},
         {"file", name + ".csv"}});
   }
   const core::BasicModel<S>& m = chain.model;
@@ -179,18 +179,26 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
       {"max_impacts", maxImpacts},
       {"energy_range", QJsonArray{scalarJson(low), scalarJson(high)}},
       {"families", families},
-      {"columns", QString(kColumns)},
-      {"stability", "elliptic (|tr| < 2, stable), hyperbolic (tr > 2), flip-hyperbolic (tr < -2), "
-                    "parabolic (|tr| = 2 within rounding); in the .npy 0, 1, 2, 3"},
-      {"start", "a 1IPP part: its low-energy end; a family born at a flip: the flip (at twice its period)"},
-      {"end", "grazing-orbit (every impact speed, or one with a clearance, tends to 0: a grazing linear "
-              "orbit), interior-grazing (a flight touches the stop), impact-speed-zero (one impact fades), "
-              "energy-limit (the --energy-range), step-limit, undecided (the continuation cannot go on "
-              "with no event in sight); an end is classified from the last orbit within 5 % of w2 d or "
-              "of the gap; where impact speeds tend to 0 it is located by bisection in the energy "
-              "when Newton at fixed energy can follow (the 1IPP family's end to 1e-12), else it is "
-              "where the arclength steps stalled; energy, period and state are the last orbit's; a grazing-orbit end gives glo_lambda, the GLO_lambda the "
-              "family tends to (lambda* for the 1IPP family, 0 for GLOM1)"},
+      // what the fields of each family mean, apart from the families themselves
+      {"about", QJsonObject{
+        {"columns", QString(kColumns)},
+        {"stability", "elliptic (|tr| < 2, stable), hyperbolic (tr > 2), flip-hyperbolic (tr < -2), "
+                      "parabolic (|tr| = 2 within rounding); in the .npy 0, 1, 2, 3"},
+        {"start", "a 1IPP part: its low-energy end; a family born at a flip: the flip (at twice its period)"},
+        {"end", "grazing-orbit (every impact speed, or one with a clearance, tends to 0: a grazing linear "
+                "orbit), interior-grazing (a flight touches the stop), impact-speed-zero (one impact fades), "
+                "energy-limit (the --energy-range), step-limit, undecided (the continuation cannot go on "
+                "with no event in sight), classified from the last orbit within 5 % of w2 d or of the gap. "
+                "Where impact speeds tend to 0 the end is located by bisection in the energy when Newton "
+                "at fixed energy can follow (the 1IPP family's to 1e-12). energy, period and state are "
+                "the last orbit's, except where exact is true: then they are the limit orbit's, known "
+                "exactly (a period tending to an odd number of T1 belongs to GLOM1 alone; the 1IPP family "
+                "ends on GLO_lambda*), last_energy being the last orbit computed. glo_lambda: the "
+                "GLO_lambda a grazing-orbit end tends to"},
+        {"born_at", "one-periodic: a part of the 1IPP family, continued both ways from its closed-form "
+                    "orbit of that energy and period T; period-doubling: born at a flip of `family`"},
+        {"min_clearance", "the smallest distance below the stop of an interior maximum of u2 over "
+                          "the gap (empty / NaN: no flight turns back below the stop)"}}},
       {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
   files.emplace_back(prefix + ".json", QJsonDocument(json).toJson());
   for (const auto& [path, bytes] : files) {

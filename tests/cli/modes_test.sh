@@ -26,9 +26,9 @@ assert ones and all(f['born_at']['kind'] == 'one-periodic' for f in ones)
 T2 = meta['model']['T2']
 for f in fams:
     lines = open(os.path.join(d, f['file'])).read().splitlines()
-    assert lines[0] == meta['columns'] == 'energy,period,omega,trace,stability,u1,v1,min_impact_speed,min_clearance'
+    assert lines[0] == meta['about']['columns'] == 'energy,period,omega,trace,stability,u1,v1,min_impact_speed,min_clearance'
     rows = [l.split(',') for l in lines[1:]]
-    assert len(rows) == f['orbits'] > 0
+    assert len(rows) == f['rows'] > 0
     b = open(os.path.join(d, f['file'][:-4] + '.npy'), 'rb').read(); n = b[8] | (b[9] << 8)
     h = ast.literal_eval(b[10:10 + n].decode('latin1')); a = array.array('d'); a.frombytes(b[10 + n:])
     assert h['shape'] == (len(rows), 9), h
