@@ -3,6 +3,8 @@
 #include "cli_output.h"
 
 #include <cmath>
+#include <iterator>
+#include <type_traits>
 
 #include "core/modes.h"
 #include "core/orbits.h"
@@ -201,8 +203,45 @@ void RunWriter<S>::begin(const core::BasicResult<S>&) {
   }
 }
 
+namespace {
+
+// An event into the table; in long double or binary128 also as the decimal text the command line
+// writes (the events a run of --precision auto wrote in double before its raise get theirs then).
+template <typename S>
+void appendEvent(EventTable& table, const core::BasicEvent<S>& event) {
+  EventRow row{};
+  row.t = core::toDouble(event.t);
+  const std::string_view type = core::toString(event.type);
+  for (std::size_t i = 0; i < type.size() && i < std::size(row.type); ++i) row.type[i] = char32_t(type[i]);
+  row.u1 = core::toDouble(event.before.u1);
+  row.u2 = core::toDouble(event.before.u2);
+  row.v1 = core::toDouble(event.before.v1);
+  row.v2Pre = core::toDouble(event.before.v2);
+  row.v2Post = core::toDouble(event.after.v2);
+  if constexpr (!std::is_same_v<S, double>) {
+    for (std::size_t i = table.decimals.size() / 6; i < table.rows.size(); ++i) {
+      const EventRow& earlier = table.rows[i];
+      for (double value : {earlier.t, earlier.u1, earlier.u2, earlier.v1, earlier.v2Pre, earlier.v2Post}) {
+        table.decimals.push_back(number(value));
+      }
+    }
+    for (const S* value : {&event.t, &event.before.u1, &event.before.u2, &event.before.v1,
+                           &event.before.v2, &event.after.v2}) {
+      table.decimals.push_back(number(*value));
+    }
+  }
+  table.rows.push_back(row);
+}
+
+}  // namespace
+
 template <typename S>
 void RunWriter<S>::event(const core::BasicEvent<S>& event) {
+  if (m_table) {
+    appendEvent(*m_table, event);
+    ++m_events;
+    return;
+  }
   switch (m_run.format) {
     case Format::Json:
       write((m_events == 0 ? "\n    " : ",\n    ") + eventJson(event));
@@ -230,7 +269,7 @@ void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
                        const core::Trust& trust, const PrecisionReport& precision) {
   switch (m_run.format) {
     case Format::Json:
-      write((m_events == 0 ? "],\n" : "\n  ],\n") + endFields(result, interrupted, trust, precision, "  ") + "\n}\n");
+      write((m_events == 0 || m_table ? "],\n" : "\n  ],\n") + endFields(result, interrupted, trust, precision, "  ") + "\n}\n");
       break;
     case Format::JsonLines: {
       std::string fields = endFields(result, interrupted, trust, precision, "");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli_input.h"
+#include "cli_io.h"
 #include "core/simulate.h"
 #include "core/trust.h"
 
@@ -40,9 +41,11 @@ struct PrecisionReport {
 template <typename S>
 class RunWriter {
  public:
-  /// `precision` is what the run was asked for (the model's "precision" field).
-  RunWriter(const RunInput<S>& run, std::FILE* out, std::string precision)
-      : m_run(run), m_out(out), m_precision(std::move(precision)) {}
+  /// `precision` is what the run was asked for (the model's "precision" field). With a `table`
+  /// the events go there and the text's events array stays empty (the Python module).
+  RunWriter(const RunInput<S>& run, std::FILE* out, std::string precision,
+            EventTable* table = nullptr)
+      : m_run(run), m_out(out), m_precision(std::move(precision)), m_table(table) {}
 
   /// Everything known before the first event.
   void begin(const core::BasicResult<S>& result);
@@ -60,6 +63,7 @@ class RunWriter {
   const RunInput<S>& m_run;
   std::FILE* m_out;
   std::string m_precision;
+  EventTable* m_table;
   std::int64_t m_events = 0;
 };
 

@@ -121,7 +121,7 @@ std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& pars
 
 }  // namespace
 
-int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
+int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
   if (!parser.isSet("onepp")) {
     error = "family: name the family: --onepp (one impact per period)";
     return kExitInvalidInput;
@@ -248,7 +248,7 @@ int runFamily(const QCommandLineParser& parser, std::stop_token stop, QString& e
 #endif
   std::int64_t admissible = 0;
   for (const auto& p : family) admissible += p.admissible ? 1 : 0;
-  std::fprintf(stderr, "grazelab-cli: family: %lld orbits (%lld admissible): %s.csv\n",
+  std::fprintf(io.messages, "grazelab-cli: family: %lld orbits (%lld admissible): %s.csv\n",
                (long long)family.size(), (long long)admissible, qPrintable(prefix));
   return kExitOk;
 }

@@ -153,21 +153,27 @@ std::optional<core::MapSpec> parseSpec(const QCommandLineParser& parser, QString
   return spec;
 }
 
-// a line on stderr at most every two seconds while a long map computes
+// a line on the messages at most every two seconds while a long map computes, and each step
+// to the caller's progress
 class ProgressLine {
  public:
-  explicit ProgressLine(std::int64_t total) : m_total(total) {}
+  ProgressLine(std::int64_t total, const Io& io) : m_total(total), m_io(io) {}
   void operator()(std::int64_t done) {
+    if (m_io.progress) {
+      m_io.progress(double(done) / double(m_total),
+                    std::to_string(done) + " of " + std::to_string(m_total) + " points");
+    }
     const std::int64_t now = Clock::now().time_since_epoch().count();
     std::int64_t last = m_last.load();
     const std::int64_t every = std::chrono::duration_cast<Clock::duration>(std::chrono::seconds(2)).count();
     if (now - last < every || !m_last.compare_exchange_strong(last, now)) return;
-    std::fprintf(stderr, "grazelab-cli: map: %lld of %lld points (%.0f %%)\n", (long long)done,
+    std::fprintf(m_io.messages, "grazelab-cli: map: %lld of %lld points (%.0f %%)\n", (long long)done,
                  (long long)m_total, 100.0 * double(done) / double(m_total));
   }
 
  private:
   std::int64_t m_total;
+  const Io& m_io;
   std::atomic<std::int64_t> m_last = Clock::now().time_since_epoch().count();
 };
 
@@ -190,7 +196,7 @@ QStringList mapOnlyOptionsSet(const QCommandLineParser& parser) {
   return foreignOptions(parser, {"x", "y", "threads", "shard", "picture", "count"});
 }
 
-int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
+int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
   const QStringList foreign =
       foreignOptions(parser, {"format", "t-end", "methods", "quick", "count", "search-steps"});
   if (!foreign.isEmpty()) {
@@ -244,7 +250,7 @@ int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& erro
   // the fonts load while the points are computed (the picture needs them afterwards)
   std::thread fontThread;
   if (drawsPicture) fontThread = std::thread(map::prepareFonts);
-  ProgressLine progress(points);
+  ProgressLine progress(points, io);
   const auto started = Clock::now();
   const core::MapRows computed = core::computeMap(
       *spec, rows, parallel::tbbParallelFor(threads), stop,
@@ -280,14 +286,14 @@ int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& erro
     error = pictureError;
     return 1;
   }
-  std::fprintf(stderr, "grazelab-cli: map: %lld points in %.3f s on %d thread%s (%.0f runs/s): %s.json\n",
+  std::fprintf(io.messages, "grazelab-cli: map: %lld points in %.3f s on %d thread%s (%.0f runs/s): %s.json\n",
                (long long)points, seconds, threads, threads == 1 ? "" : "s",
                seconds > 0 ? double(points) / seconds : 0.0, qPrintable(*prefix));
   return kExitOk;
 }
 
-int runMerge(const QCommandLineParser& parser, const QStringList& parts, std::stop_token stop,
-             QString& error) {
+int runMerge(const QCommandLineParser& parser, const QStringList& parts, const Io& io,
+             std::stop_token stop, QString& error) {
   const QStringList foreign = foreignOptions(
       parser, {"x", "y", "threads", "shard", "picture", "count", "glo", "onepp", "state",
                "perturb", "contacts", "t-end", "format", "trust", "methods", "quick", "m1", "m2",
@@ -321,7 +327,7 @@ int runMerge(const QCommandLineParser& parser, const QStringList& parts, std::st
   if (stop.stop_requested()) return kExitInterrupted;
   if (!map::writeMapFiles(*prefix, *whole, error)) return 1;
   if (map::picturesAvailable() && !map::writeMapPicture(*prefix, *whole, error)) return 1;
-  std::fprintf(stderr, "grazelab-cli: merge: %lld parts, %lld x %lld points: %s.json\n",
+  std::fprintf(io.messages, "grazelab-cli: merge: %lld parts, %lld x %lld points: %s.json\n",
                (long long)parts.size(), (long long)whole->totalRows, (long long)whole->columns,
                qPrintable(*prefix));
   return kExitOk;

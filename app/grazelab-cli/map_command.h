@@ -7,6 +7,8 @@
 
 #include <stop_token>
 
+#include "cli_io.h"
+
 class QCommandLineParser;
 
 namespace grazelab::cli {
@@ -20,10 +22,10 @@ QStringList mapOnlyOptionsSet(const QCommandLineParser& parser);
 
 /// `grazelab-cli map`: a 2-D grid of exact runs reduced to summaries (issue 10). Exit 0, 2 on
 /// invalid input (`error`, nothing written), 130 when interrupted (nothing written).
-int runMap(const QCommandLineParser& parser, std::stop_token stop, QString& error);
+int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error);
 
 /// `grazelab-cli merge --out PREFIX PART1 ... PARTN`: the stripes of one map joined.
-int runMerge(const QCommandLineParser& parser, const QStringList& parts, std::stop_token stop,
-             QString& error);
+int runMerge(const QCommandLineParser& parser, const QStringList& parts, const Io& io,
+             std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

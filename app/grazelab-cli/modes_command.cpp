@@ -60,7 +60,7 @@ const char* const kColumns = "energy,period,omega,trace,stability,u1,v1,min_impa
 
 template <typename S>
 int modesIn(const QCommandLineParser& parser, const QString& prefix, const QString& precision, int maxImpacts,
-            std::stop_token stop, QString& error) {
+            const Io& io, std::stop_token stop, QString& error) {
   const Parsed<ModelInput<S>> model = parseModel<S>(parser);
   if (!model.value) {
     error = model.error;
@@ -215,7 +215,7 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
       error);
   if (!drawn) return 1;
 #endif
-  std::fprintf(stderr, "grazelab-cli: modes: %lld families: %s.json\n", (long long)atlas.families.size(),
+  std::fprintf(io.messages, "grazelab-cli: modes: %lld families: %s.json\n", (long long)atlas.families.size(),
                qPrintable(prefix));
   return kExitOk;
 }
@@ -230,7 +230,7 @@ void addModesOptions(QCommandLineParser& parser) {
   });
 }
 
-int runModes(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
+int runModes(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
   for (const char* name : {"glo", "onepp", "state", "perturb", "contacts", "t-end", "trust", "x", "y",
                            "threads", "shard", "picture", "methods", "quick", "count", "format",
                            "search-steps", "period", "impacts", "energy", "guess"}) {
@@ -255,9 +255,9 @@ int runModes(const QCommandLineParser& parser, std::stop_token stop, QString& er
   }
   const auto output = parseOutputPrefix(parser, "PREFIX.json, PREFIX-family-N.csv, ...", "modes", error);
   if (!output) return kExitInvalidInput;
-  if (precision == "long") return modesIn<long double>(parser, *output, precision, maxImpacts, stop, error);
-  if (precision == "quad") return modesIn<core::Quad>(parser, *output, precision, maxImpacts, stop, error);
-  return modesIn<double>(parser, *output, "double", maxImpacts, stop, error);
+  if (precision == "long") return modesIn<long double>(parser, *output, precision, maxImpacts, io, stop, error);
+  if (precision == "quad") return modesIn<core::Quad>(parser, *output, precision, maxImpacts, io, stop, error);
+  return modesIn<double>(parser, *output, "double", maxImpacts, io, stop, error);
 }
 
 }  // namespace grazelab::cli

@@ -6,6 +6,8 @@
 
 #include <stop_token>
 
+#include "cli_io.h"
+
 class QCommandLineParser;
 
 namespace grazelab::cli {
@@ -17,6 +19,6 @@ void addModesOptions(QCommandLineParser& parser);
 /// PREFIX`: the atlas of the chain's periodic impacting families up to K impacts per period
 /// (PREFIX.json, one CSV and .npy per family, the frequency-energy picture PREFIX.png/.svg).
 /// Exit 2 with `error` on invalid input, 130 (nothing written) when `stop` is requested.
-int runModes(const QCommandLineParser& parser, std::stop_token stop, QString& error);
+int runModes(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

@@ -82,9 +82,9 @@ std::optional<S> scalarOption(const QCommandLineParser& parser, const char* name
 
 enum class Outcome { Found, Undecided, Refused };
 
-// The orbit in precision S: written to stdout when found; `error` says why not.
+// The orbit in precision S: written to io.out when found; `error` says why not.
 template <typename S>
-Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, std::stop_token stop,
+Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, const Io& io, std::stop_token stop,
                 QString& error) {
   const Parsed<ModelInput<S>> model = parseModel<S>(parser);
   if (!model.value) {
@@ -141,7 +141,7 @@ Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, 
                                                                           : Outcome::Refused;
   }
   const std::string json = orbitJson(*search.orbit, chain, precision);
-  std::fwrite(json.data(), 1, json.size(), stdout);
+  std::fwrite(json.data(), 1, json.size(), io.out);
   return Outcome::Found;
 }
 
@@ -164,7 +164,7 @@ QStringList orbitOnlyOptionsSet(const QCommandLineParser& parser) {
   return set;
 }
 
-int runOrbit(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
+int runOrbit(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
   for (const char* name : {"glo", "state", "perturb", "contacts", "t-end", "trust", "x", "y",
                            "threads", "shard", "picture", "methods", "quick", "count", "out",
                            "search-steps"}) {
@@ -192,14 +192,14 @@ int runOrbit(const QCommandLineParser& parser, std::stop_token stop, QString& er
   }
   const QString precision = parser.value("precision");
   Outcome outcome = Outcome::Refused;
-  if (precision == "double") outcome = orbitIn<double>(parser, "double", stop, error);
-  else if (precision == "long") outcome = orbitIn<long double>(parser, "long", stop, error);
-  else if (precision == "quad") outcome = orbitIn<core::Quad>(parser, "quad", stop, error);
+  if (precision == "double") outcome = orbitIn<double>(parser, "double", io, stop, error);
+  else if (precision == "long") outcome = orbitIn<long double>(parser, "long", io, stop, error);
+  else if (precision == "quad") outcome = orbitIn<core::Quad>(parser, "quad", io, stop, error);
   else if (precision == "auto") {
     // double, and again in long double then binary128 when a contact is too near tangent
-    outcome = orbitIn<double>(parser, "double", stop, error);
-    if (outcome == Outcome::Undecided) outcome = orbitIn<long double>(parser, "long", stop, error);
-    if (outcome == Outcome::Undecided) outcome = orbitIn<core::Quad>(parser, "quad", stop, error);
+    outcome = orbitIn<double>(parser, "double", io, stop, error);
+    if (outcome == Outcome::Undecided) outcome = orbitIn<long double>(parser, "long", io, stop, error);
+    if (outcome == Outcome::Undecided) outcome = orbitIn<core::Quad>(parser, "quad", io, stop, error);
   } else {
     error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
     return kExitInvalidInput;

@@ -7,6 +7,8 @@
 
 #include <stop_token>
 
+#include "cli_io.h"
+
 class QCommandLineParser;
 
 namespace grazelab::cli {
@@ -21,6 +23,6 @@ QStringList orbitOnlyOptionsSet(const QCommandLineParser& parser);
 /// periodic impacting orbit with its exact stability (docs/model.md section 10), as a JSON
 /// object on stdout. Exit 2 with `error` (one line) on invalid input, when Newton does not
 /// converge or when the orbit is not admissible.
-int runOrbit(const QCommandLineParser& parser, std::stop_token stop, QString& error);
+int runOrbit(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

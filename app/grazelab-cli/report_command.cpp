@@ -215,7 +215,7 @@ QStringList reportOnlyOptionsSet(const QCommandLineParser& parser) {
   return set;
 }
 
-int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
+int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
   using namespace core::methods;
   const auto methods = parseMethodsOption(parser, error);
   if (!methods) return kExitInvalidInput;
@@ -230,7 +230,7 @@ int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& e
   budget.maxSeconds = quick ? 5 : 60;
   Task& task = input->task;
 
-  progress("report", QStringLiteral("estimating the predictability horizon of the start"));
+  progress(io, "report", QStringLiteral("estimating the predictability horizon of the start"));
   const ComparisonEnd end = comparisonEnd(task, stop);
   if (end.shortened) {
     input->horizonNote += QStringLiteral("; moved to t = %1, an eighth of T2 before the "
@@ -239,7 +239,7 @@ int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& e
                               .arg(end.horizon, 0, 'g', 6);
     task.tEnd = end.tEnd;
   }
-  progress("report", QStringLiteral("binary128 reference to t = %1 (%2 T2)")
+  progress(io, "report", QStringLiteral("binary128 reference to t = %1 (%2 T2)")
                          .arg(task.tEnd, 0, 'g', 6).arg(task.tEnd / input->period, 0, 'g', 4));
   const Reference reference = makeReference(task, budget, stop);
   if (stop.stop_requested()) return kExitInterrupted;
@@ -261,12 +261,13 @@ int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& e
     WorkPrecisionPoint point = measurePoint(task, reference, setting, budget, timing, stop);
     if (stop.stop_requested()) return kExitInterrupted;
     ++done;
-    progress("report", QStringLiteral("[%1/%2] %3 %4: %5, state error %6%7")
+    progress(io, "report", QStringLiteral("[%1/%2] %3 %4: %5, state error %6%7")
                            .arg(done).arg(plan.size())
                            .arg(name(kind), parameterText(setting), humanSeconds(point.secondsMin))
                            .arg(scientific(point.errors.state, 2).isEmpty() ? "—" : scientific(point.errors.state, 2))
                            .arg(point.status == RunStatus::Completed ? QString()
-                                                                     : " (" + QString::fromStdString(point.reason) + ")"));
+                                                                     : " (" + QString::fromStdString(point.reason) + ")"),
+             double(done) / double(plan.size()));
     byMethod[kind].push_back(point);
     all.push_back(point);
   }
@@ -281,10 +282,10 @@ int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& e
   const QString pictures = "work_precision.svg/.png, convergence.svg/.png, ";
 #else
   const QString pictures;
-  progress("report", "this build has no explorer (GRAZELAB_BUILD_UI=OFF): no pictures");
+  progress(io, "report", "this build has no explorer (GRAZELAB_BUILD_UI=OFF): no pictures");
 #endif
   if (!writeAtomically(dir + "/report.md", md, error)) return 1;
-  progress("report", QStringLiteral("wrote %1/{results.csv, %2report.md}").arg(dir, pictures));
+  progress(io, "report", QStringLiteral("wrote %1/{results.csv, %2report.md}").arg(dir, pictures));
   return kExitOk;
 }
 

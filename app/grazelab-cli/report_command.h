@@ -6,6 +6,8 @@
 
 #include <stop_token>
 
+#include "cli_io.h"
+
 class QCommandLineParser;
 
 namespace grazelab::cli {
@@ -24,10 +26,10 @@ inline constexpr int kExitInterrupted = 130;
 /// `grazelab-cli report`: the work-precision report (issue 8). Writes DIR/results.csv,
 /// work_precision.svg/.png, convergence.svg/.png and report.md, each atomically; progress on
 /// stderr. On an invalid input: one line on stderr (`error`), exit 2, nothing written.
-int runReport(const QCommandLineParser& parser, std::stop_token stop, QString& error);
+int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error);
 
 /// `grazelab-cli stability`: the matrix of stiff and extreme cases. Writes DIR/matrix.csv and
 /// DIR/matrix.md atomically.
-int runStability(const QCommandLineParser& parser, std::stop_token stop, QString& error);
+int runStability(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

@@ -80,9 +80,10 @@ bool writeAtomically(const QString& path, const QByteArray& bytes, QString& erro
   return false;
 }
 
-void progress(const char* command, const QString& text) {
-  std::fprintf(stderr, "grazelab-cli %s: %s\n", command, qPrintable(text));
-  std::fflush(stderr);
+void progress(const Io& io, const char* command, const QString& text, double fraction) {
+  std::fprintf(io.messages, "grazelab-cli %s: %s\n", command, qPrintable(text));
+  std::fflush(io.messages);
+  io.reportProgress(fraction, text.toStdString());
 }
 
 QString versionString() {

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "cli_io.h"
 #include "core/methods/method.h"
 
 class QCommandLineParser;
@@ -30,8 +31,9 @@ std::optional<QString> prepareOutputDirectory(const QCommandLineParser& parser, 
 /// Writes bytes atomically; on failure, `error` says which file and why.
 bool writeAtomically(const QString& path, const QByteArray& bytes, QString& error);
 
-/// One progress line on stderr, "grazelab-cli <command>: <text>".
-void progress(const char* command, const QString& text);
+/// One progress line on the messages, "grazelab-cli <command>: <text>", and to the caller's
+/// progress with the fraction done (negative when not known).
+void progress(const Io& io, const char* command, const QString& text, double fraction = -1);
 
 /// The version written into every file.
 QString versionString();

@@ -26,15 +26,18 @@
 namespace grazelab::cli {
 namespace {
 
-// Progress of a long run on stderr, when stderr is a terminal: contacts, simulated time, rate
-// and, where the run is bounded, the time left; once a second, on one line rewritten in place.
+// Progress of a long run: contacts, simulated time, rate and, where the run is bounded, the
+// time left; once a second on one line rewritten in place when the messages go to a terminal,
+// and to the caller's progress (the Python module's callback).
 class ProgressLine {
  public:
-  bool enabled() const { return m_enabled; }
+  explicit ProgressLine(const Io& io)
+      : m_io(io), m_terminal(isatty(fileno(io.messages)) != 0) {}
+  bool enabled() const { return m_terminal || m_io.progress; }
   void show(std::int64_t contacts, double simulatedTime, double fraction,
             const std::string& precision) {
     const double elapsed = seconds(m_started);
-    if (!m_enabled || elapsed - m_lastShown < 1.0) return;
+    if (!enabled() || elapsed - m_lastShown < (m_terminal ? 1.0 : 0.1)) return;
     m_lastShown = elapsed;
     const double rate = double(contacts) / elapsed;
     char left[64] = "";
@@ -42,13 +45,17 @@ class ProgressLine {
       std::snprintf(left, sizeof left, ", %.0f%%, about %.0f s left", 100 * fraction,
                     elapsed * (1 - fraction) / fraction);
     }
-    std::fprintf(stderr, "\r\033[Kgrazelab-cli: %lld contacts, t = %.6g, %.3g contacts/s (%s)%s",
-                 static_cast<long long>(contacts), simulatedTime, rate, precision.c_str(), left);
-    std::fflush(stderr);
+    char line[256];
+    std::snprintf(line, sizeof line, "%lld contacts, t = %.6g, %.3g contacts/s (%s)%s",
+                  static_cast<long long>(contacts), simulatedTime, rate, precision.c_str(), left);
+    m_io.reportProgress(fraction > 0 ? fraction : -1.0, line);
+    if (!m_terminal) return;
+    std::fprintf(m_io.messages, "\r\033[Kgrazelab-cli: %s", line);
+    std::fflush(m_io.messages);
     m_shown = true;
   }
   void clear() {
-    if (m_shown) std::fprintf(stderr, "\r\033[K");
+    if (m_shown) std::fprintf(m_io.messages, "\r\033[K");
     m_shown = false;
   }
 
@@ -56,7 +63,8 @@ class ProgressLine {
   static double seconds(std::chrono::steady_clock::time_point since) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
   }
-  bool m_enabled = isatty(STDERR_FILENO) != 0;
+  const Io& m_io;
+  bool m_terminal;
   bool m_shown = false;
   std::chrono::steady_clock::time_point m_started = std::chrono::steady_clock::now();
   double m_lastShown = 0;
@@ -82,7 +90,7 @@ constexpr int kRaisePrecision = -1;
 
 template <typename S>
 int simulateIn(const QCommandLineParser& parser, core::TrustMode trustMode, AutoRun* autoRun,
-               std::stop_token stop, QString& error) {
+               const Io& io, std::stop_token stop, QString& error) {
   constexpr bool kTopPrecision = std::is_same_v<S, core::Quad>;
   const std::string precisionName(core::toString(core::precisionOf<S>()));
   // a refusal that names --precision (a chain or start beyond this precision's reach): auto
@@ -100,7 +108,7 @@ int simulateIn(const QCommandLineParser& parser, core::TrustMode trustMode, Auto
   if (!parsed.value) return refused(parsed.error.toStdString());
   RunInput<S>& run = *parsed.value;
   run.request.stopAtUndecided = autoRun != nullptr && !kTopPrecision;
-  RunWriter<S> writer(run, stdout, autoRun ? std::string("auto") : precisionName);
+  RunWriter<S> writer(run, io.out, autoRun ? std::string("auto") : precisionName, io.events);
   // the error estimate: the same input read one precision up, run beside this one
   std::optional<core::TrustMonitor<S>> monitor;
   std::string noShadow;
@@ -151,14 +159,14 @@ int simulateIn(const QCommandLineParser& parser, core::TrustMode trustMode, Auto
   }
   if (!autoRun || !autoRun->begun) {
     for (const std::string& note : run.notes) {
-      std::fprintf(stderr, "grazelab-cli: note: %s\n", note.c_str());
+      std::fprintf(io.messages, "grazelab-cli: note: %s\n", note.c_str());
     }
     writer.begin(simulator.result());
     if (autoRun) autoRun->begun = true;
   } else {
     writer.resumeAfter(autoRun->written);
   }
-  ProgressLine progress;
+  ProgressLine progress(io);
   while (!simulator.advance(progress.enabled() ? 65536 : std::numeric_limits<std::int64_t>::max(),
                             stop)) {
     progress.show(simulator.result().cost.contacts,
@@ -213,23 +221,23 @@ int simulateIn(const QCommandLineParser& parser, core::TrustMode trustMode, Auto
 }  // namespace
 
 int runSimulate(const QCommandLineParser& parser, const PrecisionOption& precision,
-                core::TrustMode trust, std::stop_token stop, QString& error) {
+                core::TrustMode trust, const Io& io, std::stop_token stop, QString& error) {
   using core::Precision;
   if (!precision.fixed) {
     // auto: double, and from the input again one precision up while a contact needs it
     AutoRun autoRun;
-    int code = simulateIn<double>(parser, trust, &autoRun, stop, error);
-    if (code == kRaisePrecision) code = simulateIn<long double>(parser, trust, &autoRun, stop, error);
-    if (code == kRaisePrecision) code = simulateIn<core::Quad>(parser, trust, &autoRun, stop, error);
+    int code = simulateIn<double>(parser, trust, &autoRun, io, stop, error);
+    if (code == kRaisePrecision) code = simulateIn<long double>(parser, trust, &autoRun, io, stop, error);
+    if (code == kRaisePrecision) code = simulateIn<core::Quad>(parser, trust, &autoRun, io, stop, error);
     return code;
   }
   switch (*precision.fixed) {
     case Precision::Double:
-      return simulateIn<double>(parser, trust, nullptr, stop, error);
+      return simulateIn<double>(parser, trust, nullptr, io, stop, error);
     case Precision::Long:
-      return simulateIn<long double>(parser, trust, nullptr, stop, error);
+      return simulateIn<long double>(parser, trust, nullptr, io, stop, error);
     case Precision::Quad:
-      return simulateIn<core::Quad>(parser, trust, nullptr, stop, error);
+      return simulateIn<core::Quad>(parser, trust, nullptr, io, stop, error);
   }
   return kExitInvalidInput;
 }

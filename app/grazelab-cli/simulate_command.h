@@ -7,17 +7,18 @@
 #include <stop_token>
 
 #include "cli_input.h"
+#include "cli_io.h"
 #include "core/trust.h"
 
 class QCommandLineParser;
 
 namespace grazelab::cli {
 
-/// `grazelab-cli simulate` (docs/design.md "Command line"): the run streamed to stdout in its
+/// `grazelab-cli simulate` (docs/design.md "Command line"): the run streamed to io.out in its
 /// format, in the precision asked for or, with auto, raised from its input to long double and
 /// binary128 where a contact needs it. Exit 0; 2 on invalid input (`error`, nothing on stdout);
 /// 130 when `stop` ended it (the output closed with complete records).
 int runSimulate(const QCommandLineParser& parser, const PrecisionOption& precision,
-                core::TrustMode trust, std::stop_token stop, QString& error);
+                core::TrustMode trust, const Io& io, std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

@@ -41,7 +41,7 @@ QString settingText(const core::methods::MethodSetting& setting) {
 
 }  // namespace
 
-int runStability(const QCommandLineParser& parser, std::stop_token stop, QString& error) {
+int runStability(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
   using namespace core::methods;
   for (const char* option : {"m1", "m2", "k1", "k2", "gap", "branch", "glo", "onepp", "state",
                              "perturb", "contacts", "t-end", "format", "trust", "precision",
@@ -68,8 +68,9 @@ int runStability(const QCommandLineParser& parser, std::stop_token stop, QString
   int index = 0;
   for (const StressCase& row : cases) {
     ++index;
-    progress("stability", QStringLiteral("[%1/%2] %3").arg(index).arg(cases.size())
-                              .arg(QString::fromStdString(row.name)));
+    progress(io, "stability", QStringLiteral("[%1/%2] %3").arg(index).arg(cases.size())
+                              .arg(QString::fromStdString(row.name)),
+             double(index - 1) / double(cases.size()));
     horizons[row.name] = runStressCase(
         row, *methods, budget, [&cells](const StressCell& cell) { cells.push_back(cell); },
         &marks, stop);
@@ -158,7 +159,7 @@ int runStability(const QCommandLineParser& parser, std::stop_token stop, QString
       !writeAtomically(dir + "/matrix.md", md.toUtf8(), error)) {
     return 1;
   }
-  progress("stability", QStringLiteral("wrote %1/{matrix.csv, matrix.md} in %2")
+  progress(io, "stability", QStringLiteral("wrote %1/{matrix.csv, matrix.md} in %2")
                             .arg(dir, humanSeconds(seconds)));
   return kExitOk;
 }

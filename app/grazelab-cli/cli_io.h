@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace grazelab::cli {
+
+/// One event of a run as the Python module hands it to NumPy without a copy: the columns of the
+/// command line's CSV (t,type,u1,u2,v1,v2_pre,v2_post), numbers rounded to double, the type in
+/// UCS-4 as NumPy's '<U8'. 80 bytes; the module describes the same layout to NumPy.
+struct EventRow {
+  double t;
+  char32_t type[8];
+  double u1, u2, v1, v2Pre, v2Post;
+};
+static_assert(sizeof(EventRow) == 80);
+
+/// A run's events as arrays (see Io::events). For a run in long double or binary128 the six
+/// numbers of each event are also kept as the decimal text the command line writes.
+struct EventTable {
+  std::vector<EventRow> rows;
+  std::vector<std::string> decimals;  ///< empty, or 6 per row: t,u1,u2,v1,v2_pre,v2_post
+};
+
+/// Where a command writes. The command line: its output on stdout, its messages (notes,
+/// progress, the line that says what a command wrote) on stderr. The Python module: both into
+/// memory, a run's events straight into arrays, progress to the caller.
+struct Io {
+  std::FILE* out = stdout;
+  std::FILE* messages = stderr;
+  /// Progress of a long command: the fraction done (negative when not known) and one line
+  /// that says where it is. May be called from any thread; optional.
+  std::function<void(double fraction, const std::string& text)> progress;
+  /// When set, `simulate` puts its events here instead of into the text of its output (whose
+  /// events array stays empty).
+  EventTable* events = nullptr;
+
+  void reportProgress(double fraction, const std::string& text) const {
+    if (progress) progress(fraction, text);
+  }
+};
+
+}  // namespace grazelab::cli
