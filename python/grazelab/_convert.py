@@ -1,0 +1,132 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 GrazeLab developers
+"""Keyword arguments to the command line's flags, and its output to Python and NumPy."""
+
+import csv
+import json
+import math
+import numbers
+import os
+
+import numpy as np
+
+# the flags that take no value (given as True)
+_BARE = {"quick", "onepp"}
+# flags whose parts are joined by ':' (an axis NAME:from:to:count, an energy range A:B) or '/'
+_JOINED_BY = {"x": ":", "y": ":", "energy_range": ":", "shard": "/"}
+
+
+class Result(dict):
+    """A command's result: a dict whose keys are the JSON's field names, also readable as
+    attributes (``run.events``, ``run.trust.verdict``)."""
+
+    def __getattr__(self, name):
+        try:
+            return self[name]
+        except KeyError:
+            raise AttributeError(name) from None
+
+    def __setattr__(self, name, value):
+        self[name] = value
+
+    def __dir__(self):
+        return list(self.keys()) + list(super().__dir__())
+
+
+def _text(name, value):
+    if isinstance(value, bool):
+        raise ValueError(f"{name}: expected a number or text, got {value!r}")
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real) and not isinstance(value, numbers.Rational):
+        # repr: the shortest decimal that reads back as the same double
+        return repr(float(value))
+    return str(value)
+
+
+def arguments(command, options):
+    """The command line of `command` with `options` (snake_case keyword arguments): True is a
+    bare flag (--quick, --onepp of family and orbit), False and None leave the flag out, a tuple or list is joined by ',' (':' for the
+    axes and --energy-range, '/' for --shard)."""
+    line = [command]
+    for name, value in options.items():
+        if value is None or value is False:
+            continue
+        flag = "--" + name.replace("_", "-")
+        if value is True and name in _BARE:
+            line.append(flag)
+        elif isinstance(value, (list, tuple, np.ndarray)):
+            separator = _JOINED_BY.get(name, ",")
+            line.append(flag + "=" + separator.join(_text(name, v) for v in value))
+        else:
+            line.append(flag + "=" + _text(name, value))
+    return line
+
+
+def _results(value):
+    if isinstance(value, dict):
+        return Result({k: _results(v) for k, v in value.items()})
+    if isinstance(value, list):
+        return [_results(v) for v in value]
+    return value
+
+
+def _null_as_nan(value):
+    return math.nan if value is None else value
+
+
+def parse_json(text, exact_decimals=False):
+    """A command's JSON as Results. Numbers are Python floats (correctly rounded: the same
+    doubles the command line printed). With `exact_decimals` the document is also read with
+    its numbers as the decimal text written (binary128 and long double results), under
+    ``decimal``."""
+    result = _results(json.loads(text))
+    if exact_decimals:
+        result["decimal"] = _results(json.loads(text, parse_float=str, parse_int=str))
+    return result
+
+
+def table(npy_path, csv_path):
+    """A table the command line wrote as PREFIX.npy (float64, rows x columns) and PREFIX.csv
+    (its header names the columns): a NumPy structured array with the CSV's column names,
+    a view of the .npy's data (no copy)."""
+    with open(csv_path, newline="") as handle:
+        names = next(csv.reader(handle))
+    data = np.load(npy_path)
+    if data.ndim != 2 or data.shape[1] != len(names):
+        raise RuntimeError(f"{npy_path}: {data.shape} does not match the columns {names}")
+    data = np.ascontiguousarray(data, dtype="<f8")
+    return data.view(np.dtype([(name, "<f8") for name in names])).reshape(data.shape[0])
+
+
+def csv_table(path):
+    """A CSV the command line wrote (report, stability) as a structured array: a column of
+    numbers as float64 (empty cells NaN), any other as text."""
+    with open(path, newline="") as handle:
+        rows = list(csv.reader(handle))
+    names, body = rows[0], rows[1:]
+    columns = []
+    for index, name in enumerate(names):
+        cells = [row[index] if index < len(row) else "" for row in body]
+        try:
+            columns.append(np.array([float(c) if c != "" else math.nan for c in cells], dtype="<f8"))
+        except ValueError:
+            columns.append(np.array(cells, dtype=str))
+    dtype = np.dtype([(name, column.dtype) for name, column in zip(names, columns)])
+    out = np.empty(len(body), dtype=dtype)
+    for name, column in zip(names, columns):
+        out[name] = column
+    return out
+
+
+def map_arrays(prefix, description):
+    """The 2-D arrays of a map (row = y, column = x), one per quantity, from its .npy files."""
+    directory = os.path.dirname(prefix)
+    arrays = {}
+    for quantity, file in description["files"].items():
+        if quantity in ("json", "csv", "png", "svg"):
+            continue
+        path = os.path.join(directory, file)
+        if path.endswith(".npy") and os.path.exists(path):
+            arrays[quantity] = np.load(path)
+    return arrays

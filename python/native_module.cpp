@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// grazelab._native: one command line run in this process by the command line's own code
+// (runCommandLine), on a thread of its own with the GIL released. The calling thread wakes every
+// 100 ms: Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the
+// command's latest progress goes to the caller's callback, both on the caller's thread.
+// grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <QCoreApplication>
+#include <QString>
+#include <QStringList>
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli_io.h"
+#include "cli_run.h"
+
+namespace py = pybind11;
+
+namespace {
+
+using grazelab::cli::EventRow;
+using grazelab::cli::EventTable;
+
+// An in-memory FILE* (open_memstream): what a command writes on its output or its messages.
+class MemoryStream {
+ public:
+  MemoryStream() : m_file(open_memstream(&m_buffer, &m_size)) {
+    if (!m_file) throw std::runtime_error("grazelab: cannot open an in-memory stream");
+  }
+  ~MemoryStream() {
+    if (m_file) std::fclose(m_file);
+    std::free(m_buffer);
+  }
+  MemoryStream(const MemoryStream&) = delete;
+  MemoryStream& operator=(const MemoryStream&) = delete;
+  std::FILE* file() const { return m_file; }
+  /// Everything written (the stream is closed: call once, after the command).
+  std::string take() {
+    std::fclose(m_file);
+    m_file = nullptr;
+    return std::string(m_buffer, m_size);
+  }
+
+ private:
+  char* m_buffer = nullptr;
+  std::size_t m_size = 0;
+  std::FILE* m_file;
+};
+
+// The latest progress of a running command, handed from its threads to the caller's.
+struct ProgressMailbox {
+  std::mutex mutex;
+  bool fresh = false;
+  double fraction = -1;
+  std::string text;
+};
+
+// The NumPy type of EventRow: the CSV's columns, type as '<U8'.
+py::dtype eventDtype() {
+  py::list names, formats, offsets;
+  auto column = [&](const char* name, const char* format, std::size_t offset) {
+    names.append(name);
+    formats.append(format);
+    offsets.append(offset);
+  };
+  column("t", "<f8", offsetof(EventRow, t));
+  column("type", "<U8", offsetof(EventRow, type));
+  column("u1", "<f8", offsetof(EventRow, u1));
+  column("u2", "<f8", offsetof(EventRow, u2));
+  column("v1", "<f8", offsetof(EventRow, v1));
+  column("v2_pre", "<f8", offsetof(EventRow, v2Pre));
+  column("v2_post", "<f8", offsetof(EventRow, v2Post));
+  py::dict description;
+  description["names"] = names;
+  description["formats"] = formats;
+  description["offsets"] = offsets;
+  description["itemsize"] = sizeof(EventRow);
+  return py::dtype::from_args(description);
+}
+
+// The events as a NumPy array that owns the table's rows (no copy: the vector moves into the
+// array's base object).
+py::array eventArray(std::unique_ptr<EventTable> table) {
+  const py::dtype dtype = eventDtype();
+  const auto count = static_cast<py::ssize_t>(table->rows.size());
+  if (count == 0) return py::array(dtype, py::array::ShapeContainer{py::ssize_t(0)}, py::array::StridesContainer{py::ssize_t(sizeof(EventRow))});
+  auto* rows = new std::vector<EventRow>(std::move(table->rows));
+  py::capsule owner(rows, [](void* p) { delete static_cast<std::vector<EventRow>*>(p); });
+  return py::array(dtype, {count}, {py::ssize_t(sizeof(EventRow))}, rows->data(), owner);
+}
+
+// Hands the latest progress, if any arrived since the last call, to the caller's callback (with
+// the GIL held). False when the callback raised: that exception is kept in `pythonError`.
+bool deliverProgress(ProgressMailbox& mailbox, const py::object& progress,
+                     std::optional<py::error_already_set>& pythonError) {
+  std::optional<std::pair<double, std::string>> latest;
+  {
+    std::lock_guard lock(mailbox.mutex);
+    if (mailbox.fresh) latest.emplace(mailbox.fraction, mailbox.text);
+    mailbox.fresh = false;
+  }
+  if (!latest) return true;
+  try {
+    progress(latest->first < 0 ? py::object(py::none()) : py::object(py::float_(latest->first)),
+             latest->second);
+  } catch (py::error_already_set& error) {
+    pythonError.emplace(std::move(error));
+    return false;
+  }
+  return true;
+}
+
+// run(arguments, progress=None, events=False) -> (code, output, messages, events, decimals)
+py::tuple run(const std::vector<std::string>& arguments, const py::object& progress,
+              bool eventsAsArrays) {
+  QStringList commandLine{QStringLiteral("grazelab")};
+  for (const std::string& argument : arguments) commandLine << QString::fromStdString(argument);
+
+  MemoryStream output;
+  MemoryStream messages;
+  auto table = std::make_unique<EventTable>();
+  ProgressMailbox mailbox;
+  grazelab::cli::Io io;
+  io.out = output.file();
+  io.messages = messages.file();
+  if (eventsAsArrays) io.events = table.get();
+  if (!progress.is_none()) {
+    io.progress = [&mailbox](double fraction, const std::string& text) {
+      std::lock_guard lock(mailbox.mutex);
+      mailbox.fresh = true;
+      mailbox.fraction = fraction;
+      mailbox.text = text;
+    };
+  }
+
+  std::stop_source stop;
+  std::mutex doneMutex;
+  std::condition_variable doneSignal;
+  bool done = false;
+  int code = 0;
+  std::optional<py::error_already_set> pythonError;
+  std::exception_ptr failure;
+  {
+    py::gil_scoped_release released;
+    std::thread worker([&] {
+      try {
+        code = grazelab::cli::runCommandLine(commandLine, io, stop.get_token());
+      } catch (...) {
+        failure = std::current_exception();  // out of memory, most likely
+      }
+      std::lock_guard lock(doneMutex);
+      done = true;
+      doneSignal.notify_all();
+    });
+    for (;;) {
+      {
+        std::unique_lock lock(doneMutex);
+        if (doneSignal.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; })) break;
+      }
+      if (stop.stop_requested()) continue;  // stopping: wait for the command to end
+      py::gil_scoped_acquire held;
+      // Ctrl+C (or another signal handler that raised): stop the command, raise once it ended
+      if (PyErr_CheckSignals() != 0) {
+        pythonError.emplace();
+        stop.request_stop();
+        continue;
+      }
+      if (!deliverProgress(mailbox, progress, pythonError)) stop.request_stop();
+    }
+    worker.join();
+  }
+  // the last progress (a command shorter than one wake-up reports its end too)
+  if (!pythonError && code == 0) deliverProgress(mailbox, progress, pythonError);
+  if (pythonError) throw std::move(*pythonError);
+  if (failure) std::rethrow_exception(failure);
+  const std::string out = output.take();
+  const std::string log = messages.take();
+  py::object events = py::none();
+  py::object decimals = py::none();
+  if (eventsAsArrays) {
+    if (!table->decimals.empty()) decimals = py::cast(table->decimals);
+    events = eventArray(std::move(table));
+  }
+  return py::make_tuple(code, py::bytes(out), py::str(log), events, decimals);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_native, module) {
+  module.doc() = "GrazeLab's command line, run in process (use the grazelab package).";
+  // set once here, before any thread reads it (the files' "generator" field)
+  QCoreApplication::setApplicationName(QStringLiteral("grazelab-cli"));
+  QCoreApplication::setApplicationVersion(QString::fromUtf8(grazelab::cli::kVersion));
+  module.attr("version") = grazelab::cli::kVersion;
+  module.def("run", &run, py::arg("arguments"), py::arg("progress") = py::none(),
+             py::arg("events") = false,
+             "Runs one grazelab-cli command line (without the program's name) in this process. "
+             "Returns (exit code, output bytes, messages, events array or None, the events' "
+             "decimal text or None).");
+}

@@ -1,0 +1,161 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 GrazeLab developers
+"""Every command's result from Python equals the command line's, bit for bit."""
+
+import json
+import math
+import os
+
+import numpy as np
+import pytest
+
+import grazelab as gl
+
+EVENT_COLUMNS = ("t", "u1", "u2", "v1", "v2_pre", "v2_post")
+
+
+def bits(values):
+    return np.asarray(values, dtype="<f8").view("<u8")
+
+
+def assert_events_equal(python_run, cli_run):
+    events = python_run.events
+    assert len(events) == len(cli_run["events"]) > 0
+    assert list(events["type"]) == [e["type"] for e in cli_run["events"]]
+    for column in EVENT_COLUMNS:
+        expected = [e[column] for e in cli_run["events"]]
+        np.testing.assert_array_equal(bits(events[column]), bits(expected), err_msg=column)
+
+
+@pytest.mark.filterwarnings("ignore::grazelab.GrazeLabWarning")  # a chaotic run among them
+@pytest.mark.parametrize("options,flags", [
+    (dict(m2=0.5, glo=0.5, perturb=(0, 0, 0, -0.05), contacts=200),
+     ["--m2", "0.5", "--glo", "0.5", "--perturb=0,0,0,-0.05", "--contacts", "200"]),
+    (dict(m2=0.3, gap=0.01, state=(0.2, 0, 0.1, -0.3), t_end=400),
+     ["--m2", "0.3", "--gap", "0.01", "--state=0.2,0,0.1,-0.3", "--t-end", "400"]),
+    (dict(k2=0.52, state=(0, 0.9, 0, 0.5), t_end=300, branch=None),
+     ["--k2", "0.52", "--state=0,0.9,0,0.5", "--t-end", "300"]),
+    (dict(onepp=8.0, contacts=50), ["--onepp", "8.0", "--contacts", "50"]),
+])
+def test_simulate_events_are_the_cli_json_bit_for_bit(cli_json, options, flags):
+    run = gl.simulate(**options)
+    expected = cli_json("simulate", *flags)
+    assert_events_equal(run, expected)
+    assert run.final == expected["final"]
+    assert run.stop_reason == expected["stop_reason"]
+    assert run.contacts == expected["contacts"]
+    assert run.model == expected["model"]
+    assert run.trust.verdict == expected["trust"]["verdict"]
+    assert run.trust.estimated_state_error == expected["trust"]["estimated_state_error"]
+
+
+@pytest.mark.parametrize("precision", ["long", "quad"])
+def test_simulate_in_long_and_quad_keeps_the_exact_decimals(cli_json, precision):
+    flags = ["--glo", "0.3", "--perturb=0,0,0,-0.01", "--contacts", "40", "--precision", precision]
+    run = gl.simulate(glo=0.3, perturb=(0, 0, 0, -0.01), contacts=40, precision=precision)
+    exact = cli_json("simulate", *flags, exact=True)
+    for column in EVENT_COLUMNS:
+        assert list(run.events_decimal[column]) == [e[column] for e in exact["events"]], column
+        # the float columns are the decimals rounded once
+        np.testing.assert_array_equal(run.events[column],
+                                      [float(e[column]) for e in exact["events"]])
+    assert run.decimal.final == exact["final"]
+    assert run.precision.used == precision
+
+
+def test_info_is_the_cli_json(cli_json):
+    assert gl.info(m2=0.3, gap=2.5) == cli_json("info", "--m2", "0.3", "--gap", "2.5")
+    quad = gl.info(m2=0.3, precision="quad")
+    assert quad.decimal == cli_json("info", "--m2", "0.3", "--precision", "quad", exact=True)
+
+
+def test_map_arrays_equal_the_cli_npy(cli, tmp_path):
+    options = dict(x="u1:-1.5:1.5:16", y=("v1", -1, 1, 12), contacts=5, threads=2)
+    result = gl.map(**options)
+    done = cli("map", "--x", "u1:-1.5:1.5:16", "--y", "v1:-1:1:12", "--contacts", "5",
+               "--threads", "2", "--out", str(tmp_path / "m"))
+    assert done.returncode == 0, done.stderr
+    with open(tmp_path / "m.json") as handle:
+        description = json.load(handle)
+    assert result.spec == description["spec"]
+    assert set(result.arrays) == set(description["spec"]["quantities"])
+    for quantity, array in result.arrays.items():
+        expected = np.load(tmp_path / f"m-{quantity}.npy")
+        assert array.shape == (12, 16) and array.dtype == expected.dtype
+        np.testing.assert_array_equal(array, expected, err_msg=quantity)
+    assert result.arrays["impacts"].dtype == np.int64
+
+
+def test_map_shards_merge_to_the_whole_map(tmp_path):
+    options = dict(x="u1:-1:1:6", y="v1:-1:1:5", contacts=4)
+    whole = gl.map(**options)
+    parts = [tmp_path / "a", tmp_path / "b"]
+    for k, part in enumerate(parts, start=1):
+        gl.map(**options, shard=(k, 2), out=part)
+        assert os.path.exists(f"{part}.json")
+    merged = gl.merge(parts)
+    for quantity, array in whole.arrays.items():
+        np.testing.assert_array_equal(merged.arrays[quantity], array, err_msg=quantity)
+
+
+def test_family_table_is_the_cli_npy(cli, tmp_path):
+    result = gl.family(m2=0.3, count=60)
+    done = cli("family", "--onepp", "--m2", "0.3", "--count", "60", "--out", str(tmp_path / "f"))
+    assert done.returncode == 0, done.stderr
+    expected = np.load(tmp_path / "f.npy")
+    assert result.table.dtype.names == ("T", "omega", "V", "u1", "energy", "admissible", "trace",
+                                        "stability")
+    np.testing.assert_array_equal(
+        np.stack([result.table[name] for name in result.table.dtype.names], axis=1), expected)
+    with open(tmp_path / "f.json") as handle:
+        description = json.load(handle)
+    assert result.bifurcations == description["bifurcations"]
+    assert result.lambda_star == description["lambda_star"]
+
+
+def test_modes_families_are_the_cli_files(cli, tmp_path):
+    result = gl.modes(max_impacts=2, energy_range=(0.2, 1))
+    done = cli("modes", "--max-impacts", "2", "--energy-range", "0.2:1", "--out",
+               str(tmp_path / "a"))
+    assert done.returncode == 0, done.stderr
+    with open(tmp_path / "a.json") as handle:
+        description = json.load(handle)
+    assert len(result.families) == len(description["families"]) > 0
+    for family, expected in zip(result.families, description["families"]):
+        table = family.pop("table")
+        assert "file" not in family  # it was in a temporary folder
+        assert family == {k: v for k, v in expected.items() if k != "file"}
+        data = np.load(tmp_path / expected["file"].replace(".csv", ".npy"))
+        assert len(table) == expected["rows"] == data.shape[0]
+        np.testing.assert_array_equal(
+            np.stack([table[name] for name in table.dtype.names], axis=1), data)
+
+
+def test_orbit_is_the_cli_json(cli_json):
+    period = 0.9 * gl.info().model.T2
+    result = gl.orbit(onepp=True, period=period)
+    expected = cli_json("orbit", "--onepp", "--period", repr(period))
+    assert result == expected
+    assert result.admissible is True and result.impacts == 1
+    two = gl.orbit(impacts=2, energy=0.9, guess=(0.2, 0.1))
+    assert two == cli_json("orbit", "--impacts", "2", "--energy", "0.9", "--guess=0.2,0.1")
+    quad = gl.orbit(onepp=True, period=period, precision="quad")
+    assert quad.decimal == cli_json("orbit", "--onepp", "--period", repr(period),
+                                    "--precision", "quad", exact=True)
+
+
+def test_report_quick_table_matches_its_csv(tmp_path):
+    result = gl.report(quick=True, methods="exact,moreau-jean", out=tmp_path / "r")
+    assert (tmp_path / "r" / "results.csv").exists()
+    assert len(result.table) > 0 and "method" in result.table.dtype.names
+    assert set(result.table["method"]) <= {"exact", "moreau-jean"}
+    assert "work" in result.markdown.lower() or "method" in result.markdown.lower()
+
+
+def test_events_are_a_view_of_the_core_table_not_a_copy():
+    run = gl.simulate(contacts=20)
+    events = run.events
+    assert events.dtype.itemsize == 80 and events.flags["C_CONTIGUOUS"]
+    assert events.base is not None and not events.flags["OWNDATA"]
+    assert np.all(np.diff(events["t"]) > 0)
+    assert math.isfinite(run.final.t)

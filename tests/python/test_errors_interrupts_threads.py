@@ -1,0 +1,118 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 GrazeLab developers
+"""Refusals are the command line's, Ctrl+C stops a computation, threads compute at once."""
+
+import os
+import signal
+import threading
+import time
+
+import pytest
+
+import grazelab as gl
+
+
+@pytest.mark.parametrize("call,flags", [
+    (lambda: gl.simulate(m2=-1), ["simulate", "--m2", "-1"]),
+    (lambda: gl.simulate(glo=0.5, state=(0, 0, 0, 0)), ["simulate", "--glo", "0.5", "--state=0,0,0,0"]),
+    (lambda: gl.simulate(contacts="many"), ["simulate", "--contacts", "many"]),
+    (lambda: gl.simulate(no_such_option=1), ["simulate", "--no-such-option=1"]),
+    (lambda: gl.map(x="u1:-1:1:4", y="v1:-1:1:4", precision="quad"),
+     ["map", "--x", "u1:-1:1:4", "--y", "v1:-1:1:4", "--precision", "quad", "--out", "/tmp/never"]),
+    (lambda: gl.map(x="nonsense:0:1:4", y="v1:-1:1:4"),
+     ["map", "--x", "nonsense:0:1:4", "--y", "v1:-1:1:4", "--out", "/tmp/never"]),
+    (lambda: gl.orbit(onepp=True, period=1e9), ["orbit", "--onepp", "--period", "1000000000"]),
+    (lambda: gl.orbit(impacts=2, energy=-1, guess=(0, 0)),
+     ["orbit", "--impacts", "2", "--energy", "-1", "--guess=0,0"]),
+    (lambda: gl.modes(max_impacts=0), ["modes", "--max-impacts", "0", "--out", "/tmp/never"]),
+    (lambda: gl.info(m1=0), ["info", "--m1", "0"]),
+])
+def test_invalid_input_raises_value_error_with_the_cli_message(cli, call, flags):
+    done = cli(*flags)
+    assert done.returncode == 2 and done.stdout == ""
+    cli_line = done.stderr.strip().splitlines()[-1]
+    with pytest.raises(ValueError) as raised:
+        call()
+    assert cli_line == "grazelab-cli: " + str(raised.value)
+    assert not os.path.exists("/tmp/never.json")
+
+
+def test_python_only_refusals_are_value_errors():
+    with pytest.raises(ValueError, match="format"):
+        gl.simulate(format="csv")
+    with pytest.raises(ValueError, match="expected a number"):
+        gl.simulate(contacts=True, m2=True)
+
+
+def _interrupt_after(seconds):
+    timer = threading.Timer(seconds, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    return timer
+
+
+LONG_MAP = dict(x="u1:-1.5:1.5:400", y="v1:-1:1:400", contacts=4000, threads=2)
+
+
+def test_ctrl_c_stops_a_long_map_within_a_second():
+    timer = _interrupt_after(0.5)
+    started = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        gl.map(**LONG_MAP)
+    stopped = time.monotonic() - started - 0.5
+    timer.join()
+    # the map alone takes minutes; the stop is asked at most 0.1 s after the signal and the
+    # points finish their current contact
+    assert stopped < 1.0, f"stopped {stopped:.2f} s after Ctrl+C"
+
+
+def test_ctrl_c_stops_a_long_simulation():
+    timer = _interrupt_after(0.3)
+    with pytest.raises(KeyboardInterrupt):
+        gl.simulate(contacts=10**9)
+    timer.join()
+
+
+def test_progress_reaches_the_caller_and_can_stop_the_computation():
+    seen = []
+
+    def progress(fraction, text):
+        seen.append((fraction, text))
+        if len(seen) == 3:
+            raise RuntimeError("enough")
+
+    with pytest.raises(RuntimeError, match="enough"):
+        gl.map(**LONG_MAP, progress=progress)
+    assert len(seen) == 3
+    fractions = [fraction for fraction, _ in seen]
+    assert all(0 <= f <= 1 for f in fractions) and fractions == sorted(fractions)
+    assert "points" in seen[0][1]
+
+
+def test_progress_of_a_short_map_ends_complete():
+    seen = []
+    gl.map(x="u1:-1:1:40", y="v1:-1:1:40", contacts=400, progress=lambda f, t: seen.append(f))
+    assert seen, "no progress reported"
+
+
+def test_two_threads_compute_at_once():
+    # the GIL is released while the core computes: the two runs' wall intervals overlap
+    intervals = {}
+
+    def run(name):
+        started = time.monotonic()
+        gl.simulate(m2=0.3, glo=0.4, perturb=(0, 0, 0, -0.02), contacts=300000, trust="off")
+        intervals[name] = (started, time.monotonic())
+
+    threads = [threading.Thread(target=run, args=(name,)) for name in "ab"]
+    for thread in threads:
+        thread.start()
+    ticks = 0
+    while any(thread.is_alive() for thread in threads):
+        ticks += 1  # the calling thread runs Python meanwhile
+        time.sleep(0.01)
+    for thread in threads:
+        thread.join()
+    (a0, a1), (b0, b1) = intervals["a"], intervals["b"]
+    overlap = min(a1, b1) - max(a0, b0)
+    assert overlap > 0.5 * min(a1 - a0, b1 - b0), intervals
+    assert ticks > 5
