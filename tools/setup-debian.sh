@@ -19,6 +19,8 @@ packages=(
   libgtest-dev libbenchmark-dev             # tests and benchmarks
   poppler-utils                             # pdftotext: tests read the text of PDF snapshots
   python3 python3-mpmath                    # the independent high-precision reference
+  python3-dev pybind11-dev                  # the Python module (python/)
+  python3-numpy python3-pytest              # its arrays and its tests
 )
 
 missing=()

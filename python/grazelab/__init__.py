@@ -28,8 +28,13 @@ from ._convert import Result
 from ._native import run as _run
 from ._native import version as __version__
 
-__all__ = ["info", "simulate", "map", "merge", "family", "orbit", "modes", "report",
+__all__ = ["help", "info", "simulate", "map", "merge", "family", "orbit", "modes", "report",
            "stability", "Result", "GrazeLabWarning"]
+
+
+# a run's events are held in memory (80 bytes each): beyond this many, stream them to a file
+# with grazelab-cli simulate --format csv or jsonl, whose memory stays bounded
+MAX_EVENTS = 2**25
 
 
 class GrazeLabWarning(UserWarning):
@@ -40,7 +45,7 @@ def _command(command, options, progress=None, events=False, positional=()):
     """Runs one command; returns (output text, messages, events, decimals) or raises."""
     for name in ("help", "version", "help_all"):
         if name in options:
-            raise ValueError(f"{name}: see help(grazelab.{command})")
+            raise ValueError(f"{name}: see grazelab.help() and help(grazelab.{command})")
     line = _convert.arguments(command, options) + [str(p) for p in positional]
     code, output, messages, table, decimals = _run(line, progress, events)
     lines = [text for text in messages.splitlines() if text.strip()]
@@ -63,8 +68,11 @@ def _notes(lines):
     return [line[len(prefix):] for line in lines if line.startswith(prefix)]
 
 
-def _exact(precision):
-    return precision in ("long", "quad", "auto")
+def help():  # noqa: A001 (Python's help() still works on the functions)
+    """The command line's options with their meanings and defaults (``grazelab-cli --help``):
+    each is a keyword argument here, in snake_case."""
+    output, _, _, _ = _command("--help", {})
+    print(output.replace("<executable_name>", "grazelab-cli"), end="")
 
 
 def info(**options):
@@ -91,6 +99,11 @@ def simulate(*, progress=None, **options):
         raise ValueError("format: the Python module returns the run as arrays; write jsonl, csv "
                          "or summary with grazelab-cli")
     options.pop("format", None)
+    contacts = options.get("contacts")
+    if isinstance(contacts, int) and not isinstance(contacts, bool) and contacts > MAX_EVENTS:
+        raise ValueError(f"contacts: {contacts} events would take {contacts * 80 / 1e9:.1f} GB "
+                         f"in memory (at most {MAX_EVENTS} here); stream them to a file with "
+                         f"grazelab-cli simulate --format csv")
     output, lines, table, decimals = _command("simulate", options, progress, events=True)
     used_precision_exact = decimals is not None
     result = _convert.parse_json(output, exact_decimals=used_precision_exact)

@@ -42,6 +42,16 @@ def test_python_only_refusals_are_value_errors():
         gl.simulate(format="csv")
     with pytest.raises(ValueError, match="expected a number"):
         gl.simulate(contacts=True, m2=True)
+    with pytest.raises(ValueError, match="GB in memory"):
+        gl.simulate(contacts=10**9)
+
+
+def test_help_lists_the_command_lines_options(capsys):
+    gl.help()
+    text = capsys.readouterr().out
+    assert text.startswith("Usage: grazelab-cli")
+    for flag in ("--t-end", "--perturb", "--energy-range", "--max-impacts", "--threads"):
+        assert flag in text
 
 
 def _interrupt_after(seconds):
@@ -68,7 +78,7 @@ def test_ctrl_c_stops_a_long_map_within_a_second():
 def test_ctrl_c_stops_a_long_simulation():
     timer = _interrupt_after(0.3)
     with pytest.raises(KeyboardInterrupt):
-        gl.simulate(contacts=10**9)
+        gl.simulate(t_end=1e9)
     timer.join()
 
 
