@@ -68,7 +68,7 @@ struct FamilyStability {
 template <typename S>
 std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& parser,
                                                   const std::vector<core::FamilyPoint>& family,
-                                                  std::stop_token stop, QString& error) {
+                                                  const Io& io, std::stop_token stop, QString& error) {
   const Parsed<ModelInput<S>> model = parseModel<S>(parser);
   if (!model.value) {
     error = model.error;
@@ -78,12 +78,19 @@ std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& pars
   FamilyStability<S> result;
   for (const core::FamilyPoint& p : family) {
     if (stop.stop_requested()) return std::nullopt;
+    const std::size_t index = result.traces.size();
+    if (index % 64 == 0) {
+      io.reportProgress(0.9 * double(index) / double(family.size()),
+                        "stability of orbit " + std::to_string(index + 1) + " of " +
+                            std::to_string(family.size()));
+    }
     const core::OrbitSearch<S> found = p.admissible ? core::onePeriodicOrbitStability(chain, S(p.T))
                                                     : core::OrbitSearch<S>{};
     result.traces.push_back(found.orbit ? double(found.orbit->trace) : std::nan(""));
     result.codes.push_back(found.orbit ? stabilityCode(found.orbit->stability) : std::nan(""));
   }
   const S T2 = core::twoPi<S>() / chain.omegaSlow;
+  io.reportProgress(0.9, "bifurcations of the family");
   for (const core::FamilyBifurcation<S>& b : core::onePeriodicBifurcations(chain, 2000, stop)) {
     QJsonObject point{{"kind", QString::fromStdString(b.kind)},
                       {"T", scalarJson(b.T)},
@@ -175,9 +182,9 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
     bifurcations = std::move(stability->bifurcations);
     return true;
   };
-  const bool computed = precision == "long"   ? take(familyStability<long double>(parser, family, stop, error))
-                        : precision == "quad" ? take(familyStability<core::Quad>(parser, family, stop, error))
-                                              : take(familyStability<double>(parser, family, stop, error));
+  const bool computed = precision == "long"   ? take(familyStability<long double>(parser, family, io, stop, error))
+                        : precision == "quad" ? take(familyStability<core::Quad>(parser, family, io, stop, error))
+                                              : take(familyStability<double>(parser, family, io, stop, error));
   if (stop.stop_requested()) return kExitInterrupted;
   if (!computed) return kExitInvalidInput;
 

@@ -86,7 +86,12 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
     low = *a.value;
     high = *b.value;
   }
-  const core::ModesAtlas<S> atlas = core::computeModesAtlas(chain, maxImpacts, low, high, stop);
+  int familiesDone = 0;
+  const core::ModesAtlas<S> atlas = core::computeModesAtlas<S>(
+      chain, maxImpacts, low, high, stop, [&](const core::ModeFamily<S>& family) {
+        io.reportProgress(-1, "family " + std::to_string(++familiesDone) + " followed (" +
+                                  std::to_string(family.impacts) + " impacts per period)");
+      });
   if (stop.stop_requested() || !atlas.complete) return kExitInterrupted;
 
   const QString base = QFileInfo(prefix).fileName();

@@ -98,6 +98,19 @@ def test_progress_reaches_the_caller_and_can_stop_the_computation():
     assert "points" in seen[0][1]
 
 
+@pytest.mark.parametrize("call", [
+    lambda progress: gl.family(count=400, progress=progress),
+    lambda progress: gl.modes(max_impacts=2, progress=progress),
+    lambda progress: gl.simulate(glo=0.5, perturb=(0, 0, 0, -0.05), t_end=4e6, trust="off",
+                                 progress=progress),
+])
+def test_family_modes_and_simulate_report_progress(call):
+    seen = []
+    call(lambda fraction, text: seen.append((fraction, text)))
+    assert seen and all(isinstance(text, str) and text for _, text in seen)
+    assert all(f is None or 0 <= f <= 1 for f, _ in seen)
+
+
 def test_progress_of_a_short_map_ends_complete():
     seen = []
     gl.map(x="u1:-1:1:40", y="v1:-1:1:40", contacts=400, progress=lambda f, t: seen.append(f))
