@@ -125,15 +125,18 @@ bool deliverProgress(ProgressMailbox& mailbox, const py::object& progress,
   return true;
 }
 
-// run(arguments, progress=None, events=False) -> (code, output, messages, events, decimals)
+// run(arguments, progress=None, events=False, max_events) -> (code, output, messages, events, decimals)
 py::tuple run(const std::vector<std::string>& arguments, const py::object& progress,
-              bool eventsAsArrays) {
+              bool eventsAsArrays, std::size_t maxEvents) {
   QStringList commandLine{QStringLiteral("grazelab")};
   for (const std::string& argument : arguments) commandLine << QString::fromStdString(argument);
 
   MemoryStream output;
   MemoryStream messages;
+  std::stop_source stop;
   auto table = std::make_unique<EventTable>();
+  table->maxRows = maxEvents;
+  table->whenFull = [&stop] { stop.request_stop(); };
   ProgressMailbox mailbox;
   grazelab::cli::Io io;
   io.out = output.file();
@@ -148,7 +151,6 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
     };
   }
 
-  std::stop_source stop;
   std::mutex doneMutex;
   std::condition_variable doneSignal;
   bool done = false;
@@ -188,6 +190,12 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   if (!pythonError && code == 0) deliverProgress(mailbox, progress, pythonError);
   if (pythonError) throw std::move(*pythonError);
   if (failure) std::rethrow_exception(failure);
+  if (table->full) {
+    throw py::value_error("the run made more than " + std::to_string(maxEvents) + " events (" +
+                          std::to_string(maxEvents * sizeof(EventRow) / 1'000'000) +
+                          " MB in memory): ask for fewer contacts or a shorter t_end, or stream "
+                          "the run to a file with grazelab-cli simulate --format csv");
+  }
   const std::string out = output.take();
   const std::string log = messages.take();
   py::object events = py::none();
@@ -208,8 +216,9 @@ PYBIND11_MODULE(_native, module) {
   QCoreApplication::setApplicationVersion(QString::fromUtf8(grazelab::cli::kVersion));
   module.attr("version") = grazelab::cli::kVersion;
   module.def("run", &run, py::arg("arguments"), py::arg("progress") = py::none(),
-             py::arg("events") = false,
+             py::arg("events") = false, py::arg("max_events") = std::size_t(-1),
              "Runs one grazelab-cli command line (without the program's name) in this process. "
              "Returns (exit code, output bytes, messages, events array or None, the events' "
-             "decimal text or None).");
+             "decimal text or None); raises ValueError when the run makes more than max_events "
+             "events.");
 }

@@ -24,6 +24,11 @@ static_assert(sizeof(EventRow) == 80);
 struct EventTable {
   std::vector<EventRow> rows;
   std::vector<std::string> decimals;  ///< empty, or 6 per row: t,u1,u2,v1,v2_pre,v2_post
+  /// At most this many rows are kept: the next event sets `full` and calls `whenFull` (which
+  /// stops the run) instead of growing the table without bound.
+  std::size_t maxRows = std::size_t(-1);
+  bool full = false;
+  std::function<void()> whenFull;
 };
 
 /// Where a command writes. The command line: its output on stdout, its messages (notes,

@@ -209,6 +209,11 @@ namespace {
 // writes (the events a run of --precision auto wrote in double before its raise get theirs then).
 template <typename S>
 void appendEvent(EventTable& table, const core::BasicEvent<S>& event) {
+  if (table.rows.size() >= table.maxRows) {
+    if (!table.full && table.whenFull) table.whenFull();
+    table.full = true;
+    return;
+  }
   EventRow row{};
   row.t = core::toDouble(event.t);
   const std::string_view type = core::toString(event.type);

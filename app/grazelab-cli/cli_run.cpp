@@ -48,18 +48,15 @@ void write(const Io& io, const QByteArray& bytes) {
 
 template <typename S>
 int info(const QCommandLineParser& parser, const Io& io) {
-  const auto model = grazelab::cli::parseModel<S>(parser);
+  const auto model = parseModel<S>(parser);
   if (!model.value) return fail(io, model.error);
-  write(io, QByteArray::fromStdString(grazelab::cli::infoJson(*model.value)));
+  write(io, QByteArray::fromStdString(infoJson(*model.value)));
   return 0;
 }
 
 }  // namespace
 
 int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token stop) {
-  if (QCoreApplication::applicationVersion().isEmpty()) {
-    QCoreApplication::setApplicationVersion(QString::fromUtf8(kVersion));
-  }
   QCommandLineParser parser;
   parser.setApplicationDescription(
       "Exact event-driven simulation of a 2-dof chain against a rigid stop in 1:2 internal "

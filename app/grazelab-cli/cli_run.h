@@ -16,8 +16,10 @@ inline constexpr const char* kVersion = "0.3.0";
 /// Runs one command line (`commandLine[0]` is the program's name, as in argv) in this process:
 /// parses it with the command line's own parser and rules and runs the command, writing to `io`.
 /// Returns the exit code: 0, 2 on invalid input (one line on io.messages, nothing on io.out),
-/// 130 when `stop` ended it, 1 when a file could not be written. Needs no QCoreApplication;
-/// several may run at once on different threads.
+/// 130 when `stop` ended it, 1 when a file could not be written. Needs no QCoreApplication
+/// instance; the caller sets QCoreApplication's application version to kVersion first (the
+/// files' "generator" field), once, before any command runs. Several may run at once on
+/// different threads.
 int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token stop);
 
 }  // namespace grazelab::cli

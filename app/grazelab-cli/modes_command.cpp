@@ -115,7 +115,8 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
       const double omega = 2 * M_PI / period;
       const double row[9] = {energy, period, omega, double(o.trace), double(int(o.stability)),
                              double(o.state.u1), double(o.state.v1), double(o.minImpactSpeed),
-                             double(o.minClearance)};
+                             // no interior maximum (the core's infinity): NaN, as the CSV's empty cell
+                             core::isFinite(o.minClearance) ? double(o.minClearance) : std::nan("")};
       csv += cell(row[0]) + "," + cell(row[1]) + "," + cell(row[2]) + "," + cell(row[3]) + "," +
              QByteArray(core::toString(o.stability).data()) + "," + cell(row[5]) + "," + cell(row[6]) + "," +
              cell(row[7]) + "," + cell(row[8]) + "\n";

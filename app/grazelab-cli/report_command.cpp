@@ -282,7 +282,7 @@ int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token st
   const QString pictures = "work_precision.svg/.png, convergence.svg/.png, ";
 #else
   const QString pictures;
-  progress(io, "report", "this build has no explorer (GRAZELAB_BUILD_UI=OFF): no pictures");
+  progress(io, "report", "no pictures: this build has no explorer to draw them");
 #endif
   if (!writeAtomically(dir + "/report.md", md, error)) return 1;
   progress(io, "report", QStringLiteral("wrote %1/{results.csv, %2report.md}").arg(dir, pictures));

@@ -23,13 +23,16 @@ import shutil
 import tempfile
 import warnings
 
+import numpy as np
+
 from . import _convert
 from ._convert import Result
 from ._native import run as _run
 from ._native import version as __version__
 
-__all__ = ["help", "info", "simulate", "map", "merge", "family", "orbit", "modes", "report",
-           "stability", "Result", "GrazeLabWarning"]
+# map and help are left out of a star import: they would hide Python's own
+__all__ = ["info", "simulate", "merge", "family", "orbit", "modes", "report", "stability",
+           "Result", "GrazeLabWarning", "MAX_EVENTS"]
 
 
 # a run's events are held in memory (80 bytes each): beyond this many, stream them to a file
@@ -42,17 +45,20 @@ class GrazeLabWarning(UserWarning):
 
 
 def _command(command, options, progress=None, events=False, positional=()):
-    """Runs one command; returns (output text, messages, events, decimals) or raises."""
+    """Runs one command; returns (output text, messages, events, decimals) or raises. A
+    progress callback hears (1.0, "done") when the command has ended well."""
     for name in ("help", "version", "help_all"):
         if name in options:
             raise ValueError(f"{name}: see grazelab.help() and help(grazelab.{command})")
     line = _convert.arguments(command, options) + [str(p) for p in positional]
-    code, output, messages, table, decimals = _run(line, progress, events)
+    code, output, messages, table, decimals = _run(line, progress, events, MAX_EVENTS)
     lines = [text for text in messages.splitlines() if text.strip()]
     if code == 2:
         raise ValueError(_message(lines[-1] if lines else "invalid input"))
     if code != 0:
         raise OSError(_message(lines[-1] if lines else f"{command} failed (exit {code})"))
+    if progress is not None:
+        progress(1.0, "done")
     return output.decode("utf-8"), lines, table, decimals
 
 
@@ -95,15 +101,18 @@ def simulate(*, progress=None, **options):
     numeric column as the exact decimal text the command line writes, and ``decimal``: the
     JSON's numbers as text. Warns (GrazeLabWarning) when the run's own error estimate says
     unreliable."""
-    if options.get("format", "json") != "json":
+    if options.get("format") not in (None, "json"):
         raise ValueError("format: the Python module returns the run as arrays; write jsonl, csv "
                          "or summary with grazelab-cli")
     options.pop("format", None)
-    contacts = options.get("contacts")
-    if isinstance(contacts, int) and not isinstance(contacts, bool) and contacts > MAX_EVENTS:
+    try:
+        contacts = int(_convert._text("contacts", options["contacts"]))
+    except (KeyError, ValueError):
+        contacts = None  # absent, or the command line says what is wrong with it
+    if contacts is not None and contacts > MAX_EVENTS:
         raise ValueError(f"contacts: {contacts} events would take {contacts * 80 / 1e9:.1f} GB "
-                         f"in memory (at most {MAX_EVENTS} here); stream them to a file with "
-                         f"grazelab-cli simulate --format csv")
+                         f"in memory (at most grazelab.MAX_EVENTS = {MAX_EVENTS}); stream them "
+                         f"to a file with grazelab-cli simulate --format csv")
     output, lines, table, decimals = _command("simulate", options, progress, events=True)
     used_precision_exact = decimals is not None
     result = _convert.parse_json(output, exact_decimals=used_precision_exact)
@@ -157,6 +166,10 @@ def _map_result(target):
     with open(target.prefix + ".json") as handle:
         result = _convert.parse_json(handle.read())
     result["arrays"] = _convert.map_arrays(target.prefix, result["run"])
+    # the columns' and rows' coordinates, as the spec says: numpy.linspace(from, to, count)
+    for axis in ("x", "y"):
+        spec = result["spec"][axis]
+        result[axis] = np.linspace(spec["from"], spec["to"], spec["count"])
     if not target.kept:
         result["run"].pop("files")  # they were in a temporary folder, now gone
     return result
@@ -167,7 +180,11 @@ def map(*, out=None, progress=None, **options):  # noqa: A001 (the command's nam
     threads (default all cores). ``x``, ``y``: "NAME:from:to:count" or (NAME, from, to, count).
     Returns the JSON's ``spec`` and ``run`` with ``arrays``: one 2-D array per quantity
     (row = y, column = x; counts int64, the rest float64), equal to the command line's .npy.
-    With ``out=PREFIX`` the command line's files are kept there (without pictures)."""
+    ``x`` and ``y`` in the result are the columns' and rows' coordinates. With ``out=PREFIX``
+    the command line's files are kept there (without pictures); a stripe (``shard=(k, n)``)
+    needs one, for :func:`merge` to read."""
+    if options.get("shard") is not None and out is None:
+        raise ValueError("shard: a stripe is kept for merge: give out=PREFIX for its files")
     with _Output(out, "map") as target:
         _command("map", dict(options, out=target.prefix), progress)
         return _map_result(target)
@@ -176,6 +193,8 @@ def map(*, out=None, progress=None, **options):  # noqa: A001 (the command's nam
 def merge(parts, *, out=None):
     """``grazelab-cli merge``: the stripes of one map (their prefixes, computed with
     ``shard=(k, n)`` and ``out``) joined; returns the whole map as :func:`map` does."""
+    if isinstance(parts, (str, os.PathLike)):
+        parts = [parts]
     with _Output(out, "map") as target:
         _command("merge", {"out": target.prefix}, positional=[os.fspath(p) for p in parts])
         return _map_result(target)
@@ -218,6 +237,8 @@ def _directory_command(command, table_file, out, progress, options):
     with _Output(out, command) as target:
         folder = target.prefix
         _, lines, _, _ = _command(command, dict(options, out=folder), progress)
+        if not target.kept:  # the files' folder is deleted: the log does not name it
+            lines = [line for line in lines if " wrote " not in line]
         result = Result(out=folder if target.kept else None,
                         table=_convert.csv_table(os.path.join(folder, table_file)),
                         log=[_message(line) for line in lines])

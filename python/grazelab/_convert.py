@@ -34,13 +34,20 @@ class Result(dict):
 
 
 def _text(name, value):
-    if isinstance(value, bool):
+    if isinstance(value, (bool, np.bool_)):
         raise ValueError(f"{name}: expected a number or text, got {value!r}")
     if isinstance(value, numbers.Integral):
         return str(int(value))
+    if isinstance(value, np.floating) and np.finfo(value.dtype).nmant > 52:
+        # long double: NumPy's shortest decimal that reads back as the same long double
+        text = np.format_float_positional(value, unique=True, trim="-")
+        return text
     if isinstance(value, numbers.Real) and not isinstance(value, numbers.Rational):
+        value = float(value)
+        if value.is_integer() and abs(value) < 2.0**53:
+            return str(int(value))  # the same number, and a count where one is expected
         # repr: the shortest decimal that reads back as the same double
-        return repr(float(value))
+        return repr(value)
     return str(value)
 
 
@@ -50,11 +57,12 @@ def arguments(command, options):
     axes and --energy-range, '/' for --shard)."""
     line = [command]
     for name, value in options.items():
-        if value is None or value is False:
+        if value is None:
             continue
         flag = "--" + name.replace("_", "-")
-        if value is True and name in _BARE:
-            line.append(flag)
+        if isinstance(value, bool) and name in _BARE:
+            if value:
+                line.append(flag)
         elif isinstance(value, (list, tuple, np.ndarray)):
             separator = _JOINED_BY.get(name, ",")
             line.append(flag + "=" + separator.join(_text(name, v) for v in value))

@@ -63,6 +63,22 @@ def test_simulate_in_long_and_quad_keeps_the_exact_decimals(cli_json, precision)
     assert run.precision.used == precision
 
 
+def test_arguments_keep_every_digit_of_their_type(cli_json):
+    third = np.longdouble(1) / 3
+    run = gl.simulate(glo=third, contacts=3, precision="long")
+    text = gl.simulate(glo=str(third), contacts=3, precision="long")
+    assert run.decimal.initial == text.decimal.initial
+    expected = cli_json("simulate", "--glo", str(third), "--contacts", "3", "--precision", "long",
+                        exact=True)
+    assert list(run.events_decimal["t"]) == [e["t"] for e in expected["events"]]
+    # integral floats are the same numbers, and counts where counts are expected
+    assert len(gl.simulate(contacts=5.0, m2=np.float32(0.5)).events) == 5
+    m = gl.map(x=("u1", -1, 1, 4.0), y="v1:-1:1:3", contacts=2.0)
+    assert m.arrays["impacts"].shape == (3, 4)
+    with pytest.raises(ValueError, match="expected a number"):
+        gl.simulate(trust=False)  # not a way to say "off"
+
+
 def test_info_is_the_cli_json(cli_json):
     assert gl.info(m2=0.3, gap=2.5) == cli_json("info", "--m2", "0.3", "--gap", "2.5")
     quad = gl.info(m2=0.3, precision="quad")
@@ -79,6 +95,9 @@ def test_map_arrays_equal_the_cli_npy(cli, tmp_path):
         description = json.load(handle)
     assert result.spec == description["spec"]
     assert set(result.arrays) == set(description["spec"]["quantities"])
+    coordinates = np.genfromtxt(tmp_path / "m.csv", delimiter=",", names=True)
+    np.testing.assert_array_equal(result.x, coordinates["u1"][:16])
+    np.testing.assert_array_equal(result.y, coordinates["v1"][::16])
     for quantity, array in result.arrays.items():
         expected = np.load(tmp_path / f"m-{quantity}.npy")
         assert array.shape == (12, 16) and array.dtype == expected.dtype

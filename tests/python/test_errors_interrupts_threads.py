@@ -139,3 +139,31 @@ def test_two_threads_compute_at_once():
     overlap = min(a1, b1) - max(a0, b0)
     assert overlap > 0.5 * min(a1 - a0, b1 - b0), intervals
     assert ticks > 5
+
+
+def test_the_events_held_in_memory_are_bounded_however_the_run_is_bounded(monkeypatch):
+    monkeypatch.setattr(gl, "MAX_EVENTS", 100)
+    with pytest.raises(ValueError, match="more than 100 events"):
+        gl.simulate(t_end=2000)  # ~225 impacts: only the run itself can tell
+    with pytest.raises(ValueError, match="GB in memory|MAX_EVENTS"):
+        gl.simulate(contacts="150")
+    assert len(gl.simulate(contacts=100).events) == 100
+
+
+def test_a_stripe_without_files_is_refused_and_one_part_may_be_given_alone(tmp_path):
+    with pytest.raises(ValueError, match="out=PREFIX"):
+        gl.map(x="u1:-1:1:4", y="v1:-1:1:4", shard=(1, 2))
+    gl.map(x="u1:-1:1:4", y="v1:-1:1:4", contacts=2, out=tmp_path / "whole")
+    with pytest.raises(ValueError, match="merge"):
+        gl.merge(str(tmp_path / "missing"))  # one prefix, not its characters
+    with pytest.raises(ValueError, match="cannot read sh/p1.json"):
+        gl.merge("sh/p1")
+
+
+def test_progress_hears_done_at_the_end_of_every_long_call():
+    for call in (lambda p: gl.simulate(contacts=10, progress=p),
+                 lambda p: gl.family(count=50, progress=p),
+                 lambda p: gl.map(x="u1:-1:1:4", y="v1:-1:1:4", contacts=2, progress=p)):
+        seen = []
+        call(lambda fraction, text: seen.append((fraction, text)))
+        assert seen[-1] == (1.0, "done")
