@@ -22,19 +22,16 @@
 namespace grazelab::cli {
 namespace {
 
-constexpr int kInvalidInput = 2;
-constexpr int kInterrupted = 130;
-
 int fail(const Io& io, const QString& message) {
   std::fprintf(io.messages, "grazelab-cli: %s\n", qPrintable(message.simplified()));
-  return kInvalidInput;
+  return kExitInvalidInput;
 }
 
 // The end of a command that writes files: one line for invalid input (exit 2), a note for an
 // interrupt (130: nothing written), the reason of a failed write.
 int ended(const Io& io, int code, const QString& error) {
-  if (code == kInvalidInput) return fail(io, error);
-  if (code == kInterrupted) {
+  if (code == kExitInvalidInput) return fail(io, error);
+  if (code == kExitInterrupted) {
     std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
   } else if (code != 0) {
     std::fprintf(io.messages, "grazelab-cli: %s\n", qPrintable(error));
@@ -116,7 +113,7 @@ int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token
   if (command == "orbit") {
     QString error;
     const int code = runOrbit(parser, io, stop, error);
-    if (code == kInvalidInput) return fail(io, error);
+    if (code == kExitInvalidInput) return fail(io, error);
     return code;
   }
   const QStringList orbitOnly = orbitOnlyOptionsSet(parser);
@@ -140,7 +137,7 @@ int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token
       std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
     }
     if (code != 0 && !error.isEmpty()) std::fprintf(io.messages, "grazelab-cli: %s\n", qPrintable(error));
-    return stop.stop_requested() ? kInterrupted : code;
+    return stop.stop_requested() ? kExitInterrupted : code;
   }
   const QStringList reportOnly = reportOnlyOptionsSet(parser);
   if (!reportOnly.isEmpty()) {
@@ -168,7 +165,7 @@ int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token
   if (command == "simulate") {
     QString error;
     const int code = runSimulate(parser, *precision, *trust, io, stop, error);
-    return code == kInvalidInput ? fail(io, error) : code;
+    return code == kExitInvalidInput ? fail(io, error) : code;
   }
   return fail(io, QStringLiteral("unknown command '%1': use info, simulate, report, stability, map, merge, family, orbit or modes").arg(command));
 }

@@ -119,7 +119,6 @@ def simulate(*, progress=None, **options):
     result["events"] = table
     result["notes"] = _notes(lines)
     if used_precision_exact:
-        import numpy as np
         columns = ("t", "u1", "u2", "v1", "v2_pre", "v2_post")
         text = np.array(decimals, dtype=str).reshape(-1, len(columns))
         result["events_decimal"] = {name: text[:, i] for i, name in enumerate(columns)}
