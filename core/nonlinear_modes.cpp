@@ -3,66 +3,235 @@
 #include "core/nonlinear_modes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
+
+#include "core/orbits.h"
+#include "core/roots.h"
 
 namespace grazelab::core {
 
+std::string_view toString(Birth birth) {
+  return birth == Birth::OnePeriodic ? "one-periodic" : "period-doubling";
+}
+
 namespace {
 
-// For each admissible run of the 1IPP closed form over (0, T2) (sampled at T2 i / (samples +
-// 1)) that reaches into [energyLow, energyHigh]: an orbit of it inside that range, the one
-// nearest the run's middle, to start the family's continuation from. A run whose samples all
-// lie outside the range but straddle it gives the orbit where its energy crosses the range's
-// geometric middle (by bisection in T).
 template <typename S>
-std::vector<PeriodicOrbit<S>> onePeriodicStarts(const Chain<S>& chain, int samples, const S& energyLow,
-                                                const S& energyHigh, std::stop_token stop) {
+FamilyOrbit<S> summary(const PeriodicOrbit<S>& orbit) {
+  return {orbit.energy, orbit.period, orbit.trace, orbit.stability, orbit.state, orbit.minImpactSpeed,
+          orbit.minClearance};
+}
+
+// The energy range asked for. A special point computed at its edge (0.7 given,
+// 0.70000000000000007 located) belongs to it: points are held within a hair of 1e-12.
+template <typename S>
+struct EnergyRange {
+  S low;
+  S high;
+  bool holds(const S& energy) const { return energy >= low && energy <= high; }
+  bool holdsPoint(const S& energy) const {
+    return energy >= low * (S(1) - S(1e-12)) && energy <= high * (S(1) + S(1e-12));
+  }
+};
+
+template <typename S>
+FamilyEnd<S> endAt(PointKind kind, const PeriodicOrbit<S>& orbit) {
+  FamilyEnd<S> end;
+  end.kind = kind;
+  end.energy = orbit.energy;
+  end.period = orbit.period;
+  end.state = orbit.state;
+  end.lastEnergy = orbit.energy;
+  return end;
+}
+
+// The 1IPP family's parts inside the range, from its closed-form scan: each admissible part
+// (between two of its ends) cut where its energy leaves the range (located by bisection in T),
+// each piece a family from its low-energy end, with the special points inside it.
+template <typename S>
+std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OnePeriodicScan<S>& scan,
+                                               const EnergyRange<S>& range, std::stop_token stop) {
   using std::abs;
-  using std::sqrt;
-  const S T2 = twoPi<S>() / chain.omegaSlow;
-  std::vector<PeriodicOrbit<S>> starts;
-  std::vector<PeriodicOrbit<S>> run;
-  const auto inRange = [&](const PeriodicOrbit<S>& o) { return o.energy >= energyLow && o.energy <= energyHigh; };
-  const auto closeRun = [&] {
-    if (run.empty()) return;
-    const std::size_t middle = run.size() / 2;
-    std::optional<std::size_t> best;
-    for (std::size_t i = 0; i < run.size(); ++i) {
-      if (!inRange(run[i])) continue;
-      const auto distance = [&](std::size_t j) { return j > middle ? j - middle : middle - j; };
-      if (!best || distance(i) < distance(*best)) best = i;
+  const auto orbitAt = [&](const S& T) { return onePeriodicOrbitStability(chain, T).orbit; };
+  const auto isEnd = [](PointKind kind) {
+    return kind != PointKind::PeriodDoubling && kind != PointKind::Fold && kind != PointKind::BranchPoint;
+  };
+  // every orbit the scan has, with the special points' own orbits, in increasing T, with the
+  // ends that bound the parts
+  struct Row {
+    PeriodicOrbit<S> orbit;
+    std::optional<FamilyBifurcation<S>> point;
+  };
+  std::vector<Row> rows;
+  for (const PeriodicOrbit<S>& orbit : scan.orbits) rows.push_back({orbit, std::nullopt});
+  for (const FamilyBifurcation<S>& point : scan.points) {
+    if (point.kind == PointKind::GrazingOrbit) continue;  // the limit at T2 is no orbit of the family
+    std::optional<PeriodicOrbit<S>> orbit = orbitAt(point.T);
+    if (orbit) rows.push_back({std::move(*orbit), point});
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.orbit.period < b.orbit.period; });
+
+  std::vector<ModeFamily<S>> families;
+  std::optional<ModeFamily<S>> open;  // the piece being built, in increasing T
+  const auto close = [&](FamilyEnd<S> end) {
+    if (!open) return;
+    open->end = std::move(end);
+    if (open->orbits.size() >= 2) {
+      // from the low-energy end
+      if (open->orbits.front().energy > open->orbits.back().energy) {
+        std::reverse(open->orbits.begin(), open->orbits.end());
+        std::reverse(open->bifurcations.begin(), open->bifurcations.end());
+        std::swap(open->startEnd, open->end);
+      }
+      // the orbit nearest the piece's middle names it
+      const FamilyOrbit<S>& middle = open->orbits[open->orbits.size() / 2];
+      open->bornEnergy = middle.energy;
+      open->bornPeriod = middle.period;
+      families.push_back(std::move(*open));
     }
-    if (best) {
-      starts.push_back(run[*best]);
-    } else {
-      const S target = sqrt(energyLow * energyHigh);
-      for (std::size_t i = 0; i + 1 < run.size(); ++i) {
-        if ((run[i].energy < target) == (run[i + 1].energy < target)) continue;
-        S low = run[i].period, high = run[i + 1].period;
-        const bool lowBelow = run[i].energy < target;
-        for (int step = 0; step < 200; ++step) {
-          const S mid = (low + high) / S(2);
-          if (mid == low || mid == high) break;
-          const OrbitSearch<S> o = onePeriodicOrbitStability(chain, mid);
-          if (!o.orbit) break;
-          if ((o.orbit->energy < target) == lowBelow) low = mid;
-          else high = mid;
-        }
-        const OrbitSearch<S> o = onePeriodicOrbitStability(chain, low);
-        if (o.orbit && inRange(*o.orbit)) starts.push_back(*o.orbit);
-        break;
+    open.reset();
+  };
+  const auto begin = [&](FamilyEnd<S> start) {
+    open.emplace();
+    open->impacts = 1;
+    open->birth = Birth::OnePeriodic;
+    open->startEnd = std::move(start);
+  };
+  // the orbit where the energy crosses `level` between two rows (one in the range, one not)
+  const auto crossingAt = [&](const PeriodicOrbit<S>& inside, const PeriodicOrbit<S>& outside, const S& level) {
+    const bool insideBelow = inside.energy < level;
+    const S T = bisectBoundary(
+        inside.period, outside.period,
+        [&](const S& t) {
+          const std::optional<PeriodicOrbit<S>> o = orbitAt(t);
+          return o && (o->energy < level) == insideBelow;
+        },
+        [&] { return stop.stop_requested(); });
+    return orbitAt(T);
+  };
+  const PeriodicOrbit<S>* previous = nullptr;
+  bool previousEnded = true;  // a part's end lies between the previous row and this one
+  bool previousIn = false;
+  for (const Row& row : rows) {
+    if (stop.stop_requested()) return {};
+    const PeriodicOrbit<S>& orbit = row.orbit;
+    const bool partStarts = previousEnded;
+    // a special point a hair outside the range lies on its edge: the piece ends or begins there
+    const bool onEdge = row.point && !range.holds(orbit.energy) && range.holdsPoint(orbit.energy);
+    const bool in = range.holds(orbit.energy) || onEdge;
+    if (!partStarts && previousIn != in && !onEdge && previous && !range.holdsPoint(previous->energy)) {
+      // the energy leaves or enters the range between the two rows
+      const S level = (previousIn ? orbit.energy : previous->energy) > range.high ? range.high : range.low;
+      const std::optional<PeriodicOrbit<S>> edge =
+          previousIn ? crossingAt(*previous, orbit, level) : crossingAt(orbit, *previous, level);
+      if (edge && previousIn) {
+        if (open && edge->period != previous->period) open->orbits.push_back(summary(*edge));
+        close(endAt(PointKind::EnergyLimit, *edge));
+      } else if (edge) {
+        begin(endAt(PointKind::EnergyLimit, *edge));
+        if (edge->period != orbit.period) open->orbits.push_back(summary(*edge));
+      }
+    } else if (!partStarts && previousIn != in && !onEdge && open) {
+      close(endAt(PointKind::EnergyLimit, *previous));  // left the range at a point on its edge
+    }
+    if (in) {
+      if (!open) {
+        // a part that starts here: at one of its ends, on the range's edge, or (its first
+        // sample) where the scan began
+        const bool atEnd = row.point && isEnd(row.point->kind);
+        begin(endAt(atEnd ? row.point->kind : PointKind::EnergyLimit, orbit));
+      }
+      open->orbits.push_back(summary(orbit));
+      if (row.point && !isEnd(row.point->kind)) open->bifurcations.push_back(*row.point);
+    }
+    // an end point closes its part when the part started before it
+    previousEnded = false;
+    if (row.point && isEnd(row.point->kind) && !partStarts) {
+      if (open) close(endAt(row.point->kind, orbit));
+      previousEnded = true;
+    }
+    previous = &orbit;
+    previousIn = in;
+  }
+  // the last part ends on its grazing orbit at T2 (the scan's last point) when it reaches there
+  if (open) {
+    FamilyEnd<S> end = endAt(PointKind::EnergyLimit, *previous);
+    if (!scan.points.empty() && scan.points.back().kind == PointKind::GrazingOrbit && range.holdsPoint(scan.points.back().energy)) {
+      const FamilyBifurcation<S>& limit = scan.points.back();
+      end.kind = PointKind::GrazingOrbit;
+      end.energy = limit.energy;
+      end.period = limit.T;
+      end.state = limit.state;
+      end.gloLambda = lambdaStar(chain);
+      end.exact = true;
+    }
+    close(std::move(end));
+  }
+  for (ModeFamily<S>& family : families) {
+    // a part whose period tends to T1 while S cannot decide its last orbits: its data tend to
+    // GLOM1 (cot(w1 T / 2) grows without bound: u1 -> d rho_fast, V -> 0), its limit is known
+    for (FamilyEnd<S>* end : {&family.end, &family.startEnd}) {
+      if (end->kind != PointKind::Undecided) continue;
+      FamilyEnd<S> named = *end;
+      named.gloLambda = (end->state.u1 / chain.model.gap - chain.rhoFast) / (chain.rhoSlow - chain.rhoFast);
+      nameGrazingEnd(chain, 1, named);
+      if (named.exact) {
+        named.kind = PointKind::GrazingOrbit;
+        *end = named;
       }
     }
-    run.clear();
-  };
-  for (int i = 1; i <= samples; ++i) {
-    if (stop.stop_requested()) return {};
-    OrbitSearch<S> found = onePeriodicOrbitStability(chain, S(T2 * S(i) / S(samples + 1)));
-    if (found.orbit) run.push_back(std::move(*found.orbit));
-    else closeRun();
+    family.symmetry = orbitSymmetry(evaluateOrbit(chain, family.orbits[family.orbits.size() / 2].state, 1,
+                                                  std::numeric_limits<S>::infinity()),
+                                    S(1e-9));
   }
-  closeRun();
-  return starts;
+  return families;
+}
+
+// How far the energy may move off a flip when looking for the family born there (the family's
+// other special points and its ends bound it).
+template <typename S>
+double birthOffsetBound(const ModeFamily<S>& family, const FamilyBifurcation<S>& flip, const EnergyRange<S>& range) {
+  using std::abs;
+  std::vector<S> energies;
+  // the range's edges are no special points, but the family born is looked for inside it
+  for (const FamilyEnd<S>* end : {&family.end, &family.startEnd}) {
+    if (end->kind != PointKind::EnergyLimit) energies.push_back(end->energy);
+  }
+  for (const FamilyBifurcation<S>& other : family.bifurcations) energies.push_back(other.energy);
+  double bound = birthOffsetBound(flip, energies);
+  for (const S& edge : {range.low, range.high}) {
+    const double distance = toDouble(S(abs(edge - flip.energy) / flip.energy));
+    // a flip at the range's very edge: its family is still looked for a little way off it
+    if (distance > 1e-7) bound = std::min(bound, distance);
+  }
+  return bound;
+}
+
+// The flip of a k-impact family that a 2k-impact family's PeriodDoubling end meets: the flip
+// whose orbit is nearest the end's state (within 5 % of the gap and of w2 times the gap).
+template <typename S>
+std::optional<std::pair<int, std::size_t>> flipMet(const Chain<S>& chain, const std::vector<ModeFamily<S>>& families,
+                                                   const FamilyEnd<S>& end, int impacts) {
+  using std::abs;
+  const S d = chain.model.gap;
+  const S speed = d * chain.omegaSlow;
+  std::optional<std::pair<int, std::size_t>> best;
+  S bestDistance = S(0.05);
+  for (const ModeFamily<S>& family : families) {
+    if (2 * family.impacts != impacts) continue;
+    for (std::size_t i = 0; i < family.bifurcations.size(); ++i) {
+      const FamilyBifurcation<S>& flip = family.bifurcations[i];
+      if (flip.kind != PointKind::PeriodDoubling) continue;
+      const S distance = std::max(abs(flip.state.u1 - end.state.u1) / d, abs(flip.state.v1 - end.state.v1) / speed);
+      // the end may be at the flip's orbit or at its image half a period later: compare both
+      if (distance < bestDistance) {
+        bestDistance = distance;
+        best = {family.id, i};
+      }
+    }
+  }
+  return best;
 }
 
 }  // namespace
@@ -72,54 +241,45 @@ ModesAtlas<S> computeModesAtlas(const Chain<S>& chain, int maxImpacts, const S& 
                                 const S& energyHigh, std::stop_token stop,
                                 const std::function<void(const ModeFamily<S>&)>& familyDone) {
   ModesAtlas<S> atlas;
+  const EnergyRange<S> range{energyLow, energyHigh};
   ContinuationOptions<S> options;
-  options.energyLow = energyLow;
-  options.energyHigh = energyHigh;
+  options.energyLow = range.low;
+  options.energyHigh = range.high;
   const auto finished = [&](ModeFamily<S> family) {
     family.id = int(atlas.families.size());
     atlas.families.push_back(std::move(family));
     if (familyDone) familyDone(atlas.families.back());
   };
-  // every admissible part of the 1IPP family that reaches into the energy range, from an orbit
-  // of it in the range both ways in energy
-  for (const PeriodicOrbit<S>& middle : onePeriodicStarts(chain, 400, energyLow, energyHigh, stop)) {
-    const ContinuedFamily<S> down = continueFamily(chain, middle, -1, options, stop);
-    const ContinuedFamily<S> up = continueFamily(chain, middle, +1, options, stop);
-    if (stop.stop_requested()) return atlas;
-    ModeFamily<S> family;
-    family.impacts = 1;
-    family.symmetry = orbitSymmetry(middle, S(1e-9));
-    family.bornKind = "one-periodic";
-    family.bornEnergy = middle.energy;
-    family.bornPeriod = middle.period;
-    // one curve from the low end to the high end (the middle once)
-    family.orbits.assign(down.orbits.rbegin(), down.orbits.rend());
-    family.orbits.insert(family.orbits.end(), up.orbits.begin() + 1, up.orbits.end());
-    family.bifurcations.assign(down.bifurcations.rbegin(), down.bifurcations.rend());
-    family.bifurcations.insert(family.bifurcations.end(), up.bifurcations.begin(), up.bifurcations.end());
-    family.startEnd = down.end;
-    family.end = up.end;
-    finished(std::move(family));
-  }
+  // the 1IPP family from its closed form
+  const OnePeriodicScan<S> scan = scanOnePeriodicFamily(chain, 400, stop);
+  if (!scan.complete) return atlas;
+  for (ModeFamily<S>& family : onePeriodicFamilies(chain, scan, range, stop)) finished(std::move(family));
+  if (stop.stop_requested()) return atlas;
   // the families born at flips, breadth first, while their impacts stay within the bound
   for (std::size_t next = 0; next < atlas.families.size(); ++next) {
     if (stop.stop_requested()) return atlas;
     const int impacts = atlas.families[next].impacts;
     if (2 * impacts > maxImpacts) continue;
-    const std::vector<FamilyBifurcation<S>> flips = atlas.families[next].bifurcations;
-    for (const FamilyBifurcation<S>& flip : flips) {
-      if (flip.kind != "period-doubling") continue;
-      if (!(flip.energy >= energyLow && flip.energy <= energyHigh)) continue;  // born outside the range
-      const FlipSwitch<S> born = switchAtFlip(chain, flip, impacts, stop);
+    for (std::size_t i = 0; i < atlas.families[next].bifurcations.size(); ++i) {
       if (stop.stop_requested()) return atlas;
-      if (!born.search.orbit) continue;
+      const FamilyBifurcation<S> flip = atlas.families[next].bifurcations[i];
+      if (flip.kind != PointKind::PeriodDoubling || !range.holdsPoint(flip.energy)) continue;
+      if (flip.born >= 0) continue;  // a family already found comes back here
+      const FlipSwitch<S> born =
+          switchAtFlip(chain, flip, impacts, birthOffsetBound(atlas.families[next], flip, range), stop);
+      if (stop.stop_requested()) return atlas;
+      if (!born.search.orbit) {
+        atlas.families[next].bifurcations[i].birthProblem = born.search.problem;
+        continue;
+      }
       const ContinuedFamily<S> continued =
-          continueFamily(chain, *born.search.orbit, born.side == "below" ? -1 : +1, options, stop);
+          continueFamily(chain, *born.search.orbit, born.side == Side::Below ? -1 : +1, options, stop);
       if (stop.stop_requested()) return atlas;
       ModeFamily<S> family;
+      family.id = int(atlas.families.size());
       family.impacts = 2 * impacts;
       family.symmetry = orbitSymmetry(*born.search.orbit, S(1e-9));
-      family.bornKind = "period-doubling";
+      family.birth = Birth::PeriodDoubling;
       family.parent = int(next);
       family.bornEnergy = flip.energy;
       family.bornPeriod = flip.T;
@@ -127,7 +287,27 @@ ModesAtlas<S> computeModesAtlas(const Chain<S>& chain, int maxImpacts, const S& 
       family.orbits = continued.orbits;
       family.bifurcations = continued.bifurcations;
       family.end = continued.end;
-      family.startEnd = {"period-doubling", flip.energy, S(2) * flip.T, flip.state};
+      family.startEnd.kind = PointKind::PeriodDoubling;
+      family.startEnd.energy = flip.energy;
+      family.startEnd.period = S(2) * flip.T;
+      family.startEnd.state = flip.state;
+      family.startEnd.lastEnergy = flip.energy;
+      family.startEnd.exact = true;
+      family.startEnd.family = int(next);
+      atlas.families[next].bifurcations[i].born = family.id;
+      if (family.end.kind == PointKind::PeriodDoubling) {
+        // it comes back to a flip: that flip's own family is this one, and the end is the
+        // flip's orbit run twice
+        if (const auto met = flipMet(chain, atlas.families, family.end, family.impacts)) {
+          FamilyBifurcation<S>& other = atlas.families[std::size_t(met->first)].bifurcations[met->second];
+          if (other.born < 0) other.born = family.id;
+          family.end.energy = other.energy;
+          family.end.period = S(2) * other.T;
+          family.end.state = other.state;
+          family.end.exact = true;
+          family.end.family = met->first;
+        }
+      }
       finished(std::move(family));
     }
   }

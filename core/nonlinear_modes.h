@@ -5,36 +5,48 @@
 #include <functional>
 #include <stop_token>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/periodic_continuation.h"
 
 /// The atlas of the chain's nonlinear normal modes up to K impacts per period (docs/model.md
-/// section 10): every admissible part of the 1IPP family that reaches into the energy range,
-/// continued in energy both ways from an orbit of it in the range, and every family born from
-/// one of them at a flip inside the range (recursively, while 2k <= K), each continued to its
-/// end or the range's.
+/// section 10): every admissible part of the 1IPP family inside the energy range, from its
+/// closed form (scanOnePeriodicFamily: the same orbits, flips, folds and ends as `family
+/// --onepp`), and every family born at a flip inside the range (recursively, while 2k <= K),
+/// continued to its end or the range's; a family that comes back to a flip ends there, and
+/// that flip is not switched at again.
 namespace grazelab::core {
+
+/// How a family of the atlas was found.
+enum class Birth {
+  OnePeriodic,     ///< a part of the 1IPP family, from its closed form
+  PeriodDoubling,  ///< born at a flip of family `parent`
+};
+/// "one-periodic", "period-doubling".
+std::string_view toString(Birth birth);
 
 template <typename S>
 struct ModeFamily {
   int id = 0;
   int impacts = 0;
   std::string symmetry;  ///< "A", "B" or empty, of the orbit the family was started from
-  /// how it was found: kind "one-periodic" (a part of the 1IPP family, started from its
-  /// closed-form orbit of energy bornEnergy and period bornPeriod, family -1) or
-  /// "period-doubling" (born at a flip of family `parent`, at bornEnergy and bornPeriod)
-  std::string bornKind;
+  /// a 1IPP part: bornEnergy and bornPeriod are those of its orbit nearest the middle of the
+  /// range; a family born at a flip of family `parent`: the flip's energy and period
+  Birth birth = Birth::OnePeriodic;
   int parent = -1;
   S bornEnergy = 0;
   S bornPeriod = 0;
-  std::string side;  ///< born at a flip: "below" or "above" its energy
+  Side side = Side::Below;  ///< born at a flip: below or above its energy
   /// the orbits in increasing arclength from one end to the other (a 1IPP part: from its low
-  /// energy end; a family born at a flip: from the flip)
+  /// energy end, the closed form's orbits at the periods its scan looked at and at its special
+  /// points; a family born at a flip: from the flip)
   std::vector<FamilyOrbit<S>> orbits;
+  /// flips, folds, branch points in the order of `orbits`; a flip in the range says which
+  /// family was born there, or why none was found
   std::vector<FamilyBifurcation<S>> bifurcations;
   FamilyEnd<S> end;       ///< where it ends (the far end from its birth)
-  FamilyEnd<S> startEnd;  ///< a 1IPP part's other end (its low-energy side)
+  FamilyEnd<S> startEnd;  ///< a 1IPP part's other end (its low-energy side); a flip's family: the flip
 };
 
 template <typename S>

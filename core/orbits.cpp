@@ -75,6 +75,7 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
   OnePeriodicOrbit<S> orbit;
   const S T2 = twoPi<S>() / chain.omegaSlow;
   if (!isFinite(T) || T <= 0) {
+    orbit.refusal = OnePeriodicRefusal::BadPeriod;
     orbit.reason = "the period T must be positive and finite (got " + formatScalar(T) + ")";
     return orbit;
   }
@@ -88,6 +89,7 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
     const S sine = sin(half);
     // a multiple of T_j only within the rounding of the phase itself (T2 (1 - 8e-14) is not)
     if (abs(sine) <= S(4) * epsilon<S>() * abs(half)) {
+      orbit.refusal = OnePeriodicRefusal::MultipleOfPeriod;
       orbit.reason = "T = " + formatScalar(T) + " is a multiple of T" + std::to_string(j + 1) +
                      " = " + formatScalar(S(T2 / omega[j])) + ": no 1IPP orbit";
       return orbit;
@@ -100,6 +102,7 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
   orbit.V = gap * chain.omegaSlow / g[1];
   orbit.postImpact = {gap * g[0] / g[1], gap, S(0), orbit.V};
   if (!(orbit.V < 0)) {
+    orbit.refusal = OnePeriodicRefusal::LeavesIntoStop;
     orbit.reason = "V = " + formatScalar(orbit.V) +
                    " >= 0: the data would leave into the stop, not away from it";
     if (T > T2) orbit.reason += " (1IPP orbits near T2 need T < T2 = " + formatScalar(T2) + ")";
@@ -110,14 +113,17 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
   const Contact<S> contact = nextContact(flight, S(1.5) * tau);
   const S arrival = contact.time.value();
   if (contact.kind == ContactKind::Budget) {
+    orbit.refusal = OnePeriodicRefusal::NotDecided;
     orbit.reason = "the contact search from the data ran out of its budget: not decided";
     return orbit;
   }
   if (contact.kind == ContactKind::None || contact.kind == ContactKind::Cancelled) {
+    orbit.refusal = OnePeriodicRefusal::NeverReturns;
     orbit.reason = "the free flight from the data never comes back to the stop";
     return orbit;
   }
   if (contact.undecided && abs(arrival - tau) > S(1e-9) * max(tau, twoPi<S>())) {
+    orbit.refusal = OnePeriodicRefusal::NotDecided;
     orbit.reason = "the free flight from the data touches the stop at t = " +
                    formatScalar(S(arrival / chain.omegaSlow)) + " within the rounding of " +
                    std::string(toString(precisionOf<S>())) +
@@ -125,6 +131,7 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
     return orbit;
   }
   if (abs(arrival - tau) > S(1e-9) * max(tau, twoPi<S>())) {
+    orbit.refusal = OnePeriodicRefusal::ReturnsEarly;
     orbit.reason = "the free flight from the data first comes back to the stop at t = " +
                    formatScalar(S(arrival / chain.omegaSlow)) + ", not at the period T = " +
                    formatScalar(T) + ": not admissible";

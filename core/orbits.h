@@ -41,11 +41,23 @@ BasicState<S> gloData(const Chain<S>& chain, const S& lambda);
 template <typename S>
 S lambdaStar(const Chain<S>& chain);
 
+/// Why the closed-form data of a period give no admissible 1IPP orbit.
+enum class OnePeriodicRefusal {
+  None,              ///< admissible
+  BadPeriod,         ///< T not positive and finite
+  MultipleOfPeriod,  ///< T a multiple of T1 or T2: no data
+  LeavesIntoStop,    ///< V >= 0 (through 0: the impact fades; through infinity: g2(T) = 0)
+  NotDecided,        ///< the flight's return cannot be decided in this precision
+  NeverReturns,      ///< the flight from the data never comes back to the stop
+  ReturnsEarly,      ///< the flight touches or crosses the stop before T
+};
+
 /// One-impact-per-period (1IPP) orbit of period T (docs/model.md section 5).
 template <typename S>
 struct OnePeriodicOrbit {
   bool admissible = false;
-  std::string reason;       ///< why not, when not admissible
+  OnePeriodicRefusal refusal = OnePeriodicRefusal::None;
+  std::string reason;       ///< why not, when not admissible, in words
   BasicState<S> postImpact; ///< data right after the impact: u = (gap g1/g2, gap), v = (0, V)
   S V = 0;                  ///< post-impact velocity of mass 2, gap / g2(T); < 0 when admissible
 };

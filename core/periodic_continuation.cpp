@@ -108,24 +108,36 @@ std::optional<Vector3<S>> solve(std::array<Vector3<S>, 3> a, Vector3<S> b) {
   return x;
 }
 
-// A point of the family on the hyperplane through `predicted` normal to `t`: Newton on the
-// family's equations and the arclength condition. Nothing when it does not converge.
+// A point of the family on the hyperplane through `plane` normal to `t`, by Newton on the
+// family's equations and the arclength condition from `y`. Nothing when it does not converge,
+// or when an iterate goes farther than `reach` from `y`: a corrector that wanders that far has
+// left for another family.
 template <typename S>
 std::optional<std::pair<Vector3<S>, Evaluation<S>>> correct(const Chain<S>& chain, const Units<S>& units,
-                                                            Vector3<S> y, const Vector3<S>& predicted,
-                                                            const Vector3<S>& t, int impacts) {
+                                                            Vector3<S> y, const Vector3<S>& plane,
+                                                            const Vector3<S>& t, int impacts, const S& reach) {
   using std::abs;
   const S tolerance = S(64) * epsilon<S>() * std::max(S(1), norm(y));
-  for (int iteration = 0; iteration < 12; ++iteration) {
+  S previousStep = std::numeric_limits<S>::infinity();
+  const Vector3<S> predicted = y;
+  for (int iteration = 0; iteration < 40; ++iteration) {
     Evaluation<S> e = evaluate(chain, units, y, impacts);
     if (!e.usable) return std::nullopt;
-    const S arclength = t[0] * (y[0] - predicted[0]) + t[1] * (y[1] - predicted[1]) + t[2] * (y[2] - predicted[2]);
+    const S arclength = t[0] * (y[0] - plane[0]) + t[1] * (y[1] - plane[1]) + t[2] * (y[2] - plane[2]);
     const S size = std::max({abs(e.residual[0]), abs(e.residual[1]), abs(arclength)});
     if (size <= tolerance) return std::pair{y, std::move(e)};
     const std::optional<Vector3<S>> step =
         solve<S>({e.jacobian[0], e.jacobian[1], t}, {-e.residual[0], -e.residual[1], -arclength});
     if (!step) return std::nullopt;
+    // Newton contracts near a regular point and at least halves its steps near a singular one
+    const S stepSize = norm(*step);
+    // a correction within the rounding of y: the residual is at the noise of the path itself
+    if (stepSize <= tolerance) return std::pair{y, std::move(e)};
+    if (iteration >= 3 && !(stepSize < previousStep)) return std::nullopt;
+    previousStep = stepSize;
     for (int i = 0; i < 3; ++i) y[std::size_t(i)] += (*step)[std::size_t(i)];
+    const Vector3<S> away = {y[0] - predicted[0], y[1] - predicted[1], y[2] - predicted[2]};
+    if (!(norm(away) <= reach)) return std::nullopt;
   }
   return std::nullopt;
 }
@@ -136,26 +148,52 @@ FamilyOrbit<S> summary(const PeriodicOrbit<S>& orbit) {
           orbit.minClearance};
 }
 
+template <typename S>
+Vector3<S> along(const Vector3<S>& from, const S& h, const Vector3<S>& t) {
+  return {from[0] + h * t[0], from[1] + h * t[1], from[2] + h * t[2]};
+}
+
+template <typename S>
+Vector3<S> between(const Vector3<S>& a, const Vector3<S>& b, const S& fraction) {
+  return {a[0] + fraction * (b[0] - a[0]), a[1] + fraction * (b[1] - a[1]), a[2] + fraction * (b[2] - a[2])};
+}
+
 // The special point between two neighbours of the family where `test` changes sign, by
-// bisection of the step from `from` along `t` (each trial corrected onto the family).
+// bisection of the hyperplane's distance from `from` along `t` (0 at `from`, `step` at `to`),
+// each trial predicted on the chord between the nearest corrected points of either side (its
+// error falls like the square of the bracket, so the corrector still converges near a branch
+// point, where its basin shrinks like the distance) and corrected onto the family. The
+// corrected orbits on either side of the last bracket.
 template <typename S, typename Test>
-std::optional<PeriodicOrbit<S>> locate(const Chain<S>& chain, const Units<S>& units, const Vector3<S>& from,
-                                       const Vector3<S>& t, S step, int impacts, const Test& test,
-                                       bool signAtFrom) {
+std::pair<std::optional<PeriodicOrbit<S>>, std::optional<PeriodicOrbit<S>>> locate(
+    const Chain<S>& chain, const Units<S>& units, const Vector3<S>& from, const Vector3<S>& to,
+    const Vector3<S>& t, S step, int impacts, const Test& test, bool signAtFrom, std::stop_token stop) {
   S low = 0;
   S high = step;
-  std::optional<PeriodicOrbit<S>> best;
-  for (int iteration = 0; iteration < 200; ++iteration) {
+  Vector3<S> yLow = from;
+  Vector3<S> yHigh = to;
+  std::optional<PeriodicOrbit<S>> lowOrbit;
+  std::optional<PeriodicOrbit<S>> highOrbit;
+  for (int iteration = 0; iteration < 20000 && !stop.stop_requested(); ++iteration) {
     const S middle = (low + high) / S(2);
     if (middle == low || middle == high) break;
-    const Vector3<S> predicted = {from[0] + middle * t[0], from[1] + middle * t[1], from[2] + middle * t[2]};
-    const auto corrected = correct(chain, units, predicted, predicted, t, impacts);
+    const Vector3<S> plane = along(from, middle, t);
+    const Vector3<S> predicted = between(yLow, yHigh, S(0.5));
+    // near a branch point Newton's first steps are long across the singular direction: the
+    // trial may go as far as the whole step, no farther
+    const auto corrected = correct(chain, units, predicted, plane, t, impacts, step);
     if (!corrected) break;
-    best = corrected->second.orbit;
-    if (test(corrected->second.orbit) == signAtFrom) low = middle;
-    else high = middle;
+    if (test(corrected->second) == signAtFrom) {
+      low = middle;
+      yLow = corrected->first;
+      lowOrbit = corrected->second.orbit;
+    } else {
+      high = middle;
+      yHigh = corrected->first;
+      highOrbit = corrected->second.orbit;
+    }
   }
-  return best;
+  return {lowOrbit, highOrbit};
 }
 
 // An end where impact speeds tend to 0 is a square-root singularity of the family in its
@@ -165,31 +203,52 @@ std::optional<PeriodicOrbit<S>> locate(const Chain<S>& chain, const Units<S>& un
 // nearest orbit found, down to the precision of S or to where S cannot decide the impacts.
 template <typename S>
 PeriodicOrbit<S> approachInEnergy(const Chain<S>& chain, const Units<S>& units, PeriodicOrbit<S> inside,
-                                  S outside, int impacts) {
+                                  S outside, int impacts, std::stop_token stop) {
   using std::abs;
   const auto onFamily = [&](const S& energy) -> std::optional<PeriodicOrbit<S>> {
-    OrbitSearch<S> found = findOrbit(chain, energy, inside.state.u1, inside.state.v1, impacts);
+    OrbitSearch<S> found = findOrbit(chain, energy, inside.state.u1, inside.state.v1, impacts, stop);
     if (!found.orbit) return std::nullopt;
     const bool near = abs(found.orbit->state.u1 - inside.state.u1) < S(0.05) * units.position &&
                       abs(found.orbit->state.v1 - inside.state.v1) < S(0.05) * units.speed;
     return near ? std::move(found.orbit) : std::nullopt;
   };
   if (onFamily(outside)) return inside;  // the family goes on there: nothing to refine
-  for (int step = 0; step < 200; ++step) {
-    const S middle = (inside.energy + outside) / S(2);
-    if (middle == inside.energy || middle == outside) break;
-    if (std::optional<PeriodicOrbit<S>> found = onFamily(middle)) inside = std::move(*found);
-    else outside = middle;
+  // the bracket in the energies asked for (an orbit's own energy differs from its target by
+  // a rounding, which must not keep the bisection from closing)
+  S reached = inside.energy;
+  for (int step = 0; step < 20000 && !stop.stop_requested(); ++step) {
+    const S middle = (reached + outside) / S(2);
+    if (middle == reached || middle == outside) break;
+    if (std::optional<PeriodicOrbit<S>> found = onFamily(middle)) {
+      inside = std::move(*found);
+      reached = middle;
+    } else {
+      outside = middle;
+    }
   }
   return inside;
 }
+
+// How far the orbit is, after half its impacts, from where it started (in gaps and w2 gaps): 0
+// when a 2k-impact orbit is a k-impact orbit run twice, as at the flip it was born at.
+template <typename S>
+S halfwayDistance(const Units<S>& units, const PeriodicOrbit<S>& orbit) {
+  using std::abs;
+  if (orbit.impacts % 2 != 0 || orbit.events.size() != std::size_t(orbit.impacts)) {
+    return std::numeric_limits<S>::infinity();
+  }
+  const BasicState<S>& half = orbit.events[std::size_t(orbit.impacts / 2 - 1)].after;
+  return std::max(abs(half.u1 - orbit.state.u1) / units.position, abs(half.v1 - orbit.state.v1) / units.speed);
+}
+
+}  // namespace
 
 // A family whose impacts all fade ends on a grazing linear orbit. Two such limits are known
 // exactly: a period tending to an odd number of fast periods T1 belongs to GLOM1 alone (every
 // free motion repeats after T2 = 2 T1; only the pure fast mode after T1), and the one-impact
 // family ends on GLO_lambda* at T2 (Theorem 2.1). The end then is the limit orbit itself.
 template <typename S>
-void endOnGrazingOrbit(const Chain<S>& chain, int impacts, FamilyEnd<S>& end) {
+void nameGrazingEnd(const Chain<S>& chain, int impacts, FamilyEnd<S>& end) {
   using std::abs;
   using std::round;
   if (!chain.resonant) return;
@@ -214,7 +273,6 @@ void endOnGrazingOrbit(const Chain<S>& chain, int impacts, FamilyEnd<S>& end) {
   end.exact = true;
 }
 
-}  // namespace
 
 template <typename S>
 ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>& start,
@@ -227,35 +285,55 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
   const Units<S> units{chain.model.gap, S(chain.model.gap * chain.omegaSlow), start.energy};
   Vector3<S> y = {start.state.u1 / units.position, start.state.v1 / units.speed, S(0)};
   Evaluation<S> here = evaluate(chain, units, y, k);
-  const auto finish = [&](const std::string& kind, const PeriodicOrbit<S>& last) {
-    family.end = {kind, last.energy, last.period, last.state};
+  const auto finish = [&](PointKind kind, const PeriodicOrbit<S>& last) {
+    family.end.kind = kind;
+    family.end.energy = last.energy;
+    family.end.period = last.period;
+    family.end.state = last.state;
     family.end.lastEnergy = last.energy;
-    if (kind == "grazing-orbit") {
+    if (kind == PointKind::GrazingOrbit) {
       family.end.gloLambda = (last.state.u1 / chain.model.gap - chain.rhoFast) / (chain.rhoSlow - chain.rhoFast);
-      endOnGrazingOrbit(chain, k, family.end);
+      nameGrazingEnd(chain, k, family.end);
     }
     return family;
   };
-  if (!here.usable) return finish("undecided", start);
+  if (!here.usable) return finish(PointKind::Undecided, start);
   family.orbits.push_back(summary(start));
   Vector3<S> t = tangent(here.jacobian, Vector3<S>{S(0), S(0), S(direction)});
   S h = S(options.firstStep);
+  // the resolution of S in the continuation's units: an end is approached down to it
+  const S resolution = S(1024) * epsilon<S>() * std::max(S(1), norm(y));
   PeriodicOrbit<S> last = start;
+  // a corrected orbit was evaluated with no closing tolerance: admissible in every other way,
+  // and closed as a found orbit must be
+  const auto admissible = [&](const PeriodicOrbit<S>& orbit) {
+    return orbit.admissible && orbit.checks.periodicityResidual <= closeTolerance(orbit);
+  };
   for (int step = 0; step < options.maxSteps; ++step) {
-    if (stop.stop_requested()) return finish("stopped", last);
-    const Vector3<S> predicted = {y[0] + h * t[0], y[1] + h * t[1], y[2] + h * t[2]};
-    const auto corrected = correct(chain, units, predicted, predicted, t, k);
-    const bool admissible = corrected && evaluateOrbit(chain, corrected->second.orbit.state, k,
-                                                       defaultCloseTolerance<S>()).admissible;
-    if (!admissible) {
-      if (h > S(options.minStep)) {
+    if (stop.stop_requested()) return finish(PointKind::Stopped, last);
+    const Vector3<S> predicted = along(y, h, t);
+    // the corrector moves across the step's hyperplane by about the curvature times h^2: an
+    // iterate farther than h/2 from the predictor has jumped
+    const auto corrected = correct(chain, units, predicted, predicted, t, k, S(h / S(2)));
+    bool accepted = corrected && admissible(corrected->second.orbit);
+    if (accepted) {
+      // the orbit halfway must lie near the chord, be admissible, and show a trace that does
+      // not bend across a level: otherwise the step could hide a jump or two crossings
+      const Vector3<S> chord = {corrected->first[0] - y[0], corrected->first[1] - y[1], corrected->first[2] - y[2]};
+      const S length = norm(chord);
+      const Vector3<S> normal = {chord[0] / length, chord[1] / length, chord[2] / length};
+      const Vector3<S> middle = between(y, corrected->first, S(0.5));
+      const auto halfway = correct(chain, units, middle, middle, normal, k, S(length / S(4)));
+      accepted = halfway && admissible(halfway->second.orbit) &&
+                 !traceMayCrossUnseen(last, halfway->second.orbit, corrected->second.orbit);
+    }
+    if (!accepted) {
+      if (h > resolution) {
         h /= S(2);
         continue;
       }
       // the family ends here: say how, from the orbit it ends on and the path just beyond
-      const Evaluation<S> beyond = evaluate(chain, units,
-                                            Vector3<S>{y[0] + S(4) * h * t[0], y[1] + S(4) * h * t[1],
-                                                       y[2] + S(4) * h * t[2]}, k);
+      const Evaluation<S> beyond = evaluate(chain, units, along(y, S(4) * h, t), k);
       const bool touches = std::any_of(beyond.orbit.events.begin(), beyond.orbit.events.end(),
                                        [](const BasicEvent<S>& e) { return e.type != EventType::Impact; }) ||
                            (beyond.orbit.events.size() != std::size_t(k) && !beyond.orbit.events.empty()) ||
@@ -267,59 +345,94 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
       for (const BasicEvent<S>& event : last.events) fastest = std::max(fastest, event.before.v2);
       const bool allSlow = fastest < S(0.05) * units.speed;
       const bool close = last.minClearance < S(0.05);
-      std::string kind = "undecided";
+      PointKind kind = PointKind::Undecided;
       // every impact fading (and any interior maximum reaching the stop): the orbit becomes a
       // linear orbit that touches the stop, a grazing orbit
-      if (allSlow || (slow && close)) kind = "grazing-orbit";
-      else if (slow) kind = "impact-speed-zero";
-      else if (close || touches) kind = "interior-grazing";
+      if (allSlow || (slow && close)) kind = PointKind::GrazingOrbit;
+      else if (slow) kind = PointKind::ImpactSpeedZero;
+      else if (close || touches) kind = PointKind::InteriorGrazing;
       if (slow) {
         // located in the energy, past where the arclength steps stalled
         using std::exp;
-        const S beyond = last.energy * exp(S(t[2] > 0 ? 1 : -1) * std::max(S(4) * h, S(1e-3)));
-        PeriodicOrbit<S> nearer = approachInEnergy(chain, units, last, beyond, k);
+        const S outside = last.energy * exp(S(t[2] > 0 ? 1 : -1) * std::max(S(4) * h, S(1e-3)));
+        PeriodicOrbit<S> nearer = approachInEnergy(chain, units, last, outside, k, stop);
         if (nearer.energy != last.energy) {
           last = std::move(nearer);
           family.orbits.push_back(summary(last));  // a row of its own only when it got nearer
         }
       }
+      if (stop.stop_requested()) return finish(PointKind::Stopped, last);
       return finish(kind, last);
     }
     const Vector3<S> next = corrected->first;
     const Evaluation<S>& there = corrected->second;
     const PeriodicOrbit<S>& orbit = there.orbit;
     if (orbit.energy < options.energyLow || orbit.energy > options.energyHigh) {
-      return finish("energy-limit", last);
+      return finish(PointKind::EnergyLimit, last);
     }
     const Vector3<S> nextTangent = tangent(there.jacobian, t);
-    // special points between the two neighbours
-    const auto crossedLevel = [&](const S& level) { return (last.trace - level > 0) != (orbit.trace - level > 0); };
-    if (crossedLevel(S(-2))) {
-      const auto at = locate(chain, units, y, t, h, k, [](const PeriodicOrbit<S>& o) { return o.trace + S(2) > 0; },
-                             last.trace + S(2) > 0);
-      if (at) family.bifurcations.push_back({"period-doubling", at->period, at->energy, at->trace, at->state});
-    }
     const bool turns = (t[2] > 0) != (nextTangent[2] > 0);
-    if (crossedLevel(S(2))) {
-      const auto at = locate(chain, units, y, t, h, k, [](const PeriodicOrbit<S>& o) { return o.trace - S(2) > 0; },
-                             last.trace - S(2) > 0);
-      if (at) family.bifurcations.push_back({turns ? "fold" : "branch-point", at->period, at->energy, at->trace, at->state});
-    } else if (turns) {
-      // the energy turns back without the trace crossing 2 within the step: a fold, placed to
-      // the step's resolution only
-      family.bifurcations.push_back({"fold", orbit.period, orbit.energy, orbit.trace, orbit.state});
+    // a 2k-impact family that comes back to a k-impact orbit run twice has reached a flip of
+    // that family (its energy turns there: beyond lies the same orbit, begun half a period
+    // later): it ends on the flip
+    const S nearest = std::min(halfwayDistance(units, last), halfwayDistance(units, orbit));
+    if (turns && nearest < S(0.02) && nearest < halfwayDistance(units, start) / S(2)) {
+      const bool lastNearer = halfwayDistance(units, last) <= halfwayDistance(units, orbit);
+      if (!lastNearer) family.orbits.push_back(summary(orbit));
+      return finish(PointKind::PeriodDoubling, lastNearer ? last : orbit);
     }
+    // special points between the two neighbours
+    std::vector<FamilyBifurcation<S>> found;
+    const auto crossedLevel = [&](const S& level) { return sideOfLevel(last, level) * sideOfLevel(orbit, level) < 0; };
+    for (const S& level : {S(-2), S(2)}) {
+      if (!crossedLevel(level)) continue;
+      const auto side = [level](const Evaluation<S>& e) { return e.orbit.trace - level > 0; };
+      const auto [low, high] = locate(chain, units, y, next, t, h, k, side, last.trace - level > 0, stop);
+      const auto nearer = [&]() -> std::optional<PeriodicOrbit<S>> {
+        if (!low) return high;
+        if (!high) return low;
+        return abs(low->trace - level) <= abs(high->trace - level) ? low : high;
+      }();
+      const PeriodicOrbit<S>& at = nearer ? *nearer : orbit;
+      FamilyBifurcation<S> point;
+      point.kind = level < 0 ? PointKind::PeriodDoubling : turns ? PointKind::Fold : PointKind::BranchPoint;
+      // checked against its definition before it is given as one
+      point.checked = nearer && abs(at.trace - level) <= traceLevelTolerance<S>();
+      point.T = at.period;
+      point.energy = at.energy;
+      point.trace = at.trace;
+      point.state = at.state;
+      found.push_back(point);
+    }
+    if (turns && !crossedLevel(S(2))) {
+      // the energy turns back without the trace crossing 2 within the step: the turn located
+      // where the tangent's energy part changes sign, then checked like any fold
+      const auto rising = [&](const Evaluation<S>& e) { return tangent(e.jacobian, t)[2] > 0; };
+      const auto [low, high] = locate(chain, units, y, next, t, h, k, rising, t[2] > 0, stop);
+      const std::optional<PeriodicOrbit<S>>& nearer = low ? low : high;
+      const PeriodicOrbit<S>& at = nearer ? *nearer : orbit;
+      FamilyBifurcation<S> point;
+      point.kind = PointKind::Fold;
+      point.checked = nearer && abs(at.trace - S(2)) <= traceLevelTolerance<S>();
+      point.T = at.period;
+      point.energy = at.energy;
+      point.trace = at.trace;
+      point.state = at.state;
+      found.push_back(point);
+    }
+    family.bifurcations.insert(family.bifurcations.end(), found.begin(), found.end());
     y = next;
     t = nextTangent;
     last = orbit;
     family.orbits.push_back(summary(orbit));
-    // a converged step that cost little grows; the corrector's failures shrank it above
+    // a converged step grows; the failures above shrank it
     h = std::min(S(options.maxStep), S(h * S(1.5)));
   }
-  return finish("step-limit", last);
+  return finish(PointKind::StepLimit, last);
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                             \
+  template void nameGrazingEnd<S>(const Chain<S>&, int, FamilyEnd<S>&);                      \
   template ContinuedFamily<S> continueFamily<S>(const Chain<S>&, const PeriodicOrbit<S>&, int, \
                                                 const ContinuationOptions<S>&, std::stop_token);
 GRAZELAB_INSTANTIATE(double)

@@ -32,12 +32,13 @@ struct FamilyOrbit {
 /// Where a continued family ends.
 template <typename S>
 struct FamilyEnd {
-  /// "grazing-orbit" (every impact speed, or an impact speed and a clearance, tend to 0: the
-  /// family becomes a grazing linear orbit), "interior-grazing" (a flight touches the stop),
-  /// "impact-speed-zero" (one impact fades),
-  /// "energy-limit" (the energy range asked for), "step-limit", "undecided" (the corrector
-  /// fails with no event in sight, or a contact cannot be decided in S), "stopped"
-  std::string kind;
+  /// GrazingOrbit (every impact speed, or an impact speed and a clearance, tend to 0: the
+  /// family becomes a grazing linear orbit), InteriorGrazing (a flight touches the stop),
+  /// ImpactSpeedZero (one impact fades), PeriodDoubling (a 2k-impact family meets a flip of a
+  /// k-impact family: its orbit becomes that one run twice), EnergyLimit (the energy range
+  /// asked for), StepLimit, Undecided (the corrector fails with no event in sight, or a
+  /// contact cannot be decided in S), Stopped
+  PointKind kind = PointKind::Undecided;
   S energy = 0;
   S period = 0;
   BasicState<S> state;
@@ -47,10 +48,12 @@ struct FamilyEnd {
   S gloLambda = std::numeric_limits<S>::quiet_NaN();
   /// energy, period, state and gloLambda are the limit orbit's, exactly, not the last orbit's:
   /// a family whose period tends to an odd number of fast periods T1 can only end on GLOM1 (a
-  /// free motion repeats after T2; only the pure fast mode after T1), and the one-impact family
-  /// ends on GLO_lambda* at T2 (Theorem 2.1)
+  /// free motion repeats after T2; only the pure fast mode after T1), the one-impact family
+  /// ends on GLO_lambda* at T2 (Theorem 2.1), and a family meeting a flip ends on the flip's
+  /// orbit (its period twice the flip's)
   bool exact = false;
   S lastEnergy = 0;  ///< the energy of the last orbit computed, to see how near it came
+  int family = -1;   ///< in an atlas: the family whose flip a PeriodDoubling end meets
 };
 
 template <typename S>
@@ -58,12 +61,14 @@ struct ContinuationOptions {
   S energyLow = 0;                 ///< the family is followed while its energy stays in
   S energyHigh = 0;                ///< [energyLow, energyHigh]
   int maxSteps = 4000;
-  /// the first step along (u1 / d, v1 / (w2 d), ln E); steps grow to `maxStep` and shrink to
-  /// `minStep` on their own. The end is classified from the last orbit (within 5 % of the
-  /// speed w2 d or of the gap), not located to full precision
+  /// the first step along (u1 / d, v1 / (w2 d), ln E); steps grow to `maxStep` and shrink on
+  /// their own. A step is taken only when its corrected end stays near the predictor, is
+  /// admissible, and the orbit halfway is near the chord with a trace that bends little where
+  /// it could cross +-2 (no jump onto another family, no pair of crossings unseen). An end is
+  /// approached until the step is at the resolution of S, then classified from the last
+  /// orbit (within 5 % of the speed w2 d or of the gap)
   double firstStep = 1e-3;
   double maxStep = 0.1;
-  double minStep = 1e-12;
 };
 
 template <typename S>
@@ -73,6 +78,12 @@ struct ContinuedFamily {
   std::vector<FamilyBifurcation<S>> bifurcations;  ///< flips, folds, branch points, in order
   FamilyEnd<S> end;
 };
+
+/// A grazing-orbit end (its gloLambda and period those of the last orbit) named by its limit
+/// when that is known exactly: a period tending to an odd number of fast periods T1 (GLOM1), or
+/// the one-impact family tending to T2 (GLO_lambda*); `exact` says whether it was.
+template <typename S>
+void nameGrazingEnd(const Chain<S>& chain, int impacts, FamilyEnd<S>& end);
 
 /// Follows the family through `start` (an admissible k-impact orbit) with its energy first
 /// moving the way of `direction` (+1: up, -1: down), until it ends.

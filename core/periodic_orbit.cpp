@@ -224,6 +224,12 @@ S defaultCloseTolerance() {
 }
 
 template <typename S>
+S closeTolerance(const PeriodicOrbit<S>& orbit) {
+  using std::abs;
+  return defaultCloseTolerance<S>() * std::max(S(1), abs(orbit.trace));
+}
+
+template <typename S>
 PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start, int impacts,
                                const S& closeTolerance) {
   using std::abs;
@@ -232,14 +238,15 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
   orbit.state = start;
   orbit.impacts = impacts;
   orbit.energy = physicalEnergy(chain, start);
-  const auto refuse = [&orbit](std::string reason) {
+  const auto refuse = [&orbit](OrbitRefusal refusal, std::string reason) {
     orbit.admissible = false;
+    orbit.refusal = refusal;
     orbit.reason = std::move(reason);
     return orbit;
   };
-  if (impacts < 1) return refuse("an orbit needs at least one impact per period");
+  if (impacts < 1) return refuse(OrbitRefusal::BadStart, "an orbit needs at least one impact per period");
   if (!(start.u2 == chain.model.gap) || !(start.v2 <= 0)) {
-    return refuse("the start is not just after an impact (u2 = gap, v2 <= 0)");
+    return refuse(OrbitRefusal::BadStart, "the start is not just after an impact (u2 = gap, v2 <= 0)");
   }
   BasicRequest<S> request;
   request.initial = start;
@@ -249,11 +256,11 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
   const BasicResult<S> run = simulate(chain.model, request);
   orbit.events = run.events;
   if (run.stop == StopReason::Undecided) {
-    return refuse("a contact of the path is too near tangent for this precision to decide "
+    return refuse(OrbitRefusal::Undecided, "a contact of the path is too near tangent for this precision to decide "
                   "(try a higher precision)");
   }
   if (std::int64_t(run.events.size()) != impacts) {
-    return refuse("the path made " + std::to_string(run.events.size()) + " contacts, not " +
+    return refuse(OrbitRefusal::ContactCount, "the path made " + std::to_string(run.events.size()) + " contacts, not " +
                   std::to_string(impacts));
   }
   // the monodromy, flight by flight, with the clearance of every flight
@@ -264,7 +271,7 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
   orbit.minClearance = std::numeric_limits<S>::infinity();
   for (const BasicEvent<S>& event : run.events) {
     if (event.type != EventType::Impact) {
-      return refuse("the path has a " + std::string(toString(event.type)) + " at t = " +
+      return refuse(OrbitRefusal::NotImpact, "the path has a " + std::string(toString(event.type)) + " at t = " +
                     formatScalar(event.t) + ", not only impacts");
     }
     const S tau = event.t - previousTime;
@@ -320,17 +327,17 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
   else if (trace < S(-2)) orbit.stability = Stability::FlipHyperbolic;
   else orbit.stability = Stability::Elliptic;
   if (!(orbit.checks.periodicityResidual <= closeTolerance)) {
-    return refuse("the path does not close: it is " + formatScalar(orbit.checks.periodicityResidual) +
+    return refuse(OrbitRefusal::NotClosed, "the path does not close: it is " + formatScalar(orbit.checks.periodicityResidual) +
                   " (relative) from its start after " + std::to_string(impacts) + " impacts");
   }
   // minimal: not a shorter orbit repeated (its state after j impacts, j dividing k, elsewhere)
   for (int j = 1; j < impacts; ++j) {
     if (impacts % j != 0) continue;
     if (relativeDistance(chain, start, run.events[std::size_t(j - 1)].after) <= S(1e-9)) {
-      return refuse("the orbit is a " + std::to_string(j) + "-impact orbit repeated");
+      return refuse(OrbitRefusal::Repeated, "the orbit is a " + std::to_string(j) + "-impact orbit repeated");
     }
   }
-  if (!(orbit.minClearance > 0)) return refuse("a flight touches or crosses the stop between impacts");
+  if (!(orbit.minClearance > 0)) return refuse(OrbitRefusal::TouchesStop, "a flight touches or crosses the stop between impacts");
   orbit.admissible = true;
   return orbit;
 }
@@ -342,8 +349,12 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
   OrbitSearch<S> search;
   S x = u1;
   S y = v1;
-  const S tolerance = defaultCloseTolerance<S>();
   constexpr int kIterations = 60;
+  // Newton converges in a few steps from a guess near an orbit; a residual that has not
+  // improved on its best for this many iterations is wandering, not converging
+  constexpr int kPatience = 8;
+  S bestResidual = std::numeric_limits<S>::infinity();
+  int bestIteration = 0;
   for (int iteration = 0; iteration < kIterations; ++iteration) {
     search.iterations = iteration + 1;
     if (stop.stop_requested()) {
@@ -364,7 +375,7 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
                        "): give a guess nearer the orbit";
       return search;
     }
-    PeriodicOrbit<S> orbit = evaluateOrbit(chain, *start, impacts, tolerance);
+    PeriodicOrbit<S> orbit = evaluateOrbit(chain, *start, impacts, std::numeric_limits<S>::infinity());
     if (orbit.events.size() != std::size_t(impacts) ||
         std::any_of(orbit.events.begin(), orbit.events.end(),
                     [](const BasicEvent<S>& e) { return e.type != EventType::Impact; })) {
@@ -372,12 +383,20 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
                        std::to_string(iteration + 1) + " (" + orbit.reason + ")";
       return search;
     }
-    if (orbit.checks.periodicityResidual <= tolerance) {
+    if (orbit.checks.periodicityResidual <= closeTolerance(orbit)) {
       if (!orbit.admissible) {
         search.problem = "the orbit found is not admissible: " + orbit.reason;
         return search;
       }
       search.orbit = std::move(orbit);
+      return search;
+    }
+    if (orbit.checks.periodicityResidual < bestResidual) {
+      bestResidual = orbit.checks.periodicityResidual;
+      bestIteration = iteration;
+    } else if (iteration - bestIteration >= kPatience) {
+      search.problem = "Newton does not converge from this guess (its residual stopped falling at " +
+                       formatScalar(bestResidual) + ")";
       return search;
     }
     // Newton on P^k(x) - x = 0 with the exact Jacobian DP^k - I
@@ -407,7 +426,7 @@ OrbitSearch<S> onePeriodicOrbitStability(const Chain<S>& chain, const S& T) {
     return search;
   }
   PeriodicOrbit<S> orbit = evaluateOrbit(chain, data.postImpact, 1, defaultCloseTolerance<S>());
-  if (!orbit.admissible && orbit.reason.find("does not close") != std::string::npos) {
+  if (!orbit.admissible && orbit.refusal == OrbitRefusal::NotClosed) {
     // near a multiple of T1 the closed form loses digits like 1 / (T1 - T): its data are
     // polished by Newton at their energy (the orbit itself is well conditioned there)
     OrbitSearch<S> polished = findOrbit(chain, orbit.energy, data.postImpact.u1, data.postImpact.v1, 1);
@@ -453,6 +472,7 @@ std::string orbitSymmetry(const PeriodicOrbit<S>& orbit, const S& tolerance) {
   template std::optional<BasicState<S>> sectionState<S>(const Chain<S>&, const S&, const S&,       \
                                                         const S&);                                 \
   template S defaultCloseTolerance<S>();                                                           \
+  template S closeTolerance<S>(const PeriodicOrbit<S>&);                                          \
   template PeriodicOrbit<S> evaluateOrbit<S>(const Chain<S>&, const BasicState<S>&, int,           \
                                              const S&);                                            \
   template OrbitSearch<S> findOrbit<S>(const Chain<S>&, const S&, const S&, const S&, int,         \

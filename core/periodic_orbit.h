@@ -62,6 +62,18 @@ struct OrbitChecks {
   S periodicityResidual = 0;  ///< |x_k - x_0| / scale: how far the path is from closing
 };
 
+/// Why a computed orbit is not admissible.
+enum class OrbitRefusal {
+  None,          ///< admissible
+  BadStart,      ///< no impact asked for, or the start is not just after an impact
+  Undecided,     ///< a contact of the path cannot be decided in this precision
+  ContactCount,  ///< the path made another number of contacts than asked
+  NotImpact,     ///< a contact of the path is a grazing or a stick, not an impact
+  NotClosed,     ///< the path does not come back to its start
+  Repeated,      ///< a shorter orbit repeated
+  TouchesStop,   ///< a flight touches or crosses the stop between impacts
+};
+
 /// A periodic orbit with k impacts per period, as computed from its state just after an impact
 /// (t = 0): its path, monodromy, multipliers and checks, and whether it is admissible.
 template <typename S>
@@ -84,7 +96,8 @@ struct PeriodicOrbit {
   /// the gap (+infinity when no flight turns back before its impact)
   S minClearance = 0;
   bool admissible = false;
-  std::string reason;             ///< why not admissible
+  OrbitRefusal refusal = OrbitRefusal::None;
+  std::string reason;             ///< why not admissible, in words
 };
 
 /// The orbit through `start` (just after an impact) closed after `impacts` contacts: the
@@ -98,6 +111,11 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
 /// The tolerance a converged orbit closes to in S: a few hundred ulps of the state's scale.
 template <typename S>
 S defaultCloseTolerance();
+
+/// The tolerance `orbit` can close to in S: defaultCloseTolerance times its largest multiplier
+/// (at least 1), since the return map amplifies the rounding of its own path by as much.
+template <typename S>
+S closeTolerance(const PeriodicOrbit<S>& orbit);
 
 /// The result of a search: the orbit, or the one line saying why none was found.
 template <typename S>

@@ -58,6 +58,20 @@ std::pair<S, S> rootInMonotonePiece(const std::array<S, 5>& c, const S& a, const
 template <typename S, typename Function>
 std::pair<S, S> solveBracketed(const Function& g, S a, S b, S ga, S gb, S guess);
 
+/// The boundary between `inside` and not inside in [a, b], where `inside(a)` holds and
+/// `inside(b)` does not (a may be above b): bisection down to the last bit of S, or until
+/// `stopped()`. Returns the last point found inside (a when none nearer was).
+template <typename S, typename Inside, typename Stopped>
+S bisectBoundary(S a, S b, const Inside& inside, const Stopped& stopped) {
+  for (int step = 0; step < 20000; ++step) {
+    const S middle = (a + b) / S(2);
+    if (middle == a || middle == b || stopped()) break;
+    if (inside(middle)) a = middle;
+    else b = middle;
+  }
+  return a;
+}
+
 }  // namespace grazelab::core
 
 #include "core/roots_impl.h"

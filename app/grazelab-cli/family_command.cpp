@@ -91,25 +91,34 @@ std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& pars
   }
   const S T2 = core::twoPi<S>() / chain.omegaSlow;
   io.reportProgress(0.9, "bifurcations of the family");
-  for (const core::FamilyBifurcation<S>& b : core::onePeriodicBifurcations(chain, 2000, stop)) {
-    QJsonObject point{{"kind", QString::fromStdString(b.kind)},
+  const std::vector<core::FamilyBifurcation<S>> points = core::onePeriodicBifurcations(chain, 2000, stop);
+  std::vector<S> energies;
+  for (const core::FamilyBifurcation<S>& b : points) energies.push_back(b.energy);
+  for (const core::FamilyBifurcation<S>& b : points) {
+    if (stop.stop_requested()) return std::nullopt;
+    QJsonObject point{{"kind", QString::fromUtf8(core::toString(b.kind).data())},
                       {"T", scalarJson(b.T)},
                       {"T_over_T2", scalarJson(S(b.T / T2))},
                       {"energy", scalarJson(b.energy)},
                       {"trace", scalarJson(b.trace)},
                       {"state", stateJson(b.state)}};
-    if (b.kind == "undecided") {
+    if (b.kind == core::PointKind::Undecided) {
       point["note"] = "not a bifurcation: beyond this period the orbit's data lose their digits "
                       "(near a multiple of T1) or a contact cannot be decided in this precision; "
                       "a higher --precision moves the point";
     }
-    if (b.kind == "period-doubling") {
-      const core::FlipSwitch<S> born = core::switchAtFlip(chain, b, 1, stop);
+    if (!b.checked) {
+      point["checked"] = false;
+      point["note"] = "not solved to its definition in this precision (the trace is not within "
+                      "rounding of +-2 here): where the search stopped, not a result";
+    }
+    if (b.kind == core::PointKind::PeriodDoubling) {
+      const core::FlipSwitch<S> born = core::switchAtFlip(chain, b, 1, core::birthOffsetBound(b, energies), stop);
       if (born.search.orbit) {
         const core::PeriodicOrbit<S>& o = *born.search.orbit;
         const std::string symmetry = core::orbitSymmetry(o, S(1e-9));
         point["born"] = QJsonObject{{"impacts", o.impacts},
-                                    {"side", QString::fromStdString(born.side)},
+                                    {"side", QString::fromUtf8(core::toString(born.side).data())},
                                     {"energy", scalarJson(o.energy)},
                                     {"period", scalarJson(o.period)},
                                     {"trace", scalarJson(o.trace)},

@@ -46,13 +46,14 @@ QJsonObject stateJson(const core::BasicState<S>& x) {
 
 template <typename S>
 QJsonObject endJson(const core::FamilyEnd<S>& end) {
-  QJsonObject json{{"kind", QString::fromStdString(end.kind)}, {"energy", scalarJson(end.energy)},
+  QJsonObject json{{"kind", QString::fromUtf8(core::toString(end.kind).data())}, {"energy", scalarJson(end.energy)},
                    {"period", scalarJson(end.period)}, {"state", stateJson(end.state)}};
   if (core::isFinite(end.gloLambda)) json["glo_lambda"] = scalarJson(end.gloLambda);
-  if (end.kind == "grazing-orbit") {
+  if (end.kind == core::PointKind::GrazingOrbit || end.kind == core::PointKind::PeriodDoubling) {
     json["exact"] = end.exact;
     json["last_energy"] = scalarJson(end.lastEnergy);
   }
+  if (end.family >= 0) json["family"] = end.family;
   return json;
 }
 
@@ -131,21 +132,37 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
     files.emplace_back(prefix + QStringLiteral("-family-%1.npy").arg(family.id), encodeNpy(array));
     QJsonArray bifurcations;
     for (const core::FamilyBifurcation<S>& b : family.bifurcations) {
-      bifurcations.append(QJsonObject{{"kind", QString::fromStdString(b.kind)},
-                                      {"T", scalarJson(b.T)},
-                                      {"T_over_T2", scalarJson(S(b.T / T2))},
-                                      {"energy", scalarJson(b.energy)},
-                                      {"trace", scalarJson(b.trace)},
-                                      {"state", stateJson(b.state)}});
+      QJsonObject point{{"kind", QString::fromUtf8(core::toString(b.kind).data())},
+                        {"T", scalarJson(b.T)},
+                        {"T_over_T2", scalarJson(S(b.T / T2))},
+                        {"energy", scalarJson(b.energy)},
+                        {"trace", scalarJson(b.trace)},
+                        {"checked", b.checked},
+                        {"state", stateJson(b.state)}};
+      if (!b.checked) {
+        point["note"] = "not solved to its definition in this precision (the trace is not within rounding "
+                        "of +-2 here): where the search stopped, not a result";
+      }
+      if (b.kind == core::PointKind::PeriodDoubling) {
+        if (b.born >= 0) point["born_family"] = b.born;
+        else if (!b.birthProblem.empty()) point["born_family"] = QJsonValue();
+        if (!b.birthProblem.empty()) point["birth_problem"] = QString::fromStdString(b.birthProblem);
+      }
+      bifurcations.append(point);
 #if GRAZELAB_CLI_PICTURES
-      marks.push_back({QPointF(std::log10(double(b.energy)), 2 * M_PI / double(b.T)),
-                       b.kind == "period-doubling" ? QStringLiteral("flip") : QString::fromStdString(b.kind)});
+      QString label = b.kind == core::PointKind::PeriodDoubling ? QStringLiteral("flip")
+                                                                 : QString::fromUtf8(core::toString(b.kind).data());
+      // a flip whose family could not be found says so on the picture too
+      if (b.kind == core::PointKind::PeriodDoubling && b.born < 0 && !b.birthProblem.empty()) {
+        label = QStringLiteral("flip, no family found");
+      }
+      marks.push_back({QPointF(std::log10(double(b.energy)), 2 * M_PI / double(b.T)), label});
 #endif
     }
 #if GRAZELAB_CLI_PICTURES
     for (const core::FamilyEnd<S>* end : {&family.end, &family.startEnd}) {
-      if (end->kind == "period-doubling" || end->kind.empty() || !(end->period > 0)) continue;
-      QString label = QString::fromStdString(end->kind);
+      if (end->kind == core::PointKind::PeriodDoubling || !(end->period > 0)) continue;
+      QString label = QString::fromUtf8(core::toString(end->kind).data());
       // a grazing end named by the grazing linear orbit it tends to
       if (end->exact) {
         label = end->gloLambda == 0 ? QStringLiteral("GLOM₁") : QStringLiteral("GLO(λ*)");
@@ -154,12 +171,12 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
         const double lambda = std::round(double(end->gloLambda) * 1000) / 1000 + 0.0;
         label = QStringLiteral("GLO(λ ≈ %1)").arg(lambda, 0, 'f', 3);
       }
-      if (end->kind == "energy-limit" || end->kind == "step-limit") continue;  // not an end of the family
+      if (end->kind == core::PointKind::EnergyLimit || end->kind == core::PointKind::StepLimit) continue;  // not an end of the family
       marks.push_back({QPointF(std::log10(double(end->energy)), 2 * M_PI / double(end->period)), label});
     }
     curves.push_back(std::move(curve));
 #endif
-    QJsonObject born{{"kind", QString::fromStdString(family.bornKind)},
+    QJsonObject born{{"kind", QString::fromUtf8(core::toString(family.birth).data())},
                      {"family", family.parent < 0 ? QJsonValue() : QJsonValue(family.parent)},
                      {"energy", scalarJson(family.bornEnergy)},
                      {"T", scalarJson(family.bornPeriod)}};
@@ -168,7 +185,8 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
         {"impacts", family.impacts},
         {"symmetry", family.symmetry.empty() ? QJsonValue() : QJsonValue(QString::fromStdString(family.symmetry))},
         {"born_at", born},
-        {"side", family.side.empty() ? QJsonValue() : QJsonValue(QString::fromStdString(family.side))},
+        {"side", family.birth == core::Birth::OnePeriodic ? QJsonValue()
+                                                          : QJsonValue(QString::fromUtf8(core::toString(family.side).data()))},
         {"start", endJson(family.startEnd)},
         {"end", endJson(family.end)},
         {"bifurcations", bifurcations},

@@ -64,11 +64,11 @@ TEST(PeriodicContinuationTest, itsFlipsAreTheClosedFormsAndItEndsOnTheGrazingOrb
   const ContinuedFamily<double> down = continueFamily(chain, start, -1, range(chain));
   std::vector<double> continued;
   for (const auto& b : up.bifurcations) {
-    if (b.kind == "period-doubling") continued.push_back(b.energy);
+    if (b.kind == PointKind::PeriodDoubling) continued.push_back(b.energy);
   }
   std::vector<double> closed;
   for (const auto& b : onePeriodicBifurcations(chain, 2000)) {
-    if (b.kind == "period-doubling") closed.push_back(b.energy);
+    if (b.kind == PointKind::PeriodDoubling) closed.push_back(b.energy);
   }
   std::sort(continued.begin(), continued.end());
   std::sort(closed.begin(), closed.end());
@@ -78,7 +78,7 @@ TEST(PeriodicContinuationTest, itsFlipsAreTheClosedFormsAndItEndsOnTheGrazingOrb
   // this chain's flips: T = 2 T2 / 3 at E = 2, and E = 0.7
   EXPECT_NEAR(closed[0], 0.7, 1e-12);
   EXPECT_NEAR(closed[1], 2.0, 1e-12);
-  EXPECT_EQ(down.end.kind, "grazing-orbit");
+  EXPECT_EQ(down.end.kind, PointKind::GrazingOrbit);
   EXPECT_NEAR(down.end.gloLambda, lambdaStar(chain), 1e-6);  // Theorem 2.1: it ends on GLO(lambda*)
   // located in the energy past where the arclength steps stall (impact speeds go like the root
   // of the distance to the end)
@@ -87,7 +87,7 @@ TEST(PeriodicContinuationTest, itsFlipsAreTheClosedFormsAndItEndsOnTheGrazingOrb
   EXPECT_TRUE(down.end.exact);
   EXPECT_EQ(down.end.energy, grazingEnergy(chain));
   EXPECT_EQ(down.end.period, T2);
-  EXPECT_EQ(up.end.kind, "energy-limit");
+  EXPECT_EQ(up.end.kind, PointKind::EnergyLimit);
 }
 
 TEST(PeriodicContinuationTest, theAtlasFamiliesBornAtFlipsHaveTwiceTheImpactsAndAreAdmissible) {
@@ -101,7 +101,7 @@ TEST(PeriodicContinuationTest, theAtlasFamiliesBornAtFlipsHaveTwiceTheImpactsAnd
   for (const ModeFamily<double>& family : atlas.families) {
     ASSERT_FALSE(family.orbits.empty());
     EXPECT_TRUE(family.symmetry == "A" || family.symmetry == "B") << family.id;
-    if (family.bornKind == "period-doubling") {
+    if (family.birth == Birth::PeriodDoubling) {
       ++born;
       const ModeFamily<double>& parent = atlas.families[std::size_t(family.parent)];
       EXPECT_EQ(family.impacts, 2 * parent.impacts);
@@ -152,7 +152,7 @@ TEST(PeriodicContinuationTest, theAtlasHasSymmetricFamiliesOfBothTypes) {
   int onGlom1 = 0;
   for (const ModeFamily<double>& family : atlas.families) {
     for (const FamilyEnd<double>* end : {&family.end, &family.startEnd}) {
-      if (end->kind != "grazing-orbit" || std::abs(end->gloLambda) > 1e-3) continue;
+      if (end->kind != PointKind::GrazingOrbit || std::abs(end->gloLambda) > 1e-3) continue;
       ++onGlom1;
       // Newton at fixed energy cannot follow the family to this end (DP - I turns singular):
       // the last orbit is where the arclength steps stalled, and the end, whose period tends

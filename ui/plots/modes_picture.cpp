@@ -93,7 +93,7 @@ void paintModes(QPainter& painter, const QRectF& area, const std::vector<ModesPi
     const QPointF q = at(mark.at);
     if (!plot.contains(q)) continue;
     // as in the explorer: flips are squares, ends black dots
-    if (mark.label == "flip") {
+    if (mark.label.startsWith(QLatin1String("flip"))) {
       painter.setBrush(Qt::white);
       painter.drawRect(QRectF(q - QPointF(5.5, 5.5), QSizeF(11, 11)));
     } else {

@@ -90,10 +90,10 @@ void ModesPlot::show(const SimUpdate& update) {
         dots[cls][stable ? 0 : 1].push_back(picturePoint(orbit.energy, orbit.period));
       }
       for (const auto& b : family.bifurcations) {
-        if (b.kind == "period-doubling") flips.push_back(picturePoint(b.energy, b.T));
+        if (b.kind == core::PointKind::PeriodDoubling) flips.push_back(picturePoint(b.energy, b.T));
       }
       for (const core::FamilyEnd<double>* end : {&family.end, &family.startEnd}) {
-        if (end->kind == "grazing-orbit" && end->period > 0) ends.push_back(picturePoint(end->energy, end->period));
+        if (end->kind == core::PointKind::GrazingOrbit && end->period > 0) ends.push_back(picturePoint(end->energy, end->period));
       }
     }
     const auto& list = entries();

@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// The atlas on many chains, not only the note's (issue "The atlas right on every chain"): over
+// a sweep of mass ratios in (0, 9/16] on both design branches, two algorithms that must agree
+// (the closed form's scan in the period and the pseudo-arclength continuation in the energy)
+// give the same flips of the 1IPP family; every located flip, fold and branch point has the
+// trace its definition says; every flip in the range gives its own family (twice its period,
+// near its orbit) or says why not; no family jumps onto another; narrow ranges keep a flip.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "core/chain.h"
+#include "core/nonlinear_modes.h"
+#include "core/orbits.h"
+#include "core/periodic_continuation.h"
+#include "core/setup.h"
+
+namespace grazelab::core {
+namespace {
+
+Chain<double> resonantChain(double m2, Branch branch) {
+  return *makeChain(*designedModel(1.0, m2, 1.0, 1.0, branch)).chain;
+}
+
+double grazingEnergy(const Chain<double>& chain) {
+  return physicalEnergy(chain, gloData(chain, lambdaStar(chain)));
+}
+
+struct Case {
+  double m2;
+  Branch branch;
+};
+
+// chains the note does not name, both branches (the lower one holds close pairs of flips)
+std::vector<Case> sweep() {
+  std::vector<Case> cases;
+  for (const double m2 : {0.05, 0.1, 0.2, 0.3, 0.4, 0.45, 0.5, 0.55, 0.5625}) {
+    cases.push_back({m2, Branch::Upper});
+    cases.push_back({m2, Branch::Lower});
+  }
+  return cases;
+}
+
+std::string name(const Case& c) {
+  return "m2/m1 = " + std::to_string(c.m2) + (c.branch == Branch::Upper ? " upper" : " lower");
+}
+
+TEST(AtlasChainsTest, theScanAndTheContinuationFindTheSameFlipsOfTheOnePeriodicFamily) {
+  for (const Case& c : sweep()) {
+    const Chain<double> chain = resonantChain(c.m2, c.branch);
+    const OnePeriodicScan<double> scan = scanOnePeriodicFamily(chain, 400);
+    ASSERT_TRUE(scan.complete);
+    // the part that ends on the grazing orbit at T2, continued in energy from an orbit of it
+    const double E0 = grazingEnergy(chain);
+    ContinuationOptions<double> options;
+    options.energyLow = E0 / 100;
+    options.energyHigh = E0 * 1000;
+    const PeriodicOrbit<double>& start = scan.orbits.back();  // nearest T2
+    const ContinuedFamily<double> up = continueFamily(chain, start, +1, options);
+    double lowest = start.energy, highest = start.energy;
+    for (const FamilyOrbit<double>& o : up.orbits) {
+      lowest = std::min(lowest, o.energy);
+      highest = std::max(highest, o.energy);
+    }
+    std::vector<double> continued;
+    for (const FamilyBifurcation<double>& b : up.bifurcations) {
+      if (b.kind != PointKind::PeriodDoubling) continue;
+      EXPECT_TRUE(b.checked) << name(c) << ": a flip of the continuation not solved, trace " << b.trace;
+      continued.push_back(b.energy);
+    }
+    // every flip of the scan in the part the continuation covered, and no other
+    std::vector<double> closed;
+    const double lastPartStart = [&] {
+      double T = 0;
+      for (const FamilyBifurcation<double>& b : scan.points) {
+        if (b.kind == PointKind::InteriorGrazing || b.kind == PointKind::ImpactSpeedZero ||
+            b.kind == PointKind::EnergyLimit || b.kind == PointKind::Undecided) {
+          T = b.T;
+        }
+      }
+      return T;
+    }();
+    for (const FamilyBifurcation<double>& b : scan.points) {
+      if (b.kind != PointKind::PeriodDoubling || b.T < lastPartStart) continue;
+      if (b.energy < lowest || b.energy > highest) continue;
+      EXPECT_TRUE(b.checked) << name(c);
+      EXPECT_NEAR(b.trace, -2.0, 1e-6) << name(c);
+      closed.push_back(b.energy);
+    }
+    ASSERT_EQ(continued.size(), closed.size()) << name(c);
+    std::sort(continued.begin(), continued.end());
+    std::sort(closed.begin(), closed.end());
+    for (std::size_t i = 0; i < closed.size(); ++i) {
+      EXPECT_NEAR(continued[i], closed[i], 1e-8 * closed[i]) << name(c) << ", flip " << i;
+    }
+  }
+}
+
+TEST(AtlasChainsTest, theLowerBranchsClosePairOfFlipsGivesBothFamilies) {
+  // m2/m1 = 1/2, lower design: the trace dips below -2 between E = 0.2141 and 0.2337 only
+  const Chain<double> chain = resonantChain(0.5, Branch::Lower);
+  const double E0 = grazingEnergy(chain);
+  const ModesAtlas<double> atlas = computeModesAtlas(chain, 2, E0 / 100, E0 * 10000);
+  ASSERT_TRUE(atlas.complete);
+  std::vector<const FamilyBifurcation<double>*> flips;
+  for (const ModeFamily<double>& family : atlas.families) {
+    if (family.impacts != 1) continue;
+    for (const FamilyBifurcation<double>& b : family.bifurcations) {
+      if (b.kind == PointKind::PeriodDoubling) flips.push_back(&b);
+    }
+  }
+  ASSERT_EQ(flips.size(), 2u);
+  EXPECT_NEAR(flips[0]->energy + flips[1]->energy, 0.2141176470588235 + 0.2337472607742878, 1e-12);
+  std::set<int> born;
+  for (const FamilyBifurcation<double>* flip : flips) {
+    ASSERT_GE(flip->born, 0) << flip->birthProblem;
+    born.insert(flip->born);
+    const ModeFamily<double>& family = atlas.families[std::size_t(flip->born)];
+    EXPECT_EQ(family.impacts, 2);
+    // born here: twice this flip's period, not the other's (they differ by 1.4 %)
+    EXPECT_NEAR(family.orbits.front().period, 2 * flip->T, 2e-3 * flip->T);
+  }
+  EXPECT_EQ(born.size(), 2u);  // two families, one per flip
+}
+
+// Along every family of the atlas: the rows are admissible orbits of its impacts, neighbours
+// are near each other (no jump onto another family), and every located special point has the
+// trace its definition says.
+void expectSoundAtlas(const Chain<double>& chain, const ModesAtlas<double>& atlas, const std::string& label) {
+  for (const ModeFamily<double>& family : atlas.families) {
+    for (std::size_t i = 0; i < family.orbits.size(); i += 5) {
+      const PeriodicOrbit<double> again =
+          evaluateOrbit(chain, family.orbits[i].state, family.impacts, 1e6 * defaultCloseTolerance<double>());
+      EXPECT_TRUE(again.admissible) << label << ", family " << family.id << ", row " << i << ": " << again.reason;
+    }
+    for (std::size_t i = 1; family.impacts > 1 && i < family.orbits.size(); ++i) {
+      const FamilyOrbit<double>& a = family.orbits[i - 1];
+      const FamilyOrbit<double>& b = family.orbits[i];
+      // steps are at most 0.1 in ln E and in u1 / d
+      EXPECT_LT(std::abs(std::log(b.energy / a.energy)), 0.2) << label << ", family " << family.id << ", row " << i;
+      EXPECT_LT(std::abs(b.state.u1 - a.state.u1) / chain.model.gap, 0.2) << label << ", family " << family.id;
+    }
+    for (const FamilyBifurcation<double>& b : family.bifurcations) {
+      if (!b.checked) continue;
+      if (b.kind == PointKind::PeriodDoubling) EXPECT_NEAR(b.trace, -2.0, 1e-6) << label;
+      if (b.kind == PointKind::Fold || b.kind == PointKind::BranchPoint) EXPECT_NEAR(b.trace, 2.0, 1e-6) << label;
+    }
+  }
+}
+
+TEST(AtlasChainsTest, onEveryChainEveryFlipGivesItsFamilyOrSaysWhyAndNoFamilyJumps) {
+  for (const Case& c : sweep()) {
+    const Chain<double> chain = resonantChain(c.m2, c.branch);
+    const double E0 = grazingEnergy(chain);
+    const ModesAtlas<double> atlas = computeModesAtlas(chain, 2, E0 / 10, E0 * 100);
+    ASSERT_TRUE(atlas.complete);
+    expectSoundAtlas(chain, atlas, name(c));
+    std::set<int> born;
+    for (const ModeFamily<double>& family : atlas.families) {
+      if (family.impacts != 1) continue;
+      for (const FamilyBifurcation<double>& b : family.bifurcations) {
+        if (b.kind != PointKind::PeriodDoubling) continue;
+        EXPECT_TRUE(b.born >= 0 || !b.birthProblem.empty()) << name(c) << ": a flip with no family and no word";
+        if (b.born < 0) continue;
+        const ModeFamily<double>& child = atlas.families[std::size_t(b.born)];
+        EXPECT_EQ(child.impacts, 2) << name(c);
+        // the family met again at a second flip was born at the first
+        if (child.parent != family.id || child.bornEnergy != b.energy) {
+          EXPECT_EQ(child.end.kind, PointKind::PeriodDoubling) << name(c);
+          continue;
+        }
+        EXPECT_NEAR(child.orbits.front().period, 2 * b.T, 1e-2 * b.T) << name(c);
+        EXPECT_TRUE(born.insert(b.born).second) << name(c) << ": one family for two flips";
+      }
+    }
+  }
+}
+
+TEST(AtlasChainsTest, aNarrowRangeAroundAFlipKeepsItWithItsFamily) {
+  const Chain<double> chain = resonantChain(0.5, Branch::Upper);
+  // the default chain's flip at E = 0.7, in a range of +-1e-5 around it and in ranges ending at it
+  for (const auto& [low, high] : {std::pair{0.69999, 0.70001}, std::pair{0.5, 0.7}, std::pair{0.7, 1.0}}) {
+    const ModesAtlas<double> atlas = computeModesAtlas(chain, 2, low, high);
+    ASSERT_TRUE(atlas.complete);
+    bool found = false;
+    for (const ModeFamily<double>& family : atlas.families) {
+      for (const FamilyBifurcation<double>& b : family.bifurcations) {
+        if (b.kind != PointKind::PeriodDoubling || std::abs(b.energy - 0.7) > 1e-12) continue;
+        found = true;
+        EXPECT_GE(b.born, 0) << low << ":" << high << ": " << b.birthProblem;
+      }
+    }
+    EXPECT_TRUE(found) << "the flip at E = 0.7 is missing from " << low << ":" << high;
+  }
+}
+
+TEST(AtlasChainsTest, theContinuationDoesNotJumpOntoAnotherFamily) {
+  // m2/m1 = 0.55, lower design: the 2-impact family of symmetry B goes on to GLOM1 at
+  // E = 2.585410196624968 (T -> 3 T1); it once jumped onto the type-A family at E = 2.44
+  const Chain<double> chain = resonantChain(0.55, Branch::Lower);
+  const double E0 = grazingEnergy(chain);
+  const ModesAtlas<double> atlas = computeModesAtlas(chain, 4, E0 / 100, E0 * 10000);
+  ASSERT_TRUE(atlas.complete);
+  expectSoundAtlas(chain, atlas, "m2 = 0.55 lower");
+  bool glom1 = false;
+  for (const ModeFamily<double>& family : atlas.families) {
+    if (family.impacts == 2 && family.symmetry == "B") {
+      EXPECT_EQ(family.end.kind, PointKind::GrazingOrbit);
+      EXPECT_TRUE(family.end.exact);
+      EXPECT_NEAR(family.end.energy, 2.585410196624968, 1e-12);
+      glom1 = true;
+    }
+    // the 4-impact family's branch point where the trace is 2 (1.3974598034474)
+    for (const FamilyBifurcation<double>& b : family.bifurcations) {
+      if (b.kind == PointKind::BranchPoint && family.impacts == 4) {
+        EXPECT_NEAR(b.energy, 1.3974598034474, 1e-9);
+      }
+    }
+  }
+  EXPECT_TRUE(glom1);
+}
+
+}  // namespace
+}  // namespace grazelab::core
