@@ -113,6 +113,7 @@ std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OneP
   const PeriodicOrbit<S>* previous = nullptr;
   bool previousEnded = true;  // a part's end lies between the previous row and this one
   bool previousIn = false;
+  bool previousOnEdge = false;
   for (const Row& row : rows) {
     if (stop.stop_requested()) return {};
     const PeriodicOrbit<S>& orbit = row.orbit;
@@ -120,7 +121,7 @@ std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OneP
     // a special point a hair outside the range lies on its edge: the piece ends or begins there
     const bool onEdge = row.point && !range.holds(orbit.energy) && range.holdsPoint(orbit.energy);
     const bool in = range.holds(orbit.energy) || onEdge;
-    if (!partStarts && previousIn != in && !onEdge && previous && !range.holdsPoint(previous->energy)) {
+    if (!partStarts && previousIn != in && !onEdge && !previousOnEdge) {
       // the energy leaves or enters the range between the two rows
       const S level = (previousIn ? orbit.energy : previous->energy) > range.high ? range.high : range.low;
       const std::optional<PeriodicOrbit<S>> edge =
@@ -153,6 +154,7 @@ std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OneP
     }
     previous = &orbit;
     previousIn = in;
+    previousOnEdge = onEdge;
   }
   // the last part ends on its grazing orbit at T2 (the scan's last point) when it reaches there
   if (open) {

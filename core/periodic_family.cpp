@@ -381,7 +381,14 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
     const S dv = (found.state.v1 - orbit.state.v1) / (d * w);
     const S distance = sqrt(du * du + dv * dv);
     const S along = abs(du * eu / d + dv * ev / (d * w));
-    return distance <= S(30.0 * std::sqrt(offset)) && along >= S(0.5) * distance;
+    // after k impacts the orbit born here is at the mirror image, about twice as far from its
+    // start: the flip's own orbit run twice (which P^2k - x = 0 also solves) is not
+    const BasicState<S>& half = found.events[std::size_t(impacts - 1)].after;
+    const S hu = (half.u1 - found.state.u1) / d;
+    const S hv = (half.v1 - found.state.v1) / (d * w);
+    const S halfway = sqrt(hu * hu + hv * hv);
+    return distance <= S(30.0 * std::sqrt(offset)) && along >= S(0.5) * distance &&
+           halfway >= distance && halfway > S(1e3) * closeTolerance(found);
   };
   const double largest = std::min(1e-3, maxRelativeOffset);
   std::string problem;
