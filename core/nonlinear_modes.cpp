@@ -67,8 +67,10 @@ std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OneP
   for (const PeriodicOrbit<S>& orbit : scan.orbits) rows.push_back({orbit, std::nullopt});
   for (const FamilyBifurcation<S>& point : scan.points) {
     if (point.kind == PointKind::GrazingOrbit) continue;  // the limit at T2 is no orbit of the family
-    std::optional<PeriodicOrbit<S>> orbit = orbitAt(point.T);
-    if (orbit) rows.push_back({std::move(*orbit), point});
+    // the located orbit itself (the closed form at its period need not give it again: near T1
+    // the period of a polished orbit is not the one asked for)
+    PeriodicOrbit<S> orbit = evaluateOrbit(chain, point.state, 1, std::numeric_limits<S>::infinity());
+    if (orbit.admissible) rows.push_back({std::move(orbit), point});
   }
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.orbit.period < b.orbit.period; });
 

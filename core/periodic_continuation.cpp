@@ -110,34 +110,51 @@ std::optional<Vector3<S>> solve(std::array<Vector3<S>, 3> a, Vector3<S> b) {
 
 // A point of the family on the hyperplane through `plane` normal to `t`, by Newton on the
 // family's equations and the arclength condition from `y`. Nothing when it does not converge,
-// or when an iterate goes farther than `reach` from `y`: a corrector that wanders that far has
-// left for another family.
+// or when it converges farther than `reach` from `y`: an orbit that far from the predictor
+// belongs to another family.
 template <typename S>
 std::optional<std::pair<Vector3<S>, Evaluation<S>>> correct(const Chain<S>& chain, const Units<S>& units,
                                                             Vector3<S> y, const Vector3<S>& plane,
                                                             const Vector3<S>& t, int impacts, const S& reach) {
   using std::abs;
   const S tolerance = S(64) * epsilon<S>() * std::max(S(1), norm(y));
-  S previousStep = std::numeric_limits<S>::infinity();
+  S previousStep = std::numeric_limits<S>::infinity();  // the smallest so far
+  int sinceSmallest = 0;
   const Vector3<S> predicted = y;
+  const auto near = [&](const Vector3<S>& x, const S& bound) {
+    const Vector3<S> away = {x[0] - predicted[0], x[1] - predicted[1], x[2] - predicted[2]};
+    return norm(away) <= bound;
+  };
+  const auto converged = [&](Evaluation<S>&& e) -> std::optional<std::pair<Vector3<S>, Evaluation<S>>> {
+    if (!near(y, reach)) return std::nullopt;  // an orbit of another family
+    return std::pair{y, std::move(e)};
+  };
   for (int iteration = 0; iteration < 40; ++iteration) {
     Evaluation<S> e = evaluate(chain, units, y, impacts);
     if (!e.usable) return std::nullopt;
     const S arclength = t[0] * (y[0] - plane[0]) + t[1] * (y[1] - plane[1]) + t[2] * (y[2] - plane[2]);
     const S size = std::max({abs(e.residual[0]), abs(e.residual[1]), abs(arclength)});
-    if (size <= tolerance) return std::pair{y, std::move(e)};
+    if (size <= tolerance) return converged(std::move(e));
     const std::optional<Vector3<S>> step =
         solve<S>({e.jacobian[0], e.jacobian[1], t}, {-e.residual[0], -e.residual[1], -arclength});
     if (!step) return std::nullopt;
     // Newton contracts near a regular point and at least halves its steps near a singular one
     const S stepSize = norm(*step);
     // a correction within the rounding of y: the residual is at the noise of the path itself
-    if (stepSize <= tolerance) return std::pair{y, std::move(e)};
-    if (iteration >= 3 && !(stepSize < previousStep)) return std::nullopt;
-    previousStep = stepSize;
+    if (stepSize <= tolerance) return converged(std::move(e));
+    if (stepSize < previousStep) {
+      previousStep = stepSize;
+      sinceSmallest = 0;
+    } else if (++sinceSmallest >= 3) {
+      // steps that no longer fall: at the noise of the path when the residual is as small as
+      // an orbit of this amplification can close, else not converging
+      if (size <= closeTolerance(e.orbit)) return converged(std::move(e));
+      return std::nullopt;
+    }
     for (int i = 0; i < 3; ++i) y[std::size_t(i)] += (*step)[std::size_t(i)];
-    const Vector3<S> away = {y[0] - predicted[0], y[1] - predicted[1], y[2] - predicted[2]};
-    if (!(norm(away) <= reach)) return std::nullopt;
+    // a strongly sheared map (a light mass 2: DP's entries in the thousands) sends the first
+    // iterates far across the family before they come back; only wandering off is cut short
+    if (!near(y, S(100) * reach)) return std::nullopt;
   }
   return std::nullopt;
 }
@@ -210,7 +227,7 @@ PeriodicOrbit<S> approachInEnergy(const Chain<S>& chain, const Units<S>& units, 
     if (!found.orbit) return std::nullopt;
     const bool near = abs(found.orbit->state.u1 - inside.state.u1) < S(0.05) * units.position &&
                       abs(found.orbit->state.v1 - inside.state.v1) < S(0.05) * units.speed;
-    return near ? std::move(found.orbit) : std::nullopt;
+    return near && stabilityDecided(*found.orbit) ? std::move(found.orbit) : std::nullopt;
   };
   if (onFamily(outside)) return inside;  // the family goes on there: nothing to refine
   // the bracket in the energies asked for (an orbit's own energy differs from its target by
@@ -306,8 +323,9 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
   PeriodicOrbit<S> last = start;
   // a corrected orbit was evaluated with no closing tolerance: admissible in every other way,
   // and closed as a found orbit must be
+  // and its stability decided
   const auto admissible = [&](const PeriodicOrbit<S>& orbit) {
-    return orbit.admissible && orbit.checks.periodicityResidual <= closeTolerance(orbit);
+    return orbit.admissible && orbit.checks.periodicityResidual <= closeTolerance(orbit) && stabilityDecided(orbit);
   };
   for (int step = 0; step < options.maxSteps; ++step) {
     if (stop.stop_requested()) return finish(PointKind::Stopped, last);
@@ -376,7 +394,10 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
     // that family (its energy turns there: beyond lies the same orbit, begun half a period
     // later): it ends on the flip
     const S nearest = std::min(halfwayDistance(units, last), halfwayDistance(units, orbit));
-    if (turns && nearest < S(0.02) && nearest < halfwayDistance(units, start) / S(2)) {
+    // (GLOM1, where the impacts of a family ending on it also merge, has impact speeds near 0;
+    // a flip orbit's impacts are real)
+    const bool impactsReal = std::min(last.minImpactSpeed, orbit.minImpactSpeed) > S(0.05) * units.speed;
+    if (turns && impactsReal && nearest < S(0.02) && nearest < halfwayDistance(units, start) / S(2)) {
       const bool lastNearer = halfwayDistance(units, last) <= halfwayDistance(units, orbit);
       if (!lastNearer) family.orbits.push_back(summary(orbit));
       return finish(PointKind::PeriodDoubling, lastNearer ? last : orbit);

@@ -226,7 +226,17 @@ S defaultCloseTolerance() {
 template <typename S>
 S closeTolerance(const PeriodicOrbit<S>& orbit) {
   using std::abs;
-  return defaultCloseTolerance<S>() * std::max(S(1), abs(orbit.trace));
+  // at most a million times the default: next to a grazing the saltation's 1 / v2 makes the
+  // amplification grow without bound, while a path that far from closing is no orbit
+  const S amplified = defaultCloseTolerance<S>() * S(8 * std::max(1, orbit.impacts)) *
+                      std::max({S(1), abs(orbit.trace), orbit.amplification});
+  return std::min(amplified, S(1e6) * defaultCloseTolerance<S>());
+}
+
+template <typename S>
+bool stabilityDecided(const PeriodicOrbit<S>& orbit) {
+  using std::abs;
+  return abs(orbit.checks.detMinus1) <= S(1e3) * defaultCloseTolerance<S>();
 }
 
 template <typename S>
@@ -306,6 +316,11 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
   }
   orbit.reduced = {{{carried[0][0], carried[1][0]}, {carried[0][2], carried[1][2]}}};
   orbit.energyDerivative = {carried[2][0], carried[2][2]};
+  {
+    const S w = chain.omegaSlow;  // (u1 / d, v1 / (w d)): DP's entries as the continuation sees them
+    orbit.amplification = std::max({S(1), abs(orbit.reduced[0][0]), abs(orbit.reduced[1][1]),
+                                    abs(orbit.reduced[0][1] * w), abs(orbit.reduced[1][0] / w)});
+  }
   const S trace = orbit.reduced[0][0] + orbit.reduced[1][1];
   const S det = orbit.reduced[0][0] * orbit.reduced[1][1] - orbit.reduced[0][1] * orbit.reduced[1][0];
   orbit.trace = trace;
@@ -431,7 +446,9 @@ OrbitSearch<S> onePeriodicOrbitStability(const Chain<S>& chain, const S& T) {
     // polished by Newton at their energy (the orbit itself is well conditioned there)
     OrbitSearch<S> polished = findOrbit(chain, orbit.energy, data.postImpact.u1, data.postImpact.v1, 1);
     using std::abs;
-    if (polished.orbit && abs(polished.orbit->period - T) <= S(1e-6) * T) orbit = std::move(*polished.orbit);
+    if (polished.orbit && abs(polished.orbit->period - T) <= S(1e-6) * T && stabilityDecided(*polished.orbit)) {
+      orbit = std::move(*polished.orbit);
+    }
   }
   if (!orbit.admissible) {
     search.problem = "the 1IPP orbit of period " + formatScalar(T) + " is not admissible: " + orbit.reason;
@@ -473,6 +490,7 @@ std::string orbitSymmetry(const PeriodicOrbit<S>& orbit, const S& tolerance) {
                                                         const S&);                                 \
   template S defaultCloseTolerance<S>();                                                           \
   template S closeTolerance<S>(const PeriodicOrbit<S>&);                                          \
+  template bool stabilityDecided<S>(const PeriodicOrbit<S>&);                                     \
   template PeriodicOrbit<S> evaluateOrbit<S>(const Chain<S>&, const BasicState<S>&, int,           \
                                              const S&);                                            \
   template OrbitSearch<S> findOrbit<S>(const Chain<S>&, const S&, const S&, const S&, int,         \

@@ -87,6 +87,9 @@ struct PeriodicOrbit {
   Matrix2<S> reduced{};           ///< DP^k in (u1, v1) at fixed energy
   std::array<S, 2> energyDerivative{};  ///< d(P^k)/dE at fixed (u1, v1)
   S trace = 0;                    ///< tr DP^k = tr M - 2
+  /// the largest entry of DP^k in units of the gap and of w2 times the gap (at least 1): how
+  /// much the return map amplifies the rounding of its own path
+  S amplification = 1;
   /// the nontrivial pair of multipliers (eigenvalues of DP^k) as (re, im)
   std::array<std::array<S, 2>, 2> multipliers{};
   Stability stability = Stability::Elliptic;
@@ -112,10 +115,19 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
 template <typename S>
 S defaultCloseTolerance();
 
-/// The tolerance `orbit` can close to in S: defaultCloseTolerance times its largest multiplier
-/// (at least 1), since the return map amplifies the rounding of its own path by as much.
+/// The tolerance `orbit` can close to in S: defaultCloseTolerance times eight per impact (each
+/// flight and impact adds its rounding: a long 2-impact path of a light mass 2 closes to about
+/// 1000 ulps) times its amplification, since the return map amplifies the rounding of its own
+/// path by as much; at most 1e6 times the default (next to a grazing the amplification grows
+/// without bound).
 template <typename S>
 S closeTolerance(const PeriodicOrbit<S>& orbit);
+
+/// Whether S decides the orbit's stability: det DP = 1 within 1e3 times the default closing
+/// tolerance (next to a grazing or a multiple of T1 the amplification of the rounding spoils it
+/// first). Tables of families keep only such orbits.
+template <typename S>
+bool stabilityDecided(const PeriodicOrbit<S>& orbit);
 
 /// The result of a search: the orbit, or the one line saying why none was found.
 template <typename S>

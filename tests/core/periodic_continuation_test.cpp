@@ -113,7 +113,7 @@ TEST(PeriodicContinuationTest, theAtlasFamiliesBornAtFlipsHaveTwiceTheImpactsAnd
       const PeriodicOrbit<double> orbit =
           evaluateOrbit(chain, family.orbits[i].state, family.impacts, 1e6 * defaultCloseTolerance<double>());
       EXPECT_TRUE(orbit.admissible) << "family " << family.id << " orbit " << i << ": " << orbit.reason;
-      EXPECT_LT(std::abs(orbit.checks.detMinus1), 1e-10);
+      EXPECT_LT(std::abs(orbit.checks.detMinus1), 1e-10) << "family " << family.id << " orbit " << i;
     }
   }
   EXPECT_GE(born, 3);  // two 2-impact families from the 1IPP flips, a 4-impact one from a 2-impact flip
