@@ -394,12 +394,14 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
     if (orbit.events.size() != std::size_t(impacts) ||
         std::any_of(orbit.events.begin(), orbit.events.end(),
                     [](const BasicEvent<S>& e) { return e.type != EventType::Impact; })) {
+      search.refusal = orbit.refusal;
       search.problem = "Newton left the " + std::to_string(impacts) + "-impact orbits at iteration " +
                        std::to_string(iteration + 1) + " (" + orbit.reason + ")";
       return search;
     }
     if (orbit.checks.periodicityResidual <= closeTolerance(orbit)) {
       if (!orbit.admissible) {
+        search.refusal = orbit.refusal;
         search.problem = "the orbit found is not admissible: " + orbit.reason;
         return search;
       }
@@ -437,6 +439,7 @@ OrbitSearch<S> onePeriodicOrbitStability(const Chain<S>& chain, const S& T) {
   OrbitSearch<S> search;
   const OnePeriodicOrbit<S> data = onePeriodicOrbit(chain, T);
   if (!data.admissible) {
+    if (data.refusal == OnePeriodicRefusal::NotDecided) search.refusal = OrbitRefusal::Undecided;
     search.problem = "no admissible 1IPP orbit of period " + formatScalar(T) + ": " + data.reason;
     return search;
   }
@@ -451,8 +454,24 @@ OrbitSearch<S> onePeriodicOrbitStability(const Chain<S>& chain, const S& T) {
     }
   }
   if (!orbit.admissible) {
+    search.refusal = orbit.refusal;
     search.problem = "the 1IPP orbit of period " + formatScalar(T) + " is not admissible: " + orbit.reason;
     return search;
+  }
+  if (orbit.state.u1 == data.postImpact.u1 && orbit.state.v2 == data.postImpact.v2) {
+    // the closed form's own data: cot(w_j T / 2) loses digits like (w_j T / 2) / sin(w_j T / 2)
+    // near a multiple of T_j (near T2 the impact speed, a 1e-11 fraction of w2 d just below T2,
+    // is off by 1e-5 of itself in double)
+    using std::abs;
+    using std::sin;
+    S conditioning = 1;
+    for (const S& w : {S(chain.ratio * chain.omegaSlow), chain.omegaSlow}) {
+      const S half = w * T / S(2);
+      conditioning = std::max(conditioning, S(abs(half / sin(half))));
+    }
+    search.dataError = S(8) * epsilon<S>() * conditioning;
+  } else {
+    search.dataError = closeTolerance(orbit);  // polished: an orbit of its own period to its closing
   }
   search.orbit = std::move(orbit);
   return search;

@@ -134,7 +134,13 @@ template <typename S>
 struct OrbitSearch {
   std::optional<PeriodicOrbit<S>> orbit;
   std::string problem;
+  /// why none was found when the path could not be decided in S (a higher precision may):
+  /// OrbitRefusal::Undecided; the orbit's own refusal when one was computed; None otherwise
+  OrbitRefusal refusal = OrbitRefusal::None;
   int iterations = 0;
+  /// the relative error of the orbit's data from the closed form (1IPP only): the rounding of
+  /// S amplified by how near T is to a multiple of T1 or T2; 0 when not from the closed form
+  S dataError = 0;
 };
 
 /// A kIPP orbit of energy `energy` near the section point (u1, v1) on H+, by Newton on

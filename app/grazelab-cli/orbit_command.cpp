@@ -97,7 +97,7 @@ Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, 
     const std::optional<S> T = scalarOption<S>(parser, "period", error);
     if (!T) return Outcome::Refused;
     search = core::onePeriodicOrbitStability(chain, *T);
-    if (!search.orbit && search.problem.find("too near tangent") == std::string::npos) {
+    if (!search.orbit && search.refusal != core::OrbitRefusal::Undecided) {
       // say where the family is, to the resolution of a scan of 400 periods
       const S T2 = core::twoPi<S>() / chain.omegaSlow;
       std::string parts;
@@ -137,8 +137,18 @@ Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, 
   }
   if (!search.orbit) {
     error = QString::fromStdString("orbit: " + search.problem);
-    return search.problem.find("too near tangent") != std::string::npos ? Outcome::Undecided
-                                                                          : Outcome::Refused;
+    return search.refusal == core::OrbitRefusal::Undecided ? Outcome::Undecided : Outcome::Refused;
+  }
+  // the closed form's data must be right to 1e-9, or a higher precision is needed
+  constexpr double kDataAccuracy = 1e-9;
+  if (core::toDouble(search.dataError) > kDataAccuracy) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "orbit --onepp: this near a multiple of T1 or T2 the closed form's data are right only to "
+                  "about %.1g (relative) in %s: use --precision quad (or auto)",
+                  core::toDouble(search.dataError), precision.c_str());
+    error = text;
+    return Outcome::Undecided;
   }
   const std::string json = orbitJson(*search.orbit, chain, precision);
   std::fwrite(json.data(), 1, json.size(), io.out);

@@ -78,5 +78,22 @@ EXPECT_WORD="no admissible 1IPP orbit" expect_invalid orbit --onepp --period 9.5
 EXPECT_WORD="T/T2 in about" expect_invalid orbit --onepp --period 5
 EXPECT_WORD="does not apply" expect_invalid orbit --onepp --period 6 --contacts 3
 EXPECT_WORD="only apply to 'orbit'" expect_invalid simulate --energy 2
+# near T2 the closed form loses digits like 1 / (T2 - T): double refuses to print data it cannot
+# give to 1e-9, auto goes to binary128, whose impact speed is the exact orbit's (issue 29, item 8)
+EXPECT_WORD="--precision quad" expect_invalid orbit --onepp --period 8.8857658763 --precision double
+expect_ok orbit --onepp --period 8.8857658763 --precision auto || exit 1
+python3 - "$out" <<'PY' || fail "1IPP orbit 2e-12 below T2 in auto"
+import json, sys
+from decimal import Decimal
+o = json.load(open(sys.argv[1]))
+assert o['precision'] == 'quad', o['precision']
+# the impact speed of the orbit of period T = 8.8857658763 (tools/reference/periodic_ref.py onepp, 50 digits)
+v2 = Decimal(o['state']['v2'])
+assert abs(v2 / Decimal('-5.5774980105873267e-12') - 1) < Decimal('1e-9'), v2
+PY
+# just below T1 (lower design) the orbit exists: it is found, not refused as "does not close"
+expect_ok orbit --onepp --m2 0.5 --branch lower --period 5.4408539528933835 || exit 1
+python3 -c "import json,sys; o=json.load(open(sys.argv[1])); assert o['admissible'] and abs(float(o['state']['v2']) + 0.0032648415408) < 1e-12, o['state']" "$out" || fail "1IPP orbit just below T1"
+
 if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
 echo "orbit: all checks passed"
