@@ -128,7 +128,11 @@ Contact<S> nextContactDetuned(const Flight<S>& flight, const S& horizon, std::st
                                            S(std::numeric_limits<double>::quiet_NaN())),
                             0, point.anchor);
         }
-        if (peakValue >= -band && peakValue <= band && peak > point.offset - window) {
+        // a flight that leaves the stop has its own zero at s = 0, decided inside the Taylor
+        // window by the reduced gap above: a "touch" there is the start, not a contact (with a
+        // horizon below the window, 1e-300, it was recorded again and again at t = 0)
+        const bool theStart = order > 0 && point.anchor == 0 && peak <= window;
+        if (!theStart && peakValue >= -band && peakValue <= band && peak > point.offset - window) {
           return tangentAt(flight, FlightTime<S>{point.anchor, peak}, !nearAnchor);
         }
       }

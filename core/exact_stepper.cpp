@@ -120,6 +120,11 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
 
   const S duration = contact.time.value();
   if (state.tau + duration > tauEnd) return endAt(tauEnd, Step<S>::Kind::End);
+  if (flight.startsOnStop() && !(duration > 0)) {
+    // a flight from the stop cannot come back to it in no time: that would be the start itself,
+    // recorded for ever; the horizon is below what the search can tell from it
+    return endAt(isFinite(remaining) ? tauEnd : state.tau, Step<S>::Kind::End);
+  }
   S u1Residual = 0;
   BasicState<S> arrival = flight.at(contact.time, &u1Residual);
   arrival.u2 = m_gap;

@@ -77,6 +77,24 @@ TEST(Simulate, StopsAtTheTimeLimitOnTheFlight) {
   EXPECT_NEAR(result.final.v2, expected.v2, 1e-12);
 }
 
+TEST(Simulate, AFlightFromTheStopIsNeverRecordedAgainWhateverTheHorizon) {
+  // GLO data on detuned chains leave the stop at t = 0; a horizon below the contact search's
+  // resolution (1e-300, 3.7e-262) once recorded the start as a grazing again and again at t = 0
+  for (const Model& model : {Model{1.0, 0.5, 1.0, 0.6, 1.0}, Model{1.0, 0.5, 1.0, 1.0, 1.0}, testing::detunedChain()}) {
+    for (const double tEnd : {1e-300, 3.7e-262, 1e-100, 1e-20, 1e-8}) {
+      Request request;
+      request.initial = {-0.16666666666666680, 1.0, 0.0, 0.0};  // u1 below the gap: it leaves
+      request.maxContacts = 1000;
+      request.tEnd = tEnd;
+      request.needs.events = true;
+      const Result result = simulate(model, request);
+      EXPECT_EQ(result.stop, StopReason::TimeLimit) << "t_end = " << tEnd;
+      EXPECT_TRUE(result.events.empty()) << "t_end = " << tEnd << ": " << result.events.size() << " events";
+      EXPECT_EQ(result.tFinal, tEnd);
+    }
+  }
+}
+
 TEST(Simulate, ChunkedRunEqualsOneShotRun) {
   const Model model = testing::resonantChain(0.5, 1.0, Branch::Lower);
   const Request request = nearGrazingRequest(model, 500);
