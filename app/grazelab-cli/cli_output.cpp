@@ -122,20 +122,28 @@ std::string trustJson(const core::Trust& trust) {
                  {"reason", quoted(trust.reason)}});
 }
 
-std::string precisionJson(const PrecisionReport& precision) {
+// `initialUsed`: the start of a run raised to a higher precision, in that precision's digits
+// (the head, written before the raise, holds the lower one's); empty when not raised
+std::string precisionJson(const PrecisionReport& precision, const std::string& initialUsed) {
   std::string escalations = "[";
   for (const std::string& line : precision.escalations) {
     escalations += (escalations.size() > 1 ? ", " : "") + quoted(line);
   }
+  if (initialUsed.empty()) {
+    return object({{"requested", quoted(precision.requested)},
+                   {"used", quoted(precision.used)},
+                   {"escalations", escalations + "]"}});
+  }
   return object({{"requested", quoted(precision.requested)},
                  {"used", quoted(precision.used)},
-                 {"escalations", escalations + "]"}});
+                 {"escalations", escalations + "]"},
+                 {"initial_state_used", initialUsed}});
 }
 
 template <typename S>
 std::string endFields(const core::BasicResult<S>& result, bool interrupted,
                       const core::Trust& trust, const PrecisionReport& precision,
-                      const std::string& indent) {
+                      const std::string& indent, const std::string& initialUsed) {
   const core::Cost& cost = result.cost;
   auto field = [&](const char* key, const std::string& value) {
     return indent + quoted(key) + ": " + value;
@@ -157,7 +165,7 @@ std::string endFields(const core::BasicResult<S>& result, bool interrupted,
   out += field("accuracy", object({{"max_contact_residual", number(cost.maxContactResidual)}})) +
          ",\n";
   out += field("trust", trustJson(trust)) + ",\n";
-  out += field("precision", precisionJson(precision)) + ",\n";
+  out += field("precision", precisionJson(precision, initialUsed)) + ",\n";
   out += field("timing", object({{"seconds", number(cost.wallSeconds)},
                                  {"contacts_per_second", number(contactsPerSecond(cost))}}));
   return out;
@@ -272,12 +280,17 @@ void RunWriter<S>::event(const core::BasicEvent<S>& event) {
 template <typename S>
 void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
                        const core::Trust& trust, const PrecisionReport& precision) {
+  // a run raised to this precision started from this precision's reading of the input: the
+  // head holds the lower one's, so the start used is said again here
+  const std::string initialUsed =
+      precision.escalations.empty() ? std::string() : stateJson(S(0), m_run.request.initial);
   switch (m_run.format) {
     case Format::Json:
-      write((m_events == 0 || m_table ? "],\n" : "\n  ],\n") + endFields(result, interrupted, trust, precision, "  ") + "\n}\n");
+      write((m_events == 0 || m_table ? "],\n" : "\n  ],\n") +
+            endFields(result, interrupted, trust, precision, "  ", initialUsed) + "\n}\n");
       break;
     case Format::JsonLines: {
-      std::string fields = endFields(result, interrupted, trust, precision, "");
+      std::string fields = endFields(result, interrupted, trust, precision, "", initialUsed);
       std::string flat;
       for (char c : fields) flat += c == '\n' ? ' ' : c;
       write("{\"record\": \"end\", " + flat + "}\n");
@@ -317,6 +330,11 @@ void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
               (precision.requested == "auto" ? " (auto)" : std::string()) + "\n";
       for (const std::string& line : precision.escalations) {
         text += "               raised: " + line + "\n";
+      }
+      if (!initialUsed.empty()) {
+        const core::BasicState<S>& x = m_run.request.initial;
+        text += "start used     u1=" + number(x.u1) + " u2=" + number(x.u2) + " v1=" + number(x.v1) +
+                " v2=" + number(x.v2) + " (in " + precision.used + ")\n";
       }
       text += "trust          " + std::string(core::toString(trust.verdict)) + ": " + trust.reason + "\n";
       if (trust.verdict != core::Verdict::Unchecked) {

@@ -116,6 +116,18 @@ assert d['precision']['used'] == 'quad' and len(d['precision']['escalations']) =
 assert d['contacts']['impacts'] == 60 and d['contacts']['undecided_touches'] == 0, d['contacts']
 assert abs(d['final']['t'] - 359.87351789519487) < 1e-9, d['final']['t']" || fail "auto precision"
 fi
+# issue 29: a run raised to binary128 says the start it used, in binary128's digits (the head,
+# written before the raise, holds double's): the 1IPP orbit 3e-11 below T1, whose closed form
+# loses digits there (its v2 differs from double's by 2e-6 relative)
+if expect_ok simulate --onepp 4.44288293802508 --contacts 30; then
+  python3 -c "
+import json; from decimal import Decimal; d=json.load(open('$out'), parse_float=Decimal)
+used = d['precision']['initial_state_used']; head = d['initial']['state']
+assert d['precision']['used'] == 'quad', d['precision']
+assert len(str(used['v2'])) > 30, used  # binary128's digits
+assert abs(used['v2'] / head['v2'] - 1) > Decimal('1e-7'), (used, head)" \
+    || fail "the start a raised run used"
+fi
 if expect_ok simulate --glo 0 --perturb 0,0,0,-3e-9 --contacts 60 --precision double; then
   python3 -c "
 import json; d=json.load(open('$out'))
