@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <cstdio>
 
 namespace grazelab::core {
@@ -71,6 +72,12 @@ TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicRequest<H>&
   }
   BasicModel<H> shadowModel = model;
   BasicRequest<H> shadowRequest = request;
+  if constexpr (std::is_same_v<S, double>) {
+    m_inputModel = model;
+    m_inputRequest = request;
+    m_inputRequest->needs = {};
+    m_inputRequest->onEvent = {};
+  }
   if constexpr (std::is_same_v<S, H>) {
     // no wider type: the same precision on a chain 3 times as large, 5 times as heavy and
     // sqrt(3) times as fast rounds every length, speed and time differently, and the chain's
@@ -173,12 +180,12 @@ double TrustMonitor<S>::relativeStateError(const BasicState<H>& primary,
 template <typename S>
 bool TrustMonitor<S>::withinBudget() {
   if (m_mode == TrustMode::Full) return true;
-  // auto: the shadow may cost about twice the run itself, plus a quarter second
-  const double shadowSeconds = m_shadow->result().cost.wallSeconds;
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - m_started).count();
-  const double primarySeconds = std::max(0.0, elapsed - shadowSeconds);
-  return shadowSeconds <= 0.25 + 2.0 * primarySeconds;
+  // auto: the shadow covers a number of events fixed by the precisions alone, so that the same
+  // run always gets the same estimate (a wall-clock budget gave 9e7 one time and 4e8 the next):
+  // about twice the run's own cost, at most a second or so (a long double shadow costs about
+  // as much as the double run; binary128 about fifteen times a long double run)
+  constexpr std::int64_t kEvents = std::is_same_v<S, double> ? (1 << 18) : std::is_same_v<S, long double> ? (1 << 14) : (1 << 16);
+  return m_observed <= kEvents;
 }
 
 template <typename S>
@@ -268,8 +275,35 @@ double TrustMonitor<S>::phaseRounding(const BasicResult<S>& primary) const {
 }
 
 template <typename S>
+void TrustMonitor<S>::arbitrate(const BasicResult<S>& primary, Trust& trust) {
+  // binary128 costs about 20 times a double run: up to 2e4 contacts, a second at most
+  constexpr std::int64_t kArbiterContacts = 20000;
+  if (!m_inputModel || !m_inputRequest || primary.cost.contacts > kArbiterContacts) return;
+  if (m_stop.stop_requested()) return;
+  BasicRequest<Quad> request = convertRequest<Quad>(*m_inputRequest);
+  const BasicResult<Quad> exact = simulate(convertModel<Quad>(*m_inputModel), request, m_stop);
+  if (exact.stop != primary.stop || exact.cost.contacts != primary.cost.contacts) return;  // confirmed
+  using std::abs;
+  const double stateError = relativeStateError(convertState<H>(primary.final), convertState<H>(exact.final));
+  const double timeError = toDouble(Quad(abs(Quad(primary.tFinal) - exact.tFinal) / Quad(m_period)));
+  const double worst = std::max(stateError, timeError);
+  if (!(worst <= kHorizonTolerance)) return;  // the run itself left the path: the alarm holds
+  const double eps = toDouble(epsilon<S>());
+  trust.verdict = worst <= kOkTolerance ? Verdict::Ok : Verdict::Degraded;
+  trust.stateError = std::max(stateError, eps);
+  trust.timeError = std::max(timeError, eps * (toDouble(primary.tFinal) / toDouble(m_period) + 1));
+  trust.horizon = toDouble(primary.tFinal);
+  trust.horizonObserved = true;
+  trust.horizonMethod = "binary128 run of the same input, to the end";
+  trust.reason = "estimated error " + scientific(std::max(trust.stateError, trust.timeError)) +
+                 " (a binary128 run of the same input agrees with this run; the " + shadowName() +
+                 " took another path on its own rounding: a false alarm)";
+}
+
+template <typename S>
 Trust TrustMonitor<S>::finish(const BasicResult<S>& primary) {
   Trust trust = estimate(primary);
+  if (trust.verdict == Verdict::Unreliable) arbitrate(primary, trust);
   accountForUndecidedTouches(trust, primary);
   if (primary.stop == StopReason::SearchBudget) {
     // the run stopped undecided: whatever came before holds, what follows is not known
@@ -372,9 +406,14 @@ Trust TrustMonitor<S>::estimate(const BasicResult<S>& primary) {
   }
   double power = 1;
   double rate = 0;  // per unit time, when exponential
+  // the horizon beyond the comparison is extrapolated conservatively: as if the growth seen over
+  // its second half were exponential (faster than any power from then on), and never beyond
+  // twice the time compared (a run whose error still sits at the rounding shows no growth yet)
+  double cautiousRate = 0;
   if (earlierTime > 0 && now > earlierError && now < kDiverged) {
     power = std::log(now / earlierError) / std::log(compared / earlierTime);
     if (power > 3) rate = std::log(now / earlierError) / (compared - earlierTime);
+    cautiousRate = std::log(now / earlierError) / (compared - earlierTime);
   }
   power = std::max(power, 1.0);
   auto extrapolate = [&](double t) {
@@ -411,11 +450,13 @@ Trust TrustMonitor<S>::estimate(const BasicResult<S>& primary) {
   } else {
     double horizon = timeRounding;
     if (compared > 0 && now < kHorizonTolerance) {
-      horizon = rate > 0 ? compared + std::log(kHorizonTolerance / now) / rate
-                         : compared * std::pow(kHorizonTolerance / now, 1 / power);
+      horizon = 2 * compared;
+      if (cautiousRate > 0) horizon = std::min(horizon, compared + std::log(kHorizonTolerance / now) / cautiousRate);
     }
     trust.horizon = std::min(horizon, timeRounding);
-    trust.horizonMethod += "; beyond t = " + formatScalar(compared) + ": extrapolated (" + growth + ")";
+    trust.horizonMethod += "; held to t = " + formatScalar(compared) +
+                           "; beyond: extrapolated, conservatively (the growth seen taken as exponential, "
+                           "at most twice the time compared)";
   }
 
   const double worst = std::max(trust.stateError, trust.timeError);

@@ -2,7 +2,6 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include <chrono>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -41,7 +40,8 @@ struct Trust {
   /// Estimated error of the worst contact time, in units of T2.
   double timeError = 0;
   /// The time up to which the run holds kHorizonTolerance [time]: observed when the shadow
-  /// run saw the error pass it, else extrapolated from the error's growth.
+  /// run saw the error pass it, else extrapolated conservatively from the error's growth (as
+  /// if exponential, at most twice the time the shadow compared), the same for the same run.
   double horizon = 0;
   bool horizonObserved = false;
   std::string horizonMethod;  ///< e.g. "shadow run in long double; power-law extrapolation"
@@ -103,6 +103,10 @@ class TrustMonitor {
   };
 
   Trust estimate(const BasicResult<S>& primary);
+  /// A double run judged unreliable by its long double shadow: a binary128 run of the same input
+  /// decides whether the run or its shadow left the path (a shadow's own rounding can take it
+  /// through a near-tangent contact another way, a false alarm); short runs only.
+  void arbitrate(const BasicResult<S>& primary, Trust& trust);
   bool shadowing() const { return m_shadow != nullptr && m_active; }
   bool withinBudget();
   std::optional<BasicEvent<H>> nextShadowEvent();
@@ -118,11 +122,12 @@ class TrustMonitor {
   H m_lengthFactor = 1;  ///< the shadow's lengths are this many times the primary's
   H m_timeFactor = 1;    ///< the shadow's times are the primary's divided by this
   std::unique_ptr<BasicSimulator<H>> m_shadow;
+  std::optional<BasicModel<H>> m_inputModel;      ///< the input as the shadow read it (unscaled)
+  std::optional<BasicRequest<H>> m_inputRequest;  ///< for a binary128 arbiter
   std::deque<BasicEvent<H>> m_pending;  ///< shadow events not yet matched (at most a few)
   bool m_active = true;
   std::string m_stopNote;  ///< why the shadow stopped early, if it did
   std::string m_failure;   ///< a structural mismatch (another event type, an extra contact)
-  std::chrono::steady_clock::time_point m_started = std::chrono::steady_clock::now();
   std::int64_t m_observed = 0;
 
   H m_period = 0;            ///< T2 [time]

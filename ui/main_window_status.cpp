@@ -83,10 +83,17 @@ QString MainWindow::trustInWords(const core::Trust& trust, double tEnd) {
         .arg(horizon, error);
   }
   switch (trust.verdict) {
+    // an extrapolated horizon is a conservative lower bound, and is said to be one
     case core::Verdict::Ok:
-      return tr("trust: ok (error ≈ %1; the path holds to 1e-6 until t ≈ %2)").arg(error, horizon);
+      return trust.horizonObserved
+                 ? tr("trust: ok (error ≈ %1; the path holds to 1e-6 until t ≈ %2, observed)").arg(error, horizon)
+                 : tr("trust: ok (error ≈ %1; the path holds to 1e-6 at least until t ≈ %2, extrapolated)")
+                       .arg(error, horizon);
     case core::Verdict::Degraded:
-      return tr("trust: degraded (error ≈ %1; the path holds to 1e-6 until t ≈ %2)").arg(error, horizon);
+      return trust.horizonObserved
+                 ? tr("trust: degraded (error ≈ %1; the path holds to 1e-6 until t ≈ %2, observed)").arg(error, horizon)
+                 : tr("trust: degraded (error ≈ %1; the path holds to 1e-6 at least until t ≈ %2, extrapolated)")
+                       .arg(error, horizon);
     case core::Verdict::Unreliable:
       return tr("trust: unreliable (error ≈ %1): %2").arg(error, QString::fromStdString(trust.reason));
     case core::Verdict::Unchecked: break;

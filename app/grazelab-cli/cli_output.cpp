@@ -340,9 +340,9 @@ void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
       if (trust.verdict != core::Verdict::Unchecked) {
         std::snprintf(line, sizeof line,
                       "               state error %.2g, contact time error %.2g T2; holds 1e-6 "
-                      "until t = %.4g (%s)\n",
-                      trust.stateError, trust.timeError, trust.horizon,
-                      trust.horizonObserved ? "observed" : "extrapolated");
+                      "%s t = %.4g (%s)\n",
+                      trust.stateError, trust.timeError, trust.horizonObserved ? "until" : "at least until",
+                      trust.horizon, trust.horizonObserved ? "observed" : "extrapolated conservatively");
         text += line;
       }
       text += "final          t=" + number(result.tFinal) + " u1=" + number(result.final.u1) +

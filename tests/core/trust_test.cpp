@@ -98,6 +98,43 @@ TEST(Trust, NamesAChaoticRunPastItsHorizon) {
   EXPECT_LE(truth, 10 * early.trust.stateError);
 }
 
+TEST(Trust, AnExtrapolatedHorizonIsConservativeAndTheSameForTheSameRun) {
+  // GLO(0.5) pushed by (0, 0, 0.05, -0.05): double and binary128 part by 1e-6 near t = 8.3e3
+  // (1000 contacts); the horizon extrapolated from 100 or 300 contacts must not lie beyond
+  // where that really happens (a power law once gave 4.55e7 from 300 contacts)
+  const Model model = testing::resonantChain(0.5);
+  State start = gloData(model, computeModes(model), 0.5);
+  start.v1 += 0.05;
+  start.v2 -= 0.05;
+  const Checked long_ = runWithTrust(model, start, 1000, TrustMode::Full);
+  ASSERT_TRUE(long_.trust.horizonObserved) << long_.trust.reason;
+  const double observed = long_.trust.horizon;
+  for (const std::int64_t contacts : {100, 300, 600}) {
+    const Checked checked = runWithTrust(model, start, contacts, TrustMode::Full);
+    EXPECT_FALSE(checked.trust.horizonObserved) << contacts;
+    EXPECT_LE(checked.trust.horizon, observed) << contacts << " contacts: " << checked.trust.horizonMethod;
+    EXPECT_GE(checked.trust.horizon, checked.run.tFinal) << contacts;  // it held over what it saw
+  }
+  // auto shadows a fixed number of events: the same run, the same estimate, bit for bit
+  const Checked first = runWithTrust(model, start, 20000, TrustMode::Auto);
+  const Checked second = runWithTrust(model, start, 20000, TrustMode::Auto);
+  EXPECT_EQ(first.trust.horizon, second.trust.horizon);
+  EXPECT_EQ(first.trust.stateError, second.trust.stateError);
+  EXPECT_EQ(first.trust.reason, second.trust.reason);
+}
+
+TEST(Trust, AShadowThatLeavesThePathOnItsOwnRoundingIsNoAlarm) {
+  // a stick, a release, then contacts with v2 ~ 1e-30: the long double shadow chatters through
+  // one of them (three impacts at t = 17.77) while the double run follows binary128 to 1e-15;
+  // it once said "unreliable, estimated time error 2.0"
+  const Model model = testing::resonantChain(0.5);
+  const State start{1.0, 1.0, 1e-10, 0.0};
+  const Checked checked = runWithTrust(model, start, 6, TrustMode::Auto);
+  EXPECT_NE(checked.trust.verdict, Verdict::Unreliable) << checked.trust.reason;
+  EXPECT_LT(std::max(checked.trust.stateError, checked.trust.timeError), 1e-12) << checked.trust.reason;
+  EXPECT_NE(checked.trust.reason.find("false alarm"), std::string::npos) << checked.trust.reason;
+}
+
 TEST(Trust, AnInterruptStopsTheShadowAndTheEstimateSaysSo) {
   // the shadow watches the run's stop token: once it is requested the shadow does not march on
   // (a long detuned search in the shadow ignored it for minutes), and the estimate covers what
