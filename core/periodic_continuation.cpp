@@ -225,8 +225,11 @@ PeriodicOrbit<S> approachInEnergy(const Chain<S>& chain, const Units<S>& units, 
   const auto onFamily = [&](const S& energy) -> std::optional<PeriodicOrbit<S>> {
     OrbitSearch<S> found = findOrbit(chain, energy, inside.state.u1, inside.state.v1, impacts, stop);
     if (!found.orbit) return std::nullopt;
+    // the same family: near in the section and in the period (another family's orbit can sit
+    // near the same point of H: a 4-impact orbit of period 5 T1 beside one of 32.6 at E = 3)
     const bool near = abs(found.orbit->state.u1 - inside.state.u1) < S(0.05) * units.position &&
-                      abs(found.orbit->state.v1 - inside.state.v1) < S(0.05) * units.speed;
+                      abs(found.orbit->state.v1 - inside.state.v1) < S(0.05) * units.speed &&
+                      abs(found.orbit->period - inside.period) < S(1e-3) * inside.period;
     return near && stabilityDecided(*found.orbit) ? std::move(found.orbit) : std::nullopt;
   };
   if (onFamily(outside)) return inside;  // the family goes on there: nothing to refine
