@@ -141,6 +141,9 @@ void expectSoundAtlas(const Chain<double>& chain, const ModesAtlas<double>& atla
       // steps are at most 0.1 in ln E and in u1 / d
       EXPECT_LT(std::abs(std::log(b.energy / a.energy)), 0.2) << label << ", family " << family.id << ", row " << i;
       EXPECT_LT(std::abs(b.state.u1 - a.state.u1) / chain.model.gap, 0.2) << label << ", family " << family.id;
+      // and the period is continuous (an end located in the energy once took a 4-impact orbit
+      // of period 27.2 beside the family's 32.6)
+      EXPECT_LT(std::abs(b.period / a.period - 1), 0.05) << label << ", family " << family.id << ", row " << i;
     }
     for (const FamilyBifurcation<double>& b : family.bifurcations) {
       if (!b.checked) continue;
@@ -154,7 +157,7 @@ TEST(AtlasChainsTest, onEveryChainEveryFlipGivesItsFamilyOrSaysWhyAndNoFamilyJum
   for (const Case& c : sweep()) {
     const Chain<double> chain = resonantChain(c.m2, c.branch);
     const double E0 = grazingEnergy(chain);
-    const ModesAtlas<double> atlas = computeModesAtlas(chain, 2, E0 / 10, E0 * 100);
+    const ModesAtlas<double> atlas = computeModesAtlas(chain, 4, E0 / 10, E0 * 100);
     ASSERT_TRUE(atlas.complete);
     expectSoundAtlas(chain, atlas, name(c));
     std::set<int> born;
