@@ -73,5 +73,15 @@ EXPECT_WORD="resonant" expect_invalid modes --k2 0.6 --out "$work/bad/m"
 EXPECT_WORD="--out" expect_invalid modes
 EXPECT_WORD="does not apply" expect_invalid modes --contacts 3 --out "$work/bad/m"
 [ ! -e "$work/bad" ] || [ -z "$(ls -A "$work/bad")" ] || fail "a refused atlas wrote files"
+# SIGINT one second into the binary128 atlas (its scans, bisections, Newton loops and
+# continuations all watch the stop): exit 130 within a second, no files (issue 29, item 9)
+start=$(date +%s%N)
+timeout --preserve-status -s INT 1 "$cli" modes --precision quad --out "$work/int/m" 2>"$err"
+code=$?
+took_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+[ "$code" -eq 130 ] || fail "interrupted modes exited $code, not 130"
+[ "$took_ms" -lt 2000 ] || fail "modes --precision quad took $took_ms ms to stop (1000 of them before the signal)"
+[ ! -e "$work/int/m.json" ] || fail "an interrupted atlas wrote its files"
+
 if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
 echo "modes: all checks passed"
