@@ -17,12 +17,6 @@ std::string_view toString(Birth birth) {
 
 namespace {
 
-template <typename S>
-FamilyOrbit<S> summary(const PeriodicOrbit<S>& orbit) {
-  return {orbit.energy, orbit.period, orbit.trace, orbit.stability, orbit.state, orbit.minImpactSpeed,
-          orbit.minClearance};
-}
-
 // The energy range asked for. A special point computed at its edge (0.7 given,
 // 0.70000000000000007 located) belongs to it: points are held within a hair of 1e-12.
 template <typename S>
@@ -129,11 +123,11 @@ std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OneP
       const std::optional<PeriodicOrbit<S>> edge =
           previousIn ? crossingAt(*previous, orbit, level) : crossingAt(orbit, *previous, level);
       if (edge && previousIn) {
-        if (open && edge->period != previous->period) open->orbits.push_back(summary(*edge));
+        if (open && edge->period != previous->period) open->orbits.push_back(summaryOf(*edge));
         close(endAt(PointKind::EnergyLimit, *edge));
       } else if (edge) {
         begin(endAt(PointKind::EnergyLimit, *edge));
-        if (edge->period != orbit.period) open->orbits.push_back(summary(*edge));
+        if (edge->period != orbit.period) open->orbits.push_back(summaryOf(*edge));
       }
     } else if (!partStarts && previousIn != in && !onEdge && open) {
       close(endAt(PointKind::EnergyLimit, *previous));  // left the range at a point on its edge
@@ -145,7 +139,7 @@ std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OneP
         const bool atEnd = row.point && isEnd(row.point->kind);
         begin(endAt(atEnd ? row.point->kind : PointKind::EnergyLimit, orbit));
       }
-      open->orbits.push_back(summary(orbit));
+      open->orbits.push_back(summaryOf(orbit));
       if (row.point && !isEnd(row.point->kind)) open->bifurcations.push_back(*row.point);
     }
     // an end point closes its part when the part started before it

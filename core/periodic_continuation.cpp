@@ -160,12 +160,6 @@ std::optional<std::pair<Vector3<S>, Evaluation<S>>> correct(const Chain<S>& chai
 }
 
 template <typename S>
-FamilyOrbit<S> summary(const PeriodicOrbit<S>& orbit) {
-  return {orbit.energy, orbit.period, orbit.trace, orbit.stability, orbit.state, orbit.minImpactSpeed,
-          orbit.minClearance};
-}
-
-template <typename S>
 Vector3<S> along(const Vector3<S>& from, const S& h, const Vector3<S>& t) {
   return {from[0] + h * t[0], from[1] + h * t[1], from[2] + h * t[2]};
 }
@@ -293,7 +287,6 @@ void nameGrazingEnd(const Chain<S>& chain, int impacts, FamilyEnd<S>& end) {
   end.exact = true;
 }
 
-
 template <typename S>
 ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>& start,
                                   int direction, const ContinuationOptions<S>& options,
@@ -318,15 +311,14 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
     return family;
   };
   if (!here.usable) return finish(PointKind::Undecided, start);
-  family.orbits.push_back(summary(start));
+  family.orbits.push_back(summaryOf(start));
   Vector3<S> t = tangent(here.jacobian, Vector3<S>{S(0), S(0), S(direction)});
   S h = S(options.firstStep);
   // the resolution of S in the continuation's units: an end is approached down to it
   const S resolution = S(1024) * epsilon<S>() * std::max(S(1), norm(y));
   PeriodicOrbit<S> last = start;
-  // a corrected orbit was evaluated with no closing tolerance: admissible in every other way,
-  // and closed as a found orbit must be
-  // and its stability decided
+  // a corrected orbit was evaluated with no closing tolerance: a row must be admissible in
+  // every other way, closed as an orbit of its amplification can be, its stability decided
   const auto admissible = [&](const PeriodicOrbit<S>& orbit) {
     return orbit.admissible && orbit.checks.periodicityResidual <= closeTolerance(orbit) && stabilityDecided(orbit);
   };
@@ -379,7 +371,7 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
         PeriodicOrbit<S> nearer = approachInEnergy(chain, units, last, outside, k, stop);
         if (nearer.energy != last.energy) {
           last = std::move(nearer);
-          family.orbits.push_back(summary(last));  // a row of its own only when it got nearer
+          family.orbits.push_back(summaryOf(last));  // a row of its own only when it got nearer
         }
       }
       if (stop.stop_requested()) return finish(PointKind::Stopped, last);
@@ -402,7 +394,7 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
     const bool impactsReal = std::min(last.minImpactSpeed, orbit.minImpactSpeed) > S(0.05) * units.speed;
     if (turns && impactsReal && nearest < S(0.02) && nearest < halfwayDistance(units, start) / S(2)) {
       const bool lastNearer = halfwayDistance(units, last) <= halfwayDistance(units, orbit);
-      if (!lastNearer) family.orbits.push_back(summary(orbit));
+      if (!lastNearer) family.orbits.push_back(summaryOf(orbit));
       return finish(PointKind::PeriodDoubling, lastNearer ? last : orbit);
     }
     // special points between the two neighbours
@@ -418,14 +410,10 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
         return abs(low->trace - level) <= abs(high->trace - level) ? low : high;
       }();
       const PeriodicOrbit<S>& at = nearer ? *nearer : orbit;
-      FamilyBifurcation<S> point;
-      point.kind = level < 0 ? PointKind::PeriodDoubling : turns ? PointKind::Fold : PointKind::BranchPoint;
+      FamilyBifurcation<S> point = specialPoint(
+          level < 0 ? PointKind::PeriodDoubling : turns ? PointKind::Fold : PointKind::BranchPoint, at);
       // checked against its definition before it is given as one
       point.checked = nearer && abs(at.trace - level) <= traceLevelTolerance<S>();
-      point.T = at.period;
-      point.energy = at.energy;
-      point.trace = at.trace;
-      point.state = at.state;
       found.push_back(point);
     }
     if (turns && !crossedLevel(S(2))) {
@@ -435,20 +423,15 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
       const auto [low, high] = locate(chain, units, y, next, t, h, k, rising, t[2] > 0, stop);
       const std::optional<PeriodicOrbit<S>>& nearer = low ? low : high;
       const PeriodicOrbit<S>& at = nearer ? *nearer : orbit;
-      FamilyBifurcation<S> point;
-      point.kind = PointKind::Fold;
+      FamilyBifurcation<S> point = specialPoint(PointKind::Fold, at);
       point.checked = nearer && abs(at.trace - S(2)) <= traceLevelTolerance<S>();
-      point.T = at.period;
-      point.energy = at.energy;
-      point.trace = at.trace;
-      point.state = at.state;
       found.push_back(point);
     }
     family.bifurcations.insert(family.bifurcations.end(), found.begin(), found.end());
     y = next;
     t = nextTangent;
     last = orbit;
-    family.orbits.push_back(summary(orbit));
+    family.orbits.push_back(summaryOf(orbit));
     // a converged step grows; the failures above shrank it
     h = std::min(S(options.maxStep), S(h * S(1.5)));
   }

@@ -29,6 +29,13 @@ struct FamilyOrbit {
   S minClearance = 0;
 };
 
+/// The few numbers a table keeps of `orbit`.
+template <typename S>
+FamilyOrbit<S> summaryOf(const PeriodicOrbit<S>& orbit) {
+  return {orbit.energy, orbit.period, orbit.trace, orbit.stability, orbit.state, orbit.minImpactSpeed,
+          orbit.minClearance};
+}
+
 /// Where a continued family ends.
 template <typename S>
 struct FamilyEnd {

@@ -72,17 +72,6 @@ std::optional<PeriodicOrbit<S>> orbitAt(const Chain<S>& chain, const S& T) {
 }
 
 template <typename S>
-FamilyBifurcation<S> pointAt(PointKind kind, const PeriodicOrbit<S>& orbit) {
-  FamilyBifurcation<S> point;
-  point.kind = kind;
-  point.T = orbit.period;
-  point.energy = orbit.energy;
-  point.trace = orbit.trace;
-  point.state = orbit.state;
-  return point;
-}
-
-template <typename S>
 struct Sample {
   S T;
   std::optional<PeriodicOrbit<S>> orbit;
@@ -193,7 +182,7 @@ class Scanner {
         kind = PointKind::InteriorGrazing;
         break;
     }
-    return pointAt(kind, *last);
+    return specialPoint(kind, *last);
   }
 
   // A located flip, fold or branch point, checked against its definition.
@@ -206,7 +195,7 @@ class Scanner {
       const bool turns = (at.energy - a.orbit->energy > 0) != (b.orbit->energy - at.energy > 0);
       kind = turns ? PointKind::Fold : PointKind::BranchPoint;
     }
-    FamilyBifurcation<S> point = pointAt(kind, at);
+    FamilyBifurcation<S> point = specialPoint(kind, at);
     point.checked = abs(at.trace - level) <= traceLevelTolerance<S>();
     return point;
   }
@@ -375,7 +364,8 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
   ev /= size;
   // the orbit born here is, at an energy offset o, the flip's state moved along e by about
   // c sqrt(o) on one side of the flip only, its k-th impact the mirror image -c sqrt(o): an
-  // orbit elsewhere (born at another flip, or of another family) is refused
+  // orbit elsewhere (born at another flip, or of another family, or farther than 100 sqrt(o))
+  // is refused
   const auto bornHere = [&](const PeriodicOrbit<S>& found, double offset) {
     const S du = (found.state.u1 - orbit.state.u1) / d;
     const S dv = (found.state.v1 - orbit.state.v1) / (d * w);
@@ -387,14 +377,16 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
     const S hu = (half.u1 - found.state.u1) / d;
     const S hv = (half.v1 - found.state.v1) / (d * w);
     const S halfway = sqrt(hu * hu + hv * hv);
-    return distance <= S(30.0 * std::sqrt(offset)) && along >= S(0.5) * distance &&
+    return distance <= S(100.0 * std::sqrt(offset)) && along >= S(0.5) * distance &&
            halfway >= distance && halfway > S(1e3) * closeTolerance(found);
   };
   const double largest = std::min(1e-3, maxRelativeOffset);
   std::string problem;
   for (const double offset : {largest, largest / 10, largest / 100, largest / 1000}) {
     for (const Side side : {Side::Below, Side::Above}) {
-      for (const double reach : {1.0, 0.3, 3.0}) {
+      // the family's own c is not known: from a third to thirty (on m2/m1 = 0.52, upper
+      // design, the family born at T/T2 = 0.6776 sits at 6 sqrt(o))
+      for (const double reach : {1.0, 0.3, 3.0, 10.0, 30.0}) {
         for (const int direction : {1, -1}) {
           if (stop.stop_requested()) {
             result.search.problem = "stopped";

@@ -49,6 +49,18 @@ struct FamilyBifurcation {
   std::string birthProblem;
 };
 
+/// The special point of kind `kind` at `orbit` (period, energy, trace, state).
+template <typename S>
+FamilyBifurcation<S> specialPoint(PointKind kind, const PeriodicOrbit<S>& orbit) {
+  FamilyBifurcation<S> point;
+  point.kind = kind;
+  point.T = orbit.period;
+  point.energy = orbit.energy;
+  point.trace = orbit.trace;
+  point.state = orbit.state;
+  return point;
+}
+
 /// The 1IPP family over (0, T2) from its closed form, scanned in T: the admissible orbits at
 /// the periods looked at (a grid of `samples` periods T2 i / (samples + 1), refined where the
 /// trace bends near +-2 so that two crossings between neighbours cannot go unseen), and its
