@@ -150,12 +150,21 @@ def interior_maxima(chain, state, t_end, samples=1000):
     g_prev = float(state[3])
     for i in range(1, n + 1):
         g = flight.fg_double(i * hd)[1] if i < n else float(flight.fg(t_end)[1])
-        if g_prev > 0 and g <= 0:
+        # >= 0: a sample landing exactly on a maximum (v2 = 0 in binary64, the midpoint of a
+        # symmetric flight) must still flag the interval after it
+        if g_prev >= 0 and g <= 0 and not (g_prev == 0 and g == 0):
             a, b = (i - 1) * h, i * h
             ga, gb = flight.fg(a)[1], flight.fg(b)[1]
+            # the binary64 filter's zero may be either side at full precision: widen by a sample
+            if not ga > 0 and i > 1:
+                a = (i - 2) * h
+                ga = flight.fg(a)[1]
+            if not gb <= 0 and i < n:
+                b = min((i + 1) * h, t_end)
+                gb = flight.fg(b)[1]
             if ga > 0 and gb <= 0:
                 tm = bracket_root(lambda t: flight.fg(t)[1], a, b, ga, gb, xtol)
-                if mpf(0) < tm < t_end:
+                if mpf(0) < tm < t_end and all(abs(tm - t0) > 4 * xtol for t0, _ in out):
                     out.append((tm, flight.fg(tm)[0]))
         g_prev = g
     return out
