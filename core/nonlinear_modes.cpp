@@ -18,27 +18,17 @@ std::string_view toString(Birth birth) {
 namespace {
 
 // The energy range asked for. A special point computed at its edge (0.7 given,
-// 0.70000000000000007 located) belongs to it: points are held within a hair of 1e-12.
+// 0.70000000000000007 located) belongs to it: points are held within a hair of 1e4 ulps.
 template <typename S>
 struct EnergyRange {
   S low;
   S high;
   bool holds(const S& energy) const { return energy >= low && energy <= high; }
   bool holdsPoint(const S& energy) const {
-    return energy >= low * (S(1) - S(1e-12)) && energy <= high * (S(1) + S(1e-12));
+    const S hair = S(1e4) * epsilon<S>();
+    return energy >= low * (S(1) - hair) && energy <= high * (S(1) + hair);
   }
 };
-
-template <typename S>
-FamilyEnd<S> endAt(PointKind kind, const PeriodicOrbit<S>& orbit) {
-  FamilyEnd<S> end;
-  end.kind = kind;
-  end.energy = orbit.energy;
-  end.period = orbit.period;
-  end.state = orbit.state;
-  end.lastEnergy = orbit.energy;
-  return end;
-}
 
 // The 1IPP family's parts inside the range, from its closed-form scan: each admissible part
 // (between two of its ends) cut where its energy leaves the range (located by bisection in T),
@@ -124,20 +114,20 @@ std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OneP
           previousIn ? crossingAt(*previous, orbit, level) : crossingAt(orbit, *previous, level);
       if (edge && previousIn) {
         if (open && edge->period != previous->period) open->orbits.push_back(summaryOf(*edge));
-        close(endAt(PointKind::EnergyLimit, *edge));
+        close(familyEndAt(PointKind::EnergyLimit, *edge));
       } else if (edge) {
-        begin(endAt(PointKind::EnergyLimit, *edge));
+        begin(familyEndAt(PointKind::EnergyLimit, *edge));
         if (edge->period != orbit.period) open->orbits.push_back(summaryOf(*edge));
       }
     } else if (!partStarts && previousIn != in && !onEdge && open) {
-      close(endAt(PointKind::EnergyLimit, *previous));  // left the range at a point on its edge
+      close(familyEndAt(PointKind::EnergyLimit, *previous));  // left the range at a point on its edge
     }
     if (in) {
       if (!open) {
         // a part that starts here: at one of its ends, on the range's edge, or (its first
         // sample) where the scan began
         const bool atEnd = row.point && isEnd(row.point->kind);
-        begin(endAt(atEnd ? row.point->kind : PointKind::EnergyLimit, orbit));
+        begin(familyEndAt(atEnd ? row.point->kind : PointKind::EnergyLimit, orbit));
       }
       open->orbits.push_back(summaryOf(orbit));
       if (row.point && !isEnd(row.point->kind)) open->bifurcations.push_back(*row.point);
@@ -145,7 +135,7 @@ std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OneP
     // an end point closes its part when the part started before it
     previousEnded = false;
     if (row.point && isEnd(row.point->kind) && !partStarts) {
-      if (open) close(endAt(row.point->kind, orbit));
+      if (open) close(familyEndAt(row.point->kind, orbit));
       previousEnded = true;
     }
     previous = &orbit;
@@ -154,7 +144,7 @@ std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OneP
   }
   // the last part ends on its grazing orbit at T2 (the scan's last point) when it reaches there
   if (open) {
-    FamilyEnd<S> end = endAt(PointKind::EnergyLimit, *previous);
+    FamilyEnd<S> end = familyEndAt(PointKind::EnergyLimit, *previous);
     if (!scan.points.empty() && scan.points.back().kind == PointKind::GrazingOrbit && range.holdsPoint(scan.points.back().energy)) {
       const FamilyBifurcation<S>& limit = scan.points.back();
       end.kind = PointKind::GrazingOrbit;
@@ -181,7 +171,7 @@ std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OneP
     }
     family.symmetry = orbitSymmetry(evaluateOrbit(chain, family.orbits[family.orbits.size() / 2].state, 1,
                                                   std::numeric_limits<S>::infinity()),
-                                    S(1e-9));
+                                    symmetryTolerance<S>());
   }
   return families;
 }
@@ -276,7 +266,7 @@ ModesAtlas<S> computeModesAtlas(const Chain<S>& chain, int maxImpacts, const S& 
       ModeFamily<S> family;
       family.id = int(atlas.families.size());
       family.impacts = 2 * impacts;
-      family.symmetry = orbitSymmetry(*born.search.orbit, S(1e-9));
+      family.symmetry = orbitSymmetry(*born.search.orbit, symmetryTolerance<S>());
       family.birth = Birth::PeriodDoubling;
       family.parent = int(next);
       family.bornEnergy = flip.energy;

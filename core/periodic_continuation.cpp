@@ -299,11 +299,7 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
   Vector3<S> y = {start.state.u1 / units.position, start.state.v1 / units.speed, S(0)};
   Evaluation<S> here = evaluate(chain, units, y, k);
   const auto finish = [&](PointKind kind, const PeriodicOrbit<S>& last) {
-    family.end.kind = kind;
-    family.end.energy = last.energy;
-    family.end.period = last.period;
-    family.end.state = last.state;
-    family.end.lastEnergy = last.energy;
+    family.end = familyEndAt(kind, last);
     if (kind == PointKind::GrazingOrbit) {
       family.end.gloLambda = (last.state.u1 / chain.model.gap - chain.rhoFast) / (chain.rhoSlow - chain.rhoFast);
       nameGrazingEnd(chain, k, family.end);

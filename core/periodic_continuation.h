@@ -63,6 +63,18 @@ struct FamilyEnd {
   int family = -1;   ///< in an atlas: the family whose flip a PeriodDoubling end meets
 };
 
+/// An end of kind `kind` at `orbit` (its energy, period and state; the last energy its own).
+template <typename S>
+FamilyEnd<S> familyEndAt(PointKind kind, const PeriodicOrbit<S>& orbit) {
+  FamilyEnd<S> end;
+  end.kind = kind;
+  end.energy = orbit.energy;
+  end.period = orbit.period;
+  end.state = orbit.state;
+  end.lastEnergy = orbit.energy;
+  return end;
+}
+
 template <typename S>
 struct ContinuationOptions {
   S energyLow = 0;                 ///< the family is followed while its energy stays in

@@ -348,7 +348,8 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
   // minimal: not a shorter orbit repeated (its state after j impacts, j dividing k, elsewhere)
   for (int j = 1; j < impacts; ++j) {
     if (impacts % j != 0) continue;
-    if (relativeDistance(chain, start, run.events[std::size_t(j - 1)].after) <= S(1e-9)) {
+    // within what a computed orbit's closing allows in S (2e-9 in double, 2e-27 in binary128)
+    if (relativeDistance(chain, start, run.events[std::size_t(j - 1)].after) <= S(1e7) * epsilon<S>()) {
       return refuse(OrbitRefusal::Repeated, "the orbit is a " + std::to_string(j) + "-impact orbit repeated");
     }
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -161,5 +162,13 @@ OrbitSearch<S> onePeriodicOrbitStability(const Chain<S>& chain, const S& T);
 /// neither.
 template <typename S>
 std::string orbitSymmetry(const PeriodicOrbit<S>& orbit, const S& tolerance);
+
+/// The tolerance of orbitSymmetry for an orbit computed in S: half its digits (a mirror image
+/// matches to the orbit's closing times its amplification, which next to a grazing reaches 1e6).
+template <typename S>
+S symmetryTolerance() {
+  using std::sqrt;
+  return sqrt(std::numeric_limits<S>::epsilon());
+}
 
 }  // namespace grazelab::core

@@ -116,7 +116,7 @@ std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& pars
       const core::FlipSwitch<S> born = core::switchAtFlip(chain, b, 1, core::birthOffsetBound(b, energies), stop);
       if (born.search.orbit) {
         const core::PeriodicOrbit<S>& o = *born.search.orbit;
-        const std::string symmetry = core::orbitSymmetry(o, S(1e-9));
+        const std::string symmetry = core::orbitSymmetry(o, core::symmetryTolerance<S>());
         point["born"] = QJsonObject{{"impacts", o.impacts},
                                     {"side", QString::fromUtf8(core::toString(born.side).data())},
                                     {"energy", scalarJson(o.energy)},

@@ -39,7 +39,7 @@ std::string orbitJson(const core::PeriodicOrbit<S>& orbit, const core::Chain<S>&
   }
   events += "]";
   const auto& mu = orbit.multipliers;
-  const std::string symmetry = core::orbitSymmetry(orbit, S(1e-9));
+  const std::string symmetry = core::orbitSymmetry(orbit, core::symmetryTolerance<S>());
   const core::BasicModel<S>& m = chain.model;
   std::string out = "{\n";
   out += "  \"format\": \"grazelab-orbit\",\n";

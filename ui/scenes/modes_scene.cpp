@@ -134,7 +134,7 @@ Scene::Spec modesScene() {
       job.orbit = found.orbit;
     }
     const core::PeriodicOrbit<double>& orbit = *job.orbit;
-    const std::string symmetry = core::orbitSymmetry(orbit, 1e-9);
+    const std::string symmetry = core::orbitSymmetry(orbit, core::symmetryTolerance<double>());
     job.notes.append(tr("The orbit shown: %1 per period T = %2 (%3 T₂), energy %4, %5%6")
                          .arg(orbit.impacts == 1 ? tr("1 impact") : tr("%1 impacts").arg(orbit.impacts))
                          .arg(orbit.period, 0, 'g', 6)
