@@ -211,16 +211,25 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
         {"start", "a 1IPP part: its low-energy end; a family born at a flip: the flip (at twice its period)"},
         {"end", "grazing-orbit (every impact speed, or one with a clearance, tends to 0: a grazing linear "
                 "orbit), interior-grazing (a flight touches the stop), impact-speed-zero (one impact fades), "
-                "energy-limit (the --energy-range), step-limit, undecided (the continuation cannot go on "
-                "with no event in sight), classified from the last orbit within 5 % of w2 d or of the gap. "
-                "Where impact speeds tend to 0 the end is located by bisection in the energy when Newton "
-                "at fixed energy can follow (the 1IPP family's to 1e-12). energy, period and state are "
-                "the last orbit's, except where exact is true: then they are the limit orbit's, known "
-                "exactly (a period tending to an odd number of T1 belongs to GLOM1 alone; the 1IPP family "
-                "ends on GLO_lambda*), last_energy being the last orbit computed. glo_lambda: the "
-                "GLO_lambda a grazing-orbit end tends to"},
-        {"born_at", "one-periodic: a part of the 1IPP family, continued both ways from its closed-form "
-                    "orbit of that energy and period T; period-doubling: born at a flip of `family`"},
+                "period-doubling (the family comes back to a flip of `family`: its orbit becomes that "
+                "flip's run twice), energy-limit (the --energy-range, or the 1IPP part's energy growing "
+                "without bound), step-limit, undecided (the continuation, or the precision, cannot go "
+                "on with no event in sight), classified from the last orbit within 5 % of w2 d or of the "
+                "gap. A 1IPP part's ends are its closed form's, located by bisection in T. Where impact "
+                "speeds tend to 0 the end is located by bisection in the energy when Newton at fixed "
+                "energy can follow. energy, period and state are the last orbit's, except where exact "
+                "is true: then they are the limit orbit's, known exactly (a period tending to an odd "
+                "number of T1 belongs to GLOM1 alone; the 1IPP family ends on GLO_lambda*; a "
+                "period-doubling end is the flip's orbit), last_energy being the last orbit computed. "
+                "glo_lambda: the GLO_lambda a grazing-orbit end tends to"},
+        {"born_at", "one-periodic: a part of the 1IPP family from its closed form (energy and period T "
+                    "of its orbit nearest the middle of the range); period-doubling: born at a flip of "
+                    "`family`"},
+        {"bifurcations", "kind period-doubling (tr = -2), fold (tr = +2, the energy turns back) or "
+                         "branch-point (tr = +2, it goes on); checked: the trace is within sqrt(eps) of "
+                         "the level (false: not solved in this precision, where the search stopped); "
+                         "born_family: the family born at a flip, or null with birth_problem saying why "
+                         "none was found (absent beyond --max-impacts)"},
         {"min_clearance", "the smallest distance below the stop of an interior maximum of u2 over "
                           "the gap (empty / NaN: no flight turns back below the stop)"}}},
       {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
