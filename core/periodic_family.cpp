@@ -394,8 +394,8 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
           }
           const S energy = flip.energy * (S(1) + S(side == Side::Below ? -offset : offset));
           const S push = S(direction * reach * std::sqrt(offset));
-          OrbitSearch<S> search = findOrbit(chain, energy, S(orbit.state.u1 + push * eu * d),
-                                            S(orbit.state.v1 + push * ev * d * w), 2 * impacts, stop);
+          OrbitSearch<S> search = findOrbit(chain, energy, S(orbit.state.u1 + push * eu),
+                                            S(orbit.state.v1 + push * ev), 2 * impacts, stop);
           if (!search.orbit) {
             problem = search.problem;
             continue;

@@ -228,5 +228,34 @@ TEST(AtlasChainsTest, theContinuationDoesNotJumpOntoAnotherFamily) {
   EXPECT_TRUE(glom1);
 }
 
+TEST(AtlasChainsTest, aScaledChainHasTheSameAtlas) {
+  // the physics is scale-free: a gap of 1e-9 or 1e6 gives the same families, ends and flips,
+  // energies times d^2 (the birth search once pushed by d twice and found nothing at 1e6)
+  for (const Branch branch : {Branch::Upper, Branch::Lower}) {
+    const auto atlasOf = [&](double gap) {
+      const Chain<double> chain = *makeChain(*designedModel(1.0, 0.5, 1.0, gap, branch)).chain;
+      const double E0 = grazingEnergy(chain);
+      return computeModesAtlas(chain, 2, E0 / 100, E0 * 10000);
+    };
+    const ModesAtlas<double> unit = atlasOf(1.0);
+    for (const double gap : {1e-9, 1e6}) {
+      const ModesAtlas<double> scaled = atlasOf(gap);
+      ASSERT_EQ(scaled.families.size(), unit.families.size()) << "gap " << gap;
+      for (std::size_t f = 0; f < unit.families.size(); ++f) {
+        const ModeFamily<double>& a = unit.families[f];
+        const ModeFamily<double>& b = scaled.families[f];
+        EXPECT_EQ(b.impacts, a.impacts);
+        EXPECT_EQ(b.end.kind, a.end.kind) << "gap " << gap << ", family " << f;
+        ASSERT_EQ(b.bifurcations.size(), a.bifurcations.size()) << "gap " << gap << ", family " << f;
+        for (std::size_t i = 0; i < a.bifurcations.size(); ++i) {
+          EXPECT_EQ(b.bifurcations[i].kind, a.bifurcations[i].kind);
+          EXPECT_NEAR(b.bifurcations[i].energy / (gap * gap), a.bifurcations[i].energy, 1e-9 * a.bifurcations[i].energy);
+          EXPECT_EQ(b.bifurcations[i].born >= 0, a.bifurcations[i].born >= 0) << "gap " << gap;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace grazelab::core
