@@ -178,7 +178,8 @@ Vector3<S> between(const Vector3<S>& a, const Vector3<S>& b, const S& fraction) 
 template <typename S, typename Test>
 std::pair<std::optional<PeriodicOrbit<S>>, std::optional<PeriodicOrbit<S>>> locate(
     const Chain<S>& chain, const Units<S>& units, const Vector3<S>& from, const Vector3<S>& to,
-    const Vector3<S>& t, S step, int impacts, const Test& test, bool signAtFrom, std::stop_token stop) {
+    const Vector3<S>& t, S step, int impacts, const Test& test, bool signAtFrom, std::stop_token stop,
+    std::vector<TraceSample<S>>* met = nullptr) {
   S low = 0;
   S high = step;
   Vector3<S> yLow = from;
@@ -194,6 +195,7 @@ std::pair<std::optional<PeriodicOrbit<S>>, std::optional<PeriodicOrbit<S>>> loca
     // trial may go as far as the whole step, no farther
     const auto corrected = correct(chain, units, predicted, plane, t, impacts, step);
     if (!corrected) break;
+    if (met) met->push_back({corrected->second.orbit.energy, corrected->second.orbit.trace});
     if (test(corrected->second) == signAtFrom) {
       low = middle;
       yLow = corrected->first;
@@ -399,7 +401,8 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
     for (const S& level : {S(-2), S(2)}) {
       if (!crossedLevel(level)) continue;
       const auto side = [level](const Evaluation<S>& e) { return e.orbit.trace - level > 0; };
-      const auto [low, high] = locate(chain, units, y, next, t, h, k, side, last.trace - level > 0, stop);
+      std::vector<TraceSample<S>> met = {{last.energy, last.trace}, {orbit.energy, orbit.trace}};
+      const auto [low, high] = locate(chain, units, y, next, t, h, k, side, last.trace - level > 0, stop, &met);
       const auto nearer = [&]() -> std::optional<PeriodicOrbit<S>> {
         if (!low) return high;
         if (!high) return low;
@@ -410,6 +413,7 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
           level < 0 ? PointKind::PeriodDoubling : turns ? PointKind::Fold : PointKind::BranchPoint, at);
       // checked against its definition before it is given as one
       point.checked = nearer && abs(at.trace - level) <= traceLevelTolerance<S>();
+      point.energyError = levelEnergyError(at, locatedTraceError(chain, at), met) + (low && high ? abs(high->energy - low->energy) : S(0));
       found.push_back(point);
     }
     if (turns && !crossedLevel(S(2))) {
@@ -421,6 +425,8 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
       const PeriodicOrbit<S>& at = nearer ? *nearer : orbit;
       FamilyBifurcation<S> point = specialPoint(PointKind::Fold, at);
       point.checked = nearer && abs(at.trace - S(2)) <= traceLevelTolerance<S>();
+      // at a turn the energy is stationary along the family: its error is the bracket's
+      point.energyError = low && high ? abs(high->energy - low->energy) : std::numeric_limits<S>::infinity();
       found.push_back(point);
     }
     family.bifurcations.insert(family.bifurcations.end(), found.begin(), found.end());

@@ -140,12 +140,17 @@ class Scanner {
   }
 
   // The period where the trace crosses `level` between admissible a and b (one crossing).
-  std::optional<PeriodicOrbit<S>> crossing(const Sample<S>& a, const Sample<S>& b, const S& level) const {
+  // The orbits met on the way are added to `met`.
+  std::optional<PeriodicOrbit<S>> crossing(const Sample<S>& a, const Sample<S>& b, const S& level,
+                                           std::vector<TraceSample<S>>& met) const {
     const bool aAbove = a.orbit->trace - level > 0;
+    met.push_back({a.orbit->energy, a.orbit->trace});
+    met.push_back({b.orbit->energy, b.orbit->trace});
     const S T = bisectBoundary(
         a.T, b.T,
         [&](const S& t) {
           const std::optional<PeriodicOrbit<S>> o = orbitAt(m_chain, t);
+          if (o) met.push_back({o->energy, o->trace});
           return o && ((o->trace - level > 0) == aAbove);
         },
         [&] { return stopped(); });
@@ -187,7 +192,7 @@ class Scanner {
 
   // A located flip, fold or branch point, checked against its definition.
   FamilyBifurcation<S> levelPoint(const PeriodicOrbit<S>& at, const S& level, const Sample<S>& a,
-                                  const Sample<S>& b) const {
+                                  const Sample<S>& b, const std::vector<TraceSample<S>>& met) const {
     using std::abs;
     PointKind kind = PointKind::PeriodDoubling;
     if (level > 0) {
@@ -197,6 +202,7 @@ class Scanner {
     }
     FamilyBifurcation<S> point = specialPoint(kind, at);
     point.checked = abs(at.trace - level) <= traceLevelTolerance<S>();
+    point.energyError = levelEnergyError(at, locatedTraceError(m_chain, at), met);
     return point;
   }
 
@@ -267,14 +273,17 @@ OnePeriodicScan<S> scanOnePeriodicFamily(const Chain<S>& chain, int samples, std
       const int sa = sideOfLevel(*a.orbit, level);
       const int sb = sideOfLevel(*b.orbit, level);
       if (sa * sb < 0) {
-        if (const std::optional<PeriodicOrbit<S>> at = scanner.crossing(a, b, level)) {
-          between.push_back(scanner.levelPoint(*at, level, a, b));
+        std::vector<TraceSample<S>> met;
+        if (const std::optional<PeriodicOrbit<S>> at = scanner.crossing(a, b, level, met)) {
+          between.push_back(scanner.levelPoint(*at, level, a, b, met));
         }
       } else if (sa != 0 && sb == 0 && i + 1 < all.size() && all[i + 1].orbit &&
                  sideOfLevel(*all[i + 1].orbit, level) == -sa) {
         // a sample right on the level (T = 2 T2 / 3 on a grid of 2001 intervals) that the
         // trace crosses: the point itself, to rounding already
-        between.push_back(scanner.levelPoint(*b.orbit, level, a, all[i + 1]));
+        const std::vector<TraceSample<S>> met = {{a.orbit->energy, a.orbit->trace},
+                                                 {all[i + 1].orbit->energy, all[i + 1].orbit->trace}};
+        between.push_back(scanner.levelPoint(*b.orbit, level, a, all[i + 1], met));
       }
     }
     std::sort(between.begin(), between.end(), [](const auto& x, const auto& y) { return x.T < y.T; });
@@ -366,7 +375,8 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
   // c sqrt(o) on one side of the flip only, its k-th impact the mirror image -c sqrt(o): an
   // orbit elsewhere (born at another flip, or of another family, or farther than 100 sqrt(o))
   // is refused
-  const auto bornHere = [&](const PeriodicOrbit<S>& found, double offset) {
+  const auto bornHere = [&](const OrbitSearch<S>& search, double offset) {
+    const PeriodicOrbit<S>& found = *search.orbit;
     const S du = (found.state.u1 - orbit.state.u1) / d;
     const S dv = (found.state.v1 - orbit.state.v1) / (d * w);
     const S distance = sqrt(du * du + dv * dv);
@@ -377,8 +387,12 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
     const S hu = (half.u1 - found.state.u1) / d;
     const S hv = (half.v1 - found.state.v1) / (d * w);
     const S halfway = sqrt(hu * hu + hv * hv);
+    // near the flip P^2k is close to the identity along e: Newton can stall on a plateau that
+    // closes within the tolerance (amplified for rounding) but is no orbit; a born orbit is
+    // converged, its Newton step a small part of its distance from the flip
     return distance <= S(100.0 * std::sqrt(offset)) && along >= S(0.5) * distance &&
-           halfway >= distance && halfway > S(1e3) * closeTolerance(found);
+           halfway >= distance && halfway > S(1e3) * closeTolerance(found) &&
+           search.correction <= S(1e-3) * distance;
   };
   const double largest = std::min(1e-3, maxRelativeOffset);
   std::string problem;
@@ -386,7 +400,7 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
     for (const Side side : {Side::Below, Side::Above}) {
       // the family's own c is not known: from a third to thirty (on m2/m1 = 0.52, upper
       // design, the family born at T/T2 = 0.6776 sits at 6 sqrt(o))
-      for (const double reach : {1.0, 0.3, 3.0, 10.0, 30.0}) {
+      for (const double reach : {1.0, 0.3, 3.0, 10.0, 30.0, 2.0, 5.0, 20.0}) {
         for (const int direction : {1, -1}) {
           if (stop.stop_requested()) {
             result.search.problem = "stopped";
@@ -400,7 +414,7 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
             problem = search.problem;
             continue;
           }
-          if (!bornHere(*search.orbit, offset)) {
+          if (!bornHere(search, offset)) {
             problem = "the orbit found near the flip belongs elsewhere";
             continue;
           }

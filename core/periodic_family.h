@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <stop_token>
 #include <string>
 #include <string_view>
@@ -43,6 +45,10 @@ struct FamilyBifurcation {
   /// a flip, fold or branch point: its trace meets the level within traceLevelTolerance (false:
   /// the search could not solve it there in S; the point is where it stopped, not a result)
   bool checked = true;
+  /// an estimate of the energy's error: the trace's error over the trace's slope in the energy
+  /// (from the neighbours the point was located between), plus the last bracket's width; large
+  /// where the trace barely moves with the energy (a near-degenerate flip)
+  S energyError = 0;
   /// a flip in an atlas: the family born there (its id), or -1 with `birthProblem` saying why
   /// none was found (empty when no search was made, e.g. beyond the impacts asked for)
   int born = -1;
@@ -59,6 +65,34 @@ FamilyBifurcation<S> specialPoint(PointKind kind, const PeriodicOrbit<S>& orbit)
   point.trace = orbit.trace;
   point.state = orbit.state;
   return point;
+}
+
+/// The energy and trace of an orbit met while locating a special point.
+template <typename S>
+struct TraceSample {
+  S energy = 0;
+  S trace = 0;
+};
+
+/// The energy error of a point located where the trace meets a level: the trace's error at
+/// the point (locatedTraceError) over the trace's slope in the energy. The slope is the secant to the nearest of
+/// `met` (orbits of the family met on the way) whose trace differs from the point's by 100
+/// times its error or more: nearer ones are noise, farther ones overstate the slope where the
+/// trace only grazes the level. +infinity when none does.
+template <typename S>
+S levelEnergyError(const PeriodicOrbit<S>& at, const S& traceError, const std::vector<TraceSample<S>>& met) {
+  using std::abs;
+  S nearest = std::numeric_limits<S>::infinity();
+  S slope = 0;
+  for (const TraceSample<S>& m : met) {
+    const S rise = abs(m.trace - at.trace);
+    const S run = abs(m.energy - at.energy);
+    if (rise >= S(100) * traceError && run > S(0) && run < nearest) {
+      nearest = run;
+      slope = rise / run;
+    }
+  }
+  return slope > S(0) ? S(traceError / slope) : std::numeric_limits<S>::infinity();
 }
 
 /// The 1IPP family over (0, T2) from its closed form, scanned in T: the admissible orbits at

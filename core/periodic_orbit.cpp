@@ -95,33 +95,101 @@ S relativeDistance(const Chain<S>& chain, const BasicState<S>& a, const BasicSta
   return largest;
 }
 
+// The second mass's free motion in modal form. The mode shapes have unit u2 component, so
+//   u2(t) = sum_j q_j cos(w_j t) + r_j sin(w_j t),   j = fast, slow,
+// with q the modal parts of (u1, u2) and r those of (v1, v2) over w_j.
+template <typename S>
+struct SecondMassMotion {
+  std::array<S, 2> w{}, q{}, r{};
+
+  SecondMassMotion(const Chain<S>& chain, const BasicState<S>& x) {
+    const S rf = chain.rhoFast;
+    const S rs = chain.rhoSlow;
+    const S scale = S(1) / (rf - rs);  // Q = [[rf, rs], [1, 1]], Q^-1 = [[1, -rs], [-1, rf]] / (rf - rs)
+    w = {chain.ratio * chain.omegaSlow, chain.omegaSlow};
+    q = {(x.u1 - rs * x.u2) * scale, (rf * x.u2 - x.u1) * scale};
+    r = {(x.v1 - rs * x.v2) * scale / w[0], (rf * x.v2 - x.v1) * scale / w[1]};
+  }
+  // (u2, v2, a2) at t
+  std::array<S, 3> at(const S& t) const {
+    using std::cos;
+    using std::sin;
+    std::array<S, 3> y{};
+    for (int j = 0; j < 2; ++j) {
+      const S c = cos(w[j] * t), s = sin(w[j] * t);
+      const S position = q[j] * c + r[j] * s;
+      y[0] += position;
+      y[1] += w[j] * (r[j] * c - q[j] * s);
+      y[2] -= w[j] * w[j] * position;
+    }
+    return y;
+  }
+};
+
+// The infinity norm of m in units of the gap and of w2 times the gap.
+template <typename S>
+S scaledNorm(const Chain<S>& chain, const Matrix4<S>& m) {
+  using std::abs;
+  const std::array<S, 4> unit = {S(1), S(1), chain.omegaSlow, chain.omegaSlow};
+  S largest = 0;
+  for (int i = 0; i < 4; ++i) {
+    S row = 0;
+    for (int j = 0; j < 4; ++j) row += abs(m[i][j]) * unit[j] / unit[i];
+    largest = std::max(largest, row);
+  }
+  return largest;
+}
+
 // The smallest clearance gap - u2 at an interior maximum of u2 on the flight of duration `tau`
 // from `from`, over the gap; +infinity when u2 has no interior maximum. The maxima are where
-// v2 turns from + to -: bracketed on 256 samples, then bisected to the precision of S.
+// v2 turns from + to -: bracketed on 256 samples, then solved by Newton kept inside the
+// bracket. The samples rotate each mode's phase by a fixed step (one complex product, not a
+// sine and cosine each): the rounding they gather over 256 steps only moves a sign change
+// within a few ulps of a zero of v2, and the root itself is solved from exact evaluations.
 template <typename S>
 S flightClearance(const Chain<S>& chain, const BasicState<S>& from, const S& tau) {
+  using std::abs;
+  using std::cos;
+  using std::sin;
   constexpr int kSamples = 256;
-  const std::array<S, 4> x0 = asArray(from);
-  const auto at = [&](const S& t) { return times(flowMatrix(chain, t), x0); };
+  const SecondMassMotion<S> motion(chain, from);
+  const S h = tau / S(kSamples);
+  std::array<S, 2> stepCos{}, stepSin{}, c{S(1), S(1)}, s{S(0), S(0)};
+  for (int j = 0; j < 2; ++j) {
+    stepCos[j] = cos(motion.w[j] * h);
+    stepSin[j] = sin(motion.w[j] * h);
+  }
+  const auto speed = [&] {
+    S v = 0;
+    for (int j = 0; j < 2; ++j) v += motion.w[j] * (motion.r[j] * c[j] - motion.q[j] * s[j]);
+    return v;
+  };
   S least = std::numeric_limits<S>::infinity();
-  std::array<S, 4> previous = x0;
-  S tPrevious = 0;
+  S previous = from.v2;
   for (int i = 1; i < kSamples; ++i) {
-    const S t = tau * S(i) / S(kSamples);
-    const std::array<S, 4> x = at(t);
-    if (previous[3] > 0 && x[3] <= 0) {
-      S low = tPrevious;
-      S high = t;
-      for (int step = 0; step < 200 && high - low > epsilon<S>() * tau; ++step) {
-        const S middle = (low + high) / S(2);
-        if (at(middle)[3] > 0) low = middle;
-        else high = middle;
-      }
-      const S u2 = at((low + high) / S(2))[1];
-      least = std::min(least, S((chain.model.gap - u2) / chain.model.gap));
+    for (int j = 0; j < 2; ++j) {
+      const S rotated = c[j] * stepCos[j] - s[j] * stepSin[j];
+      s[j] = s[j] * stepCos[j] + c[j] * stepSin[j];
+      c[j] = rotated;
     }
-    previous = x;
-    tPrevious = t;
+    const S v = speed();
+    if (previous > 0 && v <= 0) {
+      S low = h * S(i - 1);
+      S high = h * S(i);
+      S t = (low + high) / S(2);
+      for (int step = 0; step < 200; ++step) {
+        const std::array<S, 3> y = motion.at(t);
+        if (y[1] > 0) low = t;
+        else high = t;
+        S next = y[2] < 0 ? S(t - y[1] / y[2]) : S((low + high) / S(2));
+        if (!(next > low && next < high)) next = (low + high) / S(2);
+        const S moved = abs(next - t);
+        t = next;
+        if (moved <= S(4) * epsilon<S>() * tau || high - low <= epsilon<S>() * tau) break;
+      }
+      least = std::min(least, S((chain.model.gap - motion.at(t)[0]) / chain.model.gap));
+    }
+    previous = v;
   }
   return least;
 }
@@ -275,6 +343,7 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
   }
   // the monodromy, flight by flight, with the clearance of every flight
   Matrix4<S> monodromy = identity4<S>();
+  S normProduct = 1;
   S previousTime = 0;
   BasicState<S> leaving = start;
   orbit.minImpactSpeed = std::numeric_limits<S>::infinity();
@@ -285,7 +354,10 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
                     formatScalar(event.t) + ", not only impacts");
     }
     const S tau = event.t - previousTime;
-    monodromy = multiply(saltationMatrix(chain, event.before), multiply(flowMatrix(chain, tau), monodromy));
+    const Matrix4<S> flow = flowMatrix(chain, tau);
+    const Matrix4<S> saltation = saltationMatrix(chain, event.before);
+    monodromy = multiply(saltation, multiply(flow, monodromy));
+    normProduct *= scaledNorm(chain, flow) * scaledNorm(chain, saltation);
     orbit.minImpactSpeed = std::min(orbit.minImpactSpeed, event.before.v2);
     orbit.minClearance = std::min(orbit.minClearance, flightClearance(chain, leaving, tau));
     previousTime = event.t;
@@ -322,6 +394,7 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
                                     abs(orbit.reduced[0][1] * w), abs(orbit.reduced[1][0] / w)});
   }
   const S trace = orbit.reduced[0][0] + orbit.reduced[1][1];
+  orbit.traceError = epsilon<S>() * S(8 * (2 * impacts + 2)) * normProduct * orbit.amplification;
   const S det = orbit.reduced[0][0] * orbit.reduced[1][1] - orbit.reduced[0][1] * orbit.reduced[1][0];
   orbit.trace = trace;
   orbit.checks.detMinus1 = det - S(1);
@@ -359,6 +432,25 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
 }
 
 template <typename S>
+S locatedTraceError(const Chain<S>& chain, const PeriodicOrbit<S>& orbit) {
+  using std::abs;
+  using std::sqrt;
+  const S h = sqrt(epsilon<S>());
+  const std::array<S, 4> scale = stateScales(chain, orbit.state);
+  S gradient = 0;
+  for (int direction = 0; direction < 2; ++direction) {
+    const S u1 = orbit.state.u1 + (direction == 0 ? S(h * scale[0]) : S(0));
+    const S v1 = orbit.state.v1 + (direction == 1 ? S(h * scale[2]) : S(0));
+    const std::optional<BasicState<S>> start = sectionState(chain, orbit.energy, u1, v1);
+    if (!start) return std::numeric_limits<S>::infinity();
+    const PeriodicOrbit<S> moved = evaluateOrbit(chain, *start, orbit.impacts, std::numeric_limits<S>::infinity());
+    if (moved.events.size() != orbit.events.size()) return std::numeric_limits<S>::infinity();
+    gradient += abs(moved.trace - orbit.trace) / h;
+  }
+  return orbit.traceError + gradient * std::max(orbit.checks.periodicityResidual, epsilon<S>());
+}
+
+template <typename S>
 OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, const S& v1,
                          int impacts, std::stop_token stop) {
   using std::abs;
@@ -371,6 +463,29 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
   constexpr int kPatience = 8;
   S bestResidual = std::numeric_limits<S>::infinity();
   int bestIteration = 0;
+  std::optional<PeriodicOrbit<S>> closed;  // the last iterate that closed within the tolerance
+  S closedCorrection = std::numeric_limits<S>::infinity();  // the Newton step from it
+  const auto accept = [&search, &closedCorrection](PeriodicOrbit<S> orbit) {
+    using std::sqrt;
+    search.correction = closedCorrection;
+    // a stalled Newton: closed within the (amplified) tolerance, yet its own next step is far
+    // larger than the rounding could explain
+    if (closedCorrection > sqrt(closeTolerance(orbit))) {
+      search.refusal = OrbitRefusal::NotClosed;
+      search.problem = "Newton stalled at a residual of " + formatScalar(orbit.checks.periodicityResidual) +
+                       " with a step of " + formatScalar(closedCorrection) +
+                       " still to go (DP^k - I is nearly singular here: a flip, fold or branch point is near); "
+                       "no orbit is given";
+      return search;
+    }
+    if (!orbit.admissible) {
+      search.refusal = orbit.refusal;
+      search.problem = "the orbit found is not admissible: " + orbit.reason;
+    } else {
+      search.orbit = std::move(orbit);
+    }
+    return search;
+  };
   for (int iteration = 0; iteration < kIterations; ++iteration) {
     search.iterations = iteration + 1;
     if (stop.stop_requested()) {
@@ -385,6 +500,7 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
                        "u1 = k2 d / (k1 + k2), v1 = 0";
       return search;
     }
+    if (!start && closed) return accept(std::move(*closed));
     if (!start) {
       search.problem = "Newton left the energy level at iteration " + std::to_string(iteration + 1) +
                        " (u1 = " + formatScalar(x) + ", v1 = " + formatScalar(y) +
@@ -395,19 +511,24 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
     if (orbit.events.size() != std::size_t(impacts) ||
         std::any_of(orbit.events.begin(), orbit.events.end(),
                     [](const BasicEvent<S>& e) { return e.type != EventType::Impact; })) {
+      if (closed) return accept(std::move(*closed));
       search.refusal = orbit.refusal;
       search.problem = "Newton left the " + std::to_string(impacts) + "-impact orbits at iteration " +
                        std::to_string(iteration + 1) + " (" + orbit.reason + ")";
       return search;
     }
-    if (orbit.checks.periodicityResidual <= closeTolerance(orbit)) {
-      if (!orbit.admissible) {
-        search.refusal = orbit.refusal;
-        search.problem = "the orbit found is not admissible: " + orbit.reason;
-        return search;
-      }
-      search.orbit = std::move(orbit);
-      return search;
+    // within the tolerance Newton goes on while the residual still halves: the tolerance
+    // allows for amplified rounding, and an iterate passing through it may be on its way to
+    // another orbit (near a flip, to the k/2-impact orbit run twice)
+    const bool closes = orbit.checks.periodicityResidual <= closeTolerance(orbit);
+    if (closed && !(closes && orbit.checks.periodicityResidual < closed->checks.periodicityResidual / S(2))) {
+      return accept(std::move(*closed));
+    }
+    if (closes) {
+      closedCorrection = 0;
+      if (orbit.checks.periodicityResidual == S(0)) return accept(std::move(orbit));
+      closed = orbit;
+      closedCorrection = std::numeric_limits<S>::infinity();
     }
     if (orbit.checks.periodicityResidual < bestResidual) {
       bestResidual = orbit.checks.periodicityResidual;
@@ -425,12 +546,20 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
     const S c = orbit.reduced[1][0], d = orbit.reduced[1][1] - S(1);
     const S det = a * d - b * c;
     if (!(abs(det) > S(0)) || !isFinite(det)) {
+      if (closed) return accept(std::move(*closed));
       search.problem = "the Jacobian DP^k - I is singular (a fold or branch point: tr DP^k = 2)";
       return search;
     }
-    x -= (d * f0 - b * f1) / det;
-    y -= (-c * f0 + a * f1) / det;
+    const S dx = (d * f0 - b * f1) / det;
+    const S dy = (-c * f0 + a * f1) / det;
+    if (closes) {
+      const std::array<S, 4> scale = stateScales(chain, *start);
+      closedCorrection = std::max(abs(dx) / scale[0], abs(dy) / scale[2]);
+    }
+    x -= dx;
+    y -= dy;
   }
+  if (closed) return accept(std::move(*closed));
   search.problem = "Newton did not converge in " + std::to_string(kIterations) + " iterations";
   return search;
 }
@@ -511,6 +640,7 @@ std::string orbitSymmetry(const PeriodicOrbit<S>& orbit, const S& tolerance) {
   template S defaultCloseTolerance<S>();                                                           \
   template S closeTolerance<S>(const PeriodicOrbit<S>&);                                          \
   template bool stabilityDecided<S>(const PeriodicOrbit<S>&);                                     \
+  template S locatedTraceError<S>(const Chain<S>&, const PeriodicOrbit<S>&);                           \
   template PeriodicOrbit<S> evaluateOrbit<S>(const Chain<S>&, const BasicState<S>&, int,           \
                                              const S&);                                            \
   template OrbitSearch<S> findOrbit<S>(const Chain<S>&, const S&, const S&, const S&, int,         \

@@ -91,6 +91,13 @@ struct PeriodicOrbit {
   /// the largest entry of DP^k in units of the gap and of w2 times the gap (at least 1): how
   /// much the return map amplifies the rounding of its own path
   S amplification = 1;
+  /// an estimate of the trace's error: epsilon times the product of the norms of the flights'
+  /// and impacts' matrices (in units of the gap and of w2 times the gap; the rounding follows
+  /// it, not the norm of the product), times the number of products, times the amplification
+  /// (the orbit's state is itself only known to the rounding, and the trace moves with it).
+  /// Checked against binary128 on degenerate flips of light-mass chains: 50 to 200 times the
+  /// error met (tests/core/atlas_chains_test.cpp)
+  S traceError = 0;
   /// the nontrivial pair of multipliers (eigenvalues of DP^k) as (re, im)
   std::array<std::array<S, 2>, 2> multipliers{};
   Stability stability = Stability::Elliptic;
@@ -139,10 +146,22 @@ struct OrbitSearch {
   /// OrbitRefusal::Undecided; the orbit's own refusal when one was computed; None otherwise
   OrbitRefusal refusal = OrbitRefusal::None;
   int iterations = 0;
+  /// the Newton step from the orbit found, relative like the periodicity residual: how far the
+  /// exact orbit may be. Small beside the residual's own size for a converged orbit; near a
+  /// degenerate one (DP^k - I nearly singular) Newton may stall on a plateau that closes within
+  /// the tolerance while the step from it stays large
+  S correction = 0;
   /// the relative error of the orbit's data from the closed form (1IPP only): the rounding of
   /// S amplified by how near T is to a multiple of T1 or T2; 0 when not from the closed form
   S dataError = 0;
 };
+
+/// The trace's error at an orbit located by a search: its rounding (`traceError`) plus how far
+/// the trace moves over the orbit's own uncertainty in the section (its periodicity residual,
+/// at least one ulp), from the trace's gradient there (finite differences of sqrt(eps)). Near
+/// a degenerate flip the trace can move by 1e-9 for a state moved by 1e-14.
+template <typename S>
+S locatedTraceError(const Chain<S>& chain, const PeriodicOrbit<S>& orbit);
 
 /// A kIPP orbit of energy `energy` near the section point (u1, v1) on H+, by Newton on
 /// P^k(x) - x with the exact Jacobian DP^k - I. Fails with a reason when the energy has no

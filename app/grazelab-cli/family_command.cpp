@@ -101,6 +101,7 @@ std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& pars
                       {"T_over_T2", scalarJson(S(b.T / T2))},
                       {"energy", scalarJson(b.energy)},
                       {"trace", scalarJson(b.trace)},
+                        {"energy_error", scalarJson(b.energyError)},
                       {"state", stateJson(b.state)}};
     if (b.kind == core::PointKind::Undecided) {
       point["note"] = "not a bifurcation: beyond this period the orbit's data lose their digits "

@@ -137,6 +137,7 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
                         {"T_over_T2", scalarJson(S(b.T / T2))},
                         {"energy", scalarJson(b.energy)},
                         {"trace", scalarJson(b.trace)},
+                        {"energy_error", scalarJson(b.energyError)},
                         {"checked", b.checked},
                         {"state", stateJson(b.state)}};
       if (!b.checked) {

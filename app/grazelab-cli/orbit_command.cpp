@@ -54,6 +54,7 @@ std::string orbitJson(const core::PeriodicOrbit<S>& orbit, const core::Chain<S>&
   out += "  \"state\": " + stateJson(orbit.state) + ",\n";
   out += "  \"events\": " + events + ",\n";
   out += "  \"trace\": " + jsonNumber(orbit.trace) + ",\n";
+  out += "  \"trace_error\": " + jsonNumber(orbit.traceError) + ",\n";
   out += "  \"multipliers\": [[" + jsonNumber(mu[0][0]) + ", " + jsonNumber(mu[0][1]) + "], [" +
          jsonNumber(mu[1][0]) + ", " + jsonNumber(mu[1][1]) + "]],\n";
   out += "  \"stability\": " + jsonQuoted(std::string(core::toString(orbit.stability))) + ",\n";

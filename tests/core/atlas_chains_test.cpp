@@ -8,6 +8,7 @@
 // near its orbit) or says why not; no family jumps onto another; narrow ranges keep a flip.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -15,6 +16,7 @@
 #include "core/nonlinear_modes.h"
 #include "core/orbits.h"
 #include "core/periodic_continuation.h"
+#include "core/periodic_orbit.h"
 #include "core/setup.h"
 
 namespace grazelab::core {
@@ -255,6 +257,55 @@ TEST(AtlasChainsTest, aScaledChainHasTheSameAtlas) {
       }
     }
   }
+}
+
+TEST(AtlasChainsTest, theEnergyErrorOfEverySpecialPointHoldsAgainstALongerPrecision) {
+  // on light second masses the 2-impact families' flips are near-degenerate (the trace barely
+  // crosses -2, and moves by 1e-9 for a state moved by 1e-14): double misplaces them by up to
+  // 1e-10 relative. Each printed energy carries an error estimate that must cover that,
+  // checked against long double (2^11 times finer), and not be vacuous
+  for (const double m2 : {0.2, 0.35, 0.52}) {
+    const auto atlasIn = [m2](auto zero) {
+      using S = decltype(zero);
+      const Chain<S> chain = *makeChain(*designedModel(S(1), S(m2), S(1), S(1), Branch::Lower)).chain;
+      const S E0 = physicalEnergy(chain, gloData(chain, lambdaStar(chain)));
+      return computeModesAtlas(chain, 4, S(E0 / 10), S(E0 * 100));
+    };
+    const ModesAtlas<double> inDouble = atlasIn(0.0);
+    const ModesAtlas<long double> inLong = atlasIn(0.0L);
+    int compared = 0;
+    for (const ModeFamily<double>& family : inDouble.families) {
+      for (const FamilyBifurcation<double>& b : family.bifurcations) {
+        if (!b.checked || b.kind == PointKind::Undecided) continue;
+        ASSERT_LT(b.energyError, 1e-6 * b.energy) << "m2 " << m2;
+        long double nearest = INFINITY;
+        for (const ModeFamily<long double>& other : inLong.families) {
+          if (other.impacts != family.impacts) continue;
+          for (const FamilyBifurcation<long double>& c : other.bifurcations) {
+            if (c.kind == b.kind) nearest = std::min(nearest, std::abs(c.energy - (long double)b.energy));
+          }
+        }
+        EXPECT_LE(double(nearest), b.energyError) << "m2 " << m2 << ", " << family.impacts << "-impact "
+                                                   << toString(b.kind) << " at E = " << b.energy;
+        ++compared;
+      }
+    }
+    EXPECT_GE(compared, 4) << "m2 " << m2;
+  }
+}
+
+TEST(AtlasChainsTest, aNewtonThatStallsOnAPlateauGivesNoOrbit) {
+  // next to a near-degenerate flip of a 2-impact family, P^4 is close to the identity along the
+  // flip's eigenvector: Newton once stopped there at a residual of 1e-9 (within the tolerance
+  // amplified for rounding) with a step as long as the orbit's distance from the flip still to
+  // go, and the atlas gave a 4-impact family on the wrong side of the flip, ended after one row
+  const Chain<double> chain = resonantChain(0.2, Branch::Lower);
+  const OrbitSearch<double> search = findOrbit(chain, 0.55722626556298327, 1.0434494716098159, 8.17961466548961e-05, 4);
+  EXPECT_FALSE(search.orbit.has_value()) << "residual " << search.orbit->checks.periodicityResidual;
+  // a converged orbit's step is far below its residual's scale
+  const OrbitSearch<double> born = findOrbit(chain, 0.55723741026538198, 1.0434444625270811, 0.0057300888602593606, 4);
+  ASSERT_TRUE(born.orbit.has_value()) << born.problem;
+  EXPECT_LT(born.correction, 1e-9);
 }
 
 }  // namespace
