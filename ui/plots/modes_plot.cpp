@@ -59,6 +59,13 @@ ModesPlot::ModesPlot(QWidget* parent)
   flips->setPen(QPen(colors::kReference, 2));
   useLightMarker(flips, QPen(colors::kReference, 2));
   m_flips = addEntry(flips, Decimation::None);
+  // a flip whose family the search did not find: drawn apart, never as if a family were there
+  auto* orphans = makeScatter(tr("flip, no family found"), colors::kReference, 11);
+  orphans->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+  orphans->setColor(colors::kReference);
+  orphans->setPen(QPen(colors::kReference, 2));
+  useLightMarker(orphans, QPen(colors::kReference, 2));
+  m_orphanFlips = addEntry(orphans, Decimation::None);
   auto* ends = makeScatter(tr("grazing end"), colors::kReference, 9);
   useLightMarker(ends);
   m_ends = addEntry(ends, Decimation::None);
@@ -69,7 +76,8 @@ ModesPlot::ModesPlot(QWidget* parent)
   setToolTip(tr("Every periodic motion with impacts that the chain has, up to 4 impacts per period, "
                 "as its frequency 2π/T against its energy (log scale): one dot per computed orbit, "
                 "coloured by k, its impacts per period, filled where it is stable, a ring where it is "
-                "not. Squares are flips, where a family with twice the impacts is born; black dots "
+                "not. Squares are flips, where a family with twice the impacts is born (filled: the "
+                "search found no family there, see grazelab-cli modes for why); black dots "
                 "are grazing ends; the large ring is the orbit shown in the other views.\n"
                 "Click a family to follow that orbit in the other views."));
   connect(this, &PlotView::clickedAt, this, &ModesPlot::choose);
@@ -82,6 +90,7 @@ void ModesPlot::show(const SimUpdate& update) {
     m_atlas = job.modes;
     std::vector<QPointF> dots[4][2];
     std::vector<QPointF> flips;
+    std::vector<QPointF> orphanFlips;
     std::vector<QPointF> ends;
     for (const core::ModeFamily<double>& family : m_atlas->families) {
       const int cls = impactClass(family.impacts);
@@ -90,7 +99,9 @@ void ModesPlot::show(const SimUpdate& update) {
         dots[cls][stable ? 0 : 1].push_back(picturePoint(orbit.energy, orbit.period));
       }
       for (const auto& b : family.bifurcations) {
-        if (b.kind == core::PointKind::PeriodDoubling) flips.push_back(picturePoint(b.energy, b.T));
+        if (b.kind != core::PointKind::PeriodDoubling) continue;
+        // birthProblem is empty where no search was made (beyond the impacts shown)
+        (b.born < 0 && !b.birthProblem.empty() ? orphanFlips : flips).push_back(picturePoint(b.energy, b.T));
       }
       for (const core::FamilyEnd<double>* end : {&family.end, &family.startEnd}) {
         if (end->kind == core::PointKind::GrazingOrbit && end->period > 0) ends.push_back(picturePoint(end->energy, end->period));
@@ -106,7 +117,9 @@ void ModesPlot::show(const SimUpdate& update) {
         setData(m_dots[cls][stable], std::move(dots[cls][stable]));
       }
     }
+    setInLegend(list[std::size_t(m_orphanFlips)].series, !orphanFlips.empty());
     setData(m_flips, std::move(flips));
+    setData(m_orphanFlips, std::move(orphanFlips));
     setData(m_ends, std::move(ends));
     startNewRun();
   }

@@ -36,6 +36,7 @@ class ModesPlot final : public PlotView {
   int m_dots[4][2] = {};  ///< per class of impacts (1, 2, 4, more) and stable / unstable
   int m_unstableKey = 0;  ///< a legend entry only: what a ring means
   int m_flips = 0;
+  int m_orphanFlips = 0;
   int m_ends = 0;
   int m_chosen = 0;
 };
