@@ -175,8 +175,10 @@ void MainWindow::buildMenus() {
   add(file, tr("&Save snapshot of the window…"), {QKeySequence(tr("Ctrl+S"))},
       tr("Save the whole window as PNG, SVG or PDF, with its session beside it"),
       &MainWindow::saveWindowSnapshotInteractive);
-  add(file, tr("Save current &plot…"), {QKeySequence(tr("Ctrl+Shift+P"))},
-      tr("Save the last clicked plot as PNG, SVG or PDF"), &MainWindow::savePlotSnapshotInteractive);
+  add(file, tr("Save a &plot…"), {QKeySequence(tr("Ctrl+Shift+P"))},
+      tr("Save one view of the scene (chosen in a list: charts, the map, the animation) as PNG, SVG "
+         "or PDF, at its size on screen or a figure's, with its session beside it"),
+      &MainWindow::savePlotSnapshotInteractive);
   add(file, tr("&Export plotted data as CSV…"), {QKeySequence(tr("Ctrl+E"))},
       tr("Write the data of every plot at full resolution"), &MainWindow::exportCsvInteractive);
   add(file, tr("&Copy current plot"), {QKeySequence(tr("Ctrl+Shift+C"))},
@@ -410,6 +412,7 @@ void MainWindow::showScene(int index) {
 void MainWindow::resetToSceneDefaults() {
   m_regionHistory.clear();
   if (m_landscape) m_landscape->setBackEnabled(false);
+  m_panel->clearRefusal();
   setParams(scene().defaults());
   m_status->setMessage(tr("%1: every parameter back to the scene's defaults.").arg(scene().title()));
 }
@@ -421,7 +424,7 @@ void MainWindow::setParams(const Params& params) {
   onParamsChanged(params);
 }
 
-Session MainWindow::session() const { return {scene().name(), params()}; }
+Session MainWindow::session() const { return {scene().name(), params(), m_clickedStart}; }
 
 bool MainWindow::applySession(const Session& session, QString* error) {
   const int index = findScene(m_scenes, session.scene);
@@ -432,6 +435,7 @@ bool MainWindow::applySession(const Session& session, QString* error) {
   // the session's parameters as saved, whatever the scene on screen had
   m_sceneParams[std::size_t(index)] = session.params;
   showScene(index);
+  if (session.start) startFromClick(*session.start);
   return true;
 }
 
@@ -463,6 +467,7 @@ void MainWindow::recompute() {
   SimRequest request;
   request.params = current;
   request.sceneName = scene().name();
+  request.clickedStart = m_clickedStart;
   request.derived = derived;
   // the scene travels as a copy (texts and a function): the worker never reads the window's
   request.prepare = [scene = *m_scenes[std::size_t(m_sceneIndex)], params = current, derived,

@@ -11,6 +11,7 @@
 #include <QTimer>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -83,6 +84,8 @@ class MainWindow : public QMainWindow {
   /// The update the plots show now, if any.
   const SimUpdate* displayed() const { return m_displayed ? &*m_displayed : nullptr; }
   const QList<PlotView*>& plots() const { return m_plots; }
+  /// Every view of the scene, in its order (charts, the map, the animation).
+  const QList<SceneView*>& sceneViews() const { return m_sceneViews; }
   PlotView* currentPlot() const { return m_currentPlot; }
   AccuracyView* accuracyView() const { return m_accuracy; }
   ChainView* chainView() const { return m_chain; }
@@ -100,10 +103,23 @@ class MainWindow : public QMainWindow {
   QString problem() const;
 
   bool saveWindowSnapshot(const QString& path, QString* error);
+  /// Runs `draw` with the panel showing the displayed run's parameters and start (not values
+  /// being typed or refused, nor their refusal), then puts the panel back: a picture of the
+  /// window is one state.
+  void withDisplayedRunInPanel(const std::function<void()>& draw);
   /// The plot last clicked; at `size` (pixels) when given, laid out anew for it.
-  bool savePlotSnapshot(const QString& path, QString* error, QSize size = {});
-  /// Every visible plot's full-resolution data as CSV "plot,series,x,y".
+  /// One view of the scene (`view`, or the plot last clicked); at `size` (pixels) when given,
+  /// laid out anew for it with its text grown to a 40th of its height.
+  bool savePlotSnapshot(const QString& path, QString* error, QSize size = {}, SceneView* view = nullptr);
+  /// The view "Save current plot" offers first: the plot last clicked or focused.
+  SceneView* currentView() const;
+  /// Says in the status line what was saved where (and the session file beside it).
+  void confirmSaved(const QString& what, const QString& path);
+  /// What every view of the scene shows, at full resolution, as CSV "plot,series,x,y,value"
+  /// (ui/plots/csv_table.h) under csvHeader().
   QString plottedDataCsv() const;
+  /// The lines above a CSV export: the run in words, its session, its command line.
+  QStringList csvHeader() const;
   /// The last directory used if it can be written, else Pictures, Documents, home.
   QString saveDirectory() const;
   /// "grazing-lambda0.5-window.png"

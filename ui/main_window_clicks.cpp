@@ -91,6 +91,7 @@ bool MainWindow::mapRegionBack() {
 void MainWindow::startFromClick(const core::State& start) {
   m_clickedStart = start;
   m_panel->setClickedStart(start);
+  m_panel->clearRefusal();  // a refused value typed before does not describe this run
   followDataFromNextUpdate();
   recompute();
 }

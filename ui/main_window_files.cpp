@@ -3,6 +3,11 @@
 // The file side of MainWindow: snapshots, CSV, sessions, clipboard. Every write goes through
 // QSaveFile (ui/export.h); a failure is shown and leaves the old file and the session intact.
 #include <QApplication>
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QFontInfo>
+#include <QFormLayout>
 #include <QClipboard>
 #include <QFileDialog>
 #include <QDir>
@@ -17,11 +22,63 @@
 #include "ui/export.h"
 #include "ui/main_window.h"
 #include "ui/number_box.h"
+#include "ui/parameter_panel.h"
+#include "ui/reproduce.h"
+#include "ui/status_line.h"
+#include "ui/plots/csv_table.h"
 #include "ui/plots/plot_view.h"
 #include "ui/plots/scene_view.h"
 #include "ui/scene.h"
 
 namespace grazelab::ui {
+namespace {
+
+// "Poincaré points on H (u₂ = d)" -> "poincare-points-on-h": a file name part that any system
+// and shell takes as it is
+QString fileNamePart(const QString& title) {
+  QString plain = title.normalized(QString::NormalizationForm_KD);  // é -> e + accent, ₂ -> 2
+  plain.replace(QStringLiteral("λ"), QStringLiteral("lambda"));
+  QString part;
+  int words = 0;
+  bool gap = false;
+  for (const QChar c : plain) {
+    if (c.isLetterOrNumber() && c.unicode() < 128) {
+      if (gap && !part.isEmpty()) {
+        if (++words == 4) break;
+        part += QLatin1Char('-');
+      }
+      part += c.toLower();
+      gap = false;
+    } else if (!c.isMark()) {
+      gap = true;
+    }
+  }
+  return part.isEmpty() ? QStringLiteral("plot") : part;
+}
+
+}  // namespace
+
+void MainWindow::withDisplayedRunInPanel(const std::function<void()>& draw) {
+  if (!m_displayed) {
+    draw();
+    return;
+  }
+  const Session shown = displayedSession();
+  const Params typed = m_panel->params();
+  const QString panelMessage = m_panel->message();
+  const QString statusMessage = m_status->message();
+  m_panel->setParams(shown.params);
+  m_panel->setMessage(QString());
+  m_panel->setClickedStart(shown.start);
+  if (!m_problem.isEmpty()) m_status->setMessage(QString());
+  const auto restore = qScopeGuard([&] {
+    m_panel->setParams(typed);
+    m_panel->setMessage(panelMessage);
+    m_panel->setClickedStart(m_clickedStart);
+    m_status->setMessage(statusMessage);
+  });
+  draw();
+}
 
 bool MainWindow::writeSnapshot(QWidget* widget, const QString& path, QString* error) {
   const Session shown = displayedSession();
@@ -36,52 +93,68 @@ bool MainWindow::writeSnapshot(QWidget* widget, const QString& path, QString* er
     for (PlotView* plot : stale) plot->setStale(true);
   });
   // the picture first: a session file beside a missing picture would only confuse
-  if (!saveSnapshot(widget, path, json, sessionTitle(shown), error)) return false;
-  return saveFileAtomically(sessionPathFor(path), json, error);
+  bool saved = false;
+  const auto save = [&] { saved = saveSnapshot(widget, path, json, sessionTitle(shown), error); };
+  if (widget == this) withDisplayedRunInPanel(save);
+  else save();
+  return saved && saveFileAtomically(sessionPathFor(path), json, error);
 }
 
 bool MainWindow::saveWindowSnapshot(const QString& path, QString* error) {
   return writeSnapshot(this, path, error);
 }
 
-bool MainWindow::savePlotSnapshot(const QString& path, QString* error, QSize size) {
-  if (!m_currentPlot) {
+SceneView* MainWindow::currentView() const {
+  for (SceneView* view : m_sceneViews) {
+    if (view->widget() == m_currentPlot) return view;
+  }
+  return m_sceneViews.isEmpty() ? nullptr : m_sceneViews.first();
+}
+
+bool MainWindow::savePlotSnapshot(const QString& path, QString* error, QSize size, SceneView* view) {
+  if (!view) view = currentView();
+  const qsizetype index = m_sceneViews.indexOf(view);
+  if (!view || index < 0) {
     if (error) *error = tr("there is no plot to save");
     return false;
   }
-  if (!size.isValid() || size == m_currentPlot->size() || !m_displayed) {
-    return writeSnapshot(m_currentPlot, path, error);
+  if (!size.isValid() || size == view->widget()->size() || !m_displayed) {
+    return writeSnapshot(view->widget(), path, error);
   }
-  // at another size: the same view made again off screen, laid out for that size (its text
-  // keeps its size; a scaled picture would only enlarge it)
-  const qsizetype index = m_plots.indexOf(m_currentPlot);
-  PlotKind kind = PlotKind::TraceU2;
-  for (int i = 0, seen = 0; i < int(scene().plots().size()); ++i) {
-    SceneView* view = m_sceneViews.value(i);
-    if (!view || !qobject_cast<PlotView*>(view->widget())) continue;
-    if (seen++ == index) kind = scene().plots()[i];
-  }
-  std::unique_ptr<SceneView> copy(makeView(kind));
+  // at another size: the same view made again off screen, laid out for that size, its text
+  // grown with the picture (a 1920 x 1080 figure with the desk's 13 px text reads as a stamp
+  // on a slide; a scaled picture would blur instead)
+  std::unique_ptr<SceneView> copy(makeView(scene().plots()[std::size_t(index)]));
   QWidget* widget = copy->widget();
   widget->setAttribute(Qt::WA_DontShowOnScreen);
   widget->resize(size);
   widget->show();
-  copy->setPresentation(m_presentation, m_presentationText);
+  const int deskText = QFontInfo(font()).pixelSize();
+  const int textPixels = std::max({m_presentation ? m_presentationText : 0, deskText, size.height() / 40});
+  copy->setPresentation(textPixels > deskText, textPixels);
   copy->setWholeRun(m_wholeRunAction->isChecked());
   copy->show(*m_displayed);
   if (auto* plot = qobject_cast<PlotView*>(widget)) plot->refreshNow();
   return writeSnapshot(widget, path, error);
 }
 
-QString MainWindow::plottedDataCsv() const {
-  // the parameters first, as comments (pandas: comment="#"; R: comment.char = "#")
+QStringList MainWindow::csvHeader() const {
+  // the parameters first, as comments (pandas: comment="#"; R: comment.char = "#"): in words,
+  // as a session to open in the explorer, and as the command line that runs the same run
   const Session shown = displayedSession();
-  QString csv = QStringLiteral("# %1\n# session: %2\nplot,series,x,y\n")
-                    .arg(sessionTitle(shown),
-                         QString::fromUtf8(QJsonDocument::fromJson(sessionToJson(shown))
-                                               .toJson(QJsonDocument::Compact)));
-  for (const PlotView* plot : m_plots) plot->appendCsv(csv);
-  return csv;
+  QStringList header{sessionTitle(shown),
+                     QStringLiteral("session: %1").arg(QString::fromUtf8(
+                         QJsonDocument::fromJson(sessionToJson(shown)).toJson(QJsonDocument::Compact)))};
+  if (m_displayed) {
+    header.append(QStringLiteral("the run again: %1").arg(simulateCommand(m_displayed->request->job.spec)));
+  }
+  return header;
+}
+
+QString MainWindow::plottedDataCsv() const {
+  CsvTable table;
+  for (const SceneView* view : m_sceneViews) view->appendCsv(table);
+  return table.text(csvHeader());
 }
 
 bool MainWindow::exportCsv(const QString& path, QString* error) {
@@ -92,7 +165,9 @@ bool MainWindow::exportCsv(const QString& path, QString* error) {
 Session MainWindow::displayedSession() const {
   // a picture or its data carry the parameters of the run they show, which differ from the
   // panel's while a new value computes or after an infeasible one
-  if (m_displayed) return {m_displayed->request->sceneName, m_displayed->request->params};
+  if (m_displayed) {
+    return {m_displayed->request->sceneName, m_displayed->request->params, m_displayed->request->clickedStart};
+  }
   return session();
 }
 
@@ -158,57 +233,86 @@ void MainWindow::saveWindowSnapshotInteractive() {
       tr("Save snapshot of the window"),
       tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"), QStringLiteral(".png"),
       QStringLiteral("window"));
+  if (path.isEmpty()) return;
   QString error;
-  if (!path.isEmpty() && !saveWindowSnapshot(path, &error)) reportFailure(tr("Saving the snapshot"), error);
+  if (!saveWindowSnapshot(path, &error)) reportFailure(tr("Saving the snapshot"), error);
+  else confirmSaved(tr("the window"), path);
 }
 
 void MainWindow::savePlotSnapshotInteractive() {
-  if (!m_currentPlot) return;
-  // the size first: a figure for a paper or slides has its own
-  const QSize onScreen = m_currentPlot->size();
-  const QList<QSize> sizes{onScreen, {800, 600}, {1200, 900}, {1600, 1000}, {1920, 1080}};
-  QStringList items;
-  for (const QSize& size : sizes) {
-    items << (size == onScreen ? tr("%1 × %2 (as on screen)") : QStringLiteral("%1 × %2"))
-                 .arg(size.width())
-                 .arg(size.height());
-  }
-  bool chosen = false;
-  const QString item = QInputDialog::getItem(this, tr("Save current plot"),
-                                             tr("Size (pixels; PNG pictures are twice as dense):"),
-                                             items, 0, false, &chosen);
-  if (!chosen) return;
-  const QSize size = sizes.value(items.indexOf(item), onScreen);
-  const QString path = askSavePath(
-      tr("Save current plot"), tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"),
-      QStringLiteral(".png"), QStringLiteral("plot"));
+  if (m_sceneViews.isEmpty()) return;
+  // which view (every one of the scene, the map and the animation too: a click on those starts
+  // a run, so "the last clicked" cannot be how they are chosen) and the size: a figure for a
+  // paper or slides has its own
+  QDialog dialog(this);
+  dialog.setWindowTitle(tr("Save a plot"));
+  auto* form = new QFormLayout(&dialog);
+  auto* which = new QComboBox(&dialog);
+  for (SceneView* view : m_sceneViews) which->addItem(view->viewTitle());
+  which->setCurrentIndex(int(std::max<qsizetype>(0, m_sceneViews.indexOf(currentView()))));
+  auto* size = new QComboBox(&dialog);
+  const QList<QSize> sizes{{800, 600}, {1200, 900}, {1600, 1000}, {1920, 1080}};
+  const auto fillSizes = [&] {
+    const QSize onScreen = m_sceneViews[which->currentIndex()]->widget()->size();
+    size->clear();
+    size->addItem(tr("%1 × %2 (as on screen)").arg(onScreen.width()).arg(onScreen.height()), onScreen);
+    for (const QSize& s : sizes) size->addItem(tr("%1 × %2 (text grown with it)").arg(s.width()).arg(s.height()), s);
+  };
+  fillSizes();
+  connect(which, &QComboBox::currentIndexChanged, &dialog, fillSizes);
+  form->addRow(tr("&Plot:"), which);
+  form->addRow(tr("&Size (pixels; PNG twice as dense):"), size);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  form->addRow(buttons);
+  if (dialog.exec() != QDialog::Accepted) return;
+  SceneView* view = m_sceneViews[which->currentIndex()];
+  const QString path = askSavePath(tr("Save the plot “%1”").arg(view->viewTitle()),
+                                   tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"),
+                                   QStringLiteral(".png"), fileNamePart(view->viewTitle()));
+  if (path.isEmpty()) return;
   QString error;
-  if (!path.isEmpty() && !savePlotSnapshot(path, &error, size)) reportFailure(tr("Saving the plot"), error);
+  if (!savePlotSnapshot(path, &error, size->currentData().toSize(), view)) {
+    reportFailure(tr("Saving the plot"), error);
+    return;
+  }
+  confirmSaved(tr("“%1”").arg(view->viewTitle()), path);
+}
+
+void MainWindow::confirmSaved(const QString& what, const QString& path) {
+  m_status->setMessage(tr("Saved %1 to %2 (its session beside it: %3)")
+                           .arg(what, QDir::toNativeSeparators(path), QFileInfo(sessionPathFor(path)).fileName()));
 }
 
 void MainWindow::exportCsvInteractive() {
   const QString path =
       askSavePath(tr("Export plotted data"), tr("CSV table (*.csv)"), QStringLiteral(".csv"),
                   QStringLiteral("data"));
+  if (path.isEmpty()) return;
   QString error;
-  if (!path.isEmpty() && !exportCsv(path, &error)) reportFailure(tr("Exporting CSV"), error);
+  if (!exportCsv(path, &error)) reportFailure(tr("Exporting CSV"), error);
+  else confirmSaved(tr("the plotted data"), path);
 }
 
 void MainWindow::copyCurrentPlot() {
   if (!m_currentPlot) return;
   auto* data = new QMimeData;
   data->setImageData(renderImage(m_currentPlot));
-  QString csv = QStringLiteral("plot,series,x,y\n");
-  m_currentPlot->appendCsv(csv);
-  data->setText(csv);
+  CsvTable table;
+  m_currentPlot->appendCsv(table);
+  data->setText(table.text(csvHeader()));
   QApplication::clipboard()->setMimeData(data);
+  m_status->setMessage(tr("Copied “%1” (picture and data) to the clipboard").arg(m_currentPlot->title()));
 }
 
 void MainWindow::saveSessionInteractive() {
   const QString path = askSavePath(tr("Save session"), tr("GrazeLab session (*.json)"),
                                    QStringLiteral(".json"), QStringLiteral("session"));
+  if (path.isEmpty()) return;
   QString error;
-  if (!path.isEmpty() && !saveSession(path, &error)) reportFailure(tr("Saving the session"), error);
+  if (!saveSession(path, &error)) reportFailure(tr("Saving the session"), error);
+  else m_status->setMessage(tr("Saved the session to %1").arg(QDir::toNativeSeparators(path)));
 }
 
 void MainWindow::openSessionInteractive() {

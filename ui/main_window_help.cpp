@@ -27,29 +27,39 @@ void MainWindow::showAbout() {
 QString MainWindow::shortcutsText() const {
   // every menu action with a key, as the menus name it, then what the plots and the animation
   // take directly
-  QString rows;
+  QList<std::pair<QString, QString>> rows;
   for (QAction* menu : menuBar()->actions()) {
     if (!menu->menu()) continue;
     for (QAction* action : menu->menu()->actions()) {
       if (action->shortcuts().isEmpty()) continue;
       QStringList keys;
       for (const QKeySequence& key : action->shortcuts()) keys << key.toString(QKeySequence::NativeText);
-      rows += QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>")
-                  .arg(keys.join(QStringLiteral(", ")), action->text().remove(QLatin1Char('&')));
+      rows.append({keys.join(QStringLiteral(", ")), action->text().remove(QLatin1Char('&'))});
     }
   }
   const std::pair<QString, QString> direct[] = {
       {tr("drag"), tr("zoom a plot to the rectangle")},
       {tr("Shift+drag, middle button"), tr("pan a plot")},
       {tr("wheel"), tr("zoom a plot at the pointer")},
-      {tr("double-click"), tr("enlarge a plot (again: put it back)")},
+      {tr("double-click"), tr("enlarge a plot (again: put it back); it starts no run")},
+      {tr("click"), tr("on the Poincaré points (H), the stop line of mass 2's portrait, the Landscape "
+                       "map or the modes picture: start a run there")},
+      {tr("Esc"), tr("leave presentation mode")},
       {tr("[ and ]"), tr("previous / next contact in the animation")},
       {tr("Enter"), tr("take a typed value (a value that cannot be used is refused, and says why)")},
   };
-  for (const auto& [key, what] : direct) {
-    rows += QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(key, what);
+  for (const auto& row : direct) rows.append(row);
+  // two pairs of columns: one long column was taller than a 720-pixel screen
+  const qsizetype half = (rows.size() + 1) / 2;
+  QString table;
+  for (qsizetype i = 0; i < half; ++i) {
+    const auto cell = [&](qsizetype j) {
+      return j < rows.size() ? QStringLiteral("<td><b>%1</b></td><td>%2</td>").arg(rows[j].first, rows[j].second)
+                             : QStringLiteral("<td></td><td></td>");
+    };
+    table += QStringLiteral("<tr>%1<td width=\"24\"></td>%2</tr>").arg(cell(i), cell(i + half));
   }
-  return QStringLiteral("<table cellspacing=\"4\">%1</table>").arg(rows);
+  return QStringLiteral("<table cellspacing=\"4\">%1</table>").arg(table);
 }
 
 void MainWindow::showShortcuts() {
@@ -66,8 +76,11 @@ void MainWindow::showSceneGuide() {
   box.setTextFormat(Qt::RichText);
   box.setText(QStringLiteral("<h3>%1</h3><p>%2</p><p>%3</p>")
                   .arg(scene().title(), scene().description(),
-                       tr("Ctrl+Shift+R puts every value of this scene back; W shows the whole "
-                          "run in u₂(t) and the phase portraits.")));
+                       tr("A click on the Poincaré points (H), on the stop line of mass 2's portrait, on "
+                          "the Landscape map or on the modes picture starts a run from there (the panel "
+                          "says so; any edit goes back to the scene's start). Ctrl+Shift+R puts every "
+                          "value of this scene back; W shows the whole run in u₂(t) and the phase "
+                          "portraits; F1 shows this guide, Ctrl+F1 every key.")));
   box.exec();
 }
 

@@ -28,6 +28,8 @@ QString normalised(QString text) {
 }  // namespace
 
 QString shortestText(double value) {
+  // a whole number as one (1000000, not 1e+06) while every digit of it is exact
+  if (value == std::floor(value) && std::abs(value) < 1e15) return QString::number(value, 'f', 0);
   char buffer[64];
   const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
   if (error != std::errc()) return QString::number(value, 'g', 17);

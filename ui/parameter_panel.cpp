@@ -227,6 +227,8 @@ QString ParameterPanel::clickedStartText() const {
 
 QString ParameterPanel::refusal() const { return m_refusal->isVisible() ? m_refusal->text() : QString(); }
 
+void ParameterPanel::clearRefusal() { m_refusal->hide(); }
+
 void ParameterPanel::changed() {
   m_refusal->hide();  // a value taken answers the last refusal
   updateFeasibility();

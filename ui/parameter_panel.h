@@ -51,6 +51,8 @@ class ParameterPanel : public QWidget {
   QString message() const;
   /// Why the last typed value was refused, until a value is taken (empty when none was).
   QString refusal() const;
+  /// Forgets the last refused input (the window moved on: defaults restored, a clicked start).
+  void clearRefusal();
 
   SliderSpin* control(ParamKey key) const { return m_controls.value(key); }
 

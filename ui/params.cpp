@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/params.h"
 
+#include "ui/number_box.h"
 #include "ui/param_specs.h"
 
 #include <QJsonArray>
@@ -108,9 +109,7 @@ std::optional<Params> paramsFromJson(const QJsonObject& object, const Params& ba
     if (!std::isfinite(number) || number < spec.spinMin || number > spec.spinMax) {
       return fail(QStringLiteral("\"%1\" = %2 is outside [%3, %4]")
                       .arg(jsonKey(key))
-                      .arg(number, 0, 'g', 17)
-                      .arg(spec.spinMin, 0, 'g', 17)
-                      .arg(spec.spinMax, 0, 'g', 17));
+                      .arg(shortestText(number), shortestText(spec.spinMin), shortestText(spec.spinMax)));
     }
     if (key == ParamKey::Horizon && number != std::floor(number)) {
       return fail(QStringLiteral("\"%1\" must be a whole number").arg(jsonKey(key)));

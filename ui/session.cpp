@@ -10,6 +10,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <cmath>
+
 namespace grazelab::ui {
 namespace {
 
@@ -23,6 +25,13 @@ QByteArray sessionToJson(const Session& session) {
   object.insert(QStringLiteral("version"), 1);
   object.insert(QStringLiteral("scene"), session.scene);
   object.insert(QStringLiteral("params"), toJson(session.params));
+  if (session.start) {
+    const core::State& x = *session.start;
+    object.insert(QStringLiteral("start"), QJsonObject{{QStringLiteral("u1"), x.u1},
+                                                       {QStringLiteral("u2"), x.u2},
+                                                       {QStringLiteral("v1"), x.v1},
+                                                       {QStringLiteral("v2"), x.v2}});
+  }
   return QJsonDocument(object).toJson(QJsonDocument::Indented);
 }
 
@@ -46,6 +55,19 @@ std::optional<Session> sessionFromJson(const QByteArray& json, const Params& def
       paramsFromJson(object.value(QStringLiteral("params")).toObject(), defaults, &paramsError);
   if (!params) return fail(paramsError);
   session.params = *params;
+  if (object.contains(QStringLiteral("start"))) {
+    const QJsonObject start = object.value(QStringLiteral("start")).toObject();
+    double x[4] = {};
+    const char* names[4] = {"u1", "u2", "v1", "v2"};
+    for (int i = 0; i < 4; ++i) {
+      const QJsonValue value = start.value(QLatin1String(names[i]));
+      if (!value.isDouble() || !std::isfinite(value.toDouble())) {
+        return fail(QStringLiteral("\"start\" needs a finite number \"%1\"").arg(QLatin1String(names[i])));
+      }
+      x[i] = value.toDouble();
+    }
+    session.start = core::State{x[0], x[1], x[2], x[3]};
+  }
   return session;
 }
 
@@ -58,8 +80,17 @@ QString sessionPathFor(const QString& snapshotPath) {
 QString sessionTitle(const Session& session) {
   const Params& p = session.params;
   const auto n = [](double value) { return shortestText(value); };
-  return QStringLiteral("GrazeLab: %1 (λ = %2, δ = %3, m₁ = %4, m₂ = %5, k₁ = %6, k₂ = %7, d = %8, %9 contacts)")
-      .arg(session.scene, n(p.lambda), n(p.perturbation), n(p.m1), n(p.m2), n(p.k1), n(p.k2), n(p.gap))
+  const QString chain = QStringLiteral("m₁ = %1, m₂ = %2, k₁ = %3, k₂ = %4, d = %5")
+                            .arg(n(p.m1), n(p.m2), n(p.k1), n(p.k2), n(p.gap));
+  if (session.start) {
+    // the scene's λ and push do not describe a clicked start: the start itself does
+    const core::State& x = *session.start;
+    return QStringLiteral("GrazeLab: %1 (%2, from the clicked start u₁ = %3, u₂ = %4, v₁ = %5, v₂ = %6, %7 contacts)")
+        .arg(session.scene, chain, n(x.u1), n(x.u2), n(x.v1), n(x.v2))
+        .arg(n(p.horizon));
+  }
+  return QStringLiteral("GrazeLab: %1 (λ = %2, δ = %3, %4, %5 contacts)")
+      .arg(session.scene, n(p.lambda), n(p.perturbation), chain)
       .arg(n(p.horizon));
 }
 

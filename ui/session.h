@@ -7,15 +7,20 @@
 
 #include <optional>
 
+#include "core/state.h"
 #include "ui/params.h"
 
 namespace grazelab::ui {
 
-/// What reproduces a view: the scene and its parameters. Saved as JSON:
-///   {"format": "grazelab-session", "version": 1, "scene": NAME, "params": {...}}
+/// What reproduces a view: the scene, its parameters and, when the run was started with the
+/// mouse, that start. Saved as JSON:
+///   {"format": "grazelab-session", "version": 1, "scene": NAME, "params": {...},
+///    "start": {"u1": ..., "u2": ..., "v1": ..., "v2": ...}}   (start only when clicked)
+/// Numbers are written in their shortest round-trip form, so a start reads back bit for bit.
 struct Session {
   QString scene;  ///< Scene::name()
   Params params;
+  std::optional<core::State> start;  ///< a clicked start, in place of the scene's own
 };
 
 QByteArray sessionToJson(const Session& session);

@@ -59,6 +59,9 @@ struct SimRequest {
   std::uint64_t id = 0;
   Params params;       ///< the parameters that produced it (for the display and snapshots)
   QString sceneName;
+  /// a start chosen with the mouse (on H, the stop line, the map, the modes picture): the run
+  /// starts there instead of the scene's own start; part of what reproduces the run
+  std::optional<core::State> clickedStart;
   DerivedModel derived;  ///< the chain of `params`, as the panel derived it
   /// the scene's computation; empty when `job` is already set (tests and benchmarks). A long
   /// one may show what it has so far through `partial` (the modes atlas, family by family).

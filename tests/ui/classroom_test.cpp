@@ -389,6 +389,16 @@ class ClassroomTest : public QObject {
     type(ParamKey::Horizon, QStringLiteral("2.5"));
     QCOMPARE(m_window->params().horizon, before.horizon);
     QVERIFY(refusal().contains(QStringLiteral("whole")));
+    {
+      // the defaults again (Ctrl+Shift+R) answer an old refusal: it no longer describes the
+      // panel (issue 30, item 10); the scene's own values come back for the rest of the test
+      const Params typed = m_window->params();
+      m_window->resetToSceneDefaults();
+      QVERIFY(refusal().isEmpty());
+      m_window->setParams(typed);
+      type(ParamKey::Horizon, QStringLiteral("2.5"));
+      QVERIFY(!refusal().isEmpty());
+    }
     type(ParamKey::Horizon, QStringLiteral("99999"));
     QCOMPARE(m_window->params().horizon, 99999.0);
     QVERIFY(refusal().isEmpty());
@@ -516,19 +526,33 @@ class ClassroomTest : public QObject {
     m_window->setParams(params);
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     PlotView* trace = plotTitled(*m_window, QStringLiteral("Displacement"));
-    // a window of three slow periods of the samples' stretch, then (W) all the samples
-    QVERIFY2(axis(*trace, Qt::Horizontal)->titleText().contains(QStringLiteral("3 T₂ of")),
-             qPrintable(axis(*trace, Qt::Horizontal)->titleText()));
+    // a window of three slow periods of the samples' stretch, then (W) all the samples; every
+    // number a time, the run's end among them (it said "3 T₂ of 3.55e+03" where W said
+    // "first 3.55e+03 of 8.76e+05")
+    const QString windowTitle = axis(*trace, Qt::Horizontal)->titleText();
+    const QString tFinal = QString::number(m_window->displayed()->result->tFinal, 'g', 3);
+    QVERIFY2(windowTitle.contains(QStringLiteral("sampled to")) && windowTitle.contains(tFinal) &&
+                 !windowTitle.contains(QStringLiteral("T₂")),
+             qPrintable(windowTitle));
     const double T2 = grazelab::core::computeModes(m_window->displayed()->request->job.spec.model).T2;
     QVERIFY(axis(*trace, Qt::Horizontal)->max() - axis(*trace, Qt::Horizontal)->min() <= 3 * T2 * (1 + 1e-9));
     QTest::keyClick(m_window.get(), Qt::Key_W);
     trace->refreshNow();
-    QVERIFY(axis(*trace, Qt::Horizontal)->titleText().contains(QStringLiteral("first")));
+    QVERIFY(axis(*trace, Qt::Horizontal)->titleText().contains(QStringLiteral("sampled to")));
+    QVERIFY(axis(*trace, Qt::Horizontal)->titleText().contains(tFinal));
     QVERIFY(axis(*trace, Qt::Horizontal)->max() - axis(*trace, Qt::Horizontal)->min() > 4 * T2);
     PlotView* flights = plotTitled(*m_window, QStringLiteral("Free-flight"));
     QValueAxis* index = axis(*flights, Qt::Horizontal);
     QVERIFY(index->max() > 1.9e5);
     QCOMPARE(index->labelFormat(), QStringLiteral("%.0f"));
+    // the flight-time axis spans the flights and their bound, not a unit around them (its
+    // least span once followed the contact axis's 10^5: the flights merged with the bound)
+    double lowest = 1;
+    for (const QPointF& p : flights->entries().front().points().toVector()) lowest = std::min(lowest, p.y());
+    QVERIFY(lowest < 1);
+    const QValueAxis* fft = axis(*flights, Qt::Vertical);
+    QVERIFY2(fft->max() - fft->min() < 2 * (1 - lowest) + 1e-9,
+             qPrintable(QStringLiteral("%1 to %2 for flights from %3").arg(fft->min()).arg(fft->max()).arg(lowest)));
   }
 
   // "GLO_λ" showed its underscore in menus, texts and legends
@@ -589,6 +613,22 @@ class ClassroomTest : public QObject {
     QVERIFY(job.ok);
     QVERIFY(job.modes && job.modes->families.size() >= 4);
     QVERIFY(job.orbit && job.orbit->impacts == 1);
+    {
+      // its CSV holds the atlas: every orbit of every family, named, with T/T2 (issue 30)
+      const QStringList rows = m_window->plottedDataCsv().split(QLatin1Char('\n'));
+      std::size_t orbits = 0;
+      for (const auto& family : job.modes->families) orbits += family.orbits.size();
+      const double T2 = first->derived.modes.T2;
+      qsizetype atlasRows = 0;
+      for (const QString& row : rows) {
+        if (!row.startsWith(QStringLiteral("\"Modes")) || !row.contains(QStringLiteral("\"family "))) continue;
+        ++atlasRows;
+        const QStringList cells = row.split(QLatin1Char(','));
+        const double period = 2 * M_PI / cells[cells.size() - 2].toDouble();
+        QVERIFY2(std::abs(cells.last().toDouble() - period / T2) < 1e-12 * period / T2, qPrintable(row));
+      }
+      QVERIFY(atlasRows >= qsizetype(orbits));
+    }
     PlotView* modes = plotTitled(*m_window, QStringLiteral("Modes"));
     PlotView* multipliers = plotTitled(*m_window, QStringLiteral("Multipliers"));
     QVERIFY(modes && multipliers);
@@ -699,6 +739,7 @@ class ClassroomTest : public QObject {
     const QPointF target = 0.5 * (reached + QPointF(middle, 0.0));
     const QPoint at = poincare->chart()->mapToPosition(target).toPoint();
     QTest::mouseClick(poincare->viewport(), Qt::LeftButton, {}, at);
+    QTRY_VERIFY(!poincare->clickPending());
     QVERIFY(waitForLatestFinal(*m_window));
     const grazelab::core::State start = m_window->displayed()->request->job.spec.run.initial;
     QCOMPARE(start.u2, model.gap);
@@ -739,6 +780,7 @@ class ClassroomTest : public QObject {
     // 12 px off: a hand on a projector's remote misses a thin line by that much
     const QPoint at = phase->chart()->mapToPosition(target).toPoint() + QPoint(-12, 0);
     QTest::mouseClick(phase->viewport(), Qt::LeftButton, {}, at);
+    QTRY_VERIFY(!phase->clickPending());
     QVERIFY(waitForLatestFinal(*m_window));
     const grazelab::core::State start = m_window->displayed()->request->job.spec.run.initial;
     QCOMPARE(start.u2, model.gap);
@@ -792,6 +834,18 @@ class ClassroomTest : public QObject {
     QCOMPARE(m_window->enlargedView(), plot);
     for (const PlotView* other : m_window->plots()) QCOMPARE(other->isVisibleTo(m_window.get()), other == plot);
     QTest::mouseDClick(plot->viewport(), Qt::LeftButton, {}, plot->viewport()->rect().center());
+    QVERIFY(!m_window->enlargedView());
+    // a double-click on a plot that starts runs when clicked (H) enlarges it and starts none
+    PlotView* poincare = plotTitled(*m_window, QStringLiteral("Poincaré"));
+    QVERIFY(poincare);
+    const std::uint64_t shownId = m_window->displayed()->id;
+    QTest::mouseDClick(poincare->viewport(), Qt::LeftButton, {}, poincare->viewport()->rect().center());
+    QCOMPARE(m_window->enlargedView(), poincare);
+    QTest::qWait(QApplication::doubleClickInterval() + 100);
+    QVERIFY(!poincare->clickPending());
+    QCOMPARE(m_window->displayed()->id, shownId);
+    QVERIFY(m_window->parameterPanel()->clickedStartText().isEmpty());
+    QTest::mouseDClick(poincare->viewport(), Qt::LeftButton, {}, poincare->viewport()->rect().center());
     QVERIFY(!m_window->enlargedView());
     for (const PlotView* other : m_window->plots()) QVERIFY(other->isVisibleTo(m_window.get()));
     // the panel hides and comes back (F9)

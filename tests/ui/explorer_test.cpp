@@ -15,6 +15,7 @@
 #include <QToolTip>
 #include <QXYSeries>
 
+#include <algorithm>
 #include <optional>
 #include <random>
 
@@ -224,6 +225,18 @@ class ExplorerTest : public QObject {
     }
     QVERIFY(exactError < 1e-9);
     QVERIFY(exactError < bestOther);
+    {
+      // the CSV holds the chart: one row per finished setting, its run time and errors (issue 30)
+      const QStringList rows = m_window->plottedDataCsv().split(QLatin1Char('\n'));
+      const auto completed = std::count_if(shown->accuracy->points.begin(), shown->accuracy->points.end(),
+                                           [](const AccuracyPoint& p) {
+                                             return p.point.status == grazelab::core::methods::RunStatus::Completed;
+                                           });
+      const auto chartRows = std::count_if(rows.begin(), rows.end(), [](const QString& row) {
+        return row.startsWith(QStringLiteral("\"Error against run time\","));
+      });
+      QCOMPARE(qsizetype(chartRows), qsizetype(completed));
+    }
     // the overlay: the chosen run's u2 appears on the trace, and changes with the choice
     auto overlayData = [this]() {
       for (const PlotView::Entry& entry : m_window->plots().first()->entries()) {

@@ -6,6 +6,9 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QImageReader>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QXmlStreamReader>
 #include <QScrollArea>
@@ -17,6 +20,8 @@
 #include "ui/export.h"
 #include "ui/main_window.h"
 #include "ui/number_box.h"
+#include "ui/parameter_panel.h"
+#include "ui/plots/scene_view.h"
 #include "ui/session.h"
 
 using namespace grazelab::ui;
@@ -127,6 +132,16 @@ class FilesTest : public QObject {
     const QString plot = dir.filePath(QStringLiteral("plot.png"));
     QVERIFY2(m_window->savePlotSnapshot(plot, &error, QSize(800, 600)), qPrintable(error));
     QCOMPARE(QImage(plot).size(), QSize(1600, 1200));
+    // any view can be saved, not only a chart that a click made current (the map and the
+    // animation start runs when clicked): here the animated chain, at a slide's size
+    SceneView* chain = nullptr;
+    for (SceneView* view : m_window->sceneViews()) {
+      if (view->viewTitle().contains(QStringLiteral("chain"))) chain = view;
+    }
+    QVERIFY(chain);
+    const QString chainPath = dir.filePath(QStringLiteral("chain.png"));
+    QVERIFY2(m_window->savePlotSnapshot(chainPath, &error, QSize(1920, 1080), chain), qPrintable(error));
+    QCOMPARE(QImage(chainPath).size(), QSize(3840, 2160));
 
     QVERIFY(m_window->suggestedFileName(QStringLiteral("window"), QStringLiteral(".png"))
                 .startsWith(QStringLiteral("grazing-lambda") + lambda + QStringLiteral("-window")));
@@ -269,13 +284,100 @@ class FilesTest : public QObject {
     QString error;
     QVERIFY2(m_window->exportCsv(path, &error), qPrintable(error));
     const QList<QByteArray> lines = readAll(path).split('\n');
-    // the parameters first, in comment lines, then the table
+    // the parameters first, in comment lines (in words, as a session, as a command line),
+    // what each plot's columns mean, then the table
     QVERIFY(lines[0].startsWith("# GrazeLab: "));
     QVERIFY(lines[1].startsWith("# session: {"));
-    QCOMPARE(lines[2], QByteArray("plot,series,x,y"));
+    QVERIFY(lines[2].startsWith("# the run again: grazelab-cli simulate "));
+    const qsizetype columns = lines.indexOf(QByteArray("plot,series,x,y,value"));
+    QVERIFY(columns > 3);
+    for (qsizetype i = 3; i < columns; ++i) QVERIFY(lines[i].startsWith("# "));
+    QVERIFY(lines[3].startsWith("# columns: "));
     const auto& samples = m_window->displayed()->result->samples;
     QVERIFY(lines.size() > qsizetype(samples.size()));
+    // no series without a name
+    for (qsizetype i = columns + 1; i < lines.size(); ++i) QVERIFY2(!lines[i].contains("\"\",") , lines[i].constData());
     QVERIFY(QFileInfo::exists(sessionPathFor(path)));
+  }
+
+  // a run started with the mouse (on H, the stop line, the map, the modes picture): every
+  // export describes that run, its session reopens it bit for bit, and the CSV's command line
+  // gives the same events from the command-line tool
+  void exportsOfAClickedRunReproduceIt() {
+    const grazelab::core::Model model = m_window->displayed()->request->job.spec.model;
+    const double middle = model.k2 * model.gap / (model.k1 + model.k2);  // inside every level
+    QVERIFY(m_window->startFromSection(QPointF(middle, 0.0)));
+    QVERIFY(waitForLatestFinal(*m_window));
+    const grazelab::core::State clicked = m_window->displayed()->request->job.spec.run.initial;
+    QVERIFY(m_window->displayed()->request->clickedStart.has_value());
+    QVERIFY(*m_window->displayed()->request->clickedStart == clicked);
+    const std::vector<grazelab::core::Event> events = m_window->displayed()->result->events;
+    QVERIFY(events.size() > 3);
+
+    QTemporaryDir dir;
+    const QString csvPath = dir.filePath(QStringLiteral("clicked.csv"));
+    QString error;
+    QVERIFY2(m_window->exportCsv(csvPath, &error), qPrintable(error));
+    const QList<QByteArray> lines = readAll(csvPath).split('\n');
+    QVERIFY2(lines[0].contains("from the clicked start"), lines[0].constData());
+    QVERIFY(!lines[0].contains("λ ="));  // the scene's start does not describe this run
+    const QByteArray command = lines[2].mid(QByteArray("# the run again: ").size());
+    QVERIFY(command.contains("--state " + shortestText(clicked.u1).toUtf8() + ","));
+
+    // the session beside it opens that run again, whatever the window shows meanwhile
+    m_window->setParams(m_window->scene().defaults());
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY(!(m_window->displayed()->request->job.spec.run.initial == clicked));
+    QVERIFY2(m_window->openSession(sessionPathFor(csvPath), &error), qPrintable(error));
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY(m_window->displayed()->request->job.spec.run.initial == clicked);
+    const auto& again = m_window->displayed()->result->events;
+    QCOMPARE(again.size(), events.size());
+    for (std::size_t i = 0; i < events.size(); ++i) QCOMPARE(again[i].t, events[i].t);
+    QVERIFY(m_window->parameterPanel()->clickedStartText().contains(QStringLiteral("clicked start")));
+
+    // the command line: the same events to the last bit
+    const QString cli = qEnvironmentVariable("GRAZELAB_CLI");
+    if (cli.isEmpty()) QSKIP("GRAZELAB_CLI is not set (run through ctest)");
+    QStringList arguments = QString::fromUtf8(command).split(QLatin1Char(' '), Qt::SkipEmptyParts);
+    QCOMPARE(arguments.takeFirst(), QStringLiteral("grazelab-cli"));
+    QProcess process;
+    process.start(cli, arguments);
+    QVERIFY(process.waitForFinished(60000));
+    QCOMPARE(process.exitCode(), 0);
+    const QJsonArray printed = QJsonDocument::fromJson(process.readAllStandardOutput()).object()
+                                   .value(QStringLiteral("events")).toArray();
+    QCOMPARE(qsizetype(printed.size()), qsizetype(events.size()));
+    for (qsizetype i = 0; i < printed.size(); ++i) {
+      QCOMPARE(printed[i].toObject().value(QStringLiteral("t")).toDouble(), events[std::size_t(i)].t);
+      QCOMPARE(printed[i].toObject().value(QStringLiteral("u1")).toDouble(), events[std::size_t(i)].after.u1);
+    }
+  }
+
+  // a window picture taken while the panel holds a refused value shows the run's parameters
+  // in the panel, not the refused one beside plots of another chain; the panel keeps what was
+  // typed afterwards
+  void aWindowSnapshotIsOneState() {
+    const Params shown = m_window->displayed()->request->params;
+    Params refused = shown;
+    refused.m2 = 0.9 * refused.m1;  // beyond 9/16: no 1:2 design
+    m_window->setParams(refused);
+    QVERIFY(!m_window->problem().isEmpty());
+    // the panel as a picture of the window has it (saveWindowSnapshot draws through this)
+    Params inPicture;
+    QString messageInPicture = QStringLiteral("unset");
+    m_window->withDisplayedRunInPanel([&] {
+      inPicture = m_window->parameterPanel()->params();
+      messageInPicture = m_window->parameterPanel()->message();
+    });
+    QVERIFY(inPicture == shown);
+    QVERIFY(messageInPicture.isEmpty());
+    QVERIFY(m_window->parameterPanel()->params() == refused);
+    QVERIFY(!m_window->parameterPanel()->message().isEmpty());
+    QTemporaryDir dir;
+    QString error;
+    QVERIFY2(m_window->saveWindowSnapshot(dir.filePath(QStringLiteral("w.png")), &error), qPrintable(error));
+    QVERIFY(m_window->parameterPanel()->params() == refused);
   }
 
   void failedSaveSaysWhyAndKeepsEverything() {

@@ -131,6 +131,12 @@ class ScenesTest : public QObject {
       atT2 += point.fftFirst == T2;
     }
     QVERIFY(atT2 > 1000);
+    // the CSV holds the map, cell by cell, with the value its colour shows (issue 30)
+    const QStringList rows = m_window->plottedDataCsv().split(QLatin1Char('\n'));
+    const qsizetype cells = std::count_if(rows.begin(), rows.end(), [](const QString& row) {
+      return row.contains(QStringLiteral(",\"map\","));
+    });
+    QCOMPARE(cells, qsizetype(map.spec.x.count * map.spec.y.count));
   }
 
   // a click runs from that point of the plane; a dragged rectangle is computed anew at the

@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/accuracy_view.h"
 
+#include "ui/plots/csv_table.h"
+
 #include <QComboBox>
 
 #include "ui/eliding_combo_box.h"
@@ -69,6 +71,20 @@ QString accuracyLabel(const core::methods::WorkPrecisionPoint& point) {
   return label + QStringLiteral(": error %1, %2 ms")
                      .arg(point.errors.state, 0, 'e', 1)
                      .arg(point.secondsMin * 1e3, 0, 'g', 2);
+}
+
+void AccuracyView::appendCsv(CsvTable& table) const {
+  const QString plot = tr("Error against run time");
+  table.describe(plot, tr("run time [s] (the fastest of its timed runs)"),
+                 tr("state error at the end (max |Δu|/X, |Δv|/V against binary128)"),
+                 tr("contact-time error (max |Δt|/T₂ over the matched contacts)"));
+  if (!m_shown) return;
+  for (const auto& p : m_shown->points) {
+    const core::methods::WorkPrecisionPoint& point = p.point;
+    if (point.status != core::methods::RunStatus::Completed) continue;
+    const QString series = methodInWords(point.setting.kind) + QStringLiteral(", ") + settingInWords(point.setting);
+    table.add(plot, series, point.secondsMin, point.errors.state, point.errors.contactTime);
+  }
 }
 
 AccuracyView::AccuracyView(QWidget* parent) : QWidget(parent) {

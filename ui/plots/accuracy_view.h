@@ -30,6 +30,10 @@ class AccuracyView : public QWidget, public SceneView {
   void show(const SimUpdate& update) override;
   /// Presentation mode for its chart (ui/plots/log_log_chart.h).
   void setPresentation(bool on, int textPixels) override;
+  /// Every finished setting: x = its run time, y = its state error, value = its contact-time
+  /// error (the chart's points, with the series named by method and setting).
+  void appendCsv(CsvTable& table) const override;
+  QString viewTitle() const override { return tr("Error against run time"); }
   LogLogChart* chart() const { return m_chart; }
   /// The runs offered for the overlay, in the picker's order.
   int overlayCount() const;

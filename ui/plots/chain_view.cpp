@@ -126,7 +126,18 @@ class ChainView::Canvas : public QWidget {
       painter.drawText(box, Qt::AlignCenter, label);
     };
     drawMass(x1, box1, height1, tr("m₁"), QColor(0x44, 0x44, 0x44));
-    drawMass(x2, box2, height2, tr("m₂"), flash.isValid() ? flash : QColor(0x00, 0x72, 0xB2));
+    // the model's masses are points on springs: far enough from rest they pass each other,
+    // which boxes true to scale cannot hide; mass 2 is drawn see-through and it is said
+    const bool overlap = x1 + box1 / 2 > x2 - box2 / 2;
+    QColor fill2 = flash.isValid() ? flash : QColor(0x00, 0x72, 0xB2);
+    if (overlap) fill2.setAlpha(170);
+    drawMass(x2, box2, height2, tr("m₂"), fill2);
+    if (overlap) {
+      painter.setPen(QColor(0xa0, 0x10, 0x10));
+      painter.drawText(rect().adjusted(8, 6, -8, -6), Qt::AlignLeft | Qt::AlignBottom | Qt::TextWordWrap,
+                       tr("m₁ and m₂ overlap here: the linear model lets the masses pass each other "
+                          "(it has no contact between them)"));
+    }
     // the gap d, measured from mass 2 at rest
     painter.setPen(QPen(Qt::black, 1));
     const double restFace = px(2 * rest + box2 / 2);

@@ -34,6 +34,7 @@ class ChainView : public QWidget, public SceneView {
   explicit ChainView(QWidget* parent = nullptr);
 
   QWidget* widget() override { return this; }
+  QString viewTitle() const override { return tr("The chain, moving"); }
   void show(const SimUpdate& update) override;
   void setPresentation(bool on, int textPixels) override;
 

@@ -20,6 +20,7 @@ FreeFlightPlot::FreeFlightPlot(QWidget* parent)
   useLightMarker(flights);
   m_flights = addEntry(flights, Decimation::Scatter);
   m_period = addEntry(makeLine(tr("bound: T₂"), colors::kImpact, 1.5, Qt::DashLine), Decimation::None);
+  setAxesIndependent(true);
   setToolTip(tr("Free-flight time (FFT): the time from leaving the stop to the next contact, "
                 "against the index of that contact, in units of T₂, the slow period. Theorem 2.3: FFT ≤ T₂ "
                 "(dashed: FFT / T₂ = 1), with equality only on a grazing orbit."));

@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/landscape_view.h"
 
+#include "ui/plots/csv_table.h"
+
 #include <QComboBox>
 
 #include "ui/eliding_combo_box.h"
@@ -59,7 +61,9 @@ LandscapeView::LandscapeView(QWidget* parent) : QWidget(parent) {
   m_quantityBox = new ElidingComboBox;
   for (const core::QuantityInfo& info : core::quantities()) {
     if (info.quantity == core::Quantity::Horizon) continue;  // the map is not estimated
-    m_quantityBox->addItem(QString::fromUtf8(info.meaning), int(info.quantity));
+    // core's words are plain text for files and terminals ("/ T2"): shown with T₂
+    m_quantityBox->addItem(QString::fromUtf8(info.meaning).replace(QStringLiteral("T2"), QStringLiteral("T₂")),
+                           int(info.quantity));
   }
   m_quantityBox->setToolTip(tr("The quantity of each run drawn on the map (each point is a run "
                                "of 10 contacts from that start)"));
@@ -114,10 +118,7 @@ void LandscapeView::show(const SimUpdate& update) {
                              : tr("computing: %1 of %2 rows")
                                    .arg(update.map->rowsDone)
                                    .arg(spec.y.count);
-    // the key of the marks over the map, and what the map cost
-    m_status->setText(tr("<span style=\"color:%1\">●</span> the run's (u₁, v₁) at each contact · "
-                         "<span style=\"color:%2\">✚</span> its start · ╍ GLO(λ), λ in [0, 4/3] · %3")
-                          .arg(colors::kImpact.name(), colors::kAccent.name(), cost));
+    m_cost = cost;
   }
   const SimRequest& request = *update.request;
   m_gap = request.job.spec.model.gap;
@@ -140,6 +141,13 @@ void LandscapeView::show(const SimUpdate& update) {
   const core::State& start = request.job.spec.run.initial;
   m_start.reset();
   if (start.u2 == m_gap && start.v2 == 0) m_start = QPointF(start.u1, start.v1);
+  // the key of the marks over the map (the start's only when the run starts on this plane,
+  // where the cross is drawn), and what the map cost
+  const QString startKey = m_start ? tr("<span style=\"color:%1\">✚</span> its start · ").arg(colors::kAccent.name())
+                                   : QString();
+  m_status->setText(tr("<span style=\"color:%1\">●</span> the run's (u₁, v₁) at each contact · %2"
+                       "╍ GLO(λ), λ in [0, 4/3] · %3")
+                        .arg(colors::kImpact.name(), startKey, m_cost));
   QWidget::update();
 }
 
@@ -181,6 +189,23 @@ QPointF LandscapeView::positionOf(QPointF value) const {
   const auto [y0, y1] = cellExtent(spec.y.from, spec.y.to, spec.y.count);
   return QPointF(plot.left() + (value.x() - x0) / (x1 - x0) * plot.width(),
                  plot.bottom() - (value.y() - y0) / (y1 - y0) * plot.height());
+}
+
+void LandscapeView::appendCsv(CsvTable& table) const {
+  if (!m_map) return;
+  const HeatMapData data = heatMapDataOf(*m_map);
+  table.describe(data.title, data.xTitle, data.yTitle, data.valueTitle);
+  const auto at = [](double from, double to, std::int64_t count, std::int64_t i) {
+    return count > 1 ? from + (to - from) * double(i) / double(count - 1) : from;
+  };
+  const std::int64_t ready = data.rowsReady < 0 ? data.rows : data.rowsReady;
+  for (std::int64_t row = 0; row < ready; ++row) {
+    for (std::int64_t column = 0; column < data.columns; ++column) {
+      table.add(data.title, tr("map"), at(data.xFrom, data.xTo, data.columns, column),
+                at(data.yFrom, data.yTo, data.rows, row), data.values[std::size_t(row * data.columns + column)]);
+    }
+  }
+  for (const QPointF& p : m_family) table.add(data.title, tr("grazing family GLO_λ, λ in [0, 4/3]"), p.x(), p.y());
 }
 
 HeatMapData LandscapeView::heatMapDataOf(const MapProgress& map) const {
@@ -244,6 +269,8 @@ void LandscapeView::paintEvent(QPaintEvent*) {
     QRectF taken;  // the first label's box: the second goes below its point if they would meet
     for (const auto& [value, name] : {std::pair{m_glom1, QStringLiteral("GLOM₁")}, std::pair{m_glom2, QStringLiteral("GLOM₂")}}) {
       const QPointF at = positionOf(value);
+      // a mode outside a zoomed region is not on the map: no label pinned to its edge
+      if (!plot.contains(at)) continue;
       painter.setPen(QPen(Qt::black, 1.5));
       painter.setBrush(Qt::white);
       painter.drawEllipse(at, 5 + line, 5 + line);

@@ -36,6 +36,10 @@ class LandscapeView : public QWidget, public SceneView {
   QWidget* widget() override { return this; }
   void show(const SimUpdate& update) override;
   void setPresentation(bool on, int textPixels) override;
+  /// The map's finished cells (x = u1, y = v1 of the start, value = the quantity shown) and
+  /// the grazing family drawn over it.
+  void appendCsv(CsvTable& table) const override;
+  QString viewTitle() const override { return tr("Landscape map"); }
 
   /// The map shown (nothing before the first one arrives).
   const std::optional<MapProgress>& map() const { return m_map; }
@@ -73,6 +77,7 @@ class LandscapeView : public QWidget, public SceneView {
   std::optional<MapProgress> m_map;
   double m_T2 = 0;  ///< the chain's slow period: times on the map are shown in its units
   double m_gap = 1;
+  QString m_cost;  ///< what the map cost (or how far it is), for the key under it
   std::vector<QPointF> m_family;      ///< GLO(λ) data (u1, v1) for λ in [0, 4/3]
   QPointF m_glom1, m_glom2;           ///< GLOM1 and GLOM2 data
   std::vector<QPointF> m_section;     ///< the run's (u1, v1) at each contact

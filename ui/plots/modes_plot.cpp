@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/modes_plot.h"
 
+#include "ui/plots/csv_table.h"
+
 #include <QChart>
 #include <QScatterSeries>
 
@@ -47,6 +49,8 @@ ModesPlot::ModesPlot(QWidget* parent)
     unstable->setPen(QPen(colour, 1.5));
     useLightMarker(unstable, QPen(colour, 1.5));
     m_dots[cls][1] = addEntry(unstable, Decimation::Scatter);
+    setCsvName(m_dots[cls][0], tr("%1, stable").arg(impactsText(cls)));
+    setCsvName(m_dots[cls][1], tr("%1, unstable").arg(impactsText(cls)));
   }
   auto* ring = makeScatter(tr("○ unstable"), Qt::white, 6);
   ring->setPen(QPen(Qt::darkGray, 1.5));
@@ -83,11 +87,40 @@ ModesPlot::ModesPlot(QWidget* parent)
   connect(this, &PlotView::clickedAt, this, &ModesPlot::choose);
 }
 
+void ModesPlot::appendCsv(CsvTable& table) const {
+  const QString plot = title();
+  table.describe(plot, tr("energy E"), tr("frequency 2π/T"), tr("T/T₂"));
+  if (!m_atlas) return;
+  const auto add = [&](const QString& series, double energy, double period) {
+    table.add(plot, series, energy, 2 * M_PI / period, m_T2 > 0 ? std::optional(period / m_T2) : std::nullopt);
+  };
+  for (const core::ModeFamily<double>& family : m_atlas->families) {
+    const QString name = tr("family %1 (%2 impacts per period)").arg(family.id).arg(family.impacts);
+    for (const core::FamilyOrbit<double>& orbit : family.orbits) {
+      const bool stable = orbit.stability == core::Stability::Elliptic;
+      add(name + (stable ? tr(", stable") : tr(", unstable")), orbit.energy, orbit.period);
+    }
+    for (const core::FamilyBifurcation<double>& b : family.bifurcations) {
+      QString kind = QString::fromUtf8(core::toString(b.kind).data());
+      if (b.kind == core::PointKind::PeriodDoubling && b.born < 0 && !b.birthProblem.empty()) {
+        kind = tr("flip, no family found");
+      }
+      add(name + QStringLiteral(": ") + kind, b.energy, b.T);
+    }
+    for (const core::FamilyEnd<double>* end : {&family.startEnd, &family.end}) {
+      if (end->period > 0) {
+        add(name + tr(": end (%1)").arg(QString::fromUtf8(core::toString(end->kind).data())), end->energy, end->period);
+      }
+    }
+  }
+}
+
 void ModesPlot::show(const SimUpdate& update) {
   const SceneJob& job = update.request->job;
   if (!job.modes) return;
   if (job.modes != m_atlas) {
     m_atlas = job.modes;
+    m_T2 = update.request->derived.modes.T2;
     std::vector<QPointF> dots[4][2];
     std::vector<QPointF> flips;
     std::vector<QPointF> orphanFlips;

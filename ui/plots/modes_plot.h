@@ -20,6 +20,9 @@ class ModesPlot final : public PlotView {
   explicit ModesPlot(QWidget* parent = nullptr);
   void show(const SimUpdate& update) override;
   bool drawsSceneDataOnly() const override { return true; }
+  /// The atlas itself, orbit by orbit and point by point: x = E, y = 2π/T, value = T/T₂
+  /// (the picture's x is log₁₀ E).
+  void appendCsv(CsvTable& table) const override;
   /// How near a click must fall to a family's orbit to choose it [pixels].
   static constexpr double kChoiceRadius = 24;
 
@@ -33,6 +36,7 @@ class ModesPlot final : public PlotView {
   void choose(QPointF value);
 
   std::shared_ptr<const core::ModesAtlas<double>> m_atlas;
+  double m_T2 = 0;  ///< the chain's slow period, for T/T2 in a CSV export
   int m_dots[4][2] = {};  ///< per class of impacts (1, 2, 4, more) and stable / unstable
   int m_unstableKey = 0;  ///< a legend entry only: what a ring means
   int m_flips = 0;

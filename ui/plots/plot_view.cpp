@@ -2,6 +2,9 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/plot_view.h"
 
+#include "ui/plots/csv_table.h"
+
+#include <QApplication>
 #include <QChart>
 #include <QFontMetricsF>
 #include <QKeyEvent>
@@ -162,6 +165,8 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
   setMinimumSize(200, 160);  // again after each resize (resizeEvent)
 
   setTitles(title, xTitle, yTitle);
+  m_clickTimer.setSingleShot(true);
+  connect(&m_clickTimer, &QTimer::timeout, this, [this] { emit clickedAt(m_clickedValue); });
   m_refreshTimer.setSingleShot(true);
   m_refreshTimer.setInterval(0);
   connect(&m_refreshTimer, &QTimer::timeout, this, &PlotView::refresh);
@@ -329,6 +334,8 @@ void PlotView::userMovedView() {
 
 QString PlotView::title() const { return m_title; }
 
+void PlotView::setCsvName(int index, const QString& name) { m_entries[std::size_t(index)].csvName = name; }
+
 void PlotView::setTitles(const QString& title, const QString& xTitle, const QString& yTitle) {
   m_title = title;
   m_xTitle = xTitle;
@@ -377,19 +384,13 @@ qsizetype PlotView::drawnPointCount() const {
   return count;
 }
 
-void PlotView::appendCsv(QString& csv) const {
-  auto quote = [](QString text) {
-    text.replace(QLatin1Char('"'), QStringLiteral("\"\""));
-    return QLatin1Char('"') + text + QLatin1Char('"');
-  };
-  const QString plot = quote(title());
+void PlotView::appendCsv(CsvTable& table) const {
+  table.describe(m_title, m_xTitle, m_yTitle);
   for (const Entry& entry : m_entries) {
-    const QString quoted = plot + QLatin1Char(',') + quote(entry.series->name());
+    const QString name = entry.csvName.isEmpty() ? entry.series->name() : entry.csvName;
     const PointSpan points = entry.points();
     for (std::size_t index = 0; index < points.size(); ++index) {
-      const QPointF point = points[index];
-      csv += quoted + QLatin1Char(',') + QString::number(point.x(), 'g', 17) + QLatin1Char(',') +
-             QString::number(point.y(), 'g', 17) + QLatin1Char('\n');
+      table.add(m_title, name, points[index].x(), points[index].y());
     }
   }
 }
@@ -451,9 +452,10 @@ QRectF PlotView::wantedRange() {
   // coordinate that is zero up to round-off stays a flat line
   const double scaleX = std::max({std::abs(xLow), std::abs(xHigh), xHigh - xLow});
   const double scaleY = std::max({std::abs(yLow), std::abs(yHigh), yHigh - yLow});
+  // (not across unrelated axes: 10^6 contacts made the flights' span of 0.01 a flat line at 1)
   const double overall = std::max(scaleX, scaleY);
   auto usable = [&](double scale) {
-    const double floored = std::max(scale, 1e-3 * overall);
+    const double floored = m_axesIndependent ? scale : std::max(scale, 1e-3 * overall);
     return std::isfinite(floored) && floored > 0 ? floored : 1.0;
   };
   auto [x0, x1] = padded(xLow, xHigh, usable(scaleX));
@@ -653,7 +655,8 @@ void PlotView::mouseReleaseEvent(QMouseEvent* event) {
   const QPoint position = event->position().toPoint();
   if (event->button() == Qt::LeftButton && (position - m_pressPosition).manhattanLength() < 4 &&
       chart()->plotArea().contains(position)) {
-    emit clickedAt(chart()->mapToValue(position));
+    m_clickedValue = chart()->mapToValue(position);
+    m_clickTimer.start(QApplication::doubleClickInterval());
   }
 }
 
@@ -691,6 +694,7 @@ void PlotView::resizeEvent(QResizeEvent* event) {
 }
 
 void PlotView::mouseDoubleClickEvent(QMouseEvent* event) {
+  m_clickTimer.stop();  // its first click starts no run
   emit enlargeRequested(this);
   event->accept();
 }

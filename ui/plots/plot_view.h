@@ -60,6 +60,7 @@ class PlotView : public QChartView, public SceneView {
     PointSpan points() const { return owner ? inPlace : PointSpan(data); }
     Decimation decimation = Decimation::None;
     bool inBounds = true;  ///< counts for the automatic axis ranges
+    QString csvName;       ///< the series' name in a CSV export, when not its legend name
     double baseWidth = 0;   ///< the desk look: line width or marker size
     /// what has been drawn of `data`, kept while points are only appended
     std::shared_ptr<IncrementalDecimation> reduced;
@@ -81,6 +82,9 @@ class PlotView : public QChartView, public SceneView {
   /// that they (and the drawing of every point) change a few times over the run, not at every
   /// update; the final result is fitted tightly.
   void setGrowing(bool growing) { m_growing = growing; }
+  /// The axes measure unrelated things (a contact index against a flight time): neither
+  /// axis's least span follows the other's scale.
+  void setAxesIndependent(bool independent) { m_axesIndependent = independent; }
   /// Forgets zoom and pan at the next update, without redrawing the data shown now (a new
   /// result is on its way: refitting and repainting the old one would only delay it).
   void followDataFromNextUpdate() { m_followData = true; }
@@ -101,7 +105,9 @@ class PlotView : public QChartView, public SceneView {
   /// Number of points currently handed to Qt Charts, summed over series.
   qsizetype drawnPointCount() const;
   /// Appends the plotted data at full resolution as CSV rows "plot,series,x,y" (no header).
-  void appendCsv(QString& csv) const;
+  /// Every drawn point: plot = the title, series = its legend name, x and y as the axes say.
+  void appendCsv(CsvTable& table) const override;
+  QString viewTitle() const override { return title(); }
   QString title() const;
   /// The chart's title and axis titles, kept whole: each is wrapped onto more lines where the
   /// view is too narrow for it (Qt Charts would cut it to "…").
@@ -124,11 +130,15 @@ class PlotView : public QChartView, public SceneView {
   /// plot area and a note in its corner), or clears the mark.
   void setStale(bool stale);
   bool isStale() const { return m_stale; }
+  /// A click waits for the double-click interval before it is sent as clickedAt.
+  bool clickPending() const { return m_clickTimer.isActive(); }
 
  signals:
   /// The user double-clicked the plot: enlarge it (or put it back).
   void enlargeRequested(grazelab::ui::PlotView* plot);
-  /// A left click without a drag inside the plot area, at data coordinates `value`.
+  /// A left click without a drag inside the plot area, at data coordinates `value`; sent once
+  /// the double-click interval has passed without a second click (a double-click enlarges the
+  /// plot and starts nothing).
   void clickedAt(QPointF value);
   /// The user clicked or focused this plot (it becomes the "current plot").
   void activated(grazelab::ui::PlotView* plot);
@@ -138,6 +148,9 @@ class PlotView : public QChartView, public SceneView {
  protected:
   int addEntry(QXYSeries* series, Decimation decimation, bool inBounds = true);
   void setData(int index, std::vector<QPointF> data);
+  /// The series' name in a CSV export, in place of its legend name (which may be empty or
+  /// shared with another series).
+  void setCsvName(int index, const QString& name);
   /// Leaves a series out of the legend (a cursor, an empty bin) or puts it back; a series
   /// without a name is never in it.
   void setInLegend(QXYSeries* series, bool shown);
@@ -196,6 +209,7 @@ class PlotView : public QChartView, public SceneView {
   std::vector<int> m_joinedScatters;
   IncrementalScatterSets m_joinedReduced;
   bool m_growing = false;
+  bool m_axesIndependent = false;
   bool m_newRun = true;
   int m_decimationsFromScratch = 0;
   std::optional<QRectF> m_fixedRange;
@@ -214,6 +228,8 @@ class PlotView : public QChartView, public SceneView {
   void placeStaleNote();
   std::unique_ptr<WrappedLegend> m_legend;
   QTimer m_refreshTimer;
+  QTimer m_clickTimer;      ///< a click waiting to be told apart from a double-click
+  QPointF m_clickedValue;   ///< where it fell, in the data's coordinates
   bool m_followData = true;
   bool m_panning = false;
   QPoint m_lastPanPosition;

@@ -9,6 +9,8 @@ class QWidget;
 
 namespace grazelab::ui {
 
+class CsvTable;
+
 /// What every view of a scene does, charts and the animation alike: take the worker's update,
 /// take the presentation look, and follow the animation's time if it is time-based. The
 /// window holds its scene's views as a list of these and lays out their widgets.
@@ -16,6 +18,8 @@ class SceneView {
  public:
   virtual ~SceneView() = default;
   virtual QWidget* widget() = 0;
+  /// What the view is called where one is chosen (saving a plot): its title in words.
+  virtual QString viewTitle() const = 0;
   /// Fills the view from an update of the worker.
   virtual void show(const SimUpdate& update) = 0;
   /// Presentation mode: text of `textPixels`, thicker lines; off restores the desk look.
@@ -31,6 +35,9 @@ class SceneView {
   /// Whether the view draws the scene's own data only (no run), so that it can show what the
   /// scene has computed so far (SimUpdate::scenePartial).
   virtual bool drawsSceneDataOnly() const { return false; }
+  /// Adds what the view shows to a CSV export (nothing for a view with no data of its own,
+  /// such as the animated chain).
+  virtual void appendCsv(CsvTable& table) const { (void)table; }
 };
 
 /// The stretch of a long run that time-based views show: `periods` slow periods that hold the

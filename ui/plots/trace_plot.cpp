@@ -69,7 +69,7 @@ void TracePlot::placeWindow() {
   if (m_whole || m_runWindow.wholeFits(m_window, m_T2)) {
     setXWindow(std::nullopt);
     // the samples may cover only the run's first periods; say so when the run goes on
-    setXTitle(m_samplesCut ? tr("time t (first %1 of %2)")
+    setXTitle(m_samplesCut ? tr("time t (sampled to %1 of the run's %2)")
                                  .arg(m_window, 0, 'g', 3)
                                  .arg(m_tFinal, 0, 'g', 3)
                            : tr("time t"));
@@ -77,10 +77,14 @@ void TracePlot::placeWindow() {
   }
   m_runWindow.follow(m_cursorTime, m_window, m_T2);
   setXWindow(std::pair(m_runWindow.from(), m_runWindow.to()));
-  // short: a longer title wrapped to three lines and was cut; W is in the tooltip and menu
-  setXTitle(tr("time t (%1 T₂ of %2)")
-                .arg(RunWindow::kPeriods)
-                .arg(m_samplesCut ? m_window : m_tFinal, 0, 'g', 3));
+  // every number a time, the same as W's: what is shown, of what was sampled, of the run
+  // (short: a longer title wrapped to three lines and was cut; W is in the tooltip and menu)
+  const QString shown = tr("%1 to %2").arg(m_runWindow.from(), 0, 'g', 3).arg(m_runWindow.to(), 0, 'g', 3);
+  setXTitle(m_samplesCut ? tr("time t (%1; sampled to %2 of %3)")
+                               .arg(shown)
+                               .arg(m_window, 0, 'g', 3)
+                               .arg(m_tFinal, 0, 'g', 3)
+                         : tr("time t (%1 of %2)").arg(shown).arg(m_tFinal, 0, 'g', 3));
 }
 
 void TracePlot::setWholeRun(bool whole) {
