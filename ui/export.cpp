@@ -14,7 +14,11 @@
 #include <QPdfWriter>
 #include <QScrollArea>
 #include <QSaveFile>
+#include <QMenuBar>
+#include <QScatterSeries>
 #include <QSvgGenerator>
+#include <QValueAxis>
+#include <QXYSeries>
 #include <QWidget>
 
 namespace grazelab::ui {
@@ -109,6 +113,93 @@ class ScrollAreasAsPictures {
   QPointer<QWidget> m_focus;
 };
 
+// Qt 6.4's SVG generator writes no clipping at all: a chart's series ran past its plot area
+// (the stop line of a time window across the neighbouring view, a zoomed curve over its axis
+// title) and a menu bar's background covered its text. While an SVG is drawn each series
+// holds only what its axes show: a line cut where it crosses the x range's ends (a window of
+// time, a zoom), markers inside the plot; and the menu bar, which is no content, is hidden.
+class SeriesInTheirAxes {
+ public:
+  explicit SeriesInTheirAxes(QWidget* root) {
+    QList<QChartView*> views = root->findChildren<QChartView*>();
+    if (auto* view = qobject_cast<QChartView*>(root)) views.append(view);
+    for (QChartView* view : views) {
+      for (QAbstractSeries* abstract : view->chart()->series()) {
+        auto* series = qobject_cast<QXYSeries*>(abstract);
+        if (!series || !series->isVisible()) continue;
+        const QRectF shown = axesRange(*series);
+        if (!shown.isValid()) continue;
+        const QList<QPointF> points = series->points();
+        const QList<QPointF> inside = qobject_cast<QScatterSeries*>(series) ? markersIn(points, shown)
+                                                                             : lineIn(points, shown);
+        if (inside == points) continue;
+        m_kept.append({series, points});
+        series->replace(inside);
+      }
+    }
+    for (QMenuBar* bar : root->findChildren<QMenuBar*>()) {
+      if (bar->isVisible()) {
+        bar->hide();
+        m_bars.append(bar);
+      }
+    }
+  }
+  ~SeriesInTheirAxes() {
+    for (auto& [series, points] : m_kept) {
+      if (series) series->replace(points);
+    }
+    for (QMenuBar* bar : m_bars) {
+      if (bar) bar->show();
+    }
+  }
+  SeriesInTheirAxes(const SeriesInTheirAxes&) = delete;
+  SeriesInTheirAxes& operator=(const SeriesInTheirAxes&) = delete;
+
+ private:
+  static QRectF axesRange(QXYSeries& series) {
+    const QValueAxis* x = nullptr;
+    const QValueAxis* y = nullptr;
+    for (QAbstractAxis* axis : series.attachedAxes()) {
+      auto* value = qobject_cast<QValueAxis*>(axis);
+      if (value && value->orientation() == Qt::Horizontal) x = value;
+      if (value && value->orientation() == Qt::Vertical) y = value;
+    }
+    if (!x || !y) return {};
+    return QRectF(QPointF(x->min(), y->min()), QPointF(x->max(), y->max()));
+  }
+  static QList<QPointF> markersIn(const QList<QPointF>& points, const QRectF& shown) {
+    QList<QPointF> inside;
+    for (const QPointF& p : points) {
+      if (shown.contains(p)) inside.append(p);
+    }
+    return inside;
+  }
+  // the polyline between x = left and x = right, its crossings of those two lines included
+  static QList<QPointF> lineIn(const QList<QPointF>& points, const QRectF& shown) {
+    QList<QPointF> inside;
+    const double left = shown.left();
+    const double right = shown.right();
+    const auto at = [](const QPointF& a, const QPointF& b, double x) {
+      return QPointF(x, a.y() + (b.y() - a.y()) * (x - a.x()) / (b.x() - a.x()));
+    };
+    for (qsizetype i = 0; i < points.size(); ++i) {
+      const QPointF& p = points[i];
+      if (i > 0) {
+        const QPointF& q = points[i - 1];
+        // a segment entering or leaving the range (either way along x) gives its crossing
+        for (const double edge : {left, right}) {
+          if ((q.x() - edge) * (p.x() - edge) < 0) inside.append(at(q, p, edge));
+        }
+      }
+      if (p.x() >= left && p.x() <= right) inside.append(p);
+    }
+    return inside;
+  }
+
+  QList<QPair<QPointer<QXYSeries>, QList<QPointF>>> m_kept;
+  QList<QPointer<QMenuBar>> m_bars;
+};
+
 }  // namespace
 
 std::optional<SnapshotFormat> snapshotFormat(const QString& path) {
@@ -169,7 +260,12 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
         if (error) *error = QStringLiteral("cannot draw the SVG picture for %1").arg(path);
         return false;
       }
+      // no clipping in Qt 6.4's SVG (see SeriesInTheirAxes): the panel as a picture of what it
+      // shows, as in a PDF, and each series held to its axes
+      const SeriesInTheirAxes held(widget);
+      const ScrollAreasAsPictures pictures(widget);
       widget->render(&painter);
+      pictures.paint(painter);
       painter.end();
       break;
     }

@@ -127,14 +127,22 @@ bool MainWindow::savePlotSnapshot(const QString& path, QString* error, QSize siz
   std::unique_ptr<SceneView> copy(makeView(scene().plots()[std::size_t(index)]));
   QWidget* widget = copy->widget();
   widget->setAttribute(Qt::WA_DontShowOnScreen);
-  widget->resize(size);
-  widget->show();
+  // the look first, then the size: the chart lays its titles, ticks and legend out for both
   const int deskText = QFontInfo(font()).pixelSize();
   const int textPixels = std::max({m_presentation ? m_presentationText : 0, deskText, size.height() / 40});
   copy->setPresentation(textPixels > deskText, textPixels);
+  widget->resize(size);
+  widget->show();
   copy->setWholeRun(m_wholeRunAction->isChecked());
   copy->show(*m_displayed);
-  if (auto* plot = qobject_cast<PlotView*>(widget)) plot->refreshNow();
+  // the layout Qt does on its next turn of the event loop (the chart's items, the legend's
+  // place under the axis), done now, and the data fitted to it
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+  if (auto* plot = qobject_cast<PlotView*>(widget)) {
+    plot->refreshNow();
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    plot->refreshNow();
+  }
   return writeSnapshot(widget, path, error);
 }
 

@@ -10,6 +10,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QXmlStreamReader>
 #include <QScrollArea>
 #include <QStatusBar>
@@ -21,6 +22,7 @@
 #include "ui/main_window.h"
 #include "ui/number_box.h"
 #include "ui/parameter_panel.h"
+#include "ui/plots/plot_view.h"
 #include "ui/plots/scene_view.h"
 #include "ui/session.h"
 
@@ -95,6 +97,20 @@ class FilesTest : public QObject {
       QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
       QString error;
       QVERIFY2(sessionFromJson(description.toUtf8(), Params{}, &error), qPrintable(error));
+      // Qt 6.4's SVG has no clipping: nothing may be drawn past the picture's right edge (the
+      // u2(t) stop line ran 4000 px across the neighbouring views). Every translated group's
+      // path points, in the picture's coordinates:
+      const QString svg = QString::fromUtf8(readAll(path));
+      const QRegularExpression group(QStringLiteral(
+          "transform=\"matrix\\(1,0,0,1,([-0-9.e]+),[-0-9.e]+\\)\"[^>]*>\\s*<path[^>]* d=\"([^\"]*)\""));
+      const QRegularExpression pair(QStringLiteral("([-0-9.e]+),[-0-9.e]+"));
+      const double width = wholeWindow ? m_window->width() : m_window->currentPlot()->width();
+      double rightmost = 0;
+      for (const auto& g : group.globalMatch(svg)) {
+        const double tx = g.captured(1).toDouble();
+        for (const auto& p : pair.globalMatch(g.captured(2))) rightmost = std::max(rightmost, tx + p.captured(1).toDouble());
+      }
+      QVERIFY2(rightmost <= width + 2, qPrintable(QStringLiteral("drawn to x = %1 in %2").arg(rightmost).arg(width)));
     }
 
     // the parameters travel beside the picture and reopen to the same values

@@ -251,9 +251,11 @@ void ChainView::show(const SimUpdate& update) {
 
 void ChainView::setPresentation(bool on, int textPixels) {
   m_presentation = on;
-  QFont font = this->font();
+  // the whole view (its title and controls too: an enlarged export is drawn off the window,
+  // whose presentation font it does not share); off: the application's font again
+  QFont font;
   if (on) font.setPixelSize(textPixels);
-  m_canvas->setFont(font);
+  setFont(font);
   m_canvas->update();
 }
 

@@ -79,11 +79,8 @@ void TracePlot::placeWindow() {
   setXWindow(std::pair(m_runWindow.from(), m_runWindow.to()));
   // every number a time, the same as W's: what is shown, of what was sampled, of the run
   // (short: a longer title wrapped to three lines and was cut; W is in the tooltip and menu)
-  const QString shown = tr("%1 to %2").arg(m_runWindow.from(), 0, 'g', 3).arg(m_runWindow.to(), 0, 'g', 3);
-  setXTitle(m_samplesCut ? tr("time t (%1; sampled to %2 of %3)")
-                               .arg(shown)
-                               .arg(m_window, 0, 'g', 3)
-                               .arg(m_tFinal, 0, 'g', 3)
+  const QString shown = tr("%1–%2").arg(m_runWindow.from(), 0, 'g', 3).arg(m_runWindow.to(), 0, 'g', 3);
+  setXTitle(m_samplesCut ? tr("time t (%1 of %2 sampled)").arg(shown).arg(m_window, 0, 'g', 3)
                          : tr("time t (%1 of %2)").arg(shown).arg(m_tFinal, 0, 'g', 3));
 }
 

@@ -30,7 +30,7 @@ double spreadAfterPush(const DerivedModel& derived, const Params& params, double
 
 CurveFigure spreadFigure(const DerivedModel& derived, const Params& params, std::stop_token stop) {
   CurveFigure figure;
-  figure.title = tr("Theorem 2.2: how far the free-flight time (FFT) falls below T₂, against the push |δ|");
+  figure.title = tr("Theorem 2.2: free-flight time (FFT) below T₂ against the push |δ|");
   figure.xTitle = tr("log₁₀ |δ| (push)");
   figure.yTitle = tr("log₁₀ max (1 − FFT/T₂)");
   figure.toolTip = tr("For pushes of size |δ| off GLO(λ) (in the panel's direction), the largest "
