@@ -99,6 +99,16 @@ std::optional<Params> paramsFromJson(const QJsonObject& object, const Params& ba
     if (error) *error = text;
     return std::nullopt;
   };
+  // a misspelt name would otherwise be dropped and its run replaced by another ("horizon"
+  // for "contacts" ran 200 contacts where a million were asked)
+  QStringList known{QStringLiteral("direction"), QStringLiteral("resonantDesign"), QStringLiteral("branch"),
+                    QStringLiteral("mapRegion")};
+  for (ParamKey key : kAllKeys) known.append(jsonKey(key));
+  for (const QString& name : object.keys()) {
+    if (!known.contains(name)) {
+      return fail(QStringLiteral("unknown parameter \"%1\" (known: %2)").arg(name, known.join(QStringLiteral(", "))));
+    }
+  }
   for (ParamKey key : kAllKeys) {
     const QJsonValue value = object.value(jsonKey(key));
     if (value.isUndefined()) continue;

@@ -437,6 +437,13 @@ class FilesTest : public QObject {
     QVERIFY(!sessionFromJson(R"({"format": "grazelab-session", "params": {"m1": "heavy"}})",
                              Params{}, &error));
     QVERIFY(error.contains(QStringLiteral("m1")));
+    // a misspelt parameter is refused, not dropped for its default (another run)
+    QVERIFY(!sessionFromJson(R"({"format": "grazelab-session", "params": {"horizon": 1000000}})", Params{}, &error));
+    QVERIFY(error.contains(QStringLiteral("horizon")) && error.contains(QStringLiteral("contacts")));
+    // a clicked start must be four finite numbers
+    QVERIFY(!sessionFromJson(R"({"format": "grazelab-session", "params": {}, "start": {"u1": 0.1, "u2": 1}})",
+                             Params{}, &error));
+    QVERIFY(error.contains(QStringLiteral("v1")));
   }
 
  private:
