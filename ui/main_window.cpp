@@ -332,6 +332,7 @@ void MainWindow::buildPlots() {
     });
   }
   m_views = views;
+  m_viewsBuiltPresenting = m_presentation;
   m_enlarged = nullptr;
   layoutViews();
   m_currentPlot = m_plots.isEmpty() ? nullptr : m_plots.first();

@@ -216,6 +216,9 @@ class MainWindow : public QMainWindow {
   QList<QWidget*> m_views;             ///< their widgets, for the layout
   bool m_presentation = false;
   int m_presentationText = 0;          ///< text size in presentation mode [px]
+  /// the views were made while presenting: Qt Charts' theme took their "desk" fonts from the
+  /// large application font, so leaving presentation makes them anew
+  bool m_viewsBuiltPresenting = false;
   QFont m_deskFont;
   QRect m_deskGeometry;
   std::optional<core::State> m_clickedStart;  ///< a start chosen on H, until the next edit  ///< where the window was before presentation mode

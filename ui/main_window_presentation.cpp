@@ -60,6 +60,14 @@ void MainWindow::setPresentation(bool on, int screenHeight, bool fullScreen) {
     QApplication::setFont(m_deskFont);
     QApplication::setPalette(m_deskPalette);
   }
+  if (!on && m_viewsBuiltPresenting) {
+    // made under the large font, their desk look would keep it: made again at the desk's,
+    // showing what they showed
+    buildPlots();
+    if (m_displayed) {
+      for (SceneView* view : m_sceneViews) view->show(*m_displayed);
+    }
+  }
   for (SceneView* view : m_sceneViews) view->setPresentation(on, m_presentationText);
   if (fullScreen) {
     if (on) {

@@ -16,6 +16,7 @@
 #include <QScatterSeries>
 #include <QSlider>
 #include <QTemporaryDir>
+#include <QFontInfo>
 #include <QTest>
 #include <QValueAxis>
 #include <QXYSeries>
@@ -806,6 +807,7 @@ class ClassroomTest : public QObject {
   // presentation mode: text of at least 1/50 of the screen height, lines of 3 px or more, the
   // scenes in the order of the note on PageDown / PageUp, a plot enlarged by a double-click
   void presentationModeIsReadableAndSteppable() {
+    const int deskLabels = QFontInfo(axis(*m_window->plots().first(), Qt::Horizontal)->labelsFont()).pixelSize();
     m_window->setPresentation(true, 1080, false);
     QVERIFY(QApplication::font().pixelSize() >= 1080 / 50);
     for (const PlotView* plot : m_window->plots()) {
@@ -855,6 +857,14 @@ class ClassroomTest : public QObject {
     QVERIFY(m_window->parameterPanel()->isVisibleTo(m_window.get()));
     m_window->setPresentation(false, 1080, false);
     QVERIFY(QApplication::font().pixelSize() < 1080 / 50);
+    // the scenes were switched while presenting: their plots come back to the desk's text too
+    // (made under the large font, they once kept it)
+    for (const PlotView* plot : m_window->plots()) {
+      QCOMPARE(QFontInfo(axis(*plot, Qt::Horizontal)->labelsFont()).pixelSize(), deskLabels);
+      for (const PlotView::Entry& entry : plot->entries()) {
+        if (!qobject_cast<QScatterSeries*>(entry.series)) QVERIFY(entry.series->pen().widthF() < 3.0);
+      }
+    }
   }
 
  private:
