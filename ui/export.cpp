@@ -14,12 +14,17 @@
 #include <QPdfWriter>
 #include <QScrollArea>
 #include <QSaveFile>
+#include <QLegendMarker>
+#include <QLineSeries>
 #include <QMenuBar>
 #include <QScatterSeries>
 #include <QSvgGenerator>
 #include <QValueAxis>
 #include <QXYSeries>
 #include <QWidget>
+
+#include <optional>
+#include <utility>
 
 namespace grazelab::ui {
 namespace {
@@ -116,8 +121,10 @@ class ScrollAreasAsPictures {
 // Qt 6.4's SVG generator writes no clipping at all: a chart's series ran past its plot area
 // (the stop line of a time window across the neighbouring view, a zoomed curve over its axis
 // title) and a menu bar's background covered its text. While an SVG is drawn each series
-// holds only what its axes show: a line cut where it crosses the x range's ends (a window of
-// time, a zoom), markers inside the plot; and the menu bar, which is no content, is hidden.
+// holds only what its axes show — a line cut to the plot's rectangle (a piece that leaves and
+// comes back in goes on in a series of its own, in the same pen, kept out of the legend; one
+// series would join the pieces across the plot), markers inside it — and the menu bar, which
+// is no content, is hidden.
 class SeriesInTheirAxes {
  public:
   explicit SeriesInTheirAxes(QWidget* root) {
@@ -130,11 +137,13 @@ class SeriesInTheirAxes {
         const QRectF shown = axesRange(*series);
         if (!shown.isValid()) continue;
         const QList<QPointF> points = series->points();
-        const QList<QPointF> inside = qobject_cast<QScatterSeries*>(series) ? markersIn(points, shown)
-                                                                             : lineIn(points, shown);
-        if (inside == points) continue;
+        const QList<QList<QPointF>> pieces = qobject_cast<QScatterSeries*>(series)
+                                                 ? QList<QList<QPointF>>{markersIn(points, shown)}
+                                                 : linePieces(points, shown);
+        if (pieces.size() == 1 && pieces.front() == points) continue;
         m_kept.append({series, points});
-        series->replace(inside);
+        series->replace(pieces.isEmpty() ? QList<QPointF>{} : pieces.front());
+        for (qsizetype i = 1; i < pieces.size(); ++i) addPiece(*view->chart(), *series, pieces[i]);
       }
     }
     for (QMenuBar* bar : root->findChildren<QMenuBar*>()) {
@@ -145,6 +154,12 @@ class SeriesInTheirAxes {
     }
   }
   ~SeriesInTheirAxes() {
+    for (auto& [chart, piece] : m_pieces) {
+      if (chart && piece) {
+        chart->removeSeries(piece);
+        delete piece;
+      }
+    }
     for (auto& [series, points] : m_kept) {
       if (series) series->replace(points);
     }
@@ -174,28 +189,48 @@ class SeriesInTheirAxes {
     }
     return inside;
   }
-  // the polyline between x = left and x = right, its crossings of those two lines included
-  static QList<QPointF> lineIn(const QList<QPointF>& points, const QRectF& shown) {
-    QList<QPointF> inside;
-    const double left = shown.left();
-    const double right = shown.right();
-    const auto at = [](const QPointF& a, const QPointF& b, double x) {
-      return QPointF(x, a.y() + (b.y() - a.y()) * (x - a.x()) / (b.x() - a.x()));
-    };
-    for (qsizetype i = 0; i < points.size(); ++i) {
-      const QPointF& p = points[i];
-      if (i > 0) {
-        const QPointF& q = points[i - 1];
-        // a segment entering or leaving the range (either way along x) gives its crossing
-        for (const double edge : {left, right}) {
-          if ((q.x() - edge) * (p.x() - edge) < 0) inside.append(at(q, p, edge));
-        }
+  // The segment a-b cut to the rectangle (Liang-Barsky); nothing when it misses it.
+  static std::optional<std::pair<QPointF, QPointF>> cut(const QPointF& a, const QPointF& b, const QRectF& r) {
+    double t0 = 0, t1 = 1;
+    const double dx = b.x() - a.x(), dy = b.y() - a.y();
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {a.x() - r.left(), r.right() - a.x(), a.y() - r.top(), r.bottom() - a.y()};
+    for (int i = 0; i < 4; ++i) {
+      if (p[i] == 0) {
+        if (q[i] < 0) return std::nullopt;
+        continue;
       }
-      if (p.x() >= left && p.x() <= right) inside.append(p);
+      const double t = q[i] / p[i];
+      if (p[i] < 0) t0 = std::max(t0, t);
+      else t1 = std::min(t1, t);
+      if (t0 > t1) return std::nullopt;
     }
-    return inside;
+    return std::pair{a + t0 * (b - a), a + t1 * (b - a)};
+  }
+  // The polyline's pieces inside the rectangle, in order.
+  static QList<QList<QPointF>> linePieces(const QList<QPointF>& points, const QRectF& shown) {
+    QList<QList<QPointF>> pieces;
+    if (points.size() == 1 && shown.contains(points.front())) pieces.append(points);
+    for (qsizetype i = 1; i < points.size(); ++i) {
+      const auto inside = cut(points[i - 1], points[i], shown);
+      if (!inside) continue;
+      // a piece goes on where the last one ended (the segment started inside)
+      if (pieces.isEmpty() || pieces.back().back() != inside->first) pieces.append({inside->first});
+      pieces.back().append(inside->second);
+    }
+    return pieces;
+  }
+  void addPiece(QChart& chart, QXYSeries& like, const QList<QPointF>& points) {
+    auto* piece = new QLineSeries;
+    piece->setPen(like.pen());
+    piece->append(points);
+    chart.addSeries(piece);
+    for (QAbstractAxis* axis : like.attachedAxes()) piece->attachAxis(axis);
+    for (QLegendMarker* marker : chart.legend()->markers(piece)) marker->setVisible(false);
+    m_pieces.append({&chart, piece});
   }
 
+  QList<QPair<QPointer<QChart>, QPointer<QLineSeries>>> m_pieces;
   QList<QPair<QPointer<QXYSeries>, QList<QPointF>>> m_kept;
   QList<QPointer<QMenuBar>> m_bars;
 };
