@@ -110,7 +110,9 @@ bool NumberBox::event(QEvent* event) {
          !editing) ||
         (modifiers == Qt::NoModifier &&
          (key->key() == Qt::Key_Space || key->key() == Qt::Key_PageUp ||
-          key->key() == Qt::Key_PageDown));
+          key->key() == Qt::Key_PageDown ||
+          // the window's letter keys (W: the whole run, R: reset the views) are in no number
+          key->key() == Qt::Key_W || key->key() == Qt::Key_R));
     if (toWindow) {
       event->ignore();
       return true;

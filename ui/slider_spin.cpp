@@ -41,7 +41,9 @@ QFont MarkedSlider::labelFont() const {
 void MarkedSlider::reserveLabelRoom() {
   // the slider in the top strip, the labels in a strip of their own below it: drawn over the
   // slider they hid its handle ("0.5625" on m2's)
-  const int labels = m_marks.isEmpty() ? 0 : QFontMetrics(labelFont()).height() + 5;
+  const QFontMetrics metrics(labelFont());
+  // the tick, a gap of 3 px and the label (as paintEvent draws them)
+  const int labels = m_marks.isEmpty() ? 0 : metrics.height() + std::max(3, metrics.height() / 4) + 5;
   setMinimumHeight(QSlider::sizeHint().height() + labels);
 }
 
@@ -74,16 +76,19 @@ void MarkedSlider::paintEvent(QPaintEvent* event) {
   const QFontMetrics metrics = painter.fontMetrics();
   const int span = groove.width() - handle.width();
   const int top = option.rect.bottom() + 1;
-  // left to right; a label that would touch the one before moves right (its tick stays)
+  // left to right; a label that would touch the one before moves right (its tick stays); the
+  // ticks end 3 px above the labels (they struck through "0.5625" when it sat under its tick)
   int free = 0;
+  const int tick = std::max(3, metrics.height() / 4);
   for (const auto& [position, label] : m_marks) {
     const int x = groove.x() + handle.width() / 2 +
                   QStyle::sliderPositionFromValue(minimum(), maximum(), position, span);
-    painter.drawLine(x, top, x, top + 3);
+    painter.drawLine(x, top, x, top + tick);
     const int textWidth = metrics.horizontalAdvance(label);
     const int left = std::clamp(std::max(x - textWidth / 2, free), 0, std::max(0, width() - textWidth));
-    painter.drawText(left, top + 3 + metrics.ascent(), label);
-    free = left + textWidth + metrics.horizontalAdvance(QLatin1Char(' '));
+    painter.drawText(left, top + tick + 3 + metrics.ascent(), label);
+    // two spaces between labels: "1" and "4/3" a space apart read as one "1 4/3"
+    free = left + textWidth + 2 * metrics.horizontalAdvance(QLatin1Char(' '));
   }
 }
 

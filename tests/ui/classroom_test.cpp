@@ -442,6 +442,13 @@ class ClassroomTest : public QObject {
     overrideDigit.ignore();
     QApplication::sendEvent(box, &overrideDigit);
     QVERIFY(overrideDigit.isAccepted());  // typing digits stays typing
+    // W (the whole run) and R (reset the views) went into the box as text
+    for (const auto& [key, text] : {std::pair{Qt::Key_W, "w"}, std::pair{Qt::Key_R, "r"}}) {
+      QKeyEvent overrideLetter(QEvent::ShortcutOverride, key, Qt::NoModifier, QString::fromLatin1(text));
+      overrideLetter.ignore();
+      QApplication::sendEvent(box, &overrideLetter);
+      QVERIFY2(!overrideLetter.isAccepted(), text);
+    }
     m_window->setPresentation(true, 720, false);
     QVERIFY(m_window->presentation());
     QTest::keyClick(m_window.get(), Qt::Key_Escape);

@@ -60,6 +60,13 @@ LogLogChart::LogLogChart(const QString& title, const QString& xTitle, const QStr
                          QWidget* parent)
     : QChartView(parent) {
   auto* chart = new QChart;
+  // the look of every other plot (ui/plots/plot_view.cpp): its theme, margins and bold title
+  chart->setTheme(QChart::ChartThemeLight);
+  chart->setAnimationOptions(QChart::NoAnimation);
+  chart->setMargins(QMargins(4, 4, 4, 4));
+  QFont titleFont = chart->titleFont();
+  titleFont.setBold(true);
+  chart->setTitleFont(titleFont);
   chart->setTitle(title);
   m_axisX = new QLogValueAxis;
   m_axisX->setTitleText(xTitle);
@@ -102,11 +109,16 @@ void LogLogChart::clear() {
 
 void LogLogChart::setPresentation(bool on, int textPixels) {
   if (!m_deskFont) m_deskFont = chart()->legend()->font();
+  if (!m_deskTitleFont) m_deskTitleFont = chart()->titleFont();
   QFont font = *m_deskFont;
   if (on) font.setPixelSize(textPixels);
   QFont title = font;
   title.setBold(true);
-  chart()->setTitleFont(title);
+  QFont chartTitle = *m_deskTitleFont;
+  if (on) chartTitle.setPixelSize(std::max(1, int(std::lround(textPixels * 1.15))));  // as PlotView's
+  chart()->setTitleFont(chartTitle);
+  chart()->setBackgroundRoundness(on ? 0 : 4);
+  chart()->setDropShadowEnabled(!on);
   chart()->legend()->setFont(font);
   for (QAbstractAxis* axis : {static_cast<QAbstractAxis*>(m_axisX), static_cast<QAbstractAxis*>(m_axisY)}) {
     axis->setLabelsFont(font);

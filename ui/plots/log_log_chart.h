@@ -64,6 +64,7 @@ class LogLogChart : public QChartView {
 
   bool m_presentation = false;
   std::optional<QFont> m_deskFont;
+  std::optional<QFont> m_deskTitleFont;  ///< the chart title's, bold as every plot's
   QLogValueAxis* m_axisX = nullptr;
   QLogValueAxis* m_axisY = nullptr;
   std::vector<QLineSeries*> m_series;
