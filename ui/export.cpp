@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/export.h"
 
+#include "core/version.h"
+
 #include <QChart>
 #include <QChartView>
 #include <QLegend>
@@ -272,7 +274,7 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
       // separated by blank lines, so the JSON goes in compact, on one line
       writer.setText(QStringLiteral("GrazeLabSession"),
                      compactSession(sessionJson));
-      writer.setText(QStringLiteral("Software"), QStringLiteral("GrazeLab"));
+      writer.setText(QStringLiteral("Software"), QStringLiteral("GrazeLab %1").arg(QString::fromUtf8(kVersion)));
       writer.setText(QStringLiteral("Title"), title);
       if (!writer.write(renderImage(widget))) {
         file.cancelWriting();
@@ -306,7 +308,7 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
     }
     case SnapshotFormat::Pdf: {
       QPdfWriter writer(&file);
-      writer.setCreator(QStringLiteral("GrazeLab"));
+      writer.setCreator(QStringLiteral("GrazeLab %1").arg(QString::fromUtf8(kVersion)));
       // the title is what a viewer shows: words; the parameters travel inside the document in
       // its XMP metadata (dc:description) and as an attached session file
       writer.setTitle(title);

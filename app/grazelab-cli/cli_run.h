@@ -7,11 +7,12 @@
 #include <stop_token>
 
 #include "cli_io.h"
+#include "core/version.h"
 
 namespace grazelab::cli {
 
-/// The version the command line and the Python module report.
-inline constexpr const char* kVersion = "0.3.0";
+/// The version the command line and the Python module report: the project's one version.
+inline constexpr const char* kVersion = grazelab::kVersion;
 
 /// Runs one command line (`commandLine[0]` is the program's name, as in argv) in this process:
 /// parses it with the command line's own parser and rules and runs the command, writing to `io`.

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/version.h"
 #include "ui/headless.h"
 #include "ui/latency_bench.h"
 #include "ui/main_window.h"
@@ -66,7 +67,7 @@ int main(int argc, char* argv[]) {
   QApplication::setOrganizationName(QStringLiteral("GrazeLab"));
   QApplication::setApplicationName(QStringLiteral("grazelab"));
   QApplication::setApplicationDisplayName(QStringLiteral("GrazeLab"));
-  QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+  QApplication::setApplicationVersion(QString::fromUtf8(grazelab::kVersion));
 
   QCommandLineParser parser;
   parser.setApplicationDescription(QApplication::translate(
