@@ -308,6 +308,9 @@ void PlotView::setStale(bool stale) {
   }
   m_staleNote->setVisible(stale);
   placeStaleNote();
+  // the whole view again when it comes back: tick labels moved while it was stale were left
+  // drawn in their old places (ghost ticks after a refused value and Ctrl+Shift+R)
+  if (!stale) viewport()->update();
   chart()->setPlotAreaBackgroundBrush(QColor(0xe8, 0xe8, 0xe8));
   chart()->setPlotAreaBackgroundVisible(stale);
 }
@@ -494,14 +497,6 @@ QRectF PlotView::wantedRange() {
 }
 
 void PlotView::refresh() {
-  // the axes as they were: tick labels that move are separate items, and the view repaints
-  // only what changed; a label's old place was left drawn on screen (ghost ticks beside the
-  // new ones after a refused value and Ctrl+Shift+R, until the next full repaint)
-  const auto axes = [this] {
-    return std::tuple{m_axisX->min(), m_axisX->max(), m_axisX->tickInterval(), m_axisX->labelFormat(),
-                      m_axisY->min(), m_axisY->max(), m_axisY->tickInterval(), m_axisY->labelFormat()};
-  };
-  const auto axesBefore = axes();
   fitTitles();  // to the plot area as laid out now
   if (m_followData) {
     const QRectF range = wantedRange();
@@ -605,7 +600,6 @@ void PlotView::refresh() {
   }
   if (scratch) ++m_decimationsFromScratch;
   updateLegend();
-  if (axes() != axesBefore) viewport()->update();
   emit refreshed();
 }
 
