@@ -229,7 +229,9 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
         {"bifurcations", "kind period-doubling (tr = -2), fold (tr = +2, the energy turns back) or "
                          "branch-point (tr = +2, it goes on); checked: the trace is within sqrt(eps) of "
                          "the level (false: not solved in this precision, where the search stopped); "
-                         "born_family: the family born at a flip, or null with birth_problem saying why "
+                         "energy_error: an estimate of how far the energy may be from the exact point "
+                         "(the trace's error over its slope in the energy; null when it cannot be "
+                         "estimated); born_family: the family born at a flip, or null with birth_problem saying why "
                          "none was found (absent beyond --max-impacts)"},
         {"min_clearance", "the smallest distance below the stop of an interior maximum of u2 over "
                           "the gap (empty / NaN: no flight turns back below the stop)"}}},
