@@ -75,10 +75,11 @@ struct TraceSample {
 };
 
 /// The energy error of a point located where the trace meets a level: the trace's error at
-/// the point (locatedTraceError) over the trace's slope in the energy. The slope is the secant to the nearest of
-/// `met` (orbits of the family met on the way) whose trace differs from the point's by 100
-/// times its error or more: nearer ones are noise, farther ones overstate the slope where the
-/// trace only grazes the level. +infinity when none does.
+/// the point (`traceError`, from locatedTraceError) over the trace's slope in the energy. The
+/// slope is the secant to the nearest of `met` (orbits of the family met on the way) whose
+/// trace differs from the point's by 100 times that error or more: nearer ones are noise,
+/// farther ones overstate the slope where the trace only grazes the level. +infinity when none
+/// does.
 template <typename S>
 S levelEnergyError(const PeriodicOrbit<S>& at, const S& traceError, const std::vector<TraceSample<S>>& met) {
   using std::abs;

@@ -525,10 +525,10 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
       return accept(std::move(*closed));
     }
     if (closes) {
-      closedCorrection = 0;
-      if (orbit.checks.periodicityResidual == S(0)) return accept(std::move(orbit));
+      // closed exactly: no step is left to take
+      closedCorrection = orbit.checks.periodicityResidual == S(0) ? S(0) : std::numeric_limits<S>::infinity();
+      if (closedCorrection == S(0)) return accept(std::move(orbit));
       closed = orbit;
-      closedCorrection = std::numeric_limits<S>::infinity();
     }
     if (orbit.checks.periodicityResidual < bestResidual) {
       bestResidual = orbit.checks.periodicityResidual;

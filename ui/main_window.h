@@ -113,8 +113,6 @@ class MainWindow : public QMainWindow {
   bool savePlotSnapshot(const QString& path, QString* error, QSize size = {}, SceneView* view = nullptr);
   /// The view "Save current plot" offers first: the plot last clicked or focused.
   SceneView* currentView() const;
-  /// Says in the status line what was saved where (and the session file beside it).
-  void confirmSaved(const QString& what, const QString& path);
   /// What every view of the scene shows, at full resolution, as CSV "plot,series,x,y,value"
   /// (ui/plots/csv_table.h) under csvHeader().
   QString plottedDataCsv() const;
@@ -178,6 +176,8 @@ class MainWindow : public QMainWindow {
   void setProgressVisible(bool visible);
   bool writeSnapshot(QWidget* widget, const QString& path, QString* error);
   enum class FileAction { Read, Write };
+  /// Says in the status line what was saved where (and the session file beside it).
+  void confirmSaved(const QString& what, const QString& path);
   /// A dialog: what failed, why, and what became of the window and the file.
   void reportFailure(const QString& what, const QString& error,
                      FileAction action = FileAction::Write);
