@@ -13,6 +13,7 @@
 #include <QTest>
 #include <QTimer>
 #include <QToolTip>
+#include <QValueAxis>
 #include <QXYSeries>
 
 #include <algorithm>
@@ -31,6 +32,7 @@
 #include "ui/plots/free_flight_plot.h"
 #include "ui/plots/poincare_plot.h"
 #include "ui/plots/log_log_chart.h"
+#include "ui/plots/plot_grid.h"
 #include "ui/plots/plot_view.h"
 #include "ui/readout_panel.h"
 #include "ui/sim_controller.h"
@@ -478,6 +480,60 @@ class ExplorerTest : public QObject {
       m_window = openTestWindow();
     }
     QVERIFY(waitForLatestFinal(*m_window));
+  }
+
+  // the grid is drawn by one item of ours (PlotGrid), not by Qt Charts: its lines must stand
+  // where the axes put their ticks, inside the plot area, and nowhere in between
+  void gridLinesStandOnTheAxisTicks() {
+    QVERIFY(waitForLatestFinal(*m_window, 10'000));
+    for (PlotView* plot : m_window->plots()) {
+      auto* axisX = qobject_cast<QValueAxis*>(plot->chart()->axes(Qt::Horizontal).value(0));
+      auto* axisY = qobject_cast<QValueAxis*>(plot->chart()->axes(Qt::Vertical).value(0));
+      QVERIFY(axisX && axisY);
+      QVERIFY(!axisX->isGridLineVisible() && !axisY->isGridLineVisible());  // not drawn twice
+      // the grid alone: the series (a dashed stop line lies on a grid line) out of the way
+      for (QAbstractSeries* series : plot->chart()->series()) series->setVisible(false);
+      const QImage image = plot->viewport()->grab().toImage();
+      const QRectF area =
+          plot->viewportTransform().map(plot->chart()->mapToScene(plot->chart()->plotArea())).boundingRect();
+      const QRgb grid = axisX->gridLinePen().color().rgb();
+      // the share of grid-coloured pixels down a column (or along a row) of the plot area
+      auto share = [&](bool column, int at) {
+        int hits = 0, count = 0;
+        const int first = int(column ? area.top() : area.left()) + 3;
+        const int last = int(column ? area.bottom() : area.right()) - 3;
+        for (int along = first; along < last; ++along) {
+          const QPoint pixel = column ? QPoint(at, along) : QPoint(along, at);
+          hits += image.pixel(pixel) == grid ? 1 : 0;
+          ++count;
+        }
+        return count > 0 ? double(hits) / count : 0.0;
+      };
+      for (const bool vertical : {true, false}) {
+        const QValueAxis& axis = vertical ? *axisX : *axisY;
+        const std::vector<double> ticks = PlotGrid::tickValues(axis);
+        QVERIFY2(ticks.size() >= 2, qPrintable(plot->title()));
+        const double span = axis.max() - axis.min();
+        auto position = [&](double value) {
+          return vertical ? area.left() + (value - axis.min()) / span * area.width()
+                          : area.bottom() - (value - axis.min()) / span * area.height();
+        };
+        for (std::size_t index = 0; index < ticks.size(); ++index) {
+          QVERIFY(ticks[index] >= axis.min() && ticks[index] <= axis.max());
+          if (index > 0) QCOMPARE_LT(std::abs(ticks[index] - ticks[index - 1] - axis.tickInterval()), 1e-9 * span);
+          const double at = position(ticks[index]);
+          if (at < (vertical ? area.left() : area.top()) + 2 || at > (vertical ? area.right() : area.bottom()) - 2) continue;
+          QVERIFY2(share(vertical, int(std::floor(at))) > 0.5,
+                   qPrintable(QStringLiteral("%1: no grid line at %2").arg(plot->title()).arg(ticks[index])));
+          // and none halfway to the next tick
+          if (index + 1 < ticks.size()) {
+            const int between = int(std::floor(position(0.5 * (ticks[index] + ticks[index + 1]))));
+            QVERIFY2(share(vertical, between) < 0.1,
+                     qPrintable(QStringLiteral("%1: a grid line between ticks").arg(plot->title())));
+          }
+        }
+      }
+    }
   }
 
   void resetViewFollowsDataAgain() {

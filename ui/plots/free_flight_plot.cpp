@@ -67,9 +67,10 @@ void FreeFlightPlot::applyMarkers() {
   // many flights per pixel column: small translucent dots, so that their density shows as
   // shade instead of a solid block of overlapping squares (projected too)
   auto* series = qobject_cast<QScatterSeries*>(entries()[std::size_t(m_flights)].series);
-  // dense: a 5.5 px dot per 4 px cell (markerCells), a quarter of the markers of 2 px cells
-  // (Qt Charts builds an item per marker: 20 000 flights held the window for 57 ms)
-  const double size = m_dense ? (presentation() ? 6.5 : 5.5) : (presentation() ? 8.0 : 5.0);
+  // dense: a 7 px dot per 5 px cell (markerCells), a sixth of the markers of 2 px cells (Qt
+  // Charts builds an item per marker: 20 000 flights held the window for 57 ms; once they
+  // spread over the plot's height, 4 px cells made this the slowest plot of near grazing)
+  const double size = m_dense ? (presentation() ? 8.0 : 7.0) : (presentation() ? 8.0 : 5.0);
   if (series->markerSize() == size) return;
   QColor color = colors::kTrace;
   if (m_dense) color.setAlpha(110);

@@ -23,6 +23,7 @@
 #include <tuple>
 
 #include "ui/decimate.h"
+#include "ui/plots/plot_grid.h"
 #include "ui/plots/plot_style.h"
 #include "ui/plots/wrapped_legend.h"
 
@@ -159,6 +160,7 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
   m_axisY = new QValueAxis;
   chart->addAxis(m_axisX, Qt::AlignBottom);
   chart->addAxis(m_axisY, Qt::AlignLeft);
+  new PlotGrid(chart, m_axisX, m_axisY);  // the chart's child: Qt Charts' own grid, hidden
 
   setRenderHint(QPainter::Antialiasing);
   setRubberBand(QChartView::RectangleRubberBand);
