@@ -11,6 +11,9 @@ fail() { echo "FAIL: $*"; exit 1; }
 dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
 "$cli" orbit --onepp --period 6 > "$dir/orbit.json" || fail "orbit"
 grep -q "\"generator\": \"grazelab-cli $version\"" "$dir/orbit.json" || fail "orbit's generator: $(grep generator "$dir/orbit.json")"
+# the pictures it draws name it too (PNG text "Software", from the one picture writer)
+env -u DISPLAY -u WAYLAND_DISPLAY "$cli" map --glo 0.5 --x u1:-0.2:0.2:3 --y v1:-0.2:0.2:2 --out "$dir/m" 2> /dev/null || fail "map"
+grep -aq "GrazeLab $version" "$dir/m.png" || fail "the map's PNG does not name GrazeLab $version"
 if [ "$app" != - ]; then
   got=$(env -u DISPLAY -u WAYLAND_DISPLAY QT_QPA_PLATFORM=offscreen "$app" --version)
   [ "$got" = "grazelab $version" ] || fail "grazelab --version: $got"

@@ -2,25 +2,19 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/export.h"
 
-#include "core/version.h"
+#include "ui/pictures/picture_file.h"
 
 #include <QChart>
 #include <QChartView>
 #include <QLegend>
 #include <QPointer>
-#include <QFileInfo>
-#include <QImageWriter>
-#include <QJsonDocument>
 #include <QPainter>
 #include <QApplication>
-#include <QPdfWriter>
 #include <QScrollArea>
-#include <QSaveFile>
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QMenuBar>
 #include <QScatterSeries>
-#include <QSvgGenerator>
 #include <QValueAxis>
 #include <QXYSeries>
 #include <QWidget>
@@ -30,38 +24,6 @@
 
 namespace grazelab::ui {
 namespace {
-
-bool openSaveFile(QSaveFile& file, QString* error) {
-  if (file.open(QIODevice::WriteOnly)) return true;
-  if (error) *error = QStringLiteral("cannot write %1: %2").arg(file.fileName(), file.errorString());
-  return false;
-}
-
-bool commit(QSaveFile& file, QString* error) {
-  if (file.commit()) return true;
-  if (error) *error = QStringLiteral("cannot write %1: %2").arg(file.fileName(), file.errorString());
-  return false;
-}
-
-QString compactSession(const QByteArray& sessionJson) {
-  return QString::fromUtf8(QJsonDocument::fromJson(sessionJson).toJson(QJsonDocument::Compact));
-}
-
-// A minimal XMP packet with the session as the document's description.
-QByteArray xmpMetadata(const QByteArray& sessionJson) {
-  const QString description = compactSession(sessionJson).toHtmlEscaped();
-  return QStringLiteral(
-             "<?xpacket begin=\"\" id=\"W5M0MpCehiHzreSzNTczkc9d\"?>"
-             "<x:xmpmeta xmlns:x=\"adobe:ns:meta/\">"
-             "<rdf:RDF xmlns:rdf=\"http://www.w3.org/1999/02/22-rdf-syntax-ns#\">"
-             "<rdf:Description rdf:about=\"\" xmlns:dc=\"http://purl.org/dc/elements/1.1/\">"
-             "<dc:title><rdf:Alt><rdf:li xml:lang=\"x-default\">GrazeLab snapshot</rdf:li></rdf:Alt></dc:title>"
-             "<dc:creator><rdf:Seq><rdf:li>GrazeLab</rdf:li></rdf:Seq></dc:creator>"
-             "<dc:description><rdf:Alt><rdf:li xml:lang=\"x-default\">%1</rdf:li></rdf:Alt></dc:description>"
-             "</rdf:Description></rdf:RDF></x:xmpmeta><?xpacket end=\"w\"?>")
-      .arg(description)
-      .toUtf8();
-}
 
 // Qt Charts clips each legend to its shape; in a PDF painter that clip comes out empty (the
 // legends lost every label but the first, and their swatches). Off while the page is drawn:
@@ -239,14 +201,6 @@ class SeriesInTheirAxes {
 
 }  // namespace
 
-std::optional<SnapshotFormat> snapshotFormat(const QString& path) {
-  const QString suffix = QFileInfo(path).suffix().toLower();
-  if (suffix == QStringLiteral("png")) return SnapshotFormat::Png;
-  if (suffix == QStringLiteral("svg")) return SnapshotFormat::Svg;
-  if (suffix == QStringLiteral("pdf")) return SnapshotFormat::Pdf;
-  return std::nullopt;
-}
-
 QImage renderImage(QWidget* widget, qreal pixelRatio) {
   QImage image(widget->size() * pixelRatio, QImage::Format_ARGB32_Premultiplied);
   image.setDevicePixelRatio(pixelRatio);
@@ -259,95 +213,36 @@ QImage renderImage(QWidget* widget, qreal pixelRatio) {
 
 bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessionJson,
                   const QString& title, QString* error) {
-  const auto format = snapshotFormat(path);
+  const auto format = pictures::pictureFormat(path);
   if (!format) {
     if (error) *error = QStringLiteral("unknown picture type for %1: use .png, .svg or .pdf").arg(path);
     return false;
   }
-  QSaveFile file(path);
-  if (!openSaveFile(file, error)) return false;
-  const QString description = QString::fromUtf8(sessionJson);
+  const pictures::PictureMetadata metadata{title, QStringLiteral("GrazeLabSession"), sessionJson};
   switch (*format) {
-    case SnapshotFormat::Png: {
-      QImageWriter writer(&file, "png");
-      // the parameters travel inside the picture too; Qt joins texts as "key: value" pairs
-      // separated by blank lines, so the JSON goes in compact, on one line
-      writer.setText(QStringLiteral("GrazeLabSession"),
-                     compactSession(sessionJson));
-      writer.setText(QStringLiteral("Software"), QStringLiteral("GrazeLab %1").arg(QString::fromUtf8(kVersion)));
-      writer.setText(QStringLiteral("Title"), title);
-      if (!writer.write(renderImage(widget))) {
-        file.cancelWriting();
-        if (error) *error = QStringLiteral("cannot encode %1: %2").arg(path, writer.errorString());
-        return false;
-      }
-      break;
-    }
-    case SnapshotFormat::Svg: {
-      QSvgGenerator generator;
-      generator.setOutputDevice(&file);
-      generator.setSize(widget->size());
-      generator.setViewBox(QRect(QPoint(0, 0), widget->size()));
-      generator.setTitle(title.toHtmlEscaped());
-      // Qt 6.4 writes the description as it is: a "<" in it would make the file unreadable
-      generator.setDescription(description.toHtmlEscaped());
-      QPainter painter(&generator);
-      if (!painter.isActive()) {
-        file.cancelWriting();
-        if (error) *error = QStringLiteral("cannot draw the SVG picture for %1").arg(path);
-        return false;
-      }
-      // no clipping in Qt 6.4's SVG (see SeriesInTheirAxes): the panel as a picture of what it
-      // shows, as in a PDF, and each series held to its axes
-      const SeriesInTheirAxes held(widget);
-      const ScrollAreasAsPictures pictures(widget);
-      widget->render(&painter);
-      pictures.paint(painter);
-      painter.end();
-      break;
-    }
-    case SnapshotFormat::Pdf: {
-      QPdfWriter writer(&file);
-      writer.setCreator(QStringLiteral("GrazeLab %1").arg(QString::fromUtf8(kVersion)));
-      // the title is what a viewer shows: words; the parameters travel inside the document in
-      // its XMP metadata (dc:description) and as an attached session file
-      writer.setTitle(title);
-      writer.setDocumentXmpMetadata(xmpMetadata(sessionJson));
-      writer.addFileAttachment(QStringLiteral("session.json"), sessionJson,
-                               QStringLiteral("application/json"));
-      writer.setResolution(300);
-      // a page the size of the widget seen at 96 dpi, so nothing is cropped or distorted
-      writer.setPageSize(QPageSize(QSizeF(widget->width(), widget->height()) * 25.4 / 96.0,
-                                   QPageSize::Millimeter));
-      writer.setPageMargins(QMarginsF(0, 0, 0, 0));
-      QPainter painter(&writer);
-      if (!painter.isActive()) {
-        file.cancelWriting();
-        if (error) *error = QStringLiteral("cannot draw the PDF page for %1").arg(path);
-        return false;
-      }
-      const double scale = double(writer.width()) / widget->width();
-      painter.scale(scale, scale);
-      const LegendClipping unclipped(widget);
-      const ScrollAreasAsPictures pictures(widget);
-      widget->render(&painter);
-      pictures.paint(painter);
-      painter.end();
-      break;
-    }
+    case pictures::PictureFormat::Png: return pictures::writePng(path, renderImage(widget), metadata, error);
+    case pictures::PictureFormat::Svg:
+      return pictures::writeSvg(path, widget->size(), [widget](QPainter& painter) {
+        // no clipping in Qt 6.4's SVG (see SeriesInTheirAxes): the panel as a picture of what
+        // it shows, as in a PDF, and each series held to its axes
+        const SeriesInTheirAxes held(widget);
+        const ScrollAreasAsPictures shown(widget);
+        widget->render(&painter);
+        shown.paint(painter);
+      }, metadata, error);
+    case pictures::PictureFormat::Pdf:
+      return pictures::writePdf(path, widget->size(), [widget](QPainter& painter) {
+        const LegendClipping unclipped(widget);
+        const ScrollAreasAsPictures shown(widget);
+        widget->render(&painter);
+        shown.paint(painter);
+      }, metadata, error);
   }
-  return commit(file, error);
+  return false;
 }
 
 bool saveFileAtomically(const QString& path, const QByteArray& data, QString* error) {
-  QSaveFile file(path);
-  if (!openSaveFile(file, error)) return false;
-  if (file.write(data) != data.size()) {
-    file.cancelWriting();
-    if (error) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    return false;
-  }
-  return commit(file, error);
+  return pictures::saveFileAtomically(path, data, error);
 }
 
 }  // namespace grazelab::ui

@@ -23,11 +23,9 @@
 #include "output_files.h"
 #include "report_command.h"
 
-#if GRAZELAB_CLI_PICTURES
 #include <QPainter>
 
-#include "ui/plots/family_picture.h"
-#endif
+#include "ui/pictures/family_picture.h"
 
 namespace grazelab::cli {
 namespace {
@@ -250,19 +248,19 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
       !saveAtomically(prefix + ".json", jsonBytes, error)) {
     return 1;
   }
-#if GRAZELAB_CLI_PICTURES
-  const QString title = QStringLiteral("1IPP family: frequency against energy (m2/m1 = %1, λ* = %2)")
-                            .arg(m.m2 / m.m1, 0, 'g', 4)
-                            .arg(core::lambdaStar(chain), 0, 'g', 4);
-  const QSize size(1100, 760);
-  const bool drawn = savePngAndSvg(
-      prefix, size, title, "GrazeLabFamily", QJsonDocument(json).toJson(QJsonDocument::Compact),
-      [&](QPainter& painter) {
-        ui::paintFrequencyEnergy(painter, QRectF(QPointF(0, 0), size), family, end, title);
-      },
-      error);
-  if (!drawn) return 1;
-#endif
+  if (picturesAvailable()) {
+    const QString title = QStringLiteral("1IPP family: frequency against energy (m2/m1 = %1, λ* = %2)")
+                              .arg(m.m2 / m.m1, 0, 'g', 4)
+                              .arg(core::lambdaStar(chain), 0, 'g', 4);
+    const QSize size(1100, 760);
+    const bool drawn = savePngAndSvg(
+        prefix, size, title, "GrazeLabFamily", QJsonDocument(json).toJson(QJsonDocument::Compact),
+        [&](QPainter& painter) {
+          pictures::paintFrequencyEnergy(painter, QRectF(QPointF(0, 0), size), family, end, title);
+        },
+        error);
+    if (!drawn) return 1;
+  }
   std::int64_t admissible = 0;
   for (const auto& p : family) admissible += p.admissible ? 1 : 0;
   std::fprintf(io.messages, "grazelab-cli: family: %lld orbits (%lld admissible): %s.csv\n",

@@ -3,10 +3,8 @@
 // grazelab-cli: the command line (docs/design.md "Command line"); cli_run.cpp parses and runs it.
 // Exit 0 on success, 2 on invalid input with one line on stderr and nothing on stdout; an
 // interrupted run (SIGINT, SIGTERM) ends its output cleanly and exits 130.
-#if GRAZELAB_CLI_PICTURES
-#include <QApplication>
-#endif
 #include <QCoreApplication>
+#include <QGuiApplication>
 
 #include <atomic>
 #include <csignal>
@@ -56,8 +54,8 @@ class InterruptWatcher {
 
 }  // namespace
 
-// `report` draws its pictures with Qt Charts, which needs a QApplication; without a display it
-// renders off screen. The other commands need Qt Core only.
+// The commands that draw pictures need a QGuiApplication (fonts); without a display it renders
+// off screen. The other commands need Qt Core only. No widgets either way.
 bool drawsPictures(int argc, char* argv[]) {
   for (int i = 1; i < argc; ++i) {
     for (const char* command : {"report", "map", "merge", "family", "modes"}) {
@@ -78,16 +76,14 @@ void quietQtMessages(QtMsgType type, const QMessageLogContext&, const QString& m
 int main(int argc, char* argv[]) {
   InterruptWatcher watcher;  // first: its signal mask is inherited by every later thread
   std::unique_ptr<QCoreApplication> application;
-#if GRAZELAB_CLI_PICTURES
   if (drawsPictures(argc, argv)) {
     qInstallMessageHandler(quietQtMessages);
     if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr &&
         std::getenv("QT_QPA_PLATFORM") == nullptr) {
       setenv("QT_QPA_PLATFORM", "offscreen", 1);
     }
-    application = std::make_unique<QApplication>(argc, argv);
+    application = std::make_unique<QGuiApplication>(argc, argv);
   }
-#endif
   if (!application) application = std::make_unique<QCoreApplication>(argc, argv);
   QCoreApplication::setApplicationName("grazelab-cli");
   QCoreApplication::setApplicationVersion(grazelab::cli::kVersion);

@@ -246,7 +246,7 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
     return kExitInvalidInput;
   }
   const bool whole = rows.rowBegin == 0 && rows.rowEnd == spec->y.count;
-  const bool drawsPicture = whole && map::picturesAvailable();
+  const bool drawsPicture = whole && picturesAvailable();
   // the fonts load while the points are computed (the picture needs them afterwards)
   std::thread fontThread;
   if (drawsPicture) fontThread = std::thread(map::prepareFonts);
@@ -326,7 +326,7 @@ int runMerge(const QCommandLineParser& parser, const QStringList& parts, const I
   }
   if (stop.stop_requested()) return kExitInterrupted;
   if (!map::writeMapFiles(*prefix, *whole, error)) return 1;
-  if (map::picturesAvailable() && !map::writeMapPicture(*prefix, *whole, error)) return 1;
+  if (picturesAvailable() && !map::writeMapPicture(*prefix, *whole, error)) return 1;
   std::fprintf(io.messages, "grazelab-cli: merge: %lld parts, %lld x %lld points: %s.json\n",
                (long long)parts.size(), (long long)whole->totalRows, (long long)whole->columns,
                qPrintable(*prefix));

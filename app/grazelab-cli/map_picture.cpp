@@ -3,18 +3,15 @@
 // A map's picture, drawn by the explorer's heat-map painter (built with the explorer only).
 #include "map_picture.h"
 
-#if GRAZELAB_CLI_PICTURES
 #include <QImage>
 #include <QJsonDocument>
 #include <QPainter>
 
 #include "output_files.h"
-#include "ui/plots/heat_map.h"
-#endif
+#include "ui/pictures/heat_map.h"
 
 namespace grazelab::cli::map {
 
-#if GRAZELAB_CLI_PICTURES
 namespace {
 
 constexpr int kWidth = 1000;
@@ -30,12 +27,12 @@ QString axisTitle(const QJsonObject& spec, const char* which) {
   return name;
 }
 
-ui::HeatMapData heatMapOf(const StoredMap& map) {
+pictures::HeatMapData heatMapOf(const StoredMap& map) {
   const QJsonObject& spec = map.description.spec;
   const QString quantity = spec["picture"].toString();
   const auto which = core::parseQuantity(quantity.toStdString()).value_or(core::Quantity::FftFirst);
   const QJsonObject info = spec["quantities"].toObject()[quantity].toObject();
-  ui::HeatMapData data;
+  pictures::HeatMapData data;
   data.columns = map.columns;
   data.rows = map.rows.rowEnd - map.rows.rowBegin;
   for (const core::PointSummary& point : map.points) data.values.push_back(core::valueOf(point, which));
@@ -58,8 +55,6 @@ ui::HeatMapData heatMapOf(const StoredMap& map) {
 
 }  // namespace
 
-bool picturesAvailable() { return true; }
-
 void prepareFonts() {
   QImage image(64, 16, QImage::Format_ARGB32_Premultiplied);
   QPainter painter(&image);
@@ -67,19 +62,12 @@ void prepareFonts() {
 }
 
 bool writeMapPicture(const QString& prefix, const StoredMap& map, QString& error) {
-  const ui::HeatMapData data = heatMapOf(map);
+  const pictures::HeatMapData data = heatMapOf(map);
   const QByteArray description = QJsonDocument(map.description.spec).toJson(QJsonDocument::Compact);
   return savePngAndSvg(
       prefix, QSize(kWidth, kHeight), data.title, "GrazeLabMap", description,
-      [&](QPainter& painter) { paintHeatMap(painter, QRectF(0, 0, kWidth, kHeight), data); }, error);
+      [&](QPainter& painter) { pictures::paintHeatMap(painter, QRectF(0, 0, kWidth, kHeight), data); }, error);
 }
 
-#else
-
-bool picturesAvailable() { return false; }
-void prepareFonts() {}
-bool writeMapPicture(const QString&, const StoredMap&, QString&) { return true; }
-
-#endif
 
 }  // namespace grazelab::cli::map

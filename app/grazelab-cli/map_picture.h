@@ -8,9 +8,6 @@
 
 namespace grazelab::cli::map {
 
-/// True when this build draws pictures (it was built with the explorer's code).
-bool picturesAvailable();
-
 /// Loads what drawing text needs (the font configuration, a glyph cache): ~0.1 s that a map
 /// does on a thread of its own while its points are computed. Safe in any thread.
 void prepareFonts();

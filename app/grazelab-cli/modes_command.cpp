@@ -20,11 +20,9 @@
 #include "output_files.h"
 #include "report_command.h"
 
-#if GRAZELAB_CLI_PICTURES
 #include <QPainter>
 
-#include "ui/plots/modes_picture.h"
-#endif
+#include "ui/pictures/modes_picture.h"
 
 namespace grazelab::cli {
 namespace {
@@ -98,19 +96,16 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
   const QString base = QFileInfo(prefix).fileName();
   QJsonArray families;
   std::vector<std::pair<QString, QByteArray>> files;
-#if GRAZELAB_CLI_PICTURES
-  std::vector<ui::ModesPictureFamily> curves;
-  std::vector<ui::ModesPictureMark> marks;
-#endif
+  // the picture's curves and marks (drawn when picturesAvailable())
+  std::vector<pictures::ModesPictureFamily> curves;
+  std::vector<pictures::ModesPictureMark> marks;
   for (const core::ModeFamily<S>& family : atlas.families) {
     QByteArray csv = QByteArray(kColumns) + "\n";
     NpyArray array;
     array.rows = std::int64_t(family.orbits.size());
     array.columns = 9;
-#if GRAZELAB_CLI_PICTURES
-    ui::ModesPictureFamily curve;
+    pictures::ModesPictureFamily curve;
     curve.impacts = family.impacts;
-#endif
     for (const core::FamilyOrbit<S>& o : family.orbits) {
       const double energy = double(o.energy), period = double(o.period);
       const double omega = 2 * M_PI / period;
@@ -122,10 +117,8 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
              QByteArray(core::toString(o.stability).data()) + "," + cell(row[5]) + "," + cell(row[6]) + "," +
              cell(row[7]) + "," + cell(row[8]) + "\n";
       array.reals.insert(array.reals.end(), row, row + 9);
-#if GRAZELAB_CLI_PICTURES
       curve.points.emplace_back(std::log10(energy), omega);
       curve.stable.push_back(o.stability == core::Stability::Elliptic);
-#endif
     }
     const QString name = QStringLiteral("%1-family-%2").arg(base).arg(family.id);
     files.emplace_back(prefix + QStringLiteral("-family-%1.csv").arg(family.id), csv);
@@ -150,7 +143,6 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
         if (!b.birthProblem.empty()) point["birth_problem"] = QString::fromStdString(b.birthProblem);
       }
       bifurcations.append(point);
-#if GRAZELAB_CLI_PICTURES
       QString label = b.kind == core::PointKind::PeriodDoubling ? QStringLiteral("flip")
                                                                  : QString::fromUtf8(core::toString(b.kind).data());
       // a flip whose family could not be found says so on the picture too
@@ -158,9 +150,7 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
         label = QStringLiteral("flip, no family found");
       }
       marks.push_back({QPointF(std::log10(double(b.energy)), 2 * M_PI / double(b.T)), label});
-#endif
     }
-#if GRAZELAB_CLI_PICTURES
     for (const core::FamilyEnd<S>* end : {&family.end, &family.startEnd}) {
       if (end->kind == core::PointKind::PeriodDoubling || !(end->period > 0)) continue;
       QString label = QString::fromUtf8(core::toString(end->kind).data());
@@ -176,7 +166,6 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
       marks.push_back({QPointF(std::log10(double(end->energy)), 2 * M_PI / double(end->period)), label});
     }
     curves.push_back(std::move(curve));
-#endif
     QJsonObject born{{"kind", QString::fromUtf8(core::toString(family.birth).data())},
                      {"family", family.parent < 0 ? QJsonValue() : QJsonValue(family.parent)},
                      {"energy", scalarJson(family.bornEnergy)},
@@ -240,17 +229,17 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
   for (const auto& [path, bytes] : files) {
     if (!saveAtomically(path, bytes, error)) return 1;
   }
-#if GRAZELAB_CLI_PICTURES
-  const QString title = QStringLiteral("Nonlinear modes: frequency against energy (m2/m1 = %1, up to %2 impacts)")
-                            .arg(double(m.m2 / m.m1), 0, 'g', 4)
-                            .arg(maxImpacts);
-  const QSize size(1100, 760);
-  const bool drawn = savePngAndSvg(
-      prefix, size, title, "GrazeLabModes", QJsonDocument(json).toJson(QJsonDocument::Compact),
-      [&](QPainter& painter) { ui::paintModes(painter, QRectF(QPointF(0, 0), size), curves, marks, title); },
-      error);
-  if (!drawn) return 1;
-#endif
+  if (picturesAvailable()) {
+    const QString title = QStringLiteral("Nonlinear modes: frequency against energy (m2/m1 = %1, up to %2 impacts)")
+                              .arg(double(m.m2 / m.m1), 0, 'g', 4)
+                              .arg(maxImpacts);
+    const QSize size(1100, 760);
+    const bool drawn = savePngAndSvg(
+        prefix, size, title, "GrazeLabModes", QJsonDocument(json).toJson(QJsonDocument::Compact),
+        [&](QPainter& painter) { pictures::paintModes(painter, QRectF(QPointF(0, 0), size), curves, marks, title); },
+        error);
+    if (!drawn) return 1;
+  }
   std::fprintf(io.messages, "grazelab-cli: modes: %lld families: %s.json\n", (long long)atlas.families.size(),
                qPrintable(prefix));
   return kExitOk;

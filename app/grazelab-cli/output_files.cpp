@@ -5,15 +5,13 @@
 #include <QCommandLineParser>
 #include <QDir>
 #include <QFileInfo>
-#include <QSaveFile>
 
-#if GRAZELAB_CLI_PICTURES
-#include <QBuffer>
 #include <QFont>
+#include <QGuiApplication>
 #include <QImage>
 #include <QPainter>
-#include <QSvgGenerator>
-#endif
+
+#include "ui/pictures/picture_file.h"
 
 namespace grazelab::cli {
 
@@ -37,50 +35,29 @@ std::optional<QString> parseOutputPrefix(const QCommandLineParser& parser, const
 }
 
 bool saveAtomically(const QString& path, const QByteArray& bytes, QString& error) {
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-    error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    return false;
-  }
-  return true;
+  return pictures::saveFileAtomically(path, bytes, &error);
 }
 
-#if GRAZELAB_CLI_PICTURES
+bool picturesAvailable() { return qobject_cast<QGuiApplication*>(QCoreApplication::instance()) != nullptr; }
+
 bool savePngAndSvg(const QString& prefix, QSize size, const QString& title, const QString& textKey,
                    const QByteArray& description, const std::function<void(QPainter&)>& paint,
                    QString& error) {
-  auto draw = [&](QPaintDevice& device) {
-    QPainter painter(&device);
+  // every text in DejaVu Sans at 15 px, on whatever platform draws it
+  const auto draw = [&](QPainter& painter) {
     QFont font("DejaVu Sans");
     font.setPixelSize(15);
     painter.setFont(font);
     paint(painter);
   };
   QImage image(size, QImage::Format_RGB32);
-  draw(image);
-  image.setText(textKey, QString::fromUtf8(description));
-  QByteArray png;
-  QBuffer pngBuffer(&png);
-  pngBuffer.open(QIODevice::WriteOnly);
-  image.save(&pngBuffer, "PNG");
-  if (!saveAtomically(prefix + ".png", png, error)) return false;
-  QByteArray svg;
-  QBuffer svgBuffer(&svg);
-  QSvgGenerator generator;
-  generator.setOutputDevice(&svgBuffer);
-  generator.setSize(size);
-  generator.setViewBox(QRect(QPoint(0, 0), size));
-  generator.setTitle(title);
-  // Qt 6.4 writes the description as it is: a "<" in it would make the file unreadable
-  generator.setDescription(QString::fromUtf8(description).toHtmlEscaped());
-  draw(generator);
-  return saveAtomically(prefix + ".svg", svg, error);
+  {
+    QPainter painter(&image);
+    draw(painter);
+  }
+  const pictures::PictureMetadata metadata{title, textKey, description};
+  return pictures::writePng(prefix + ".png", image, metadata, &error) &&
+         pictures::writeSvg(prefix + ".svg", size, draw, metadata, &error);
 }
-#else
-bool savePngAndSvg(const QString&, QSize, const QString&, const QString&, const QByteArray&,
-                   const std::function<void(QPainter&)>&, QString&) {
-  return true;
-}
-#endif
 
 }  // namespace grazelab::cli

@@ -22,9 +22,15 @@ std::optional<QString> parseOutputPrefix(const QCommandLineParser& parser, const
 /// Writes a file whole or not at all (QSaveFile); false with "cannot write PATH: reason".
 bool saveAtomically(const QString& path, const QByteArray& bytes, QString& error);
 
+/// True when this process draws pictures: it has a QGuiApplication (fonts need one). The
+/// command line makes one for the commands that draw; the Python module does not, and its
+/// commands write no pictures.
+bool picturesAvailable();
+
 /// PREFIX.png and PREFIX.svg of one drawing of `size`: `paint` draws on a painter whose font is
 /// DejaVu Sans at 15 px; the PNG carries `description` as the text `textKey`, the SVG as its
-/// (escaped) description. Only in builds with pictures (GRAZELAB_CLI_PICTURES).
+/// (escaped) description, both with the title and the program's version (the one picture
+/// writer, ui/pictures/picture_file.h). Call only when picturesAvailable().
 bool savePngAndSvg(const QString& prefix, QSize size, const QString& title, const QString& textKey,
                    const QByteArray& description, const std::function<void(QPainter&)>& paint,
                    QString& error);

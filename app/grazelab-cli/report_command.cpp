@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // `grazelab-cli report`: every method on one problem, timed and measured against the binary128
 // exact run, written as a CSV, two pictures and a Markdown report (issue 8).
+#include "output_files.h"
 #include "report_command.h"
 
 #include <QCommandLineParser>
@@ -277,13 +278,13 @@ int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token st
       reportMarkdown(*input, end, reference, *methods, byMethod, timing, quick);
   const QString dir = *directory;
   if (!writeAtomically(dir + "/results.csv", csv, error)) return 1;
-#if GRAZELAB_CLI_PICTURES
-  if (!writePictures(dir, *input, *methods, byMethod, error)) return 1;
-  const QString pictures = "work_precision.svg/.png, convergence.svg/.png, ";
-#else
-  const QString pictures;
-  progress(io, "report", "no pictures: this build has no explorer to draw them");
-#endif
+  QString pictures;
+  if (picturesAvailable()) {
+    if (!writePictures(dir, *input, *methods, byMethod, error)) return 1;
+    pictures = "work_precision.svg/.png, convergence.svg/.png, ";
+  } else {
+    progress(io, "report", "no pictures: the Python module draws none");
+  }
   if (!writeAtomically(dir + "/report.md", md, error)) return 1;
   progress(io, "report", QStringLiteral("wrote %1/{results.csv, %2report.md}").arg(dir, pictures));
   return kExitOk;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "output_files.h"
 #include "report_internal.h"
 #include "report_support.h"
 
@@ -204,13 +205,13 @@ QByteArray reportMarkdown(const ReportInput& input, const core::methods::Compari
         "- penalty: a touch is a short, shallow contact with the spring.\n"
         "- exact: grazing is a double root of the contact polynomial, decided within rounding.\n";
   md += "\n## Files\n\n- results.csv: one row per run (setting).\n";
-#if GRAZELAB_CLI_PICTURES
-  md += "- work_precision.svg/.png: state error against run time.\n"
-        "- convergence.svg/.png: contact-time error against the knob (h / T2, rtol, eps, k1 / k_c).\n";
-#else
-  md += "- no pictures: this build has no explorer (grazelab-cli built with it draws "
-        "work_precision and convergence).\n";
-#endif
+  if (picturesAvailable()) {
+    md += "- work_precision.svg/.png: state error against run time.\n"
+          "- convergence.svg/.png: contact-time error against the knob (h / T2, rtol, eps, k1 / k_c).\n";
+  } else {
+    md += "- no pictures: the Python module draws none (grazelab-cli report draws "
+          "work_precision and convergence).\n";
+  }
   return md.toUtf8();
 }
 

@@ -16,7 +16,7 @@
 #include "tests/ui/explorer_test_support.h"
 #include "ui/main_window.h"
 #include "ui/plots/chain_view.h"
-#include "ui/plots/heat_map.h"
+#include "ui/pictures/heat_map.h"
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/plot_view.h"
 
@@ -190,7 +190,7 @@ class ScenesTest : public QObject {
   void heatMapTicksEndOnASpanOfAFewUlps() {
     const double lo = 1.0;
     const double hi = std::nextafter(std::nextafter(lo, 2.0), 2.0);
-    const std::vector<double> ticks = niceTicks(lo, hi);
+    const std::vector<double> ticks = grazelab::pictures::niceTicks(lo, hi);
     QVERIFY(!ticks.empty() && ticks.size() <= 64);
   }
 

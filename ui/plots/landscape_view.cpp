@@ -20,7 +20,7 @@
 
 #include "core/chain.h"
 #include "core/orbits.h"
-#include "ui/plots/heat_map.h"
+#include "ui/pictures/heat_map.h"
 #include "core/modes.h"
 #include "ui/plots/plot_style.h"
 
@@ -168,15 +168,15 @@ QRectF LandscapeView::mapArea() const {
   return QRectF(0, top, width(), height() - top);
 }
 
-QRectF LandscapeView::plotRect() const { return heatMapPlotArea(mapArea(), font(), m_data); }
+QRectF LandscapeView::plotRect() const { return pictures::heatMapPlotArea(mapArea(), font(), m_data); }
 
 std::optional<QPointF> LandscapeView::valueAt(QPointF position) const {
   if (!m_map) return std::nullopt;
   const QRectF plot = plotRect();
   if (!plot.contains(position)) return std::nullopt;
   const auto& spec = m_map->spec;
-  const auto [x0, x1] = cellExtent(spec.x.from, spec.x.to, spec.x.count);
-  const auto [y0, y1] = cellExtent(spec.y.from, spec.y.to, spec.y.count);
+  const auto [x0, x1] = pictures::cellExtent(spec.x.from, spec.x.to, spec.x.count);
+  const auto [y0, y1] = pictures::cellExtent(spec.y.from, spec.y.to, spec.y.count);
   return QPointF(x0 + (position.x() - plot.left()) / plot.width() * (x1 - x0),
                  y0 + (plot.bottom() - position.y()) / plot.height() * (y1 - y0));
 }
@@ -185,15 +185,15 @@ QPointF LandscapeView::positionOf(QPointF value) const {
   if (!m_map) return {};
   const QRectF plot = plotRect();
   const auto& spec = m_map->spec;
-  const auto [x0, x1] = cellExtent(spec.x.from, spec.x.to, spec.x.count);
-  const auto [y0, y1] = cellExtent(spec.y.from, spec.y.to, spec.y.count);
+  const auto [x0, x1] = pictures::cellExtent(spec.x.from, spec.x.to, spec.x.count);
+  const auto [y0, y1] = pictures::cellExtent(spec.y.from, spec.y.to, spec.y.count);
   return QPointF(plot.left() + (value.x() - x0) / (x1 - x0) * plot.width(),
                  plot.bottom() - (value.y() - y0) / (y1 - y0) * plot.height());
 }
 
 void LandscapeView::appendCsv(CsvTable& table) const {
   if (!m_map) return;
-  const HeatMapData data = heatMapDataOf(*m_map);
+  const pictures::HeatMapData data = heatMapDataOf(*m_map);
   table.describe(data.title, data.xTitle, data.yTitle, data.valueTitle);
   const auto at = [](double from, double to, std::int64_t count, std::int64_t i) {
     return count > 1 ? from + (to - from) * double(i) / double(count - 1) : from;
@@ -208,8 +208,8 @@ void LandscapeView::appendCsv(CsvTable& table) const {
   for (const QPointF& p : m_family) table.add(data.title, tr("grazing family GLO_λ, λ in [0, 4/3]"), p.x(), p.y());
 }
 
-HeatMapData LandscapeView::heatMapDataOf(const MapProgress& map) const {
-  HeatMapData data;
+pictures::HeatMapData LandscapeView::heatMapDataOf(const MapProgress& map) const {
+  pictures::HeatMapData data;
   data.columns = map.spec.x.count;
   data.rows = map.spec.y.count;
   // only the rows the worker has finished: it may be writing the others right now
@@ -246,10 +246,10 @@ void LandscapeView::paintEvent(QPaintEvent*) {
   if (!(key == m_cacheKey)) {
     m_cacheKey = key;
     m_data = heatMapDataOf(map);
-    m_image = heatMapImage(m_data);
+    m_image = pictures::heatMapImage(m_data);
   }
   painter.setFont(font());
-  paintHeatMap(painter, mapArea(), m_data, &m_image);
+  pictures::paintHeatMap(painter, mapArea(), m_data, &m_image);
 
   // over the cells: the grazing family, its modes, the run's section and its start
   const QRectF plot = plotRect();

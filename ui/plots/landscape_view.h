@@ -12,7 +12,7 @@
 
 #include "core/state.h"
 #include "core/maps.h"
-#include "ui/plots/heat_map.h"
+#include "ui/pictures/heat_map.h"
 #include "ui/plots/scene_view.h"
 #include "ui/sim_types.h"
 
@@ -68,7 +68,7 @@ class LandscapeView : public QWidget, public SceneView {
  private:
   QRectF mapArea() const;  ///< where the map, its axes and colour bar are painted
   QRectF plotRect() const;  ///< the cells' rectangle inside mapArea()
-  HeatMapData heatMapDataOf(const MapProgress& map) const;  ///< the chosen quantity's cells
+  pictures::HeatMapData heatMapDataOf(const MapProgress& map) const;  ///< the chosen quantity's cells
 
   QComboBox* m_quantityBox = nullptr;
   QToolButton* m_back = nullptr;
@@ -93,7 +93,7 @@ class LandscapeView : public QWidget, public SceneView {
     friend bool operator==(const CacheKey&, const CacheKey&) = default;
   };
   CacheKey m_cacheKey;  ///< what m_data and m_image show
-  HeatMapData m_data;
+  pictures::HeatMapData m_data;
   QImage m_image;
 };
 

@@ -7,6 +7,9 @@
 #include <QPointF>
 #include <QString>
 
+#include "ui/pictures/colors.h"
+#include "ui/pictures/log_log_picture.h"
+
 #include <memory>
 #include <optional>
 #include <vector>
@@ -18,21 +21,17 @@ namespace grazelab::ui {
 
 class WrappedLegend;
 
-/// One curve of a log-log chart (e.g. one method: run time against error).
-struct LogLogCurve {
-  QString name;
-  std::vector<QPointF> points;  ///< x > 0 (others are left out); y <= kFloor drawn at it
-};
+using pictures::LogLogCurve;
 
 /// A chart with base-10 logarithmic axes on both sides, one line with markers per curve in the
-/// Okabe-Ito colours with a dash pattern as a second code. The work-precision and convergence
-/// pictures of `grazelab-cli report` and the explorer's Accuracy scene draw with it.
+/// Okabe-Ito colours with a dash pattern as a second code: the explorer's Accuracy scene
+/// (`grazelab-cli report` draws the same with ui/pictures/log_log_picture.h, without widgets).
 class LogLogChart : public QChartView {
   Q_OBJECT
 
  public:
   /// y values below this are drawn on it (an error of exactly 0, e.g. equal roundings).
-  static constexpr double kFloor = 1e-17;
+  static constexpr double kFloor = pictures::kLogLogFloor;
 
   LogLogChart(const QString& title, const QString& xTitle, const QString& yTitle,
               QWidget* parent = nullptr);
@@ -71,8 +70,7 @@ class LogLogChart : public QChartView {
   std::unique_ptr<WrappedLegend> m_legend;
 };
 
-/// The colour and dash pattern of curve `index`.
-QColor curveColor(int index);
-Qt::PenStyle curveDash(int index);
+using pictures::curveColor;
+using pictures::curveDash;
 
 }  // namespace grazelab::ui

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <limits>
 
-#include "ui/plots/modes_picture.h"
+#include "ui/pictures/modes_picture.h"
 #include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {
@@ -40,7 +40,7 @@ ModesPlot::ModesPlot(QWidget* parent)
     : PlotView(tr("Modes: frequency against energy"), tr("log₁₀ E"), tr("frequency 2π/T"), parent) {
   // the legend names the colours once; rings say "unstable" in an entry of their own
   for (int cls = 0; cls < 4; ++cls) {
-    const QColor colour = modesColor(cls == 0 ? 1 : cls == 1 ? 2 : cls == 2 ? 4 : 8);
+    const QColor colour = pictures::modesColor(cls == 0 ? 1 : cls == 1 ? 2 : cls == 2 ? 4 : 8);
     auto* stable = makeScatter(impactsText(cls), colour, 5.5);
     useLightMarker(stable);
     m_dots[cls][0] = addEntry(stable, Decimation::Scatter);

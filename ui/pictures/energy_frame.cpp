@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-#include "ui/plots/energy_frame.h"
+#include "ui/pictures/energy_frame.h"
 
 #include <QPainter>
 
 #include <cmath>
 
-#include "ui/plots/heat_map.h"
+#include "ui/pictures/heat_map.h"
 
-namespace grazelab::ui {
+namespace grazelab::pictures {
 
 QPointF EnergyFrame::at(double logEnergy, double omega) const {
   return {plot.left() + (logEnergy - eLo) / (eHi - eLo) * plot.width(),
@@ -77,4 +77,4 @@ void paintEnergyAxes(QPainter& painter, const EnergyFrame& frame, const QRectF& 
   painter.restore();
 }
 
-}  // namespace grazelab::ui
+}  // namespace grazelab::pictures

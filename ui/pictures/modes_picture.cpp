@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-#include "ui/plots/modes_picture.h"
+#include "ui/pictures/modes_picture.h"
 
 #include <QFontMetricsF>
 #include <QPainter>
@@ -10,10 +10,10 @@
 #include <cmath>
 #include <set>
 
-#include "ui/plots/energy_frame.h"
-#include "ui/plots/plot_style.h"
+#include "ui/pictures/energy_frame.h"
+#include "ui/pictures/colors.h"
 
-namespace grazelab::ui {
+namespace grazelab::pictures {
 
 QColor modesColor(int impacts) {
   switch (impacts) {
@@ -165,4 +165,4 @@ void paintModes(QPainter& painter, const QRectF& area, const std::vector<ModesPi
   painter.restore();
 }
 
-}  // namespace grazelab::ui
+}  // namespace grazelab::pictures

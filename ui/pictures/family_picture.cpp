@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-#include "ui/plots/family_picture.h"
+#include "ui/pictures/family_picture.h"
 
 #include <QFontMetricsF>
 #include <QPainter>
@@ -9,10 +9,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ui/plots/energy_frame.h"
-#include "ui/plots/plot_style.h"
+#include "ui/pictures/energy_frame.h"
+#include "ui/pictures/colors.h"
 
-namespace grazelab::ui {
+namespace grazelab::pictures {
 
 void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
                           const std::vector<core::FamilyPoint>& family,
@@ -101,4 +101,4 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
   painter.restore();
 }
 
-}  // namespace grazelab::ui
+}  // namespace grazelab::pictures

@@ -10,7 +10,7 @@
 
 class QPainter;
 
-namespace grazelab::ui {
+namespace grazelab::pictures {
 
 /// The frequency-energy curve of the 1IPP family: 2 pi / T against the energy (log scale),
 /// admissible orbits a solid line, inadmissible ones grey crosses, the grazing end (T -> T2,
@@ -19,4 +19,4 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
                           const std::vector<core::FamilyPoint>& family,
                           const core::FamilyPoint& grazingEnd, const QString& title);
 
-}  // namespace grazelab::ui
+}  // namespace grazelab::pictures

@@ -10,7 +10,7 @@
 
 class QPainter;
 
-namespace grazelab::ui {
+namespace grazelab::pictures {
 
 /// The frame of a frequency-energy picture (the 1IPP family's, the modes atlas's): the energy
 /// on a log scale across, the frequency 2 pi / T up, with their ticks.
@@ -37,4 +37,4 @@ void paintEnergyGrid(QPainter& painter, const EnergyFrame& frame);
 /// The box, the tick labels and the axis titles, over the curves; `line` is the font's height.
 void paintEnergyAxes(QPainter& painter, const EnergyFrame& frame, const QRectF& area, double line);
 
-}  // namespace grazelab::ui
+}  // namespace grazelab::pictures

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-#include "ui/plots/heat_map.h"
+#include "ui/pictures/heat_map.h"
 
 #include <QFontMetricsF>
 #include <QPainter>
@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace grazelab::ui {
+namespace grazelab::pictures {
 namespace {
 
 // matplotlib's viridis at t = 0, 1/8, ..., 1
@@ -233,4 +233,4 @@ void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data
   painter.restore();
 }
 
-}  // namespace grazelab::ui
+}  // namespace grazelab::pictures

@@ -12,7 +12,7 @@
 
 class QPainter;
 
-namespace grazelab::ui {
+namespace grazelab::pictures {
 
 /// Viridis (matplotlib's), t in [0, 1], interpolated between nine stops.
 QColor viridis(double t);
@@ -51,4 +51,4 @@ void paintHeatMap(QPainter& painter, const QRectF& area, const HeatMapData& data
 /// Ticks at 1, 2 or 5 times a power of ten inside [from, to] (about `target` of them).
 std::vector<double> niceTicks(double from, double to, int target = 6);
 
-}  // namespace grazelab::ui
+}  // namespace grazelab::pictures

@@ -11,7 +11,7 @@
 
 class QPainter;
 
-namespace grazelab::ui {
+namespace grazelab::pictures {
 
 /// One family of periodic orbits as the frequency-energy picture draws it.
 struct ModesPictureFamily {
@@ -35,4 +35,4 @@ void paintModes(QPainter& painter, const QRectF& area, const std::vector<ModesPi
 /// The colour of the families with `impacts` impacts per period.
 QColor modesColor(int impacts);
 
-}  // namespace grazelab::ui
+}  // namespace grazelab::pictures
