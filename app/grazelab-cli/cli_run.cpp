@@ -16,6 +16,7 @@
 #include "map_command.h"
 #include "modes_command.h"
 #include "orbit_command.h"
+#include "exit_codes.h"
 #include "report_command.h"
 #include "simulate_command.h"
 

@@ -21,7 +21,7 @@
 #include "core/periodic_family.h"
 #include "npy.h"
 #include "output_files.h"
-#include "report_command.h"
+#include "exit_codes.h"
 
 #include <QPainter>
 

@@ -16,7 +16,7 @@
 #include "map_picture.h"
 #include "output_files.h"
 #include "parallel/tbb_parallel_for.h"
-#include "report_command.h"
+#include "exit_codes.h"
 
 namespace grazelab::cli {
 namespace {

@@ -18,7 +18,7 @@
 #include "core/orbits.h"
 #include "npy.h"
 #include "output_files.h"
-#include "report_command.h"
+#include "exit_codes.h"
 
 #include <QPainter>
 

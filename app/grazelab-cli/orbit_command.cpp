@@ -13,7 +13,7 @@
 #include "cli_output.h"
 #include "core/periodic_family.h"
 #include "core/periodic_orbit.h"
-#include "report_command.h"
+#include "exit_codes.h"
 
 namespace grazelab::cli {
 namespace {

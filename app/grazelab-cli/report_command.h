@@ -7,6 +7,7 @@
 #include <stop_token>
 
 #include "cli_io.h"
+#include "exit_codes.h"
 
 class QCommandLineParser;
 
@@ -17,11 +18,6 @@ void addReportOptions(QCommandLineParser& parser);
 
 /// The options that only `report` and `stability` take and that are set.
 QStringList reportOnlyOptionsSet(const QCommandLineParser& parser);
-
-/// Exit codes shared by the commands.
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitInvalidInput = 2;
-inline constexpr int kExitInterrupted = 130;
 
 /// `grazelab-cli report`: the work-precision report (issue 8). Writes DIR/results.csv,
 /// work_precision.svg/.png, convergence.svg/.png and report.md, each atomically; progress on

@@ -21,7 +21,7 @@
 #include "cli_output.h"
 #include "core/simulate.h"
 #include "core/trust.h"
-#include "report_command.h"
+#include "exit_codes.h"
 
 namespace grazelab::cli {
 namespace {

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "core/methods/stress_matrix.h"
+#include "exit_codes.h"
 #include "report_command.h"
 #include "report_support.h"
 
