@@ -15,9 +15,6 @@
 namespace grazelab::cli {
 namespace {
 
-const QStringList kModelOptions = {"m1", "m2", "k1", "gap", "k2", "branch", "precision"};
-const QStringList kSimulateOnly = {"glo", "onepp", "state", "perturb", "contacts", "t-end",
-                                   "format", "trust", "search-steps"};
 
 QString fromStd(const std::string& text) { return QString::fromStdString(text); }
 
@@ -100,18 +97,11 @@ void addOptions(QCommandLineParser& parser) {
 
 QStringList repeatedOptions(const QCommandLineParser& parser) {
   QStringList repeated;
-  for (const QString& name : kModelOptions + kSimulateOnly) {
-    if (parser.values(name).size() > 1) repeated << "--" + name;
+  const QStringList names = parser.optionNames();
+  for (const QString& name : names) {
+    if (names.count(name) > 1 && !repeated.contains("--" + name)) repeated << "--" + name;
   }
   return repeated;
-}
-
-QStringList simulateOnlyOptionsSet(const QCommandLineParser& parser) {
-  QStringList set;
-  for (const QString& name : kSimulateOnly) {
-    if (parser.isSet(name)) set << "--" + name;
-  }
-  return set;
 }
 
 std::optional<core::TrustMode> parseTrustOption(const QCommandLineParser& parser,

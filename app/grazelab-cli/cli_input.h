@@ -26,8 +26,6 @@ void addOptions(QCommandLineParser& parser);
 /// Options given more than once (the last would silently win): refused with their names.
 QStringList repeatedOptions(const QCommandLineParser& parser);
 
-/// The options that only `simulate` takes and that are set; for rejecting them on `info`.
-QStringList simulateOnlyOptionsSet(const QCommandLineParser& parser);
 
 /// --precision, checked ("double" when absent).
 /// --precision as given: one arithmetic, or auto (`fixed` empty: double, the run raised to a

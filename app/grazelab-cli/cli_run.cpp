@@ -7,7 +7,10 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cstdio>
+#include <functional>
+#include <vector>
 
 #include "cli_input.h"
 #include "cli_output.h"
@@ -52,6 +55,113 @@ int info(const QCommandLineParser& parser, const Io& io) {
   return 0;
 }
 
+// What a command runs: the parsed line, its operands (merge's parts), where it writes.
+using Runner = std::function<int(const QCommandLineParser&, const QStringList&, const Io&, std::stop_token)>;
+
+// One command: its name, every option it takes (any other is refused before it runs), and how
+// it runs.
+struct Command {
+  QString name;
+  QStringList options;
+  bool takesOperands = false;  ///< merge: the stripes to join
+  Runner run;
+  QString whyNot;  ///< said after a refused option: why the command takes none of the others
+};
+
+const QStringList kModel = {"m1", "m2", "k1", "gap", "k2", "branch", "precision"};
+const QStringList kStart = {"glo", "onepp", "state", "perturb"};
+
+// a command that writes files: invalid input, interrupt and failed writes as `ended` says
+Runner writesFiles(int (*command)(const QCommandLineParser&, const Io&, std::stop_token, QString&)) {
+  return [command](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+    QString error;
+    return ended(io, command(parser, io, stop, error), error);
+  };
+}
+
+int runReportOrStability(bool report, const QCommandLineParser& parser, const Io& io, std::stop_token stop) {
+  QString error;
+  const int code = report ? runReport(parser, io, stop, error) : runStability(parser, io, stop, error);
+  if (code == kExitInvalidInput) return fail(io, error);
+  if (code == kExitInterrupted) std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
+  if (code != 0 && !error.isEmpty()) std::fprintf(io.messages, "grazelab-cli: %s\n", qPrintable(error));
+  return stop.stop_requested() ? kExitInterrupted : code;
+}
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> table = {
+      {"info", kModel, false,
+       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token) {
+         QString error;
+         const auto precision = parsePrecisionOption(parser, error);
+         if (!precision) return fail(io, error);
+         switch (precision->fixed.value_or(core::Precision::Double)) {
+           case core::Precision::Double: return info<double>(parser, io);
+           case core::Precision::Long: return info<long double>(parser, io);
+           case core::Precision::Quad: return info<core::Quad>(parser, io);
+         }
+         return fail(io, "--precision: unknown");
+       }},
+      {"simulate", kModel + kStart + QStringList{"contacts", "t-end", "search-steps", "format", "trust"}, false,
+       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+         QString error;
+         const auto precision = parsePrecisionOption(parser, error);
+         if (!precision) return fail(io, error);
+         const auto trust = parseTrustOption(parser, error);
+         if (!trust) return fail(io, error);
+         const int code = runSimulate(parser, *precision, *trust, io, stop, error);
+         return code == kExitInvalidInput ? fail(io, error) : code;
+       }},
+      {"report",
+       QStringList{"m1", "m2", "k1", "gap", "k2", "branch"} + kStart + QStringList{"contacts", "t-end", "out", "methods", "quick"},
+       false,
+       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+         return runReportOrStability(true, parser, io, stop);
+       },
+       "the report runs every method, and every precision of the exact solver, itself"},
+      {"stability", {"out", "methods", "quick"}, false,
+       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+         return runReportOrStability(false, parser, io, stop);
+       },
+       "it runs its own list of cases (see matrix.md)"},
+      {"map", kModel + kStart + QStringList{"contacts", "trust", "out", "x", "y", "threads", "shard", "picture"}, false,
+       writesFiles(runMap)},
+      {"merge", {"out"}, true,
+       [](const QCommandLineParser& parser, const QStringList& parts, const Io& io, std::stop_token stop) {
+         QString error;
+         return ended(io, runMerge(parser, parts, io, stop, error), error);
+       },
+       "the parts say what the map is"},
+      {"family", kModel + QStringList{"onepp", "out", "count"}, false, writesFiles(runFamily)},
+      {"orbit", kModel + QStringList{"onepp", "format", "period", "impacts", "energy", "guess"}, false,
+       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+         QString error;
+         const int code = runOrbit(parser, io, stop, error);
+         return code == kExitInvalidInput ? fail(io, error) : code;
+       }},
+      {"modes", kModel + QStringList{"out", "max-impacts", "energy-range"}, false, writesFiles(runModes)},
+  };
+  return table;
+}
+
+// The options set on the line that `command` does not take, with the commands that do take them.
+QString optionsRefused(const Command& command, const QCommandLineParser& parser) {
+  QStringList refused;
+  QStringList owners;
+  for (const QString& name : parser.optionNames()) {
+    if (name == "help" || name == "version" || command.options.contains(name) || refused.contains("--" + name)) continue;
+    refused << "--" + name;
+    for (const Command& other : commands()) {
+      if (other.options.contains(name) && !owners.contains("'" + other.name + "'")) owners << "'" + other.name + "'";
+    }
+  }
+  if (refused.isEmpty()) return {};
+  QString message = QStringLiteral("%1 %2 not apply to '%3' (only to %4)")
+                        .arg(refused.join(", "), refused.size() == 1 ? "does" : "do", command.name, owners.join(", "));
+  if (!command.whyNot.isEmpty()) message += ": " + command.whyNot;
+  return message;
+}
+
 }  // namespace
 
 int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token stop) {
@@ -64,7 +174,8 @@ int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token
       "reduced to summaries: --x, --y, --out PREFIX), merge (join a map's stripes: --out PREFIX "
       "PART1 ... PARTN), family --onepp (the 1IPP family: --out PREFIX), orbit (one periodic impacting orbit with its "
       "exact multipliers: --onepp --period T, or --impacts K --energy E --guess U1,V1), modes (the "
-      "atlas of the chain's periodic impacting families up to --max-impacts K: --out PREFIX).");
+      "atlas of the chain's periodic impacting families up to --max-impacts K: --out PREFIX).\n"
+      "A command refuses the options it does not take.");
   parser.addPositionalArgument("command", "info | simulate | report | stability | map | merge | family | orbit | modes");
   const QCommandLineOption help = parser.addHelpOption();
   const QCommandLineOption version = parser.addVersionOption();
@@ -99,76 +210,19 @@ int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token
     return fail(io, repeated.join(", ") + " given more than once: give each option once");
   }
   const QStringList positional = parser.positionalArguments();
-  if (!positional.isEmpty() && positional.first() == "merge") {
-    QString error;
-    return ended(io, runMerge(parser, positional.mid(1), io, stop, error), error);
+  const QString names = "info, simulate, report, stability, map, merge, family, orbit or modes";
+  if (positional.isEmpty()) return fail(io, "expected one command: " + names + " (see --help)");
+  const auto command = std::find_if(commands().begin(), commands().end(),
+                                    [&](const Command& c) { return c.name == positional.first(); });
+  if (command == commands().end()) {
+    return fail(io, QStringLiteral("unknown command '%1': use %2").arg(positional.first(), names));
   }
-  if (positional.size() != 1) {
-    return fail(io, "expected one command: info, simulate, report, stability, map, merge, family, orbit or modes (see --help)");
+  if (positional.size() > 1 && !command->takesOperands) {
+    return fail(io, "expected one command: " + names + " (see --help)");
   }
-  const QString command = positional.first();
-  if (command == "modes") {
-    QString error;
-    return ended(io, runModes(parser, io, stop, error), error);
-  }
-  if (command == "orbit") {
-    QString error;
-    const int code = runOrbit(parser, io, stop, error);
-    if (code == kExitInvalidInput) return fail(io, error);
-    return code;
-  }
-  const QStringList orbitOnly = orbitOnlyOptionsSet(parser);
-  if (!orbitOnly.isEmpty()) return fail(io, orbitOnly.join(", ") + " only apply to 'orbit'");
-  if (command == "map") {
-    QString error;
-    return ended(io, runMap(parser, io, stop, error), error);
-  }
-  if (command == "family") {
-    QString error;
-    return ended(io, runFamily(parser, io, stop, error), error);
-  }
-  const QStringList mapOnly = mapOnlyOptionsSet(parser);
-  if (!mapOnly.isEmpty()) return fail(io, mapOnly.join(", ") + " only apply to 'map' (--count to 'family')");
-  if (command == "report" || command == "stability") {
-    QString error;
-    const int code = command == "report" ? runReport(parser, io, stop, error)
-                                         : runStability(parser, io, stop, error);
-    if (code == kExitInvalidInput) return fail(io, error);
-    if (code == kExitInterrupted) {
-      std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
-    }
-    if (code != 0 && !error.isEmpty()) std::fprintf(io.messages, "grazelab-cli: %s\n", qPrintable(error));
-    return stop.stop_requested() ? kExitInterrupted : code;
-  }
-  const QStringList reportOnly = reportOnlyOptionsSet(parser);
-  if (!reportOnly.isEmpty()) {
-    return fail(io, reportOnly.join(", ") + " only apply to 'report' and 'stability'");
-  }
-  QString error;
-  const auto precision = parsePrecisionOption(parser, error);
-  if (!precision) return fail(io, error);
-  const auto trust = parseTrustOption(parser, error);
-  if (!trust) return fail(io, error);
-
-  using grazelab::core::Precision;
-  if (command == "info") {
-    const QStringList extra = simulateOnlyOptionsSet(parser);
-    if (!extra.isEmpty()) return fail(io, extra.join(", ") + " only apply to 'simulate'");
-    switch (precision->fixed.value_or(Precision::Double)) {
-      case Precision::Double:
-        return info<double>(parser, io);
-      case Precision::Long:
-        return info<long double>(parser, io);
-      case Precision::Quad:
-        return info<grazelab::core::Quad>(parser, io);
-    }
-  }
-  if (command == "simulate") {
-    QString error;
-    const int code = runSimulate(parser, *precision, *trust, io, stop, error);
-    return code == kExitInvalidInput ? fail(io, error) : code;
-  }
-  return fail(io, QStringLiteral("unknown command '%1': use info, simulate, report, stability, map, merge, family, orbit or modes").arg(command));
+  const QString refused = optionsRefused(*command, parser);
+  if (!refused.isEmpty()) return fail(io, refused);
+  return command->run(parser, positional.mid(1), io, stop);
 }
 
 }  // namespace grazelab::cli

@@ -141,13 +141,6 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
     error = "family: name the family: --onepp (one impact per period)";
     return kExitInvalidInput;
   }
-  for (const char* name : {"glo", "state", "perturb", "contacts", "t-end", "format", "trust", "x",
-                           "y", "threads", "shard", "picture", "methods", "quick", "search-steps"}) {
-    if (parser.isSet(name)) {
-      error = QStringLiteral("--%1 does not apply to 'family'").arg(name);
-      return kExitInvalidInput;
-    }
-  }
   const QString precision = parser.value("precision");
   if (!QStringList{"auto", "double", "long", "quad"}.contains(precision)) {
     error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);

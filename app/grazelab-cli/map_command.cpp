@@ -75,14 +75,6 @@ std::optional<Shard> parseShard(const QString& text, QString& error) {
   return shard;
 }
 
-QStringList foreignOptions(const QCommandLineParser& parser, const QStringList& names) {
-  QStringList set;
-  for (const QString& name : names) {
-    if (parser.isSet(name)) set << "--" + name;
-  }
-  return set;
-}
-
 std::optional<core::MapSpec> parseSpec(const QCommandLineParser& parser, QString& error) {
   core::MapSpec spec;
   for (const char* name : {"x", "y"}) {
@@ -192,17 +184,7 @@ void addMapOptions(QCommandLineParser& parser) {
   });
 }
 
-QStringList mapOnlyOptionsSet(const QCommandLineParser& parser) {
-  return foreignOptions(parser, {"x", "y", "threads", "shard", "picture", "count"});
-}
-
 int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
-  const QStringList foreign =
-      foreignOptions(parser, {"format", "t-end", "methods", "quick", "count", "search-steps"});
-  if (!foreign.isEmpty()) {
-    error = foreign.join(", ") + " do not apply to 'map'";
-    return kExitInvalidInput;
-  }
   if (parser.value("precision") != "auto" && parser.value("precision") != "double") {
     error = "--precision: a map runs in auto precision (double, each point raised to long double "
             "or binary128 where a contact needs it); use simulate for one run in long or quad";
@@ -294,14 +276,6 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
 
 int runMerge(const QCommandLineParser& parser, const QStringList& parts, const Io& io,
              std::stop_token stop, QString& error) {
-  const QStringList foreign = foreignOptions(
-      parser, {"x", "y", "threads", "shard", "picture", "count", "glo", "onepp", "state",
-               "perturb", "contacts", "t-end", "format", "trust", "methods", "quick", "m1", "m2",
-               "k1", "k2", "gap", "branch", "precision", "search-steps"});
-  if (!foreign.isEmpty()) {
-    error = foreign.join(", ") + " do not apply to 'merge' (the parts say what the map is)";
-    return kExitInvalidInput;
-  }
   if (parts.isEmpty()) {
     error = "merge: give the parts' prefixes after --out PREFIX";
     return kExitInvalidInput;

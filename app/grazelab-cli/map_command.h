@@ -17,8 +17,6 @@ namespace grazelab::cli {
 /// --picture, --count; --out is shared with `report`).
 void addMapOptions(QCommandLineParser& parser);
 
-/// The options only `map` (or `family`: --count) takes that are set (for refusing them elsewhere).
-QStringList mapOnlyOptionsSet(const QCommandLineParser& parser);
 
 /// `grazelab-cli map`: a 2-D grid of exact runs reduced to summaries (issue 10). Exit 0, 2 on
 /// invalid input (`error`, nothing written), 130 when interrupted (nothing written).

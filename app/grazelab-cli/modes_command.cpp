@@ -256,14 +256,6 @@ void addModesOptions(QCommandLineParser& parser) {
 }
 
 int runModes(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
-  for (const char* name : {"glo", "onepp", "state", "perturb", "contacts", "t-end", "trust", "x", "y",
-                           "threads", "shard", "picture", "methods", "quick", "count", "format",
-                           "search-steps", "period", "impacts", "energy", "guess"}) {
-    if (parser.isSet(name)) {
-      error = QStringLiteral("--%1 does not apply to 'modes'").arg(name);
-      return kExitInvalidInput;
-    }
-  }
   int maxImpacts = 4;
   if (parser.isSet("max-impacts")) {
     bool ok = false;

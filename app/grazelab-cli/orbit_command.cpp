@@ -18,8 +18,6 @@
 namespace grazelab::cli {
 namespace {
 
-const QStringList kOrbitOnly = {"period", "impacts", "energy", "guess"};
-
 template <typename S>
 std::string stateJson(const core::BasicState<S>& x) {
   return "{\"u1\": " + jsonNumber(x.u1) + ", \"u2\": " + jsonNumber(x.u2) + ", \"v1\": " + jsonNumber(x.v1) +
@@ -167,23 +165,7 @@ void addOrbitOptions(QCommandLineParser& parser) {
   });
 }
 
-QStringList orbitOnlyOptionsSet(const QCommandLineParser& parser) {
-  QStringList set;
-  for (const QString& name : kOrbitOnly) {
-    if (parser.isSet(name)) set << "--" + name;
-  }
-  return set;
-}
-
 int runOrbit(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
-  for (const char* name : {"glo", "state", "perturb", "contacts", "t-end", "trust", "x", "y",
-                           "threads", "shard", "picture", "methods", "quick", "count", "out",
-                           "search-steps"}) {
-    if (parser.isSet(name)) {
-      error = QStringLiteral("--%1 does not apply to 'orbit'").arg(name);
-      return kExitInvalidInput;
-    }
-  }
   if (parser.isSet("format") && parser.value("format") != "json") {
     error = "orbit: --format json is the only format";
     return kExitInvalidInput;

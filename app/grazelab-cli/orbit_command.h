@@ -15,8 +15,6 @@ namespace grazelab::cli {
 
 /// The options of `orbit`: --period, --impacts, --energy, --guess.
 void addOrbitOptions(QCommandLineParser& parser);
-/// The orbit options given (for the other commands to refuse them).
-QStringList orbitOnlyOptionsSet(const QCommandLineParser& parser);
 
 /// `grazelab-cli orbit --onepp --period T [model] [--precision P]` or
 /// `grazelab-cli orbit --impacts K --energy E --guess U1,V1 [model] [--precision P]`: one

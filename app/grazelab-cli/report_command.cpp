@@ -70,13 +70,6 @@ constexpr double kDefaultPeriods = 200;
 const core::State kDefaultPush{0, 0, 0.05, -0.05};
 
 std::optional<ReportInput> parseReportInput(const QCommandLineParser& parser, QString& error) {
-  for (const char* option : {"format", "trust", "precision", "search-steps"}) {
-    if (parser.isSet(option)) {
-      error = QStringLiteral("--%1 does not apply here (the report runs every method and every "
-                             "precision of the exact solver itself)").arg(option);
-      return std::nullopt;
-    }
-  }
   if (parser.isSet("t-end") && parser.isSet("contacts")) {
     error = "give --t-end or --contacts, not both";
     return std::nullopt;
@@ -206,14 +199,6 @@ void addReportOptions(QCommandLineParser& parser) {
                   "cvode-bdf, penalty.", "list"},
       {"quick", "report, stability: fewer settings and runs (seconds instead of minutes)."},
   });
-}
-
-QStringList reportOnlyOptionsSet(const QCommandLineParser& parser) {
-  QStringList set;
-  for (const char* option : {"out", "methods", "quick"}) {
-    if (parser.isSet(option)) set << QStringLiteral("--%1").arg(option);
-  }
-  return set;
 }
 
 int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {

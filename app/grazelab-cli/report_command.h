@@ -16,9 +16,6 @@ namespace grazelab::cli {
 /// Registers the options of `report` and `stability` (--out, --methods, --quick).
 void addReportOptions(QCommandLineParser& parser);
 
-/// The options that only `report` and `stability` take and that are set.
-QStringList reportOnlyOptionsSet(const QCommandLineParser& parser);
-
 /// `grazelab-cli report`: the work-precision report (issue 8). Writes DIR/results.csv,
 /// work_precision.svg/.png, convergence.svg/.png and report.md, each atomically; progress on
 /// stderr. On an invalid input: one line on stderr (`error`), exit 2, nothing written.

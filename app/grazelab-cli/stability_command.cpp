@@ -44,15 +44,6 @@ QString settingText(const core::methods::MethodSetting& setting) {
 
 int runStability(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
   using namespace core::methods;
-  for (const char* option : {"m1", "m2", "k1", "k2", "gap", "branch", "glo", "onepp", "state",
-                             "perturb", "contacts", "t-end", "format", "trust", "precision",
-                             "search-steps"}) {
-    if (parser.isSet(option)) {
-      error = QStringLiteral("--%1 does not apply to stability: it runs its own list of cases "
-                             "(see matrix.md)").arg(option);
-      return kExitInvalidInput;
-    }
-  }
   const auto methods = parseMethodsOption(parser, error);
   if (!methods) return kExitInvalidInput;
   const auto directory = prepareOutputDirectory(parser, error);

@@ -8,7 +8,8 @@ cli="$1"
 failures=0
 out=$(mktemp)
 err=$(mktemp)
-trap 'rm -f "$out" "$err"' EXIT
+work=$(mktemp -d)
+trap 'rm -rf "$out" "$err" "$work"' EXIT
 
 source "$(dirname "$0")/contract_lib.sh"
 
@@ -42,6 +43,52 @@ EXPECT_WORD=unknown expect_invalid frobnicate
 EXPECT_WORD=command expect_invalid
 EXPECT_WORD=Unknown expect_invalid simulate --no-such-flag
 EXPECT_WORD=Missing expect_invalid simulate --m1
+
+# every command refuses, before it runs, each option it does not take (issue "One
+# architecture…", item 6: `simulate --max-impacts 7` ran and exited 0), naming who takes it
+EXPECT_WORD="only to 'modes'" expect_invalid simulate --max-impacts 7
+EXPECT_WORD="not apply to 'family'" expect_invalid family --onepp --energy-range 0.5:5 --max-impacts 1 --out "$work/f"
+EXPECT_WORD="the parts say" expect_invalid merge --period 3 --out "$work/m" a b
+EXPECT_WORD="more than once" expect_invalid map -x u1:0:1:2 -x u1:0:1:3 -y v1:0:1:2 --out "$work/m"
+python3 - "$cli" <<'PY' || fail "the options each command takes"
+import subprocess, sys
+cli = sys.argv[1]
+model = ["m1", "m2", "k1", "gap", "k2", "branch", "precision"]
+start = ["glo", "onepp", "state", "perturb"]
+takes = {
+    "info": model,
+    "simulate": model + start + ["contacts", "t-end", "search-steps", "format", "trust"],
+    "report": model[:-1] + start + ["contacts", "t-end", "out", "methods", "quick"],
+    "stability": ["out", "methods", "quick"],
+    "map": model + start + ["contacts", "trust", "out", "x", "y", "threads", "shard", "picture"],
+    "merge": ["out"],
+    "family": model + ["onepp", "out", "count"],
+    "orbit": model + ["onepp", "format", "period", "impacts", "energy", "guess"],
+    "modes": model + ["out", "max-impacts", "energy-range"],
+}
+options = sorted({o for names in takes.values() for o in names})
+help_text = subprocess.run([cli, "--help"], capture_output=True, text=True).stdout
+for option in options:  # the table names every option the program has, and no other
+    assert (f"--{option} " in help_text or f"-{option} " in help_text), option
+# an option a command takes may start real work: a refusal comes before any, so a run still
+# going after a second was not refused (killed; it runs in a folder of its own)
+def probe(case):
+    command, option = case
+    flag = f"-{option}" if len(option) == 1 else f"--{option}"
+    args = [cli, command, flag] + ([] if option == "quick" else ["1"]) + (["part"] if command == "merge" else [])
+    try:
+        run = subprocess.run(args, capture_output=True, text=True, timeout=1.0, cwd=work)
+    except subprocess.TimeoutExpired:
+        return None if option in takes[command] else f"{command} {flag}: not refused (still running)"
+    refused = "not apply to" in run.stderr
+    if refused != (option not in takes[command]) or (refused and run.returncode != 2):
+        return f"{command} {flag}: exit {run.returncode}, {run.stderr.strip()[:120]}"
+    return None
+import concurrent.futures, tempfile
+with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(8) as pool:
+    wrong = [w for w in pool.map(probe, [(c, o) for c in takes for o in options]) if w]
+assert not wrong, "\n".join(wrong)
+PY
 
 # info: the derived quantities of the m2 = 1/2 chain
 if expect_ok info; then

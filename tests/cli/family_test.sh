@@ -72,7 +72,7 @@ EXPECT_WORD="--count" expect_invalid family --onepp --count 0 --out "$work/bad/f
 EXPECT_WORD="--precision" expect_invalid family --onepp --precision octuple --out "$work/bad/f"
 EXPECT_WORD="does not apply" expect_invalid family --onepp --contacts 5 --out "$work/bad/f"
 [ ! -e "$work/bad" ] || [ -z "$(ls -A "$work/bad")" ] || fail "a refused family wrote files"
-EXPECT_WORD="only apply" expect_invalid simulate --count 5
+EXPECT_WORD="only to 'family'" expect_invalid simulate --count 5
 
 # an interrupt ends a long family with exit 130 and no files
 timeout --preserve-status -s INT 1 "$cli" family --onepp --count 10000000 --out "$work/long/f" 2>"$err"

@@ -126,7 +126,7 @@ EXPECT_WORD="NAME:from:to:count" expect_invalid map --x u1:0:1 --y v1:0:1:3 --ou
 EXPECT_WORD="--out" expect_invalid map --x u1:0:1:3 --y v1:0:1:3
 EXPECT_WORD="lambda" expect_invalid map --x lambda:0:1:3 --y u1:0:1:3 --out "$work/bad/a"
 EXPECT_WORD="--picture" expect_invalid map --x u1:0:1:3 --y v1:0:1:3 --picture speed --out "$work/bad/a"
-EXPECT_WORD="only apply to 'map'" expect_invalid simulate --x u1:0:1:3
+EXPECT_WORD="only to 'map'" expect_invalid simulate --x u1:0:1:3
 [ ! -e "$work/bad" ] || [ -z "$(ls -A "$work/bad")" ] || fail "a refused map wrote files"
 EXPECT_WORD="missing" expect_invalid merge --out "$work/bad2/m" "$work/parts/part1" "$work/parts/part2" "$work/parts/part4"
 EXPECT_WORD="twice" expect_invalid merge --out "$work/bad2/m" "$work/parts/part1" "$work/parts/part1" \
