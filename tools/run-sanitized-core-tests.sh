@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup-debian.sh
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRAZELAB_SANITIZE=ON \
-  -DGRAZELAB_BUILD_UI=OFF -DGRAZELAB_BUILD_BENCHMARKS=OFF
+  -DGRAZELAB_BUILD_UI=OFF -DGRAZELAB_BUILD_BENCHMARKS=OFF ${CI:+-DGRAZELAB_WERROR=ON}
 cmake --build build-sanitize --target grazelab_core_tests grazelab-cli
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)" -L "core|cli"

@@ -6,6 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup-debian.sh
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+# under CI a warning is an error (-DGRAZELAB_WERROR=ON)
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release ${CI:+-DGRAZELAB_WERROR=ON}
 cmake --build build
 QT_QPA_PLATFORM=offscreen ctest --test-dir build --output-on-failure -j "$(nproc)"

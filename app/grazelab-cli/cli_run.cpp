@@ -101,7 +101,8 @@ const std::vector<Command>& commands() {
            case core::Precision::Quad: return info<core::Quad>(parser, io);
          }
          return fail(io, "--precision: unknown");
-       }},
+       },
+       {}},
       {"simulate", kModel + kStart + QStringList{"contacts", "t-end", "search-steps", "format", "trust"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
@@ -111,7 +112,8 @@ const std::vector<Command>& commands() {
          if (!trust) return fail(io, error);
          const int code = runSimulate(parser, *precision, *trust, io, stop, error);
          return code == kExitInvalidInput ? fail(io, error) : code;
-       }},
+       },
+       {}},
       {"report",
        QStringList{"m1", "m2", "k1", "gap", "k2", "branch"} + kStart + QStringList{"contacts", "t-end", "out", "methods", "quick"},
        false,
@@ -125,21 +127,22 @@ const std::vector<Command>& commands() {
        },
        "it runs its own list of cases (see matrix.md)"},
       {"map", kModel + kStart + QStringList{"contacts", "trust", "out", "x", "y", "threads", "shard", "picture"}, false,
-       writesFiles(runMap)},
+       writesFiles(runMap), {}},
       {"merge", {"out"}, true,
        [](const QCommandLineParser& parser, const QStringList& parts, const Io& io, std::stop_token stop) {
          QString error;
          return ended(io, runMerge(parser, parts, io, stop, error), error);
        },
        "the parts say what the map is"},
-      {"family", kModel + QStringList{"onepp", "out", "count"}, false, writesFiles(runFamily)},
+      {"family", kModel + QStringList{"onepp", "out", "count"}, false, writesFiles(runFamily), {}},
       {"orbit", kModel + QStringList{"onepp", "format", "period", "impacts", "energy", "guess"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
          const int code = runOrbit(parser, io, stop, error);
          return code == kExitInvalidInput ? fail(io, error) : code;
-       }},
-      {"modes", kModel + QStringList{"out", "max-impacts", "energy-range"}, false, writesFiles(runModes)},
+       },
+       {}},
+      {"modes", kModel + QStringList{"out", "max-impacts", "energy-range"}, false, writesFiles(runModes), {}},
   };
   return table;
 }

@@ -149,8 +149,8 @@ void expectSoundAtlas(const Chain<double>& chain, const ModesAtlas<double>& atla
     }
     for (const FamilyBifurcation<double>& b : family.bifurcations) {
       if (!b.checked) continue;
-      if (b.kind == PointKind::PeriodDoubling) EXPECT_NEAR(b.trace, -2.0, 1e-6) << label;
-      if (b.kind == PointKind::Fold || b.kind == PointKind::BranchPoint) EXPECT_NEAR(b.trace, 2.0, 1e-6) << label;
+      if (b.kind == PointKind::PeriodDoubling) { EXPECT_NEAR(b.trace, -2.0, 1e-6) << label; }
+      if (b.kind == PointKind::Fold || b.kind == PointKind::BranchPoint) { EXPECT_NEAR(b.trace, 2.0, 1e-6) << label; }
     }
   }
 }

@@ -219,7 +219,6 @@ TEST(Contact, NegativeLambdaCrossesBeforeTheReturn) {
 
 TEST(Contact, SmallMotionBelowTheStopNeverArrives) {
   const Model model = testing::resonantChain(0.5);
-  const Modes modes = computeModes(model);
   const testing::PhysicalFlight flight(model, {0.1, 0.2, 0.0, 0.1});
   EXPECT_EQ(flight.nextContact(kInfinity).kind, ContactKind::None);
   const Model detuned = testing::detunedChain();

@@ -39,7 +39,7 @@ void expectAgreesWithQuad(const Model& model, const State& start, int contacts, 
     EXPECT_NEAR(coarse[i].before.u1 / length, toDouble(fine[i].before.u1) / length, tolerance);
     EXPECT_NEAR(coarse[i].before.v1 / speed, toDouble(fine[i].before.v1) / speed, tolerance);
     const double v2 = toDouble(fine[i].before.v2);
-    if (v2 != 0) EXPECT_NEAR(coarse[i].before.v2 / v2, 1.0, 1e-8) << "event " << i;
+    if (v2 != 0) { EXPECT_NEAR(coarse[i].before.v2 / v2, 1.0, 1e-8) << "event " << i; }
   }
 }
 
@@ -147,7 +147,7 @@ TEST(Extremes, ShortStickKeepsTheRelativePrecisionOfItsRelease) {
 TEST(Extremes, StiffDetunedChainsHoldTheirAccuracy) {
   // class 6: k2/k1 = 1e4 and 1e6, detuned
   for (double stiffness : {1e4, 1e6}) {
-    const Model model{1.0, 0.5, 1.0, stiffness, 1.0};
+    const Model model{1.0, 0.5, 1.0, stiffness, 1.0, {}};
     const State start{0.2, 0.5, 0.1, 0.8};
     expectAgreesWithQuad(model, start, 5, 1e-9);
   }
@@ -169,7 +169,7 @@ TEST(Extremes, LambdaNearFourThirdsKeepsItsClass) {
 
 TEST(Extremes, AnEndTimeSetsTheDetunedSearchHorizon) {
   // class 9: no search-limit stop before an explicit end time
-  const Model model{1.0, 0.5, 1.0, 0.45, 1.0};
+  const Model model{1.0, 0.5, 1.0, 0.45, 1.0, {}};
   Request request;
   request.initial = {0.01, 0.02, 0.0, 0.01};  // stays far below the stop
   request.maxContacts = 10;

@@ -83,7 +83,7 @@ TEST(FamilyTest, periodsAreSortedInsideTheOpenInterval) {
   for (std::size_t i = 0; i < family.size(); ++i) {
     EXPECT_GT(family[i].T, 0);
     EXPECT_LT(family[i].T, T2);
-    if (i > 0) EXPECT_GT(family[i].T, family[i - 1].T);
+    if (i > 0) { EXPECT_GT(family[i].T, family[i - 1].T); }
   }
 }
 

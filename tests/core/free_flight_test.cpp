@@ -84,7 +84,6 @@ TEST(FreeFlight, ResonantFlightRepeatsExactlyAfterT2) {
 
 TEST(FreeFlight, GapFunctionIsTheStatesU2MinusTheGap) {
   const Model model = testing::resonantChain(0.5);
-  const Modes modes = computeModes(model);
   const testing::PhysicalFlight flight(model, {-0.25, 1.0, 0.1, -0.3});
   for (double t : {1e-9, 0.1, 1.0, 4.0, 8.0}) {
     const auto [gap, rate] = flight.gapAndRate(t);
@@ -96,7 +95,6 @@ TEST(FreeFlight, GapFunctionIsTheStatesU2MinusTheGap) {
 
 TEST(FreeFlight, ReducedGapRemovesTheZeroAtTheStart) {
   const Model model = testing::resonantChain(0.5);
-  const Modes modes = computeModes(model);
   // leaving the stop with v2 < 0: simple zero; at rest with u1 < gap: double zero
   const testing::PhysicalFlight leaving(model, {-0.25, 1.0, 0.0, -0.3});
   const testing::PhysicalFlight resting(model, {-0.25, 1.0, 0.0, 0.0});
@@ -117,7 +115,6 @@ TEST(FreeFlight, ReducedGapRemovesTheZeroAtTheStart) {
 TEST(FreeFlight, TinyDepartureSpeedKeepsFullRelativePrecision) {
   // the leading Taylor coefficient is v2 itself: a speed 1e-200 is not lost in the modal sum
   const Model model = testing::resonantChain(0.5);
-  const Modes modes = computeModes(model);
   const testing::PhysicalFlight flight(model, {-0.25, 1.0, 0.0, -1e-200});
   const double s = 1e-201;
   const double expected = -1e-200 * s + 0.5 * model.k2 * (-1.25) / model.m2 * s * s;

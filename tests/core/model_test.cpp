@@ -56,7 +56,7 @@ TEST(Model, StatePastTheStopIsRejected) {
 }
 
 TEST(Model, EnergyMatchesTheQuadraticForms) {
-  const Model model{1.3, 0.4, 2.1, 0.7, 1.0};
+  const Model model{1.3, 0.4, 2.1, 0.7, 1.0, {}};
   const State state{0.3, -0.8, 1.1, -0.25};
   Eigen::Matrix2d mass;
   mass << model.m1, 0, 0, model.m2;

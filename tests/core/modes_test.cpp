@@ -48,10 +48,10 @@ INSTANTIATE_TEST_SUITE_P(Chains, ModesOf, ::testing::ValuesIn(testing::resonantC
 
 TEST(Modes, ClosedFormsForHalfMass) {
   // m1 = k1 = 1, m2 = 1/2: upper k2 = 1/2 gives w^2 = {2, 1/2}; lower k2 = 2/9 gives {4/3, 1/3}
-  const Modes upper = computeModes({1, 0.5, 1, 0.5, 1});
+  const Modes upper = computeModes({1, 0.5, 1, 0.5, 1, {}});
   EXPECT_NEAR(upper.omegaFast * upper.omegaFast, 2.0, 1e-14);
   EXPECT_NEAR(upper.omegaSlow * upper.omegaSlow, 0.5, 1e-14);
-  const Modes lower = computeModes({1, 0.5, 1, 2.0 / 9.0, 1});
+  const Modes lower = computeModes({1, 0.5, 1, 2.0 / 9.0, 1, {}});
   EXPECT_NEAR(lower.omegaFast * lower.omegaFast, 4.0 / 3.0, 1e-14);
   EXPECT_NEAR(lower.omegaSlow * lower.omegaSlow, 1.0 / 3.0, 1e-14);
   // the upper-branch shapes: fast (-1, 1)/sqrt(1.5) in mass-1 units, slow (1, 2)/sqrt(3)

@@ -32,7 +32,7 @@ TEST(Resonance, BranchesMergeAtNineSixteenths) {
   const double lower = *resonantK2(1, 9.0 / 16.0, 1, Branch::Lower);
   EXPECT_NEAR(upper, 0.36, 1e-15);
   EXPECT_NEAR(lower, 0.36, 1e-15);
-  const Modes modes = computeModes({1, 9.0 / 16.0, 1, upper, 1});
+  const Modes modes = computeModes({1, 9.0 / 16.0, 1, upper, 1, {}});
   EXPECT_NEAR(modes.omegaFast * modes.omegaFast, 1.6, 1e-13);
   EXPECT_NEAR(modes.omegaSlow * modes.omegaSlow, 0.4, 1e-13);
 }

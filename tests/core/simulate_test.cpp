@@ -33,11 +33,11 @@ TEST(Simulate, InvalidInputIsReportedNotRun) {
     const char* field;
   };
   const Case cases[] = {
-      {{0, 0.5, 1, 0.5, 1}, {}, "m1"},
-      {{1, -0.5, 1, 0.5, 1}, {}, "m2"},
-      {{1, 0.5, std::nan(""), 0.5, 1}, {}, "k1"},
-      {{1, 0.5, 1, INFINITY, 1}, {}, "k2"},
-      {{1, 0.5, 1, 0.5, 0}, {}, "gap"},
+      {{0, 0.5, 1, 0.5, 1, {}}, {}, "m1"},
+      {{1, -0.5, 1, 0.5, 1, {}}, {}, "m2"},
+      {{1, 0.5, std::nan(""), 0.5, 1, {}}, {}, "k1"},
+      {{1, 0.5, 1, INFINITY, 1, {}}, {}, "k2"},
+      {{1, 0.5, 1, 0.5, 0, {}}, {}, "gap"},
       {good, {0, 1.5, 0, 0}, "initial.u2"},
       {good, {0, 0, std::nan(""), 0}, "initial.v1"},
   };
@@ -80,7 +80,7 @@ TEST(Simulate, StopsAtTheTimeLimitOnTheFlight) {
 TEST(Simulate, AFlightFromTheStopIsNeverRecordedAgainWhateverTheHorizon) {
   // GLO data on detuned chains leave the stop at t = 0; a horizon below the contact search's
   // resolution (1e-300, 3.7e-262) once recorded the start as a grazing again and again at t = 0
-  for (const Model& model : {Model{1.0, 0.5, 1.0, 0.6, 1.0}, Model{1.0, 0.5, 1.0, 1.0, 1.0}, testing::detunedChain()}) {
+  for (const Model& model : {Model{1.0, 0.5, 1.0, 0.6, 1.0, {}}, Model{1.0, 0.5, 1.0, 1.0, 1.0, {}}, testing::detunedChain()}) {
     for (const double tEnd : {1e-300, 3.7e-262, 1e-100, 1e-20, 1e-8}) {
       Request request;
       request.initial = {-0.16666666666666680, 1.0, 0.0, 0.0};  // u1 below the gap: it leaves

@@ -48,7 +48,7 @@ TEST(Sticking, SamplesOfAStuckStartStayOnTheStop) {
   // until the release, mass 2 is on the stop
   const double release = result.events[1].t;
   for (const Sample& sample : result.samples) {
-    if (sample.t < release) EXPECT_NEAR(sample.state.u2, model.gap, 1e-12 * model.gap);
+    if (sample.t < release) { EXPECT_NEAR(sample.state.u2, model.gap, 1e-12 * model.gap); }
     EXPECT_LE(sample.state.u2, model.gap * (1 + 1e-12));
   }
 }

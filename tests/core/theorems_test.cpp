@@ -205,7 +205,7 @@ TEST(TheoremsContrast, DetunedChainConservesEnergyAndKeepsContacting) {
   EXPECT_EQ(result.cost.contacts, 2000);
   EXPECT_LT(result.cost.maxRelEnergyDrift, 1e-11);
   for (const Event& event : result.events) {
-    if (event.type == EventType::Impact) EXPECT_GT(event.before.v2, 0);
+    if (event.type == EventType::Impact) { EXPECT_GT(event.before.v2, 0); }
   }
   // without resonance some free flights outlast T2 (the FFT is not bounded by it)
   double longest = 0;

@@ -57,7 +57,7 @@ inline std::vector<Chain> resonantChains() {
 }
 
 /// A chain off the 1:2 design (k2 = 0.45 instead of 0.5): free motion is quasi-periodic.
-inline core::Model detunedChain() { return {1.0, 0.5, 1.0, 0.45, 1.0}; }
+inline core::Model detunedChain() { return {1.0, 0.5, 1.0, 0.45, 1.0, {}}; }
 
 /// GLO_lambda data pushed off the grazing-start plane by dv2 = -push * w2 * gap (v2 < 0), so
 /// that it impacts (a push along the plane gives another grazing orbit, docs/model.md section 5).
