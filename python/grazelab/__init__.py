@@ -4,11 +4,15 @@
 internal resonance, its maps and its nonlinear normal modes (docs/python.md).
 
 Each function is a command of ``grazelab-cli`` run in this process by the command line's own
-code: each flag is a keyword argument in snake_case with the same meaning and default
-(``t_end`` is ``--t-end``), each result field has the JSON's name. Tables are NumPy structured
-arrays with the CSV's column names, maps a dict of 2-D arrays (row = y, column = x).
+code. Its keywords are that command's flags in snake_case (``t_end`` is ``--t-end``), with the
+same meaning; a keyword left at None takes the command line's default, which the docstring
+says. Each result field has the JSON's name. Tables are NumPy structured arrays with the CSV's
+column names, maps a dict of 2-D arrays (row = y, column = x).
 
-Invalid input raises ``ValueError`` with the command line's one-line message; Ctrl+C stops a
+Numbers are taken as Python or NumPy numbers (0-d arrays too), ``fractions.Fraction`` (the exact
+ratio, to 40 digits) or decimal text (read in the run's precision); a keyword that is not the
+function's, or a list where a number is expected, raises ``TypeError``. Invalid values raise
+``ValueError`` with the command line's one-line message; Ctrl+C stops a
 running computation within a second and raises ``KeyboardInterrupt``; the GIL is released while
 the core computes, so threads run computations at once. Long calls take ``progress``, a callable
 ``progress(fraction, text)`` (fraction None when not known), called on the calling thread.
@@ -18,12 +22,16 @@ the core computes, so threads run computations at once. Long calls take ``progre
     >>> run.events["t"][:3], run.trust.verdict
 """
 
-import os
-import shutil
-import tempfile
-import warnings
+import os as _os
+import shutil as _shutil
+import tempfile as _tempfile
+import warnings as _warnings
+from typing import Callable as _Callable
+from typing import Optional as _Optional
+from typing import Sequence as _Sequence
+from typing import Union as _Union
 
-import numpy as np
+import numpy as _np
 
 from . import _convert
 from ._convert import Result
@@ -34,6 +42,9 @@ from ._native import version as __version__
 __all__ = ["info", "simulate", "merge", "family", "orbit", "modes", "report", "stability",
            "Result", "GrazeLabWarning", "MAX_EVENTS"]
 
+# ``progress(fraction, text)``: fraction in [0, 1], or None when not known. (A number keyword,
+# annotated float, also takes an int, a NumPy number or 0-d array, a Fraction or decimal text.)
+_Progress = _Callable[[_Optional[float], str], None]
 
 # a run's events are held in memory (80 bytes each): beyond this many, stream them to a file
 # with grazelab-cli simulate --format csv or jsonl, whose memory stays bounded
@@ -45,12 +56,11 @@ class GrazeLabWarning(UserWarning):
 
 
 def _command(command, options, progress=None, events=False, positional=()):
-    """Runs one command; returns (output text, messages, events, decimals) or raises. A
-    progress callback hears (1.0, "done") when the command has ended well."""
-    for name in ("help", "version", "help_all"):
-        if name in options:
-            raise ValueError(f"{name}: see grazelab.help() and help(grazelab.{command})")
-    line = _convert.arguments(command, options) + [str(p) for p in positional]
+    """Runs one command with the options that are not None; returns (output text, messages,
+    events, decimals) or raises. A progress callback hears (1.0, "done") when the command has
+    ended well."""
+    given = {name: value for name, value in options.items() if value is not None}
+    line = _convert.arguments(command, given) + [str(p) for p in positional]
     code, output, messages, table, decimals = _run(line, progress, events, MAX_EVENTS)
     lines = [text for text in messages.splitlines() if text.strip()]
     if code == 2:
@@ -75,44 +85,94 @@ def _notes(lines):
 
 
 def help():  # noqa: A001 (Python's help() still works on the functions)
-    """The command line's options with their meanings and defaults (``grazelab-cli --help``):
-    each is a keyword argument here, in snake_case."""
-    output, _, _, _ = _command("--help", {})
-    print(output.replace("<executable_name>", "grazelab-cli"), end="")
+    """The module's functions with their keywords and defaults; ``help(grazelab.simulate)``
+    says what each keyword means."""
+    import inspect
+    for name in __all__:
+        value = globals()[name]
+        if callable(value) and not isinstance(value, type):
+            summary = (value.__doc__ or "").strip().splitlines()[0]
+            print(f"{name}{inspect.signature(value)}\n    {summary}")
+    print("map" + str(inspect.signature(map)) + "\n    " + map.__doc__.strip().splitlines()[0])
 
 
-def info(**options):
-    """``grazelab-cli info``: the chain's derived quantities (k2, omega1, omega2, T1, T2, P,
-    lambda_star) as the JSON's ``model`` object. Options: m1, m2, k1, k2, gap, branch,
-    precision. With precision long or quad the numbers are also under ``decimal`` as the
-    exact text written."""
-    output, _, _, _ = _command("info", options)
-    precision = options.get("precision", "double")
+# The chain's keywords, shared by every command that takes a chain:
+_CHAIN_DOC = """    m1: mass 1 [mass] (default 1).
+    m2: mass 2, the one that hits the stop [mass] (default 0.5).
+    k1: stiffness from the wall to mass 1 [force/length] (default 1).
+    k2: stiffness from mass 1 to mass 2, as given: no resonance imposed (a detuned chain);
+        default: from the 1:2 design of ``branch``.
+    gap: gap d between mass 2 at rest and the stop [length] (default 1).
+    branch: "upper" (default) or "lower": the 1:2 design's branch (excludes ``k2``).
+"""
+_PRECISION_DOC = """    precision: "auto" (default: double, the whole run again in long double, then binary128,
+        when a contact touches the stop within rounding), "double", "long" or "quad"
+        (binary128). Numbers are read and written in it.
+"""
+_START_DOC = """    glo: start on GLO_lambda data, this lambda (default 0.5 when no other start is given).
+    onepp: start on the one-impact-per-period orbit of period T [time] (T < T2, near T2).
+    state: start from (u1, u2, v1, v2) [length, length/time].
+    perturb: add (du1, du2, dv1, dv2) to the start.
+"""
+
+
+def _documented(function):
+    """Fills a docstring's shared keyword paragraphs: {chain}, {precision}, {start}."""
+    function.__doc__ = (function.__doc__.replace("{chain}", _CHAIN_DOC)
+                        .replace("{precision}", _PRECISION_DOC).replace("{start}", _START_DOC))
+    return function
+
+
+@_documented
+def info(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
+         gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto") -> Result:
+    """The chain's derived quantities (``grazelab-cli info``): k2, omega1, omega2, T1, T2, P,
+    lambda_star, as the JSON's ``model`` object. In long or quad precision the numbers are also
+    under ``decimal`` as the exact text written.
+
+    Keywords:
+{chain}{precision}"""
+    output, _, _, _ = _command("info", dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch,
+                                            precision=precision))
     return _convert.parse_json(output, exact_decimals=precision in ("long", "quad"))
 
 
-def simulate(*, progress=None, **options):
-    """``grazelab-cli simulate``: one exact run. Options as the command line's (m1, m2, k1,
-    k2, gap, branch, precision, glo, onepp, state, perturb, contacts, t_end, search_steps,
-    trust). Returns the JSON's fields (model, initial, final, stop_reason, contacts, energy,
-    accuracy, trust, precision, timing) with ``events`` a structured array of the columns
-    t, type, u1, u2, v1, v2_pre, v2_post (the arrays the core filled, no copy), ``notes`` the
-    command line's notes. A run in long double or binary128 also has ``events_decimal``: each
-    numeric column as the exact decimal text the command line writes, and ``decimal``: the
-    JSON's numbers as text. Warns (GrazeLabWarning) when the run's own error estimate says
-    unreliable."""
-    if options.get("format") not in (None, "json"):
-        raise ValueError("format: the Python module returns the run as arrays; write jsonl, csv "
-                         "or summary with grazelab-cli")
-    options.pop("format", None)
+@_documented
+def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
+             gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto",
+             glo: _Optional[float] = None, onepp: _Optional[float] = None, state: _Optional[_Sequence[float]] = None,
+             perturb: _Optional[_Sequence[float]] = None, contacts: _Optional[int] = None,
+             t_end: _Optional[float] = None, search_steps: _Optional[int] = None, trust: str = "auto",
+             progress: _Optional[_Progress] = None) -> Result:
+    """One exact run (``grazelab-cli simulate``). Returns the JSON's fields (model, initial,
+    final, stop_reason, contacts, energy, accuracy, trust, precision, timing) with ``events`` a
+    structured array of the columns t, type, u1, u2, v1, v2_pre, v2_post (the arrays the core
+    filled, no copy) and ``notes`` the command line's notes. A run in long double or binary128
+    also has ``events_decimal``: each numeric column as the exact decimal text the command line
+    writes, and ``decimal``: the JSON's numbers as text. Warns (GrazeLabWarning) when the run's
+    own error estimate says unreliable.
+
+    Keywords:
+{chain}{precision}{start}    contacts: stop after this many contacts (default 100 when no ``t_end``; at most
+        ``MAX_EVENTS``: the events are held in memory).
+    t_end: stop at this time [time] (it also bounds the contact search of a detuned chain).
+    search_steps: detuned chains: the most steps one flight's contact search may take (default
+        about a second's worth); running out stops the run with stop_reason search-budget.
+    trust: the run's error estimate: "auto" (default: a shadow run one precision up while it
+        costs about the run itself, then extrapolation), "full" or "off".
+    progress: ``progress(fraction, text)``, called on the calling thread.
+"""
     try:
-        contacts = int(_convert._text("contacts", options["contacts"]))
-    except (KeyError, ValueError):
-        contacts = None  # absent, or the command line says what is wrong with it
-    if contacts is not None and contacts > MAX_EVENTS:
-        raise ValueError(f"contacts: {contacts} events would take {contacts * 80 / 1e9:.1f} GB "
+        count = int(_convert._text("contacts", contacts)) if contacts is not None else None
+    except (TypeError, ValueError):
+        count = None  # the command line says what is wrong with it
+    if count is not None and count > MAX_EVENTS:
+        raise ValueError(f"contacts: {count} events would take {count * 80 / 1e9:.1f} GB "
                          f"in memory (at most grazelab.MAX_EVENTS = {MAX_EVENTS}); stream them "
                          f"to a file with grazelab-cli simulate --format csv")
+    options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision, glo=glo,
+                   onepp=onepp, state=state, perturb=perturb, contacts=contacts, t_end=t_end,
+                   search_steps=search_steps, trust=trust)
     output, lines, table, decimals = _command("simulate", options, progress, events=True)
     used_precision_exact = decimals is not None
     result = _convert.parse_json(output, exact_decimals=used_precision_exact)
@@ -120,21 +180,36 @@ def simulate(*, progress=None, **options):
     result["notes"] = _notes(lines)
     if used_precision_exact:
         columns = ("t", "u1", "u2", "v1", "v2_pre", "v2_post")
-        text = np.array(decimals, dtype=str).reshape(-1, len(columns))
+        text = _np.array(decimals, dtype=str).reshape(-1, len(columns))
         result["events_decimal"] = {name: text[:, i] for i, name in enumerate(columns)}
         result["decimal"].pop("events", None)
     if result.get("trust", {}).get("verdict") == "unreliable":
-        warnings.warn(f"simulate: the run's error estimate says unreliable: "
-                      f"{result['trust'].get('reason', '')}", GrazeLabWarning, stacklevel=2)
+        _warnings.warn(f"simulate: the run's error estimate says unreliable: "
+                       f"{result['trust'].get('reason', '')}", GrazeLabWarning, stacklevel=2)
     return result
 
 
-def orbit(**options):
-    """``grazelab-cli orbit``: one periodic impacting orbit with its exact multipliers. Either
-    ``onepp=True, period=T`` or ``impacts=K, energy=E, guess=(u1, v1)``; model options and
-    precision. Raises ValueError when Newton does not converge or the orbit is not admissible
-    (the command line's message). In long or quad precision the numbers are also under
-    ``decimal`` as exact text."""
+@_documented
+def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
+          gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto",
+          onepp: _Optional[float] = None, impacts: _Optional[int] = None, energy: _Optional[float] = None,
+          guess: _Optional[_Sequence[float]] = None) -> Result:
+    """One periodic impacting orbit with its exact multipliers (``grazelab-cli orbit``): the
+    1IPP orbit of period ``onepp``, or the orbit with ``impacts`` impacts per period at energy
+    ``energy`` found by Newton from ``guess``. Raises ValueError when Newton does not converge
+    or the orbit is not admissible (the command line's message). In long or quad precision the
+    numbers are also under ``decimal`` as exact text.
+
+    Keywords:
+{chain}{precision}    onepp: the period T of the one-impact-per-period orbit [time] (as in ``simulate``).
+    impacts: impacts per period K of the orbit sought.
+    energy: its energy E [energy].
+    guess: (u1, v1), a guess of the orbit's point just after an impact on H.
+"""
+    options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
+                   impacts=impacts, energy=energy, guess=guess)
+    if onepp is not None:
+        options.update(onepp=True, period=onepp)
     output, _, _, _ = _command("orbit", options)
     result = _convert.parse_json(output, exact_decimals=True)
     if result.get("precision") not in ("long", "quad"):
@@ -148,17 +223,17 @@ class _Output:
     def __init__(self, out, name):
         self.kept = out is not None
         if self.kept:
-            self.prefix = os.fspath(out)
+            self.prefix = _os.fspath(out)
         else:
-            self.folder = tempfile.mkdtemp(prefix="grazelab-")
-            self.prefix = os.path.join(self.folder, name)
+            self.folder = _tempfile.mkdtemp(prefix="grazelab-")
+            self.prefix = _os.path.join(self.folder, name)
 
     def __enter__(self):
         return self
 
     def __exit__(self, *exc):
         if not self.kept:
-            shutil.rmtree(self.folder, ignore_errors=True)
+            _shutil.rmtree(self.folder, ignore_errors=True)
 
 
 def _map_result(target):
@@ -168,22 +243,43 @@ def _map_result(target):
     # the columns' and rows' coordinates, as the spec says: numpy.linspace(from, to, count)
     for axis in ("x", "y"):
         spec = result["spec"][axis]
-        result[axis] = np.linspace(spec["from"], spec["to"], spec["count"])
+        result[axis] = _np.linspace(spec["from"], spec["to"], spec["count"])
     if not target.kept:
         result["run"].pop("files")  # they were in a temporary folder, now gone
     return result
 
 
-def map(*, out=None, progress=None, **options):  # noqa: A001 (the command's name)
-    """``grazelab-cli map``: a 2-D grid of exact runs reduced to summaries, on ``threads``
-    threads (default all cores). ``x``, ``y``: "NAME:from:to:count" or (NAME, from, to, count).
-    Returns the JSON's ``spec`` and ``run`` with ``arrays``: one 2-D array per quantity
-    (row = y, column = x; counts int64, the rest float64), equal to the command line's .npy.
-    ``x`` and ``y`` in the result are the columns' and rows' coordinates. With ``out=PREFIX``
-    the command line's files are kept there (without pictures); a stripe (``shard=(k, n)``)
-    needs one, for :func:`merge` to read."""
-    if options.get("shard") is not None and out is None:
+@_documented
+def map(*, x: _Union[str, _Sequence], y: _Union[str, _Sequence], m1: float = 1.0, m2: float = 0.5,  # noqa: A001
+        k1: float = 1.0, k2: _Optional[float] = None, gap: float = 1.0, branch: _Optional[str] = None,
+        precision: str = "auto", glo: _Optional[float] = None, onepp: _Optional[float] = None,
+        state: _Optional[_Sequence[float]] = None, perturb: _Optional[_Sequence[float]] = None,
+        contacts: _Optional[int] = None, trust: str = "off", threads: _Optional[int] = None,
+        shard: _Union[str, _Sequence[int], None] = None, picture: _Optional[str] = None,
+        out=None, progress: _Optional[_Progress] = None) -> Result:
+    """A 2-D grid of exact runs reduced to summaries (``grazelab-cli map``). Returns the JSON's
+    ``spec`` and ``run`` with ``arrays``: one 2-D array per quantity (row = y, column = x;
+    counts int64, the rest float64), equal to the command line's .npy; ``x`` and ``y`` in the
+    result are the columns' and rows' coordinates.
+
+    Keywords:
+    x, y: the columns and the rows, "NAME:from:to:count" or (NAME, from, to, count); NAME is
+        one of u1, v1, v2, lambda, epsilon, mass-ratio, gap, detuning.
+{chain}    precision: "auto" (default; each point raised where a contact needs it) or "double".
+{start}    contacts: contacts of each run (default 100).
+    trust: "off" (default: horizon NaN) or "auto" (a shadow run per point).
+    threads: threads (default: all cores).
+    shard: (K, N) or "K/N": compute stripe K of N of the rows only; join the stripes with
+        :func:`merge` (needs ``out``).
+    picture: with ``out``, the command line would draw this quantity; the module draws none.
+    out: a prefix: the command line's files are kept there (without pictures).
+    progress: ``progress(fraction, text)``, called on the calling thread.
+"""
+    if shard is not None and out is None:
         raise ValueError("shard: a stripe is kept for merge: give out=PREFIX for its files")
+    options = dict(x=x, y=y, m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
+                   glo=glo, onepp=onepp, state=state, perturb=perturb, contacts=contacts, trust=trust,
+                   threads=threads, shard=shard, picture=picture)
     with _Output(out, "map") as target:
         _command("map", dict(options, out=target.prefix), progress)
         return _map_result(target)
@@ -192,20 +288,31 @@ def map(*, out=None, progress=None, **options):  # noqa: A001 (the command's nam
 def merge(parts, *, out=None):
     """``grazelab-cli merge``: the stripes of one map (their prefixes, computed with
     ``shard=(k, n)`` and ``out``) joined; returns the whole map as :func:`map` does."""
-    if isinstance(parts, (str, os.PathLike)):
+    if isinstance(parts, (str, _os.PathLike)):
         parts = [parts]
     with _Output(out, "map") as target:
-        _command("merge", {"out": target.prefix}, positional=[os.fspath(p) for p in parts])
+        _command("merge", {"out": target.prefix}, positional=[_os.fspath(p) for p in parts])
         return _map_result(target)
 
 
-def family(*, out=None, progress=None, onepp=True, **options):
-    """``grazelab-cli family --onepp``: the 1IPP family. Returns the JSON's fields with
+@_documented
+def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
+           gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto",
+           count: int = 2000, out=None, progress: _Optional[_Progress] = None) -> Result:
+    """The 1IPP family (``grazelab-cli family --onepp``). Returns the JSON's fields with
     ``table``: a structured array with the CSV's columns (T, omega, V, u1, energy, admissible,
     trace, stability; admissible 1.0/0.0, stability 0..3, NaN where not admissible), the
-    command line's .npy viewed without a copy. Options: model, precision, count."""
+    command line's .npy viewed without a copy.
+
+    Keywords:
+{chain}{precision}    count: periods T in (0, T2) (default 2000).
+    out: a prefix: the command line's files are kept there (without pictures).
+    progress: ``progress(fraction, text)``, called on the calling thread.
+"""
+    options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
+                   count=count, onepp=True)
     with _Output(out, "family") as target:
-        _command("family", dict(options, onepp=onepp, out=target.prefix), progress)
+        _command("family", dict(options, out=target.prefix), progress)
         with open(target.prefix + ".json") as handle:
             result = _convert.parse_json(handle.read())
         result["table"] = _convert.table(target.prefix + ".npy", target.prefix + ".csv")
@@ -214,18 +321,31 @@ def family(*, out=None, progress=None, onepp=True, **options):
         return result
 
 
-def modes(*, out=None, progress=None, **options):
-    """``grazelab-cli modes``: the atlas of the chain's periodic impacting families up to
-    ``max_impacts`` (default 4), energies in ``energy_range`` ("A:B" or (A, B)). Returns the
-    JSON's fields; each family of ``families`` has ``table``, its rows as a structured array
-    with the CSV's columns."""
+@_documented
+def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
+          gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto",
+          max_impacts: int = 4, energy_range: _Union[str, _Sequence[float], None] = None,
+          out=None, progress: _Optional[_Progress] = None) -> Result:
+    """The atlas of the chain's periodic impacting families (``grazelab-cli modes``). Returns
+    the JSON's fields; each family of ``families`` has ``table``, its rows as a structured
+    array with the CSV's columns.
+
+    Keywords:
+{chain}{precision}    max_impacts: the most impacts per period of the families followed (default 4).
+    energy_range: (A, B) or "A:B": follow families with energies in [A, B] [energy] (default:
+        1/100 to 10000 times the grazing end's energy).
+    out: a prefix: the command line's files are kept there (without pictures).
+    progress: ``progress(fraction, text)``, called on the calling thread.
+"""
+    options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
+                   max_impacts=max_impacts, energy_range=energy_range)
     with _Output(out, "modes") as target:
         _command("modes", dict(options, out=target.prefix), progress)
         with open(target.prefix + ".json") as handle:
             result = _convert.parse_json(handle.read())
-        folder = os.path.dirname(target.prefix)
+        folder = _os.path.dirname(target.prefix)
         for entry in result["families"]:
-            csv_path = os.path.join(folder, entry["file"])
+            csv_path = _os.path.join(folder, entry["file"])
             entry["table"] = _convert.table(csv_path[:-len(".csv")] + ".npy", csv_path)
             if not target.kept:
                 entry.pop("file")
@@ -239,25 +359,51 @@ def _directory_command(command, table_file, out, progress, options):
         if not target.kept:  # the files' folder is deleted: the log does not name it
             lines = [line for line in lines if " wrote " not in line]
         result = Result(out=folder if target.kept else None,
-                        table=_convert.csv_table(os.path.join(folder, table_file)),
+                        table=_convert.csv_table(_os.path.join(folder, table_file)),
                         log=[_message(line) for line in lines])
-        markdown = os.path.join(folder, table_file.rsplit(".", 1)[0] + ".md")
-        if not os.path.exists(markdown):
-            markdown = os.path.join(folder, "report.md")
+        markdown = _os.path.join(folder, table_file.rsplit(".", 1)[0] + ".md")
+        if not _os.path.exists(markdown):
+            markdown = _os.path.join(folder, "report.md")
         with open(markdown) as handle:
             result["markdown"] = handle.read()
         return result
 
 
-def report(*, out=None, progress=None, **options):
-    """``grazelab-cli report``: every comparison method against the exact solver, error
-    against run time. Returns ``table`` (results.csv as a structured array), ``markdown``
-    (report.md) and ``log``; with ``out=DIR`` the files stay there (the Python module draws no
-    pictures: use grazelab-cli for them). Options: model, start, methods, quick, t_end."""
+@_documented
+def report(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
+           gap: float = 1.0, branch: _Optional[str] = None, glo: _Optional[float] = None, onepp: _Optional[float] = None,
+           state: _Optional[_Sequence[float]] = None, perturb: _Optional[_Sequence[float]] = None,
+           contacts: _Optional[int] = None, t_end: _Optional[float] = None,
+           methods: _Union[str, _Sequence[str], None] = None, quick: bool = False, out=None,
+           progress: _Optional[_Progress] = None) -> Result:
+    """Every comparison method against the exact solver, error against run time
+    (``grazelab-cli report``). Returns ``table`` (results.csv as a structured array),
+    ``markdown`` (report.md) and ``log``; with ``out=DIR`` the files stay there (the module
+    draws no pictures: use grazelab-cli for them).
+
+    Keywords:
+{chain}{start}    contacts, t_end: the run's length (default: 200 slow periods).
+    methods: the methods to run, a list or "a,b" (default all): exact, moreau-jean,
+        moreau-jean-theta1, schatzman-paoli, dopri5-events, cvode-adams, cvode-bdf, penalty.
+    quick: fewer settings and runs (seconds instead of minutes).
+    out: the directory to write into (created if missing).
+    progress: ``progress(fraction, text)``, called on the calling thread.
+"""
+    options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, glo=glo, onepp=onepp,
+                   state=state, perturb=perturb, contacts=contacts, t_end=t_end, methods=methods,
+                   quick=quick)
     return _directory_command("report", "results.csv", out, progress, options)
 
 
-def stability(*, out=None, progress=None, **options):
-    """``grazelab-cli stability``: every method on stiff and extreme cases. Returns ``table``
-    (matrix.csv as a structured array), ``markdown`` (matrix.md) and ``log``."""
-    return _directory_command("stability", "matrix.csv", out, progress, options)
+def stability(*, methods: _Union[str, _Sequence[str], None] = None, quick: bool = False, out=None,
+              progress: _Optional[_Progress] = None) -> Result:
+    """Every method on stiff and extreme cases (``grazelab-cli stability``). Returns ``table``
+    (matrix.csv as a structured array), ``markdown`` (matrix.md) and ``log``.
+
+    Keywords:
+    methods: the methods to run, a list or "a,b" (default all).
+    quick: fewer settings and runs.
+    out: the directory to write into (created if missing).
+    progress: ``progress(fraction, text)``, called on the calling thread.
+"""
+    return _directory_command("stability", "matrix.csv", out, progress, dict(methods=methods, quick=quick))

@@ -3,12 +3,14 @@
 """Keyword arguments to the command line's flags, and its output to Python and NumPy."""
 
 import csv
+import decimal
+import fractions
 import json
 import math
 import numbers
-import os
+import os as _os
 
-import numpy as np
+import numpy as _np
 
 # the flags that take no value (given as True)
 _BARE = {"quick", "onepp"}
@@ -33,37 +35,57 @@ class Result(dict):
         return list(self.keys()) + list(super().__dir__())
 
 
+# options that take several values: a sequence (or their text as the command line writes it)
+_VECTORS = {"state", "perturb", "guess", "x", "y", "energy_range", "shard", "methods"}
+# options that take words, not numbers
+
+
 def _text(name, value):
-    if isinstance(value, (bool, np.bool_)):
-        raise ValueError(f"{name}: expected a number or text, got {value!r}")
+    """One value as the command line's text: the number exactly (a Fraction to 40 digits), or
+    a TypeError for what is not a number or text."""
+    if isinstance(value, _np.ndarray) and value.ndim == 0:
+        value = value[()]  # a 0-d array is its number
+    if isinstance(value, (bool, _np.bool_)):
+        raise TypeError(f"{name}: expected a number or text, got {value!r}")
+    if isinstance(value, str):
+        return value
+    if isinstance(value, fractions.Fraction):
+        # the exact ratio to 40 significant digits: beyond binary128's 34, read in any precision
+        with decimal.localcontext() as context:
+            context.prec = 40
+            return str(decimal.Decimal(value.numerator) / decimal.Decimal(value.denominator))
     if isinstance(value, numbers.Integral):
         return str(int(value))
-    if isinstance(value, np.floating) and np.finfo(value.dtype).nmant > 52:
+    if isinstance(value, _np.floating) and _np.finfo(value.dtype).nmant > 52:
         # long double: NumPy's shortest decimal that reads back as the same long double
-        text = np.format_float_positional(value, unique=True, trim="-")
-        return text
-    if isinstance(value, numbers.Real) and not isinstance(value, numbers.Rational):
+        return _np.format_float_positional(value, unique=True, trim="-")
+    if isinstance(value, numbers.Real):
         value = float(value)
         if value.is_integer() and abs(value) < 2.0**53:
             return str(int(value))  # the same number, and a count where one is expected
         # repr: the shortest decimal that reads back as the same double
         return repr(value)
-    return str(value)
+    raise TypeError(f"{name}: expected a number or text, got {type(value).__name__}")
 
 
 def arguments(command, options):
-    """The command line of `command` with `options` (snake_case keyword arguments): True is a
-    bare flag (--quick, --onepp of family and orbit), False and None leave the flag out, a tuple or list is joined by ',' (':' for the
-    axes and --energy-range, '/' for --shard)."""
+    """The command line of `command` with `options` (snake_case keywords, values not None):
+    True is a bare flag (--quick, --onepp of family and orbit), False leaves it out; a vector
+    option's sequence is joined by ',' (':' for the axes and --energy-range, '/' for --shard);
+    a sequence where one value is expected is a TypeError."""
     line = [command]
     for name, value in options.items():
-        if value is None:
-            continue
         flag = "--" + name.replace("_", "-")
-        if isinstance(value, bool) and name in _BARE:
+        if name in _BARE and isinstance(value, bool):
             if value:
                 line.append(flag)
-        elif isinstance(value, (list, tuple, np.ndarray)):
+            continue
+        if isinstance(value, _os.PathLike):
+            value = _os.fspath(value)
+        sequence = isinstance(value, (list, tuple)) or (isinstance(value, _np.ndarray) and value.ndim > 0)
+        if sequence:
+            if name not in _VECTORS:
+                raise TypeError(f"{name}: expected one value, got {type(value).__name__} {list(value)!r}")
             separator = _JOINED_BY.get(name, ",")
             line.append(flag + "=" + separator.join(_text(name, v) for v in value))
         else:
@@ -100,11 +122,11 @@ def table(npy_path, csv_path):
     a view of the .npy's data (no copy)."""
     with open(csv_path, newline="") as handle:
         names = next(csv.reader(handle))
-    data = np.load(npy_path)
+    data = _np.load(npy_path)
     if data.ndim != 2 or data.shape[1] != len(names):
         raise RuntimeError(f"{npy_path}: {data.shape} does not match the columns {names}")
-    data = np.ascontiguousarray(data, dtype="<f8")
-    return data.view(np.dtype([(name, "<f8") for name in names])).reshape(data.shape[0])
+    data = _np.ascontiguousarray(data, dtype="<f8")
+    return data.view(_np.dtype([(name, "<f8") for name in names])).reshape(data.shape[0])
 
 
 def csv_table(path):
@@ -117,11 +139,11 @@ def csv_table(path):
     for index, name in enumerate(names):
         cells = [row[index] if index < len(row) else "" for row in body]
         try:
-            columns.append(np.array([float(c) if c != "" else math.nan for c in cells], dtype="<f8"))
+            columns.append(_np.array([float(c) if c != "" else math.nan for c in cells], dtype="<f8"))
         except ValueError:
-            columns.append(np.array(cells, dtype=str))
-    dtype = np.dtype([(name, column.dtype) for name, column in zip(names, columns)])
-    out = np.empty(len(body), dtype=dtype)
+            columns.append(_np.array(cells, dtype=str))
+    dtype = _np.dtype([(name, column.dtype) for name, column in zip(names, columns)])
+    out = _np.empty(len(body), dtype=dtype)
     for name, column in zip(names, columns):
         out[name] = column
     return out
@@ -129,12 +151,12 @@ def csv_table(path):
 
 def map_arrays(prefix, description):
     """The 2-D arrays of a map (row = y, column = x), one per quantity, from its .npy files."""
-    directory = os.path.dirname(prefix)
+    directory = _os.path.dirname(prefix)
     arrays = {}
     for quantity, file in description["files"].items():
         if quantity in ("json", "csv", "png", "svg"):
             continue
-        path = os.path.join(directory, file)
-        if path.endswith(".npy") and os.path.exists(path):
-            arrays[quantity] = np.load(path)
+        path = _os.path.join(directory, file)
+        if path.endswith(".npy") and _os.path.exists(path):
+            arrays[quantity] = _np.load(path)
     return arrays

@@ -1,0 +1,14 @@
+# SPDX-License-Identifier: MIT
+# SPDX-FileCopyrightText: 2026 GrazeLab developers
+"""The compiled part of the module (python/native_module.cpp): one command line run in
+process. Not for direct use: the functions of ``grazelab`` call it."""
+
+from typing import Callable, List, Optional, Tuple
+
+import numpy as np
+
+version: str
+
+def run(arguments: List[str], progress: Optional[Callable[[Optional[float], str], None]] = ...,
+        events: bool = ..., max_events: int = ...
+        ) -> Tuple[int, bytes, str, Optional[np.ndarray], Optional[List[str]]]: ...
