@@ -303,7 +303,26 @@ ModesAtlas<S> computeModesAtlas(const Chain<S>& chain, int maxImpacts, const S& 
   return atlas;
 }
 
+template <typename S>
+AtlasEnergyRange<S> defaultAtlasEnergyRange(const Chain<S>& chain) {
+  const S grazing = physicalEnergy(chain, gloData(chain, lambdaStar(chain)));
+  return {grazing / S(100), grazing * S(10000)};
+}
+
+template <typename S>
+std::optional<int> impactsOfAtlasOrbit(const ModesAtlas<S>& atlas, const BasicState<S>& state) {
+  for (const ModeFamily<S>& family : atlas.families) {
+    for (const FamilyOrbit<S>& orbit : family.orbits) {
+      const BasicState<S>& x = orbit.state;
+      if (x.u1 == state.u1 && x.u2 == state.u2 && x.v1 == state.v1 && x.v2 == state.v2) return family.impacts;
+    }
+  }
+  return std::nullopt;
+}
+
 #define GRAZELAB_INSTANTIATE(S)                                                                  \
+  template AtlasEnergyRange<S> defaultAtlasEnergyRange<S>(const Chain<S>&);                       \
+  template std::optional<int> impactsOfAtlasOrbit<S>(const ModesAtlas<S>&, const BasicState<S>&); \
   template ModesAtlas<S> computeModesAtlas<S>(const Chain<S>&, int, const S&, const S&,          \
                                               std::stop_token,                                   \
                                               const std::function<void(const ModeFamily<S>&)>&);

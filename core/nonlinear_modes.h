@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <stop_token>
 #include <string>
 #include <string_view>
@@ -54,6 +55,26 @@ struct ModesAtlas {
   std::vector<ModeFamily<S>> families;
   bool complete = false;  ///< false when stopped
 };
+
+/// The energies over which the atlas follows families unless told otherwise, for the command
+/// line and the explorer alike: 1/100 to 10000 times the energy of the 1IPP family's grazing end
+/// (GLO_lambda*), where the families are born and end.
+template <typename S>
+struct AtlasEnergyRange {
+  S low = 0;
+  S high = 0;
+};
+template <typename S>
+AtlasEnergyRange<S> defaultAtlasEnergyRange(const Chain<S>& chain);
+
+/// The most impacts per period the atlas follows unless told otherwise.
+inline constexpr int kDefaultAtlasMaxImpacts = 4;
+
+/// The impacts per period of the atlas's orbit whose state just after an impact is `state`,
+/// bit for bit (a click on the atlas's picture, or a session that saved it, gives one); empty
+/// when no orbit of the atlas has it.
+template <typename S>
+std::optional<int> impactsOfAtlasOrbit(const ModesAtlas<S>& atlas, const BasicState<S>& state);
 
 /// Computes the atlas; `familyDone` is called with each family as it is finished (for a
 /// display that shows them as they come).

@@ -472,8 +472,9 @@ void MainWindow::recompute() {
   request.derived = derived;
   // the scene travels as a copy (texts and a function): the worker never reads the window's
   request.prepare = [scene = *m_scenes[std::size_t(m_sceneIndex)], params = current, derived,
-                     clicked = m_clickedStart](std::stop_token stop, const ScenePartial& partial) {
-    SceneJob job = scene.build(params, derived, stop, clicked, partial);
+                     clicked = m_clickedStart, cache = m_sceneCache](std::stop_token stop,
+                                                                     const ScenePartial& partial) {
+    SceneJob job = scene.build(params, derived, stop, clicked, partial, cache.get());
     if (clicked && job.ok) job.spec.run.initial = *clicked;
     return job;
   };

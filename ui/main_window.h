@@ -197,6 +197,8 @@ class MainWindow : public QMainWindow {
 
   Options m_options;
   std::vector<std::unique_ptr<Scene>> m_scenes;
+  /// what the scenes keep between computations (the atlas of modes), shared with the worker
+  std::shared_ptr<SceneCache> m_sceneCache = std::make_shared<SceneCache>();
   std::vector<Params> m_sceneParams;
   int m_sceneIndex = 0;
   bool m_sceneChosen = false;  ///< a scene is on screen (its parameters carry over to the next)

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stop_token>
 #include <vector>
@@ -20,6 +21,15 @@
 
 namespace grazelab::ui {
 
+/// What scenes keep from one computation to the next, owned by the window and handed to each
+/// computation it asks the worker for: the last atlas of modes, which depends on the chain only
+/// (moving T/T2, the run's length or a click gets it again at once). The lock: a test may
+/// compute on a thread of its own while the worker computes.
+struct SceneCache {
+  std::mutex mutex;
+  std::optional<core::Model> atlasModel;
+  std::shared_ptr<const core::ModesAtlas<double>> atlas;
+};
 
 /// A named preset: which parameters are exposed, which views are shown, and so what is
 /// computed. Scenes are data: a Spec each, made by one function in its own file under
@@ -44,7 +54,7 @@ class Scene {
     /// mouse (the Nonlinear modes scene: the orbit clicked); `clicked` is empty otherwise
     std::function<SceneJob(const Scene&, const Params&, const DerivedModel&,
                            const std::optional<core::State>& clicked, std::stop_token stop,
-                           const ScenePartial& partial)>
+                           const ScenePartial& partial, SceneCache& cache)>
         buildFromStart;
   };
 
@@ -56,10 +66,14 @@ class Scene {
   Params defaults() const { return m_spec.defaults; }
   QList<ParamKey> parameters() const { return m_spec.parameters; }
   QList<PlotKind> plots() const { return m_spec.plots; }
+  /// `cache`: what the scene kept from before (none: it starts afresh).
   SceneJob build(const Params& params, const DerivedModel& derived, std::stop_token stop = {},
                  const std::optional<core::State>& clicked = std::nullopt,
-                 const ScenePartial& partial = {}) const {
-    if (m_spec.buildFromStart) return m_spec.buildFromStart(*this, params, derived, clicked, stop, partial);
+                 const ScenePartial& partial = {}, SceneCache* cache = nullptr) const {
+    if (m_spec.buildFromStart) {
+      SceneCache fresh;
+      return m_spec.buildFromStart(*this, params, derived, clicked, stop, partial, cache ? *cache : fresh);
+    }
     return m_spec.build(*this, params, derived, stop);
   }
 

@@ -35,7 +35,7 @@ std::uint64_t SimController::submit(SimRequest request) {
   request.id = ++m_latestId;
   m_busy = true;
   if (m_synchronous) {
-    SimWorker::run(request, {}, 1e9, [this](const SimUpdate& update) { receive(update); });
+    SimWorker::run(request, {}, 1e9, [this](const SimUpdate& update) { receive(update); }, m_mapCache);
     return request.id;
   }
   {

@@ -57,6 +57,8 @@ class SimController : public QObject {
 
   QThread m_thread;
   SimWorker* m_worker = nullptr;
+  /// the maps computed when synchronous (the worker keeps its own otherwise)
+  std::shared_ptr<core::experiments::MapCache> m_mapCache = std::make_shared<core::experiments::MapCache>();
   std::shared_ptr<SimMailbox> m_mailbox;
   std::uint64_t m_latestId = 0;
   /// the run so far of request m_runId, grown by each partial update, dropped at the final.

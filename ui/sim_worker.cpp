@@ -8,16 +8,6 @@
 
 namespace grazelab::ui {
 
-namespace {
-
-// The maps the worker has computed: the last complete one is given again at once.
-std::shared_ptr<core::experiments::MapCache> mapCache() {
-  static const auto cache = std::make_shared<core::experiments::MapCache>();
-  return cache;
-}
-
-}  // namespace
-
 SimWorker::SimWorker(std::shared_ptr<SimMailbox> mailbox) : m_mailbox(std::move(mailbox)) {}
 
 void SimWorker::wake() {
@@ -31,11 +21,12 @@ void SimWorker::wake() {
     m_mailbox->running = std::stop_source();
     stop = m_mailbox->running.get_token();
   }
-  run(*request, stop, 0.030, [this](const SimUpdate& update) { emit updated(update); });
+  run(*request, stop, 0.030, [this](const SimUpdate& update) { emit updated(update); }, m_mapCache);
 }
 
 void SimWorker::run(const SimRequest& described, std::stop_token stop, double chunkSeconds,
-                    const std::function<void(const SimUpdate&)>& report) {
+                    const std::function<void(const SimUpdate&)>& report,
+                    std::shared_ptr<core::experiments::MapCache> mapCache) {
   // the scene's own computations first (curves, surveys, the start), here and not on the GUI
   // thread; what they give travels with every update
   SimRequest prepared = described;
@@ -80,7 +71,7 @@ void SimWorker::run(const SimRequest& described, std::stop_token stop, double ch
   core::experiments::Options options;
   options.chunkSeconds = chunkSeconds;
   options.parallelFor = parallel::tbbParallelFor(0);
-  options.mapCache = mapCache();
+  options.mapCache = std::move(mapCache);
   core::experiments::run(asked->job.spec, stop, options,
                          [&](const core::experiments::Update& update) { report(stamped(update)); });
 }

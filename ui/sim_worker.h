@@ -36,15 +36,19 @@ class SimWorker : public QObject {
 
   /// Runs one request in chunks of about `chunkSeconds` of work and reports after each chunk
   /// (the caller decides where the reports go). Used by the worker and, synchronously, by the
-  /// headless snapshot mode and the tests.
+  /// headless snapshot mode and the tests. `mapCache`: the maps computed before, whose last
+  /// complete one is given again at once (none: every map is computed).
   static void run(const SimRequest& request, std::stop_token stop, double chunkSeconds,
-                  const std::function<void(const SimUpdate&)>& report);
+                  const std::function<void(const SimUpdate&)>& report,
+                  std::shared_ptr<core::experiments::MapCache> mapCache = nullptr);
 
  signals:
   void updated(const grazelab::ui::SimUpdate& update);
 
  private:
   std::shared_ptr<SimMailbox> m_mailbox;
+  /// the maps this worker has computed: the last complete one is given again at once
+  std::shared_ptr<core::experiments::MapCache> m_mapCache = std::make_shared<core::experiments::MapCache>();
 };
 
 }  // namespace grazelab::ui

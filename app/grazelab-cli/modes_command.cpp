@@ -71,9 +71,9 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
     return kExitInvalidInput;
   }
   const S T2 = core::twoPi<S>() / chain.omegaSlow;
-  const S grazingEnergy = core::physicalEnergy(chain, core::gloData(chain, core::lambdaStar(chain)));
-  S low = grazingEnergy / S(100);
-  S high = grazingEnergy * S(10000);
+  const core::AtlasEnergyRange<S> range = core::defaultAtlasEnergyRange(chain);
+  S low = range.low;
+  S high = range.high;
   if (parser.isSet("energy-range")) {
     const QStringList parts = parser.value("energy-range").split(':');
     const auto a = parts.size() == 2 ? core::parseScalar<S>(parts[0].toStdString()) : core::ParsedScalar<S>{};
@@ -256,7 +256,7 @@ void addModesOptions(QCommandLineParser& parser) {
 }
 
 int runModes(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
-  int maxImpacts = 4;
+  int maxImpacts = core::kDefaultAtlasMaxImpacts;
   if (parser.isSet("max-impacts")) {
     bool ok = false;
     maxImpacts = parser.value("max-impacts").toInt(&ok);

@@ -20,38 +20,15 @@ QString tr(const char* text) {
   return QCoreApplication::translate("grazelab::ui::ModesScene", text);
 }
 
-// The orbit through a start chosen on the atlas: the fewest impacts (1, 2, 4, 8) after which
-// its path closes (the atlas's states close to ~1e-14; a state moved by rounding still does to
-// 1e-9).
-std::optional<core::PeriodicOrbit<double>> orbitThrough(const core::Chain<double>& chain,
-                                                        const core::State& start) {
-  for (int impacts : {1, 2, 4, 8}) {
-    core::PeriodicOrbit<double> orbit = core::evaluateOrbit(chain, start, impacts, 1e-9);
-    if (orbit.admissible) return orbit;
-  }
-  return std::nullopt;
-}
-
-// The last atlas computed: it depends on the chain only, so moving T/T2, the run's length or a
-// click asks for it again and gets it at once (the worker runs one scene job at a time; the
-// lock is for the tests, which may compute on their own thread).
-struct AtlasCache {
-  std::mutex mutex;
-  std::optional<core::Model> model;
-  std::shared_ptr<const core::ModesAtlas<double>> atlas;
-};
-
+// The chain's atlas, over the command line's default energies and impacts: the one kept in
+// `cache` when it is this chain's, else computed (each family shown as it is finished) and kept.
 std::shared_ptr<const core::ModesAtlas<double>> atlasOf(const core::Chain<double>& chain, const DerivedModel& derived,
-                                                        std::stop_token stop, const ScenePartial& partial) {
-  static AtlasCache cache;
+                                                        std::stop_token stop, const ScenePartial& partial,
+                                                        SceneCache& cache) {
   {
     const std::lock_guard lock(cache.mutex);
-    if (cache.model == derived.model) return cache.atlas;
+    if (cache.atlasModel == derived.model) return cache.atlas;
   }
-  const double grazing = core::energy(derived.model, core::gloData(derived.model, derived.modes, derived.lambdaStar));
-  // energies from a tenth to a hundred times the grazing end's: where the families are born
-  // and end (a wider range squeezes them into a corner of the picture); each family shown as
-  // it is finished
   core::ModesAtlas<double> sofar;
   const auto familyDone = [&](const core::ModeFamily<double>& family) {
     sofar.families.push_back(family);
@@ -61,11 +38,12 @@ std::shared_ptr<const core::ModesAtlas<double>> atlasOf(const core::Chain<double
     job.modes = std::make_shared<const core::ModesAtlas<double>>(sofar);
     partial(job, 0.0);
   };
-  auto atlas = std::make_shared<const core::ModesAtlas<double>>(
-      core::computeModesAtlas<double>(chain, 4, grazing / 10, grazing * 100, stop, familyDone));
+  const core::AtlasEnergyRange<double> energies = core::defaultAtlasEnergyRange(chain);
+  auto atlas = std::make_shared<const core::ModesAtlas<double>>(core::computeModesAtlas<double>(
+      chain, core::kDefaultAtlasMaxImpacts, energies.low, energies.high, stop, familyDone));
   if (!atlas->complete) return nullptr;
   const std::lock_guard lock(cache.mutex);
-  cache.model = derived.model;
+  cache.atlasModel = derived.model;
   cache.atlas = atlas;
   return atlas;
 }
@@ -96,7 +74,7 @@ Scene::Spec modesScene() {
                  PlotKind::PhaseU2V2,  PlotKind::Poincare,    PlotKind::Chain};
   scene.buildFromStart = [](const Scene& self, const Params& params, const DerivedModel& derived,
                             const std::optional<core::State>& clicked, std::stop_token stop,
-                            const ScenePartial& partial) {
+                            const ScenePartial& partial, SceneCache& cache) {
     SceneJob job;
     job.spec.model = derived.model;
     const core::ChainOrProblem<double> formed = core::makeChain(derived.model);
@@ -113,14 +91,17 @@ Scene::Spec modesScene() {
     const double T2 = derived.modes.T2;
     const double lowFraction = core::onePeriodicLowerEnd(derived.model, derived.modes) / T2;
     job.sliderRanges[ParamKey::Period] = {std::ceil(lowFraction * 1000 + 1e-9) / 1000, 0.999};
-    job.modes = atlasOf(chain, derived, stop, partial);
+    job.modes = atlasOf(chain, derived, stop, partial, cache);
     if (!job.modes) return job;  // stopped
     // the orbit followed: the one clicked on the atlas, or the 1IPP orbit of the slider's period
     if (clicked) {
-      job.orbit = orbitThrough(chain, *clicked);
-      if (!job.orbit) {
-        job.message = tr("the start chosen is not a periodic orbit with 1, 2, 4 or 8 impacts: "
-                         "click a dot of the modes picture");
+      // an orbit of the atlas, with its family's impacts per period (closing to 1e-9: the
+      // atlas's states close to ~1e-14)
+      const std::optional<int> impacts = core::impactsOfAtlasOrbit(*job.modes, *clicked);
+      if (impacts) job.orbit = core::evaluateOrbit(chain, *clicked, *impacts, 1e-9);
+      if (!job.orbit || !job.orbit->admissible) {
+        job.orbit.reset();
+        job.message = tr("the start chosen is not an orbit of the atlas: click a dot of the modes picture");
         return job;
       }
     } else {
