@@ -125,9 +125,10 @@ bool deliverProgress(ProgressMailbox& mailbox, const py::object& progress,
   return true;
 }
 
-// run(arguments, progress=None, events=False, max_events) -> (code, output, messages, events, decimals)
+// run(arguments, progress=None, events=False, max_events, discard_events=False)
+//   -> (code, output, messages, events, decimals)
 py::tuple run(const std::vector<std::string>& arguments, const py::object& progress,
-              bool eventsAsArrays, std::size_t maxEvents) {
+              bool eventsAsArrays, std::size_t maxEvents, bool discardEvents) {
   QStringList commandLine{QStringLiteral("grazelab")};
   for (const std::string& argument : arguments) commandLine << QString::fromStdString(argument);
 
@@ -141,7 +142,8 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   grazelab::cli::Io io;
   io.out = output.file();
   io.messages = messages.file();
-  if (eventsAsArrays) io.events = table.get();
+  table->discard = discardEvents;
+  if (eventsAsArrays || discardEvents) io.events = table.get();
   if (!progress.is_none()) {
     io.progress = [&mailbox](double fraction, const std::string& text) {
       std::lock_guard lock(mailbox.mutex);
@@ -200,7 +202,7 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   const std::string log = messages.take();
   py::object events = py::none();
   py::object decimals = py::none();
-  if (eventsAsArrays) {
+  if (eventsAsArrays && !discardEvents) {
     if (!table->decimals.empty()) decimals = py::cast(table->decimals);
     events = eventArray(std::move(table));
   }
@@ -217,8 +219,9 @@ PYBIND11_MODULE(_native, module) {
   module.attr("version") = grazelab::cli::kVersion;
   module.def("run", &run, py::arg("arguments"), py::arg("progress") = py::none(),
              py::arg("events") = false, py::arg("max_events") = std::size_t(-1),
+             py::arg("discard_events") = false,
              "Runs one grazelab-cli command line (without the program's name) in this process. "
              "Returns (exit code, output bytes, messages, events array or None, the events' "
              "decimal text or None); raises ValueError when the run makes more than max_events "
-             "events.");
+             "events. With discard_events a simulate keeps no event anywhere (statistics only).");
 }

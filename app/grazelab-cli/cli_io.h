@@ -29,6 +29,9 @@ struct EventTable {
   std::size_t maxRows = std::size_t(-1);
   bool full = false;
   std::function<void()> whenFull;
+  /// statistics only: the events are counted by the run's summary, kept nowhere (no bound on
+  /// their number, nothing in the output's events array)
+  bool discard = false;
 };
 
 /// Where a command writes. The command line: its output on stdout, its messages (notes,

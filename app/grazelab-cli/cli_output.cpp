@@ -217,6 +217,7 @@ namespace {
 // writes (the events a run of --precision auto wrote in double before its raise get theirs then).
 template <typename S>
 void appendEvent(EventTable& table, const core::BasicEvent<S>& event) {
+  if (table.discard) return;
   if (table.rows.size() >= table.maxRows) {
     if (!table.full && table.whenFull) table.whenFull();
     table.full = true;

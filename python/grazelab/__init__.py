@@ -55,13 +55,13 @@ class GrazeLabWarning(UserWarning):
     """A result came back that its own error estimate does not trust (verdict unreliable)."""
 
 
-def _command(command, options, progress=None, events=False, positional=()):
+def _command(command, options, progress=None, events=False, positional=(), discard_events=False):
     """Runs one command with the options that are not None; returns (output text, messages,
     events, decimals) or raises. A progress callback hears (1.0, "done") when the command has
     ended well."""
     given = {name: value for name, value in options.items() if value is not None}
     line = _convert.arguments(command, given) + [str(p) for p in positional]
-    code, output, messages, table, decimals = _run(line, progress, events, MAX_EVENTS)
+    code, output, messages, table, decimals = _run(line, progress, events, MAX_EVENTS, discard_events)
     lines = [text for text in messages.splitlines() if text.strip()]
     if code == 2:
         raise ValueError(_message(lines[-1] if lines else "invalid input"))
@@ -143,7 +143,7 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
              glo: _Optional[float] = None, onepp: _Optional[float] = None, state: _Optional[_Sequence[float]] = None,
              perturb: _Optional[_Sequence[float]] = None, contacts: _Optional[int] = None,
              t_end: _Optional[float] = None, search_steps: _Optional[int] = None, trust: str = "auto",
-             progress: _Optional[_Progress] = None) -> Result:
+             events: bool = True, progress: _Optional[_Progress] = None) -> Result:
     """One exact run (``grazelab-cli simulate``). Returns the JSON's fields (model, initial,
     final, stop_reason, contacts, energy, accuracy, trust, precision, timing) with ``events`` a
     structured array of the columns t, type, u1, u2, v1, v2_pre, v2_post (the arrays the core
@@ -160,20 +160,23 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         about a second's worth); running out stops the run with stop_reason search-budget.
     trust: the run's error estimate: "auto" (default: a shadow run one precision up while it
         costs about the run itself, then extrapolation), "full" or "off".
+    events: False for the run's statistics only (contacts, energy, accuracy, trust, final
+        state): no event is kept, so no ``MAX_EVENTS`` bound; ``events`` is then None.
     progress: ``progress(fraction, text)``, called on the calling thread.
 """
     try:
         count = int(_convert._text("contacts", contacts)) if contacts is not None else None
     except (TypeError, ValueError):
         count = None  # the command line says what is wrong with it
-    if count is not None and count > MAX_EVENTS:
+    if events and count is not None and count > MAX_EVENTS:
         raise ValueError(f"contacts: {count} events would take {count * 80 / 1e9:.1f} GB "
                          f"in memory (at most grazelab.MAX_EVENTS = {MAX_EVENTS}); stream them "
                          f"to a file with grazelab-cli simulate --format csv")
     options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision, glo=glo,
                    onepp=onepp, state=state, perturb=perturb, contacts=contacts, t_end=t_end,
                    search_steps=search_steps, trust=trust)
-    output, lines, table, decimals = _command("simulate", options, progress, events=True)
+    output, lines, table, decimals = _command("simulate", options, progress, events=events,
+                                              discard_events=not events)
     used_precision_exact = decimals is not None
     result = _convert.parse_json(output, exact_decimals=used_precision_exact)
     result["events"] = table

@@ -180,6 +180,16 @@ def test_the_events_held_in_memory_are_bounded_however_the_run_is_bounded(monkey
     assert len(gl.simulate(contacts=100).events) == 100
 
 
+def test_statistics_only_keep_no_event_and_have_no_event_bound(monkeypatch):
+    whole = gl.simulate(glo=0.5, perturb=(0, 0, 0, -0.05), contacts=150)
+    monkeypatch.setattr(gl, "MAX_EVENTS", 100)
+    brief = gl.simulate(glo=0.5, perturb=(0, 0, 0, -0.05), contacts=150, events=False)
+    assert brief.events is None and brief.contacts == whole.contacts
+    assert brief.final == whole.final and brief.energy == whole.energy
+    with pytest.raises(ValueError, match="GB in memory|MAX_EVENTS"):
+        gl.simulate(glo=0.5, contacts=150)  # the same run, its events kept
+
+
 def test_a_stripe_without_files_is_refused_and_one_part_may_be_given_alone(tmp_path):
     with pytest.raises(ValueError, match="out=PREFIX"):
         gl.map(x="u1:-1:1:4", y="v1:-1:1:4", shard=(1, 2))
