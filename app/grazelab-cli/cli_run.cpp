@@ -18,8 +18,8 @@
 #include "family_command.h"
 #include "map_command.h"
 #include "modes_command.h"
-#include "orbit_command.h"
 #include "exit_codes.h"
+#include "orbit_command.h"
 #include "report_command.h"
 #include "simulate_command.h"
 
@@ -68,7 +68,7 @@ struct Command {
   QString whyNot;  ///< said after a refused option: why the command takes none of the others
 };
 
-const QStringList kModel = {"m1", "m2", "k1", "gap", "k2", "branch", "precision"};
+const QStringList kChain = {"m1", "m2", "k1", "gap", "k2", "branch"};
 const QStringList kStart = {"glo", "onepp", "state", "perturb"};
 
 // a command that writes files: invalid input, interrupt and failed writes as `ended` says
@@ -90,7 +90,7 @@ int runReportOrStability(bool report, const QCommandLineParser& parser, const Io
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
-      {"info", kModel, false,
+      {"info", kChain + QStringList{"precision"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token) {
          QString error;
          const auto precision = parsePrecisionOption(parser, error);
@@ -103,7 +103,7 @@ const std::vector<Command>& commands() {
          return fail(io, "--precision: unknown");
        },
        {}},
-      {"simulate", kModel + kStart + QStringList{"contacts", "t-end", "search-steps", "format", "trust"}, false,
+      {"simulate", kChain + kStart + QStringList{"precision", "contacts", "t-end", "search-steps", "format", "trust"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
          const auto precision = parsePrecisionOption(parser, error);
@@ -115,7 +115,7 @@ const std::vector<Command>& commands() {
        },
        {}},
       {"report",
-       QStringList{"m1", "m2", "k1", "gap", "k2", "branch"} + kStart + QStringList{"contacts", "t-end", "out", "methods", "quick"},
+       kChain + kStart + QStringList{"contacts", "t-end", "out", "methods", "quick"},
        false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          return runReportOrStability(true, parser, io, stop);
@@ -126,7 +126,7 @@ const std::vector<Command>& commands() {
          return runReportOrStability(false, parser, io, stop);
        },
        "it runs its own list of cases (see matrix.md)"},
-      {"map", kModel + kStart + QStringList{"contacts", "trust", "out", "x", "y", "threads", "shard", "picture"}, false,
+      {"map", kChain + kStart + QStringList{"precision", "contacts", "trust", "out", "x", "y", "threads", "shard", "picture"}, false,
        writesFiles(runMap), {}},
       {"merge", {"out"}, true,
        [](const QCommandLineParser& parser, const QStringList& parts, const Io& io, std::stop_token stop) {
@@ -134,15 +134,15 @@ const std::vector<Command>& commands() {
          return ended(io, runMerge(parser, parts, io, stop, error), error);
        },
        "the parts say what the map is"},
-      {"family", kModel + QStringList{"onepp", "out", "count"}, false, writesFiles(runFamily), {}},
-      {"orbit", kModel + QStringList{"onepp", "format", "period", "impacts", "energy", "guess"}, false,
+      {"family", kChain + QStringList{"precision", "onepp", "out", "count"}, false, writesFiles(runFamily), {}},
+      {"orbit", kChain + QStringList{"precision", "onepp", "format", "period", "impacts", "energy", "guess"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
          const int code = runOrbit(parser, io, stop, error);
          return code == kExitInvalidInput ? fail(io, error) : code;
        },
        {}},
-      {"modes", kModel + QStringList{"out", "max-impacts", "energy-range"}, false, writesFiles(runModes), {}},
+      {"modes", kChain + QStringList{"precision", "out", "max-impacts", "energy-range"}, false, writesFiles(runModes), {}},
   };
   return table;
 }
