@@ -2,7 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include "core/maps.h"
+#include "core/experiments/maps.h"
 
 namespace grazelab::parallel {
 

@@ -12,7 +12,7 @@ dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
 cmake --install "$build" --prefix "$dir/prefix" > "$dir/install.log"
 prefix=$dir/prefix
 [ "$("$prefix/bin/grazelab-cli" --version)" = "grazelab-cli $version" ] || { echo "FAIL: installed grazelab-cli"; exit 1; }
-for f in include/grazelab/core/simulate.h include/grazelab/core/version.h lib/cmake/GrazeLab/GrazeLabConfig.cmake \
+for f in include/grazelab/core/solver/simulate.h include/grazelab/core/model/linear_modes.h include/grazelab/core/version.h lib/cmake/GrazeLab/GrazeLabConfig.cmake \
          lib/pkgconfig/grazelab-core.pc; do
   [ -f "$prefix/$f" ] || { echo "FAIL: $f not installed"; exit 1; }
 done

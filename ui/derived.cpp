@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "core/orbits.h"
-#include "core/resonance.h"
-#include "core/setup.h"
+#include "core/orbits/special_orbits.h"
+#include "core/model/resonance.h"
+#include "core/orbits/starts.h"
 
 namespace grazelab::ui {
 

@@ -4,8 +4,8 @@
 
 #include <QString>
 
-#include "core/model.h"
-#include "core/modes.h"
+#include "core/model/model.h"
+#include "core/model/linear_modes.h"
 #include "ui/params.h"
 
 namespace grazelab::ui {

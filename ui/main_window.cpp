@@ -26,8 +26,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/chain.h"
-#include "core/model.h"
+#include "core/model/chain.h"
+#include "core/model/model.h"
 #include "ui/derived.h"
 #include "ui/parameter_panel.h"
 #include "ui/presentation_style.h"

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "core/model.h"
-#include "core/setup.h"
+#include "core/model/model.h"
+#include "core/orbits/starts.h"
 #include "ui/derived.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"

@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-#include "core/trust.h"
+#include "core/solver/trust.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
 #include "ui/plots/plot_view.h"

@@ -12,7 +12,7 @@
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
-#include "core/resonance.h"
+#include "core/model/resonance.h"
 #include "ui/eliding_combo_box.h"
 #include "ui/scene.h"
 #include "ui/slider_spin.h"

@@ -10,7 +10,7 @@
 #include <map>
 #include <utility>
 
-#include "core/state.h"
+#include "core/model/state.h"
 #include "ui/params.h"
 
 class QCheckBox;

@@ -7,7 +7,7 @@
 
 #include <optional>
 
-#include "core/resonance.h"
+#include "core/model/resonance.h"
 
 namespace grazelab::ui {
 

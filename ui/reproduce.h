@@ -4,7 +4,7 @@
 
 #include <QString>
 
-#include "core/experiment_run.h"
+#include "core/experiments/run.h"
 
 namespace grazelab::ui {
 

@@ -6,9 +6,9 @@
 
 #include <QCoreApplication>
 
-#include "core/chain.h"
-#include "core/orbits.h"
-#include "core/setup.h"
+#include "core/model/chain.h"
+#include "core/orbits/special_orbits.h"
+#include "core/orbits/starts.h"
 
 namespace grazelab::ui {
 

@@ -12,8 +12,8 @@
 #include <stop_token>
 #include <vector>
 
-#include "core/setup.h"
-#include "core/simulate.h"
+#include "core/orbits/starts.h"
+#include "core/solver/simulate.h"
 #include "ui/derived.h"
 #include "ui/figures.h"
 #include "ui/params.h"

@@ -7,7 +7,7 @@
 
 #include <optional>
 
-#include "core/state.h"
+#include "core/model/state.h"
 #include "ui/params.h"
 
 namespace grazelab::ui {

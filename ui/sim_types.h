@@ -14,16 +14,16 @@
 #include <stop_token>
 #include <string>
 
-#include "core/experiment_run.h"
-#include "core/nonlinear_modes.h"
-#include "core/periodic_orbit.h"
+#include "core/experiments/run.h"
+#include "core/orbits/modes_atlas.h"
+#include "core/orbits/periodic_orbit.h"
 #include "ui/derived.h"
 #include "ui/figures.h"
 #include "ui/params.h"
 
 namespace grazelab::ui {
 
-// The experiment's parts, as the views read them (core/experiment_run.h).
+// The experiment's parts, as the views read them (core/experiments/run.h).
 using core::experiments::AccuracyPoint;
 using core::experiments::AccuracyProgress;
 using core::experiments::MapProgress;

@@ -10,7 +10,7 @@
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 
-#include "core/setup.h"
+#include "core/orbits/starts.h"
 
 namespace grazelab::cli {
 namespace {

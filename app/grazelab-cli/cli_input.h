@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "core/chain.h"
-#include "core/model.h"
-#include "core/resonance.h"
-#include "core/setup.h"
-#include "core/simulate.h"
-#include "core/trust.h"
+#include "core/model/chain.h"
+#include "core/model/model.h"
+#include "core/model/resonance.h"
+#include "core/orbits/starts.h"
+#include "core/solver/simulate.h"
+#include "core/solver/trust.h"
 
 class QCommandLineParser;
 

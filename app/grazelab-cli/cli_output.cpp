@@ -6,8 +6,8 @@
 #include <iterator>
 #include <type_traits>
 
-#include "core/modes.h"
-#include "core/orbits.h"
+#include "core/model/linear_modes.h"
+#include "core/orbits/special_orbits.h"
 
 namespace grazelab::cli {
 

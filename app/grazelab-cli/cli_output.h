@@ -8,8 +8,8 @@
 
 #include "cli_input.h"
 #include "cli_io.h"
-#include "core/simulate.h"
-#include "core/trust.h"
+#include "core/solver/simulate.h"
+#include "core/solver/trust.h"
 
 namespace grazelab::cli {
 

@@ -14,7 +14,7 @@
 
 #include "cli_input.h"
 #include "cli_output.h"
-#include "core/trust.h"
+#include "core/solver/trust.h"
 #include "family_command.h"
 #include "map_command.h"
 #include "modes_command.h"

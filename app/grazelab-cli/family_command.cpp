@@ -16,9 +16,9 @@
 #include <type_traits>
 
 #include "cli_input.h"
-#include "core/family.h"
-#include "core/orbits.h"
-#include "core/periodic_family.h"
+#include "core/orbits/onepp_family.h"
+#include "core/orbits/special_orbits.h"
+#include "core/orbits/onepp_family_points.h"
 #include "npy.h"
 #include "output_files.h"
 #include "exit_codes.h"

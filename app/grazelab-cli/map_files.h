@@ -7,7 +7,7 @@
 
 #include <optional>
 
-#include "core/maps.h"
+#include "core/experiments/maps.h"
 
 namespace grazelab::cli::map {
 

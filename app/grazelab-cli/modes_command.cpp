@@ -14,8 +14,8 @@
 #include <type_traits>
 
 #include "cli_input.h"
-#include "core/nonlinear_modes.h"
-#include "core/orbits.h"
+#include "core/orbits/modes_atlas.h"
+#include "core/orbits/special_orbits.h"
 #include "npy.h"
 #include "output_files.h"
 #include "exit_codes.h"

@@ -11,8 +11,8 @@
 
 #include "cli_input.h"
 #include "cli_output.h"
-#include "core/periodic_family.h"
-#include "core/periodic_orbit.h"
+#include "core/orbits/onepp_family_points.h"
+#include "core/orbits/periodic_orbit.h"
 #include "exit_codes.h"
 
 namespace grazelab::cli {

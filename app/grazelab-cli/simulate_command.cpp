@@ -19,8 +19,8 @@
 #include <unistd.h>
 
 #include "cli_output.h"
-#include "core/simulate.h"
-#include "core/trust.h"
+#include "core/solver/simulate.h"
+#include "core/solver/trust.h"
 #include "exit_codes.h"
 
 namespace grazelab::cli {

@@ -8,7 +8,7 @@
 
 #include "cli_input.h"
 #include "cli_io.h"
-#include "core/trust.h"
+#include "core/solver/trust.h"
 
 class QCommandLineParser;
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/methods/scaled_run.h"
-#include "core/simulate.h"
+#include "core/solver/simulate.h"
 
 namespace grazelab::core::methods {
 namespace {

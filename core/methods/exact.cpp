@@ -8,7 +8,7 @@
 
 #include "core/methods/runners.h"
 #include "core/methods/scaled_run.h"
-#include "core/simulate.h"
+#include "core/solver/simulate.h"
 
 namespace grazelab::core::methods {
 namespace {

@@ -9,9 +9,9 @@
 #include <string_view>
 #include <vector>
 
-#include "core/model.h"
-#include "core/recorder.h"
-#include "core/scalar.h"
+#include "core/model/model.h"
+#include "core/solver/recorder.h"
+#include "core/numbers/scalar.h"
 
 namespace grazelab::core::methods {
 

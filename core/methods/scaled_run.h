@@ -8,9 +8,9 @@
 #include <stop_token>
 #include <string>
 
-#include "core/chain.h"
+#include "core/model/chain.h"
 #include "core/methods/method.h"
-#include "core/recorder.h"
+#include "core/solver/recorder.h"
 
 namespace grazelab::core::methods {
 

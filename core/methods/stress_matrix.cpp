@@ -8,9 +8,9 @@
 
 #include "core/methods/scaled_run.h"
 #include "core/methods/work_precision.h"
-#include "core/orbits.h"
-#include "core/setup.h"
-#include "core/simulate.h"
+#include "core/orbits/special_orbits.h"
+#include "core/orbits/starts.h"
+#include "core/solver/simulate.h"
 
 namespace grazelab::core::methods {
 namespace {

@@ -6,7 +6,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "core/simulate.h"
+#include "core/solver/simulate.h"
 
 namespace grazelab::core::methods {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/methods/compare.h"
-#include "core/trust.h"
+#include "core/solver/trust.h"
 
 namespace grazelab::core::methods {
 

@@ -4,11 +4,11 @@
 // mass 2 pushed into the stop: its first contacts, exactly, from the installed core library.
 #include <cstdio>
 
-#include "core/model.h"
-#include "core/modes.h"
-#include "core/orbits.h"
-#include "core/setup.h"
-#include "core/simulate.h"
+#include "core/model/model.h"
+#include "core/model/linear_modes.h"
+#include "core/orbits/special_orbits.h"
+#include "core/orbits/starts.h"
+#include "core/solver/simulate.h"
 #include "core/version.h"
 
 int main() {

@@ -4,16 +4,16 @@
 // Run: ./build/tests/bench/grazelab_core_bench
 #include <benchmark/benchmark.h>
 
-#include "core/chain.h"
-#include "core/contact.h"
-#include "core/experiment_run.h"
-#include "core/modes.h"
-#include "core/nonlinear_modes.h"
-#include "core/periodic_orbit.h"
-#include "core/setup.h"
-#include "core/free_flight.h"
-#include "core/orbits.h"
-#include "core/simulate.h"
+#include "core/model/chain.h"
+#include "core/solver/contact.h"
+#include "core/experiments/run.h"
+#include "core/model/linear_modes.h"
+#include "core/orbits/modes_atlas.h"
+#include "core/orbits/periodic_orbit.h"
+#include "core/orbits/starts.h"
+#include "core/solver/free_flight.h"
+#include "core/orbits/special_orbits.h"
+#include "core/solver/simulate.h"
 #include "support/cases.h"
 
 namespace grazelab {

@@ -5,7 +5,7 @@
 // Run: ./build/tests/bench/grazelab_map_bench
 #include <benchmark/benchmark.h>
 
-#include "core/maps.h"
+#include "core/experiments/maps.h"
 #include "parallel/tbb_parallel_for.h"
 
 namespace grazelab {

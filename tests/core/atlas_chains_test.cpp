@@ -12,12 +12,12 @@
 #include <cmath>
 #include <set>
 
-#include "core/chain.h"
-#include "core/nonlinear_modes.h"
-#include "core/orbits.h"
-#include "core/periodic_continuation.h"
-#include "core/periodic_orbit.h"
-#include "core/setup.h"
+#include "core/model/chain.h"
+#include "core/orbits/modes_atlas.h"
+#include "core/orbits/special_orbits.h"
+#include "core/orbits/family_continuation.h"
+#include "core/orbits/periodic_orbit.h"
+#include "core/orbits/starts.h"
 
 namespace grazelab::core {
 namespace {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // Tests for core/budget.cpp.
-#include "core/budget.h"
+#include "core/solver/budget.h"
 
 #include <gtest/gtest.h>
 

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// Tests for core/contact.cpp: contact times against independent computations (a dense scan of
+// Tests for core/solver/contact.cpp: contact times against independent computations (a dense scan of
 // the plain closed form, and the detuned march run on a resonant chain), and the precise
 // handling of near-grazing returns.
-#include "core/contact.h"
+#include "core/solver/contact.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "core/simulate.h"
+#include "core/solver/simulate.h"
 
 #include "support/cases.h"
 #include "support/physical_flight.h"

@@ -7,11 +7,11 @@
 
 #include <cmath>
 
-#include "core/orbits.h"
-#include "core/setup.h"
-#include "core/simulate.h"
-#include "core/maps.h"
-#include "core/trust.h"
+#include "core/orbits/special_orbits.h"
+#include "core/orbits/starts.h"
+#include "core/solver/simulate.h"
+#include "core/experiments/maps.h"
+#include "core/solver/trust.h"
 #include "support/cases.h"
 
 namespace grazelab::core {

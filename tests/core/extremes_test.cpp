@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "core/orbits.h"
-#include "core/setup.h"
-#include "core/simulate.h"
+#include "core/orbits/special_orbits.h"
+#include "core/orbits/starts.h"
+#include "core/solver/simulate.h"
 #include "support/cases.h"
 
 namespace grazelab::core {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// Tests for core/free_flight.cpp: the closed form against an ODE integration, the two
+// Tests for core/solver/free_flight.cpp: the closed form against an ODE integration, the two
 // evaluations against each other, and the exact periodicity of resonant flights.
-#include "core/free_flight.h"
+#include "core/solver/free_flight.h"
 
 #include <gtest/gtest.h>
 

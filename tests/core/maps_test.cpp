@@ -8,9 +8,9 @@
 #include <cmath>
 #include <thread>
 
-#include "core/chain.h"
-#include "core/orbits.h"
-#include "core/maps.h"
+#include "core/model/chain.h"
+#include "core/orbits/special_orbits.h"
+#include "core/experiments/maps.h"
 #include "parallel/tbb_parallel_for.h"
 #include "support/point_bits.h"
 

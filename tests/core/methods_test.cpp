@@ -11,7 +11,7 @@
 #include "core/methods/compare.h"
 #include "core/methods/stress_matrix.h"
 #include "core/methods/work_precision.h"
-#include "core/simulate.h"
+#include "core/solver/simulate.h"
 #include "support/cases.h"
 
 namespace grazelab::core::methods {

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // Tests for core/model.cpp.
-#include "core/model.h"
+#include "core/model/model.h"
 
-#include "core/chain.h"
+#include "core/model/chain.h"
 
 #include <gtest/gtest.h>
 

@@ -10,11 +10,11 @@
 #include <cmath>
 #include <optional>
 
-#include "core/chain.h"
-#include "core/orbits.h"
-#include "core/periodic_orbit.h"
-#include "core/setup.h"
-#include "core/simulate.h"
+#include "core/model/chain.h"
+#include "core/orbits/special_orbits.h"
+#include "core/orbits/periodic_orbit.h"
+#include "core/orbits/starts.h"
+#include "core/solver/simulate.h"
 
 namespace grazelab::core {
 namespace {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // Tests for core/resonance.cpp.
-#include "core/resonance.h"
+#include "core/model/resonance.h"
 
-#include "core/chain.h"
-#include "core/setup.h"
+#include "core/model/chain.h"
+#include "core/orbits/starts.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include "core/modes.h"
+#include "core/model/linear_modes.h"
 
 namespace grazelab::core {
 namespace {

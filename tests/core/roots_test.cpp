@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// Tests for core/roots.h: root isolation in an interval, in every precision.
-#include "core/roots.h"
+// Tests for core/numbers/roots.h: root isolation in an interval, in every precision.
+#include "core/numbers/roots.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 
-#include "core/scalar.h"
+#include "core/numbers/scalar.h"
 
 namespace grazelab::core {
 namespace {

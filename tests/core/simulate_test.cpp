@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// Tests for core/simulate.cpp: requests, limits, cancellation, outputs, invalid input.
-#include "core/simulate.h"
+// Tests for core/solver/simulate.cpp: requests, limits, cancellation, outputs, invalid input.
+#include "core/solver/simulate.h"
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,9 @@
 #include <cmath>
 #include <thread>
 
-#include "core/free_flight.h"
-#include "core/modes.h"
-#include "core/sticking.h"
+#include "core/solver/free_flight.h"
+#include "core/model/linear_modes.h"
+#include "core/solver/sticking.h"
 #include "support/cases.h"
 #include "support/physical_flight.h"
 

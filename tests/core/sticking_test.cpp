@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // Tests for core/sticking.cpp.
-#include "core/sticking.h"
+#include "core/solver/sticking.h"
 
-#include "core/impact_law.h"
+#include "core/solver/impact_law.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/modes.h"
-#include "core/orbits.h"
-#include "core/simulate.h"
+#include "core/model/linear_modes.h"
+#include "core/orbits/special_orbits.h"
+#include "core/solver/simulate.h"
 #include "support/cases.h"
 
 namespace grazelab::core {

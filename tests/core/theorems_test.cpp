@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "core/orbits.h"
-#include "core/simulate.h"
+#include "core/orbits/special_orbits.h"
+#include "core/solver/simulate.h"
 #include "support/cases.h"
 
 namespace grazelab::core {

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// The trust estimate (core/trust.h): it tracks the true error, which a binary128 run of the
+// The trust estimate (core/solver/trust.h): it tracks the true error, which a binary128 run of the
 // same start measures here, and it names a chaotic run past its horizon.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/modes.h"
-#include "core/orbits.h"
-#include "core/trust.h"
+#include "core/model/linear_modes.h"
+#include "core/orbits/special_orbits.h"
+#include "core/solver/trust.h"
 #include "support/cases.h"
 
 namespace grazelab::core {

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "core/model.h"
-#include "core/modes.h"
-#include "core/orbits.h"
-#include "core/resonance.h"
-#include "core/setup.h"
+#include "core/model/model.h"
+#include "core/model/linear_modes.h"
+#include "core/orbits/special_orbits.h"
+#include "core/model/resonance.h"
+#include "core/orbits/starts.h"
 
 namespace grazelab::testing {
 

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// The scaled free flight of core/free_flight.h seen in physical units (time t, lengths, speeds),
+// The scaled free flight of core/solver/free_flight.h seen in physical units (time t, lengths, speeds),
 // so that tests state their properties in the units of docs/model.md.
 #pragma once
 
 #include <cmath>
 #include <memory>
 
-#include "core/chain.h"
-#include "core/contact.h"
-#include "core/free_flight.h"
+#include "core/model/chain.h"
+#include "core/solver/contact.h"
+#include "core/solver/free_flight.h"
 
 namespace grazelab::testing {
 

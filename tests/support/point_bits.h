@@ -5,7 +5,7 @@
 #include <bit>
 #include <cstdint>
 
-#include "core/maps.h"
+#include "core/experiments/maps.h"
 
 namespace grazelab::testing {
 

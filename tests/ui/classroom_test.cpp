@@ -24,11 +24,11 @@
 #include <algorithm>
 #include <numbers>
 
-#include "core/chain.h"
-#include "core/nonlinear_modes.h"
-#include "core/modes.h"
-#include "core/orbits.h"
-#include "core/resonance.h"
+#include "core/model/chain.h"
+#include "core/orbits/modes_atlas.h"
+#include "core/model/linear_modes.h"
+#include "core/orbits/special_orbits.h"
+#include "core/model/resonance.h"
 #include "tests/ui/explorer_test_support.h"
 #include "ui/main_window.h"
 #include "ui/number_box.h"

@@ -20,10 +20,10 @@
 #include <optional>
 #include <random>
 
-#include "core/chain.h"
-#include "core/orbits.h"
+#include "core/model/chain.h"
+#include "core/orbits/special_orbits.h"
 #include "tests/ui/explorer_test_support.h"
-#include "core/modes.h"
+#include "core/model/linear_modes.h"
 #include "ui/derived.h"
 #include "ui/main_window.h"
 #include "ui/number_box.h"

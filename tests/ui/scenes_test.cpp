@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <bit>
 
-#include "core/modes.h"
+#include "core/model/linear_modes.h"
 #include "tests/ui/explorer_test_support.h"
 #include "ui/main_window.h"
 #include "ui/plots/chain_view.h"

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "core/family.h"
+#include "core/orbits/onepp_family.h"
 
 class QPainter;
 

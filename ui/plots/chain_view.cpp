@@ -18,7 +18,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/modes.h"
+#include "core/model/linear_modes.h"
 #include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {

@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/simulate.h"
+#include "core/solver/simulate.h"
 #include "ui/plots/scene_view.h"
 #include "ui/sim_types.h"
 

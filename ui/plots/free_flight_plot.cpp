@@ -2,7 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/free_flight_plot.h"
 
-#include "core/modes.h"
+#include "core/model/linear_modes.h"
 
 #include <QLineSeries>
 #include <QScatterSeries>

@@ -18,10 +18,10 @@
 #include <cmath>
 #include <limits>
 
-#include "core/chain.h"
-#include "core/orbits.h"
+#include "core/model/chain.h"
+#include "core/orbits/special_orbits.h"
 #include "ui/pictures/heat_map.h"
-#include "core/modes.h"
+#include "core/model/linear_modes.h"
 #include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {

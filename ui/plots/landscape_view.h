@@ -10,8 +10,8 @@
 #include <optional>
 #include <vector>
 
-#include "core/state.h"
-#include "core/maps.h"
+#include "core/model/state.h"
+#include "core/experiments/maps.h"
 #include "ui/pictures/heat_map.h"
 #include "ui/plots/scene_view.h"
 #include "ui/sim_types.h"

@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "core/nonlinear_modes.h"
+#include "core/orbits/modes_atlas.h"
 #include "ui/plots/plot_view.h"
 
 namespace grazelab::ui {

@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-#include "core/modes.h"
+#include "core/model/linear_modes.h"
 #include "ui/plots/run_points.h"
 #include "ui/plots/plot_style.h"
 

@@ -2,7 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include "core/recorder.h"
+#include "core/solver/recorder.h"
 #include "ui/decimate.h"
 
 /// A run's items as points, read where the run keeps them: the views draw a run without a

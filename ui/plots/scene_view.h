@@ -2,7 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include "core/state.h"
+#include "core/model/state.h"
 #include "ui/sim_types.h"
 
 class QWidget;

@@ -5,7 +5,7 @@
 #include <QCoreApplication>
 
 #include "core/methods/work_precision.h"
-#include "core/orbits.h"
+#include "core/orbits/special_orbits.h"
 
 namespace grazelab::ui {
 namespace {

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 
-#include "core/modes.h"
-#include "core/orbits.h"
-#include "core/resonance.h"
-#include "core/setup.h"
-#include "core/experiments.h"
+#include "core/model/linear_modes.h"
+#include "core/orbits/special_orbits.h"
+#include "core/model/resonance.h"
+#include "core/orbits/starts.h"
+#include "core/experiments/theorem_surveys.h"
 #include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {

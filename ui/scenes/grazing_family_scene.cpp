@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "core/experiments.h"
-#include "core/orbits.h"
+#include "core/experiments/theorem_surveys.h"
+#include "core/orbits/special_orbits.h"
 #include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {

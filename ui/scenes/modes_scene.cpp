@@ -7,10 +7,10 @@
 #include <mutex>
 #include <optional>
 
-#include "core/chain.h"
-#include "core/nonlinear_modes.h"
-#include "core/orbits.h"
-#include "core/periodic_orbit.h"
+#include "core/model/chain.h"
+#include "core/orbits/modes_atlas.h"
+#include "core/orbits/special_orbits.h"
+#include "core/orbits/periodic_orbit.h"
 #include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/chain.h"
-#include "core/experiments.h"
-#include "core/orbits.h"
-#include "core/setup.h"
+#include "core/model/chain.h"
+#include "core/experiments/theorem_surveys.h"
+#include "core/orbits/special_orbits.h"
+#include "core/orbits/starts.h"
 #include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/experiments.h"
-#include "core/orbits.h"
+#include "core/experiments/theorem_surveys.h"
+#include "core/orbits/special_orbits.h"
 #include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {

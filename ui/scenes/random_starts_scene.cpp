@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "core/experiments.h"
+#include "core/experiments/theorem_surveys.h"
 #include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {

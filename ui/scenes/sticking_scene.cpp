@@ -2,7 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include <QCoreApplication>
 
-#include "core/orbits.h"
+#include "core/orbits/special_orbits.h"
 #include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/experiments/theorem_surveys.h"
+
+#include <algorithm>
+#include <random>
+
+#include "core/orbits/special_orbits.h"
+#include "core/solver/simulate.h"
+
+namespace grazelab::core::experiments {
+
+double gloHighestReach(double lambda) {
+  // with c = cos s the expression is the quadratic 2 (1 - lambda) c^2 + lambda c - (1 - lambda)
+  // on [-1, 1]: its ends give 1 and 1 - 2 lambda, its vertex (a maximum inside when
+  // 1 - lambda < 0) -(1 - lambda) - lambda^2 / (8 (1 - lambda))
+  double best = std::max(1.0, 1 - 2 * lambda);
+  const double a = 1 - lambda;
+  if (a < 0) {
+    const double vertex = -lambda / (4 * a);
+    if (vertex > -1 && vertex < 1) best = std::max(best, -a - lambda * lambda / (8 * a));
+  }
+  return best;
+}
+
+FlightSurvey surveyRandomStarts(const Model& model, int starts, std::int64_t contacts,
+                                std::uint64_t seed, int bins, double binWidth,
+                                std::stop_token stop) {
+  FlightSurvey survey;
+  survey.counts.assign(std::size_t(std::max(1, bins)), 0);
+  survey.binWidth = binWidth;
+  const Modes modes = computeModes(model);
+  std::mt19937_64 generator(seed);
+  const double d = model.gap;
+  const double speed = 1.5 * modes.omegaSlow * d;
+  std::uniform_real_distribution<double> position(-1.5 * d, 1.5 * d);
+  std::uniform_real_distribution<double> below(-1.5 * d, d);
+  std::uniform_real_distribution<double> velocity(-speed, speed);
+  for (int start = 0; start < starts; ++start) {
+    if (stop.stop_requested()) return survey;
+    Request request;
+    request.initial = {position(generator), below(generator), velocity(generator), velocity(generator)};
+    request.maxContacts = contacts;
+    request.needs.events = false;
+    request.needs.freeFlights = true;
+    const Result run = simulate(model, request, stop);
+    if (run.cost.contacts == 0) {
+      ++survey.neverTouch;
+    } else if (run.cost.contacts >= contacts) {
+      ++survey.reachedLimit;
+      if (!survey.firstTouching) survey.firstTouching = request.initial;
+    } else {
+      ++survey.other;
+    }
+    for (const FreeFlight& flight : run.freeFlights) {
+      // 1 - shortfall / T2: exact near T2, where FFT / T2 itself would round to 1
+      const double fraction = 1.0 - flight.shortfall / modes.T2;
+      ++survey.flights;
+      survey.longest = std::max(survey.longest, fraction);
+      const int bin = std::clamp(int(fraction / binWidth), 0, int(survey.counts.size()) - 1);
+      ++survey.counts[std::size_t(bin)];
+    }
+  }
+  survey.complete = !stop.stop_requested();
+  return survey;
+}
+
+std::optional<double> largestShortfall(const Model& model, const State& start,
+                                       std::int64_t contacts, std::stop_token stop) {
+  Request request;
+  request.initial = start;
+  request.maxContacts = contacts;
+  request.needs.events = false;
+  request.needs.freeFlights = true;
+  const Result result = simulate(model, request, stop);
+  if (stop.stop_requested()) return std::nullopt;
+  const double T2 = computeModes(model).T2;
+  double shortfall = 0;
+  for (const FreeFlight& flight : result.freeFlights) shortfall = std::max(shortfall, flight.shortfall / T2);
+  return shortfall;
+}
+
+std::vector<std::array<double, 2>> flightTimesOverT2(const Model& model, const State& start,
+                                                     std::int64_t contacts, double searchPeriods,
+                                                     std::stop_token stop) {
+  Request request;
+  request.initial = start;
+  request.maxContacts = contacts;
+  request.flightSearchPeriods = searchPeriods;
+  request.needs.events = false;
+  request.needs.freeFlights = true;
+  const Result result = simulate(model, request, stop);
+  const double T2 = computeModes(model).T2;
+  std::vector<std::array<double, 2>> flights;
+  flights.reserve(result.freeFlights.size());
+  for (const FreeFlight& flight : result.freeFlights) {
+    flights.push_back({double(flight.contactIndex), 1.0 - flight.shortfall / T2});
+  }
+  return flights;
+}
+
+std::vector<OnePeriodicSample> onePeriodicFamilySamples(const Model& model, const Modes& modes,
+                                                        double lowEnd, int points,
+                                                        std::stop_token stop) {
+  std::vector<OnePeriodicSample> samples;
+  const double T2 = modes.T2;
+  for (int i = points; i >= 1 && !stop.stop_requested(); --i) {
+    // squared spacing: the points crowd towards T2; 1e-6 keeps the first clear of the low end
+    const double s = double(i) / points;
+    const double T = T2 - (T2 - lowEnd) * (1 - 1e-6) * s * s;
+    const OnePeriodicOrbit orbit = onePeriodicOrbit(model, modes, T);
+    if (!orbit.admissible) continue;
+    samples.push_back({T, orbit.postImpact.u1, orbit.V, energy(model, orbit.postImpact)});
+  }
+  return samples;
+}
+
+}  // namespace grazelab::core::experiments

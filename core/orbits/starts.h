@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/model/chain.h"
+#include "core/model/model.h"
+#include "core/orbits/special_orbits.h"
+#include "core/model/resonance.h"
+
+namespace grazelab::core {
+
+/// The one place that builds starts (GLO/GLOM/1IPP data, perturbation) for the command line, the
+/// explorer, the tests and the benchmarks; a designed chain is core/model/model.h's
+/// designedModel.
+
+/// How a run starts.
+template <typename S>
+struct StartSpec {
+  enum class Kind { Glo, Glom, OnePeriodic, Explicit };
+  Kind kind = Kind::Glo;
+  S lambda = 0.5;                 ///< Glo: GLO_lambda
+  Mode mode = Mode::Fast;         ///< Glom
+  S period = 0;                   ///< OnePeriodic: T [time]
+  BasicState<S> state;            ///< Explicit
+  std::optional<BasicState<S>> perturbation;  ///< added afterwards
+
+  friend bool operator==(const StartSpec&, const StartSpec&) = default;
+};
+
+/// A start state with the words that describe it.
+template <typename S>
+struct Start {
+  BasicState<S> state;
+  std::string description;         ///< e.g. "GLO_lambda data, lambda = 0.5 (as such: ...)"
+  std::vector<std::string> notes;  ///< things the user should know (a perturbation lost in rounding)
+};
+
+/// Either a start, or the one line saying why not.
+template <typename S>
+struct StartOrProblem {
+  std::optional<Start<S>> start;
+  std::string problem;
+};
+
+template <typename S>
+StartOrProblem<S> makeStart(const Chain<S>& chain, const StartSpec<S>& spec);
+
+/// A state on the section H (u2 = gap) of energy `level` with mass 1 at (u1, v1), mass 2
+/// leaving the stop (v2 <= 0, as after an impact) at the speed the energy leaves it (a start
+/// chosen on the section at the energy of the run shown); nothing when mass 1 and the springs
+/// alone hold more than `level`.
+std::optional<State> sectionStateAtEnergy(const Model& model, double level, double u1, double v1);
+
+/// A state on H of energy `level` with mass 2 leaving the stop at `speed` and mass 1 at `u1`,
+/// moving the way `v1Sign` says (a start chosen on the stop line of the (u2, v2) portrait);
+/// nothing when mass 2's speed and the springs alone hold more than `level`.
+std::optional<State> stopLineStateAtEnergy(const Model& model, double level, double u1,
+                                           double speed, double v1Sign);
+
+}  // namespace grazelab::core

@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "core/model/chain.h"
+#include "core/solver/events.h"
+#include "core/solver/exact_stepper.h"
+
+namespace grazelab::core {
+
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// Dense output: states every `spacing` time units on [tBegin, tEnd], computed only when asked
+/// for (spacing > 0). Contact states are added too, so that traces keep their corners.
+struct SampleSpec {
+  double spacing = 0;      ///< time between samples; 0 = no samples
+  double tBegin = 0;       ///< first sample time
+  double tEnd = kInfinity; ///< last sample time (the run's end if earlier)
+  std::size_t maxCount = 4'000'000;  ///< memory guard; samples past it are dropped (flagged)
+  bool includeContacts = true;       ///< add the states just before and after each contact
+};
+
+/// What the caller will look at; nothing else is stored (docs/design.md "Needs").
+struct Needs {
+  bool events = true;              ///< the event list
+  double eventsUntil = kInfinity;  ///< keep only events up to this time (a plot's window)
+  bool poincare = false;           ///< (t, u1, v1, v2) at each contact
+  bool freeFlights = false;        ///< free-flight time of each flight that starts on the stop
+  SampleSpec samples;              ///< dense samples
+};
+
+/// A point on the contact plane H, recorded at each contact (display data: double).
+struct PoincarePoint {
+  double t = 0;
+  double u1 = 0;
+  double v1 = 0;
+  double v2 = 0;  ///< post-contact velocity of mass 2 (<= 0)
+  EventType type = EventType::Impact;
+};
+
+/// A free flight between a departure from the stop and the next contact (docs/model.md section 4).
+struct FreeFlight {
+  std::int64_t contactIndex = 0;  ///< index (0-based) of the contact that ends it
+  double duration = 0;            ///< FFT [time]
+  /// T2 - FFT, computed from the exact offset to the return when the contact is near T2, so
+  /// that a flight shorter than T2 by less than an ulp of T2 still shows a positive value.
+  double shortfall = 0;
+};
+
+/// A dense-output sample (display data: double).
+struct Sample {
+  double t = 0;
+  State state;
+};
+
+/// What the run cost and how good it is (docs/design.md "Numerical contract").
+struct Cost {
+  std::int64_t contacts = 0;  ///< impacts + grazings + sticks
+  std::int64_t impacts = 0;
+  std::int64_t grazings = 0;
+  std::int64_t sticks = 0;
+  std::int64_t undecidedTouches = 0;  ///< touch-or-crossing decisions within rounding
+  /// The first of them: its contact number (1-based; 0 when there is none) and time [time]
+  std::int64_t firstUndecidedContact = 0;
+  double firstUndecidedTime = 0;
+  double wallSeconds = 0;          ///< time spent in the solver
+  double maxRelEnergyDrift = 0;    ///< max |E - E0| / E0 over contact states
+  /// max relative energy error of one computed free flight, before its end state is restored
+  /// to the energy level of its start: the raw accuracy of the flight
+  double maxFlightEnergyError = 0;
+  double maxContactResidual = 0;   ///< max |u2 - gap| at the found contact times [length]
+};
+
+/// Why a run stopped.
+enum class StopReason {
+  ContactLimit,      ///< maxContacts reached
+  TimeLimit,         ///< tEnd reached
+  NoFurtherContact,  ///< a resonant free flight that never reaches the stop (linear forever)
+  SearchLimit,       ///< detuned: no contact within the search horizon
+  SearchBudget,      ///< detuned: the search ran out of its step budget before deciding
+  Undecided,         ///< a contact whose class (touch or crossing) the precision cannot decide,
+                     ///< and the request asked to stop there (to go on in a higher precision)
+  Cancelled,         ///< the stop token was triggered
+  InvalidInput,      ///< the model or the initial state is unusable (see message)
+};
+std::string_view toString(StopReason reason);
+
+/// Everything a run produced, as plain values in physical units.
+template <typename S>
+struct BasicResult {
+  std::vector<BasicEvent<S>> events;
+  std::vector<PoincarePoint> poincare;
+  std::vector<FreeFlight> freeFlights;
+  std::vector<Sample> samples;
+  bool samplesTruncated = false;
+  S tFinal = 0;
+  BasicState<S> final;
+  S initialEnergy = 0;  ///< physical energy (infinite if beyond the range of S)
+  Cost cost;
+  StopReason stop = StopReason::ContactLimit;
+  std::string message;  ///< the reason for InvalidInput, or a note (e.g. "never touches")
+};
+
+using Result = BasicResult<double>;
+
+/// The same result in double (for display and for callers that hold doubles): events and
+/// states rounded once, everything else as it is.
+template <typename S>
+Result toDoubleResult(const BasicResult<S>& from);
+
+/// Keeps what Needs asks for, in physical units, and the cost; hands every event to `onEvent`
+/// as it happens (streaming callers store nothing).
+template <typename S>
+class Recorder {
+ public:
+  /// `initial` is the scaled start state (its energy is the reference for the drift).
+  Recorder(const Chain<S>& chain, const Scale<S>& scale, const BasicState<S>& initial,
+           const Needs& needs, std::function<void(const BasicEvent<S>&)> onEvent,
+           BasicResult<S>& result);
+
+  /// Records the event of a step (Kind::Event).
+  void record(const Step<S>& step);
+  /// Dense samples of the motion of `stepper`'s last step up to scaled time `tauEnd`.
+  void sampleUntil(const ExactStepper<S>& stepper, const S& segmentStart, const S& tauEnd);
+  /// A state of a time-stepping method's own solution at scaled time tau, kept when a sample is
+  /// due (such a method has no motion between its steps to sample: its steps are its output).
+  void samplePoint(const S& tau, const BasicState<S>& scaled);
+  /// Stores the final state (scaled, converted here) at physical time t.
+  void finish(StopReason reason, const S& t, const BasicState<S>& scaled);
+
+ private:
+  void addSample(double t, const State& state);
+
+  const Chain<S>& m_chain;
+  Scale<S> m_scale;
+  Needs m_needs;
+  std::function<void(const BasicEvent<S>&)> m_onEvent;
+  BasicResult<S>& m_result;
+  S m_initialScaledEnergy = 0;
+  double m_nextSampleTime = 0;
+  std::int64_t m_nextSampleIndex = 0;
+};
+
+}  // namespace grazelab::core
