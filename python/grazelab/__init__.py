@@ -201,7 +201,8 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
     1IPP orbit of period ``onepp``, or the orbit with ``impacts`` impacts per period at energy
     ``energy`` found by Newton from ``guess``. Raises ValueError when Newton does not converge
     or the orbit is not admissible (the command line's message). In long or quad precision the
-    numbers are also under ``decimal`` as exact text.
+    numbers are also under ``decimal`` as exact text. ``multipliers`` is a NumPy complex array
+    (the JSON's [re, im] pairs).
 
     Keywords:
 {chain}{precision}    onepp: the period T of the one-impact-per-period orbit [time] (as in ``simulate``).
@@ -217,6 +218,7 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
     result = _convert.parse_json(output, exact_decimals=True)
     if result.get("precision") not in ("long", "quad"):
         result.pop("decimal")
+    result["multipliers"] = _convert.multipliers(result["multipliers"])
     return result
 
 
@@ -247,6 +249,10 @@ def _map_result(target):
     for axis in ("x", "y"):
         spec = result["spec"][axis]
         result[axis] = _np.linspace(spec["from"], spec["to"], spec["count"])
+    # a stripe's rows are its own: its coordinates too
+    rows = result["run"].get("rows")
+    if rows is not None:
+        result["y"] = result["y"][rows[0]:rows[1]]
     if not target.kept:
         result["run"].pop("files")  # they were in a temporary folder, now gone
     return result

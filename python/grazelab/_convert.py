@@ -34,6 +34,22 @@ class Result(dict):
     def __dir__(self):
         return list(self.keys()) + list(super().__dir__())
 
+    def __repr__(self):
+        # one line that says what is inside (the whole is result["key"] or dict(result))
+        return "Result(" + ", ".join(f"{key}={_brief(value)}" for key, value in self.items()) + ")"
+
+
+def _brief(value):
+    """A value as a few characters: arrays by shape and type, containers by size."""
+    if isinstance(value, _np.ndarray):
+        return f"<array {value.shape} {value.dtype}>"
+    if isinstance(value, dict):
+        return "{" + f"{len(value)} keys" + "}"
+    if isinstance(value, (list, tuple)):
+        return repr(value) if len(value) <= 2 and len(repr(value)) <= 60 else f"[{len(value)} items]"
+    text = repr(value)
+    return text if len(text) <= 40 else text[:37] + "..."
+
 
 # options that take several values: a sequence (or their text as the command line writes it)
 _VECTORS = {"state", "perturb", "guess", "x", "y", "energy_range", "shard", "methods"}
@@ -147,6 +163,11 @@ def csv_table(path):
     for name, column in zip(names, columns):
         out[name] = column
     return out
+
+
+def multipliers(pairs):
+    """The JSON's multipliers, [re, im] pairs, as a NumPy complex array."""
+    return _np.array([complex(re, im) for re, im in pairs], dtype=complex)
 
 
 def map_arrays(prefix, description):

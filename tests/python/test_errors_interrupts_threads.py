@@ -77,6 +77,16 @@ def test_numpy_scalars_zero_d_arrays_and_fractions_are_numbers(cli_json):
     assert third.decimal.initial == expected["initial"]
 
 
+def test_a_result_reads_in_one_line_and_a_stripe_has_its_own_rows(tmp_path):
+    run = gl.simulate(contacts=150)
+    text = repr(run)
+    assert "\n" not in text and len(text) < 1000 and "events=<array (150,)" in text
+    whole = gl.map(x="u1:-1:1:4", y="v1:-1:1:6", contacts=2)
+    stripe = gl.map(x="u1:-1:1:4", y="v1:-1:1:6", contacts=2, shard=(2, 3), out=tmp_path / "s")
+    assert stripe.arrays["impacts"].shape == (2, 4) and len(stripe.y) == 2
+    assert list(stripe.y) == list(whole.y[2:4]) and list(stripe.x) == list(whole.x)
+
+
 def test_help_lists_every_function_with_its_keywords(capsys):
     gl.help()
     text = capsys.readouterr().out
