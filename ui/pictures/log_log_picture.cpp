@@ -67,11 +67,13 @@ void paintLogLog(QPainter& painter, const QRectF& area, const std::vector<LogLog
   // the legend under the plot: entries on as many lines as they need
   const double sample = 2.4 * line;  // a stretch of the curve's line with its marker
   const double gap = 1.2 * line;
+  std::vector<double> entryWidth;  // the line's stretch, a space, the name
+  for (const LogLogCurve& curve : curves) entryWidth.push_back(sample + 0.4 * line + metrics.horizontalAdvance(curve.name));
   std::vector<std::vector<int>> rows(1);
   double used = 0;
   const double legendWidth = area.width() - 2 * line;
   for (int index = 0; index < int(curves.size()); ++index) {
-    const double width = sample + 0.4 * line + metrics.horizontalAdvance(curves[std::size_t(index)].name);
+    const double width = entryWidth[std::size_t(index)];
     if (!rows.back().empty() && used + gap + width > legendWidth) {
       rows.emplace_back();
       used = 0;
@@ -157,9 +159,7 @@ void paintLogLog(QPainter& painter, const QRectF& area, const std::vector<LogLog
   double rowY = area.bottom() - legendHeight;
   for (const std::vector<int>& row : rows) {
     double width = 0;
-    for (int index : row) {
-      width += (width > 0 ? gap : 0) + sample + 0.4 * line + metrics.horizontalAdvance(curves[std::size_t(index)].name);
-    }
+    for (int index : row) width += (width > 0 ? gap : 0) + entryWidth[std::size_t(index)];
     double left = area.center().x() - width / 2;
     const double middle = rowY + 0.65 * line;
     for (int index : row) {
@@ -172,7 +172,7 @@ void paintLogLog(QPainter& painter, const QRectF& area, const std::vector<LogLog
       const QString& name = curves[std::size_t(index)].name;
       painter.drawText(QRectF(left + sample + 0.4 * line, rowY, metrics.horizontalAdvance(name) + 1, 1.3 * line),
                        Qt::AlignLeft | Qt::AlignVCenter, name);
-      left += sample + 0.4 * line + metrics.horizontalAdvance(name) + gap;
+      left += entryWidth[std::size_t(index)] + gap;
     }
     rowY += 1.3 * line;
   }

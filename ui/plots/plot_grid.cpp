@@ -20,7 +20,6 @@ constexpr qreal kGridZ = 2;
 PlotGrid::PlotGrid(QChart* chart, QValueAxis* axisX, QValueAxis* axisY)
     : QGraphicsItem(chart), m_chart(chart), m_axisX(axisX), m_axisY(axisY), m_pen(axisX->gridLinePen()) {
   setZValue(kGridZ);
-  setFlag(QGraphicsItem::ItemIgnoresParentOpacity);
   axisX->setGridLineVisible(false);
   axisY->setGridLineVisible(false);
   m_area = chart->plotArea();

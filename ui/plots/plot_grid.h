@@ -5,6 +5,8 @@
 #include <QGraphicsItem>
 #include <QPen>
 
+#include <vector>
+
 class QChart;
 class QValueAxis;
 
