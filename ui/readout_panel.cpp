@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/readout_panel.h"
 
+#include <QEvent>
+#include <QFontMetrics>
 #include <QFormLayout>
 #include <QLabel>
 
@@ -33,6 +35,23 @@ ReadoutPanel::ReadoutPanel(QWidget* parent) : QWidget(parent) {
   addRow(QStringLiteral("energy"), tr("energy E"),
          tr("Mechanical energy of the start state, ½ vᵀMv + ½ uᵀKu; conserved by the motion "
             "(impacts are elastic)."));
+  fixValueSizes();
+}
+
+// Each value keeps one size, wide enough for any number it prints: a label whose size may
+// change makes every new text re-lay out the whole side panel (its wrapped scene text
+// included), a tenth of the GUI thread's time in a drag; a fixed-size one does not.
+void ReadoutPanel::fixValueSizes() {
+  for (QLabel* value : m_values) {
+    const QFontMetrics metrics(value->font());
+    const QSize widest = metrics.size(Qt::TextSingleLine, number(-8.8888888e-188));
+    value->setFixedSize(widest + QSize(2 * value->margin() + 4, 2 * value->margin()));
+  }
+}
+
+void ReadoutPanel::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::FontChange) fixValueSizes();
 }
 
 QLabel* ReadoutPanel::addRow(const QString& name, const QString& label, const QString& toolTip) {

@@ -24,7 +24,12 @@ class ReadoutPanel : public QWidget {
   /// The displayed text of one quantity ("k2", "omega1", ...), for tests.
   QString text(const QString& name) const;
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void fixValueSizes();
+
   QLabel* addRow(const QString& name, const QString& label, const QString& toolTip);
 
   QList<QLabel*> m_values;

@@ -67,6 +67,26 @@ TEST(Roots, StationaryPointsWithATinyLeadingCoefficient) {
   }
 }
 
+// b^2 - 4ac to a few ulps of its own size on both sides of Kahan's test (the exact products
+// only where the difference cancels): random quadratics near a double root and far from one,
+// against binary128, where the products are exact
+TEST(Roots, DiscriminantIsAccurateOnBothSidesOfKahansTest) {
+  std::mt19937_64 random(20261126);
+  std::uniform_real_distribution<double> unit(0.5, 2.0);
+  std::uniform_real_distribution<double> closeness(-30.0, 0.0);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double b = unit(random) * (trial % 2 == 0 ? 1 : -1);
+    // 4ac = b^2 (1 - s), s from 1e-30 to 1: a double root up to well separated roots
+    const double s = std::pow(10.0, closeness(random));
+    const double a = unit(random);
+    const double c = b * b * (1 - s) / (4 * a);
+    const Quad exact = Quad(b) * Quad(b) - Quad(4) * Quad(a) * Quad(c);
+    const double d = roots_detail::discriminant(a, b, c);
+    ASSERT_LE(abs(Quad(d) - exact), Quad(4 * epsilon<double>()) * abs(exact))
+        << "a = " << a << ", b = " << b << ", c = " << c;
+  }
+}
+
 TEST(Roots, RandomQuarticsInEveryPrecision) {
   std::mt19937 random(4);
   std::uniform_real_distribution<double> uniform(-1, 1);

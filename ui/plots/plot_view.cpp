@@ -57,6 +57,20 @@ double niceStep(double low, double high) {
   return (ratio < 1.5 ? 1.0 : ratio < 3.5 ? 2.0 : ratio < 7.5 ? 5.0 : 10.0) * magnitude;
 }
 
+// [low, high] widened to multiples of a quarter of its tick step (at most 1/12 of the span
+// on each side); a range too small to snap (span at round-off of its values) is left alone
+void snapOutward(double& low, double& high) {
+  const double step = niceStep(low, high);
+  if (!(step > 0)) return;
+  const double quantum = 0.25 * step;
+  const double snappedLow = std::floor(low / quantum) * quantum;
+  const double snappedHigh = std::ceil(high / quantum) * quantum;
+  if (!(snappedLow < snappedHigh) || !std::isfinite(snappedLow) || !std::isfinite(snappedHigh)) return;
+  if (snappedHigh - snappedLow > 1e9 * (high - low)) return;
+  low = snappedLow;
+  high = snappedHigh;
+}
+
 // The next nice step above `step` (1, 2, 5 times a power of ten).
 double nextNiceStep(double step) {
   const double magnitude = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
@@ -477,6 +491,11 @@ QRectF PlotView::wantedRange() {
   };
   makeRoom(x0, x1, chart()->plotArea().width());
   makeRoom(y0, y1, chart()->plotArea().height());
+  // the ends rounded outward to a quarter of the tick step: a small edit then keeps the axes
+  // where they are (each axis change re-lays out every tick label as rich text, a third of
+  // the GUI thread's time in a drag), and the range still depends on the data alone
+  snapOutward(x0, x1);
+  snapOutward(y0, y1);
   if (m_xWindow) {
     // a window of a long run: the time axis shows it, the other axis the whole run's range
     // (so that it does not jump while the window moves)
