@@ -31,6 +31,7 @@
 #include "core/model/resonance.h"
 #include "tests/ui/explorer_test_support.h"
 #include "ui/main_window.h"
+#include "ui/readout_panel.h"
 #include "ui/number_box.h"
 #include "ui/parameter_panel.h"
 #include "ui/plots/log_log_chart.h"
@@ -813,6 +814,25 @@ class ClassroomTest : public QObject {
 
   // presentation mode: text of at least 1/50 of the screen height, lines of 3 px or more, the
   // scenes in the order of the note on PageDown / PageUp, a plot enlarged by a double-click
+  // the readout's values are fixed-size labels (a changing size re-laid out the whole side
+  // panel on every update): under a projector's font the longest number they print still fits
+  void readoutValuesGrowWithTheirFont() {
+    ReadoutPanel* readout = m_window->readoutPanel();
+    QFont large = readout->font();
+    large.setPixelSize(40);
+    readout->setFont(large);
+    int values = 0;
+    for (const QLabel* value : readout->findChildren<QLabel*>()) {
+      if (value->objectName().isEmpty()) continue;
+      ++values;
+      QCOMPARE(QFontInfo(value->font()).pixelSize(), 40);
+      QVERIFY2(value->width() >= value->fontMetrics().horizontalAdvance(QStringLiteral("-8.8888888e-188")),
+               qPrintable(value->objectName()));
+      QCOMPARE(value->minimumSize(), value->maximumSize());
+    }
+    QCOMPARE(values, 7);
+  }
+
   void presentationModeIsReadableAndSteppable() {
     const int deskLabels = QFontInfo(axis(*m_window->plots().first(), Qt::Horizontal)->labelsFont()).pixelSize();
     m_window->setPresentation(true, 1080, false);
