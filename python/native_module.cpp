@@ -10,6 +10,7 @@
 #include <pybind11/stl.h>
 
 #include <QCoreApplication>
+#include <QJsonDocument>
 #include <QString>
 #include <QStringList>
 
@@ -28,6 +29,8 @@
 
 #include "cli_io.h"
 #include "cli_run.h"
+#include "core/experiments/maps.h"
+#include "map_files.h"
 
 namespace py = pybind11;
 
@@ -104,6 +107,48 @@ py::array eventArray(std::unique_ptr<EventTable> table) {
   return py::array(dtype, {count}, {py::ssize_t(sizeof(EventRow))}, rows->data(), owner);
 }
 
+// Where a quantity of a map lives in its point summaries.
+std::size_t offsetOf(grazelab::core::Quantity quantity) {
+  using grazelab::core::PointSummary;
+  using grazelab::core::Quantity;
+  switch (quantity) {
+    case Quantity::FftFirst: return offsetof(PointSummary, fftFirst);
+    case Quantity::FftMin: return offsetof(PointSummary, fftMin);
+    case Quantity::FftMax: return offsetof(PointSummary, fftMax);
+    case Quantity::FftMean: return offsetof(PointSummary, fftMean);
+    case Quantity::Impacts: return offsetof(PointSummary, impacts);
+    case Quantity::Grazings: return offsetof(PointSummary, grazings);
+    case Quantity::Sticks: return offsetof(PointSummary, sticks);
+    case Quantity::FirstImpactTime: return offsetof(PointSummary, firstImpactTime);
+    case Quantity::Horizon: return offsetof(PointSummary, horizon);
+  }
+  return 0;
+}
+
+// A map in memory: (its JSON document, its points as one structured array with a field per
+// quantity, row-major), the points owned by the array (no copy).
+py::tuple mapInMemory(grazelab::cli::map::StoredMap&& map) {
+  using grazelab::core::PointSummary;
+  const QByteArray document = QJsonDocument(grazelab::cli::map::mapDocument(map)).toJson();
+  py::list names, formats, offsets;
+  for (const grazelab::core::QuantityInfo& info : grazelab::core::quantities()) {
+    names.append(std::string(info.name));
+    formats.append(info.integer ? "<i8" : "<f8");
+    offsets.append(offsetOf(info.quantity));
+  }
+  py::dict description;
+  description["names"] = names;
+  description["formats"] = formats;
+  description["offsets"] = offsets;
+  description["itemsize"] = sizeof(PointSummary);
+  const py::dtype dtype = py::dtype::from_args(description);
+  auto* points = new std::vector<PointSummary>(std::move(map.points));
+  py::capsule owner(points, [](void* p) { delete static_cast<std::vector<PointSummary>*>(p); });
+  const py::array array(dtype, {static_cast<py::ssize_t>(points->size())},
+                        {static_cast<py::ssize_t>(sizeof(PointSummary))}, points->data(), owner);
+  return py::make_tuple(py::bytes(document.constData(), std::size_t(document.size())), array);
+}
+
 // Hands the latest progress, if any arrived since the last call, to the caller's callback (with
 // the GIL held). False when the callback raised: that exception is kept in `pythonError`.
 bool deliverProgress(ProgressMailbox& mailbox, const py::object& progress,
@@ -125,10 +170,10 @@ bool deliverProgress(ProgressMailbox& mailbox, const py::object& progress,
   return true;
 }
 
-// run(arguments, progress=None, events=False, max_events, discard_events=False)
-//   -> (code, output, messages, events, decimals)
+// run(arguments, progress=None, events=False, max_events, discard_events=False, keep_map=False)
+//   -> (code, output, messages, events, decimals, map)
 py::tuple run(const std::vector<std::string>& arguments, const py::object& progress,
-              bool eventsAsArrays, std::size_t maxEvents, bool discardEvents) {
+              bool eventsAsArrays, std::size_t maxEvents, bool discardEvents, bool keepMap) {
   QStringList commandLine{QStringLiteral("grazelab")};
   for (const std::string& argument : arguments) commandLine << QString::fromStdString(argument);
 
@@ -144,6 +189,8 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   io.messages = messages.file();
   table->discard = discardEvents;
   if (eventsAsArrays || discardEvents) io.events = table.get();
+  grazelab::cli::map::StoredMap map;
+  if (keepMap) io.map = &map;
   if (!progress.is_none()) {
     io.progress = [&mailbox](double fraction, const std::string& text) {
       std::lock_guard lock(mailbox.mutex);
@@ -206,7 +253,9 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
     if (!table->decimals.empty()) decimals = py::cast(table->decimals);
     events = eventArray(std::move(table));
   }
-  return py::make_tuple(code, py::bytes(out), py::str(log), events, decimals);
+  py::object mapResult = py::none();
+  if (keepMap && code == 0) mapResult = mapInMemory(std::move(map));
+  return py::make_tuple(code, py::bytes(out), py::str(log), events, decimals, mapResult);
 }
 
 }  // namespace
@@ -219,9 +268,11 @@ PYBIND11_MODULE(_native, module) {
   module.attr("version") = grazelab::cli::kVersion;
   module.def("run", &run, py::arg("arguments"), py::arg("progress") = py::none(),
              py::arg("events") = false, py::arg("max_events") = std::size_t(-1),
-             py::arg("discard_events") = false,
+             py::arg("discard_events") = false, py::arg("keep_map") = false,
              "Runs one grazelab-cli command line (without the program's name) in this process. "
              "Returns (exit code, output bytes, messages, events array or None, the events' "
-             "decimal text or None); raises ValueError when the run makes more than max_events "
-             "events. With discard_events a simulate keeps no event anywhere (statistics only).");
+             "decimal text or None, map or None); raises ValueError when the run makes more "
+             "than max_events events. With discard_events a simulate keeps no event anywhere "
+             "(statistics only); with keep_map a map or merge hands back (its JSON document, "
+             "its points as a structured array) and writes files only where --out says.");
 }

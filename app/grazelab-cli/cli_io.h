@@ -9,6 +9,10 @@
 
 namespace grazelab::cli {
 
+namespace map {
+struct StoredMap;
+}
+
 /// One event of a run as the Python module hands it to NumPy without a copy: the columns of the
 /// command line's CSV (t,type,u1,u2,v1,v2_pre,v2_post), numbers rounded to double, the type in
 /// UCS-4 as NumPy's '<U8'. 80 bytes; the module describes the same layout to NumPy.
@@ -46,6 +50,9 @@ struct Io {
   /// When set, `simulate` puts its events here instead of into the text of its output (whose
   /// events array stays empty).
   EventTable* events = nullptr;
+  /// When set, `map` and `merge` put the map here (the Python module: arrays without files);
+  /// their files are then written only where --out names them.
+  map::StoredMap* map = nullptr;
 
   void reportProgress(double fraction, const std::string& text) const {
     if (progress) progress(fraction, text);

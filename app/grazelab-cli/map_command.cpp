@@ -7,6 +7,7 @@
 #include <QFileInfo>
 
 #include <atomic>
+#include <optional>
 #include <chrono>
 #include <cstdio>
 #include <thread>
@@ -214,8 +215,13 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
     error = QStringLiteral("--picture: '%1' is not a quantity; use one of %2").arg(picture, names.join(", "));
     return kExitInvalidInput;
   }
-  const auto prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
-  if (!prefix) return kExitInvalidInput;
+  // files unless the caller takes the map in memory (the Python module) without asking for them
+  const bool writesFiles = !io.map || parser.isSet("out");
+  std::optional<QString> prefix;
+  if (writesFiles) {
+    prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
+    if (!prefix) return kExitInvalidInput;
+  }
 
   const core::RowRange rows = core::stripe(spec->y.count, shard.k, shard.n);
   const std::int64_t points = (rows.rowEnd - rows.rowBegin) * spec->x.count;
@@ -228,7 +234,7 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
     return kExitInvalidInput;
   }
   const bool whole = rows.rowBegin == 0 && rows.rowEnd == spec->y.count;
-  const bool drawsPicture = whole && picturesAvailable();
+  const bool drawsPicture = writesFiles && whole && picturesAvailable();
   // the fonts load while the points are computed (the picture needs them afterwards)
   std::thread fontThread;
   if (drawsPicture) fontThread = std::thread(map::prepareFonts);
@@ -254,6 +260,10 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
   // the picture (fonts, painting, PNG and SVG encoding: more than the arrays) is drawn on a
   // thread of its own while the arrays are written, so that on two cores the files add no wall
   // time (QPainter draws on images in any thread; the two write different files)
+  if (!writesFiles) {
+    *io.map = std::move(stored);
+    return kExitOk;
+  }
   bool pictureWritten = true;
   QString pictureError;
   std::thread pictureThread;
@@ -271,6 +281,7 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
   std::fprintf(io.messages, "grazelab-cli: map: %lld points in %.3f s on %d thread%s (%.0f runs/s): %s.json\n",
                (long long)points, seconds, threads, threads == 1 ? "" : "s",
                seconds > 0 ? double(points) / seconds : 0.0, qPrintable(*prefix));
+  if (io.map) *io.map = std::move(stored);
   return kExitOk;
 }
 
@@ -280,8 +291,12 @@ int runMerge(const QCommandLineParser& parser, const QStringList& parts, const I
     error = "merge: give the parts' prefixes after --out PREFIX";
     return kExitInvalidInput;
   }
-  const auto prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
-  if (!prefix) return kExitInvalidInput;
+  const bool writesFiles = !io.map || parser.isSet("out");
+  std::optional<QString> prefix;
+  if (writesFiles) {
+    prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
+    if (!prefix) return kExitInvalidInput;
+  }
   std::vector<map::StoredMap> stored;
   for (const QString& part : parts) {
     if (stop.stop_requested()) return kExitInterrupted;
@@ -299,11 +314,16 @@ int runMerge(const QCommandLineParser& parser, const QStringList& parts, const I
     return kExitInvalidInput;
   }
   if (stop.stop_requested()) return kExitInterrupted;
+  if (!writesFiles) {
+    *io.map = std::move(*whole);
+    return kExitOk;
+  }
   if (!map::writeMapFiles(*prefix, *whole, error)) return 1;
   if (picturesAvailable() && !map::writeMapPicture(*prefix, *whole, error)) return 1;
   std::fprintf(io.messages, "grazelab-cli: merge: %lld parts, %lld x %lld points: %s.json\n",
                (long long)parts.size(), (long long)whole->totalRows, (long long)whole->columns,
                qPrintable(*prefix));
+  if (io.map) *io.map = std::move(*whole);
   return kExitOk;
 }
 

@@ -195,13 +195,16 @@ bool writeMapFiles(const QString& prefix, const StoredMap& map, QString& error) 
     if (!saveAtomically(prefix + ".csv", csvText(map), error)) return false;
     files["csv"] = baseName(prefix) + ".csv";
   }
+  return saveAtomically(prefix + ".json", QJsonDocument(mapDocument(map, files)).toJson(), error);
+}
+
+QJsonObject mapDocument(const StoredMap& map, const QJsonObject& files) {
   QJsonObject run = map.description.run;
   run["rows"] = QJsonArray{qint64(map.rows.rowBegin), qint64(map.rows.rowEnd)};
   run["total_rows"] = qint64(map.totalRows);
-  run["shape"] = QJsonArray{qint64(rows), qint64(map.columns)};
-  run["files"] = files;
-  const QJsonObject document{{"spec", map.description.spec}, {"run", run}};
-  return saveAtomically(prefix + ".json", QJsonDocument(document).toJson(), error);
+  run["shape"] = QJsonArray{qint64(map.rows.rowEnd - map.rows.rowBegin), qint64(map.columns)};
+  if (!files.isEmpty()) run["files"] = files;
+  return {{"spec", map.description.spec}, {"run", run}};
 }
 
 std::optional<StoredMap> readMapFiles(const QString& prefix, QString& error) {

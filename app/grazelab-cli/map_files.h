@@ -38,6 +38,10 @@ struct StoredMap {
   std::vector<core::PointSummary> points;  ///< row-major, rows.rowEnd - rows.rowBegin rows
 };
 
+/// The JSON document of a map: its spec and its run (rows, total_rows, shape), with `files`
+/// (names relative to the document) when it has files.
+QJsonObject mapDocument(const StoredMap& map, const QJsonObject& files = {});
+
 /// Writes every file of `map` under `prefix`. Returns false with a reason; no file is left
 /// half-written (those already complete stay).
 bool writeMapFiles(const QString& prefix, const StoredMap& map, QString& error);

@@ -55,13 +55,15 @@ class GrazeLabWarning(UserWarning):
     """A result came back that its own error estimate does not trust (verdict unreliable)."""
 
 
-def _command(command, options, progress=None, events=False, positional=(), discard_events=False):
+def _command(command, options, progress=None, events=False, positional=(), discard_events=False,
+             keep_map=False):
     """Runs one command with the options that are not None; returns (output text, messages,
-    events, decimals) or raises. A progress callback hears (1.0, "done") when the command has
-    ended well."""
+    events, decimals) or raises; with keep_map, (messages, map) for a map or merge held in
+    memory. A progress callback hears (1.0, "done") when the command has ended well."""
     given = {name: value for name, value in options.items() if value is not None}
     line = _convert.arguments(command, given) + [str(p) for p in positional]
-    code, output, messages, table, decimals = _run(line, progress, events, MAX_EVENTS, discard_events)
+    code, output, messages, table, decimals, kept = _run(line, progress, events, MAX_EVENTS,
+                                                         discard_events, keep_map)
     lines = [text for text in messages.splitlines() if text.strip()]
     if code == 2:
         raise ValueError(_message(lines[-1] if lines else "invalid input"))
@@ -69,6 +71,8 @@ def _command(command, options, progress=None, events=False, positional=(), disca
         raise OSError(_message(lines[-1] if lines else f"{command} failed (exit {code})"))
     if progress is not None:
         progress(1.0, "done")
+    if keep_map:
+        return lines, kept
     return output.decode("utf-8"), lines, table, decimals
 
 
@@ -241,10 +245,17 @@ class _Output:
             _shutil.rmtree(self.folder, ignore_errors=True)
 
 
-def _map_result(target):
-    with open(target.prefix + ".json") as handle:
-        result = _convert.parse_json(handle.read())
-    result["arrays"] = _convert.map_arrays(target.prefix, result["run"])
+def _map_result(kept, out):
+    """A map the command handed over in memory: its JSON document and its points (one
+    structured array, a field per quantity), each quantity a 2-D view of them, no copy. With
+    ``out`` the document names the files written there, as the file PREFIX.json does."""
+    document, points = kept
+    result = _convert.parse_json(document.decode("utf-8"))
+    if out is not None:
+        with open(out + ".json", encoding="utf-8") as handle:
+            result["run"]["files"] = _convert.parse_json(handle.read())["run"]["files"]
+    shape = tuple(result["run"]["shape"])
+    result["arrays"] = {name: points[name].reshape(shape) for name in points.dtype.names}
     # the columns' and rows' coordinates, as the spec says: numpy.linspace(from, to, count)
     for axis in ("x", "y"):
         spec = result["spec"][axis]
@@ -253,8 +264,6 @@ def _map_result(target):
     rows = result["run"].get("rows")
     if rows is not None:
         result["y"] = result["y"][rows[0]:rows[1]]
-    if not target.kept:
-        result["run"].pop("files")  # they were in a temporary folder, now gone
     return result
 
 
@@ -281,7 +290,8 @@ def map(*, x: _Union[str, _Sequence], y: _Union[str, _Sequence], m1: float = 1.0
     shard: (K, N) or "K/N": compute stripe K of N of the rows only; join the stripes with
         :func:`merge` (needs ``out``).
     picture: with ``out``, the command line would draw this quantity; the module draws none.
-    out: a prefix: the command line's files are kept there (without pictures).
+    out: a prefix: the command line's files are written there too (without pictures); without
+        it the map stays in memory and no file is written.
     progress: ``progress(fraction, text)``, called on the calling thread.
 """
     if shard is not None and out is None:
@@ -289,9 +299,9 @@ def map(*, x: _Union[str, _Sequence], y: _Union[str, _Sequence], m1: float = 1.0
     options = dict(x=x, y=y, m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
                    glo=glo, onepp=onepp, state=state, perturb=perturb, contacts=contacts, trust=trust,
                    threads=threads, shard=shard, picture=picture)
-    with _Output(out, "map") as target:
-        _command("map", dict(options, out=target.prefix), progress)
-        return _map_result(target)
+    out = None if out is None else _os.fspath(out)
+    _, kept = _command("map", dict(options, out=out), progress, keep_map=True)
+    return _map_result(kept, out)
 
 
 def merge(parts, *, out=None):
@@ -299,9 +309,10 @@ def merge(parts, *, out=None):
     ``shard=(k, n)`` and ``out``) joined; returns the whole map as :func:`map` does."""
     if isinstance(parts, (str, _os.PathLike)):
         parts = [parts]
-    with _Output(out, "map") as target:
-        _command("merge", {"out": target.prefix}, positional=[_os.fspath(p) for p in parts])
-        return _map_result(target)
+    out = None if out is None else _os.fspath(out)
+    _, kept = _command("merge", {"out": out}, positional=[_os.fspath(p) for p in parts],
+                       keep_map=True)
+    return _map_result(kept, out)
 
 
 @_documented

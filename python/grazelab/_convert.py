@@ -169,15 +169,3 @@ def multipliers(pairs):
     """The JSON's multipliers, [re, im] pairs, as a NumPy complex array."""
     return _np.array([complex(re, im) for re, im in pairs], dtype=complex)
 
-
-def map_arrays(prefix, description):
-    """The 2-D arrays of a map (row = y, column = x), one per quantity, from its .npy files."""
-    directory = _os.path.dirname(prefix)
-    arrays = {}
-    for quantity, file in description["files"].items():
-        if quantity in ("json", "csv", "png", "svg"):
-            continue
-        path = _os.path.join(directory, file)
-        if path.endswith(".npy") and _os.path.exists(path):
-            arrays[quantity] = _np.load(path)
-    return arrays

@@ -5,6 +5,7 @@
 import json
 import math
 import os
+import tempfile
 
 import numpy as np
 import pytest
@@ -115,6 +116,29 @@ def test_map_shards_merge_to_the_whole_map(tmp_path):
     merged = gl.merge(parts)
     for quantity, array in whole.arrays.items():
         np.testing.assert_array_equal(merged.arrays[quantity], array, err_msg=quantity)
+
+
+def test_map_writes_no_file_unless_asked(tmp_path, monkeypatch):
+    # no file anywhere: not in the temporary folder, not in the working directory; the arrays
+    # are views of the points the command computed (one buffer, no copy per quantity)
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("TMPDIR", str(tmp_path))
+    tempfile.tempdir = None
+    try:
+        result = gl.map(x="u1:-1:1:5", y="v1:-1:1:4", contacts=3)
+    finally:
+        tempfile.tempdir = None
+    assert list(tmp_path.iterdir()) == []
+    assert "files" not in result.run
+    first = result.arrays["fft_first"]
+    assert first.shape == (4, 5) and not first.flags.owndata
+    assert first.base is not None and result.arrays["impacts"].base is not None
+    # with out, the same arrays, and the files named as the command line names them
+    kept = gl.map(x="u1:-1:1:5", y="v1:-1:1:4", contacts=3, out=tmp_path / "m")
+    assert sorted(kept.run["files"]) == sorted(list(result.spec["quantities"]) + ["csv"])
+    for quantity, array in result.arrays.items():
+        np.testing.assert_array_equal(kept.arrays[quantity], array, err_msg=quantity)
+        np.testing.assert_array_equal(np.load(tmp_path / f"m-{quantity}.npy"), array, err_msg=quantity)
 
 
 def test_family_table_is_the_cli_npy(cli, tmp_path):
