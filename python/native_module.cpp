@@ -29,6 +29,10 @@
 
 #include "cli_io.h"
 #include "cli_run.h"
+#include "exit_codes.h"
+#include "option_values.h"
+#include "simulate_command.h"
+#include "value_to_python.h"
 #include "core/experiments/maps.h"
 #include "map_files.h"
 
@@ -170,10 +174,22 @@ bool deliverProgress(ProgressMailbox& mailbox, const py::object& progress,
   return true;
 }
 
-// run(arguments, progress=None, events=False, max_events, discard_events=False, keep_map=False)
-//   -> (code, output, messages, events, decimals, map)
+// A simulate's document as Results; a run in long double or binary128 (its events' decimals
+// kept) also has `decimal`: its numbers as text.
+py::object documentToPython(const grazelab::cli::JsonValue& document, const py::object& resultType,
+                            bool withDecimals) {
+  py::object result = grazelab::python::toPython(document, resultType);
+  if (withDecimals) {
+    result["decimal"] = grazelab::python::toPython(document, resultType, true);
+  }
+  return result;
+}
+
+// run(arguments, progress=None, events=False, max_events, discard_events=False, keep_map=False,
+//     result_type=None) -> (code, output, messages, events, decimals, map, document)
 py::tuple run(const std::vector<std::string>& arguments, const py::object& progress,
-              bool eventsAsArrays, std::size_t maxEvents, bool discardEvents, bool keepMap) {
+              bool eventsAsArrays, std::size_t maxEvents, bool discardEvents, bool keepMap,
+              const py::object& resultType) {
   QStringList commandLine{QStringLiteral("grazelab")};
   for (const std::string& argument : arguments) commandLine << QString::fromStdString(argument);
 
@@ -191,6 +207,8 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   if (eventsAsArrays || discardEvents) io.events = table.get();
   grazelab::cli::map::StoredMap map;
   if (keepMap) io.map = &map;
+  grazelab::cli::JsonValue document;
+  if (!resultType.is_none()) io.document = &document;
   if (!progress.is_none()) {
     io.progress = [&mailbox](double fraction, const std::string& text) {
       std::lock_guard lock(mailbox.mutex);
@@ -255,7 +273,78 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   }
   py::object mapResult = py::none();
   if (keepMap && code == 0) mapResult = mapInMemory(std::move(map));
-  return py::make_tuple(code, py::bytes(out), py::str(log), events, decimals, mapResult);
+  py::object documentResult = py::none();
+  if (!resultType.is_none() && code == 0) {
+    documentResult = documentToPython(document, resultType, !decimals.is_none());
+  }
+  return py::make_tuple(code, py::bytes(out), py::str(log), events, decimals, mapResult,
+                        documentResult);
+}
+
+// simulate(options, result_type, events, max_events, discard_events)
+//   -> (result, messages, events, decimals)
+// `grazelab-cli simulate` on the calling thread, its options given by name: no command-line
+// text, no parser, no thread (a short run, which the caller keeps short: nothing interrupts it),
+// its document handed over as values, not as text.
+py::tuple simulateHere(const py::list& given, const py::object& resultType, bool eventsAsArrays,
+                       std::size_t maxEvents, bool discardEvents) {
+  // (name, text) pairs read in place: a few microseconds less than a converted vector
+  std::vector<std::pair<QString, QString>> named;
+  named.reserve(std::size_t(PyList_GET_SIZE(given.ptr())));
+  auto text = [](PyObject* item) {
+    Py_ssize_t size = 0;
+    const char* utf8 = PyUnicode_Check(item) ? PyUnicode_AsUTF8AndSize(item, &size) : nullptr;
+    if (!utf8) throw py::type_error("simulate: options are (name, text) pairs of str");
+    return QString::fromUtf8(utf8, size);
+  };
+  for (Py_ssize_t i = 0; i < PyList_GET_SIZE(given.ptr()); ++i) {
+    PyObject* pair = PyList_GET_ITEM(given.ptr(), i);
+    if (!PyTuple_Check(pair) || PyTuple_GET_SIZE(pair) != 2) {
+      throw py::type_error("simulate: options are (name, text) pairs of str");
+    }
+    named.emplace_back(text(PyTuple_GET_ITEM(pair, 0)), text(PyTuple_GET_ITEM(pair, 1)));
+  }
+  const grazelab::cli::OptionValues options(std::move(named));
+  QString error;
+  const auto precision = grazelab::cli::parsePrecisionOption(options, error);
+  if (!precision) throw py::value_error(error.simplified().toStdString());
+  const auto trust = grazelab::cli::parseTrustOption(options, error);
+  if (!trust) throw py::value_error(error.simplified().toStdString());
+
+  MemoryStream output;
+  MemoryStream messages;
+  auto table = std::make_unique<EventTable>();
+  table->maxRows = maxEvents;
+  table->discard = discardEvents;
+  grazelab::cli::Io io;
+  io.out = output.file();
+  io.messages = messages.file();
+  if (eventsAsArrays || discardEvents) io.events = table.get();
+  grazelab::cli::JsonValue document;
+  io.document = &document;
+  int code = 0;
+  {
+    py::gil_scoped_release released;
+    code = grazelab::cli::runSimulate(options, *precision, *trust, io, std::stop_token{}, error);
+  }
+  if (code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
+  if (table->full) {
+    throw py::value_error("the run made more than " + std::to_string(maxEvents) + " events");
+  }
+    const std::string log = messages.take();
+  if (code != 0) {
+    PyErr_SetString(PyExc_OSError, error.isEmpty() ? ("simulate failed (exit " + std::to_string(code) + ")").c_str()
+                                                   : error.simplified().toStdString().c_str());
+    throw py::error_already_set();
+  }
+  py::object events = py::none();
+  py::object decimals = py::none();
+  if (eventsAsArrays && !discardEvents) {
+    if (!table->decimals.empty()) decimals = py::cast(table->decimals);
+    events = eventArray(std::move(table));
+  }
+  return py::make_tuple(documentToPython(document, resultType, !decimals.is_none()), py::str(log),
+                        events, decimals);
 }
 
 }  // namespace
@@ -269,10 +358,18 @@ PYBIND11_MODULE(_native, module) {
   module.def("run", &run, py::arg("arguments"), py::arg("progress") = py::none(),
              py::arg("events") = false, py::arg("max_events") = std::size_t(-1),
              py::arg("discard_events") = false, py::arg("keep_map") = false,
+             py::arg("result_type") = py::none(),
              "Runs one grazelab-cli command line (without the program's name) in this process. "
              "Returns (exit code, output bytes, messages, events array or None, the events' "
              "decimal text or None, map or None); raises ValueError when the run makes more "
              "than max_events events. With discard_events a simulate keeps no event anywhere "
              "(statistics only); with keep_map a map or merge hands back (its JSON document, "
-             "its points as a structured array) and writes files only where --out says.");
+             "its points as a structured array) and writes files only where --out says; with "
+             "result_type a simulate's document comes back as values of that type, not text.");
+  module.def("simulate", &simulateHere, py::arg("options"), py::arg("result_type"),
+             py::arg("events") = true, py::arg("max_events") = std::size_t(-1),
+             py::arg("discard_events") = false,
+             "grazelab-cli simulate on the calling thread, its options as (name, text) pairs: "
+             "(result, messages, events or None, decimals or None). A short run only: nothing "
+             "interrupts it.");
 }

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
-"""Measures the Python module (docs/python.md): two simulate calls on two threads against the
-same two one after the other (best of --repeats, alternated in one process), and how long
-Ctrl+C takes to stop a long map. Run with Debian's Python:
+"""Measures the Python module (docs/python.md): the cost of one short simulate call over the
+core's own time, called directly and through the command line's text (alternated in one
+process), two simulate calls on two threads against the same two one after the other (best of
+--repeats, alternated), and how long Ctrl+C takes to stop a long map. Run with Debian's Python:
     PYTHONPATH=build/python /usr/bin/python3 tools/bench-python.py
 """
 
@@ -36,6 +37,20 @@ def threaded(contacts):
     return time.perf_counter() - started
 
 
+SHORT = dict(glo=0.5, perturb=(0, 0, 0, -0.05), contacts=10, trust="off")
+
+
+def per_call(calls, **extra):
+    """Microseconds per call of a 10-contact simulate, and the core's own (its timing.seconds,
+    the least of the calls: what the core takes without the module)."""
+    started = time.perf_counter()
+    for _ in range(calls):
+        gl.simulate(**SHORT, **extra)
+    seconds = (time.perf_counter() - started) / calls
+    core = min(gl.simulate(**SHORT, **extra).timing.seconds for _ in range(200))
+    return seconds * 1e6, core * 1e6
+
+
 def interrupt_latency(delay):
     timer = threading.Timer(delay, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()
@@ -53,6 +68,16 @@ def main():
     parser.add_argument("--contacts", type=int, default=400000)
     parser.add_argument("--repeats", type=int, default=5)
     args = parser.parse_args()
+    direct, text = [], []
+    for _ in range(args.repeats):
+        direct.append(per_call(5000))
+        # a progress callback sends the same call through the command line's text on a thread
+        text.append(per_call(1000, progress=lambda fraction, line: None))
+    direct_us, core_us = min(direct)
+    text_us, _ = min(text)
+    print(f"simulate(contacts=10): {direct_us:.1f} us a call called directly, {text_us:.1f} us "
+          f"through the command line's text; the core's own {core_us:.1f} us: "
+          f"{direct_us - core_us:.1f} us over the core (best of {args.repeats})")
     one, two = [], []
     for _ in range(args.repeats):
         one.append(sequential(args.contacts))

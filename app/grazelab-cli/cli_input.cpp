@@ -19,13 +19,13 @@ namespace {
 QString fromStd(const std::string& text) { return QString::fromStdString(text); }
 
 // --NAME as a whole number >= least, or the reason it is not one
-std::optional<std::int64_t> countOption(const QCommandLineParser& parser, const QString& name,
+std::optional<std::int64_t> countOption(const OptionValues& options, const QString& name,
                                         std::int64_t least, QString& error) {
   bool ok = false;
-  const qlonglong value = parser.value(name).toLongLong(&ok);
+  const qlonglong value = options.value(name).toLongLong(&ok);
   if (!ok || value < least) {
     error = QStringLiteral("--%1: '%2' is not a count (a whole number >= %3)")
-                .arg(name, parser.value(name))
+                .arg(name, options.value(name))
                 .arg(least);
     return std::nullopt;
   }
@@ -60,39 +60,62 @@ std::optional<core::BasicState<S>> toState(const QString& option, const QString&
   return core::BasicState<S>{values[0], values[1], values[2], values[3]};
 }
 
-}  // namespace
-
-void addOptions(QCommandLineParser& parser) {
-  parser.addOptions({
-      {"m1", "Mass 1 (default 1).", "value", "1"},
-      {"m2", "Mass 2, the one that hits the stop (default 0.5).", "value", "0.5"},
-      {"k1", "Stiffness wall-m1 (default 1).", "value", "1"},
-      {"gap", "Gap d between mass 2 at rest and the stop (default 1).", "value", "1"},
-      {"k2", "Stiffness m1-m2 as given: no resonance imposed (excludes --branch).", "value"},
-      {"branch", "k2 from the 1:2 design: upper (default) or lower.", "upper|lower"},
-      {"precision", "Arithmetic of the run: auto (default: double, and the whole run again in "
+// The options of `info` and `simulate`: name, description, value name, default.
+struct OptionSpec {
+  const char* name;
+  const char* description;
+  const char* valueName;
+  const char* defaultValue;
+};
+const OptionSpec kOptions[] = {
+    {"m1", "Mass 1 (default 1).", "value", "1"},
+    {"m2", "Mass 2, the one that hits the stop (default 0.5).", "value", "0.5"},
+    {"k1", "Stiffness wall-m1 (default 1).", "value", "1"},
+    {"gap", "Gap d between mass 2 at rest and the stop (default 1).", "value", "1"},
+    {"k2", "Stiffness m1-m2 as given: no resonance imposed (excludes --branch).", "value", nullptr},
+    {"branch", "k2 from the 1:2 design: upper (default) or lower.", "upper|lower", nullptr},
+    {"precision", "Arithmetic of the run: auto (default: double, and the whole run again in "
                     "long double, then binary128, from its input, when a contact touches the "
                     "stop within rounding), double, long or quad (binary128). Numbers are read "
                     "and written in it.", "auto|double|long|quad", "auto"},
-      {"glo", "Start on GLO_lambda data, any real lambda (default 0.5).", "lambda"},
-      {"onepp", "Start on the one-impact-per-period orbit of period T (T < T2 near T2). With "
-                "'family', --onepp takes no value: it names the family.", "T"},
-      {"state", "Start from the state u1,u2,v1,v2.", "u1,u2,v1,v2"},
-      {"perturb", "Add du1,du2,dv1,dv2 to the initial state.", "du1,du2,dv1,dv2"},
-      {"contacts", "Stop after N contacts (default 100 when no --t-end).", "N"},
-      {"t-end", "Stop at time T (it also bounds the contact search of a detuned chain).", "T"},
-      {"search-steps", "Detuned chains: the most steps one flight's contact search may take "
+    {"glo", "Start on GLO_lambda data, any real lambda (default 0.5).", "lambda", nullptr},
+    {"onepp", "Start on the one-impact-per-period orbit of period T (T < T2 near T2). With "
+                "'family', --onepp takes no value: it names the family.", "T", nullptr},
+    {"state", "Start from the state u1,u2,v1,v2.", "u1,u2,v1,v2", nullptr},
+    {"perturb", "Add du1,du2,dv1,dv2 to the initial state.", "du1,du2,dv1,dv2", nullptr},
+    {"contacts", "Stop after N contacts (default 100 when no --t-end).", "N", nullptr},
+    {"t-end", "Stop at time T (it also bounds the contact search of a detuned chain).", "T", nullptr},
+    {"search-steps", "Detuned chains: the most steps one flight's contact search may take "
                        "(default: about a second's worth, 10000000 in double, 3000000 in long, "
                        "300000 in quad); running out stops the run with stop_reason "
-                       "search-budget, never 'no contact'.", "N"},
-      {"format", "Output: json (default), jsonl (JSON Lines), csv or summary. json, jsonl and "
+                       "search-budget, never 'no contact'.", "N", nullptr},
+    {"format", "Output: json (default), jsonl (JSON Lines), csv or summary. json, jsonl and "
                  "csv stream: memory stays bounded and an interrupt leaves complete records.",
        "json|jsonl|csv|summary", "json"},
-      {"trust", "Error estimate of the run: auto (default: a shadow run one precision up while "
+    {"trust", "Error estimate of the run: auto (default: a shadow run one precision up while "
                 "it costs about the run itself, then extrapolation), full (the shadow to the "
                 "end) or off. For 'map': off (default: horizon NaN) or auto (a shadow per "
                 "point).", "off|auto|full", "auto"},
-  });
+  };
+
+}  // namespace
+
+QString defaultOptionValue(const QString& name) {
+  for (const OptionSpec& option : kOptions) {
+    if (name == QLatin1String(option.name)) {
+      return option.defaultValue ? QString::fromUtf8(option.defaultValue) : QString();
+    }
+  }
+  return {};
+}
+
+void addOptions(QCommandLineParser& parser) {
+  for (const OptionSpec& option : kOptions) {
+    QCommandLineOption added(QString::fromUtf8(option.name), QString::fromUtf8(option.description),
+                             QString::fromUtf8(option.valueName));
+    if (option.defaultValue) added.setDefaultValue(QString::fromUtf8(option.defaultValue));
+    parser.addOption(added);
+  }
 }
 
 QStringList repeatedOptions(const QCommandLineParser& parser) {
@@ -104,17 +127,17 @@ QStringList repeatedOptions(const QCommandLineParser& parser) {
   return repeated;
 }
 
-std::optional<core::TrustMode> parseTrustOption(const QCommandLineParser& parser,
+std::optional<core::TrustMode> parseTrustOption(const OptionValues& options,
                                                  QString& error) {
-  const QString text = parser.value("trust");
+  const QString text = options.value("trust");
   const auto mode = core::parseTrustMode(text.toStdString());
   if (!mode) error = QStringLiteral("--trust: '%1' is not off, auto or full").arg(text);
   return mode;
 }
 
-std::optional<PrecisionOption> parsePrecisionOption(const QCommandLineParser& parser,
+std::optional<PrecisionOption> parsePrecisionOption(const OptionValues& options,
                                                     QString& error) {
-  const QString text = parser.value("precision");
+  const QString text = options.value("precision");
   if (text == "auto") return PrecisionOption{};
   const auto precision = core::parsePrecision(text.toStdString());
   if (!precision) {
@@ -125,11 +148,11 @@ std::optional<PrecisionOption> parsePrecisionOption(const QCommandLineParser& pa
 }
 
 template <typename S>
-core::ExactParameters exactParameters(const QCommandLineParser& parser) {
+core::ExactParameters exactParameters(const OptionValues& options) {
   // the decimal read with 400 bits: equal to the value read in S only when S holds it exactly
   using Wide = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<400, boost::multiprecision::digit_base_2>>;
   auto exact = [&](const char* name) {
-    const QString text = parser.value(name);
+    const QString text = options.value(name);
     if (text.isEmpty()) return true;
     QString error;
     const auto value = toNumber<S>(name, text, error);
@@ -144,26 +167,26 @@ core::ExactParameters exactParameters(const QCommandLineParser& parser) {
 }
 
 template <typename S>
-Parsed<ModelInput<S>> parseModel(const QCommandLineParser& parser) {
+Parsed<ModelInput<S>> parseModel(const OptionValues& options) {
   QString error;
   S values[4];
   const char* names[] = {"m1", "m2", "k1", "gap"};
   for (int i = 0; i < 4; ++i) {
-    const auto value = toNumber<S>(names[i], parser.value(names[i]), error);
+    const auto value = toNumber<S>(names[i], options.value(names[i]), error);
     if (!value) return {std::nullopt, error};
     values[i] = *value;
   }
-  if (parser.isSet("k2") && parser.isSet("branch")) {
+  if (options.isSet("k2") && options.isSet("branch")) {
     return {std::nullopt, "--k2 and --branch exclude each other: give k2, or let the 1:2 design "
                           "choose it"};
   }
   core::BasicModel<S> model{values[0], values[1], values[2], S(1), values[3], std::nullopt};
-  if (parser.isSet("k2")) {
-    const auto k2 = toNumber<S>("k2", parser.value("k2"), error);
+  if (options.isSet("k2")) {
+    const auto k2 = toNumber<S>("k2", options.value("k2"), error);
     if (!k2) return {std::nullopt, error};
     model.k2 = *k2;
   } else {
-    const QString branchText = parser.isSet("branch") ? parser.value("branch") : "upper";
+    const QString branchText = options.isSet("branch") ? options.value("branch") : "upper";
     const auto branch = core::parseBranch(branchText.toStdString());
     if (!branch) {
       return {std::nullopt,
@@ -186,25 +209,25 @@ Parsed<ModelInput<S>> parseModel(const QCommandLineParser& parser) {
 }
 
 template <typename S>
-Parsed<core::StartSpec<S>> parseStartSpec(const QCommandLineParser& parser,
+Parsed<core::StartSpec<S>> parseStartSpec(const OptionValues& options,
                                           const core::BasicModel<S>& model) {
   QString error;
-  const int starts = int(parser.isSet("glo")) + int(parser.isSet("onepp")) +
-                     int(parser.isSet("state"));
+  const int starts = int(options.isSet("glo")) + int(options.isSet("onepp")) +
+                     int(options.isSet("state"));
   if (starts > 1) return {std::nullopt, "give one of --glo, --onepp, --state, not several"};
   core::StartSpec<S> spec;
-  if (parser.isSet("onepp")) {
-    const auto period = toNumber<S>("onepp", parser.value("onepp"), error);
+  if (options.isSet("onepp")) {
+    const auto period = toNumber<S>("onepp", options.value("onepp"), error);
     if (!period) return {std::nullopt, error};
     spec.kind = core::StartSpec<S>::Kind::OnePeriodic;
     spec.period = *period;
-  } else if (parser.isSet("state")) {
-    const auto state = toState<S>("state", parser.value("state"), error);
+  } else if (options.isSet("state")) {
+    const auto state = toState<S>("state", options.value("state"), error);
     if (!state) return {std::nullopt, error};
     spec.kind = core::StartSpec<S>::Kind::Explicit;
     spec.state = *state;
   } else {
-    const QString text = parser.isSet("glo") ? parser.value("glo") : "0.5";
+    const QString text = options.isSet("glo") ? options.value("glo") : "0.5";
     const auto lambda = toNumber<S>("glo", text, error);
     if (!lambda) return {std::nullopt, error};
     if (!core::isFinite(*lambda)) {
@@ -212,8 +235,8 @@ Parsed<core::StartSpec<S>> parseStartSpec(const QCommandLineParser& parser,
     }
     spec.lambda = *lambda;
   }
-  if (parser.isSet("perturb")) {
-    const auto delta = toState<S>("perturb", parser.value("perturb"), error);
+  if (options.isSet("perturb")) {
+    const auto delta = toState<S>("perturb", options.value("perturb"), error);
     if (!delta) return {std::nullopt, error};
     const auto problems = core::validateState(model, *delta, "perturb");
     for (const auto& problem : problems) {
@@ -225,14 +248,14 @@ Parsed<core::StartSpec<S>> parseStartSpec(const QCommandLineParser& parser,
 }
 
 template <typename S>
-Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
-  Parsed<ModelInput<S>> model = parseModel<S>(parser);
+Parsed<RunInput<S>> parseRun(const OptionValues& options) {
+  Parsed<ModelInput<S>> model = parseModel<S>(options);
   if (!model.value) return {std::nullopt, model.error};
   RunInput<S> run{*model.value, {}, {}, {}, Format::Json};
   const core::Chain<S>& chain = run.model.chain;
   QString error;
 
-  Parsed<core::StartSpec<S>> spec = parseStartSpec<S>(parser, run.model.model);
+  Parsed<core::StartSpec<S>> spec = parseStartSpec<S>(options, run.model.model);
   if (!spec.value) return {std::nullopt, spec.error};
   core::StartOrProblem<S> start = core::makeStart(chain, *spec.value);
   if (!start.start) {
@@ -246,24 +269,24 @@ Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
   // core's notes on the start are about rounding: the command line can raise the precision
   for (const std::string& note : start.start->notes) run.notes.push_back(note + " (try --precision quad)");
 
-  if (parser.isSet("contacts")) {
-    const auto contacts = countOption(parser, "contacts", 0, error);
+  if (options.isSet("contacts")) {
+    const auto contacts = countOption(options, "contacts", 0, error);
     if (!contacts) return {std::nullopt, error};
     run.request.maxContacts = *contacts;
   } else {
-    run.request.maxContacts = parser.isSet("t-end") ? std::numeric_limits<std::int64_t>::max() : 100;
+    run.request.maxContacts = options.isSet("t-end") ? std::numeric_limits<std::int64_t>::max() : 100;
   }
-  if (parser.isSet("t-end")) {
-    const auto tEnd = toNumber<S>("t-end", parser.value("t-end"), error);
+  if (options.isSet("t-end")) {
+    const auto tEnd = toNumber<S>("t-end", options.value("t-end"), error);
     if (!tEnd) return {std::nullopt, error};
     if (!(*tEnd >= 0)) {
       return {std::nullopt,
-              QStringLiteral("--t-end: '%1' is not a time >= 0").arg(parser.value("t-end"))};
+              QStringLiteral("--t-end: '%1' is not a time >= 0").arg(options.value("t-end"))};
     }
     run.request.tEnd = *tEnd;
   }
-  if (parser.isSet("search-steps")) {
-    const auto steps = countOption(parser, "search-steps", 1, error);
+  if (options.isSet("search-steps")) {
+    const auto steps = countOption(options, "search-steps", 1, error);
     if (!steps) return {std::nullopt, error};
     run.request.flightSearchSteps = *steps;
   }
@@ -271,7 +294,7 @@ Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
   // interrupt ends it with complete records)
   const S slowPeriod = core::twoPi<S>() / run.model.chain.omegaSlow;
   const double periods = core::toDouble(S(run.request.tEnd / slowPeriod));
-  if (!parser.isSet("contacts") && std::isfinite(periods) && periods > 1e12) {
+  if (!options.isSet("contacts") && std::isfinite(periods) && periods > 1e12) {
     char line[200];
     std::snprintf(line, sizeof line,
                   "--t-end spans %.2g slow periods (T2 = %.3g) and no --contacts bounds the run: "
@@ -279,7 +302,7 @@ Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
                   periods, core::toDouble(slowPeriod), periods / 1e7 / 3.15e7);
     run.notes.push_back(line);
   }
-  const QString format = parser.value("format");
+  const QString format = options.value("format");
   if (format == "json") {
     run.format = Format::Json;
   } else if (format == "jsonl") {
@@ -298,11 +321,11 @@ Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser) {
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                     \
-  template core::ExactParameters exactParameters<S>(const QCommandLineParser&);     \
-  template Parsed<ModelInput<S>> parseModel<S>(const QCommandLineParser&);          \
-  template Parsed<core::StartSpec<S>> parseStartSpec<S>(const QCommandLineParser&,  \
+  template core::ExactParameters exactParameters<S>(const OptionValues&);     \
+  template Parsed<ModelInput<S>> parseModel<S>(const OptionValues&);          \
+  template Parsed<core::StartSpec<S>> parseStartSpec<S>(const OptionValues&,  \
                                                         const core::BasicModel<S>&); \
-  template Parsed<RunInput<S>> parseRun<S>(const QCommandLineParser&);
+  template Parsed<RunInput<S>> parseRun<S>(const OptionValues&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(core::Quad)

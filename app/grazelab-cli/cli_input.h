@@ -16,6 +16,8 @@
 #include "core/solver/simulate.h"
 #include "core/solver/trust.h"
 
+#include "option_values.h"
+
 class QCommandLineParser;
 
 namespace grazelab::cli {
@@ -33,16 +35,16 @@ QStringList repeatedOptions(const QCommandLineParser& parser);
 struct PrecisionOption {
   std::optional<core::Precision> fixed;
 };
-std::optional<PrecisionOption> parsePrecisionOption(const QCommandLineParser& parser,
+std::optional<PrecisionOption> parsePrecisionOption(const OptionValues& options,
                                                     QString& error);
 
 /// --trust, checked ("auto" when absent).
-std::optional<core::TrustMode> parseTrustOption(const QCommandLineParser& parser, QString& error);
+std::optional<core::TrustMode> parseTrustOption(const OptionValues& options, QString& error);
 
 /// Which model parameters the command line gives exactly in precision S (its decimal text is a
 /// number of S; parameters not given are exact defaults).
 template <typename S>
-core::ExactParameters exactParameters(const QCommandLineParser& parser);
+core::ExactParameters exactParameters(const OptionValues& options);
 
 /// The model as the command line describes it, in precision S, with its nondimensional chain.
 template <typename S>
@@ -72,12 +74,12 @@ struct Parsed {
 };
 
 template <typename S>
-Parsed<ModelInput<S>> parseModel(const QCommandLineParser& parser);
+Parsed<ModelInput<S>> parseModel(const OptionValues& options);
 /// The start options (--glo, --onepp, --state, --perturb) as a spec: GLO_0.5 when none is given.
 template <typename S>
-Parsed<core::StartSpec<S>> parseStartSpec(const QCommandLineParser& parser,
+Parsed<core::StartSpec<S>> parseStartSpec(const OptionValues& options,
                                           const core::BasicModel<S>& model);
 template <typename S>
-Parsed<RunInput<S>> parseRun(const QCommandLineParser& parser);
+Parsed<RunInput<S>> parseRun(const OptionValues& options);
 
 }  // namespace grazelab::cli

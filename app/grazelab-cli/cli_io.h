@@ -12,6 +12,7 @@ namespace grazelab::cli {
 namespace map {
 struct StoredMap;
 }
+struct JsonValue;
 
 /// One event of a run as the Python module hands it to NumPy without a copy: the columns of the
 /// command line's CSV (t,type,u1,u2,v1,v2_pre,v2_post), numbers rounded to double, the type in
@@ -53,6 +54,8 @@ struct Io {
   /// When set, `map` and `merge` put the map here (the Python module: arrays without files);
   /// their files are then written only where --out names them.
   map::StoredMap* map = nullptr;
+  /// When set (with `events`), `simulate` puts its JSON document here as values, not as text.
+  JsonValue* document = nullptr;
 
   void reportProgress(double fraction, const std::string& text) const {
     if (progress) progress(fraction, text);

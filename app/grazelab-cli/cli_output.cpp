@@ -8,6 +8,7 @@
 
 #include "core/model/linear_modes.h"
 #include "core/orbits/special_orbits.h"
+#include "json_value.h"
 
 namespace grazelab::cli {
 
@@ -42,16 +43,16 @@ std::string object(std::initializer_list<std::pair<const char*, std::string>> fi
 }
 
 template <typename S>
-std::string stateJson(const S& t, const core::BasicState<S>& state) {
-  return object({{"t", number(t)},
-                 {"u1", number(state.u1)},
-                 {"u2", number(state.u2)},
-                 {"v1", number(state.v1)},
-                 {"v2", number(state.v2)}});
+JsonValue stateValue(const S& t, const core::BasicState<S>& state) {
+  return JsonValue::object({{"t", JsonValue::number(t)},
+                            {"u1", JsonValue::number(state.u1)},
+                            {"u2", JsonValue::number(state.u2)},
+                            {"v1", JsonValue::number(state.v1)},
+                            {"v2", JsonValue::number(state.v2)}});
 }
 
 template <typename S>
-std::string modelJson(const ModelInput<S>& input, const std::string& precision) {
+JsonValue modelValue(const ModelInput<S>& input, const std::string& precision) {
   const core::BasicModel<S>& model = input.model;
   const core::Chain<S>& chain = input.chain;
   const S omegaFast = chain.ratio * chain.omegaSlow;
@@ -67,29 +68,38 @@ std::string modelJson(const ModelInput<S>& input, const std::string& precision) 
   const std::string source =
       model.design ? "1:2 design, " + std::string(core::toString(*model.design)) + " branch"
                    : std::string("given");
-  std::string out = "{\n";
-  auto field = [&](const char* key, const std::string& value, bool last = false) {
-    out += "    " + quoted(key) + ": " + value + (last ? "\n" : ",\n");
-  };
-  field("m1", number(model.m1));
-  field("m2", number(model.m2));
-  field("k1", number(model.k1));
-  field("k2", number(model.k2));
-  field("gap", number(model.gap));
-  field("k2_source", quoted(source));
-  field("mass_ratio", number(chain.beta));
-  field("omega1", number(omegaFast));
-  field("omega2", number(chain.omegaSlow));
-  field("T1", number(S(core::twoPi<S>() / omegaFast)));
-  field("T2", number(S(core::twoPi<S>() / chain.omegaSlow)));
-  field("resonant", chain.resonant ? "true" : "false");
-  field("detuning", number(chain.detuning));
-  field("mode_labelling", quoted("mode 1 is the fast mode, mode 2 the slow one (omega1 = 2 omega2)"));
-  field("P", "[[" + number(p[0][0]) + ", " + number(p[0][1]) + "], [" + number(p[1][0]) + ", " +
-                 number(p[1][1]) + "]]");
-  field("precision", quoted(precision));
-  field("lambda_star", chain.resonant ? number(core::lambdaStar(chain)) : std::string("null"), true);
-  return out + "  }";
+  using V = JsonValue;
+  return V::object(
+      {{"m1", V::number(model.m1)},
+       {"m2", V::number(model.m2)},
+       {"k1", V::number(model.k1)},
+       {"k2", V::number(model.k2)},
+       {"gap", V::number(model.gap)},
+       {"k2_source", V::of(source)},
+       {"mass_ratio", V::number(chain.beta)},
+       {"omega1", V::number(omegaFast)},
+       {"omega2", V::number(chain.omegaSlow)},
+       {"T1", V::number(S(core::twoPi<S>() / omegaFast))},
+       {"T2", V::number(S(core::twoPi<S>() / chain.omegaSlow))},
+       {"resonant", V::of(chain.resonant)},
+       {"detuning", V::number(chain.detuning)},
+       {"mode_labelling", V::of("mode 1 is the fast mode, mode 2 the slow one (omega1 = 2 omega2)")},
+       {"P", V::array({V::array({V::number(p[0][0]), V::number(p[0][1])}),
+                       V::array({V::number(p[1][0]), V::number(p[1][1])})})},
+       {"precision", V::of(precision)},
+       {"lambda_star", chain.resonant ? V::number(core::lambdaStar(chain)) : V::null()}});
+}
+
+// the model as the command line writes it: a field per line
+template <typename S>
+std::string modelJson(const ModelInput<S>& input, const std::string& precision) {
+  return fieldPerLine(modelValue(input, precision), "    ", "  ");
+}
+
+template <typename S>
+JsonValue initialValue(const RunInput<S>& run) {
+  return JsonValue::object({{"description", JsonValue::of(run.initialDescription.toStdString())},
+                            {"state", stateValue(S(0), run.request.initial)}});
 }
 
 double contactsPerSecond(const core::Cost& cost) {
@@ -107,67 +117,68 @@ std::string eventJson(const core::BasicEvent<S>& event) {
                  {"v2_post", number(event.after.v2)}});
 }
 
-std::string stopReason(core::StopReason reason, bool interrupted) {
-  return quoted(interrupted ? std::string("interrupted") : std::string(core::toString(reason)));
-}
-
-std::string trustJson(const core::Trust& trust) {
+JsonValue trustValue(const core::Trust& trust) {
   const bool estimated = trust.verdict != core::Verdict::Unchecked;
-  auto estimate = [&](double value) { return estimated ? number(value) : std::string("null"); };
-  return object({{"estimated_state_error", estimate(trust.stateError)},
-                 {"estimated_time_error", estimate(trust.timeError)},
-                 {"horizon", estimate(trust.horizon)},
-                 {"horizon_method", estimated ? quoted(trust.horizonMethod) : std::string("null")},
-                 {"verdict", quoted(std::string(core::toString(trust.verdict)))},
-                 {"reason", quoted(trust.reason)}});
+  auto estimate = [&](double value) { return estimated ? JsonValue::number(value) : JsonValue::null(); };
+  return JsonValue::object(
+      {{"estimated_state_error", estimate(trust.stateError)},
+       {"estimated_time_error", estimate(trust.timeError)},
+       {"horizon", estimate(trust.horizon)},
+       {"horizon_method", estimated ? JsonValue::of(trust.horizonMethod) : JsonValue::null()},
+       {"verdict", JsonValue::of(std::string(core::toString(trust.verdict)))},
+       {"reason", JsonValue::of(trust.reason)}});
 }
 
 // `initialUsed`: the start of a run raised to a higher precision, in that precision's digits
-// (the head, written before the raise, holds the lower one's); empty when not raised
-std::string precisionJson(const PrecisionReport& precision, const std::string& initialUsed) {
-  std::string escalations = "[";
-  for (const std::string& line : precision.escalations) {
-    escalations += (escalations.size() > 1 ? ", " : "") + quoted(line);
-  }
-  if (initialUsed.empty()) {
-    return object({{"requested", quoted(precision.requested)},
-                   {"used", quoted(precision.used)},
-                   {"escalations", escalations + "]"}});
-  }
-  return object({{"requested", quoted(precision.requested)},
-                 {"used", quoted(precision.used)},
-                 {"escalations", escalations + "]"},
-                 {"initial_state_used", initialUsed}});
+// (the head, written before the raise, holds the lower one's); null when not raised
+JsonValue precisionValue(const PrecisionReport& precision, JsonValue initialUsed) {
+  std::vector<JsonValue> escalations;
+  for (const std::string& line : precision.escalations) escalations.push_back(JsonValue::of(line));
+  std::vector<JsonValue::Field> fields{{"requested", JsonValue::of(precision.requested)},
+                                       {"used", JsonValue::of(precision.used)},
+                                       {"escalations", JsonValue::array(std::move(escalations))}};
+  if (initialUsed.kind != JsonValue::Kind::Null) fields.emplace_back("initial_state_used", std::move(initialUsed));
+  return JsonValue::object(std::move(fields));
 }
 
+// the fields the end of a run adds to its document
 template <typename S>
-std::string endFields(const core::BasicResult<S>& result, bool interrupted,
-                      const core::Trust& trust, const PrecisionReport& precision,
-                      const std::string& indent, const std::string& initialUsed) {
+std::vector<JsonValue::Field> endValues(const RunInput<S>& run, const core::BasicResult<S>& result,
+                                        bool interrupted, const core::Trust& trust,
+                                        const PrecisionReport& precision) {
+  using V = JsonValue;
   const core::Cost& cost = result.cost;
-  auto field = [&](const char* key, const std::string& value) {
-    return indent + quoted(key) + ": " + value;
-  };
+  // a run raised to this precision started from this precision's reading of the input: the
+  // head holds the lower one's, so the start used is said again here
+  V initialUsed = precision.escalations.empty() ? V::null() : stateValue(S(0), run.request.initial);
+  std::vector<V::Field> fields;
+  fields.emplace_back("final", stateValue(result.tFinal, result.final));
+  fields.emplace_back("stop_reason", V::of(interrupted ? std::string("interrupted")
+                                                       : std::string(core::toString(result.stop))));
+  if (!result.message.empty()) fields.emplace_back("message", V::of(result.message));
+  fields.emplace_back("contacts", V::object({{"total", V::of(std::int64_t(cost.contacts))},
+                                             {"impacts", V::of(std::int64_t(cost.impacts))},
+                                             {"grazings", V::of(std::int64_t(cost.grazings))},
+                                             {"sticks", V::of(std::int64_t(cost.sticks))},
+                                             {"undecided_touches", V::of(std::int64_t(cost.undecidedTouches))}}));
+  fields.emplace_back("energy", V::object({{"initial", V::number(result.initialEnergy)},
+                                           {"max_rel_drift", V::number(cost.maxRelEnergyDrift)},
+                                           {"max_flight_error", V::number(cost.maxFlightEnergyError)}}));
+  fields.emplace_back("accuracy", V::object({{"max_contact_residual", V::number(cost.maxContactResidual)}}));
+  fields.emplace_back("trust", trustValue(trust));
+  fields.emplace_back("precision", precisionValue(precision, std::move(initialUsed)));
+  fields.emplace_back("timing", V::object({{"seconds", V::number(cost.wallSeconds)},
+                                           {"contacts_per_second", V::number(contactsPerSecond(cost))}}));
+  return fields;
+}
+
+// the end's fields as the command line writes them: one per line after `indent`
+std::string endFields(const std::vector<JsonValue::Field>& fields, const std::string& indent) {
   std::string out;
-  out += field("final", stateJson(result.tFinal, result.final)) + ",\n";
-  out += field("stop_reason", stopReason(result.stop, interrupted)) + ",\n";
-  if (!result.message.empty()) out += field("message", quoted(result.message)) + ",\n";
-  out += field("contacts", object({{"total", std::to_string(cost.contacts)},
-                                   {"impacts", std::to_string(cost.impacts)},
-                                   {"grazings", std::to_string(cost.grazings)},
-                                   {"sticks", std::to_string(cost.sticks)},
-                                   {"undecided_touches", std::to_string(cost.undecidedTouches)}})) +
-         ",\n";
-  out += field("energy", object({{"initial", number(result.initialEnergy)},
-                                 {"max_rel_drift", number(cost.maxRelEnergyDrift)},
-                                 {"max_flight_error", number(cost.maxFlightEnergyError)}})) +
-         ",\n";
-  out += field("accuracy", object({{"max_contact_residual", number(cost.maxContactResidual)}})) +
-         ",\n";
-  out += field("trust", trustJson(trust)) + ",\n";
-  out += field("precision", precisionJson(precision, initialUsed)) + ",\n";
-  out += field("timing", object({{"seconds", number(cost.wallSeconds)},
-                                 {"contacts_per_second", number(contactsPerSecond(cost))}}));
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    out += indent + quoted(fields[i].first) + ": " + oneLine(fields[i].second);
+    if (i + 1 < fields.size()) out += ",\n";
+  }
   return out;
 }
 
@@ -186,9 +197,14 @@ void RunWriter<S>::write(const std::string& text) {
 
 template <typename S>
 void RunWriter<S>::begin(const core::BasicResult<S>&) {
-  const std::string initial =
-      "{\"description\": " + quoted(m_run.initialDescription.toStdString()) +
-      ", \"state\": " + stateJson(S(0), m_run.request.initial) + "}";
+  if (m_document) {
+    // the Python module: the document as values, its events in the table
+    *m_document = JsonValue::object({{"model", modelValue(m_run.model, m_precision)},
+                                     {"initial", initialValue(m_run)},
+                                     {"events", JsonValue::array({})}});
+    return;
+  }
+  const std::string initial = oneLine(initialValue(m_run));
   switch (m_run.format) {
     case Format::Json:
       write("{\n  \"model\": " + modelJson(m_run.model, m_precision) + ",\n  \"initial\": " + initial +
@@ -281,19 +297,20 @@ void RunWriter<S>::event(const core::BasicEvent<S>& event) {
 template <typename S>
 void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
                        const core::Trust& trust, const PrecisionReport& precision) {
-  // a run raised to this precision started from this precision's reading of the input: the
-  // head holds the lower one's, so the start used is said again here
-  const std::string initialUsed =
-      precision.escalations.empty() ? std::string() : stateJson(S(0), m_run.request.initial);
+  std::vector<JsonValue::Field> fields = endValues(m_run, result, interrupted, trust, precision);
+  if (m_document) {
+    for (JsonValue::Field& field : fields) m_document->fields.push_back(std::move(field));
+    return;
+  }
+  const bool initialUsed = !precision.escalations.empty();
   switch (m_run.format) {
     case Format::Json:
-      write((m_events == 0 || m_table ? "],\n" : "\n  ],\n") +
-            endFields(result, interrupted, trust, precision, "  ", initialUsed) + "\n}\n");
+      write((m_events == 0 || m_table ? "],\n" : "\n  ],\n") + endFields(fields, "  ") + "\n}\n");
       break;
     case Format::JsonLines: {
-      std::string fields = endFields(result, interrupted, trust, precision, "", initialUsed);
+      std::string line = endFields(fields, "");
       std::string flat;
-      for (char c : fields) flat += c == '\n' ? ' ' : c;
+      for (char c : line) flat += c == '\n' ? ' ' : c;
       write("{\"record\": \"end\", " + flat + "}\n");
       break;
     }
@@ -332,7 +349,7 @@ void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
       for (const std::string& line : precision.escalations) {
         text += "               raised: " + line + "\n";
       }
-      if (!initialUsed.empty()) {
+      if (initialUsed) {
         const core::BasicState<S>& x = m_run.request.initial;
         text += "start used     u1=" + number(x.u1) + " u2=" + number(x.u2) + " v1=" + number(x.v1) +
                 " v2=" + number(x.v2) + " (in " + precision.used + ")\n";

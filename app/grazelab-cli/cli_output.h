@@ -8,6 +8,7 @@
 
 #include "cli_input.h"
 #include "cli_io.h"
+#include "json_value.h"
 #include "core/solver/simulate.h"
 #include "core/solver/trust.h"
 
@@ -42,10 +43,12 @@ template <typename S>
 class RunWriter {
  public:
   /// `precision` is what the run was asked for (the model's "precision" field). With a `table`
-  /// the events go there and the text's events array stays empty (the Python module).
+  /// the events go there and the text's events array stays empty; with a `document` the whole
+  /// output goes there as values instead of text (both: the Python module).
   RunWriter(const RunInput<S>& run, std::FILE* out, std::string precision,
-            EventTable* table = nullptr)
-      : m_run(run), m_out(out), m_precision(std::move(precision)), m_table(table) {}
+            EventTable* table = nullptr, JsonValue* document = nullptr)
+      : m_run(run), m_out(out), m_precision(std::move(precision)), m_table(table),
+        m_document(document) {}
 
   /// Everything known before the first event.
   void begin(const core::BasicResult<S>& result);
@@ -64,6 +67,7 @@ class RunWriter {
   std::FILE* m_out;
   std::string m_precision;
   EventTable* m_table;
+  JsonValue* m_document;
   std::int64_t m_events = 0;
 };
 

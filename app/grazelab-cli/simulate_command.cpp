@@ -5,8 +5,6 @@
 // one cannot decide).
 #include "simulate_command.h"
 
-#include <QCommandLineParser>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -89,7 +87,7 @@ struct AutoRun {
 constexpr int kRaisePrecision = -1;
 
 template <typename S>
-int simulateIn(const QCommandLineParser& parser, core::TrustMode trustMode, AutoRun* autoRun,
+int simulateIn(const OptionValues& options, core::TrustMode trustMode, AutoRun* autoRun,
                const Io& io, std::stop_token stop, QString& error) {
   constexpr bool kTopPrecision = std::is_same_v<S, core::Quad>;
   const std::string precisionName(core::toString(core::precisionOf<S>()));
@@ -104,19 +102,20 @@ int simulateIn(const QCommandLineParser& parser, core::TrustMode trustMode, Auto
     error = QString::fromStdString(message);
     return kExitInvalidInput;
   };
-  auto parsed = parseRun<S>(parser);
+  auto parsed = parseRun<S>(options);
   if (!parsed.value) return refused(parsed.error.toStdString());
   RunInput<S>& run = *parsed.value;
   run.request.stopAtUndecided = autoRun != nullptr && !kTopPrecision;
-  RunWriter<S> writer(run, io.out, autoRun ? std::string("auto") : precisionName, io.events);
+  RunWriter<S> writer(run, io.out, autoRun ? std::string("auto") : precisionName, io.events,
+                      io.document);
   // the error estimate: the same input read one precision up, run beside this one
   std::optional<core::TrustMonitor<S>> monitor;
   std::string noShadow;
   if (trustMode != core::TrustMode::Off) {
-    const auto shadow = parseRun<core::ShadowScalar<S>>(parser);
+    const auto shadow = parseRun<core::ShadowScalar<S>>(options);
     if (shadow.value) {
       monitor.emplace(shadow.value->model.model, shadow.value->request, trustMode,
-                      stop, exactParameters<core::ShadowScalar<S>>(parser));
+                      stop, exactParameters<core::ShadowScalar<S>>(options));
     } else {
       noShadow = "no shadow run: " + shadow.error.toStdString();
     }
@@ -220,24 +219,24 @@ int simulateIn(const QCommandLineParser& parser, core::TrustMode trustMode, Auto
 
 }  // namespace
 
-int runSimulate(const QCommandLineParser& parser, const PrecisionOption& precision,
+int runSimulate(const OptionValues& options, const PrecisionOption& precision,
                 core::TrustMode trust, const Io& io, std::stop_token stop, QString& error) {
   using core::Precision;
   if (!precision.fixed) {
     // auto: double, and from the input again one precision up while a contact needs it
     AutoRun autoRun;
-    int code = simulateIn<double>(parser, trust, &autoRun, io, stop, error);
-    if (code == kRaisePrecision) code = simulateIn<long double>(parser, trust, &autoRun, io, stop, error);
-    if (code == kRaisePrecision) code = simulateIn<core::Quad>(parser, trust, &autoRun, io, stop, error);
+    int code = simulateIn<double>(options, trust, &autoRun, io, stop, error);
+    if (code == kRaisePrecision) code = simulateIn<long double>(options, trust, &autoRun, io, stop, error);
+    if (code == kRaisePrecision) code = simulateIn<core::Quad>(options, trust, &autoRun, io, stop, error);
     return code;
   }
   switch (*precision.fixed) {
     case Precision::Double:
-      return simulateIn<double>(parser, trust, nullptr, io, stop, error);
+      return simulateIn<double>(options, trust, nullptr, io, stop, error);
     case Precision::Long:
-      return simulateIn<long double>(parser, trust, nullptr, io, stop, error);
+      return simulateIn<long double>(options, trust, nullptr, io, stop, error);
     case Precision::Quad:
-      return simulateIn<core::Quad>(parser, trust, nullptr, io, stop, error);
+      return simulateIn<core::Quad>(options, trust, nullptr, io, stop, error);
   }
   return kExitInvalidInput;
 }

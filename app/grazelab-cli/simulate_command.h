@@ -9,8 +9,7 @@
 #include "cli_input.h"
 #include "cli_io.h"
 #include "core/solver/trust.h"
-
-class QCommandLineParser;
+#include "option_values.h"
 
 namespace grazelab::cli {
 
@@ -18,7 +17,7 @@ namespace grazelab::cli {
 /// format, in the precision asked for or, with auto, raised from its input to long double and
 /// binary128 where a contact needs it. Exit 0; 2 on invalid input (`error`, nothing on stdout);
 /// 130 when `stop` ended it (the output closed with complete records).
-int runSimulate(const QCommandLineParser& parser, const PrecisionOption& precision,
+int runSimulate(const OptionValues& options, const PrecisionOption& precision,
                 core::TrustMode trust, const Io& io, std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

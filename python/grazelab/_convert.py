@@ -59,6 +59,13 @@ _VECTORS = {"state", "perturb", "guess", "x", "y", "energy_range", "shard", "met
 def _text(name, value):
     """One value as the command line's text: the number exactly (a Fraction to 40 digits), or
     a TypeError for what is not a number or text."""
+    kind = type(value)  # the common types first, as the general rules below would write them
+    if kind is float:
+        return str(int(value)) if value.is_integer() and abs(value) < 2.0**53 else repr(value)
+    if kind is int:
+        return str(value)
+    if kind is str:
+        return value
     if isinstance(value, _np.ndarray) and value.ndim == 0:
         value = value[()]  # a 0-d array is its number
     if isinstance(value, (bool, _np.bool_)):
@@ -89,12 +96,24 @@ def arguments(command, options):
     True is a bare flag (--quick, --onepp of family and orbit), False leaves it out; a vector
     option's sequence is joined by ',' (':' for the axes and --energy-range, '/' for --shard);
     a sequence where one value is expected is a TypeError."""
-    line = [command]
+    return [command] + ["--" + name if text is None else "--" + name + "=" + text
+                        for name, text in option_texts(options)]
+
+
+def option_texts(options):
+    """`options` as (flag name without dashes, text) pairs, the text None for a bare flag: the
+    command line's words without the line (what arguments() joins, and what a direct call
+    hands the command)."""
+    texts = []
     for name, value in options.items():
-        flag = "--" + name.replace("_", "-")
+        flag = name.replace("_", "-")
+        kind = type(value)
+        if kind is float or kind is str or (kind is int and name not in _BARE):
+            texts.append((flag, _text(name, value)))
+            continue
         if name in _BARE and isinstance(value, bool):
             if value:
-                line.append(flag)
+                texts.append((flag, None))
             continue
         if isinstance(value, _os.PathLike):
             value = _os.fspath(value)
@@ -103,10 +122,10 @@ def arguments(command, options):
             if name not in _VECTORS:
                 raise TypeError(f"{name}: expected one value, got {type(value).__name__} {list(value)!r}")
             separator = _JOINED_BY.get(name, ",")
-            line.append(flag + "=" + separator.join(_text(name, v) for v in value))
+            texts.append((flag, separator.join(_text(name, v) for v in value)))
         else:
-            line.append(flag + "=" + _text(name, value))
-    return line
+            texts.append((flag, _text(name, value)))
+    return texts
 
 
 def _results(value):

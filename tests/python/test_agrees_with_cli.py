@@ -50,6 +50,40 @@ def test_simulate_events_are_the_cli_json_bit_for_bit(cli_json, options, flags):
     assert run.trust.estimated_state_error == expected["trust"]["estimated_state_error"]
 
 
+def without_timing(document):
+    return {key: value for key, value in document.items()
+            if key not in ("timing", "events", "notes", "decimal", "events_decimal")}
+
+
+@pytest.mark.filterwarnings("ignore::grazelab.GrazeLabWarning")
+@pytest.mark.parametrize("options,flags", [
+    (dict(glo=0.5, perturb=(0, 0, 0, -0.05), contacts=10, trust="off"),
+     ["--glo", "0.5", "--perturb=0,0,0,-0.05", "--contacts", "10", "--trust", "off"]),
+    (dict(m2=0.3, branch="lower", glo=1.2, contacts=7), ["--m2", "0.3", "--branch", "lower", "--glo", "1.2", "--contacts", "7"]),
+    (dict(glo=0, contacts=4), ["--glo", "0", "--contacts", "4"]),  # raised: long double, then more
+    (dict(onepp=8.5, contacts=3, trust="full"), ["--onepp", "8.5", "--contacts", "3", "--trust", "full"]),
+    (dict(state=(0, 1, 0, 0), contacts=3, precision="quad"), ["--state=0,1,0,0", "--contacts", "3", "--precision", "quad"]),
+    (dict(k2=0.7, glo=0.5, perturb=(0, 0, 0, -0.05), contacts=4), ["--k2", "0.7", "--glo", "0.5", "--perturb=0,0,0,-0.05", "--contacts", "4"]),
+    (dict(glo=1.5, contacts=0), ["--glo", "1.5", "--contacts", "0"]),
+])
+def test_simulate_document_is_the_cli_json_on_both_paths(cli_json, options, flags):
+    # a short run is computed on the calling thread with its options handed over by name, a run
+    # with progress on a thread through the command line's text: the same document, and the
+    # command line's, field for field (floats where the JSON writes 1 for 1.0: equal numbers)
+    expected = without_timing(cli_json("simulate", *flags))
+    direct = gl.simulate(**options)
+    threaded = gl.simulate(**options, progress=lambda fraction, text: None)
+    assert without_timing(direct) == expected
+    assert without_timing(threaded) == expected
+    np.testing.assert_array_equal(direct.events, threaded.events)
+    assert direct.notes == threaded.notes
+    if "decimal" in direct:
+        exact = cli_json("simulate", *flags, exact=True)
+        exact.pop("events")
+        assert without_timing(direct.decimal) == without_timing(exact)
+        assert without_timing(threaded.decimal) == without_timing(exact)
+
+
 @pytest.mark.parametrize("precision", ["long", "quad"])
 def test_simulate_in_long_and_quad_keeps_the_exact_decimals(cli_json, precision):
     flags = ["--glo", "0.3", "--perturb=0,0,0,-0.01", "--contacts", "40", "--precision", precision]
