@@ -186,10 +186,11 @@ py::object documentToPython(const grazelab::cli::JsonValue& document, const py::
 }
 
 // run(arguments, progress=None, events=False, max_events, discard_events=False, keep_map=False,
-//     result_type=None) -> (code, output, messages, events, decimals, map, document)
+//     result_type=None, keep_files=False)
+//   -> (code, output, messages, events, decimals, map, document, files)
 py::tuple run(const std::vector<std::string>& arguments, const py::object& progress,
               bool eventsAsArrays, std::size_t maxEvents, bool discardEvents, bool keepMap,
-              const py::object& resultType) {
+              const py::object& resultType, bool keepFiles) {
   QStringList commandLine{QStringLiteral("grazelab")};
   for (const std::string& argument : arguments) commandLine << QString::fromStdString(argument);
 
@@ -209,6 +210,8 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   if (keepMap) io.map = &map;
   grazelab::cli::JsonValue document;
   if (!resultType.is_none()) io.document = &document;
+  std::vector<std::pair<std::string, std::string>> files;
+  if (keepFiles) io.files = &files;
   if (!progress.is_none()) {
     io.progress = [&mailbox](double fraction, const std::string& text) {
       std::lock_guard lock(mailbox.mutex);
@@ -277,8 +280,14 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   if (!resultType.is_none() && code == 0) {
     documentResult = documentToPython(document, resultType, !decimals.is_none());
   }
+  py::object filesResult = py::none();
+  if (keepFiles && code == 0) {
+    py::dict named;
+    for (const auto& [name, bytes] : files) named[py::str(name)] = py::bytes(bytes);
+    filesResult = std::move(named);
+  }
   return py::make_tuple(code, py::bytes(out), py::str(log), events, decimals, mapResult,
-                        documentResult);
+                        documentResult, filesResult);
 }
 
 // simulate(options, result_type, events, max_events, discard_events)
@@ -358,14 +367,16 @@ PYBIND11_MODULE(_native, module) {
   module.def("run", &run, py::arg("arguments"), py::arg("progress") = py::none(),
              py::arg("events") = false, py::arg("max_events") = std::size_t(-1),
              py::arg("discard_events") = false, py::arg("keep_map") = false,
-             py::arg("result_type") = py::none(),
+             py::arg("result_type") = py::none(), py::arg("keep_files") = false,
              "Runs one grazelab-cli command line (without the program's name) in this process. "
              "Returns (exit code, output bytes, messages, events array or None, the events' "
              "decimal text or None, map or None); raises ValueError when the run makes more "
              "than max_events events. With discard_events a simulate keeps no event anywhere "
              "(statistics only); with keep_map a map or merge hands back (its JSON document, "
              "its points as a structured array) and writes files only where --out says; with "
-             "result_type a simulate's document comes back as values of that type, not text.");
+             "result_type a simulate's document comes back as values of that type, not text; "
+             "with keep_files family and modes without --out hand their files back as "
+             "{name: bytes} and write none.");
   module.def("simulate", &simulateHere, py::arg("options"), py::arg("result_type"),
              py::arg("events") = true, py::arg("max_events") = std::size_t(-1),
              py::arg("discard_events") = false,

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace grazelab::cli {
@@ -56,6 +57,9 @@ struct Io {
   map::StoredMap* map = nullptr;
   /// When set (with `events`), `simulate` puts its JSON document here as values, not as text.
   JsonValue* document = nullptr;
+  /// When set, `family` and `modes` without --out put their files here, (name, bytes), instead
+  /// of on disk, and draw no picture.
+  std::vector<std::pair<std::string, std::string>>* files = nullptr;
 
   void reportProgress(double fraction, const std::string& text) const {
     if (progress) progress(fraction, text);

@@ -164,9 +164,9 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
     error = "family: the 1IPP family of Theorem 2.1 needs the 1:2 resonant chain (give no --k2)";
     return kExitInvalidInput;
   }
-  const auto output = parseOutputPrefix(parser, "PREFIX.csv, PREFIX.npy, PREFIX.json, ...", "family", error);
+  const auto output = openFileOutput(parser, io, "PREFIX.csv, PREFIX.npy, PREFIX.json, ...", "family", error);
   if (!output) return kExitInvalidInput;
-  const QString& prefix = *output;
+  const QString& prefix = output->prefix;
 
   const core::Chain<double>& chain = model.value->chain;
   const std::vector<core::FamilyPoint> family = core::onePeriodicFamily(chain, count, stop);
@@ -236,12 +236,12 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
                      "at T (exact contact search), else 0"},
       {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
   const QByteArray jsonBytes = QJsonDocument(json).toJson();
-  if (!saveAtomically(prefix + ".csv", csv, error) ||
-      !saveAtomically(prefix + ".npy", encodeNpy(array), error) ||
-      !saveAtomically(prefix + ".json", jsonBytes, error)) {
+  if (!output->save(prefix + ".csv", csv, error) ||
+      !output->save(prefix + ".npy", encodeNpy(array), error) ||
+      !output->save(prefix + ".json", jsonBytes, error)) {
     return 1;
   }
-  if (picturesAvailable()) {
+  if (picturesAvailable() && !output->inMemory()) {
     const QString title = QStringLiteral("1IPP family: frequency against energy (m2/m1 = %1, λ* = %2)")
                               .arg(m.m2 / m.m1, 0, 'g', 4)
                               .arg(core::lambdaStar(chain), 0, 'g', 4);

@@ -58,7 +58,7 @@ QJsonObject endJson(const core::FamilyEnd<S>& end) {
 const char* const kColumns = "energy,period,omega,trace,stability,u1,v1,min_impact_speed,min_clearance";
 
 template <typename S>
-int modesIn(const QCommandLineParser& parser, const QString& prefix, const QString& precision, int maxImpacts,
+int modesIn(const QCommandLineParser& parser, const FileOutput& output, const QString& precision, int maxImpacts,
             const Io& io, std::stop_token stop, QString& error) {
   const Parsed<ModelInput<S>> model = parseModel<S>(parser);
   if (!model.value) {
@@ -93,6 +93,7 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
       });
   if (stop.stop_requested() || !atlas.complete) return kExitInterrupted;
 
+  const QString& prefix = output.prefix;
   const QString base = QFileInfo(prefix).fileName();
   QJsonArray families;
   std::vector<std::pair<QString, QByteArray>> files;
@@ -227,9 +228,9 @@ int modesIn(const QCommandLineParser& parser, const QString& prefix, const QStri
       {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
   files.emplace_back(prefix + ".json", QJsonDocument(json).toJson());
   for (const auto& [path, bytes] : files) {
-    if (!saveAtomically(path, bytes, error)) return 1;
+    if (!output.save(path, bytes, error)) return 1;
   }
-  if (picturesAvailable()) {
+  if (picturesAvailable() && !output.inMemory()) {
     const QString title = QStringLiteral("Nonlinear modes: frequency against energy (m2/m1 = %1, up to %2 impacts)")
                               .arg(double(m.m2 / m.m1), 0, 'g', 4)
                               .arg(maxImpacts);
@@ -270,7 +271,7 @@ int runModes(const QCommandLineParser& parser, const Io& io, std::stop_token sto
     error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
     return kExitInvalidInput;
   }
-  const auto output = parseOutputPrefix(parser, "PREFIX.json, PREFIX-family-N.csv, ...", "modes", error);
+  const auto output = openFileOutput(parser, io, "PREFIX.json, PREFIX-family-N.csv, ...", "modes", error);
   if (!output) return kExitInvalidInput;
   if (precision == "long") return modesIn<long double>(parser, *output, precision, maxImpacts, io, stop, error);
   if (precision == "quad") return modesIn<core::Quad>(parser, *output, precision, maxImpacts, io, stop, error);

@@ -62,15 +62,17 @@ class GrazeLabWarning(UserWarning):
 
 
 def _command(command, options, progress=None, events=False, positional=(), discard_events=False,
-             keep_map=False, document=False):
+             keep_map=False, document=False, keep_files=False):
     """Runs one command with the options that are not None; returns (output text, messages,
     events, decimals) or raises; with keep_map, (messages, map) for a map or merge held in
-    memory; with document (simulate), the output is its document as Results, not text. A
-    progress callback hears (1.0, "done") when the command has ended well."""
+    memory; with keep_files (family, modes), (messages, {name: bytes}) for files held in memory;
+    with document (simulate), the output is its document as Results, not text. A progress
+    callback hears (1.0, "done") when the command has ended well."""
     given = {name: value for name, value in options.items() if value is not None}
     line = _convert.arguments(command, given) + [str(p) for p in positional]
-    code, output, messages, table, decimals, kept, values = _run(
-        line, progress, events, MAX_EVENTS, discard_events, keep_map, Result if document else None)
+    code, output, messages, table, decimals, kept, values, files = _run(
+        line, progress, events, MAX_EVENTS, discard_events, keep_map, Result if document else None,
+        keep_files)
     lines = [text for text in messages.splitlines() if text.strip()]
     if code == 2:
         raise ValueError(_message(lines[-1] if lines else "invalid input"))
@@ -80,6 +82,8 @@ def _command(command, options, progress=None, events=False, positional=(), disca
         progress(1.0, "done")
     if keep_map:
         return lines, kept
+    if keep_files:
+        return lines, files
     if document:
         return values, lines, table, decimals
     return output.decode("utf-8"), lines, table, decimals
@@ -346,14 +350,12 @@ def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
 """
     options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
                    count=count, onepp=True)
-    with _Output(out, "family") as target:
-        _command("family", dict(options, out=target.prefix), progress)
-        with open(target.prefix + ".json") as handle:
-            result = _convert.parse_json(handle.read())
-        result["table"] = _convert.table(target.prefix + ".npy", target.prefix + ".csv")
-        if not target.kept:
-            result.pop("files")
-        return result
+    files = _Files(out, "family", *_command("family", dict(options, out=out), progress, keep_files=True))
+    result = _convert.parse_json(files.read(".json").decode("utf-8"))
+    result["table"] = _convert.table_from_bytes(files.read(".npy"), files.read(".csv"))
+    if out is None:
+        result.pop("files")
+    return result
 
 
 @_documented
@@ -374,17 +376,32 @@ def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
 """
     options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
                    max_impacts=max_impacts, energy_range=energy_range)
-    with _Output(out, "modes") as target:
-        _command("modes", dict(options, out=target.prefix), progress)
-        with open(target.prefix + ".json") as handle:
-            result = _convert.parse_json(handle.read())
-        folder = _os.path.dirname(target.prefix)
-        for entry in result["families"]:
-            csv_path = _os.path.join(folder, entry["file"])
-            entry["table"] = _convert.table(csv_path[:-len(".csv")] + ".npy", csv_path)
-            if not target.kept:
-                entry.pop("file")
-        return result
+    files = _Files(out, "modes", *_command("modes", dict(options, out=out), progress, keep_files=True))
+    result = _convert.parse_json(files.read(".json").decode("utf-8"))
+    for entry in result["families"]:
+        stem = entry["file"][:-len(".csv")]  # PREFIX-family-N, named from the prefix's base
+        suffix = stem[len(_os.path.basename(files.prefix)):]
+        entry["table"] = _convert.table_from_bytes(files.read(suffix + ".npy"), files.read(suffix + ".csv"))
+        if out is None:
+            entry.pop("file")
+    return result
+
+
+class _Files:
+    """The files of a family or modes: in memory (no `out`: the command handed them over) or
+    on disk under `out`, read by their suffix after the prefix."""
+
+    def __init__(self, out, name, lines, memory):
+        self.prefix = name if out is None else _os.fspath(out)
+        self.memory = memory or {}
+
+    def read(self, suffix):
+        path = self.prefix + suffix
+        kept = self.memory.get(path)
+        if kept is not None:
+            return kept
+        with open(path, "rb") as handle:
+            return handle.read()
 
 
 def _directory_command(command, table_file, out, progress, options):

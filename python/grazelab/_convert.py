@@ -5,6 +5,7 @@
 import csv
 import decimal
 import fractions
+import io
 import json
 import math
 import numbers
@@ -151,17 +152,18 @@ def parse_json(text, exact_decimals=False):
     return result
 
 
-def table(npy_path, csv_path):
-    """A table the command line wrote as PREFIX.npy (float64, rows x columns) and PREFIX.csv
-    (its header names the columns): a NumPy structured array with the CSV's column names,
-    a view of the .npy's data (no copy)."""
-    with open(csv_path, newline="") as handle:
-        names = next(csv.reader(handle))
-    data = _np.load(npy_path)
-    if data.ndim != 2 or data.shape[1] != len(names):
-        raise RuntimeError(f"{npy_path}: {data.shape} does not match the columns {names}")
-    data = _np.ascontiguousarray(data, dtype="<f8")
-    return data.view(_np.dtype([(name, "<f8") for name in names])).reshape(data.shape[0])
+def table_from_bytes(npy, csv_bytes):
+    """A table the command line handed over as the bytes of PREFIX.npy (float64, rows x columns)
+    and PREFIX.csv (its header names the columns): a NumPy structured array with the CSV's
+    column names, a view of the .npy bytes (no copy)."""
+    names = next(csv.reader(io.StringIO(csv_bytes.split(b"\n", 1)[0].decode("utf-8"))))
+    stream = io.BytesIO(npy)
+    _np.lib.format.read_magic(stream)  # the command line writes version 1.0
+    shape, fortran, dtype = _np.lib.format.read_array_header_1_0(stream)
+    if fortran or len(shape) != 2 or shape[1] != len(names) or dtype != _np.dtype("<f8"):
+        raise RuntimeError(f"a table of shape {shape} ({dtype}) does not match the columns {names}")
+    data = _np.frombuffer(npy, dtype="<f8", offset=stream.tell(), count=shape[0] * shape[1])
+    return data.view(_np.dtype([(name, "<f8") for name in names]))
 
 
 def csv_table(path):

@@ -3,7 +3,7 @@
 """The compiled part of the module (python/native_module.cpp): one command line run in
 process. Not for direct use: the functions of ``grazelab`` call it."""
 
-from typing import Callable, List, Optional, Tuple
+from typing import Callable, Dict, List, Optional, Tuple
 
 import numpy as np
 
@@ -11,9 +11,9 @@ version: str
 
 def run(arguments: List[str], progress: Optional[Callable[[Optional[float], str], None]] = ...,
         events: bool = ..., max_events: int = ..., discard_events: bool = ...,
-        keep_map: bool = ..., result_type: Optional[type] = ...
+        keep_map: bool = ..., result_type: Optional[type] = ..., keep_files: bool = ...
         ) -> Tuple[int, bytes, str, Optional[np.ndarray], Optional[List[str]],
-                   Optional[Tuple[bytes, np.ndarray]], Optional[dict]]: ...
+                   Optional[Tuple[bytes, np.ndarray]], Optional[dict], Optional[Dict[str, bytes]]]: ...
 
 def simulate(options: List[Tuple[str, str]], result_type: type, events: bool = ...,
              max_events: int = ..., discard_events: bool = ...

@@ -175,6 +175,31 @@ def test_map_writes_no_file_unless_asked(tmp_path, monkeypatch):
         np.testing.assert_array_equal(np.load(tmp_path / f"m-{quantity}.npy"), array, err_msg=quantity)
 
 
+def test_family_and_modes_write_no_file_unless_asked(tmp_path, monkeypatch):
+    # their files are handed over in memory: the tables are views of those bytes, and nothing
+    # is written, not even to a temporary folder; with out, the same tables from the files
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("TMPDIR", str(tmp_path))
+    tempfile.tempdir = None
+    try:
+        family = gl.family(count=40)
+        modes = gl.modes(max_impacts=1)
+    finally:
+        tempfile.tempdir = None
+    assert list(tmp_path.iterdir()) == []
+    assert "files" not in family and all("file" not in entry for entry in modes.families)
+    assert family.table.base is not None and not family.table.flags.owndata
+    kept_family = gl.family(count=40, out=tmp_path / "f")
+    kept_modes = gl.modes(max_impacts=1, out=tmp_path / "m")
+    assert (tmp_path / "f.npy").exists() and (tmp_path / "m.json").exists()
+    for name in family.table.dtype.names:
+        np.testing.assert_array_equal(kept_family.table[name], family.table[name], err_msg=name)
+    assert len(kept_modes.families) == len(modes.families) > 0
+    for kept, held in zip(kept_modes.families, modes.families):
+        for name in held.table.dtype.names:  # (NaN where a column has no value: equal)
+            np.testing.assert_array_equal(kept.table[name], held.table[name], err_msg=name)
+
+
 def test_family_table_is_the_cli_npy(cli, tmp_path):
     result = gl.family(m2=0.3, count=60)
     done = cli("family", "--onepp", "--m2", "0.3", "--count", "60", "--out", str(tmp_path / "f"))
