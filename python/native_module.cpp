@@ -27,14 +27,14 @@
 #include <thread>
 #include <vector>
 
-#include "cli_io.h"
+#include "io/cli_io.h"
 #include "cli_run.h"
 #include "exit_codes.h"
-#include "option_values.h"
-#include "simulate_command.h"
+#include "io/option_values.h"
+#include "commands/simulate_command.h"
 #include "value_to_python.h"
 #include "core/experiments/maps.h"
-#include "map_files.h"
+#include "io/map_files.h"
 
 namespace py = pybind11;
 

@@ -4,7 +4,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "json_value.h"
+#include "io/json_value.h"
 
 namespace grazelab::python {
 

@@ -12,16 +12,16 @@
 #include <functional>
 #include <vector>
 
-#include "cli_input.h"
-#include "cli_output.h"
+#include "io/cli_input.h"
+#include "io/cli_output.h"
 #include "core/solver/trust.h"
-#include "family_command.h"
-#include "map_command.h"
-#include "modes_command.h"
+#include "commands/family_command.h"
+#include "commands/map_command.h"
+#include "commands/modes_command.h"
 #include "exit_codes.h"
-#include "orbit_command.h"
-#include "report_command.h"
-#include "simulate_command.h"
+#include "commands/orbit_command.h"
+#include "commands/report_command.h"
+#include "commands/simulate_command.h"
 
 namespace grazelab::cli {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <stop_token>
 
-#include "cli_io.h"
+#include "io/cli_io.h"
 #include "core/version.h"
 
 namespace grazelab::cli {

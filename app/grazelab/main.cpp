@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "core/version.h"
-#include "ui/headless.h"
-#include "ui/latency_bench.h"
-#include "ui/main_window.h"
+#include "ui/window/headless.h"
+#include "ui/window/latency_bench.h"
+#include "ui/window/main_window.h"
 
 namespace {
 

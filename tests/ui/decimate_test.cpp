@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-#include "ui/decimate.h"
+#include "ui/plots/decimate.h"
 #include "ui/plots/run_points.h"
 
 using grazelab::ui::decimatePath;

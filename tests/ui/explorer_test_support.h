@@ -9,8 +9,8 @@
 
 #include <memory>
 
-#include "ui/main_window.h"
-#include "ui/sim_controller.h"
+#include "ui/window/main_window.h"
+#include "ui/compute/sim_controller.h"
 
 namespace grazelab::ui::testing {
 

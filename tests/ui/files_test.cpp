@@ -18,13 +18,13 @@
 #include <QTest>
 
 #include "tests/ui/explorer_test_support.h"
-#include "ui/export.h"
-#include "ui/main_window.h"
-#include "ui/number_box.h"
-#include "ui/parameter_panel.h"
+#include "ui/window/export.h"
+#include "ui/window/main_window.h"
+#include "ui/widgets/number_box.h"
+#include "ui/widgets/parameter_panel.h"
 #include "ui/plots/plot_view.h"
 #include "ui/plots/scene_view.h"
-#include "ui/session.h"
+#include "ui/window/session.h"
 
 using namespace grazelab::ui;
 using grazelab::ui::testing::openTestWindow;

@@ -9,8 +9,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "ui/params.h"
-#include "ui/session.h"
+#include "ui/compute/params.h"
+#include "ui/window/session.h"
 
 using namespace grazelab::ui;
 

@@ -14,7 +14,7 @@
 
 #include "core/model/linear_modes.h"
 #include "tests/ui/explorer_test_support.h"
-#include "ui/main_window.h"
+#include "ui/window/main_window.h"
 #include "ui/plots/chain_view.h"
 #include "ui/pictures/heat_map.h"
 #include "ui/plots/landscape_view.h"

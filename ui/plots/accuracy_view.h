@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "ui/plots/scene_view.h"
-#include "ui/sim_types.h"
+#include "ui/compute/sim_types.h"
 
 class QComboBox;
 class QLabel;

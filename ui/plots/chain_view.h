@@ -12,7 +12,7 @@
 
 #include "core/solver/simulate.h"
 #include "ui/plots/scene_view.h"
-#include "ui/sim_types.h"
+#include "ui/compute/sim_types.h"
 
 class QCheckBox;
 class QComboBox;

@@ -2,7 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include "ui/figures.h"
+#include "ui/compute/figures.h"
 #include "ui/plots/plot_view.h"
 
 namespace grazelab::ui {

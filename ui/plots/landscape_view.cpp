@@ -6,7 +6,7 @@
 
 #include <QComboBox>
 
-#include "ui/eliding_combo_box.h"
+#include "ui/widgets/eliding_combo_box.h"
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMouseEvent>

@@ -14,7 +14,7 @@
 #include "core/experiments/maps.h"
 #include "ui/pictures/heat_map.h"
 #include "ui/plots/scene_view.h"
-#include "ui/sim_types.h"
+#include "ui/compute/sim_types.h"
 
 class QComboBox;
 class QLabel;

@@ -22,7 +22,7 @@
 #include <limits>
 #include <tuple>
 
-#include "ui/decimate.h"
+#include "ui/plots/decimate.h"
 #include "ui/plots/plot_grid.h"
 #include "ui/plots/plot_style.h"
 #include "ui/plots/wrapped_legend.h"

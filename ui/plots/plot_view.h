@@ -17,9 +17,9 @@
 #include <span>
 #include <vector>
 
-#include "ui/decimate.h"
+#include "ui/plots/decimate.h"
 #include "ui/plots/scene_view.h"
-#include "ui/sim_types.h"
+#include "ui/compute/sim_types.h"
 
 class QGraphicsTextItem;
 class QLabel;

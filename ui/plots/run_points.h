@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/solver/recorder.h"
-#include "ui/decimate.h"
+#include "ui/plots/decimate.h"
 
 /// A run's items as points, read where the run keeps them: the views draw a run without a
 /// copy of it (they hold the run itself, shared, for as long as they show it).

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/model/state.h"
-#include "ui/sim_types.h"
+#include "ui/compute/sim_types.h"
 
 class QWidget;
 

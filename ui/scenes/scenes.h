@@ -3,7 +3,7 @@
 #pragma once
 
 // One function per scene, each in its own file; makeScenes() lists them in the order of the note.
-#include "ui/scene.h"
+#include "ui/compute/scene.h"
 
 namespace grazelab::ui {
 

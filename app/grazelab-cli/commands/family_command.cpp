@@ -1,0 +1,264 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// `grazelab-cli family --onepp`: the one-impact-per-period family of the chain (issue 10).
+#include "commands/family_command.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cmath>
+#include <optional>
+#include <type_traits>
+
+#include "io/cli_input.h"
+#include "core/orbits/onepp_family.h"
+#include "core/orbits/special_orbits.h"
+#include "core/orbits/onepp_family_points.h"
+#include "io/npy.h"
+#include "io/output_files.h"
+#include "exit_codes.h"
+
+#include <QPainter>
+
+#include "ui/pictures/family_picture.h"
+
+namespace grazelab::cli {
+namespace {
+
+QByteArray number(double value) { return QByteArray::number(value, 'g', 17); }
+
+QJsonObject pointJson(const core::FamilyPoint& p) {
+  return {{"T", p.T}, {"omega", p.omega}, {"V", p.V}, {"u1", p.u1}, {"energy", p.energy}};
+}
+
+
+// A stability class as a number for the .npy file (NaN where there is no admissible orbit).
+double stabilityCode(core::Stability stability) {
+  return double(int(stability));
+}
+
+template <typename S>
+QJsonValue scalarJson(const S& value) {
+  // binary128's digits would be lost in a JSON double: such numbers are written as text too
+  if constexpr (std::is_same_v<S, double>) return value;
+  else return QString::fromStdString(core::formatScalar(value));
+}
+
+template <typename S>
+QJsonObject stateJson(const core::BasicState<S>& x) {
+  return {{"u1", scalarJson(x.u1)}, {"u2", scalarJson(x.u2)}, {"v1", scalarJson(x.v1)}, {"v2", scalarJson(x.v2)}};
+}
+
+// The stability along the family in precision S: the trace of each admissible row, and the
+// bifurcations over (0, T2) with the 2-impact orbit born at each flip.
+template <typename S>
+struct FamilyStability {
+  std::vector<double> traces;
+  std::vector<double> codes;
+  QJsonArray bifurcations;
+};
+
+template <typename S>
+std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& parser,
+                                                  const std::vector<core::FamilyPoint>& family,
+                                                  const Io& io, std::stop_token stop, QString& error) {
+  const Parsed<ModelInput<S>> model = parseModel<S>(parser);
+  if (!model.value) {
+    error = model.error;
+    return std::nullopt;
+  }
+  const core::Chain<S>& chain = model.value->chain;
+  FamilyStability<S> result;
+  for (const core::FamilyPoint& p : family) {
+    if (stop.stop_requested()) return std::nullopt;
+    const std::size_t index = result.traces.size();
+    if (index % 64 == 0) {
+      io.reportProgress(0.9 * double(index) / double(family.size()),
+                        "stability of orbit " + std::to_string(index + 1) + " of " +
+                            std::to_string(family.size()));
+    }
+    const core::OrbitSearch<S> found = p.admissible ? core::onePeriodicOrbitStability(chain, S(p.T))
+                                                    : core::OrbitSearch<S>{};
+    result.traces.push_back(found.orbit ? double(found.orbit->trace) : std::nan(""));
+    result.codes.push_back(found.orbit ? stabilityCode(found.orbit->stability) : std::nan(""));
+  }
+  const S T2 = core::twoPi<S>() / chain.omegaSlow;
+  io.reportProgress(0.9, "bifurcations of the family");
+  const std::vector<core::FamilyBifurcation<S>> points = core::onePeriodicBifurcations(chain, 2000, stop);
+  std::vector<S> energies;
+  for (const core::FamilyBifurcation<S>& b : points) energies.push_back(b.energy);
+  for (const core::FamilyBifurcation<S>& b : points) {
+    if (stop.stop_requested()) return std::nullopt;
+    QJsonObject point{{"kind", QString::fromUtf8(core::toString(b.kind).data())},
+                      {"T", scalarJson(b.T)},
+                      {"T_over_T2", scalarJson(S(b.T / T2))},
+                      {"energy", scalarJson(b.energy)},
+                      {"trace", scalarJson(b.trace)},
+                        {"energy_error", scalarJson(b.energyError)},
+                      {"state", stateJson(b.state)}};
+    if (b.kind == core::PointKind::Undecided) {
+      point["note"] = "not a bifurcation: beyond this period the orbit's data lose their digits "
+                      "(near a multiple of T1) or a contact cannot be decided in this precision; "
+                      "a higher --precision moves the point";
+    }
+    if (!b.checked) {
+      point["checked"] = false;
+      point["note"] = "not solved to its definition in this precision (the trace is not within "
+                      "rounding of +-2 here): where the search stopped, not a result";
+    }
+    if (b.kind == core::PointKind::PeriodDoubling) {
+      const core::FlipSwitch<S> born = core::switchAtFlip(chain, b, 1, core::birthOffsetBound(b, energies), stop);
+      if (born.search.orbit) {
+        const core::PeriodicOrbit<S>& o = *born.search.orbit;
+        const std::string symmetry = core::orbitSymmetry(o, core::symmetryTolerance<S>());
+        point["born"] = QJsonObject{{"impacts", o.impacts},
+                                    {"side", QString::fromUtf8(core::toString(born.side).data())},
+                                    {"energy", scalarJson(o.energy)},
+                                    {"period", scalarJson(o.period)},
+                                    {"trace", scalarJson(o.trace)},
+                                    {"stability", QString::fromStdString(std::string(core::toString(o.stability)))},
+                                    {"symmetry", symmetry.empty() ? QJsonValue() : QJsonValue(QString::fromStdString(symmetry))},
+                                    {"state", stateJson(o.state)}};
+      } else {
+        point["born"] = QJsonObject{{"impacts", 2}, {"problem", QString::fromStdString(born.search.problem)}};
+      }
+    }
+    result.bifurcations.append(point);
+  }
+  if (stop.stop_requested()) return std::nullopt;
+  return result;
+}
+
+}  // namespace
+
+int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
+  if (!parser.isSet("onepp")) {
+    error = "family: name the family: --onepp (one impact per period)";
+    return kExitInvalidInput;
+  }
+  const QString precision = parser.value("precision");
+  if (!QStringList{"auto", "double", "long", "quad"}.contains(precision)) {
+    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
+    return kExitInvalidInput;
+  }
+  std::int64_t count = 2000;
+  if (parser.isSet("count")) {
+    bool ok = false;
+    count = parser.value("count").toLongLong(&ok);
+    if (!ok || count < 1 || count > 10'000'000) {
+      error = QStringLiteral("--count: '%1' is not a count from 1 to 10000000").arg(parser.value("count"));
+      return kExitInvalidInput;
+    }
+  }
+  const Parsed<ModelInput<double>> model = parseModel<double>(parser);
+  if (!model.value) {
+    error = model.error;
+    return kExitInvalidInput;
+  }
+  if (!model.value->chain.resonant) {
+    error = "family: the 1IPP family of Theorem 2.1 needs the 1:2 resonant chain (give no --k2)";
+    return kExitInvalidInput;
+  }
+  const auto output = openFileOutput(parser, io, "PREFIX.csv, PREFIX.npy, PREFIX.json, ...", "family", error);
+  if (!output) return kExitInvalidInput;
+  const QString& prefix = output->prefix;
+
+  const core::Chain<double>& chain = model.value->chain;
+  const std::vector<core::FamilyPoint> family = core::onePeriodicFamily(chain, count, stop);
+  if (stop.stop_requested()) return kExitInterrupted;
+  const core::FamilyPoint end = core::grazingEnd(chain);
+  // the stability of every admissible orbit and the family's bifurcations, in the precision asked
+  std::vector<double> traces;
+  std::vector<double> codes;
+  QJsonArray bifurcations;
+  const auto take = [&](auto stability) {
+    if (!stability) return false;
+    traces = std::move(stability->traces);
+    codes = std::move(stability->codes);
+    bifurcations = std::move(stability->bifurcations);
+    return true;
+  };
+  const bool computed = precision == "long"   ? take(familyStability<long double>(parser, family, io, stop, error))
+                        : precision == "quad" ? take(familyStability<core::Quad>(parser, family, io, stop, error))
+                                              : take(familyStability<double>(parser, family, io, stop, error));
+  if (stop.stop_requested()) return kExitInterrupted;
+  if (!computed) return kExitInvalidInput;
+
+  QByteArray csv = "T,omega,V,u1,energy,admissible,trace,stability\n";
+  NpyArray array;
+  array.rows = std::int64_t(family.size());
+  array.columns = 8;
+  for (std::size_t i = 0; i < family.size(); ++i) {
+    const core::FamilyPoint& p = family[i];
+    const QByteArray stability = std::isnan(codes[i]) ? QByteArray()
+                                 : QByteArray(core::toString(core::Stability(int(codes[i]))).data());
+    csv += number(p.T) + "," + number(p.omega) + "," + number(p.V) + "," + number(p.u1) + "," +
+           number(p.energy) + "," + (p.admissible ? "1" : "0") + "," +
+           (std::isnan(traces[i]) ? QByteArray() : number(traces[i])) + "," + stability + "\n";
+    for (double v : {p.T, p.omega, p.V, p.u1, p.energy, p.admissible ? 1.0 : 0.0, traces[i], codes[i]}) {
+      array.reals.push_back(v);
+    }
+  }
+  const core::Model& m = chain.model;
+  const QJsonObject json{
+      {"format", "grazelab-family"},
+      {"family", "onepp"},
+      {"model", QJsonObject{{"m1", m.m1}, {"m2", m.m2}, {"k1", m.k1}, {"k2", m.k2}, {"gap", m.gap},
+                            {"T2", core::twoPi<double>() / chain.omegaSlow}}},
+      {"lambda_star", core::lambdaStar(chain)},
+      {"grazing_end", pointJson(end)},
+      {"columns", QJsonArray{"T", "omega", "V", "u1", "energy", "admissible", "trace", "stability"}},
+      {"stability_precision", precision == "auto" ? QStringLiteral("double") : precision},
+      {"trace", "tr DP of the return map at fixed energy (exact: flow and saltation matrices), in "
+                "the stability precision; empty (NaN in the .npy) where the orbit is not admissible"},
+      {"stability", "elliptic (|tr| < 2), hyperbolic (tr > 2), flip-hyperbolic (tr < -2), parabolic "
+                    "(|tr| = 2 within rounding); in the .npy 0, 1, 2, 3 (NaN: not admissible)"},
+      {"bifurcations", bifurcations},
+      {"rows", qint64(family.size())},
+      {"periods", QStringLiteral("T2 k / (count + 1) for k = 1 ... %1, and T2 (1 - 2^-k) for k = 8 ... 40, "
+                                 "sorted; multiples of T1 left out").arg(count)},
+      {"energy", "E = 1/2 v^T M v + 1/2 u^T K u of the post-impact state (constant on the orbit)"},
+      {"post_impact_state", "u1 = u1, u2 = gap, v1 = 0, v2 = V"},
+      {"conditioning", "each row is computed in binary128 from its double period and rounded "
+                       "once; near T2, V is conditioned like T2 / (T2 - T) in T and in the "
+                       "masses: a mass that is not a binary number (m2 = 0.3) read exactly moves "
+                       "V there by up to that factor times 1e-17"},
+      {"files", QJsonObject{{"csv", QFileInfo(prefix).fileName() + ".csv"},
+                            {"npy", QFileInfo(prefix).fileName() + ".npy (float64, rows x 8 "
+                                    "columns in the CSV's order, admissible as 1.0 / 0.0, "
+                                    "stability as 0..3)"}}},
+      {"admissible", "1 when V < 0 and the free flight from the data first returns to the stop "
+                     "at T (exact contact search), else 0"},
+      {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
+  const QByteArray jsonBytes = QJsonDocument(json).toJson();
+  if (!output->save(prefix + ".csv", csv, error) ||
+      !output->save(prefix + ".npy", encodeNpy(array), error) ||
+      !output->save(prefix + ".json", jsonBytes, error)) {
+    return 1;
+  }
+  if (picturesAvailable() && !output->inMemory()) {
+    const QString title = QStringLiteral("1IPP family: frequency against energy (m2/m1 = %1, λ* = %2)")
+                              .arg(m.m2 / m.m1, 0, 'g', 4)
+                              .arg(core::lambdaStar(chain), 0, 'g', 4);
+    const QSize size(1100, 760);
+    const bool drawn = savePngAndSvg(
+        prefix, size, title, "GrazeLabFamily", QJsonDocument(json).toJson(QJsonDocument::Compact),
+        [&](QPainter& painter) {
+          pictures::paintFrequencyEnergy(painter, QRectF(QPointF(0, 0), size), family, end, title);
+        },
+        error);
+    if (!drawn) return 1;
+  }
+  std::int64_t admissible = 0;
+  for (const auto& p : family) admissible += p.admissible ? 1 : 0;
+  std::fprintf(io.messages, "grazelab-cli: family: %lld orbits (%lld admissible): %s.csv\n",
+               (long long)family.size(), (long long)admissible, qPrintable(prefix));
+  return kExitOk;
+}
+
+}  // namespace grazelab::cli

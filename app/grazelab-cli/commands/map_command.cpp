@@ -1,0 +1,330 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "commands/map_command.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
+
+#include <atomic>
+#include <optional>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "io/cli_input.h"
+#include "io/map_files.h"
+#include "io/map_picture.h"
+#include "io/output_files.h"
+#include "parallel/tbb_parallel_for.h"
+#include "exit_codes.h"
+
+namespace grazelab::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// "NAME:from:to:count"
+std::optional<core::MapAxis> parseAxis(const QString& option, const QString& text,
+                                         QString& error) {
+  const QStringList parts = text.split(':');
+  if (parts.size() != 4) {
+    error = QStringLiteral("--%1: '%2' is not NAME:from:to:count").arg(option, text);
+    return std::nullopt;
+  }
+  const auto variable = core::parseMapVariable(parts[0].toStdString());
+  if (!variable) {
+    error = QStringLiteral("--%1: '%2' is not a variable; use one of %3")
+                .arg(option, parts[0], QString::fromStdString(core::mapVariableNames()));
+    return std::nullopt;
+  }
+  bool okFrom = false, okTo = false, okCount = false;
+  core::MapAxis axis;
+  axis.variable = *variable;
+  axis.from = parts[1].toDouble(&okFrom);
+  axis.to = parts[2].toDouble(&okTo);
+  axis.count = parts[3].toLongLong(&okCount);
+  if (!okFrom || !okTo) {
+    error = QStringLiteral("--%1: '%2' and '%3' must be numbers").arg(option, parts[1], parts[2]);
+    return std::nullopt;
+  }
+  if (!okCount || axis.count < 1) {
+    error = QStringLiteral("--%1: '%2' is not a count (a whole number >= 1)").arg(option, parts[3]);
+    return std::nullopt;
+  }
+  return axis;
+}
+
+struct Shard {
+  std::int64_t k = 1;
+  std::int64_t n = 1;
+};
+
+std::optional<Shard> parseShard(const QString& text, QString& error) {
+  const QStringList parts = text.split('/');
+  bool okK = false, okN = false;
+  Shard shard;
+  if (parts.size() == 2) {
+    shard.k = parts[0].toLongLong(&okK);
+    shard.n = parts[1].toLongLong(&okN);
+  }
+  constexpr std::int64_t kMaxStripes = std::int64_t(1) << 31;
+  if (!okK || !okN || shard.n < 1 || shard.n > kMaxStripes || shard.k < 1 || shard.k > shard.n) {
+    error = QStringLiteral("--shard: '%1' is not K/N with 1 <= K <= N (stripes count from 1)").arg(text);
+    return std::nullopt;
+  }
+  return shard;
+}
+
+std::optional<core::MapSpec> parseSpec(const QCommandLineParser& parser, QString& error) {
+  core::MapSpec spec;
+  for (const char* name : {"x", "y"}) {
+    if (!parser.isSet(name)) {
+      error = QStringLiteral("--%1 NAME:from:to:count is required").arg(name);
+      return std::nullopt;
+    }
+  }
+  const auto x = parseAxis("x", parser.value("x"), error);
+  if (!x) return std::nullopt;
+  const auto y = parseAxis("y", parser.value("y"), error);
+  if (!y) return std::nullopt;
+  spec.x = *x;
+  spec.y = *y;
+  const Parsed<ModelInput<double>> model = parseModel<double>(parser);
+  if (!model.value) {
+    error = model.error;
+    return std::nullopt;
+  }
+  spec.model = model.value->model;
+  if (parser.isSet("glo") || parser.isSet("onepp") || parser.isSet("state") || parser.isSet("perturb")) {
+    Parsed<core::StartSpec<double>> start = parseStartSpec<double>(parser, spec.model);
+    if (!start.value) {
+      error = start.error;
+      return std::nullopt;
+    }
+    spec.perturbation = start.value->perturbation;
+    start.value->perturbation.reset();
+    // --perturb alone: on the grazing-start plane
+    if (parser.isSet("glo") || parser.isSet("onepp") || parser.isSet("state")) spec.start = start.value;
+  }
+  if (parser.isSet("contacts")) {
+    bool ok = false;
+    spec.contacts = parser.value("contacts").toLongLong(&ok);
+    if (!ok || spec.contacts < 1) {
+      error = QStringLiteral("--contacts: '%1' is not a count >= 1").arg(parser.value("contacts"));
+      return std::nullopt;
+    }
+  }
+  if (parser.isSet("trust")) {
+    const QString trust = parser.value("trust");
+    if (trust != "off" && trust != "auto") {
+      error = QStringLiteral("--trust: '%1' is not off or auto (a map estimates each point's "
+                             "horizon with auto)").arg(trust);
+      return std::nullopt;
+    }
+    spec.estimateHorizon = trust == "auto";
+  }
+  const std::string problem = core::checkMap(spec);
+  if (!problem.empty()) {
+    error = QString::fromStdString(problem);
+    return std::nullopt;
+  }
+  // a base start that cannot be made (an inadmissible --onepp T) would give a map of NaN: said
+  // here, when no axis changes the chain it is made on
+  const auto changesChain = [](core::MapVariable v) {
+    return v == core::MapVariable::MassRatio || v == core::MapVariable::Gap ||
+           v == core::MapVariable::Detuning;
+  };
+  if (spec.start && !changesChain(spec.x.variable) && !changesChain(spec.y.variable)) {
+    const core::StartOrProblem<double> start = core::makeStart(model.value->chain, *spec.start);
+    if (!start.start) {
+      const bool onepp = spec.start->kind == core::StartSpec<double>::Kind::OnePeriodic;
+      error = (onepp ? QStringLiteral("--onepp: ") : QString()) + QString::fromStdString(start.problem);
+      return std::nullopt;
+    }
+  }
+  return spec;
+}
+
+// a line on the messages at most every two seconds while a long map computes, and each step
+// to the caller's progress
+class ProgressLine {
+ public:
+  ProgressLine(std::int64_t total, const Io& io) : m_total(total), m_io(io) {}
+  void operator()(std::int64_t done) {
+    if (m_io.progress) {
+      m_io.progress(double(done) / double(m_total),
+                    std::to_string(done) + " of " + std::to_string(m_total) + " points");
+    }
+    const std::int64_t now = Clock::now().time_since_epoch().count();
+    std::int64_t last = m_last.load();
+    const std::int64_t every = std::chrono::duration_cast<Clock::duration>(std::chrono::seconds(2)).count();
+    if (now - last < every || !m_last.compare_exchange_strong(last, now)) return;
+    std::fprintf(m_io.messages, "grazelab-cli: map: %lld of %lld points (%.0f %%)\n", (long long)done,
+                 (long long)m_total, 100.0 * double(done) / double(m_total));
+  }
+
+ private:
+  std::int64_t m_total;
+  const Io& m_io;
+  std::atomic<std::int64_t> m_last = Clock::now().time_since_epoch().count();
+};
+
+}  // namespace
+
+void addMapOptions(QCommandLineParser& parser) {
+  parser.addOptions({
+      {"x", QStringLiteral("map: the columns, NAME:from:to:count; NAME is one of %1.")
+                .arg(QString::fromStdString(core::mapVariableNames())), "NAME:from:to:count"},
+      {"y", "map: the rows, NAME:from:to:count.", "NAME:from:to:count"},
+      {"threads", "map: threads (default: all cores).", "T"},
+      {"shard", "map: compute stripe K of N of the rows only (K from 1 to N); join the "
+                "stripes with merge.", "K/N"},
+      {"picture", "map: the quantity drawn in PREFIX.png/.svg (default fft_first).", "QUANTITY"},
+      {"count", "family: periods T in (0, T2) (default 2000).", "N"},
+  });
+}
+
+int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
+  if (parser.value("precision") != "auto" && parser.value("precision") != "double") {
+    error = "--precision: a map runs in auto precision (double, each point raised to long double "
+            "or binary128 where a contact needs it); use simulate for one run in long or quad";
+    return kExitInvalidInput;
+  }
+  const auto spec = parseSpec(parser, error);
+  if (!spec) return kExitInvalidInput;
+  Shard shard;
+  if (parser.isSet("shard")) {
+    const auto parsed = parseShard(parser.value("shard"), error);
+    if (!parsed) return kExitInvalidInput;
+    shard = *parsed;
+  }
+  int threads = parallel::defaultThreadCount();
+  if (parser.isSet("threads")) {
+    bool ok = false;
+    threads = parser.value("threads").toInt(&ok);
+    if (!ok || threads < 1) {
+      error = QStringLiteral("--threads: '%1' is not a count >= 1").arg(parser.value("threads"));
+      return kExitInvalidInput;
+    }
+  }
+  const QString picture = parser.isSet("picture") ? parser.value("picture") : "fft_first";
+  if (!core::parseQuantity(picture.toStdString())) {
+    QStringList names;
+    for (const auto& info : core::quantities()) names << QString::fromUtf8(info.name);
+    error = QStringLiteral("--picture: '%1' is not a quantity; use one of %2").arg(picture, names.join(", "));
+    return kExitInvalidInput;
+  }
+  // files unless the caller takes the map in memory (the Python module) without asking for them
+  const bool writesFiles = !io.map || parser.isSet("out");
+  std::optional<QString> prefix;
+  if (writesFiles) {
+    prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
+    if (!prefix) return kExitInvalidInput;
+  }
+
+  const core::RowRange rows = core::stripe(spec->y.count, shard.k, shard.n);
+  const std::int64_t points = (rows.rowEnd - rows.rowBegin) * spec->x.count;
+  // a summary is 80 bytes: beyond 2^27 points (10.7 GB) a process should take a stripe
+  constexpr std::int64_t kMaxPointsInMemory = std::int64_t(1) << 27;
+  if (points > kMaxPointsInMemory) {
+    error = QStringLiteral("%1 points (%2 GB in memory) in one process: split the rows with "
+                           "--shard K/N and join the stripes with merge")
+                .arg(points).arg(double(points) * 80 / 1e9, 0, 'f', 1);
+    return kExitInvalidInput;
+  }
+  const bool whole = rows.rowBegin == 0 && rows.rowEnd == spec->y.count;
+  const bool drawsPicture = writesFiles && whole && picturesAvailable();
+  // the fonts load while the points are computed (the picture needs them afterwards)
+  std::thread fontThread;
+  if (drawsPicture) fontThread = std::thread(map::prepareFonts);
+  ProgressLine progress(points, io);
+  const auto started = Clock::now();
+  const core::MapRows computed = core::computeMap(
+      *spec, rows, parallel::tbbParallelFor(threads), stop,
+      [&progress](std::int64_t done) { progress(done); });
+  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  if (fontThread.joinable()) fontThread.join();
+  if (!computed.complete) return kExitInterrupted;
+
+  map::StoredMap stored;
+  stored.description.spec = map::specJson(*spec, computed.period, picture);
+  stored.description.run = {{"seconds", seconds},
+                            {"threads", threads},
+                            {"shard", parser.isSet("shard") ? parser.value("shard") : QString("1/1")},
+                            {"complete", true}};
+  stored.rows = rows;
+  stored.columns = computed.columns;
+  stored.totalRows = spec->y.count;
+  stored.points = computed.points;
+  // the picture (fonts, painting, PNG and SVG encoding: more than the arrays) is drawn on a
+  // thread of its own while the arrays are written, so that on two cores the files add no wall
+  // time (QPainter draws on images in any thread; the two write different files)
+  if (!writesFiles) {
+    *io.map = std::move(stored);
+    return kExitOk;
+  }
+  bool pictureWritten = true;
+  QString pictureError;
+  std::thread pictureThread;
+  if (drawsPicture) {
+    pictureThread = std::thread(
+        [&] { pictureWritten = map::writeMapPicture(*prefix, stored, pictureError); });
+  }
+  const bool filesWritten = map::writeMapFiles(*prefix, stored, error);
+  if (pictureThread.joinable()) pictureThread.join();
+  if (!filesWritten) return 1;
+  if (!pictureWritten) {
+    error = pictureError;
+    return 1;
+  }
+  std::fprintf(io.messages, "grazelab-cli: map: %lld points in %.3f s on %d thread%s (%.0f runs/s): %s.json\n",
+               (long long)points, seconds, threads, threads == 1 ? "" : "s",
+               seconds > 0 ? double(points) / seconds : 0.0, qPrintable(*prefix));
+  if (io.map) *io.map = std::move(stored);
+  return kExitOk;
+}
+
+int runMerge(const QCommandLineParser& parser, const QStringList& parts, const Io& io,
+             std::stop_token stop, QString& error) {
+  if (parts.isEmpty()) {
+    error = "merge: give the parts' prefixes after --out PREFIX";
+    return kExitInvalidInput;
+  }
+  const bool writesFiles = !io.map || parser.isSet("out");
+  std::optional<QString> prefix;
+  if (writesFiles) {
+    prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
+    if (!prefix) return kExitInvalidInput;
+  }
+  std::vector<map::StoredMap> stored;
+  for (const QString& part : parts) {
+    if (stop.stop_requested()) return kExitInterrupted;
+    QString reason;
+    auto read = map::readMapFiles(part, reason);
+    if (!read) {
+      error = "merge: " + reason;
+      return kExitInvalidInput;
+    }
+    stored.push_back(std::move(*read));
+  }
+  auto whole = map::mergeStripes(std::move(stored), error);
+  if (!whole) {
+    error = "merge: " + error;
+    return kExitInvalidInput;
+  }
+  if (stop.stop_requested()) return kExitInterrupted;
+  if (!writesFiles) {
+    *io.map = std::move(*whole);
+    return kExitOk;
+  }
+  if (!map::writeMapFiles(*prefix, *whole, error)) return 1;
+  if (picturesAvailable() && !map::writeMapPicture(*prefix, *whole, error)) return 1;
+  std::fprintf(io.messages, "grazelab-cli: merge: %lld parts, %lld x %lld points: %s.json\n",
+               (long long)parts.size(), (long long)whole->totalRows, (long long)whole->columns,
+               qPrintable(*prefix));
+  if (io.map) *io.map = std::move(*whole);
+  return kExitOk;
+}
+
+}  // namespace grazelab::cli

@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// `grazelab-cli orbit`: one periodic impacting orbit, its multipliers, stability and checks.
+#include "commands/orbit_command.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+#include <cstdio>
+#include <string>
+
+#include "io/cli_input.h"
+#include "io/cli_output.h"
+#include "core/orbits/onepp_family_points.h"
+#include "core/orbits/periodic_orbit.h"
+#include "exit_codes.h"
+
+namespace grazelab::cli {
+namespace {
+
+template <typename S>
+std::string stateJson(const core::BasicState<S>& x) {
+  return "{\"u1\": " + jsonNumber(x.u1) + ", \"u2\": " + jsonNumber(x.u2) + ", \"v1\": " + jsonNumber(x.v1) +
+         ", \"v2\": " + jsonNumber(x.v2) + "}";
+}
+
+template <typename S>
+std::string orbitJson(const core::PeriodicOrbit<S>& orbit, const core::Chain<S>& chain,
+                      const std::string& precision) {
+  const S T2 = core::twoPi<S>() / chain.omegaSlow;
+  std::string events = "[";
+  for (std::size_t i = 0; i < orbit.events.size(); ++i) {
+    const core::BasicEvent<S>& e = orbit.events[i];
+    if (i > 0) events += ", ";
+    events += "{\"t\": " + jsonNumber(e.t) + ", \"type\": " + jsonQuoted(std::string(core::toString(e.type))) +
+              ", \"before\": " + stateJson(e.before) + ", \"after\": " + stateJson(e.after) + "}";
+  }
+  events += "]";
+  const auto& mu = orbit.multipliers;
+  const std::string symmetry = core::orbitSymmetry(orbit, core::symmetryTolerance<S>());
+  const core::BasicModel<S>& m = chain.model;
+  std::string out = "{\n";
+  out += "  \"format\": \"grazelab-orbit\",\n";
+  out += "  \"precision\": " + jsonQuoted(precision) + ",\n";
+  out += "  \"model\": {\"m1\": " + jsonNumber(m.m1) + ", \"m2\": " + jsonNumber(m.m2) + ", \"k1\": " +
+         jsonNumber(m.k1) + ", \"k2\": " + jsonNumber(S(chain.kappa * m.k1)) + ", \"gap\": " + jsonNumber(m.gap) +
+         ", \"T2\": " + jsonNumber(T2) + "},\n";
+  out += "  \"period\": " + jsonNumber(orbit.period) + ",\n";
+  out += "  \"T_over_T2\": " + jsonNumber(S(orbit.period / T2)) + ",\n";
+  out += "  \"energy\": " + jsonNumber(orbit.energy) + ",\n";
+  out += "  \"impacts\": " + std::to_string(orbit.impacts) + ",\n";
+  out += "  \"state\": " + stateJson(orbit.state) + ",\n";
+  out += "  \"events\": " + events + ",\n";
+  out += "  \"trace\": " + jsonNumber(orbit.trace) + ",\n";
+  out += "  \"trace_error\": " + jsonNumber(orbit.traceError) + ",\n";
+  out += "  \"multipliers\": [[" + jsonNumber(mu[0][0]) + ", " + jsonNumber(mu[0][1]) + "], [" +
+         jsonNumber(mu[1][0]) + ", " + jsonNumber(mu[1][1]) + "]],\n";
+  out += "  \"stability\": " + jsonQuoted(std::string(core::toString(orbit.stability))) + ",\n";
+  out += "  \"symmetry\": " + (symmetry.empty() ? std::string("null") : jsonQuoted(symmetry)) + ",\n";
+  out += "  \"checks\": {\"det_minus_1\": " + jsonNumber(orbit.checks.detMinus1) +
+         ", \"trivial_pair\": " + jsonNumber(orbit.checks.trivialPair) +
+         ", \"periodicity_residual\": " + jsonNumber(orbit.checks.periodicityResidual) + "},\n";
+  out += "  \"min_impact_speed\": " + jsonNumber(orbit.minImpactSpeed) + ",\n";
+  out += "  \"min_clearance\": " + jsonNumber(orbit.minClearance) + ",\n";
+  out += "  \"admissible\": true,\n";
+  out += "  \"reason\": null,\n";
+  out += "  \"generator\": " + jsonQuoted("grazelab-cli " + QCoreApplication::applicationVersion().toStdString()) + "\n";
+  out += "}\n";
+  return out;
+}
+
+// Reads --NAME as a number of S, or says why not.
+template <typename S>
+std::optional<S> scalarOption(const QCommandLineParser& parser, const char* name, QString& error) {
+  const core::ParsedScalar<S> parsed = core::parseScalar<S>(parser.value(name).toStdString());
+  if (!parsed.value) {
+    error = QStringLiteral("--%1: '%2' %3").arg(name, parser.value(name), QString::fromStdString(parsed.error));
+  }
+  return parsed.value;
+}
+
+enum class Outcome { Found, Undecided, Refused };
+
+// The orbit in precision S: written to io.out when found; `error` says why not.
+template <typename S>
+Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, const Io& io, std::stop_token stop,
+                QString& error) {
+  const Parsed<ModelInput<S>> model = parseModel<S>(parser);
+  if (!model.value) {
+    error = model.error;
+    return Outcome::Refused;
+  }
+  const core::Chain<S>& chain = model.value->chain;
+  core::OrbitSearch<S> search;
+  if (parser.isSet("onepp")) {
+    const std::optional<S> T = scalarOption<S>(parser, "period", error);
+    if (!T) return Outcome::Refused;
+    search = core::onePeriodicOrbitStability(chain, *T);
+    if (!search.orbit && search.refusal != core::OrbitRefusal::Undecided) {
+      // say where the family is, to the resolution of a scan of 400 periods
+      const S T2 = core::twoPi<S>() / chain.omegaSlow;
+      std::string parts;
+      for (const auto& part : core::onePeriodicParts(chain, 400)) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%s[%.4f, %.4f]", parts.empty() ? "" : " and ",
+                      core::toDouble(S(part[0] / T2)), core::toDouble(S(part[1] / T2)));
+        parts += text;
+      }
+      if (!parts.empty()) search.problem += "; this chain's 1IPP orbits have T/T2 in about " + parts;
+    }
+  } else {
+    bool ok = false;
+    const int impacts = parser.value("impacts").toInt(&ok);
+    if (!ok || impacts < 1 || impacts > 64) {
+      error = QStringLiteral("--impacts: '%1' is not a number of impacts from 1 to 64").arg(parser.value("impacts"));
+      return Outcome::Refused;
+    }
+    const std::optional<S> energy = scalarOption<S>(parser, "energy", error);
+    if (!energy) return Outcome::Refused;
+    if (!(*energy > 0)) {
+      error = QStringLiteral("--energy: '%1' is not a positive energy").arg(parser.value("energy"));
+      return Outcome::Refused;
+    }
+    const QStringList guess = parser.value("guess").split(',');
+    if (guess.size() != 2) {
+      error = QStringLiteral("--guess: '%1' is not two numbers u1,v1").arg(parser.value("guess"));
+      return Outcome::Refused;
+    }
+    const core::ParsedScalar<S> u1 = core::parseScalar<S>(guess[0].trimmed().toStdString());
+    const core::ParsedScalar<S> v1 = core::parseScalar<S>(guess[1].trimmed().toStdString());
+    if (!u1.value || !v1.value) {
+      error = QStringLiteral("--guess: '%1' is not two numbers u1,v1").arg(parser.value("guess"));
+      return Outcome::Refused;
+    }
+    search = core::findOrbit(chain, *energy, *u1.value, *v1.value, impacts, stop);
+  }
+  if (!search.orbit) {
+    error = QString::fromStdString("orbit: " + search.problem);
+    return search.refusal == core::OrbitRefusal::Undecided ? Outcome::Undecided : Outcome::Refused;
+  }
+  // the closed form's data must be right to 1e-9, or a higher precision is needed
+  constexpr double kDataAccuracy = 1e-9;
+  if (core::toDouble(search.dataError) > kDataAccuracy) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "orbit --onepp: this near a multiple of T1 or T2 the closed form's data are right only to "
+                  "about %.1g (relative) in %s: use --precision quad (or auto)",
+                  core::toDouble(search.dataError), precision.c_str());
+    error = text;
+    return Outcome::Undecided;
+  }
+  const std::string json = orbitJson(*search.orbit, chain, precision);
+  std::fwrite(json.data(), 1, json.size(), io.out);
+  return Outcome::Found;
+}
+
+}  // namespace
+
+void addOrbitOptions(QCommandLineParser& parser) {
+  parser.addOptions({
+      {"period", "orbit --onepp: the period T of the 1IPP orbit.", "T"},
+      {"impacts", "orbit: impacts per period K of the orbit sought.", "K"},
+      {"energy", "orbit: the energy E of the orbit sought.", "E"},
+      {"guess", "orbit: a guess of the orbit's point just after an impact on H.", "u1,v1"},
+  });
+}
+
+int runOrbit(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
+  if (parser.isSet("format") && parser.value("format") != "json") {
+    error = "orbit: --format json is the only format";
+    return kExitInvalidInput;
+  }
+  const bool onePeriodic = parser.isSet("onepp");
+  if (onePeriodic == parser.isSet("impacts")) {
+    error = "orbit: give --onepp --period T, or --impacts K --energy E --guess U1,V1";
+    return kExitInvalidInput;
+  }
+  if (onePeriodic && (!parser.isSet("period") || parser.isSet("energy") || parser.isSet("guess"))) {
+    error = "orbit --onepp: give --period T (and no --energy or --guess)";
+    return kExitInvalidInput;
+  }
+  if (!onePeriodic && (!parser.isSet("energy") || !parser.isSet("guess") || parser.isSet("period"))) {
+    error = "orbit --impacts K: give --energy E and --guess U1,V1 (and no --period)";
+    return kExitInvalidInput;
+  }
+  const QString precision = parser.value("precision");
+  Outcome outcome = Outcome::Refused;
+  if (precision == "double") outcome = orbitIn<double>(parser, "double", io, stop, error);
+  else if (precision == "long") outcome = orbitIn<long double>(parser, "long", io, stop, error);
+  else if (precision == "quad") outcome = orbitIn<core::Quad>(parser, "quad", io, stop, error);
+  else if (precision == "auto") {
+    // double, and again in long double then binary128 when a contact is too near tangent
+    outcome = orbitIn<double>(parser, "double", io, stop, error);
+    if (outcome == Outcome::Undecided) outcome = orbitIn<long double>(parser, "long", io, stop, error);
+    if (outcome == Outcome::Undecided) outcome = orbitIn<core::Quad>(parser, "quad", io, stop, error);
+  } else {
+    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
+    return kExitInvalidInput;
+  }
+  if (stop.stop_requested()) return kExitInterrupted;
+  return outcome == Outcome::Found ? kExitOk : kExitInvalidInput;
+}
+
+}  // namespace grazelab::cli

@@ -1,0 +1,278 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// `grazelab-cli report`: every method on one problem, timed and measured against the binary128
+// exact run, written as a CSV, two pictures and a Markdown report (issue 8).
+#include "io/output_files.h"
+#include "commands/report_command.h"
+
+#include <QCommandLineParser>
+#include <QJsonArray>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "io/cli_input.h"
+#include "commands/report_internal.h"
+#include "commands/report_support.h"
+
+namespace grazelab::cli {
+namespace report {
+
+QString name(MethodKind kind) {
+  const std::string_view text = core::methods::methodName(kind);
+  return QString::fromUtf8(text.data(), qsizetype(text.size()));
+}
+
+QString parameterText(const core::methods::MethodSetting& setting) {
+  if (setting.kind == MethodKind::Exact) {
+    const std::string_view p = core::toString(setting.precision);
+    return QString::fromUtf8(p.data(), qsizetype(p.size()));
+  }
+  return QString::fromStdString(setting.label()).section(' ', 1);
+}
+
+/// Smaller is finer, dimensionless: h / T2, rtol, k1 / k_c, or the unit roundoff.
+double fineness(const core::methods::MethodSetting& setting, double period, double k1) {
+  switch (setting.kind) {
+    case MethodKind::MoreauJean:
+    case MethodKind::MoreauJeanTheta1:
+    case MethodKind::SchatzmanPaoli:
+      return setting.value / period;
+    case MethodKind::Penalty:
+      return setting.penaltyToleranceSweep ? setting.penaltyRtol : k1 / setting.value;
+    default:
+      return setting.parameterValue();
+  }
+}
+
+
+QJsonObject metadata(const ReportInput& input) {
+  const core::Model& m = input.task.model;
+  QJsonObject model{{"m1", m.m1}, {"m2", m.m2}, {"k1", m.k1}, {"k2", m.k2}, {"gap", m.gap}};
+  if (m.design) model["branch"] = QString::fromUtf8(core::toString(*m.design).data());
+  const core::State& s = input.task.start;
+  return QJsonObject{{"generator", versionString()},
+                     {"model", model},
+                     {"start", QJsonArray{s.u1, s.u2, s.v1, s.v2}},
+                     {"t_end", input.task.tEnd}};
+}
+
+
+}  // namespace report
+
+namespace {
+
+using namespace report;
+using core::methods::ErrorMeasure;
+
+constexpr double kDefaultPeriods = 200;
+const core::State kDefaultPush{0, 0, 0.05, -0.05};
+
+std::optional<ReportInput> parseReportInput(const QCommandLineParser& parser, QString& error) {
+  if (parser.isSet("t-end") && parser.isSet("contacts")) {
+    error = "give --t-end or --contacts, not both";
+    return std::nullopt;
+  }
+  Parsed<RunInput<double>> run = parseRun<double>(parser);
+  if (!run.value) {
+    error = run.error;
+    return std::nullopt;
+  }
+  ReportInput input;
+  core::methods::Task& task = input.task;
+  task.model = run.value->model.model;
+  task.start = run.value->request.initial;
+  input.startDescription = run.value->initialDescription;
+  const bool startGiven = parser.isSet("glo") || parser.isSet("onepp") || parser.isSet("state") ||
+                          parser.isSet("perturb");
+  if (!startGiven) {
+    task.start = task.start + kDefaultPush;
+    input.startDescription += ", pushed by (0, 0, 0.05, -0.05) (the default problem)";
+  }
+  const core::Chain<double>& chain = run.value->model.chain;
+  input.period = core::twoPi<double>() / chain.omegaSlow;
+  task.needs.events = true;
+  if (parser.isSet("t-end")) {
+    task.tEnd = run.value->request.tEnd;
+    if (!(task.tEnd > 0) || !std::isfinite(task.tEnd)) {
+      error = "--t-end must be a positive time for a report";
+      return std::nullopt;
+    }
+    input.horizonNote = QStringLiteral("t_end = %1 (given)").arg(task.tEnd);
+  } else if (parser.isSet("contacts")) {
+    // the horizon ends halfway between the N-th and the next contact of the exact run, so
+    // that no method is judged at a contact instant
+    const std::int64_t contacts = run.value->request.maxContacts;
+    if (contacts < 1) {
+      error = "--contacts must be at least 1 for a report";
+      return std::nullopt;
+    }
+    core::Request request;
+    request.initial = task.start;
+    request.maxContacts = contacts + 1;
+    request.needs.events = false;
+    std::vector<double> times;
+    request.onEvent = [&times](const core::Event& e) {
+      if (core::isContact(e.type)) times.push_back(e.t);
+    };
+    core::simulate(task.model, request);
+    if (std::int64_t(times.size()) < contacts) {
+      error = QStringLiteral("--contacts: this start makes only %1 contacts").arg(times.size());
+      return std::nullopt;
+    }
+    const double nth = times[std::size_t(contacts - 1)];
+    task.tEnd = times.size() > std::size_t(contacts) ? 0.5 * (nth + times[std::size_t(contacts)])
+                                                     : nth + 0.5 * input.period;
+    input.horizonNote = QStringLiteral("t_end = %1, halfway between contact %2 and the next")
+                            .arg(task.tEnd, 0, 'g', 10)
+                            .arg(contacts);
+  } else {
+    task.tEnd = kDefaultPeriods * input.period;
+    input.horizonNote = QStringLiteral("t_end = %1 (the default, 200 T2)").arg(task.tEnd, 0, 'g', 10);
+  }
+  return input;
+}
+
+
+// The errors are differences of runs handed back in double: below about one rounding of double
+// (the state, relative to its scales) or of t_end (contact times, in T2) the comparison cannot see
+// them, and an error of exactly 0 would claim more than it knows. Such an error is written as
+// that bound, and the row's reason says so.
+struct Resolution {
+  double state = 0;
+  double contactTime = 0;
+};
+
+Resolution comparisonResolution(double tEnd, double period) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  return {eps, period > 0 ? eps * std::max(1.0, tEnd / period) : eps};
+}
+
+QByteArray resultsCsv(std::vector<WorkPrecisionPoint> points, const Resolution& resolution) {
+  for (WorkPrecisionPoint& p : points) {
+    core::methods::Errors& e = p.errors;
+    const bool below = (e.state < resolution.state) || (e.contactTime < resolution.contactTime) ||
+                       (e.impactSpeed < resolution.state);
+    if (!below) continue;
+    e.state = std::max(e.state, resolution.state);
+    e.contactTime = std::max(e.contactTime, resolution.contactTime);
+    e.impactSpeed = std::max(e.impactSpeed, resolution.state);
+    const std::string note = "errors below the comparison's resolution (double: " +
+                             scientific(resolution.state, 2).toStdString() + " in state, " +
+                             scientific(resolution.contactTime, 2).toStdString() +
+                             " T2 in contact times) are written as that bound";
+    p.reason = p.reason.empty() ? note : p.reason + "; " + note;
+  }
+  QByteArray csv =
+      "method,parameter,value,seconds_min,seconds_median,runs,state_error,contact_time_error,"
+      "impact_speed_error,missed_contacts,extra_contacts,energy_drift,status,reason\n";
+  for (const WorkPrecisionPoint& p : points) {
+    const std::string_view parameter = p.setting.parameter();
+    QString reason = QString::fromStdString(p.reason);
+    reason.replace('"', "'");
+    const std::string_view status = core::methods::toString(p.status);
+    csv += QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9,%10,%11,%12,%13,\"%14\"\n")
+               .arg(name(p.setting.kind), QString::fromUtf8(parameter.data(), qsizetype(parameter.size())),
+                    QString::number(p.setting.parameterValue(), 'g', 17),
+                    scientific(p.secondsMin, 4), scientific(p.secondsMedian, 4))
+               .arg(p.runs)
+               .arg(scientific(p.errors.state), scientific(p.errors.contactTime),
+                    scientific(p.errors.impactSpeed))
+               .arg(p.errors.missed)
+               .arg(p.errors.extra)
+               .arg(scientific(p.errors.energyDrift),
+                    QString::fromUtf8(status.data(), qsizetype(status.size())), reason)
+               .toUtf8();
+  }
+  return csv;
+}
+
+
+}  // namespace
+
+void addReportOptions(QCommandLineParser& parser) {
+  parser.addOptions({
+      {"out", "report, stability: the directory to write into (created if missing).", "DIR"},
+      {"methods", "report, stability: the methods to run, comma-separated (default: all): exact, "
+                  "moreau-jean, moreau-jean-theta1, schatzman-paoli, dopri5-events, cvode-adams, "
+                  "cvode-bdf, penalty.", "list"},
+      {"quick", "report, stability: fewer settings and runs (seconds instead of minutes)."},
+  });
+}
+
+int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
+  using namespace core::methods;
+  const auto methods = parseMethodsOption(parser, error);
+  if (!methods) return kExitInvalidInput;
+  auto input = parseReportInput(parser, error);
+  if (!input) return kExitInvalidInput;
+  const auto directory = prepareOutputDirectory(parser, error);
+  if (!directory) return kExitInvalidInput;
+  const bool quick = parser.isSet("quick");
+  const TimingPolicy timing = quick ? TimingPolicy{2, 0.5, 0.05, 1000} : TimingPolicy{5, 3.0, 0.2, 1000};
+  WorkBudget budget;
+  budget.maxSteps = 1'000'000'000;
+  budget.maxSeconds = quick ? 5 : 60;
+  Task& task = input->task;
+
+  progress(io, "report", QStringLiteral("estimating the predictability horizon of the start"));
+  const ComparisonEnd end = comparisonEnd(task, stop);
+  if (end.shortened) {
+    input->horizonNote += QStringLiteral("; moved to t = %1, an eighth of T2 before the "
+                                         "predictability horizon of the start (%2)")
+                              .arg(end.tEnd, 0, 'g', 10)
+                              .arg(end.horizon, 0, 'g', 6);
+    task.tEnd = end.tEnd;
+  }
+  progress(io, "report", QStringLiteral("binary128 reference to t = %1 (%2 T2)")
+                         .arg(task.tEnd, 0, 'g', 6).arg(task.tEnd / input->period, 0, 'g', 4));
+  const Reference reference = makeReference(task, budget, stop);
+  if (stop.stop_requested()) return kExitInterrupted;
+  if (reference.run.status != RunStatus::Completed) {
+    error = "no trustworthy reference for this problem: " + QString::fromStdString(reference.run.reason);
+    return kExitInvalidInput;
+  }
+
+  std::vector<std::pair<MethodKind, MethodSetting>> plan;
+  for (MethodKind kind : *methods) {
+    for (const MethodSetting& setting : reportSettings(kind, input->period, task.model.k1, quick)) {
+      plan.push_back({kind, setting});
+    }
+  }
+  std::map<MethodKind, std::vector<WorkPrecisionPoint>> byMethod;
+  std::vector<WorkPrecisionPoint> all;
+  int done = 0;
+  for (const auto& [kind, setting] : plan) {
+    WorkPrecisionPoint point = measurePoint(task, reference, setting, budget, timing, stop);
+    if (stop.stop_requested()) return kExitInterrupted;
+    ++done;
+    progress(io, "report", QStringLiteral("[%1/%2] %3 %4: %5, state error %6%7")
+                           .arg(done).arg(plan.size())
+                           .arg(name(kind), parameterText(setting), humanSeconds(point.secondsMin))
+                           .arg(scientific(point.errors.state, 2).isEmpty() ? "—" : scientific(point.errors.state, 2))
+                           .arg(point.status == RunStatus::Completed ? QString()
+                                                                     : " (" + QString::fromStdString(point.reason) + ")"),
+             double(done) / double(plan.size()));
+    byMethod[kind].push_back(point);
+    all.push_back(point);
+  }
+
+  const QByteArray csv = resultsCsv(all, comparisonResolution(task.tEnd, reference.period));
+  const QByteArray md =
+      reportMarkdown(*input, end, reference, *methods, byMethod, timing, quick);
+  const QString dir = *directory;
+  if (!writeAtomically(dir + "/results.csv", csv, error)) return 1;
+  QString pictures;
+  if (picturesAvailable()) {
+    if (!writePictures(dir, *input, *methods, byMethod, error)) return 1;
+    pictures = "work_precision.svg/.png, convergence.svg/.png, ";
+  } else {
+    progress(io, "report", "no pictures: the Python module draws none");
+  }
+  if (!writeAtomically(dir + "/report.md", md, error)) return 1;
+  progress(io, "report", QStringLiteral("wrote %1/{results.csv, %2report.md}").arg(dir, pictures));
+  return kExitOk;
+}
+
+}  // namespace grazelab::cli

@@ -1,0 +1,334 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "io/cli_input.h"
+
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+
+#include "core/orbits/starts.h"
+
+namespace grazelab::cli {
+namespace {
+
+
+QString fromStd(const std::string& text) { return QString::fromStdString(text); }
+
+// --NAME as a whole number >= least, or the reason it is not one
+std::optional<std::int64_t> countOption(const OptionValues& options, const QString& name,
+                                        std::int64_t least, QString& error) {
+  bool ok = false;
+  const qlonglong value = options.value(name).toLongLong(&ok);
+  if (!ok || value < least) {
+    error = QStringLiteral("--%1: '%2' is not a count (a whole number >= %3)")
+                .arg(name, options.value(name))
+                .arg(least);
+    return std::nullopt;
+  }
+  return value;
+}
+
+// a number in precision S, or the reason it is not one ("is out of range ...")
+template <typename S>
+std::optional<S> toNumber(const QString& option, const QString& text, QString& error) {
+  const core::ParsedScalar<S> parsed = core::parseScalar<S>(text.toStdString());
+  if (!parsed.value) {
+    error = QStringLiteral("--%1: '%2' %3").arg(option, text, fromStd(parsed.error));
+  }
+  return parsed.value;
+}
+
+// "a,b,c,d" into a state
+template <typename S>
+std::optional<core::BasicState<S>> toState(const QString& option, const QString& text,
+                                           QString& error) {
+  const QStringList parts = text.split(',');
+  if (parts.size() != 4) {
+    error = QStringLiteral("--%1: '%2' is not four numbers separated by commas").arg(option, text);
+    return std::nullopt;
+  }
+  S values[4];
+  for (int i = 0; i < 4; ++i) {
+    const auto value = toNumber<S>(option, parts[i], error);
+    if (!value) return std::nullopt;
+    values[i] = *value;
+  }
+  return core::BasicState<S>{values[0], values[1], values[2], values[3]};
+}
+
+// The options of `info` and `simulate`: name, description, value name, default.
+struct OptionSpec {
+  const char* name;
+  const char* description;
+  const char* valueName;
+  const char* defaultValue;
+};
+const OptionSpec kOptions[] = {
+    {"m1", "Mass 1 (default 1).", "value", "1"},
+    {"m2", "Mass 2, the one that hits the stop (default 0.5).", "value", "0.5"},
+    {"k1", "Stiffness wall-m1 (default 1).", "value", "1"},
+    {"gap", "Gap d between mass 2 at rest and the stop (default 1).", "value", "1"},
+    {"k2", "Stiffness m1-m2 as given: no resonance imposed (excludes --branch).", "value", nullptr},
+    {"branch", "k2 from the 1:2 design: upper (default) or lower.", "upper|lower", nullptr},
+    {"precision", "Arithmetic of the run: auto (default: double, and the whole run again in "
+                    "long double, then binary128, from its input, when a contact touches the "
+                    "stop within rounding), double, long or quad (binary128). Numbers are read "
+                    "and written in it.", "auto|double|long|quad", "auto"},
+    {"glo", "Start on GLO_lambda data, any real lambda (default 0.5).", "lambda", nullptr},
+    {"onepp", "Start on the one-impact-per-period orbit of period T (T < T2 near T2). With "
+                "'family', --onepp takes no value: it names the family.", "T", nullptr},
+    {"state", "Start from the state u1,u2,v1,v2.", "u1,u2,v1,v2", nullptr},
+    {"perturb", "Add du1,du2,dv1,dv2 to the initial state.", "du1,du2,dv1,dv2", nullptr},
+    {"contacts", "Stop after N contacts (default 100 when no --t-end).", "N", nullptr},
+    {"t-end", "Stop at time T (it also bounds the contact search of a detuned chain).", "T", nullptr},
+    {"search-steps", "Detuned chains: the most steps one flight's contact search may take "
+                       "(default: about a second's worth, 10000000 in double, 3000000 in long, "
+                       "300000 in quad); running out stops the run with stop_reason "
+                       "search-budget, never 'no contact'.", "N", nullptr},
+    {"format", "Output: json (default), jsonl (JSON Lines), csv or summary. json, jsonl and "
+                 "csv stream: memory stays bounded and an interrupt leaves complete records.",
+       "json|jsonl|csv|summary", "json"},
+    {"trust", "Error estimate of the run: auto (default: a shadow run one precision up while "
+                "it costs about the run itself, then extrapolation), full (the shadow to the "
+                "end) or off. For 'map': off (default: horizon NaN) or auto (a shadow per "
+                "point).", "off|auto|full", "auto"},
+  };
+
+}  // namespace
+
+QString defaultOptionValue(const QString& name) {
+  for (const OptionSpec& option : kOptions) {
+    if (name == QLatin1String(option.name)) {
+      return option.defaultValue ? QString::fromUtf8(option.defaultValue) : QString();
+    }
+  }
+  return {};
+}
+
+void addOptions(QCommandLineParser& parser) {
+  for (const OptionSpec& option : kOptions) {
+    QCommandLineOption added(QString::fromUtf8(option.name), QString::fromUtf8(option.description),
+                             QString::fromUtf8(option.valueName));
+    if (option.defaultValue) added.setDefaultValue(QString::fromUtf8(option.defaultValue));
+    parser.addOption(added);
+  }
+}
+
+QStringList repeatedOptions(const QCommandLineParser& parser) {
+  QStringList repeated;
+  const QStringList names = parser.optionNames();
+  for (const QString& name : names) {
+    if (names.count(name) > 1 && !repeated.contains("--" + name)) repeated << "--" + name;
+  }
+  return repeated;
+}
+
+std::optional<core::TrustMode> parseTrustOption(const OptionValues& options,
+                                                 QString& error) {
+  const QString text = options.value("trust");
+  const auto mode = core::parseTrustMode(text.toStdString());
+  if (!mode) error = QStringLiteral("--trust: '%1' is not off, auto or full").arg(text);
+  return mode;
+}
+
+std::optional<PrecisionOption> parsePrecisionOption(const OptionValues& options,
+                                                    QString& error) {
+  const QString text = options.value("precision");
+  if (text == "auto") return PrecisionOption{};
+  const auto precision = core::parsePrecision(text.toStdString());
+  if (!precision) {
+    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(text);
+    return std::nullopt;
+  }
+  return PrecisionOption{precision};
+}
+
+template <typename S>
+core::ExactParameters exactParameters(const OptionValues& options) {
+  // the decimal read with 400 bits: equal to the value read in S only when S holds it exactly
+  using Wide = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<400, boost::multiprecision::digit_base_2>>;
+  auto exact = [&](const char* name) {
+    const QString text = options.value(name);
+    if (text.isEmpty()) return true;
+    QString error;
+    const auto value = toNumber<S>(name, text, error);
+    if (!value) return false;
+    try {
+      return Wide(text.toStdString()) == Wide(*value);
+    } catch (const std::exception&) {
+      return false;
+    }
+  };
+  return {exact("m1"), exact("m2"), exact("k1"), exact("k2"), exact("gap")};
+}
+
+template <typename S>
+Parsed<ModelInput<S>> parseModel(const OptionValues& options) {
+  QString error;
+  S values[4];
+  const char* names[] = {"m1", "m2", "k1", "gap"};
+  for (int i = 0; i < 4; ++i) {
+    const auto value = toNumber<S>(names[i], options.value(names[i]), error);
+    if (!value) return {std::nullopt, error};
+    values[i] = *value;
+  }
+  if (options.isSet("k2") && options.isSet("branch")) {
+    return {std::nullopt, "--k2 and --branch exclude each other: give k2, or let the 1:2 design "
+                          "choose it"};
+  }
+  core::BasicModel<S> model{values[0], values[1], values[2], S(1), values[3], std::nullopt};
+  if (options.isSet("k2")) {
+    const auto k2 = toNumber<S>("k2", options.value("k2"), error);
+    if (!k2) return {std::nullopt, error};
+    model.k2 = *k2;
+  } else {
+    const QString branchText = options.isSet("branch") ? options.value("branch") : "upper";
+    const auto branch = core::parseBranch(branchText.toStdString());
+    if (!branch) {
+      return {std::nullopt,
+              QStringLiteral("--branch: '%1' is neither 'upper' nor 'lower'").arg(branchText)};
+    }
+    model.design = branch;
+  }
+  const auto problems = core::validate(model);
+  if (!problems.empty()) {
+    QString line = fromStd(core::describe(problems));
+    if (model.design) line += " (give --k2 for a detuned chain)";
+    return {std::nullopt, line};
+  }
+  if (model.design) {
+    model = *core::designedModel(model.m1, model.m2, model.k1, model.gap, *model.design);
+  }
+  core::ChainOrProblem<S> formed = core::makeChain(model);
+  if (!formed.chain) return {std::nullopt, fromStd(formed.problem)};
+  return {ModelInput<S>{model, *formed.chain}, {}};
+}
+
+template <typename S>
+Parsed<core::StartSpec<S>> parseStartSpec(const OptionValues& options,
+                                          const core::BasicModel<S>& model) {
+  QString error;
+  const int starts = int(options.isSet("glo")) + int(options.isSet("onepp")) +
+                     int(options.isSet("state"));
+  if (starts > 1) return {std::nullopt, "give one of --glo, --onepp, --state, not several"};
+  core::StartSpec<S> spec;
+  if (options.isSet("onepp")) {
+    const auto period = toNumber<S>("onepp", options.value("onepp"), error);
+    if (!period) return {std::nullopt, error};
+    spec.kind = core::StartSpec<S>::Kind::OnePeriodic;
+    spec.period = *period;
+  } else if (options.isSet("state")) {
+    const auto state = toState<S>("state", options.value("state"), error);
+    if (!state) return {std::nullopt, error};
+    spec.kind = core::StartSpec<S>::Kind::Explicit;
+    spec.state = *state;
+  } else {
+    const QString text = options.isSet("glo") ? options.value("glo") : "0.5";
+    const auto lambda = toNumber<S>("glo", text, error);
+    if (!lambda) return {std::nullopt, error};
+    if (!core::isFinite(*lambda)) {
+      return {std::nullopt, QStringLiteral("--glo must be a finite number (got %1)").arg(text)};
+    }
+    spec.lambda = *lambda;
+  }
+  if (options.isSet("perturb")) {
+    const auto delta = toState<S>("perturb", options.value("perturb"), error);
+    if (!delta) return {std::nullopt, error};
+    const auto problems = core::validateState(model, *delta, "perturb");
+    for (const auto& problem : problems) {
+      if (problem.field != "perturb.u2") return {std::nullopt, fromStd(core::describe({problem}))};
+    }
+    spec.perturbation = *delta;
+  }
+  return {spec, {}};
+}
+
+template <typename S>
+Parsed<RunInput<S>> parseRun(const OptionValues& options) {
+  Parsed<ModelInput<S>> model = parseModel<S>(options);
+  if (!model.value) return {std::nullopt, model.error};
+  RunInput<S> run{*model.value, {}, {}, {}, Format::Json};
+  const core::Chain<S>& chain = run.model.chain;
+  QString error;
+
+  Parsed<core::StartSpec<S>> spec = parseStartSpec<S>(options, run.model.model);
+  if (!spec.value) return {std::nullopt, spec.error};
+  core::StartOrProblem<S> start = core::makeStart(chain, *spec.value);
+  if (!start.start) {
+    const QString option = spec.value->kind == core::StartSpec<S>::Kind::OnePeriodic ? "--onepp: " : "";
+    return {std::nullopt, option + fromStd(start.problem)};
+  }
+  const auto stateProblems = core::validateState(run.model.model, start.start->state, "initial");
+  if (!stateProblems.empty()) return {std::nullopt, fromStd(core::describe(stateProblems))};
+  run.request.initial = start.start->state;
+  run.initialDescription = fromStd(start.start->description);
+  // core's notes on the start are about rounding: the command line can raise the precision
+  for (const std::string& note : start.start->notes) run.notes.push_back(note + " (try --precision quad)");
+
+  if (options.isSet("contacts")) {
+    const auto contacts = countOption(options, "contacts", 0, error);
+    if (!contacts) return {std::nullopt, error};
+    run.request.maxContacts = *contacts;
+  } else {
+    run.request.maxContacts = options.isSet("t-end") ? std::numeric_limits<std::int64_t>::max() : 100;
+  }
+  if (options.isSet("t-end")) {
+    const auto tEnd = toNumber<S>("t-end", options.value("t-end"), error);
+    if (!tEnd) return {std::nullopt, error};
+    if (!(*tEnd >= 0)) {
+      return {std::nullopt,
+              QStringLiteral("--t-end: '%1' is not a time >= 0").arg(options.value("t-end"))};
+    }
+    run.request.tEnd = *tEnd;
+  }
+  if (options.isSet("search-steps")) {
+    const auto steps = countOption(options, "search-steps", 1, error);
+    if (!steps) return {std::nullopt, error};
+    run.request.flightSearchSteps = *steps;
+  }
+  // a request whose length is astronomical is said to be so up front (it still runs, and an
+  // interrupt ends it with complete records)
+  const S slowPeriod = core::twoPi<S>() / run.model.chain.omegaSlow;
+  const double periods = core::toDouble(S(run.request.tEnd / slowPeriod));
+  if (!options.isSet("contacts") && std::isfinite(periods) && periods > 1e12) {
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "--t-end spans %.2g slow periods (T2 = %.3g) and no --contacts bounds the run: "
+                  "at ~1e7 contacts a second that could take %.2g years",
+                  periods, core::toDouble(slowPeriod), periods / 1e7 / 3.15e7);
+    run.notes.push_back(line);
+  }
+  const QString format = options.value("format");
+  if (format == "json") {
+    run.format = Format::Json;
+  } else if (format == "jsonl") {
+    run.format = Format::JsonLines;
+  } else if (format == "csv") {
+    run.format = Format::Csv;
+  } else if (format == "summary") {
+    run.format = Format::Summary;
+  } else {
+    return {std::nullopt,
+            QStringLiteral("--format: '%1' is not json, jsonl, csv or summary").arg(format)};
+  }
+  // outputs stream every event through the request's callback; nothing is kept in memory
+  run.request.needs.events = false;
+  return {run, {}};
+}
+
+#define GRAZELAB_INSTANTIATE(S)                                                     \
+  template core::ExactParameters exactParameters<S>(const OptionValues&);     \
+  template Parsed<ModelInput<S>> parseModel<S>(const OptionValues&);          \
+  template Parsed<core::StartSpec<S>> parseStartSpec<S>(const OptionValues&,  \
+                                                        const core::BasicModel<S>&); \
+  template Parsed<RunInput<S>> parseRun<S>(const OptionValues&);
+GRAZELAB_INSTANTIATE(double)
+GRAZELAB_INSTANTIATE(long double)
+GRAZELAB_INSTANTIATE(core::Quad)
+#undef GRAZELAB_INSTANTIATE
+
+}  // namespace grazelab::cli

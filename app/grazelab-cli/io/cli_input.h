@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/model/chain.h"
+#include "core/model/model.h"
+#include "core/model/resonance.h"
+#include "core/orbits/starts.h"
+#include "core/solver/simulate.h"
+#include "core/solver/trust.h"
+
+#include "io/option_values.h"
+
+class QCommandLineParser;
+
+namespace grazelab::cli {
+
+/// Registers every option of `info` and `simulate` (docs/design.md, "Command line").
+void addOptions(QCommandLineParser& parser);
+
+/// Options given more than once (the last would silently win): refused with their names.
+QStringList repeatedOptions(const QCommandLineParser& parser);
+
+
+/// --precision, checked ("double" when absent).
+/// --precision as given: one arithmetic, or auto (`fixed` empty: double, the run raised to a
+/// higher precision where a contact needs it).
+struct PrecisionOption {
+  std::optional<core::Precision> fixed;
+};
+std::optional<PrecisionOption> parsePrecisionOption(const OptionValues& options,
+                                                    QString& error);
+
+/// --trust, checked ("auto" when absent).
+std::optional<core::TrustMode> parseTrustOption(const OptionValues& options, QString& error);
+
+/// Which model parameters the command line gives exactly in precision S (its decimal text is a
+/// number of S; parameters not given are exact defaults).
+template <typename S>
+core::ExactParameters exactParameters(const OptionValues& options);
+
+/// The model as the command line describes it, in precision S, with its nondimensional chain.
+template <typename S>
+struct ModelInput {
+  core::BasicModel<S> model;
+  core::Chain<S> chain;
+};
+
+/// Output formats of `simulate`.
+enum class Format { Json, JsonLines, Csv, Summary };
+
+/// What `simulate` runs, with the words that describe its start.
+template <typename S>
+struct RunInput {
+  ModelInput<S> model;
+  core::BasicRequest<S> request;
+  QString initialDescription;  ///< e.g. "GLO_lambda data, lambda = 0.5 (as such: ...)"
+  std::vector<std::string> notes;  ///< warnings for stderr (a perturbation lost in rounding)
+  Format format = Format::Json;
+};
+
+/// Either a value or the one line that says what is wrong.
+template <typename T>
+struct Parsed {
+  std::optional<T> value;
+  QString error;
+};
+
+template <typename S>
+Parsed<ModelInput<S>> parseModel(const OptionValues& options);
+/// The start options (--glo, --onepp, --state, --perturb) as a spec: GLO_0.5 when none is given.
+template <typename S>
+Parsed<core::StartSpec<S>> parseStartSpec(const OptionValues& options,
+                                          const core::BasicModel<S>& model);
+template <typename S>
+Parsed<RunInput<S>> parseRun(const OptionValues& options);
+
+}  // namespace grazelab::cli

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "io/json_value.h"
+
+#include "io/cli_output.h"
+
+namespace grazelab::cli {
+
+JsonValue JsonValue::of(bool value) {
+  JsonValue out;
+  out.kind = Kind::Bool;
+  out.boolean = value;
+  return out;
+}
+
+JsonValue JsonValue::of(std::int64_t value) {
+  JsonValue out;
+  out.kind = Kind::Integer;
+  out.integer = value;
+  return out;
+}
+
+JsonValue JsonValue::of(std::string text) {
+  JsonValue out;
+  out.kind = Kind::String;
+  out.text = std::move(text);
+  return out;
+}
+
+JsonValue JsonValue::array(std::vector<JsonValue> items) {
+  JsonValue out;
+  out.kind = Kind::Array;
+  out.items = std::move(items);
+  return out;
+}
+
+JsonValue JsonValue::object(std::vector<Field> fields) {
+  JsonValue out;
+  out.kind = Kind::Object;
+  out.fields = std::move(fields);
+  return out;
+}
+
+std::string JsonValue::numberText() const {
+  return text.empty() ? core::formatScalar(value) : text;
+}
+
+namespace {
+
+void appendOneLine(std::string& out, const JsonValue& value) {
+  switch (value.kind) {
+    case JsonValue::Kind::Null: out += "null"; return;
+    case JsonValue::Kind::Bool: out += value.boolean ? "true" : "false"; return;
+    case JsonValue::Kind::Integer: out += std::to_string(value.integer); return;
+    case JsonValue::Kind::Number: out += value.numberText(); return;
+    case JsonValue::Kind::String: out += jsonQuoted(value.text); return;
+    case JsonValue::Kind::Array: {
+      out += '[';
+      for (std::size_t i = 0; i < value.items.size(); ++i) {
+        if (i > 0) out += ", ";
+        appendOneLine(out, value.items[i]);
+      }
+      out += ']';
+      return;
+    }
+    case JsonValue::Kind::Object: {
+      out += '{';
+      for (std::size_t i = 0; i < value.fields.size(); ++i) {
+        if (i > 0) out += ", ";
+        out += jsonQuoted(value.fields[i].first);
+        out += ": ";
+        appendOneLine(out, value.fields[i].second);
+      }
+      out += '}';
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+std::string oneLine(const JsonValue& value) {
+  std::string out;
+  appendOneLine(out, value);
+  return out;
+}
+
+std::string fieldPerLine(const JsonValue& object, const std::string& fieldIndent,
+                         const std::string& closeIndent) {
+  std::string out = "{\n";
+  for (std::size_t i = 0; i < object.fields.size(); ++i) {
+    out += fieldIndent + jsonQuoted(object.fields[i].first) + ": ";
+    appendOneLine(out, object.fields[i].second);
+    out += i + 1 < object.fields.size() ? ",\n" : "\n";
+  }
+  return out + closeIndent + "}";
+}
+
+}  // namespace grazelab::cli

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// A map's picture, drawn by the explorer's heat-map painter (built with the explorer only).
+#include "io/map_picture.h"
+
+#include <QImage>
+#include <QJsonDocument>
+#include <QPainter>
+
+#include "io/output_files.h"
+#include "ui/pictures/heat_map.h"
+
+namespace grazelab::cli::map {
+
+namespace {
+
+constexpr int kWidth = 1000;
+constexpr int kHeight = 820;
+
+QString axisTitle(const QJsonObject& spec, const char* which) {
+  const QString name = spec[which].toObject()["variable"].toString();
+  if (name == "u1" || name == "gap") return name + " [length]";
+  if (name == "v1" || name == "v2") return name + " [length/time]";
+  if (name == "mass-ratio") return "m2 / m1";
+  if (name == "detuning") return "detuning w1/w2 - 2";
+  if (name == "epsilon") return "epsilon (size of the push)";
+  return name;
+}
+
+pictures::HeatMapData heatMapOf(const StoredMap& map) {
+  const QJsonObject& spec = map.description.spec;
+  const QString quantity = spec["picture"].toString();
+  const auto which = core::parseQuantity(quantity.toStdString()).value_or(core::Quantity::FftFirst);
+  const QJsonObject info = spec["quantities"].toObject()[quantity].toObject();
+  pictures::HeatMapData data;
+  data.columns = map.columns;
+  data.rows = map.rows.rowEnd - map.rows.rowBegin;
+  for (const core::PointSummary& point : map.points) data.values.push_back(core::valueOf(point, which));
+  const core::MapAxis x = axisOf(spec, "x");
+  const core::MapAxis y = axisOf(spec, "y");
+  data.xFrom = x.from;
+  data.xTo = x.to;
+  data.yFrom = y.at(map.rows.rowBegin);
+  data.yTo = y.at(map.rows.rowEnd - 1);
+  const qint64 contacts = spec["contacts"].toInteger();
+  QString meaning = info["meaning"].toString();
+  meaning[0] = meaning[0].toUpper();
+  data.title = QStringLiteral("%1 (%2 contact%3 per run)").arg(meaning).arg(contacts).arg(contacts == 1 ? "" : "s");
+  data.xTitle = axisTitle(spec, "x");
+  data.yTitle = axisTitle(spec, "y");
+  const QString unit = info["unit"].toString();
+  data.valueTitle = unit == "count" ? quantity : QStringLiteral("%1 [%2]").arg(quantity, unit);
+  return data;
+}
+
+}  // namespace
+
+void prepareFonts() {
+  QImage image(64, 16, QImage::Format_ARGB32_Premultiplied);
+  QPainter painter(&image);
+  painter.drawText(QPointF(0, 12), QStringLiteral("0.5 T2"));
+}
+
+bool writeMapPicture(const QString& prefix, const StoredMap& map, QString& error) {
+  const pictures::HeatMapData data = heatMapOf(map);
+  const QByteArray description = QJsonDocument(map.description.spec).toJson(QJsonDocument::Compact);
+  return savePngAndSvg(
+      prefix, QSize(kWidth, kHeight), data.title, "GrazeLabMap", description,
+      [&](QPainter& painter) { pictures::paintHeatMap(painter, QRectF(0, 0, kWidth, kHeight), data); }, error);
+}
+
+
+}  // namespace grazelab::cli::map

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "io/output_files.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
+
+#include <QFont>
+#include <QGuiApplication>
+#include <QImage>
+#include <QPainter>
+
+#include "io/cli_io.h"
+#include "ui/pictures/picture_file.h"
+
+namespace grazelab::cli {
+
+bool FileOutput::save(const QString& path, const QByteArray& bytes, QString& error) const {
+  if (!memory) return saveAtomically(path, bytes, error);
+  memory->emplace_back(path.toStdString(), bytes.toStdString());
+  return true;
+}
+
+std::optional<FileOutput> openFileOutput(const QCommandLineParser& parser, const Io& io,
+                                         const char* files, const char* name, QString& error) {
+  if (io.files && !parser.isSet("out")) return FileOutput{QString::fromUtf8(name), io.files};
+  const auto prefix = parseOutputPrefix(parser, files, name, error);
+  if (!prefix) return std::nullopt;
+  return FileOutput{*prefix, nullptr};
+}
+
+std::optional<QString> parseOutputPrefix(const QCommandLineParser& parser, const char* files,
+                                         const char* example, QString& error) {
+  if (!parser.isSet("out")) {
+    error = QStringLiteral("--out PREFIX is required (the files are %1)").arg(files);
+    return std::nullopt;
+  }
+  const QString prefix = parser.value("out");
+  const QFileInfo info(prefix);
+  if (prefix.isEmpty() || prefix.endsWith('/') || info.isDir()) {
+    error = QStringLiteral("--out: '%1' is a folder; give a prefix such as %1/%2").arg(prefix, example);
+    return std::nullopt;
+  }
+  if (!QDir().mkpath(info.absolutePath())) {
+    error = QStringLiteral("--out: cannot make the folder %1").arg(info.absolutePath());
+    return std::nullopt;
+  }
+  return prefix;
+}
+
+bool saveAtomically(const QString& path, const QByteArray& bytes, QString& error) {
+  return pictures::saveFileAtomically(path, bytes, &error);
+}
+
+bool picturesAvailable() { return qobject_cast<QGuiApplication*>(QCoreApplication::instance()) != nullptr; }
+
+bool savePngAndSvg(const QString& prefix, QSize size, const QString& title, const QString& textKey,
+                   const QByteArray& description, const std::function<void(QPainter&)>& paint,
+                   QString& error) {
+  // every text in DejaVu Sans at 15 px, on whatever platform draws it
+  const auto draw = [&](QPainter& painter) {
+    QFont font("DejaVu Sans");
+    font.setPixelSize(15);
+    painter.setFont(font);
+    paint(painter);
+  };
+  QImage image(size, QImage::Format_RGB32);
+  {
+    QPainter painter(&image);
+    draw(painter);
+  }
+  const pictures::PictureMetadata metadata{title, textKey, description};
+  return pictures::writePng(prefix + ".png", image, metadata, &error) &&
+         pictures::writeSvg(prefix + ".svg", size, draw, metadata, &error);
+}
+
+}  // namespace grazelab::cli

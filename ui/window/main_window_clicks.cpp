@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Starts chosen with the mouse: a click on the section H or on the stop line of the (u2, v2)
+// portrait starts a run there on the same energy; the landscape's rectangles and its way back.
+#include <QLabel>
+
+#include <cmath>
+
+#include "core/model/model.h"
+#include "core/orbits/starts.h"
+#include "ui/compute/derived.h"
+#include "ui/window/main_window.h"
+#include "ui/widgets/parameter_panel.h"
+#include "ui/plots/landscape_view.h"
+#include "ui/window/status_line.h"
+
+namespace grazelab::ui {
+
+bool MainWindow::startFromSection(QPointF u1v1) {
+  if (!m_displayed) return false;
+  const core::Model& model = m_displayed->request->job.spec.model;
+  const double level = core::energy(model, m_displayed->request->job.spec.run.initial);
+  const std::optional<core::State> start = core::sectionStateAtEnergy(model, level, u1v1.x(), u1v1.y());
+  if (!start) {
+    m_status->setMessage(tr("No state of this energy (E = %1) at u₁ = %2, v₁ = %3 on H: the "
+                         "springs and mass 1 alone would hold more. Click inside the points.")
+                          .arg(level, 0, 'g', 6)
+                          .arg(u1v1.x(), 0, 'g', 4)
+                          .arg(u1v1.y(), 0, 'g', 4));
+    return false;
+  }
+  startFromClick(*start);
+  return true;
+}
+
+bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
+  if (!m_displayed) return false;
+  const core::Model& model = m_displayed->request->job.spec.model;
+  if (!(std::abs(u2v2.x() - model.gap) <= tolerance)) {
+    m_status->setMessage(tr("Click within %1 pixels of the stop line u₂ = d (dashed) to start mass 2 "
+                            "from the stop at that speed.")
+                             .arg(kStopLineBand));
+    return false;
+  }
+  const core::State& shown = m_displayed->request->job.spec.run.initial;
+  const double level = core::energy(model, shown);
+  const std::optional<core::State> start =
+      core::stopLineStateAtEnergy(model, level, shown.u1, u2v2.y(), shown.v1);
+  if (!start) {
+    m_status->setMessage(tr("No state of this energy (E = %1) with mass 2 leaving the stop at "
+                         "speed %2 and mass 1 at u₁ = %3: click nearer v₂ = 0.")
+                          .arg(level, 0, 'g', 6)
+                          .arg(std::abs(u2v2.y()), 0, 'g', 4)
+                          .arg(shown.u1, 0, 'g', 4));
+    return false;
+  }
+  startFromClick(*start);
+  return true;
+}
+
+void MainWindow::showMapRegion(QRectF region) {
+  Params& current = m_sceneParams[std::size_t(m_sceneIndex)];
+  const DerivedModel derived = deriveModel(current);
+  if (!derived.ok) return;
+  // a region a few ulps wide would have no distinct cells (and no ticks): refused, said
+  const auto tooNarrow = [](double low, double high) {
+    return !(high - low > 1e-9 * std::max({1.0, std::abs(low), std::abs(high)}));
+  };
+  if (tooNarrow(region.left(), region.right()) || tooNarrow(region.top(), region.bottom())) {
+    m_status->setMessage(tr("That region is too small to compute apart from its neighbours: drag a larger one"));
+    return;
+  }
+  // kept in units of d and d w2, so that it frames the same part of the plane for any chain
+  const double d = derived.model.gap;
+  const double v = d * derived.modes.omegaSlow;
+  m_regionHistory.push_back(current.mapRegion);
+  current.mapRegion = {region.left() / d, region.right() / d, region.top() / v, region.bottom() / v};
+  if (m_landscape) m_landscape->setBackEnabled(true);
+  recompute();
+}
+
+bool MainWindow::mapRegionBack() {
+  if (m_regionHistory.empty()) return false;
+  m_sceneParams[std::size_t(m_sceneIndex)].mapRegion = m_regionHistory.back();
+  m_regionHistory.pop_back();
+  if (m_landscape) m_landscape->setBackEnabled(!m_regionHistory.empty());
+  recompute();
+  return true;
+}
+
+void MainWindow::startFromClick(const core::State& start) {
+  m_clickedStart = start;
+  m_panel->setClickedStart(start);
+  m_panel->clearRefusal();  // a refused value typed before does not describe this run
+  followDataFromNextUpdate();
+  recompute();
+}
+
+}  // namespace grazelab::ui

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// The status line and the problem banner: what was computed, at what cost and how far it can
+// be trusted, in words; why nothing was computed.
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+
+#include <algorithm>
+
+#include "core/solver/trust.h"
+#include "ui/window/main_window.h"
+#include "ui/widgets/parameter_panel.h"
+#include "ui/plots/plot_view.h"
+#include "ui/widgets/readout_panel.h"
+#include "ui/window/status_line.h"
+
+namespace grazelab::ui {
+namespace {
+
+QString scientific(double value) { return QString::number(value, 'g', 3); }
+
+}  // namespace
+
+void MainWindow::showProblem(const QString& message) {
+  // the last valid result stays on screen; only the message and the read-outs change
+  m_problem = message;
+  m_panel->setMessage(message);
+  for (PlotView* plot : m_plots) plot->setStale(m_displayed.has_value());
+  m_readout->setStale(true);
+  m_status->setMessage(tr("Not computed: %1 (showing the last valid result)").arg(message));
+}
+
+void MainWindow::showStatus(const SimUpdate& update) {
+  const core::Result& result = *update.result;
+  const core::Cost& cost = result.cost;
+  // "1 stick", "2 sticks": the count decides the word
+  auto counted = [](std::int64_t n, const QString& one, const QString& many) {
+    return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
+  };
+  QString text = tr("%1 (%2, %3, %4) · %5 ms · energy drift %6 · max |u₂ − d| at contacts %7")
+                     .arg(counted(cost.contacts, tr("contact"), tr("contacts")),
+                          counted(cost.impacts, tr("impact"), tr("impacts")),
+                          counted(cost.grazings, tr("grazing"), tr("grazings")),
+                          counted(cost.sticks, tr("stick"), tr("sticks")))
+                     .arg(cost.wallSeconds * 1e3, 0, 'f', 1)
+                     .arg(scientific(cost.maxRelEnergyDrift))
+                     .arg(scientific(cost.maxContactResidual));
+  // a run raised to a higher precision says so early in the line; why, in the tooltip
+  m_status->setExplanation(m_statusExplanation + (update.precisionNote.empty()
+                                                      ? QString()
+                                                      : QStringLiteral("\n\n") +
+                                                            QString::fromStdString(update.precisionNote)));
+  if (update.attempt > 0) {
+    const int counts = int(text.indexOf(QStringLiteral(" · ")));
+    text.insert(counts, tr(" in %1").arg(update.attempt == 1 ? tr("long double") : tr("binary128")));
+  }
+  if (update.trust) text += QStringLiteral(" · ") + trustInWords(*update.trust, result.tFinal);
+  if (update.trustPending) text += tr(" · trust: estimating…");
+  if (update.accuracy) {
+    text += tr(" · methods: %1 of %2 settings measured")
+                .arg(update.accuracy->points.size())
+                .arg(update.accuracy->total);
+  }
+  if (!update.final) {
+    text += tr(" · computing…");
+  } else if (result.stop == core::StopReason::Cancelled) {
+    text += tr(" · cancelled");
+  } else if (!result.message.empty()) {
+    text += QStringLiteral(" · ") + QString::fromStdString(result.message);
+  }
+  if (!m_problem.isEmpty()) text = tr("Not computed: %1 (showing the last valid result)").arg(m_problem);
+  m_status->setMessage(text);
+}
+
+QString MainWindow::trustInWords(const core::Trust& trust, double tEnd) {
+  const QString error = scientific(std::max(trust.stateError, trust.timeError));
+  const QString horizon = scientific(trust.horizon);
+  if (trust.verdict == core::Verdict::Unreliable && trust.horizon > 0 && trust.horizon < tEnd) {
+    // the usual case on ordinary settings: chaos, not a fault; say what still holds
+    return tr("chaotic: after t ≈ %1 the exact path depends on rounding (error ≈ %2 at the end); "
+              "the statistics shown still hold")
+        .arg(horizon, error);
+  }
+  switch (trust.verdict) {
+    // an extrapolated horizon is a conservative lower bound, and is said to be one
+    case core::Verdict::Ok:
+      return trust.horizonObserved
+                 ? tr("trust: ok (error ≈ %1; the path holds to 1e-6 until t ≈ %2, observed)").arg(error, horizon)
+                 : tr("trust: ok (error ≈ %1; the path holds to 1e-6 at least until t ≈ %2, extrapolated)")
+                       .arg(error, horizon);
+    case core::Verdict::Degraded:
+      return trust.horizonObserved
+                 ? tr("trust: degraded (error ≈ %1; the path holds to 1e-6 until t ≈ %2, observed)").arg(error, horizon)
+                 : tr("trust: degraded (error ≈ %1; the path holds to 1e-6 at least until t ≈ %2, extrapolated)")
+                       .arg(error, horizon);
+    case core::Verdict::Unreliable:
+      return tr("trust: unreliable (error ≈ %1): %2").arg(error, QString::fromStdString(trust.reason));
+    case core::Verdict::Unchecked: break;
+  }
+  return tr("trust: not checked");
+}
+
+void MainWindow::setProgressVisible(bool visible) {
+  m_progress->setVisible(visible);
+  m_cancel->setVisible(visible);
+}
+
+QString MainWindow::statusText() const { return m_status->message(); }
+
+QString MainWindow::problem() const { return m_problem; }
+
+}  // namespace grazelab::ui

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/window/session.h"
+
+#include "ui/widgets/number_box.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cmath>
+
+namespace grazelab::ui {
+namespace {
+
+const QString kFormat = QStringLiteral("grazelab-session");
+
+}  // namespace
+
+QByteArray sessionToJson(const Session& session) {
+  QJsonObject object;
+  object.insert(QStringLiteral("format"), kFormat);
+  object.insert(QStringLiteral("version"), 1);
+  object.insert(QStringLiteral("scene"), session.scene);
+  object.insert(QStringLiteral("params"), toJson(session.params));
+  if (session.start) {
+    const core::State& x = *session.start;
+    object.insert(QStringLiteral("start"), QJsonObject{{QStringLiteral("u1"), x.u1},
+                                                       {QStringLiteral("u2"), x.u2},
+                                                       {QStringLiteral("v1"), x.v1},
+                                                       {QStringLiteral("v2"), x.v2}});
+  }
+  return QJsonDocument(object).toJson(QJsonDocument::Indented);
+}
+
+std::optional<Session> sessionFromJson(const QByteArray& json, const Params& defaults,
+                                       QString* error) {
+  QJsonParseError parseError;
+  const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+  auto fail = [&](const QString& text) {
+    if (error) *error = text;
+    return std::nullopt;
+  };
+  if (document.isNull()) return fail(QStringLiteral("not JSON: %1").arg(parseError.errorString()));
+  const QJsonObject object = document.object();
+  if (object.value(QStringLiteral("format")).toString() != kFormat) {
+    return fail(QStringLiteral("not a GrazeLab session (\"format\" is not \"%1\")").arg(kFormat));
+  }
+  Session session;
+  session.scene = object.value(QStringLiteral("scene")).toString();
+  QString paramsError;
+  const auto params =
+      paramsFromJson(object.value(QStringLiteral("params")).toObject(), defaults, &paramsError);
+  if (!params) return fail(paramsError);
+  session.params = *params;
+  if (object.contains(QStringLiteral("start"))) {
+    const QJsonObject start = object.value(QStringLiteral("start")).toObject();
+    double x[4] = {};
+    const char* names[4] = {"u1", "u2", "v1", "v2"};
+    for (int i = 0; i < 4; ++i) {
+      const QJsonValue value = start.value(QLatin1String(names[i]));
+      if (!value.isDouble() || !std::isfinite(value.toDouble())) {
+        return fail(QStringLiteral("\"start\" needs a finite number \"%1\"").arg(QLatin1String(names[i])));
+      }
+      x[i] = value.toDouble();
+    }
+    session.start = core::State{x[0], x[1], x[2], x[3]};
+  }
+  return session;
+}
+
+QString sessionPathFor(const QString& snapshotPath) {
+  // the whole name: a PNG, an SVG and a CSV saved under one base name each keep their own
+  const QFileInfo info(snapshotPath);
+  return info.dir().filePath(info.fileName() + QStringLiteral(".session.json"));
+}
+
+QString sessionTitle(const Session& session) {
+  const Params& p = session.params;
+  const auto n = [](double value) { return shortestText(value); };
+  const QString chain = QStringLiteral("m₁ = %1, m₂ = %2, k₁ = %3, k₂ = %4, d = %5")
+                            .arg(n(p.m1), n(p.m2), n(p.k1), n(p.k2), n(p.gap));
+  if (session.start) {
+    // the scene's λ and push do not describe a clicked start: the start itself does
+    const core::State& x = *session.start;
+    return QStringLiteral("GrazeLab: %1 (%2, from the clicked start u₁ = %3, u₂ = %4, v₁ = %5, v₂ = %6, %7 contacts)")
+        .arg(session.scene, chain, n(x.u1), n(x.u2), n(x.v1), n(x.v2))
+        .arg(n(p.horizon));
+  }
+  return QStringLiteral("GrazeLab: %1 (λ = %2, δ = %3, %4, %5 contacts)")
+      .arg(session.scene, n(p.lambda), n(p.perturbation), chain)
+      .arg(n(p.horizon));
+}
+
+std::optional<Session> readSessionFile(const QString& path, const Params& defaults,
+                                       QString* error) {
+  QFile file(path);
+  if (!file.open(QIODevice::ReadOnly)) {
+    if (error) *error = QStringLiteral("cannot read %1: %2").arg(path, file.errorString());
+    return std::nullopt;
+  }
+  QString parseError;
+  auto loaded = sessionFromJson(file.readAll(), defaults, &parseError);
+  if (!loaded && error) *error = QStringLiteral("%1: %2").arg(path, parseError);
+  return loaded;
+}
+
+}  // namespace grazelab::ui
