@@ -34,6 +34,7 @@
 #include "commands/simulate_command.h"
 #include "value_to_python.h"
 #include "core/experiments/maps.h"
+#include "core/solver/recorder.h"
 #include "io/map_files.h"
 
 namespace py = pybind11;
@@ -153,6 +154,31 @@ py::tuple mapInMemory(grazelab::cli::map::StoredMap&& map) {
   return py::make_tuple(py::bytes(document.constData(), std::size_t(document.size())), array);
 }
 
+// A run's samples as a NumPy array (t, u1, u2, v1, v2) that owns them (no copy).
+py::array sampleArray(std::vector<grazelab::core::Sample>&& samples) {
+  using grazelab::core::Sample;
+  static_assert(sizeof(Sample) == 5 * sizeof(double));
+  py::list names, formats, offsets;
+  const std::size_t state = offsetof(Sample, state);
+  const std::pair<const char*, std::size_t> columns[] = {
+      {"t", offsetof(Sample, t)}, {"u1", state + 0 * sizeof(double)}, {"u2", state + 1 * sizeof(double)},
+      {"v1", state + 2 * sizeof(double)}, {"v2", state + 3 * sizeof(double)}};
+  for (const auto& [name, offset] : columns) {
+    names.append(name);
+    formats.append("<f8");
+    offsets.append(offset);
+  }
+  py::dict description;
+  description["names"] = names;
+  description["formats"] = formats;
+  description["offsets"] = offsets;
+  description["itemsize"] = sizeof(Sample);
+  auto* owned = new std::vector<Sample>(std::move(samples));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<Sample>*>(p); });
+  return py::array(py::dtype::from_args(description), {static_cast<py::ssize_t>(owned->size())},
+                   {static_cast<py::ssize_t>(sizeof(Sample))}, owned->data(), owner);
+}
+
 // Hands the latest progress, if any arrived since the last call, to the caller's callback (with
 // the GIL held). False when the callback raised: that exception is kept in `pythonError`.
 bool deliverProgress(ProgressMailbox& mailbox, const py::object& progress,
@@ -177,8 +203,9 @@ bool deliverProgress(ProgressMailbox& mailbox, const py::object& progress,
 // A simulate's document as Results; a run in long double or binary128 (its events' decimals
 // kept) also has `decimal`: its numbers as text.
 py::object documentToPython(const grazelab::cli::JsonValue& document, const py::object& resultType,
-                            bool withDecimals) {
+                            bool withDecimals, std::vector<grazelab::core::Sample>&& samples) {
   py::object result = grazelab::python::toPython(document, resultType);
+  if (result.contains("samples_truncated")) result["samples"] = sampleArray(std::move(samples));
   if (withDecimals) {
     result["decimal"] = grazelab::python::toPython(document, resultType, true);
   }
@@ -209,7 +236,11 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   grazelab::cli::map::StoredMap map;
   if (keepMap) io.map = &map;
   grazelab::cli::JsonValue document;
-  if (!resultType.is_none()) io.document = &document;
+  std::vector<grazelab::core::Sample> samples;
+  if (!resultType.is_none()) {
+    io.document = &document;
+    io.samples = &samples;
+  }
   std::vector<std::pair<std::string, std::string>> files;
   if (keepFiles) io.files = &files;
   if (!progress.is_none()) {
@@ -278,7 +309,7 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   if (keepMap && code == 0) mapResult = mapInMemory(std::move(map));
   py::object documentResult = py::none();
   if (!resultType.is_none() && code == 0) {
-    documentResult = documentToPython(document, resultType, !decimals.is_none());
+    documentResult = documentToPython(document, resultType, !decimals.is_none(), std::move(samples));
   }
   py::object filesResult = py::none();
   if (keepFiles && code == 0) {
@@ -331,6 +362,8 @@ py::tuple simulateHere(const py::list& given, const py::object& resultType, bool
   if (eventsAsArrays || discardEvents) io.events = table.get();
   grazelab::cli::JsonValue document;
   io.document = &document;
+  std::vector<grazelab::core::Sample> samples;
+  io.samples = &samples;
   int code = 0;
   {
     py::gil_scoped_release released;
@@ -352,8 +385,8 @@ py::tuple simulateHere(const py::list& given, const py::object& resultType, bool
     if (!table->decimals.empty()) decimals = py::cast(table->decimals);
     events = eventArray(std::move(table));
   }
-  return py::make_tuple(documentToPython(document, resultType, !decimals.is_none()), py::str(log),
-                        events, decimals);
+  return py::make_tuple(documentToPython(document, resultType, !decimals.is_none(), std::move(samples)),
+                        py::str(log), events, decimals);
 }
 
 }  // namespace

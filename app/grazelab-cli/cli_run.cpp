@@ -103,7 +103,7 @@ const std::vector<Command>& commands() {
          return fail(io, "--precision: unknown");
        },
        {}},
-      {"simulate", kChain + kStart + QStringList{"precision", "contacts", "t-end", "search-steps", "format", "trust"}, false,
+      {"simulate", kChain + kStart + QStringList{"precision", "contacts", "t-end", "search-steps", "format", "trust", "sample-step", "sample-times"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
          const auto precision = parsePrecisionOption(parser, error);

@@ -39,7 +39,7 @@ Recorder<S>::Recorder(const Chain<S>& chain, const Scale<S>& scale, const BasicS
       m_onEvent(std::move(onEvent)),
       m_result(result),
       m_initialScaledEnergy(scaledEnergy(chain, initial)) {
-  m_nextSampleTime = needs.samples.tBegin;
+  m_nextSampleTime = needs.samples.timeOf(0);
 }
 
 template <typename S>
@@ -55,7 +55,7 @@ template <typename S>
 void Recorder<S>::sampleUntil(const ExactStepper<S>& stepper, const S& segmentStart,
                               const S& tauEnd) {
   const SampleSpec& spec = m_needs.samples;
-  if (spec.spacing <= 0) return;
+  if (!spec.wanted()) return;
   const double tSegment = toDouble(m_scale.toPhysicalTime(segmentStart));
   const double last = std::min(toDouble(m_scale.toPhysicalTime(tauEnd)), spec.tEnd);
   while (m_nextSampleTime <= last && !m_result.samplesTruncated) {
@@ -65,7 +65,7 @@ void Recorder<S>::sampleUntil(const ExactStepper<S>& stepper, const S& segmentSt
       addSample(m_nextSampleTime, convertState<double>(physical));
     }
     ++m_nextSampleIndex;
-    m_nextSampleTime = spec.tBegin + double(m_nextSampleIndex) * spec.spacing;
+    m_nextSampleTime = spec.timeOf(m_nextSampleIndex);
   }
 }
 
@@ -115,7 +115,7 @@ void Recorder<S>::record(const Step<S>& step) {
   // the event in physical units only when something keeps it (a run that keeps only the cost
   // spends no time converting)
   const SampleSpec& samples = m_needs.samples;
-  const bool contactSamples = isContact(step.type) && samples.spacing > 0 && samples.includeContacts;
+  const bool contactSamples = isContact(step.type) && samples.wanted() && samples.includeContacts;
   if (!m_onEvent && !m_needs.events && !(isContact(step.type) && m_needs.poincare) &&
       !contactSamples) {
     return;

@@ -16,14 +16,25 @@ namespace grazelab::core {
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-/// Dense output: states every `spacing` time units on [tBegin, tEnd], computed only when asked
-/// for (spacing > 0). Contact states are added too, so that traces keep their corners.
+/// Dense output: states every `spacing` time units on [tBegin, tEnd], or at the given `times`,
+/// computed only when asked for. Contact states are added too (unless told not to), so that
+/// traces keep their corners.
 struct SampleSpec {
-  double spacing = 0;      ///< time between samples; 0 = no samples
+  double spacing = 0;      ///< time between samples; 0 = no grid
   double tBegin = 0;       ///< first sample time
   double tEnd = kInfinity; ///< last sample time (the run's end if earlier)
+  /// Sample times, ascending, instead of the grid (the exact solver's runs; a time-stepping
+  /// method has no motion between its steps to sample, and samples on the grid only).
+  std::vector<double> times;
   std::size_t maxCount = 4'000'000;  ///< memory guard; samples past it are dropped (flagged)
   bool includeContacts = true;       ///< add the states just before and after each contact
+
+  bool wanted() const { return spacing > 0 || !times.empty(); }
+  /// The time of sample `index` (infinity past the last of `times`).
+  double timeOf(std::int64_t index) const {
+    if (times.empty()) return tBegin + double(index) * spacing;
+    return std::size_t(index) < times.size() ? times[std::size_t(index)] : kInfinity;
+  }
 };
 
 /// What the caller will look at; nothing else is stored (docs/design.md "Needs").

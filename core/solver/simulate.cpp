@@ -30,6 +30,13 @@ std::vector<Problem> validateRequest(const BasicRequest<S>& request) {
   if (!std::isfinite(samples.spacing) || samples.spacing < 0) {
     add("samples.spacing", "must be >= 0 and finite", std::to_string(samples.spacing));
   }
+  for (std::size_t i = 0; i < samples.times.size(); ++i) {
+    if (!std::isfinite(samples.times[i]) || samples.times[i] < 0 ||
+        (i > 0 && !(samples.times[i] >= samples.times[i - 1]))) {
+      add("samples.times", "must be finite, >= 0 and ascending", std::to_string(samples.times[i]));
+      break;
+    }
+  }
   if (!std::isfinite(samples.tBegin) || samples.tBegin < 0) {
     add("samples.tBegin", "must be >= 0 and finite", std::to_string(samples.tBegin));
   }

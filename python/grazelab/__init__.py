@@ -51,9 +51,10 @@ _Progress = _Callable[[_Optional[float], str], None]
 # with grazelab-cli simulate --format csv or jsonl, whose memory stays bounded
 MAX_EVENTS = 2**25
 
-# a designed (resonant) chain's run of at most this many contacts is computed on the calling
-# thread, its options handed over by name (no command-line text, no thread): ~0.1 s in
-# binary128, so that Ctrl+C, which nothing polls meanwhile, still ends it within a second
+# a designed (resonant) chain's run of at most this many contacts (without samples, which may
+# be millions) is computed on the calling thread, its options handed over by name (no
+# command-line text, no thread): ~0.1 s in binary128, so that Ctrl+C, which nothing polls
+# meanwhile, still ends it within a second
 _DIRECT_CONTACTS = 1000
 
 
@@ -160,7 +161,8 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
              glo: _Optional[float] = None, onepp: _Optional[float] = None, state: _Optional[_Sequence[float]] = None,
              perturb: _Optional[_Sequence[float]] = None, contacts: _Optional[int] = None,
              t_end: _Optional[float] = None, search_steps: _Optional[int] = None, trust: str = "auto",
-             events: bool = True, progress: _Optional[_Progress] = None) -> Result:
+             events: bool = True, samples: _Union[float, _Sequence[float], None] = None,
+             progress: _Optional[_Progress] = None) -> Result:
     """One exact run (``grazelab-cli simulate``). Returns the JSON's fields (model, initial,
     final, stop_reason, contacts, energy, accuracy, trust, precision, timing) with ``events`` a
     structured array of the columns t, type, u1, u2, v1, v2_pre, v2_post (the arrays the core
@@ -179,6 +181,10 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         costs about the run itself, then extrapolation), "full" or "off".
     events: False for the run's statistics only (contacts, energy, accuracy, trust, final
         state): no event is kept, so no ``MAX_EVENTS`` bound; ``events`` is then None.
+    samples: the state on a time grid as well: a step DT (every DT from t = 0 to the run's end)
+        or the times themselves, ascending [time]. ``samples`` is then a structured array
+        (t, u1, u2, v1, v2), in double, a time past the run's end left out (at most 4 000 000:
+        ``samples_truncated`` says when more were asked for).
     progress: ``progress(fraction, text)``, called on the calling thread.
 """
     try:
@@ -192,7 +198,10 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
     options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision, glo=glo,
                    onepp=onepp, state=state, perturb=perturb, contacts=contacts, t_end=t_end,
                    search_steps=search_steps, trust=trust)
-    if (progress is None and k2 is None and t_end is None and count is not None
+    if samples is not None:
+        grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
+        options["sample_times" if grid else "sample_step"] = samples
+    if (progress is None and k2 is None and t_end is None and samples is None and count is not None
             and 0 <= count <= _DIRECT_CONTACTS):
         # a short run of a designed chain: the same command, called directly
         given = _convert.option_texts({n: v for n, v in options.items() if v is not None})

@@ -266,3 +266,28 @@ def test_events_are_a_view_of_the_core_table_not_a_copy():
     assert events.base is not None and not events.flags["OWNDATA"]
     assert np.all(np.diff(events["t"]) > 0)
     assert math.isfinite(run.final.t)
+
+
+def test_samples_are_the_states_of_runs_that_end_there_and_the_cli_samples(cli_json):
+    # the state on a time grid: at each time the state a run stopped there ends with (the same
+    # exact flight, to the last bit), the command line's samples, and on the stop's side
+    start = dict(glo=0.5, perturb=(0, 0, 0, -0.05))
+    times = [0, 1.25, 3.3, 7.7, 20.0, 44.4]
+    run = gl.simulate(**start, contacts=10, samples=times)
+    assert list(run.samples["t"]) == times and run.samples_truncated is False
+    for sample in run.samples[1:]:
+        final = gl.simulate(**start, t_end=float(sample["t"])).final
+        assert [final.u1, final.u2, final.v1, final.v2] == [sample[c] for c in ("u1", "u2", "v1", "v2")]
+    expected = cli_json("simulate", "--glo", "0.5", "--perturb=0,0,0,-0.05", "--contacts", "10",
+                        "--sample-times", ",".join(str(t) for t in times))
+    for column in ("t", "u1", "u2", "v1", "v2"):
+        np.testing.assert_array_equal(bits(run.samples[column]), bits(expected["samples"][column]))
+    grid = gl.simulate(**start, contacts=30, samples=0.25)
+    assert len(grid.samples) == math.floor(grid.final.t / 0.25) + 1
+    assert np.all(grid.samples["u2"] <= 1.0)
+    # elastic impacts: every sample has the start's energy (masses 1 and 0.5, springs 1 and 0.5)
+    s = grid.samples
+    energy = 0.5 * (s["v1"] ** 2 + 0.5 * s["v2"] ** 2) + 0.5 * (s["u1"] ** 2 + 0.5 * (s["u2"] - s["u1"]) ** 2)
+    np.testing.assert_allclose(energy, grid.energy.initial, rtol=1e-12)
+    with pytest.raises(ValueError, match="ascending"):
+        gl.simulate(**start, contacts=3, samples=[2.0, 1.0])

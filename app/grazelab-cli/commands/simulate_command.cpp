@@ -107,7 +107,7 @@ int simulateIn(const OptionValues& options, core::TrustMode trustMode, AutoRun* 
   RunInput<S>& run = *parsed.value;
   run.request.stopAtUndecided = autoRun != nullptr && !kTopPrecision;
   RunWriter<S> writer(run, io.out, autoRun ? std::string("auto") : precisionName, io.events,
-                      io.document);
+                      io.document, io.samples);
   // the error estimate: the same input read one precision up, run beside this one
   std::optional<core::TrustMonitor<S>> monitor;
   std::string noShadow;

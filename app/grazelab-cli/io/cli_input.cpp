@@ -89,6 +89,11 @@ const OptionSpec kOptions[] = {
                        "(default: about a second's worth, 10000000 in double, 3000000 in long, "
                        "300000 in quad); running out stops the run with stop_reason "
                        "search-budget, never 'no contact'.", "N", nullptr},
+    {"sample-step", "Also report the state every DT time units from t = 0 to the run's end, "
+                    "after the run (json and jsonl only; at most 4000000 samples, in double).",
+     "DT", nullptr},
+    {"sample-times", "Also report the state at these times, ascending (json and jsonl only).",
+     "t1,t2,...", nullptr},
     {"format", "Output: json (default), jsonl (JSON Lines), csv or summary. json, jsonl and "
                  "csv stream: memory stays bounded and an interrupt leaves complete records.",
        "json|jsonl|csv|summary", "json"},
@@ -302,6 +307,31 @@ Parsed<RunInput<S>> parseRun(const OptionValues& options) {
                   periods, core::toDouble(slowPeriod), periods / 1e7 / 3.15e7);
     run.notes.push_back(line);
   }
+  if (options.isSet("sample-step") && options.isSet("sample-times")) {
+    return {std::nullopt, "--sample-step and --sample-times exclude each other"};
+  }
+  core::SampleSpec& samples = run.request.needs.samples;
+  if (options.isSet("sample-step")) {
+    const auto step = toNumber<double>("sample-step", options.value("sample-step"), error);
+    if (!step) return {std::nullopt, error};
+    if (!(*step > 0) || !std::isfinite(*step)) {
+      return {std::nullopt, QStringLiteral("--sample-step: '%1' is not a time > 0").arg(options.value("sample-step"))};
+    }
+    samples.spacing = *step;
+  }
+  if (options.isSet("sample-times")) {
+    for (const QString& part : options.value("sample-times").split(',')) {
+      const auto t = toNumber<double>("sample-times", part, error);
+      if (!t) return {std::nullopt, error};
+      if (!(*t >= 0) || !std::isfinite(*t) || (!samples.times.empty() && *t < samples.times.back())) {
+        return {std::nullopt, QStringLiteral("--sample-times: '%1' is not a list of times >= 0, "
+                                             "ascending").arg(options.value("sample-times"))};
+      }
+      samples.times.push_back(*t);
+    }
+  }
+  // the user's times only: no extra states at the contacts
+  samples.includeContacts = false;
   const QString format = options.value("format");
   if (format == "json") {
     run.format = Format::Json;
@@ -315,7 +345,11 @@ Parsed<RunInput<S>> parseRun(const OptionValues& options) {
     return {std::nullopt,
             QStringLiteral("--format: '%1' is not json, jsonl, csv or summary").arg(format)};
   }
-  // outputs stream every event through the request's callback; nothing is kept in memory
+  if (samples.wanted() && run.format != Format::Json && run.format != Format::JsonLines) {
+    return {std::nullopt, "--sample-step and --sample-times are written in --format json and jsonl only"};
+  }
+  // outputs stream every event through the request's callback; nothing is kept in memory but
+  // the samples asked for
   run.request.needs.events = false;
   return {run, {}};
 }

@@ -14,6 +14,13 @@ namespace map {
 struct StoredMap;
 }
 struct JsonValue;
+}  // namespace grazelab::cli
+
+namespace grazelab::core {
+struct Sample;
+}  // namespace grazelab::core
+
+namespace grazelab::cli {
 
 /// One event of a run as the Python module hands it to NumPy without a copy: the columns of the
 /// command line's CSV (t,type,u1,u2,v1,v2_pre,v2_post), numbers rounded to double, the type in
@@ -55,8 +62,10 @@ struct Io {
   /// When set, `map` and `merge` put the map here (the Python module: arrays without files);
   /// their files are then written only where --out names them.
   map::StoredMap* map = nullptr;
-  /// When set (with `events`), `simulate` puts its JSON document here as values, not as text.
+  /// When set (with `events`), `simulate` puts its JSON document here as values, not as text,
+  /// and the samples asked for (--sample-step, --sample-times) into `samples`.
   JsonValue* document = nullptr;
+  std::vector<core::Sample>* samples = nullptr;
   /// When set, `family` and `modes` without --out put their files here, (name, bytes), instead
   /// of on disk, and draw no picture.
   std::vector<std::pair<std::string, std::string>>* files = nullptr;

@@ -298,17 +298,40 @@ template <typename S>
 void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
                        const core::Trust& trust, const PrecisionReport& precision) {
   std::vector<JsonValue::Field> fields = endValues(m_run, result, interrupted, trust, precision);
+  const bool sampled = m_run.request.needs.samples.wanted();
+  if (sampled) fields.emplace_back("samples_truncated", JsonValue::of(result.samplesTruncated));
   if (m_document) {
     for (JsonValue::Field& field : fields) m_document->fields.push_back(std::move(field));
+    if (sampled && m_samples) *m_samples = result.samples;
     return;
   }
+  // the samples as columns, written as they are read (millions of them: no tree)
+  const auto samplesField = [&](const std::string& indent) {
+    if (!sampled) return std::string();
+    std::string out = ",\n" + indent + "\"samples\": {";
+    const char* names[] = {"t", "u1", "u2", "v1", "v2"};
+    for (int column = 0; column < 5; ++column) {
+      out += std::string(column ? ", " : "") + "\"" + names[column] + "\": [";
+      for (std::size_t i = 0; i < result.samples.size(); ++i) {
+        const core::Sample& sample = result.samples[i];
+        const double value = column == 0 ? sample.t : column == 1 ? sample.state.u1
+                             : column == 2 ? sample.state.u2 : column == 3 ? sample.state.v1
+                                                                             : sample.state.v2;
+        if (i > 0) out += ", ";
+        out += jsonNumber(value);
+      }
+      out += "]";
+    }
+    return out + "}";
+  };
   const bool initialUsed = !precision.escalations.empty();
   switch (m_run.format) {
     case Format::Json:
-      write((m_events == 0 || m_table ? "],\n" : "\n  ],\n") + endFields(fields, "  ") + "\n}\n");
+      write((m_events == 0 || m_table ? "],\n" : "\n  ],\n") + endFields(fields, "  ") +
+            samplesField("  ") + "\n}\n");
       break;
     case Format::JsonLines: {
-      std::string line = endFields(fields, "");
+      std::string line = endFields(fields, "") + samplesField("");
       std::string flat;
       for (char c : line) flat += c == '\n' ? ' ' : c;
       write("{\"record\": \"end\", " + flat + "}\n");

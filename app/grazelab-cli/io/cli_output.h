@@ -46,9 +46,10 @@ class RunWriter {
   /// the events go there and the text's events array stays empty; with a `document` the whole
   /// output goes there as values instead of text (both: the Python module).
   RunWriter(const RunInput<S>& run, std::FILE* out, std::string precision,
-            EventTable* table = nullptr, JsonValue* document = nullptr)
+            EventTable* table = nullptr, JsonValue* document = nullptr,
+            std::vector<core::Sample>* samples = nullptr)
       : m_run(run), m_out(out), m_precision(std::move(precision)), m_table(table),
-        m_document(document) {}
+        m_document(document), m_samples(samples) {}
 
   /// Everything known before the first event.
   void begin(const core::BasicResult<S>& result);
@@ -68,6 +69,7 @@ class RunWriter {
   std::string m_precision;
   EventTable* m_table;
   JsonValue* m_document;
+  std::vector<core::Sample>* m_samples;
   std::int64_t m_events = 0;
 };
 
