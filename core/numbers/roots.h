@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 
 namespace grazelab::core {
 
@@ -59,11 +60,14 @@ template <typename S, typename Function>
 std::pair<S, S> solveBracketed(const Function& g, S a, S b, S ga, S gb, S guess);
 
 /// The boundary between `inside` and not inside in [a, b], where `inside(a)` holds and
-/// `inside(b)` does not (a may be above b): bisection down to the last bit of S, or until
-/// `stopped()`. Returns the last point found inside (a when none nearer was).
+/// `inside(b)` does not (a may be above b): bisection down to the last bit of S, to a bracket
+/// of `tolerance`, or until `stopped()`. Returns the last point found inside (a when none
+/// nearer was). The one bisection of the core: `inside` may keep what it found at a point.
 template <typename S, typename Inside, typename Stopped>
-S bisectBoundary(S a, S b, const Inside& inside, const Stopped& stopped) {
+S bisectBoundary(S a, S b, const Inside& inside, const Stopped& stopped, const S& tolerance = S(0)) {
+  using std::abs;
   for (int step = 0; step < 20000; ++step) {
+    if (abs(a - b) <= tolerance) break;
     const S middle = (a + b) / S(2);
     if (middle == a || middle == b || stopped()) break;
     if (inside(middle)) a = middle;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/numbers/roots.h"
 #include "core/orbits/family_continuation.h"
 
 #include "core/orbits/special_orbits.h"
@@ -180,32 +181,32 @@ std::pair<std::optional<PeriodicOrbit<S>>, std::optional<PeriodicOrbit<S>>> loca
     const Chain<S>& chain, const Units<S>& units, const Vector3<S>& from, const Vector3<S>& to,
     const Vector3<S>& t, S step, int impacts, const Test& test, bool signAtFrom, std::stop_token stop,
     std::vector<TraceSample<S>>* met = nullptr) {
-  S low = 0;
-  S high = step;
   Vector3<S> yLow = from;
   Vector3<S> yHigh = to;
   std::optional<PeriodicOrbit<S>> lowOrbit;
   std::optional<PeriodicOrbit<S>> highOrbit;
-  for (int iteration = 0; iteration < 20000 && !stop.stop_requested(); ++iteration) {
-    const S middle = (low + high) / S(2);
-    if (middle == low || middle == high) break;
+  bool lost = false;  // a trial the corrector could not bring onto the family ends the search
+  const auto onFromsSide = [&](const S& middle) {
     const Vector3<S> plane = along(from, middle, t);
     const Vector3<S> predicted = between(yLow, yHigh, S(0.5));
     // near a branch point Newton's first steps are long across the singular direction: the
     // trial may go as far as the whole step, no farther
     const auto corrected = correct(chain, units, predicted, plane, t, impacts, step);
-    if (!corrected) break;
+    if (!corrected) {
+      lost = true;
+      return false;
+    }
     if (met) met->push_back({corrected->second.orbit.energy, corrected->second.orbit.trace});
     if (test(corrected->second) == signAtFrom) {
-      low = middle;
       yLow = corrected->first;
       lowOrbit = corrected->second.orbit;
-    } else {
-      high = middle;
-      yHigh = corrected->first;
-      highOrbit = corrected->second.orbit;
+      return true;
     }
-  }
+    yHigh = corrected->first;
+    highOrbit = corrected->second.orbit;
+    return false;
+  };
+  bisectBoundary(S(0), step, onFromsSide, [&] { return lost || stop.stop_requested(); });
   return {lowOrbit, highOrbit};
 }
 
@@ -231,17 +232,12 @@ PeriodicOrbit<S> approachInEnergy(const Chain<S>& chain, const Units<S>& units, 
   if (onFamily(outside)) return inside;  // the family goes on there: nothing to refine
   // the bracket in the energies asked for (an orbit's own energy differs from its target by
   // a rounding, which must not keep the bisection from closing)
-  S reached = inside.energy;
-  for (int step = 0; step < 20000 && !stop.stop_requested(); ++step) {
-    const S middle = (reached + outside) / S(2);
-    if (middle == reached || middle == outside) break;
-    if (std::optional<PeriodicOrbit<S>> found = onFamily(middle)) {
-      inside = std::move(*found);
-      reached = middle;
-    } else {
-      outside = middle;
-    }
-  }
+  const auto keepsFamily = [&](const S& energy) {
+    std::optional<PeriodicOrbit<S>> found = onFamily(energy);
+    if (found) inside = std::move(*found);
+    return found.has_value();
+  };
+  bisectBoundary(inside.energy, outside, keepsFamily, [&] { return stop.stop_requested(); });
   return inside;
 }
 

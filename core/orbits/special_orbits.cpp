@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/numbers/roots.h"
 #include "core/orbits/special_orbits.h"
 
 #include <boost/math/special_functions/next.hpp>
@@ -170,11 +171,7 @@ double onePeriodicLowerEnd(const Model& model, const Modes& modes) {
     low -= step;
   }
   if (low <= 0) return 0;
-  while (high - low > 1e-12 * T2) {
-    const double middle = 0.5 * (low + high);
-    (admissible(middle) ? high : low) = middle;
-  }
-  return high;
+  return bisectBoundary(high, low, admissible, [] { return false; }, 1e-12 * T2);
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                              \
