@@ -200,8 +200,8 @@ bool deliverProgress(ProgressMailbox& mailbox, const py::object& progress,
   return true;
 }
 
-// A simulate's document as Results; a run in long double or binary128 (its events' decimals
-// kept) also has `decimal`: its numbers as text.
+// A command's document as Results; one that holds numbers wider than double (long double,
+// binary128) also has `decimal`: its numbers as text.
 py::object documentToPython(const grazelab::cli::JsonValue& document, const py::object& resultType,
                             bool withDecimals, std::vector<grazelab::core::Sample>&& samples) {
   py::object result = grazelab::python::toPython(document, resultType);
@@ -309,7 +309,7 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   if (keepMap && code == 0) mapResult = mapInMemory(std::move(map));
   py::object documentResult = py::none();
   if (!resultType.is_none() && code == 0) {
-    documentResult = documentToPython(document, resultType, !decimals.is_none(), std::move(samples));
+    documentResult = documentToPython(document, resultType, document.holdsWideNumbers(), std::move(samples));
   }
   py::object filesResult = py::none();
   if (keepFiles && code == 0) {
@@ -385,7 +385,7 @@ py::tuple simulateHere(const py::list& given, const py::object& resultType, bool
     if (!table->decimals.empty()) decimals = py::cast(table->decimals);
     events = eventArray(std::move(table));
   }
-  return py::make_tuple(documentToPython(document, resultType, !decimals.is_none(), std::move(samples)),
+  return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers(), std::move(samples)),
                         py::str(log), events, decimals);
 }
 

@@ -51,6 +51,10 @@ template <typename S>
 int info(const QCommandLineParser& parser, const Io& io) {
   const auto model = parseModel<S>(parser);
   if (!model.value) return fail(io, model.error);
+  if (io.document) {
+    *io.document = infoValue(*model.value);
+    return 0;
+  }
   write(io, QByteArray::fromStdString(infoJson(*model.value)));
   return 0;
 }

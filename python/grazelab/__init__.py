@@ -150,9 +150,9 @@ def info(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[flo
 
     Keywords:
 {chain}{precision}"""
-    output, _, _, _ = _command("info", dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch,
-                                            precision=precision))
-    return _convert.parse_json(output, exact_decimals=precision in ("long", "quad"))
+    result, _, _, _ = _command("info", dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch,
+                                            precision=precision), document=True)
+    return result
 
 
 @_documented
@@ -246,10 +246,7 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
                    impacts=impacts, energy=energy, guess=guess)
     if onepp is not None:
         options.update(onepp=True, period=onepp)
-    output, _, _, _ = _command("orbit", options)
-    result = _convert.parse_json(output, exact_decimals=True)
-    if result.get("precision") not in ("long", "quad"):
-        result.pop("decimal")
+    result, _, _, _ = _command("orbit", options, document=True)
     result["multipliers"] = _convert.multipliers(result["multipliers"])
     return result
 

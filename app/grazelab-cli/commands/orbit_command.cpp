@@ -14,59 +14,64 @@
 #include "core/orbits/onepp_family_points.h"
 #include "core/orbits/periodic_orbit.h"
 #include "exit_codes.h"
+#include "io/json_value.h"
 
 namespace grazelab::cli {
 namespace {
 
 template <typename S>
-std::string stateJson(const core::BasicState<S>& x) {
-  return "{\"u1\": " + jsonNumber(x.u1) + ", \"u2\": " + jsonNumber(x.u2) + ", \"v1\": " + jsonNumber(x.v1) +
-         ", \"v2\": " + jsonNumber(x.v2) + "}";
+JsonValue stateValue(const core::BasicState<S>& x) {
+  return JsonValue::object({{"u1", JsonValue::number(x.u1)},
+                            {"u2", JsonValue::number(x.u2)},
+                            {"v1", JsonValue::number(x.v1)},
+                            {"v2", JsonValue::number(x.v2)}});
 }
 
+// The orbit's document: written with a field per line, or handed to Python as values.
 template <typename S>
-std::string orbitJson(const core::PeriodicOrbit<S>& orbit, const core::Chain<S>& chain,
-                      const std::string& precision) {
+JsonValue orbitValue(const core::PeriodicOrbit<S>& orbit, const core::Chain<S>& chain,
+                     const std::string& precision) {
+  using V = JsonValue;
   const S T2 = core::twoPi<S>() / chain.omegaSlow;
-  std::string events = "[";
-  for (std::size_t i = 0; i < orbit.events.size(); ++i) {
-    const core::BasicEvent<S>& e = orbit.events[i];
-    if (i > 0) events += ", ";
-    events += "{\"t\": " + jsonNumber(e.t) + ", \"type\": " + jsonQuoted(std::string(core::toString(e.type))) +
-              ", \"before\": " + stateJson(e.before) + ", \"after\": " + stateJson(e.after) + "}";
+  std::vector<V> events;
+  for (const core::BasicEvent<S>& e : orbit.events) {
+    events.push_back(V::object({{"t", V::number(e.t)},
+                                {"type", V::of(std::string(core::toString(e.type)))},
+                                {"before", stateValue(e.before)},
+                                {"after", stateValue(e.after)}}));
   }
-  events += "]";
   const auto& mu = orbit.multipliers;
   const std::string symmetry = core::orbitSymmetry(orbit, core::symmetryTolerance<S>());
   const core::BasicModel<S>& m = chain.model;
-  std::string out = "{\n";
-  out += "  \"format\": \"grazelab-orbit\",\n";
-  out += "  \"precision\": " + jsonQuoted(precision) + ",\n";
-  out += "  \"model\": {\"m1\": " + jsonNumber(m.m1) + ", \"m2\": " + jsonNumber(m.m2) + ", \"k1\": " +
-         jsonNumber(m.k1) + ", \"k2\": " + jsonNumber(S(chain.kappa * m.k1)) + ", \"gap\": " + jsonNumber(m.gap) +
-         ", \"T2\": " + jsonNumber(T2) + "},\n";
-  out += "  \"period\": " + jsonNumber(orbit.period) + ",\n";
-  out += "  \"T_over_T2\": " + jsonNumber(S(orbit.period / T2)) + ",\n";
-  out += "  \"energy\": " + jsonNumber(orbit.energy) + ",\n";
-  out += "  \"impacts\": " + std::to_string(orbit.impacts) + ",\n";
-  out += "  \"state\": " + stateJson(orbit.state) + ",\n";
-  out += "  \"events\": " + events + ",\n";
-  out += "  \"trace\": " + jsonNumber(orbit.trace) + ",\n";
-  out += "  \"trace_error\": " + jsonNumber(orbit.traceError) + ",\n";
-  out += "  \"multipliers\": [[" + jsonNumber(mu[0][0]) + ", " + jsonNumber(mu[0][1]) + "], [" +
-         jsonNumber(mu[1][0]) + ", " + jsonNumber(mu[1][1]) + "]],\n";
-  out += "  \"stability\": " + jsonQuoted(std::string(core::toString(orbit.stability))) + ",\n";
-  out += "  \"symmetry\": " + (symmetry.empty() ? std::string("null") : jsonQuoted(symmetry)) + ",\n";
-  out += "  \"checks\": {\"det_minus_1\": " + jsonNumber(orbit.checks.detMinus1) +
-         ", \"trivial_pair\": " + jsonNumber(orbit.checks.trivialPair) +
-         ", \"periodicity_residual\": " + jsonNumber(orbit.checks.periodicityResidual) + "},\n";
-  out += "  \"min_impact_speed\": " + jsonNumber(orbit.minImpactSpeed) + ",\n";
-  out += "  \"min_clearance\": " + jsonNumber(orbit.minClearance) + ",\n";
-  out += "  \"admissible\": true,\n";
-  out += "  \"reason\": null,\n";
-  out += "  \"generator\": " + jsonQuoted("grazelab-cli " + QCoreApplication::applicationVersion().toStdString()) + "\n";
-  out += "}\n";
-  return out;
+  return V::object(
+      {{"format", V::of("grazelab-orbit")},
+       {"precision", V::of(precision)},
+       {"model", V::object({{"m1", V::number(m.m1)},
+                            {"m2", V::number(m.m2)},
+                            {"k1", V::number(m.k1)},
+                            {"k2", V::number(S(chain.kappa * m.k1))},
+                            {"gap", V::number(m.gap)},
+                            {"T2", V::number(T2)}})},
+       {"period", V::number(orbit.period)},
+       {"T_over_T2", V::number(S(orbit.period / T2))},
+       {"energy", V::number(orbit.energy)},
+       {"impacts", V::of(std::int64_t(orbit.impacts))},
+       {"state", stateValue(orbit.state)},
+       {"events", V::array(std::move(events))},
+       {"trace", V::number(orbit.trace)},
+       {"trace_error", V::number(orbit.traceError)},
+       {"multipliers", V::array({V::array({V::number(mu[0][0]), V::number(mu[0][1])}),
+                                 V::array({V::number(mu[1][0]), V::number(mu[1][1])})})},
+       {"stability", V::of(std::string(core::toString(orbit.stability)))},
+       {"symmetry", symmetry.empty() ? V::null() : V::of(symmetry)},
+       {"checks", V::object({{"det_minus_1", V::number(orbit.checks.detMinus1)},
+                             {"trivial_pair", V::number(orbit.checks.trivialPair)},
+                             {"periodicity_residual", V::number(orbit.checks.periodicityResidual)}})},
+       {"min_impact_speed", V::number(orbit.minImpactSpeed)},
+       {"min_clearance", V::number(orbit.minClearance)},
+       {"admissible", V::of(true)},
+       {"reason", V::null()},
+       {"generator", V::of("grazelab-cli " + QCoreApplication::applicationVersion().toStdString())}});
 }
 
 // Reads --NAME as a number of S, or says why not.
@@ -149,7 +154,12 @@ Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, 
     error = text;
     return Outcome::Undecided;
   }
-  const std::string json = orbitJson(*search.orbit, chain, precision);
+  JsonValue document = orbitValue(*search.orbit, chain, precision);
+  if (io.document) {
+    *io.document = std::move(document);
+    return Outcome::Found;
+  }
+  const std::string json = fieldPerLine(document, "  ", "") + "\n";
   std::fwrite(json.data(), 1, json.size(), io.out);
   return Outcome::Found;
 }

@@ -62,8 +62,9 @@ struct Io {
   /// When set, `map` and `merge` put the map here (the Python module: arrays without files);
   /// their files are then written only where --out names them.
   map::StoredMap* map = nullptr;
-  /// When set (with `events`), `simulate` puts its JSON document here as values, not as text,
-  /// and the samples asked for (--sample-step, --sample-times) into `samples`.
+  /// When set, `info`, `orbit` and `simulate` (with `events`) put their JSON document here as values,
+  /// not as text, and `simulate` the samples asked for (--sample-step, --sample-times) into
+  /// `samples`.
   JsonValue* document = nullptr;
   std::vector<core::Sample>* samples = nullptr;
   /// When set, `family` and `modes` without --out put their files here, (name, bytes), instead

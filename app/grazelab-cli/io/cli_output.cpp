@@ -185,9 +185,13 @@ std::string endFields(const std::vector<JsonValue::Field>& fields, const std::st
 }  // namespace
 
 template <typename S>
+JsonValue infoValue(const ModelInput<S>& model) {
+  return JsonValue::object({{"model", modelValue(model, std::string(core::toString(core::precisionOf<S>())))}});
+}
+
+template <typename S>
 std::string infoJson(const ModelInput<S>& model) {
-  return "{\n  \"model\": " + modelJson(model, std::string(core::toString(core::precisionOf<S>()))) +
-         "\n}\n";
+  return "{\n  \"model\": " + fieldPerLine(infoValue(model).fields[0].second, "    ", "  ") + "\n}\n";
 }
 
 template <typename S>
@@ -396,6 +400,9 @@ void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
   std::fflush(m_out);
 }
 
+template JsonValue infoValue<double>(const ModelInput<double>&);
+template JsonValue infoValue<long double>(const ModelInput<long double>&);
+template JsonValue infoValue<core::Quad>(const ModelInput<core::Quad>&);
 template std::string infoJson<double>(const ModelInput<double>&);
 template std::string infoJson<long double>(const ModelInput<long double>&);
 template std::string infoJson<core::Quad>(const ModelInput<core::Quad>&);

@@ -26,6 +26,9 @@ std::string jsonQuoted(const std::string& text);
 /// `info`: the model with its derived quantities (k2, w1, w2, T1, T2, P, lambda*), as JSON.
 template <typename S>
 std::string infoJson(const ModelInput<S>& model);
+/// The same document as values.
+template <typename S>
+JsonValue infoValue(const ModelInput<S>& model);
 
 /// The arithmetic of a run as its output reports it: asked for ("auto", "double", ...), used
 /// in the end, and each raise of --precision auto (one line: from where and why).

@@ -45,6 +45,17 @@ std::string JsonValue::numberText() const {
   return text.empty() ? core::formatScalar(value) : text;
 }
 
+bool JsonValue::holdsWideNumbers() const {
+  if (kind == Kind::Number) return !text.empty();
+  for (const JsonValue& item : items) {
+    if (item.holdsWideNumbers()) return true;
+  }
+  for (const Field& field : fields) {
+    if (field.second.holdsWideNumbers()) return true;
+  }
+  return false;
+}
+
 namespace {
 
 void appendOneLine(std::string& out, const JsonValue& value) {

@@ -48,6 +48,8 @@ struct JsonValue {
 
   /// The decimal text of a Number, in its precision.
   std::string numberText() const;
+  /// Whether some number in it is wider than double (a run in long double or binary128).
+  bool holdsWideNumbers() const;
 };
 
 /// On one line: {"a": 1, "b": [1, 2], "c": "text"} (the command line's layout for all but the
