@@ -27,15 +27,15 @@
 #include <thread>
 #include <vector>
 
-#include "io/cli_io.h"
 #include "cli_run.h"
-#include "exit_codes.h"
-#include "io/option_values.h"
 #include "commands/simulate_command.h"
-#include "value_to_python.h"
 #include "core/experiments/maps.h"
 #include "core/solver/recorder.h"
+#include "exit_codes.h"
+#include "io/cli_io.h"
 #include "io/map_files.h"
+#include "io/option_values.h"
+#include "value_to_python.h"
 
 namespace py = pybind11;
 
@@ -110,6 +110,14 @@ py::array eventArray(std::unique_ptr<EventTable> table) {
   auto* rows = new std::vector<EventRow>(std::move(table->rows));
   py::capsule owner(rows, [](void* p) { delete static_cast<std::vector<EventRow>*>(p); });
   return py::array(dtype, {count}, {py::ssize_t(sizeof(EventRow))}, rows->data(), owner);
+}
+
+// Why a run stopped at `maxEvents` events held in memory.
+std::string tooManyEvents(std::size_t maxEvents) {
+  return "the run made more than " + std::to_string(maxEvents) + " events (" +
+         std::to_string(maxEvents * sizeof(EventRow) / 1'000'000) +
+         " MB in memory): ask for fewer contacts or a shorter t_end, or stream the run to a file "
+         "with grazelab-cli simulate --format csv";
 }
 
 // Where a quantity of a map lives in its point summaries.
@@ -291,12 +299,7 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   if (!pythonError && code == 0) deliverProgress(mailbox, progress, pythonError);
   if (pythonError) throw std::move(*pythonError);
   if (failure) std::rethrow_exception(failure);
-  if (table->full) {
-    throw py::value_error("the run made more than " + std::to_string(maxEvents) + " events (" +
-                          std::to_string(maxEvents * sizeof(EventRow) / 1'000'000) +
-                          " MB in memory): ask for fewer contacts or a shorter t_end, or stream "
-                          "the run to a file with grazelab-cli simulate --format csv");
-  }
+  if (table->full) throw py::value_error(tooManyEvents(maxEvents));
   const std::string out = output.take();
   const std::string log = messages.take();
   py::object events = py::none();
@@ -370,10 +373,8 @@ py::tuple simulateHere(const py::list& given, const py::object& resultType, bool
     code = grazelab::cli::runSimulate(options, *precision, *trust, io, std::stop_token{}, error);
   }
   if (code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
-  if (table->full) {
-    throw py::value_error("the run made more than " + std::to_string(maxEvents) + " events");
-  }
-    const std::string log = messages.take();
+  if (table->full) throw py::value_error(tooManyEvents(maxEvents));
+  const std::string log = messages.take();
   if (code != 0) {
     PyErr_SetString(PyExc_OSError, error.isEmpty() ? ("simulate failed (exit " + std::to_string(code) + ")").c_str()
                                                    : error.simplified().toStdString().c_str());

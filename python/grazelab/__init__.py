@@ -67,7 +67,7 @@ def _command(command, options, progress=None, events=False, positional=(), disca
     """Runs one command with the options that are not None; returns (output text, messages,
     events, decimals) or raises; with keep_map, (messages, map) for a map or merge held in
     memory; with keep_files (family, modes), (messages, {name: bytes}) for files held in memory;
-    with document (simulate), the output is its document as Results, not text. A progress
+    with document (info, orbit, simulate), the output is its document as Results, not text. A progress
     callback hears (1.0, "done") when the command has ended well."""
     given = {name: value for name, value in options.items() if value is not None}
     line = _convert.arguments(command, given) + [str(p) for p in positional]
@@ -356,7 +356,8 @@ def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
 """
     options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
                    count=count, onepp=True)
-    files = _Files(out, "family", *_command("family", dict(options, out=out), progress, keep_files=True))
+    _, held = _command("family", dict(options, out=out), progress, keep_files=True)
+    files = _Files(out, "family", held)
     result = _convert.parse_json(files.read(".json").decode("utf-8"))
     result["table"] = _convert.table_from_bytes(files.read(".npy"), files.read(".csv"))
     if out is None:
@@ -382,7 +383,8 @@ def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
 """
     options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
                    max_impacts=max_impacts, energy_range=energy_range)
-    files = _Files(out, "modes", *_command("modes", dict(options, out=out), progress, keep_files=True))
+    _, held = _command("modes", dict(options, out=out), progress, keep_files=True)
+    files = _Files(out, "modes", held)
     result = _convert.parse_json(files.read(".json").decode("utf-8"))
     for entry in result["families"]:
         stem = entry["file"][:-len(".csv")]  # PREFIX-family-N, named from the prefix's base
@@ -397,7 +399,7 @@ class _Files:
     """The files of a family or modes: in memory (no `out`: the command handed them over) or
     on disk under `out`, read by their suffix after the prefix."""
 
-    def __init__(self, out, name, lines, memory):
+    def __init__(self, out, name, memory):
         self.prefix = name if out is None else _os.fspath(out)
         self.memory = memory or {}
 
