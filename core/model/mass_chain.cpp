@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/model/mass_chain.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace grazelab::core {
+namespace {
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// "m3", "k1": built by appending (GCC 12 warns, wrongly, of an overlapping copy in
+// "m" + std::to_string(i) at -O3)
+std::string indexed(char letter, std::size_t index) {
+  std::string name(1, letter);
+  name += std::to_string(index);
+  return name;
+}
+
+void checkPositive(std::vector<Problem>& problems, const std::string& field, double value) {
+  if (!(value > 0) || !std::isfinite(value)) {
+    problems.push_back({field, "must be positive and finite (got " + number(value) + ")"});
+  }
+}
+
+}  // namespace
+
+std::vector<Problem> validate(const MassChain& chain) {
+  std::vector<Problem> problems;
+  if (chain.masses.empty()) problems.push_back({"masses", "must list at least one mass"});
+  if (chain.springs.size() != chain.masses.size()) {
+    problems.push_back({"springs", "must list one spring per mass (" + std::to_string(chain.masses.size()) +
+                                       "), got " + std::to_string(chain.springs.size())});
+  }
+  for (std::size_t i = 0; i < chain.masses.size(); ++i) checkPositive(problems, indexed('m', i + 1), chain.masses[i]);
+  for (std::size_t i = 0; i < chain.springs.size(); ++i) checkPositive(problems, indexed('k', i + 1), chain.springs[i]);
+  if (!(chain.rightSpring >= 0) || !std::isfinite(chain.rightSpring)) {
+    problems.push_back({"right spring", "must be >= 0 and finite (got " + number(chain.rightSpring) + ")"});
+  }
+  checkPositive(problems, "gap", chain.gap);
+  if (chain.stopMass < 0 || chain.stopMass > chain.size()) {
+    problems.push_back({"stop mass", "must be a mass of the chain, 1 to " + std::to_string(chain.size()) +
+                                         " (got " + std::to_string(chain.stopMass) + ")"});
+  }
+  return problems;
+}
+
+MassChain massChainOf(const Model& model) {
+  return {{model.m1, model.m2}, {model.k1, model.k2}, 0.0, 2, model.gap};
+}
+
+Eigen::MatrixXd massMatrix(const MassChain& chain) {
+  return Eigen::Map<const Eigen::VectorXd>(chain.masses.data(), chain.size()).asDiagonal();
+}
+
+Eigen::MatrixXd stiffnessMatrix(const MassChain& chain) {
+  const int n = chain.size();
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i) {
+    const double right = i + 1 < n ? chain.springs[std::size_t(i + 1)] : chain.rightSpring;
+    K(i, i) = chain.springs[std::size_t(i)] + right;
+    if (i + 1 < n) K(i, i + 1) = K(i + 1, i) = -right;
+  }
+  return K;
+}
+
+ChainModes chainModes(const MassChain& chain) {
+  const int n = chain.size();
+  const Eigen::VectorXd invRoot = Eigen::Map<const Eigen::VectorXd>(chain.masses.data(), n).cwiseSqrt().cwiseInverse();
+  // the symmetric form: its orthonormal eigenvectors V give P = M^-1/2 V, M-orthonormal
+  const Eigen::MatrixXd A = invRoot.asDiagonal() * stiffnessMatrix(chain) * invRoot.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(A);
+  ChainModes modes;
+  modes.omega.resize(n);
+  modes.P.resize(n, n);
+  modes.nodeAtStop.assign(std::size_t(n), false);
+  const int s = chain.stopped() - 1;
+  for (int j = 0; j < n; ++j) {
+    const int from = n - 1 - j;  // Eigen sorts ascending: the fastest mode is the last
+    modes.omega(j) = std::sqrt(std::max(0.0, solver.eigenvalues()(from)));
+    Eigen::VectorXd column = invRoot.asDiagonal() * solver.eigenvectors().col(from);
+    // a node at the stopped mass: zero within the rounding of an eigenvector (n ulps of its size)
+    const double size = column.cwiseAbs().maxCoeff();
+    const bool node = std::abs(column(s)) <= 8 * n * std::numeric_limits<double>::epsilon() * size;
+    modes.nodeAtStop[std::size_t(j)] = node;
+    // the sign: P[s][j] > 0, or (a node) the first component that is not zero
+    double sign = column(s);
+    if (node) {
+      for (int i = 0; i < n && std::abs(sign) <= 8 * n * std::numeric_limits<double>::epsilon() * size; ++i) sign = column(i);
+    }
+    modes.P.col(j) = sign < 0 ? Eigen::VectorXd(-column) : column;
+  }
+  return modes;
+}
+
+SpectrumRatios detectRatios(const Eigen::VectorXd& omega, double tolerance, int maxHarmonic) {
+  SpectrumRatios ratios;
+  const int n = int(omega.size());
+  if (n == 0 || !(omega.minCoeff() > 0)) return ratios;
+  const double slowest = omega.minCoeff();
+  // the ratios with the slowest mode as harmonic q: n_j = round(q w_j / slowest), and how far
+  // the modes are from them (w0 fitted to all of them by least squares in w_j = n_j w0)
+  const auto fit = [&](int q) {
+    SpectrumRatios candidate;
+    candidate.harmonics.resize(std::size_t(n));
+    double numerator = 0, denominator = 0;
+    for (int j = 0; j < n; ++j) {
+      const int h = int(std::max(1L, std::lround(q * omega(j) / slowest)));
+      candidate.harmonics[std::size_t(j)] = h;
+      numerator += h * omega(j);
+      denominator += double(h) * h;
+    }
+    candidate.omega0 = numerator / denominator;
+    for (int j = 0; j < n; ++j) {
+      candidate.detuning = std::max(candidate.detuning,
+                                    std::abs(omega(j) / (candidate.harmonics[std::size_t(j)] * candidate.omega0) - 1));
+    }
+    return candidate;
+  };
+  // the smallest harmonics that fit within the tolerance: a commensurate spectrum
+  for (int q = 1; q <= maxHarmonic; ++q) {
+    SpectrumRatios candidate = fit(q);
+    int divisor = 0;
+    for (int h : candidate.harmonics) divisor = std::gcd(divisor, h);
+    const int largest = *std::max_element(candidate.harmonics.begin(), candidate.harmonics.end());
+    if (divisor != 1 || largest > maxHarmonic || candidate.detuning > tolerance) continue;
+    candidate.commensurate = true;
+    return candidate;
+  }
+  // none: the nearest small ratios (in lowest terms, the slowest harmonic at most 12): the
+  // smallest harmonics within twice the least detuning of any, with how far the chain is
+  std::vector<SpectrumRatios> candidates;
+  double least = std::numeric_limits<double>::infinity();
+  for (int q = 1; q <= std::min(12, maxHarmonic); ++q) {
+    SpectrumRatios candidate = fit(q);
+    int divisor = 0;
+    for (int h : candidate.harmonics) divisor = std::gcd(divisor, h);
+    if (divisor != 1) continue;
+    least = std::min(least, candidate.detuning);
+    candidates.push_back(std::move(candidate));
+  }
+  for (SpectrumRatios& candidate : candidates) {
+    if (candidate.detuning <= 2 * least) return candidate;
+  }
+  return ratios;
+}
+
+}  // namespace grazelab::core

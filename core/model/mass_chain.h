@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/model/model.h"
+
+namespace grazelab::core {
+
+/// A chain of N masses against a rigid stop (docs/model.md section 11): wall --k1-- [m1] --k2--
+/// [m2] -- ... --kN-- [mN], optionally --k(N+1)-- wall on the right; the stop at `gap` acts on
+/// mass `stopMass` (1-based, the last by default). N = 2 with the stop on mass 2 is the note's
+/// chain (model.h).
+struct MassChain {
+  std::vector<double> masses;   ///< m_1 ... m_N [mass], all > 0
+  std::vector<double> springs;  ///< k_1 ... k_N [force/length], all > 0: wall-m1, then m(i-1)-mi
+  double rightSpring = 0;       ///< k_(N+1) from m_N to a right wall [force/length]; 0: none
+  int stopMass = 0;             ///< s, 1-based; 0: the last mass
+  double gap = 1;               ///< d > 0 [length]
+
+  int size() const { return int(masses.size()); }
+  /// s, 1-based, with the default resolved.
+  int stopped() const { return stopMass > 0 ? stopMass : size(); }
+};
+
+/// Every problem with the chain: no mass, lists of different lengths, values that are not
+/// positive and finite, a stop mass out of range. Empty when the chain is usable.
+std::vector<Problem> validate(const MassChain& chain);
+
+/// The two-mass chain of the note as a MassChain (the stop on mass 2).
+MassChain massChainOf(const Model& model);
+
+/// M = diag(m) and the tridiagonal K: K[i][i] = k_i + k_(i+1), K[i][i+1] = K[i+1][i] = -k_(i+1).
+Eigen::MatrixXd massMatrix(const MassChain& chain);
+Eigen::MatrixXd stiffnessMatrix(const MassChain& chain);
+
+/// The normal modes of a chain (docs/model.md section 11): P^T M P = I, P^T K P = diag(w_j^2),
+/// listed fastest first (mode 1 = the fastest, as in the two-mass chain), each column signed so
+/// that P[s][j] > 0. A mode with a node at the stopped mass (P[s][j] zero within rounding, as in
+/// a symmetric chain stopped in its middle) never moves that mass: it has no GLOM and never
+/// reaches the stop.
+struct ChainModes {
+  Eigen::VectorXd omega;           ///< w_1 > ... > w_N [1/time]
+  Eigen::MatrixXd P;               ///< mode shapes, column j for mode j+1, M-orthonormal
+  std::vector<bool> nodeAtStop;    ///< mode j+1 does not move the stopped mass
+};
+
+/// The modes of a usable chain (precondition: validate(chain) is empty). Computed on the
+/// symmetric form M^-1/2 K M^-1/2 (Eigen's self-adjoint solver), in double.
+ChainModes chainModes(const MassChain& chain);
+
+/// The ratios of a chain's frequencies: commensurate when w_j = n_j w0 with positive integers
+/// n_j (gcd 1, at most `maxHarmonic`) to within `tolerance` relative; `detuning` says how far
+/// from exact: max_j |w_j / (n_j w0) - 1| with w0 fitted to all the modes. When no harmonics fit,
+/// the nearest small ones (the slowest mode's at most 12) and their detuning: a detuned 1:2
+/// chain reads "near 2:1, detuned by 2.5 %".
+struct SpectrumRatios {
+  bool commensurate = false;
+  std::vector<int> harmonics;  ///< n_1 >= ... >= n_N (fastest first)
+  double omega0 = 0;           ///< w0 [1/time]: T = 2 pi / w0 is the period of every free motion
+  double detuning = 0;         ///< how far from the integer ratios (relative)
+};
+
+/// Detects integer ratios among `omega` (fastest first), the smallest harmonics that fit.
+SpectrumRatios detectRatios(const Eigen::VectorXd& omega, double tolerance = 1e-9, int maxHarmonic = 64);
+
+}  // namespace grazelab::core
