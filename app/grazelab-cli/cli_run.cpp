@@ -12,16 +12,17 @@
 #include <functional>
 #include <vector>
 
-#include "io/cli_input.h"
-#include "io/cli_output.h"
-#include "core/solver/trust.h"
 #include "commands/family_command.h"
 #include "commands/map_command.h"
 #include "commands/modes_command.h"
-#include "exit_codes.h"
 #include "commands/orbit_command.h"
 #include "commands/report_command.h"
 #include "commands/simulate_command.h"
+#include "core/solver/trust.h"
+#include "exit_codes.h"
+#include "io/cli_input.h"
+#include "io/cli_output.h"
+#include "io/json_value.h"
 
 namespace grazelab::cli {
 namespace {
@@ -56,6 +57,23 @@ int info(const QCommandLineParser& parser, const Io& io) {
     return 0;
   }
   write(io, QByteArray::fromStdString(infoJson(*model.value)));
+  return 0;
+}
+
+// `info` of a chain of N masses, in double for now
+int massChainInfo(const QCommandLineParser& parser, const PrecisionOption& precision, const Io& io) {
+  if (precision.fixed && *precision.fixed != core::Precision::Double) {
+    return fail(io, "--precision: a chain of N masses is computed in double for now (give double or auto)");
+  }
+  if (!parser.isSet("masses")) return fail(io, "--springs, --right-spring and --stop-mass describe a chain given by --masses");
+  const auto chain = parseMassChain(parser);
+  if (!chain.value) return fail(io, chain.error);
+  JsonValue document = massChainInfoValue(*chain.value);
+  if (io.document) {
+    *io.document = std::move(document);
+    return 0;
+  }
+  write(io, QByteArray::fromStdString(fieldPerLine(document, "  ", "") + "\n"));
   return 0;
 }
 
@@ -94,11 +112,15 @@ int runReportOrStability(bool report, const QCommandLineParser& parser, const Io
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
-      {"info", kChain + QStringList{"precision"}, false,
+      {"info", kChain + QStringList{"precision", "masses", "springs", "right-spring", "stop-mass"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token) {
          QString error;
          const auto precision = parsePrecisionOption(parser, error);
          if (!precision) return fail(io, error);
+         if (parser.isSet("masses") || parser.isSet("springs") || parser.isSet("right-spring") ||
+             parser.isSet("stop-mass")) {
+           return massChainInfo(parser, *precision, io);
+         }
          switch (precision->fixed.value_or(core::Precision::Double)) {
            case core::Precision::Double: return info<double>(parser, io);
            case core::Precision::Long: return info<long double>(parser, io);

@@ -143,15 +143,34 @@ def _documented(function):
 
 @_documented
 def info(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
-         gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto") -> Result:
+         gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto",
+         masses: _Optional[_Sequence[float]] = None, springs: _Optional[_Sequence[float]] = None,
+         right_spring: _Optional[float] = None, stop_mass: _Optional[int] = None) -> Result:
     """The chain's derived quantities (``grazelab-cli info``): k2, omega1, omega2, T1, T2, P,
     lambda_star, as the JSON's ``model`` object. In long or quad precision the numbers are also
     under ``decimal`` as the exact text written.
 
+    With ``masses`` (a chain of N masses, in double for now): ``chain``, ``modes`` (each mode's
+    omega, period, shape, node_at_stop and harmonic number, fastest first) and ``ratios``
+    (commensurate, harmonics, omega0, T, detuning).
+
     Keywords:
-{chain}{precision}"""
-    result, _, _, _ = _command("info", dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch,
-                                            precision=precision), document=True)
+{chain}{precision}    masses: m1, ..., mN [mass]: a chain of N masses (then the two-mass keywords
+        stay at their defaults).
+    springs: k1, ..., kN [force/length] of ``masses``: wall to m1, then between neighbours.
+    right_spring: k(N+1) from the last mass to a right wall (default none).
+    stop_mass: the mass the stop acts on, 1 to N (default the last)."""
+    options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision)
+    if masses is not None:
+        given = {name: value for name, value in (("m1", m1), ("m2", m2), ("k1", k1))
+                 if value != {"m1": 1.0, "m2": 0.5, "k1": 1.0}[name]}
+        given.update({name: value for name, value in (("k2", k2), ("branch", branch)) if value is not None})
+        if given:
+            raise ValueError(f"masses describes the whole chain: give it with springs, or "
+                             f"{', '.join(given)} and the other two-mass keywords, not both")
+        options = dict(gap=gap, precision=precision, masses=masses, springs=springs,
+                       right_spring=right_spring, stop_mass=stop_mass)
+    result, _, _, _ = _command("info", options, document=True)
     return result
 
 

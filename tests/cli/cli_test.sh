@@ -56,8 +56,9 @@ cli = sys.argv[1]
 model = ["m1", "m2", "k1", "gap", "k2", "branch", "precision"]
 start = ["glo", "onepp", "state", "perturb"]
 takes = {
-    "info": model,
-    "simulate": model + start + ["contacts", "t-end", "search-steps", "format", "trust"],
+    "info": model + ["masses", "springs", "right-spring", "stop-mass"],
+    "simulate": model + start + ["contacts", "t-end", "search-steps", "format", "trust",
+                                 "sample-step", "sample-times"],
     "report": model[:-1] + start + ["contacts", "t-end", "out", "methods", "quick"],
     "stability": ["out", "methods", "quick"],
     "map": model + start + ["contacts", "trust", "out", "x", "y", "threads", "shard", "picture"],

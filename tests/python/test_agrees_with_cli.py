@@ -291,3 +291,25 @@ def test_samples_are_the_states_of_runs_that_end_there_and_the_cli_samples(cli_j
     np.testing.assert_allclose(energy, grid.energy.initial, rtol=1e-12)
     with pytest.raises(ValueError, match="ascending"):
         gl.simulate(**start, contacts=3, samples=[2.0, 1.0])
+
+
+def test_info_of_a_chain_of_n_masses(cli_json):
+    # the command line's document; the note's 1:2 chain given as masses reads 2:1 with T = T2
+    chain = dict(masses=[1, 1, 1], springs=[1, 1, 1], right_spring=1, stop_mass=2)
+    three = gl.info(**chain)
+    assert three == cli_json("info", "--masses=1,1,1", "--springs=1,1,1", "--right-spring", "1",
+                             "--stop-mass", "2")
+    assert [mode.node_at_stop for mode in three.modes] == [False, True, False]
+    assert [mode.mode for mode in three.modes] == [1, 2, 3]
+    assert three.modes[0].omega > three.modes[1].omega > three.modes[2].omega
+    note = gl.info()
+    two = gl.info(masses=[1, 0.5], springs=[1, note.model.k2])
+    assert two.ratios.commensurate and two.ratios.harmonics == [2, 1]
+    assert math.isclose(two.ratios.T, note.model.T2, rel_tol=1e-14)
+    assert math.isclose(two.modes[0].omega, note.model.omega1, rel_tol=1e-14)
+    with pytest.raises(ValueError, match="whole chain"):
+        gl.info(masses=[1, 2], springs=[1, 1], m1=2)
+    with pytest.raises(ValueError, match="m2 must be positive"):
+        gl.info(masses=[1, -2], springs=[1, 1])
+    with pytest.raises(ValueError, match="one spring per mass"):
+        gl.info(masses=[1, 2], springs=[1])

@@ -74,6 +74,13 @@ const OptionSpec kOptions[] = {
     {"gap", "Gap d between mass 2 at rest and the stop (default 1).", "value", "1"},
     {"k2", "Stiffness m1-m2 as given: no resonance imposed (excludes --branch).", "value", nullptr},
     {"branch", "k2 from the 1:2 design: upper (default) or lower.", "upper|lower", nullptr},
+    {"masses", "A chain of N masses m1,...,mN (info for now): the whole chain, with --springs; "
+               "excludes --m1 --m2 --k1 --k2 --branch.", "m1,...,mN", nullptr},
+    {"springs", "The springs k1,...,kN of --masses: wall to m1, then between neighbours.",
+     "k1,...,kN", nullptr},
+    {"right-spring", "With --masses: a spring k(N+1) from the last mass to a right wall "
+                     "(default none).", "K", nullptr},
+    {"stop-mass", "With --masses: the mass the stop acts on, 1 to N (default the last).", "S", nullptr},
     {"precision", "Arithmetic of the run: auto (default: double, and the whole run again in "
                     "long double, then binary128, from its input, when a contact touches the "
                     "stop within rounding), double, long or quad (binary128). Numbers are read "
@@ -250,6 +257,55 @@ Parsed<core::StartSpec<S>> parseStartSpec(const OptionValues& options,
     spec.perturbation = *delta;
   }
   return {spec, {}};
+}
+
+namespace {
+
+// "a,b,c" as numbers, or the reason it is not
+std::optional<std::vector<double>> toList(const QString& option, const QString& text, QString& error) {
+  std::vector<double> values;
+  for (const QString& part : text.split(',')) {
+    const auto value = toNumber<double>(option, part, error);
+    if (!value) return std::nullopt;
+    values.push_back(*value);
+  }
+  return values;
+}
+
+}  // namespace
+
+Parsed<core::MassChain> parseMassChain(const OptionValues& options) {
+  for (const char* twoMass : {"m1", "m2", "k1", "k2", "branch"}) {
+    if (options.isSet(twoMass)) {
+      return {std::nullopt, QStringLiteral("--masses describes the whole chain: give it with --springs, "
+                                           "or --%1 and the other two-mass options, not both").arg(twoMass)};
+    }
+  }
+  if (!options.isSet("springs")) return {std::nullopt, "--masses needs --springs k1,...,kN (one per mass)"};
+  QString error;
+  core::MassChain chain;
+  const auto masses = toList("masses", options.value("masses"), error);
+  if (!masses) return {std::nullopt, error};
+  const auto springs = toList("springs", options.value("springs"), error);
+  if (!springs) return {std::nullopt, error};
+  chain.masses = *masses;
+  chain.springs = *springs;
+  if (options.isSet("right-spring")) {
+    const auto right = toNumber<double>("right-spring", options.value("right-spring"), error);
+    if (!right) return {std::nullopt, error};
+    chain.rightSpring = *right;
+  }
+  if (options.isSet("stop-mass")) {
+    bool ok = false;
+    chain.stopMass = options.value("stop-mass").toInt(&ok);
+    if (!ok) return {std::nullopt, QStringLiteral("--stop-mass: '%1' is not a mass number").arg(options.value("stop-mass"))};
+  }
+  const auto gap = toNumber<double>("gap", options.value("gap"), error);
+  if (!gap) return {std::nullopt, error};
+  chain.gap = *gap;
+  const auto problems = core::validate(chain);
+  if (!problems.empty()) return {std::nullopt, fromStd(core::describe(problems))};
+  return {chain, {}};
 }
 
 template <typename S>

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/model/chain.h"
+#include "core/model/mass_chain.h"
 #include "core/model/model.h"
 #include "core/model/resonance.h"
 #include "core/orbits/starts.h"
@@ -81,5 +82,9 @@ Parsed<core::StartSpec<S>> parseStartSpec(const OptionValues& options,
                                           const core::BasicModel<S>& model);
 template <typename S>
 Parsed<RunInput<S>> parseRun(const OptionValues& options);
+
+/// A chain of N masses (--masses, --springs, --right-spring, --stop-mass, --gap), checked; the
+/// two-mass options beside --masses are refused.
+Parsed<core::MassChain> parseMassChain(const OptionValues& options);
 
 }  // namespace grazelab::cli

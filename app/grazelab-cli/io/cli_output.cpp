@@ -189,6 +189,47 @@ JsonValue infoValue(const ModelInput<S>& model) {
   return JsonValue::object({{"model", modelValue(model, std::string(core::toString(core::precisionOf<S>())))}});
 }
 
+JsonValue massChainInfoValue(const core::MassChain& chain) {
+  using V = JsonValue;
+  const core::ChainModes modes = core::chainModes(chain);
+  const core::SpectrumRatios ratios = core::detectRatios(modes.omega);
+  const auto numbers = [](const auto& values) {
+    std::vector<V> items;
+    for (double value : values) items.push_back(V::number(value));
+    return V::array(std::move(items));
+  };
+  std::vector<V> modeList;
+  for (int j = 0; j < chain.size(); ++j) {
+    std::vector<double> shape(modes.P.col(j).data(), modes.P.col(j).data() + chain.size());
+    modeList.push_back(V::object(
+        {{"mode", V::of(std::int64_t(j + 1))},
+         {"omega", V::number(modes.omega(j))},
+         {"period", V::number(2 * M_PI / modes.omega(j))},
+         {"shape", numbers(shape)},
+         {"node_at_stop", V::of(bool(modes.nodeAtStop[std::size_t(j)]))},
+         {"harmonic", ratios.commensurate ? V::of(std::int64_t(ratios.harmonics[std::size_t(j)])) : V::null()}}));
+  }
+  std::vector<V> harmonics;
+  for (int h : ratios.harmonics) harmonics.push_back(V::of(std::int64_t(h)));
+  return V::object(
+      {{"chain", V::object({{"masses", numbers(chain.masses)},
+                            {"springs", numbers(chain.springs)},
+                            {"right_spring", chain.rightSpring > 0 ? V::number(chain.rightSpring) : V::null()},
+                            {"stop_mass", V::of(std::int64_t(chain.stopped()))},
+                            {"gap", V::number(chain.gap)}})},
+       {"modes", V::array(std::move(modeList))},
+       {"ratios", V::object({{"commensurate", V::of(ratios.commensurate)},
+                             {"harmonics", V::array(std::move(harmonics))},
+                             {"omega0", V::number(ratios.omega0)},
+                             {"T", V::number(2 * M_PI / ratios.omega0)},
+                             {"detuning", V::number(ratios.detuning)}})},
+       {"mode_labelling", V::of("mode 1 is the fastest; shapes are M-orthonormal, the stopped "
+                                "mass's entry > 0; harmonics n_j with omega_j = n_j omega0, "
+                                "T = 2 pi / omega0 (when not commensurate: the nearest small "
+                                "ratios and how far)")},
+       {"precision", V::of("double")}});
+}
+
 template <typename S>
 std::string infoJson(const ModelInput<S>& model) {
   return "{\n  \"model\": " + fieldPerLine(infoValue(model).fields[0].second, "    ", "  ") + "\n}\n";

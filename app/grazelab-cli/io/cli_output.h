@@ -30,6 +30,10 @@ std::string infoJson(const ModelInput<S>& model);
 template <typename S>
 JsonValue infoValue(const ModelInput<S>& model);
 
+/// `info` of a chain of N masses: the chain, each mode (frequency, period, shape, whether it has
+/// a node at the stop, its harmonic number) and the frequencies' ratios, in double.
+JsonValue massChainInfoValue(const core::MassChain& chain);
+
 /// The arithmetic of a run as its output reports it: asked for ("auto", "double", ...), used
 /// in the end, and each raise of --precision auto (one line: from where and why).
 struct PrecisionReport {
