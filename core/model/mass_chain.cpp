@@ -88,16 +88,18 @@ ChainModes chainModes(const MassChain& chain) {
     const int from = n - 1 - j;  // Eigen sorts ascending: the fastest mode is the last
     modes.omega(j) = std::sqrt(std::max(0.0, solver.eigenvalues()(from)));
     Eigen::VectorXd column = invRoot.asDiagonal() * solver.eigenvectors().col(from);
-    // a node at the stopped mass: zero within the rounding of an eigenvector (n ulps of its size)
-    const double size = column.cwiseAbs().maxCoeff();
-    const bool node = std::abs(column(s)) <= 8 * n * std::numeric_limits<double>::epsilon() * size;
+    // a node at the stopped mass: zero within the rounding of an eigenvector (8 n ulps of its
+    // largest component)
+    const double rounding = 8 * n * std::numeric_limits<double>::epsilon() * column.cwiseAbs().maxCoeff();
+    const bool node = std::abs(column(s)) <= rounding;
     modes.nodeAtStop[std::size_t(j)] = node;
-    // the sign: P[s][j] > 0, or (a node) the first component that is not zero
-    double sign = column(s);
+    // signed so that P[s][j] > 0; a node's mode by its first component that moves
+    int signer = s;
     if (node) {
-      for (int i = 0; i < n && std::abs(sign) <= 8 * n * std::numeric_limits<double>::epsilon() * size; ++i) sign = column(i);
+      signer = 0;
+      while (std::abs(column(signer)) <= rounding) ++signer;
     }
-    modes.P.col(j) = sign < 0 ? Eigen::VectorXd(-column) : column;
+    modes.P.col(j) = column(signer) < 0 ? Eigen::VectorXd(-column) : column;
   }
   return modes;
 }

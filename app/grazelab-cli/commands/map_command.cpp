@@ -170,6 +170,15 @@ class ProgressLine {
   std::atomic<std::int64_t> m_last = Clock::now().time_since_epoch().count();
 };
 
+// Where a map's files go: under --out PREFIX, or nowhere when the caller takes the map in
+// memory (the Python module) and gave no --out. False, with `error`, for an unusable --out.
+bool filesPrefix(const QCommandLineParser& parser, const Io& io, std::optional<QString>& prefix,
+                 QString& error) {
+  if (io.map && !parser.isSet("out")) return true;
+  prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
+  return prefix.has_value();
+}
+
 }  // namespace
 
 void addMapOptions(QCommandLineParser& parser) {
@@ -215,13 +224,9 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
     error = QStringLiteral("--picture: '%1' is not a quantity; use one of %2").arg(picture, names.join(", "));
     return kExitInvalidInput;
   }
-  // files unless the caller takes the map in memory (the Python module) without asking for them
-  const bool writesFiles = !io.map || parser.isSet("out");
   std::optional<QString> prefix;
-  if (writesFiles) {
-    prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
-    if (!prefix) return kExitInvalidInput;
-  }
+  if (!filesPrefix(parser, io, prefix, error)) return kExitInvalidInput;
+  const bool writesFiles = prefix.has_value();
 
   const core::RowRange rows = core::stripe(spec->y.count, shard.k, shard.n);
   const std::int64_t points = (rows.rowEnd - rows.rowBegin) * spec->x.count;
@@ -291,12 +296,9 @@ int runMerge(const QCommandLineParser& parser, const QStringList& parts, const I
     error = "merge: give the parts' prefixes after --out PREFIX";
     return kExitInvalidInput;
   }
-  const bool writesFiles = !io.map || parser.isSet("out");
   std::optional<QString> prefix;
-  if (writesFiles) {
-    prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
-    if (!prefix) return kExitInvalidInput;
-  }
+  if (!filesPrefix(parser, io, prefix, error)) return kExitInvalidInput;
+  const bool writesFiles = prefix.has_value();
   std::vector<map::StoredMap> stored;
   for (const QString& part : parts) {
     if (stop.stop_requested()) return kExitInterrupted;
