@@ -307,6 +307,51 @@ class ExplorerTest : public QObject {
     QVERIFY(!m_window->statusText().contains(QStringLiteral("estimating")));
   }
 
+  // A drag whose every value costs more than the time between two values: a job younger than
+  // the grace runs to its end and its whole run is drawn (marked superseded, with its own
+  // parameters) while the newest value computes; values in between are never run; without a
+  // grace the older job stops and only the newest is drawn.
+  void aDragShowsYoungJobsButNeverOverANewerOne() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("near-grazing")));
+    QVERIFY(waitForLatestFinal(*m_window));
+    QList<SimUpdate> runs;  // every whole run handed to the window
+    const auto connection = connect(m_window->controller(), &SimController::updated, this,
+                                    [&](const SimUpdate& update) {
+                                      if (update.runDone) runs.append(update);
+                                    });
+    Params params = m_window->params();
+    m_window->controller()->setGrace(60'000);
+    for (const double lambda : {0.60, 0.62, 0.64}) {
+      params.lambda = lambda;
+      m_window->setParams(params);
+    }
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY(runs.size() >= 2);
+    QVERIFY(runs.front().superseded);
+    QCOMPARE(runs.front().request->params.lambda, 0.60);
+    QVERIFY(runs.front().result->stop == grazelab::core::StopReason::ContactLimit);
+    for (const SimUpdate& run : runs) QVERIFY(run.request->params.lambda != 0.62);
+    QVERIFY(!runs.back().superseded);
+    QCOMPARE(runs.back().request->params.lambda, 0.64);
+    QVERIFY(!m_window->displayed()->superseded);
+    QCOMPARE(m_window->displayed()->request->params.lambda, 0.64);
+
+    // no grace: a long job is stopped by the next value and never drawn
+    runs.clear();
+    m_window->controller()->setGrace(0);
+    params.horizon = 1e6;
+    params.lambda = 0.55;
+    m_window->setParams(params);
+    params.horizon = 20000;
+    params.lambda = 0.57;
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window));
+    for (const SimUpdate& run : runs) QVERIFY(!run.superseded && run.request->params.lambda == 0.57);
+    QCOMPARE(m_window->displayed()->request->params.lambda, 0.57);
+    m_window->controller()->setGrace(SimController::kDefaultGraceMs);
+    disconnect(connection);
+  }
+
   // A touch double cannot decide (GLOM1 pushed by 3e-9: the crossing at T1 rises ~1e-17 above
   // the stop) is decided again in a higher precision by the worker, as --precision auto does:
   // impacts, not grazings, and the views are told to start over.

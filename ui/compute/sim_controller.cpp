@@ -3,6 +3,9 @@
 #include "ui/compute/sim_controller.h"
 
 #include <QMetaObject>
+#include <QTimer>
+
+#include <chrono>
 
 #include "ui/compute/sim_worker.h"
 
@@ -38,13 +41,32 @@ std::uint64_t SimController::submit(SimRequest request) {
     SimWorker::run(request, {}, 1e9, [this](const SimUpdate& update) { receive(update); }, m_mapCache);
     return request.id;
   }
+  int graceLeftMs = 0;
+  std::uint64_t runningId = 0;
   {
     const std::lock_guard lock(m_mailbox->mutex);
-    m_mailbox->running.request_stop();
+    runningId = m_mailbox->runningId;
+    if (runningId != 0) {
+      const auto age = std::chrono::steady_clock::now() - m_mailbox->runningSince;
+      graceLeftMs = m_mailbox->runningRunSent
+                        ? 0
+                        : m_graceMs - int(std::chrono::duration_cast<std::chrono::milliseconds>(age).count());
+      if (graceLeftMs <= 0) m_mailbox->running.request_stop();
+    }
     m_mailbox->waiting = std::move(request);
+  }
+  // a young job may finish (and be shown) while the new request waits; past the grace it stops
+  if (runningId != 0 && graceLeftMs > 0) {
+    QTimer::singleShot(graceLeftMs, this, [this, runningId] { stopIfSuperseded(runningId); });
   }
   QMetaObject::invokeMethod(m_worker, [worker = m_worker] { worker->wake(); }, Qt::QueuedConnection);
   return m_latestId;
+}
+
+void SimController::stopIfSuperseded(std::uint64_t id) {
+  if (id == m_latestId) return;
+  const std::lock_guard lock(m_mailbox->mutex);
+  if (m_mailbox->runningId == id) m_mailbox->running.request_stop();
 }
 
 void SimController::cancel() {
@@ -62,8 +84,24 @@ void SimController::cancel() {
 }
 
 void SimController::receive(const SimUpdate& update) {
-  if (update.id != m_latestId) return;  // stale: a newer request exists
+  if (update.id != m_latestId) {
+    // stale: a newer request exists. Only a superseded job's whole run is shown (it ended
+    // within its grace), never over a newer one's; what it would compute after (its error
+    // estimate, a sweep) is not wanted: it stops.
+    const bool wholeRun = update.runDone && !update.chunk &&
+                          update.result->stop != core::StopReason::Cancelled &&
+                          update.result->stop != core::StopReason::InvalidInput;
+    if (wholeRun && update.id > m_shownRunId) {
+      m_shownRunId = update.id;
+      stopIfSuperseded(update.id);
+      SimUpdate shown = update;
+      shown.superseded = true;
+      emit updated(shown);
+    }
+    return;
+  }
   if (update.final && !update.trustPending) m_busy = false;
+  if (update.runDone && !update.chunk) m_shownRunId = update.id;
   if (!update.chunk) {
     m_run.reset();  // the final (whole) result, or a sweep's update that carries it
     emit updated(update);

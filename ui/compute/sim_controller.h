@@ -22,7 +22,11 @@ struct SimMailbox;
 /// submit() stamps the request with an increasing id, stops the running job through its
 /// std::stop_source (safe from any thread), puts the request in a one-slot mailbox and queues a
 /// wake-up for the worker. Updates come back by queued signal; any whose id is not the latest
-/// are dropped here, so the display only ever sees the newest request's results. Partial
+/// are dropped here, so the display only ever sees the newest request's results, with one
+/// exception that keeps a drag alive: a running job younger than the grace is not stopped at
+/// once but given the rest of the grace to finish, and its whole run is shown, marked
+/// superseded, while the newest request computes. Without it a drag whose every value costs
+/// more than the time between two values would show nothing until the mouse stops. Partial
 /// updates bring only what is new (SimUpdate::chunk): the controller keeps the run so far and
 /// appends each chunk to it, so a run of n contacts costs O(n) to hand over, not O(n^2).
 class SimController : public QObject {
@@ -44,6 +48,13 @@ class SimController : public QObject {
   void cancel();
 
   std::uint64_t latestId() const { return m_latestId; }
+  /// How long a running job may go on after a newer request came (from its own start): a job
+  /// that ends within it is shown (superseded), one that does not is stopped then. Default
+  /// kDefaultGraceMs; 0 stops every superseded job at once.
+  void setGrace(int milliseconds) { m_graceMs = milliseconds; }
+  /// Two frames of the 33 ms budget: a drag then shows a result at least every ~40 ms plus
+  /// one job's cost, while a long job (a 10^6-contact run) is stopped as early as before.
+  static constexpr int kDefaultGraceMs = 40;
   bool busy() const { return m_busy; }
 
  signals:
@@ -54,6 +65,8 @@ class SimController : public QObject {
 
  private:
   void receive(const SimUpdate& update);
+  /// Stops job `id` if it is still the one running and a newer request exists.
+  void stopIfSuperseded(std::uint64_t id);
 
   QThread m_thread;
   SimWorker* m_worker = nullptr;
@@ -61,6 +74,10 @@ class SimController : public QObject {
   std::shared_ptr<core::experiments::MapCache> m_mapCache = std::make_shared<core::experiments::MapCache>();
   std::shared_ptr<SimMailbox> m_mailbox;
   std::uint64_t m_latestId = 0;
+  /// the newest request whose whole run was handed on (superseded or not): an older one that
+  /// ends later is never shown over it
+  std::uint64_t m_shownRunId = 0;
+  int m_graceMs = kDefaultGraceMs;
   /// the run so far of request m_runId, grown by each partial update, dropped at the final.
   /// Views read its items in place (no copy of a run): it grows only into room it already
   /// has (appendChunkInPlace), so nothing a view holds moves.

@@ -79,6 +79,10 @@ struct SimUpdate : core::experiments::Update {
   /// the scene's own computation so far (request->job holds it), before the run: no run yet
   /// (result is empty); only the views that draw the scene's data take it
   bool scenePartial = false;
+  /// the whole run of an older request, shown while a newer one computes (during a drag, each
+  /// job younger than the controller's grace runs to its end and is drawn: see
+  /// SimController::setGrace); the newer request's results follow
+  bool superseded = false;
 };
 
 }  // namespace grazelab::ui

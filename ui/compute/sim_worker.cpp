@@ -19,9 +19,21 @@ void SimWorker::wake() {
     request = std::move(m_mailbox->waiting);
     m_mailbox->waiting.reset();
     m_mailbox->running = std::stop_source();
+    m_mailbox->runningId = request->id;
+    m_mailbox->runningSince = std::chrono::steady_clock::now();
+    m_mailbox->runningRunSent = false;
     stop = m_mailbox->running.get_token();
   }
-  run(*request, stop, 0.030, [this](const SimUpdate& update) { emit updated(update); }, m_mapCache);
+  const std::uint64_t id = request->id;
+  run(*request, stop, 0.030, [this, id](const SimUpdate& update) {
+    if (update.runDone) {
+      const std::lock_guard lock(m_mailbox->mutex);
+      if (m_mailbox->runningId == id) m_mailbox->runningRunSent = true;
+    }
+    emit updated(update);
+  }, m_mapCache);
+  const std::lock_guard lock(m_mailbox->mutex);
+  if (m_mailbox->runningId == id) m_mailbox->runningId = 0;
 }
 
 void SimWorker::run(const SimRequest& described, std::stop_token stop, double chunkSeconds,

@@ -4,6 +4,8 @@
 
 #include <QObject>
 
+#include <chrono>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -15,12 +17,18 @@
 namespace grazelab::ui {
 
 /// The one-slot mailbox shared by the controller (GUI thread) and the worker (its own thread).
-/// submit() overwrites the waiting request and stops the running one; the worker takes the
-/// waiting request when it wakes. A burst of values therefore runs two jobs, not one per value.
+/// submit() overwrites the waiting request and stops the running one (or lets a young one
+/// finish: SimController::setGrace); the worker takes the waiting request when it wakes. A burst
+/// of values therefore runs a few jobs, not one per value.
 struct SimMailbox {
   std::mutex mutex;
   std::optional<SimRequest> waiting;  ///< the newest request not yet started
   std::stop_source running;           ///< stop source of the job being run
+  std::uint64_t runningId = 0;        ///< id of the job being run; 0 when the worker is idle
+  std::chrono::steady_clock::time_point runningSince;  ///< when that job started
+  /// that job's whole run has been sent: what it computes now (the error estimate, a sweep,
+  /// a map) is of no use once a newer request exists, so it gets no grace
+  bool runningRunSent = false;
 };
 
 /// Runs requests on the thread it lives on (see SimController). Stateless between jobs apart

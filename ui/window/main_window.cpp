@@ -567,7 +567,8 @@ void MainWindow::applyPending() {
   m_lastApplyCost = cost.elapsed();
   m_lastApply.start();
   showStatus(*m_displayed);
-  setProgressVisible(!m_displayed->final);
+  // a superseded run is shown while the newest request still computes
+  setProgressVisible(!m_displayed->final || m_displayed->superseded);
   m_progress->setValue(int(m_displayed->progress * 1000));
   emit plotsUpdated(m_displayed->id, m_displayed->final);
 }

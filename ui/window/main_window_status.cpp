@@ -56,13 +56,14 @@ void MainWindow::showStatus(const SimUpdate& update) {
     text.insert(counts, tr(" in %1").arg(update.attempt == 1 ? tr("long double") : tr("binary128")));
   }
   if (update.trust) text += QStringLiteral(" · ") + trustInWords(*update.trust, result.tFinal);
-  if (update.trustPending) text += tr(" · trust: estimating…");
+  // a superseded run (shown during a drag) gets no estimate: the newest value's run follows
+  if (update.trustPending && !update.superseded) text += tr(" · trust: estimating…");
   if (update.accuracy) {
     text += tr(" · methods: %1 of %2 settings measured")
                 .arg(update.accuracy->points.size())
                 .arg(update.accuracy->total);
   }
-  if (!update.final) {
+  if (!update.final || update.superseded) {
     text += tr(" · computing…");
   } else if (result.stop == core::StopReason::Cancelled) {
     text += tr(" · cancelled");
