@@ -276,7 +276,7 @@ class ClassroomTest : public QObject {
     for (const PlotView::Entry& entry : poincare->entries()) {
       if (entry.points().empty() || entry.series->name().startsWith(QStringLiteral("GLO"))) continue;
       if (poincare->legendNames().contains(entry.series->name())) ++named;
-      // 20 000 contacts fill the same ring: each fifth of the run keeps about a fifth of it
+      // 10 000 contacts fill the same ring: each fifth of the run keeps about a fifth of it
       if (entry.series->count() > drawnTotal() / 10) ++fairBins;
     }
     QCOMPARE(named, 5);

@@ -206,10 +206,17 @@ const std::vector<QList<QPointF>>& IncrementalScatterSets::update(
   }
   m_startedOver = replaced || !m_started || !(usable == m_frame) || shrunk;
   if (m_startedOver) {
+    const std::size_t cells = std::size_t(usable.width) * std::size_t(usable.height);
+    if (m_cells.size() == cells) {
+      forEachUsedCell([this](std::size_t cell) { m_cells[cell] = Choice{}; });
+      std::fill(m_used.begin(), m_used.end(), 0);
+    } else {
+      m_cells.assign(cells, Choice{});
+      m_used.assign((cells + 63) / 64, 0);
+    }
     m_frame = usable;
     m_started = true;
     m_consumed.assign(sets.size(), 0);
-    m_cells.assign(std::size_t(usable.width) * std::size_t(usable.height), Choice{});
   }
   auto mix = [](std::uint64_t x) {  // splitmix64: a fixed, well-spread hash
     x += 0x9e3779b97f4a7c15ULL;
@@ -225,13 +232,16 @@ const std::vector<QList<QPointF>>& IncrementalScatterSets::update(
       Choice& slot = m_cells[*found];
       const std::uint64_t hash = mix((std::uint64_t(set) << 40) ^ std::uint64_t(index));
       if (hash < slot.hash) slot = {hash, std::uint32_t(set), std::uint32_t(index)};
+      m_used[*found / 64] |= std::uint64_t(1) << (*found % 64);
     }
     m_consumed[set] = sets[set].size();
   }
+  // in cell order (row by row), as a walk over every cell would give
   m_points.assign(sets.size(), QList<QPointF>());
-  for (const Choice& choice : m_cells) {
-    if (choice.hash != ~std::uint64_t(0)) m_points[choice.set].append(sets[choice.set][choice.index]);
-  }
+  forEachUsedCell([this, &sets](std::size_t cell) {
+    const Choice& choice = m_cells[cell];
+    m_points[choice.set].append(sets[choice.set][choice.index]);
+  });
   return m_points;
 }
 

@@ -6,6 +6,7 @@
 #include <QPointF>
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -162,6 +163,16 @@ class IncrementalScatterSets {
   bool startedOver() const { return m_startedOver; }
 
  private:
+  /// Calls `visit(cell)` for each cell that holds a choice, in increasing cell order.
+  template <typename Visit>
+  void forEachUsedCell(const Visit& visit) const {
+    for (std::size_t word = 0; word < m_used.size(); ++word) {
+      for (std::uint64_t bits = m_used[word]; bits != 0; bits &= bits - 1) {
+        visit(word * 64 + std::size_t(std::countr_zero(bits)));
+      }
+    }
+  }
+
   struct Choice {
     std::uint64_t hash = ~std::uint64_t(0);
     std::uint32_t set = 0;
@@ -172,6 +183,9 @@ class IncrementalScatterSets {
   bool m_startedOver = false;
   std::vector<std::size_t> m_consumed;
   std::vector<Choice> m_cells;
+  /// one bit per cell, set when the cell holds a choice: a restart clears and the output walks
+  /// only the cells in use (a plot's frame has ~10^5..10^6 cells; a run fills a few percent)
+  std::vector<std::uint64_t> m_used;
   std::vector<QList<QPointF>> m_points;
 };
 

@@ -20,7 +20,7 @@ Scene::Spec nearGrazingScene() {
   scene.alias = QStringLiteral("near-grazing");
   scene.title = tr("Near grazing: Poincaré points on H");
   scene.text = tr("<b>Many contacts near a grazing orbit.</b> A start just off GLO(λ), followed "
-                  "for 20 000 contacts. <i>Look for:</i> the points (u₁, v₁) of mass 1 at each "
+                  "for 10 000 contacts. <i>Look for:</i> the points (u₁, v₁) of mass 1 at each "
                   "contact (left) stay on a closed curve around the grazing data (square), and "
                   "the free-flight times (top right) never pass the dashed line T₂. <i>Why:</i> "
                   "between contacts the motion is linear and repeats after T₂, so it must be "
@@ -28,7 +28,7 @@ Scene::Spec nearGrazingScene() {
   scene.defaults.lambda = 0.5;
   scene.defaults.perturbation = -0.01;
   scene.defaults.direction = PerturbDirection::V2;
-  scene.defaults.horizon = 20000;
+  scene.defaults.horizon = 10000;
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::Poincare, PlotKind::FreeFlight, PlotKind::TraceU2};
