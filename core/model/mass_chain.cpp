@@ -9,6 +9,9 @@
 #include <limits>
 #include <numeric>
 
+#include "core/numbers/eigen_quad.h"
+#include "core/numbers/scalar.h"
+
 namespace grazelab::core {
 namespace {
 
@@ -75,10 +78,24 @@ Eigen::MatrixXd stiffnessMatrix(const MassChain& chain) {
 
 ChainModes chainModes(const MassChain& chain) {
   const int n = chain.size();
-  const Eigen::VectorXd invRoot = Eigen::Map<const Eigen::VectorXd>(chain.masses.data(), n).cwiseSqrt().cwiseInverse();
-  // the symmetric form: its orthonormal eigenvectors V give P = M^-1/2 V, M-orthonormal
-  const Eigen::MatrixXd A = invRoot.asDiagonal() * stiffnessMatrix(chain) * invRoot.asDiagonal();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(A);
+  // In binary128: a solver in precision eps finds each w_j^2 to eps * w_1^2 absolutely, so a
+  // slow mode of a stiff chain (masses and springs over six decades) loses w_1^2 / w_N^2 of
+  // its relative accuracy; double lost up to 1e-10 on such chains. eps = 1e-34 leaves every
+  // frequency exact to double's last bit for spreads up to 1e18 (checked: the product of the
+  // w_j^2 equals det K / det M, a sum of positive products, to 1e-15).
+  using Matrix = Eigen::Matrix<Quad, Eigen::Dynamic, Eigen::Dynamic>;
+  using Vector = Eigen::Matrix<Quad, Eigen::Dynamic, 1>;
+  Vector invRoot(n);
+  for (int i = 0; i < n; ++i) invRoot(i) = Quad(1) / sqrt(Quad(chain.masses[std::size_t(i)]));
+  // the symmetric form M^-1/2 K M^-1/2: its orthonormal eigenvectors V give P = M^-1/2 V,
+  // M-orthonormal
+  Matrix A = Matrix::Zero(n, n);
+  for (int i = 0; i < n; ++i) {
+    const Quad right = i + 1 < n ? Quad(chain.springs[std::size_t(i + 1)]) : Quad(chain.rightSpring);
+    A(i, i) = (Quad(chain.springs[std::size_t(i)]) + right) * invRoot(i) * invRoot(i);
+    if (i + 1 < n) A(i, i + 1) = A(i + 1, i) = -right * invRoot(i) * invRoot(i + 1);
+  }
+  const Eigen::SelfAdjointEigenSolver<Matrix> solver(A);
   ChainModes modes;
   modes.omega.resize(n);
   modes.P.resize(n, n);
@@ -86,20 +103,35 @@ ChainModes chainModes(const MassChain& chain) {
   const int s = chain.stopped() - 1;
   for (int j = 0; j < n; ++j) {
     const int from = n - 1 - j;  // Eigen sorts ascending: the fastest mode is the last
-    modes.omega(j) = std::sqrt(std::max(0.0, solver.eigenvalues()(from)));
-    Eigen::VectorXd column = invRoot.asDiagonal() * solver.eigenvectors().col(from);
-    // a node at the stopped mass: zero within the rounding of an eigenvector (8 n ulps of its
-    // largest component)
-    const double rounding = 8 * n * std::numeric_limits<double>::epsilon() * column.cwiseAbs().maxCoeff();
-    const bool node = std::abs(column(s)) <= rounding;
+    const Quad lambda = solver.eigenvalues()(from);
+    modes.omega(j) = lambda > 0 ? double(sqrt(lambda)) : 0.0;
+    const Vector exact = invRoot.asDiagonal() * solver.eigenvectors().col(from);
+    Eigen::VectorXd column(n);
+    for (int i = 0; i < n; ++i) column(i) = double(exact(i));
+    // a node at the stopped mass: zero within the error of the binary128 eigenvector, 8 n
+    // ulps of its largest component times w_1^2 over the distance to the nearest other w^2
+    // (an eigenvector is as sensitive as its eigenvalue is close to another). A component that
+    // is merely small (1e-17 of the largest: a light mass on a stiff spring far from the stop)
+    // still reaches the stop; a node that symmetry makes exact reads as 0.
+    Quad largest = 0;
+    for (int i = 0; i < n; ++i) largest = std::max(largest, Quad(abs(exact(i))));
+    Quad gap = solver.eigenvalues()(n - 1);
+    for (int i = 0; i < n; ++i) {
+      if (i != from) gap = std::min(gap, Quad(abs(solver.eigenvalues()(i) - lambda)));
+    }
+    const Quad sensitivity =
+        gap > 0 ? std::min(std::max(Quad(1), solver.eigenvalues()(n - 1) / gap), Quad(1e20)) : Quad(1e20);
+    const Quad rounding = 8 * n * std::numeric_limits<Quad>::epsilon() * sensitivity * largest;
+    const bool node = abs(exact(s)) <= rounding;
     modes.nodeAtStop[std::size_t(j)] = node;
     // signed so that P[s][j] > 0; a node's mode by its first component that moves
     int signer = s;
     if (node) {
       signer = 0;
-      while (std::abs(column(signer)) <= rounding) ++signer;
+      while (abs(exact(signer)) <= rounding) ++signer;
     }
     modes.P.col(j) = column(signer) < 0 ? Eigen::VectorXd(-column) : column;
+    if (node) modes.P(s, j) = 0.0;  // +0 whatever the sign
   }
   return modes;
 }

@@ -51,7 +51,10 @@ struct ChainModes {
 };
 
 /// The modes of a usable chain (precondition: validate(chain) is empty). Computed on the
-/// symmetric form M^-1/2 K M^-1/2 (Eigen's self-adjoint solver), in double.
+/// symmetric form M^-1/2 K M^-1/2 (Eigen's self-adjoint solver) in binary128, so that every
+/// frequency, the slowest of a stiff chain included, is exact to double's rounding. Its cost
+/// grows as N^3 in software arithmetic: 7 us for N = 2, 0.4 ms for N = 8, 14 ms for N = 32
+/// (grazelab_core_bench --benchmark_filter=ChainModes).
 ChainModes chainModes(const MassChain& chain);
 
 /// The ratios of a chain's frequencies: commensurate when w_j = n_j w0 with positive integers

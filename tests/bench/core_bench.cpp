@@ -5,11 +5,13 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <cmath>
 
 #include "core/model/chain.h"
 #include "core/solver/contact.h"
 #include "core/experiments/run.h"
 #include "core/model/linear_modes.h"
+#include "core/model/mass_chain.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/periodic_orbit.h"
 #include "core/orbits/starts.h"
@@ -138,6 +140,19 @@ void NearGrazingSceneRun(benchmark::State& state) {
   state.counters["ms_to_whole_run"] = 1e3 * runSeconds / double(state.iterations());
 }
 BENCHMARK(NearGrazingSceneRun)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// The modes of an N-mass chain (binary128 eigen-solve, then rounded to double): the cost a
+// chain editor pays on each edit. Masses and springs from 0.5 to 2, a right wall.
+void ChainModes(benchmark::State& state) {
+  core::MassChain chain;
+  for (int i = 0; i < state.range(0); ++i) {
+    chain.masses.push_back(1.0 + 0.5 * std::sin(i));
+    chain.springs.push_back(1.0 + 0.5 * std::cos(i));
+  }
+  chain.rightSpring = 1.0;
+  for (auto _ : state) benchmark::DoNotOptimize(core::chainModes(chain));
+}
+BENCHMARK(ChainModes)->Arg(2)->Arg(8)->Arg(32)->Unit(benchmark::kMicrosecond);
 
 // Periodic orbits (issue 22): one orbit with its monodromy and checks; the continuation of
 // the 1IPP family (items = orbits); the atlas up to K impacts (the budgets: K = 2 under 10 s,
