@@ -4,6 +4,11 @@
 // from a slider to the plots, latest wins, infeasible input, long runs.
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
+#include <QGroupBox>
+#include <QLabel>
+#include <QPointer>
+#include <QTemporaryDir>
+#include <QVBoxLayout>
 #include <QElapsedTimer>
 #include <QGuiApplication>
 #include <QHelpEvent>
@@ -26,6 +31,7 @@
 #include "core/model/linear_modes.h"
 #include "ui/compute/derived.h"
 #include "ui/window/main_window.h"
+#include "ui/widgets/batched_layout.h"
 #include "ui/widgets/number_box.h"
 #include "ui/widgets/parameter_panel.h"
 #include "ui/plots/accuracy_view.h"
@@ -305,6 +311,80 @@ class ExplorerTest : public QObject {
     QVERIFY(m_window->displayed()->trust);
     QVERIFY(m_window->statusText().contains(QStringLiteral("trust: ok")));
     QVERIFY(!m_window->statusText().contains(QStringLiteral("estimating")));
+  }
+
+  // A scene switch lays out and paints one view per turn of the event loop (all at once
+  // stalled the window for 40-66 ms); the run is drawn once every view is up, the old views go,
+  // and a file saved right after the switch still holds every view.
+  void aSceneSwitchShowsItsViewsOneByOneThenTheRun() {
+    QList<QPointer<QWidget>> old;
+    for (SceneView* view : m_window->sceneViews()) old.append(view->widget());
+    const auto visibleViews = [this] {
+      int visible = 0;
+      for (SceneView* view : m_window->sceneViews()) visible += view->widget()->isVisible() ? 1 : 0;
+      return visible;
+    };
+    QList<int> visibleAtDraw;
+    connect(m_window.get(), &MainWindow::plotsUpdated, this, [&] { visibleAtDraw.append(visibleViews()); });
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("near-grazing")));
+    const int views = int(m_window->sceneViews().size());
+    QVERIFY(views >= 3);
+    QCOMPARE(visibleViews(), 0);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QCOMPARE(visibleViews(), views);
+    QVERIFY(!visibleAtDraw.isEmpty());
+    for (int visible : visibleAtDraw) QCOMPARE(visible, views);
+    for (const QPointer<QWidget>& view : old) QTRY_VERIFY(view.isNull());
+
+    // saved at once: the window picture is taken with every view shown
+    m_window->selectScene(0);
+    QCOMPARE(visibleViews(), 0);
+    QTemporaryDir dir;
+    QString error;
+    QVERIFY2(m_window->saveWindowSnapshot(dir.filePath(QStringLiteral("switch.png")), &error), qPrintable(error));
+    QCOMPARE(visibleViews(), int(m_window->sceneViews().size()));
+  }
+
+  // Showing a batch of widgets inside a BatchedLayout lays them out once, to the same geometry
+  // as showing them one by one (each of which lays out every ancestor).
+  void aBatchedLayoutEndsWhereSeparateShowsDo() {
+    const auto build = [](QWidget& top, QList<QLabel*>& labels) {
+      auto* column = new QVBoxLayout(&top);
+      auto* group = new QGroupBox(QStringLiteral("group"));
+      auto* inner = new QVBoxLayout(group);
+      for (int index = 0; index < 6; ++index) {
+        auto* label = new QLabel(QStringLiteral("a label that wraps over lines at this width, number %1").arg(index));
+        label->setWordWrap(true);
+        label->hide();
+        inner->addWidget(label);
+        labels.append(label);
+      }
+      column->addWidget(group);
+      column->addStretch();
+      top.resize(220, 700);
+      top.show();
+    };
+    QWidget separate;
+    QWidget batched;
+    QList<QLabel*> separateLabels;
+    QList<QLabel*> batchedLabels;
+    build(separate, separateLabels);
+    build(batched, batchedLabels);
+    QVERIFY(QTest::qWaitForWindowExposed(&separate));
+    QVERIFY(QTest::qWaitForWindowExposed(&batched));
+    for (int index : {0, 2, 3, 5}) separateLabels[index]->show();
+    {
+      const BatchedLayout once(batchedLabels[0]->parentWidget());
+      for (int index : {0, 2, 3, 5}) batchedLabels[index]->show();
+      QVERIFY(!batchedLabels[0]->parentWidget()->layout()->isEnabled());  // held while batched
+    }
+    QVERIFY(batchedLabels[0]->parentWidget()->layout()->isEnabled());
+    QVERIFY(batched.layout()->isEnabled());
+    for (int index = 0; index < 6; ++index) {
+      QCOMPARE(batchedLabels[index]->isVisible(), separateLabels[index]->isVisible());
+      QCOMPARE(batchedLabels[index]->geometry(), separateLabels[index]->geometry());
+    }
+    QVERIFY(separateLabels[5]->height() > separateLabels[5]->fontMetrics().height());  // wrapped
   }
 
   // A drag whose every value costs more than the time between two values: a job younger than

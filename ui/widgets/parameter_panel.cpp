@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/widgets/batched_layout.h"
 #include "ui/widgets/parameter_panel.h"
 
 #include <QEvent>
@@ -146,6 +147,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
 }
 
 void ParameterPanel::setScene(const Scene& scene) {
+  const BatchedLayout oneLayoutPass(this);
   m_sceneKeys = scene.parameters();
   m_sceneText->setText(scene.description());
   for (auto it = m_controls.begin(); it != m_controls.end(); ++it) {

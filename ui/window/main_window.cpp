@@ -21,6 +21,7 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -260,15 +261,17 @@ void MainWindow::buildMenus() {
 }
 
 void MainWindow::buildPlots() {
-  // out of the layout and out of sight now; deleted once control is back in the event loop
-  // (headless mode has none running yet, so a deferred delete alone would leave them drawn)
+  // out of the layout and out of sight now (headless mode has no event loop running yet, so a
+  // deferred delete alone would leave them drawn); deleted later, one per turn
   for (QWidget* view : m_views) {
     m_plotGrid->removeWidget(view);
     view->hide();
     view->disconnect(this);
-    view->deleteLater();
+    m_retired.append(view);
   }
+  if (!m_retired.isEmpty()) QTimer::singleShot(0, this, [this] { deleteRetiredView(); });
   m_sceneViews.clear();
+  m_unrevealed.clear();
   m_viewCosts.clear();
   m_plots.clear();
   m_accuracy = nullptr;
@@ -334,8 +337,39 @@ void MainWindow::buildPlots() {
   m_views = views;
   m_viewsBuiltPresenting = m_presentation;
   m_enlarged = nullptr;
+  m_unrevealed = m_options.synchronous ? QList<QWidget*>() : views;
+  for (QWidget* view : views) {
+    // a hidden view keeps its cell, so the others need no new layout as it appears
+    QSizePolicy policy = view->sizePolicy();
+    policy.setRetainSizeWhenHidden(true);
+    view->setSizePolicy(policy);
+  }
   layoutViews();
+  if (!m_unrevealed.isEmpty()) QTimer::singleShot(0, this, [this] { revealViews(false); });
   m_currentPlot = m_plots.isEmpty() ? nullptr : m_plots.first();
+}
+
+void MainWindow::deleteRetiredView() {
+  if (m_retired.isEmpty()) return;
+  // deleted once control is back in the event loop, one per turn
+  m_retired.takeFirst()->deleteLater();
+  if (!m_retired.isEmpty()) QTimer::singleShot(0, this, [this] { deleteRetiredView(); });
+}
+
+void MainWindow::revealViews(bool all) {
+  while (!m_unrevealed.isEmpty()) {
+    QWidget* view = m_unrevealed.takeFirst();
+    if (!m_enlarged) view->setVisible(true);
+    if (!all) break;
+  }
+  if (!m_unrevealed.isEmpty()) {
+    QTimer::singleShot(0, this, [this] { revealViews(false); });
+  } else if (all) {
+    applyPending();
+  } else {
+    // the run that came meanwhile, in a turn of its own
+    QTimer::singleShot(0, this, [this] { applyPending(); });
+  }
 }
 
 void MainWindow::layoutViews() {
@@ -349,7 +383,7 @@ void MainWindow::layoutViews() {
     m_plotGrid->addWidget(m_enlarged, 0, 0, 2, 3);
     return;
   }
-  for (QWidget* view : views) view->setVisible(true);
+  for (QWidget* view : views) view->setVisible(!m_unrevealed.contains(view));
   if (views.size() == 6) {
     for (int index = 0; index < 6; ++index) m_plotGrid->addWidget(views[index], index / 3, index % 3);
   } else if (views.size() == 5) {
@@ -533,6 +567,9 @@ void MainWindow::onUpdate(const SimUpdate& update) {
 
 void MainWindow::applyPending() {
   if (!m_pending) return;
+  // a new scene's first run is drawn once all its views are up (revealViews draws it then):
+  // drawn into hidden views it would add their whole layout to one turn of the event loop
+  if (!m_unrevealed.isEmpty()) return;
   // a pending update of another scene (switched meanwhile) is dropped
   if (m_pending->request->sceneName != scene().name()) {
     m_pending.reset();

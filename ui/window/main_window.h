@@ -164,6 +164,12 @@ class MainWindow : public QMainWindow {
   void showScene(int index);
   void buildPlots();
   void layoutViews();
+  /// Shows the next of a new scene's views still hidden, one per turn of the event loop, and
+  /// all of them at once when `all`.
+  void revealViews(bool all);
+  /// Deletes the next of an old scene's views, one per turn of the event loop: a view holding
+  /// a long run takes a few ms to delete.
+  void deleteRetiredView();
   void onParamsChanged(const Params& params);
   void onUpdate(const SimUpdate& update);
   void applyPending();
@@ -216,6 +222,10 @@ class MainWindow : public QMainWindow {
   QWidget* m_enlarged = nullptr;       ///< the view shown alone, if any
   QList<SceneView*> m_sceneViews;      ///< every view of the scene, in its order
   QList<QWidget*> m_views;             ///< their widgets, for the layout
+  /// A new scene's views not shown yet: each view's first layout and paint costs a few ms, so
+  /// they appear one per turn of the event loop instead of stalling it for all at once.
+  QList<QWidget*> m_unrevealed;
+  QList<QWidget*> m_retired;  ///< an old scene's views, hidden, waiting to be deleted
   bool m_presentation = false;
   int m_presentationText = 0;          ///< text size in presentation mode [px]
   /// the views were made while presenting: Qt Charts' theme took their "desk" fonts from the
