@@ -885,7 +885,10 @@ class ClassroomTest : public QObject {
     m_window->setPresentation(false, 1080, false);
     QVERIFY(QApplication::font().pixelSize() < 1080 / 50);
     // the scenes were switched while presenting: their plots come back to the desk's text too
-    // (made under the large font, they once kept it)
+    // (made under the large font, they once kept it); made again one per turn, they draw the
+    // run they showed
+    QTRY_COMPARE(m_window->sceneViews().size(), m_window->scene().plots().size());
+    QTRY_VERIFY(!m_window->plots().first()->entries().front().points().empty());
     for (const PlotView* plot : m_window->plots()) {
       QCOMPARE(QFontInfo(axis(*plot, Qt::Horizontal)->labelsFont()).pixelSize(), deskLabels);
       for (const PlotView::Entry& entry : plot->entries()) {

@@ -313,10 +313,21 @@ class ExplorerTest : public QObject {
     QVERIFY(!m_window->statusText().contains(QStringLiteral("estimating")));
   }
 
-  // A scene switch lays out and paints one view per turn of the event loop (all at once
+  // A scene switch makes, lays out and paints one view per turn of the event loop (all at once
   // stalled the window for 40-66 ms); the run is drawn once every view is up, the old views go,
   // and a file saved right after the switch still holds every view.
   void aSceneSwitchShowsItsViewsOneByOneThenTheRun() {
+    // each in its cell: together they tile the plots' area (a view put in its cell without a
+    // new layout kept the 200 x 160 it was made with)
+    const auto viewsTileTheirArea = [this] {
+      const QWidget* area = m_window->sceneViews().first()->widget()->parentWidget();
+      double covered = 0;
+      for (SceneView* view : m_window->sceneViews()) {
+        covered += double(view->widget()->width()) * view->widget()->height();
+      }
+      return covered > 0.8 * area->width() * area->height();
+    };
+    QVERIFY(viewsTileTheirArea());  // the first scene's, built before the window was shown
     QList<QPointer<QWidget>> old;
     for (SceneView* view : m_window->sceneViews()) old.append(view->widget());
     const auto visibleViews = [this] {
@@ -327,22 +338,24 @@ class ExplorerTest : public QObject {
     QList<int> visibleAtDraw;
     connect(m_window.get(), &MainWindow::plotsUpdated, this, [&] { visibleAtDraw.append(visibleViews()); });
     m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("near-grazing")));
-    const int views = int(m_window->sceneViews().size());
+    const int views = int(m_window->scene().plots().size());
     QVERIFY(views >= 3);
-    QCOMPARE(visibleViews(), 0);
+    QCOMPARE(m_window->sceneViews().size(), 0);  // each made at a turn of its own
     QVERIFY(waitForLatestFinal(*m_window));
     QCOMPARE(visibleViews(), views);
+    QVERIFY(viewsTileTheirArea());
     QVERIFY(!visibleAtDraw.isEmpty());
     for (int visible : visibleAtDraw) QCOMPARE(visible, views);
     for (const QPointer<QWidget>& view : old) QTRY_VERIFY(view.isNull());
 
     // saved at once: the window picture is taken with every view shown
     m_window->selectScene(0);
-    QCOMPARE(visibleViews(), 0);
+    QCOMPARE(m_window->sceneViews().size(), 0);
     QTemporaryDir dir;
     QString error;
     QVERIFY2(m_window->saveWindowSnapshot(dir.filePath(QStringLiteral("switch.png")), &error), qPrintable(error));
-    QCOMPARE(visibleViews(), int(m_window->sceneViews().size()));
+    QCOMPARE(m_window->sceneViews().size(), m_window->scene().plots().size());
+    QCOMPARE(visibleViews(), int(m_window->scene().plots().size()));
   }
 
   // Showing a batch of widgets inside a BatchedLayout lays them out once, to the same geometry

@@ -179,7 +179,7 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
   setRenderHint(QPainter::Antialiasing);
   setRubberBand(QChartView::RectangleRubberBand);
   setFocusPolicy(Qt::StrongFocus);
-  setMinimumSize(200, 160);  // again after each resize (resizeEvent)
+  setMinimumSize(kMinimumSize);  // again after each resize (resizeEvent)
 
   setTitles(title, xTitle, yTitle);
   m_clickTimer.setSingleShot(true);
@@ -713,7 +713,7 @@ void PlotView::resizeEvent(QResizeEvent* event) {
   updateLegend();  // wraps to the new width
   // QChartView raises its own minimum size to the chart's and never lowers it: a legend of
   // many lines once would keep the plot (and the window) tall for good
-  setMinimumSize(200, 160);
+  setMinimumSize(kMinimumSize);
   placeStaleNote();
   scheduleRefresh();
 }

@@ -7,6 +7,7 @@
 #include <QPointF>
 #include <QRectF>
 #include <QSet>
+#include <QSize>
 #include <QStringList>
 #include <QString>
 #include <QTimer>
@@ -41,6 +42,8 @@ class PlotView : public QChartView, public SceneView {
   Q_OBJECT
 
  public:
+  /// The least room a plot takes in the window's grid.
+  static constexpr QSize kMinimumSize{200, 160};
   /// The extent of some points (empty: low > high).
   struct Extent {
     double xLow = std::numeric_limits<double>::infinity();

@@ -126,6 +126,10 @@ MainWindow::MainWindow(Options options, QWidget* parent)
 
   m_applyTimer.setSingleShot(true);
   connect(&m_applyTimer, &QTimer::timeout, this, &MainWindow::applyPending);
+  // a real timer: QTimer::singleShot(0, …) posts an event, and posted events run back to back
+  // in one turn of the event loop, which would put the whole switch back into one stall
+  m_switchTimer.setInterval(0);
+  connect(&m_switchTimer, &QTimer::timeout, this, &MainWindow::continueSwitch);
   connect(m_panel, &ParameterPanel::paramsChanged, this, &MainWindow::onParamsChanged);
   connect(m_panel, &ParameterPanel::inputRefused, m_status, &StatusLine::setMessage);
 
@@ -269,57 +273,79 @@ void MainWindow::buildPlots() {
     view->disconnect(this);
     m_retired.append(view);
   }
-  if (!m_retired.isEmpty()) QTimer::singleShot(0, this, [this] { deleteRetiredView(); });
+  m_views.clear();
   m_sceneViews.clear();
-  m_unrevealed.clear();
   m_viewCosts.clear();
   m_plots.clear();
   m_accuracy = nullptr;
   m_chain = nullptr;
   m_landscape = nullptr;
   m_currentPlot = nullptr;
-  QList<QWidget*> views;
+  m_enlarged = nullptr;
+  m_viewsBuiltPresenting = m_presentation;
   for (PlotKind kind : scene().plots()) {
-    SceneView* view = makeView(kind, m_plotArea);
-    m_sceneViews.append(view);
-    views.append(view->widget());
-    if (m_presentation) view->setPresentation(true, m_presentationText);
-    // the few views with more to say than show(): found by their type
-    if (auto* accuracy = dynamic_cast<AccuracyView*>(view)) m_accuracy = accuracy;
-    if (auto* chain = dynamic_cast<ChainView*>(view)) m_chain = chain;
-    if (auto* landscape = dynamic_cast<LandscapeView*>(view)) {
-      m_landscape = landscape;
-      landscape->setBackEnabled(!m_regionHistory.empty());
-      connect(landscape, &LandscapeView::startRequested, this,
-              [this](const core::State& start) { startFromClick(start); });
-      connect(landscape, &LandscapeView::regionRequested, this, &MainWindow::showMapRegion);
-      connect(landscape, &LandscapeView::backRequested, this, [this] { mapRegionBack(); });
+    if (m_options.synchronous) {
+      m_views.append(addView(kind)->widget());
+      continue;
     }
-    if (auto* modes = dynamic_cast<ModesPlot*>(view)) {
-      connect(modes, &ModesPlot::orbitChosen, this, [this](const core::State& start) { startFromClick(start); });
-      connect(modes, &ModesPlot::missed, this, [this] {
-        m_status->setMessage(tr("Click within %1 pixels of a family's dots to follow that orbit.")
-                                 .arg(ModesPlot::kChoiceRadius));
+    // made one per turn of the event loop (continueSwitch); meanwhile a bare widget of a
+    // plot's size policy holds its cell, so the others need no new layout as each comes
+    auto* placeholder = new QWidget(m_plotArea);
+    placeholder->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    placeholder->setMinimumSize(PlotView::kMinimumSize);
+    m_views.append(placeholder);
+  }
+  if (m_options.synchronous) linkViews();
+  layoutViews();
+  if (!viewsBuilt() || !m_retired.isEmpty()) m_switchTimer.start();
+}
+
+SceneView* MainWindow::addView(PlotKind kind) {
+  SceneView* view = makeView(kind, m_plotArea);
+  m_sceneViews.append(view);
+  if (m_presentation) view->setPresentation(true, m_presentationText);
+  // the user's choice (W) holds across scenes
+  view->setWholeRun(m_wholeRunAction->isChecked());
+  // the few views with more to say than show(): found by their type
+  if (auto* accuracy = dynamic_cast<AccuracyView*>(view)) m_accuracy = accuracy;
+  if (auto* chain = dynamic_cast<ChainView*>(view)) m_chain = chain;
+  if (auto* landscape = dynamic_cast<LandscapeView*>(view)) {
+    m_landscape = landscape;
+    landscape->setBackEnabled(!m_regionHistory.empty());
+    connect(landscape, &LandscapeView::startRequested, this,
+            [this](const core::State& start) { startFromClick(start); });
+    connect(landscape, &LandscapeView::regionRequested, this, &MainWindow::showMapRegion);
+    connect(landscape, &LandscapeView::backRequested, this, [this] { mapRegionBack(); });
+  }
+  if (auto* modes = dynamic_cast<ModesPlot*>(view)) {
+    connect(modes, &ModesPlot::orbitChosen, this, [this](const core::State& start) { startFromClick(start); });
+    connect(modes, &ModesPlot::missed, this, [this] {
+      m_status->setMessage(tr("Click within %1 pixels of a family's dots to follow that orbit.")
+                               .arg(ModesPlot::kChoiceRadius));
+    });
+  }
+  if (auto* plot = dynamic_cast<PlotView*>(view)) {
+    m_plots.append(plot);
+    if (!m_currentPlot) m_currentPlot = plot;
+    connect(plot, &PlotView::activated, this, [this](PlotView* active) { m_currentPlot = active; });
+    connect(plot, &PlotView::enlargeRequested, this, [this](PlotView* plot) { toggleEnlarged(plot); });
+    if (qobject_cast<PoincarePlot*>(plot)) {
+      connect(plot, &PlotView::clickedAt, this, [this](QPointF value) { startFromSection(value); });
+    }
+    auto* phase = qobject_cast<PhasePlot*>(plot);
+    if (phase && phase->mass() == PhasePlot::Mass::Two) {
+      connect(plot, &PlotView::clickedAt, this, [this, phase](QPointF value) {
+        // a band a hand hits on a projector: kStopLineBand pixels either side of the line
+        const double perPixel = std::abs(phase->chart()->mapToValue(QPointF(100, 0)).x() -
+                                         phase->chart()->mapToValue(QPointF(0, 0)).x()) / 100;
+        startFromStopLine(value, kStopLineBand * perPixel);
       });
     }
-    if (auto* plot = dynamic_cast<PlotView*>(view)) {
-      m_plots.append(plot);
-      connect(plot, &PlotView::activated, this, [this](PlotView* active) { m_currentPlot = active; });
-      connect(plot, &PlotView::enlargeRequested, this, [this](PlotView* plot) { toggleEnlarged(plot); });
-      if (qobject_cast<PoincarePlot*>(plot)) {
-        connect(plot, &PlotView::clickedAt, this, [this](QPointF value) { startFromSection(value); });
-      }
-      auto* phase = qobject_cast<PhasePlot*>(plot);
-      if (phase && phase->mass() == PhasePlot::Mass::Two) {
-        connect(plot, &PlotView::clickedAt, this, [this, phase](QPointF value) {
-          // a band a hand hits on a projector: kStopLineBand pixels either side of the line
-          const double perPixel = std::abs(phase->chart()->mapToValue(QPointF(100, 0)).x() -
-                                           phase->chart()->mapToValue(QPointF(0, 0)).x()) / 100;
-          startFromStopLine(value, kStopLineBand * perPixel);
-        });
-      }
-    }
   }
+  return view;
+}
+
+void MainWindow::linkViews() {
   if (m_accuracy) {
     // the chosen method's run is drawn over the exact u2(t)
     for (PlotView* plot : m_plots) {
@@ -334,42 +360,44 @@ void MainWindow::buildPlots() {
       for (SceneView* view : m_sceneViews) view->setTimeCursor(t, state);
     });
   }
-  m_views = views;
-  m_viewsBuiltPresenting = m_presentation;
-  m_enlarged = nullptr;
-  m_unrevealed = m_options.synchronous ? QList<QWidget*>() : views;
-  for (QWidget* view : views) {
-    // a hidden view keeps its cell, so the others need no new layout as it appears
-    QSizePolicy policy = view->sizePolicy();
-    policy.setRetainSizeWhenHidden(true);
-    view->setSizePolicy(policy);
-  }
-  layoutViews();
-  if (!m_unrevealed.isEmpty()) QTimer::singleShot(0, this, [this] { revealViews(false); });
-  m_currentPlot = m_plots.isEmpty() ? nullptr : m_plots.first();
 }
 
-void MainWindow::deleteRetiredView() {
-  if (m_retired.isEmpty()) return;
-  // deleted once control is back in the event loop, one per turn
-  m_retired.takeFirst()->deleteLater();
-  if (!m_retired.isEmpty()) QTimer::singleShot(0, this, [this] { deleteRetiredView(); });
+bool MainWindow::viewsBuilt() const { return m_sceneViews.size() == m_views.size(); }
+
+void MainWindow::buildNextView() {
+  const qsizetype index = m_sceneViews.size();
+  const std::unique_ptr<QWidget> placeholder(m_views[index]);
+  QWidget* view = addView(scene().plots()[std::size_t(index)])->widget();
+  m_views[index] = view;
+  // in its cell (replaceWidget alone asks for no new layout: the view would keep the size it
+  // was made with); the show lays it out at once
+  delete m_plotGrid->replaceWidget(placeholder.get(), view);
+  m_plotGrid->invalidate();
+  view->setVisible(!m_enlarged);
+  if (viewsBuilt()) linkViews();
 }
 
-void MainWindow::revealViews(bool all) {
-  while (!m_unrevealed.isEmpty()) {
-    QWidget* view = m_unrevealed.takeFirst();
-    if (!m_enlarged) view->setVisible(true);
-    if (!all) break;
+void MainWindow::continueSwitch() {
+  if (!viewsBuilt()) {
+    buildNextView();
+    if (viewsBuilt()) {
+      // the run that came meanwhile, in a turn of its own; or, views made again (leaving
+      // presentation), the run they showed
+      if (!m_pending && m_displayed) m_pending = m_displayed;
+      if (m_pending) m_applyTimer.start(0);
+    }
+  } else if (!m_retired.isEmpty()) {
+    m_retired.takeFirst()->deleteLater();
   }
-  if (!m_unrevealed.isEmpty()) {
-    QTimer::singleShot(0, this, [this] { revealViews(false); });
-  } else if (all) {
-    applyPending();
-  } else {
-    // the run that came meanwhile, in a turn of its own
-    QTimer::singleShot(0, this, [this] { applyPending(); });
+  if (viewsBuilt() && m_retired.isEmpty()) m_switchTimer.stop();
+}
+
+void MainWindow::buildAllViews() {
+  if (!viewsBuilt()) {
+    while (!viewsBuilt()) buildNextView();
+    if (!m_pending && m_displayed) m_pending = m_displayed;  // as continueSwitch
   }
+  applyPending();
 }
 
 void MainWindow::layoutViews() {
@@ -383,7 +411,7 @@ void MainWindow::layoutViews() {
     m_plotGrid->addWidget(m_enlarged, 0, 0, 2, 3);
     return;
   }
-  for (QWidget* view : views) view->setVisible(!m_unrevealed.contains(view));
+  for (QWidget* view : views) view->setVisible(true);
   if (views.size() == 6) {
     for (int index = 0; index < 6; ++index) m_plotGrid->addWidget(views[index], index / 3, index % 3);
   } else if (views.size() == 5) {
@@ -437,8 +465,6 @@ void MainWindow::showScene(int index) {
     m_sceneActions->actions()[index]->setChecked(true);
   }
   buildPlots();
-  // the user's choice (W) holds across scenes
-  for (SceneView* view : m_sceneViews) view->setWholeRun(m_wholeRunAction->isChecked());
   m_panel->setScene(scene());
   m_panel->setParams(m_sceneParams[std::size_t(index)]);
   recompute();
@@ -567,9 +593,9 @@ void MainWindow::onUpdate(const SimUpdate& update) {
 
 void MainWindow::applyPending() {
   if (!m_pending) return;
-  // a new scene's first run is drawn once all its views are up (revealViews draws it then):
+  // a new scene's first run is drawn once all its views are up (continueSwitch draws it then):
   // drawn into hidden views it would add their whole layout to one turn of the event loop
-  if (!m_unrevealed.isEmpty()) return;
+  if (!viewsBuilt()) return;
   // a pending update of another scene (switched meanwhile) is dropped
   if (m_pending->request->sceneName != scene().name()) {
     m_pending.reset();

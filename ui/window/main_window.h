@@ -164,12 +164,22 @@ class MainWindow : public QMainWindow {
   void showScene(int index);
   void buildPlots();
   void layoutViews();
-  /// Shows the next of a new scene's views still hidden, one per turn of the event loop, and
-  /// all of them at once when `all`.
-  void revealViews(bool all);
-  /// Deletes the next of an old scene's views, one per turn of the event loop: a view holding
-  /// a long run takes a few ms to delete.
-  void deleteRetiredView();
+  /// A view of the scene made, put in its cell and connected to the window.
+  SceneView* addView(PlotKind kind);
+  /// What joins the scene's views (the accuracy overlay on u2(t), the animation's cursor),
+  /// once they are all made.
+  void linkViews();
+  bool viewsBuilt() const;
+  void buildNextView();
+  /// One step of a scene switch, at each turn of the event loop until none is left: the next
+  /// of the new scene's views made and shown (after the last, the run that came meanwhile
+  /// drawn), or else the next of the old scene's views deleted. Each view's first layout and
+  /// paint costs a few ms, and deleting one that holds a long run as much: all at once stalled
+  /// the window for 40-66 ms.
+  void continueSwitch();
+  /// Every view of the scene made and the run drawn, now (a file saved right after a switch
+  /// holds them all).
+  void buildAllViews();
   void onParamsChanged(const Params& params);
   void onUpdate(const SimUpdate& update);
   void applyPending();
@@ -221,10 +231,8 @@ class MainWindow : public QMainWindow {
   QWidget* m_side = nullptr;           ///< the parameter panel's scroll area
   QWidget* m_enlarged = nullptr;       ///< the view shown alone, if any
   QList<SceneView*> m_sceneViews;      ///< every view of the scene, in its order
-  QList<QWidget*> m_views;             ///< their widgets, for the layout
-  /// A new scene's views not shown yet: each view's first layout and paint costs a few ms, so
-  /// they appear one per turn of the event loop instead of stalling it for all at once.
-  QList<QWidget*> m_unrevealed;
+  /// Their widgets, for the layout; a view not made yet has a placeholder here (continueSwitch)
+  QList<QWidget*> m_views;
   QList<QWidget*> m_retired;  ///< an old scene's views, hidden, waiting to be deleted
   bool m_presentation = false;
   int m_presentationText = 0;          ///< text size in presentation mode [px]
@@ -249,6 +257,7 @@ class MainWindow : public QMainWindow {
   QProgressBar* m_progress = nullptr;
   QPushButton* m_cancel = nullptr;
   QTimer m_applyTimer;
+  QTimer m_switchTimer;  ///< drives continueSwitch
   QElapsedTimer m_lastApply;   // when the plots were last filled
   qint64 m_lastApplyCost = 0;  // how long that took [ms]
   std::optional<SimUpdate> m_pending;

@@ -81,7 +81,7 @@ void MainWindow::withDisplayedRunInPanel(const std::function<void()>& draw) {
 }
 
 bool MainWindow::writeSnapshot(QWidget* widget, const QString& path, QString* error) {
-  revealViews(true);  // a file right after a scene switch holds every view and the run
+  buildAllViews();  // a file right after a scene switch holds every view and the run
   const Session shown = displayedSession();
   const QByteArray json = sessionToJson(shown);
   // the picture shows the run of its session, which is valid: no "stale" banner in it
@@ -167,7 +167,7 @@ QString MainWindow::plottedDataCsv() const {
 }
 
 bool MainWindow::exportCsv(const QString& path, QString* error) {
-  revealViews(true);
+  buildAllViews();
   if (!saveFileAtomically(path, plottedDataCsv().toUtf8(), error)) return false;
   return saveFileAtomically(sessionPathFor(path), sessionToJson(displayedSession()), error);
 }
@@ -306,7 +306,7 @@ void MainWindow::exportCsvInteractive() {
 }
 
 void MainWindow::copyCurrentPlot() {
-  revealViews(true);
+  buildAllViews();
   if (!m_currentPlot) return;
   auto* data = new QMimeData;
   data->setImageData(renderImage(m_currentPlot));

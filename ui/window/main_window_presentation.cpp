@@ -63,8 +63,9 @@ void MainWindow::setPresentation(bool on, int screenHeight, bool fullScreen) {
   if (!on && m_viewsBuiltPresenting) {
     // made under the large font, their desk look would keep it: made again at the desk's,
     // showing what they showed
+    // (made one per turn outside headless mode: the last one made draws the run again)
     buildPlots();
-    if (m_displayed) {
+    if (m_displayed && viewsBuilt()) {
       for (SceneView* view : m_sceneViews) view->show(*m_displayed);
     }
   }
