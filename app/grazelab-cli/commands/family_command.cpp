@@ -15,6 +15,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "commands/orbit_json.h"
 #include "io/cli_input.h"
 #include "core/orbits/onepp_family.h"
 #include "core/orbits/special_orbits.h"
@@ -40,18 +41,6 @@ QJsonObject pointJson(const core::FamilyPoint& p) {
 // A stability class as a number for the .npy file (NaN where there is no admissible orbit).
 double stabilityCode(core::Stability stability) {
   return double(int(stability));
-}
-
-template <typename S>
-QJsonValue scalarJson(const S& value) {
-  // binary128's digits would be lost in a JSON double: such numbers are written as text too
-  if constexpr (std::is_same_v<S, double>) return value;
-  else return QString::fromStdString(core::formatScalar(value));
-}
-
-template <typename S>
-QJsonObject stateJson(const core::BasicState<S>& x) {
-  return {{"u1", scalarJson(x.u1)}, {"u2", scalarJson(x.u2)}, {"v1", scalarJson(x.v1)}, {"v2", scalarJson(x.v2)}};
 }
 
 // The stability along the family in precision S: the trace of each admissible row, and the
@@ -94,22 +83,12 @@ std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& pars
   for (const core::FamilyBifurcation<S>& b : points) energies.push_back(b.energy);
   for (const core::FamilyBifurcation<S>& b : points) {
     if (stop.stop_requested()) return std::nullopt;
-    QJsonObject point{{"kind", QString::fromUtf8(core::toString(b.kind).data())},
-                      {"T", scalarJson(b.T)},
-                      {"T_over_T2", scalarJson(S(b.T / T2))},
-                      {"energy", scalarJson(b.energy)},
-                      {"trace", scalarJson(b.trace)},
-                        {"energy_error", scalarJson(b.energyError)},
-                      {"state", stateJson(b.state)}};
-    if (b.kind == core::PointKind::Undecided) {
+    QJsonObject point = bifurcationJson(b, T2);
+    if (b.checked) point.remove("checked");  // this command writes it only when false
+    if (b.kind == core::PointKind::Undecided && b.checked) {
       point["note"] = "not a bifurcation: beyond this period the orbit's data lose their digits "
                       "(near a multiple of T1) or a contact cannot be decided in this precision; "
                       "a higher --precision moves the point";
-    }
-    if (!b.checked) {
-      point["checked"] = false;
-      point["note"] = "not solved to its definition in this precision (the trace is not within "
-                      "rounding of +-2 here): where the search stopped, not a result";
     }
     if (b.kind == core::PointKind::PeriodDoubling) {
       const core::FlipSwitch<S> born = core::switchAtFlip(chain, b, 1, core::birthOffsetBound(b, energies), stop);

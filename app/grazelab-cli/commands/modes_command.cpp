@@ -13,6 +13,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "commands/orbit_json.h"
 #include "io/cli_input.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/special_orbits.h"
@@ -27,20 +28,7 @@
 namespace grazelab::cli {
 namespace {
 
-template <typename S>
-QJsonValue scalarJson(const S& value) {
-  if (!core::isFinite(value)) return QJsonValue();
-  // binary128's digits would be lost in a JSON double: written as text
-  if constexpr (std::is_same_v<S, double>) return value;
-  else return QString::fromStdString(core::formatScalar(value));
-}
-
 QByteArray cell(double value) { return std::isfinite(value) ? QByteArray::number(value, 'g', 17) : QByteArray(); }
-
-template <typename S>
-QJsonObject stateJson(const core::BasicState<S>& x) {
-  return {{"u1", scalarJson(x.u1)}, {"u2", scalarJson(x.u2)}, {"v1", scalarJson(x.v1)}, {"v2", scalarJson(x.v2)}};
-}
 
 template <typename S>
 QJsonObject endJson(const core::FamilyEnd<S>& end) {
@@ -126,18 +114,7 @@ int modesIn(const QCommandLineParser& parser, const FileOutput& output, const QS
     files.emplace_back(prefix + QStringLiteral("-family-%1.npy").arg(family.id), encodeNpy(array));
     QJsonArray bifurcations;
     for (const core::FamilyBifurcation<S>& b : family.bifurcations) {
-      QJsonObject point{{"kind", QString::fromUtf8(core::toString(b.kind).data())},
-                        {"T", scalarJson(b.T)},
-                        {"T_over_T2", scalarJson(S(b.T / T2))},
-                        {"energy", scalarJson(b.energy)},
-                        {"trace", scalarJson(b.trace)},
-                        {"energy_error", scalarJson(b.energyError)},
-                        {"checked", b.checked},
-                        {"state", stateJson(b.state)}};
-      if (!b.checked) {
-        point["note"] = "not solved to its definition in this precision (the trace is not within rounding "
-                        "of +-2 here): where the search stopped, not a result";
-      }
+      QJsonObject point = bifurcationJson(b, T2);
       if (b.kind == core::PointKind::PeriodDoubling) {
         if (b.born >= 0) point["born_family"] = b.born;
         else if (!b.birthProblem.empty()) point["born_family"] = QJsonValue();
