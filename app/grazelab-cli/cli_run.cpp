@@ -61,14 +61,21 @@ int info(const QCommandLineParser& parser, const Io& io) {
 }
 
 // `info` of a chain of N masses, in double for now
-int massChainInfo(const QCommandLineParser& parser, const PrecisionOption& precision, const Io& io) {
+int massChainInfo(const QCommandLineParser& parser, const PrecisionOption& precision, const Io& io,
+                  std::stop_token stop) {
   if (precision.fixed && *precision.fixed != core::Precision::Double) {
     return fail(io, "--precision: a chain of N masses is computed in double for now (give double or auto)");
   }
-  if (!parser.isSet("masses")) return fail(io, "--springs, --right-spring and --stop-mass describe a chain given by --masses");
-  const auto chain = parseMassChain(parser);
+  if (!parser.isSet("masses")) {
+    return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
+  }
+  const auto chain = parseMassChain(parser, stop);
+  if (!chain.value && chain.error.isEmpty()) {  // the design was stopped
+    std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
+    return kExitInterrupted;
+  }
   if (!chain.value) return fail(io, chain.error);
-  JsonValue document = massChainInfoValue(*chain.value);
+  JsonValue document = massChainInfoValue(chain.value->chain, chain.value->design);
   if (io.document) {
     *io.document = std::move(document);
     return 0;
@@ -112,14 +119,14 @@ int runReportOrStability(bool report, const QCommandLineParser& parser, const Io
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
-      {"info", kChain + QStringList{"precision", "masses", "springs", "right-spring", "stop-mass"}, false,
-       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token) {
+      {"info", kChain + QStringList{"precision", "masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch"}, false,
+       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
          const auto precision = parsePrecisionOption(parser, error);
          if (!precision) return fail(io, error);
          if (parser.isSet("masses") || parser.isSet("springs") || parser.isSet("right-spring") ||
-             parser.isSet("stop-mass")) {
-           return massChainInfo(parser, *precision, io);
+             parser.isSet("stop-mass") || parser.isSet("frequencies") || parser.isSet("design-branch")) {
+           return massChainInfo(parser, *precision, io, stop);
          }
          switch (precision->fixed.value_or(core::Precision::Double)) {
            case core::Precision::Double: return info<double>(parser, io);

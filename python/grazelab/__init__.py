@@ -145,7 +145,8 @@ def _documented(function):
 def info(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
          gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto",
          masses: _Optional[_Sequence[float]] = None, springs: _Optional[_Sequence[float]] = None,
-         right_spring: _Optional[float] = None, stop_mass: _Optional[int] = None) -> Result:
+         right_spring: _Optional[float] = None, stop_mass: _Optional[int] = None,
+         frequencies: _Optional[_Sequence[int]] = None, design_branch: _Optional[int] = None) -> Result:
     """The chain's derived quantities (``grazelab-cli info``): k2, omega1, omega2, T1, T2, P,
     lambda_star, as the JSON's ``model`` object. In long or quad precision the numbers are also
     under ``decimal`` as the exact text written.
@@ -159,7 +160,13 @@ def info(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[flo
         stay at their defaults).
     springs: k1, ..., kN [force/length] of ``masses``: wall to m1, then between neighbours.
     right_spring: k(N+1) from the last mass to a right wall (default none).
-    stop_mass: the mass the stop acts on, 1 to N (default the last)."""
+    stop_mass: the mass the stop acts on, 1 to N (default the last).
+    frequencies: n1, ..., nN, fastest first: design the springs of ``masses`` so that the
+        frequencies are in the ratio n1 : ... : nN (``springs`` then gives k1 alone, the scale,
+        default 1). ``design`` lists every design found (each positive solution of the design
+        equations, checked against the designed chain's spectrum), ordered by k2, largest first;
+        a request no chain meets raises ValueError saying why.
+    design_branch: which design the chain takes, 1 to the number found (default 1)."""
     options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision)
     if masses is not None:
         given = {name: value for name, value in (("m1", m1), ("m2", m2), ("k1", k1))
@@ -169,7 +176,14 @@ def info(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[flo
             raise ValueError(f"masses describes the whole chain: give it with springs, or "
                              f"{', '.join(given)} and the other two-mass keywords, not both")
         options = dict(gap=gap, precision=precision, masses=masses, springs=springs,
-                       right_spring=right_spring, stop_mass=stop_mass)
+                       right_spring=right_spring, stop_mass=stop_mass, design_branch=design_branch)
+        if frequencies is not None:
+            if (not isinstance(frequencies, (list, tuple, _np.ndarray))
+                    or not all(isinstance(n, (int, _np.integer)) and not isinstance(n, bool) for n in frequencies)):
+                raise TypeError("frequencies: a sequence of whole numbers n1, ..., nN (fastest first)")
+            options["frequencies"] = ":".join(str(int(n)) for n in frequencies)
+    elif frequencies is not None or design_branch is not None:
+        raise ValueError("frequencies and design_branch design the springs of a chain given by masses")
     result, _, _, _ = _command("info", options, document=True)
     return result
 

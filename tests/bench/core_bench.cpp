@@ -11,6 +11,7 @@
 #include "core/solver/contact.h"
 #include "core/experiments/run.h"
 #include "core/model/linear_modes.h"
+#include "core/model/chain_design.h"
 #include "core/model/mass_chain.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/periodic_orbit.h"
@@ -153,6 +154,21 @@ void ChainModes(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(core::chainModes(chain));
 }
 BENCHMARK(ChainModes)->Arg(2)->Arg(8)->Arg(32)->Unit(benchmark::kMicrosecond);
+
+// Springs designed for the ratios N : N-1 : ... : 1 of masses 1, 0.6, 0.36, ...: N! paths
+// followed (counter designs: how many positive ones).
+void DesignSprings(benchmark::State& state) {
+  std::vector<double> masses;
+  std::vector<int> harmonics;
+  for (int i = 0; i < state.range(0); ++i) {
+    masses.push_back(std::pow(0.6, i));
+    harmonics.push_back(int(state.range(0)) - i);
+  }
+  std::size_t designs = 0;
+  for (auto _ : state) designs = core::designSprings(masses, 1.0, harmonics).designs.size();
+  state.counters["designs"] = double(designs);
+}
+BENCHMARK(DesignSprings)->DenseRange(2, 6)->Unit(benchmark::kMillisecond);
 
 // Periodic orbits (issue 22): one orbit with its monodromy and checks; the continuation of
 // the 1IPP family (items = orbits); the atlas up to K impacts (the budgets: K = 2 under 10 s,

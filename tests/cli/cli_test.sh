@@ -56,7 +56,7 @@ cli = sys.argv[1]
 model = ["m1", "m2", "k1", "gap", "k2", "branch", "precision"]
 start = ["glo", "onepp", "state", "perturb"]
 takes = {
-    "info": model + ["masses", "springs", "right-spring", "stop-mass"],
+    "info": model + ["masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch"],
     "simulate": model + start + ["contacts", "t-end", "search-steps", "format", "trust",
                                  "sample-step", "sample-times"],
     "report": model[:-1] + start + ["contacts", "t-end", "out", "methods", "quick"],
@@ -201,6 +201,48 @@ assert d['stop_reason'] == 'search-budget' and d['trust']['verdict'] != 'ok', d"
 fi
 EXPECT_WORD=search-steps expect_invalid simulate --search-steps 0
 EXPECT_WORD="w1/w2" expect_invalid simulate --k1 0.5e-55 --k2 1 --t-end 1.62
+# springs designed for frequency ratios (issue 32): every design listed, each in the ratio by
+# the chain's own spectrum; the two-mass 1:2 request is the note's two branches; requests no
+# chain meets, or malformed, are refused with exit 2 and one line
+if expect_ok info --masses 1,0.2,0.05 --springs 2 --frequencies 3:2:1 --design-branch 4; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['ratios']['commensurate'] and d['ratios']['harmonics'] == [3, 2, 1], d['ratios']
+assert d['design']['branch'] == 4 and len(d['design']['designs']) == 6, d['design']
+assert d['chain']['springs'] == d['design']['designs'][3]['springs'], d['chain']
+assert all(x['springs'][0] == 2 and x['ratio_error'] <= 1e-13 for x in d['design']['designs'])
+k2 = [x['springs'][1] for x in d['design']['designs']]
+assert k2 == sorted(k2, reverse=True), k2" || fail "a designed three-mass chain"
+fi
+for branch in upper:1 lower:2; do
+  "$cli" info --m2 0.3 --k1 2 --branch "${branch%%:*}" >"$out" 2>"$err" || fail "info --branch ${branch%%:*}"
+  note_k2=$(python3 -c "import json; print(json.load(open('$out'))['model']['k2'])")
+  if expect_ok info --masses 1,0.3 --springs 2 --frequencies 2:1 --design-branch "${branch##*:}"; then
+    python3 -c "
+import json, math; d=json.load(open('$out'))
+assert math.isclose(d['chain']['springs'][1], $note_k2, rel_tol=1e-14), (d['chain'], $note_k2)" \
+      || fail "the 1:2 design's ${branch%%:*} branch"
+  fi
+done
+EXPECT_WORD="no chain with these masses" expect_invalid info --masses 1,0.6 --frequencies 2:1
+EXPECT_WORD="have 2 designs" expect_invalid info --masses 1,0.5 --frequencies 2:1 --design-branch 3
+EXPECT_WORD="strictly decreasing" expect_invalid info --masses 1,0.5 --frequencies 1:2
+EXPECT_WORD="3 ratios for 2 masses" expect_invalid info --masses 1,0.5 --frequencies 2:1:1
+EXPECT_WORD="k1 alone" expect_invalid info --masses 1,0.5 --springs 1,1 --frequencies 2:1
+EXPECT_WORD="picks a design" expect_invalid info --masses 1,0.5 --springs 1,1 --design-branch 2
+EXPECT_WORD="7 masses at most" expect_invalid info --masses 1,1,1,1,1,1,1,1 --frequencies 8:7:6:5:4:3:2:1
+# SIGINT during a seven-mass design (its 5040 paths take tens of seconds) ends it within 1 s
+"$cli" info --masses 1,0.8,0.6,0.5,0.4,0.3,0.2 --frequencies 7:6:5:4:3:2:1 >"$out" 2>"$err" &
+pid=$!
+sleep 1
+started=$(date +%s%N)
+kill -INT "$pid"
+wait "$pid"
+code=$?
+elapsed_ms=$((($(date +%s%N) - started) / 1000000))
+[ "$code" -eq 130 ] || fail "interrupted design exit $code, not 130"
+[ "$elapsed_ms" -le 1000 ] || fail "interrupting the design took $elapsed_ms ms"
+
 # SIGTERM during a long detuned search, shadow run included, ends the command within 2 s with
 # complete records and exit 130
 "$cli" simulate --k2 1e-9 --glo 0.5 --perturb 0,0,0,-1e-3 --contacts 100000000 --format csv \

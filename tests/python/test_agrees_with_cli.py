@@ -313,3 +313,25 @@ def test_info_of_a_chain_of_n_masses(cli_json):
         gl.info(masses=[1, -2], springs=[1, 1])
     with pytest.raises(ValueError, match="one spring per mass"):
         gl.info(masses=[1, 2], springs=[1])
+
+
+def test_info_designs_springs_for_frequency_ratios(cli_json):
+    # every design of 4:3:1 for these masses, the chain taking the second; the same document
+    # as the command line's
+    designed = gl.info(masses=[1, 1, 0.2], springs=[3], frequencies=[4, 3, 1], design_branch=2)
+    assert designed == cli_json("info", "--masses=1,1,0.2", "--springs=3", "--frequencies=4:3:1",
+                                "--design-branch=2")
+    assert designed.ratios.commensurate and designed.ratios.harmonics == [4, 3, 1]
+    assert len(designed.design.designs) == 4
+    assert designed.chain.springs == designed.design.designs[1].springs
+    assert all(d.springs[0] == 3 and d.ratio_error <= 1e-13 for d in designed.design.designs)
+    # the note's 1:2 design, both branches
+    for branch, index in (("upper", 1), ("lower", 2)):
+        two = gl.info(masses=[1, 0.5], frequencies=np.array([2, 1]), design_branch=index)
+        assert math.isclose(two.chain.springs[1], gl.info(branch=branch).model.k2, rel_tol=1e-14)
+    with pytest.raises(ValueError, match="no chain with these masses"):
+        gl.info(masses=[1, 0.6], frequencies=[2, 1])
+    with pytest.raises(TypeError, match="whole numbers"):
+        gl.info(masses=[1, 0.5], frequencies=[2.5, 1])
+    with pytest.raises(ValueError, match="given by masses"):
+        gl.info(frequencies=[2, 1])

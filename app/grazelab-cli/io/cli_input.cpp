@@ -81,6 +81,11 @@ const OptionSpec kOptions[] = {
     {"right-spring", "With --masses: a spring k(N+1) from the last mass to a right wall "
                      "(default none).", "K", nullptr},
     {"stop-mass", "With --masses: the mass the stop acts on, 1 to N (default the last).", "S", nullptr},
+    {"frequencies", "With --masses: design the springs so that the frequencies are in the ratio "
+                    "n1:n2:...:nN (fastest first), k1 from --springs (default 1); every design is "
+                    "listed.", "n1:...:nN", nullptr},
+    {"design-branch", "With --frequencies: the design to use, 1 to the number found (default 1; "
+                      "designs are ordered by k2, largest first).", "I", nullptr},
     {"precision", "Arithmetic of the run: auto (default: double, and the whole run again in "
                     "long double, then binary128, from its input, when a contact touches the "
                     "stop within rounding), double, long or quad (binary128). Numbers are read "
@@ -272,24 +277,122 @@ std::optional<std::vector<double>> toList(const QString& option, const QString& 
   return values;
 }
 
+// "3:2:1" as positive integers, fastest first (strictly decreasing), one per mass
+std::optional<std::vector<int>> toRatios(const QString& text, std::size_t masses, QString& error) {
+  std::vector<int> ratios;
+  for (const QString& part : text.split(':')) {
+    bool ok = false;
+    const int value = part.trimmed().toInt(&ok);
+    if (!ok || value < 1) {
+      error = QStringLiteral("--frequencies: '%1' is not a positive whole number (give n1:n2:...:nN, fastest first)")
+                  .arg(part);
+      return std::nullopt;
+    }
+    ratios.push_back(value);
+  }
+  if (ratios.size() != masses) {
+    error = QStringLiteral("--frequencies: %1 ratios for %2 masses (one per mass, fastest first)")
+                .arg(ratios.size())
+                .arg(masses);
+    return std::nullopt;
+  }
+  for (std::size_t j = 1; j < ratios.size(); ++j) {
+    if (ratios[j] >= ratios[j - 1]) {
+      error = QStringLiteral("--frequencies: %1 must be strictly decreasing (fastest first; a chain's "
+                             "frequencies are all different)")
+                  .arg(text);
+      return std::nullopt;
+    }
+  }
+  if (ratios.size() > std::size_t(core::kMaxDesignMasses)) {
+    error = QStringLiteral("--frequencies: designs %1 masses at most (the search follows N! solutions)")
+                .arg(core::kMaxDesignMasses);
+    return std::nullopt;
+  }
+  return ratios;
+}
+
+// the springs of `chain` designed for --frequencies: the chosen design, or why there is none
+Parsed<MassChainInput> designedChain(const OptionValues& options, core::MassChain chain, std::stop_token stop) {
+  if (chain.rightSpring > 0) return {std::nullopt, "--frequencies designs chains without a right wall (--right-spring) for now"};
+  QString error;
+  const QString request = options.value("frequencies");
+  const auto ratios = toRatios(request, chain.masses.size(), error);
+  if (!ratios) return {std::nullopt, error};
+  double k1 = 1;
+  if (options.isSet("springs")) {
+    const auto springs = toList("springs", options.value("springs"), error);
+    if (!springs) return {std::nullopt, error};
+    if (springs->size() != 1) {
+      return {std::nullopt, "--frequencies designs k2,...,kN: give --springs k1 alone (the scale), or leave "
+                            "it out (k1 = 1)"};
+    }
+    k1 = springs->front();
+  }
+  // k1 checked with the masses (the others stand in at 1 until designed)
+  chain.springs.assign(chain.masses.size(), 1.0);
+  chain.springs[0] = k1;
+  if (const auto problems = core::validate(chain); !problems.empty()) return {std::nullopt, fromStd(core::describe(problems))};
+  int branch = 1;
+  if (options.isSet("design-branch")) {
+    bool ok = false;
+    branch = options.value("design-branch").toInt(&ok);
+    if (!ok || branch < 1) {
+      return {std::nullopt, QStringLiteral("--design-branch: '%1' is not a design number (1, 2, ...)")
+                                .arg(options.value("design-branch"))};
+    }
+  }
+  ChainDesignChoice choice{*ratios, core::designSprings(chain.masses, k1, *ratios, stop), branch};
+  const core::ChainDesigns& designs = choice.designs;
+  switch (designs.outcome) {
+    case core::DesignOutcome::Stopped: return {std::nullopt, {}};
+    case core::DesignOutcome::BadRequest: return {std::nullopt, "--frequencies: the request cannot be designed"};
+    case core::DesignOutcome::Incomplete:
+      return {std::nullopt, QStringLiteral("--frequencies %1: the design search could not follow every one of its "
+                                           "solutions, so no list of designs can be promised")
+                                .arg(request)};
+    case core::DesignOutcome::NoPositiveDesign:
+      return {std::nullopt, QStringLiteral("--frequencies %1: no chain with these masses has these ratios: each of "
+                                           "the %2 solutions of the design equations is complex or has a spring <= 0")
+                                .arg(request)
+                                .arg(designs.paths)};
+    case core::DesignOutcome::Designed: break;
+  }
+  if (branch > int(designs.designs.size())) {
+    return {std::nullopt, QStringLiteral("--design-branch %1: the ratios %2 have %3 design%4 for these masses (1 to %3)")
+                              .arg(branch)
+                              .arg(request)
+                              .arg(designs.designs.size())
+                              .arg(designs.designs.size() == 1 ? "" : "s")};
+  }
+  chain.springs = designs.designs[std::size_t(branch - 1)].springs;
+  return {MassChainInput{chain, std::move(choice)}, {}};
+}
+
 }  // namespace
 
-Parsed<core::MassChain> parseMassChain(const OptionValues& options) {
+Parsed<MassChainInput> parseMassChain(const OptionValues& options, std::stop_token stop) {
   for (const char* twoMass : {"m1", "m2", "k1", "k2", "branch"}) {
     if (options.isSet(twoMass)) {
       return {std::nullopt, QStringLiteral("--masses describes the whole chain: give it with --springs, "
                                            "or --%1 and the other two-mass options, not both").arg(twoMass)};
     }
   }
-  if (!options.isSet("springs")) return {std::nullopt, "--masses needs --springs k1,...,kN (one per mass)"};
+  const bool design = options.isSet("frequencies");
+  if (!design && options.isSet("design-branch")) return {std::nullopt, "--design-branch picks a design of --frequencies"};
+  if (!design && !options.isSet("springs")) {
+    return {std::nullopt, "--masses needs --springs k1,...,kN (one per mass), or --frequencies n1:...:nN to design them"};
+  }
   QString error;
   core::MassChain chain;
   const auto masses = toList("masses", options.value("masses"), error);
   if (!masses) return {std::nullopt, error};
-  const auto springs = toList("springs", options.value("springs"), error);
-  if (!springs) return {std::nullopt, error};
   chain.masses = *masses;
-  chain.springs = *springs;
+  if (!design) {
+    const auto springs = toList("springs", options.value("springs"), error);
+    if (!springs) return {std::nullopt, error};
+    chain.springs = *springs;
+  }
   if (options.isSet("right-spring")) {
     const auto right = toNumber<double>("right-spring", options.value("right-spring"), error);
     if (!right) return {std::nullopt, error};
@@ -303,9 +406,10 @@ Parsed<core::MassChain> parseMassChain(const OptionValues& options) {
   const auto gap = toNumber<double>("gap", options.value("gap"), error);
   if (!gap) return {std::nullopt, error};
   chain.gap = *gap;
+  if (design) return designedChain(options, chain, stop);
   const auto problems = core::validate(chain);
   if (!problems.empty()) return {std::nullopt, fromStd(core::describe(problems))};
-  return {chain, {}};
+  return {MassChainInput{chain, std::nullopt}, {}};
 }
 
 template <typename S>

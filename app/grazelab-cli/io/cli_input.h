@@ -6,10 +6,12 @@
 #include <QStringList>
 
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
 #include "core/model/chain.h"
+#include "core/model/chain_design.h"
 #include "core/model/mass_chain.h"
 #include "core/model/model.h"
 #include "core/model/resonance.h"
@@ -83,8 +85,25 @@ Parsed<core::StartSpec<S>> parseStartSpec(const OptionValues& options,
 template <typename S>
 Parsed<RunInput<S>> parseRun(const OptionValues& options);
 
-/// A chain of N masses (--masses, --springs, --right-spring, --stop-mass, --gap), checked; the
-/// two-mass options beside --masses are refused.
-Parsed<core::MassChain> parseMassChain(const OptionValues& options);
+/// Springs designed for requested frequency ratios (--frequencies, --design-branch): the
+/// design search's whole answer, and which design the chain took.
+struct ChainDesignChoice {
+  std::vector<int> harmonics;  ///< as asked, fastest first
+  core::ChainDesigns designs;
+  int branch = 1;  ///< 1-based
+};
+
+/// A chain of N masses, and how its springs came when designed.
+struct MassChainInput {
+  core::MassChain chain;
+  std::optional<ChainDesignChoice> design;
+};
+
+/// A chain of N masses (--masses, --springs, --right-spring, --stop-mass, --gap), checked; or,
+/// with --frequencies P:Q:..., its springs designed for those ratios (--springs then gives k1
+/// alone, the scale, default 1; --design-branch I picks the I-th design, default 1). The
+/// two-mass options beside --masses are refused; a request no chain meets is refused with the
+/// reason. An interrupted design returns no chain and an empty error (`stop` was requested).
+Parsed<MassChainInput> parseMassChain(const OptionValues& options, std::stop_token stop = {});
 
 }  // namespace grazelab::cli

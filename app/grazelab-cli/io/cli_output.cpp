@@ -189,7 +189,7 @@ JsonValue infoValue(const ModelInput<S>& model) {
   return JsonValue::object({{"model", modelValue(model, std::string(core::toString(core::precisionOf<S>())))}});
 }
 
-JsonValue massChainInfoValue(const core::MassChain& chain) {
+JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<ChainDesignChoice>& design) {
   using V = JsonValue;
   const core::ChainModes modes = core::chainModes(chain);
   const core::SpectrumRatios ratios = core::detectRatios(modes.omega);
@@ -211,6 +211,28 @@ JsonValue massChainInfoValue(const core::MassChain& chain) {
   }
   std::vector<V> harmonics;
   for (int h : ratios.harmonics) harmonics.push_back(V::of(std::int64_t(h)));
+  V designValue = V::null();
+  if (design) {
+    std::vector<V> asked;
+    for (int h : design->harmonics) asked.push_back(V::of(std::int64_t(h)));
+    std::vector<V> found;
+    for (const core::ChainDesign& each : design->designs.designs) {
+      found.push_back(V::object({{"springs", numbers(each.springs)},
+                                 {"omega0", V::number(each.omega0)},
+                                 {"T", V::number(2 * M_PI / each.omega0)},
+                                 {"ratio_error", V::number(each.ratioError)}}));
+    }
+    designValue = V::object(
+        {{"frequencies", V::array(std::move(asked))},
+         {"branch", V::of(std::int64_t(design->branch))},
+         {"designs", V::array(std::move(found))},
+         {"solutions", V::of(std::int64_t(design->designs.paths))},
+         {"complex_or_not_positive", V::of(std::int64_t(design->designs.complexEnds))},
+         {"at_infinity", V::of(std::int64_t(design->designs.infiniteEnds))},
+         {"method", V::of("every solution of the design equations followed from a start system with N! "
+                          "roots (homotopy); the positive ones polished in binary128 and checked "
+                          "against the designed chain's own spectrum; ordered by k2, largest first")}});
+  }
   return V::object(
       {{"chain", V::object({{"masses", numbers(chain.masses)},
                             {"springs", numbers(chain.springs)},
@@ -227,6 +249,7 @@ JsonValue massChainInfoValue(const core::MassChain& chain) {
                                 "mass's entry > 0; harmonics n_j with omega_j = n_j omega0, "
                                 "T = 2 pi / omega0 (when not commensurate: the nearest small "
                                 "ratios and how far)")},
+       {"design", std::move(designValue)},
        {"precision", V::of("double")}});
 }
 

@@ -31,8 +31,9 @@ template <typename S>
 JsonValue infoValue(const ModelInput<S>& model);
 
 /// `info` of a chain of N masses: the chain, each mode (frequency, period, shape, whether it has
-/// a node at the stop, its harmonic number) and the frequencies' ratios, in double.
-JsonValue massChainInfoValue(const core::MassChain& chain);
+/// a node at the stop, its harmonic number) and the frequencies' ratios, in double; for a
+/// designed chain also its `design`: the ratios asked, the design used and every design found.
+JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<ChainDesignChoice>& design = std::nullopt);
 
 /// The arithmetic of a run as its output reports it: asked for ("auto", "double", ...), used
 /// in the end, and each raise of --precision auto (one line: from where and why).

@@ -1,0 +1,339 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/model/chain_design.h"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdint>
+#include <numeric>
+#include <optional>
+#include <random>
+
+#include "core/model/mass_chain.h"
+#include "core/numbers/eigen_quad.h"
+#include "core/numbers/scalar.h"
+
+namespace grazelab::core {
+namespace {
+
+using Complex = std::complex<double>;
+using ComplexVector = Eigen::VectorXcd;
+using ComplexMatrix = Eigen::MatrixXcd;
+
+// The problem scaled to numbers near 1: masses over the largest, eigenvalues n_j^2 / n_max^2
+// (w0 = 1 / n_max at unit stiffness scale). The unknowns are the compliances c_i = 1 / k_i of
+// that scaled chain.
+struct Scaled {
+  std::vector<double> masses;
+  std::vector<double> lambdas;
+};
+
+// u_0(lambda; c) of the chain: the displacement the wall would need for a free vibration at
+// eigenvalue lambda with u_N = 1. Walking from the free end, the force in spring i is the
+// inertia of the masses i..N, S_i = sum_(j >= i) lambda m_j u_j, and u_(i-1) = u_i - c_i S_i;
+// lambda is an eigenvalue exactly when u_0 = 0. Affine in each c_i. With `gradient`, its
+// derivatives in c as well (forward mode).
+template <typename T>
+T wallDisplacement(const std::vector<double>& masses, double lambda, const std::vector<T>& c,
+                   std::vector<T>* gradient) {
+  const std::size_t n = masses.size();
+  T u = T(1);
+  T force = T(0);
+  std::vector<T> du(gradient ? n : 0, T(0));
+  std::vector<T> dForce(gradient ? n : 0, T(0));
+  for (std::size_t i = n; i-- > 0;) {
+    force += T(lambda * masses[i]) * u;
+    if (gradient) {
+      for (std::size_t k = 0; k < n; ++k) dForce[k] += T(lambda * masses[i]) * du[k];
+      for (std::size_t k = 0; k < n; ++k) du[k] -= c[i] * dForce[k];
+      du[i] -= force;
+    }
+    u -= c[i] * force;
+  }
+  if (gradient) *gradient = du;
+  return u;
+}
+
+// F(c) and its Jacobian: one equation per eigenvalue.
+template <typename T>
+void target(const Scaled& scaled, const std::vector<T>& c, Eigen::Matrix<T, Eigen::Dynamic, 1>& value,
+            Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>* jacobian) {
+  const std::size_t n = scaled.masses.size();
+  value.resize(Eigen::Index(n));
+  if (jacobian) jacobian->resize(Eigen::Index(n), Eigen::Index(n));
+  std::vector<T> gradient;
+  for (std::size_t j = 0; j < n; ++j) {
+    value[Eigen::Index(j)] = wallDisplacement(scaled.masses, scaled.lambdas[j], c, jacobian ? &gradient : nullptr);
+    if (jacobian) {
+      for (std::size_t k = 0; k < n; ++k) (*jacobian)(Eigen::Index(j), Eigen::Index(k)) = gradient[k];
+    }
+  }
+}
+
+// The start system G_j(c) = prod_i (c_i - r_ij): affine in each c_i like F, with the N! roots
+// c_(p(j)) = r_(p(j), j), one for each permutation p.
+struct StartSystem {
+  ComplexMatrix r;  // r(i, j)
+  void evaluate(const ComplexVector& c, ComplexVector& value, ComplexMatrix& jacobian) const {
+    const Eigen::Index n = c.size();
+    value.resize(n);
+    jacobian.resize(n, n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      Complex product = 1;
+      for (Eigen::Index i = 0; i < n; ++i) product *= c[i] - r(i, j);
+      value[j] = product;
+      for (Eigen::Index i = 0; i < n; ++i) {
+        Complex others = 1;
+        for (Eigen::Index k = 0; k < n; ++k) {
+          if (k != i) others *= c[k] - r(k, j);
+        }
+        jacobian(j, i) = others;
+      }
+    }
+  }
+};
+
+struct Homotopy {
+  const Scaled& scaled;
+  const StartSystem& start;
+  Complex gamma;
+  // H(c, t) = (1 - t) gamma G(c) + t F(c), its Jacobian in c and its derivative in t
+  void evaluate(const ComplexVector& c, double t, ComplexVector& h, ComplexMatrix& hc, ComplexVector* ht) const {
+    ComplexVector g, f;
+    ComplexMatrix gc, fc;
+    start.evaluate(c, g, gc);
+    const std::vector<Complex> cs(c.data(), c.data() + c.size());
+    target(scaled, cs, f, &fc);
+    h = (1 - t) * gamma * g + t * f;
+    hc = (1 - t) * gamma * gc + t * fc;
+    if (ht) *ht = f - gamma * g;
+  }
+  // dc/dt on the path through (c, t)
+  std::optional<ComplexVector> tangent(const ComplexVector& c, double t) const {
+    ComplexVector h, ht;
+    ComplexMatrix hc;
+    evaluate(c, t, h, hc, &ht);
+    const Eigen::PartialPivLU<ComplexMatrix> lu(hc);
+    ComplexVector dc = -lu.solve(ht);
+    if (!dc.allFinite()) return std::nullopt;
+    return dc;
+  }
+};
+
+enum class PathEnd { Finite, Infinite, Failed };
+
+struct TrackedPath {
+  PathEnd end = PathEnd::Failed;
+  ComplexVector c;
+};
+
+// Follows one path from t = 0 to t = 1: fourth-order Runge-Kutta along the tangent, then Newton
+// at the new t; a step whose corrector does not contract fast (the sign of a jump to another
+// path) is halved.
+TrackedPath track(const Homotopy& homotopy, ComplexVector c) {
+  constexpr double kInfinite = 1e8;
+  double t = 0;
+  double step = 0.01;
+  int successes = 0;
+  for (int iteration = 0; iteration < 20'000 && t < 1; ++iteration) {
+    if (c.norm() > kInfinite) return {PathEnd::Infinite, c};
+    const double h = std::min(step, 1 - t);
+    const auto k1 = homotopy.tangent(c, t);
+    const auto k2 = k1 ? homotopy.tangent(c + 0.5 * h * *k1, t + 0.5 * h) : std::nullopt;
+    const auto k3 = k2 ? homotopy.tangent(c + 0.5 * h * *k2, t + 0.5 * h) : std::nullopt;
+    const auto k4 = k3 ? homotopy.tangent(c + h * *k3, t + h) : std::nullopt;
+    bool accepted = false;
+    ComplexVector next;
+    if (k4) {
+      next = c + h / 6 * (*k1 + 2 * *k2 + 2 * *k3 + *k4);
+      const double scale = 1 + next.norm();
+      double previous = std::numeric_limits<double>::infinity();
+      for (int newton = 0; newton < 4; ++newton) {
+        ComplexVector value;
+        ComplexMatrix jacobian;
+        homotopy.evaluate(next, t + h, value, jacobian, nullptr);
+        const ComplexVector delta = Eigen::PartialPivLU<ComplexMatrix>(jacobian).solve(value);
+        if (!delta.allFinite()) break;
+        const double size = delta.norm();
+        // the first correction must be small against the point and each next one contract
+        if (size > 0.05 * scale || (newton > 0 && size > 0.5 * previous)) break;
+        next -= delta;
+        previous = size;
+        if (size < 1e-11 * scale) {
+          accepted = true;
+          break;
+        }
+      }
+    }
+    if (accepted) {
+      c = next;
+      t += h;
+      if (++successes >= 3) {
+        step = std::min(0.1, step * 2);
+        successes = 0;
+      }
+    } else {
+      step /= 2;
+      successes = 0;
+      if (step < 1e-13) return {c.norm() > 1e4 ? PathEnd::Infinite : PathEnd::Failed, c};
+    }
+  }
+  if (t < 1) return {PathEnd::Failed, c};
+  return {c.norm() > kInfinite ? PathEnd::Infinite : PathEnd::Finite, c};
+}
+
+// A real root of F polished in binary128 (Newton from the path's end).
+std::optional<std::vector<Quad>> polish(const Scaled& scaled, const ComplexVector& end) {
+  const std::size_t n = scaled.masses.size();
+  std::vector<Quad> c(n);
+  for (std::size_t i = 0; i < n; ++i) c[i] = Quad(end[Eigen::Index(i)].real());
+  using QuadVector = Eigen::Matrix<Quad, Eigen::Dynamic, 1>;
+  using QuadMatrix = Eigen::Matrix<Quad, Eigen::Dynamic, Eigen::Dynamic>;
+  for (int iteration = 0; iteration < 12; ++iteration) {
+    QuadVector value;
+    QuadMatrix jacobian;
+    target(scaled, c, value, &jacobian);
+    const QuadVector delta = Eigen::PartialPivLU<QuadMatrix>(jacobian).solve(value);
+    Quad size = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      c[i] -= delta[Eigen::Index(i)];
+      size = std::max(size, Quad(fabs(delta[Eigen::Index(i)]) / (1 + fabs(c[i]))));
+    }
+    if (!(size == size)) return std::nullopt;
+    if (size < Quad(1e-32)) return c;
+  }
+  return c;  // what Newton reached: the spectrum check below decides
+}
+
+struct SearchResult {
+  bool complete = false;
+  bool stopped = false;
+  std::vector<ComplexVector> finite;
+  int infinite = 0;
+  int paths = 0;
+};
+
+// Every path of one homotopy; complete when each reached t = 1 and no two finite ends meet.
+SearchResult search(const Scaled& scaled, std::uint64_t seed, const std::stop_token& stop) {
+  const Eigen::Index n = Eigen::Index(scaled.masses.size());
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> angle(0, 2 * M_PI);
+  std::uniform_real_distribution<double> radius(0.5, 1.5);
+  StartSystem start;
+  start.r.resize(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) start.r(i, j) = std::polar(radius(random), angle(random));
+  }
+  const Homotopy homotopy{scaled, start, std::polar(1.0, angle(random))};
+  SearchResult result;
+  std::vector<Eigen::Index> permutation(static_cast<std::size_t>(n));
+  std::iota(permutation.begin(), permutation.end(), 0);
+  do {
+    if (stop.stop_requested()) {
+      result.stopped = true;
+      return result;
+    }
+    ComplexVector c(n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const Eigen::Index i = permutation[std::size_t(j)];
+      c[i] = start.r(i, j);
+    }
+    ++result.paths;
+    const TrackedPath path = track(homotopy, c);
+    if (path.end == PathEnd::Failed) return result;
+    if (path.end == PathEnd::Infinite) {
+      ++result.infinite;
+      continue;
+    }
+    for (const ComplexVector& other : result.finite) {
+      // two paths at one end: one of them jumped, and some solution may have been missed
+      if ((other - path.c).norm() < 1e-7 * (1 + path.c.norm())) return result;
+    }
+    result.finite.push_back(path.c);
+  } while (std::next_permutation(permutation.begin(), permutation.end()));
+  result.complete = true;
+  return result;
+}
+
+}  // namespace
+
+ChainDesigns designSprings(const std::vector<double>& masses, double k1, const std::vector<int>& harmonics,
+                           std::stop_token stop) {
+  ChainDesigns designs;
+  const std::size_t n = masses.size();
+  const bool usable =
+      n >= 1 && n <= std::size_t(kMaxDesignMasses) && harmonics.size() == n && k1 > 0 && std::isfinite(k1) &&
+      std::all_of(masses.begin(), masses.end(), [](double m) { return m > 0 && std::isfinite(m); }) &&
+      std::all_of(harmonics.begin(), harmonics.end(), [](int h) { return h >= 1; }) &&
+      std::adjacent_find(harmonics.begin(), harmonics.end(), [](int a, int b) { return a <= b; }) == harmonics.end();
+  if (!usable) return designs;
+  // n_j over their gcd: w0 is then the chain's own base frequency (T the least common period)
+  int divisor = 0;
+  for (int h : harmonics) divisor = std::gcd(divisor, h);
+  std::vector<int> reduced(harmonics);
+  for (int& h : reduced) h /= divisor;
+
+  Scaled scaled;
+  const double heaviest = *std::max_element(masses.begin(), masses.end());
+  const double fastest = double(reduced.front());
+  for (double m : masses) scaled.masses.push_back(m / heaviest);
+  for (int h : reduced) scaled.lambdas.push_back(double(h) * h / (fastest * fastest));
+
+  std::optional<SearchResult> found;
+  for (std::uint64_t attempt = 0; attempt < 4 && !found; ++attempt) {
+    SearchResult result = search(scaled, 0x9e3779b97f4a7c15ULL + attempt, stop);
+    if (result.stopped) {
+      designs.outcome = DesignOutcome::Stopped;
+      return designs;
+    }
+    if (result.complete) found = std::move(result);
+  }
+  if (!found) {
+    designs.outcome = DesignOutcome::Incomplete;
+    return designs;
+  }
+  designs.paths = found->paths;
+  designs.infiniteEnds = found->infinite;
+  for (const ComplexVector& end : found->finite) {
+    const double scale = 1 + end.norm();
+    const bool real = (end.imag().array().abs() < 1e-8 * scale).all();
+    if (!real || !(end.real().array() > 0).all()) {
+      ++designs.complexEnds;
+      continue;
+    }
+    const std::optional<std::vector<Quad>> c = polish(scaled, end);
+    if (!c || !std::all_of(c->begin(), c->end(), [](const Quad& x) { return x > 0; })) {
+      ++designs.complexEnds;
+      continue;
+    }
+    // k_i = s / c_i with s = k1 c_1 (so k_1 is as asked); the eigenvalues of M^-1 K are then
+    // (s / m_max) n_j^2 / n_max^2
+    const Quad s = Quad(k1) * (*c)[0];
+    ChainDesign design;
+    for (std::size_t i = 0; i < n; ++i) design.springs.push_back(i == 0 ? k1 : double(s / (*c)[i]));
+    design.omega0 = double(sqrt(s / Quad(heaviest)) / Quad(fastest));
+    // the designed chain's own spectrum, in binary128: the design stands only if it checks
+    const ChainModes modes = chainModes(MassChain{masses, design.springs, 0, 0, 1});
+    for (std::size_t j = 0; j < n; ++j) {
+      const double wanted = reduced[j] * design.omega0;
+      design.ratioError = std::max(design.ratioError, std::abs(modes.omega[Eigen::Index(j)] / wanted - 1));
+    }
+    if (!(design.ratioError <= 1e-13)) {
+      // a root the spectrum does not confirm: no list can be promised
+      designs.outcome = DesignOutcome::Incomplete;
+      designs.designs.clear();
+      return designs;
+    }
+    designs.designs.push_back(design);
+  }
+  std::sort(designs.designs.begin(), designs.designs.end(), [](const ChainDesign& a, const ChainDesign& b) {
+    return std::lexicographical_compare(b.springs.begin() + 1, b.springs.end(), a.springs.begin() + 1, a.springs.end());
+  });
+  designs.outcome = designs.designs.empty() ? DesignOutcome::NoPositiveDesign : DesignOutcome::Designed;
+  return designs;
+}
+
+}  // namespace grazelab::core

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <stop_token>
+#include <vector>
+
+namespace grazelab::core {
+
+/// One design of a chain's springs: the chain wall --k1-- [m1] --k2-- ... --kN-- [mN] with
+/// these springs has the frequencies w_j = n_j w0 (fastest first).
+struct ChainDesign {
+  std::vector<double> springs;  ///< k_1 ... k_N; k_1 as asked
+  double omega0 = 0;            ///< w0 [1/time]: T = 2 pi / w0 is the period of every free motion
+  /// the largest relative error of the designed chain's frequencies against n_j w0, as its
+  /// binary128 spectrum (chainModes) finds them
+  double ratioError = 0;
+};
+
+enum class DesignOutcome {
+  Designed,            ///< every positive design found (at least one)
+  NoPositiveDesign,    ///< every design was found and none has all its springs positive
+  BadRequest,          ///< no masses, a mass or k1 not positive and finite, ratios not N
+                       ///< positive integers, non-increasing, or more masses than kMaxDesignMasses
+  Incomplete,          ///< the search could not follow every solution: no list can be promised
+  Stopped,             ///< the stop token was triggered
+};
+
+/// The springs of a chain with masses `masses` (no right wall) whose frequencies are in the
+/// ratio `harmonics[0] : ... : harmonics[N-1]` (fastest first, strictly decreasing), `k1`
+/// fixing the scale (docs/model.md section 11).
+///
+/// The N unknowns k_2 ... k_N and w0 make a square polynomial system with N! solutions counted
+/// in the complex numbers (its Bezout number: with the compliances 1/k_i as unknowns, each of
+/// the N eigenvalue conditions is affine in each of them). All of them are followed from a
+/// start system with N! known roots (a linear-product homotopy with a random complex gamma);
+/// the positive real ones are polished in binary128 and kept when the designed chain's own
+/// spectrum is in the ratio to 1e-13. Two paths meeting at one end (a path jump) or a path that
+/// cannot be followed restart the whole search with another gamma; if that keeps happening the
+/// outcome is Incomplete, never a shorter list.
+///
+/// Designs are ordered by k_2 descending (then k_3 ...): for N = 2 and 1:2, design 1 is the
+/// note's upper branch and design 2 its lower one, and none exists when m2/m1 > 9/16.
+struct ChainDesigns {
+  DesignOutcome outcome = DesignOutcome::BadRequest;
+  std::vector<ChainDesign> designs;
+  int paths = 0;          ///< paths followed in the successful search (N!)
+  int complexEnds = 0;    ///< solutions with a complex or non-positive compliance
+  int infiniteEnds = 0;   ///< paths that went to infinity (solutions the system lacks)
+};
+
+/// Above this many masses the N! paths take too long for an interactive answer (8! = 40 320).
+inline constexpr int kMaxDesignMasses = 7;
+
+/// Its cost grows as N!: N = 3 in 2.6 ms, N = 5 in 0.17 s, N = 6 in 1.6 s, N = 7 in tens
+/// of seconds (grazelab_core_bench --benchmark_filter=DesignSprings); `stop` is checked
+/// between paths.
+ChainDesigns designSprings(const std::vector<double>& masses, double k1, const std::vector<int>& harmonics,
+                           std::stop_token stop = {});
+
+}  // namespace grazelab::core

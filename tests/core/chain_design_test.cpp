@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for core/model/chain_design.cpp: springs designed for requested frequency ratios,
+// against the note's closed-form 1:2 design, against the designed chains' own spectra, and
+// against brute force (every design a dense scan of the springs finds).
+#include "core/model/chain_design.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "core/model/mass_chain.h"
+#include "core/model/model.h"
+
+namespace grazelab::core {
+namespace {
+
+// the designed chain's frequencies are n_j w0, by its own binary128 spectrum
+void expectInRatio(const std::vector<double>& masses, const ChainDesign& design, const std::vector<int>& harmonics) {
+  const ChainModes modes = chainModes(MassChain{masses, design.springs, 0, 0, 1});
+  for (std::size_t j = 0; j < masses.size(); ++j) {
+    EXPECT_NEAR(modes.omega[Eigen::Index(j)] / (harmonics[j] * design.omega0), 1.0, 1e-14) << "mode " << j + 1;
+  }
+  for (double k : design.springs) EXPECT_GT(k, 0);
+}
+
+TEST(ChainDesign, TwoMassesOneToTwoAreTheNotesBranches) {
+  // the note's closed-form design: two branches up to m2/m1 = 9/16, none beyond
+  for (double ratio : {0.05, 0.2, 0.5, 0.56, 0.5624}) {
+    const std::vector<double> masses{2.0, 2.0 * ratio};
+    const ChainDesigns designs = designSprings(masses, 3.0, {2, 1});
+    ASSERT_EQ(designs.outcome, DesignOutcome::Designed) << ratio;
+    ASSERT_EQ(designs.designs.size(), 2u) << ratio;
+    EXPECT_EQ(designs.paths, 2);
+    int index = 0;
+    for (Branch branch : {Branch::Upper, Branch::Lower}) {
+      const auto model = designedModel<double>(2.0, 2.0 * ratio, 3.0, 1.0, branch);
+      ASSERT_TRUE(model);
+      const ChainDesign& design = designs.designs[std::size_t(index++)];
+      EXPECT_NEAR(design.springs[1] / model->k2, 1.0, 1e-14) << ratio;
+      EXPECT_EQ(design.springs[0], 3.0);
+      expectInRatio(masses, design, {2, 1});
+    }
+  }
+  for (double ratio : {0.5626, 0.7, 2.0}) {
+    const ChainDesigns designs = designSprings({1.0, ratio}, 1.0, {2, 1});
+    EXPECT_EQ(designs.outcome, DesignOutcome::NoPositiveDesign) << ratio;
+    EXPECT_TRUE(designs.designs.empty());
+    EXPECT_EQ(designs.complexEnds + designs.infiniteEnds, 2) << ratio;
+  }
+}
+
+TEST(ChainDesign, DesignsAreExactAndScaleWithTheMassesAndK1) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> logMass(-1, 1);
+  const std::vector<std::vector<int>> requests{{3, 1}, {3, 2}, {5, 2}, {3, 2, 1}, {4, 3, 1}, {5, 3, 1}, {4, 3, 2, 1}};
+  int designed = 0;
+  for (const std::vector<int>& harmonics : requests) {
+    for (int trial = 0; trial < 4; ++trial) {
+      std::vector<double> masses;
+      for (std::size_t i = 0; i < harmonics.size(); ++i) masses.push_back(std::pow(10.0, logMass(random)));
+      const ChainDesigns designs = designSprings(masses, 1.0, harmonics);
+      ASSERT_NE(designs.outcome, DesignOutcome::Incomplete);
+      ASSERT_NE(designs.outcome, DesignOutcome::BadRequest);
+      for (const ChainDesign& design : designs.designs) expectInRatio(masses, design, harmonics);
+      designed += int(designs.designs.size());
+      // the same request on a chain 1000 times heavier with k1 = 10: the same springs over k1,
+      // w0 scaled by sqrt(10 / 1000)
+      std::vector<double> heavy;
+      for (double m : masses) heavy.push_back(1000 * m);
+      const ChainDesigns scaled = designSprings(heavy, 10.0, harmonics);
+      ASSERT_EQ(scaled.designs.size(), designs.designs.size());
+      for (std::size_t d = 0; d < designs.designs.size(); ++d) {
+        for (std::size_t i = 0; i < masses.size(); ++i) {
+          EXPECT_NEAR(scaled.designs[d].springs[i] / (10 * designs.designs[d].springs[i]), 1.0, 1e-13);
+        }
+        EXPECT_NEAR(scaled.designs[d].omega0 / (designs.designs[d].omega0 * std::sqrt(0.01)), 1.0, 1e-13);
+      }
+    }
+  }
+  EXPECT_GT(designed, 10);  // the requests are not all impossible
+}
+
+// Brute force, independent of the homotopy: the mismatch of a three-mass chain's ratios from
+// the request over a dense grid of (log k2, log k3), k1 = 1; each grid minimum is refined by a
+// pattern search, and those that reach zero are the designs in the grid's range: the homotopy
+// must have found each of them (every design found) and no other (none made up).
+TEST(ChainDesign, EveryDesignOfThreeMassesIsFound) {
+  for (const auto& [masses, harmonics] : std::vector<std::pair<std::vector<double>, std::vector<int>>>{
+           {{1.0, 0.2, 0.05}, {3, 2, 1}}, {{1.0, 1.0, 0.2}, {4, 3, 1}}, {{1.0, 0.4, 0.2}, {5, 3, 1}},
+           {{1.0, 0.1, 0.3}, {4, 3, 1}}, {{1.0, 0.5, 2.0}, {3, 2, 1}}}) {
+    const ChainDesigns designs = designSprings(masses, 1.0, harmonics);
+    ASSERT_NE(designs.outcome, DesignOutcome::Incomplete);
+    EXPECT_EQ(designs.paths, 6);
+    // the chain's frequencies by Eigen's dense solver in double, apart from chainModes
+    const auto mismatch = [&](double logK2, double logK3) {
+      const double k[4] = {1.0, std::exp(logK2), std::exp(logK3), 0.0};
+      Eigen::Matrix3d scaled;  // M^-1/2 K M^-1/2
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+          const double entry = i == j ? k[i] + k[i + 1] : (std::abs(i - j) == 1 ? -k[std::max(i, j)] : 0.0);
+          scaled(i, j) = entry / std::sqrt(masses[std::size_t(i)] * masses[std::size_t(j)]);
+        }
+      }
+      const Eigen::Vector3d w2 = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scaled).eigenvalues();  // ascending
+      const double a = std::sqrt(w2[2] / w2[0]) - double(harmonics[0]) / harmonics[2];
+      const double b = std::sqrt(w2[1] / w2[0]) - double(harmonics[1]) / harmonics[2];
+      return std::hypot(a, b);
+    };
+    // fine enough to part the close pairs designs come in (k2 = 0.775 and 0.738, k3 = 0.189
+    // and 0.196 for masses 1, 0.2, 0.05 and 3:2:1)
+    constexpr int kGrid = 400;
+    constexpr double kLow = -3 * 2.302585092994046, kHigh = 3 * 2.302585092994046;  // 1e-3 ... 1e3
+    const auto at = [](int i) { return kLow + (kHigh - kLow) * i / (kGrid - 1); };
+    std::vector<double> value(std::size_t(kGrid * kGrid));
+    for (int i = 0; i < kGrid; ++i) {
+      for (int j = 0; j < kGrid; ++j) value[std::size_t(i * kGrid + j)] = mismatch(at(i), at(j));
+    }
+    std::vector<std::pair<double, double>> solutions;  // log k2, log k3
+    for (int i = 1; i + 1 < kGrid; ++i) {
+      for (int j = 1; j + 1 < kGrid; ++j) {
+        const double here = value[std::size_t(i * kGrid + j)];
+        bool lowest = true;
+        for (int di = -1; di <= 1; ++di) {
+          for (int dj = -1; dj <= 1; ++dj) lowest = lowest && here <= value[std::size_t((i + di) * kGrid + j + dj)];
+        }
+        if (!lowest) continue;
+        double a = at(i), b = at(j), step = (kHigh - kLow) / kGrid;
+        double f = here;
+        while (step > 1e-13) {
+          bool moved = false;
+          for (const auto& [da, db] : {std::pair{step, 0.0}, {-step, 0.0}, {0.0, step}, {0.0, -step},
+                                        {step, step}, {-step, -step}, {step, -step}, {-step, step}}) {
+            const double g = mismatch(a + da, b + db);
+            if (g < f) {
+              a += da;
+              b += db;
+              f = g;
+              moved = true;
+              break;
+            }
+          }
+          if (!moved) step /= 2;
+        }
+        const bool known = std::any_of(solutions.begin(), solutions.end(), [&](const auto& s) {
+          return std::abs(s.first - a) < 1e-6 && std::abs(s.second - b) < 1e-6;
+        });
+        if (f < 1e-8 && !known) solutions.emplace_back(a, b);
+      }
+    }
+    int inRange = 0;
+    for (const ChainDesign& design : designs.designs) {
+      expectInRatio(masses, design, harmonics);
+      const double a = std::log(design.springs[1]), b = std::log(design.springs[2]);
+      if (a < kLow || a > kHigh || b < kLow || b > kHigh) continue;
+      ++inRange;
+      EXPECT_TRUE(std::any_of(solutions.begin(), solutions.end(), [&](const auto& s) {
+        return std::abs(s.first - a) < 1e-5 && std::abs(s.second - b) < 1e-5;
+      })) << "a design no brute force confirms: k2 = " << design.springs[1] << ", k3 = " << design.springs[2];
+    }
+    EXPECT_EQ(int(solutions.size()), inRange) << "masses " << masses[0] << ", " << masses[1] << ", " << masses[2];
+  }
+}
+
+TEST(ChainDesign, RefusesBadRequests) {
+  EXPECT_EQ(designSprings({}, 1.0, {}).outcome, DesignOutcome::BadRequest);
+  EXPECT_EQ(designSprings({1.0, 1.0}, 1.0, {2}).outcome, DesignOutcome::BadRequest);         // one ratio short
+  EXPECT_EQ(designSprings({1.0, 1.0}, 1.0, {1, 2}).outcome, DesignOutcome::BadRequest);      // slowest first
+  EXPECT_EQ(designSprings({1.0, 1.0}, 1.0, {2, 2}).outcome, DesignOutcome::BadRequest);      // equal
+  EXPECT_EQ(designSprings({1.0, -1.0}, 1.0, {2, 1}).outcome, DesignOutcome::BadRequest);
+  EXPECT_EQ(designSprings({1.0, 1.0}, std::nan(""), {2, 1}).outcome, DesignOutcome::BadRequest);
+  EXPECT_EQ(designSprings(std::vector<double>(8, 1.0), 1.0, {8, 7, 6, 5, 4, 3, 2, 1}).outcome,
+            DesignOutcome::BadRequest);
+  // a common factor is the same request: 4:2 is 2:1
+  const ChainDesigns doubled = designSprings({1.0, 0.5}, 1.0, {4, 2});
+  const ChainDesigns plain = designSprings({1.0, 0.5}, 1.0, {2, 1});
+  ASSERT_EQ(doubled.designs.size(), plain.designs.size());
+  EXPECT_EQ(doubled.designs[0].omega0, plain.designs[0].omega0);
+}
+
+}  // namespace
+}  // namespace grazelab::core
