@@ -3,6 +3,7 @@
 #include "core/model/chain_design.h"
 
 #include <Eigen/LU>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -178,7 +179,13 @@ TrackedPath track(const Homotopy& homotopy, ComplexVector c) {
     } else {
       step /= 2;
       successes = 0;
-      if (step < 1e-13) return {c.norm() > 1e4 ? PathEnd::Infinite : PathEnd::Failed, c};
+      if (step < 1e-13) {
+        if (c.norm() > 1e4) return {PathEnd::Infinite, c};
+        // the last steps into a multiple root, where Newton no longer contracts fast: its end
+        // is good to about the square root of the rounding, which search() and polish() allow
+        if (t > 1 - 1e-4) return {PathEnd::Finite, c};
+        return {PathEnd::Failed, c};
+      }
     }
   }
   if (t < 1) return {PathEnd::Failed, c};
@@ -192,7 +199,9 @@ std::optional<std::vector<Quad>> polish(const Scaled& scaled, const ComplexVecto
   for (std::size_t i = 0; i < n; ++i) c[i] = Quad(end[Eigen::Index(i)].real());
   using QuadVector = Eigen::Matrix<Quad, Eigen::Dynamic, 1>;
   using QuadMatrix = Eigen::Matrix<Quad, Eigen::Dynamic, Eigen::Dynamic>;
-  for (int iteration = 0; iteration < 12; ++iteration) {
+  // quadratic at a simple root; at a double one (a design at the edge of existing) each step
+  // only halves the error: room for that
+  for (int iteration = 0; iteration < 80; ++iteration) {
     QuadVector value;
     QuadMatrix jacobian;
     target(scaled, c, value, &jacobian);
@@ -208,10 +217,27 @@ std::optional<std::vector<Quad>> polish(const Scaled& scaled, const ComplexVecto
   return c;  // what Newton reached: the spectrum check below decides
 }
 
+// F's Jacobian is singular at c within what a path's end resolves (a multiple root's end is
+// only good to about the square root of the rounding)
+bool singularAt(const Scaled& scaled, const ComplexVector& c) {
+  ComplexVector value;
+  ComplexMatrix jacobian;
+  target(scaled, std::vector<Complex>(c.data(), c.data() + c.size()), value, &jacobian);
+  const Eigen::JacobiSVD<ComplexMatrix> svd(jacobian);
+  const Eigen::VectorXd sigma = svd.singularValues();
+  return sigma[sigma.size() - 1] < 1e-5 * sigma[0];
+}
+
+// A finite end of the paths: a root of F, simple or reached by several paths.
+struct Root {
+  ComplexVector c;
+  bool multiple = false;
+};
+
 struct SearchResult {
   bool complete = false;
   bool stopped = false;
-  std::vector<ComplexVector> finite;
+  std::vector<Root> finite;
   int infinite = 0;
   int paths = 0;
 };
@@ -248,11 +274,16 @@ SearchResult search(const Scaled& scaled, std::uint64_t seed, const std::stop_to
       ++result.infinite;
       continue;
     }
-    for (const ComplexVector& other : result.finite) {
-      // two paths at one end: one of them jumped, and some solution may have been missed
-      if ((other - path.c).norm() < 1e-7 * (1 + path.c.norm())) return result;
+    bool repeated = false;
+    for (Root& other : result.finite) {
+      if ((other.c - path.c).norm() > 1e-4 * (1 + path.c.norm())) continue;
+      // two paths at one end: a multiple root (the two designs of N = 2, 1:2 meet at
+      // m2/m1 = 9/16), where F's Jacobian is singular; at a regular root one of them jumped,
+      // and some solution may have been missed
+      if (!singularAt(scaled, path.c)) return result;
+      other.multiple = repeated = true;
     }
-    result.finite.push_back(path.c);
+    if (!repeated) result.finite.push_back({path.c, false});
   } while (std::next_permutation(permutation.begin(), permutation.end()));
   result.complete = true;
   return result;
@@ -297,9 +328,11 @@ ChainDesigns designSprings(const std::vector<double>& masses, double k1, const s
   }
   designs.paths = found->paths;
   designs.infiniteEnds = found->infinite;
-  for (const ComplexVector& end : found->finite) {
+  for (const Root& root : found->finite) {
+    const ComplexVector& end = root.c;
     const double scale = 1 + end.norm();
-    const bool real = (end.imag().array().abs() < 1e-8 * scale).all();
+    // a multiple root's end is good to about the square root of the rounding only
+    const bool real = (end.imag().array().abs() < (root.multiple ? 1e-4 : 1e-8) * scale).all();
     if (!real || !(end.real().array() > 0).all()) {
       ++designs.complexEnds;
       continue;
@@ -321,8 +354,13 @@ ChainDesigns designSprings(const std::vector<double>& masses, double k1, const s
       const double wanted = reduced[j] * design.omega0;
       design.ratioError = std::max(design.ratioError, std::abs(modes.omega[Eigen::Index(j)] / wanted - 1));
     }
+    if (!(design.ratioError <= 1e-13) && root.multiple) {
+      // a pair of complex roots a hair apart (just past the edge of existing), not a real one
+      ++designs.complexEnds;
+      continue;
+    }
     if (!(design.ratioError <= 1e-13)) {
-      // a root the spectrum does not confirm: no list can be promised
+      // a simple root the spectrum does not confirm: no list can be promised
       designs.outcome = DesignOutcome::Incomplete;
       designs.designs.clear();
       return designs;

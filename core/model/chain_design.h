@@ -35,9 +35,10 @@ enum class DesignOutcome {
 /// the N eigenvalue conditions is affine in each of them). All of them are followed from a
 /// start system with N! known roots (a linear-product homotopy with a random complex gamma);
 /// the positive real ones are polished in binary128 and kept when the designed chain's own
-/// spectrum is in the ratio to 1e-13. Two paths meeting at one end (a path jump) or a path that
-/// cannot be followed restart the whole search with another gamma; if that keeps happening the
-/// outcome is Incomplete, never a shorter list.
+/// spectrum is in the ratio to 1e-13. Two paths meeting at a regular root (a path jump) or a
+/// path that cannot be followed restart the whole search with another gamma; if that keeps
+/// happening the outcome is Incomplete, never a shorter list. Paths meeting where F's Jacobian
+/// is singular are a multiple root (two designs merging: N = 2, 1:2 at m2/m1 = 9/16), one design.
 ///
 /// Designs are ordered by k_2 descending (then k_3 ...): for N = 2 and 1:2, design 1 is the
 /// note's upper branch and design 2 its lower one, and none exists when m2/m1 > 9/16.
@@ -45,8 +46,9 @@ struct ChainDesigns {
   DesignOutcome outcome = DesignOutcome::BadRequest;
   std::vector<ChainDesign> designs;
   int paths = 0;          ///< paths followed in the successful search (N!)
-  int complexEnds = 0;    ///< solutions with a complex or non-positive compliance
+  int complexEnds = 0;    ///< distinct solutions with a complex or non-positive compliance
   int infiniteEnds = 0;   ///< paths that went to infinity (solutions the system lacks)
+  // (a multiple root, where designs meet, is reached by several paths and counted once)
 };
 
 /// Above this many masses the N! paths take too long for an interactive answer (8! = 40 320).

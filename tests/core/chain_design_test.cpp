@@ -46,11 +46,18 @@ TEST(ChainDesign, TwoMassesOneToTwoAreTheNotesBranches) {
       expectInRatio(masses, design, {2, 1});
     }
   }
+  // at m2/m1 = 9/16 exactly the two branches are one double root (two paths end there): one
+  // design, the note's k2 = 0.36 k1 ... and none a hair beyond
+  const ChainDesigns edge = designSprings({1.0, 0.5625}, 1.0, {2, 1});
+  ASSERT_EQ(edge.outcome, DesignOutcome::Designed);
+  ASSERT_EQ(edge.designs.size(), 1u);
+  EXPECT_NEAR(edge.designs[0].springs[1], designedModel<double>(1.0, 0.5625, 1.0, 1.0, Branch::Upper)->k2, 1e-12);
+  EXPECT_EQ(designSprings({1.0, 0.5625 * (1 + 1e-10)}, 1.0, {2, 1}).outcome, DesignOutcome::NoPositiveDesign);
   for (double ratio : {0.5626, 0.7, 2.0}) {
     const ChainDesigns designs = designSprings({1.0, ratio}, 1.0, {2, 1});
     EXPECT_EQ(designs.outcome, DesignOutcome::NoPositiveDesign) << ratio;
     EXPECT_TRUE(designs.designs.empty());
-    EXPECT_EQ(designs.complexEnds + designs.infiniteEnds, 2) << ratio;
+    EXPECT_EQ(designs.complexEnds + designs.infiniteEnds, 2) << ratio;  // two distinct roots
   }
 }
 
