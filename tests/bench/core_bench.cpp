@@ -13,6 +13,7 @@
 #include "core/model/linear_modes.h"
 #include "core/model/chain_design.h"
 #include "core/model/mass_chain.h"
+#include "core/solver/chain_run.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/periodic_orbit.h"
 #include "core/orbits/starts.h"
@@ -169,6 +170,29 @@ void DesignSprings(benchmark::State& state) {
   state.counters["designs"] = double(designs);
 }
 BENCHMARK(DesignSprings)->DenseRange(2, 6)->Unit(benchmark::kMillisecond);
+
+// Contacts of a chain of N masses (core/solver/chain_run.h), items = contacts: Arg(0) the
+// designed 3:2:1 chain of masses 1, 0.2, 0.05 (commensurate: one period searched a flight);
+// Arg(N > 0) a uniform chain of N masses (not commensurate: the search runs to the contact),
+// each from a start that reaches the stop, 2000 contacts.
+void ChainRunContacts(benchmark::State& state) {
+  core::MassChain chain;
+  if (state.range(0) == 0) {
+    chain.masses = {1.0, 0.2, 0.05};
+    chain.springs = core::designSprings(chain.masses, 1.0, {3, 2, 1}).designs.at(0).springs;
+  } else {
+    chain.masses.assign(std::size_t(state.range(0)), 1.0);
+    chain.springs.assign(std::size_t(state.range(0)), 1.0);
+  }
+  const Eigen::Index n = chain.size();
+  core::ChainState start{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
+  for (Eigen::Index i = 0; i < n; ++i) start.v[i] = 0.3 * std::cos(double(i));
+  start.v[n - 1] = 1.5 / std::sqrt(chain.masses.back());  // enough energy to reach the stop
+  std::int64_t contacts = 0;
+  for (auto _ : state) contacts += std::int64_t(core::runChain(chain, start, 2000).events.size());
+  state.SetItemsProcessed(contacts);
+}
+BENCHMARK(ChainRunContacts)->Arg(0)->Arg(3)->Arg(10)->Unit(benchmark::kMillisecond);
 
 // Periodic orbits (issue 22): one orbit with its monodromy and checks; the continuation of
 // the 1IPP family (items = orbits); the atlas up to K impacts (the budgets: K = 2 under 10 s,

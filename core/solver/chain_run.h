@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <Eigen/Core>
+
+#include <stop_token>
+#include <vector>
+
+#include "core/model/mass_chain.h"
+#include "core/solver/chain_flight.h"
+#include "core/solver/events.h"
+
+namespace grazelab::core {
+
+/// One contact of a chain of N masses with the stop.
+struct ChainEvent {
+  double t = 0;                        ///< since the run's start [time]
+  EventType type = EventType::Impact;  ///< Impact or Grazing (a stick ends the run for now)
+  Eigen::VectorXd u;                   ///< the displacements at the contact (u_s = d)
+  Eigen::VectorXd vBefore;             ///< the velocities before it
+  double vAfter = 0;                   ///< the stopped mass's velocity after it
+};
+
+/// Why a run of a chain of N masses ended.
+enum class ChainStop {
+  ContactLimit,      ///< `maxContacts` contacts
+  TimeLimit,         ///< `tEnd` reached
+  NoFurtherContact,  ///< a commensurate chain's flight that stays below the stop for a period:
+                     ///< linear forever
+  Sticking,          ///< the stopped mass reaches the stop at rest pressed into it: the stuck
+                     ///< phase of a chain of N masses is not computed yet
+  Undecided,         ///< at rest on the stop with no force either way within rounding
+  SearchBudget,      ///< a non-commensurate chain: no contact decided within the search's budget
+  Cancelled,         ///< the stop token
+};
+
+struct ChainRun {
+  std::vector<ChainEvent> events;
+  ChainState final;  ///< the state at `tFinal`
+  double tFinal = 0;
+  ChainStop stop = ChainStop::ContactLimit;
+  double energyInitial = 0;
+  double energyFinal = 0;
+};
+
+/// The energy 1/2 v^T M v + 1/2 u^T K u of a chain's state.
+double chainEnergy(const MassChain& chain, const ChainState& state);
+
+/// An exact run of a usable chain (validate(chain) empty) from `start` (u_s <= d): closed-form
+/// flights in the chain's modes, each contact by firstContact (certified: none missed), elastic
+/// impacts (v_s reversed), grazing touches that leave the flight unchanged; up to `maxContacts`
+/// contacts or `tEnd` (0: none). A non-commensurate chain searches each flight up to `tEnd`, or
+/// 1000 of its slowest periods without one.
+ChainRun runChain(const MassChain& chain, const ChainState& start, long maxContacts, double tEnd = 0,
+                  std::stop_token stop = {});
+
+}  // namespace grazelab::core

@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for core/solver/chain_flight.cpp and chain_run.cpp: exact runs of chains of N masses.
+// Against the two-mass solver (N = 2 is the note's chain), against brute force in long double
+// (no contact missed, near-grazing pushes included), and the theorems that hold for any N:
+// every flight of a fully resonant chain returns by T (< T after an impact), energy is
+// conserved, and the run scales with the chain.
+#include "core/solver/chain_run.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "core/model/chain_design.h"
+#include "core/model/model.h"
+#include "core/solver/simulate.h"
+
+namespace grazelab::core {
+namespace {
+
+MassChain designed(const std::vector<double>& masses, const std::vector<int>& ratios, int design = 0) {
+  const ChainDesigns designs = designSprings(masses, 1.0, ratios);
+  EXPECT_GT(int(designs.designs.size()), design);
+  return MassChain{masses, designs.designs.at(std::size_t(design)).springs, 0, 0, 1.0};
+}
+
+// a random start below the stop with energy of order one
+ChainState randomStart(const MassChain& chain, std::mt19937& random) {
+  std::uniform_real_distribution<double> value(-0.6, 0.6);
+  const Eigen::Index n = chain.size();
+  ChainState start{Eigen::VectorXd(n), Eigen::VectorXd(n)};
+  for (Eigen::Index i = 0; i < n; ++i) {
+    start.u[i] = value(random);
+    start.v[i] = value(random);
+  }
+  return start;
+}
+
+// u_s(t) - d along a flight, in long double, straight from the modes (no bounds, no windows)
+long double stopDistance(const ChainDynamics& dynamics, const ChainFlight& flight, long double t) {
+  long double f = -dynamics.gap;
+  for (Eigen::Index j = 0; j < flight.q.size(); ++j) {
+    const long double w = dynamics.omega[j];
+    f += dynamics.P(dynamics.stop, j) * (flight.q[j] * std::cos(w * t) + flight.qdot[j] / w * std::sin(w * t));
+  }
+  return f;
+}
+
+TEST(ChainRun, TwoMassesAreTheNotesSolver) {
+  // the note's designed chain, a near-grazing start: the same contacts as the two-mass solver
+  const auto model = designedModel<double>(1.0, 0.5, 1.0, 1.0, Branch::Upper);
+  ASSERT_TRUE(model);
+  const MassChain chain{{1.0, 0.5}, {1.0, model->k2}, 0, 0, 1.0};
+  for (const auto& [u1, u2, v1, v2] : {std::tuple{0.5, 0.9, 0.8, 0.6}, std::tuple{-1.2, 0.95, 0.3, 0.9},
+                                       std::tuple{0.0, 1.0, 0.3, -0.2}, std::tuple{0.7, 0.99, 0.1, 0.3}}) {
+    Request request;
+    request.initial = {u1, u2, v1, v2};
+    request.maxContacts = 60;
+    const Result two = simulate(*model, request);
+    ChainState start{Eigen::Vector2d(u1, u2), Eigen::Vector2d(v1, v2)};
+    const ChainRun n = runChain(chain, start, 60);
+    ASSERT_EQ(two.events.size(), 60u) << u1 << ": " << toString(two.stop) << " " << two.message;
+    ASSERT_EQ(n.events.size(), two.events.size());
+    for (std::size_t k = 0; k < n.events.size(); ++k) {
+      EXPECT_NEAR(n.events[k].t, two.events[k].t, 1e-12 * (1 + two.events[k].t)) << "contact " << k;
+      EXPECT_EQ(n.events[k].type, two.events[k].type) << "contact " << k;
+      EXPECT_NEAR(n.events[k].u[0], two.events[k].after.u1, 1e-9) << "contact " << k;
+      EXPECT_NEAR(n.events[k].vAfter, two.events[k].after.v2, 1e-9) << "contact " << k;
+    }
+  }
+}
+
+TEST(ChainRun, ResonantFlightsReturnByTheirPeriodAndKeepTheEnergy) {
+  // Theorem 2.3 for any N: in a fully resonant chain every flight after an impact ends before T
+  std::mt19937 random(5);
+  for (const auto& [masses, ratios] : std::vector<std::pair<std::vector<double>, std::vector<int>>>{
+           {{1.0, 0.2, 0.05}, {3, 2, 1}}, {{1.0, 1.0, 0.2}, {4, 3, 1}}, {{1.0, 0.4, 0.2}, {5, 3, 1}},
+           {{1.0, 0.6, 0.36, 0.216}, {4, 3, 2, 1}}}) {
+    const MassChain chain = designed(masses, ratios);
+    const ChainDynamics dynamics = chainDynamics(chain);
+    ASSERT_GT(dynamics.period, 0);
+    for (int trial = 0; trial < 5; ++trial) {
+      const ChainState start = randomStart(chain, random);
+      if (start.u[chain.size() - 1] > chain.gap) continue;
+      const ChainRun run = runChain(chain, start, 300);
+      if (run.stop == ChainStop::NoFurtherContact) continue;
+      ASSERT_TRUE(run.stop == ChainStop::ContactLimit || run.stop == ChainStop::Sticking) << int(run.stop);
+      for (std::size_t k = 1; k < run.events.size(); ++k) {
+        const double flight = run.events[k].t - run.events[k - 1].t;
+        EXPECT_GT(flight, 0);
+        if (run.events[k - 1].type == EventType::Impact) EXPECT_LT(flight, dynamics.period);
+        EXPECT_LE(flight, dynamics.period * (1 + 1e-12));
+      }
+      EXPECT_NEAR(run.energyFinal / run.energyInitial, 1.0, 1e-11);
+    }
+  }
+}
+
+// Brute force, in long double: f sampled 4000 times per fastest period before each contact the
+// run found, and each sampled local maximum refined; none may reach the stop before it.
+void expectNoContactMissed(const MassChain& chain, const ChainState& start, long contacts, double tEnd = 0) {
+  const ChainDynamics dynamics = chainDynamics(chain);
+  const ChainRun run = runChain(chain, start, contacts, tEnd);
+  ChainState state = start;
+  double t = 0;
+  const double step = 2 * std::numbers::pi / dynamics.omega.maxCoeff() / 4000;
+  for (const ChainEvent& event : run.events) {
+    const ChainFlight flight = flightFrom(dynamics, state);
+    const double length = event.t - t;
+    long double previous = stopDistance(dynamics, flight, 0);
+    long double before = previous;
+    for (double s = step; s < length - 1e-9 * (1 + length); s += step) {
+      const long double now = stopDistance(dynamics, flight, s);
+      EXPECT_LT(now, 1e-12L) << "a contact at t = " << t + s << " before the one found at " << event.t;
+      if (previous > before && previous >= now) {
+        // a local maximum near s - step: golden-section refine, it must stay below the stop
+        long double a = s - 2 * step, b = s;
+        for (int i = 0; i < 80; ++i) {
+          const long double m1 = a + (b - a) * 0.382L, m2 = a + (b - a) * 0.618L;
+          (stopDistance(dynamics, flight, m1) < stopDistance(dynamics, flight, m2) ? a : b) = (stopDistance(dynamics, flight, m1) < stopDistance(dynamics, flight, m2) ? m1 : m2);
+        }
+        const long double peak = stopDistance(dynamics, flight, (a + b) / 2);
+        if ((a + b) / 2 < length * (1 - 1e-9)) {
+          EXPECT_LT(peak, 1e-12L) << "a touch at t = " << t + double((a + b) / 2) << " missed (found " << event.t << ")";
+        }
+      }
+      before = previous;
+      previous = now;
+    }
+    // the contact itself is on the stop
+    EXPECT_NEAR(double(stopDistance(dynamics, flight, length)), 0.0, 1e-9);
+    state.u = event.u;
+    state.v = event.vBefore;
+    state.v[dynamics.stop] = event.vAfter;
+    t = event.t;
+  }
+}
+
+TEST(ChainRun, NoContactIsMissedOnResonantAndDetunedChains) {
+  std::mt19937 random(9);
+  const MassChain resonant = designed({1.0, 0.2, 0.05}, {3, 2, 1});
+  MassChain detuned = resonant;
+  detuned.springs[1] *= std::sqrt(2.0);  // frequencies no longer in any small ratio
+  ASSERT_EQ(chainDynamics(detuned).period, 0);
+  MassChain interior = designed({1.0, 1.0, 0.2}, {4, 3, 1});
+  interior.stopMass = 2;  // a stop on an interior mass
+  for (const MassChain* chain : std::initializer_list<const MassChain*>{&resonant, &detuned, &interior}) {
+    for (int trial = 0; trial < 3; ++trial) {
+      ChainState start = randomStart(*chain, random);
+      start.u[chain->stopped() - 1] = std::min(start.u[chain->stopped() - 1], 0.5);
+      expectNoContactMissed(*chain, start, 25, 400);
+    }
+  }
+}
+
+TEST(ChainRun, NearGrazingPushesAreImpactsTouchesOrNothing) {
+  // GLOM_j of a resonant chain (a pure mode whose top just touches the stop) started at its
+  // rest position: the flight touches at a quarter period; pushed out by eps it crosses, pushed
+  // in it never reaches (a pure mode is periodic); at eps = 0 a touch
+  const MassChain chain = designed({1.0, 0.2, 0.05}, {3, 2, 1});
+  const ChainDynamics dynamics = chainDynamics(chain);
+  const int s = dynamics.stop;
+  for (Eigen::Index j = 0; j < dynamics.P.cols(); ++j) {
+    const double w = dynamics.omega[j];
+    const Eigen::VectorXd shape = dynamics.P.col(j) / dynamics.P(s, j);  // unit at the stop
+    for (double push : {1e-3, 1e-6, 1e-9, 0.0, -1e-9, -1e-3}) {
+      // u = 0, v = (1 + push) d w shape: amplitude (1 + push) d at mass s, a quarter period on
+      ChainState start{Eigen::VectorXd::Zero(chain.size()), (1 + push) * chain.gap * w * shape};
+      const ChainContact contact = firstContact(dynamics, flightFrom(dynamics, start));
+      const double quarter = std::numbers::pi / (2 * w);
+      if (push > 1e-12) {
+        EXPECT_EQ(contact.kind, ChainContactKind::Impact) << "mode " << j + 1 << ", push " << push;
+        // the first crossing, sqrt(2 push) / w before the top
+        EXPECT_NEAR(contact.t, quarter - std::acos(1 / (1 + push)) / w, 1e-9 * quarter) << push;
+      } else if (push == 0) {
+        EXPECT_EQ(contact.kind, ChainContactKind::Touch) << "mode " << j + 1;
+        EXPECT_NEAR(contact.t, quarter, 1e-6 * quarter);
+      } else {
+        EXPECT_EQ(contact.kind, ChainContactKind::None) << "mode " << j + 1 << ", push " << push;
+      }
+    }
+  }
+}
+
+TEST(ChainRun, ScalesWithTheChain) {
+  // masses x 1000, springs x 10, gap x 7: times x 10, displacements x 7
+  std::mt19937 random(3);
+  const MassChain chain = designed({1.0, 0.4, 0.2}, {5, 3, 1});
+  MassChain scaled = chain;
+  for (double& m : scaled.masses) m *= 1000;
+  for (double& k : scaled.springs) k *= 10;
+  scaled.gap *= 7;
+  const ChainState start = randomStart(chain, random);
+  const ChainState bigger{7 * start.u, 0.7 * start.v};
+  const ChainRun a = runChain(chain, start, 40);
+  const ChainRun b = runChain(scaled, bigger, 40);
+  ASSERT_EQ(a.events.size(), b.events.size());
+  for (std::size_t k = 0; k < a.events.size(); ++k) {
+    EXPECT_NEAR(b.events[k].t / (10 * a.events[k].t), 1.0, 1e-9) << k;
+    EXPECT_EQ(a.events[k].type, b.events[k].type);
+  }
+}
+
+}  // namespace
+}  // namespace grazelab::core
