@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+#include "commands/chain_simulate_command.h"
 #include "commands/family_command.h"
 #include "commands/map_command.h"
 #include "commands/modes_command.h"
@@ -99,6 +100,7 @@ struct Command {
 
 const QStringList kChain = {"m1", "m2", "k1", "gap", "k2", "branch"};
 const QStringList kStart = {"glo", "onepp", "state", "perturb"};
+const QStringList kMassChain = {"masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch"};
 
 // a command that writes files: invalid input, interrupt and failed writes as `ended` says
 Runner writesFiles(int (*command)(const QCommandLineParser&, const Io&, std::stop_token, QString&)) {
@@ -119,7 +121,7 @@ int runReportOrStability(bool report, const QCommandLineParser& parser, const Io
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
-      {"info", kChain + QStringList{"precision", "masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch"}, false,
+      {"info", kChain + kMassChain + QStringList{"precision"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
          const auto precision = parsePrecisionOption(parser, error);
@@ -136,9 +138,15 @@ const std::vector<Command>& commands() {
          return fail(io, "--precision: unknown");
        },
        {}},
-      {"simulate", kChain + kStart + QStringList{"precision", "contacts", "t-end", "search-steps", "format", "trust", "sample-step", "sample-times"}, false,
+      {"simulate", kChain + kStart + kMassChain + QStringList{"precision", "contacts", "t-end", "search-steps", "format", "trust", "sample-step", "sample-times"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
+         if (std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return parser.isSet(name); })) {
+           if (!parser.isSet("masses")) return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
+           const int code = runChainSimulate(parser, io, stop, error);
+           if (code == kExitInterrupted) std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
+           return code == kExitInvalidInput ? fail(io, error) : code;
+         }
          const auto precision = parsePrecisionOption(parser, error);
          if (!precision) return fail(io, error);
          const auto trust = parseTrustOption(parser, error);

@@ -169,23 +169,30 @@ def info(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[flo
     design_branch: which design the chain takes, 1 to the number found (default 1)."""
     options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision)
     if masses is not None:
-        given = {name: value for name, value in (("m1", m1), ("m2", m2), ("k1", k1))
-                 if value != {"m1": 1.0, "m2": 0.5, "k1": 1.0}[name]}
-        given.update({name: value for name, value in (("k2", k2), ("branch", branch)) if value is not None})
-        if given:
-            raise ValueError(f"masses describes the whole chain: give it with springs, or "
-                             f"{', '.join(given)} and the other two-mass keywords, not both")
-        options = dict(gap=gap, precision=precision, masses=masses, springs=springs,
-                       right_spring=right_spring, stop_mass=stop_mass, design_branch=design_branch)
-        if frequencies is not None:
-            if (not isinstance(frequencies, (list, tuple, _np.ndarray))
-                    or not all(isinstance(n, (int, _np.integer)) and not isinstance(n, bool) for n in frequencies)):
-                raise TypeError("frequencies: a sequence of whole numbers n1, ..., nN (fastest first)")
-            options["frequencies"] = ":".join(str(int(n)) for n in frequencies)
+        options = dict(gap=gap, precision=precision,
+                       **_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies,
+                                             design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
     elif frequencies is not None or design_branch is not None:
         raise ValueError("frequencies and design_branch design the springs of a chain given by masses")
     result, _, _, _ = _command("info", options, document=True)
     return result
+
+
+def _mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, design_branch, two_mass):
+    """The options of a chain of N masses, the two-mass keywords beside it refused."""
+    given = {name: value for name, value in two_mass.items()
+             if value is not None and value != {"m1": 1.0, "m2": 0.5, "k1": 1.0}.get(name)}
+    if given:
+        raise ValueError(f"masses describes the whole chain: give it with springs, or "
+                         f"{', '.join(given)} and the other two-mass keywords, not both")
+    options = dict(masses=masses, springs=springs, right_spring=right_spring, stop_mass=stop_mass,
+                   design_branch=design_branch)
+    if frequencies is not None:
+        if (not isinstance(frequencies, (list, tuple, _np.ndarray))
+                or not all(isinstance(n, (int, _np.integer)) and not isinstance(n, bool) for n in frequencies)):
+            raise TypeError("frequencies: a sequence of whole numbers n1, ..., nN (fastest first)")
+        options["frequencies"] = ":".join(str(int(n)) for n in frequencies)
+    return options
 
 
 @_documented
@@ -195,7 +202,10 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
              perturb: _Optional[_Sequence[float]] = None, contacts: _Optional[int] = None,
              t_end: _Optional[float] = None, search_steps: _Optional[int] = None, trust: str = "auto",
              events: bool = True, samples: _Union[float, _Sequence[float], None] = None,
-             progress: _Optional[_Progress] = None) -> Result:
+             progress: _Optional[_Progress] = None, masses: _Optional[_Sequence[float]] = None,
+             springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
+             stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
+             design_branch: _Optional[int] = None) -> Result:
     """One exact run (``grazelab-cli simulate``). Returns the JSON's fields (model, initial,
     final, stop_reason, contacts, energy, accuracy, trust, precision, timing) with ``events`` a
     structured array of the columns t, type, u1, u2, v1, v2_pre, v2_post (the arrays the core
@@ -219,7 +229,27 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         (t, u1, u2, v1, v2), in double, a time past the run's end left out (at most 4 000 000:
         ``samples_truncated`` says when more were asked for).
     progress: ``progress(fraction, text)``, called on the calling thread.
+    masses, springs, right_spring, stop_mass, frequencies, design_branch: a chain of N masses, as
+        in ``info`` (then the two-mass keywords stay at their defaults). Its run starts from
+        ``state`` = (u1, ..., uN, v1, ..., vN), in double, with ``contacts`` and ``t_end``; the
+        result has ``chain`` (with the common ``period`` of a commensurate chain), ``initial``,
+        ``events`` (each with t, type, u, v_pre and the stopped mass's v_post), ``final``,
+        ``stop_reason``, ``message``, ``contacts`` and ``energy``. No error estimate yet
+        (``trust`` other than "auto" or "off" is refused), no ``glo``, ``onepp``, ``perturb`` or
+        ``samples`` yet; a mass that would stick ends the run (stop_reason "sticking").
 """
+    if masses is not None:
+        if samples is not None:
+            raise ValueError("samples: not available for a chain of N masses yet")
+        options = dict(gap=gap, precision=precision, state=state, contacts=contacts, t_end=t_end,
+                       glo=glo, onepp=onepp, perturb=perturb,
+                       trust=None if trust in ("auto", "off") else trust,
+                       **_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies,
+                                             design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
+        result, _, _, _ = _command("simulate", options, progress, document=True)
+        return result
+    if frequencies is not None or design_branch is not None or springs is not None:
+        raise ValueError("springs, frequencies and design_branch describe a chain given by masses")
     try:
         count = int(_convert._text("contacts", contacts)) if contacts is not None else None
     except (TypeError, ValueError):

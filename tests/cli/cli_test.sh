@@ -58,7 +58,8 @@ start = ["glo", "onepp", "state", "perturb"]
 takes = {
     "info": model + ["masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch"],
     "simulate": model + start + ["contacts", "t-end", "search-steps", "format", "trust",
-                                 "sample-step", "sample-times"],
+                                 "sample-step", "sample-times", "masses", "springs", "right-spring",
+                                 "stop-mass", "frequencies", "design-branch"],
     "report": model[:-1] + start + ["contacts", "t-end", "out", "methods", "quick"],
     "stability": ["out", "methods", "quick"],
     "map": model + start + ["contacts", "trust", "out", "x", "y", "threads", "shard", "picture"],
@@ -231,6 +232,37 @@ EXPECT_WORD="3 ratios for 2 masses" expect_invalid info --masses 1,0.5 --frequen
 EXPECT_WORD="k1 alone" expect_invalid info --masses 1,0.5 --springs 1,1 --frequencies 2:1
 EXPECT_WORD="picks a design" expect_invalid info --masses 1,0.5 --springs 1,1 --design-branch 2
 EXPECT_WORD="7 masses at most" expect_invalid info --masses 1,1,1,1,1,1,1,1 --frequencies 8:7:6:5:4:3:2:1
+# runs of chains of N masses (issue 32): the document, its refusals with one line
+if expect_ok simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --state 0,0,0,0,0,6.7 --contacts 20; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['contacts'] == 20 and d['stop_reason'] == 'contact-limit', d['stop_reason']
+assert all(e['u'][2] == 1 and e['type'] == 'impact' for e in d['events'])
+t = [0] + [e['t'] for e in d['events']]
+assert all(0 < b - a < d['chain']['period'] for a, b in zip(t[1:], t[2:]))  # FFT < T after an impact
+assert d['energy']['relative_drift'] < 1e-12, d['energy']" || fail "a run of three masses"
+fi
+EXPECT_WORD="--state u1" expect_invalid simulate --masses 1,0.5 --springs 1,0.5
+EXPECT_WORD="4 numbers for 3 masses" expect_invalid simulate --masses 1,1,1 --springs 1,1,1 --state 0,0,0,0
+EXPECT_WORD="past the stop" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,2,0,0
+EXPECT_WORD="not available for a chain" expect_invalid simulate --masses 1,1 --springs 1,1 --glo 0.5
+EXPECT_WORD="json only" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format csv
+EXPECT_WORD="error estimate" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --trust full
+EXPECT_WORD="in double" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --precision quad
+EXPECT_WORD="given by --masses" expect_invalid simulate --springs 1,1 --state 0,0,0,1
+# SIGINT during a long run of ten masses ends it within 1 s
+"$cli" simulate --masses 1,1,1,1,1,1,1,1,1,1 --springs 1,1,1,1,1,1,1,1,1,1 --state 0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,2 \
+  --contacts 1000000 >"$out" 2>"$err" &
+pid=$!
+sleep 1
+started=$(date +%s%N)
+kill -INT "$pid"
+wait "$pid"
+code=$?
+elapsed_ms=$((($(date +%s%N) - started) / 1000000))
+[ "$code" -eq 130 ] || fail "interrupted run of ten masses exit $code, not 130"
+[ "$elapsed_ms" -le 1000 ] || fail "interrupting the run of ten masses took $elapsed_ms ms"
+
 # SIGINT during a seven-mass design (its 5040 paths take tens of seconds) ends it within 1 s
 "$cli" info --masses 1,0.8,0.6,0.5,0.4,0.3,0.2 --frequencies 7:6:5:4:3:2:1 >"$out" 2>"$err" &
 pid=$!

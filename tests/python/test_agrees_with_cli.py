@@ -335,3 +335,25 @@ def test_info_designs_springs_for_frequency_ratios(cli_json):
         gl.info(masses=[1, 0.5], frequencies=[2.5, 1])
     with pytest.raises(ValueError, match="given by masses"):
         gl.info(frequencies=[2, 1])
+
+
+def test_simulate_a_chain_of_n_masses(cli_json):
+    # a designed 3:2:1 chain: the command line's document; every flight after an impact < T
+    chain = dict(masses=[1, 0.2, 0.05], frequencies=[3, 2, 1])
+    run = gl.simulate(**chain, state=[0, 0, 0, 0, 0, 6.7], contacts=15)
+    assert run == cli_json("simulate", "--masses=1,0.2,0.05", "--frequencies=3:2:1",
+                           "--state=0,0,0,0,0,6.7", "--contacts=15")
+    assert run.contacts == 15 and run.stop_reason == "contact-limit"
+    times = [e.t for e in run.events]
+    assert all(0 < b - a < run.chain.period for a, b in zip(times, times[1:]))
+    assert run.energy.relative_drift < 1e-12
+    # the note's chain given as masses: the two-mass solver's contacts
+    note = gl.simulate(state=(0.5, 0.9, 0.8, 0.6), contacts=20, trust="off")
+    two = gl.simulate(masses=[1, 0.5], springs=[1, gl.info().model.k2], state=[0.5, 0.9, 0.8, 0.6], contacts=20)
+    np.testing.assert_allclose([e.t for e in two.events], note.events["t"], rtol=1e-12)
+    with pytest.raises(ValueError, match="state u1"):
+        gl.simulate(masses=[1, 1], springs=[1, 1])
+    with pytest.raises(ValueError, match="not available for a chain"):
+        gl.simulate(masses=[1, 1], springs=[1, 1], glo=0.5)
+    with pytest.raises(ValueError, match="given by masses"):
+        gl.simulate(springs=[1, 1], state=[0, 0, 0, 1])

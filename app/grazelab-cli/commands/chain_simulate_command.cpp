@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "commands/chain_simulate_command.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/solver/chain_run.h"
+#include "exit_codes.h"
+#include "io/cli_input.h"
+#include "io/cli_output.h"
+#include "io/json_value.h"
+
+namespace grazelab::cli {
+namespace {
+
+using V = JsonValue;
+
+// the events of a chain of N masses are kept in memory until the document is written
+constexpr long kMaxChainContacts = 1'000'000;
+
+V numbers(const Eigen::VectorXd& values) {
+  std::vector<V> items;
+  for (Eigen::Index i = 0; i < values.size(); ++i) items.push_back(V::number(values[i]));
+  return V::array(std::move(items));
+}
+
+std::string stopName(core::ChainStop stop) {
+  switch (stop) {
+    case core::ChainStop::ContactLimit: return "contact-limit";
+    case core::ChainStop::TimeLimit: return "time-limit";
+    case core::ChainStop::NoFurtherContact: return "no-further-contact";
+    case core::ChainStop::Sticking: return "sticking";
+    case core::ChainStop::Undecided: return "undecided";
+    case core::ChainStop::SearchBudget: return "search-budget";
+    case core::ChainStop::Cancelled: return "cancelled";
+  }
+  return "unknown";
+}
+
+std::string stopMessage(core::ChainStop stop) {
+  switch (stop) {
+    case core::ChainStop::NoFurtherContact:
+      return "the frequencies are commensurate and the flight stays below the stop for a whole period: "
+             "linear forever";
+    case core::ChainStop::Sticking:
+      return "the stopped mass reaches the stop at rest, pressed into it: the stuck phase of a chain of N "
+             "masses is not computed yet, so the run ends here";
+    case core::ChainStop::Undecided:
+      return "the stopped mass rests on the stop with no force either way within double's rounding";
+    case core::ChainStop::SearchBudget:
+      return "the frequencies are not commensurate and no contact was decided within 1000 slowest periods "
+             "(give --t-end to search longer)";
+    default: return "";
+  }
+}
+
+}  // namespace
+
+int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
+  for (const char* notYet : {"glo", "onepp", "perturb", "sample-step", "sample-times"}) {
+    if (options.isSet(notYet)) {
+      error = QStringLiteral("--%1 is not available for a chain of N masses yet: start it with --state "
+                             "u1,...,uN,v1,...,vN")
+                  .arg(notYet);
+      return kExitInvalidInput;
+    }
+  }
+  if (options.isSet("format") && options.value("format") != "json") {
+    error = "--format: a chain of N masses is written as json only for now";
+    return kExitInvalidInput;
+  }
+  if (options.isSet("precision") && options.value("precision") != "double" && options.value("precision") != "auto") {
+    error = "--precision: a chain of N masses is computed in double for now (give double or auto)";
+    return kExitInvalidInput;
+  }
+  if (options.isSet("trust") && options.value("trust") != "off") {
+    error = "--trust: a chain of N masses has no error estimate yet (give --trust off)";
+    return kExitInvalidInput;
+  }
+  const auto chain = parseMassChain(options, stop);
+  if (!chain.value && chain.error.isEmpty()) return kExitInterrupted;
+  if (!chain.value) {
+    error = chain.error;
+    return kExitInvalidInput;
+  }
+  const core::MassChain& masses = chain.value->chain;
+  const Eigen::Index n = masses.size();
+  if (!options.isSet("state")) {
+    error = QStringLiteral("a chain of N masses starts from --state u1,...,uN,v1,...,vN (%1 numbers)").arg(2 * n);
+    return kExitInvalidInput;
+  }
+  std::vector<double> values;
+  for (const QString& part : options.value("state").split(',')) {
+    bool ok = false;
+    const double value = part.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+      error = QStringLiteral("--state: '%1' is not a finite number").arg(part);
+      return kExitInvalidInput;
+    }
+    values.push_back(value);
+  }
+  if (Eigen::Index(values.size()) != 2 * n) {
+    error = QStringLiteral("--state: %1 numbers for %2 masses (u1,...,uN,v1,...,vN: %3)").arg(values.size()).arg(n).arg(2 * n);
+    return kExitInvalidInput;
+  }
+  core::ChainState start{Eigen::Map<Eigen::VectorXd>(values.data(), n), Eigen::Map<Eigen::VectorXd>(values.data() + n, n)};
+  const int s = masses.stopped() - 1;
+  if (start.u[s] > masses.gap) {
+    error = QStringLiteral("--state: u%1 = %2 is past the stop (gap %3)").arg(s + 1).arg(start.u[s]).arg(masses.gap);
+    return kExitInvalidInput;
+  }
+  long contacts = options.isSet("t-end") ? kMaxChainContacts : 100;
+  if (options.isSet("contacts")) {
+    bool ok = false;
+    contacts = options.value("contacts").toLong(&ok);
+    if (!ok || contacts < 0 || contacts > kMaxChainContacts) {
+      error = QStringLiteral("--contacts: a whole number from 0 to %1 for a chain of N masses (its events are "
+                             "kept until written)")
+                  .arg(kMaxChainContacts);
+      return kExitInvalidInput;
+    }
+  }
+  double tEnd = 0;
+  if (options.isSet("t-end")) {
+    bool ok = false;
+    tEnd = options.value("t-end").toDouble(&ok);
+    if (!ok || !(tEnd > 0) || !std::isfinite(tEnd)) {
+      error = QStringLiteral("--t-end: '%1' is not a positive finite time").arg(options.value("t-end"));
+      return kExitInvalidInput;
+    }
+  }
+  const core::ChainRun run = core::runChain(masses, start, contacts, tEnd, stop);
+  if (run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
+  std::vector<V> events;
+  for (const core::ChainEvent& event : run.events) {
+    events.push_back(V::object({{"t", V::number(event.t)},
+                                {"type", V::of(std::string(core::toString(event.type)))},
+                                {"u", numbers(event.u)},
+                                {"v_pre", numbers(event.vBefore)},
+                                {"v_post", V::number(event.vAfter)}}));
+  }
+  const core::ChainDynamics dynamics = core::chainDynamics(masses);
+  const std::string message = stopMessage(run.stop);
+  V document = V::object(
+      {{"chain", V::object({{"masses", numbers(Eigen::Map<const Eigen::VectorXd>(masses.masses.data(), n))},
+                            {"springs", numbers(Eigen::Map<const Eigen::VectorXd>(masses.springs.data(), n))},
+                            {"right_spring", masses.rightSpring > 0 ? V::number(masses.rightSpring) : V::null()},
+                            {"stop_mass", V::of(std::int64_t(s + 1))},
+                            {"gap", V::number(masses.gap)},
+                            {"period", dynamics.period > 0 ? V::number(dynamics.period) : V::null()}})},
+       {"initial", V::object({{"u", numbers(start.u)}, {"v", numbers(start.v)}})},
+       {"events", V::array(std::move(events))},
+       {"final", V::object({{"t", V::number(run.tFinal)}, {"u", numbers(run.final.u)}, {"v", numbers(run.final.v)}})},
+       {"stop_reason", V::of(stopName(run.stop))},
+       {"message", message.empty() ? V::null() : V::of(message)},
+       {"contacts", V::of(std::int64_t(run.events.size()))},
+       {"energy", V::object({{"initial", V::number(run.energyInitial)},
+                             {"final", V::number(run.energyFinal)},
+                             {"relative_drift", V::number(std::abs(run.energyFinal / run.energyInitial - 1))}})},
+       {"precision", V::of("double")}});
+  if (io.document) {
+    *io.document = std::move(document);
+    return 0;
+  }
+  const std::string text = fieldPerLine(document, "  ", "") + "\n";
+  std::fwrite(text.data(), 1, text.size(), io.out);
+  return 0;
+}
+
+}  // namespace grazelab::cli
