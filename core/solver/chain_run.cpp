@@ -41,7 +41,13 @@ ChainRun runChain(const MassChain& chain, const ChainState& start, long maxConta
     if (past) return finish(ChainStop::TimeLimit, stateAt(dynamics, flight, tEnd - t), tEnd);
     if (contact.kind == ChainContactKind::None) return finish(ChainStop::NoFurtherContact, state, t);
     if (contact.kind == ChainContactKind::Budget) return finish(ChainStop::SearchBudget, state, t);
-    ChainState at = contact.t > 0 ? stateAt(dynamics, flight, contact.t) : state;
+    if (contact.kind == ChainContactKind::Touch && contact.t == 0) {
+      // a flight that cannot leave the stop it starts on (neither its velocity nor its
+      // acceleration takes it away, within rounding): pressed into it, or undecided
+      const double force = -(K.row(s) * state.u)(0);
+      return finish(force > 0 ? ChainStop::Sticking : ChainStop::Undecided, state, t);
+    }
+    ChainState at = stateAt(dynamics, flight, contact.t);
     ChainEvent event;
     event.t = t + contact.t;
     event.vBefore = at.v;

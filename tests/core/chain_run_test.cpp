@@ -184,6 +184,25 @@ TEST(ChainRun, NearGrazingPushesAreImpactsTouchesOrNothing) {
   }
 }
 
+TEST(ChainRun, AStartAtRestOnTheStopLeavesItOrSticks) {
+  // mass 2 of the 1:2 chain at rest on the stop with mass 1 at rest at 0: pulled away by its
+  // spring it leaves, and (both modes at their tops at once) grazes the stop again after each
+  // period T; pushed into the stop it sticks at once (the end of the run for now), never a
+  // loop of touches at t = 0
+  const MassChain chain = designed({1.0, 0.5}, {2, 1});
+  const double period = chainDynamics(chain).period;
+  const ChainRun pulled = runChain(chain, {Eigen::Vector2d(0.0, 1.0), Eigen::Vector2d::Zero()}, 3);
+  ASSERT_EQ(pulled.events.size(), 3u) << int(pulled.stop);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(pulled.events[k].type, EventType::Grazing);
+    EXPECT_NEAR(pulled.events[k].t, double(k + 1) * period, 1e-6 * period);
+  }
+  const ChainRun pressed = runChain(chain, {Eigen::Vector2d(3.0, 1.0), Eigen::Vector2d::Zero()}, 5);
+  EXPECT_EQ(pressed.stop, ChainStop::Sticking);
+  EXPECT_TRUE(pressed.events.empty());
+  EXPECT_EQ(pressed.tFinal, 0);
+}
+
 TEST(ChainRun, ScalesWithTheChain) {
   // masses x 1000, springs x 10, gap x 7: times x 10, displacements x 7
   std::mt19937 random(3);
