@@ -157,7 +157,7 @@ ChainContact firstContact(const ChainDynamics& dynamics, const ChainFlight& flig
   const StopDistance f(dynamics, flight);
   const double end = dynamics.period > 0 ? dynamics.period : horizon;
   if (!(end > 0)) return {ChainContactKind::Budget, 0};
-  Search search{f, 0, maxWindows, 0};
+  Search search{f, 0, maxWindows, 0, std::nullopt};
   // the fastest mode's period over 2^40: below that a window holds f's zero and critical
   // point within double's resolution of the time
   search.resolution = std::max(end, 2 * std::numbers::pi / f.w.maxCoeff()) * 0x1p-40;

@@ -90,7 +90,9 @@ TEST(ChainRun, ResonantFlightsReturnByTheirPeriodAndKeepTheEnergy) {
       for (std::size_t k = 1; k < run.events.size(); ++k) {
         const double flight = run.events[k].t - run.events[k - 1].t;
         EXPECT_GT(flight, 0);
-        if (run.events[k - 1].type == EventType::Impact) EXPECT_LT(flight, dynamics.period);
+        if (run.events[k - 1].type == EventType::Impact) {
+          EXPECT_LT(flight, dynamics.period);
+        }
         EXPECT_LE(flight, dynamics.period * (1 + 1e-12));
       }
       EXPECT_NEAR(run.energyFinal / run.energyInitial, 1.0, 1e-11);
