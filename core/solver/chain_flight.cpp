@@ -23,6 +23,8 @@ ChainDynamics chainDynamics(const MassChain& chain) {
       dynamics.omega[j] = ratios.harmonics[std::size_t(j)] * ratios.omega0;
     }
     dynamics.period = 2 * std::numbers::pi / ratios.omega0;
+    dynamics.harmonics = ratios.harmonics;
+    dynamics.omega0 = ratios.omega0;
   }
   return dynamics;
 }
@@ -56,7 +58,15 @@ struct StopDistance {
   double gap = 0;
   double bound1 = 0, bound2 = 0, bound3 = 0;  // max |f'|, |f''|, |f'''|
 
-  StopDistance(const ChainDynamics& dynamics, const ChainFlight& flight) : gap(dynamics.gap) {
+  // a commensurate chain: cos and sin of n w0 t from those of w0 t by the angle-addition
+  // recurrence (one sincos an evaluation instead of N; each step adds a rounding, counted below)
+  std::vector<int> harmonics;
+  double omega0 = 0;
+  int highest = 0;
+
+  StopDistance(const ChainDynamics& dynamics, const ChainFlight& flight)
+      : gap(dynamics.gap), harmonics(dynamics.harmonics), omega0(dynamics.omega0) {
+    for (int n : harmonics) highest = std::max(highest, n);
     const Eigen::Index n = flight.q.size();
     a.resize(n), b.resize(n), amplitude.resize(n);
     w = dynamics.omega;
@@ -72,21 +82,42 @@ struct StopDistance {
   }
   struct Value {
     double f, df, error, dfError;
+    double d2f = 0, d2fError = 0;
   };
   Value at(double t) const {
     Value value{-gap, 0, 0, 0};
-    double size = gap, dSize = 0;
+    double size = gap, dSize = 0, d2Size = 0;
+    // cos and sin of each mode's angle: directly, or by the recurrence up to the highest harmonic
+    double cosines[64], sines[64];
+    const bool recur = highest > 0 && highest <= 64;
+    if (recur) {
+      const double c1 = std::cos(omega0 * t), s1 = std::sin(omega0 * t);
+      double c = c1, s = s1;
+      for (int k = 1; k <= highest; ++k) {
+        cosines[k - 1] = c;
+        sines[k - 1] = s;
+        const double next = c * c1 - s * s1;
+        s = s * c1 + c * s1;
+        c = next;
+      }
+    }
     for (Eigen::Index j = 0; j < a.size(); ++j) {
-      const double c = std::cos(w[j] * t), s = std::sin(w[j] * t);
+      const int n = recur ? harmonics[std::size_t(j)] : 0;
+      const double c = recur ? cosines[n - 1] : std::cos(w[j] * t);
+      const double s = recur ? sines[n - 1] : std::sin(w[j] * t);
       value.f += a[j] * c + b[j] * s;
       value.df += w[j] * (b[j] * c - a[j] * s);
+      value.d2f -= w[j] * w[j] * (a[j] * c + b[j] * s);
       // the argument w t is rounded (an error of w t eps moves the term by R w t eps), each
-      // product and sum once more
-      size += amplitude[j] * (2 + w[j] * t);
-      dSize += w[j] * amplitude[j] * (2 + w[j] * t);
+      // product and sum once more; the recurrence adds about 2 roundings a harmonic
+      const double rounding = 2 + w[j] * t + 2 * n;
+      size += amplitude[j] * rounding;
+      dSize += w[j] * amplitude[j] * rounding;
+      d2Size += w[j] * w[j] * amplitude[j] * rounding;
     }
     value.error = 8 * kEps * size;
     value.dfError = 8 * kEps * dSize;
+    value.d2fError = 8 * kEps * d2Size;
     return value;
   }
 };
@@ -109,13 +140,18 @@ struct Search {
     const double h = right - left;
     const double middle = left + h / 2;
     const StopDistance::Value m = f.at(middle);
-    // no zero: |f| stays away from 0 over the window (Taylor about the middle)
-    if (std::abs(m.f) - m.error > (std::abs(m.df) + m.dfError) * h / 2 + f.bound2 * h * h / 8) {
+    // Taylor about the middle to third order: f and its first two derivatives are known there,
+    // only the third is bounded (by sum w_j^3 R_j)
+    const double r = h / 2;
+    const double slope = std::abs(m.df) + m.dfError;
+    const double curve = std::abs(m.d2f) + m.d2fError;
+    // no zero: |f| stays away from 0 over the window
+    if (std::abs(m.f) - m.error > slope * r + curve * r * r / 2 + f.bound3 * r * r * r / 6) {
       if (pending) return ChainContact{m.f > 0 ? ChainContactKind::Impact : ChainContactKind::Touch, *pending};
       return std::nullopt;
     }
     // monotone: a zero exactly when f changes sign (f(left) is never one: it was searched)
-    if (std::abs(m.df) - m.dfError > f.bound2 * h / 2) {
+    if (std::abs(m.df) - m.dfError > curve * r + f.bound3 * r * r / 2) {
       const int signLeft = sign(fLeft, m.error), signRight = sign(fRight, m.error);
       if (m.df < 0) {
         // falling: after a rise to within rounding of 0, a touch; from above the stop (never,

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <stop_token>
+#include <vector>
 
 #include "core/model/mass_chain.h"
 
@@ -28,6 +29,9 @@ struct ChainDynamics {
   double gap = 1;
   /// the common period 2 pi / w0 of a commensurate chain, 0 otherwise
   double period = 0;
+  /// a commensurate chain's harmonic numbers n_j (w_j = n_j w0), fastest first; empty otherwise
+  std::vector<int> harmonics;
+  double omega0 = 0;
 };
 
 /// The dynamics of a usable chain (validate(chain) empty): its modes (chainModes) and whether
