@@ -62,12 +62,13 @@ struct ChainContact {
 };
 
 /// The first contact of mass s with the stop after the flight's start, by a certified search
-/// (docs/model.md section 11): f(t) = u_s(t) - d is a sum of sinusoids, and a window of width
-/// h around t_m holds no zero when |f(t_m)| > |f'(t_m)| h/2 + max|f''| h^2/8 (the bounds from
-/// the modal amplitudes), and at most one when |f'(t_m)| > max|f''| h/2; any other window is
-/// halved. Windows are taken from the left, so the first zero found is the first zero: a touch
-/// (an even-multiplicity zero no sign-change method sees) is never missed, only possibly called
-/// a touch when two crossings lie closer than double resolves. A flight starting on the stop
+/// (docs/model.md section 11): f(t) = u_s(t) - d is a sum of sinusoids whose third derivative
+/// is at most B3 = sum w_j^3 R_j (R_j the modal amplitudes at mass s); with r = h/2 a window of
+/// width h around t_m holds no zero when |f(t_m)| > |f'(t_m)| r + |f''(t_m)| r^2/2 + B3 r^3/6,
+/// and at most one when |f'(t_m)| > |f''(t_m)| r + B3 r^2/2; any other window is halved.
+/// Windows are taken from the left, so the first zero found is the first zero: a touch (an
+/// even-multiplicity zero no sign-change method sees) is never missed, only possibly called a
+/// touch when two crossings lie closer than double resolves. A flight starting on the stop
 /// leaves it by its velocity (or, at v_s = 0, its acceleration); near its start the Taylor bound
 /// rules out a zero. Commensurate chains are searched over one period (a contact comes by T);
 /// others up to `horizon` or `maxWindows` windows.
