@@ -250,44 +250,34 @@ EXPECT_WORD="json only" expect_invalid simulate --masses 1,1 --springs 1,1 --sta
 EXPECT_WORD="error estimate" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --trust full
 EXPECT_WORD="in double" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --precision quad
 EXPECT_WORD="given by --masses" expect_invalid simulate --springs 1,1 --state 0,0,0,1
-# SIGINT during a long run of ten masses ends it within 1 s
-"$cli" simulate --masses 1,1,1,1,1,1,1,1,1,1 --springs 1,1,1,1,1,1,1,1,1,1 --state 0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,2 \
-  --contacts 1000000 >"$out" 2>"$err" &
-pid=$!
-sleep 1
-started=$(date +%s%N)
-kill -INT "$pid"
-wait "$pid"
-code=$?
-elapsed_ms=$((($(date +%s%N) - started) / 1000000))
-[ "$code" -eq 130 ] || fail "interrupted run of ten masses exit $code, not 130"
-[ "$elapsed_ms" -le 1000 ] || fail "interrupting the run of ten masses took $elapsed_ms ms"
+# a command sent SIGNAL a second after it started must end within LIMIT ms with exit 130
+expect_interrupted() {  # SIGNAL LIMIT_MS WHAT -- command arguments
+  local signal=$1 limit=$2 what=$3
+  shift 4
+  "$cli" "$@" >"$out" 2>"$err" &
+  local pid=$!
+  sleep 1
+  local started
+  started=$(date +%s%N)
+  kill "-$signal" "$pid"
+  wait "$pid"
+  local code=$?
+  local elapsed_ms=$((($(date +%s%N) - started) / 1000000))
+  [ "$code" -eq 130 ] || fail "$what: exit $code, not 130"
+  [ "$elapsed_ms" -le "$limit" ] || fail "$what: the interrupt took $elapsed_ms ms"
+}
 
-# SIGINT during a seven-mass design (its 5040 paths take tens of seconds) ends it within 1 s
-"$cli" info --masses 1,0.8,0.6,0.5,0.4,0.3,0.2 --frequencies 7:6:5:4:3:2:1 >"$out" 2>"$err" &
-pid=$!
-sleep 1
-started=$(date +%s%N)
-kill -INT "$pid"
-wait "$pid"
-code=$?
-elapsed_ms=$((($(date +%s%N) - started) / 1000000))
-[ "$code" -eq 130 ] || fail "interrupted design exit $code, not 130"
-[ "$elapsed_ms" -le 1000 ] || fail "interrupting the design took $elapsed_ms ms"
+# SIGINT during a long run of ten masses, and during a seven-mass design (its 5040 paths take
+# tens of seconds), ends it within 1 s
+expect_interrupted INT 1000 "a run of ten masses" -- simulate --masses 1,1,1,1,1,1,1,1,1,1 \
+  --springs 1,1,1,1,1,1,1,1,1,1 --state 0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,2 --contacts 1000000
+expect_interrupted INT 1000 "a seven-mass design" -- info --masses 1,0.8,0.6,0.5,0.4,0.3,0.2 \
+  --frequencies 7:6:5:4:3:2:1
 
 # SIGTERM during a long detuned search, shadow run included, ends the command within 2 s with
 # complete records and exit 130
-"$cli" simulate --k2 1e-9 --glo 0.5 --perturb 0,0,0,-1e-3 --contacts 100000000 --format csv \
-  >"$out" 2>"$err" &
-pid=$!
-sleep 1
-started=$(date +%s%N)
-kill -TERM "$pid"
-wait "$pid"
-code=$?
-elapsed_ms=$((($(date +%s%N) - started) / 1000000))
-[ "$code" -eq 130 ] || fail "interrupted run exit $code, not 130"
-[ "$elapsed_ms" -le 2000 ] || fail "interrupt took $elapsed_ms ms"
+expect_interrupted TERM 2000 "a detuned search" -- simulate --k2 1e-9 --glo 0.5 \
+  --perturb 0,0,0,-1e-3 --contacts 100000000 --format csv
 [ "$(tail -c1 "$out" | od -An -c | tr -d ' ')" = '\n' ] || fail "interrupted csv ends mid-record"
 
 if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
