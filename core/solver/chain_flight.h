@@ -43,6 +43,8 @@ ChainDynamics chainDynamics(const MassChain& chain);
 struct ChainFlight {
   Eigen::VectorXd q;
   Eigen::VectorXd qdot;
+  bool onStop = false;  ///< it starts with u_s = d exactly
+  bool atRest = false;  ///< and v_s = 0 exactly
 };
 
 ChainFlight flightFrom(const ChainDynamics& dynamics, const ChainState& start);
@@ -61,18 +63,14 @@ struct ChainContact {
   double t = 0;  ///< from the flight's start [time]
 };
 
-/// The first contact of mass s with the stop after the flight's start, by a certified search
-/// (docs/model.md section 11): f(t) = u_s(t) - d is a sum of sinusoids whose third derivative
-/// is at most B3 = sum w_j^3 R_j (R_j the modal amplitudes at mass s); with r = h/2 a window of
-/// width h around t_m holds no zero when |f(t_m)| > |f'(t_m)| r + |f''(t_m)| r^2/2 + B3 r^3/6,
-/// and at most one when |f'(t_m)| > |f''(t_m)| r + B3 r^2/2; any other window is halved.
-/// Windows are taken from the left, so the first zero found is the first zero: a touch (an
-/// even-multiplicity zero no sign-change method sees) is never missed, only possibly called a
-/// touch when two crossings lie closer than double resolves. A flight starting on the stop
-/// leaves it by its velocity (or, at v_s = 0, its acceleration); near its start the Taylor bound
-/// rules out a zero. Commensurate chains are searched over one period (a contact comes by T);
-/// others up to `horizon` or `maxWindows` windows.
+/// The first contact of mass s with the stop after the flight's start: the first zero of
+/// f(t) = u_s(t) - d by firstZero's certified search (core/solver/sinusoid_zero.h), so that a
+/// touch (an even-multiplicity zero no sign-change method sees) is never missed, only possibly
+/// called a touch when two crossings lie closer than double resolves. A flight starting on the
+/// stop leaves it by its velocity (or, at v_s = 0, its acceleration; after a release, given as
+/// `releaseJerk`, its third derivative). Commensurate chains are searched over one period (a
+/// contact comes by T); others up to `horizon` or `maxWindows` windows.
 ChainContact firstContact(const ChainDynamics& dynamics, const ChainFlight& flight, double horizon = 0,
-                          long maxWindows = 1'000'000);
+                          long maxWindows = 1'000'000, std::optional<double> releaseJerk = std::nullopt);
 
 }  // namespace grazelab::core

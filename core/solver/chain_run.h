@@ -16,8 +16,8 @@ namespace grazelab::core {
 /// One contact of a chain of N masses with the stop.
 struct ChainEvent {
   double t = 0;                        ///< since the run's start [time]
-  EventType type = EventType::Impact;  ///< Impact or Grazing (a stick ends the run for now)
-  Eigen::VectorXd u;                   ///< the displacements at the contact (u_s = d)
+  EventType type = EventType::Impact;  ///< Impact, Grazing, Stick, or Release (not a contact)
+  Eigen::VectorXd u;                   ///< the displacements at the event (u_s = d)
   Eigen::VectorXd vBefore;             ///< the velocities before it
   double vAfter = 0;                   ///< the stopped mass's velocity after it
 };
@@ -28,15 +28,15 @@ enum class ChainStop {
   TimeLimit,         ///< `tEnd` reached
   NoFurtherContact,  ///< a commensurate chain's flight that stays below the stop for a period:
                      ///< linear forever
-  Sticking,          ///< the stopped mass reaches the stop at rest pressed into it: the stuck
-                     ///< phase of a chain of N masses is not computed yet
-  Undecided,         ///< at rest on the stop with no force either way within rounding
-  SearchBudget,      ///< a non-commensurate chain: no contact decided within the search's budget
+  Undecided,         ///< at rest on the stop with no force either way within rounding, or held
+                     ///< there by a force that comes back to 0 without being seen to change sign
+  SearchBudget,      ///< no contact (or release) decided within the search's horizon and budget
   Cancelled,         ///< the stop token
 };
 
 struct ChainRun {
-  std::vector<ChainEvent> events;
+  std::vector<ChainEvent> events;  ///< contacts and releases, in time order
+  long contacts = 0;               ///< the events that are contacts (all but releases)
   ChainState final;  ///< the state at `tFinal`
   double tFinal = 0;
   ChainStop stop = ChainStop::ContactLimit;
@@ -49,9 +49,11 @@ double chainEnergy(const MassChain& chain, const ChainState& state);
 
 /// An exact run of a usable chain (validate(chain) empty) from `start` (u_s <= d): closed-form
 /// flights in the chain's modes, each contact by firstContact (certified: none missed), elastic
-/// impacts (v_s reversed), grazing touches that leave the flight unchanged; up to `maxContacts`
-/// contacts or `tEnd` (0: none). A non-commensurate chain searches each flight up to `tEnd`, or
-/// 1000 of its slowest periods without one.
+/// impacts (v_s reversed), grazing touches that leave the flight unchanged, and sticks: a mass
+/// reaching the stop at rest pressed into it is held there (stuckPhase: the chain split at the
+/// clamp into two exact chains) until the force on it falls to zero (releaseOf, certified); up
+/// to `maxContacts` contacts or `tEnd` (0: none). A search without `tEnd` (a flight of a
+/// non-commensurate chain, a stuck phase) goes up to 1000 of the slowest periods.
 ChainRun runChain(const MassChain& chain, const ChainState& start, long maxContacts, double tEnd = 0,
                   std::stop_token stop = {});
 

@@ -236,7 +236,7 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         ``events`` (each with t, type, u, v_pre and the stopped mass's v_post), ``final``,
         ``stop_reason``, ``message``, ``contacts`` and ``energy``. No error estimate yet
         (``trust`` other than "auto" or "off" is refused), no ``glo``, ``onepp``, ``perturb`` or
-        ``samples`` yet; a mass that would stick ends the run (stop_reason "sticking").
+        ``samples`` yet; sticks hold the stopped mass until their release, as for two masses.
 """
     if masses is not None:
         if samples is not None:

@@ -242,6 +242,16 @@ t = [0] + [e['t'] for e in d['events']]
 assert all(0 < b - a < d['chain']['period'] for a, b in zip(t[1:], t[2:]))  # FFT < T after an impact
 assert d['energy']['relative_drift'] < 1e-12, d['energy']" || fail "a run of three masses"
 fi
+# pressed on an interior stop: held at once, released, and releases are not counted as contacts
+if expect_ok simulate --masses 1,0.7,0.4 --springs 1,0.8,0.6 --stop-mass 2 --state 1.4,1,1.3,0.1,0,-0.2 --contacts 6; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+types = [e['type'] for e in d['events']]
+assert types[:2] == ['stick', 'release'] and d['events'][0]['t'] == 0, types
+assert d['contacts'] == 6 and len(types) == 6 + types.count('release'), (d['contacts'], types)
+assert all(e['u'][1] == 1 for e in d['events'])
+assert d['energy']['relative_drift'] < 1e-12, d['energy']" || fail "a stick of an interior mass"
+fi
 EXPECT_WORD="--state u1" expect_invalid simulate --masses 1,0.5 --springs 1,0.5
 EXPECT_WORD="4 numbers for 3 masses" expect_invalid simulate --masses 1,1,1 --springs 1,1,1 --state 0,0,0,0
 EXPECT_WORD="past the stop" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,2,0,0

@@ -2,20 +2,26 @@
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
 """Runs of N-mass chains printed by `grazelab-cli simulate --masses ...` against an independent
-30-digit computation (mpmath), contact by contact.
+30-digit computation (mpmath), event by event.
 
-For each contact the CLI printed, the reference starts from the CLI's own state after the
-contact before (so that errors do not compound along a chaotic run) and finds the first contact
-of that flight its own way: the chain's modes by mpmath's symmetric eigen-solver (Jacobi's
-method), the flight in closed form, u_s - d sampled 600 times per fastest period, every sign
-change bisected and every sampled maximum refined by golden section (a maximum within 1e-20
-of the stop is a touch). Nothing is shared with the core's certified window search.
+For each event the CLI printed, the reference starts from the CLI's own state after the event
+before (so that errors do not compound along a chaotic run) and finds the next event its own
+way: the chain's modes by mpmath's symmetric eigen-solver (Jacobi's method), the flight in
+closed form, u_s - d sampled 600 times per fastest period, every sign change bisected and every
+sampled maximum refined by golden section (a maximum within 1e-20 of the stop is a touch: a
+grazing when the springs pull the mass off the stop, a stick when they press it on). A stuck
+phase is the chain with u_s = d held, as one system: the other masses' rest by solving
+K_rr u = -K_rs d, their modes by the eigen-solver on the reduced matrices, the force on mass s
+sampled the same way and its fall through zero bisected (the release). Nothing is shared with
+the core's certified window search or its split of the chain at the clamp.
 
 Checked on designed resonant chains (3:2:1, 4:3:1, 5:3:1, 4:3:2:1: springs from
 `grazelab-cli info --frequencies`), detuned and random chains of 2 to 5 masses, stops on the
 last and on interior masses, random starts and near-grazing ones: each contact time to 1e-10 of
 the chain's slowest period, its type, the stopped mass's velocity to 1e-9; on resonant chains
-each flight after an impact shorter than T. Exit 0 when all hold, 1 otherwise (a ctest test).
+each flight after an impact shorter than T. Starts pressed on the stop (sticks at once, on the
+first, interior and last masses): each release's time to 1e-10 of the slowest period and the
+released velocities to 1e-9. Exit 0 when all hold, 1 otherwise (a ctest test).
 
     python3 chain_run_check.py --cli build/app/grazelab-cli/grazelab-cli [--runs 16]
 """
@@ -47,12 +53,20 @@ class Flight:
         masses = chain["masses"]
         s = chain["stop"]
         self.gap = mpmath.mpf(chain["gap"])
-        self.a, self.b = [], []
+        self.shapes = shapes
+        self.a, self.b, self.q, self.qdot = [], [], [], []
         for j, shape in enumerate(shapes):
             q = mpmath.fsum(mpmath.mpf(masses[i]) * shape[i] * mpmath.mpf(u[i]) for i in range(len(u)))
             qdot = mpmath.fsum(mpmath.mpf(masses[i]) * shape[i] * mpmath.mpf(v[i]) for i in range(len(v)))
+            self.q.append(q)
+            self.qdot.append(qdot)
             self.a.append(shape[s] * q)
             self.b.append(shape[s] * qdot / self.omega[j])
+
+    def displacements(self, t):
+        return [mpmath.fsum(shape[i] * (q * mpmath.cos(w * t) + qdot / w * mpmath.sin(w * t))
+                            for shape, q, qdot, w in zip(self.shapes, self.q, self.qdot, self.omega))
+                for i in range(len(self.shapes[0]))]
 
     def f(self, t):
         return mpmath.fsum(a * mpmath.cos(w * t) + b * mpmath.sin(w * t)
@@ -93,6 +107,87 @@ class Flight:
         return None
 
 
+def stiffness(chain):
+    n = len(chain["masses"])
+    k = mpmath.zeros(n, n)
+    for i in range(n):
+        right = mpmath.mpf(chain["springs"][i + 1]) if i + 1 < n else mpmath.mpf(chain["right_spring"])
+        k[i, i] = mpmath.mpf(chain["springs"][i]) + right
+        if i + 1 < n:
+            k[i, i + 1] = k[i + 1, i] = -right
+    return k
+
+
+def force_on_stop(chain, u):
+    """-(K u)_s: the springs' force on the stopped mass (positive: pressed on the stop)."""
+    k = stiffness(chain)
+    s = chain["stop"]
+    return -mpmath.fsum(k[s, i] * mpmath.mpf(u[i]) for i in range(len(u)))
+
+
+class Stuck:
+    """The chain with u_s = d held: the other masses as one system (M_r, K_rr), about their rest."""
+
+    def __init__(self, chain, u, v):
+        n = len(chain["masses"])
+        s = chain["stop"]
+        self.s = s
+        self.gap = mpmath.mpf(chain["gap"])
+        self.rest_index = [i for i in range(n) if i != s]
+        k = stiffness(chain)
+        self.k_row = [k[s, i] for i in self.rest_index]
+        self.k_ss = k[s, s]
+        r = len(self.rest_index)
+        k_rr = mpmath.matrix(r, r)
+        k_rs = mpmath.matrix(r, 1)
+        for a, i in enumerate(self.rest_index):
+            k_rs[a] = k[i, s]
+            for b, j in enumerate(self.rest_index):
+                k_rr[a, b] = k[i, j]
+        self.rest = mpmath.lu_solve(k_rr, -k_rs * self.gap)
+        masses = [mpmath.mpf(chain["masses"][i]) for i in self.rest_index]
+        inv_root = [1 / mpmath.sqrt(m) for m in masses]
+        a = mpmath.matrix(r, r)
+        for p in range(r):
+            for q in range(r):
+                a[p, q] = inv_root[p] * k_rr[p, q] * inv_root[q]
+        values, vectors = mpmath.eigsy(a)
+        self.omega = [mpmath.sqrt(values[j]) for j in range(r)]
+        self.shapes = [[inv_root[p] * vectors[p, j] for p in range(r)] for j in range(r)]
+        self.q, self.qdot = [], []
+        for shape in self.shapes:
+            self.q.append(mpmath.fsum(masses[p] * shape[p] * (mpmath.mpf(u[i]) - self.rest[p])
+                                      for p, i in enumerate(self.rest_index)))
+            self.qdot.append(mpmath.fsum(masses[p] * shape[p] * mpmath.mpf(v[i]) for p, i in enumerate(self.rest_index)))
+
+    def state(self, t):
+        u = [self.gap] * (len(self.rest_index) + 1)
+        v = [mpmath.mpf(0)] * (len(self.rest_index) + 1)
+        for p, i in enumerate(self.rest_index):
+            u[i] = self.rest[p] + mpmath.fsum(shape[p] * (q * mpmath.cos(w * t) + qdot / w * mpmath.sin(w * t))
+                                              for shape, q, qdot, w in zip(self.shapes, self.q, self.qdot, self.omega))
+            v[i] = mpmath.fsum(shape[p] * (-q * w * mpmath.sin(w * t) + qdot * mpmath.cos(w * t))
+                               for shape, q, qdot, w in zip(self.shapes, self.q, self.qdot, self.omega))
+        return u, v
+
+    def force(self, t):
+        u, _ = self.state(t)
+        return -(mpmath.fsum(k * u[i] for k, i in zip(self.k_row, self.rest_index)) + self.k_ss * self.gap)
+
+    def release(self, until):
+        """The first time the force on mass s falls through zero, or None before `until`."""
+        step = 2 * mpmath.pi / max(self.omega) / 600
+        previous_t, previous = mpmath.mpf(0), self.force(0)
+        t = mpmath.mpf(0)
+        while t < until:
+            t = t + step
+            now = self.force(t)
+            if previous > 0 >= now:
+                return mpmath.findroot(self.force, (previous_t, t), solver="bisect", tol=1e-50)
+            previous_t, previous = t, now
+        return None
+
+
 def cli_run(cli, chain, state, contacts):
     argv = [cli, "simulate", "--masses", ",".join(repr(m) for m in chain["masses"]),
             "--springs", ",".join(repr(k) for k in chain["springs"]),
@@ -115,34 +210,69 @@ def check(cli, chain, state, contacts):
     printed = cli_run(cli, chain, state, contacts)
     problems = []
     n = len(chain["masses"])
+    s = chain["stop"]
     u, v = state[:n], state[n:]
     t = 0.0
     period = printed["chain"]["period"]
+    stuck = None  # the stick the next event must release
     for k, event in enumerate(printed["events"]):
+        if event["type"] == "stick" and event["t"] == t and u[s] == chain["gap"] and v[s] == 0:
+            # a start pressed on the stop: held at once
+            if not force_on_stop(chain, u) > 0:
+                problems.append(f"event {k}: a stick at the start, but the springs pull mass {s + 1} off the stop")
+                break
+            stuck = (u, v)
+            continue
+        if event["type"] == "release":
+            if stuck is None:
+                problems.append(f"event {k}: a release without a stick before it")
+                break
+            phase = Stuck(chain, *stuck)
+            when = phase.release(mpmath.mpf(event["t"] - t) + slowest)
+            if when is None:
+                problems.append(f"event {k}: the reference finds no release, the CLI one at t = {event['t']}")
+                break
+            error = abs(t + when - event["t"]) / slowest
+            if error > 1e-10:
+                problems.append(f"event {k}: release at t = {event['t']!r} against {mpmath.nstr(t + when, 17)} "
+                                f"({mpmath.nstr(error, 3)} of the slowest period)")
+                break
+            _, released = phase.state(when)
+            for i in range(n):
+                if abs(event["v_pre"][i] - float(released[i])) > 1e-9 * (1 + abs(float(released[i]))):
+                    problems.append(f"event {k}: released v{i + 1} = {event['v_pre'][i]!r} against "
+                                    f"{mpmath.nstr(released[i], 17)}")
+            stuck = None
+            u, v, t = event["u"], event["v_pre"], event["t"]
+            continue
         flight = Flight(chain, u, v)
         found = flight.first_contact(mpmath.mpf(event["t"] - t) + slowest)
         if found is None:
-            problems.append(f"contact {k}: the reference finds none, the CLI one at t = {event['t']}")
+            problems.append(f"event {k}: the reference finds none, the CLI one at t = {event['t']}")
             break
         when, kind = found
+        if kind == "grazing" and force_on_stop(chain, flight.displacements(when)) > 0:
+            kind = "stick"
         error = abs(t + when - event["t"]) / slowest
         if error > 1e-10:
-            problems.append(f"contact {k}: t = {event['t']!r} against {mpmath.nstr(t + when, 17)} "
+            problems.append(f"event {k}: t = {event['t']!r} against {mpmath.nstr(t + when, 17)} "
                             f"({mpmath.nstr(error, 3)} of the slowest period)")
             break
         if kind != event["type"]:
-            problems.append(f"contact {k}: {event['type']} against the reference's {kind}")
+            problems.append(f"event {k}: {event['type']} against the reference's {kind}")
             break
         speed = flight.df(when)
-        if abs(event["v_pre"][chain["stop"]] - float(speed)) > 1e-9 * (1 + abs(float(speed))):
-            problems.append(f"contact {k}: v_s {event['v_pre'][chain['stop']]!r} against {mpmath.nstr(speed, 17)}")
+        if abs(event["v_pre"][s] - float(speed)) > 1e-9 * (1 + abs(float(speed))):
+            problems.append(f"event {k}: v_s {event['v_pre'][s]!r} against {mpmath.nstr(speed, 17)}")
         if period and k > 0 and printed["events"][k - 1]["type"] == "impact" and not event["t"] - t < period:
-            problems.append(f"contact {k}: a flight of {event['t'] - t} after an impact, not < T = {period}")
+            problems.append(f"event {k}: a flight of {event['t'] - t} after an impact, not < T = {period}")
         u = event["u"]
         v = list(event["v_pre"])
-        v[chain["stop"]] = event["v_post"]
+        v[s] = event["v_post"]
         t = event["t"]
-    return problems, len(printed["events"])
+        if kind == "stick":
+            stuck = (u, v)
+    return problems, printed["contacts"]
 
 
 def main():
@@ -198,6 +328,28 @@ def main():
             for problem in problems:
                 print("   ", problem)
             failures += bool(problems)
+    # starts pressed on the stop: mass s at rest on it, a neighbour pushed past it (the first
+    # stick at once, its release, and whatever follows), stops on the first, interior, last mass;
+    # two cases of every three (each pressed run costs the reference some seconds)
+    for index, chain in enumerate(cases[:args.runs]):
+        if index % 3 == 2:
+            continue
+        n = len(chain["masses"])
+        s = chain["stop"]
+        neighbour = s - 1 if s > 0 else s + 1
+        if neighbour >= n:
+            continue
+        state = [rng.uniform(-0.5, 0.5) * chain["gap"] for _ in range(n)] + [rng.uniform(-0.5, 0.5) for _ in range(n)]
+        state[s] = chain["gap"]
+        state[n + s] = 0.0
+        state[neighbour] = 3 * chain["gap"] + 1
+        problems, contacts = check(args.cli, dict(chain), state, 8)
+        total += contacts
+        print(f"pressed start {index}: {n} masses, stop on {s + 1}: {contacts} contacts "
+              f"{'ok' if not problems else 'FAILED'}")
+        for problem in problems:
+            print("   ", problem)
+        failures += bool(problems)
     print(f"{total} contacts checked, {failures} runs failed")
     return 1 if failures or total == 0 else 0
 

@@ -31,7 +31,6 @@ std::string stopName(core::ChainStop stop) {
     case core::ChainStop::ContactLimit: return "contact-limit";
     case core::ChainStop::TimeLimit: return "time-limit";
     case core::ChainStop::NoFurtherContact: return "no-further-contact";
-    case core::ChainStop::Sticking: return "sticking";
     case core::ChainStop::Undecided: return "undecided";
     case core::ChainStop::SearchBudget: return "search-budget";
     case core::ChainStop::Cancelled: return "cancelled";
@@ -44,14 +43,12 @@ std::string stopMessage(core::ChainStop stop) {
     case core::ChainStop::NoFurtherContact:
       return "the frequencies are commensurate and the flight stays below the stop for a whole period: "
              "linear forever";
-    case core::ChainStop::Sticking:
-      return "the stopped mass reaches the stop at rest, pressed into it: the stuck phase of a chain of N "
-             "masses is not computed yet, so the run ends here";
     case core::ChainStop::Undecided:
-      return "the stopped mass rests on the stop with no force either way within double's rounding";
+      return "the stopped mass rests on the stop with no force either way within double's rounding (or, held "
+             "there, its force comes back to zero without a change of sign double can see)";
     case core::ChainStop::SearchBudget:
-      return "the frequencies are not commensurate and no contact was decided within 1000 slowest periods "
-             "(give --t-end to search longer)";
+      return "no contact (or release) was decided within 1000 slowest periods: the frequencies are not "
+             "commensurate (give --t-end to search longer)";
     default: return "";
   }
 }
@@ -155,7 +152,7 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
        {"final", V::object({{"t", V::number(run.tFinal)}, {"u", numbers(run.final.u)}, {"v", numbers(run.final.v)}})},
        {"stop_reason", V::of(stopName(run.stop))},
        {"message", message.empty() ? V::null() : V::of(message)},
-       {"contacts", V::of(std::int64_t(run.events.size()))},
+       {"contacts", V::of(std::int64_t(run.contacts))},
        {"energy", V::object({{"initial", V::number(run.energyInitial)},
                              {"final", V::number(run.energyFinal)},
                              {"relative_drift", V::number(std::abs(run.energyFinal / run.energyInitial - 1))}})},
