@@ -219,6 +219,11 @@ FirstZero firstZero(const SinusoidSum& sum, double period, double horizon, long 
   // bound keeps f < 0 on (0, t0], with t0 from f'(0) < 0, or from f''(0) < 0 when f'(0) = 0
   Evaluator::Value start = f.at(0);
   double t0 = 0;
+  // a periodic f that starts at rest on 0 (f'(0) = 0, f''(0) < 0) is the same on either side of
+  // its period's end: the interval Taylor's bound clears after 0 is clear before T as well, and
+  // f's return to 0 at T is that start again (searched up to it, a flat return would only halve
+  // windows down to the resolution)
+  bool flatReturn = false;
   if (releaseJerk) {
     if (!(*releaseJerk < 0) || sum.startTerms != 3) return {ZeroKind::Touch, 0};
     t0 = std::min(2 * std::abs(*releaseJerk) / f.bound4, end / 2);
@@ -230,7 +235,8 @@ FirstZero firstZero(const SinusoidSum& sum, double period, double horizon, long 
     if (start.df < -start.dfError) {
       t0 = std::abs(start.df) / f.bound2;  // f(t) <= f'(0) t + bound2 t^2 / 2 < 0 below 2|f'(0)|/bound2
     } else if (d2 < -8 * kEps * f.bound2 && std::abs(start.df) <= start.dfError) {
-      t0 = 1.5 * std::abs(d2) / f.bound3;  // f(t) <= f''(0) t^2 / 2 + bound3 t^3 / 6 < 0 below 3|f''(0)|/bound3
+      t0 = 1.5 * std::abs(d2) / f.bound3;  // f(t) <= f''(0) t^2 / 2 + bound3 |t|^3 / 6 < 0 below 3|f''(0)|/bound3
+      flatReturn = period > 0 && sum.startTerms >= 2;
     } else {
       return {ZeroKind::Touch, 0};  // it does not leave 0
     }
@@ -241,11 +247,12 @@ FirstZero firstZero(const SinusoidSum& sum, double period, double horizon, long 
   // periodic: a whole period at most (f(T) = f(0), so the search sees the return); the halving
   // runs over [t0, end] in pieces a fraction of the fastest period wide, so that a long horizon
   // does not start from one huge window
-  const double piece = std::min(end - t0, fastest);
+  const double searchEnd = flatReturn ? end - t0 : end;
+  const double piece = std::min(searchEnd - t0, fastest);
   double left = t0;
   double fLeft = start.f;
-  while (left < end) {
-    const double right = std::min(end, left + piece);
+  while (left < searchEnd) {
+    const double right = std::min(searchEnd, left + piece);
     const double fRight = f.at(right).f;
     if (auto found = search.first(left, right, fLeft, fRight)) return *found;
     left = right;
@@ -253,6 +260,7 @@ FirstZero firstZero(const SinusoidSum& sum, double period, double horizon, long 
   }
   // within rounding of 0 at the very end (a periodic orbit's return at T)
   if (search.pending) return {ZeroKind::Touch, *search.pending};
+  if (flatReturn) return {ZeroKind::Touch, end};
   return {period > 0 ? ZeroKind::None : ZeroKind::Budget, end};
 }
 

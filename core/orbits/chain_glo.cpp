@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/orbits/chain_glo.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <tuple>
+#include <utility>
+
+#include "core/solver/sinusoid_zero.h"
+
+namespace grazelab::core {
+
+ChainGloStart chainGloStart(const MassChain& chain, const std::vector<double>& weights) {
+  ChainGloStart start;
+  const ChainModes modes = chainModes(chain);
+  const Eigen::Index n = modes.omega.size();
+  if (Eigen::Index(weights.size()) != n) {
+    start.problem = GloStartProblem::WrongCount;
+    return start;
+  }
+  double sum = 0;
+  for (std::size_t j = 0; j < weights.size(); ++j) {
+    if (!std::isfinite(weights[j])) {
+      start.problem = GloStartProblem::NotFinite;
+      return start;
+    }
+    if (modes.nodeAtStop[j] && weights[j] != 0) {
+      start.problem = GloStartProblem::WeightOnNode;
+      return start;
+    }
+    sum += weights[j];
+  }
+  if (!(std::abs(sum - 1) <= 1e-12)) {
+    start.problem = GloStartProblem::NotAffine;
+    return start;
+  }
+  const int s = chain.stopped() - 1;
+  start.state.u = Eigen::VectorXd::Zero(n);
+  start.state.v = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    if (weights[std::size_t(j)] == 0) continue;
+    start.state.u += weights[std::size_t(j)] * chain.gap / modes.P(s, j) * modes.P.col(j);
+  }
+  start.state.u[s] = chain.gap;  // on the stop exactly: sum lambda_j d = d up to rounding
+  return start;
+}
+
+GloGrazing gloGrazing(const std::vector<int>& harmonics, const std::vector<double>& weights) {
+  // f(theta) = sum_j lambda_j cos(n_j theta) - 1, 2 pi periodic, f(0) = f'(0) = 0
+  SinusoidSum f;
+  const Eigen::Index n = Eigen::Index(weights.size());
+  f.a.resize(n);
+  f.b = Eigen::VectorXd::Zero(n);
+  f.w.resize(n);
+  double curvature = 0, scale = 0;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double h = harmonics[std::size_t(j)];
+    f.a[j] = weights[std::size_t(j)];
+    f.w[j] = h;
+    curvature -= weights[std::size_t(j)] * h * h;
+    scale += std::abs(weights[std::size_t(j)]) * h * h;
+  }
+  f.offset = -1;
+  f.harmonics = harmonics;
+  f.omega0 = 1;
+  f.startTerms = 2;
+  const double period = 2 * std::numbers::pi;
+  const FirstZero zero = firstZero(f, period, period);
+  switch (zero.kind) {
+    case ZeroKind::Crossing: return GloGrazing::Crosses;
+    case ZeroKind::None: return GloGrazing::Grazes;
+    case ZeroKind::Budget: return GloGrazing::Boundary;  // not expected over one period
+    case ZeroKind::Touch:
+      if (zero.t >= period) return GloGrazing::Grazes;  // the flight's return: the GLO's touch
+      if (zero.t > 0) return GloGrazing::Boundary;
+      // a start the search cannot see leave: rising (outside) or flat within rounding (the edge)
+      return curvature > 16 * std::numeric_limits<double>::epsilon() * scale ? GloGrazing::Crosses
+                                                                              : GloGrazing::Boundary;
+  }
+  return GloGrazing::Boundary;
+}
+
+namespace {
+
+// The edge along weights(r), r from `in` (grazes) to `out` (crosses), as a bracket
+// [certainly grazes, certainly crosses]: between them lie the points the search calls Boundary
+// (a touch within rounding), so it is bisected twice, Boundary counted once on each side; each
+// bisection runs until its bracket is within a few ulps
+//
+// Where the edge is the flat point (sum lambda_j n_j^2 = 0: the touch at theta = 0 turns from
+// second to fourth order, the note's lambda = 4/3), the search cannot see the start leave within
+// about 1e-12 of it; that point, `flat` along the ray (NaN: none), is then the edge exactly
+template <typename Weights>
+std::pair<double, double> bisectEdge(const std::vector<int>& harmonics, const Weights& weights, double in, double out,
+                                     double flat = std::numeric_limits<double>::quiet_NaN()) {
+  const auto bisect = [&](double inside, double outside, bool boundaryInside) {
+    for (int step = 0; step < 200; ++step) {
+      const double middle = inside + (outside - inside) / 2;
+      if (middle == inside || middle == outside) break;
+      if (std::abs(outside - inside) <=
+          4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(inside), std::abs(outside))) {
+        break;
+      }
+      const GloGrazing answer = gloGrazing(harmonics, weights(middle));
+      const bool grazes = answer == GloGrazing::Grazes || (boundaryInside && answer == GloGrazing::Boundary);
+      (grazes ? inside : outside) = middle;
+    }
+    return std::pair{inside, outside};
+  };
+  const double firstCrossing = bisect(in, out, true).second;
+  const double lastGrazing = bisect(in, out, false).first;
+  if (std::min(lastGrazing, firstCrossing) <= flat && flat <= std::max(lastGrazing, firstCrossing)) {
+    return {flat, firstCrossing};
+  }
+  return {lastGrazing, firstCrossing};
+}
+
+}  // namespace
+
+GrazingInterval grazingInterval(int fast, int slow) {
+  const std::vector<int> harmonics{fast, slow};
+  const auto weights = [](double lambda) { return std::vector<double>{1 - lambda, lambda}; };
+  GrazingInterval interval;
+  // [0, 1] grazes (every convex combination does); beyond lambda = n1^2 / (n1^2 - n2^2) the
+  // flight rises at once (u_s'' > 0 at the touch), and below lambda = -1 it crosses where
+  // cos(n1 theta) = 1 and cos(n2 theta) < 1 (theta = 2 pi / n1)
+  const double flat = double(fast) * fast / (double(fast) * fast - double(slow) * slow);
+  std::tie(interval.high, interval.highOut) = bisectEdge(harmonics, weights, 1.0, flat + 1, flat);
+  std::tie(interval.low, interval.lowOut) = bisectEdge(harmonics, weights, 0.0, -1.0);
+  return interval;
+}
+
+std::vector<GrazingRegionPoint> grazingRegion(int n1, int n2, int n3, int directions, std::stop_token stop) {
+  const std::vector<int> harmonics{n1, n2, n3};
+  std::vector<GrazingRegionPoint> boundary;
+  for (int k = 0; k < directions; ++k) {
+    if (stop.stop_requested()) return {};
+    const double angle = 2 * std::numbers::pi * k / directions;
+    const double dx = std::cos(angle), dy = std::sin(angle);
+    const auto weights = [&](double r) {
+      const double l2 = 1.0 / 3 + r * dx, l3 = 1.0 / 3 + r * dy;
+      return std::vector<double>{1 - l2 - l3, l2, l3};
+    };
+    // the region is bounded (a direction along which it were unbounded would give a zero-mean
+    // trigonometric sum <= 0 everywhere): double the radius until the ray leaves it
+    double out = 1;
+    while (gloGrazing(harmonics, weights(out)) != GloGrazing::Crosses && out < 1e6) out *= 2;
+    // where the ray meets sum lambda_j n_j^2 = 0 (lambda1 = 1 - lambda2 - lambda3)
+    const double q1 = double(n1) * n1, q2 = double(n2) * n2, q3 = double(n3) * n3;
+    const double slope = (q2 - q1) * dx + (q3 - q1) * dy;
+    const double atCentre = (q1 + q2 + q3) / 3;
+    const double flat = slope < 0 ? -atCentre / slope : std::numeric_limits<double>::quiet_NaN();
+    const auto [in, outside] = bisectEdge(harmonics, weights, 0.0, out, flat);
+    GrazingRegionPoint point;
+    point.angle = angle;
+    point.radius = in;
+    point.radiusOut = outside;
+    const std::vector<double> edge = weights(in);
+    point.lambda2 = edge[1];
+    point.lambda3 = edge[2];
+    boundary.push_back(point);
+  }
+  return boundary;
+}
+
+}  // namespace grazelab::core
