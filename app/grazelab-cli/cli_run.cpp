@@ -14,6 +14,7 @@
 
 #include "commands/chain_simulate_command.h"
 #include "commands/family_command.h"
+#include "commands/glo_set_command.h"
 #include "commands/map_command.h"
 #include "commands/modes_command.h"
 #include "commands/orbit_command.h"
@@ -138,11 +139,12 @@ const std::vector<Command>& commands() {
          return fail(io, "--precision: unknown");
        },
        {}},
-      {"simulate", kChain + kStart + kMassChain + QStringList{"precision", "contacts", "t-end", "search-steps", "format", "trust", "sample-step", "sample-times"}, false,
+      {"simulate", kChain + kStart + kMassChain + QStringList{"glo-weights", "precision", "contacts", "t-end", "search-steps", "format", "trust", "sample-step", "sample-times"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
-         if (std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return parser.isSet(name); })) {
-           if (!parser.isSet("masses")) return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
+         if (parser.isSet("glo-weights") ||
+             std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return parser.isSet(name); })) {
+           if (!parser.isSet("masses")) return fail(io, "--springs, --right-spring, --stop-mass, --frequencies and --glo-weights describe a chain given by --masses");
            const int code = runChainSimulate(parser, io, stop, error);
            if (code == kExitInterrupted) std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
            return code == kExitInvalidInput ? fail(io, error) : code;
@@ -184,6 +186,14 @@ const std::vector<Command>& commands() {
        },
        {}},
       {"modes", kChain + QStringList{"precision", "out", "max-impacts", "energy-range"}, false, writesFiles(runModes), {}},
+      {"glo-set", kChain + kMassChain + QStringList{"precision", "directions"}, false,
+       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+         QString error;
+         const int code = runGloSet(parser, io, stop, error);
+         if (code == kExitInterrupted) std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
+         return code == kExitInvalidInput ? fail(io, error) : code;
+       },
+       {}},
   };
   return table;
 }
@@ -218,9 +228,10 @@ int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token
       "reduced to summaries: --x, --y, --out PREFIX), merge (join a map's stripes: --out PREFIX "
       "PART1 ... PARTN), family --onepp (the 1IPP family: --out PREFIX), orbit (one periodic impacting orbit with its "
       "exact multipliers: --onepp --period T, or --impacts K --energy E --guess U1,V1), modes (the "
-      "atlas of the chain's periodic impacting families up to --max-impacts K: --out PREFIX).\n"
+      "atlas of the chain's periodic impacting families up to --max-impacts K: --out PREFIX), glo-set "
+      "(which combinations of a resonant chain's GLOMs graze: an interval for two modes, a region for three).\n"
       "A command refuses the options it does not take.");
-  parser.addPositionalArgument("command", "info | simulate | report | stability | map | merge | family | orbit | modes");
+  parser.addPositionalArgument("command", "info | simulate | report | stability | map | merge | family | orbit | modes | glo-set");
   const QCommandLineOption help = parser.addHelpOption();
   const QCommandLineOption version = parser.addVersionOption();
   addOptions(parser);

@@ -93,6 +93,14 @@ ChainRun runChain(const MassChain& chain, const ChainState& start, long maxConta
       state = released;
       continue;
     }
+    if (state.u[s] == dynamics.gap && state.v[s] > 0) {
+      // a start on the stop moving into it: the impact at once (as for two masses)
+      ChainState at = state;
+      at.v[s] = -at.v[s];
+      record(EventType::Impact, at, state.v, t);
+      state = at;
+      continue;
+    }
     const ChainFlight flight = flightFrom(dynamics, state);
     const double horizon = tEnd > 0 ? tEnd - t : 1000 * slowest;
     const ChainContact contact = firstContact(dynamics, flight, horizon, 1'000'000, jerk);

@@ -40,7 +40,7 @@ from ._native import simulate as _simulate_here
 from ._native import version as __version__
 
 # map and help are left out of a star import: they would hide Python's own
-__all__ = ["info", "simulate", "merge", "family", "orbit", "modes", "report", "stability",
+__all__ = ["info", "simulate", "merge", "family", "orbit", "modes", "glo_set", "report", "stability",
            "Result", "GrazeLabWarning", "MAX_EVENTS"]
 
 # ``progress(fraction, text)``: fraction in [0, 1], or None when not known. (A number keyword,
@@ -178,6 +178,37 @@ def info(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[flo
     return result
 
 
+@_documented
+def glo_set(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
+            gap: float = 1.0, branch: _Optional[str] = None, masses: _Optional[_Sequence[float]] = None,
+            springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
+            stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
+            design_branch: _Optional[int] = None, directions: _Optional[int] = None) -> Result:
+    """Which affine combinations of a resonant chain's GLOMs are grazing linear orbits
+    (``grazelab-cli glo-set``): W_lambda = sum_j lambda_j GLOM_j grazes exactly when
+    max over theta of sum_j lambda_j cos(n_j theta) is 1. Returns ``chain``, ``modes`` (the modes
+    that move the stopped mass, 1-based), their ``harmonics`` and ``grazing_set``: for two modes
+    an interval of lambda (weights (1 - lambda, lambda)) with each end bracketed (``low`` and
+    ``high`` graze, ``low_out`` and ``high_out`` do not; the note's chain gives [0, 4/3]); for
+    three a convex region of the (lambda2, lambda3) plane, its ``boundary`` along ``directions``
+    rays from (1/3, 1/3). A chain whose frequencies are not commensurate, or with more than three
+    modes moving the stopped mass, raises ValueError saying so.
+
+    Keywords:
+{chain}    masses, springs, right_spring, stop_mass, frequencies, design_branch: a chain of N masses,
+        as in ``info``.
+    directions: three modes: the rays along which the boundary is found (default 72)."""
+    options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, directions=directions)
+    if masses is not None:
+        options = dict(gap=gap, directions=directions,
+                       **_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies,
+                                             design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
+    elif frequencies is not None or design_branch is not None or springs is not None:
+        raise ValueError("springs, frequencies and design_branch describe a chain given by masses")
+    result, _, _, _ = _command("glo-set", options, document=True)
+    return result
+
+
 def _mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, design_branch, two_mass):
     """The options of a chain of N masses, the two-mass keywords beside it refused."""
     given = {name: value for name, value in two_mass.items()
@@ -205,7 +236,7 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
              progress: _Optional[_Progress] = None, masses: _Optional[_Sequence[float]] = None,
              springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
              stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
-             design_branch: _Optional[int] = None) -> Result:
+             design_branch: _Optional[int] = None, glo_weights: _Optional[_Sequence[float]] = None) -> Result:
     """One exact run (``grazelab-cli simulate``). Returns the JSON's fields (model, initial,
     final, stop_reason, contacts, energy, accuracy, trust, precision, timing) with ``events`` a
     structured array of the columns t, type, u1, u2, v1, v2_pre, v2_post (the arrays the core
@@ -231,25 +262,29 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
     progress: ``progress(fraction, text)``, called on the calling thread.
     masses, springs, right_spring, stop_mass, frequencies, design_branch: a chain of N masses, as
         in ``info`` (then the two-mass keywords stay at their defaults). Its run starts from
-        ``state`` = (u1, ..., uN, v1, ..., vN), in double, with ``contacts`` and ``t_end``; the
-        result has ``chain`` (with the common ``period`` of a commensurate chain), ``initial``,
-        ``events`` (each with t, type, u, v_pre and the stopped mass's v_post), ``final``,
-        ``stop_reason``, ``message``, ``contacts`` and ``energy``. No error estimate yet
-        (``trust`` other than "auto" or "off" is refused), no ``glo``, ``onepp``, ``perturb`` or
-        ``samples`` yet; sticks hold the stopped mass until their release, as for two masses.
+        ``state`` = (u1, ..., uN, v1, ..., vN) or from ``glo_weights``, plus ``perturb`` (2N
+        numbers), in double, with ``contacts`` and ``t_end``; the result has ``chain`` (with the
+        common ``period`` of a commensurate chain), ``initial``, ``events`` (each with t, type, u,
+        v_pre and the stopped mass's v_post), ``final``, ``stop_reason``, ``message``,
+        ``contacts`` and ``energy``. No error estimate yet (``trust`` other than "auto" or "off"
+        is refused), no ``glo``, ``onepp`` or ``samples`` yet; sticks hold the stopped mass
+        until their release, as for two masses.
+    glo_weights: lambda_1, ..., lambda_N (fastest mode first, summing to 1): a chain of N masses
+        starts on GLO_lambda = sum_j lambda_j GLOM_j at its touch (GLOM_j: mode j alone, its top
+        on the stop); ``glo_set`` says which weights graze.
 """
     if masses is not None:
         if samples is not None:
             raise ValueError("samples: not available for a chain of N masses yet")
         options = dict(gap=gap, precision=precision, state=state, contacts=contacts, t_end=t_end,
-                       glo=glo, onepp=onepp, perturb=perturb,
+                       glo=glo, onepp=onepp, perturb=perturb, glo_weights=glo_weights,
                        trust=None if trust in ("auto", "off") else trust,
                        **_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies,
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
         result, _, _, _ = _command("simulate", options, progress, document=True)
         return result
-    if frequencies is not None or design_branch is not None or springs is not None:
-        raise ValueError("springs, frequencies and design_branch describe a chain given by masses")
+    if frequencies is not None or design_branch is not None or springs is not None or glo_weights is not None:
+        raise ValueError("springs, frequencies, design_branch and glo_weights describe a chain given by masses")
     try:
         count = int(_convert._text("contacts", contacts)) if contacts is not None else None
     except (TypeError, ValueError):

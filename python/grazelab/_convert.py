@@ -54,7 +54,7 @@ def _brief(value):
 
 # options that take several values: a sequence (or their text as the command line writes it)
 _VECTORS = {"state", "perturb", "guess", "x", "y", "energy_range", "shard", "methods", "sample_times",
-            "masses", "springs"}
+            "masses", "springs", "glo_weights"}
 # options that take words, not numbers
 
 

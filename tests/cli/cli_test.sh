@@ -59,7 +59,7 @@ takes = {
     "info": model + ["masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch"],
     "simulate": model + start + ["contacts", "t-end", "search-steps", "format", "trust",
                                  "sample-step", "sample-times", "masses", "springs", "right-spring",
-                                 "stop-mass", "frequencies", "design-branch"],
+                                 "stop-mass", "frequencies", "design-branch", "glo-weights"],
     "report": model[:-1] + start + ["contacts", "t-end", "out", "methods", "quick"],
     "stability": ["out", "methods", "quick"],
     "map": model + start + ["contacts", "trust", "out", "x", "y", "threads", "shard", "picture"],
@@ -67,6 +67,8 @@ takes = {
     "family": model + ["onepp", "out", "count"],
     "orbit": model + ["onepp", "format", "period", "impacts", "energy", "guess"],
     "modes": model + ["out", "max-impacts", "energy-range"],
+    "glo-set": model + ["masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch",
+                        "directions"],
 }
 options = sorted({o for names in takes.values() for o in names})
 help_text = subprocess.run([cli, "--help"], capture_output=True, text=True).stdout
@@ -252,6 +254,40 @@ assert d['contacts'] == 6 and len(types) == 6 + types.count('release'), (d['cont
 assert all(e['u'][1] == 1 for e in d['events'])
 assert d['energy']['relative_drift'] < 1e-12, d['energy']" || fail "a stick of an interior mass"
 fi
+# GLO starts of N masses: inside the grazing set a grazing orbit (touches one period apart), a
+# push off it impacts; the grazing sets themselves (the note's [0, 4/3] for the default chain)
+if expect_ok simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --glo-weights 0.5,0.3,0.2 --contacts 3; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+T = d['chain']['period']
+assert [e['type'] for e in d['events']] == ['grazing'] * 3, d['events']
+assert all(abs(e['t'] - (k + 1) * T) < 1e-12 * T for k, e in enumerate(d['events']))" || fail "a GLO start of three masses"
+fi
+if expect_ok simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --glo-weights 0.5,0.3,0.2 --perturb 0,0,0,0,0,0.01 --contacts 3; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['events'][0]['type'] == 'impact' and d['events'][0]['t'] == 0, d['events'][0]
+assert d['contacts'] == 3, d['stop_reason']" || fail "a pushed GLO start of three masses"
+fi
+if expect_ok glo-set; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+s = d['grazing_set']
+assert d['harmonics'] == [2, 1] and s['kind'] == 'interval', d
+assert s['low'] == 0 and s['high'] == 4 / 3 and s['high_out'] > s['high'] and s['low_out'] < 0, s" || fail "the note's grazing set"
+fi
+if expect_ok glo-set --masses 1,0.2,0.05 --frequencies 3:2:1 --directions 6; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+b = d['grazing_set']['boundary']
+assert d['harmonics'] == [3, 2, 1] and len(b) == 6 and all(p['radius'] < p['radius_out'] for p in b), d" || fail "a three-mode grazing set"
+fi
+EXPECT_WORD="commensurate" expect_invalid glo-set --masses 1,1 --springs 1,1
+EXPECT_WORD="two or three modes" expect_invalid glo-set --masses 1,0.6,0.36,0.216 --frequencies 4:3:2:1
+EXPECT_WORD="--directions" expect_invalid glo-set --directions 2
+EXPECT_WORD="sum to 1" expect_invalid simulate --masses 1,1 --springs 1,1 --glo-weights 0.5,0.6
+EXPECT_WORD="one of them" expect_invalid simulate --masses 1,1 --springs 1,1 --glo-weights 0.5,0.5 --state 0,0,0,0
+EXPECT_WORD="2 numbers for 2 masses" expect_invalid simulate --masses 1,1 --springs 1,1 --glo-weights 0.5,0.5 --perturb 0,0
 EXPECT_WORD="--state u1" expect_invalid simulate --masses 1,0.5 --springs 1,0.5
 EXPECT_WORD="4 numbers for 3 masses" expect_invalid simulate --masses 1,1,1 --springs 1,1,1 --state 0,0,0,0
 EXPECT_WORD="past the stop" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,2,0,0

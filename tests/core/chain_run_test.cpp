@@ -61,7 +61,7 @@ TEST(ChainRun, TwoMassesAreTheNotesSolver) {
   for (const auto& [u1, u2, v1, v2] : {std::tuple{0.5, 0.9, 0.8, 0.6}, std::tuple{-1.2, 0.95, 0.3, 0.9},
                                        std::tuple{0.0, 1.0, 0.3, -0.2}, std::tuple{0.7, 0.99, 0.1, 0.3},
                                        std::tuple{1.5, 1.0, 0.2, 0.0}, std::tuple{2.5, 1.0, -0.7, 0.0},
-                                       std::tuple{1.0 + 1e-6, 1.0, 0.0, 0.0}}) {
+                                       std::tuple{1.0 + 1e-6, 1.0, 0.0, 0.0}, std::tuple{0.5, 1.0, 0.0, 0.3}}) {
     Request request;
     request.initial = {u1, u2, v1, v2};
     const long contacts = v2 == 0 ? 20 : 60;

@@ -357,3 +357,27 @@ def test_simulate_a_chain_of_n_masses(cli_json):
         gl.simulate(masses=[1, 1], springs=[1, 1], glo=0.5)
     with pytest.raises(ValueError, match="given by masses"):
         gl.simulate(springs=[1, 1], state=[0, 0, 0, 1])
+
+
+def test_glo_starts_and_grazing_sets_of_n_masses(cli_json):
+    # a GLO start of the designed 3:2:1 chain: the command line's document, grazing touches one
+    # period apart; the grazing sets as the command line writes them (the note's [0, 4/3])
+    chain = dict(masses=[1, 0.2, 0.05], frequencies=[3, 2, 1])
+    run = gl.simulate(**chain, glo_weights=[0.5, 0.3, 0.2], contacts=3)
+    assert run == cli_json("simulate", "--masses=1,0.2,0.05", "--frequencies=3:2:1",
+                           "--glo-weights=0.5,0.3,0.2", "--contacts=3")
+    assert [e.type for e in run.events] == ["grazing"] * 3
+    pushed = gl.simulate(**chain, glo_weights=np.array([0.5, 0.3, 0.2]), perturb=[0, 0, 0, 0, 0, 0.01], contacts=3)
+    assert pushed.events[0].type == "impact"
+    note = gl.glo_set()
+    assert note == cli_json("glo-set")
+    assert note.harmonics == [2, 1] and note.grazing_set.low == 0 and note.grazing_set.high == 4 / 3
+    region = gl.glo_set(**chain, directions=6)
+    assert region == cli_json("glo-set", "--masses=1,0.2,0.05", "--frequencies=3:2:1", "--directions=6")
+    assert len(region.grazing_set.boundary) == 6
+    with pytest.raises(ValueError, match="commensurate"):
+        gl.glo_set(masses=[1, 1], springs=[1, 1])
+    with pytest.raises(ValueError, match="sum to 1"):
+        gl.simulate(masses=[1, 1], springs=[1, 1], glo_weights=[0.5, 0.6])
+    with pytest.raises(ValueError, match="given by masses"):
+        gl.simulate(glo_weights=[0.5, 0.5])

@@ -3,9 +3,11 @@
 #include "commands/chain_simulate_command.h"
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/orbits/chain_glo.h"
 #include "core/solver/chain_run.h"
 #include "exit_codes.h"
 #include "io/cli_input.h"
@@ -53,13 +55,88 @@ std::string stopMessage(core::ChainStop stop) {
   }
 }
 
+// `count` finite numbers from a comma-separated list, or nothing with `error` set
+std::optional<std::vector<double>> numberList(const OptionValues& options, const char* name, Eigen::Index count,
+                                              const QString& layout, QString& error) {
+  std::vector<double> values;
+  for (const QString& part : options.value(name).split(',')) {
+    bool ok = false;
+    const double value = part.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+      error = QStringLiteral("--%1: '%2' is not a finite number").arg(name, part);
+      return std::nullopt;
+    }
+    values.push_back(value);
+  }
+  if (Eigen::Index(values.size()) != count) {
+    error = QStringLiteral("--%1: %2 numbers for %3 masses (%4: %5)")
+                .arg(name)
+                .arg(values.size())
+                .arg(count / (layout.contains("v1") ? 2 : 1))
+                .arg(layout)
+                .arg(count);
+    return std::nullopt;
+  }
+  return values;
+}
+
+// The run's start: --state, or --glo-weights (GLO_lambda at its touch), plus --perturb
+std::optional<core::ChainState> chainStart(const OptionValues& options, const core::MassChain& chain, QString& error) {
+  const Eigen::Index n = chain.size();
+  const int s = chain.stopped() - 1;
+  if (options.isSet("state") == options.isSet("glo-weights")) {
+    error = QStringLiteral("a chain of N masses starts from --state u1,...,uN,v1,...,vN (%1 numbers) or "
+                           "--glo-weights l1,...,lN (%2): one of them")
+                .arg(2 * n)
+                .arg(n);
+    return std::nullopt;
+  }
+  core::ChainState start;
+  if (options.isSet("state")) {
+    const auto values = numberList(options, "state", 2 * n, "u1,...,uN,v1,...,vN", error);
+    if (!values) return std::nullopt;
+    start = {Eigen::Map<const Eigen::VectorXd>(values->data(), n), Eigen::Map<const Eigen::VectorXd>(values->data() + n, n)};
+  } else {
+    const auto weights = numberList(options, "glo-weights", n, "l1,...,lN", error);
+    if (!weights) return std::nullopt;
+    const core::ChainGloStart glo = core::chainGloStart(chain, *weights);
+    switch (glo.problem) {
+      case core::GloStartProblem::None: break;
+      case core::GloStartProblem::WrongCount:
+      case core::GloStartProblem::NotFinite:
+        error = "--glo-weights: one finite weight per mode";
+        return std::nullopt;
+      case core::GloStartProblem::NotAffine:
+        error = "--glo-weights: the weights must sum to 1 (an affine combination of the GLOMs keeps the "
+                "stopped mass on the stop)";
+        return std::nullopt;
+      case core::GloStartProblem::WeightOnNode:
+        error = "--glo-weights: a weight on a mode with a node at the stopped mass, which has no GLOM (see "
+                "info's node_at_stop)";
+        return std::nullopt;
+    }
+    start = glo.state;
+  }
+  if (options.isSet("perturb")) {
+    const auto delta = numberList(options, "perturb", 2 * n, "du1,...,duN,dv1,...,dvN", error);
+    if (!delta) return std::nullopt;
+    start.u += Eigen::Map<const Eigen::VectorXd>(delta->data(), n);
+    start.v += Eigen::Map<const Eigen::VectorXd>(delta->data() + n, n);
+  }
+  if (start.u[s] > chain.gap) {
+    error = QStringLiteral("the start has u%1 = %2 past the stop (gap %3)").arg(s + 1).arg(start.u[s]).arg(chain.gap);
+    return std::nullopt;
+  }
+  return start;
+}
+
 }  // namespace
 
 int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
-  for (const char* notYet : {"glo", "onepp", "perturb", "sample-step", "sample-times"}) {
+  for (const char* notYet : {"glo", "onepp", "sample-step", "sample-times"}) {
     if (options.isSet(notYet)) {
       error = QStringLiteral("--%1 is not available for a chain of N masses yet: start it with --state "
-                             "u1,...,uN,v1,...,vN")
+                             "u1,...,uN,v1,...,vN or --glo-weights l1,...,lN")
                   .arg(notYet);
       return kExitInvalidInput;
     }
@@ -83,31 +160,8 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     return kExitInvalidInput;
   }
   const core::MassChain& masses = chain.value->chain;
-  const Eigen::Index n = masses.size();
-  if (!options.isSet("state")) {
-    error = QStringLiteral("a chain of N masses starts from --state u1,...,uN,v1,...,vN (%1 numbers)").arg(2 * n);
-    return kExitInvalidInput;
-  }
-  std::vector<double> values;
-  for (const QString& part : options.value("state").split(',')) {
-    bool ok = false;
-    const double value = part.trimmed().toDouble(&ok);
-    if (!ok || !std::isfinite(value)) {
-      error = QStringLiteral("--state: '%1' is not a finite number").arg(part);
-      return kExitInvalidInput;
-    }
-    values.push_back(value);
-  }
-  if (Eigen::Index(values.size()) != 2 * n) {
-    error = QStringLiteral("--state: %1 numbers for %2 masses (u1,...,uN,v1,...,vN: %3)").arg(values.size()).arg(n).arg(2 * n);
-    return kExitInvalidInput;
-  }
-  core::ChainState start{Eigen::Map<Eigen::VectorXd>(values.data(), n), Eigen::Map<Eigen::VectorXd>(values.data() + n, n)};
-  const int s = masses.stopped() - 1;
-  if (start.u[s] > masses.gap) {
-    error = QStringLiteral("--state: u%1 = %2 is past the stop (gap %3)").arg(s + 1).arg(start.u[s]).arg(masses.gap);
-    return kExitInvalidInput;
-  }
+  const auto start = chainStart(options, masses, error);
+  if (!start) return kExitInvalidInput;
   long contacts = options.isSet("t-end") ? kMaxChainContacts : 100;
   if (options.isSet("contacts")) {
     bool ok = false;
@@ -128,7 +182,7 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       return kExitInvalidInput;
     }
   }
-  const core::ChainRun run = core::runChain(masses, start, contacts, tEnd, stop);
+  const core::ChainRun run = core::runChain(masses, *start, contacts, tEnd, stop);
   if (run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
   std::vector<V> events;
   for (const core::ChainEvent& event : run.events) {
@@ -141,13 +195,8 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
   const core::ChainDynamics dynamics = core::chainDynamics(masses);
   const std::string message = stopMessage(run.stop);
   V document = V::object(
-      {{"chain", V::object({{"masses", numbers(Eigen::Map<const Eigen::VectorXd>(masses.masses.data(), n))},
-                            {"springs", numbers(Eigen::Map<const Eigen::VectorXd>(masses.springs.data(), n))},
-                            {"right_spring", masses.rightSpring > 0 ? V::number(masses.rightSpring) : V::null()},
-                            {"stop_mass", V::of(std::int64_t(s + 1))},
-                            {"gap", V::number(masses.gap)},
-                            {"period", dynamics.period > 0 ? V::number(dynamics.period) : V::null()}})},
-       {"initial", V::object({{"u", numbers(start.u)}, {"v", numbers(start.v)}})},
+      {{"chain", massChainValue(masses, dynamics.period)},
+       {"initial", V::object({{"u", numbers(start->u)}, {"v", numbers(start->v)}})},
        {"events", V::array(std::move(events))},
        {"final", V::object({{"t", V::number(run.tFinal)}, {"u", numbers(run.final.u)}, {"v", numbers(run.final.v)}})},
        {"stop_reason", V::of(stopName(run.stop))},

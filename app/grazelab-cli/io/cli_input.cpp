@@ -74,8 +74,8 @@ const OptionSpec kOptions[] = {
     {"gap", "Gap d between mass 2 at rest and the stop (default 1).", "value", "1"},
     {"k2", "Stiffness m1-m2 as given: no resonance imposed (excludes --branch).", "value", nullptr},
     {"branch", "k2 from the 1:2 design: upper (default) or lower.", "upper|lower", nullptr},
-    {"masses", "A chain of N masses m1,...,mN (info for now): the whole chain, with --springs; "
-               "excludes --m1 --m2 --k1 --k2 --branch.", "m1,...,mN", nullptr},
+    {"masses", "A chain of N masses m1,...,mN (info, simulate, glo-set): the whole chain, with "
+               "--springs; excludes --m1 --m2 --k1 --k2 --branch.", "m1,...,mN", nullptr},
     {"springs", "The springs k1,...,kN of --masses: wall to m1, then between neighbours.",
      "k1,...,kN", nullptr},
     {"right-spring", "With --masses: a spring k(N+1) from the last mass to a right wall "
@@ -94,7 +94,13 @@ const OptionSpec kOptions[] = {
     {"onepp", "Start on the one-impact-per-period orbit of period T (T < T2 near T2). With "
                 "'family', --onepp takes no value: it names the family.", "T", nullptr},
     {"state", "Start from the state u1,u2,v1,v2.", "u1,u2,v1,v2", nullptr},
-    {"perturb", "Add du1,du2,dv1,dv2 to the initial state.", "du1,du2,dv1,dv2", nullptr},
+    {"perturb", "Add du1,du2,dv1,dv2 to the initial state (N masses: du1,...,duN,dv1,...,dvN).",
+     "du1,du2,dv1,dv2", nullptr},
+    {"glo-weights", "With --masses: start on GLO_lambda = sum_j lambda_j GLOM_j at its touch "
+                    "(weights fastest mode first, summing to 1; GLOM_j is mode j alone with its "
+                    "top on the stop).", "l1,...,lN", nullptr},
+    {"directions", "glo-set of three modes: the rays along which the region's boundary is found "
+                   "(default 72).", "N", nullptr},
     {"contacts", "Stop after N contacts (default 100 when no --t-end).", "N", nullptr},
     {"t-end", "Stop at time T (it also bounds the contact search of a detuned chain).", "T", nullptr},
     {"search-steps", "Detuned chains: the most steps one flight's contact search may take "

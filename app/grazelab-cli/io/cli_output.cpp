@@ -189,6 +189,21 @@ JsonValue infoValue(const ModelInput<S>& model) {
   return JsonValue::object({{"model", modelValue(model, std::string(core::toString(core::precisionOf<S>())))}});
 }
 
+JsonValue massChainValue(const core::MassChain& chain, double period) {
+  using V = JsonValue;
+  const auto numbers = [](const std::vector<double>& values) {
+    std::vector<V> items;
+    for (double value : values) items.push_back(V::number(value));
+    return V::array(std::move(items));
+  };
+  return V::object({{"masses", numbers(chain.masses)},
+                    {"springs", numbers(chain.springs)},
+                    {"right_spring", chain.rightSpring > 0 ? V::number(chain.rightSpring) : V::null()},
+                    {"stop_mass", V::of(std::int64_t(chain.stopped()))},
+                    {"gap", V::number(chain.gap)},
+                    {"period", period > 0 ? V::number(period) : V::null()}});
+}
+
 JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<ChainDesignChoice>& design) {
   using V = JsonValue;
   const core::ChainModes modes = core::chainModes(chain);

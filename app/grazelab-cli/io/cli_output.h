@@ -34,6 +34,9 @@ JsonValue infoValue(const ModelInput<S>& model);
 /// a node at the stop, its harmonic number) and the frequencies' ratios, in double; for a
 /// designed chain also its `design`: the ratios asked, the design used and every design found.
 JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<ChainDesignChoice>& design = std::nullopt);
+/// A chain of N masses as the other commands' documents name it: masses, springs, right_spring
+/// (null: none), stop_mass, gap and the common `period` of a commensurate chain (null: none).
+JsonValue massChainValue(const core::MassChain& chain, double period);
 
 /// The arithmetic of a run as its output reports it: asked for ("auto", "double", ...), used
 /// in the end, and each raise of --precision auto (one line: from where and why).

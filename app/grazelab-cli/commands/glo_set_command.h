@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QString>
+
+#include <stop_token>
+
+#include "io/cli_io.h"
+#include "io/option_values.h"
+
+namespace grazelab::cli {
+
+/// `grazelab-cli glo-set`: which affine combinations of a resonant chain's GLOMs are grazing
+/// linear orbits (core/orbits/chain_glo.h), for the two-mass chain (--m1 ...) or a chain of N
+/// masses (--masses ...): the lambda-interval of two modes, the boundary of the region of the
+/// lambda-plane of three (--directions rays), one JSON document. Exit 0; 2 on invalid input or a
+/// chain it cannot answer for (not commensurate; more than three modes move the stopped mass):
+/// `error`, nothing on stdout; 130 when `stop` ended it.
+int runGloSet(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
+
+}  // namespace grazelab::cli
