@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "core/orbits/chain_onepp.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/solver/chain_run.h"
+#include "core/solver/sinusoid_zero.h"
+
+namespace grazelab::core {
+
+ChainOnePeriodicOrbit chainOnePeriodicOrbit(const MassChain& chain, double T) {
+  ChainOnePeriodicOrbit orbit;
+  if (!(T > 0) || !std::isfinite(T)) return orbit;
+  const ChainDynamics dynamics = chainDynamics(chain);
+  const ChainModes modes = chainModes(chain);
+  const Eigen::Index n = dynamics.omega.size();
+  const int s = dynamics.stop;
+  const double ms = chain.masses[std::size_t(s)];
+  // g(T) = sum_j a_.j Phi_j(T), a_kj = m_s P[k][j] P[s][j]; a mode with a node at the stop adds 0
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    if (modes.nodeAtStop[std::size_t(j)]) continue;
+    const double half = dynamics.omega[j] * T / 2;
+    const double sine = std::sin(half);
+    // within a few roundings of a multiple of the mode's period: no data there
+    if (std::abs(sine) <= 64 * std::numeric_limits<double>::epsilon() * (1 + half)) {
+      orbit.refusal = OnePeriodicRefusal::MultipleOfPeriod;
+      return orbit;
+    }
+    const double phi = std::cos(half) / sine / dynamics.omega[j];
+    g += ms * dynamics.P(s, j) * phi * dynamics.P.col(j);
+  }
+  orbit.V = chain.gap / g[s];
+  orbit.postImpact.u = orbit.V * g;
+  orbit.postImpact.u[s] = chain.gap;
+  orbit.postImpact.v = Eigen::VectorXd::Zero(n);
+  orbit.postImpact.v[s] = orbit.V;
+  orbit.energy = chainEnergy(chain, orbit.postImpact);
+  if (!(orbit.V < 0)) {
+    orbit.refusal = OnePeriodicRefusal::LeavesIntoStop;
+    return orbit;
+  }
+  // the flight from the data must meet the stop first at T: searched a little beyond it, not as
+  // a periodic flight (T is the orbit's period, not the chain's)
+  ChainDynamics open = dynamics;
+  open.period = 0;
+  const ChainContact contact = firstContact(open, flightFrom(open, orbit.postImpact), T * (1 + 1e-6));
+  const double tolerance = 1e-9 * T;
+  switch (contact.kind) {
+    case ChainContactKind::Impact:
+      orbit.refusal = std::abs(contact.t - T) <= tolerance ? OnePeriodicRefusal::None
+                      : contact.t < T                      ? OnePeriodicRefusal::ReturnsEarly
+                                                           : OnePeriodicRefusal::NotDecided;
+      break;
+    case ChainContactKind::Touch:
+      orbit.refusal = contact.t < T - tolerance ? OnePeriodicRefusal::ReturnsEarly : OnePeriodicRefusal::NotDecided;
+      break;
+    case ChainContactKind::None:
+    case ChainContactKind::Budget:
+      orbit.refusal = OnePeriodicRefusal::NeverReturns;
+      break;
+  }
+  return orbit;
+}
+
+std::vector<double> onePeriodicGrazingWeights(const MassChain& chain, double periodStar) {
+  const ChainModes modes = chainModes(chain);
+  const int s = chain.stopped() - 1;
+  const double ms = chain.masses[std::size_t(s)];
+  std::vector<double> weights(std::size_t(modes.omega.size()), 0.0);
+  double total = 0;
+  for (Eigen::Index j = 0; j < modes.omega.size(); ++j) {
+    if (modes.nodeAtStop[std::size_t(j)]) continue;
+    // in I when T* is a whole number of the mode's periods (to 1e-9)
+    const double turns = modes.omega[j] * periodStar / (2 * std::numbers::pi);
+    if (std::abs(turns - std::round(turns)) > 1e-9 * std::max(1.0, turns) || std::round(turns) < 1) continue;
+    const double w = modes.omega[j];
+    weights[std::size_t(j)] = ms * modes.P(s, j) * modes.P(s, j) / (w * w);
+    total += weights[std::size_t(j)];
+  }
+  if (total > 0) {
+    for (double& weight : weights) weight /= total;
+  }
+  return weights;
+}
+
+std::vector<ChainFamilyRow> chainOnePeriodicFamily(const MassChain& chain, std::int64_t count,
+                                                   std::stop_token stop) {
+  const ChainDynamics dynamics = chainDynamics(chain);
+  const double end = dynamics.period > 0 ? dynamics.period : 2 * std::numbers::pi / dynamics.omega.minCoeff();
+  std::vector<double> periods;
+  for (std::int64_t k = 1; k <= count; ++k) periods.push_back(end * double(k) / double(count + 1));
+  for (int k = 8; k <= 30; ++k) periods.push_back(end * (1 - std::ldexp(1.0, -k)));
+  std::sort(periods.begin(), periods.end());
+  std::vector<ChainFamilyRow> rows;
+  rows.reserve(periods.size());
+  for (double T : periods) {
+    if (stop.stop_requested()) break;
+    rows.push_back({T, chainOnePeriodicOrbit(chain, T)});
+  }
+  return rows;
+}
+
+}  // namespace grazelab::core

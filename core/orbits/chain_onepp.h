@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <cstdint>
+#include <stop_token>
+#include <vector>
+
+#include "core/model/mass_chain.h"
+#include "core/orbits/special_orbits.h"
+#include "core/solver/chain_flight.h"
+
+namespace grazelab::core {
+
+/// A one-impact-per-period (1IPP) orbit of a chain of N masses (docs/model.md section 11; Legrand,
+/// Junca & Heng 2017): with Phi_j(T) = cot(w_j T / 2) / w_j, a_kj = m_s P[k][j] P[s][j] and g_k(T)
+/// = sum_j a_kj Phi_j(T), the data right after the impact are v = V e_s, V = d / g_s(T), u =
+/// V g(T) (u_s = d). Admissible when V < 0 and the exact flight from them first meets the stop
+/// at T (certified search). The refusals are the two-mass ones.
+struct ChainOnePeriodicOrbit {
+  OnePeriodicRefusal refusal = OnePeriodicRefusal::BadPeriod;
+  ChainState postImpact;  ///< u = V g(T), v = V e_s
+  double V = 0;           ///< the stopped mass's velocity after the impact
+  double energy = 0;
+  bool admissible() const { return refusal == OnePeriodicRefusal::None; }
+};
+ChainOnePeriodicOrbit chainOnePeriodicOrbit(const MassChain& chain, double T);
+
+/// The GLO the 1IPP data tend to as T tends to a common period T* of the modes in I (those whose
+/// period divides T*; the modes with a node at the stop left out): weights lambda_j = a_sj w_j^-2
+/// / sum_(i in I) a_si w_i^-2 for j in I, 0 for the others (Theorem 2.1 and Lemma 2.2 for any N:
+/// a convex combination). Fastest mode first.
+std::vector<double> onePeriodicGrazingWeights(const MassChain& chain, double periodStar);
+
+/// The 1IPP family for `count` periods evenly spaced in (0, T_max), T_max k / (count + 1), and
+/// for T_max (1 - 2^-k), k = 8 ... 30, towards its grazing end, sorted by T: T_max is the common
+/// period of a commensurate chain, else the slowest mode's period. A stop ends it early.
+struct ChainFamilyRow {
+  double T = 0;
+  ChainOnePeriodicOrbit orbit;
+};
+std::vector<ChainFamilyRow> chainOnePeriodicFamily(const MassChain& chain, std::int64_t count,
+                                                   std::stop_token stop = {});
+
+}  // namespace grazelab::core
