@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+#include "commands/chain_family_command.h"
 #include "commands/chain_simulate_command.h"
 #include "commands/family_command.h"
 #include "commands/glo_set_command.h"
@@ -177,7 +178,17 @@ const std::vector<Command>& commands() {
          return ended(io, runMerge(parser, parts, io, stop, error), error);
        },
        "the parts say what the map is"},
-      {"family", kChain + QStringList{"precision", "onepp", "out", "count"}, false, writesFiles(runFamily), {}},
+      {"family", kChain + kMassChain + QStringList{"precision", "onepp", "out", "count"}, false,
+       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+         QString error;
+         if (std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return parser.isSet(name); })) {
+           if (!parser.isSet("masses")) return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
+           if (!parser.isSet("onepp")) return fail(io, "family: name the family: --onepp (one impact per period)");
+           return ended(io, runChainFamily(parser, io, stop, error), error);
+         }
+         return ended(io, runFamily(parser, io, stop, error), error);
+       },
+       {}},
       {"orbit", kChain + QStringList{"precision", "onepp", "format", "period", "impacts", "energy", "guess"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;

@@ -266,9 +266,10 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         numbers), in double, with ``contacts`` and ``t_end``; the result has ``chain`` (with the
         common ``period`` of a commensurate chain), ``initial``, ``events`` (each with t, type, u,
         v_pre and the stopped mass's v_post), ``final``, ``stop_reason``, ``message``,
-        ``contacts`` and ``energy``. No error estimate yet (``trust`` other than "auto" or "off"
-        is refused), no ``glo``, ``onepp`` or ``samples`` yet; sticks hold the stopped mass
-        until their release, as for two masses.
+        ``contacts`` and ``energy``; or from ``onepp`` = T, the 1IPP orbit of that period right
+        after its impact. No error estimate yet (``trust`` other than "auto" or "off" is
+        refused), no ``glo`` or ``samples`` yet; sticks hold the stopped mass until their
+        release, as for two masses.
     glo_weights: lambda_1, ..., lambda_N (fastest mode first, summing to 1): a chain of N masses
         starts on GLO_lambda = sum_j lambda_j GLOM_j at its touch (GLOM_j: mode j alone, its top
         on the stop); ``glo_set`` says which weights graze.
@@ -441,19 +442,34 @@ def merge(parts, *, out=None):
 @_documented
 def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
            gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto",
-           count: int = 2000, out=None, progress: _Optional[_Progress] = None) -> Result:
+           count: int = 2000, out=None, progress: _Optional[_Progress] = None,
+           masses: _Optional[_Sequence[float]] = None, springs: _Optional[_Sequence[float]] = None,
+           right_spring: _Optional[float] = None, stop_mass: _Optional[int] = None,
+           frequencies: _Optional[_Sequence[int]] = None, design_branch: _Optional[int] = None) -> Result:
     """The 1IPP family (``grazelab-cli family --onepp``). Returns the JSON's fields with
     ``table``: a structured array with the CSV's columns (T, omega, V, u1, energy, admissible,
     trace, stability; admissible 1.0/0.0, stability 0..3, NaN where not admissible), the
     command line's .npy viewed without a copy.
 
+    With ``masses`` (a chain of N masses, in double): periods in (0, T_max), T_max the common
+    period (or the slowest mode's), the columns T, omega, V, energy, admissible, u1 ... uN, and
+    ``grazing_limit``: Theorem 2.1's weights of the GLO the data tend to as T -> T_max.
+
     Keywords:
 {chain}{precision}    count: periods T in (0, T2) (default 2000).
     out: a prefix: the command line's files are kept there (without pictures).
     progress: ``progress(fraction, text)``, called on the calling thread.
+    masses, springs, right_spring, stop_mass, frequencies, design_branch: a chain of N masses, as
+        in ``info``.
 """
     options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
                    count=count, onepp=True)
+    if masses is not None:
+        options = dict(gap=gap, precision=precision, count=count, onepp=True,
+                       **_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies,
+                                             design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
+    elif frequencies is not None or design_branch is not None or springs is not None:
+        raise ValueError("springs, frequencies and design_branch describe a chain given by masses")
     _, held = _command("family", dict(options, out=out), progress, keep_files=True)
     files = _Files(out, "family", held)
     result = _convert.parse_json(files.read(".json").decode("utf-8"))

@@ -64,7 +64,8 @@ takes = {
     "stability": ["out", "methods", "quick"],
     "map": model + start + ["contacts", "trust", "out", "x", "y", "threads", "shard", "picture"],
     "merge": ["out"],
-    "family": model + ["onepp", "out", "count"],
+    "family": model + ["onepp", "out", "count", "masses", "springs", "right-spring", "stop-mass",
+                       "frequencies", "design-branch"],
     "orbit": model + ["onepp", "format", "period", "impacts", "energy", "guess"],
     "modes": model + ["out", "max-impacts", "energy-range"],
     "glo-set": model + ["masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch",
@@ -282,6 +283,26 @@ import json; d=json.load(open('$out'))
 b = d['grazing_set']['boundary']
 assert d['harmonics'] == [3, 2, 1] and len(b) == 6 and all(p['radius'] < p['radius_out'] for p in b), d" || fail "a three-mode grazing set"
 fi
+# the 1IPP family of three masses: its files, its grazing limit; a run from one of its orbits
+if expect_ok family --onepp --masses 1,0.2,0.05 --frequencies 3:2:1 --count 50 --out "$work/fam3"; then
+  python3 -c "
+import csv, json
+d = json.load(open('$work/fam3.json'))
+rows = list(csv.DictReader(open('$work/fam3.csv')))
+assert d['rows'] == len(rows) and d['admissible_rows'] == sum(r['admissible'] == '1' for r in rows) > 10, d
+w = d['grazing_limit']['weights']
+assert abs(sum(w) - 1) < 1e-14 and min(w) > 0, w
+last = [r for r in rows if r['admissible'] == '1'][-1]
+assert abs(float(last['u1']) - d['grazing_limit']['u'][0]) < 1e-6, (last, d['grazing_limit'])" || fail "the 1IPP family of three masses"
+fi
+if expect_ok simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --onepp 7 --contacts 3; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert [e['type'] for e in d['events']] == ['impact'] * 3, d['events']
+assert all(abs(e['t'] - 7 * (k + 1)) < 1e-9 for k, e in enumerate(d['events'])), d['events']" || fail "a 1IPP start of three masses"
+fi
+EXPECT_WORD="no admissible 1IPP orbit" expect_invalid simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --onepp 1
+EXPECT_WORD="name the family" expect_invalid family --masses 1,0.2,0.05 --frequencies 3:2:1 --out "$work/x"
 EXPECT_WORD="commensurate" expect_invalid glo-set --masses 1,1 --springs 1,1
 EXPECT_WORD="two or three modes" expect_invalid glo-set --masses 1,0.6,0.36,0.216 --frequencies 4:3:2:1
 EXPECT_WORD="--directions" expect_invalid glo-set --directions 2

@@ -381,3 +381,25 @@ def test_glo_starts_and_grazing_sets_of_n_masses(cli_json):
         gl.simulate(masses=[1, 1], springs=[1, 1], glo_weights=[0.5, 0.6])
     with pytest.raises(ValueError, match="given by masses"):
         gl.simulate(glo_weights=[0.5, 0.5])
+
+
+def test_the_1ipp_family_of_n_masses(cli, tmp_path):
+    # the designed 3:2:1 chain: the same table as the command line's files; the data tend to
+    # the grazing limit's GLO; a run from an admissible orbit impacts at T, 2T, 3T
+    chain = dict(masses=[1, 0.2, 0.05], frequencies=[3, 2, 1])
+    family = gl.family(**chain, count=100)
+    done = cli("family", "--onepp", "--masses=1,0.2,0.05", "--frequencies=3:2:1", "--count=100",
+               "--out", str(tmp_path / "f"))
+    assert done.returncode == 0, done.stderr
+    on_disk = np.genfromtxt(tmp_path / "f.csv", delimiter=",", names=True)
+    for name in ("T", "V", "energy", "admissible", "u1", "u3"):
+        np.testing.assert_array_equal(family.table[name], on_disk[name])
+    last = family.table[np.nonzero(family.table["admissible"] == 1)[0][-1]]
+    limit = family.grazing_limit
+    assert abs(sum(limit.weights) - 1) < 1e-14 and all(w > 0 for w in limit.weights)
+    assert max(abs(last[f"u{i + 1}"] - limit.u[i]) for i in range(3)) < 1e-6
+    run = gl.simulate(**chain, onepp=float(last["T"]), contacts=3)
+    assert [e.type for e in run.events] == ["impact"] * 3
+    np.testing.assert_allclose([e.t for e in run.events], [k * last["T"] for k in (1, 2, 3)], rtol=1e-9)
+    with pytest.raises(ValueError, match="no admissible 1IPP orbit"):
+        gl.simulate(**chain, onepp=1.0)

@@ -21,15 +21,20 @@ last and on interior masses, random starts and near-grazing ones: each contact t
 the chain's slowest period, its type, the stopped mass's velocity to 1e-9; on resonant chains
 each flight after an impact shorter than T. Starts pressed on the stop (sticks at once, on the
 first, interior and last masses): each release's time to 1e-10 of the slowest period and the
-released velocities to 1e-9. Exit 0 when all hold, 1 otherwise (a ctest test).
+released velocities to 1e-9. 1IPP orbits from `family --onepp` of the designed chains: the
+reference's flight from each admissible row's post-impact data first meets the stop at its T
+(to 1e-9 of the slowest period). Exit 0 when all hold, 1 otherwise (a ctest test).
 
     python3 chain_run_check.py --cli build/app/grazelab-cli/grazelab-cli [--runs 16]
 """
 import argparse
+import csv
 import json
+import os
 import random
 import subprocess
 import sys
+import tempfile
 
 import mpmath
 
@@ -350,6 +355,32 @@ def main():
         for problem in problems:
             print("   ", problem)
         failures += bool(problems)
+    # 1IPP orbits from `family --onepp` of the designed chains: the reference's flight from each
+    # row's post-impact data first meets the stop at that row's T (so the orbit is periodic)
+    for chain in [c for c in cases[:8] if c["stop"] == len(c["masses"]) - 1]:
+        n = len(chain["masses"])
+        s = chain["stop"]
+        with tempfile.TemporaryDirectory() as folder:
+            prefix = os.path.join(folder, "f")
+            subprocess.run([args.cli, "family", "--onepp", "--masses", ",".join(map(repr, chain["masses"])),
+                            "--springs", ",".join(map(repr, chain["springs"])), "--count", "40", "--out", prefix],
+                           check=True, capture_output=True)
+            rows = [r for r in csv.DictReader(open(prefix + ".csv")) if r["admissible"] == "1"]
+        chain = dict(chain)
+        chain["modes"] = modes(chain["masses"], chain["springs"], chain["right_spring"])
+        slowest = 2 * mpmath.pi / min(chain["modes"][0])
+        bad = 0
+        for row in rows[::4]:
+            u = [float(row[f"u{i + 1}"]) for i in range(n)]
+            v = [0.0] * n
+            v[s] = float(row["V"])
+            found = Flight(chain, u, v).first_contact(mpmath.mpf(row["T"]) * 1.01)
+            if found is None or found[1] != "impact" or abs(found[0] - mpmath.mpf(row["T"])) > 1e-9 * slowest:
+                bad += 1
+                print(f"    1IPP T = {row['T']}: the reference's first contact {found}")
+        total += len(rows[::4])
+        print(f"1IPP orbits of {n} masses: {len(rows[::4])} {'ok' if not bad else 'FAILED'}")
+        failures += bool(bad)
     print(f"{total} contacts checked, {failures} runs failed")
     return 1 if failures or total == 0 else 0
 

@@ -16,7 +16,7 @@ namespace grazelab::pictures {
 
 void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
                           const std::vector<core::FamilyPoint>& family,
-                          const core::FamilyPoint& grazingEnd, const QString& title) {
+                          const core::FamilyPoint& grazingEnd, const QString& title, const QString& endLabel) {
   painter.save();
   const QFontMetricsF metrics(painter.font());
   const double line = metrics.height();
@@ -97,7 +97,7 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
   painter.setBrush(colors::kImpact);
   painter.drawEllipse(QPointF(x + line / 2, keyY + line / 2), 6, 6);
   painter.setBrush(Qt::NoBrush);
-  painter.drawText(QPointF(x + 1.4 * line, keyY + 0.8 * line), "grazing end: T → T₂, V → 0, GLO(λ*)");
+  painter.drawText(QPointF(x + 1.4 * line, keyY + 0.8 * line), endLabel);
   painter.restore();
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QRectF>
+#include <QString>
 
 #include <vector>
 
@@ -15,8 +16,10 @@ namespace grazelab::pictures {
 /// The frequency-energy curve of the 1IPP family: 2 pi / T against the energy (log scale),
 /// admissible orbits a solid line, inadmissible ones grey crosses, the grazing end (T -> T2,
 /// V -> 0, GLO_lambda*) a marked point. The window is the admissible part's.
+/// `endLabel` names the grazing end in the key (the two-mass chain's by default).
 void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
                           const std::vector<core::FamilyPoint>& family,
-                          const core::FamilyPoint& grazingEnd, const QString& title);
+                          const core::FamilyPoint& grazingEnd, const QString& title,
+                          const QString& endLabel = QStringLiteral("grazing end: T → T₂, V → 0, GLO(λ*)"));
 
 }  // namespace grazelab::pictures

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/orbits/chain_glo.h"
+#include "core/orbits/chain_onepp.h"
 #include "core/solver/chain_run.h"
 #include "exit_codes.h"
 #include "io/cli_input.h"
@@ -80,19 +81,44 @@ std::optional<std::vector<double>> numberList(const OptionValues& options, const
   return values;
 }
 
-// The run's start: --state, or --glo-weights (GLO_lambda at its touch), plus --perturb
+// why a period has no admissible 1IPP orbit, in words
+const char* refusalWords(core::OnePeriodicRefusal refusal) {
+  switch (refusal) {
+    case core::OnePeriodicRefusal::None: return "admissible";
+    case core::OnePeriodicRefusal::BadPeriod: return "the period is not positive and finite";
+    case core::OnePeriodicRefusal::MultipleOfPeriod: return "the period is a multiple of a mode's period: no data";
+    case core::OnePeriodicRefusal::LeavesIntoStop: return "its data leave into the stop (V >= 0)";
+    case core::OnePeriodicRefusal::NotDecided: return "its return at T cannot be decided in double (V too small)";
+    case core::OnePeriodicRefusal::NeverReturns: return "the flight from its data never returns to the stop";
+    case core::OnePeriodicRefusal::ReturnsEarly: return "the flight from its data meets the stop before T";
+  }
+  return "unknown";
+}
+
+// The run's start: --state, --glo-weights (GLO_lambda at its touch) or --onepp T (the 1IPP
+// orbit's data right after its impact), plus --perturb
 std::optional<core::ChainState> chainStart(const OptionValues& options, const core::MassChain& chain, QString& error) {
   const Eigen::Index n = chain.size();
   const int s = chain.stopped() - 1;
-  if (options.isSet("state") == options.isSet("glo-weights")) {
-    error = QStringLiteral("a chain of N masses starts from --state u1,...,uN,v1,...,vN (%1 numbers) or "
-                           "--glo-weights l1,...,lN (%2): one of them")
+  if (int(options.isSet("state")) + int(options.isSet("glo-weights")) + int(options.isSet("onepp")) != 1) {
+    error = QStringLiteral("a chain of N masses starts from --state u1,...,uN,v1,...,vN (%1 numbers), "
+                           "--glo-weights l1,...,lN (%2) or --onepp T: one of them")
                 .arg(2 * n)
                 .arg(n);
     return std::nullopt;
   }
   core::ChainState start;
-  if (options.isSet("state")) {
+  if (options.isSet("onepp")) {
+    bool ok = false;
+    const double T = options.value("onepp").toDouble(&ok);
+    const core::ChainOnePeriodicOrbit orbit = core::chainOnePeriodicOrbit(chain, ok ? T : -1.0);
+    if (!orbit.admissible()) {
+      error = QStringLiteral("--onepp %1: no admissible 1IPP orbit of that period: %2")
+                  .arg(options.value("onepp"), refusalWords(orbit.refusal));
+      return std::nullopt;
+    }
+    start = orbit.postImpact;
+  } else if (options.isSet("state")) {
     const auto values = numberList(options, "state", 2 * n, "u1,...,uN,v1,...,vN", error);
     if (!values) return std::nullopt;
     start = {Eigen::Map<const Eigen::VectorXd>(values->data(), n), Eigen::Map<const Eigen::VectorXd>(values->data() + n, n)};
@@ -133,10 +159,10 @@ std::optional<core::ChainState> chainStart(const OptionValues& options, const co
 }  // namespace
 
 int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
-  for (const char* notYet : {"glo", "onepp", "sample-step", "sample-times"}) {
+  for (const char* notYet : {"glo", "sample-step", "sample-times"}) {
     if (options.isSet(notYet)) {
       error = QStringLiteral("--%1 is not available for a chain of N masses yet: start it with --state "
-                             "u1,...,uN,v1,...,vN or --glo-weights l1,...,lN")
+                             "u1,...,uN,v1,...,vN, --glo-weights l1,...,lN or --onepp T")
                   .arg(notYet);
       return kExitInvalidInput;
     }
