@@ -57,6 +57,9 @@ struct Evaluator {
   double bound2 = 0, bound3 = 0, bound4 = 0;
   double fastest = 0;  // the largest w_j
   int highest = 0;  // the highest harmonic, 0 when evaluated mode by mode
+  // the plain sum's rounding bounds of f, f', f'' are linear in |t|: roundings[m] + |t| growth[m]
+  // (sum_j w_j^m R_j (2 + 2 n_j) and sum_j w_j^(m+1) R_j), summed once here
+  double roundings[3] = {0, 0, 0}, growth[3] = {0, 0, 0};
 
   Evaluator(const SinusoidSum& f, double periodOfF, Eigen::VectorXd& buffer)
       : sum(f), period(periodOfF), amplitude(buffer) {
@@ -70,6 +73,15 @@ struct Evaluator {
       bound3 += w * w * w * amplitude[j];
       bound4 += w * w * w * w * amplitude[j];
       fastest = std::max(fastest, w);
+    }
+    for (Eigen::Index j = 0; j < f.a.size(); ++j) {
+      const double w = f.w[j];
+      const int n = highest > 0 ? f.harmonics[std::size_t(j)] : 0;
+      double power = amplitude[j];  // w^m R_j
+      for (int m = 0; m < 3; ++m, power *= w) {
+        roundings[m] += power * (2 + 2 * n);
+        growth[m] += power * w;
+      }
     }
   }
   struct Value {
@@ -105,16 +117,12 @@ struct Evaluator {
       const double s = n > 0 ? sines[n - 1] : std::sin(x);
       // each product and sum rounds once, the recurrence about twice a harmonic; the argument's
       // rounding (|x| eps) moves a term by that times its derivative
-      const double roundings = 2 + 2 * n;
+      const double termRoundings = 2 + 2 * n;
       if (k == 0) {
         value.f += a * c + b * s;
         value.df += w * (b * c - a * s);
         value.d2f -= w * w * (a * c + b * s);
-        const double rounding = roundings + std::abs(x);
-        size += amplitude[j] * rounding;
-        dSize += w * amplitude[j] * rounding;
-        d2Size += w * w * amplitude[j] * rounding;
-        continue;
+        continue;  // its rounding bound after the loop
       }
       // f's first k Taylor coefficients at 0 are 0 exactly: f = sum a_j C_k + b_j S_k
       const Remainders r = remainders(x, c, s);
@@ -124,9 +132,15 @@ struct Evaluator {
       value.d2f -= w * w * (a * r.C[k2] + b * r.S[k2]);
       const RemainderScales scale = remainderScales(x);
       const double ax = std::abs(x);
-      size += amplitude[j] * (roundings * scale.of[k] + ax * scale.of[k1]);
-      dSize += w * amplitude[j] * (roundings * scale.of[k1] + ax * scale.of[k2]);
-      d2Size += w * w * amplitude[j] * (roundings * scale.of[k2] + ax * scale.of[std::max(k2 - 1, 0)]);
+      size += amplitude[j] * (termRoundings * scale.of[k] + ax * scale.of[k1]);
+      dSize += w * amplitude[j] * (termRoundings * scale.of[k1] + ax * scale.of[k2]);
+      d2Size += w * w * amplitude[j] * (termRoundings * scale.of[k2] + ax * scale.of[std::max(k2 - 1, 0)]);
+    }
+    if (k == 0) {
+      const double at = std::abs(tau);
+      size += roundings[0] + at * growth[0];
+      dSize += roundings[1] + at * growth[1];
+      d2Size += roundings[2] + at * growth[2];
     }
     value.error = 8 * kEps * size;
     value.dfError = 8 * kEps * dSize;
