@@ -192,7 +192,7 @@ void ChainRunContacts(benchmark::State& state) {
   for (auto _ : state) contacts += std::int64_t(core::runChain(chain, start, 2000).events.size());
   state.SetItemsProcessed(contacts);
 }
-BENCHMARK(ChainRunContacts)->Arg(0)->Arg(3)->Arg(10)->Unit(benchmark::kMillisecond);
+BENCHMARK(ChainRunContacts)->Arg(0)->Arg(3)->Arg(10)->Arg(100)->Unit(benchmark::kMillisecond);
 
 // Periodic orbits (issue 22): one orbit with its monodromy and checks; the continuation of
 // the 1IPP family (items = orbits); the atlas up to K impacts (the budgets: K = 2 under 10 s,
