@@ -29,27 +29,42 @@ ChainDynamics chainDynamics(const MassChain& chain) {
   return dynamics;
 }
 
-ChainFlight flightFrom(const ChainDynamics& dynamics, const ChainState& start) {
+void flightInto(const ChainDynamics& dynamics, const ChainState& start, ChainFlight& flight) {
   // P^T M P = I: the modal coordinates are P^T M u
-  ChainFlight flight{dynamics.P.transpose() * dynamics.mass.cwiseProduct(start.u),
-                     dynamics.P.transpose() * dynamics.mass.cwiseProduct(start.v)};
-  if (dynamics.stop < start.u.size()) {
-    flight.onStop = start.u[dynamics.stop] == dynamics.gap;
-    flight.atRest = flight.onStop && start.v[dynamics.stop] == 0;
-  }
+  thread_local Eigen::VectorXd weighted;
+  weighted = dynamics.mass.cwiseProduct(start.u);
+  flight.q.noalias() = dynamics.P.transpose() * weighted;
+  weighted = dynamics.mass.cwiseProduct(start.v);
+  flight.qdot.noalias() = dynamics.P.transpose() * weighted;
+  flight.onStop = dynamics.stop < start.u.size() && start.u[dynamics.stop] == dynamics.gap;
+  flight.atRest = flight.onStop && start.v[dynamics.stop] == 0;
+}
+
+ChainFlight flightFrom(const ChainDynamics& dynamics, const ChainState& start) {
+  ChainFlight flight;
+  flightInto(dynamics, start, flight);
   return flight;
 }
 
-ChainState stateAt(const ChainDynamics& dynamics, const ChainFlight& flight, double t) {
+void stateInto(const ChainDynamics& dynamics, const ChainFlight& flight, double t, ChainState& state) {
   const Eigen::Index n = flight.q.size();
-  Eigen::VectorXd q(n), qdot(n);
+  thread_local Eigen::VectorXd q, qdot;
+  q.resize(n);
+  qdot.resize(n);
   for (Eigen::Index j = 0; j < n; ++j) {
     const double w = dynamics.omega[j];
     const double c = std::cos(w * t), s = std::sin(w * t);
     q[j] = flight.q[j] * c + flight.qdot[j] / w * s;
     qdot[j] = -flight.q[j] * w * s + flight.qdot[j] * c;
   }
-  return {dynamics.P * q, dynamics.P * qdot};
+  state.u.noalias() = dynamics.P * q;
+  state.v.noalias() = dynamics.P * qdot;
+}
+
+ChainState stateAt(const ChainDynamics& dynamics, const ChainFlight& flight, double t) {
+  ChainState state;
+  stateInto(dynamics, flight, t, state);
+  return state;
 }
 
 ChainContact firstContact(const ChainDynamics& dynamics, const ChainFlight& flight, double horizon, long maxWindows,

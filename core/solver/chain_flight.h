@@ -49,6 +49,9 @@ struct ChainFlight {
 
 ChainFlight flightFrom(const ChainDynamics& dynamics, const ChainState& start);
 ChainState stateAt(const ChainDynamics& dynamics, const ChainFlight& flight, double t);
+/// The same into `out`, whose vectors are reused (a run allocates nothing per flight for them).
+void flightInto(const ChainDynamics& dynamics, const ChainState& start, ChainFlight& out);
+void stateInto(const ChainDynamics& dynamics, const ChainFlight& flight, double t, ChainState& out);
 
 /// How a flight first meets the stop.
 enum class ChainContactKind {

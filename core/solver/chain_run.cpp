@@ -66,6 +66,10 @@ ChainRun runChain(const MassChain& chain, const ChainState& start, long maxConta
     if (isContact(type)) ++run.contacts;
   };
   std::optional<double> jerk;  // set when the flight starts at a release
+  // reused from flight to flight: no allocation for them once sized
+  ChainFlight flight;
+  ChainState at;
+  Eigen::VectorXd vBefore;
   while (run.contacts < maxContacts) {
     if (stop.stop_requested()) return finish(ChainStop::Cancelled, state, t);
     // at rest on the stop, pressed into it (a touch, or the start): held until released
@@ -95,13 +99,13 @@ ChainRun runChain(const MassChain& chain, const ChainState& start, long maxConta
     }
     if (state.u[s] == dynamics.gap && state.v[s] > 0) {
       // a start on the stop moving into it: the impact at once (as for two masses)
-      ChainState at = state;
-      at.v[s] = -at.v[s];
-      record(EventType::Impact, at, state.v, t);
-      state = at;
+      ChainState reflected = state;
+      reflected.v[s] = -reflected.v[s];
+      record(EventType::Impact, reflected, state.v, t);
+      state = reflected;
       continue;
     }
-    const ChainFlight flight = flightFrom(dynamics, state);
+    flightInto(dynamics, state, flight);
     const double horizon = tEnd > 0 ? tEnd - t : 1000 * slowest;
     const ChainContact contact = firstContact(dynamics, flight, horizon, 1'000'000, jerk);
     jerk.reset();
@@ -115,8 +119,8 @@ ChainRun runChain(const MassChain& chain, const ChainState& start, long maxConta
       // its acceleration takes it away, within rounding, and no force presses it on)
       return finish(ChainStop::Undecided, state, t);
     }
-    ChainState at = stateAt(dynamics, flight, contact.t);
-    const Eigen::VectorXd vBefore = at.v;
+    stateInto(dynamics, flight, contact.t, at);
+    vBefore = at.v;
     const double when = t + contact.t;
     at.u[s] = dynamics.gap;  // on the stop exactly: the next flight starts on it
     if (contact.kind == ChainContactKind::Impact) {

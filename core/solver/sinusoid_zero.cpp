@@ -59,7 +59,7 @@ struct Evaluator {
   int highest = 0;  // the highest harmonic, 0 when evaluated mode by mode
   // the plain sum's rounding bounds of f, f', f'' are linear in |t|: roundings[m] + |t| growth[m]
   // (sum_j w_j^m R_j (2 + 2 n_j) and sum_j w_j^(m+1) R_j), summed once here
-  double roundings[3] = {0, 0, 0}, growth[3] = {0, 0, 0};
+  double roundings[4] = {0, 0, 0, 0}, growth[4] = {0, 0, 0, 0};
 
   Evaluator(const SinusoidSum& f, double periodOfF, Eigen::VectorXd& buffer)
       : sum(f), period(periodOfF), amplitude(buffer) {
@@ -78,7 +78,7 @@ struct Evaluator {
       const double w = f.w[j];
       const int n = highest > 0 ? f.harmonics[std::size_t(j)] : 0;
       double power = amplitude[j];  // w^m R_j
-      for (int m = 0; m < 3; ++m, power *= w) {
+      for (int m = 0; m < 4; ++m, power *= w) {
         roundings[m] += power * (2 + 2 * n);
         growth[m] += power * w;
       }
@@ -87,6 +87,7 @@ struct Evaluator {
   struct Value {
     double f, df, error, dfError;
     double d2f = 0, d2fError = 0;
+    double d3f = 0, d3fError = 0;
   };
   Value at(double t) const {
     // a periodic f at the nearest multiple of its period: f(T + tau) = f(tau), and near its
@@ -122,6 +123,7 @@ struct Evaluator {
         value.f += a * c + b * s;
         value.df += w * (b * c - a * s);
         value.d2f -= w * w * (a * c + b * s);
+        value.d3f += w * w * w * (a * s - b * c);
         continue;  // its rounding bound after the loop
       }
       // f's first k Taylor coefficients at 0 are 0 exactly: f = sum a_j C_k + b_j S_k
@@ -130,6 +132,7 @@ struct Evaluator {
       value.f += a * r.C[k] + b * r.S[k];
       value.df += w * (b * r.C[k1] - a * r.S[k1]);
       value.d2f -= w * w * (a * r.C[k2] + b * r.S[k2]);
+      value.d3f += w * w * w * (a * s - b * c);  // the Taylor terms below degree 3 add nothing to f'''
       const RemainderScales scale = remainderScales(x);
       const double ax = std::abs(x);
       size += amplitude[j] * (termRoundings * scale.of[k] + ax * scale.of[k1]);
@@ -145,6 +148,7 @@ struct Evaluator {
     value.error = 8 * kEps * size;
     value.dfError = 8 * kEps * dSize;
     value.d2fError = 8 * kEps * d2Size;
+    value.d3fError = 8 * kEps * (roundings[3] + std::abs(tau) * growth[3]);
     return value;
   }
 };
@@ -163,36 +167,22 @@ struct Search {
   // a unit in the last place of x, or up to twice it (cheaper than nextafter, and only a scale)
   static double ulp(double x) { return std::max(std::abs(x), std::numeric_limits<double>::min()) * kEps; }
 
-  // The crossing of f in (left, right], where f(left) < 0 < f(right) and f is monotone: the
-  // first double at which the computed f is >= 0, as bisection on f's sign finds it. Newton's
-  // method from the secant's guess, kept inside the sign bracket [low, high] (a step that
-  // leaves it bisects instead), then the bracket closed a few ulps around the converged
-  // iterate and bisected to adjacent doubles: about 7 evaluations instead of 50.
+  // The crossing of f in (left, right], where f(left) < 0 < f(right) and f is monotone. Newton's
+  // method from the secant's guess, kept inside the sign bracket [low, high] (a step that leaves
+  // it bisects instead), until its step is within a few ulps of the iterate: that iterate is the
+  // crossing to the rounding of f (about 5 evaluations; bisection to adjacent doubles took 50).
+  // A bracket that closes first ends it at its upper end, where f >= 0.
   double crossing(double left, double right, double fLeft, double fRight) const {
     double low = left, high = right;
     double t = low - fLeft * (high - low) / (fRight - fLeft);
     if (!(t > low && t < high)) t = low + (high - low) / 2;
-    for (int step = 0; step < 60; ++step) {
+    for (int step = 0; step < 100; ++step) {
       const Evaluator::Value v = f.at(t);
       (v.f < 0 ? low : high) = t;
-      if (!(high - low > 8 * ulp(high))) break;
-      double next = t - v.f / v.df;
-      if (std::abs(next - t) > 2 * ulp(t) && !(next > low && next < high)) next = low + (high - low) / 2;
-      if (std::abs(next - t) <= 2 * ulp(t)) {
-        // converged: the root lies near `next`, within the rounding of f; close the bracket
-        // there, probing further out on each side until f's sign is seen
-        for (double d = 4 * ulp(next); high - low > 16 * ulp(high) && d < high - low; d *= 4) {
-          if (next - d > low) (f.at(next - d).f < 0 ? low : high) = next - d;
-          if (next + d < high) (f.at(next + d).f < 0 ? low : high) = next + d;
-        }
-        break;
-      }
-      t = next;
-    }
-    for (int step = 0; step < 200; ++step) {
-      const double mid = low + (high - low) / 2;
-      if (mid <= low || mid >= high) break;
-      (f.at(mid).f < 0 ? low : high) = mid;
+      if (!(high - low > 4 * ulp(high))) break;
+      const double next = t - v.f / v.df;
+      if (std::abs(next - t) <= 2 * ulp(t)) return std::clamp(next, low, high);
+      t = next > low && next < high ? next : low + (high - low) / 2;
     }
     return high;
   }
@@ -210,12 +200,16 @@ struct Search {
     const double slope = std::abs(m.df) + m.dfError;
     const double curve = std::abs(m.d2f) + m.d2fError;
     // no zero: |f| stays away from 0 over the window
-    if (std::abs(m.f) - m.error > slope * r + curve * r * r / 2 + f.bound3 * r * r * r / 6) {
+    // and to fourth, f''' evaluated there and only the fourth derivative bounded: whichever is
+    // tighter (the fourth order in wide windows, where B3 r^3 dominates)
+    const double jerk = std::abs(m.d3f) + m.d3fError;
+    const double beyondCurve = std::min(f.bound3 * r * r * r / 6, jerk * r * r * r / 6 + f.bound4 * r * r * r * r / 24);
+    if (std::abs(m.f) - m.error > slope * r + curve * r * r / 2 + beyondCurve) {
       if (pending) return FirstZero{m.f > 0 ? ZeroKind::Crossing : ZeroKind::Touch, *pending};
       return std::nullopt;
     }
     // monotone: a zero exactly when f changes sign (f(left) is never one: it was searched)
-    if (std::abs(m.df) - m.dfError > curve * r + f.bound3 * r * r / 2) {
+    if (std::abs(m.df) - m.dfError > curve * r + std::min(f.bound3 * r * r / 2, jerk * r * r / 2 + f.bound4 * r * r * r / 6)) {
       const int signLeft = sign(fLeft, m.error), signRight = sign(fRight, m.error);
       if (m.df < 0) {
         // falling: after a rise to within rounding of 0, a touch; from above 0 (never, for an f
