@@ -76,7 +76,8 @@ Eigen::MatrixXd stiffnessMatrix(const MassChain& chain) {
   return K;
 }
 
-ChainModes chainModes(const MassChain& chain) {
+template <typename S>
+BasicChainModes<S> chainModesIn(const MassChain& chain) {
   const int n = chain.size();
   // In binary128: a solver in precision eps finds each w_j^2 to eps * w_1^2 absolutely, so a
   // slow mode of a stiff chain (masses and springs over six decades) loses w_1^2 / w_N^2 of
@@ -97,7 +98,7 @@ ChainModes chainModes(const MassChain& chain) {
     if (i + 1 < n) A(i, i + 1) = A(i + 1, i) = -right * invRoot(i) * invRoot(i + 1);
   }
   const Eigen::SelfAdjointEigenSolver<Matrix> solver(A);
-  ChainModes modes;
+  BasicChainModes<S> modes;
   modes.omega.resize(n);
   modes.P.resize(n, n);
   modes.nodeAtStop.assign(std::size_t(n), false);
@@ -105,10 +106,10 @@ ChainModes chainModes(const MassChain& chain) {
   for (int j = 0; j < n; ++j) {
     const int from = n - 1 - j;  // Eigen sorts ascending: the fastest mode is the last
     const Quad lambda = solver.eigenvalues()(from);
-    modes.omega(j) = lambda > 0 ? double(sqrt(lambda)) : 0.0;
+    modes.omega(j) = lambda > 0 ? static_cast<S>(sqrt(lambda)) : S(0);
     const Vector exact = invRoot.asDiagonal() * solver.eigenvectors().col(from);
-    Eigen::VectorXd column(n);
-    for (int i = 0; i < n; ++i) column(i) = double(exact(i));
+    Eigen::Matrix<S, Eigen::Dynamic, 1> column(n);
+    for (int i = 0; i < n; ++i) column(i) = static_cast<S>(exact(i));
     // a node at the stopped mass: zero within the error of the binary128 eigenvector, 8 n
     // ulps of its largest component times w_1^2 over the distance to the nearest other w^2
     // (an eigenvector is as sensitive as its eigenvalue is close to another). A component that
@@ -131,11 +132,18 @@ ChainModes chainModes(const MassChain& chain) {
       signer = 0;
       while (abs(exact(signer)) <= rounding) ++signer;
     }
-    modes.P.col(j) = column(signer) < 0 ? Eigen::VectorXd(-column) : column;
-    if (node) modes.P(s, j) = 0.0;  // +0 whatever the sign
+    if (column(signer) < 0) column = -column;
+    modes.P.col(j) = column;
+    if (node) modes.P(s, j) = S(0);  // +0 whatever the sign
   }
   return modes;
 }
+
+ChainModes chainModes(const MassChain& chain) { return chainModesIn<double>(chain); }
+
+template BasicChainModes<double> chainModesIn<double>(const MassChain&);
+template BasicChainModes<long double> chainModesIn<long double>(const MassChain&);
+template BasicChainModes<Quad> chainModesIn<Quad>(const MassChain&);
 
 SpectrumRatios detectRatios(const Eigen::VectorXd& omega, double tolerance, int maxHarmonic) {
   SpectrumRatios ratios;

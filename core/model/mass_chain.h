@@ -44,11 +44,13 @@ Eigen::MatrixXd stiffnessMatrix(const MassChain& chain);
 /// that P[s][j] > 0. A mode with a node at the stopped mass (P[s][j] zero within rounding, as in
 /// a symmetric chain stopped in its middle) never moves that mass: it has no GLOM and never
 /// reaches the stop.
-struct ChainModes {
-  Eigen::VectorXd omega;           ///< w_1 > ... > w_N [1/time]
-  Eigen::MatrixXd P;               ///< mode shapes, column j for mode j+1, M-orthonormal
-  std::vector<bool> nodeAtStop;    ///< mode j+1 does not move the stopped mass
+template <typename S>
+struct BasicChainModes {
+  Eigen::Matrix<S, Eigen::Dynamic, 1> omega;               ///< w_1 > ... > w_N [1/time]
+  Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> P;      ///< mode shapes, column j for mode j+1, M-orthonormal
+  std::vector<bool> nodeAtStop;                            ///< mode j+1 does not move the stopped mass
 };
+using ChainModes = BasicChainModes<double>;
 
 /// The modes of a usable chain (precondition: validate(chain) is empty). Computed on the
 /// symmetric form M^-1/2 K M^-1/2 (Eigen's self-adjoint solver) in binary128, so that every
@@ -56,6 +58,9 @@ struct ChainModes {
 /// grows as N^3 in software arithmetic: 7 us for N = 2, 0.4 ms for N = 8, 14 ms for N = 32
 /// (grazelab_core_bench --benchmark_filter=ChainModes).
 ChainModes chainModes(const MassChain& chain);
+/// The same rounded to S (double, long double) or kept in binary128 (Quad).
+template <typename S>
+BasicChainModes<S> chainModesIn(const MassChain& chain);
 
 /// The ratios of a chain's frequencies: commensurate when w_j = n_j w0 with positive integers
 /// n_j (gcd 1, at most `maxHarmonic`) to within `tolerance` relative; `detuning` says how far

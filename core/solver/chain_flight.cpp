@@ -3,35 +3,49 @@
 #include "core/solver/chain_flight.h"
 
 #include <cmath>
-#include <numbers>
+#include <type_traits>
 
 #include "core/solver/sinusoid_zero.h"
 
 namespace grazelab::core {
 
-ChainDynamics chainDynamics(const MassChain& chain) {
-  const ChainModes modes = chainModes(chain);
-  ChainDynamics dynamics;
+template <typename S>
+BasicChainDynamics<S> chainDynamicsIn(const MassChain& chain) {
+  const BasicChainModes<S> modes = chainModesIn<S>(chain);
+  BasicChainDynamics<S> dynamics;
   dynamics.P = modes.P;
   dynamics.omega = modes.omega;
-  dynamics.mass = Eigen::Map<const Eigen::VectorXd>(chain.masses.data(), Eigen::Index(chain.masses.size()));
+  const Eigen::Index n = Eigen::Index(chain.masses.size());
+  dynamics.mass.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) dynamics.mass[i] = S(chain.masses[std::size_t(i)]);
   dynamics.stop = chain.stopped() - 1;
-  dynamics.gap = chain.gap;
-  const SpectrumRatios ratios = detectRatios(modes.omega);
+  dynamics.gap = S(chain.gap);
+  Eigen::VectorXd omega(n);
+  for (Eigen::Index j = 0; j < n; ++j) omega[j] = static_cast<double>(modes.omega[j]);
+  const SpectrumRatios ratios = detectRatios(omega);
   if (ratios.commensurate) {
-    for (Eigen::Index j = 0; j < dynamics.omega.size(); ++j) {
-      dynamics.omega[j] = ratios.harmonics[std::size_t(j)] * ratios.omega0;
+    // w0 fitted in S to every mode (least squares of w_j = n_j w0); in double, detectRatios' own
+    S omega0 = S(ratios.omega0);
+    if constexpr (!std::is_same_v<S, double>) {
+      S dot = 0, norm = 0;
+      for (Eigen::Index j = 0; j < n; ++j) {
+        dot += S(ratios.harmonics[std::size_t(j)]) * modes.omega[j];
+        norm += S(ratios.harmonics[std::size_t(j)]) * S(ratios.harmonics[std::size_t(j)]);
+      }
+      omega0 = dot / norm;
     }
-    dynamics.period = 2 * std::numbers::pi / ratios.omega0;
+    for (Eigen::Index j = 0; j < n; ++j) dynamics.omega[j] = S(ratios.harmonics[std::size_t(j)]) * omega0;
+    dynamics.period = twoPi<S>() / omega0;
     dynamics.harmonics = ratios.harmonics;
-    dynamics.omega0 = ratios.omega0;
+    dynamics.omega0 = omega0;
   }
   return dynamics;
 }
 
-void flightInto(const ChainDynamics& dynamics, const ChainState& start, ChainFlight& flight) {
+template <typename S>
+void flightInto(const BasicChainDynamics<S>& dynamics, const BasicChainState<S>& start, BasicChainFlight<S>& flight) {
   // P^T M P = I: the modal coordinates are P^T M u
-  thread_local Eigen::VectorXd weighted;
+  thread_local ChainVector<S> weighted;
   weighted = dynamics.mass.cwiseProduct(start.u);
   flight.q.noalias() = dynamics.P.transpose() * weighted;
   weighted = dynamics.mass.cwiseProduct(start.v);
@@ -40,20 +54,25 @@ void flightInto(const ChainDynamics& dynamics, const ChainState& start, ChainFli
   flight.atRest = flight.onStop && start.v[dynamics.stop] == 0;
 }
 
-ChainFlight flightFrom(const ChainDynamics& dynamics, const ChainState& start) {
-  ChainFlight flight;
+template <typename S>
+BasicChainFlight<S> flightFrom(const BasicChainDynamics<S>& dynamics, const BasicChainState<S>& start) {
+  BasicChainFlight<S> flight;
   flightInto(dynamics, start, flight);
   return flight;
 }
 
-void stateInto(const ChainDynamics& dynamics, const ChainFlight& flight, double t, ChainState& state) {
+template <typename S>
+void stateInto(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight, std::type_identity_t<S> t,
+               BasicChainState<S>& state) {
+  using std::cos;
+  using std::sin;
   const Eigen::Index n = flight.q.size();
-  thread_local Eigen::VectorXd q, qdot;
+  thread_local ChainVector<S> q, qdot;
   q.resize(n);
   qdot.resize(n);
   for (Eigen::Index j = 0; j < n; ++j) {
-    const double w = dynamics.omega[j];
-    const double c = std::cos(w * t), s = std::sin(w * t);
+    const S w = dynamics.omega[j];
+    const S c = cos(w * t), s = sin(w * t);
     q[j] = flight.q[j] * c + flight.qdot[j] / w * s;
     qdot[j] = -flight.q[j] * w * s + flight.qdot[j] * c;
   }
@@ -61,24 +80,28 @@ void stateInto(const ChainDynamics& dynamics, const ChainFlight& flight, double 
   state.v.noalias() = dynamics.P * qdot;
 }
 
-ChainState stateAt(const ChainDynamics& dynamics, const ChainFlight& flight, double t) {
-  ChainState state;
+template <typename S>
+BasicChainState<S> stateAt(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight,
+                           std::type_identity_t<S> t) {
+  BasicChainState<S> state;
   stateInto(dynamics, flight, t, state);
   return state;
 }
 
-ChainContact firstContact(const ChainDynamics& dynamics, const ChainFlight& flight, double horizon, long maxWindows,
-                          std::optional<double> releaseJerk) {
+template <typename S>
+BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight,
+                                  std::type_identity_t<S> horizon, long maxWindows,
+                                  std::optional<std::type_identity_t<S>> releaseJerk) {
   // u_s(t) - d = sum_j P[s][j] (q_j cos w_j t + qdot_j / w_j sin w_j t) - d
   // one per thread, reused: a run's flights then allocate nothing here (a quarter of the time of
   // a small chain's contact went to malloc and free)
-  thread_local SinusoidSum distance;
+  thread_local BasicSinusoidSum<S> distance;
   const Eigen::Index n = flight.q.size();
   distance.w = dynamics.omega;
   distance.a.resize(n);
   distance.b.resize(n);
   for (Eigen::Index j = 0; j < n; ++j) {
-    const double p = dynamics.P(dynamics.stop, j);
+    const S p = dynamics.P(dynamics.stop, j);
     distance.a[j] = p * flight.q[j];
     distance.b[j] = p * flight.qdot[j] / dynamics.omega[j];
   }
@@ -89,7 +112,7 @@ ChainContact firstContact(const ChainDynamics& dynamics, const ChainFlight& flig
   // touch, v_s = 0 too), or released there (f''(0) = F_s / m_s = 0 as well): those Taylor
   // terms at 0 are 0, not the rounding of the modal sums
   distance.startTerms = releaseJerk ? 3 : flight.onStop ? (flight.atRest ? 2 : 1) : 0;
-  const FirstZero zero = firstZero(distance, dynamics.period, horizon, maxWindows, releaseJerk);
+  const BasicFirstZero<S> zero = firstZero<S>(distance, dynamics.period, horizon, maxWindows, releaseJerk);
   switch (zero.kind) {
     case ZeroKind::Crossing: return {ChainContactKind::Impact, zero.t};
     case ZeroKind::Touch: return {ChainContactKind::Touch, zero.t};
@@ -98,5 +121,20 @@ ChainContact firstContact(const ChainDynamics& dynamics, const ChainFlight& flig
   }
   return {ChainContactKind::Budget, zero.t};
 }
+
+#define GRAZELAB_INSTANTIATE(S)                                                                                  \
+  template BasicChainDynamics<S> chainDynamicsIn<S>(const MassChain&);                                            \
+  template BasicChainFlight<S> flightFrom<S>(const BasicChainDynamics<S>&, const BasicChainState<S>&);             \
+  template BasicChainState<S> stateAt<S>(const BasicChainDynamics<S>&, const BasicChainFlight<S>&,                 \
+                                         std::type_identity_t<S>);                                                 \
+  template void flightInto<S>(const BasicChainDynamics<S>&, const BasicChainState<S>&, BasicChainFlight<S>&);      \
+  template void stateInto<S>(const BasicChainDynamics<S>&, const BasicChainFlight<S>&, std::type_identity_t<S>,    \
+                             BasicChainState<S>&);                                                                 \
+  template BasicChainContact<S> firstContact<S>(const BasicChainDynamics<S>&, const BasicChainFlight<S>&,          \
+                                                std::type_identity_t<S>, long, std::optional<std::type_identity_t<S>>);
+GRAZELAB_INSTANTIATE(double)
+GRAZELAB_INSTANTIATE(long double)
+GRAZELAB_INSTANTIATE(Quad)
+#undef GRAZELAB_INSTANTIATE
 
 }  // namespace grazelab::core

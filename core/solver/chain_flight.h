@@ -6,65 +6,87 @@
 
 #include <optional>
 #include <stop_token>
+#include <type_traits>
 #include <vector>
 
 #include "core/model/mass_chain.h"
 
 namespace grazelab::core {
 
+/// The N-mass solver works in double, long double or binary128 (Quad): every type below is
+/// Basic...<S>, with the double one under the plain name.
+template <typename S>
+using ChainVector = Eigen::Matrix<S, Eigen::Dynamic, 1>;
+
 /// The state of a chain of N masses: displacements and velocities.
-struct ChainState {
-  Eigen::VectorXd u;
-  Eigen::VectorXd v;
+template <typename S>
+struct BasicChainState {
+  ChainVector<S> u;
+  ChainVector<S> v;
 };
+using ChainState = BasicChainState<double>;
 
 /// What a chain's free flights are computed from: its modes, with the frequencies of a
 /// commensurate chain taken as exact multiples n_j w0 (so that every flight repeats after
 /// T = 2 pi / w0 to the last bit, as the two-mass solver does for the 1:2 design), and the stop.
-struct ChainDynamics {
-  Eigen::MatrixXd P;      ///< M-orthonormal mode shapes, fastest first
-  Eigen::VectorXd omega;  ///< w_j, fastest first (n_j w0 when commensurate)
-  Eigen::VectorXd mass;   ///< m_i
-  int stop = 0;           ///< the stopped mass, 0-based
-  double gap = 1;
+template <typename S>
+struct BasicChainDynamics {
+  Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> P;  ///< M-orthonormal mode shapes, fastest first
+  ChainVector<S> omega;  ///< w_j, fastest first (n_j w0 when commensurate)
+  ChainVector<S> mass;   ///< m_i
+  int stop = 0;          ///< the stopped mass, 0-based
+  S gap = 1;
   /// the common period 2 pi / w0 of a commensurate chain, 0 otherwise
-  double period = 0;
+  S period = 0;
   /// a commensurate chain's harmonic numbers n_j (w_j = n_j w0), fastest first; empty otherwise
   std::vector<int> harmonics;
-  double omega0 = 0;
+  S omega0 = 0;
 };
+using ChainDynamics = BasicChainDynamics<double>;
 
-/// The dynamics of a usable chain (validate(chain) empty): its modes (chainModes) and whether
-/// its frequencies are commensurate (detectRatios, to 1e-9).
-ChainDynamics chainDynamics(const MassChain& chain);
+/// The dynamics of a usable chain (validate(chain) empty): its modes (chainModesIn) and whether
+/// its frequencies are commensurate (detectRatios, to 1e-9), in S.
+template <typename S>
+BasicChainDynamics<S> chainDynamicsIn(const MassChain& chain);
+inline ChainDynamics chainDynamics(const MassChain& chain) { return chainDynamicsIn<double>(chain); }
 
 /// One free flight, in modal coordinates at its start: u(t) = P (q cos wt + qdot / w sin wt)
 /// for t measured from the flight's start.
-struct ChainFlight {
-  Eigen::VectorXd q;
-  Eigen::VectorXd qdot;
+template <typename S>
+struct BasicChainFlight {
+  ChainVector<S> q;
+  ChainVector<S> qdot;
   bool onStop = false;  ///< it starts with u_s = d exactly
   bool atRest = false;  ///< and v_s = 0 exactly
 };
+using ChainFlight = BasicChainFlight<double>;
 
-ChainFlight flightFrom(const ChainDynamics& dynamics, const ChainState& start);
-ChainState stateAt(const ChainDynamics& dynamics, const ChainFlight& flight, double t);
+template <typename S>
+BasicChainFlight<S> flightFrom(const BasicChainDynamics<S>& dynamics, const BasicChainState<S>& start);
+template <typename S>
+BasicChainState<S> stateAt(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight,
+                           std::type_identity_t<S> t);
 /// The same into `out`, whose vectors are reused (a run allocates nothing per flight for them).
-void flightInto(const ChainDynamics& dynamics, const ChainState& start, ChainFlight& out);
-void stateInto(const ChainDynamics& dynamics, const ChainFlight& flight, double t, ChainState& out);
+template <typename S>
+void flightInto(const BasicChainDynamics<S>& dynamics, const BasicChainState<S>& start, BasicChainFlight<S>& out);
+template <typename S>
+void stateInto(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight, std::type_identity_t<S> t,
+               BasicChainState<S>& out);
 
 /// How a flight first meets the stop.
 enum class ChainContactKind {
   Impact,     ///< mass s crosses u_s = d moving into the stop
-  Touch,      ///< u_s reaches d with v_s = 0 within what double resolves (a grazing contact)
+  Touch,      ///< u_s reaches d with v_s = 0 within what the precision resolves (a grazing contact)
   None,       ///< never: a commensurate chain's flight below the stop for a whole period
   Budget,     ///< not within the search's horizon or window budget (a non-commensurate chain)
 };
 
-struct ChainContact {
+template <typename S>
+struct BasicChainContact {
   ChainContactKind kind = ChainContactKind::None;
-  double t = 0;  ///< from the flight's start [time]
+  S t = 0;  ///< from the flight's start [time]
 };
+using ChainContact = BasicChainContact<double>;
 
 /// The first contact of mass s with the stop after the flight's start: the first zero of
 /// f(t) = u_s(t) - d by firstZero's certified search (core/solver/sinusoid_zero.h), so that a
@@ -73,7 +95,9 @@ struct ChainContact {
 /// stop leaves it by its velocity (or, at v_s = 0, its acceleration; after a release, given as
 /// `releaseJerk`, its third derivative). Commensurate chains are searched over one period (a
 /// contact comes by T); others up to `horizon` or `maxWindows` windows.
-ChainContact firstContact(const ChainDynamics& dynamics, const ChainFlight& flight, double horizon = 0,
-                          long maxWindows = 1'000'000, std::optional<double> releaseJerk = std::nullopt);
+template <typename S>
+BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight,
+                                  std::type_identity_t<S> horizon = 0, long maxWindows = 1'000'000,
+                                  std::optional<std::type_identity_t<S>> releaseJerk = std::nullopt);
 
 }  // namespace grazelab::core

@@ -11,77 +11,84 @@
 
 namespace grazelab::core {
 
-double chainEnergy(const MassChain& chain, const ChainState& state) {
-  const Eigen::MatrixXd M = massMatrix(chain);
-  const Eigen::MatrixXd K = stiffnessMatrix(chain);
-  return 0.5 * state.v.dot(M * state.v) + 0.5 * state.u.dot(K * state.u);
+template <typename S>
+S chainEnergy(const MassChain& chain, const BasicChainState<S>& state) {
+  const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> M = massMatrix(chain).cast<S>();
+  const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> K = stiffnessMatrix(chain).cast<S>();
+  return S(0.5) * state.v.dot(M * state.v) + S(0.5) * state.u.dot(K * state.u);
 }
 
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
-
 // the slowest period of a stuck phase's sides (0 when no mass moves)
-double slowestPeriod(const ChainStuckPhase& phase) {
-  double slowest = 0;
-  for (const ChainStuckPhase::Side* side : {&phase.left, &phase.right}) {
-    if (side->count > 0) slowest = std::max(slowest, 2 * std::numbers::pi / side->dynamics.omega.minCoeff());
+template <typename S>
+S slowestPeriod(const BasicChainStuckPhase<S>& phase) {
+  S slowest = 0;
+  for (const typename BasicChainStuckPhase<S>::Side* side : {&phase.left, &phase.right}) {
+    if (side->count == 0) continue;
+    const S period = twoPi<S>() / side->dynamics.omega.minCoeff();
+    if (period > slowest) slowest = period;
   }
   return slowest;
 }
 
 // u_s''' at a release (v_s = 0, F_s = 0): dF_s/dt / m_s = (k_s v_(s-1) + k_(s+1) v_(s+1)) / m_s,
 // when its sign is resolved; nothing otherwise
-std::optional<double> releaseJerk(const MassChain& chain, const ChainState& at) {
+template <typename S>
+std::optional<S> releaseJerk(const MassChain& chain, const BasicChainState<S>& at) {
+  using std::abs;
   const Eigen::Index n = chain.size();
   const Eigen::Index s = chain.stopped() - 1;
-  const double left = s > 0 ? chain.springs[std::size_t(s)] * at.v[s - 1] : 0.0;
-  const double right = s + 1 < n ? chain.springs[std::size_t(s + 1)] * at.v[s + 1] : 0.0;
-  const double jerk = (left + right) / chain.masses[std::size_t(s)];
-  const double error = 4 * kEps * (std::abs(left) + std::abs(right)) / chain.masses[std::size_t(s)];
+  const S left = s > 0 ? S(S(chain.springs[std::size_t(s)]) * at.v[s - 1]) : S(0);
+  const S right = s + 1 < n ? S(S(chain.springs[std::size_t(s + 1)]) * at.v[s + 1]) : S(0);
+  const S mass = S(chain.masses[std::size_t(s)]);
+  const S jerk = (left + right) / mass;
+  const S error = 4 * std::numeric_limits<S>::epsilon() * (abs(left) + abs(right)) / mass;
   if (!(jerk < -error)) return std::nullopt;
   return jerk;
 }
 
 }  // namespace
 
-ChainRun runChain(const MassChain& chain, const ChainState& start, long maxContacts, double tEnd,
-                  std::stop_token stop) {
-  const ChainDynamics dynamics = chainDynamics(chain);
+template <typename S>
+BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
+                          std::type_identity_t<S> tEnd, std::stop_token stop) {
+  using State = BasicChainState<S>;
+  const BasicChainDynamics<S> dynamics = chainDynamicsIn<S>(chain);
   const int s = dynamics.stop;
-  ChainRun run;
+  BasicChainRun<S> run;
   run.energyInitial = chainEnergy(chain, start);
-  ChainState state = start;
-  double t = 0;
-  const double slowest = 2 * std::numbers::pi / dynamics.omega.minCoeff();
-  const auto finish = [&](ChainStop reason, const ChainState& at, double when) {
+  State state = start;
+  S t = 0;
+  const S slowest = twoPi<S>() / dynamics.omega.minCoeff();
+  const auto finish = [&](ChainStop reason, const State& at, const S& when) {
     run.stop = reason;
     run.final = at;
     run.tFinal = when;
     run.energyFinal = chainEnergy(chain, at);
     return run;
   };
-  const auto record = [&](EventType type, const ChainState& at, const Eigen::VectorXd& vBefore, double when) {
+  const auto record = [&](EventType type, const State& at, const ChainVector<S>& vBefore, const S& when) {
     run.events.push_back({when, type, at.u, vBefore, at.v[s]});
     if (isContact(type)) ++run.contacts;
   };
-  std::optional<double> jerk;  // set when the flight starts at a release
+  std::optional<S> jerk;  // set when the flight starts at a release
   // reused from flight to flight: no allocation for them once sized
-  ChainFlight flight;
-  ChainState at;
-  Eigen::VectorXd vBefore;
+  BasicChainFlight<S> flight;
+  State at;
+  ChainVector<S> vBefore;
   while (run.contacts < maxContacts) {
     if (stop.stop_requested()) return finish(ChainStop::Cancelled, state, t);
     // at rest on the stop, pressed into it (a touch, or the start): held until released
-    const StopForce force = stopForce(chain, state);
+    const BasicStopForce<S> force = stopForce(chain, state);
     const bool onStop = state.u[s] == dynamics.gap && state.v[s] == 0;
     if (onStop && !jerk && force.value > force.error) {
       if (run.events.empty() || run.events.back().type != EventType::Stick || run.events.back().t != t) {
         record(EventType::Stick, state, state.v, t);
       }
-      const ChainStuckPhase phase = stuckPhase(chain, state);
-      const double horizon = tEnd > 0 ? tEnd - t : 1000 * slowestPeriod(phase);
-      const FirstZero release = releaseOf(phase, horizon);
+      const BasicChainStuckPhase<S> phase = stuckPhase(chain, state);
+      const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * slowestPeriod(phase));
+      const BasicFirstZero<S> release = releaseOf(phase, horizon);
       if (stop.stop_requested()) return finish(ChainStop::Cancelled, state, t);
       const bool past = tEnd > 0 && (release.kind == ZeroKind::Budget || t + release.t > tEnd);
       if (past) return finish(ChainStop::TimeLimit, stuckStateAt(phase, tEnd - t), tEnd);
@@ -89,7 +96,7 @@ ChainRun runChain(const MassChain& chain, const ChainState& start, long maxConta
       if (release.kind != ZeroKind::Crossing) {
         return finish(ChainStop::Undecided, stuckStateAt(phase, release.t), t + release.t);
       }
-      ChainState released = stuckStateAt(phase, release.t);
+      State released = stuckStateAt(phase, release.t);
       t += release.t;
       jerk = releaseJerk(chain, released);
       if (!jerk) return finish(ChainStop::Undecided, released, t);
@@ -99,15 +106,15 @@ ChainRun runChain(const MassChain& chain, const ChainState& start, long maxConta
     }
     if (state.u[s] == dynamics.gap && state.v[s] > 0) {
       // a start on the stop moving into it: the impact at once (as for two masses)
-      ChainState reflected = state;
+      State reflected = state;
       reflected.v[s] = -reflected.v[s];
       record(EventType::Impact, reflected, state.v, t);
       state = reflected;
       continue;
     }
     flightInto(dynamics, state, flight);
-    const double horizon = tEnd > 0 ? tEnd - t : 1000 * slowest;
-    const ChainContact contact = firstContact(dynamics, flight, horizon, 1'000'000, jerk);
+    const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * slowest);
+    const BasicChainContact<S> contact = firstContact(dynamics, flight, horizon, 1'000'000, jerk);
     jerk.reset();
     const bool past = tEnd > 0 && (contact.kind == ChainContactKind::None || contact.kind == ChainContactKind::Budget ||
                                    t + contact.t > tEnd);
@@ -121,7 +128,7 @@ ChainRun runChain(const MassChain& chain, const ChainState& start, long maxConta
     }
     stateInto(dynamics, flight, contact.t, at);
     vBefore = at.v;
-    const double when = t + contact.t;
+    const S when = t + contact.t;
     at.u[s] = dynamics.gap;  // on the stop exactly: the next flight starts on it
     if (contact.kind == ChainContactKind::Impact) {
       at.v[s] = -at.v[s];
@@ -129,7 +136,7 @@ ChainRun runChain(const MassChain& chain, const ChainState& start, long maxConta
     } else {
       // at rest on the stop: pulled away (grazing) or pressed into it (a stick)
       at.v[s] = 0;
-      const StopForce pressed = stopForce(chain, at);
+      const BasicStopForce<S> pressed = stopForce(chain, at);
       if (pressed.value > pressed.error) {
         record(EventType::Stick, at, vBefore, when);
       } else if (pressed.value < -pressed.error) {
@@ -143,5 +150,14 @@ ChainRun runChain(const MassChain& chain, const ChainState& start, long maxConta
   }
   return finish(ChainStop::ContactLimit, state, t);
 }
+
+#define GRAZELAB_INSTANTIATE(S)                                                                                  \
+  template S chainEnergy<S>(const MassChain&, const BasicChainState<S>&);                                         \
+  template BasicChainRun<S> runChain<S>(const MassChain&, const BasicChainState<S>&, long, std::type_identity_t<S>, \
+                                        std::stop_token);
+GRAZELAB_INSTANTIATE(double)
+GRAZELAB_INSTANTIATE(long double)
+GRAZELAB_INSTANTIATE(Quad)
+#undef GRAZELAB_INSTANTIATE
 
 }  // namespace grazelab::core

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include <stop_token>
+#include <type_traits>
 #include <vector>
 
 #include "core/model/mass_chain.h"
@@ -14,13 +15,15 @@
 namespace grazelab::core {
 
 /// One contact of a chain of N masses with the stop.
-struct ChainEvent {
-  double t = 0;                        ///< since the run's start [time]
+template <typename S>
+struct BasicChainEvent {
+  S t = 0;                             ///< since the run's start [time]
   EventType type = EventType::Impact;  ///< Impact, Grazing, Stick, or Release (not a contact)
-  Eigen::VectorXd u;                   ///< the displacements at the event (u_s = d)
-  Eigen::VectorXd vBefore;             ///< the velocities before it
-  double vAfter = 0;                   ///< the stopped mass's velocity after it
+  ChainVector<S> u;                    ///< the displacements at the event (u_s = d)
+  ChainVector<S> vBefore;              ///< the velocities before it
+  S vAfter = 0;                        ///< the stopped mass's velocity after it
 };
+using ChainEvent = BasicChainEvent<double>;
 
 /// Why a run of a chain of N masses ended.
 enum class ChainStop {
@@ -34,18 +37,21 @@ enum class ChainStop {
   Cancelled,         ///< the stop token
 };
 
-struct ChainRun {
-  std::vector<ChainEvent> events;  ///< contacts and releases, in time order
-  long contacts = 0;               ///< the events that are contacts (all but releases)
-  ChainState final;  ///< the state at `tFinal`
-  double tFinal = 0;
+template <typename S>
+struct BasicChainRun {
+  std::vector<BasicChainEvent<S>> events;  ///< contacts and releases, in time order
+  long contacts = 0;                       ///< the events that are contacts (all but releases)
+  BasicChainState<S> final;                ///< the state at `tFinal`
+  S tFinal = 0;
   ChainStop stop = ChainStop::ContactLimit;
-  double energyInitial = 0;
-  double energyFinal = 0;
+  S energyInitial = 0;
+  S energyFinal = 0;
 };
+using ChainRun = BasicChainRun<double>;
 
 /// The energy 1/2 v^T M v + 1/2 u^T K u of a chain's state.
-double chainEnergy(const MassChain& chain, const ChainState& state);
+template <typename S>
+S chainEnergy(const MassChain& chain, const BasicChainState<S>& state);
 
 /// An exact run of a usable chain (validate(chain) empty) from `start` (u_s <= d): closed-form
 /// flights in the chain's modes, each contact by firstContact (certified: none missed), elastic
@@ -53,8 +59,10 @@ double chainEnergy(const MassChain& chain, const ChainState& state);
 /// reaching the stop at rest pressed into it is held there (stuckPhase: the chain split at the
 /// clamp into two exact chains) until the force on it falls to zero (releaseOf, certified); up
 /// to `maxContacts` contacts or `tEnd` (0: none). A search without `tEnd` (a flight of a
-/// non-commensurate chain, a stuck phase) goes up to 1000 of the slowest periods.
-ChainRun runChain(const MassChain& chain, const ChainState& start, long maxContacts, double tEnd = 0,
-                  std::stop_token stop = {});
+/// non-commensurate chain, a stuck phase) goes up to 1000 of the slowest periods. In the
+/// precision of `start`: double, long double or binary128 (Quad).
+template <typename S>
+BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
+                          std::type_identity_t<S> tEnd = 0, std::stop_token stop = {});
 
 }  // namespace grazelab::core

@@ -5,19 +5,23 @@
 #include <Eigen/Core>
 
 #include <optional>
+#include <type_traits>
 #include <vector>
+
+#include "core/numbers/scalar.h"
 
 namespace grazelab::core {
 
 /// f(t) = offset + sum_j (a_j cos w_j t + b_j sin w_j t): the distance of a chain's stopped mass
 /// to the stop in a flight, or the springs' force on it while it is held there.
-struct SinusoidSum {
-  Eigen::VectorXd a, b, w;  ///< w_j > 0
-  double offset = 0;
+template <typename S>
+struct BasicSinusoidSum {
+  Eigen::Matrix<S, Eigen::Dynamic, 1> a, b, w;  ///< w_j > 0
+  S offset = 0;
   /// when every w_j = n_j omega0 (n_j <= 64), the n_j: cos and sin of n w0 t then come from one
   /// sincos by angle addition (its roundings counted in the error bound); empty otherwise
   std::vector<int> harmonics;
-  double omega0 = 0;
+  S omega0 = 0;
   /// f's first `startTerms` Taylor coefficients at 0 are 0 exactly (0 .. 3): 1 when f starts on
   /// 0 (a flight from the stop: offset = -sum a_j), 2 when also at rest there (f'(0) = 0), 3 at a
   /// release (f''(0) = 0 too). f is then evaluated as sum a_j C_k(w_j t) + b_j S_k(w_j t), the
@@ -26,19 +30,22 @@ struct SinusoidSum {
   /// being lost in the rounding of offset + sum a_j
   int startTerms = 0;
 };
+using SinusoidSum = BasicSinusoidSum<double>;
 
 /// How f first reaches 0 from below.
 enum class ZeroKind {
   Crossing,  ///< f rises through 0
-  Touch,     ///< f reaches 0 with f' = 0 within what double resolves (an even-multiplicity zero)
+  Touch,     ///< f reaches 0 with f' = 0 within what the precision resolves (an even-multiplicity zero)
   None,      ///< never: f is periodic with `period` and stays below 0 over a whole period
   Budget,    ///< not within the horizon or the window budget
 };
 
-struct FirstZero {
+template <typename S>
+struct BasicFirstZero {
   ZeroKind kind = ZeroKind::None;
-  double t = 0;
+  S t = 0;
 };
+using FirstZero = BasicFirstZero<double>;
 
 /// The first zero of f after t = 0, where f(0) <= 0, by a certified search (docs/model.md
 /// section 11): f''' is at most B3 = sum w_j^3 R_j (R_j = hypot(a_j, b_j)); with r = h/2 a window
@@ -54,7 +61,10 @@ struct FirstZero {
 /// `releaseJerk` (< 0, with startTerms = 3) marks an f that starts where a held mass is released:
 /// f, f' and f'' are 0 there and f leaves 0 by its third derivative; f(t) <= f'''(0) t^3/6 +
 /// B4 t^4/24 < 0 rules out a zero below 4|f'''(0)|/B4.
-FirstZero firstZero(const SinusoidSum& f, double period, double horizon, long maxWindows = 1'000'000,
-                    std::optional<double> releaseJerk = std::nullopt);
+/// In double, long double or binary128 (Quad): the rounding bounds and the resolution follow S.
+template <typename S>
+BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& f, std::type_identity_t<S> period,
+                            std::type_identity_t<S> horizon, long maxWindows = 1'000'000,
+                            std::optional<std::type_identity_t<S>> releaseJerk = std::nullopt);
 
 }  // namespace grazelab::core

@@ -282,13 +282,13 @@ TEST(ChainRun, AStartAtRestOnTheStopLeavesItOrSticks) {
   // / m1, and is released when u1 falls back to d
   const MassChain chain = designed({1.0, 0.5}, {2, 1});
   const double period = chainDynamics(chain).period;
-  const ChainRun pulled = runChain(chain, {Eigen::Vector2d(0.0, 1.0), Eigen::Vector2d::Zero()}, 3);
+  const ChainRun pulled = runChain(chain, ChainState{Eigen::Vector2d(0.0, 1.0), Eigen::Vector2d::Zero()}, 3);
   ASSERT_EQ(pulled.events.size(), 3u) << int(pulled.stop);
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_EQ(pulled.events[k].type, EventType::Grazing);
     EXPECT_NEAR(pulled.events[k].t, double(k + 1) * period, 1e-6 * period);
   }
-  const ChainRun pressed = runChain(chain, {Eigen::Vector2d(3.0, 1.0), Eigen::Vector2d::Zero()}, 5);
+  const ChainRun pressed = runChain(chain, ChainState{Eigen::Vector2d(3.0, 1.0), Eigen::Vector2d::Zero()}, 5);
   ASSERT_GE(pressed.events.size(), 2u);
   EXPECT_EQ(pressed.events[0].type, EventType::Stick);
   EXPECT_EQ(pressed.events[0].t, 0);

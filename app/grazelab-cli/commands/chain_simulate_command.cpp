@@ -2,9 +2,12 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "commands/chain_simulate_command.h"
 
+#include <QStringList>
+
 #include <cmath>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/orbits/chain_glo.h"
@@ -23,7 +26,8 @@ using V = JsonValue;
 // the events of a chain of N masses are kept in memory until the document is written
 constexpr long kMaxChainContacts = 1'000'000;
 
-V numbers(const Eigen::VectorXd& values) {
+template <typename S>
+V numbers(const core::ChainVector<S>& values) {
   std::vector<V> items;
   for (Eigen::Index i = 0; i < values.size(); ++i) items.push_back(V::number(values[i]));
   return V::array(std::move(items));
@@ -57,17 +61,18 @@ std::string stopMessage(core::ChainStop stop) {
 }
 
 // `count` finite numbers from a comma-separated list, or nothing with `error` set
-std::optional<std::vector<double>> numberList(const OptionValues& options, const char* name, Eigen::Index count,
-                                              const QString& layout, QString& error) {
-  std::vector<double> values;
+// numbers read in precision S
+template <typename S>
+std::optional<std::vector<S>> numberList(const OptionValues& options, const char* name, Eigen::Index count,
+                                         const QString& layout, QString& error) {
+  std::vector<S> values;
   for (const QString& part : options.value(name).split(',')) {
-    bool ok = false;
-    const double value = part.trimmed().toDouble(&ok);
-    if (!ok || !std::isfinite(value)) {
+    const core::ParsedScalar<S> value = core::parseScalar<S>(part.trimmed().toStdString());
+    if (!value.value || !core::isFinite(*value.value)) {
       error = QStringLiteral("--%1: '%2' is not a finite number").arg(name, part);
       return std::nullopt;
     }
-    values.push_back(value);
+    values.push_back(*value.value);
   }
   if (Eigen::Index(values.size()) != count) {
     error = QStringLiteral("--%1: %2 numbers for %3 masses (%4: %5)")
@@ -95,9 +100,12 @@ const char* refusalWords(core::OnePeriodicRefusal refusal) {
   return "unknown";
 }
 
-// The run's start: --state, --glo-weights (GLO_lambda at its touch) or --onepp T (the 1IPP
-// orbit's data right after its impact), plus --perturb
-std::optional<core::ChainState> chainStart(const OptionValues& options, const core::MassChain& chain, QString& error) {
+// The run's start in S: --state, --glo-weights (GLO_lambda at its touch) or --onepp T (the 1IPP
+// orbit's data right after its impact), plus --perturb. Every number is read as a double, as the
+// chain is (MassChain holds doubles): S is the arithmetic of the run on those binary inputs
+template <typename S>
+std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, const core::MassChain& chain,
+                                                   QString& error) {
   const Eigen::Index n = chain.size();
   const int s = chain.stopped() - 1;
   if (int(options.isSet("state")) + int(options.isSet("glo-weights")) + int(options.isSet("onepp")) != 1) {
@@ -107,7 +115,14 @@ std::optional<core::ChainState> chainStart(const OptionValues& options, const co
                 .arg(n);
     return std::nullopt;
   }
-  core::ChainState start;
+  if constexpr (!std::is_same_v<S, double>) {
+    if (options.isSet("onepp") || options.isSet("glo-weights")) {
+      error = "--glo-weights and --onepp start a chain of N masses in double for now (give --precision double "
+              "or auto, or --state in the precision)";
+      return std::nullopt;
+    }
+  }
+  core::BasicChainState<S> start;
   if (options.isSet("onepp")) {
     bool ok = false;
     const double T = options.value("onepp").toDouble(&ok);
@@ -117,13 +132,14 @@ std::optional<core::ChainState> chainStart(const OptionValues& options, const co
                   .arg(options.value("onepp"), refusalWords(orbit.refusal));
       return std::nullopt;
     }
-    start = orbit.postImpact;
+    start = {orbit.postImpact.u.cast<S>(), orbit.postImpact.v.cast<S>()};
   } else if (options.isSet("state")) {
-    const auto values = numberList(options, "state", 2 * n, "u1,...,uN,v1,...,vN", error);
+    const auto values = numberList<double>(options, "state", 2 * n, "u1,...,uN,v1,...,vN", error);
     if (!values) return std::nullopt;
-    start = {Eigen::Map<const Eigen::VectorXd>(values->data(), n), Eigen::Map<const Eigen::VectorXd>(values->data() + n, n)};
+    start = {Eigen::Map<const Eigen::VectorXd>(values->data(), n).cast<S>(),
+             Eigen::Map<const Eigen::VectorXd>(values->data() + n, n).cast<S>()};
   } else {
-    const auto weights = numberList(options, "glo-weights", n, "l1,...,lN", error);
+    const auto weights = numberList<double>(options, "glo-weights", n, "l1,...,lN", error);
     if (!weights) return std::nullopt;
     const core::ChainGloStart glo = core::chainGloStart(chain, *weights);
     switch (glo.problem) {
@@ -141,19 +157,74 @@ std::optional<core::ChainState> chainStart(const OptionValues& options, const co
                 "info's node_at_stop)";
         return std::nullopt;
     }
-    start = glo.state;
+    start = {glo.state.u.cast<S>(), glo.state.v.cast<S>()};
   }
   if (options.isSet("perturb")) {
-    const auto delta = numberList(options, "perturb", 2 * n, "du1,...,duN,dv1,...,dvN", error);
+    const auto delta = numberList<double>(options, "perturb", 2 * n, "du1,...,duN,dv1,...,dvN", error);
     if (!delta) return std::nullopt;
-    start.u += Eigen::Map<const Eigen::VectorXd>(delta->data(), n);
-    start.v += Eigen::Map<const Eigen::VectorXd>(delta->data() + n, n);
+    start.u += Eigen::Map<const Eigen::VectorXd>(delta->data(), n).cast<S>();
+    start.v += Eigen::Map<const Eigen::VectorXd>(delta->data() + n, n).cast<S>();
   }
-  if (start.u[s] > chain.gap) {
-    error = QStringLiteral("the start has u%1 = %2 past the stop (gap %3)").arg(s + 1).arg(start.u[s]).arg(chain.gap);
+  if (start.u[s] > S(chain.gap)) {
+    error = QStringLiteral("the start has u%1 = %2 past the stop (gap %3)")
+                .arg(s + 1)
+                .arg(core::toDouble(start.u[s]))
+                .arg(chain.gap);
     return std::nullopt;
   }
   return start;
+}
+
+// The run in S, as the document's fields from "events" on; nothing when the start is refused
+// (`error`) or the run was stopped (`stopped`)
+template <typename S>
+struct ChainRunIn {
+  core::BasicChainState<S> start;
+  core::BasicChainRun<S> run;
+};
+template <typename S>
+std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::MassChain& chain, long contacts,
+                                   const QString& tEndText, std::stop_token stop, QString& error) {
+  const auto start = chainStart<S>(options, chain, error);
+  if (!start) return std::nullopt;
+  S tEnd = 0;
+  if (!tEndText.isEmpty()) {
+    const core::ParsedScalar<double> parsed = core::parseScalar<double>(tEndText.toStdString());
+    if (!parsed.value || !(*parsed.value > 0) || !std::isfinite(*parsed.value)) {
+      error = QStringLiteral("--t-end: '%1' is not a positive finite time").arg(tEndText);
+      return std::nullopt;
+    }
+    tEnd = S(*parsed.value);
+  }
+  return ChainRunIn<S>{*start, core::runChain(chain, *start, contacts, tEnd, stop)};
+}
+
+template <typename S>
+V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precision) {
+  const core::BasicChainRun<S>& run = in.run;
+  std::vector<V> events;
+  for (const core::BasicChainEvent<S>& event : run.events) {
+    events.push_back(V::object({{"t", V::number(event.t)},
+                                {"type", V::of(std::string(core::toString(event.type)))},
+                                {"u", numbers<S>(event.u)},
+                                {"v_pre", numbers<S>(event.vBefore)},
+                                {"v_post", V::number(event.vAfter)}}));
+  }
+  const core::ChainDynamics dynamics = core::chainDynamics(masses);
+  const std::string message = stopMessage(run.stop);
+  using std::abs;
+  return V::object(
+      {{"chain", massChainValue(masses, dynamics.period)},
+       {"initial", V::object({{"u", numbers<S>(in.start.u)}, {"v", numbers<S>(in.start.v)}})},
+       {"events", V::array(std::move(events))},
+       {"final", V::object({{"t", V::number(run.tFinal)}, {"u", numbers<S>(run.final.u)}, {"v", numbers<S>(run.final.v)}})},
+       {"stop_reason", V::of(stopName(run.stop))},
+       {"message", message.empty() ? V::null() : V::of(message)},
+       {"contacts", V::of(std::int64_t(run.contacts))},
+       {"energy", V::object({{"initial", V::number(run.energyInitial)},
+                             {"final", V::number(run.energyFinal)},
+                             {"relative_drift", V::number(S(abs(run.energyFinal / run.energyInitial - 1)))}})},
+       {"precision", std::move(precision)}});
 }
 
 }  // namespace
@@ -171,8 +242,9 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     error = "--format: a chain of N masses is written as json only for now";
     return kExitInvalidInput;
   }
-  if (options.isSet("precision") && options.value("precision") != "double" && options.value("precision") != "auto") {
-    error = "--precision: a chain of N masses is computed in double for now (give double or auto)";
+  const QString precisionText = options.isSet("precision") ? options.value("precision") : QStringLiteral("auto");
+  if (!QStringList{"auto", "double", "long", "quad"}.contains(precisionText)) {
+    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precisionText);
     return kExitInvalidInput;
   }
   if (options.isSet("trust") && options.value("trust") != "off") {
@@ -186,8 +258,6 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     return kExitInvalidInput;
   }
   const core::MassChain& masses = chain.value->chain;
-  const auto start = chainStart(options, masses, error);
-  if (!start) return kExitInvalidInput;
   long contacts = options.isSet("t-end") ? kMaxChainContacts : 100;
   if (options.isSet("contacts")) {
     bool ok = false;
@@ -199,39 +269,43 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       return kExitInvalidInput;
     }
   }
-  double tEnd = 0;
-  if (options.isSet("t-end")) {
-    bool ok = false;
-    tEnd = options.value("t-end").toDouble(&ok);
-    if (!ok || !(tEnd > 0) || !std::isfinite(tEnd)) {
-      error = QStringLiteral("--t-end: '%1' is not a positive finite time").arg(options.value("t-end"));
-      return kExitInvalidInput;
-    }
+  const QString tEnd = options.isSet("t-end") ? options.value("t-end") : QString();
+  // --precision auto: double, and the whole run again one precision up while it ends undecided
+  // (a touch or a release within the precision's rounding)
+  std::vector<V> escalations;
+  const auto report = [&](const char* used) {
+    return V::object({{"requested", V::of(precisionText.toStdString())},
+                      {"used", V::of(used)},
+                      {"escalations", V::array(escalations)}});
+  };
+  const auto escalate = [&](const char* from, const char* to, double when) {
+    escalations.push_back(V::of(std::string("undecided in ") + from + " at t = " + core::formatScalar(when) +
+                                ": the whole run again in " + to));
+  };
+  V document;
+  bool done = false;
+  if (precisionText == "auto" || precisionText == "double") {
+    const auto in = runIn<double>(options, masses, contacts, tEnd, stop, error);
+    if (!in) return error.isEmpty() ? kExitInterrupted : kExitInvalidInput;
+    if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
+    done = precisionText == "double" || in->run.stop != core::ChainStop::Undecided;
+    if (done) document = runDocument(masses, *in, report("double"));
+    else escalate("double", "long", in->run.tFinal);
   }
-  const core::ChainRun run = core::runChain(masses, *start, contacts, tEnd, stop);
-  if (run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
-  std::vector<V> events;
-  for (const core::ChainEvent& event : run.events) {
-    events.push_back(V::object({{"t", V::number(event.t)},
-                                {"type", V::of(std::string(core::toString(event.type)))},
-                                {"u", numbers(event.u)},
-                                {"v_pre", numbers(event.vBefore)},
-                                {"v_post", V::number(event.vAfter)}}));
+  if (!done && (precisionText == "auto" || precisionText == "long")) {
+    const auto in = runIn<long double>(options, masses, contacts, tEnd, stop, error);
+    if (!in) return error.isEmpty() ? kExitInterrupted : kExitInvalidInput;
+    if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
+    done = precisionText == "long" || in->run.stop != core::ChainStop::Undecided;
+    if (done) document = runDocument(masses, *in, report("long"));
+    else escalate("long", "quad", core::toDouble(in->run.tFinal));
   }
-  const core::ChainDynamics dynamics = core::chainDynamics(masses);
-  const std::string message = stopMessage(run.stop);
-  V document = V::object(
-      {{"chain", massChainValue(masses, dynamics.period)},
-       {"initial", V::object({{"u", numbers(start->u)}, {"v", numbers(start->v)}})},
-       {"events", V::array(std::move(events))},
-       {"final", V::object({{"t", V::number(run.tFinal)}, {"u", numbers(run.final.u)}, {"v", numbers(run.final.v)}})},
-       {"stop_reason", V::of(stopName(run.stop))},
-       {"message", message.empty() ? V::null() : V::of(message)},
-       {"contacts", V::of(std::int64_t(run.contacts))},
-       {"energy", V::object({{"initial", V::number(run.energyInitial)},
-                             {"final", V::number(run.energyFinal)},
-                             {"relative_drift", V::number(std::abs(run.energyFinal / run.energyInitial - 1))}})},
-       {"precision", V::of("double")}});
+  if (!done) {
+    const auto in = runIn<core::Quad>(options, masses, contacts, tEnd, stop, error);
+    if (!in) return error.isEmpty() ? kExitInterrupted : kExitInvalidInput;
+    if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
+    document = runDocument(masses, *in, report("quad"));
+  }
   if (io.document) {
     *io.document = std::move(document);
     return 0;
