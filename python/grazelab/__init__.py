@@ -266,10 +266,10 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         numbers), in double, with ``contacts`` and ``t_end``; the result has ``chain`` (with the
         common ``period`` of a commensurate chain), ``initial``, ``events`` (each with t, type, u,
         v_pre and the stopped mass's v_post), ``final``, ``stop_reason``, ``message``,
-        ``contacts`` and ``energy``; or from ``onepp`` = T, the 1IPP orbit of that period right
-        after its impact. No error estimate yet (``trust`` other than "auto" or "off" is
-        refused), no ``glo`` or ``samples`` yet; sticks hold the stopped mass until their
-        release, as for two masses.
+        ``contacts``, ``energy``, ``trust`` (the whole run again one precision up, compared
+        event by event) and ``precision``; or from ``onepp`` = T, the 1IPP orbit of that period
+        right after its impact. No ``glo`` or ``samples`` yet; sticks hold the stopped mass
+        until their release, as for two masses.
     glo_weights: lambda_1, ..., lambda_N (fastest mode first, summing to 1): a chain of N masses
         starts on GLO_lambda = sum_j lambda_j GLOM_j at its touch (GLOM_j: mode j alone, its top
         on the stop); ``glo_set`` says which weights graze.
@@ -279,7 +279,7 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
             raise ValueError("samples: not available for a chain of N masses yet")
         options = dict(gap=gap, precision=precision, state=state, contacts=contacts, t_end=t_end,
                        glo=glo, onepp=onepp, perturb=perturb, glo_weights=glo_weights,
-                       trust=None if trust in ("auto", "off") else trust,
+                       trust=trust,
                        **_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies,
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
         result, _, _, _ = _command("simulate", options, progress, document=True)

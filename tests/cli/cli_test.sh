@@ -314,7 +314,20 @@ EXPECT_WORD="4 numbers for 3 masses" expect_invalid simulate --masses 1,1,1 --sp
 EXPECT_WORD="past the stop" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,2,0,0
 EXPECT_WORD="not available for a chain" expect_invalid simulate --masses 1,1 --springs 1,1 --glo 0.5
 EXPECT_WORD="json only" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format csv
-EXPECT_WORD="error estimate" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --trust full
+EXPECT_WORD="not off, auto or full" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --trust most
+# the error estimate of N masses: a short run agrees with its shadow; a long chaotic one passes
+# its horizon, observed, within the run
+if expect_ok simulate --masses 1,0.7,0.4 --springs 1,0.8,0.6 --stop-mass 2 --state 1.4,1,1.3,0.1,0,-0.2 --contacts 6; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['trust']['verdict'] == 'ok' and d['trust']['horizon'] > d['final']['t'], d['trust']" || fail "the trust of a short N-mass run"
+fi
+if expect_ok simulate --masses 1,0.7,0.4 --springs 1,0.8,0.6 --stop-mass 2 --state 1.4,1,1.3,0.1,0,-0.2 --contacts 100 --trust full; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+t = d['trust']
+assert t['verdict'] == 'unreliable' and t['horizon'] < d['final']['t'] and 'observed' in t['horizon_method'], t" || fail "the trust of a chaotic N-mass run"
+fi
 # N masses in binary128: the same events as in double to double's precision, written with 36 digits
 if expect_ok simulate --masses 1,0.7,0.4 --springs 1,0.8,0.6 --stop-mass 2 --state 1.4,1,1.3,0.1,0,-0.2 --contacts 4 --precision quad; then
   cp "$out" "$work/quad.json"

@@ -13,6 +13,7 @@
 #include "core/orbits/chain_glo.h"
 #include "core/orbits/chain_onepp.h"
 #include "core/solver/chain_run.h"
+#include "core/solver/chain_trust.h"
 #include "exit_codes.h"
 #include "io/cli_input.h"
 #include "io/cli_output.h"
@@ -181,6 +182,7 @@ template <typename S>
 struct ChainRunIn {
   core::BasicChainState<S> start;
   core::BasicChainRun<S> run;
+  S tEnd = 0;
 };
 template <typename S>
 std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::MassChain& chain, long contacts,
@@ -196,11 +198,11 @@ std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::Mass
     }
     tEnd = S(*parsed.value);
   }
-  return ChainRunIn<S>{*start, core::runChain(chain, *start, contacts, tEnd, stop)};
+  return ChainRunIn<S>{*start, core::runChain(chain, *start, contacts, tEnd, stop), tEnd};
 }
 
 template <typename S>
-V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precision) {
+V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precision, const core::Trust& trust) {
   const core::BasicChainRun<S>& run = in.run;
   std::vector<V> events;
   for (const core::BasicChainEvent<S>& event : run.events) {
@@ -224,6 +226,7 @@ V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precisio
        {"energy", V::object({{"initial", V::number(run.energyInitial)},
                              {"final", V::number(run.energyFinal)},
                              {"relative_drift", V::number(S(abs(run.energyFinal / run.energyInitial - 1)))}})},
+       {"trust", trustValue(trust)},
        {"precision", std::move(precision)}});
 }
 
@@ -247,8 +250,10 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precisionText);
     return kExitInvalidInput;
   }
-  if (options.isSet("trust") && options.value("trust") != "off") {
-    error = "--trust: a chain of N masses has no error estimate yet (give --trust off)";
+  const auto trustMode = core::parseTrustMode(
+      (options.isSet("trust") ? options.value("trust") : QStringLiteral("auto")).toStdString());
+  if (!trustMode) {
+    error = QStringLiteral("--trust: '%1' is not off, auto or full").arg(options.value("trust"));
     return kExitInvalidInput;
   }
   const auto chain = parseMassChain(options, stop);
@@ -289,7 +294,11 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     if (!in) return error.isEmpty() ? kExitInterrupted : kExitInvalidInput;
     if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
     done = precisionText == "double" || in->run.stop != core::ChainStop::Undecided;
-    if (done) document = runDocument(masses, *in, report("double"));
+    if (done) {
+      const core::Trust trust = core::chainTrust(masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
+      if (stop.stop_requested()) return kExitInterrupted;
+      document = runDocument(masses, *in, report("double"), trust);
+    }
     else escalate("double", "long", in->run.tFinal);
   }
   if (!done && (precisionText == "auto" || precisionText == "long")) {
@@ -297,14 +306,20 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     if (!in) return error.isEmpty() ? kExitInterrupted : kExitInvalidInput;
     if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
     done = precisionText == "long" || in->run.stop != core::ChainStop::Undecided;
-    if (done) document = runDocument(masses, *in, report("long"));
+    if (done) {
+      const core::Trust trust = core::chainTrust(masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
+      if (stop.stop_requested()) return kExitInterrupted;
+      document = runDocument(masses, *in, report("long"), trust);
+    }
     else escalate("long", "quad", core::toDouble(in->run.tFinal));
   }
   if (!done) {
     const auto in = runIn<core::Quad>(options, masses, contacts, tEnd, stop, error);
     if (!in) return error.isEmpty() ? kExitInterrupted : kExitInvalidInput;
     if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
-    document = runDocument(masses, *in, report("quad"));
+    const core::Trust trust = core::chainTrust(masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
+    if (stop.stop_requested()) return kExitInterrupted;
+    document = runDocument(masses, *in, report("quad"), trust);
   }
   if (io.document) {
     *io.document = std::move(document);

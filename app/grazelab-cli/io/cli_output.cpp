@@ -117,17 +117,6 @@ std::string eventJson(const core::BasicEvent<S>& event) {
                  {"v2_post", number(event.after.v2)}});
 }
 
-JsonValue trustValue(const core::Trust& trust) {
-  const bool estimated = trust.verdict != core::Verdict::Unchecked;
-  auto estimate = [&](double value) { return estimated ? JsonValue::number(value) : JsonValue::null(); };
-  return JsonValue::object(
-      {{"estimated_state_error", estimate(trust.stateError)},
-       {"estimated_time_error", estimate(trust.timeError)},
-       {"horizon", estimate(trust.horizon)},
-       {"horizon_method", estimated ? JsonValue::of(trust.horizonMethod) : JsonValue::null()},
-       {"verdict", JsonValue::of(std::string(core::toString(trust.verdict)))},
-       {"reason", JsonValue::of(trust.reason)}});
-}
 
 // `initialUsed`: the start of a run raised to a higher precision, in that precision's digits
 // (the head, written before the raise, holds the lower one's); null when not raised
@@ -183,6 +172,18 @@ std::string endFields(const std::vector<JsonValue::Field>& fields, const std::st
 }
 
 }  // namespace
+
+JsonValue trustValue(const core::Trust& trust) {
+  const bool estimated = trust.verdict != core::Verdict::Unchecked;
+  auto estimate = [&](double value) { return estimated ? JsonValue::number(value) : JsonValue::null(); };
+  return JsonValue::object(
+      {{"estimated_state_error", estimate(trust.stateError)},
+       {"estimated_time_error", estimate(trust.timeError)},
+       {"horizon", estimate(trust.horizon)},
+       {"horizon_method", estimated ? JsonValue::of(trust.horizonMethod) : JsonValue::null()},
+       {"verdict", JsonValue::of(std::string(core::toString(trust.verdict)))},
+       {"reason", JsonValue::of(trust.reason)}});
+}
 
 template <typename S>
 JsonValue infoValue(const ModelInput<S>& model) {

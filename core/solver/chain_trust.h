@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <stop_token>
+
+#include "core/model/mass_chain.h"
+#include "core/solver/chain_run.h"
+#include "core/solver/trust.h"
+
+namespace grazelab::core {
+
+/// How far a run of a chain of N masses can be trusted (docs/model.md section 11): the same run
+/// in the shadow precision (ShadowScalar: double by long double, long double by binary128,
+/// binary128 by binary128 on the chain scaled 3x in length and 1/sqrt(3) in time, which changes
+/// every rounding and not the motion), compared event by event. The time error is the largest
+/// difference of an event's time, over the slowest period; the state error the largest of the
+/// displacements' and velocities' differences over their scales (the largest sizes met at the
+/// events), at each event. The horizon is where that error first passes kHorizonTolerance (an
+/// event of another type or a missing one counts as passing it): observed when the shadow shows
+/// it, else extrapolated from the error's growth between the first and the last event as if
+/// exponential, at most twice the run's time, so that the same run gets the same figure. Ok below
+/// kOkTolerance, degraded below kHorizonTolerance, unreliable past the horizon within the run.
+/// The whole run is shadowed (TrustMode Auto and Full alike); Off gives Unchecked.
+template <typename S>
+Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
+                 long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
+
+}  // namespace grazelab::core
