@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "core/orbits/chain_glo.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
