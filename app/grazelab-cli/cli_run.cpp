@@ -78,12 +78,7 @@ int massChainInfo(const QCommandLineParser& parser, const PrecisionOption& preci
     return kExitInterrupted;
   }
   if (!chain.value) return fail(io, chain.error);
-  JsonValue document = massChainInfoValue(chain.value->chain, chain.value->design);
-  if (io.document) {
-    *io.document = std::move(document);
-    return 0;
-  }
-  write(io, QByteArray::fromStdString(fieldPerLine(document, "  ", "") + "\n"));
+  emitDocument(io, massChainInfoValue(chain.value->chain, chain.value->design));
   return 0;
 }
 

@@ -120,6 +120,18 @@ std::pair<double, double> bisectEdge(const std::vector<int>& harmonics, const We
 
 }  // namespace
 
+GrazingModes grazingModes(const MassChain& chain) {
+  const ChainModes modes = chainModes(chain);
+  GrazingModes result;
+  for (int j = 0; j < int(modes.omega.size()); ++j) {
+    if (!modes.nodeAtStop[std::size_t(j)]) result.modes.push_back(j);
+  }
+  Eigen::VectorXd omega(Eigen::Index(result.modes.size()));
+  for (std::size_t i = 0; i < result.modes.size(); ++i) omega[Eigen::Index(i)] = modes.omega[result.modes[i]];
+  result.ratios = detectRatios(omega);
+  return result;
+}
+
 GrazingInterval grazingInterval(int fast, int slow) {
   const std::vector<int> harmonics{fast, slow};
   const auto weights = [](double lambda) { return std::vector<double>{1 - lambda, lambda}; };
@@ -128,6 +140,7 @@ GrazingInterval grazingInterval(int fast, int slow) {
   // flight rises at once (u_s'' > 0 at the touch), and below lambda = -1 it crosses where
   // cos(n1 theta) = 1 and cos(n2 theta) < 1 (theta = 2 pi / n1)
   const double flat = double(fast) * fast / (double(fast) * fast - double(slow) * slow);
+  interval.flatPoint = flat;
   std::tie(interval.high, interval.highOut) = bisectEdge(harmonics, weights, 1.0, flat + 1, flat);
   std::tie(interval.low, interval.lowOut) = bisectEdge(harmonics, weights, 0.0, -1.0);
   return interval;

@@ -47,8 +47,17 @@ GloGrazing gloGrazing(const std::vector<int>& harmonics, const std::vector<doubl
 struct GrazingInterval {
   double low = 0, lowOut = 0;
   double high = 1, highOut = 1;
+  double flatPoint = 0;  ///< n1^2 / (n1^2 - n2^2): where sum lambda_j n_j^2 = 0
 };
 GrazingInterval grazingInterval(int fast, int slow);
+
+/// The modes of a chain that have a GLOM (those that move the stopped mass; 0-based, fastest
+/// first) and the ratios of their frequencies: a grazing set is a question about these alone.
+struct GrazingModes {
+  std::vector<int> modes;
+  SpectrumRatios ratios;
+};
+GrazingModes grazingModes(const MassChain& chain);
 
 /// The grazing set of three modes (n1 > n2 > n3) in the plane of (lambda2, lambda3), lambda1 =
 /// 1 - lambda2 - lambda3: a bounded convex region holding the simplex. Its boundary along

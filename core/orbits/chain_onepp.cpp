@@ -88,10 +88,14 @@ std::vector<double> onePeriodicGrazingWeights(const MassChain& chain, double per
   return weights;
 }
 
+double chainOnePeriodicEnd(const MassChain& chain) {
+  const ChainDynamics dynamics = chainDynamics(chain);
+  return dynamics.period > 0 ? dynamics.period : 2 * std::numbers::pi / dynamics.omega.minCoeff();
+}
+
 std::vector<ChainFamilyRow> chainOnePeriodicFamily(const MassChain& chain, std::int64_t count,
                                                    std::stop_token stop) {
-  const ChainDynamics dynamics = chainDynamics(chain);
-  const double end = dynamics.period > 0 ? dynamics.period : 2 * std::numbers::pi / dynamics.omega.minCoeff();
+  const double end = chainOnePeriodicEnd(chain);
   std::vector<double> periods;
   for (std::int64_t k = 1; k <= count; ++k) periods.push_back(end * double(k) / double(count + 1));
   for (int k = 8; k <= 30; ++k) periods.push_back(end * (1 - std::ldexp(1.0, -k)));

@@ -35,6 +35,9 @@ std::vector<double> onePeriodicGrazingWeights(const MassChain& chain, double per
 /// The 1IPP family for `count` periods evenly spaced in (0, T_max), T_max k / (count + 1), and
 /// for T_max (1 - 2^-k), k = 8 ... 30, towards its grazing end, sorted by T: T_max is the common
 /// period of a commensurate chain, else the slowest mode's period. A stop ends it early.
+/// T_max: the common period of a commensurate chain, else its slowest mode's period.
+double chainOnePeriodicEnd(const MassChain& chain);
+
 struct ChainFamilyRow {
   double T = 0;
   ChainOnePeriodicOrbit orbit;

@@ -68,7 +68,7 @@ int runChainFamily(const QCommandLineParser& parser, const Io& io, std::stop_tok
   if (stop.stop_requested()) return kExitInterrupted;
   const core::ChainDynamics dynamics = core::chainDynamics(chain);
   const bool commensurate = dynamics.period > 0;
-  const double end = commensurate ? dynamics.period : 2 * std::numbers::pi / dynamics.omega.minCoeff();
+  const double end = core::chainOnePeriodicEnd(chain);
   // the grazing limit of Theorem 2.1: the GLO the data tend to as T -> T_max
   const std::vector<double> weights = core::onePeriodicGrazingWeights(chain, end);
   const core::ChainGloStart glo = core::chainGloStart(chain, weights);

@@ -287,47 +287,28 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     escalations.push_back(V::of(std::string("undecided in ") + from + " at t = " + core::formatScalar(when) +
                                 ": the whole run again in " + to));
   };
-  V document;
-  bool done = false;
-  if (precisionText == "auto" || precisionText == "double") {
-    const auto in = runIn<double>(options, masses, contacts, tEnd, stop, error);
-    if (!in) return error.isEmpty() ? kExitInterrupted : kExitInvalidInput;
+  // one rung of the ladder in S: the exit code when it ends the command, nothing to go up
+  const auto rung = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
+    const auto in = runIn<S>(options, masses, contacts, tEnd, stop, error);
+    if (!in) return kExitInvalidInput;
     if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
-    done = precisionText == "double" || in->run.stop != core::ChainStop::Undecided;
-    if (done) {
-      const core::Trust trust = core::chainTrust(masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
-      if (stop.stop_requested()) return kExitInterrupted;
-      document = runDocument(masses, *in, report("double"), trust);
+    if (!last && in->run.stop == core::ChainStop::Undecided) {
+      escalate(name, next, core::toDouble(in->run.tFinal));
+      return std::nullopt;
     }
-    else escalate("double", "long", in->run.tFinal);
-  }
-  if (!done && (precisionText == "auto" || precisionText == "long")) {
-    const auto in = runIn<long double>(options, masses, contacts, tEnd, stop, error);
-    if (!in) return error.isEmpty() ? kExitInterrupted : kExitInvalidInput;
-    if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
-    done = precisionText == "long" || in->run.stop != core::ChainStop::Undecided;
-    if (done) {
-      const core::Trust trust = core::chainTrust(masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
-      if (stop.stop_requested()) return kExitInterrupted;
-      document = runDocument(masses, *in, report("long"), trust);
-    }
-    else escalate("long", "quad", core::toDouble(in->run.tFinal));
-  }
-  if (!done) {
-    const auto in = runIn<core::Quad>(options, masses, contacts, tEnd, stop, error);
-    if (!in) return error.isEmpty() ? kExitInterrupted : kExitInvalidInput;
-    if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
     const core::Trust trust = core::chainTrust(masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
     if (stop.stop_requested()) return kExitInterrupted;
-    document = runDocument(masses, *in, report("quad"), trust);
-  }
-  if (io.document) {
-    *io.document = std::move(document);
+    emitDocument(io, runDocument(masses, *in, report(name), trust));
     return 0;
+  };
+  const bool automatic = precisionText == "auto";
+  if (automatic || precisionText == "double") {
+    if (const auto code = rung.operator()<double>("double", "long", !automatic)) return *code;
   }
-  const std::string text = fieldPerLine(document, "  ", "") + "\n";
-  std::fwrite(text.data(), 1, text.size(), io.out);
-  return 0;
+  if (automatic || precisionText == "long") {
+    if (const auto code = rung.operator()<long double>("long", "quad", !automatic)) return *code;
+  }
+  return rung.operator()<core::Quad>("quad", "", true).value_or(kExitInvalidInput);
 }
 
 }  // namespace grazelab::cli

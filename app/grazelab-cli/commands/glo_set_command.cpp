@@ -64,14 +64,9 @@ int runGloSet(const OptionValues& options, const Io& io, std::stop_token stop, Q
   if (stopped) return kExitInterrupted;
   if (!chain) return kExitInvalidInput;
   // the modes that move the stopped mass (the others have no GLOM) and their ratios
-  const core::ChainModes modes = core::chainModes(*chain);
-  std::vector<int> used;
-  for (int j = 0; j < int(modes.omega.size()); ++j) {
-    if (!modes.nodeAtStop[std::size_t(j)]) used.push_back(j);
-  }
-  Eigen::VectorXd omega(Eigen::Index(used.size()));
-  for (std::size_t i = 0; i < used.size(); ++i) omega[Eigen::Index(i)] = modes.omega[used[i]];
-  const core::SpectrumRatios ratios = core::detectRatios(omega);
+  const core::GrazingModes grazing = core::grazingModes(*chain);
+  const std::vector<int>& used = grazing.modes;
+  const core::SpectrumRatios& ratios = grazing.ratios;
   if (used.size() > 3) {
     error = QStringLiteral("glo-set answers for two or three modes: %1 modes of this chain move the stopped mass")
                 .arg(used.size());
@@ -94,7 +89,7 @@ int runGloSet(const OptionValues& options, const Io& io, std::stop_token stop, Q
   } else if (used.size() == 2) {
     const int fast = ratios.harmonics[0], slow = ratios.harmonics[1];
     const core::GrazingInterval interval = core::grazingInterval(fast, slow);
-    const double flat = double(fast) * fast / (double(fast) * fast - double(slow) * slow);
+    const double flat = interval.flatPoint;
     const std::string words =
         "(1 - lambda) GLOM_" + std::to_string(used[0] + 1) + " + lambda GLOM_" + std::to_string(used[1] + 1) +
         " is a grazing linear orbit exactly for lambda in [" + core::formatScalar(interval.low) + ", " +
@@ -128,16 +123,10 @@ int runGloSet(const OptionValues& options, const Io& io, std::stop_token stop, Q
                             "along rays from (1/3, 1/3): each point grazes, radius_out along its ray does not")}});
   }
   const double period = ratios.commensurate ? 2 * std::numbers::pi / ratios.omega0 : 0;
-  V document = V::object({{"chain", massChainValue(*chain, period)},
-                          {"modes", V::array(std::move(modeNumbers))},
-                          {"harmonics", V::array(std::move(harmonics))},
-                          {"grazing_set", std::move(set)}});
-  if (io.document) {
-    *io.document = std::move(document);
-    return 0;
-  }
-  const std::string text = fieldPerLine(document, "  ", "") + "\n";
-  std::fwrite(text.data(), 1, text.size(), io.out);
+  emitDocument(io, V::object({{"chain", massChainValue(*chain, period)},
+                              {"modes", V::array(std::move(modeNumbers))},
+                              {"harmonics", V::array(std::move(harmonics))},
+                              {"grazing_set", std::move(set)}}));
   return 0;
 }
 

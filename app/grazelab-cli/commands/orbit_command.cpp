@@ -154,13 +154,7 @@ Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, 
     error = text;
     return Outcome::Undecided;
   }
-  JsonValue document = orbitValue(*search.orbit, chain, precision);
-  if (io.document) {
-    *io.document = std::move(document);
-    return Outcome::Found;
-  }
-  const std::string json = fieldPerLine(document, "  ", "") + "\n";
-  std::fwrite(json.data(), 1, json.size(), io.out);
+  emitDocument(io, orbitValue(*search.orbit, chain, precision));
   return Outcome::Found;
 }
 

@@ -173,6 +173,15 @@ std::string endFields(const std::vector<JsonValue::Field>& fields, const std::st
 
 }  // namespace
 
+void emitDocument(const Io& io, JsonValue document) {
+  if (io.document) {
+    *io.document = std::move(document);
+    return;
+  }
+  const std::string text = fieldPerLine(document, "  ", "") + "\n";
+  std::fwrite(text.data(), 1, text.size(), io.out);
+}
+
 JsonValue trustValue(const core::Trust& trust) {
   const bool estimated = trust.verdict != core::Verdict::Unchecked;
   auto estimate = [&](double value) { return estimated ? JsonValue::number(value) : JsonValue::null(); };

@@ -34,6 +34,9 @@ JsonValue infoValue(const ModelInput<S>& model);
 /// a node at the stop, its harmonic number) and the frequencies' ratios, in double; for a
 /// designed chain also its `design`: the ratios asked, the design used and every design found.
 JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<ChainDesignChoice>& design = std::nullopt);
+/// A command's one JSON document: handed over as values (Io::document, the Python module) or
+/// written to stdout, one field per line.
+void emitDocument(const Io& io, JsonValue document);
 /// A run's error estimate: estimated_state_error, estimated_time_error, horizon, horizon_method
 /// (null when not estimated), verdict, reason.
 JsonValue trustValue(const core::Trust& trust);
