@@ -52,8 +52,9 @@ std::string stopMessage(core::ChainStop stop) {
       return "the frequencies are commensurate and the flight stays below the stop for a whole period: "
              "linear forever";
     case core::ChainStop::Undecided:
-      return "the stopped mass rests on the stop with no force either way within double's rounding (or, held "
-             "there, its force comes back to zero without a change of sign double can see)";
+      return "the stopped mass rests on the stop with no force either way within the precision's rounding "
+             "(or, held there, its force comes back to zero without a change of sign it can see): --precision "
+             "auto raises the run until it is decided";
     case core::ChainStop::SearchBudget:
       return "no contact (or release) was decided within 1000 slowest periods: the frequencies are not "
              "commensurate (give --t-end to search longer)";
@@ -61,8 +62,8 @@ std::string stopMessage(core::ChainStop stop) {
   }
 }
 
-// `count` finite numbers from a comma-separated list, or nothing with `error` set
-// numbers read in precision S
+// `count` finite numbers from a comma-separated list, read in precision S, or nothing with
+// `error` set
 template <typename S>
 std::optional<std::vector<S>> numberList(const OptionValues& options, const char* name, Eigen::Index count,
                                          const QString& layout, QString& error) {
