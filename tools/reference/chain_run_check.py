@@ -286,6 +286,14 @@ def check(cli, chain, state, contacts):
     return problems, printed["contacts"]
 
 
+def report(label, problems, contacts):
+    """Prints one run's line and its problems; returns (contacts, 1 if it failed else 0)."""
+    print(f"{label}: {contacts} contacts {'ok' if not problems else 'FAILED'}")
+    for problem in problems:
+        print("   ", problem)
+    return contacts, int(bool(problems))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--cli", required=True)
@@ -328,13 +336,9 @@ def main():
         state = [rng.uniform(-0.5, 0.5) * chain["gap"] for _ in range(n)] + [rng.uniform(-0.5, 0.5) for _ in range(n)]
         state[chain["stop"]] = min(state[chain["stop"]], 0.5 * chain["gap"])
         state[n + chain["stop"]] = 3 * chain["gap"] * max(1.0, 1 / chain["masses"][chain["stop"]]) ** 0.5
-        problems, contacts = check(args.cli, chain, state, 4 if quad else 12)
-        total += contacts
-        print(f"run {index}: {n} masses, stop on {chain['stop'] + 1}: {contacts} contacts "
-              f"{'ok' if not problems else 'FAILED'}")
-        for problem in problems:
-            print("   ", problem)
-        failures += bool(problems)
+        counted, failed = report(f"run {index}: {n} masses, stop on {chain['stop'] + 1}",
+                                 *check(args.cli, chain, state, 4 if quad else 12))
+        total, failures = total + counted, failures + failed
     # near-grazing starts: a pure mode j of the designed 3:2:1 chain whose top is pushed past the
     # stop by eps (two crossings sqrt(2 eps) / w apart), at rest position with its velocity
     chain = dict(cases[0])
@@ -345,12 +349,8 @@ def main():
         for eps in (1e-4, 1e-7):
             shape = [x / shapes[j][s] for x in shapes[j]]
             state = [0.0] * len(shape) + [float((1 + eps) * chain["gap"] * omega[j] * x) for x in shape]
-            problems, contacts = check(args.cli, dict(chain), state, 6)
-            total += contacts
-            print(f"near grazing: mode {j + 1} pushed {eps}: {contacts} contacts {'ok' if not problems else 'FAILED'}")
-            for problem in problems:
-                print("   ", problem)
-            failures += bool(problems)
+            counted, failed = report(f"near grazing: mode {j + 1} pushed {eps}", *check(args.cli, dict(chain), state, 6))
+            total, failures = total + counted, failures + failed
     # starts pressed on the stop: mass s at rest on it, a neighbour pushed past it (the first
     # stick at once, its release, and whatever follows), stops on the first, interior, last mass;
     # two cases of every three (each pressed run costs the reference some seconds)
@@ -366,13 +366,9 @@ def main():
         state[s] = chain["gap"]
         state[n + s] = 0.0
         state[neighbour] = 3 * chain["gap"] + 1
-        problems, contacts = check(args.cli, dict(chain), state, 4 if quad else 8)
-        total += contacts
-        print(f"pressed start {index}: {n} masses, stop on {s + 1}: {contacts} contacts "
-              f"{'ok' if not problems else 'FAILED'}")
-        for problem in problems:
-            print("   ", problem)
-        failures += bool(problems)
+        counted, failed = report(f"pressed start {index}: {n} masses, stop on {s + 1}",
+                                 *check(args.cli, dict(chain), state, 4 if quad else 8))
+        total, failures = total + counted, failures + failed
     # 1IPP orbits from `family --onepp` of the designed chains: the reference's flight from each
     # row's post-impact data first meets the stop at that row's T (so the orbit is periodic)
     for chain in [c for c in cases[:8] if c["stop"] == len(c["masses"]) - 1 and not quad]:
