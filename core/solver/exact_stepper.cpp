@@ -167,6 +167,15 @@ BasicState<S> ExactStepper<S>::segmentAt(const S& tau) const {
   return m_segmentState;
 }
 
+template <typename S>
+void ExactStepper<S>::segmentOnGrid(const S& first, const S& step, std::span<BasicState<S>> out) const {
+  if (m_flight && !m_stuck) {
+    m_flight->statesOnGrid(first - m_segmentStart, step, out);
+    return;
+  }
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = segmentAt(first + S(k) * step);
+}
+
 #define GRAZELAB_INSTANTIATE(S)  \
   template class ExactStepper<S>; \
   template S restoreEnergy<S>(const Chain<S>&, BasicState<S>&, const S&);

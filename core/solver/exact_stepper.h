@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <stop_token>
 
 #include "core/model/chain.h"
@@ -88,6 +89,9 @@ class ExactStepper {
 
   /// The state at absolute scaled time `tau` inside the motion of the last step.
   BasicState<S> segmentAt(const S& tau) const;
+  /// The states at absolute scaled times first + k step inside the motion of the last step:
+  /// dense display samples (a flight's by Flight::statesOnGrid, within 1e-14 of segmentAt).
+  void segmentOnGrid(const S& first, const S& step, std::span<BasicState<S>> out) const;
 
  private:
   const Chain<S>& m_chain;

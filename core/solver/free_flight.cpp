@@ -217,6 +217,41 @@ template <typename S>
 BasicState<S> Flight<S>::modalAt(const Anchor& anchor, const S& s, S* u1Residual) const {
   std::array<S, 2> sine, cosineMinusOne;
   modalPhases(s, sine, cosineMinusOne);
+  return stateFromPhases(anchor, sine, cosineMinusOne, u1Residual);
+}
+
+template <typename S>
+void Flight<S>::statesOnGrid(const S& first, const S& step, std::span<BasicState<S>> out) const {
+  constexpr std::size_t kExactEvery = 16;
+  const Anchor& start = m_anchors[0];
+  const S omega[2] = {m_chain->ratio, S(1)};
+  // the rotation by one step, as (sin, cos - 1): small steps keep their precision
+  std::array<S, 2> stepSine, stepCosineMinusOne;
+  for (int j = 0; j < 2; ++j) phaseOf(omega[j] * step, stepSine[j], stepCosineMinusOne[j]);
+  std::array<S, 2> sine{}, cosineMinusOne{};
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    if (k % kExactEvery == 0) {
+      // a resonant flight repeats after 2 pi: its phase from the offset to the nearest return
+      // keeps full precision over many periods (a detuned one's loses ~ its number of periods)
+      const S s = first + S(k) * step;
+      modalPhases(m_chain->resonant ? FlightTime<S>::nearest(s).offset : s, sine, cosineMinusOne);
+    } else {
+      for (int j = 0; j < 2; ++j) {
+        // (c, s) turned by (C, S): c' - 1 = (c - 1) + (C - 1) c - s S, s' = s C + c S
+        const S cosine = S(1) + cosineMinusOne[j];
+        const S turned = sine[j] + sine[j] * stepCosineMinusOne[j] + cosine * stepSine[j];
+        cosineMinusOne[j] += cosine * stepCosineMinusOne[j] - sine[j] * stepSine[j];
+        sine[j] = turned;
+      }
+    }
+    out[k] = stateFromPhases(start, sine, cosineMinusOne, nullptr);
+  }
+}
+
+template <typename S>
+BasicState<S> Flight<S>::stateFromPhases(const Anchor& anchor, const std::array<S, 2>& sine,
+                                         const std::array<S, 2>& cosineMinusOne,
+                                         S* u1Residual) const {
   const S omega[2] = {m_chain->ratio, S(1)};
   S dc[2], dRate[2];
   for (int j = 0; j < 2; ++j) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <utility>
 
 #include "core/model/chain.h"
@@ -56,6 +57,12 @@ class Flight {
   /// State at a flight time; `u1Residual`, when given, receives exact x1 minus the returned u1
   /// (the part of x1 below its rounding, from the start's residual and the last addition).
   BasicState<S> at(const FlightTime<S>& time, S* u1Residual = nullptr) const;
+  /// States at the offsets first + k step from the start, k = 0 .. out.size() - 1: dense display
+  /// samples. The modal form from the start, its phases advanced by a rotation (a few products
+  /// per sample instead of a sine and a cosine) and taken exactly again every 16 samples, so
+  /// that rounding grows over 16 rotations at most; equal to at() within 1e-14 of the motion's
+  /// size, not to its last bit near the stop (contacts are never found from samples).
+  void statesOnGrid(const S& first, const S& step, std::span<BasicState<S>> out) const;
   /// (x2 - delta, y2), evaluated without cancellation.
   std::pair<S, S> gapAndRate(const FlightTime<S>& time) const;
   /// x2'' at a flight time.
@@ -112,6 +119,9 @@ class Flight {
   // per-mode (sin(w_j s), cos(w_j s) - 1)
   void modalPhases(const S& s, std::array<S, 2>& sine, std::array<S, 2>& cosineMinusOne) const;
   BasicState<S> modalAt(const Anchor& anchor, const S& s, S* u1Residual) const;
+  // the state from the anchor's modal terms at phases (sin(w_j s), cos(w_j s) - 1)
+  BasicState<S> stateFromPhases(const Anchor& anchor, const std::array<S, 2>& sine,
+                                const std::array<S, 2>& cosineMinusOne, S* u1Residual) const;
   BasicState<S> taylorAt(const Anchor& anchor, const S& s, S* u1Residual) const;
 
   const Chain<S>* m_chain;

@@ -3,7 +3,9 @@
 #include "core/solver/recorder.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 
 namespace grazelab::core {
 
@@ -58,6 +60,34 @@ void Recorder<S>::sampleUntil(const ExactStepper<S>& stepper, const S& segmentSt
   if (!spec.wanted()) return;
   const double tSegment = toDouble(m_scale.toPhysicalTime(segmentStart));
   const double last = std::min(toDouble(m_scale.toPhysicalTime(tauEnd)), spec.tEnd);
+  if (spec.times.empty() && spec.spacing > 0) {
+    // the grid: the step's motion evaluated a batch at a time (a flight by rotation, several
+    // times faster than a state at a time: the explorer's animation samples a whole run)
+    constexpr std::int64_t kBatch = 64;
+    std::array<BasicState<S>, kBatch> states;
+    if (m_nextSampleTime < tSegment) {
+      // samples before the step's start are not its motion (a coarse jump skipped them)
+      m_nextSampleIndex =
+          std::max(m_nextSampleIndex, std::int64_t(std::ceil((tSegment - spec.tBegin) / spec.spacing)));
+      m_nextSampleTime = spec.timeOf(m_nextSampleIndex);
+    }
+    const S step = m_scale.toScaledTime(S(spec.spacing));
+    while (m_nextSampleTime <= last && !m_result.samplesTruncated) {
+      const std::int64_t due =
+          std::int64_t(std::floor((last - spec.tBegin) / spec.spacing)) - m_nextSampleIndex + 1;
+      const std::int64_t count = std::clamp<std::int64_t>(due, 1, kBatch);
+      stepper.segmentOnGrid(m_scale.toScaledTime(S(m_nextSampleTime)), step,
+                            std::span(states.data(), std::size_t(count)));
+      for (std::int64_t k = 0; k < count; ++k) {
+        const double t = spec.timeOf(m_nextSampleIndex);
+        if (t > last) break;
+        addSample(t, convertState<double>(m_scale.toPhysical(states[std::size_t(k)])));
+        ++m_nextSampleIndex;
+      }
+      m_nextSampleTime = spec.timeOf(m_nextSampleIndex);
+    }
+    return;
+  }
   while (m_nextSampleTime <= last && !m_result.samplesTruncated) {
     if (m_nextSampleTime >= tSegment) {
       const S tau = m_scale.toScaledTime(S(m_nextSampleTime));

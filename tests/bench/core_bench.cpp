@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 #include "core/model/chain.h"
 #include "core/solver/contact.h"
@@ -88,6 +89,32 @@ void NextContactResonant(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(NextContactResonant);
+
+// Dense display samples of one flight (the explorer's animation samples a whole run, 48 per
+// fast period): Arg(0) a state at a time (Flight::at, a sine and a cosine each), Arg(1) the
+// grid by rotation (Flight::statesOnGrid); items are samples.
+void FlightSamples(benchmark::State& state) {
+  const core::Model model = testing::resonantChain(0.5);
+  const core::Chain<double> chain = *core::makeChain(model).chain;
+  const core::State start = testing::nearGrazingStart(model, 0.5, 0.05);
+  const core::Scale<double> scale = core::chooseScale(chain, start);
+  const core::Flight<double> flight(chain, scale.gap, scale.toScaled(start));
+  const double step = 2 * M_PI / chain.ratio / 48;
+  std::vector<core::BasicState<double>> samples(96);
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      for (std::size_t k = 0; k < samples.size(); ++k) {
+        samples[k] = flight.at(core::FlightTime<double>::nearest(double(k) * step));
+      }
+    } else {
+      flight.statesOnGrid(0.0, step, samples);
+    }
+    benchmark::DoNotOptimize(samples.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * std::int64_t(samples.size()));
+}
+BENCHMARK(FlightSamples)->Arg(0)->Arg(1);
 
 // The explorer's default experiment as its worker computes it (core::experiments::run): the
 // run in pieces of 30 ms with its trace samples over 400 T2, then its error estimate; against

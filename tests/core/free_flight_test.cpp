@@ -8,7 +8,9 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "support/cases.h"
 #include "support/physical_flight.h"
@@ -79,6 +81,34 @@ TEST(FreeFlight, ResonantFlightRepeatsExactlyAfterT2) {
                        model.gap),
               1e-13)
         << chain.name;
+  }
+}
+
+// the display samples' rotation against the exact evaluation at every sample: a wrong turn
+// direction, a lost cos - 1 term or a stale restart shows at once; resonant and detuned chains,
+// a flight from the stop (the Taylor window) and one over several slow periods
+TEST(FreeFlight, GridSamplesAgreeWithTheExactStates) {
+  for (const Model& model : {testing::resonantChain(0.5), testing::resonantChain(0.2),
+                             testing::detunedChain()}) {
+    for (const State& start : {State{0.3, -0.7, 0.4, 0.9}, State{0.2, model.gap, 0.0, -0.4}}) {
+      const testing::PhysicalFlight flight(model, start);
+      const Flight<double>& scaled = flight.scaled();
+      const double size = std::max({std::abs(scaled.start().u1), std::abs(scaled.start().u2),
+                                    std::abs(scaled.start().v1), std::abs(scaled.start().v2)});
+      for (const double step : {0.0131, 2 * M_PI / 96, 0.7}) {
+        const double first = -0.05;
+        // more than two slow periods
+        std::vector<BasicState<double>> grid(std::size_t(4 * M_PI / step) + 20);
+        scaled.statesOnGrid(first, step, grid);
+        for (std::size_t k = 0; k < grid.size(); ++k) {
+          const double s = first + double(k) * step;
+          const BasicState<double> exact = scaled.at(FlightTime<double>::nearest(s));
+          // a detuned flight's phase carries the rounding of s itself
+          const double bound = flight.chain().resonant ? 2e-14 : 2e-14 + 4e-16 * s;
+          ASSERT_LT(distance(grid[k], exact, 1.0, size), bound) << "step " << step << ", s " << s;
+        }
+      }
+    }
   }
 }
 

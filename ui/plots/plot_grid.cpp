@@ -18,10 +18,15 @@ constexpr qreal kGridZ = 2;
 }  // namespace
 
 PlotGrid::PlotGrid(QChart* chart, QValueAxis* axisX, QValueAxis* axisY)
-    : QGraphicsItem(chart), m_chart(chart), m_axisX(axisX), m_axisY(axisY), m_pen(axisX->gridLinePen()) {
+    : QGraphicsItem(chart), m_chart(chart), m_axisX(axisX), m_axisY(axisY),
+      m_gridPen(axisX->gridLinePen()), m_axisPen(axisX->linePen()) {
   setZValue(kGridZ);
-  axisX->setGridLineVisible(false);
-  axisY->setGridLineVisible(false);
+  for (QValueAxis* axis : {axisX, axisY}) {
+    axis->setGridLineVisible(false);
+    // the axis line and its ticks (Qt Charts' "arrow" items: the ticks are not drawn by the
+    // light theme, so the line is all that shows)
+    axis->setLineVisible(false);
+  }
   m_area = chart->plotArea();
   QObject::connect(chart, &QChart::plotAreaChanged, chart, [this](const QRectF& area) {
     if (area == m_area) return;
@@ -70,7 +75,6 @@ void PlotGrid::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget
   painter->save();
   // one pixel, not smoothed across two: crisp, and a plain fill for the raster engine
   painter->setRenderHint(QPainter::Antialiasing, false);
-  painter->setPen(m_pen);
   const auto pixel = [](double position) { return std::floor(position) + 0.5; };
   std::vector<QLineF> lines;
   const double xSpan = m_axisX->max() - m_axisX->min();
@@ -83,7 +87,14 @@ void PlotGrid::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget
     const double y = pixel(area.bottom() - (value - m_axisY->min()) / ySpan * area.height());
     if (y >= area.top() && y <= area.bottom()) lines.emplace_back(area.left(), y, area.right(), y);
   }
+  painter->setPen(m_gridPen);
   painter->drawLines(lines.data(), int(lines.size()));
+  // the axes over the grid, where Qt Charts draws them
+  const double left = pixel(area.left());
+  const double bottom = pixel(area.bottom());
+  const QLineF axes[] = {{left, area.top(), left, bottom}, {left, bottom, area.right(), bottom}};
+  painter->setPen(m_axisPen);
+  painter->drawLines(axes, 2);
   painter->restore();
 }
 
