@@ -192,7 +192,7 @@ const std::vector<Command>& commands() {
        },
        {}},
       {"modes", kChain + QStringList{"precision", "out", "max-impacts", "energy-range"}, false, writesFiles(runModes), {}},
-      {"glo-set", kChain + kMassChain + QStringList{"precision", "directions"}, false,
+      {"glo-set", kChain + kMassChain + QStringList{"precision", "directions", "out"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
          const int code = runGloSet(parser, io, stop, error);

@@ -58,7 +58,7 @@ class InterruptWatcher {
 // off screen. The other commands need Qt Core only. No widgets either way.
 bool drawsPictures(int argc, char* argv[]) {
   for (int i = 1; i < argc; ++i) {
-    for (const char* command : {"report", "map", "merge", "family", "modes"}) {
+    for (const char* command : {"report", "map", "merge", "family", "modes", "glo-set"}) {
       if (std::strcmp(argv[i], command) == 0) return true;
     }
   }

@@ -69,7 +69,7 @@ takes = {
     "orbit": model + ["onepp", "format", "period", "impacts", "energy", "guess"],
     "modes": model + ["out", "max-impacts", "energy-range"],
     "glo-set": model + ["masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch",
-                        "directions"],
+                        "directions", "out"],
 }
 options = sorted({o for names in takes.values() for o in names})
 help_text = subprocess.run([cli, "--help"], capture_output=True, text=True).stdout
@@ -283,6 +283,29 @@ import json; d=json.load(open('$out'))
 b = d['grazing_set']['boundary']
 assert d['harmonics'] == [3, 2, 1] and len(b) == 6 and all(p['radius'] < p['radius_out'] for p in b), d" || fail "a three-mode grazing set"
 fi
+# the grazing set drawn: PNG and SVG whose text is the document printed (the set's ends)
+if expect_ok glo-set --masses 1,0.3 --frequencies 3:1 --out "$work/set31"; then
+  python3 -c "
+import json, zlib
+printed = json.load(open('$out'))
+assert printed['grazing_set']['high'] == 9 / 8, printed['grazing_set']
+png = open('$work/set31.png', 'rb').read()
+assert png[:8] == b'\\x89PNG\\r\\n\\x1a\\n', png[:8]
+at, texts = 8, {}
+while at < len(png):  # the PNG's text chunks
+    size = int.from_bytes(png[at:at + 4], 'big'); kind = png[at + 4:at + 8]; body = png[at + 8:at + 8 + size]
+    if kind == b'tEXt': key, _, value = body.partition(b'\\0'); texts[key] = value
+    if kind == b'zTXt': key, _, value = body.partition(b'\\0'); texts[key] = zlib.decompress(value[1:])
+    if kind == b'iTXt':
+        key, _, rest = body.partition(b'\\0'); flag = rest[0]; rest = rest[2:]
+        rest = rest.split(b'\\0', 2)[2]; texts[key] = zlib.decompress(rest) if flag else rest
+    at += 12 + size
+drawn = json.loads(texts[b'GrazeLabGrazingSet'])
+assert drawn['grazing_set'] == printed['grazing_set'], drawn
+svg = open('$work/set31.svg').read()
+assert svg.startswith('<?xml') and 'grazing set [0, 1.125]' in svg, svg[:200]" || fail "the grazing set's picture"
+fi
+EXPECT_WORD="a point" expect_invalid glo-set --masses 1 --springs 1 --out "$work/set1"
 # the 1IPP family of three masses: its files, its grazing limit; a run from one of its orbits
 if expect_ok family --onepp --masses 1,0.2,0.05 --frequencies 3:2:1 --count 50 --out "$work/fam3"; then
   python3 -c "

@@ -17,8 +17,11 @@ the core's certified window search or its split of the chain at the clamp.
 
 Checked on designed resonant chains (3:2:1, 4:3:1, 5:3:1, 4:3:2:1: springs from
 `grazelab-cli info --frequencies`), detuned and random chains of 2 to 5 masses, stops on the
-last and on interior masses, random starts and near-grazing ones: each contact time to 1e-10 of
-the chain's slowest period, its type, the stopped mass's velocity to 1e-9; on resonant chains
+last and on interior masses, random starts and near-grazing ones, chains of extreme scale (masses
+near 1e6 with springs near 1e-3 and a gap of 1e-4; masses near 1e-5, springs near 1e4, gap 1e3)
+and of six masses: each contact time to 1e-10 of
+the chain's slowest period, its type, the stopped mass's velocity to 1e-9 of the chain's speed
+scale (gap times its fastest frequency); on resonant chains
 each flight after an impact shorter than T. Starts pressed on the stop (sticks at once, on the
 first, interior and last masses): each release's time to 1e-10 of the slowest period and the
 released velocities to 1e-9. 1IPP orbits from `family --onepp` of the designed chains: the
@@ -218,6 +221,9 @@ def designed_springs(cli, masses, ratios):
 def check(cli, chain, state, contacts):
     chain["modes"] = modes(chain["masses"], chain["springs"], chain["right_spring"])
     slowest = 2 * mpmath.pi / min(chain["modes"][0])
+    # velocities relative to the chain's own scale (gap times its fastest frequency): a chain of
+    # heavy soft masses moves at 1e-8, a light stiff one at 1e8
+    speed_scale = float(chain["gap"] * max(chain["modes"][0]))
     printed = cli_run(cli, chain, state, contacts)
     problems = []
     n = len(chain["masses"])
@@ -250,7 +256,7 @@ def check(cli, chain, state, contacts):
                 break
             _, released = phase.state(when)
             for i in range(n):
-                if abs(event["v_pre"][i] - float(released[i])) > 1e-9 * (1 + abs(float(released[i]))):
+                if abs(event["v_pre"][i] - float(released[i])) > 1e-9 * (speed_scale + abs(float(released[i]))):
                     problems.append(f"event {k}: released v{i + 1} = {event['v_pre'][i]!r} against "
                                     f"{mpmath.nstr(released[i], 17)}")
             stuck = None
@@ -273,7 +279,7 @@ def check(cli, chain, state, contacts):
             problems.append(f"event {k}: {event['type']} against the reference's {kind}")
             break
         speed = flight.df(when)
-        if abs(event["v_pre"][s] - float(speed)) > 1e-9 * (1 + abs(float(speed))):
+        if abs(event["v_pre"][s] - float(speed)) > 1e-9 * (speed_scale + abs(float(speed))):
             problems.append(f"event {k}: v_s {event['v_pre'][s]!r} against {mpmath.nstr(speed, 17)}")
         if period and k > 0 and printed["events"][k - 1]["type"] == "impact" and not event["t"] - t < period:
             problems.append(f"event {k}: a flight of {event['t'] - t} after an impact, not < T = {period}")
@@ -395,6 +401,33 @@ def main():
         total += len(rows[::4])
         print(f"1IPP orbits of {n} masses: {len(rows[::4])} {'ok' if not bad else 'FAILED'}")
         failures += bool(bad)
+    # extreme scales and six masses (their own random stream: the runs above stay as they were):
+    # heavy soft chains with a tiny gap, light stiff ones with a huge gap, six masses stopped on
+    # the last, the first and an interior mass; the stopped mass thrown at the stop at 3 gap
+    # times the fastest frequency, so that every mode can carry it there
+    extreme = random.Random(args.seed + 1)
+    spread = lambda centre: centre * 10 ** extreme.uniform(-1, 1)
+    for label, chain in (
+            ("heavy and soft", dict(masses=[spread(1e6) for _ in range(4)], springs=[spread(1e-3) for _ in range(4)],
+                                    right_spring=0, stop=3, gap=1e-4)),
+            ("light and stiff", dict(masses=[spread(1e-5) for _ in range(3)], springs=[spread(1e4) for _ in range(3)],
+                                     right_spring=spread(1e4), stop=1, gap=1e3)),
+            ("six masses", dict(masses=[spread(1) for _ in range(6)], springs=[spread(1) for _ in range(6)],
+                                right_spring=0, stop=5, gap=1.0)),
+            ("six masses, walled", dict(masses=[spread(1) for _ in range(6)], springs=[spread(1) for _ in range(6)],
+                                        right_spring=spread(1), stop=0, gap=0.3)),
+            ("six masses, interior", dict(masses=[spread(1) for _ in range(6)], springs=[spread(1) for _ in range(6)],
+                                          right_spring=0, stop=3, gap=2.0))):
+        n = len(chain["masses"])
+        omega = modes(chain["masses"], chain["springs"], chain["right_spring"])[0]
+        fastest, slowest = float(max(omega)), float(min(omega))
+        state = ([extreme.uniform(-0.5, 0.5) * chain["gap"] for _ in range(n)]
+                 + [extreme.uniform(-0.5, 0.5) * chain["gap"] * slowest for _ in range(n)])
+        state[chain["stop"]] = min(state[chain["stop"]], 0.5 * chain["gap"])
+        state[n + chain["stop"]] = 3 * chain["gap"] * fastest
+        counted, failed = report(f"{label}: {n} masses, stop on {chain['stop'] + 1}",
+                                 *check(args.cli, chain, state, 4 if quad else 10))
+        total, failures = total + counted, failures + failed
     print(f"{total} contacts checked, {failures} runs failed")
     return 1 if failures or total == 0 else 0
 

@@ -193,7 +193,9 @@ QByteArray resultsCsv(std::vector<WorkPrecisionPoint> points, const Resolution& 
 
 void addReportOptions(QCommandLineParser& parser) {
   parser.addOptions({
-      {"out", "report, stability: the directory to write into (created if missing).", "DIR"},
+      {"out", "report, stability: the directory to write into (created if missing); map, merge, family, "
+              "modes: the PREFIX of the files written; glo-set: PREFIX.png and PREFIX.svg, the set drawn.",
+       "DIR|PREFIX"},
       {"methods", "report, stability: the methods to run, comma-separated (default: all): exact, "
                   "moreau-jean, moreau-jean-theta1, schatzman-paoli, dopri5-events, cvode-adams, "
                   "cvode-bdf, penalty.", "list"},

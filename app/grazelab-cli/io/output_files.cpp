@@ -2,7 +2,6 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "io/output_files.h"
 
-#include <QCommandLineParser>
 #include <QDir>
 #include <QFileInfo>
 
@@ -22,7 +21,7 @@ bool FileOutput::save(const QString& path, const QByteArray& bytes, QString& err
   return true;
 }
 
-std::optional<FileOutput> openFileOutput(const QCommandLineParser& parser, const Io& io,
+std::optional<FileOutput> openFileOutput(const OptionValues& parser, const Io& io,
                                          const char* files, const char* name, QString& error) {
   if (io.files && !parser.isSet("out")) return FileOutput{QString::fromUtf8(name), io.files};
   const auto prefix = parseOutputPrefix(parser, files, name, error);
@@ -30,7 +29,7 @@ std::optional<FileOutput> openFileOutput(const QCommandLineParser& parser, const
   return FileOutput{*prefix, nullptr};
 }
 
-std::optional<QString> parseOutputPrefix(const QCommandLineParser& parser, const char* files,
+std::optional<QString> parseOutputPrefix(const OptionValues& parser, const char* files,
                                          const char* example, QString& error) {
   if (!parser.isSet("out")) {
     error = QStringLiteral("--out PREFIX is required (the files are %1)").arg(files);

@@ -12,7 +12,8 @@
 #include <utility>
 #include <vector>
 
-class QCommandLineParser;
+#include "io/option_values.h"
+
 class QPainter;
 
 namespace grazelab::cli {
@@ -32,12 +33,12 @@ struct FileOutput {
 };
 
 /// The output of a command writing PREFIX.* files: --out (see parseOutputPrefix) or memory.
-std::optional<FileOutput> openFileOutput(const QCommandLineParser& parser, const Io& io,
+std::optional<FileOutput> openFileOutput(const OptionValues& parser, const Io& io,
                                          const char* files, const char* name, QString& error);
 
 /// --out PREFIX of a command that writes PREFIX.* files (`files` names them in the message for a
 /// missing --out; `example` ends the suggested prefix): not a folder; its folder made if missing.
-std::optional<QString> parseOutputPrefix(const QCommandLineParser& parser, const char* files,
+std::optional<QString> parseOutputPrefix(const OptionValues& parser, const char* files,
                                          const char* example, QString& error);
 
 /// Writes a file whole or not at all (QSaveFile); false with "cannot write PATH: reason".
