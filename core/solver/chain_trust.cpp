@@ -44,8 +44,11 @@ Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const 
     time = sqrt(H(3));
   }
   BasicChainState<H> shadowStart{start.u.template cast<H>() * length, start.v.template cast<H>() * (length * time)};
+  // auto: the first contacts only (a budget fixed by the precision), when the run has more
+  const bool capped = mode == TrustMode::Auto && run.contacts > chainShadowContacts<S>();
+  const long shadowContacts = capped ? chainShadowContacts<S>() : maxContacts;
   const BasicChainRun<H> shadow =
-      runChain(shadowChain, shadowStart, maxContacts, H(tEnd) / time, stop);
+      runChain(shadowChain, shadowStart, shadowContacts, capped ? H(0) : H(tEnd) / time, stop);
   if (stop.stop_requested()) {
     trust.reason = "the estimate was interrupted";
     return trust;
@@ -101,7 +104,7 @@ Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const 
       break;
     }
   }
-  if (!passed && run.events.size() != shadow.events.size() && run.stop == ChainStop::ContactLimit) {
+  if (!passed && !capped && run.events.size() != shadow.events.size() && run.stop == ChainStop::ContactLimit) {
     passed = true;
     passedAt = toDouble(run.tFinal);
     trust.reason = "the shadow run in " + precisionName<H>() + " ends with another number of events";
@@ -115,19 +118,29 @@ Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const 
     trust.verdict = Verdict::Unreliable;
     return trust;
   }
-  // not passed within the run: extrapolated as exponential growth from the first to the last
-  // nonzero error, at most twice the run's time
-  double horizon = 2 * std::max(tFinal, lastTime);
+  // not passed where the shadow went: extrapolated as exponential growth from the first to the
+  // last nonzero error, at most twice the time compared (the run's, when shadowed whole)
+  const double compared = capped ? lastTime : std::max(tFinal, lastTime);
+  double horizon = 2 * compared;
   if (firstError > 0 && lastError > firstError && lastTime > firstTime) {
     const double rate = std::log(lastError / firstError) / (lastTime - firstTime);
     horizon = std::min(horizon, lastTime + std::log(kHorizonTolerance / lastError) / rate);
   }
   trust.horizon = horizon;
-  trust.horizonMethod += "extrapolated (exponential growth, at most twice the run's time)";
+  if (capped) {
+    trust.horizonMethod += "the first " + std::to_string(trust.shadowEvents) +
+                           " events (--trust auto keeps it cheap; full shadows the whole run); ";
+  }
+  trust.horizonMethod += capped ? "extrapolated (exponential growth, at most twice the time compared)"
+                                : "extrapolated (exponential growth, at most twice the run's time)";
   const double worst = std::max(trust.stateError, trust.timeError);
   trust.verdict = worst < kOkTolerance ? Verdict::Ok : Verdict::Degraded;
   trust.reason = "the shadow run in " + precisionName<H>() + " agrees to " + formatScalar(worst) + " over " +
                  std::to_string(trust.shadowEvents) + " events";
+  if (horizon < tFinal) {
+    trust.verdict = Verdict::Unreliable;
+    trust.reason += ", but its extrapolated horizon t = " + formatScalar(horizon) + " falls within the run";
+  }
   return trust;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <stop_token>
+#include <type_traits>
 
 #include "core/model/mass_chain.h"
 #include "core/solver/chain_run.h"
@@ -21,7 +22,19 @@ namespace grazelab::core {
 /// it, else extrapolated from the error's growth between the first and the last event as if
 /// exponential, at most twice the run's time, so that the same run gets the same figure. Ok below
 /// kOkTolerance, degraded below kHorizonTolerance, unreliable past the horizon within the run.
-/// The whole run is shadowed (TrustMode Auto and Full alike); Off gives Unchecked.
+/// Full shadows the whole run; Auto its first chainShadowContacts<S>() contacts, a number fixed
+/// by the precision alone (the same run gets the same estimate), its horizon then extrapolated
+/// from them (at most twice the time they cover; unreliable when that falls within the run);
+/// Off gives Unchecked.
+template <typename S>
+constexpr long chainShadowContacts() {
+  // about the run's own cost or less: a long double shadow costs about what a double run does,
+  // a binary128 one about twenty times a long double run, a binary128 one what the run does
+  if constexpr (std::is_same_v<S, double>) return 1L << 16;
+  else if constexpr (std::is_same_v<S, long double>) return 1L << 11;
+  else return 1L << 14;
+}
+
 template <typename S>
 Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
                  long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});

@@ -266,8 +266,8 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         numbers), in double, with ``contacts`` and ``t_end``; the result has ``chain`` (with the
         common ``period`` of a commensurate chain), ``initial``, ``events`` (each with t, type, u,
         v_pre and the stopped mass's v_post), ``final``, ``stop_reason``, ``message``,
-        ``contacts``, ``energy``, ``trust`` (the whole run again one precision up, compared
-        event by event) and ``precision``; or from ``onepp`` = T, the 1IPP orbit of that period
+        ``contacts``, ``energy``, ``trust`` (the run again one precision up, compared event
+        by event: the whole run with trust="full", its first contacts with "auto") and ``precision``; or from ``onepp`` = T, the 1IPP orbit of that period
         right after its impact. No ``glo`` or ``samples`` yet; sticks hold the stopped mass
         until their release, as for two masses.
     glo_weights: lambda_1, ..., lambda_N (fastest mode first, summing to 1): a chain of N masses

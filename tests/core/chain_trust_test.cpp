@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace grazelab::core {
 namespace {
@@ -54,6 +55,31 @@ TEST(ChainTrust, TheHorizonOfAChaoticRunIsWhereItPartsFromBinary128) {
   }
   EXPECT_LT(before, 1e-5);
   EXPECT_GT(after, 1e-6);
+}
+
+// auto shadows a long run's first contacts only (a number fixed by the precision), full all of
+// them; both agree on a periodic run, and auto's horizon stays within twice the time it compared
+TEST(ChainTrust, AutoShadowsTheFirstContactsOfALongRun) {
+  // one mass bouncing on its stop: periodic, its errors grow slowly
+  const MassChain chain{{2.0}, {3.0}, 0, 0, 0.5};
+  const BasicChainState<long double> start{Eigen::Matrix<long double, 1, 1>(0.1L),
+                                           Eigen::Matrix<long double, 1, 1>(1.7L)};
+  const long contacts = chainShadowContacts<long double>() + 300;
+  const BasicChainRun<long double> run = runChain(chain, start, contacts);
+  ASSERT_EQ(run.contacts, contacts);
+  const Trust automatic = chainTrust(chain, start, run, contacts, 0.0L, TrustMode::Auto);
+  EXPECT_EQ(automatic.shadowEvents, chainShadowContacts<long double>());
+  EXPECT_NE(automatic.horizonMethod.find("the first"), std::string::npos) << automatic.horizonMethod;
+  EXPECT_NE(automatic.verdict, Verdict::Unchecked);
+  const double compared = double(run.events[std::size_t(automatic.shadowEvents) - 1].t);
+  EXPECT_LE(automatic.horizon, 2 * compared * (1 + 1e-15));
+  EXPECT_EQ(automatic.verdict == Verdict::Unreliable, automatic.horizon < double(run.tFinal)) << automatic.reason;
+  const Trust full = chainTrust(chain, start, run, contacts, 0.0L, TrustMode::Full);
+  EXPECT_EQ(full.shadowEvents, contacts);
+  EXPECT_EQ(full.horizonMethod.find("the first"), std::string::npos);
+  EXPECT_LE(automatic.stateError, full.stateError);  // a part of the same comparison
+  const Trust again = chainTrust(chain, start, run, contacts, 0.0L, TrustMode::Auto);
+  EXPECT_EQ(again.horizon, automatic.horizon);
 }
 
 }  // namespace
