@@ -142,7 +142,11 @@ const std::vector<Command>& commands() {
              std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return parser.isSet(name); })) {
            if (!parser.isSet("masses")) return fail(io, "--springs, --right-spring, --stop-mass, --frequencies and --glo-weights describe a chain given by --masses");
            const int code = runChainSimulate(parser, io, stop, error);
-           if (code == kExitInterrupted) std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
+           // a streamed run says what it wrote before the interrupt
+           if (code == kExitInterrupted) {
+             std::fprintf(io.messages, "grazelab-cli: interrupted: %s\n",
+                          error.isEmpty() ? "nothing written" : qPrintable(error));
+           }
            return code == kExitInvalidInput ? fail(io, error) : code;
          }
          const auto precision = parsePrecisionOption(parser, error);

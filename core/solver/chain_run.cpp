@@ -51,7 +51,8 @@ std::optional<S> releaseJerk(const MassChain& chain, const BasicChainState<S>& a
 
 template <typename S>
 BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
-                          std::type_identity_t<S> tEnd, std::stop_token stop) {
+                          std::type_identity_t<S> tEnd, std::stop_token stop,
+                          const ChainEventSink<std::type_identity_t<S>>& sink) {
   using State = BasicChainState<S>;
   const BasicChainDynamics<S> dynamics = chainDynamicsIn<S>(chain);
   const int s = dynamics.stop;
@@ -67,9 +68,23 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
     run.energyFinal = chainEnergy(chain, at);
     return run;
   };
+  // the last event, kept here as well: a streamed run holds no list to look back in
+  bool anyEvent = false;
+  EventType lastType = EventType::Impact;
+  S lastTime = 0;
   const auto record = [&](EventType type, const State& at, const ChainVector<S>& vBefore, const S& when) {
-    run.events.push_back({when, type, at.u, vBefore, at.v[s]});
+    if (sink) sink({when, type, at.u, vBefore, at.v[s]});
+    else run.events.push_back({when, type, at.u, vBefore, at.v[s]});
+    anyEvent = true;
+    lastType = type;
+    lastTime = when;
     if (isContact(type)) ++run.contacts;
+    switch (type) {
+      case EventType::Impact: ++run.impacts; break;
+      case EventType::Grazing: ++run.grazings; break;
+      case EventType::Stick: ++run.sticks; break;
+      case EventType::Release: ++run.releases; break;
+    }
   };
   std::optional<S> jerk;  // set when the flight starts at a release
   // reused from flight to flight: no allocation for them once sized
@@ -82,7 +97,7 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
     const BasicStopForce<S> force = stopForce(chain, state);
     const bool onStop = state.u[s] == dynamics.gap && state.v[s] == 0;
     if (onStop && !jerk && force.value > force.error) {
-      if (run.events.empty() || run.events.back().type != EventType::Stick || run.events.back().t != t) {
+      if (!anyEvent || lastType != EventType::Stick || lastTime != t) {
         record(EventType::Stick, state, state.v, t);
       }
       const BasicChainStuckPhase<S> phase = stuckPhase(chain, state);
@@ -153,7 +168,7 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
 #define GRAZELAB_INSTANTIATE(S)                                                                                  \
   template S chainEnergy<S>(const MassChain&, const BasicChainState<S>&);                                         \
   template BasicChainRun<S> runChain<S>(const MassChain&, const BasicChainState<S>&, long, std::type_identity_t<S>, \
-                                        std::stop_token);
+                                        std::stop_token, const ChainEventSink<S>&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

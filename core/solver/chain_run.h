@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <stop_token>
 #include <type_traits>
 #include <vector>
@@ -39,8 +40,10 @@ enum class ChainStop {
 
 template <typename S>
 struct BasicChainRun {
-  std::vector<BasicChainEvent<S>> events;  ///< contacts and releases, in time order
+  std::vector<BasicChainEvent<S>> events;  ///< contacts and releases, in time order (none kept
+                                           ///< when they went to a ChainEventSink)
   long contacts = 0;                       ///< the events that are contacts (all but releases)
+  long impacts = 0, grazings = 0, sticks = 0, releases = 0;  ///< the events by type
   BasicChainState<S> final;                ///< the state at `tFinal`
   S tFinal = 0;
   ChainStop stop = ChainStop::ContactLimit;
@@ -48,6 +51,11 @@ struct BasicChainRun {
   S energyFinal = 0;
 };
 using ChainRun = BasicChainRun<double>;
+
+/// Where a run's events go as they happen, instead of BasicChainRun::events: a run that streams
+/// them holds none (its memory stays bounded however many contacts it makes).
+template <typename S>
+using ChainEventSink = std::function<void(const BasicChainEvent<S>&)>;
 
 /// The energy 1/2 v^T M v + 1/2 u^T K u of a chain's state.
 template <typename S>
@@ -60,9 +68,11 @@ S chainEnergy(const MassChain& chain, const BasicChainState<S>& state);
 /// clamp into two exact chains) until the force on it falls to zero (releaseOf, certified); up
 /// to `maxContacts` contacts or `tEnd` (0: none). A search without `tEnd` (a flight of a
 /// non-commensurate chain, a stuck phase) goes up to 1000 of the slowest periods. In the
-/// precision of `start`: double, long double or binary128 (Quad).
+/// precision of `start`: double, long double or binary128 (Quad). With a `sink`, each event is
+/// handed to it as it happens and none is kept.
 template <typename S>
 BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
-                          std::type_identity_t<S> tEnd = 0, std::stop_token stop = {});
+                          std::type_identity_t<S> tEnd = 0, std::stop_token stop = {},
+                          const ChainEventSink<std::type_identity_t<S>>& sink = {});
 
 }  // namespace grazelab::core

@@ -22,95 +22,100 @@ std::string precisionName() {
 }  // namespace
 
 template <typename S>
-Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
-                 long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop) {
-  using H = ShadowScalar<S>;
-  Trust trust;
+ChainTrustCheck<S>::ChainTrustCheck(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
+                                    std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop)
+    : m_mode(mode) {
   if (mode == TrustMode::Off) {
-    trust.reason = "not estimated (--trust off)";
-    return trust;
+    m_trust.reason = "not estimated (--trust off)";
+    return;
   }
   // the shadow: one precision up; binary128 by binary128 on the chain scaled 3x in length and
   // 1/sqrt(3) in time (springs x 3, masses as given: w x sqrt(3))
-  const bool scaled = std::is_same_v<S, H>;
+  m_scaled = std::is_same_v<S, H>;
   MassChain shadowChain = chain;
-  H length = 1, time = 1;  // shadow = primary x length, shadow times = primary times / time
-  if (scaled) {
+  if (m_scaled) {
     for (double& k : shadowChain.springs) k *= 3;
     shadowChain.rightSpring *= 3;
     shadowChain.gap *= 3;
-    length = 3;
+    m_length = 3;
     using std::sqrt;
-    time = sqrt(H(3));
+    m_time = sqrt(H(3));
   }
-  BasicChainState<H> shadowStart{start.u.template cast<H>() * length, start.v.template cast<H>() * (length * time)};
-  // auto: the first contacts only (a budget fixed by the precision), when the run has more
-  const bool capped = mode == TrustMode::Auto && run.contacts > chainShadowContacts<S>();
-  const long shadowContacts = capped ? chainShadowContacts<S>() : maxContacts;
-  const BasicChainRun<H> shadow =
-      runChain(shadowChain, shadowStart, shadowContacts, capped ? H(0) : H(tEnd) / time, stop);
+  const BasicChainState<H> shadowStart{start.u.template cast<H>() * m_length,
+                                       start.v.template cast<H>() * (m_length * m_time)};
+  // auto: the first contacts only (a budget fixed by the precision), when the run may make more
+  if (mode == TrustMode::Auto && maxContacts > chainShadowContacts<S>()) m_cap = chainShadowContacts<S>();
+  m_shadow = runChain(shadowChain, shadowStart, m_cap > 0 ? m_cap : maxContacts, H(tEnd) / m_time, stop);
   if (stop.stop_requested()) {
-    trust.reason = "the estimate was interrupted";
-    return trust;
+    m_interrupted = true;
+    m_trust.reason = "the estimate was interrupted";
+    return;
   }
-  // the scales: the largest |u_i| and |v_i| at the run's events (the gap at least)
-  const Eigen::Index n = start.u.size();
-  double uScale = chain.gap, vScale = 0;
-  for (const BasicChainEvent<S>& event : run.events) {
-    uScale = std::max(uScale, toDouble(event.u.cwiseAbs().maxCoeff()));
-    vScale = std::max(vScale, toDouble(event.vBefore.cwiseAbs().maxCoeff()));
+  // the scales: the largest |u_i| and |v_i| at the shadow's events (the gap at least)
+  m_uScale = chain.gap;
+  double vScale = 0;
+  for (const BasicChainEvent<H>& event : m_shadow.events) {
+    m_uScale = std::max(m_uScale, toDouble(event.u.cwiseAbs().maxCoeff() / m_length));
+    vScale = std::max(vScale, toDouble(event.vBefore.cwiseAbs().maxCoeff() / (m_length * m_time)));
   }
-  if (!(vScale > 0)) vScale = 1;
-  const ChainModes modes = chainModes(chain);
-  const double slowest = twoPi<double>() / modes.omega.minCoeff();
-  double firstError = 0, firstTime = 0, lastError = 0, lastTime = 0;
-  bool passed = false;
-  double passedAt = 0;
-  const std::size_t count = std::min(run.events.size(), shadow.events.size());
-  for (std::size_t k = 0; k < count; ++k) {
-    const BasicChainEvent<S>& a = run.events[k];
-    const BasicChainEvent<H>& b = shadow.events[k];
-    const double t = toDouble(a.t);
-    if (a.type != b.type) {
-      trust.reason = "the shadow run in " + precisionName<H>() + " meets another event at t = " + formatScalar(t) +
+  m_vScale = vScale > 0 ? vScale : 1.0;
+  m_slowest = twoPi<double>() / chainModes(chain).omega.minCoeff();
+}
+
+template <typename S>
+void ChainTrustCheck<S>::observe(const BasicChainEvent<S>& a) {
+  if (m_mode == TrustMode::Off || m_interrupted || m_passed) return;
+  const std::size_t k = m_observed++;
+  if (k >= m_shadow.events.size()) return;  // past the shadow: its end is judged in finish()
+  const BasicChainEvent<H>& b = m_shadow.events[k];
+  const double t = toDouble(a.t);
+  if (a.type != b.type) {
+    m_trust.reason = "the shadow run in " + precisionName<H>() + " meets another event at t = " + formatScalar(t) +
                      " (" + std::string(toString(a.type)) + " against " + std::string(toString(b.type)) + ")";
-      passed = true;
-      passedAt = t;
-      break;
-    }
-    double stateError = 0;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      using std::abs;
-      stateError = std::max(stateError, toDouble(abs(H(a.u[i]) - b.u[i] / length)) / uScale);
-      stateError = std::max(stateError, toDouble(abs(H(a.vBefore[i]) - b.vBefore[i] / (length * time))) / vScale);
-    }
-    using std::abs;
-    const double timeError = toDouble(abs(H(a.t) - b.t * time)) / slowest;
-    const double error = std::max(stateError, timeError);
-    trust.timeError = std::max(trust.timeError, timeError);
-    trust.stateError = std::max(trust.stateError, stateError);
-    ++trust.shadowEvents;
-    if (error > 0 && firstError == 0) {
-      firstError = error;
-      firstTime = t;
-    }
-    lastError = error;
-    lastTime = t;
-    if (error > kHorizonTolerance) {
-      passed = true;
-      passedAt = t;
-      trust.reason = "the shadow run in " + precisionName<H>() + " parts from the run by " + formatScalar(error) +
-                     " at t = " + formatScalar(t);
-      break;
-    }
+    m_passed = true;
+    m_passedAt = t;
+    return;
   }
-  if (!passed && !capped && run.events.size() != shadow.events.size() && run.stop == ChainStop::ContactLimit) {
+  using std::abs;
+  double stateError = 0;
+  for (Eigen::Index i = 0; i < a.u.size(); ++i) {
+    stateError = std::max(stateError, toDouble(abs(H(a.u[i]) - b.u[i] / m_length)) / m_uScale);
+    stateError = std::max(stateError, toDouble(abs(H(a.vBefore[i]) - b.vBefore[i] / (m_length * m_time))) / m_vScale);
+  }
+  const double timeError = toDouble(abs(H(a.t) - b.t * m_time)) / m_slowest;
+  const double error = std::max(stateError, timeError);
+  m_trust.timeError = std::max(m_trust.timeError, timeError);
+  m_trust.stateError = std::max(m_trust.stateError, stateError);
+  ++m_trust.shadowEvents;
+  if (error > 0 && m_firstError == 0) {
+    m_firstError = error;
+    m_firstTime = t;
+  }
+  m_lastError = error;
+  m_lastTime = t;
+  if (error > kHorizonTolerance) {
+    m_passed = true;
+    m_passedAt = t;
+    m_trust.reason = "the shadow run in " + precisionName<H>() + " parts from the run by " + formatScalar(error) +
+                     " at t = " + formatScalar(t);
+  }
+}
+
+template <typename S>
+Trust ChainTrustCheck<S>::finish(const BasicChainRun<S>& run) const {
+  Trust trust = m_trust;
+  if (m_mode == TrustMode::Off || m_interrupted) return trust;
+  // the shadow stopped at its budget before the run's end: the rest is extrapolated
+  const bool capped = m_cap > 0 && run.contacts > m_cap;
+  bool passed = m_passed;
+  double passedAt = m_passedAt;
+  if (!passed && !capped && m_observed != m_shadow.events.size() && run.stop == ChainStop::ContactLimit) {
     passed = true;
     passedAt = toDouble(run.tFinal);
     trust.reason = "the shadow run in " + precisionName<H>() + " ends with another number of events";
   }
   const double tFinal = toDouble(run.tFinal);
-  trust.horizonMethod = "shadow run in " + precisionName<H>() + (scaled ? " (chain scaled 3x)" : "") + "; ";
+  trust.horizonMethod = "shadow run in " + precisionName<H>() + (m_scaled ? " (chain scaled 3x)" : "") + "; ";
   if (passed) {
     trust.horizon = passedAt;
     trust.horizonObserved = true;
@@ -120,11 +125,11 @@ Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const 
   }
   // not passed where the shadow went: extrapolated as exponential growth from the first to the
   // last nonzero error, at most twice the time compared (the run's, when shadowed whole)
-  const double compared = capped ? lastTime : std::max(tFinal, lastTime);
+  const double compared = capped ? m_lastTime : std::max(tFinal, m_lastTime);
   double horizon = 2 * compared;
-  if (firstError > 0 && lastError > firstError && lastTime > firstTime) {
-    const double rate = std::log(lastError / firstError) / (lastTime - firstTime);
-    horizon = std::min(horizon, lastTime + std::log(kHorizonTolerance / lastError) / rate);
+  if (m_firstError > 0 && m_lastError > m_firstError && m_lastTime > m_firstTime) {
+    const double rate = std::log(m_lastError / m_firstError) / (m_lastTime - m_firstTime);
+    horizon = std::min(horizon, m_lastTime + std::log(kHorizonTolerance / m_lastError) / rate);
   }
   trust.horizon = horizon;
   if (capped) {
@@ -144,9 +149,18 @@ Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const 
   return trust;
 }
 
+template <typename S>
+Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
+                 long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop) {
+  ChainTrustCheck<S> check(chain, start, maxContacts, tEnd, mode, stop);
+  for (const BasicChainEvent<S>& event : run.events) check.observe(event);
+  return check.finish(run);
+}
+
 #define GRAZELAB_INSTANTIATE(S)                                                                       \
   template Trust chainTrust<S>(const MassChain&, const BasicChainState<S>&, const BasicChainRun<S>&, long, \
-                               std::type_identity_t<S>, TrustMode, std::stop_token);
+                               std::type_identity_t<S>, TrustMode, std::stop_token);                      \
+  template class ChainTrustCheck<S>;
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

@@ -39,4 +39,35 @@ template <typename S>
 Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
                  long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
 
+/// chainTrust for a run whose events stream (a ChainEventSink): the shadow is run first and
+/// held (Auto: its first chainShadowContacts<S>() contacts at most; Full: all of them), each of
+/// the run's events is compared as it comes, and the estimate is made when the run has ended.
+/// The scales are the largest sizes met at the shadow's events (the gap at least).
+template <typename S>
+class ChainTrustCheck {
+ public:
+  using H = ShadowScalar<S>;
+  ChainTrustCheck(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
+                  std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
+  /// The run's next event.
+  void observe(const BasicChainEvent<S>& event);
+  /// The estimate of the run that has ended (its events all observed; its own list unused).
+  Trust finish(const BasicChainRun<S>& run) const;
+
+ private:
+  TrustMode m_mode;
+  bool m_interrupted = false;
+  bool m_scaled = false;
+  H m_length = 1, m_time = 1;  // shadow = primary x length, shadow times = primary times / time
+  BasicChainRun<H> m_shadow;
+  long m_cap = 0;  // the shadow's contact budget (Auto), 0 when it ran as far as the run may
+  double m_uScale = 0, m_vScale = 1, m_slowest = 1;
+  // the comparison so far
+  std::size_t m_observed = 0;
+  double m_firstError = 0, m_firstTime = 0, m_lastError = 0, m_lastTime = 0;
+  bool m_passed = false;
+  double m_passedAt = 0;
+  Trust m_trust;
+};
+
 }  // namespace grazelab::core

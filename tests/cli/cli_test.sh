@@ -336,7 +336,7 @@ EXPECT_WORD="--state u1" expect_invalid simulate --masses 1,0.5 --springs 1,0.5
 EXPECT_WORD="4 numbers for 3 masses" expect_invalid simulate --masses 1,1,1 --springs 1,1,1 --state 0,0,0,0
 EXPECT_WORD="past the stop" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,2,0,0
 EXPECT_WORD="not available for a chain" expect_invalid simulate --masses 1,1 --springs 1,1 --glo 0.5
-EXPECT_WORD="json only" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format csv
+EXPECT_WORD="not json, csv or summary" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format ndjson
 EXPECT_WORD="not off, auto or full" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --trust most
 # the error estimate of N masses: a short run agrees with its shadow; a long chaotic one passes
 # its horizon, observed, within the run
@@ -362,16 +362,23 @@ assert q['precision']['used'] == 'quad' and d['precision']['used'] == 'double', 
 assert [e['type'] for e in q['events']] == [e['type'] for e in d['events']]
 assert all(abs(a['t'] - b['t']) < 1e-12 * (1 + b['t']) for a, b in zip(q['events'], d['events']))
 assert q['energy']['relative_drift'] < 1e-30, q['energy']
-assert len(json.load(open('$work/quad.json'), parse_float=str)['events'][1]['t']) > 30" || fail "N masses in binary128"
+assert len(json.load(open('$work/quad.json'), parse_float=str)['events'][1]['t']) > 30
+# the start read in binary128: 1.4 to its 34 digits, not the double nearest 1.4
+from decimal import Decimal
+u1 = Decimal(json.load(open('$work/quad.json'), parse_float=str)['initial']['u'][0])
+assert abs(u1 - Decimal('1.4')) < Decimal('1e-33') and abs(Decimal(1.4) - Decimal('1.4')) > Decimal('1e-17'), u1" || fail "N masses in binary128"
   fi
 fi
 EXPECT_WORD="in double for now" expect_invalid simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --glo-weights 0.5,0.3,0.2 --precision quad
 # --precision auto: mass 1 pressed one ulp past the gap is undecided in double (the force on
 # mass 2 is within its rounding); the run again in long double, then in binary128, gives the
-# two-mass solver's events (which decides it in double from its exact residuals)
-if expect_ok simulate --masses 1,0.5 --springs 1,0.5 --state 1.0000000000000002,1,0,0 --contacts 3; then
+# two-mass solver's events (which decides it in double from its exact residuals). The ulp is
+# written exactly (1 + 2^-52): each precision reads the start again, and 1.0000000000000002
+# would be another number in long double
+ulp="1.0000000000000002220446049250313080847263336181640625"
+if expect_ok simulate --masses 1,0.5 --springs 1,0.5 --state $ulp,1,0,0 --contacts 3; then
   cp "$out" "$work/auto.json"
-  if expect_ok simulate --state 1.0000000000000002,1,0,0 --contacts 3 --trust off; then
+  if expect_ok simulate --state $ulp,1,0,0 --contacts 3 --trust off; then
     python3 -c "
 import json
 n = json.load(open('$work/auto.json')); two = json.load(open('$out'))
@@ -404,6 +411,43 @@ expect_interrupted INT 1000 "a run of ten masses" -- simulate --masses 1,1,1,1,1
   --springs 1,1,1,1,1,1,1,1,1,1 --state 0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,2 --contacts 1000000
 expect_interrupted INT 1000 "a seven-mass design" -- info --masses 1,0.8,0.6,0.5,0.4,0.3,0.2 \
   --frequencies 7:6:5:4:3:2:1
+
+# N masses streamed: csv rows equal the json's events digit for digit, one row per event; the
+# summary counts them by type; bad input writes no header; an interrupted csv of 10^8 contacts
+# (past json's 10^6) ends within 1 s on a complete row, the stderr line naming how many
+nm="--masses 1,0.7,0.4 --springs 1,0.8,0.6 --stop-mass 2 --state 1.4,1,1.3,0.1,0,-0.2 --contacts 9"
+if expect_ok simulate $nm; then
+  cp "$out" "$work/n.json"
+  if expect_ok simulate $nm --format csv --trust off; then
+    cp "$out" "$work/n.csv"
+    if expect_ok simulate $nm --format summary; then
+      python3 -c "
+import csv, json
+d = json.load(open('$work/n.json'), parse_float=str, parse_int=str)
+rows = list(csv.DictReader(open('$work/n.csv')))
+assert len(rows) == len(d['events']) > 9, (len(rows), len(d['events']))
+for row, e in zip(rows, d['events']):
+    assert row['t'] == e['t'] and row['type'] == e['type'] and row['v2_post'] == e['v_post'], (row, e)
+    assert [row[f'u{i}'] for i in (1, 2, 3)] == e['u'] and [row[f'v{i}_pre'] for i in (1, 2, 3)] == e['v_pre'], (row, e)
+summary = open('$out').read()
+kinds = [e['type'] for e in d['events']]
+counts = 'contacts       %s (impacts %d, grazings %d, sticks %d; releases %d)' % (
+    d['contacts'], kinds.count('impact'), kinds.count('grazing'), kinds.count('stick'), kinds.count('release'))
+assert counts in summary, (counts, summary)
+assert 'trust          ' + json.load(open('$work/n.json'))['trust']['verdict'] in summary, summary
+assert 'final          t=' + d['final']['t'] in summary, summary" || fail "N masses streamed as csv and summary"
+    fi
+  fi
+fi
+"$cli" simulate --masses 1,1 --springs 1,1 --state 0,2,0,0 --format csv >"$out" 2>"$err"
+[ "$?" -eq 2 ] && [ ! -s "$out" ] || fail "a refused N-mass csv wrote something"
+EXPECT_WORD="error estimate" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format csv --trust full
+EXPECT_WORD="at most 1000000" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format summary --trust full --contacts 2000000
+expect_interrupted INT 1000 "a streamed run of three masses" -- simulate --masses 1,0.2,0.05 --frequencies 3:2:1 \
+  --glo-weights 0.5,0.3,0.2 --perturb 0,0,0,0,0,-0.01 --contacts 100000000 --format csv
+[ "$(tail -c1 "$out" | od -An -c | tr -d ' ')" = '\n' ] || fail "interrupted N-mass csv ends mid-record"
+[ "$(($(wc -l <"$out") - 1))" -gt 1000 ] && grep -q "the $(($(wc -l <"$out") - 1)) events before it are written" "$err" ||
+  fail "interrupted N-mass csv: $(wc -l <"$out") lines, $(cat "$err")"
 
 # SIGTERM during a long detuned search, shadow run included, ends the command within 2 s with
 # complete records and exit 130

@@ -17,6 +17,7 @@
 #include "core/model/chain_design.h"
 #include "core/model/model.h"
 #include "core/solver/chain_stick.h"
+#include "core/solver/chain_trust.h"
 #include "core/solver/simulate.h"
 
 namespace grazelab::core {
@@ -318,6 +319,43 @@ TEST(ChainRun, ScalesWithTheChain) {
     EXPECT_NEAR(b.events[k].t / (10 * a.events[k].t), 1.0, 1e-9) << k;
     EXPECT_EQ(a.events[k].type, b.events[k].type);
   }
+}
+
+// a run that streams its events (a sink) makes the same run as one that keeps them, holds none,
+// and counts them by type; its error estimate, compared event by event as they come, is the one
+// of the kept run (sticks and releases included: a pressed start)
+TEST(ChainRun, AStreamedRunIsTheKeptRun) {
+  const MassChain chain{{1.0, 0.7, 0.4}, {1.0, 0.8, 0.6}, 0, 2, 1.0};
+  const ChainState start{Eigen::Vector3d(1.4, 1.0, 1.3), Eigen::Vector3d(0.1, 0.0, -0.2)};
+  const ChainRun kept = runChain(chain, start, 40);
+  std::vector<ChainEvent> streamed;
+  ChainTrustCheck<double> check(chain, start, 40, 0.0, TrustMode::Full);
+  const ChainRun run = runChain(chain, start, 40, 0.0, {}, [&](const ChainEvent& event) {
+    streamed.push_back(event);
+    check.observe(event);
+  });
+  EXPECT_TRUE(run.events.empty());
+  ASSERT_EQ(streamed.size(), kept.events.size());
+  long byType[4] = {0, 0, 0, 0};
+  for (std::size_t k = 0; k < streamed.size(); ++k) {
+    EXPECT_EQ(streamed[k].t, kept.events[k].t);
+    EXPECT_EQ(streamed[k].type, kept.events[k].type);
+    EXPECT_EQ(streamed[k].u, kept.events[k].u);
+    ++byType[int(streamed[k].type)];
+  }
+  EXPECT_GT(kept.sticks, 0);
+  EXPECT_GT(kept.releases, 0);
+  EXPECT_EQ(run.impacts, byType[int(EventType::Impact)]);
+  EXPECT_EQ(run.grazings, byType[int(EventType::Grazing)]);
+  EXPECT_EQ(run.sticks, byType[int(EventType::Stick)]);
+  EXPECT_EQ(run.releases, byType[int(EventType::Release)]);
+  EXPECT_EQ(run.contacts, run.impacts + run.grazings + run.sticks);
+  EXPECT_EQ(run.final.u, kept.final.u);
+  const Trust whole = chainTrust(chain, start, kept, 40, 0.0, TrustMode::Full);
+  const Trust online = check.finish(run);
+  EXPECT_EQ(online.verdict, whole.verdict);
+  EXPECT_EQ(online.horizon, whole.horizon);
+  EXPECT_EQ(online.stateError, whole.stateError);
 }
 
 }  // namespace

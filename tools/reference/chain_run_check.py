@@ -33,6 +33,7 @@ every time to 1e-28 of the slowest period, on the chains that are not commensura
 """
 import argparse
 import csv
+import decimal
 import json
 import os
 import random
@@ -204,7 +205,10 @@ TOLERANCE = 1e-10     # contact and release times, in slowest periods
 def cli_run(cli, chain, state, contacts):
     argv = [cli, "simulate", "--masses", ",".join(repr(m) for m in chain["masses"]),
             "--springs", ",".join(repr(k) for k in chain["springs"]),
-            "--stop-mass", str(chain["stop"] + 1), "--state", ",".join(repr(x) for x in state),
+            "--stop-mass", str(chain["stop"] + 1),
+            # each double's exact decimal value: the CLI reads the start in the run's precision,
+            # and this text is that double in every precision (repr's shortest text is not)
+            "--state", ",".join(str(decimal.Decimal(x)) for x in state),
             "--contacts", str(contacts), "--gap", repr(chain["gap"]), "--precision", PRECISION]
     if chain["right_spring"]:
         argv += ["--right-spring", repr(chain["right_spring"])]

@@ -4,7 +4,10 @@
 
 #include <QStringList>
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -24,8 +27,12 @@ namespace {
 
 using V = JsonValue;
 
-// the events of a chain of N masses are kept in memory until the document is written
+// the events of a chain of N masses are kept in memory until the json document is written (csv
+// and summary stream them: no bound but the run's own)
 constexpr long kMaxChainContacts = 1'000'000;
+constexpr long kMaxStreamedContacts = std::numeric_limits<long>::max();
+
+enum class ChainFormat { Json, Csv, Summary };
 
 template <typename S>
 V numbers(const core::ChainVector<S>& values) {
@@ -103,8 +110,9 @@ const char* refusalWords(core::OnePeriodicRefusal refusal) {
 }
 
 // The run's start in S: --state, --glo-weights (GLO_lambda at its touch) or --onepp T (the 1IPP
-// orbit's data right after its impact), plus --perturb. Every number is read as a double, as the
-// chain is (MassChain holds doubles): S is the arithmetic of the run on those binary inputs
+// orbit's data right after its impact), plus --perturb. --state and --perturb are read in S (0.1
+// is 0.1 to binary128's digits); the chain's numbers are read as doubles (MassChain holds
+// doubles), the run's arithmetic on them is S
 template <typename S>
 std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, const core::MassChain& chain,
                                                    QString& error) {
@@ -136,10 +144,10 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
     }
     start = {orbit.postImpact.u.cast<S>(), orbit.postImpact.v.cast<S>()};
   } else if (options.isSet("state")) {
-    const auto values = numberList<double>(options, "state", 2 * n, "u1,...,uN,v1,...,vN", error);
+    const auto values = numberList<S>(options, "state", 2 * n, "u1,...,uN,v1,...,vN", error);
     if (!values) return std::nullopt;
-    start = {Eigen::Map<const Eigen::VectorXd>(values->data(), n).cast<S>(),
-             Eigen::Map<const Eigen::VectorXd>(values->data() + n, n).cast<S>()};
+    using Vector = core::ChainVector<S>;
+    start = {Eigen::Map<const Vector>(values->data(), n), Eigen::Map<const Vector>(values->data() + n, n)};
   } else {
     const auto weights = numberList<double>(options, "glo-weights", n, "l1,...,lN", error);
     if (!weights) return std::nullopt;
@@ -162,10 +170,11 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
     start = {glo.state.u.cast<S>(), glo.state.v.cast<S>()};
   }
   if (options.isSet("perturb")) {
-    const auto delta = numberList<double>(options, "perturb", 2 * n, "du1,...,duN,dv1,...,dvN", error);
+    const auto delta = numberList<S>(options, "perturb", 2 * n, "du1,...,duN,dv1,...,dvN", error);
     if (!delta) return std::nullopt;
-    start.u += Eigen::Map<const Eigen::VectorXd>(delta->data(), n).cast<S>();
-    start.v += Eigen::Map<const Eigen::VectorXd>(delta->data() + n, n).cast<S>();
+    using Vector = core::ChainVector<S>;
+    start.u += Eigen::Map<const Vector>(delta->data(), n);
+    start.v += Eigen::Map<const Vector>(delta->data() + n, n);
   }
   if (start.u[s] > S(chain.gap)) {
     error = QStringLiteral("the start has u%1 = %2 past the stop (gap %3)")
@@ -185,21 +194,26 @@ struct ChainRunIn {
   core::BasicChainRun<S> run;
   S tEnd = 0;
 };
+// --t-end in S (0: none given), or nothing with `error` set
+template <typename S>
+std::optional<S> timeLimit(const QString& tEndText, QString& error) {
+  if (tEndText.isEmpty()) return S(0);
+  const core::ParsedScalar<S> parsed = core::parseScalar<S>(tEndText.toStdString());
+  if (!parsed.value || !(*parsed.value > 0) || !core::isFinite(*parsed.value)) {
+    error = QStringLiteral("--t-end: '%1' is not a positive finite time").arg(tEndText);
+    return std::nullopt;
+  }
+  return *parsed.value;
+}
+
 template <typename S>
 std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::MassChain& chain, long contacts,
                                    const QString& tEndText, std::stop_token stop, QString& error) {
   const auto start = chainStart<S>(options, chain, error);
   if (!start) return std::nullopt;
-  S tEnd = 0;
-  if (!tEndText.isEmpty()) {
-    const core::ParsedScalar<double> parsed = core::parseScalar<double>(tEndText.toStdString());
-    if (!parsed.value || !(*parsed.value > 0) || !std::isfinite(*parsed.value)) {
-      error = QStringLiteral("--t-end: '%1' is not a positive finite time").arg(tEndText);
-      return std::nullopt;
-    }
-    tEnd = S(*parsed.value);
-  }
-  return ChainRunIn<S>{*start, core::runChain(chain, *start, contacts, tEnd, stop), tEnd};
+  const auto tEnd = timeLimit<S>(tEndText, error);
+  if (!tEnd) return std::nullopt;
+  return ChainRunIn<S>{*start, core::runChain(chain, *start, contacts, *tEnd, stop), *tEnd};
 }
 
 template <typename S>
@@ -231,6 +245,75 @@ V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precisio
        {"precision", std::move(precision)}});
 }
 
+template <typename S>
+std::string listText(const core::ChainVector<S>& values) {
+  std::string text = "[";
+  for (Eigen::Index i = 0; i < values.size(); ++i) text.append(i > 0 ? ", " : "").append(core::formatScalar(values[i]));
+  return text.append("]");
+}
+
+// The csv's header: t, type, u1..uN, v1_pre..vN_pre and the stopped mass's v_post
+// (strings appended, not "literal" + string: GCC 12 warns falsely on that at -O2)
+std::string csvHeader(Eigen::Index n, int stopped) {
+  std::string header = "t,type";
+  for (Eigen::Index i = 1; i <= n; ++i) header.append(",u").append(std::to_string(i));
+  for (Eigen::Index i = 1; i <= n; ++i) header.append(",v").append(std::to_string(i)).append("_pre");
+  return header.append(",v").append(std::to_string(stopped)).append("_post\n");
+}
+
+template <typename S>
+std::string csvLine(const core::BasicChainEvent<S>& event) {
+  std::string line = core::formatScalar(event.t);
+  line.append(",").append(core::toString(event.type));
+  for (Eigen::Index i = 0; i < event.u.size(); ++i) line.append(",").append(core::formatScalar(event.u[i]));
+  for (Eigen::Index i = 0; i < event.vBefore.size(); ++i) line.append(",").append(core::formatScalar(event.vBefore[i]));
+  return line.append(",").append(core::formatScalar(event.vAfter)).append("\n");
+}
+
+// The summary of a streamed run: what the json says but its events, as the two-mass summary
+// lays it out
+template <typename S>
+std::string summaryText(const core::MassChain& masses, const ChainRunIn<S>& in, double seconds,
+                        const std::string& precision, const std::vector<std::string>& raised,
+                        const core::Trust& trust) {
+  const core::BasicChainRun<S>& run = in.run;
+  const core::ChainDynamics dynamics = core::chainDynamics(masses);
+  std::string text;
+  text += "chain          masses " + listText<double>(Eigen::Map<const Eigen::VectorXd>(masses.masses.data(), masses.size())) +
+          " springs " + listText<double>(Eigen::Map<const Eigen::VectorXd>(masses.springs.data(), masses.size())) +
+          (masses.rightSpring > 0 ? " right spring " + core::formatScalar(masses.rightSpring) : std::string()) +
+          " stop on mass " + std::to_string(masses.stopped()) + " gap " + core::formatScalar(masses.gap) +
+          (dynamics.period > 0 ? " (commensurate; T=" + core::formatScalar(dynamics.period) + ")" : std::string(" (not commensurate)")) + "\n";
+  text += "start          u=" + listText<S>(in.start.u) + " v=" + listText<S>(in.start.v) + "\n";
+  text += "contacts       " + std::to_string(run.contacts) + " (impacts " + std::to_string(run.impacts) + ", grazings " +
+          std::to_string(run.grazings) + ", sticks " + std::to_string(run.sticks) + "; releases " +
+          std::to_string(run.releases) + ")\n";
+  const std::string message = stopMessage(run.stop);
+  text += "stopped        " + stopName(run.stop) + " at t = " + core::formatScalar(run.tFinal) +
+          (message.empty() ? std::string() : " (" + message + ")") + "\n";
+  char line[200];
+  std::snprintf(line, sizeof line, "wall time      %.4g s (%.4g contacts/s)\n", seconds,
+                seconds > 0 ? double(run.contacts) / seconds : 0.0);
+  text += line;
+  using std::abs;
+  std::snprintf(line, sizeof line, "energy drift   %.3g (relative, final against initial)\n",
+                core::toDouble(abs(run.energyFinal / run.energyInitial - 1)));
+  text += line;
+  text += "precision      " + precision + "\n";
+  for (const std::string& rung : raised) text += "               raised: " + rung + "\n";
+  text += "trust          " + std::string(core::toString(trust.verdict)) + ": " + trust.reason + "\n";
+  if (trust.verdict != core::Verdict::Unchecked) {
+    std::snprintf(line, sizeof line,
+                  "               state error %.2g, contact time error %.2g of the slowest period; holds 1e-6 %s t = %.4g (%s)\n",
+                  trust.stateError, trust.timeError, trust.horizonObserved ? "until" : "at least until", trust.horizon,
+                  trust.horizonObserved ? "observed" : "extrapolated");
+    text += line;
+  }
+  text += "final          t=" + core::formatScalar(run.tFinal) + " u=" + listText<S>(run.final.u) +
+          " v=" + listText<S>(run.final.v) + "\n";
+  return text;
+}
+
 }  // namespace
 
 int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
@@ -242,8 +325,16 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       return kExitInvalidInput;
     }
   }
-  if (options.isSet("format") && options.value("format") != "json") {
-    error = "--format: a chain of N masses is written as json only for now";
+  const QString formatText = options.isSet("format") ? options.value("format") : QStringLiteral("json");
+  if (!QStringList{"json", "csv", "summary"}.contains(formatText)) {
+    error = QStringLiteral("--format: '%1' is not json, csv or summary for a chain of N masses").arg(formatText);
+    return kExitInvalidInput;
+  }
+  const ChainFormat format = formatText == "csv" ? ChainFormat::Csv
+                             : formatText == "summary" ? ChainFormat::Summary
+                                                       : ChainFormat::Json;
+  if (format == ChainFormat::Csv && options.isSet("trust") && options.value("trust") != "off") {
+    error = "--trust: --format csv writes the events alone; the error estimate is in --format summary or json";
     return kExitInvalidInput;
   }
   const QString precisionText = options.isSet("precision") ? options.value("precision") : QStringLiteral("auto");
@@ -264,16 +355,24 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     return kExitInvalidInput;
   }
   const core::MassChain& masses = chain.value->chain;
-  long contacts = options.isSet("t-end") ? kMaxChainContacts : 100;
+  const long maxContacts = format == ChainFormat::Json ? kMaxChainContacts : kMaxStreamedContacts;
+  long contacts = options.isSet("t-end") ? maxContacts : 100;
   if (options.isSet("contacts")) {
     bool ok = false;
     contacts = options.value("contacts").toLong(&ok);
-    if (!ok || contacts < 0 || contacts > kMaxChainContacts) {
-      error = QStringLiteral("--contacts: a whole number from 0 to %1 for a chain of N masses (its events are "
-                             "kept until written)")
+    if (!ok || contacts < 0 || contacts > maxContacts) {
+      error = QStringLiteral("--contacts: a whole number from 0 to %1 for a chain of N masses in json (its events are "
+                             "kept until written; --format csv or summary stream them, with no bound)")
                   .arg(kMaxChainContacts);
       return kExitInvalidInput;
     }
+  }
+  const auto fullTrustHeld = [&] { return *trustMode == core::TrustMode::Full && contacts > kMaxChainContacts; };
+  if (format == ChainFormat::Summary && fullTrustHeld()) {
+    error = QStringLiteral("--trust full holds the shadow run's events: at most %1 contacts (auto shadows the first "
+                           "ones and stays bounded)")
+                .arg(kMaxChainContacts);
+    return kExitInvalidInput;
   }
   const QString tEnd = options.isSet("t-end") ? options.value("t-end") : QString();
   // --precision auto: double, and the whole run again one precision up while it ends undecided
@@ -288,8 +387,58 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     escalations.push_back(V::of(std::string("undecided in ") + from + " at t = " + core::formatScalar(when) +
                                 ": the whole run again in " + to));
   };
+  // csv: the events written so far (a raised run writes only those past them); the header once
+  // the start is known to be good (bad input writes nothing)
+  long written = 0;
+  bool headed = false;
+  // a streamed rung (csv, summary): the events go out as they come, none is held
+  const auto streamed = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
+    const auto start = chainStart<S>(options, masses, error);
+    if (!start) return kExitInvalidInput;
+    const auto limit = timeLimit<S>(tEnd, error);
+    if (!limit) return kExitInvalidInput;
+    if (format == ChainFormat::Csv && !headed) {
+      std::fputs(csvHeader(masses.size(), masses.stopped()).c_str(), io.out);
+      headed = true;
+    }
+    std::optional<core::ChainTrustCheck<S>> check;
+    if (format == ChainFormat::Summary) check.emplace(masses, *start, contacts, *limit, *trustMode, stop);
+    if (stop.stop_requested()) return kExitInterrupted;
+    const auto began = std::chrono::steady_clock::now();  // the run's own time, its shadow apart
+    long seen = 0;
+    const core::ChainEventSink<S> sink = [&](const core::BasicChainEvent<S>& event) {
+      if (check) check->observe(event);
+      if (format == ChainFormat::Csv && ++seen > written) {
+        std::fputs(csvLine(event).c_str(), io.out);
+        ++written;
+      }
+    };
+    const ChainRunIn<S> in{*start, core::runChain(masses, *start, contacts, *limit, stop, sink), *limit};
+    std::fflush(io.out);
+    if (in.run.stop == core::ChainStop::Cancelled) {
+      if (format == ChainFormat::Csv) error = QStringLiteral("the %1 events before it are written").arg(written);
+      return kExitInterrupted;
+    }
+    if (!last && in.run.stop == core::ChainStop::Undecided) {
+      escalate(name, next, core::toDouble(in.run.tFinal));
+      return std::nullopt;
+    }
+    if (format == ChainFormat::Summary) {
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+      std::vector<std::string> raised;
+      for (const V& line : escalations) raised.push_back(line.text);
+      const std::string used = std::string(name) + (precisionText == "auto" ? " (auto)" : "");
+      std::fputs(summaryText(masses, in, seconds, used, raised, check->finish(in.run)).c_str(), io.out);
+      std::fflush(io.out);
+    } else if (!escalations.empty()) {
+      std::fprintf(io.messages, "grazelab-cli: note: the run was raised to %s (undecided below it); the events "
+                   "written before agree with it to the lower precision\n", name);
+    }
+    return 0;
+  };
   // one rung of the ladder in S: the exit code when it ends the command, nothing to go up
   const auto rung = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
+    if (format != ChainFormat::Json) return streamed.template operator()<S>(name, next, last);
     const auto in = runIn<S>(options, masses, contacts, tEnd, stop, error);
     if (!in) return kExitInvalidInput;
     if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
