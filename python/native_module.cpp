@@ -213,7 +213,10 @@ bool deliverProgress(ProgressMailbox& mailbox, const py::object& progress,
 py::object documentToPython(const grazelab::cli::JsonValue& document, const py::object& resultType,
                             bool withDecimals, std::vector<grazelab::core::Sample>&& samples) {
   py::object result = grazelab::python::toPython(document, resultType);
-  if (result.contains("samples_truncated")) result["samples"] = sampleArray(std::move(samples));
+  // a two-mass run's samples come apart from its document (a chain of N masses lists its own)
+  if (result.contains("samples_truncated") && !result.contains("samples")) {
+    result["samples"] = sampleArray(std::move(samples));
+  }
   if (withDecimals) {
     result["decimal"] = grazelab::python::toPython(document, resultType, true);
   }

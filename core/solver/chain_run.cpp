@@ -52,7 +52,8 @@ std::optional<S> releaseJerk(const MassChain& chain, const BasicChainState<S>& a
 template <typename S>
 BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
                           std::type_identity_t<S> tEnd, std::stop_token stop,
-                          const ChainEventSink<std::type_identity_t<S>>& sink) {
+                          const ChainEventSink<std::type_identity_t<S>>& sink,
+                          const ChainSampling<std::type_identity_t<S>>& sampling) {
   using State = BasicChainState<S>;
   const BasicChainDynamics<S> dynamics = chainDynamicsIn<S>(chain);
   const int s = dynamics.stop;
@@ -86,6 +87,23 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
       case EventType::Release: ++run.releases; break;
     }
   };
+  // dense samples: the next one due, handed out over each piece of motion [from, until) (its
+  // end too when the run ends there), `at(offset)` the piece's closed form
+  std::size_t sampleIndex = 0;
+  const auto sampleTime = [&](std::size_t index) {
+    if (!sampling.times.empty()) {
+      return index < sampling.times.size() ? sampling.times[index] : std::numeric_limits<double>::infinity();
+    }
+    return double(index) * sampling.spacing;
+  };
+  const auto samplePiece = [&](const S& from, const S& until, bool withEnd, const auto& at) {
+    if (!sampling.wanted()) return;
+    for (double due = sampleTime(sampleIndex); S(due) < until || (withEnd && S(due) == until);
+         due = sampleTime(++sampleIndex)) {
+      if (stop.stop_requested()) return;
+      if (S(due) >= from) sampling.sink(due, at(S(due) - from));
+    }
+  };
   std::optional<S> jerk;  // set when the flight starts at a release
   // reused from flight to flight: no allocation for them once sized
   BasicChainFlight<S> flight;
@@ -105,11 +123,16 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
       const BasicFirstZero<S> release = releaseOf(phase, horizon);
       if (stop.stop_requested()) return finish(ChainStop::Cancelled, state, t);
       const bool past = tEnd > 0 && (release.kind == ZeroKind::Budget || t + release.t > tEnd);
-      if (past) return finish(ChainStop::TimeLimit, stuckStateAt(phase, tEnd - t), tEnd);
+      const auto stuckAt = [&](const S& offset) { return stuckStateAt(phase, offset); };
+      if (past) {
+        samplePiece(t, S(tEnd), true, stuckAt);
+        return finish(ChainStop::TimeLimit, stuckStateAt(phase, tEnd - t), tEnd);
+      }
       if (release.kind == ZeroKind::Budget) return finish(ChainStop::SearchBudget, state, t);
       if (release.kind != ZeroKind::Crossing) {
         return finish(ChainStop::Undecided, stuckStateAt(phase, release.t), t + release.t);
       }
+      samplePiece(t, S(t + release.t), false, stuckAt);
       State released = stuckStateAt(phase, release.t);
       t += release.t;
       jerk = releaseJerk(chain, released);
@@ -132,14 +155,22 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
     jerk.reset();
     const bool past = tEnd > 0 && (contact.kind == ChainContactKind::None || contact.kind == ChainContactKind::Budget ||
                                    t + contact.t > tEnd);
-    if (past) return finish(ChainStop::TimeLimit, stateAt(dynamics, flight, tEnd - t), tEnd);
-    if (contact.kind == ChainContactKind::None) return finish(ChainStop::NoFurtherContact, state, t);
+    const auto flightAt = [&](const S& offset) { return stateAt(dynamics, flight, offset); };
+    if (past) {
+      samplePiece(t, S(tEnd), true, flightAt);
+      return finish(ChainStop::TimeLimit, stateAt(dynamics, flight, tEnd - t), tEnd);
+    }
+    if (contact.kind == ChainContactKind::None) {
+      samplePiece(t, S(t + slowest), true, flightAt);  // linear forever: one slowest period drawn
+      return finish(ChainStop::NoFurtherContact, state, t);
+    }
     if (contact.kind == ChainContactKind::Budget) return finish(ChainStop::SearchBudget, state, t);
     if (contact.kind == ChainContactKind::Touch && contact.t == 0) {
       // a flight that cannot be seen to leave the stop it starts on (neither its velocity nor
       // its acceleration takes it away, within rounding, and no force presses it on)
       return finish(ChainStop::Undecided, state, t);
     }
+    samplePiece(t, S(t + contact.t), false, flightAt);
     stateInto(dynamics, flight, contact.t, at);
     vBefore = at.v;
     const S when = t + contact.t;
@@ -162,13 +193,15 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
     state = at;
     t = when;
   }
+  // the last event's state, when a sample falls on it
+  samplePiece(t, t, true, [&](const S&) { return state; });
   return finish(ChainStop::ContactLimit, state, t);
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                                  \
   template S chainEnergy<S>(const MassChain&, const BasicChainState<S>&);                                         \
   template BasicChainRun<S> runChain<S>(const MassChain&, const BasicChainState<S>&, long, std::type_identity_t<S>, \
-                                        std::stop_token, const ChainEventSink<S>&);
+                                        std::stop_token, const ChainEventSink<S>&, const ChainSampling<S>&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

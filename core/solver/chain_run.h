@@ -57,6 +57,19 @@ using ChainRun = BasicChainRun<double>;
 template <typename S>
 using ChainEventSink = std::function<void(const BasicChainEvent<S>&)>;
 
+/// Dense samples of a run: the state every `spacing` from t = 0, or at the given `times`
+/// (ascending), handed to `sink` as the run passes them, up to its end (a flight that never
+/// meets the stop again: one of its slowest periods more); a sample at an event's time is the
+/// state just after it. Computed from the same closed forms as the events, nothing stored.
+template <typename S>
+struct ChainSampling {
+  double spacing = 0;
+  std::vector<double> times;
+  std::function<void(double t, const BasicChainState<S>& state)> sink;
+
+  bool wanted() const { return sink && (spacing > 0 || !times.empty()); }
+};
+
 /// The energy 1/2 v^T M v + 1/2 u^T K u of a chain's state.
 template <typename S>
 S chainEnergy(const MassChain& chain, const BasicChainState<S>& state);
@@ -69,10 +82,11 @@ S chainEnergy(const MassChain& chain, const BasicChainState<S>& state);
 /// to `maxContacts` contacts or `tEnd` (0: none). A search without `tEnd` (a flight of a
 /// non-commensurate chain, a stuck phase) goes up to 1000 of the slowest periods. In the
 /// precision of `start`: double, long double or binary128 (Quad). With a `sink`, each event is
-/// handed to it as it happens and none is kept.
+/// handed to it as it happens and none is kept; with `sampling`, the states it asks for.
 template <typename S>
 BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
                           std::type_identity_t<S> tEnd = 0, std::stop_token stop = {},
-                          const ChainEventSink<std::type_identity_t<S>>& sink = {});
+                          const ChainEventSink<std::type_identity_t<S>>& sink = {},
+                          const ChainSampling<std::type_identity_t<S>>& sampling = {});
 
 }  // namespace grazelab::core

@@ -268,21 +268,29 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         v_pre and the stopped mass's v_post), ``final``, ``stop_reason``, ``message``,
         ``contacts``, ``energy``, ``trust`` (the run again one precision up, compared event
         by event: the whole run with trust="full", its first contacts with "auto") and ``precision``; or from ``onepp`` = T, the 1IPP orbit of that period
-        right after its impact. No ``glo`` or ``samples`` yet; sticks hold the stopped mass
-        until their release, as for two masses.
+        right after its impact; ``samples`` a structured array (t, u1..uN, v1..vN). No
+        ``glo``: ``glo_weights`` instead; sticks hold the stopped mass until their release, as for
+        two masses.
     glo_weights: lambda_1, ..., lambda_N (fastest mode first, summing to 1): a chain of N masses
         starts on GLO_lambda = sum_j lambda_j GLOM_j at its touch (GLOM_j: mode j alone, its top
         on the stop); ``glo_set`` says which weights graze.
 """
     if masses is not None:
-        if samples is not None:
-            raise ValueError("samples: not available for a chain of N masses yet")
         options = dict(gap=gap, precision=precision, state=state, contacts=contacts, t_end=t_end,
                        glo=glo, onepp=onepp, perturb=perturb, glo_weights=glo_weights,
                        trust=trust,
                        **_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies,
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
+        if samples is not None:
+            grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
+            options["sample_times" if grid else "sample_step"] = samples
         result, _, _, _ = _command("simulate", options, progress, document=True)
+        if result.get("samples") is not None:
+            # (t, u1..uN, v1..vN) as a structured array, as for two masses
+            n = len(result["chain"]["masses"])
+            names = ["t"] + [f"u{i + 1}" for i in range(n)] + [f"v{i + 1}" for i in range(n)]
+            rows = [(p["t"], *p["u"], *p["v"]) for p in result["samples"]]
+            result["samples"] = _np.array(rows, dtype=[(name, "f8") for name in names])
         return result
     if frequencies is not None or design_branch is not None or springs is not None or glo_weights is not None:
         raise ValueError("springs, frequencies, design_branch and glo_weights describe a chain given by masses")

@@ -442,6 +442,8 @@ fi
 "$cli" simulate --masses 1,1 --springs 1,1 --state 0,2,0,0 --format csv >"$out" 2>"$err"
 [ "$?" -eq 2 ] && [ ! -s "$out" ] || fail "a refused N-mass csv wrote something"
 EXPECT_WORD="error estimate" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format csv --trust full
+EXPECT_WORD="--format json" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format csv --trust off --sample-step 0.1
+EXPECT_WORD="exclude each other" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --sample-step 0.1 --sample-times 1
 EXPECT_WORD="at most 1000000" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format summary --trust full --contacts 2000000
 expect_interrupted INT 1000 "a streamed run of three masses" -- simulate --masses 1,0.2,0.05 --frequencies 3:2:1 \
   --glo-weights 0.5,0.3,0.2 --perturb 0,0,0,0,0,-0.01 --contacts 100000000 --format csv

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -356,6 +357,68 @@ TEST(ChainRun, AStreamedRunIsTheKeptRun) {
   EXPECT_EQ(online.verdict, whole.verdict);
   EXPECT_EQ(online.horizon, whole.horizon);
   EXPECT_EQ(online.stateError, whole.stateError);
+}
+
+// dense samples: on the grid asked for, up to the run's end; each keeps the energy; on the
+// stop during a stuck phase and never past it; the samples obey M u'' = -K u away from the
+// events (a central difference of samples h apart, the stopped mass included, where it flies);
+// a sample at an event's time is the state just after it
+TEST(ChainRun, SamplesFollowTheMotionBetweenEvents) {
+  const MassChain chain{{1.0, 0.7, 0.4}, {1.0, 0.8, 0.6}, 0, 2, 1.0};
+  const ChainState start{Eigen::Vector3d(1.4, 1.0, 1.3), Eigen::Vector3d(0.1, 0.0, -0.2)};
+  const Eigen::MatrixXd K = stiffnessMatrix(chain);
+  const ChainRun run = runChain(chain, start, 12);
+  std::vector<std::pair<double, ChainState>> samples;
+  ChainSampling<double> sampling{0.01, {}, [&](double t, const ChainState& state) { samples.emplace_back(t, state); }};
+  const ChainRun sampled = runChain(chain, start, 12, 0.0, {}, {}, sampling);
+  ASSERT_EQ(sampled.events.size(), run.events.size());  // sampling changes nothing
+  EXPECT_EQ(sampled.final.u, run.final.u);
+  ASSERT_EQ(samples.size(), std::size_t(std::floor(run.tFinal / 0.01)) + 1);
+  int checked = 0, stuck = 0;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const auto& [t, state] = samples[k];
+    EXPECT_EQ(t, 0.01 * double(k));
+    EXPECT_NEAR(chainEnergy(chain, state), run.energyInitial, 1e-12 * run.energyInitial) << "t = " << t;
+    EXPECT_LE(state.u[1], chain.gap + 1e-12) << "t = " << t;
+    // where the event before it is a stick, mass 2 is held on the stop
+    std::size_t before = 0;
+    while (before + 1 < run.events.size() && run.events[before + 1].t <= t) ++before;
+    if (run.events[before].type == EventType::Stick && run.events[before].t <= t &&
+        (before + 1 >= run.events.size() || t < run.events[before + 1].t)) {
+      EXPECT_EQ(state.u[1], chain.gap) << "t = " << t;
+      ++stuck;
+    }
+    // away from every event by two samples: the equations of motion by central differences
+    if (k == 0 || k + 1 >= samples.size()) continue;
+    bool nearEvent = false;
+    for (const ChainEvent& event : run.events) nearEvent |= std::abs(event.t - t) < 0.025;
+    if (nearEvent || state.u[1] == chain.gap) continue;
+    const Eigen::VectorXd acceleration = (samples[k + 1].second.u - 2 * state.u + samples[k - 1].second.u) / (0.01 * 0.01);
+    const Eigen::VectorXd force = -K * state.u;
+    for (int m = 0; m < 3; ++m) {
+      EXPECT_NEAR(chain.masses[std::size_t(m)] * acceleration[m], force[m], 1e-3 * (1 + force.cwiseAbs().maxCoeff()))
+          << "t = " << t << ", mass " << m + 1;
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_GT(stuck, 10);
+  // at the events' own times: the state just after each
+  std::vector<double> times;
+  for (const ChainEvent& event : run.events) {
+    if (times.empty() || event.t > times.back()) times.push_back(event.t);
+  }
+  std::vector<std::pair<double, ChainState>> atEvents;
+  runChain(chain, start, 12, 0.0, {}, {},
+           ChainSampling<double>{0, times, [&](double t, const ChainState& state) { atEvents.emplace_back(t, state); }});
+  ASSERT_EQ(atEvents.size(), times.size());
+  for (std::size_t k = 0; k < atEvents.size(); ++k) {
+    const auto last = std::find_if(run.events.rbegin(), run.events.rend(),
+                                   [&](const ChainEvent& event) { return event.t == atEvents[k].first; });
+    ASSERT_NE(last, run.events.rend());
+    EXPECT_LT((atEvents[k].second.u - last->u).cwiseAbs().maxCoeff(), 1e-12) << "t = " << atEvents[k].first;
+    EXPECT_NEAR(atEvents[k].second.v[1], last->vAfter, 1e-12) << "t = " << atEvents[k].first;
+  }
 }
 
 }  // namespace

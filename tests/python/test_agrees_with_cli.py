@@ -357,6 +357,17 @@ def test_simulate_a_chain_of_n_masses(cli_json):
         gl.simulate(masses=[1, 1], springs=[1, 1], glo=0.5)
     with pytest.raises(ValueError, match="given by masses"):
         gl.simulate(springs=[1, 1], state=[0, 0, 0, 1])
+    # samples: a structured array of (t, u1..uN, v1..vN), the command line's numbers; a sample
+    # at an event's time is the state just after it
+    sampled = gl.simulate(**chain, state=[0, 0, 0, 0, 0, 6.7], contacts=15, samples=0.25)
+    document = cli_json("simulate", "--masses=1,0.2,0.05", "--frequencies=3:2:1", "--state=0,0,0,0,0,6.7",
+                        "--contacts=15", "--sample-step=0.25")
+    assert sampled.samples.dtype.names == ("t", "u1", "u2", "u3", "v1", "v2", "v3")
+    assert len(sampled.samples) == len(document["samples"]) == int(run.final.t / 0.25) + 1
+    assert [tuple(row) for row in sampled.samples[:3]] == [(p["t"], *p["u"], *p["v"]) for p in document["samples"][:3]]
+    first = run.events[0]
+    at = gl.simulate(**chain, state=[0, 0, 0, 0, 0, 6.7], contacts=15, samples=[first.t])
+    assert at.samples["u3"][0] == first.u[2] and abs(at.samples["v3"][0] - first.v_post) < 1e-12
 
 
 def test_glo_starts_and_grazing_sets_of_n_masses(cli_json):

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/orbits/chain_glo.h"
@@ -193,7 +194,42 @@ struct ChainRunIn {
   core::BasicChainState<S> start;
   core::BasicChainRun<S> run;
   S tEnd = 0;
+  std::vector<std::pair<double, core::ChainState>> samples;  ///< (t, state) asked for, in double
+  bool samplesTruncated = false;
 };
+
+// the most samples a json holds (as for two masses)
+constexpr std::size_t kMaxChainSamples = 4'000'000;
+
+// --sample-step DT or --sample-times t1,... (json only), or nothing with `error` set
+std::optional<core::ChainSampling<double>> samplingOf(const OptionValues& options, QString& error) {
+  core::ChainSampling<double> sampling;
+  if (options.isSet("sample-step") && options.isSet("sample-times")) {
+    error = "--sample-step and --sample-times exclude each other";
+    return std::nullopt;
+  }
+  if (options.isSet("sample-step")) {
+    const core::ParsedScalar<double> step = core::parseScalar<double>(options.value("sample-step").toStdString());
+    if (!step.value || !(*step.value > 0) || !std::isfinite(*step.value)) {
+      error = QStringLiteral("--sample-step: '%1' is not a time > 0").arg(options.value("sample-step"));
+      return std::nullopt;
+    }
+    sampling.spacing = *step.value;
+  }
+  if (options.isSet("sample-times")) {
+    for (const QString& part : options.value("sample-times").split(',')) {
+      const core::ParsedScalar<double> t = core::parseScalar<double>(part.trimmed().toStdString());
+      if (!t.value || !(*t.value >= 0) || !std::isfinite(*t.value) ||
+          (!sampling.times.empty() && *t.value < sampling.times.back())) {
+        error = QStringLiteral("--sample-times: '%1' is not a list of times >= 0, ascending")
+                    .arg(options.value("sample-times"));
+        return std::nullopt;
+      }
+      sampling.times.push_back(*t.value);
+    }
+  }
+  return sampling;
+}
 // --t-end in S (0: none given), or nothing with `error` set
 template <typename S>
 std::optional<S> timeLimit(const QString& tEndText, QString& error) {
@@ -213,11 +249,37 @@ std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::Mass
   if (!start) return std::nullopt;
   const auto tEnd = timeLimit<S>(tEndText, error);
   if (!tEnd) return std::nullopt;
-  return ChainRunIn<S>{*start, core::runChain(chain, *start, contacts, *tEnd, stop), *tEnd};
+  const auto asked = samplingOf(options, error);
+  if (!asked) return std::nullopt;
+  ChainRunIn<S> in{*start, {}, *tEnd, {}, false};
+  core::ChainSampling<S> sampling{asked->spacing, asked->times, {}};
+  if (asked->spacing > 0 || !asked->times.empty()) {
+    sampling.sink = [&](double t, const core::BasicChainState<S>& state) {
+      if (in.samples.size() >= kMaxChainSamples) {
+        in.samplesTruncated = true;
+        return;
+      }
+      in.samples.emplace_back(t, core::ChainState{state.u.template cast<double>(), state.v.template cast<double>()});
+    };
+  }
+  in.run = core::runChain(chain, *start, contacts, *tEnd, stop, {}, sampling);
+  return in;
+}
+
+// the samples as {t, u, v} in double
+template <typename S>
+V samplesValue(const ChainRunIn<S>& in) {
+  std::vector<V> items;
+  items.reserve(in.samples.size());
+  for (const auto& [t, state] : in.samples) {
+    items.push_back(V::object({{"t", V::number(t)}, {"u", numbers<double>(state.u)}, {"v", numbers<double>(state.v)}}));
+  }
+  return V::array(std::move(items));
 }
 
 template <typename S>
-V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precision, const core::Trust& trust) {
+V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precision, const core::Trust& trust,
+              bool sampled) {
   const core::BasicChainRun<S>& run = in.run;
   std::vector<V> events;
   for (const core::BasicChainEvent<S>& event : run.events) {
@@ -230,7 +292,7 @@ V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precisio
   const core::ChainDynamics dynamics = core::chainDynamics(masses);
   const std::string message = stopMessage(run.stop);
   using std::abs;
-  return V::object(
+  V document = V::object(
       {{"chain", massChainValue(masses, dynamics.period)},
        {"initial", V::object({{"u", numbers<S>(in.start.u)}, {"v", numbers<S>(in.start.v)}})},
        {"events", V::array(std::move(events))},
@@ -243,6 +305,11 @@ V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precisio
                              {"relative_drift", V::number(S(abs(run.energyFinal / run.energyInitial - 1)))}})},
        {"trust", trustValue(trust)},
        {"precision", std::move(precision)}});
+  if (sampled) {
+    document.fields.emplace_back("samples", samplesValue(in));
+    document.fields.emplace_back("samples_truncated", V::of(in.samplesTruncated));
+  }
+  return document;
 }
 
 template <typename S>
@@ -317,9 +384,9 @@ std::string summaryText(const core::MassChain& masses, const ChainRunIn<S>& in, 
 }  // namespace
 
 int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
-  for (const char* notYet : {"glo", "sample-step", "sample-times"}) {
+  for (const char* notYet : {"glo"}) {
     if (options.isSet(notYet)) {
-      error = QStringLiteral("--%1 is not available for a chain of N masses yet: start it with --state "
+      error = QStringLiteral("--%1 is not available for a chain of N masses: start it with --state "
                              "u1,...,uN,v1,...,vN, --glo-weights l1,...,lN or --onepp T")
                   .arg(notYet);
       return kExitInvalidInput;
@@ -333,6 +400,10 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
   const ChainFormat format = formatText == "csv" ? ChainFormat::Csv
                              : formatText == "summary" ? ChainFormat::Summary
                                                        : ChainFormat::Json;
+  if (format != ChainFormat::Json && (options.isSet("sample-step") || options.isSet("sample-times"))) {
+    error = "--sample-step and --sample-times are written in --format json for a chain of N masses";
+    return kExitInvalidInput;
+  }
   if (format == ChainFormat::Csv && options.isSet("trust") && options.value("trust") != "off") {
     error = "--trust: --format csv writes the events alone; the error estimate is in --format summary or json";
     return kExitInvalidInput;
@@ -448,7 +519,8 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     }
     const core::Trust trust = core::chainTrust(masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
     if (stop.stop_requested()) return kExitInterrupted;
-    emitDocument(io, runDocument(masses, *in, report(name), trust));
+    emitDocument(io, runDocument(masses, *in, report(name), trust,
+                                 options.isSet("sample-step") || options.isSet("sample-times")));
     return 0;
   };
   const bool automatic = precisionText == "auto";
