@@ -484,7 +484,7 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
         ++written;
       }
     };
-    const ChainRunIn<S> in{*start, core::runChain(masses, *start, contacts, *limit, stop, sink), *limit};
+    const ChainRunIn<S> in{*start, core::runChain(masses, *start, contacts, *limit, stop, sink), *limit, {}, false};
     std::fflush(io.out);
     if (in.run.stop == core::ChainStop::Cancelled) {
       if (format == ChainFormat::Csv) error = QStringLiteral("the %1 events before it are written").arg(written);
