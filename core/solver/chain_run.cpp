@@ -31,10 +31,11 @@ S slowestPeriod(const BasicChainStuckPhase<S>& phase) {
   return slowest;
 }
 
-// u_s''' at a release (v_s = 0, F_s = 0): dF_s/dt / m_s = (k_s v_(s-1) + k_(s+1) v_(s+1)) / m_s,
-// when its sign is resolved; nothing otherwise
+// u_s''' on the stop at rest with no force (v_s = 0, F_s = 0: a release, or a start there):
+// dF_s/dt / m_s = (k_s v_(s-1) + k_(s+1) v_(s+1)) / m_s, when its sign is resolved; nothing
+// otherwise. Negative: the mass leaves the stop; positive: the springs start pressing it on.
 template <typename S>
-std::optional<S> releaseJerk(const MassChain& chain, const BasicChainState<S>& at) {
+std::optional<S> stopJerk(const MassChain& chain, const BasicChainState<S>& at) {
   using std::abs;
   const Eigen::Index n = chain.size();
   const Eigen::Index s = chain.stopped() - 1;
@@ -43,7 +44,15 @@ std::optional<S> releaseJerk(const MassChain& chain, const BasicChainState<S>& a
   const S mass = S(chain.masses[std::size_t(s)]);
   const S jerk = (left + right) / mass;
   const S error = 4 * std::numeric_limits<S>::epsilon() * (abs(left) + abs(right)) / mass;
-  if (!(jerk < -error)) return std::nullopt;
+  if (!(abs(jerk) > error)) return std::nullopt;
+  return jerk;
+}
+
+// the jerk a flight leaves the stop by after a release: stopJerk when negative
+template <typename S>
+std::optional<S> releaseJerk(const MassChain& chain, const BasicChainState<S>& at) {
+  const std::optional<S> jerk = stopJerk(chain, at);
+  if (!jerk || !(*jerk < 0)) return std::nullopt;
   return jerk;
 }
 
@@ -54,6 +63,7 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
                           std::type_identity_t<S> tEnd, std::stop_token stop,
                           const ChainEventSink<std::type_identity_t<S>>& sink,
                           const ChainSampling<std::type_identity_t<S>>& sampling) {
+  using std::abs;
   using State = BasicChainState<S>;
   const BasicChainDynamics<S> dynamics = chainDynamicsIn<S>(chain);
   const int s = dynamics.stop;
@@ -114,7 +124,13 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
     // at rest on the stop, pressed into it (a touch, or the start): held until released
     const BasicStopForce<S> force = stopForce(chain, state);
     const bool onStop = state.u[s] == dynamics.gap && state.v[s] == 0;
-    if (onStop && !jerk && force.value > force.error) {
+    // at rest on the stop with no force either way (a start there): the springs' first change
+    // decides, as at a release: it pulls the mass off (a flight leaving by its jerk) or presses
+    // it on (held)
+    std::optional<S> startJerk;
+    if (onStop && !jerk && !(abs(force.value) > force.error)) startJerk = stopJerk(chain, state);
+    if (startJerk && *startJerk < 0) jerk = startJerk;
+    if (onStop && !jerk && (force.value > force.error || (startJerk && *startJerk > 0))) {
       if (!anyEvent || lastType != EventType::Stick || lastTime != t) {
         record(EventType::Stick, state, state.v, t);
       }

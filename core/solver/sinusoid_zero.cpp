@@ -341,17 +341,41 @@ BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& sum, std::type_identity_t
   // does not start from one huge window
   const S searchEnd = flatReturn ? S(end - t0) : end;
   const S piece = min(S(searchEnd - t0), fastest);
+  // a touch is where f comes within rounding of 0 and turns back, found as a window a few ulps
+  // of f wide (about sqrt(eps) of the time); its time is f's maximum there: Newton's method on
+  // f' (a simple zero where f'' < 0) puts it at the precision's resolution of the time, as a
+  // crossing's is. Kept only when it converges close by, to a point where f is still 0 within
+  // rounding (else the search's own time stands)
+  using Zero = BasicFirstZero<S>;
+  const auto refined = [&](Zero found) {
+    if (found.kind != ZeroKind::Touch || !(found.t > 0)) return found;
+    S t = found.t;
+    for (int step = 0; step < 30; ++step) {
+      const typename Evaluator<S>::Value v = f.at(t);
+      if (!(v.d2f < -v.d2fError)) return found;
+      const S next = t - v.df / v.d2f;
+      if (!(abs(next - found.t) < S(1e-3) * fastest)) return found;
+      const bool done = abs(next - t) <= 4 * Search<S>::ulp(t);
+      t = next;
+      if (done) {
+        const typename Evaluator<S>::Value at = f.at(t);
+        if (abs(at.f) > 4 * at.error + 4 * Search<S>::ulp(S(1)) * abs(sum.offset)) return found;
+        return Zero{ZeroKind::Touch, t};
+      }
+    }
+    return found;
+  };
   S left = t0;
   S fLeft = start.f;
   while (left < searchEnd) {
     const S right = min(searchEnd, S(left + piece));
     const S fRight = f.at(right).f;
-    if (auto found = search.first(left, right, fLeft, fRight)) return *found;
+    if (auto found = search.first(left, right, fLeft, fRight)) return refined(*found);
     left = right;
     fLeft = fRight;
   }
   // within rounding of 0 at the very end (a periodic orbit's return at T)
-  if (search.pending) return {ZeroKind::Touch, *search.pending};
+  if (search.pending) return refined({ZeroKind::Touch, *search.pending});
   if (flatReturn) return {ZeroKind::Touch, end};
   return {period > 0 ? ZeroKind::None : ZeroKind::Budget, end};
 }

@@ -406,7 +406,10 @@ def map(*, x: _Union[str, _Sequence], y: _Union[str, _Sequence], m1: float = 1.0
         state: _Optional[_Sequence[float]] = None, perturb: _Optional[_Sequence[float]] = None,
         contacts: _Optional[int] = None, trust: str = "off", threads: _Optional[int] = None,
         shard: _Union[str, _Sequence[int], None] = None, picture: _Optional[str] = None,
-        out=None, progress: _Optional[_Progress] = None) -> Result:
+        out=None, progress: _Optional[_Progress] = None, masses: _Optional[_Sequence[float]] = None,
+        springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
+        stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
+        design_branch: _Optional[int] = None) -> Result:
     """A 2-D grid of exact runs reduced to summaries (``grazelab-cli map``). Returns the JSON's
     ``spec`` and ``run`` with ``arrays``: one 2-D array per quantity (row = y, column = x;
     counts int64, the rest float64), equal to the command line's .npy; ``x`` and ``y`` in the
@@ -425,12 +428,24 @@ def map(*, x: _Union[str, _Sequence], y: _Union[str, _Sequence], m1: float = 1.0
     out: a prefix: the command line's files are written there too (without pictures); without
         it the map stays in memory and no file is written.
     progress: ``progress(fraction, text)``, called on the calling thread.
+    masses, springs, right_spring, stop_mass, frequencies, design_branch: a chain of N masses, as
+        in ``simulate``; its axes are u<i> or v<i> (i from 1 to N) of the start ``state`` (2N
+        numbers, default at rest at 0), its flights' ratios in units of the chain's period (the
+        common period T, else the slowest mode's), no horizon (``trust`` "off").
 """
     if shard is not None and out is None:
         raise ValueError("shard: a stripe is kept for merge: give out=PREFIX for its files")
-    options = dict(x=x, y=y, m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
-                   glo=glo, onepp=onepp, state=state, perturb=perturb, contacts=contacts, trust=trust,
-                   threads=threads, shard=shard, picture=picture)
+    if masses is not None:
+        options = dict(x=x, y=y, gap=gap, precision=precision, glo=glo, onepp=onepp, state=state,
+                       perturb=perturb, contacts=contacts, trust=trust, threads=threads, shard=shard,
+                       picture=picture,
+                       **_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies,
+                                             design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
+    else:
+        options = dict(x=x, y=y, m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
+                       glo=glo, onepp=onepp, state=state, perturb=perturb, contacts=contacts, trust=trust,
+                       threads=threads, shard=shard, picture=picture, springs=springs, right_spring=right_spring,
+                       stop_mass=stop_mass, design_branch=design_branch)
     out = None if out is None else _os.fspath(out)
     _, kept = _command("map", dict(options, out=out), progress, keep_map=True)
     return _map_result(kept, out)

@@ -136,6 +136,38 @@ EXPECT_WORD="different maps" expect_invalid merge --out "$work/bad2/m" "$work/pa
   "$work/other/part2" "$work/parts/part3" "$work/parts/part4"
 [ ! -e "$work/bad2/m.json" ] || fail "a refused merge wrote files"
 
+# a chain of N masses (3:2:1, axes u3 and v3 of the start): stripes merge to the whole map, a
+# point is the simulate run it names (its first flight from the stop, its impacts), flights
+# from the stop last at most the chain's period T, and the spec names the chain and the period
+nm=(--masses 1,0.2,0.05 --frequencies 3:2:1 --state 0,0,0.5,0,0,0 --x u3:-1:0.9:24 --y v3:-2:2:18 --contacts 5)
+expect_ok map "${nm[@]}" --out "$work/n/whole" || exit 1
+for k in 1 2 3; do expect_ok map "${nm[@]}" --shard $k/3 --threads 1 --out "$work/n/part$k"; done
+expect_ok merge --out "$work/n/merged" "$work/n/part1" "$work/n/part2" "$work/n/part3"
+for q in $quantities; do
+  cmp -s "$work/n/whole-$q.npy" "$work/n/merged-$q.npy" || fail "N masses: merged $q differs from the whole map"
+done
+if expect_ok simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --state 0,0,-0.83478260869565224,0,0,1.7647058823529411 --contacts 5 --trust off; then
+  python3 -c "
+import csv, json, math
+spec = json.load(open('$work/n/whole.json'))['spec']
+assert spec['chain']['masses'] == [1, 0.2, 0.05] and spec['x']['variable'] == 'u3' and spec['contacts'] == 5, spec
+T = spec['period']
+assert abs(T - spec['chain']['period']) < 1e-12 * T, spec
+rows = list(csv.DictReader(open('$work/n/whole.csv')))
+assert len(rows) == 24 * 18 and 'u3' in rows[0] and 'v3' in rows[0], rows[0]
+point = [r for r in rows if r['column'] == '2' and r['row'] == '16'][0]
+assert float(point['u3']) == -0.83478260869565224 and float(point['v3']) == 1.7647058823529411, point
+events = json.load(open('$out'))['events']
+assert [e['type'] for e in events] == ['impact'] * 5, events
+assert int(point['impacts']) == 5 and abs(float(point['fft_first']) - (events[1]['t'] - events[0]['t'])) < 1e-12 * T, (point, events)
+flights = [float(r['fft_first']) for r in rows if math.isfinite(float(r['fft_first']))]
+assert len(flights) > 100 and max(flights) <= T * (1 + 1e-12), max(flights)" || fail "a map of N masses"
+fi
+EXPECT_WORD="u<i>|v<i>" expect_invalid map --masses 1,1 --springs 1,1 --x lambda:0:1:3 --y u1:0:1:3 --out "$work/bad3/a"
+EXPECT_WORD="--state" expect_invalid map --masses 1,1 --springs 1,1 --x u1:0:1:3 --y v1:0:1:3 --glo 0.5 --out "$work/bad3/a"
+EXPECT_WORD="given by --masses" expect_invalid map --springs 1,1 --x u1:0:1:3 --y v1:0:1:3 --out "$work/bad3/a"
+[ ! -e "$work/bad3" ] || [ -z "$(ls -A "$work/bad3")" ] || fail "a refused N-mass map wrote files"
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures failure(s)"
   exit 1

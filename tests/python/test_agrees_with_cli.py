@@ -140,6 +140,22 @@ def test_map_arrays_equal_the_cli_npy(cli, tmp_path):
     assert result.arrays["impacts"].dtype == np.int64
 
 
+def test_a_map_of_n_masses_equals_the_cli_npy(cli, tmp_path):
+    chain = dict(masses=[1, 0.2, 0.05], frequencies=[3, 2, 1], state=[0, 0, 0.5, 0, 0, 0])
+    result = gl.map(**chain, x="u3:-1:0.9:12", y=("v3", -2, 2, 9), contacts=5)
+    done = cli("map", "--masses", "1,0.2,0.05", "--frequencies", "3:2:1", "--state", "0,0,0.5,0,0,0",
+               "--x", "u3:-1:0.9:12", "--y", "v3:-2:2:9", "--contacts", "5", "--out", str(tmp_path / "n"))
+    assert done.returncode == 0, done.stderr
+    with open(tmp_path / "n.json") as handle:
+        description = json.load(handle)
+    assert result.spec == description["spec"] and result.spec["x"]["variable"] == "u3"
+    for quantity, array in result.arrays.items():
+        np.testing.assert_array_equal(array, np.load(tmp_path / f"n-{quantity}.npy"), err_msg=quantity)
+    assert np.nanmax(result.arrays["fft_max"]) <= 1 + 1e-12  # no flight from the stop outlasts T
+    with pytest.raises(ValueError, match="u<i>"):
+        gl.map(**chain, x="u4:0:1:2", y="v3:0:1:2")
+
+
 def test_map_shards_merge_to_the_whole_map(tmp_path):
     options = dict(x="u1:-1:1:6", y="v1:-1:1:5", contacts=4)
     whole = gl.map(**options)

@@ -91,8 +91,10 @@ QByteArray csvNumber(double value) {
 QByteArray csvText(const StoredMap& map) {
   const core::MapAxis x = axisOf(map.description.spec, "x");
   const core::MapAxis y = axisOf(map.description.spec, "y");
-  QByteArray text = "column,row," + QByteArray(core::toString(x.variable).data()) + "," +
-                    QByteArray(core::toString(y.variable).data());
+  // the axes' names as the spec gives them (a chain of N masses has u3, v2, ...)
+  const QJsonObject& spec = map.description.spec;
+  QByteArray text = "column,row," + spec["x"].toObject()["variable"].toString().toUtf8() + "," +
+                    spec["y"].toObject()["variable"].toString().toUtf8();
   for (const core::QuantityInfo& info : core::quantities()) text += "," + QByteArray(info.name.data());
   text += "\n";
   for (std::int64_t r = map.rows.rowBegin; r < map.rows.rowEnd; ++r) {

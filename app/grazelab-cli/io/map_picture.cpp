@@ -19,8 +19,9 @@ constexpr int kHeight = 820;
 
 QString axisTitle(const QJsonObject& spec, const char* which) {
   const QString name = spec[which].toObject()["variable"].toString();
-  if (name == "u1" || name == "gap") return name + " [length]";
-  if (name == "v1" || name == "v2") return name + " [length/time]";
+  // u<i> and v<i>: the two-mass map's u1, v1, v2 and a chain of N masses' coordinates
+  if (name == "gap" || (name.size() > 1 && name[0] == 'u' && name[1].isDigit())) return name + " [length]";
+  if (name.size() > 1 && name[0] == 'v' && name[1].isDigit()) return name + " [length/time]";
   if (name == "mass-ratio") return "m2 / m1";
   if (name == "detuning") return "detuning w1/w2 - 2";
   if (name == "epsilon") return "epsilon (size of the push)";

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <string_view>
+
+#include "core/experiments/maps.h"
+#include "core/model/mass_chain.h"
+#include "core/solver/chain_flight.h"
+
+namespace grazelab::core {
+
+/// Maps of a chain of N masses: the two-mass maps' grid, summaries and files (maps.h), over
+/// coordinates of the start. An axis sets u_i or v_i (1-based mass `mass`) of every run's start.
+struct ChainMapAxis {
+  bool velocity = false;  ///< v_i, else u_i
+  int mass = 1;           ///< i, 1..N
+  MapAxis range;          ///< the values (its `variable` unused)
+
+  /// "u3", "v1".
+  std::string name() const;
+  friend bool operator==(const ChainMapAxis&, const ChainMapAxis&) = default;
+};
+
+/// "u3" or "v1" as an axis variable, mass 1..n; nothing otherwise.
+std::optional<ChainMapAxis> parseChainMapVariable(std::string_view text, Eigen::Index n);
+
+struct ChainMapSpec {
+  MassChain chain;
+  ChainState start;  ///< every run's start before the axes set their coordinates
+  ChainMapAxis x;    ///< columns
+  ChainMapAxis y;    ///< rows
+  std::int64_t contacts = 1;  ///< contacts of each run
+};
+
+/// Why the spec cannot be run (one line), or empty: a usable chain, the start's size, counts
+/// >= 1 and at most 2^24 along an axis, finite ranges, two different coordinates.
+std::string checkChainMap(const ChainMapSpec& spec);
+
+/// The period the free-flight times are measured in: the common period T of a commensurate
+/// chain, else its slowest mode's period.
+double chainMapPeriod(const MassChain& chain);
+
+/// One point: the run from the start with the axes' coordinates set, `contacts` contacts, in
+/// double and again one precision up where a contact or release is undecided (as simulate's
+/// --precision auto). A flight from the stop starts at an impact, a grazing or a release and
+/// ends at the next contact: fftFirst is the first one's length [time] (+inf when the flight
+/// stays below the stop forever, NaN when the run has none), fftMin/Max/Mean over the run's
+/// flights from the stop in units of chainMapPeriod; impacts, grazings, sticks counted; the
+/// first impact's time; horizon NaN (not estimated). A start past the stop (u_s > d), or a run
+/// that stays undecided in binary128 (a start on the stop whose departure its first three
+/// derivatives do not decide), is no run: NaN and counts -1.
+PointSummary chainMapPoint(const ChainMapSpec& spec, std::int64_t column, std::int64_t row,
+                           std::stop_token stop = {});
+
+/// Rows `rows` of the map, as computeMap does them. Precondition: checkChainMap(spec) is empty.
+MapRows computeChainMap(const ChainMapSpec& spec, RowRange rows, const ParallelFor& parallelFor,
+                        std::stop_token stop = {}, const MapRowsProgress& progress = {});
+
+}  // namespace grazelab::core
