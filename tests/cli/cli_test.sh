@@ -62,7 +62,8 @@ takes = {
                                  "stop-mass", "frequencies", "design-branch", "glo-weights"],
     "report": model[:-1] + start + ["contacts", "t-end", "out", "methods", "quick"],
     "stability": ["out", "methods", "quick"],
-    "map": model + start + ["contacts", "trust", "out", "x", "y", "threads", "shard", "picture"],
+    "map": model + start + ["contacts", "trust", "out", "x", "y", "threads", "shard", "picture", "masses",
+                            "springs", "right-spring", "stop-mass", "frequencies", "design-branch"],
     "merge": ["out"],
     "family": model + ["onepp", "out", "count", "masses", "springs", "right-spring", "stop-mass",
                        "frequencies", "design-branch"],
@@ -441,6 +442,13 @@ assert 'final          t=' + d['final']['t'] in summary, summary" || fail "N mas
 fi
 "$cli" simulate --masses 1,1 --springs 1,1 --state 0,2,0,0 --format csv >"$out" 2>"$err"
 [ "$?" -eq 2 ] && [ ! -s "$out" ] || fail "a refused N-mass csv wrote something"
+# a csv raised by --precision auto past rows it wrote: those rows stay, the raised run writes
+# the rest and says whether it met the last of them again
+"$cli" simulate --masses 1,0.5 --springs 1,0.5 --state 1.0000000000000002220446049250313080847263336181640625,1,0,0 \
+  --contacts 3 --format csv >"$out" 2>"$err"
+[ "$?" -eq 0 ] && [ "$(wc -l <"$out")" -eq 5 ] && grep -q "meets the last of them again" "$err" &&
+  [ "$(cut -d, -f2 "$out" | tr '\n' ' ')" = "type stick release impact impact " ] ||
+  fail "a raised N-mass csv: $(cat "$out" "$err")"
 EXPECT_WORD="error estimate" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format csv --trust full
 EXPECT_WORD="--format json" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format csv --trust off --sample-step 0.1
 EXPECT_WORD="exclude each other" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --sample-step 0.1 --sample-times 1

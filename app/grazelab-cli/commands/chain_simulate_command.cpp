@@ -462,10 +462,17 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
   // the start is known to be good (bad input writes nothing)
   long written = 0;
   bool headed = false;
+  // the last event written (in the lower precision, when a run is raised): the raised run's
+  // event of the same number is compared with it
+  double lastWrittenTime = 0;
+  core::EventType lastWrittenType = core::EventType::Impact;
+  std::optional<bool> raisedAgrees;
   // a streamed rung (csv, summary): the events go out as they come, none is held
   const auto streamed = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
     const auto start = chainStart<S>(options, masses, error);
     if (!start) return kExitInvalidInput;
+    const long before = written;  // rows a lower precision wrote
+    raisedAgrees.reset();
     const auto limit = timeLimit<S>(tEnd, error);
     if (!limit) return kExitInvalidInput;
     if (format == ChainFormat::Csv && !headed) {
@@ -479,10 +486,20 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     long seen = 0;
     const core::ChainEventSink<S> sink = [&](const core::BasicChainEvent<S>& event) {
       if (check) check->observe(event);
-      if (format == ChainFormat::Csv && ++seen > written) {
-        std::fputs(csvLine(event).c_str(), io.out);
-        ++written;
+      if (format != ChainFormat::Csv) return;
+      if (++seen <= written) {
+        if (seen == written) {
+          // the raised run at the last event the lower precision wrote: the same event?
+          using std::abs;
+          raisedAgrees = event.type == lastWrittenType &&
+                         abs(core::toDouble(event.t) - lastWrittenTime) <= 1e-9 * (1 + abs(lastWrittenTime));
+        }
+        return;
       }
+      std::fputs(csvLine(event).c_str(), io.out);
+      ++written;
+      lastWrittenTime = core::toDouble(event.t);
+      lastWrittenType = event.type;
     };
     const ChainRunIn<S> in{*start, core::runChain(masses, *start, contacts, *limit, stop, sink), *limit, {}, false};
     std::fflush(io.out);
@@ -502,8 +519,14 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       std::fputs(summaryText(masses, in, seconds, used, raised, check->finish(in.run)).c_str(), io.out);
       std::fflush(io.out);
     } else if (!escalations.empty()) {
-      std::fprintf(io.messages, "grazelab-cli: note: the run was raised to %s (undecided below it); the events "
-                   "written before agree with it to the lower precision\n", name);
+      // the rows before the raise are the lower precision's: say whether the raised run meets
+      // the last of them again (same type, time to 1e-9)
+      std::fprintf(io.messages, "grazelab-cli: note: the run was raised to %s (undecided below it) after %ld rows; %s\n",
+                   name, before,
+                   before == 0      ? "every row is its own"
+                   : !raisedAgrees  ? "it ends before the last of them: the rows past its end are the lower precision's"
+                   : *raisedAgrees  ? "it meets the last of them again (same type, time to 1e-9)"
+                                    : "it DIFFERS from the last of them: the rows before the raise are not to be trusted");
     }
     return 0;
   };
