@@ -4,9 +4,6 @@
 
 #include <QCommandLineParser>
 #include <QDir>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QFileInfo>
 
 #include <atomic>
@@ -16,10 +13,8 @@
 #include <cstdio>
 #include <thread>
 
-#include "core/experiments/chain_map.h"
+#include "io/chain_map_input.h"
 #include "io/cli_input.h"
-#include "io/cli_output.h"
-#include "io/json_value.h"
 #include "io/map_files.h"
 #include "io/map_picture.h"
 #include "io/output_files.h"
@@ -188,123 +183,6 @@ bool filesPrefix(const QCommandLineParser& parser, const Io& io, std::optional<Q
 
 }  // namespace
 
-// A map of a chain of N masses: --masses ... (as simulate), the start --state u1..uN,v1..vN
-// (default: at rest at 0), axes u<i> or v<i>
-std::optional<core::ChainMapSpec> parseChainSpec(const QCommandLineParser& parser, std::stop_token stop,
-                                                 QString& error, bool& stopped) {
-  if (parser.isSet("trust") && parser.value("trust") != "off") {
-    error = "--trust: a map of N masses estimates no horizon yet (horizon NaN): give off or leave it out";
-    return std::nullopt;
-  }
-  for (const char* name : {"glo", "onepp", "perturb"}) {
-    if (parser.isSet(name)) {
-      error = QStringLiteral("--%1: a map of N masses starts from --state u1,...,uN,v1,...,vN, its axes setting "
-                             "u<i> or v<i>")
-                  .arg(name);
-      return std::nullopt;
-    }
-  }
-  const auto chain = parseMassChain(parser, stop);
-  stopped = !chain.value && chain.error.isEmpty();
-  if (!chain.value) {
-    error = chain.error;
-    return std::nullopt;
-  }
-  core::ChainMapSpec spec;
-  spec.chain = chain.value->chain;
-  const Eigen::Index n = spec.chain.size();
-  spec.start = {Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
-  if (parser.isSet("state")) {
-    const QStringList parts = parser.value("state").split(',');
-    if (parts.size() != 2 * n) {
-      error = QStringLiteral("--state: %1 numbers for %2 masses (u1,...,uN,v1,...,vN: %3)").arg(parts.size()).arg(n).arg(2 * n);
-      return std::nullopt;
-    }
-    for (Eigen::Index i = 0; i < 2 * n; ++i) {
-      bool ok = false;
-      const double value = parts[int(i)].trimmed().toDouble(&ok);
-      if (!ok || !std::isfinite(value)) {
-        error = QStringLiteral("--state: '%1' is not a finite number").arg(parts[int(i)]);
-        return std::nullopt;
-      }
-      (i < n ? spec.start.u[i] : spec.start.v[i - n]) = value;
-    }
-  }
-  for (const char* name : {"x", "y"}) {
-    if (!parser.isSet(name)) {
-      error = QStringLiteral("--%1 u<i>|v<i>:from:to:count is required").arg(name);
-      return std::nullopt;
-    }
-    const QStringList parts = parser.value(name).split(':');
-    const auto axis = parts.size() == 4 ? core::parseChainMapVariable(parts[0].toStdString(), n) : std::nullopt;
-    if (!axis) {
-      error = QStringLiteral("--%1: '%2' is not u<i>|v<i>:from:to:count with i from 1 to %3")
-                  .arg(name, parser.value(name))
-                  .arg(n);
-      return std::nullopt;
-    }
-    bool okFrom = false, okTo = false, okCount = false;
-    core::ChainMapAxis& target = std::string(name) == "x" ? spec.x : spec.y;
-    target = *axis;
-    target.range.from = parts[1].toDouble(&okFrom);
-    target.range.to = parts[2].toDouble(&okTo);
-    target.range.count = parts[3].toLongLong(&okCount);
-    if (!okFrom || !okTo || !okCount || target.range.count < 1) {
-      error = QStringLiteral("--%1: '%2' is not u<i>|v<i>:from:to:count (numbers, a count >= 1)").arg(name, parser.value(name));
-      return std::nullopt;
-    }
-  }
-  if (parser.isSet("contacts")) {
-    bool ok = false;
-    spec.contacts = parser.value("contacts").toLongLong(&ok);
-    if (!ok || spec.contacts < 1) {
-      error = QStringLiteral("--contacts: '%1' is not a count >= 1").arg(parser.value("contacts"));
-      return std::nullopt;
-    }
-  }
-  const std::string problem = core::checkChainMap(spec);
-  if (!problem.empty()) {
-    error = QString::fromStdString(problem);
-    return std::nullopt;
-  }
-  return spec;
-}
-
-// The spec object of an N-mass map (the two-mass one's fields, the chain instead of the model)
-QJsonObject chainSpecJson(const core::ChainMapSpec& spec, double period, const QString& pictureQuantity) {
-  QJsonObject object = map::specJson(core::MapSpec{}, period, pictureQuantity);
-  object.remove("model");
-  object.remove("horizon");
-  const auto axisJson = [](const core::ChainMapAxis& axis) {
-    return QJsonObject{{"variable", QString::fromStdString(axis.name())}, {"from", axis.range.from},
-                       {"to", axis.range.to}, {"count", qint64(axis.range.count)},
-                       {"values", "numpy.linspace(from, to, count)"}};
-  };
-  // the flights' ratios are to the chain's period, not T2
-  QJsonObject quantities = object["quantities"].toObject();
-  for (const QString& name : quantities.keys()) {
-    QJsonObject quantity = quantities[name].toObject();
-    if (quantity["unit"].toString() == "T2") quantity["unit"] = "period";
-    quantities[name] = quantity;
-  }
-  object["quantities"] = quantities;
-  object["x"] = axisJson(spec.x);
-  object["y"] = axisJson(spec.y);
-  object["chain"] = QJsonDocument::fromJson(QByteArray::fromStdString(oneLine(massChainValue(spec.chain, period)))).object();
-  QJsonArray u, v;
-  for (Eigen::Index i = 0; i < spec.start.u.size(); ++i) {
-    u.append(spec.start.u[i]);
-    v.append(spec.start.v[i]);
-  }
-  object["start"] = QJsonObject{{"u", u}, {"v", v}, {"set_by_axes", "each run's start is this one with the axes' coordinates set"}};
-  object["contacts"] = qint64(spec.contacts);
-  object["contacts_note"] = "each run makes this many contacts";
-  object["period"] = period;
-  object["period_note"] = "fft_min, fft_max and fft_mean are in units of this period: the common period T of a "
-                          "commensurate chain, else the slowest mode's period";
-  return object;
-}
-
 void addMapOptions(QCommandLineParser& parser) {
   parser.addOptions({
       {"x", QStringLiteral("map: the columns, NAME:from:to:count; NAME is one of %1.")
@@ -330,7 +208,7 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
   std::optional<core::ChainMapSpec> chainSpec;
   if (masses) {
     bool stopped = false;
-    chainSpec = parseChainSpec(parser, stop, error, stopped);
+    chainSpec = parseChainMapSpec(parser, stop, error, stopped);
     if (stopped) return kExitInterrupted;
     if (!chainSpec) return kExitInvalidInput;
   } else {
