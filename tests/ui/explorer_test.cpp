@@ -414,6 +414,10 @@ class ExplorerTest : public QObject {
                                     });
     Params params = m_window->params();
     m_window->controller()->setGrace(60'000);
+    // runs long enough to be still going when the last value is applied (edits are spaced by
+    // at least 33 ms): 20 000 contacts now take ~10 ms, and the first run then ended before
+    // the next value came, never superseded
+    params.horizon = 200'000;
     for (const double lambda : {0.60, 0.62, 0.64}) {
       params.lambda = lambda;
       m_window->setParams(params);
