@@ -3,7 +3,6 @@
 #include "core/experiments/chain_map.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -15,7 +14,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr std::int64_t kMaxAxisCount = std::int64_t(1) << 24;
-constexpr std::int64_t kPiece = 64;  // points handed to a thread at a time, as computeMap
 
 PointSummary noRun() {
   PointSummary point;
@@ -134,33 +132,13 @@ PointSummary chainMapPoint(const ChainMapSpec& spec, std::int64_t column, std::i
 
 MapRows computeChainMap(const ChainMapSpec& spec, RowRange rows, const ParallelFor& parallelFor,
                         std::stop_token stop, const MapRowsProgress& progress) {
-  MapRows map;
-  map.rows = rows;
-  map.columns = spec.x.range.count;
-  const std::int64_t count = (rows.rowEnd - rows.rowBegin) * map.columns;
-  map.points.assign(std::size_t(count), noRun());
+  MapRows map = computeRows(
+      spec.x.range.count, rows,
+      [&spec](std::int64_t column, std::int64_t row, std::stop_token pointStop) {
+        return chainMapPoint(spec, column, row, pointStop);
+      },
+      noRun(), parallelFor, stop, progress);
   map.period = chainMapPeriod(spec.chain);
-  std::atomic<std::int64_t> done = 0;
-  parallelFor((count + kPiece - 1) / kPiece, [&](std::int64_t pieceBegin, std::int64_t pieceEnd) {
-    for (std::int64_t piece = pieceBegin; piece < pieceEnd; ++piece) {
-      if (stop.stop_requested()) return;
-      // a token per piece, as computeMap (a shared one's count bounces between the cores)
-      std::stop_source local;
-      const std::stop_callback forward(stop, [&local] { local.request_stop(); });
-      const std::stop_token localStop = local.get_token();
-      const std::int64_t first = piece * kPiece;
-      const std::int64_t last = std::min(count, first + kPiece);
-      for (std::int64_t i = first; i < last; ++i) {
-        const PointSummary point = chainMapPoint(spec, i % map.columns, rows.rowBegin + i / map.columns, localStop);
-        if (localStop.stop_requested()) return;
-        map.points[std::size_t(i)] = point;
-      }
-      const std::int64_t total = done.fetch_add(last - first) + (last - first);
-      if (progress) progress(total);
-    }
-  });
-  map.computed = done.load();
-  map.complete = map.computed == count && !stop.stop_requested();
   return map;
 }
 

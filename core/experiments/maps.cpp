@@ -382,14 +382,13 @@ PointSummary mapPoint(const MapSpec& spec, std::int64_t column, std::int64_t row
   return summary;
 }
 
-MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parallelFor,
-               std::stop_token stop, const MapRowsProgress& progress) {
+MapRows computeRows(std::int64_t columns, RowRange rows, const MapPoint& point, const PointSummary& unset,
+                    const ParallelFor& parallelFor, std::stop_token stop, const MapRowsProgress& progress) {
   MapRows map;
   map.rows = rows;
-  map.columns = spec.x.count;
+  map.columns = columns;
   const std::int64_t count = (rows.rowEnd - rows.rowBegin) * map.columns;
-  map.points.assign(std::size_t(count), invalidPoint());
-  map.period = basePeriod(spec.model);
+  map.points.assign(std::size_t(count), unset);
 
   std::atomic<std::int64_t> done = 0;
   parallelFor((count + kPiece - 1) / kPiece, [&](std::int64_t pieceBegin, std::int64_t pieceEnd) {
@@ -405,10 +404,10 @@ MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parall
       const std::int64_t last = std::min(count, first + kPiece);
       for (std::int64_t i = first; i < last; ++i) {
         const std::int64_t row = rows.rowBegin + i / map.columns;
-        const PointSummary point = mapPoint(spec, i % map.columns, row, localStop);
-        // a run cut short by the stop is not the point's summary: it stays invalid
+        const PointSummary summary = point(i % map.columns, row, localStop);
+        // a run cut short by the stop is not the point's summary: it stays unset
         if (localStop.stop_requested()) return;
-        map.points[std::size_t(i)] = point;
+        map.points[std::size_t(i)] = summary;
       }
       const std::int64_t total = done.fetch_add(last - first) + (last - first);
       if (progress) progress(total);
@@ -416,6 +415,18 @@ MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parall
   });
   map.computed = done.load();
   map.complete = map.computed == count && !stop.stop_requested();
+  return map;
+}
+
+MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parallelFor,
+               std::stop_token stop, const MapRowsProgress& progress) {
+  MapRows map = computeRows(
+      spec.x.count, rows,
+      [&spec](std::int64_t column, std::int64_t row, std::stop_token pointStop) {
+        return mapPoint(spec, column, row, pointStop);
+      },
+      invalidPoint(), parallelFor, stop, progress);
+  map.period = basePeriod(spec.model);
   return map;
 }
 

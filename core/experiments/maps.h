@@ -139,6 +139,14 @@ ParallelFor serialFor();
 /// threads at once.
 using MapRowsProgress = std::function<void(std::int64_t done)>;
 
+/// Rows `rows` of a grid of `columns` columns whose point (column, row) is `point(column, row,
+/// stop)`, every point `unset` until computed: pieces handed to `parallelFor`, each watching a
+/// stop token of its own (computeMap's and computeChainMap's loop; `period` left 0).
+using MapPoint = std::function<PointSummary(std::int64_t column, std::int64_t row, std::stop_token stop)>;
+MapRows computeRows(std::int64_t columns, RowRange rows, const MapPoint& point, const PointSummary& unset,
+                    const ParallelFor& parallelFor, std::stop_token stop = {},
+                    const MapRowsProgress& progress = {});
+
 /// Computes rows `rows` of the map. Precondition: checkMap(spec) is empty.
 MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parallelFor,
                std::stop_token stop = {}, const MapRowsProgress& progress = {});
