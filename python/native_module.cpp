@@ -24,6 +24,7 @@
 #include <optional>
 #include <stop_token>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -101,10 +102,18 @@ py::dtype eventDtype() {
   return py::dtype::from_args(description);
 }
 
+// NumPy types made once, when the module is imported (a dtype from a description costs a few
+// microseconds: as much as a short run); constants, never changed, kept to the process's end.
+struct NumpyTypes {
+  py::dtype events;
+  py::dtype samples;
+};
+const NumpyTypes* numpyTypes = nullptr;
+
 // The events as a NumPy array that owns the table's rows (no copy: the vector moves into the
 // array's base object).
 py::array eventArray(std::unique_ptr<EventTable> table) {
-  const py::dtype dtype = eventDtype();
+  const py::dtype& dtype = numpyTypes->events;
   const auto count = static_cast<py::ssize_t>(table->rows.size());
   if (count == 0) return py::array(dtype, py::array::ShapeContainer{py::ssize_t(0)}, py::array::StridesContainer{py::ssize_t(sizeof(EventRow))});
   auto* rows = new std::vector<EventRow>(std::move(table->rows));
@@ -162,8 +171,8 @@ py::tuple mapInMemory(grazelab::cli::map::StoredMap&& map) {
   return py::make_tuple(py::bytes(document.constData(), std::size_t(document.size())), array);
 }
 
-// A run's samples as a NumPy array (t, u1, u2, v1, v2) that owns them (no copy).
-py::array sampleArray(std::vector<grazelab::core::Sample>&& samples) {
+// The NumPy type of a two-mass run's samples: t, u1, u2, v1, v2.
+py::dtype sampleDtype() {
   using grazelab::core::Sample;
   static_assert(sizeof(Sample) == 5 * sizeof(double));
   py::list names, formats, offsets;
@@ -181,9 +190,15 @@ py::array sampleArray(std::vector<grazelab::core::Sample>&& samples) {
   description["formats"] = formats;
   description["offsets"] = offsets;
   description["itemsize"] = sizeof(Sample);
+  return py::dtype::from_args(description);
+}
+
+// A run's samples as a NumPy array (t, u1, u2, v1, v2) that owns them (no copy).
+py::array sampleArray(std::vector<grazelab::core::Sample>&& samples) {
+  using grazelab::core::Sample;
   auto* owned = new std::vector<Sample>(std::move(samples));
   py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<Sample>*>(p); });
-  return py::array(py::dtype::from_args(description), {static_cast<py::ssize_t>(owned->size())},
+  return py::array(numpyTypes->samples, {static_cast<py::ssize_t>(owned->size())},
                    {static_cast<py::ssize_t>(sizeof(Sample))}, owned->data(), owner);
 }
 
@@ -327,28 +342,90 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
                         documentResult, filesResult);
 }
 
-// simulate(options, result_type, events, max_events, discard_events)
-//   -> (result, messages, events, decimals)
-// `grazelab-cli simulate` on the calling thread, its options given by name: no command-line
-// text, no parser, no thread (a short run, which the caller keeps short: nothing interrupts it),
-// its document handed over as values, not as text.
-py::tuple simulateHere(const py::list& given, const py::object& resultType, bool eventsAsArrays,
-                       std::size_t maxEvents, bool discardEvents) {
-  // (name, text) pairs read in place: a few microseconds less than a converted vector
-  std::vector<std::pair<QString, QString>> named;
-  named.reserve(std::size_t(PyList_GET_SIZE(given.ptr())));
-  auto text = [](PyObject* item) {
-    Py_ssize_t size = 0;
-    const char* utf8 = PyUnicode_Check(item) ? PyUnicode_AsUTF8AndSize(item, &size) : nullptr;
-    if (!utf8) throw py::type_error("simulate: options are (name, text) pairs of str");
-    return QString::fromUtf8(utf8, size);
-  };
-  for (Py_ssize_t i = 0; i < PyList_GET_SIZE(given.ptr()); ++i) {
-    PyObject* pair = PyList_GET_ITEM(given.ptr(), i);
-    if (!PyTuple_Check(pair) || PyTuple_GET_SIZE(pair) != 2) {
-      throw py::type_error("simulate: options are (name, text) pairs of str");
+// An option's value as the direct call takes it: a str is its text; a float, an int exact in
+// double or a tuple/list of them are numbers. False for any other type (the caller then writes
+// the options as text: NumPy scalars, Fractions, ...).
+bool readGiven(PyObject* value, grazelab::cli::GivenOption& option) {
+  auto number = [](PyObject* item, double& out) {
+    if (PyFloat_CheckExact(item)) {
+      out = PyFloat_AS_DOUBLE(item);
+      return true;
     }
-    named.emplace_back(text(PyTuple_GET_ITEM(pair, 0)), text(PyTuple_GET_ITEM(pair, 1)));
+    if (!PyLong_CheckExact(item)) return false;  // (a bool is an int subclass: refused here)
+    int overflow = 0;
+    const long long whole = PyLong_AsLongLongAndOverflow(item, &overflow);
+    if (overflow != 0 || whole > (1LL << 53) || whole < -(1LL << 53)) return false;
+    out = double(whole);
+    return true;
+  };
+  if (PyUnicode_CheckExact(value)) {
+    Py_ssize_t size = 0;
+    const char* utf8 = PyUnicode_AsUTF8AndSize(value, &size);
+    if (!utf8) throw py::error_already_set();
+    option.text = QString::fromUtf8(utf8, size);
+    return true;
+  }
+  double single = 0;
+  if (number(value, single)) {
+    option.numeric = true;
+    option.numbers.assign(1, single);
+    return true;
+  }
+  if (!PyTuple_CheckExact(value) && !PyList_CheckExact(value)) return false;
+  const Py_ssize_t size = PySequence_Fast_GET_SIZE(value);
+  option.numeric = true;
+  option.numbers.resize(std::size_t(size));
+  for (Py_ssize_t i = 0; i < size; ++i) {
+    if (!number(PySequence_Fast_GET_ITEM(value, i), option.numbers[std::size_t(i)])) return false;
+  }
+  return true;
+}
+
+// The notes among a command's messages: each line "grazelab-cli: note: TEXT" as TEXT.
+py::list notesOf(const std::string& messages) {
+  static constexpr std::string_view kNote = "grazelab-cli: note: ";
+  py::list notes;
+  std::size_t at = 0;
+  while (at < messages.size()) {
+    std::size_t end = messages.find('\n', at);
+    if (end == std::string::npos) end = messages.size();
+    const std::string_view line(messages.data() + at, end - at);
+    if (line.substr(0, kNote.size()) == kNote) notes.append(py::str(std::string(line.substr(kNote.size()))));
+    at = end + 1;
+  }
+  return notes;
+}
+
+// simulate(options, result_type, events, max_events, discard_events)
+//   -> (result with its events and notes, decimals), or None when an option's value is not of a
+//      type read directly (then give the options as text)
+// `grazelab-cli simulate` on the calling thread, its options given by name as (name, value,
+// name, value, ...) with None for an option not given: no command-line text, no parser, no thread (a short
+// run, which the caller keeps short: nothing interrupts it), its document handed over as values,
+// not as text. The numbers are read as the command line reads their shortest decimal text.
+py::object simulateHere(const py::sequence& given, const py::object& resultType, bool eventsAsArrays,
+                        std::size_t maxEvents, bool discardEvents) {
+  std::vector<grazelab::cli::GivenOption> named;
+  const py::object flat = py::reinterpret_steal<py::object>(PySequence_Fast(given.ptr(), "options"));
+  if (!flat) throw py::error_already_set();
+  const Py_ssize_t count = PySequence_Fast_GET_SIZE(flat.ptr());
+  if (count % 2 != 0) throw py::type_error("simulate: options are name, value, name, value, ...");
+  named.reserve(std::size_t(count / 2));
+  for (Py_ssize_t i = 0; i < count; i += 2) {
+    PyObject* key = PySequence_Fast_GET_ITEM(flat.ptr(), i);
+    PyObject* value = PySequence_Fast_GET_ITEM(flat.ptr(), i + 1);
+    if (!PyUnicode_Check(key)) throw py::type_error("simulate: options are name, value, name, value, ...");
+    if (value == Py_None) continue;
+    grazelab::cli::GivenOption option;
+    Py_ssize_t size = 0;
+    const char* name = PyUnicode_AsUTF8AndSize(key, &size);
+    if (!name) throw py::error_already_set();
+    option.name.assign(name, std::size_t(size));
+    // a sequence only where one is expected: elsewhere the text path says what is wrong
+    const bool sequence = PyTuple_Check(value) || PyList_Check(value);
+    if (sequence && option.name != "state" && option.name != "perturb") return py::none();
+    if (!readGiven(value, option)) return py::none();
+    named.push_back(std::move(option));
   }
   const grazelab::cli::OptionValues options(std::move(named));
   QString error;
@@ -357,13 +434,12 @@ py::tuple simulateHere(const py::list& given, const py::object& resultType, bool
   const auto trust = grazelab::cli::parseTrustOption(options, error);
   if (!trust) throw py::value_error(error.simplified().toStdString());
 
-  MemoryStream output;
   MemoryStream messages;
   auto table = std::make_unique<EventTable>();
   table->maxRows = maxEvents;
   table->discard = discardEvents;
   grazelab::cli::Io io;
-  io.out = output.file();
+  io.out = messages.file();  // (a run whose document is taken as values writes no output)
   io.messages = messages.file();
   if (eventsAsArrays || discardEvents) io.events = table.get();
   grazelab::cli::JsonValue document;
@@ -389,8 +465,15 @@ py::tuple simulateHere(const py::list& given, const py::object& resultType, bool
     if (!table->decimals.empty()) decimals = py::cast(table->decimals);
     events = eventArray(std::move(table));
   }
-  return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers(), std::move(samples)),
-                        py::str(log), events, decimals);
+  py::object result = documentToPython(document, resultType, document.holdsWideNumbers(), std::move(samples));
+  // (names made once: a short run's call is a few microseconds)
+  static PyObject* const eventsKey = PyUnicode_InternFromString("events");
+  static PyObject* const notesKey = PyUnicode_InternFromString("notes");
+  if (PyDict_SetItem(result.ptr(), eventsKey, events.ptr()) != 0 ||
+      PyDict_SetItem(result.ptr(), notesKey, notesOf(log).ptr()) != 0) {
+    throw py::error_already_set();
+  }
+  return py::make_tuple(result, decimals);
 }
 
 }  // namespace
@@ -401,6 +484,8 @@ PYBIND11_MODULE(_native, module) {
   QCoreApplication::setApplicationName(QStringLiteral("grazelab-cli"));
   QCoreApplication::setApplicationVersion(QString::fromUtf8(grazelab::cli::kVersion));
   module.attr("version") = grazelab::cli::kVersion;
+  // (deliberately never freed: a dtype released after the interpreter's end would crash it)
+  numpyTypes = new NumpyTypes{eventDtype(), sampleDtype()};
   module.def("run", &run, py::arg("arguments"), py::arg("progress") = py::none(),
              py::arg("events") = false, py::arg("max_events") = std::size_t(-1),
              py::arg("discard_events") = false, py::arg("keep_map") = false,
@@ -417,7 +502,9 @@ PYBIND11_MODULE(_native, module) {
   module.def("simulate", &simulateHere, py::arg("options"), py::arg("result_type"),
              py::arg("events") = true, py::arg("max_events") = std::size_t(-1),
              py::arg("discard_events") = false,
-             "grazelab-cli simulate on the calling thread, its options as (name, text) pairs: "
-             "(result, messages, events or None, decimals or None). A short run only: nothing "
+             "grazelab-cli simulate on the calling thread, its options as (name, value, name, "
+             "value, ...) (a value str, float, int or a tuple of numbers; None: not given): (result with "
+             "its events and notes, the events' decimal text or None), or None when a value is "
+             "of another type (give the options as text). A short run only: nothing "
              "interrupts it.");
 }

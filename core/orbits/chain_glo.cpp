@@ -9,6 +9,7 @@
 #include <tuple>
 #include <utility>
 
+#include "core/numbers/roots.h"
 #include "core/solver/sinusoid_zero.h"
 
 namespace grazelab::core {
@@ -88,7 +89,7 @@ namespace {
 // The edge along weights(r), r from `in` (grazes) to `out` (crosses), as a bracket
 // [certainly grazes, certainly crosses]: between them lie the points the search calls Boundary
 // (a touch within rounding), so it is bisected twice, Boundary counted once on each side; each
-// bisection runs until its bracket is within a few ulps
+// bisection runs to adjacent doubles
 //
 // Where the edge is the flat point (sum lambda_j n_j^2 = 0: the touch at theta = 0 turns from
 // second to fourth order, the note's lambda = 4/3), the search cannot see the start leave within
@@ -97,18 +98,15 @@ template <typename Weights>
 std::pair<double, double> bisectEdge(const std::vector<int>& harmonics, const Weights& weights, double in, double out,
                                      double flat = std::numeric_limits<double>::quiet_NaN()) {
   const auto bisect = [&](double inside, double outside, bool boundaryInside) {
-    for (int step = 0; step < 200; ++step) {
-      const double middle = inside + (outside - inside) / 2;
-      if (middle == inside || middle == outside) break;
-      if (std::abs(outside - inside) <=
-          4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(inside), std::abs(outside))) {
-        break;
-      }
+    double lastOutside = outside;  // where the bracket's outer end ends: the last point outside
+    const auto grazes = [&](double middle) {
       const GloGrazing answer = gloGrazing(harmonics, weights(middle));
-      const bool grazes = answer == GloGrazing::Grazes || (boundaryInside && answer == GloGrazing::Boundary);
-      (grazes ? inside : outside) = middle;
-    }
-    return std::pair{inside, outside};
+      const bool in = answer == GloGrazing::Grazes || (boundaryInside && answer == GloGrazing::Boundary);
+      if (!in) lastOutside = middle;
+      return in;
+    };
+    const double lastInside = bisectBoundary(inside, outside, grazes, [] { return false; });
+    return std::pair{lastInside, lastOutside};
   };
   const double firstCrossing = bisect(in, out, true).second;
   const double lastGrazing = bisect(in, out, false).first;

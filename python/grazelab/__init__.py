@@ -294,6 +294,19 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         return result
     if frequencies is not None or design_branch is not None or springs is not None or glo_weights is not None:
         raise ValueError("springs, frequencies, design_branch and glo_weights describe a chain given by masses")
+    if (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS and contacts <= MAX_EVENTS
+            and progress is None and k2 is None and t_end is None and samples is None):
+        # a short run of a designed chain: the same command called directly, its numbers handed
+        # over as numbers (None when one is of a type it does not take: then as text, below)
+        answer = _simulate_here(("m1", m1, "m2", m2, "k1", k1, "gap", gap, "branch", branch,
+                                 "precision", precision, "glo", glo, "onepp", onepp, "state", state,
+                                 "perturb", perturb, "contacts", contacts, "search-steps", search_steps,
+                                 "trust", trust), Result, events, MAX_EVENTS, not events)
+        if answer is not None:
+            result, decimals = answer
+            if decimals is None and result["trust"]["verdict"] != "unreliable":
+                return result  # (the common case, without another call)
+            return _simulated(result, decimals)
     try:
         count = int(_convert._text("contacts", contacts)) if contacts is not None else None
     except (TypeError, ValueError):
@@ -310,24 +323,28 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         options["sample_times" if grid else "sample_step"] = samples
     if (progress is None and k2 is None and t_end is None and samples is None and count is not None
             and 0 <= count <= _DIRECT_CONTACTS):
-        # a short run of a designed chain: the same command, called directly
+        # a short run whose values are of other types (NumPy, Fraction): called directly, as text
         given = _convert.option_texts({n: v for n, v in options.items() if v is not None})
-        result, messages, table, decimals = _simulate_here(given, Result, events, MAX_EVENTS, not events)
-        lines = [text for text in messages.splitlines() if text.strip()]
-    else:
-        result, lines, table, decimals = _command("simulate", options, progress, events=events,
-                                                  discard_events=not events, document=True)
-    used_precision_exact = decimals is not None
+        flat = tuple(part for pair in given for part in pair)
+        return _simulated(*_simulate_here(flat, Result, events, MAX_EVENTS, not events))
+    result, lines, table, decimals = _command("simulate", options, progress, events=events,
+                                              discard_events=not events, document=True)
     result["events"] = table
     result["notes"] = _notes(lines)
-    if used_precision_exact:
+    return _simulated(result, decimals)
+
+
+def _simulated(result, decimals):
+    """A two-mass run's result (its document with its events and notes) and the events' decimal
+    text (None in double), as simulate returns it."""
+    if decimals is not None:
         columns = ("t", "u1", "u2", "v1", "v2_pre", "v2_post")
         text = _np.array(decimals, dtype=str).reshape(-1, len(columns))
         result["events_decimal"] = {name: text[:, i] for i, name in enumerate(columns)}
         result["decimal"].pop("events", None)
     if result.get("trust", {}).get("verdict") == "unreliable":
         _warnings.warn(f"simulate: the run's error estimate says unreliable: "
-                       f"{result['trust'].get('reason', '')}", GrazeLabWarning, stacklevel=2)
+                       f"{result['trust'].get('reason', '')}", GrazeLabWarning, stacklevel=3)
     return result
 
 

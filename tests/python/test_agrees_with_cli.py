@@ -114,6 +114,35 @@ def test_arguments_keep_every_digit_of_their_type(cli_json):
         gl.simulate(trust=False)  # not a way to say "off"
 
 
+@pytest.mark.parametrize("precision", ["double", "long", "quad", "auto"])
+def test_numbers_handed_over_as_numbers_read_as_their_shortest_text(precision):
+    # a short run hands its floats to the core as doubles: in double they are read as such, in
+    # long and quad as the decimal text Python writes for them (0.1 is the quad nearest 1/10, not
+    # the double nearest it); text, NumPy scalars (written as text) and numbers agree throughout
+    common = dict(contacts=3, precision=precision, trust="off")
+    for numbers, texts in [
+        (dict(glo=0.1, m2=0.3, perturb=(0, 0, -0.0, -1e-3)), dict(glo="0.1", m2="0.3", perturb="0,0,0,-0.001")),
+        (dict(state=[0.25, 1, 0, 0.5], gap=2.0, k1=3), dict(state="0.25,1,0,0.5", gap="2", k1="3")),
+        (dict(onepp=8.5, m1=1.1, gap=1e3), dict(onepp="8.5", m1="1.1", gap="1000")),
+    ]:
+        run = gl.simulate(**numbers, **common)
+        text = gl.simulate(**texts, **common)
+        numpy = gl.simulate(**{k: np.float64(v) if isinstance(v, float) else v for k, v in numbers.items()},
+                            **common)
+        for other in (text, numpy):
+            assert without_timing(run) == without_timing(other)
+            np.testing.assert_array_equal(run.events, other.events)
+            if "decimal" in run:
+                assert without_timing(run.decimal) == without_timing(other.decimal)
+    # one number where one is expected, a number where a number is expected
+    with pytest.raises(TypeError, match="glo"):
+        gl.simulate(glo=[0.5], contacts=2)
+    with pytest.raises(TypeError, match="expected a number"):
+        gl.simulate(glo=True, contacts=2)
+    with pytest.raises(ValueError, match="perturb"):
+        gl.simulate(perturb=(0, 0, 0), contacts=2)
+
+
 def test_info_is_the_cli_json(cli_json):
     assert gl.info(m2=0.3, gap=2.5) == cli_json("info", "--m2", "0.3", "--gap", "2.5")
     quad = gl.info(m2=0.3, precision="quad")

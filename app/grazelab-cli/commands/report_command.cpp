@@ -83,7 +83,7 @@ std::optional<ReportInput> parseReportInput(const QCommandLineParser& parser, QS
   core::methods::Task& task = input.task;
   task.model = run.value->model.model;
   task.start = run.value->request.initial;
-  input.startDescription = run.value->initialDescription;
+  input.startDescription = QString::fromStdString(run.value->initialDescription);
   const bool startGiven = parser.isSet("glo") || parser.isSet("onepp") || parser.isSet("state") ||
                           parser.isSet("perturb");
   if (!startGiven) {

@@ -30,7 +30,7 @@ namespace {
 class ProgressLine {
  public:
   explicit ProgressLine(const Io& io)
-      : m_io(io), m_terminal(isatty(fileno(io.messages)) != 0) {}
+      : m_io(io), m_terminal(fileno(io.messages) >= 0 && isatty(fileno(io.messages)) != 0) {}
   bool enabled() const { return m_terminal || m_io.progress; }
   void show(std::int64_t contacts, double simulatedTime, double fraction,
             const std::string& precision) {

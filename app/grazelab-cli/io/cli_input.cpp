@@ -19,13 +19,19 @@ namespace {
 QString fromStd(const std::string& text) { return QString::fromStdString(text); }
 
 // --NAME as a whole number >= least, or the reason it is not one
-std::optional<std::int64_t> countOption(const OptionValues& options, const QString& name,
+std::optional<std::int64_t> countOption(const OptionValues& options, const char* name,
                                         std::int64_t least, QString& error) {
+  // a whole number given as a number (below 2^53: exact in double) is its count
+  if (const auto numbers = options.numbers(name);
+      numbers && numbers->size() == 1 && std::fabs(numbers->front()) < 0x1p53 &&
+      numbers->front() == std::trunc(numbers->front()) && numbers->front() >= double(least)) {
+    return static_cast<std::int64_t>(numbers->front());
+  }
   bool ok = false;
   const qlonglong value = options.value(name).toLongLong(&ok);
   if (!ok || value < least) {
     error = QStringLiteral("--%1: '%2' is not a count (a whole number >= %3)")
-                .arg(name, options.value(name))
+                .arg(QString::fromUtf8(name), options.value(name))
                 .arg(least);
     return std::nullopt;
   }
@@ -58,6 +64,35 @@ std::optional<core::BasicState<S>> toState(const QString& option, const QString&
     values[i] = *value;
   }
   return core::BasicState<S>{values[0], values[1], values[2], values[3]};
+}
+
+// A number given as a number, read in double: the double itself, as its text would read (-0 as
+// 0: the Python module writes a whole number as an integer). Null for any other: read the text.
+template <typename S>
+std::optional<S> givenDouble(const OptionValues& options, const char* name, std::size_t at, std::size_t count) {
+  if constexpr (std::is_same_v<S, double>) {
+    const auto numbers = options.numbers(name);
+    if (numbers && numbers->size() == count && std::isfinite((*numbers)[at])) return (*numbers)[at] + 0.0;
+  }
+  return std::nullopt;
+}
+
+// --NAME as a number in precision S
+template <typename S>
+std::optional<S> numberOption(const OptionValues& options, const char* name, QString& error) {
+  if (const auto given = givenDouble<S>(options, name, 0, 1)) return given;
+  return toNumber<S>(QString::fromUtf8(name), options.value(name), error);
+}
+
+// --NAME as a state in precision S
+template <typename S>
+std::optional<core::BasicState<S>> stateOption(const OptionValues& options, const char* name, QString& error) {
+  if (givenDouble<S>(options, name, 0, 4)) {
+    const std::optional<S> u1 = givenDouble<S>(options, name, 0, 4), u2 = givenDouble<S>(options, name, 1, 4),
+                           v1 = givenDouble<S>(options, name, 2, 4), v2 = givenDouble<S>(options, name, 3, 4);
+    if (u1 && u2 && v1 && v2) return core::BasicState<S>{*u1, *u2, *v1, *v2};
+  }
+  return toState<S>(QString::fromUtf8(name), options.value(name), error);
 }
 
 // The options of `info` and `simulate`: name, description, value name, default.
@@ -123,9 +158,9 @@ const OptionSpec kOptions[] = {
 
 }  // namespace
 
-QString defaultOptionValue(const QString& name) {
+QString defaultOptionValue(std::string_view name) {
   for (const OptionSpec& option : kOptions) {
-    if (name == QLatin1String(option.name)) {
+    if (name == option.name) {
       return option.defaultValue ? QString::fromUtf8(option.defaultValue) : QString();
     }
   }
@@ -195,7 +230,7 @@ Parsed<ModelInput<S>> parseModel(const OptionValues& options) {
   S values[4];
   const char* names[] = {"m1", "m2", "k1", "gap"};
   for (int i = 0; i < 4; ++i) {
-    const auto value = toNumber<S>(names[i], options.value(names[i]), error);
+    const auto value = numberOption<S>(options, names[i], error);
     if (!value) return {std::nullopt, error};
     values[i] = *value;
   }
@@ -205,7 +240,7 @@ Parsed<ModelInput<S>> parseModel(const OptionValues& options) {
   }
   core::BasicModel<S> model{values[0], values[1], values[2], S(1), values[3], std::nullopt};
   if (options.isSet("k2")) {
-    const auto k2 = toNumber<S>("k2", options.value("k2"), error);
+    const auto k2 = numberOption<S>(options, "k2", error);
     if (!k2) return {std::nullopt, error};
     model.k2 = *k2;
   } else {
@@ -240,26 +275,26 @@ Parsed<core::StartSpec<S>> parseStartSpec(const OptionValues& options,
   if (starts > 1) return {std::nullopt, "give one of --glo, --onepp, --state, not several"};
   core::StartSpec<S> spec;
   if (options.isSet("onepp")) {
-    const auto period = toNumber<S>("onepp", options.value("onepp"), error);
+    const auto period = numberOption<S>(options, "onepp", error);
     if (!period) return {std::nullopt, error};
     spec.kind = core::StartSpec<S>::Kind::OnePeriodic;
     spec.period = *period;
   } else if (options.isSet("state")) {
-    const auto state = toState<S>("state", options.value("state"), error);
+    const auto state = stateOption<S>(options, "state", error);
     if (!state) return {std::nullopt, error};
     spec.kind = core::StartSpec<S>::Kind::Explicit;
     spec.state = *state;
   } else {
-    const QString text = options.isSet("glo") ? options.value("glo") : "0.5";
-    const auto lambda = toNumber<S>("glo", text, error);
+    const auto lambda = options.isSet("glo") ? numberOption<S>(options, "glo", error)
+                                             : toNumber<S>("glo", "0.5", error);
     if (!lambda) return {std::nullopt, error};
     if (!core::isFinite(*lambda)) {
-      return {std::nullopt, QStringLiteral("--glo must be a finite number (got %1)").arg(text)};
+      return {std::nullopt, QStringLiteral("--glo must be a finite number (got %1)").arg(options.value("glo"))};
     }
     spec.lambda = *lambda;
   }
   if (options.isSet("perturb")) {
-    const auto delta = toState<S>("perturb", options.value("perturb"), error);
+    const auto delta = stateOption<S>(options, "perturb", error);
     if (!delta) return {std::nullopt, error};
     const auto problems = core::validateState(model, *delta, "perturb");
     for (const auto& problem : problems) {
@@ -436,7 +471,7 @@ Parsed<RunInput<S>> parseRun(const OptionValues& options) {
   const auto stateProblems = core::validateState(run.model.model, start.start->state, "initial");
   if (!stateProblems.empty()) return {std::nullopt, fromStd(core::describe(stateProblems))};
   run.request.initial = start.start->state;
-  run.initialDescription = fromStd(start.start->description);
+  run.initialDescription = std::move(start.start->description);
   // core's notes on the start are about rounding: the command line can raise the precision
   for (const std::string& note : start.start->notes) run.notes.push_back(note + " (try --precision quad)");
 
@@ -448,7 +483,7 @@ Parsed<RunInput<S>> parseRun(const OptionValues& options) {
     run.request.maxContacts = options.isSet("t-end") ? std::numeric_limits<std::int64_t>::max() : 100;
   }
   if (options.isSet("t-end")) {
-    const auto tEnd = toNumber<S>("t-end", options.value("t-end"), error);
+    const auto tEnd = numberOption<S>(options, "t-end", error);
     if (!tEnd) return {std::nullopt, error};
     if (!(*tEnd >= 0)) {
       return {std::nullopt,
@@ -517,7 +552,7 @@ Parsed<RunInput<S>> parseRun(const OptionValues& options) {
   // outputs stream every event through the request's callback; nothing is kept in memory but
   // the samples asked for
   run.request.needs.events = false;
-  return {run, {}};
+  return {std::move(run), {}};
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                     \

@@ -64,7 +64,7 @@ template <typename S>
 struct RunInput {
   ModelInput<S> model;
   core::BasicRequest<S> request;
-  QString initialDescription;  ///< e.g. "GLO_lambda data, lambda = 0.5 (as such: ...)"
+  std::string initialDescription;  ///< e.g. "GLO_lambda data, lambda = 0.5 (as such: ...)"
   std::vector<std::string> notes;  ///< warnings for stderr (a perturbation lost in rounding)
   Format format = Format::Json;
 };

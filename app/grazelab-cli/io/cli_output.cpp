@@ -98,7 +98,7 @@ std::string modelJson(const ModelInput<S>& input, const std::string& precision) 
 
 template <typename S>
 JsonValue initialValue(const RunInput<S>& run) {
-  return JsonValue::object({{"description", JsonValue::of(run.initialDescription.toStdString())},
+  return JsonValue::object({{"description", JsonValue::of(run.initialDescription)},
                             {"state", stateValue(S(0), run.request.initial)}});
 }
 
@@ -165,7 +165,7 @@ std::vector<JsonValue::Field> endValues(const RunInput<S>& run, const core::Basi
 std::string endFields(const std::vector<JsonValue::Field>& fields, const std::string& indent) {
   std::string out;
   for (std::size_t i = 0; i < fields.size(); ++i) {
-    out += indent + quoted(fields[i].first) + ": " + oneLine(fields[i].second);
+    out += indent + quoted(std::string(fields[i].first.view())) + ": " + oneLine(fields[i].second);
     if (i + 1 < fields.size()) out += ",\n";
   }
   return out;
@@ -295,6 +295,7 @@ void RunWriter<S>::begin(const core::BasicResult<S>&) {
     *m_document = JsonValue::object({{"model", modelValue(m_run.model, m_precision)},
                                      {"initial", initialValue(m_run)},
                                      {"events", JsonValue::array({})}});
+    m_document->fields.reserve(16);  // and end()'s, moved in without a reallocation
     return;
   }
   const std::string initial = oneLine(initialValue(m_run));
@@ -332,6 +333,7 @@ void appendEvent(EventTable& table, const core::BasicEvent<S>& event) {
     table.full = true;
     return;
   }
+  if (table.rows.empty()) table.rows.reserve(64);  // (a short run grows it once at most)
   EventRow row{};
   row.t = core::toDouble(event.t);
   const std::string_view type = core::toString(event.type);
@@ -437,7 +439,7 @@ void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
       const core::Chain<S>& chain = m_run.model.chain;
       const core::BasicModel<S>& model = m_run.model.model;
       std::string text;
-      text += "start          " + m_run.initialDescription.toStdString() + "\n";
+      text += "start          " + m_run.initialDescription + "\n";
       text += "chain          m1=" + number(model.m1) + " m2=" + number(model.m2) + " k1=" +
               number(model.k1) + " k2=" + number(model.k2) + " gap=" + number(model.gap) + " (" +
               (chain.resonant ? "1:2 resonant" : "detuned by w1/w2 - 2 = " + number(chain.detuning)) +

@@ -34,6 +34,22 @@ JsonValue JsonValue::array(std::vector<JsonValue> items) {
   return out;
 }
 
+JsonValue JsonValue::array(std::initializer_list<JsonItem> items) {
+  JsonValue out;
+  out.kind = Kind::Array;
+  out.items.reserve(items.size());
+  for (const JsonItem& item : items) out.items.push_back(std::move(*item.value));
+  return out;
+}
+
+JsonValue JsonValue::object(std::initializer_list<JsonMember> members) {
+  JsonValue out;
+  out.kind = Kind::Object;
+  out.fields.reserve(members.size());
+  for (const JsonMember& member : members) out.fields.emplace_back(member.key, std::move(*member.value));
+  return out;
+}
+
 JsonValue JsonValue::object(std::vector<Field> fields) {
   JsonValue out;
   out.kind = Kind::Object;
@@ -78,7 +94,7 @@ void appendOneLine(std::string& out, const JsonValue& value) {
       out += '{';
       for (std::size_t i = 0; i < value.fields.size(); ++i) {
         if (i > 0) out += ", ";
-        out += jsonQuoted(value.fields[i].first);
+        out += jsonQuoted(std::string(value.fields[i].first.view()));
         out += ": ";
         appendOneLine(out, value.fields[i].second);
       }
@@ -100,7 +116,7 @@ std::string fieldPerLine(const JsonValue& object, const std::string& fieldIndent
                          const std::string& closeIndent) {
   std::string out = "{\n";
   for (std::size_t i = 0; i < object.fields.size(); ++i) {
-    out += fieldIndent + jsonQuoted(object.fields[i].first) + ": ";
+    out += fieldIndent + jsonQuoted(std::string(object.fields[i].first.view())) + ": ";
     appendOneLine(out, object.fields[i].second);
     out += i + 1 < object.fields.size() ? ",\n" : "\n";
   }

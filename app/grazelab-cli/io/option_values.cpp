@@ -4,27 +4,71 @@
 
 #include <QCommandLineParser>
 
+#include <charconv>
+#include <cmath>
+
 namespace grazelab::cli {
 
 OptionValues::OptionValues(const QCommandLineParser& parser) : m_parser(&parser) {}
 
-OptionValues::OptionValues(std::vector<std::pair<QString, QString>> given)
-    : m_given(std::move(given)) {}
+OptionValues::OptionValues(std::vector<std::pair<QString, QString>> given) {
+  m_given.reserve(given.size());
+  for (auto& [name, text] : given) m_given.push_back({name.toStdString(), std::move(text), {}, false});
+}
+
+OptionValues::OptionValues(std::vector<GivenOption> given) : m_given(std::move(given)) {}
+
+const GivenOption* OptionValues::given(std::string_view name) const {
+  for (const GivenOption& option : m_given) {
+    if (option.name == name) return &option;
+  }
+  return nullptr;
+}
+
+bool OptionValues::isSet(std::string_view name) const {
+  if (m_parser) return m_parser->isSet(QString::fromUtf8(name.data(), qsizetype(name.size())));
+  return given(name) != nullptr;
+}
 
 bool OptionValues::isSet(const QString& name) const {
   if (m_parser) return m_parser->isSet(name);
-  for (const auto& [key, text] : m_given) {
-    if (key == name) return true;
+  return isSet(std::string_view(name.toStdString()));
+}
+
+QString OptionValues::value(std::string_view name) const {
+  if (m_parser) return m_parser->value(QString::fromUtf8(name.data(), qsizetype(name.size())));
+  const GivenOption* option = given(name);
+  if (!option) return defaultOptionValue(name);
+  if (!option->numeric) return option->text;
+  std::string joined;
+  for (std::size_t i = 0; i < option->numbers.size(); ++i) {
+    if (i > 0) joined += ',';
+    joined += shortestText(option->numbers[i]);
   }
-  return false;
+  return QString::fromStdString(joined);
 }
 
 QString OptionValues::value(const QString& name) const {
   if (m_parser) return m_parser->value(name);
-  for (const auto& [key, text] : m_given) {
-    if (key == name) return text;
+  return value(std::string_view(name.toStdString()));
+}
+
+std::optional<std::span<const double>> OptionValues::numbers(std::string_view name) const {
+  if (m_parser) return std::nullopt;
+  const GivenOption* option = given(name);
+  if (!option || !option->numeric) return std::nullopt;
+  return std::span<const double>(option->numbers.data(), option->numbers.size());
+}
+
+QString defaultOptionValue(const QString& name) { return defaultOptionValue(std::string_view(name.toStdString())); }
+
+std::string shortestText(double value) {
+  char text[32];
+  if (std::isfinite(value) && value == std::trunc(value) && std::fabs(value) < 0x1p53) {
+    return std::to_string(static_cast<long long>(value));
   }
-  return defaultOptionValue(name);
+  const auto written = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, written.ptr);
 }
 
 }  // namespace grazelab::cli

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// What a short `simulate` costs around the core's own run, piece by piece: the Python module's
+// direct call (python/native_module.cpp) is these pieces plus the document's Python objects.
+//   ./build/tests/bench/grazelab_commands_bench
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <stop_token>
+#include <vector>
+
+#include "commands/simulate_command.h"
+#include "core/solver/simulate.h"
+#include "io/cli_input.h"
+#include "io/cli_io.h"
+#include "io/json_value.h"
+
+namespace {
+
+using grazelab::cli::GivenOption;
+using grazelab::cli::OptionValues;
+
+// gl.simulate(glo=0.5, perturb=(0, 0, 0, -0.05), contacts=10, trust="off") as the module hands it over
+OptionValues shortRun() {
+  auto number = [](const char* name, std::initializer_list<double> values) {
+    GivenOption option{name, {}, {}, true};
+    option.numbers.assign(values);
+    return option;
+  };
+  return OptionValues(std::vector<GivenOption>{
+      number("m1", {1}), number("m2", {0.5}), number("k1", {1}), number("gap", {1}),
+      {"precision", "auto", {}, false}, number("glo", {0.5}), number("perturb", {0, 0, 0, -0.05}),
+      number("contacts", {10}), {"trust", "off", {}, false}});
+}
+
+// the options read: the chain designed, the start made
+void BM_ReadOptions(benchmark::State& state) {
+  const OptionValues options = shortRun();
+  for (auto _ : state) benchmark::DoNotOptimize(grazelab::cli::parseRun<double>(options));
+}
+BENCHMARK(BM_ReadOptions);
+
+// the core's run alone, from the read options
+void BM_CoreRun(benchmark::State& state) {
+  const auto run = *grazelab::cli::parseRun<double>(shortRun()).value;
+  for (auto _ : state) {
+    grazelab::core::BasicSimulator<double> simulator(run.model.model, run.request);
+    simulator.advance(std::numeric_limits<std::int64_t>::max(), {});
+    benchmark::DoNotOptimize(simulator.result().tFinal);
+  }
+}
+BENCHMARK(BM_CoreRun);
+
+// the whole command with its document as values and its events in a table (what the module calls)
+void BM_SimulateToDocument(benchmark::State& state) {
+  const OptionValues options = shortRun();
+  std::FILE* sink = std::fopen("/dev/null", "w");
+  for (auto _ : state) {
+    grazelab::cli::EventTable table;
+    grazelab::cli::JsonValue document;
+    std::vector<grazelab::core::Sample> samples;
+    grazelab::cli::Io io;
+    io.out = sink;
+    io.messages = sink;
+    io.events = &table;
+    io.document = &document;
+    io.samples = &samples;
+    QString error;
+    benchmark::DoNotOptimize(grazelab::cli::runSimulate(options, {}, grazelab::core::TrustMode::Off, io,
+                                                        std::stop_token{}, error));
+  }
+  std::fclose(sink);
+}
+BENCHMARK(BM_SimulateToDocument);
+
+}  // namespace
+
+BENCHMARK_MAIN();
