@@ -99,18 +99,17 @@ std::vector<std::array<double, 2>> flightTimesOverT2(const Model& model, const S
   return flights;
 }
 
-std::vector<OnePeriodicSample> onePeriodicFamilySamples(const Model& model, const Modes& modes,
-                                                        double lowEnd, int points,
-                                                        std::stop_token stop) {
-  std::vector<OnePeriodicSample> samples;
+std::vector<OnePeriodicOrbit<double>> onePeriodicFamilySamples(const Model& model, const Modes& modes,
+                                                               double lowEnd, int points,
+                                                               std::stop_token stop) {
+  std::vector<OnePeriodicOrbit<double>> samples;
   const double T2 = modes.T2;
   for (int i = points; i >= 1 && !stop.stop_requested(); --i) {
     // squared spacing: the points crowd towards T2; 1e-6 keeps the first clear of the low end
     const double s = double(i) / points;
     const double T = T2 - (T2 - lowEnd) * (1 - 1e-6) * s * s;
-    const OnePeriodicOrbit orbit = onePeriodicOrbit(model, modes, T);
-    if (!orbit.admissible) continue;
-    samples.push_back({T, orbit.postImpact.u1, orbit.V, energy(model, orbit.postImpact)});
+    OnePeriodicOrbit orbit = onePeriodicOrbit(model, modes, T);
+    if (orbit.admissible) samples.push_back(std::move(orbit));
   }
   return samples;
 }

@@ -11,6 +11,7 @@
 #include "core/model/model.h"
 #include "core/model/linear_modes.h"
 #include "core/model/state.h"
+#include "core/orbits/special_orbits.h"
 
 /// The computations behind the explorer's theorem scenes, as plain functions of the chain: the
 /// scenes (ui/scenes/) only word and draw what these return, and a test or the command line can
@@ -51,19 +52,10 @@ std::vector<std::array<double, 2>> flightTimesOverT2(const Model& model, const S
                                                      std::int64_t contacts, double searchPeriods,
                                                      std::stop_token stop = {});
 
-/// One orbit of the 1IPP family (Theorem 2.1): its period, the impact data u1 and speed V, and
-/// its energy.
-struct OnePeriodicSample {
-  double period = 0;  ///< T [time]
-  double u1 = 0;      ///< u1 just after the impact
-  double V = 0;       ///< the impact speed of mass 2
-  double energy = 0;
-};
-
 /// The admissible orbits of the 1IPP family at `points` periods from just above `lowEnd` up to
 /// T2 (crowding towards T2, where the theorem looks), in increasing period; what was computed
 /// when stopped.
-std::vector<OnePeriodicSample> onePeriodicFamilySamples(const Model& model, const Modes& modes,
+std::vector<OnePeriodicOrbit<double>> onePeriodicFamilySamples(const Model& model, const Modes& modes,
                                                         double lowEnd, int points,
                                                         std::stop_token stop = {});
 

@@ -8,8 +8,26 @@
 
 namespace grazelab::core {
 
-std::vector<FamilyPoint> onePeriodicFamily(const Chain<double>& chain, std::int64_t count,
-                                           std::stop_token stop) {
+namespace {
+
+// A member computed in binary128, rounded once.
+OnePeriodicOrbit<double> rounded(const OnePeriodicOrbit<Quad>& orbit) {
+  OnePeriodicOrbit<double> out;
+  out.T = toDouble(orbit.T);
+  out.admissible = orbit.admissible;
+  out.refusal = orbit.refusal;
+  out.reason = orbit.reason;
+  out.postImpact = {toDouble(orbit.postImpact.u1), toDouble(orbit.postImpact.u2),
+                    toDouble(orbit.postImpact.v1), toDouble(orbit.postImpact.v2)};
+  out.V = toDouble(orbit.V);
+  out.energy = toDouble(orbit.energy);
+  return out;
+}
+
+}  // namespace
+
+std::vector<OnePeriodicOrbit<double>> onePeriodicFamily(const Chain<double>& chain, std::int64_t count,
+                                                        std::stop_token stop) {
   const double T2 = twoPi<double>() / chain.omegaSlow;
   // each member in binary128 from its (double) period, rounded once: near T2, V ~ (T2 - T) is
   // conditioned like T2 / (T2 - T) in T, and a double evaluation lost up to 1e-4 of it there
@@ -22,32 +40,23 @@ std::vector<FamilyPoint> onePeriodicFamily(const Chain<double>& chain, std::int6
   // towards the grazing end: V and the distance to GLO_lambda* fall like T2 - T
   for (int k = 8; k <= 40; ++k) periods.push_back(T2 * (1 - std::ldexp(1.0, -k)));
   std::sort(periods.begin(), periods.end());
-  std::vector<FamilyPoint> family;
+  std::vector<OnePeriodicOrbit<double>> family;
   family.reserve(periods.size());
   for (double T : periods) {
     if (stop.stop_requested()) break;
     const OnePeriodicOrbit<Quad> orbit = onePeriodicOrbit(*quad.chain, Quad(T));
-    if (orbit.V == 0 && !orbit.admissible) continue;  // a multiple of T1 or T2: no data at all
-    FamilyPoint point;
-    point.T = T;
-    point.omega = twoPi<double>() / T;
-    point.V = toDouble(orbit.V);
-    point.u1 = toDouble(orbit.postImpact.u1);
-    point.energy = toDouble(physicalEnergy(*quad.chain, orbit.postImpact));
-    point.admissible = orbit.admissible;
-    family.push_back(point);
+    if (!orbit.hasData()) continue;  // a multiple of T1 or T2: no data at all
+    family.push_back(rounded(orbit));
   }
   return family;
 }
 
-FamilyPoint grazingEnd(const Chain<double>& chain) {
-  const State data = gloData(chain, lambdaStar(chain));
-  FamilyPoint end;
+OnePeriodicOrbit<double> grazingEnd(const Chain<double>& chain) {
+  OnePeriodicOrbit<double> end;
   end.T = twoPi<double>() / chain.omegaSlow;
-  end.omega = chain.omegaSlow;
+  end.postImpact = gloData(chain, lambdaStar(chain));
   end.V = 0;
-  end.u1 = data.u1;
-  end.energy = physicalEnergy(chain, data);
+  end.energy = physicalEnergy(chain, end.postImpact);
   end.admissible = true;
   return end;
 }

@@ -74,6 +74,7 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
   using std::max;
   using std::sin;
   OnePeriodicOrbit<S> orbit;
+  orbit.T = T;
   const S T2 = twoPi<S>() / chain.omegaSlow;
   if (!isFinite(T) || T <= 0) {
     orbit.refusal = OnePeriodicRefusal::BadPeriod;
@@ -102,6 +103,7 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
   const S& gap = chain.model.gap;
   orbit.V = gap * chain.omegaSlow / g[1];
   orbit.postImpact = {gap * g[0] / g[1], gap, S(0), orbit.V};
+  orbit.energy = physicalEnergy(chain, orbit.postImpact);
   if (!(orbit.V < 0)) {
     orbit.refusal = OnePeriodicRefusal::LeavesIntoStop;
     orbit.reason = "V = " + formatScalar(orbit.V) +

@@ -52,14 +52,21 @@ enum class OnePeriodicRefusal {
   ReturnsEarly,      ///< the flight touches or crosses the stop before T
 };
 
-/// One-impact-per-period (1IPP) orbit of period T (docs/model.md section 5).
+/// One-impact-per-period (1IPP) orbit of period T (docs/model.md section 5): the one type of a
+/// point of the two-mass 1IPP family, whether computed alone, along the family or at its end.
 template <typename S>
 struct OnePeriodicOrbit {
+  S T = 0;                  ///< period [time]
   bool admissible = false;
   OnePeriodicRefusal refusal = OnePeriodicRefusal::None;
   std::string reason;       ///< why not, when not admissible, in words
   BasicState<S> postImpact; ///< data right after the impact: u = (gap g1/g2, gap), v = (0, V)
   S V = 0;                  ///< post-impact velocity of mass 2, gap / g2(T); < 0 when admissible
+  S energy = 0;             ///< energy of postImpact (constant along the orbit); 0 without data
+  /// whether there are data at all (not at a multiple of T1 or T2, nor for a bad period)
+  bool hasData() const {
+    return refusal != OnePeriodicRefusal::BadPeriod && refusal != OnePeriodicRefusal::MultipleOfPeriod;
+  }
 };
 
 /// 1IPP data for period T (physical time): g_k(T) = sum_j a_kj Phi_j(T), Phi_j = cot(w_j T/2)/w_j.

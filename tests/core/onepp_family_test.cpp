@@ -21,30 +21,32 @@ Chain<double> designedChain(double m2) {
 TEST(FamilyTest, energyIsTheMechanicalEnergyOfThePostImpactState) {
   const Chain<double> chain = designedChain(0.3);
   const Model& m = chain.model;
-  for (const FamilyPoint& p : onePeriodicFamily(chain, 200)) {
+  for (const OnePeriodicOrbit<double>& p : onePeriodicFamily(chain, 200)) {
     // E = 1/2 m2 V^2 + 1/2 k1 u1^2 + 1/2 k2 (gap - u1)^2 (mass 1 at rest at the impact)
-    const double E = 0.5 * m.m2 * p.V * p.V + 0.5 * m.k1 * p.u1 * p.u1 +
-                     0.5 * m.k2 * (m.gap - p.u1) * (m.gap - p.u1);
+    const double u1 = p.postImpact.u1;
+    const double E = 0.5 * m.m2 * p.V * p.V + 0.5 * m.k1 * u1 * u1 + 0.5 * m.k2 * (m.gap - u1) * (m.gap - u1);
     EXPECT_NEAR(p.energy, E, 1e-12 * E) << "T = " << p.T;
-    EXPECT_DOUBLE_EQ(p.omega, twoPi<double>() / p.T);
+    EXPECT_EQ(p.postImpact.u2, m.gap);
+    EXPECT_EQ(p.postImpact.v1, 0);
+    EXPECT_EQ(p.postImpact.v2, p.V);
   }
 }
 
 TEST(FamilyTest, admissibleMembersHitTheStopOncePerPeriodAndRepeat) {
   const Chain<double> chain = designedChain(0.5);
-  const std::vector<FamilyPoint> family = onePeriodicFamily(chain, 64);
+  const std::vector<OnePeriodicOrbit<double>> family = onePeriodicFamily(chain, 64);
   int checked = 0;
-  for (const FamilyPoint& p : family) {
+  for (const OnePeriodicOrbit<double>& p : family) {
     if (!p.admissible) continue;
     Request request;
-    request.initial = State{p.u1, chain.model.gap, 0, p.V};
+    request.initial = p.postImpact;
     request.maxContacts = 3;
     const Result result = simulate(chain.model, request);
     ASSERT_EQ(result.events.size(), 3u);
     for (int k = 0; k < 3; ++k) {
       EXPECT_NEAR(result.events[k].t, (k + 1) * p.T, 1e-9 * (k + 1) * p.T) << "T = " << p.T;
       EXPECT_EQ(result.events[k].type, EventType::Impact);
-      EXPECT_NEAR(result.events[k].after.u1, p.u1, 1e-8 * (1 + std::abs(p.u1)));
+      EXPECT_NEAR(result.events[k].after.u1, p.postImpact.u1, 1e-8 * (1 + std::abs(p.postImpact.u1)));
       EXPECT_NEAR(result.events[k].after.v2, p.V, 1e-8 * (1 + std::abs(p.V)));
     }
     ++checked;
@@ -55,19 +57,20 @@ TEST(FamilyTest, admissibleMembersHitTheStopOncePerPeriodAndRepeat) {
 TEST(FamilyTest, theGrazingEndMeetsTheLambdaStarData) {
   for (double m2 : {0.05, 0.3, 0.5, 0.56}) {
     const Chain<double> chain = designedChain(m2);
-    const FamilyPoint end = grazingEnd(chain);
+    const OnePeriodicOrbit<double> end = grazingEnd(chain);
     const State star = gloData(chain, lambdaStar(chain));
-    EXPECT_EQ(end.u1, star.u1);
-    const std::vector<FamilyPoint> family = onePeriodicFamily(chain, 100);
-    const FamilyPoint& last = family.back();  // T = T2 (1 - 2^-40)
+    EXPECT_EQ(end.postImpact.u1, star.u1);
+    EXPECT_EQ(end.T, twoPi<double>() / chain.omegaSlow);
+    const std::vector<OnePeriodicOrbit<double>> family = onePeriodicFamily(chain, 100);
+    const OnePeriodicOrbit<double>& last = family.back();  // T = T2 (1 - 2^-40)
     ASSERT_TRUE(last.admissible) << "m2 = " << m2;
     EXPECT_LT(last.V, 0);
     EXPECT_LT(std::abs(last.V), 1e-10);
-    EXPECT_NEAR(last.u1, end.u1, 1e-10 * (1 + std::abs(end.u1))) << "m2 = " << m2;
+    EXPECT_NEAR(last.postImpact.u1, end.postImpact.u1, 1e-10 * (1 + std::abs(end.postImpact.u1))) << "m2 = " << m2;
     EXPECT_NEAR(last.energy, end.energy, 1e-10 * end.energy) << "m2 = " << m2;
     // the approach is monotone in V: |V| shrinks as T -> T2
     double previous = INFINITY;
-    for (const FamilyPoint& p : family) {
+    for (const OnePeriodicOrbit<double>& p : family) {
       if (p.T < 0.99 * end.T || !p.admissible) continue;
       EXPECT_LT(std::abs(p.V), previous);
       previous = std::abs(p.V);
@@ -78,7 +81,7 @@ TEST(FamilyTest, theGrazingEndMeetsTheLambdaStarData) {
 TEST(FamilyTest, periodsAreSortedInsideTheOpenInterval) {
   const Chain<double> chain = designedChain(0.5);
   const double T2 = twoPi<double>() / chain.omegaSlow;
-  const std::vector<FamilyPoint> family = onePeriodicFamily(chain, 99);
+  const std::vector<OnePeriodicOrbit<double>> family = onePeriodicFamily(chain, 99);
   ASSERT_GE(family.size(), 99u);
   for (std::size_t i = 0; i < family.size(); ++i) {
     EXPECT_GT(family[i].T, 0);

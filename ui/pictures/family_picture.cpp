@@ -15,8 +15,8 @@
 namespace grazelab::pictures {
 
 void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
-                          const std::vector<core::FamilyPoint>& family,
-                          const core::FamilyPoint& grazingEnd, const QString& title, const QString& endLabel) {
+                          const std::vector<FrequencyEnergyPoint>& family,
+                          const FrequencyEnergyPoint& grazingEnd, const QString& title, const QString& endLabel) {
   painter.save();
   const QFontMetricsF metrics(painter.font());
   const double line = metrics.height();
@@ -26,7 +26,7 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
   // the window: the admissible orbits and the grazing end
   double eLo = std::log10(grazingEnd.energy), eHi = eLo;
   double wLo = grazingEnd.omega, wHi = grazingEnd.omega;
-  for (const core::FamilyPoint& p : family) {
+  for (const FrequencyEnergyPoint& p : family) {
     if (!p.admissible || !(p.energy > 0)) continue;
     eLo = std::min(eLo, std::log10(p.energy));
     eHi = std::max(eHi, std::log10(p.energy));
@@ -48,7 +48,7 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
   // Points outside the plot are left out rather than clipped: an SVG painter ignores clips.
   painter.setPen(QPen(QColor(0x99, 0x99, 0x99), 1.2));
   const QRectF inner = plot.adjusted(4, 4, -4, -4);
-  for (const core::FamilyPoint& p : family) {
+  for (const FrequencyEnergyPoint& p : family) {
     if (p.admissible || !(p.energy > 0)) continue;
     const QPointF q = at(p.energy, p.omega);
     if (!inner.contains(q)) continue;
@@ -58,7 +58,7 @@ void paintFrequencyEnergy(QPainter& painter, const QRectF& area,
   painter.setPen(QPen(colors::kTrace, 2.5));
   QPainterPath path;
   bool drawing = false;
-  for (const core::FamilyPoint& p : family) {
+  for (const FrequencyEnergyPoint& p : family) {
     const QPointF q = p.energy > 0 ? at(p.energy, p.omega) : QPointF();
     if (!p.admissible || !plot.contains(q)) {
       drawing = false;

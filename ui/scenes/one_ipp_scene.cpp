@@ -30,13 +30,13 @@ struct Family {
 Family sampleFamily(const DerivedModel& derived, double lowEnd, std::stop_token stop) {
   Family family;
   const double T2 = derived.modes.T2;
-  for (const core::experiments::OnePeriodicSample& orbit :
+  for (const core::OnePeriodicOrbit<double>& orbit :
        core::experiments::onePeriodicFamilySamples(derived.model, derived.modes, lowEnd, 240, stop)) {
-    family.u1.emplace_back(orbit.period / T2, orbit.u1);
-    family.speed.emplace_back(orbit.period / T2, std::abs(orbit.V));
+    family.u1.emplace_back(orbit.T / T2, orbit.postImpact.u1);
+    family.speed.emplace_back(orbit.T / T2, std::abs(orbit.V));
     if (orbit.energy > 0) {
-      family.energy.emplace_back(std::log10(orbit.energy), 2 * std::numbers::pi / orbit.period);
-      family.fraction.push_back(orbit.period / T2);
+      family.energy.emplace_back(std::log10(orbit.energy), 2 * std::numbers::pi / orbit.T);
+      family.fraction.push_back(orbit.T / T2);
     }
   }
   return family;

@@ -80,7 +80,7 @@ int runChainFamily(const QCommandLineParser& parser, const Io& io, std::stop_tok
   NpyArray array;
   array.rows = std::int64_t(rows.size());
   array.columns = 5 + n;
-  std::vector<core::FamilyPoint> points;  // for the picture
+  std::vector<pictures::FrequencyEnergyPoint> points;  // for the picture
   std::int64_t admissible = 0;
   for (const core::ChainFamilyRow& row : rows) {
     const core::ChainOnePeriodicOrbit& orbit = row.orbit;
@@ -101,7 +101,7 @@ int runChainFamily(const QCommandLineParser& parser, const Io& io, std::stop_tok
     csv += "\n";
     admissible += orbit.admissible() ? 1 : 0;
     if (hasData) {
-      points.push_back({row.T, omega, orbit.V, orbit.postImpact.u[0], orbit.energy, orbit.admissible()});
+      points.push_back({orbit.energy, omega, orbit.admissible()});
     }
   }
   std::vector<V> weightValues;
@@ -143,8 +143,7 @@ int runChainFamily(const QCommandLineParser& parser, const Io& io, std::stop_tok
     return 1;
   }
   if (picturesAvailable() && !output->inMemory() && admissible > 0) {
-    const core::FamilyPoint endPoint{end, 2 * std::numbers::pi / end, 0,
-                                     glo.problem == core::GloStartProblem::None ? glo.state.u[0] : 0, gloEnergy, true};
+    const pictures::FrequencyEnergyPoint endPoint{gloEnergy, 2 * std::numbers::pi / end, true};
     const QString title = QStringLiteral("1IPP family of %1 masses: frequency against energy").arg(n);
     const QSize size(1100, 760);
     const bool drawn = savePngAndSvg(

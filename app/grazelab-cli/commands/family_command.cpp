@@ -33,8 +33,16 @@ namespace {
 
 QByteArray number(double value) { return QByteArray::number(value, 'g', 17); }
 
-QJsonObject pointJson(const core::FamilyPoint& p) {
-  return {{"T", p.T}, {"omega", p.omega}, {"V", p.V}, {"u1", p.u1}, {"energy", p.energy}};
+QJsonObject pointJson(const core::OnePeriodicOrbit<double>& p) {
+  return {{"T", p.T}, {"omega", core::twoPi<double>() / p.T}, {"V", p.V}, {"u1", p.postImpact.u1}, {"energy", p.energy}};
+}
+
+// the family as the frequency-energy picture draws it
+std::vector<pictures::FrequencyEnergyPoint> frequencyEnergy(const std::vector<core::OnePeriodicOrbit<double>>& family) {
+  std::vector<pictures::FrequencyEnergyPoint> points;
+  points.reserve(family.size());
+  for (const auto& p : family) points.push_back({p.energy, core::twoPi<double>() / p.T, p.admissible});
+  return points;
 }
 
 
@@ -54,7 +62,7 @@ struct FamilyStability {
 
 template <typename S>
 std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& parser,
-                                                  const std::vector<core::FamilyPoint>& family,
+                                                  const std::vector<core::OnePeriodicOrbit<double>>& family,
                                                   const Io& io, std::stop_token stop, QString& error) {
   const Parsed<ModelInput<S>> model = parseModel<S>(parser);
   if (!model.value) {
@@ -63,7 +71,7 @@ std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& pars
   }
   const core::Chain<S>& chain = model.value->chain;
   FamilyStability<S> result;
-  for (const core::FamilyPoint& p : family) {
+  for (const core::OnePeriodicOrbit<double>& p : family) {
     if (stop.stop_requested()) return std::nullopt;
     const std::size_t index = result.traces.size();
     if (index % 64 == 0) {
@@ -148,9 +156,9 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
   const QString& prefix = output->prefix;
 
   const core::Chain<double>& chain = model.value->chain;
-  const std::vector<core::FamilyPoint> family = core::onePeriodicFamily(chain, count, stop);
+  const std::vector<core::OnePeriodicOrbit<double>> family = core::onePeriodicFamily(chain, count, stop);
   if (stop.stop_requested()) return kExitInterrupted;
-  const core::FamilyPoint end = core::grazingEnd(chain);
+  const core::OnePeriodicOrbit<double> end = core::grazingEnd(chain);
   // the stability of every admissible orbit and the family's bifurcations, in the precision asked
   std::vector<double> traces;
   std::vector<double> codes;
@@ -173,13 +181,14 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
   array.rows = std::int64_t(family.size());
   array.columns = 8;
   for (std::size_t i = 0; i < family.size(); ++i) {
-    const core::FamilyPoint& p = family[i];
+    const core::OnePeriodicOrbit<double>& p = family[i];
+    const double omega = core::twoPi<double>() / p.T;
     const QByteArray stability = std::isnan(codes[i]) ? QByteArray()
                                  : QByteArray(core::toString(core::Stability(int(codes[i]))).data());
-    csv += number(p.T) + "," + number(p.omega) + "," + number(p.V) + "," + number(p.u1) + "," +
+    csv += number(p.T) + "," + number(omega) + "," + number(p.V) + "," + number(p.postImpact.u1) + "," +
            number(p.energy) + "," + (p.admissible ? "1" : "0") + "," +
            (std::isnan(traces[i]) ? QByteArray() : number(traces[i])) + "," + stability + "\n";
-    for (double v : {p.T, p.omega, p.V, p.u1, p.energy, p.admissible ? 1.0 : 0.0, traces[i], codes[i]}) {
+    for (double v : {p.T, omega, p.V, p.postImpact.u1, p.energy, p.admissible ? 1.0 : 0.0, traces[i], codes[i]}) {
       array.reals.push_back(v);
     }
   }
@@ -228,7 +237,8 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
     const bool drawn = savePngAndSvg(
         prefix, size, title, "GrazeLabFamily", QJsonDocument(json).toJson(QJsonDocument::Compact),
         [&](QPainter& painter) {
-          pictures::paintFrequencyEnergy(painter, QRectF(QPointF(0, 0), size), family, end, title);
+          pictures::paintFrequencyEnergy(painter, QRectF(QPointF(0, 0), size), frequencyEnergy(family),
+                                         {end.energy, core::twoPi<double>() / end.T, true}, title);
         },
         error);
     if (!drawn) return 1;
