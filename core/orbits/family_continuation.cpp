@@ -10,12 +10,15 @@
 #include <cmath>
 #include <optional>
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
 namespace grazelab::core {
 
 namespace {
 
 template <typename S>
-using Vector3 = std::array<S, 3>;
+using Vector3 = Eigen::Matrix<S, 3, 1>;
 
 // The continuation works in units that make a step mean the same in every direction: u1 in
 // gaps, v1 in w2 gaps, and the energy by its logarithm, ln(E / E0) (families span decades of
@@ -33,7 +36,7 @@ template <typename S>
 struct Evaluation {
   bool usable = false;  ///< the path from y has exactly k impacts (the equations are defined)
   std::array<S, 2> residual{};
-  std::array<Vector3<S>, 2> jacobian{};
+  Eigen::Matrix<S, 2, 3> jacobian = Eigen::Matrix<S, 2, 3>::Zero();
   PeriodicOrbit<S> orbit;
 };
 
@@ -54,10 +57,9 @@ Evaluation<S> evaluate(const Chain<S>& chain, const Units<S>& units, const Vecto
   e.residual = {(end.u1 - start->u1) / units.position, (end.v1 - start->v1) / units.speed};
   const Matrix2<S>& dp = e.orbit.reduced;
   // d/d ln E = E d/dE
-  e.jacobian[0] = {dp[0][0] - S(1), dp[0][1] * units.speed / units.position,
-                   e.orbit.energyDerivative[0] * energy / units.position};
-  e.jacobian[1] = {dp[1][0] * units.position / units.speed, dp[1][1] - S(1),
-                   e.orbit.energyDerivative[1] * energy / units.speed};
+  e.jacobian << dp(0, 0) - S(1), dp(0, 1) * units.speed / units.position,
+      e.orbit.energyDerivative[0] * energy / units.position,  //
+      dp(1, 0) * units.position / units.speed, dp(1, 1) - S(1), e.orbit.energyDerivative[1] * energy / units.speed;
   e.usable = true;
   return e;
 }
@@ -68,45 +70,28 @@ S norm(const Vector3<S>& v) {
   return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
-// The unit tangent of the family: the null vector of the 2x3 Jacobian, turned to agree with
-// `along`.
+// The unit tangent of the family: the null vector of the 2x3 Jacobian (the cross product of
+// its rows), turned to agree with `along`.
 template <typename S>
-Vector3<S> tangent(const std::array<Vector3<S>, 2>& j, const Vector3<S>& along) {
-  Vector3<S> t = {j[0][1] * j[1][2] - j[0][2] * j[1][1], j[0][2] * j[1][0] - j[0][0] * j[1][2],
-                  j[0][0] * j[1][1] - j[0][1] * j[1][0]};
-  const S size = norm(t);
-  for (S& c : t) c /= size;
-  if (t[0] * along[0] + t[1] * along[1] + t[2] * along[2] < 0) {
-    for (S& c : t) c = -c;
-  }
+Vector3<S> tangent(const Eigen::Matrix<S, 2, 3>& j, const Vector3<S>& along) {
+  Vector3<S> t = j.row(0).cross(j.row(1)).transpose();
+  t /= norm(t);
+  if (t.dot(along) < 0) t = -t;
   return t;
 }
 
-// Solves the 3x3 system a x = b by elimination with partial pivoting; nothing when singular.
+// Solves the 3x3 system (the Jacobian's rows over `t`) x = b by LU with full pivoting (the most
+// robust of the LUs: next to a fold or branch point the system is nearly singular);
+// nothing when a pivot is zero (singular).
 template <typename S>
-std::optional<Vector3<S>> solve(std::array<Vector3<S>, 3> a, Vector3<S> b) {
-  using std::abs;
-  for (int col = 0; col < 3; ++col) {
-    int pivot = col;
-    for (int row = col + 1; row < 3; ++row) {
-      if (abs(a[std::size_t(row)][std::size_t(col)]) > abs(a[std::size_t(pivot)][std::size_t(col)])) pivot = row;
-    }
-    if (!(abs(a[std::size_t(pivot)][std::size_t(col)]) > S(0))) return std::nullopt;
-    std::swap(a[std::size_t(col)], a[std::size_t(pivot)]);
-    std::swap(b[std::size_t(col)], b[std::size_t(pivot)]);
-    for (int row = col + 1; row < 3; ++row) {
-      const S factor = a[std::size_t(row)][std::size_t(col)] / a[std::size_t(col)][std::size_t(col)];
-      for (int k = col; k < 3; ++k) a[std::size_t(row)][std::size_t(k)] -= factor * a[std::size_t(col)][std::size_t(k)];
-      b[std::size_t(row)] -= factor * b[std::size_t(col)];
-    }
+std::optional<Vector3<S>> solve(const Eigen::Matrix<S, 2, 3>& jacobian, const Vector3<S>& t, const Vector3<S>& b) {
+  Eigen::Matrix<S, 3, 3> a;
+  a << jacobian, t.transpose();
+  const Eigen::FullPivLU<Eigen::Matrix<S, 3, 3>> lu(a);
+  for (int i = 0; i < 3; ++i) {
+    if (!(lu.matrixLU()(i, i) != S(0))) return std::nullopt;
   }
-  Vector3<S> x{};
-  for (int row = 2; row >= 0; --row) {
-    S sum = b[std::size_t(row)];
-    for (int k = row + 1; k < 3; ++k) sum -= a[std::size_t(row)][std::size_t(k)] * x[std::size_t(k)];
-    x[std::size_t(row)] = sum / a[std::size_t(row)][std::size_t(row)];
-  }
-  return x;
+  return Vector3<S>(lu.solve(b));
 }
 
 // A point of the family on the hyperplane through `plane` normal to `t`, by Newton on the
@@ -122,10 +107,7 @@ std::optional<std::pair<Vector3<S>, Evaluation<S>>> correct(const Chain<S>& chai
   S previousStep = std::numeric_limits<S>::infinity();  // the smallest so far
   int sinceSmallest = 0;
   const Vector3<S> predicted = y;
-  const auto near = [&](const Vector3<S>& x, const S& bound) {
-    const Vector3<S> away = {x[0] - predicted[0], x[1] - predicted[1], x[2] - predicted[2]};
-    return norm(away) <= bound;
-  };
+  const auto near = [&](const Vector3<S>& x, const S& bound) { return norm<S>(x - predicted) <= bound; };
   const auto converged = [&](Evaluation<S>&& e) -> std::optional<std::pair<Vector3<S>, Evaluation<S>>> {
     if (!near(y, reach)) return std::nullopt;  // an orbit of another family
     return std::pair{y, std::move(e)};
@@ -133,11 +115,10 @@ std::optional<std::pair<Vector3<S>, Evaluation<S>>> correct(const Chain<S>& chai
   for (int iteration = 0; iteration < 40; ++iteration) {
     Evaluation<S> e = evaluate(chain, units, y, impacts);
     if (!e.usable) return std::nullopt;
-    const S arclength = t[0] * (y[0] - plane[0]) + t[1] * (y[1] - plane[1]) + t[2] * (y[2] - plane[2]);
+    const S arclength = t.dot(y - plane);
     const S size = std::max({abs(e.residual[0]), abs(e.residual[1]), abs(arclength)});
     if (size <= tolerance) return converged(std::move(e));
-    const std::optional<Vector3<S>> step =
-        solve<S>({e.jacobian[0], e.jacobian[1], t}, {-e.residual[0], -e.residual[1], -arclength});
+    const std::optional<Vector3<S>> step = solve<S>(e.jacobian, t, Vector3<S>(-e.residual[0], -e.residual[1], -arclength));
     if (!step) return std::nullopt;
     // Newton contracts near a regular point and at least halves its steps near a singular one
     const S stepSize = norm(*step);
@@ -152,7 +133,7 @@ std::optional<std::pair<Vector3<S>, Evaluation<S>>> correct(const Chain<S>& chai
       if (size <= closeTolerance(e.orbit)) return converged(std::move(e));
       return std::nullopt;
     }
-    for (int i = 0; i < 3; ++i) y[std::size_t(i)] += (*step)[std::size_t(i)];
+    y += *step;
     // a strongly sheared map (a light mass 2: DP's entries in the thousands) sends the first
     // iterates far across the family before they come back; only wandering off is cut short
     if (!near(y, S(100) * reach)) return std::nullopt;
@@ -162,12 +143,12 @@ std::optional<std::pair<Vector3<S>, Evaluation<S>>> correct(const Chain<S>& chai
 
 template <typename S>
 Vector3<S> along(const Vector3<S>& from, const S& h, const Vector3<S>& t) {
-  return {from[0] + h * t[0], from[1] + h * t[1], from[2] + h * t[2]};
+  return from + h * t;
 }
 
 template <typename S>
 Vector3<S> between(const Vector3<S>& a, const Vector3<S>& b, const S& fraction) {
-  return {a[0] + fraction * (b[0] - a[0]), a[1] + fraction * (b[1] - a[1]), a[2] + fraction * (b[2] - a[2])};
+  return a + fraction * (b - a);
 }
 
 // The special point between two neighbours of the family where `test` changes sign, by
@@ -326,9 +307,9 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
     if (accepted) {
       // the orbit halfway must lie near the chord, be admissible, and show a trace that does
       // not bend across a level: otherwise the step could hide a jump or two crossings
-      const Vector3<S> chord = {corrected->first[0] - y[0], corrected->first[1] - y[1], corrected->first[2] - y[2]};
+      const Vector3<S> chord = corrected->first - y;
       const S length = norm(chord);
-      const Vector3<S> normal = {chord[0] / length, chord[1] / length, chord[2] / length};
+      const Vector3<S> normal = chord / length;
       const Vector3<S> middle = between(y, corrected->first, S(0.5));
       const auto halfway = correct(chain, units, middle, middle, normal, k, S(length / S(4)));
       accepted = halfway && admissible(halfway->second.orbit) &&

@@ -359,11 +359,11 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
   }
   // the eigenvector of DP for -1: (DP + I) e = 0, from the row with the larger entries
   const Matrix2<S>& dp = orbit.reduced;
-  S eu = -dp[0][1];
-  S ev = dp[0][0] + S(1);
-  if (abs(dp[1][0]) + abs(dp[1][1] + S(1)) > abs(eu) + abs(ev)) {
-    eu = dp[1][1] + S(1);
-    ev = -dp[1][0];
+  S eu = -dp(0, 1);
+  S ev = dp(0, 0) + S(1);
+  if (abs(dp(1, 0)) + abs(dp(1, 1) + S(1)) > abs(eu) + abs(ev)) {
+    eu = dp(1, 1) + S(1);
+    ev = -dp(1, 0);
   }
   // in units of the gap and of w2 times the gap: e has length 1 there
   const S d = chain.model.gap;

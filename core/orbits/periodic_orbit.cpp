@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/numbers/roots.h"
 #include "core/orbits/special_orbits.h"
 #include "core/solver/simulate.h"
 
@@ -14,38 +15,7 @@ namespace grazelab::core {
 namespace {
 
 template <typename S>
-Matrix4<S> identity4() {
-  Matrix4<S> m{};
-  for (int i = 0; i < 4; ++i) m[i][i] = S(1);
-  return m;
-}
-
-template <typename S>
-Matrix4<S> multiply(const Matrix4<S>& a, const Matrix4<S>& b) {
-  Matrix4<S> c{};
-  for (int i = 0; i < 4; ++i) {
-    for (int j = 0; j < 4; ++j) {
-      S sum = 0;
-      for (int k = 0; k < 4; ++k) sum += a[i][k] * b[k][j];
-      c[i][j] = sum;
-    }
-  }
-  return c;
-}
-
-template <typename S>
-std::array<S, 4> times(const Matrix4<S>& a, const std::array<S, 4>& x) {
-  std::array<S, 4> y{};
-  for (int i = 0; i < 4; ++i) {
-    S sum = 0;
-    for (int k = 0; k < 4; ++k) sum += a[i][k] * x[k];
-    y[i] = sum;
-  }
-  return y;
-}
-
-template <typename S>
-std::array<S, 4> asArray(const BasicState<S>& x) {
+Vector4<S> asVector(const BasicState<S>& x) {
   return {x.u1, x.u2, x.v1, x.v2};
 }
 
@@ -88,8 +58,8 @@ template <typename S>
 S relativeDistance(const Chain<S>& chain, const BasicState<S>& a, const BasicState<S>& b) {
   using std::abs;
   const std::array<S, 4> scale = stateScales(chain, a);
-  const std::array<S, 4> x = asArray(a);
-  const std::array<S, 4> y = asArray(b);
+  const Vector4<S> x = asVector(a);
+  const Vector4<S> y = asVector(b);
   S largest = 0;
   for (int i = 0; i < 4; ++i) largest = std::max(largest, S(abs(x[i] - y[i]) / scale[i]));
   return largest;
@@ -134,7 +104,7 @@ S scaledNorm(const Chain<S>& chain, const Matrix4<S>& m) {
   S largest = 0;
   for (int i = 0; i < 4; ++i) {
     S row = 0;
-    for (int j = 0; j < 4; ++j) row += abs(m[i][j]) * unit[j] / unit[i];
+    for (int j = 0; j < 4; ++j) row += abs(m(i, j)) * unit[j] / unit[i];
     largest = std::max(largest, row);
   }
   return largest;
@@ -142,8 +112,8 @@ S scaledNorm(const Chain<S>& chain, const Matrix4<S>& m) {
 
 // The smallest clearance gap - u2 at an interior maximum of u2 on the flight of duration `tau`
 // from `from`, over the gap; +infinity when u2 has no interior maximum. The maxima are where
-// v2 turns from + to -: bracketed on 256 samples, then solved by Newton kept inside the
-// bracket. The samples rotate each mode's phase by a fixed step (one complex product, not a
+// v2 turns from + to -: bracketed on 256 samples, then solved by the core's safeguarded Newton
+// (solveBracketed). The samples rotate each mode's phase by a fixed step (one complex product, not a
 // sine and cosine each): the rounding they gather over 256 steps only moves a sign change
 // within a few ulps of a zero of v2, and the root itself is solved from exact evaluations.
 template <typename S>
@@ -174,19 +144,14 @@ S flightClearance(const Chain<S>& chain, const BasicState<S>& from, const S& tau
     }
     const S v = speed();
     if (previous > 0 && v <= 0) {
-      S low = h * S(i - 1);
-      S high = h * S(i);
-      S t = (low + high) / S(2);
-      for (int step = 0; step < 200; ++step) {
+      // v2 and its derivative a2 from the exact motion: the core's safeguarded Newton
+      const auto speedAndSlope = [&](const S& t) {
         const std::array<S, 3> y = motion.at(t);
-        if (y[1] > 0) low = t;
-        else high = t;
-        S next = y[2] < 0 ? S(t - y[1] / y[2]) : S((low + high) / S(2));
-        if (!(next > low && next < high)) next = (low + high) / S(2);
-        const S moved = abs(next - t);
-        t = next;
-        if (moved <= S(4) * epsilon<S>() * tau || high - low <= epsilon<S>() * tau) break;
-      }
+        return std::pair<S, S>{y[1], y[2]};
+      };
+      const S low = h * S(i - 1);
+      const S high = h * S(i);
+      const S t = solveBracketed(speedAndSlope, low, high, previous, v, S((low + high) / S(2))).first;
       least = std::min(least, S((chain.model.gap - motion.at(t)[0]) / chain.model.gap));
     }
     previous = v;
@@ -205,17 +170,11 @@ S trivialPairDistance(const Matrix4<S>& m) {
   S c[5] = {S(1), 0, 0, 0, 0};
   Matrix4<S> accumulated = m;
   for (int k = 1; k <= 4; ++k) {
-    S trace = 0;
-    for (int i = 0; i < 4; ++i) trace += accumulated[i][i];
-    c[k] = -trace / S(k);
+    c[k] = -accumulated.trace() / S(k);
     if (k == 4) break;
-    Matrix4<S> next = accumulated;
-    for (int i = 0; i < 4; ++i) next[i][i] += c[k];
-    accumulated = multiply(m, next);
+    accumulated = m * (accumulated + c[k] * Matrix4<S>::Identity());
   }
-  S traceM = 0;
-  for (int i = 0; i < 4; ++i) traceM += m[i][i];
-  const S t = traceM - S(2);
+  const S t = m.trace() - S(2);
   // (l^2 - t l + 1)(l^2 + b l + e) = l^4 + (b - t) l^3 + (e - t b + 1) l^2 + (b - t e) l + e
   const S b = c[1] + t;
   const S e = c[2] + t * b - S(1);
@@ -243,13 +202,13 @@ Matrix4<S> flowMatrix(const Chain<S>& chain, const S& tau) {
   const auto position = inModes(chain, cf, cs);             // u from u, v from v
   const auto byVelocity = inModes(chain, S(sf / wFast), S(ss / wSlow));  // u from v
   const auto byPosition = inModes(chain, S(-wFast * sf), S(-wSlow * ss));  // v from u
-  Matrix4<S> phi{};
+  Matrix4<S> phi;
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
-      phi[i][j] = position[i][j];
-      phi[i][j + 2] = byVelocity[i][j];
-      phi[i + 2][j] = byPosition[i][j];
-      phi[i + 2][j + 2] = position[i][j];
+      phi(i, j) = position[i][j];
+      phi(i, j + 2) = byVelocity[i][j];
+      phi(i + 2, j) = byPosition[i][j];
+      phi(i + 2, j + 2) = position[i][j];
     }
   }
   return phi;
@@ -257,11 +216,11 @@ Matrix4<S> flowMatrix(const Chain<S>& chain, const S& tau) {
 
 template <typename S>
 Matrix4<S> saltationMatrix(const Chain<S>& chain, const BasicState<S>& before) {
-  Matrix4<S> s = identity4<S>();
+  Matrix4<S> s = Matrix4<S>::Identity();
   const S a2 = stiffness2(chain) * (before.u1 - chain.model.gap) / chain.model.m2;
-  s[1][1] = S(-1);
-  s[3][3] = S(-1);
-  s[3][1] = S(2) * a2 / before.v2;
+  s(1, 1) = S(-1);
+  s(3, 3) = S(-1);
+  s(3, 1) = S(2) * a2 / before.v2;
   return s;
 }
 
@@ -342,7 +301,7 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
                   std::to_string(impacts));
   }
   // the monodromy, flight by flight, with the clearance of every flight
-  Matrix4<S> monodromy = identity4<S>();
+  Matrix4<S> monodromy = Matrix4<S>::Identity();
   S normProduct = 1;
   S previousTime = 0;
   BasicState<S> leaving = start;
@@ -356,7 +315,7 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
     const S tau = event.t - previousTime;
     const Matrix4<S> flow = flowMatrix(chain, tau);
     const Matrix4<S> saltation = saltationMatrix(chain, event.before);
-    monodromy = multiply(saltation, multiply(flow, monodromy));
+    monodromy = saltation * (flow * monodromy);
     normProduct *= scaledNorm(chain, flow) * scaledNorm(chain, saltation);
     orbit.minImpactSpeed = std::min(orbit.minImpactSpeed, event.before.v2);
     orbit.minClearance = std::min(orbit.minClearance, flightClearance(chain, leaving, tau));
@@ -373,29 +332,28 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
   const S dEdu1 = m.k1 * start.u1 + stiffness2(chain) * (start.u1 - start.u2);
   const S dEdv1 = m.m1 * start.v1;
   const S dEdv2 = m.m2 * start.v2;
-  const std::array<std::array<S, 4>, 3> lifts = {{
-      {S(1), S(0), S(0), S(-dEdu1 / dEdv2)},  // du1
-      {S(0), S(0), S(1), S(-dEdv1 / dEdv2)},  // dv1
-      {S(0), S(0), S(0), S(S(1) / dEdv2)},    // dE
-  }};
-  const std::array<S, 4> flow = field(chain, end);
-  std::array<std::array<S, 4>, 3> carried{};
+  // columns: the lifts of du1, dv1 and dE
+  Eigen::Matrix<S, 4, 3> lifts = Eigen::Matrix<S, 4, 3>::Zero();
+  lifts.col(0) << S(1), S(0), S(0), S(-dEdu1 / dEdv2);
+  lifts.col(1) << S(0), S(0), S(1), S(-dEdv1 / dEdv2);
+  lifts.col(2) << S(0), S(0), S(0), S(S(1) / dEdv2);
+  const std::array<S, 4> flowAtEnd = field(chain, end);
+  const Vector4<S> flow(flowAtEnd[0], flowAtEnd[1], flowAtEnd[2], flowAtEnd[3]);
+  Eigen::Matrix<S, 4, 3> carried = monodromy * lifts;
   for (int c = 0; c < 3; ++c) {
-    std::array<S, 4> y = times(monodromy, lifts[std::size_t(c)]);
-    const S along = y[1] / flow[1];  // the time shift that brings u2 back onto H
-    for (int i = 0; i < 4; ++i) y[i] -= along * flow[i];
-    carried[std::size_t(c)] = y;
+    const S along = carried(1, c) / flow[1];  // the time shift that brings u2 back onto H
+    carried.col(c) -= along * flow;
   }
-  orbit.reduced = {{{carried[0][0], carried[1][0]}, {carried[0][2], carried[1][2]}}};
-  orbit.energyDerivative = {carried[2][0], carried[2][2]};
+  orbit.reduced << carried(0, 0), carried(0, 1), carried(2, 0), carried(2, 1);
+  orbit.energyDerivative = {carried(0, 2), carried(2, 2)};
   {
     const S w = chain.omegaSlow;  // (u1 / d, v1 / (w d)): DP's entries as the continuation sees them
-    orbit.amplification = std::max({S(1), abs(orbit.reduced[0][0]), abs(orbit.reduced[1][1]),
-                                    abs(orbit.reduced[0][1] * w), abs(orbit.reduced[1][0] / w)});
+    orbit.amplification = std::max({S(1), abs(orbit.reduced(0, 0)), abs(orbit.reduced(1, 1)),
+                                    abs(orbit.reduced(0, 1) * w), abs(orbit.reduced(1, 0) / w)});
   }
-  const S trace = orbit.reduced[0][0] + orbit.reduced[1][1];
+  const S trace = orbit.reduced.trace();
   orbit.traceError = epsilon<S>() * S(8 * (2 * impacts + 2)) * normProduct * orbit.amplification;
-  const S det = orbit.reduced[0][0] * orbit.reduced[1][1] - orbit.reduced[0][1] * orbit.reduced[1][0];
+  const S det = orbit.reduced(0, 0) * orbit.reduced(1, 1) - orbit.reduced(0, 1) * orbit.reduced(1, 0);
   orbit.trace = trace;
   orbit.checks.detMinus1 = det - S(1);
   orbit.checks.trivialPair = trivialPairDistance(monodromy);
@@ -542,8 +500,8 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
     const BasicState<S>& end = orbit.events.back().after;
     const S f0 = end.u1 - x;
     const S f1 = end.v1 - y;
-    const S a = orbit.reduced[0][0] - S(1), b = orbit.reduced[0][1];
-    const S c = orbit.reduced[1][0], d = orbit.reduced[1][1] - S(1);
+    const S a = orbit.reduced(0, 0) - S(1), b = orbit.reduced(0, 1);
+    const S c = orbit.reduced(1, 0), d = orbit.reduced(1, 1) - S(1);
     const S det = a * d - b * c;
     if (!(abs(det) > S(0)) || !isFinite(det)) {
       if (closed) return accept(std::move(*closed));

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/model/chain.h"
+#include "core/numbers/eigen_quad.h"
 #include "core/solver/events.h"
 #include "core/model/state.h"
 
@@ -21,12 +22,15 @@
 /// scalar like the solver (double, long double, binary128).
 namespace grazelab::core {
 
-/// A 4x4 matrix on the state (u1, u2, v1, v2), row-major.
+/// A 4x4 matrix on the state (u1, u2, v1, v2).
 template <typename S>
-using Matrix4 = std::array<std::array<S, 4>, 4>;
-/// A 2x2 matrix on the section coordinates (u1, v1), row-major.
+using Matrix4 = Eigen::Matrix<S, 4, 4>;
+/// A vector of the state (u1, u2, v1, v2).
 template <typename S>
-using Matrix2 = std::array<std::array<S, 2>, 2>;
+using Vector4 = Eigen::Matrix<S, 4, 1>;
+/// A 2x2 matrix on the section coordinates (u1, v1).
+template <typename S>
+using Matrix2 = Eigen::Matrix<S, 2, 2>;
 
 /// The exact flow matrix of a free flight of duration `tau` [time]: x(tau) = Phi x(0), from the
 /// chain's modes (x = (u1, u2, v1, v2), physical units).
@@ -84,8 +88,8 @@ struct PeriodicOrbit {
   S period = 0;                   ///< the time of the k-th impact
   S energy = 0;
   std::vector<BasicEvent<S>> events;  ///< the contacts over one period (k of them when admissible)
-  Matrix4<S> monodromy{};         ///< M = S_k Phi(tau_k) ... S_1 Phi(tau_1)
-  Matrix2<S> reduced{};           ///< DP^k in (u1, v1) at fixed energy
+  Matrix4<S> monodromy = Matrix4<S>::Zero();  ///< M = S_k Phi(tau_k) ... S_1 Phi(tau_1)
+  Matrix2<S> reduced = Matrix2<S>::Zero();    ///< DP^k in (u1, v1) at fixed energy
   std::array<S, 2> energyDerivative{};  ///< d(P^k)/dE at fixed (u1, v1)
   S trace = 0;                    ///< tr DP^k = tr M - 2
   /// the largest entry of DP^k in units of the gap and of w2 times the gap (at least 1): how

@@ -44,7 +44,7 @@ TEST(PeriodicOrbitTest, theFlowMatrixCarriesAStateAsTheSolverDoes) {
     const double expected[4] = {run.final.u1, run.final.u2, run.final.v1, run.final.v2};
     for (int i = 0; i < 4; ++i) {
       double y = 0;
-      for (int k = 0; k < 4; ++k) y += phi[i][k] * x[k];
+      for (int k = 0; k < 4; ++k) y += phi(i, k) * x[k];
       EXPECT_NEAR(y, expected[i], 1e-13) << "tau " << tau << " row " << i;
     }
   }
@@ -66,7 +66,7 @@ TEST(PeriodicOrbitTest, everyOnePeriodicOrbitSatisfiesTheIdentities) {
       EXPECT_LT(orbit.checks.trivialPair, 1e-6) << fraction;
       EXPECT_LT(orbit.checks.periodicityResidual, 1e-13) << fraction;
       double traceM = 0;
-      for (int i = 0; i < 4; ++i) traceM += orbit.monodromy[i][i];
+      for (int i = 0; i < 4; ++i) traceM += orbit.monodromy(i, i);
       EXPECT_NEAR(traceM - 2, orbit.trace, 1e-10 * std::max(1.0, std::abs(orbit.trace))) << fraction;
       // the multipliers' product is det = 1 and their sum the trace
       const auto& mu = orbit.multipliers;
@@ -104,8 +104,8 @@ TEST(PeriodicOrbitTest, theExactJacobianIsTheMapsFiniteDifference) {
     for (int i = 0; i < 2; ++i) {
       const double byU = (plusU[std::size_t(i)] - minusU[std::size_t(i)]) / (2 * h);
       const double byV = (plusV[std::size_t(i)] - minusV[std::size_t(i)]) / (2 * h);
-      EXPECT_NEAR(orbit.reduced[std::size_t(i)][0], byU, 1e-6 * std::max(1.0, std::abs(byU))) << fraction;
-      EXPECT_NEAR(orbit.reduced[std::size_t(i)][1], byV, 1e-6 * std::max(1.0, std::abs(byV))) << fraction;
+      EXPECT_NEAR(orbit.reduced(i, 0), byU, 1e-6 * std::max(1.0, std::abs(byU))) << fraction;
+      EXPECT_NEAR(orbit.reduced(i, 1), byV, 1e-6 * std::max(1.0, std::abs(byV))) << fraction;
     }
     // and the energy derivative, at fixed (u1, v1)
     const auto atEnergy = [&](double energy) {
