@@ -265,7 +265,8 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         ``state`` = (u1, ..., uN, v1, ..., vN) or from ``glo_weights``, plus ``perturb`` (2N
         numbers), in double, with ``contacts`` and ``t_end``; the result has ``chain`` (with the
         common ``period`` of a commensurate chain), ``initial``, ``events`` (each with t, type, u,
-        v_pre and the stopped mass's v_post), ``final``, ``stop_reason``, ``message``,
+        v_pre and the stopped mass's v_post; None with events=False, which holds none and so
+        takes any number of contacts), ``final``, ``stop_reason``, ``message``,
         ``contacts``, ``energy``, ``trust`` (the run again one precision up, compared event
         by event: the whole run with trust="full", its first contacts with "auto") and ``precision``; or from ``onepp`` = T, the 1IPP orbit of that period
         right after its impact; ``samples`` a structured array (t, u1..uN, v1..vN). No
@@ -284,7 +285,7 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         if samples is not None:
             grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
             options["sample_times" if grid else "sample_step"] = samples
-        result, _, _, _ = _command("simulate", options, progress, document=True)
+        result, _, _, _ = _command("simulate", options, progress, document=True, discard_events=not events)
         if result.get("samples") is not None:
             # (t, u1..uN, v1..vN) as a structured array, as for two masses
             n = len(result["chain"]["masses"])

@@ -415,6 +415,22 @@ def test_simulate_a_chain_of_n_masses(cli_json):
     assert at.samples["u3"][0] == first.u[2] and abs(at.samples["v3"][0] - first.v_post) < 1e-12
 
 
+def test_statistics_of_a_chain_of_n_masses_without_its_events():
+    # events=False: the same run's statistics, its error estimate made as the events came (the
+    # same comparison with the shadow run), no event held, so no bound on the contacts
+    chain = dict(masses=[1, 0.2, 0.05], frequencies=[3, 2, 1], state=[0, 0, 0, 0, 0, 6.7])
+    for trust in ("off", "auto", "full"):
+        whole = gl.simulate(**chain, contacts=400, trust=trust)
+        brief = gl.simulate(**chain, contacts=400, trust=trust, events=False)
+        assert brief.events is None and len(whole.events) == 400
+        for key in ("initial", "final", "stop_reason", "contacts", "energy", "trust", "precision"):
+            assert brief[key] == whole[key], (trust, key)
+    with pytest.raises(ValueError, match="contacts"):
+        gl.simulate(**chain, contacts=1_000_001, trust="off")
+    long = gl.simulate(**chain, contacts=1_000_001, trust="off", events=False)
+    assert long.contacts == 1_000_001 and long.stop_reason == "contact-limit"
+
+
 def test_glo_starts_and_grazing_sets_of_n_masses(cli_json):
     # a GLO start of the designed 3:2:1 chain: the command line's document, grazing touches one
     # period apart; the grazing sets as the command line writes them (the note's [0, 4/3])

@@ -196,6 +196,8 @@ struct ChainRunIn {
   S tEnd = 0;
   std::vector<std::pair<double, core::ChainState>> samples;  ///< (t, state) asked for, in double
   bool samplesTruncated = false;
+  /// a run whose events were not kept: its error estimate, made as they came (else empty)
+  std::optional<core::Trust> trust;
 };
 
 // the most samples a json holds (as for two masses)
@@ -242,16 +244,19 @@ std::optional<S> timeLimit(const QString& tEndText, QString& error) {
   return *parsed.value;
 }
 
+// `keepEvents` false: the run's statistics alone (the Python module's events=False), its error
+// estimate made online as the events come, none of them held
 template <typename S>
 std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::MassChain& chain, long contacts,
-                                   const QString& tEndText, std::stop_token stop, QString& error) {
+                                   const QString& tEndText, std::stop_token stop, QString& error,
+                                   bool keepEvents = true, core::TrustMode trustMode = core::TrustMode::Off) {
   const auto start = chainStart<S>(options, chain, error);
   if (!start) return std::nullopt;
   const auto tEnd = timeLimit<S>(tEndText, error);
   if (!tEnd) return std::nullopt;
   const auto asked = samplingOf(options, error);
   if (!asked) return std::nullopt;
-  ChainRunIn<S> in{*start, {}, *tEnd, {}, false};
+  ChainRunIn<S> in{*start, {}, *tEnd, {}, false, std::nullopt};
   core::ChainSampling<S> sampling{asked->spacing, asked->times, {}};
   if (asked->spacing > 0 || !asked->times.empty()) {
     sampling.sink = [&](double t, const core::BasicChainState<S>& state) {
@@ -262,7 +267,14 @@ std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::Mass
       in.samples.emplace_back(t, core::ChainState{state.u.template cast<double>(), state.v.template cast<double>()});
     };
   }
-  in.run = core::runChain(chain, *start, contacts, *tEnd, stop, {}, sampling);
+  if (keepEvents) {
+    in.run = core::runChain(chain, *start, contacts, *tEnd, stop, {}, sampling);
+    return in;
+  }
+  core::ChainTrustCheck<S> check(chain, *start, contacts, *tEnd, trustMode, stop);
+  const core::ChainEventSink<S> sink = [&check](const core::BasicChainEvent<S>& event) { check.observe(event); };
+  in.run = core::runChain(chain, *start, contacts, *tEnd, stop, sink, sampling);
+  in.trust = check.finish(in.run);
   return in;
 }
 
@@ -277,9 +289,10 @@ V samplesValue(const ChainRunIn<S>& in) {
   return V::array(std::move(items));
 }
 
+// (events null when they were not kept)
 template <typename S>
 V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precision, const core::Trust& trust,
-              bool sampled) {
+              bool sampled, bool keptEvents = true) {
   const core::BasicChainRun<S>& run = in.run;
   std::vector<V> events;
   for (const core::BasicChainEvent<S>& event : run.events) {
@@ -295,7 +308,7 @@ V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precisio
   V document = V::object(
       {{"chain", massChainValue(masses, dynamics.period)},
        {"initial", V::object({{"u", numbers<S>(in.start.u)}, {"v", numbers<S>(in.start.v)}})},
-       {"events", V::array(std::move(events))},
+       {"events", keptEvents ? V::array(std::move(events)) : V::null()},
        {"final", V::object({{"t", V::number(run.tFinal)}, {"u", numbers<S>(run.final.u)}, {"v", numbers<S>(run.final.v)}})},
        {"stop_reason", V::of(stopName(run.stop))},
        {"message", message.empty() ? V::null() : V::of(message)},
@@ -426,7 +439,9 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     return kExitInvalidInput;
   }
   const core::MassChain& masses = chain.value->chain;
-  const long maxContacts = format == ChainFormat::Json ? kMaxChainContacts : kMaxStreamedContacts;
+  // the Python module's events=False: a json document without events, none of them held
+  const bool keepEvents = !(format == ChainFormat::Json && io.events && io.events->discard);
+  const long maxContacts = format == ChainFormat::Json && keepEvents ? kMaxChainContacts : kMaxStreamedContacts;
   long contacts = options.isSet("t-end") ? maxContacts : 100;
   if (options.isSet("contacts")) {
     bool ok = false;
@@ -439,7 +454,7 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     }
   }
   const auto fullTrustHeld = [&] { return *trustMode == core::TrustMode::Full && contacts > kMaxChainContacts; };
-  if (format == ChainFormat::Summary && fullTrustHeld()) {
+  if ((format == ChainFormat::Summary || !keepEvents) && fullTrustHeld()) {
     error = QStringLiteral("--trust full holds the shadow run's events: at most %1 contacts (auto shadows the first "
                            "ones and stays bounded)")
                 .arg(kMaxChainContacts);
@@ -501,7 +516,7 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       lastWrittenTime = core::toDouble(event.t);
       lastWrittenType = event.type;
     };
-    const ChainRunIn<S> in{*start, core::runChain(masses, *start, contacts, *limit, stop, sink), *limit, {}, false};
+    const ChainRunIn<S> in{*start, core::runChain(masses, *start, contacts, *limit, stop, sink), *limit, {}, false, std::nullopt};
     std::fflush(io.out);
     if (in.run.stop == core::ChainStop::Cancelled) {
       if (format == ChainFormat::Csv) error = QStringLiteral("the %1 events before it are written").arg(written);
@@ -533,17 +548,18 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
   // one rung of the ladder in S: the exit code when it ends the command, nothing to go up
   const auto rung = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
     if (format != ChainFormat::Json) return streamed.template operator()<S>(name, next, last);
-    const auto in = runIn<S>(options, masses, contacts, tEnd, stop, error);
+    const auto in = runIn<S>(options, masses, contacts, tEnd, stop, error, keepEvents, *trustMode);
     if (!in) return kExitInvalidInput;
     if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
     if (!last && in->run.stop == core::ChainStop::Undecided) {
       escalate(name, next, core::toDouble(in->run.tFinal));
       return std::nullopt;
     }
-    const core::Trust trust = core::chainTrust(masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
+    const core::Trust trust = in->trust ? *in->trust
+                                        : core::chainTrust(masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
     if (stop.stop_requested()) return kExitInterrupted;
     emitDocument(io, runDocument(masses, *in, report(name), trust,
-                                 options.isSet("sample-step") || options.isSet("sample-times")));
+                                 options.isSet("sample-step") || options.isSet("sample-times"), keepEvents));
     return 0;
   };
   const bool automatic = precisionText == "auto";
