@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/solver/chain_run.h"
+#include "core/solver/chain_trust.h"
 
 namespace grazelab::core {
 namespace {
@@ -40,7 +42,11 @@ bool summarize(const ChainMapSpec& spec, const ChainState& start, double period,
   // leaving it) to the next contact
   bool fromStop = start.u[s] == spec.chain.gap && start.v[s] <= 0;
   double leftAt = 0;
+  const BasicChainState<S> first{start.u.cast<S>(), start.v.cast<S>()};
+  std::optional<ChainTrustCheck<S>> check;
+  if (spec.estimateHorizon) check.emplace(spec.chain, first, long(spec.contacts), S(0), TrustMode::Auto, stop);
   const ChainEventSink<S> sink = [&](const BasicChainEvent<S>& event) {
+    if (check) check->observe(event);
     const double t = toDouble(event.t);
     if (event.type == EventType::Impact && std::isnan(point.firstImpactTime)) point.firstImpactTime = t;
     if (isContact(event.type) && fromStop && t > leftAt) {
@@ -54,7 +60,6 @@ bool summarize(const ChainMapSpec& spec, const ChainState& start, double period,
     fromStop = event.type != EventType::Stick;
     leftAt = t;
   };
-  const BasicChainState<S> first{start.u.cast<S>(), start.v.cast<S>()};
   const BasicChainRun<S> run = runChain(spec.chain, first, long(spec.contacts), S(0), stop, sink);
   if (run.stop == ChainStop::Undecided) {
     if (raise) return false;
@@ -70,6 +75,10 @@ bool summarize(const ChainMapSpec& spec, const ChainState& start, double period,
   point.fftMin = flights > 0 ? low : kNaN;
   point.fftMax = flights > 0 ? high : kNaN;
   point.fftMean = flights > 0 ? sum / double(flights) : kNaN;
+  if (check && run.stop != ChainStop::Cancelled) {
+    const Trust trust = check->finish(run);
+    if (trust.verdict != Verdict::Unchecked) point.horizon = trust.horizon;
+  }
   return true;
 }
 

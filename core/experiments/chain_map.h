@@ -35,6 +35,9 @@ struct ChainMapSpec {
   ChainMapAxis x;    ///< columns
   ChainMapAxis y;    ///< rows
   std::int64_t contacts = 1;  ///< contacts of each run
+  /// each point's predictability horizon from a shadow run one precision up (TrustMode::Auto,
+  /// compared event by event as the run goes: ChainTrustCheck); costs about 2x
+  bool estimateHorizon = false;
 };
 
 /// Why the spec cannot be run (one line), or empty: a usable chain, the start's size, counts
@@ -51,7 +54,8 @@ double chainMapPeriod(const MassChain& chain);
 /// ends at the next contact: fftFirst is the first one's length [time] (+inf when the flight
 /// stays below the stop forever, NaN when the run has none), fftMin/Max/Mean over the run's
 /// flights from the stop in units of chainMapPeriod; impacts, grazings, sticks counted; the
-/// first impact's time; horizon NaN (not estimated). A start past the stop (u_s > d), or a run
+/// first impact's time; the horizon with estimateHorizon (NaN otherwise, or where the estimate
+/// is unchecked). A start past the stop (u_s > d), or a run
 /// that stays undecided in binary128 (a start on the stop whose departure its first three
 /// derivatives do not decide), is no run: NaN and counts -1.
 PointSummary chainMapPoint(const ChainMapSpec& spec, std::int64_t column, std::int64_t row,

@@ -449,7 +449,7 @@ def map(*, x: _Union[str, _Sequence], y: _Union[str, _Sequence], m1: float = 1.0
     masses, springs, right_spring, stop_mass, frequencies, design_branch: a chain of N masses, as
         in ``simulate``; its axes are u<i> or v<i> (i from 1 to N) of the start ``state`` (2N
         numbers, default at rest at 0), its flights' ratios in units of the chain's period (the
-        common period T, else the slowest mode's), no horizon (``trust`` "off").
+        common period T, else the slowest mode's), the horizon with ``trust`` "auto" as for two masses.
 """
     if shard is not None and out is None:
         raise ValueError("shard: a stripe is kept for merge: give out=PREFIX for its files")

@@ -14,6 +14,7 @@
 #include "core/model/chain_design.h"
 #include "core/model/resonance.h"
 #include "core/solver/chain_run.h"
+#include "core/solver/chain_trust.h"
 #include "parallel/tbb_parallel_for.h"
 #include "support/point_bits.h"
 
@@ -131,6 +132,41 @@ TEST(ChainMapTest, AResonantChainsFlightsFromTheStopLastAtMostItsPeriod) {
   if (run.events.size() > 1) {
     EXPECT_EQ(p.fftFirst, run.events[1].t - run.events[0].t);
   }
+}
+
+// with estimateHorizon each point's horizon is the trust estimate of the run it names, made
+// apart from the map by chainTrust on the run's whole event list (the map's is made online);
+// without it, NaN
+TEST(ChainMapTest, HorizonIsTheRunsOwnTrustEstimate) {
+  ChainMapSpec spec;
+  spec.chain = threeToOne();
+  spec.start = {Eigen::Vector3d(0, 0, 0.5), Eigen::Vector3d::Zero()};
+  spec.x = axis(false, 3, -1.0, 0.9, 6);
+  spec.y = axis(true, 3, -8.0, 8.0, 5);
+  spec.contacts = 60;
+  spec.estimateHorizon = true;
+  int estimated = 0;
+  for (std::int64_t row = 0; row < 5; ++row) {
+    for (std::int64_t column = 0; column < 6; ++column) {
+      const PointSummary p = chainMapPoint(spec, column, row);
+      ChainState start = spec.start;
+      start.u[2] = spec.x.range.at(column);
+      start.v[2] = spec.y.range.at(row);
+      const ChainRun run = runChain(spec.chain, start, 60);
+      const Trust trust = chainTrust(spec.chain, start, run, 60, 0.0, TrustMode::Auto);
+      if (trust.verdict == Verdict::Unchecked) {
+        EXPECT_TRUE(std::isnan(p.horizon)) << column << ", " << row;
+        continue;
+      }
+      EXPECT_EQ(p.horizon, trust.horizon) << column << ", " << row;
+      if (run.events.empty()) continue;  // (a run without contacts ends at t = 0: horizon 0)
+      EXPECT_GT(p.horizon, 0);
+      ++estimated;
+    }
+  }
+  EXPECT_GT(estimated, 10);
+  spec.estimateHorizon = false;
+  EXPECT_TRUE(std::isnan(chainMapPoint(spec, 2, 3).horizon));
 }
 
 TEST(ChainMapTest, OnAllCoresTheMapIsTheSerialOne) {

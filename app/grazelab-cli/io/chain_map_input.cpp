@@ -20,8 +20,10 @@ namespace grazelab::cli {
 // (default: at rest at 0), axes u<i> or v<i>
 std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options, std::stop_token stop,
                                                     QString& error, bool& stopped) {
-  if (options.isSet("trust") && options.value("trust") != "off") {
-    error = "--trust: a map of N masses estimates no horizon yet (horizon NaN): give off or leave it out";
+  const QString trust = options.isSet("trust") ? options.value("trust") : QStringLiteral("off");
+  if (trust != "off" && trust != "auto") {
+    error = QStringLiteral("--trust: '%1' is not off or auto (a map estimates each point's horizon with auto)")
+                .arg(trust);
     return std::nullopt;
   }
   for (const char* name : {"glo", "onepp", "perturb"}) {
@@ -40,6 +42,7 @@ std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options,
   }
   core::ChainMapSpec spec;
   spec.chain = chain.value->chain;
+  spec.estimateHorizon = trust == "auto";
   const Eigen::Index n = spec.chain.size();
   spec.start = {Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
   if (options.isSet("state")) {
@@ -102,7 +105,9 @@ std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options,
 QJsonObject chainSpecJson(const core::ChainMapSpec& spec, double period, const QString& pictureQuantity) {
   QJsonObject object = map::specJson(core::MapSpec{}, period, pictureQuantity);
   object.remove("model");
-  object.remove("horizon");
+  object["horizon"] = spec.estimateHorizon ? "estimated per point (--trust auto: a shadow run one precision up, "
+                                             "compared event by event)"
+                                           : "not estimated (--trust off): NaN; give --trust auto";
   const auto axisJson = [](const core::ChainMapAxis& axis) {
     return QJsonObject{{"variable", QString::fromStdString(axis.name())}, {"from", axis.range.from},
                        {"to", axis.range.to}, {"count", qint64(axis.range.count)},
