@@ -169,7 +169,7 @@ const std::vector<Command>& commands() {
          return runReportOrStability(false, parser, io, stop);
        },
        "it runs its own list of cases (see matrix.md)"},
-      {"map", kChain + kStart + kMassChain + QStringList{"precision", "contacts", "trust", "out", "x", "y", "threads", "shard", "picture"}, false,
+      {"map", kChain + kStart + kMassChain + QStringList{"glo-weights", "precision", "contacts", "trust", "out", "x", "y", "threads", "shard", "picture"}, false,
        writesFiles(runMap), {}},
       {"merge", {"out"}, true,
        [](const QCommandLineParser& parser, const QStringList& parts, const Io& io, std::stop_token stop) {

@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/orbits/chain_glo.h"
 #include "core/solver/chain_run.h"
 #include "core/solver/chain_trust.h"
 
@@ -85,22 +86,31 @@ bool summarize(const ChainMapSpec& spec, const ChainState& start, double period,
 }  // namespace
 
 std::string ChainMapAxis::name() const {
+  const char* letter = kind == Kind::Weight ? "w" : kind == Kind::Velocity ? "v" : "u";
   // appended, not "literal" + string: GCC 12 warns falsely on that at -O2
-  return std::string(velocity ? "v" : "u").append(std::to_string(mass));
+  return std::string(letter).append(std::to_string(index));
 }
 
 std::optional<ChainMapAxis> parseChainMapVariable(std::string_view text, Eigen::Index n) {
-  if (text.size() < 2 || (text[0] != 'u' && text[0] != 'v')) return std::nullopt;
-  int mass = 0;
+  if (text.size() < 2 || (text[0] != 'u' && text[0] != 'v' && text[0] != 'w')) return std::nullopt;
+  int index = 0;
   for (char c : text.substr(1)) {
-    if (c < '0' || c > '9' || mass > 1000) return std::nullopt;
-    mass = 10 * mass + (c - '0');
+    if (c < '0' || c > '9' || index > 1000) return std::nullopt;
+    index = 10 * index + (c - '0');
   }
-  if (mass < 1 || mass > n) return std::nullopt;
+  if (index < 1 || index > n) return std::nullopt;
   ChainMapAxis axis;
-  axis.velocity = text[0] == 'v';
-  axis.mass = mass;
+  axis.kind = text[0] == 'w' ? ChainMapAxis::Kind::Weight
+              : text[0] == 'v' ? ChainMapAxis::Kind::Velocity
+                               : ChainMapAxis::Kind::Position;
+  axis.index = index;
   return axis;
+}
+
+int balancingWeight(const ChainMapSpec& spec) {
+  int mode = int(spec.chain.size()) - 1;
+  while (mode == spec.x.index - 1 || mode == spec.y.index - 1) --mode;
+  return mode;
 }
 
 double chainMapPeriod(const MassChain& chain) {
@@ -115,19 +125,41 @@ std::string checkChainMap(const ChainMapSpec& spec) {
   const Eigen::Index n = spec.chain.size();
   if (spec.start.u.size() != n || spec.start.v.size() != n) return "the start needs one u and one v per mass";
   for (const ChainMapAxis* axis : {&spec.x, &spec.y}) {
-    if (axis->mass < 1 || axis->mass > n) return "an axis names a mass the chain does not have";
+    if (axis->index < 1 || axis->index > n) return "an axis names a mass or mode the chain does not have";
     if (axis->range.count < 1 || axis->range.count > kMaxAxisCount) return "an axis needs 1 to 2^24 points";
     if (!std::isfinite(axis->range.from) || !std::isfinite(axis->range.to)) return "an axis range is not finite";
   }
-  if (spec.x.velocity == spec.y.velocity && spec.x.mass == spec.y.mass) return "the two axes set the same coordinate";
+  if (spec.x.kind == spec.y.kind && spec.x.index == spec.y.index) return "the two axes set the same coordinate";
+  if (spec.x.weight() != spec.y.weight()) {
+    return "a map over GLO weights has two weight axes (w<j>): its start is GLO_lambda plus a push";
+  }
+  if (spec.x.weight()) {
+    if (n < 3) return "a map over GLO weights needs three modes or more (two weights on the axes, one balancing them)";
+    if (!spec.weights.empty() && Eigen::Index(spec.weights.size()) != n) return "the GLO weights need one per mode";
+    if (spec.push.u.size() != n || spec.push.v.size() != n) return "the push needs one u and one v per mass";
+  }
   if (spec.contacts < 1) return "a map's runs need at least one contact";
   return {};
 }
 
 PointSummary chainMapPoint(const ChainMapSpec& spec, std::int64_t column, std::int64_t row, std::stop_token stop) {
   ChainState start = spec.start;
-  for (const auto& [axis, value] : {std::pair{&spec.x, spec.x.range.at(column)}, std::pair{&spec.y, spec.y.range.at(row)}}) {
-    (axis->velocity ? start.v : start.u)[axis->mass - 1] = value;
+  if (spec.x.weight()) {
+    std::vector<double> weights = spec.weights.empty() ? std::vector<double>(std::size_t(spec.chain.size()), 0.0)
+                                                       : spec.weights;
+    weights[std::size_t(spec.x.index - 1)] = spec.x.range.at(column);
+    weights[std::size_t(spec.y.index - 1)] = spec.y.range.at(row);
+    const std::size_t balancing = std::size_t(balancingWeight(spec));
+    double others = 0;
+    for (std::size_t j = 0; j < weights.size(); ++j) others += j == balancing ? 0.0 : weights[j];
+    weights[balancing] = 1 - others;
+    const ChainGloStart glo = chainGloStart(spec.chain, weights);
+    if (glo.problem != GloStartProblem::None) return noRun();
+    start = {glo.state.u + spec.push.u, glo.state.v + spec.push.v};
+  } else {
+    for (const auto& [axis, value] : {std::pair{&spec.x, spec.x.range.at(column)}, std::pair{&spec.y, spec.y.range.at(row)}}) {
+      (axis->kind == ChainMapAxis::Kind::Velocity ? start.v : start.u)[axis->index - 1] = value;
+    }
   }
   const int s = spec.chain.stopped() - 1;
   if (!(start.u[s] <= spec.chain.gap)) return noRun();

@@ -15,23 +15,31 @@
 namespace grazelab::core {
 
 /// Maps of a chain of N masses: the two-mass maps' grid, summaries and files (maps.h), over
-/// coordinates of the start. An axis sets u_i or v_i (1-based mass `mass`) of every run's start.
+/// coordinates of the start: an axis sets u_i or v_i (mass i) of every run's start, or the
+/// weight lambda_i of mode i (fastest first) of a GLO_lambda start.
 struct ChainMapAxis {
-  bool velocity = false;  ///< v_i, else u_i
-  int mass = 1;           ///< i, 1..N
-  MapAxis range;          ///< the values (its `variable` unused)
+  enum class Kind { Position, Velocity, Weight };
+  Kind kind = Kind::Position;  ///< u_i, v_i or lambda_i
+  int index = 1;               ///< i, 1..N
+  MapAxis range;               ///< the values (its `variable` unused)
 
-  /// "u3", "v1".
+  /// "u3", "v1", "w2".
   std::string name() const;
+  bool weight() const { return kind == Kind::Weight; }
   friend bool operator==(const ChainMapAxis&, const ChainMapAxis&) = default;
 };
 
-/// "u3" or "v1" as an axis variable, mass 1..n; nothing otherwise.
+/// "u3", "v1" or "w2" as an axis variable, i from 1 to n; nothing otherwise.
 std::optional<ChainMapAxis> parseChainMapVariable(std::string_view text, Eigen::Index n);
 
 struct ChainMapSpec {
   MassChain chain;
-  ChainState start;  ///< every run's start before the axes set their coordinates
+  ChainState start;  ///< every run's start before the axes set their coordinates (u/v axes)
+  /// weight axes (both of them): every run starts on GLO_lambda at its touch (chainGloStart)
+  /// plus `push`; lambda is `weights` (all 0 when empty) with the axes' weights set and the
+  /// balancing weight, the last mode's no axis sets, 1 minus the others
+  std::vector<double> weights;
+  ChainState push;
   ChainMapAxis x;    ///< columns
   ChainMapAxis y;    ///< rows
   std::int64_t contacts = 1;  ///< contacts of each run
@@ -41,14 +49,20 @@ struct ChainMapSpec {
 };
 
 /// Why the spec cannot be run (one line), or empty: a usable chain, the start's size, counts
-/// >= 1 and at most 2^24 along an axis, finite ranges, two different coordinates.
+/// >= 1 and at most 2^24 along an axis, finite ranges, two different coordinates; weight axes
+/// both or neither, on three modes or more (one weight balances the others), with the push's
+/// and the weights' sizes.
 std::string checkChainMap(const ChainMapSpec& spec);
+
+/// The mode whose weight balances a weight map's others (0-based): the last one no axis sets.
+int balancingWeight(const ChainMapSpec& spec);
 
 /// The period the free-flight times are measured in: the common period T of a commensurate
 /// chain, else its slowest mode's period.
 double chainMapPeriod(const MassChain& chain);
 
-/// One point: the run from the start with the axes' coordinates set, `contacts` contacts, in
+/// One point: the run from the start with the axes' coordinates set (or from its GLO_lambda
+/// plus the push; no run where chainGloStart refuses the weights), `contacts` contacts, in
 /// double and again one precision up where a contact or release is undecided (as simulate's
 /// --precision auto). A flight from the stop starts at an impact, a grazing or a release and
 /// ends at the next contact: fftFirst is the first one's length [time] (+inf when the flight

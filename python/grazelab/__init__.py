@@ -427,7 +427,7 @@ def map(*, x: _Union[str, _Sequence], y: _Union[str, _Sequence], m1: float = 1.0
         out=None, progress: _Optional[_Progress] = None, masses: _Optional[_Sequence[float]] = None,
         springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
         stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
-        design_branch: _Optional[int] = None) -> Result:
+        design_branch: _Optional[int] = None, glo_weights: _Optional[_Sequence[float]] = None) -> Result:
     """A 2-D grid of exact runs reduced to summaries (``grazelab-cli map``). Returns the JSON's
     ``spec`` and ``run`` with ``arrays``: one 2-D array per quantity (row = y, column = x;
     counts int64, the rest float64), equal to the command line's .npy; ``x`` and ``y`` in the
@@ -450,20 +450,24 @@ def map(*, x: _Union[str, _Sequence], y: _Union[str, _Sequence], m1: float = 1.0
         in ``simulate``; its axes are u<i> or v<i> (i from 1 to N) of the start ``state`` (2N
         numbers, default at rest at 0), its flights' ratios in units of the chain's period (the
         common period T, else the slowest mode's), the horizon with ``trust`` "auto" as for two masses.
+        Axes w<j> instead (both of them, three modes or more) are GLO weights lambda_j: every run
+        starts on GLO_lambda at its touch plus ``perturb`` (2N numbers), lambda ``glo_weights``
+        (default 0) with the axes' set and the last weight no axis sets balancing the others.
+    glo_weights: a chain of N masses' base GLO weights for axes w<j> (fastest mode first).
 """
     if shard is not None and out is None:
         raise ValueError("shard: a stripe is kept for merge: give out=PREFIX for its files")
     if masses is not None:
         options = dict(x=x, y=y, gap=gap, precision=precision, glo=glo, onepp=onepp, state=state,
                        perturb=perturb, contacts=contacts, trust=trust, threads=threads, shard=shard,
-                       picture=picture,
+                       picture=picture, glo_weights=glo_weights,
                        **_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies,
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
     else:
         options = dict(x=x, y=y, m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
                        glo=glo, onepp=onepp, state=state, perturb=perturb, contacts=contacts, trust=trust,
                        threads=threads, shard=shard, picture=picture, springs=springs, right_spring=right_spring,
-                       stop_mass=stop_mass, design_branch=design_branch)
+                       stop_mass=stop_mass, design_branch=design_branch, glo_weights=glo_weights)
     out = None if out is None else _os.fspath(out)
     _, kept = _command("map", dict(options, out=out), progress, keep_map=True)
     return _map_result(kept, out)

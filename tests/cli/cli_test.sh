@@ -63,7 +63,7 @@ takes = {
     "report": model[:-1] + start + ["contacts", "t-end", "out", "methods", "quick"],
     "stability": ["out", "methods", "quick"],
     "map": model + start + ["contacts", "trust", "out", "x", "y", "threads", "shard", "picture", "masses",
-                            "springs", "right-spring", "stop-mass", "frequencies", "design-branch"],
+                            "springs", "right-spring", "stop-mass", "frequencies", "design-branch", "glo-weights"],
     "merge": ["out"],
     "family": model + ["onepp", "out", "count", "masses", "springs", "right-spring", "stop-mass",
                        "frequencies", "design-branch"],

@@ -13,6 +13,7 @@
 #include "core/model/chain.h"
 #include "core/model/chain_design.h"
 #include "core/model/resonance.h"
+#include "core/orbits/chain_glo.h"
 #include "core/solver/chain_run.h"
 #include "core/solver/chain_trust.h"
 #include "parallel/tbb_parallel_for.h"
@@ -30,8 +31,16 @@ MassChain threeToOne() {
 
 ChainMapAxis axis(bool velocity, int mass, double from, double to, std::int64_t count) {
   ChainMapAxis result;
-  result.velocity = velocity;
-  result.mass = mass;
+  result.kind = velocity ? ChainMapAxis::Kind::Velocity : ChainMapAxis::Kind::Position;
+  result.index = mass;
+  result.range = {MapVariable::U1, from, to, count};
+  return result;
+}
+
+ChainMapAxis weightAxis(int mode, double from, double to, std::int64_t count) {
+  ChainMapAxis result;
+  result.kind = ChainMapAxis::Kind::Weight;
+  result.index = mode;
   result.range = {MapVariable::U1, from, to, count};
   return result;
 }
@@ -169,6 +178,71 @@ TEST(ChainMapTest, HorizonIsTheRunsOwnTrustEstimate) {
   EXPECT_TRUE(std::isnan(chainMapPoint(spec, 2, 3).horizon));
 }
 
+// over GLO weights: a point is the run from GLO_lambda plus the push, lambda the axes' weights
+// and the balancing one; unpushed, a grazing weight's flight from the touch is GLO_lambda's own
+// and returns after one period; a crossing weight's that leaves the stop (sum lambda_j n_j^2 > 0)
+// returns sooner, one pressed into the stop (< 0) sticks at once
+TEST(ChainMapTest, AMapOverGloWeightsIsTheRunsFromTheirGlos) {
+  ChainMapSpec spec;
+  spec.chain = threeToOne();
+  spec.start = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  spec.push = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, -0.05)};
+  spec.x = weightAxis(1, -1.0, 1.4, 7);
+  spec.y = weightAxis(2, -1.0, 1.4, 5);
+  spec.contacts = 12;
+  ASSERT_EQ(checkChainMap(spec), "");
+  EXPECT_EQ(balancingWeight(spec), 2);
+  for (std::int64_t row = 0; row < 5; ++row) {
+    for (std::int64_t column = 0; column < 7; ++column) {
+      const double l1 = spec.x.range.at(column), l2 = spec.y.range.at(row);
+      const ChainGloStart glo = chainGloStart(spec.chain, {l1, l2, 1 - (l1 + l2)});
+      ASSERT_EQ(glo.problem, GloStartProblem::None);
+      const ChainState start{glo.state.u + spec.push.u, glo.state.v + spec.push.v};
+      const ChainRun run = runChain(spec.chain, start, 12);
+      const PointSummary p = chainMapPoint(spec, column, row);
+      long impacts = 0;
+      for (const ChainEvent& event : run.events) impacts += event.type == EventType::Impact;
+      EXPECT_EQ(p.impacts, impacts) << l1 << ", " << l2;
+      if (!run.events.empty()) {
+        EXPECT_EQ(p.fftFirst, run.events.front().t) << l1 << ", " << l2;  // the start is a departure from the stop
+      }
+    }
+  }
+  // unpushed: GLO_lambda's flight from its touch returns within the period, at the period
+  // exactly when lambda grazes
+  spec.push = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  spec.contacts = 1;
+  const double T = chainMapPeriod(spec.chain);
+  const std::vector<int> harmonics{3, 2, 1};
+  int grazing = 0, crossing = 0;
+  for (std::int64_t row = 0; row < 5; ++row) {
+    for (std::int64_t column = 0; column < 7; ++column) {
+      const double l1 = spec.x.range.at(column), l2 = spec.y.range.at(row), l3 = 1 - (l1 + l2);
+      const GloGrazing kind = gloGrazing(harmonics, {l1, l2, l3});
+      const double curvature = 9 * l1 + 4 * l2 + l3;  // sum lambda_j n_j^2
+      if (kind == GloGrazing::Boundary || std::abs(curvature) < 1e-9) continue;
+      const PointSummary p = chainMapPoint(spec, column, row);
+      if (kind == GloGrazing::Grazes) {
+        EXPECT_NEAR(p.fftFirst, T, 1e-9 * T) << l1 << ", " << l2;
+        ++grazing;
+      } else if (curvature > 0) {
+        EXPECT_LT(p.fftFirst, T * (1 - 1e-9)) << l1 << ", " << l2;
+        ++crossing;
+      } else {
+        EXPECT_EQ(p.sticks, 1) << l1 << ", " << l2;
+      }
+    }
+  }
+  EXPECT_GT(grazing, 3);
+  EXPECT_GT(crossing, 3);
+  // weights on both axes or none; three modes at least
+  ChainMapSpec mixed = spec;
+  mixed.y = axis(true, 3, -1, 1, 3);
+  EXPECT_NE(checkChainMap(mixed), "");
+  EXPECT_EQ(parseChainMapVariable("w3", 3)->kind, ChainMapAxis::Kind::Weight);
+  EXPECT_FALSE(parseChainMapVariable("w4", 3));
+}
+
 TEST(ChainMapTest, OnAllCoresTheMapIsTheSerialOne) {
   ChainMapSpec spec;
   spec.chain = MassChain{{1.0, 0.7, 0.4}, {1.0, 0.8, 0.6}, 0, 2, 1.0};
@@ -212,7 +286,6 @@ TEST(ChainMapTest, SpecsThatMakeNoSenseAreRefused) {
   spec.y = axis(true, 1, 0, 1, 4);
   EXPECT_EQ(checkChainMap(spec), "");
   EXPECT_FALSE(parseChainMapVariable("u0", 3));
-  EXPECT_FALSE(parseChainMapVariable("w1", 3));
   EXPECT_FALSE(parseChainMapVariable("v4", 3));
   ASSERT_TRUE(parseChainMapVariable("v3", 3));
   EXPECT_EQ(parseChainMapVariable("v3", 3)->name(), "v3");

@@ -183,6 +183,20 @@ def test_a_map_of_n_masses_equals_the_cli_npy(cli, tmp_path):
     assert np.nanmax(result.arrays["fft_max"]) <= 1 + 1e-12  # no flight from the stop outlasts T
     with pytest.raises(ValueError, match="u<i>"):
         gl.map(**chain, x="u4:0:1:2", y="v3:0:1:2")
+    # over GLO weights, pushed, with each point's horizon
+    weights = dict(masses=[1, 0.2, 0.05], frequencies=[3, 2, 1], perturb=[0, 0, 0, 0, 0, -0.05])
+    over = gl.map(**weights, x="w1:-1:1.4:9", y="w2:-1:1.4:7", contacts=8, trust="auto")
+    done = cli("map", "--masses", "1,0.2,0.05", "--frequencies", "3:2:1", "--perturb", "0,0,0,0,0,-0.05",
+               "--x", "w1:-1:1.4:9", "--y", "w2:-1:1.4:7", "--contacts", "8", "--trust", "auto",
+               "--out", str(tmp_path / "w"))
+    assert done.returncode == 0, done.stderr
+    for quantity, array in over.arrays.items():
+        np.testing.assert_array_equal(array, np.load(tmp_path / f"w-{quantity}.npy"), err_msg=quantity)
+    assert over.spec["start"]["balancing_weight"] == "w3" and np.all(over.arrays["horizon"] >= 0)
+    with pytest.raises(ValueError, match="two weight axes"):
+        gl.map(**weights, x="w1:0:1:2", y="v3:0:1:2")
+    with pytest.raises(ValueError, match="given by --masses"):
+        gl.map(x="u1:0:1:2", y="v1:0:1:2", glo_weights=[1, 0])
 
 
 def test_map_shards_merge_to_the_whole_map(tmp_path):

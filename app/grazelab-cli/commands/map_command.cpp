@@ -185,7 +185,8 @@ bool filesPrefix(const QCommandLineParser& parser, const Io& io, std::optional<Q
 
 void addMapOptions(QCommandLineParser& parser) {
   parser.addOptions({
-      {"x", QStringLiteral("map: the columns, NAME:from:to:count; NAME is one of %1.")
+      {"x", QStringLiteral("map: the columns, NAME:from:to:count; NAME is one of %1 (with --masses: u<i>, "
+                           "v<i> of the start, or w<j>, a GLO weight)")
                 .arg(QString::fromStdString(core::mapVariableNames())), "NAME:from:to:count"},
       {"y", "map: the rows, NAME:from:to:count.", "NAME:from:to:count"},
       {"threads", "map: threads (default: all cores).", "T"},
@@ -212,9 +213,9 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
     if (stopped) return kExitInterrupted;
     if (!chainSpec) return kExitInvalidInput;
   } else {
-    for (const char* name : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch"}) {
+    for (const char* name : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch", "glo-weights"}) {
       if (parser.isSet(name)) {
-        error = "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses";
+        error = "--springs, --right-spring, --stop-mass, --frequencies and --glo-weights describe a chain given by --masses";
         return kExitInvalidInput;
       }
     }

@@ -16,8 +16,35 @@
 
 namespace grazelab::cli {
 
-// A map of a chain of N masses: --masses ... (as simulate), the start --state u1..uN,v1..vN
-// (default: at rest at 0), axes u<i> or v<i>
+namespace {
+
+// `count` finite numbers separated by commas (--NAME), or nothing with `error` set
+std::optional<std::vector<double>> finiteNumbers(const OptionValues& options, const char* name, Eigen::Index count,
+                                                 const char* layout, QString& error) {
+  const QStringList parts = options.value(name).split(',');
+  if (parts.size() != count) {
+    error = QStringLiteral("--%1: %2 numbers where %3 are wanted (%4)").arg(name).arg(parts.size()).arg(count).arg(layout);
+    return std::nullopt;
+  }
+  std::vector<double> values;
+  for (const QString& part : parts) {
+    bool ok = false;
+    const double value = part.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+      error = QStringLiteral("--%1: '%2' is not a finite number").arg(name, part);
+      return std::nullopt;
+    }
+    values.push_back(value);
+  }
+  return values;
+}
+
+}  // namespace
+
+// A map of a chain of N masses: --masses ... (as simulate); axes u<i> or v<i> set the start
+// --state u1..uN,v1..vN (default: at rest at 0), or axes w<j> the GLO weights of a start on
+// GLO_lambda (--glo-weights, default 0; the last weight no axis sets balances the others)
+// pushed by --perturb
 std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options, std::stop_token stop,
                                                     QString& error, bool& stopped) {
   const QString trust = options.isSet("trust") ? options.value("trust") : QStringLiteral("off");
@@ -26,10 +53,10 @@ std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options,
                 .arg(trust);
     return std::nullopt;
   }
-  for (const char* name : {"glo", "onepp", "perturb"}) {
+  for (const char* name : {"glo", "onepp"}) {
     if (options.isSet(name)) {
-      error = QStringLiteral("--%1: a map of N masses starts from --state u1,...,uN,v1,...,vN, its axes setting "
-                             "u<i> or v<i>")
+      error = QStringLiteral("--%1: a map of N masses starts from --state u1,...,uN,v1,...,vN (axes u<i>, v<i>) "
+                             "or from GLO_lambda (axes w<j>, --glo-weights, --perturb)")
                   .arg(name);
       return std::nullopt;
     }
@@ -45,31 +72,16 @@ std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options,
   spec.estimateHorizon = trust == "auto";
   const Eigen::Index n = spec.chain.size();
   spec.start = {Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
-  if (options.isSet("state")) {
-    const QStringList parts = options.value("state").split(',');
-    if (parts.size() != 2 * n) {
-      error = QStringLiteral("--state: %1 numbers for %2 masses (u1,...,uN,v1,...,vN: %3)").arg(parts.size()).arg(n).arg(2 * n);
-      return std::nullopt;
-    }
-    for (Eigen::Index i = 0; i < 2 * n; ++i) {
-      bool ok = false;
-      const double value = parts[int(i)].trimmed().toDouble(&ok);
-      if (!ok || !std::isfinite(value)) {
-        error = QStringLiteral("--state: '%1' is not a finite number").arg(parts[int(i)]);
-        return std::nullopt;
-      }
-      (i < n ? spec.start.u[i] : spec.start.v[i - n]) = value;
-    }
-  }
+  spec.push = spec.start;
   for (const char* name : {"x", "y"}) {
     if (!options.isSet(name)) {
-      error = QStringLiteral("--%1 u<i>|v<i>:from:to:count is required").arg(name);
+      error = QStringLiteral("--%1 u<i>|v<i>|w<j>:from:to:count is required").arg(name);
       return std::nullopt;
     }
     const QStringList parts = options.value(name).split(':');
     const auto axis = parts.size() == 4 ? core::parseChainMapVariable(parts[0].toStdString(), n) : std::nullopt;
     if (!axis) {
-      error = QStringLiteral("--%1: '%2' is not u<i>|v<i>:from:to:count with i from 1 to %3")
+      error = QStringLiteral("--%1: '%2' is not u<i>|v<i>|w<j>:from:to:count with i, j from 1 to %3")
                   .arg(name, options.value(name))
                   .arg(n);
       return std::nullopt;
@@ -81,9 +93,34 @@ std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options,
     target.range.to = parts[2].toDouble(&okTo);
     target.range.count = parts[3].toLongLong(&okCount);
     if (!okFrom || !okTo || !okCount || target.range.count < 1) {
-      error = QStringLiteral("--%1: '%2' is not u<i>|v<i>:from:to:count (numbers, a count >= 1)").arg(name, options.value(name));
+      error = QStringLiteral("--%1: '%2' is not u<i>|v<i>|w<j>:from:to:count (numbers, a count >= 1)").arg(name, options.value(name));
       return std::nullopt;
     }
+  }
+  const bool overWeights = spec.x.weight() || spec.y.weight();
+  const std::vector<const char*> notHere = overWeights ? std::vector<const char*>{"state"}
+                                                        : std::vector<const char*>{"glo-weights", "perturb"};
+  for (const char* name : notHere) {
+    if (options.isSet(name)) {
+      error = overWeights ? QStringLiteral("--state: a map over GLO weights starts on GLO_lambda (push it with --perturb)")
+                          : QStringLiteral("--%1: belongs to a map over GLO weights (axes w<j>)").arg(name);
+      return std::nullopt;
+    }
+  }
+  if (options.isSet("state")) {
+    const auto values = finiteNumbers(options, "state", 2 * n, "u1,...,uN,v1,...,vN", error);
+    if (!values) return std::nullopt;
+    for (Eigen::Index i = 0; i < 2 * n; ++i) (i < n ? spec.start.u[i] : spec.start.v[i - n]) = (*values)[std::size_t(i)];
+  }
+  if (options.isSet("glo-weights")) {
+    const auto weights = finiteNumbers(options, "glo-weights", n, "l1,...,lN, fastest mode first", error);
+    if (!weights) return std::nullopt;
+    spec.weights = *weights;
+  }
+  if (options.isSet("perturb")) {
+    const auto push = finiteNumbers(options, "perturb", 2 * n, "du1,...,duN,dv1,...,dvN", error);
+    if (!push) return std::nullopt;
+    for (Eigen::Index i = 0; i < 2 * n; ++i) (i < n ? spec.push.u[i] : spec.push.v[i - n]) = (*push)[std::size_t(i)];
   }
   if (options.isSet("contacts")) {
     bool ok = false;
@@ -124,12 +161,29 @@ QJsonObject chainSpecJson(const core::ChainMapSpec& spec, double period, const Q
   object["x"] = axisJson(spec.x);
   object["y"] = axisJson(spec.y);
   object["chain"] = QJsonDocument::fromJson(QByteArray::fromStdString(oneLine(massChainValue(spec.chain, period)))).object();
-  QJsonArray u, v;
-  for (Eigen::Index i = 0; i < spec.start.u.size(); ++i) {
-    u.append(spec.start.u[i]);
-    v.append(spec.start.v[i]);
+  const auto arrays = [](const core::ChainState& state) {
+    QJsonArray u, v;
+    for (Eigen::Index i = 0; i < state.u.size(); ++i) {
+      u.append(state.u[i]);
+      v.append(state.v[i]);
+    }
+    return std::pair{u, v};
+  };
+  if (spec.x.weight()) {
+    QJsonArray weights;
+    for (Eigen::Index j = 0; j < spec.chain.size(); ++j) weights.append(spec.weights.empty() ? 0.0 : spec.weights[std::size_t(j)]);
+    const auto [du, dv] = arrays(spec.push);
+    object["start"] = QJsonObject{
+        {"glo_weights", weights},
+        {"balancing_weight", QStringLiteral("w%1").arg(core::balancingWeight(spec) + 1)},
+        {"push", QJsonObject{{"u", du}, {"v", dv}}},
+        {"set_by_axes", "each run starts on GLO_lambda at its touch plus the push: lambda these weights (fastest "
+                        "mode first) with the axes' set and the balancing weight 1 minus the others; no run where "
+                        "a weight falls on a mode with a node at the stopped mass"}};
+  } else {
+    const auto [u, v] = arrays(spec.start);
+    object["start"] = QJsonObject{{"u", u}, {"v", v}, {"set_by_axes", "each run's start is this one with the axes' coordinates set"}};
   }
-  object["start"] = QJsonObject{{"u", u}, {"v", v}, {"set_by_axes", "each run's start is this one with the axes' coordinates set"}};
   object["missing_values"] = "NaN: not defined at that point (no flight from the stop or no impact in the run, or "
                              "no run there); inf: the run proved it never comes (a commensurate chain's flight "
                              "that stays below the stop); the counts are -1 where there is no run: the start "

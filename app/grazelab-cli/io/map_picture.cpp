@@ -25,6 +25,8 @@ QString axisTitle(const QJsonObject& spec, const char* which) {
   if (name == "mass-ratio") return "m2 / m1";
   if (name == "detuning") return "detuning w1/w2 - 2";
   if (name == "epsilon") return "epsilon (size of the push)";
+  // w<j>: a chain of N masses' GLO weight lambda_j
+  if (name.size() > 1 && name[0] == 'w' && name[1].isDigit()) return "λ" + name.mid(1) + " (GLO weight of mode " + name.mid(1) + ")";
   return name;
 }
 
