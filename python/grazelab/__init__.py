@@ -517,7 +517,8 @@ def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
         raise ValueError("springs, frequencies and design_branch describe a chain given by masses")
     _, held = _command("family", dict(options, out=out), progress, keep_files=True)
     files = _Files(out, "family", held)
-    result = _convert.parse_json(files.read(".json").decode("utf-8"))
+    # numbers are floats; in long or quad also as the exact text written, under ``decimal``
+    result = _convert.parse_json(files.read(".json").decode("utf-8"), exact_decimals=precision in ("long", "quad"))
     result["table"] = _convert.table_from_bytes(files.read(".npy"), files.read(".csv"))
     if out is None:
         result.pop("files")
@@ -544,7 +545,7 @@ def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
                    max_impacts=max_impacts, energy_range=energy_range)
     _, held = _command("modes", dict(options, out=out), progress, keep_files=True)
     files = _Files(out, "modes", held)
-    result = _convert.parse_json(files.read(".json").decode("utf-8"))
+    result = _convert.parse_json(files.read(".json").decode("utf-8"), exact_decimals=precision in ("long", "quad"))
     for entry in result["families"]:
         stem = entry["file"][:-len(".csv")]  # PREFIX-family-N, named from the prefix's base
         suffix = stem[len(_os.path.basename(files.prefix)):]

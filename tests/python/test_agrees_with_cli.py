@@ -445,6 +445,20 @@ def test_statistics_of_a_chain_of_n_masses_without_its_events():
     assert long.contacts == 1_000_001 and long.stop_reason == "contact-limit"
 
 
+def test_family_and_modes_in_long_and_quad_give_floats_and_their_exact_text():
+    # one convention for every command: numbers are floats, and in long or quad the exact
+    # decimal text written is under `decimal` (family and modes once returned the text alone)
+    family = gl.family(count=50, precision="quad")
+    point = family.bifurcations[1]
+    assert isinstance(point["T"], float) and isinstance(family.model["T2"], float)
+    assert point["T"] / family.model["T2"] == pytest.approx(point["T_over_T2"], rel=1e-15)
+    exact = family.decimal.bifurcations[1]["T"]
+    assert isinstance(exact, str) and len(exact.replace(".", "")) > 30 and float(exact) == point["T"]
+    atlas = gl.modes(precision="long", max_impacts=2)
+    assert isinstance(atlas.model["T2"], float) and float(atlas.decimal.model["T2"]) == atlas.model["T2"]
+    assert "decimal" not in gl.family(count=50)
+
+
 def test_glo_starts_and_grazing_sets_of_n_masses(cli_json):
     # a GLO start of the designed 3:2:1 chain: the command line's document, grazing touches one
     # period apart; the grazing sets as the command line writes them (the note's [0, 4/3])

@@ -7,9 +7,6 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 
 #include <cmath>
 #include <optional>
@@ -33,8 +30,14 @@ namespace {
 
 QByteArray number(double value) { return QByteArray::number(value, 'g', 17); }
 
-QJsonObject pointJson(const core::OnePeriodicOrbit<double>& p) {
-  return {{"T", p.T}, {"omega", core::twoPi<double>() / p.T}, {"V", p.V}, {"u1", p.postImpact.u1}, {"energy", p.energy}};
+using V = JsonValue;
+
+V pointValue(const core::OnePeriodicOrbit<double>& p) {
+  return V::object({{"T", V::number(p.T)},
+                    {"omega", V::number(core::twoPi<double>() / p.T)},
+                    {"V", V::number(p.V)},
+                    {"u1", V::number(p.postImpact.u1)},
+                    {"energy", V::number(p.energy)}});
 }
 
 // the family as the frequency-energy picture draws it
@@ -57,7 +60,7 @@ template <typename S>
 struct FamilyStability {
   std::vector<double> traces;
   std::vector<double> codes;
-  QJsonArray bifurcations;
+  std::vector<JsonValue> bifurcations;
 };
 
 template <typename S>
@@ -91,31 +94,31 @@ std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& pars
   for (const core::FamilyBifurcation<S>& b : points) energies.push_back(b.energy);
   for (const core::FamilyBifurcation<S>& b : points) {
     if (stop.stop_requested()) return std::nullopt;
-    QJsonObject point = bifurcationJson(b, T2);
-    if (b.checked) point.remove("checked");  // this command writes it only when false
+    // this command writes "checked" only when false
+    std::vector<JsonValue::Field> point = bifurcationFields(b, T2, false);
     if (b.kind == core::PointKind::Undecided && b.checked) {
-      point["note"] = "not a bifurcation: beyond this period the orbit's data lose their digits "
-                      "(near a multiple of T1) or a contact cannot be decided in this precision; "
-                      "a higher --precision moves the point";
+      point.emplace_back("note", V::of("not a bifurcation: beyond this period the orbit's data lose their digits "
+                                       "(near a multiple of T1) or a contact cannot be decided in this precision; "
+                                       "a higher --precision moves the point"));
     }
     if (b.kind == core::PointKind::PeriodDoubling) {
       const core::FlipSwitch<S> born = core::switchAtFlip(chain, b, 1, core::birthOffsetBound(b, energies), stop);
       if (born.search.orbit) {
         const core::PeriodicOrbit<S>& o = *born.search.orbit;
         const std::string symmetry = core::orbitSymmetry(o, core::symmetryTolerance<S>());
-        point["born"] = QJsonObject{{"impacts", o.impacts},
-                                    {"side", QString::fromUtf8(core::toString(born.side).data())},
-                                    {"energy", scalarJson(o.energy)},
-                                    {"period", scalarJson(o.period)},
-                                    {"trace", scalarJson(o.trace)},
-                                    {"stability", QString::fromStdString(std::string(core::toString(o.stability)))},
-                                    {"symmetry", symmetry.empty() ? QJsonValue() : QJsonValue(QString::fromStdString(symmetry))},
-                                    {"state", stateJson(o.state)}};
+        point.emplace_back("born", V::object({{"impacts", V::of(std::int64_t(o.impacts))},
+                                              {"side", V::of(std::string(core::toString(born.side)))},
+                                              {"energy", V::number(o.energy)},
+                                              {"period", V::number(o.period)},
+                                              {"trace", V::number(o.trace)},
+                                              {"stability", V::of(std::string(core::toString(o.stability)))},
+                                              {"symmetry", symmetry.empty() ? V::null() : V::of(symmetry)},
+                                              {"state", orbitStateValue(o.state)}}));
       } else {
-        point["born"] = QJsonObject{{"impacts", 2}, {"problem", QString::fromStdString(born.search.problem)}};
+        point.emplace_back("born", V::object({{"impacts", V::of(std::int64_t(2))}, {"problem", V::of(born.search.problem)}}));
       }
     }
-    result.bifurcations.append(point);
+    result.bifurcations.push_back(V::object(std::move(point)));
   }
   if (stop.stop_requested()) return std::nullopt;
   return result;
@@ -162,7 +165,7 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
   // the stability of every admissible orbit and the family's bifurcations, in the precision asked
   std::vector<double> traces;
   std::vector<double> codes;
-  QJsonArray bifurcations;
+  std::vector<JsonValue> bifurcations;
   const auto take = [&](auto stability) {
     if (!stability) return false;
     traces = std::move(stability->traces);
@@ -193,37 +196,39 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
     }
   }
   const core::Model& m = chain.model;
-  const QJsonObject json{
-      {"format", "grazelab-family"},
-      {"family", "onepp"},
-      {"model", QJsonObject{{"m1", m.m1}, {"m2", m.m2}, {"k1", m.k1}, {"k2", m.k2}, {"gap", m.gap},
-                            {"T2", core::twoPi<double>() / chain.omegaSlow}}},
-      {"lambda_star", core::lambdaStar(chain)},
-      {"grazing_end", pointJson(end)},
-      {"columns", QJsonArray{"T", "omega", "V", "u1", "energy", "admissible", "trace", "stability"}},
-      {"stability_precision", precision == "auto" ? QStringLiteral("double") : precision},
-      {"trace", "tr DP of the return map at fixed energy (exact: flow and saltation matrices), in "
-                "the stability precision; empty (NaN in the .npy) where the orbit is not admissible"},
-      {"stability", "elliptic (|tr| < 2), hyperbolic (tr > 2), flip-hyperbolic (tr < -2), parabolic "
-                    "(|tr| = 2 within rounding); in the .npy 0, 1, 2, 3 (NaN: not admissible)"},
-      {"bifurcations", bifurcations},
-      {"rows", qint64(family.size())},
-      {"periods", QStringLiteral("T2 k / (count + 1) for k = 1 ... %1, and T2 (1 - 2^-k) for k = 8 ... 40, "
-                                 "sorted; multiples of T1 left out").arg(count)},
-      {"energy", "E = 1/2 v^T M v + 1/2 u^T K u of the post-impact state (constant on the orbit)"},
-      {"post_impact_state", "u1 = u1, u2 = gap, v1 = 0, v2 = V"},
-      {"conditioning", "each row is computed in binary128 from its double period and rounded "
-                       "once; near T2, V is conditioned like T2 / (T2 - T) in T and in the "
-                       "masses: a mass that is not a binary number (m2 = 0.3) read exactly moves "
-                       "V there by up to that factor times 1e-17"},
-      {"files", QJsonObject{{"csv", QFileInfo(prefix).fileName() + ".csv"},
-                            {"npy", QFileInfo(prefix).fileName() + ".npy (float64, rows x 8 "
-                                    "columns in the CSV's order, admissible as 1.0 / 0.0, "
-                                    "stability as 0..3)"}}},
-      {"admissible", "1 when V < 0 and the free flight from the data first returns to the stop "
-                     "at T (exact contact search), else 0"},
-      {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
-  const QByteArray jsonBytes = QJsonDocument(json).toJson();
+  const std::string name = QFileInfo(prefix).fileName().toStdString();
+  const V json = V::object(
+      {{"format", V::of("grazelab-family")},
+       {"family", V::of("onepp")},
+       {"model", V::object({{"m1", V::number(m.m1)}, {"m2", V::number(m.m2)}, {"k1", V::number(m.k1)},
+                            {"k2", V::number(m.k2)}, {"gap", V::number(m.gap)},
+                            {"T2", V::number(core::twoPi<double>() / chain.omegaSlow)}})},
+       {"lambda_star", V::number(core::lambdaStar(chain))},
+       {"grazing_end", pointValue(end)},
+       {"columns", V::array({V::of("T"), V::of("omega"), V::of("V"), V::of("u1"), V::of("energy"), V::of("admissible"),
+                             V::of("trace"), V::of("stability")})},
+       {"stability_precision", V::of(precision == "auto" ? std::string("double") : precision.toStdString())},
+       {"trace", V::of("tr DP of the return map at fixed energy (exact: flow and saltation matrices), in "
+                       "the stability precision; empty (NaN in the .npy) where the orbit is not admissible")},
+       {"stability", V::of("elliptic (|tr| < 2), hyperbolic (tr > 2), flip-hyperbolic (tr < -2), parabolic "
+                           "(|tr| = 2 within rounding); in the .npy 0, 1, 2, 3 (NaN: not admissible)")},
+       {"bifurcations", V::array(std::move(bifurcations))},
+       {"rows", V::of(std::int64_t(family.size()))},
+       {"periods", V::of(std::string("T2 k / (count + 1) for k = 1 ... ").append(std::to_string(count)) +
+                         ", and T2 (1 - 2^-k) for k = 8 ... 40, sorted; multiples of T1 left out")},
+       {"energy", V::of("E = 1/2 v^T M v + 1/2 u^T K u of the post-impact state (constant on the orbit)")},
+       {"post_impact_state", V::of("u1 = u1, u2 = gap, v1 = 0, v2 = V")},
+       {"conditioning", V::of("each row is computed in binary128 from its double period and rounded "
+                              "once; near T2, V is conditioned like T2 / (T2 - T) in T and in the "
+                              "masses: a mass that is not a binary number (m2 = 0.3) read exactly moves "
+                              "V there by up to that factor times 1e-17")},
+       {"files", V::object({{"csv", V::of(name + ".csv")},
+                            {"npy", V::of(name + ".npy (float64, rows x 8 columns in the CSV's order, admissible "
+                                                 "as 1.0 / 0.0, stability as 0..3)")}})},
+       {"admissible", V::of("1 when V < 0 and the free flight from the data first returns to the stop "
+                            "at T (exact contact search), else 0")},
+       {"generator", V::of(std::string("grazelab-cli ").append(QCoreApplication::applicationVersion().toStdString()))}});
+  const QByteArray jsonBytes = QByteArray::fromStdString(fieldPerLine(json, "  ", "") + "\n");
   if (!output->save(prefix + ".csv", csv, error) ||
       !output->save(prefix + ".npy", encodeNpy(array), error) ||
       !output->save(prefix + ".json", jsonBytes, error)) {
@@ -235,7 +240,7 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
                               .arg(core::lambdaStar(chain), 0, 'g', 4);
     const QSize size(1100, 760);
     const bool drawn = savePngAndSvg(
-        prefix, size, title, "GrazeLabFamily", QJsonDocument(json).toJson(QJsonDocument::Compact),
+        prefix, size, title, "GrazeLabFamily", QByteArray::fromStdString(oneLine(json)),
         [&](QPainter& painter) {
           pictures::paintFrequencyEnergy(painter, QRectF(QPointF(0, 0), size), frequencyEnergy(family),
                                          {end.energy, core::twoPi<double>() / end.T, true}, title);

@@ -6,9 +6,6 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFileInfo>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 
 #include <cmath>
 #include <type_traits>
@@ -30,17 +27,22 @@ namespace {
 
 QByteArray cell(double value) { return std::isfinite(value) ? QByteArray::number(value, 'g', 17) : QByteArray(); }
 
+using V = JsonValue;
+
 template <typename S>
-QJsonObject endJson(const core::FamilyEnd<S>& end) {
-  QJsonObject json{{"kind", QString::fromUtf8(core::toString(end.kind).data())}, {"energy", scalarJson(end.energy)},
-                   {"period", scalarJson(end.period)}, {"state", stateJson(end.state)}};
-  if (core::isFinite(end.gloLambda)) json["glo_lambda"] = scalarJson(end.gloLambda);
+V endValue(const core::FamilyEnd<S>& end) {
+  std::vector<V::Field> fields;
+  fields.emplace_back("kind", V::of(std::string(core::toString(end.kind))));
+  fields.emplace_back("energy", V::number(end.energy));
+  fields.emplace_back("period", V::number(end.period));
+  fields.emplace_back("state", orbitStateValue(end.state));
+  if (core::isFinite(end.gloLambda)) fields.emplace_back("glo_lambda", V::number(end.gloLambda));
   if (end.kind == core::PointKind::GrazingOrbit || end.kind == core::PointKind::PeriodDoubling) {
-    json["exact"] = end.exact;
-    json["last_energy"] = scalarJson(end.lastEnergy);
+    fields.emplace_back("exact", V::of(end.exact));
+    fields.emplace_back("last_energy", V::number(end.lastEnergy));
   }
-  if (end.family >= 0) json["family"] = end.family;
-  return json;
+  if (end.family >= 0) fields.emplace_back("family", V::of(std::int64_t(end.family)));
+  return V::object(std::move(fields));
 }
 
 const char* const kColumns = "energy,period,omega,trace,stability,u1,v1,min_impact_speed,min_clearance";
@@ -83,7 +85,7 @@ int modesIn(const QCommandLineParser& parser, const FileOutput& output, const QS
 
   const QString& prefix = output.prefix;
   const QString base = QFileInfo(prefix).fileName();
-  QJsonArray families;
+  std::vector<V> families;
   std::vector<std::pair<QString, QByteArray>> files;
   // the picture's curves and marks (drawn when picturesAvailable())
   std::vector<pictures::ModesPictureFamily> curves;
@@ -112,15 +114,15 @@ int modesIn(const QCommandLineParser& parser, const FileOutput& output, const QS
     const QString name = QStringLiteral("%1-family-%2").arg(base).arg(family.id);
     files.emplace_back(prefix + QStringLiteral("-family-%1.csv").arg(family.id), csv);
     files.emplace_back(prefix + QStringLiteral("-family-%1.npy").arg(family.id), encodeNpy(array));
-    QJsonArray bifurcations;
+    std::vector<V> bifurcations;
     for (const core::FamilyBifurcation<S>& b : family.bifurcations) {
-      QJsonObject point = bifurcationJson(b, T2);
+      std::vector<V::Field> point = bifurcationFields(b, T2, true);
       if (b.kind == core::PointKind::PeriodDoubling) {
-        if (b.born >= 0) point["born_family"] = b.born;
-        else if (!b.birthProblem.empty()) point["born_family"] = QJsonValue();
-        if (!b.birthProblem.empty()) point["birth_problem"] = QString::fromStdString(b.birthProblem);
+        if (b.born >= 0) point.emplace_back("born_family", V::of(std::int64_t(b.born)));
+        else if (!b.birthProblem.empty()) point.emplace_back("born_family", V::null());
+        if (!b.birthProblem.empty()) point.emplace_back("birth_problem", V::of(b.birthProblem));
       }
-      bifurcations.append(point);
+      bifurcations.push_back(V::object(std::move(point)));
       QString label = b.kind == core::PointKind::PeriodDoubling ? QStringLiteral("flip")
                                                                  : QString::fromUtf8(core::toString(b.kind).data());
       // a flip whose family could not be found says so on the picture too
@@ -144,40 +146,39 @@ int modesIn(const QCommandLineParser& parser, const FileOutput& output, const QS
       marks.push_back({QPointF(std::log10(double(end->energy)), 2 * M_PI / double(end->period)), label});
     }
     curves.push_back(std::move(curve));
-    QJsonObject born{{"kind", QString::fromUtf8(core::toString(family.birth).data())},
-                     {"family", family.parent < 0 ? QJsonValue() : QJsonValue(family.parent)},
-                     {"energy", scalarJson(family.bornEnergy)},
-                     {"T", scalarJson(family.bornPeriod)}};
-    families.append(QJsonObject{
-        {"id", family.id},
-        {"impacts", family.impacts},
-        {"symmetry", family.symmetry.empty() ? QJsonValue() : QJsonValue(QString::fromStdString(family.symmetry))},
-        {"born_at", born},
-        {"side", family.birth == core::Birth::OnePeriodic ? QJsonValue()
-                                                          : QJsonValue(QString::fromUtf8(core::toString(family.side).data()))},
-        {"start", endJson(family.startEnd)},
-        {"end", endJson(family.end)},
-        {"bifurcations", bifurcations},
-        {"rows", qint64(family.orbits.size())},
-        {"file", name + ".csv"}});
+    V born = V::object({{"kind", V::of(std::string(core::toString(family.birth)))},
+                        {"family", family.parent < 0 ? V::null() : V::of(std::int64_t(family.parent))},
+                        {"energy", V::number(family.bornEnergy)},
+                        {"T", V::number(family.bornPeriod)}});
+    families.push_back(V::object(
+        {{"id", V::of(std::int64_t(family.id))},
+         {"impacts", V::of(std::int64_t(family.impacts))},
+         {"symmetry", family.symmetry.empty() ? V::null() : V::of(family.symmetry)},
+         {"born_at", std::move(born)},
+         {"side", family.birth == core::Birth::OnePeriodic ? V::null() : V::of(std::string(core::toString(family.side)))},
+         {"start", endValue(family.startEnd)},
+         {"end", endValue(family.end)},
+         {"bifurcations", V::array(std::move(bifurcations))},
+         {"rows", V::of(std::int64_t(family.orbits.size()))},
+         {"file", V::of((name + ".csv").toStdString())}}));
   }
   const core::BasicModel<S>& m = chain.model;
-  const QJsonObject json{
-      {"format", "grazelab-modes"},
-      {"precision", precision},
-      {"model", QJsonObject{{"m1", scalarJson(m.m1)}, {"m2", scalarJson(m.m2)}, {"k1", scalarJson(m.k1)},
-                            {"k2", scalarJson(S(chain.kappa * m.k1))}, {"gap", scalarJson(m.gap)},
-                            {"T2", scalarJson(T2)}}},
-      {"max_impacts", maxImpacts},
-      {"energy_range", QJsonArray{scalarJson(low), scalarJson(high)}},
-      {"families", families},
+  const V json = V::object({
+      {"format", V::of("grazelab-modes")},
+      {"precision", V::of(precision.toStdString())},
+      {"model", V::object({{"m1", V::number(m.m1)}, {"m2", V::number(m.m2)}, {"k1", V::number(m.k1)},
+                           {"k2", V::number(S(chain.kappa * m.k1))}, {"gap", V::number(m.gap)},
+                           {"T2", V::number(T2)}})},
+      {"max_impacts", V::of(std::int64_t(maxImpacts))},
+      {"energy_range", V::array({V::number(low), V::number(high)})},
+      {"families", V::array(std::move(families))},
       // what the fields of each family mean, apart from the families themselves
-      {"about", QJsonObject{
-        {"columns", QString(kColumns)},
-        {"stability", "elliptic (|tr| < 2, stable), hyperbolic (tr > 2), flip-hyperbolic (tr < -2), "
-                      "parabolic (|tr| = 2 within rounding); in the .npy 0, 1, 2, 3"},
-        {"start", "a 1IPP part: its low-energy end; a family born at a flip: the flip (at twice its period)"},
-        {"end", "grazing-orbit (every impact speed, or one with a clearance, tends to 0: a grazing linear "
+      {"about", V::object({
+        {"columns", V::of(kColumns)},
+        {"stability", V::of("elliptic (|tr| < 2, stable), hyperbolic (tr > 2), flip-hyperbolic (tr < -2), "
+                      "parabolic (|tr| = 2 within rounding); in the .npy 0, 1, 2, 3")},
+        {"start", V::of("a 1IPP part: its low-energy end; a family born at a flip: the flip (at twice its period)")},
+        {"end", V::of("grazing-orbit (every impact speed, or one with a clearance, tends to 0: a grazing linear "
                 "orbit), interior-grazing (a flight touches the stop), impact-speed-zero (one impact fades), "
                 "period-doubling (the family comes back to a flip of `family`: its orbit becomes that "
                 "flip's run twice), energy-limit (the --energy-range, or the 1IPP part's energy growing "
@@ -189,21 +190,21 @@ int modesIn(const QCommandLineParser& parser, const FileOutput& output, const QS
                 "is true: then they are the limit orbit's, known exactly (a period tending to an odd "
                 "number of T1 belongs to GLOM1 alone; the 1IPP family ends on GLO_lambda*; a "
                 "period-doubling end is the flip's orbit), last_energy being the last orbit computed. "
-                "glo_lambda: the GLO_lambda a grazing-orbit end tends to"},
-        {"born_at", "one-periodic: a part of the 1IPP family from its closed form (energy and period T "
+                "glo_lambda: the GLO_lambda a grazing-orbit end tends to")},
+        {"born_at", V::of("one-periodic: a part of the 1IPP family from its closed form (energy and period T "
                     "of its orbit nearest the middle of the range); period-doubling: born at a flip of "
-                    "`family`"},
-        {"bifurcations", "kind period-doubling (tr = -2), fold (tr = +2, the energy turns back) or "
+                    "`family`")},
+        {"bifurcations", V::of("kind period-doubling (tr = -2), fold (tr = +2, the energy turns back) or "
                          "branch-point (tr = +2, it goes on); checked: the trace is within sqrt(eps) of "
                          "the level (false: not solved in this precision, where the search stopped); "
                          "energy_error: an estimate of how far the energy may be from the exact point "
                          "(the trace's error over its slope in the energy; null when it cannot be "
                          "estimated); born_family: the family born at a flip, or null with birth_problem saying why "
-                         "none was found (absent beyond --max-impacts)"},
-        {"min_clearance", "the smallest distance below the stop of an interior maximum of u2 over "
-                          "the gap (empty / NaN: no flight turns back below the stop)"}}},
-      {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()}};
-  files.emplace_back(prefix + ".json", QJsonDocument(json).toJson());
+                         "none was found (absent beyond --max-impacts)")},
+        {"min_clearance", V::of("the smallest distance below the stop of an interior maximum of u2 over "
+                          "the gap (empty / NaN: no flight turns back below the stop)")}})},
+      {"generator", V::of(std::string("grazelab-cli ").append(QCoreApplication::applicationVersion().toStdString()))}});
+  files.emplace_back(prefix + ".json", QByteArray::fromStdString(fieldPerLine(json, "  ", "") + "\n"));
   for (const auto& [path, bytes] : files) {
     if (!output.save(path, bytes, error)) return 1;
   }
@@ -213,7 +214,7 @@ int modesIn(const QCommandLineParser& parser, const FileOutput& output, const QS
                               .arg(maxImpacts);
     const QSize size(1100, 760);
     const bool drawn = savePngAndSvg(
-        prefix, size, title, "GrazeLabModes", QJsonDocument(json).toJson(QJsonDocument::Compact),
+        prefix, size, title, "GrazeLabModes", QByteArray::fromStdString(oneLine(json)),
         [&](QPainter& painter) { pictures::paintModes(painter, QRectF(QPointF(0, 0), size), curves, marks, title); },
         error);
     if (!drawn) return 1;
