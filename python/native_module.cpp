@@ -10,7 +10,6 @@
 #include <pybind11/stl.h>
 
 #include <QCoreApplication>
-#include <QJsonDocument>
 #include <QString>
 #include <QStringList>
 
@@ -151,7 +150,7 @@ std::size_t offsetOf(grazelab::core::Quantity quantity) {
 // quantity, row-major), the points owned by the array (no copy).
 py::tuple mapInMemory(grazelab::cli::map::StoredMap&& map) {
   using grazelab::core::PointSummary;
-  const QByteArray document = QJsonDocument(grazelab::cli::map::mapDocument(map)).toJson();
+  const std::string document = grazelab::cli::indented(grazelab::cli::map::mapDocument(map));
   py::list names, formats, offsets;
   for (const grazelab::core::QuantityInfo& info : grazelab::core::quantities()) {
     names.append(std::string(info.name));
@@ -168,7 +167,7 @@ py::tuple mapInMemory(grazelab::cli::map::StoredMap&& map) {
   py::capsule owner(points, [](void* p) { delete static_cast<std::vector<PointSummary>*>(p); });
   const py::array array(dtype, {static_cast<py::ssize_t>(points->size())},
                         {static_cast<py::ssize_t>(sizeof(PointSummary))}, points->data(), owner);
-  return py::make_tuple(py::bytes(document.constData(), std::size_t(document.size())), array);
+  return py::make_tuple(py::bytes(document), array);
 }
 
 // The NumPy type of a two-mass run's samples: t, u1, u2, v1, v2.

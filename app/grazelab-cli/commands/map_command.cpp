@@ -278,10 +278,11 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
   map::StoredMap stored;
   stored.description.spec = masses ? chainSpecJson(*chainSpec, computed.period, picture)
                                    : map::specJson(*spec, computed.period, picture);
-  stored.description.run = {{"seconds", seconds},
-                            {"threads", threads},
-                            {"shard", parser.isSet("shard") ? parser.value("shard") : QString("1/1")},
-                            {"complete", true}};
+  stored.description.run = JsonValue::object(
+      {{"seconds", JsonValue::number(seconds)},
+       {"threads", JsonValue::of(std::int64_t(threads))},
+       {"shard", JsonValue::of((parser.isSet("shard") ? parser.value("shard") : QString("1/1")).toStdString())},
+       {"complete", JsonValue::of(true)}});
   stored.rows = rows;
   stored.columns = computed.columns;
   stored.totalRows = yCount;

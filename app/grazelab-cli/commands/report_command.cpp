@@ -6,7 +6,6 @@
 #include "commands/report_command.h"
 
 #include <QCommandLineParser>
-#include <QJsonArray>
 
 #include <algorithm>
 #include <cmath>
@@ -47,15 +46,17 @@ double fineness(const core::methods::MethodSetting& setting, double period, doub
 }
 
 
-QJsonObject metadata(const ReportInput& input) {
+JsonValue metadata(const ReportInput& input) {
+  using V = JsonValue;
   const core::Model& m = input.task.model;
-  QJsonObject model{{"m1", m.m1}, {"m2", m.m2}, {"k1", m.k1}, {"k2", m.k2}, {"gap", m.gap}};
-  if (m.design) model["branch"] = QString::fromUtf8(core::toString(*m.design).data());
+  V model = V::object({{"m1", V::number(m.m1)}, {"m2", V::number(m.m2)}, {"k1", V::number(m.k1)},
+                       {"k2", V::number(m.k2)}, {"gap", V::number(m.gap)}});
+  if (m.design) model.set("branch", V::of(std::string(core::toString(*m.design))));
   const core::State& s = input.task.start;
-  return QJsonObject{{"generator", versionString()},
-                     {"model", model},
-                     {"start", QJsonArray{s.u1, s.u2, s.v1, s.v2}},
-                     {"t_end", input.task.tEnd}};
+  return V::object({{"generator", V::of(versionString().toStdString())},
+                    {"model", std::move(model)},
+                    {"start", V::array({V::number(s.u1), V::number(s.u2), V::number(s.v1), V::number(s.v2)})},
+                    {"t_end", V::number(input.task.tEnd)}});
 }
 
 

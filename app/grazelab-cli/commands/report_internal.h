@@ -3,13 +3,13 @@
 #pragma once
 
 #include <QByteArray>
-#include <QJsonObject>
 #include <QString>
 
 #include <map>
 #include <vector>
 
 #include "core/methods/work_precision.h"
+#include "io/json_value.h"
 
 // What the parts of `report` share: its input, and the pieces that write its files.
 namespace grazelab::cli::report {
@@ -35,7 +35,7 @@ QString parameterText(const core::methods::MethodSetting& setting);
 /// Smaller is finer, dimensionless: h / T2, rtol, k1 / k_c, or the unit roundoff.
 double fineness(const core::methods::MethodSetting& setting, double period, double k1);
 /// The model, start and version, embedded in the pictures.
-QJsonObject metadata(const ReportInput& input);
+JsonValue metadata(const ReportInput& input);
 
 /// DIR/report.md.
 QByteArray reportMarkdown(const ReportInput& input, const core::methods::ComparisonEnd& end,

@@ -3,7 +3,6 @@
 // The report's two pictures: log-log charts drawn with QPainter (ui/pictures), PNG and SVG.
 #include <QFileInfo>
 #include <QFont>
-#include <QJsonDocument>
 #include <QPainter>
 
 #include <algorithm>
@@ -62,7 +61,7 @@ bool writePictures(const QString& dir, const ReportInput& input,
                    const std::map<MethodKind, std::vector<WorkPrecisionPoint>>& byMethod,
                    QString& error) {
   using core::methods::RunStatus;
-  const QByteArray json = QJsonDocument(metadata(input)).toJson(QJsonDocument::Compact);
+  const QByteArray json = QByteArray::fromStdString(oneLine(metadata(input)));
   Chart work{"Error against run time", "run time [s] (minimum of repeated runs)", "state error at t_end", {}};
   Chart convergence{"Convergence", "h / T2, rtol, eps or k1 / k_c (finer to the left)", "contact-time error / T2", {}};
   for (const auto& [kind, toleranceSweep] : curveKeys(methods, byMethod)) {

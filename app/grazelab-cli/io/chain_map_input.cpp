@@ -2,8 +2,6 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "io/chain_map_input.h"
 
-#include <QJsonArray>
-#include <QJsonDocument>
 #include <QStringList>
 
 #include <cmath>
@@ -139,60 +137,57 @@ std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options,
 }
 
 // The spec object of an N-mass map (the two-mass one's fields, the chain instead of the model)
-QJsonObject chainSpecJson(const core::ChainMapSpec& spec, double period, const QString& pictureQuantity) {
-  QJsonObject object = map::specJson(core::MapSpec{}, period, pictureQuantity);
+JsonValue chainSpecJson(const core::ChainMapSpec& spec, double period, const QString& pictureQuantity) {
+  using V = JsonValue;
+  V object = map::specJson(core::MapSpec{}, period, pictureQuantity);
   object.remove("model");
-  object["horizon"] = spec.estimateHorizon ? "estimated per point (--trust auto: a shadow run one precision up, "
-                                             "compared event by event)"
-                                           : "not estimated (--trust off): NaN; give --trust auto";
+  object.set("horizon", V::of(spec.estimateHorizon ? "estimated per point (--trust auto: a shadow run one precision "
+                                                     "up, compared event by event)"
+                                                   : "not estimated (--trust off): NaN; give --trust auto"));
   const auto axisJson = [](const core::ChainMapAxis& axis) {
-    return QJsonObject{{"variable", QString::fromStdString(axis.name())}, {"from", axis.range.from},
-                       {"to", axis.range.to}, {"count", qint64(axis.range.count)},
-                       {"values", "numpy.linspace(from, to, count)"}};
+    return V::object({{"variable", V::of(axis.name())}, {"from", V::number(axis.range.from)},
+                      {"to", V::number(axis.range.to)}, {"count", V::of(std::int64_t(axis.range.count))},
+                      {"values", V::of("numpy.linspace(from, to, count)")}});
   };
   // the flights' ratios are to the chain's period, not T2
-  QJsonObject quantities = object["quantities"].toObject();
-  for (const QString& name : quantities.keys()) {
-    QJsonObject quantity = quantities[name].toObject();
-    if (quantity["unit"].toString() == "T2") quantity["unit"] = "period";
-    quantities[name] = quantity;
-  }
-  object["quantities"] = quantities;
-  object["x"] = axisJson(spec.x);
-  object["y"] = axisJson(spec.y);
-  object["chain"] = QJsonDocument::fromJson(QByteArray::fromStdString(oneLine(massChainValue(spec.chain, period)))).object();
-  const auto arrays = [](const core::ChainState& state) {
-    QJsonArray u, v;
-    for (Eigen::Index i = 0; i < state.u.size(); ++i) {
-      u.append(state.u[i]);
-      v.append(state.v[i]);
+  if (V* quantities = object.find("quantities")) {
+    for (V::Field& quantity : quantities->fields) {
+      if (V* unit = quantity.second.find("unit"); unit && unit->text == "T2") *unit = V::of("period");
     }
-    return std::pair{u, v};
+  }
+  object.set("x", axisJson(spec.x));
+  object.set("y", axisJson(spec.y));
+  object.set("chain", massChainValue(spec.chain, period));
+  const auto numbers = [](const Eigen::VectorXd& values) {
+    std::vector<V> items;
+    for (Eigen::Index i = 0; i < values.size(); ++i) items.push_back(V::number(values[i]));
+    return V::array(std::move(items));
   };
   if (spec.x.weight()) {
-    QJsonArray weights;
-    for (Eigen::Index j = 0; j < spec.chain.size(); ++j) weights.append(spec.weights.empty() ? 0.0 : spec.weights[std::size_t(j)]);
-    const auto [du, dv] = arrays(spec.push);
-    object["start"] = QJsonObject{
-        {"glo_weights", weights},
-        {"balancing_weight", QStringLiteral("w%1").arg(core::balancingWeight(spec) + 1)},
-        {"push", QJsonObject{{"u", du}, {"v", dv}}},
-        {"set_by_axes", "each run starts on GLO_lambda at its touch plus the push: lambda these weights (fastest "
-                        "mode first) with the axes' set and the balancing weight 1 minus the others; no run where "
-                        "a weight falls on a mode with a node at the stopped mass"}};
+    const Eigen::VectorXd weights = spec.weights.empty() ? Eigen::VectorXd::Zero(spec.chain.size())
+                                                         : Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(
+                                                               spec.weights.data(), Eigen::Index(spec.weights.size())));
+    object.set("start", V::object({{"glo_weights", numbers(weights)},
+                                   {"balancing_weight", V::of(std::string("w").append(std::to_string(core::balancingWeight(spec) + 1)))},
+                                   {"push", V::object({{"u", numbers(spec.push.u)}, {"v", numbers(spec.push.v)}})},
+                                   {"set_by_axes", V::of("each run starts on GLO_lambda at its touch plus the push: lambda "
+                                                         "these weights (fastest mode first) with the axes' set and the "
+                                                         "balancing weight 1 minus the others; no run where a weight falls "
+                                                         "on a mode with a node at the stopped mass")}}));
   } else {
-    const auto [u, v] = arrays(spec.start);
-    object["start"] = QJsonObject{{"u", u}, {"v", v}, {"set_by_axes", "each run's start is this one with the axes' coordinates set"}};
+    object.set("start", V::object({{"u", numbers(spec.start.u)},
+                                   {"v", numbers(spec.start.v)},
+                                   {"set_by_axes", V::of("each run's start is this one with the axes' coordinates set")}}));
   }
-  object["missing_values"] = "NaN: not defined at that point (no flight from the stop or no impact in the run, or "
-                             "no run there); inf: the run proved it never comes (a commensurate chain's flight "
-                             "that stays below the stop); the counts are -1 where there is no run: the start "
-                             "past the stop, or a run undecided even in binary128";
-  object["contacts"] = qint64(spec.contacts);
-  object["contacts_note"] = "each run makes this many contacts";
-  object["period"] = period;
-  object["period_note"] = "fft_min, fft_max and fft_mean are in units of this period: the common period T of a "
-                          "commensurate chain, else the slowest mode's period";
+  object.set("missing_values", V::of("NaN: not defined at that point (no flight from the stop or no impact in the run, or "
+                                     "no run there); inf: the run proved it never comes (a commensurate chain's flight "
+                                     "that stays below the stop); the counts are -1 where there is no run: the start "
+                                     "past the stop, or a run undecided even in binary128"));
+  object.set("contacts", V::of(std::int64_t(spec.contacts)));
+  object.set("contacts_note", V::of("each run makes this many contacts"));
+  object.set("period", V::number(period));
+  object.set("period_note", V::of("fft_min, fft_max and fft_mean are in units of this period: the common period T of "
+                                  "a commensurate chain, else the slowest mode's period"));
   return object;
 }
 

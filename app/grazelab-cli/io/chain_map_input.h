@@ -2,25 +2,25 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include <QJsonObject>
 #include <QString>
 
 #include <optional>
 #include <stop_token>
 
 #include "core/experiments/chain_map.h"
+#include "io/json_value.h"
 #include "io/option_values.h"
 
 namespace grazelab::cli {
 
 /// A map of a chain of N masses from the command line: the chain (--masses ... as simulate),
 /// the start --state u1..uN,v1..vN (default at rest at 0), --x and --y u<i>|v<i>:from:to:count,
-/// --contacts; or nothing with `error` set (`stopped`: a design interrupted).
+/// or w<j> (GLO weights: --glo-weights, --perturb), --contacts, --trust; or nothing with `error` set (`stopped`: a design interrupted).
 std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options, std::stop_token stop,
                                                     QString& error, bool& stopped);
 
 /// The spec object of an N-mass map: the two-mass map's fields (map::specJson), the chain and
-/// its period instead of the model, the axes by name (u3, v1), the start.
-QJsonObject chainSpecJson(const core::ChainMapSpec& spec, double period, const QString& pictureQuantity);
+/// its period instead of the model, the axes by name (u3, v1, w2), the start.
+JsonValue chainSpecJson(const core::ChainMapSpec& spec, double period, const QString& pictureQuantity);
 
 }  // namespace grazelab::cli

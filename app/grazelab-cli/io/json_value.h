@@ -81,6 +81,18 @@ struct JsonValue {
   static JsonValue object(std::vector<Field> fields);
   static JsonValue object(std::initializer_list<JsonMember> members);
 
+  /// An object's field named `key`; null when there is none (or this is not an object).
+  const JsonValue* find(std::string_view key) const;
+  JsonValue* find(std::string_view key);
+  /// Sets an object's field: replaced where it is, else added at the end.
+  void set(JsonKey key, JsonValue value);
+  /// Removes an object's field, if there is one.
+  void remove(std::string_view key);
+  /// A Number's or an Integer's value as a double (0 for any other kind).
+  double toDouble() const;
+  /// The same document: kinds, values, texts, items and fields in order (names compared as text).
+  friend bool operator==(const JsonValue& a, const JsonValue& b);
+
   /// The decimal text of a Number, in its precision.
   std::string numberText() const;
   /// Whether some number in it is wider than double (a run in long double or binary128).
@@ -110,5 +122,9 @@ std::string oneLine(const JsonValue& value);
 /// `closeIndent`; fields on one line each.
 std::string fieldPerLine(const JsonValue& object, const std::string& fieldIndent,
                          const std::string& closeIndent);
+
+/// A whole document for a file: objects a field per line, nested objects indented by two
+/// spaces a level, arrays on one line.
+std::string indented(const JsonValue& document);
 
 }  // namespace grazelab::cli

@@ -4,12 +4,11 @@
 
 #include <QCoreApplication>
 #include <QFile>
-#include <QJsonArray>
-#include <QJsonDocument>
 
 #include <algorithm>
 #include <cmath>
 
+#include "io/json_read.h"
 #include "io/npy.h"
 #include "io/output_files.h"
 
@@ -19,35 +18,39 @@ namespace {
 using core::PointSummary;
 using core::Quantity;
 
-QJsonArray stateArray(const core::State& s) { return {s.u1, s.u2, s.v1, s.v2}; }
+using V = JsonValue;
 
-QJsonObject axisJson(const core::MapAxis& axis) {
-  return {{"variable", QString::fromUtf8(core::toString(axis.variable))},
-          {"from", axis.from},
-          {"to", axis.to},
-          {"count", qint64(axis.count)},
-          {"values", "numpy.linspace(from, to, count)"}};
+V stateArray(const core::State& s) {
+  return V::array({V::number(s.u1), V::number(s.u2), V::number(s.v1), V::number(s.v2)});
 }
 
-QJsonObject startJson(const core::MapSpec& spec) {
+V axisJson(const core::MapAxis& axis) {
+  return V::object({{"variable", V::of(std::string(core::toString(axis.variable)))},
+                    {"from", V::number(axis.from)},
+                    {"to", V::number(axis.to)},
+                    {"count", V::of(std::int64_t(axis.count))},
+                    {"values", V::of("numpy.linspace(from, to, count)")}});
+}
+
+V startJson(const core::MapSpec& spec) {
   using Kind = core::StartSpec<double>::Kind;
-  QJsonObject start;
+  V start;
   if (!spec.start) {
-    start = {{"kind", "grazing-start plane"}, {"u2", "gap"}, {"v2", 0},
-             {"note", "u1 and v1 are 0 where no axis sets them"}};
+    start = V::object({{"kind", V::of("grazing-start plane")}, {"u2", V::of("gap")}, {"v2", V::of(std::int64_t(0))},
+                       {"note", V::of("u1 and v1 are 0 where no axis sets them")}});
   } else {
     switch (spec.start->kind) {
-      case Kind::Glo: start = {{"kind", "glo"}, {"lambda", spec.start->lambda}}; break;
-      case Kind::Glom: start = {{"kind", "glom"}, {"mode", int(spec.start->mode)}}; break;
-      case Kind::OnePeriodic: start = {{"kind", "onepp"}, {"T", spec.start->period}}; break;
-      case Kind::Explicit: start = {{"kind", "state"}, {"state", stateArray(spec.start->state)}}; break;
+      case Kind::Glo: start = V::object({{"kind", V::of("glo")}, {"lambda", V::number(spec.start->lambda)}}); break;
+      case Kind::Glom: start = V::object({{"kind", V::of("glom")}, {"mode", V::of(std::int64_t(spec.start->mode))}}); break;
+      case Kind::OnePeriodic: start = V::object({{"kind", V::of("onepp")}, {"T", V::number(spec.start->period)}}); break;
+      case Kind::Explicit: start = V::object({{"kind", V::of("state")}, {"state", stateArray(spec.start->state)}}); break;
     }
   }
   const bool epsilonAxis = spec.x.variable == core::MapVariable::Epsilon ||
                            spec.y.variable == core::MapVariable::Epsilon;
-  if (spec.perturbation && !epsilonAxis) start["perturbation"] = stateArray(*spec.perturbation);
+  if (spec.perturbation && !epsilonAxis) start.set("perturbation", stateArray(*spec.perturbation));
   if (epsilonAxis) {
-    start["epsilon_direction"] = stateArray(spec.perturbation.value_or(core::State{0, 0, 0, -1}));
+    start.set("epsilon_direction", stateArray(spec.perturbation.value_or(core::State{0, 0, 0, -1})));
   }
   return start;
 }
@@ -92,9 +95,9 @@ QByteArray csvText(const StoredMap& map) {
   const core::MapAxis x = axisOf(map.description.spec, "x");
   const core::MapAxis y = axisOf(map.description.spec, "y");
   // the axes' names as the spec gives them (a chain of N masses has u3, v2, ...)
-  const QJsonObject& spec = map.description.spec;
-  QByteArray text = "column,row," + spec["x"].toObject()["variable"].toString().toUtf8() + "," +
-                    spec["y"].toObject()["variable"].toString().toUtf8();
+  const V& spec = map.description.spec;
+  QByteArray text = "column,row," + QByteArray::fromStdString(axisVariable(spec, "x")) + "," +
+                    QByteArray::fromStdString(axisVariable(spec, "y"));
   for (const core::QuantityInfo& info : core::quantities()) text += "," + QByteArray(info.name.data());
   text += "\n";
   for (std::int64_t r = map.rows.rowBegin; r < map.rows.rowEnd; ++r) {
@@ -114,51 +117,63 @@ QByteArray csvText(const StoredMap& map) {
 
 }  // namespace
 
-core::MapAxis axisOf(const QJsonObject& spec, const char* which) {
-  const QJsonObject axis = spec[which].toObject();
+std::string axisVariable(const V& spec, const char* which) {
+  const V* axis = spec.find(which);
+  const V* variable = axis ? axis->find("variable") : nullptr;
+  return variable ? variable->text : std::string();
+}
+
+core::MapAxis axisOf(const V& spec, const char* which) {
   core::MapAxis result;
-  result.variable = core::parseMapVariable(axis["variable"].toString().toStdString())
-                        .value_or(core::MapVariable::U1);
-  result.from = axis["from"].toDouble();
-  result.to = axis["to"].toDouble();
-  result.count = axis["count"].toInteger();
+  const V* axis = spec.find(which);
+  if (!axis) return result;
+  result.variable = core::parseMapVariable(axisVariable(spec, which)).value_or(core::MapVariable::U1);
+  const auto number = [axis](const char* name) {
+    const V* value = axis->find(name);
+    return value ? value->toDouble() : 0.0;
+  };
+  result.from = number("from");
+  result.to = number("to");
+  result.count = std::int64_t(number("count"));
   return result;
 }
 
-QJsonObject specJson(const core::MapSpec& spec, double period, const QString& pictureQuantity) {
+V specJson(const core::MapSpec& spec, double period, const QString& pictureQuantity) {
   const core::Model& m = spec.model;
-  QJsonObject model{{"m1", m.m1}, {"m2", m.m2}, {"k1", m.k1}, {"gap", m.gap}, {"T2", period}};
+  V model = V::object({{"m1", V::number(m.m1)}, {"m2", V::number(m.m2)}, {"k1", V::number(m.k1)},
+                       {"gap", V::number(m.gap)}, {"T2", V::number(period)}});
   if (m.design) {
-    model["branch"] = QString::fromUtf8(core::toString(*m.design));
-    model["k2"] = "1:2 design of the branch (follows m2/m1)";
+    model.set("branch", V::of(std::string(core::toString(*m.design))));
+    model.set("k2", V::of("1:2 design of the branch (follows m2/m1)"));
   } else {
-    model["k2"] = m.k2;
+    model.set("k2", V::number(m.k2));
   }
-  QJsonObject quantities;
+  std::vector<V::Field> quantities;
   for (const core::QuantityInfo& info : core::quantities()) {
-    quantities[QString::fromUtf8(info.name)] =
-        QJsonObject{{"unit", QString::fromUtf8(info.unit)},
-                    {"dtype", info.integer ? "int64" : "float64"},
-                    {"meaning", QString::fromUtf8(info.meaning)}};
+    quantities.emplace_back(JsonKey::owned(std::string(info.name)),
+                            V::object({{"unit", V::of(std::string(info.unit))},
+                                       {"dtype", V::of(info.integer ? "int64" : "float64")},
+                                       {"meaning", V::of(std::string(info.meaning))}}));
   }
-  return {{"format", "grazelab-map"},
-          {"generator", "grazelab-cli " + QCoreApplication::applicationVersion()},
-          {"layout", "PREFIX-QUANTITY.npy: row index = y index, column index = x index"},
-          {"x", axisJson(spec.x)},
-          {"y", axisJson(spec.y)},
-          {"model", model},
-          {"start", startJson(spec)},
-          {"contacts", qint64(spec.contacts)},
-          {"contacts_note", "each run makes this many contacts, and more (at most 3) if its first "
-                            "flight from the stop has not ended by then"},
-          {"horizon", spec.estimateHorizon ? "estimated per point (--trust auto)"
-                                           : "not estimated (--trust off): NaN; give --trust auto"},
-          {"missing_values", "NaN: not defined at that point (no such flight or impact in the "
-                             "run, or the model or start is unusable there); inf: the run proved "
-                             "it never comes (a resonant flight that never returns); the counts "
-                             "are -1 where the model or start is unusable (no run)"},
-          {"picture", pictureQuantity},
-          {"quantities", quantities}};
+  return V::object(
+      {{"format", V::of("grazelab-map")},
+       {"generator", V::of(std::string("grazelab-cli ").append(QCoreApplication::applicationVersion().toStdString()))},
+       {"layout", V::of("PREFIX-QUANTITY.npy: row index = y index, column index = x index")},
+       {"x", axisJson(spec.x)},
+       {"y", axisJson(spec.y)},
+       {"model", std::move(model)},
+       {"start", startJson(spec)},
+       {"contacts", V::of(std::int64_t(spec.contacts))},
+       {"contacts_note", V::of("each run makes this many contacts, and more (at most 3) if its first "
+                               "flight from the stop has not ended by then")},
+       {"horizon", V::of(spec.estimateHorizon ? "estimated per point (--trust auto)"
+                                              : "not estimated (--trust off): NaN; give --trust auto")},
+       {"missing_values", V::of("NaN: not defined at that point (no such flight or impact in the "
+                                "run, or the model or start is unusable there); inf: the run proved "
+                                "it never comes (a resonant flight that never returns); the counts "
+                                "are -1 where the model or start is unusable (no run)")},
+       {"picture", V::of(pictureQuantity.toStdString())},
+       {"quantities", V::object(std::move(quantities))}});
 }
 
 bool writeMapFiles(const QString& prefix, const StoredMap& map, QString& error) {
@@ -171,7 +186,7 @@ bool writeMapFiles(const QString& prefix, const StoredMap& map, QString& error) 
       return false;
     }
   }
-  QJsonObject files;
+  std::vector<V::Field> files;
   for (const core::QuantityInfo& info : core::quantities()) {
     NpyArray array;
     array.integer = info.integer;
@@ -191,22 +206,24 @@ bool writeMapFiles(const QString& prefix, const StoredMap& map, QString& error) 
     }
     const QString path = quantityFile(prefix, info.name);
     if (!saveAtomically(path, encodeNpy(array), error)) return false;
-    files[QString::fromUtf8(info.name)] = quantityFile(baseName(prefix), info.name);
+    files.emplace_back(JsonKey::owned(std::string(info.name)), V::of(quantityFile(baseName(prefix), info.name).toStdString()));
   }
   if (rows * map.columns <= kCsvMaxPoints) {
     if (!saveAtomically(prefix + ".csv", csvText(map), error)) return false;
-    files["csv"] = baseName(prefix) + ".csv";
+    files.emplace_back("csv", V::of((baseName(prefix) + ".csv").toStdString()));
   }
-  return saveAtomically(prefix + ".json", QJsonDocument(mapDocument(map, files)).toJson(), error);
+  const std::string document = indented(mapDocument(map, V::object(std::move(files))));
+  return saveAtomically(prefix + ".json", QByteArray::fromStdString(document), error);
 }
 
-QJsonObject mapDocument(const StoredMap& map, const QJsonObject& files) {
-  QJsonObject run = map.description.run;
-  run["rows"] = QJsonArray{qint64(map.rows.rowBegin), qint64(map.rows.rowEnd)};
-  run["total_rows"] = qint64(map.totalRows);
-  run["shape"] = QJsonArray{qint64(map.rows.rowEnd - map.rows.rowBegin), qint64(map.columns)};
-  if (!files.isEmpty()) run["files"] = files;
-  return {{"spec", map.description.spec}, {"run", run}};
+V mapDocument(const StoredMap& map, V files) {
+  V run = map.description.run;
+  run.set("rows", V::array({V::of(std::int64_t(map.rows.rowBegin)), V::of(std::int64_t(map.rows.rowEnd))}));
+  run.set("total_rows", V::of(std::int64_t(map.totalRows)));
+  run.set("shape", V::array({V::of(std::int64_t(map.rows.rowEnd - map.rows.rowBegin)), V::of(std::int64_t(map.columns))}));
+  if (files.kind == V::Kind::Object) run.set("files", std::move(files));
+  V spec = map.description.spec;
+  return V::object({{"spec", std::move(spec)}, {"run", std::move(run)}});
 }
 
 std::optional<StoredMap> readMapFiles(const QString& prefix, QString& error) {
@@ -215,18 +232,22 @@ std::optional<StoredMap> readMapFiles(const QString& prefix, QString& error) {
     error = QStringLiteral("cannot read %1.json: %2").arg(prefix, jsonFile.errorString());
     return std::nullopt;
   }
-  const QJsonObject document = QJsonDocument::fromJson(jsonFile.readAll()).object();
-  StoredMap map;
-  map.description.spec = document["spec"].toObject();
-  map.description.run = document["run"].toObject();
-  if (map.description.spec["format"].toString() != "grazelab-map") {
+  const std::optional<V> document = readJson(jsonFile.readAll());
+  const V* spec = document ? document->find("spec") : nullptr;
+  const V* run = document ? document->find("run") : nullptr;
+  const V* format = spec ? spec->find("format") : nullptr;
+  const V* rows = run ? run->find("rows") : nullptr;
+  const V* totalRows = run ? run->find("total_rows") : nullptr;
+  if (!format || format->text != "grazelab-map" || !rows || rows->items.size() != 2 || !totalRows) {
     error = prefix + ".json is not a grazelab map";
     return std::nullopt;
   }
-  const QJsonArray rows = map.description.run["rows"].toArray();
-  map.rows = {rows[0].toInteger(), rows[1].toInteger()};
-  map.totalRows = map.description.run["total_rows"].toInteger();
-  map.columns = map.description.spec["x"].toObject()["count"].toInteger();
+  StoredMap map;
+  map.description.spec = *spec;
+  map.description.run = *run;
+  map.rows = {std::int64_t(rows->items[0].toDouble()), std::int64_t(rows->items[1].toDouble())};
+  map.totalRows = std::int64_t(totalRows->toDouble());
+  map.columns = axisOf(map.description.spec, "x").count;
   const std::int64_t count = (map.rows.rowEnd - map.rows.rowBegin) * map.columns;
   if (count < 0 || map.rows.rowBegin < 0 || map.rows.rowEnd > map.totalRows) {
     error = prefix + ".json: rows out of range";
@@ -294,16 +315,16 @@ std::optional<StoredMap> mergeStripes(std::vector<StoredMap> parts, QString& err
       return std::nullopt;
     }
     whole.points.insert(whole.points.end(), part.points.begin(), part.points.end());
-    seconds += part.description.run["seconds"].toDouble();
+    if (const V* partSeconds = part.description.run.find("seconds")) seconds += partSeconds->toDouble();
     next = part.rows.rowEnd;
   }
   if (next != whole.totalRows) {
     error = QStringLiteral("rows %1 to %2 are in no part: a stripe is missing").arg(next).arg(whole.totalRows - 1);
     return std::nullopt;
   }
-  whole.description.run = {{"merged_from", qint64(parts.size())},
-                           {"seconds", seconds},
-                           {"complete", true}};
+  whole.description.run = V::object({{"merged_from", V::of(std::int64_t(parts.size()))},
+                                     {"seconds", V::number(seconds)},
+                                     {"complete", V::of(true)}});
   return whole;
 }
 

@@ -2,12 +2,12 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include <QJsonObject>
 #include <QString>
 
 #include <optional>
 
 #include "core/experiments/maps.h"
+#include "io/json_value.h"
 
 namespace grazelab::cli::map {
 
@@ -21,13 +21,13 @@ inline constexpr std::int64_t kCsvMaxPoints = 100'000;
 /// What was run: `spec` is the map's identity (equal for every shard of one map); `run` how
 /// (threads, seconds, which rows).
 struct MapDescription {
-  QJsonObject spec;
-  QJsonObject run;
+  JsonValue spec;
+  JsonValue run;
 };
 
 /// The spec object of a map: format, version, axes (with their values), model (with T2),
 /// start, contacts, the trust setting, the picture's quantity and the quantities' units.
-QJsonObject specJson(const core::MapSpec& spec, double period, const QString& pictureQuantity);
+JsonValue specJson(const core::MapSpec& spec, double period, const QString& pictureQuantity);
 
 /// A map as its files hold it: a stripe (rows of totalRows) or the whole map.
 struct StoredMap {
@@ -40,7 +40,7 @@ struct StoredMap {
 
 /// The JSON document of a map: its spec and its run (rows, total_rows, shape), with `files`
 /// (names relative to the document) when it has files.
-QJsonObject mapDocument(const StoredMap& map, const QJsonObject& files = {});
+JsonValue mapDocument(const StoredMap& map, JsonValue files = JsonValue::null());
 
 /// Writes every file of `map` under `prefix`. Returns false with a reason; no file is left
 /// half-written (those already complete stay).
@@ -54,6 +54,9 @@ std::optional<StoredMap> readMapFiles(const QString& prefix, QString& error);
 std::optional<StoredMap> mergeStripes(std::vector<StoredMap> parts, QString& error);
 
 /// An axis as the spec object describes it.
-core::MapAxis axisOf(const QJsonObject& spec, const char* which);
+core::MapAxis axisOf(const JsonValue& spec, const char* which);
+
+/// The name of the variable of axis `which` ("x", "y") as the spec gives it ("u1", "w2", ...).
+std::string axisVariable(const JsonValue& spec, const char* which);
 
 }  // namespace grazelab::cli::map

@@ -4,7 +4,6 @@
 #include "io/map_picture.h"
 
 #include <QImage>
-#include <QJsonDocument>
 #include <QPainter>
 
 #include "io/output_files.h"
@@ -17,8 +16,8 @@ namespace {
 constexpr int kWidth = 1000;
 constexpr int kHeight = 820;
 
-QString axisTitle(const QJsonObject& spec, const char* which) {
-  const QString name = spec[which].toObject()["variable"].toString();
+QString axisTitle(const JsonValue& spec, const char* which) {
+  const QString name = QString::fromStdString(axisVariable(spec, which));
   // u<i> and v<i>: the two-mass map's u1, v1, v2 and a chain of N masses' coordinates
   if (name == "gap" || (name.size() > 1 && name[0] == 'u' && name[1].isDigit())) return name + " [length]";
   if (name.size() > 1 && name[0] == 'v' && name[1].isDigit()) return name + " [length/time]";
@@ -31,10 +30,13 @@ QString axisTitle(const QJsonObject& spec, const char* which) {
 }
 
 pictures::HeatMapData heatMapOf(const StoredMap& map) {
-  const QJsonObject& spec = map.description.spec;
-  const QString quantity = spec["picture"].toString();
+  const JsonValue& spec = map.description.spec;
+  // a field's text, or empty
+  const auto text = [](const JsonValue* value) { return value ? QString::fromStdString(value->text) : QString(); };
+  const QString quantity = text(spec.find("picture"));
   const auto which = core::parseQuantity(quantity.toStdString()).value_or(core::Quantity::FftFirst);
-  const QJsonObject info = spec["quantities"].toObject()[quantity].toObject();
+  const JsonValue* quantities = spec.find("quantities");
+  const JsonValue* info = quantities ? quantities->find(quantity.toStdString()) : nullptr;
   pictures::HeatMapData data;
   data.columns = map.columns;
   data.rows = map.rows.rowEnd - map.rows.rowBegin;
@@ -45,13 +47,14 @@ pictures::HeatMapData heatMapOf(const StoredMap& map) {
   data.xTo = x.to;
   data.yFrom = y.at(map.rows.rowBegin);
   data.yTo = y.at(map.rows.rowEnd - 1);
-  const qint64 contacts = spec["contacts"].toInteger();
-  QString meaning = info["meaning"].toString();
-  meaning[0] = meaning[0].toUpper();
+  const JsonValue* contactsValue = spec.find("contacts");
+  const qint64 contacts = contactsValue ? qint64(contactsValue->toDouble()) : 0;
+  QString meaning = text(info ? info->find("meaning") : nullptr);
+  if (!meaning.isEmpty()) meaning[0] = meaning[0].toUpper();
   data.title = QStringLiteral("%1 (%2 contact%3 per run)").arg(meaning).arg(contacts).arg(contacts == 1 ? "" : "s");
   data.xTitle = axisTitle(spec, "x");
   data.yTitle = axisTitle(spec, "y");
-  const QString unit = info["unit"].toString();
+  const QString unit = text(info ? info->find("unit") : nullptr);
   data.valueTitle = unit == "count" ? quantity : QStringLiteral("%1 [%2]").arg(quantity, unit);
   return data;
 }
@@ -66,7 +69,7 @@ void prepareFonts() {
 
 bool writeMapPicture(const QString& prefix, const StoredMap& map, QString& error) {
   const pictures::HeatMapData data = heatMapOf(map);
-  const QByteArray description = QJsonDocument(map.description.spec).toJson(QJsonDocument::Compact);
+  const QByteArray description = QByteArray::fromStdString(oneLine(map.description.spec));
   return savePngAndSvg(
       prefix, QSize(kWidth, kHeight), data.title, "GrazeLabMap", description,
       [&](QPainter& painter) { pictures::paintHeatMap(painter, QRectF(0, 0, kWidth, kHeight), data); }, error);
