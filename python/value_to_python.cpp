@@ -2,9 +2,9 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "value_to_python.h"
 
+#include <cstdint>
 #include <string>
 #include <string_view>
-#include <cstdint>
 
 namespace grazelab::python {
 
@@ -45,6 +45,12 @@ PyObject* keyObject(const cli::JsonKey& key) {
   return make();  // a crowded neighbourhood: made afresh
 }
 
+// A new reference from the C API as an object; the Python error it set when there is none.
+py::object owned(PyObject* made) {
+  if (!made) throw py::error_already_set();
+  return py::reinterpret_steal<py::object>(made);
+}
+
 }  // namespace
 
 py::object toPython(const cli::JsonValue& value, const py::handle& objectType, bool numbersAsText) {
@@ -54,10 +60,10 @@ py::object toPython(const cli::JsonValue& value, const py::handle& objectType, b
     case Kind::Bool: return py::reinterpret_borrow<py::object>(value.boolean ? Py_True : Py_False);
     case Kind::Integer:
       if (numbersAsText) return py::str(std::to_string(value.integer));
-      return py::reinterpret_steal<py::object>(PyLong_FromLongLong(value.integer));
+      return owned(PyLong_FromLongLong(value.integer));
     case Kind::Number:
       if (numbersAsText) return py::str(value.numberText());
-      return py::reinterpret_steal<py::object>(PyFloat_FromDouble(value.value));
+      return owned(PyFloat_FromDouble(value.value));
     case Kind::String: return py::str(value.text);
     case Kind::Array: {
       py::list items(value.items.size());
@@ -67,17 +73,16 @@ py::object toPython(const cli::JsonValue& value, const py::handle& objectType, b
       return items;
     }
     case Kind::Object: {
-      // (the C API directly: a document is ~70 objects, and a short run costs a few microseconds)
-      // (its type's tp_new, as calling the type would, without the call's own work: a dict
-      // subclass that defines neither __new__ nor __init__)
+      // the C API directly (a document is ~70 objects, and a short run costs a few microseconds):
+      // the type's tp_new, as calling the type would, without the call's own work (objectType
+      // is a dict subclass that defines neither __new__ nor __init__)
       auto* type = reinterpret_cast<PyTypeObject*>(objectType.ptr());
-      static PyObject* const noArguments = PyTuple_New(0);  // (the empty tuple: immortal in effect)
-      auto object = py::reinterpret_steal<py::object>(type->tp_new(type, noArguments, nullptr));
-      if (!object) throw py::error_already_set();
+      static PyObject* const noArguments = PyTuple_New(0);  // (kept to the process's end)
+      const py::object object = owned(type->tp_new(type, noArguments, nullptr));
       for (const auto& [key, field] : value.fields) {
         const py::object item = toPython(field, objectType, numbersAsText);
-        const auto name = py::reinterpret_steal<py::object>(keyObject(key));
-        if (!name || PyDict_SetItem(object.ptr(), name.ptr(), item.ptr()) != 0) throw py::error_already_set();
+        const py::object name = owned(keyObject(key));
+        if (PyDict_SetItem(object.ptr(), name.ptr(), item.ptr()) != 0) throw py::error_already_set();
       }
       return object;
     }

@@ -8,8 +8,8 @@
 
 namespace grazelab::python {
 
-/// A command's document as Python objects, each object an instance of `objectType` (a dict
-/// subclass: grazelab.Result). Numbers are floats and counts ints; with `numbersAsText` both are
+/// A command's document as Python objects, each object an instance of `objectType` (dict, or a
+/// dict subclass that defines neither __new__ nor __init__: grazelab.Result). Numbers are floats and counts ints; with `numbersAsText` both are
 /// their decimal text instead, in the run's precision (what `decimal` holds for long and quad).
 pybind11::object toPython(const cli::JsonValue& value, const pybind11::handle& objectType,
                           bool numbersAsText = false);

@@ -4,6 +4,7 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -66,13 +67,20 @@ std::optional<core::BasicState<S>> toState(const QString& option, const QString&
   return core::BasicState<S>{values[0], values[1], values[2], values[3]};
 }
 
-// A number given as a number, read in double: the double itself, as its text would read (-0 as
-// 0: the Python module writes a whole number as an integer). Null for any other: read the text.
+// `count` numbers given as numbers, read in double: the doubles themselves, as their texts would
+// read (-0 as 0: the Python module writes a whole number as an integer). Nothing for any other
+// precision, count or a number not finite: then the text is read.
 template <typename S>
-std::optional<S> givenDouble(const OptionValues& options, const char* name, std::size_t at, std::size_t count) {
+std::optional<std::array<double, 4>> givenDoubles(const OptionValues& options, const char* name, std::size_t count) {
   if constexpr (std::is_same_v<S, double>) {
     const auto numbers = options.numbers(name);
-    if (numbers && numbers->size() == count && std::isfinite((*numbers)[at])) return (*numbers)[at] + 0.0;
+    if (!numbers || numbers->size() != count || count > 4) return std::nullopt;
+    std::array<double, 4> values{};
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!std::isfinite((*numbers)[i])) return std::nullopt;
+      values[i] = (*numbers)[i] + 0.0;
+    }
+    return values;
   }
   return std::nullopt;
 }
@@ -80,18 +88,14 @@ std::optional<S> givenDouble(const OptionValues& options, const char* name, std:
 // --NAME as a number in precision S
 template <typename S>
 std::optional<S> numberOption(const OptionValues& options, const char* name, QString& error) {
-  if (const auto given = givenDouble<S>(options, name, 0, 1)) return given;
+  if (const auto given = givenDoubles<S>(options, name, 1)) return S((*given)[0]);
   return toNumber<S>(QString::fromUtf8(name), options.value(name), error);
 }
 
 // --NAME as a state in precision S
 template <typename S>
 std::optional<core::BasicState<S>> stateOption(const OptionValues& options, const char* name, QString& error) {
-  if (givenDouble<S>(options, name, 0, 4)) {
-    const std::optional<S> u1 = givenDouble<S>(options, name, 0, 4), u2 = givenDouble<S>(options, name, 1, 4),
-                           v1 = givenDouble<S>(options, name, 2, 4), v2 = givenDouble<S>(options, name, 3, 4);
-    if (u1 && u2 && v1 && v2) return core::BasicState<S>{*u1, *u2, *v1, *v2};
-  }
+  if (const auto given = givenDoubles<S>(options, name, 4)) return core::BasicState<S>{S((*given)[0]), S((*given)[1]), S((*given)[2]), S((*given)[3])};
   return toState<S>(QString::fromUtf8(name), options.value(name), error);
 }
 

@@ -22,9 +22,11 @@ struct JsonItem;
 /// run time is owned (JsonKey::owned).
 class JsonKey {
  public:
-  /// A string literal (never a char array that changes or goes away).
+  /// A string literal (never a char array that changes or goes away); its length to its first
+  /// NUL (folded at compile time for a literal).
   template <std::size_t N>
-  JsonKey(const char (&literal)[N]) : m_literal(literal), m_size(N - 1) {}  // NOLINT(google-explicit-constructor)
+  JsonKey(const char (&literal)[N])  // NOLINT(google-explicit-constructor)
+      : m_literal(literal), m_size(std::char_traits<char>::length(literal)) {}
   static JsonKey owned(std::string name) {
     JsonKey key;
     key.m_owned = std::make_shared<const std::string>(std::move(name));
