@@ -124,7 +124,12 @@ S scaledEnergy(const Chain<S>& chain, const BasicState<S>& x) {
 
 template <typename S>
 S physicalEnergy(const Chain<S>& chain, const BasicState<S>& physical) {
+  using std::abs;
   using std::ldexp;
+  // a state at infinity (the 1IPP data where g2(T) = 0) or not a number: its energy is that too
+  // (chooseScale's exponent would be ilogb's sentinel, and doubling it overflows)
+  const S size = abs(physical.u1) + abs(physical.u2) + abs(physical.v1) + abs(physical.v2);
+  if (!isFinite(size)) return size;
   const Scale<S> scale = chooseScale(chain, physical);
   const S e = scaledEnergy(chain, scale.toScaled(physical));
   // E = k1 L^2 e, with L^2 = 2^(2 exponent) applied exactly

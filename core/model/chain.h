@@ -75,7 +75,8 @@ template <typename S>
 S scaledEnergy(const Chain<S>& chain, const BasicState<S>& x);
 
 /// Physical energy E = 1/2 v^T M v + 1/2 u^T K u of a physical state, formed through the scaled
-/// variables (it overflows first in physical units); infinite when it is beyond the range of S.
+/// variables (it overflows first in physical units); infinite when it is beyond the range of S
+/// or the state is infinite, NaN for a state with a NaN.
 template <typename S>
 S physicalEnergy(const Chain<S>& chain, const BasicState<S>& physical);
 

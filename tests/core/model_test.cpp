@@ -68,5 +68,17 @@ TEST(Model, EnergyMatchesTheQuadraticForms) {
   EXPECT_NEAR(energy(model, state), expected, 1e-15 * expected);
 }
 
+// a state at infinity (the 1IPP data where g2(T) = 0) has infinite energy, one with a NaN a NaN
+// energy: not the overflow of a scale taken from ilogb's sentinels (UBSan saw 2 * INT_MAX)
+TEST(Model, EnergyOfAStateNotFiniteIsNotFinite) {
+  const Model model{1.3, 0.4, 2.1, 0.7, 1.0, {}};
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(energy(model, State{0.3, 1.0, 0, -inf}), inf);
+  EXPECT_EQ(energy(model, State{-inf, 1.0, 0, 0}), inf);
+  EXPECT_TRUE(std::isnan(energy(model, State{std::nan(""), 1.0, 0, 0})));
+  const Chain<long double> chain = *makeChain(convertModel<long double>(model)).chain;
+  EXPECT_EQ(physicalEnergy(chain, BasicState<long double>{0, 1, 0, -INFINITY}), INFINITY);
+}
+
 }  // namespace
 }  // namespace grazelab::core
