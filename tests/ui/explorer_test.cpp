@@ -408,22 +408,31 @@ class ExplorerTest : public QObject {
     m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("near-grazing")));
     QVERIFY(waitForLatestFinal(*m_window));
     QList<SimUpdate> runs;  // every whole run handed to the window
+    bool firstRunning = false;  // a part of the first value's run has come
     const auto connection = connect(m_window->controller(), &SimController::updated, this,
                                     [&](const SimUpdate& update) {
                                       if (update.runDone) runs.append(update);
+                                      if (update.request && update.request->params.lambda == 0.60 && !update.runDone) {
+                                        firstRunning = true;
+                                      }
                                     });
     Params params = m_window->params();
     m_window->controller()->setGrace(60'000);
-    // runs long enough to be still going when the last value is applied (edits are spaced by
-    // at least 33 ms) on any machine: 20 000 contacts took ~10 ms, and 200 000 ended before the
-    // next value on a faster CI machine (never superseded); a million take a few tenths of a
-    // second at the fastest
-    params.horizon = 1'000'000;
-    for (const double lambda : {0.60, 0.62, 0.64}) {
+    // the order is made, not timed, so that no machine's speed changes it: the next values
+    // come while the first run is going (once a part of it has come: 500 000 contacts, a
+    // quarter of a second at the fastest), and their run is four times as long, so that the
+    // first ends first (timed alone, the first run ended before the next value on a fast
+    // machine, or after the newest on a loaded one)
+    params.lambda = 0.60;
+    params.horizon = 500'000;
+    m_window->setParams(params);
+    QTRY_VERIFY_WITH_TIMEOUT(firstRunning, 20000);
+    params.horizon = 2'000'000;
+    for (const double lambda : {0.62, 0.64}) {
       params.lambda = lambda;
       m_window->setParams(params);
     }
-    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
     QVERIFY(runs.size() >= 2);
     QVERIFY(runs.front().superseded);
     QCOMPARE(runs.front().request->params.lambda, 0.60);
