@@ -30,21 +30,27 @@ using ComplexMatrix = Eigen::MatrixXcd;
 struct Scaled {
   std::vector<double> masses;
   std::vector<double> lambdas;
+  /// a right wall: its compliance over c_1 (k_1 / k_(N+1), scale-free); 0 without one
+  double rightRatio = 0;
 };
 
 // u_0(lambda; c) of the chain: the displacement the wall would need for a free vibration at
 // eigenvalue lambda with u_N = 1. Walking from the free end, the force in spring i is the
 // inertia of the masses i..N, S_i = sum_(j >= i) lambda m_j u_j, and u_(i-1) = u_i - c_i S_i;
-// lambda is an eigenvalue exactly when u_0 = 0. Affine in each c_i. With `gradient`, its
-// derivatives in c as well (forward mode).
+// lambda is an eigenvalue exactly when u_0 = 0. Affine in each c_i. With a right wall of
+// compliance c_(N+1) = rho c_1 the walk starts from its spring's force -u_N / c_(N+1): all of
+// it times c_(N+1) (u_N = rho c_1, force -1), which makes u_0 quadratic in c_1 and still affine
+// in the others. With `gradient`, its derivatives in c as well (forward mode).
 template <typename T>
-T wallDisplacement(const std::vector<double>& masses, double lambda, const std::vector<T>& c,
+T wallDisplacement(const std::vector<double>& masses, double lambda, double rightRatio, const std::vector<T>& c,
                    std::vector<T>* gradient) {
   const std::size_t n = masses.size();
-  T u = T(1);
-  T force = T(0);
+  const bool wall = rightRatio > 0;
+  T u = wall ? T(rightRatio) * c[0] : T(1);
+  T force = wall ? T(-1) : T(0);
   std::vector<T> du(gradient ? n : 0, T(0));
   std::vector<T> dForce(gradient ? n : 0, T(0));
+  if (gradient && wall) du[0] = T(rightRatio);
   for (std::size_t i = n; i-- > 0;) {
     force += T(lambda * masses[i]) * u;
     if (gradient) {
@@ -67,7 +73,7 @@ void target(const Scaled& scaled, const std::vector<T>& c, Eigen::Matrix<T, Eige
   if (jacobian) jacobian->resize(Eigen::Index(n), Eigen::Index(n));
   std::vector<T> gradient;
   for (std::size_t j = 0; j < n; ++j) {
-    value[Eigen::Index(j)] = wallDisplacement(scaled.masses, scaled.lambdas[j], c, jacobian ? &gradient : nullptr);
+    value[Eigen::Index(j)] = wallDisplacement(scaled.masses, scaled.lambdas[j], scaled.rightRatio, c, jacobian ? &gradient : nullptr);
     if (jacobian) {
       for (std::size_t k = 0; k < n; ++k) (*jacobian)(Eigen::Index(j), Eigen::Index(k)) = gradient[k];
     }
@@ -75,21 +81,30 @@ void target(const Scaled& scaled, const std::vector<T>& c, Eigen::Matrix<T, Eige
 }
 
 // The start system G_j(c) = prod_i (c_i - r_ij): affine in each c_i like F, with the N! roots
-// c_(p(j)) = r_(p(j), j), one for each permutation p.
+// c_(p(j)) = r_(p(j), j), one for each permutation p. With a right wall F is quadratic in c_1,
+// and so is G: its factor in c_1 is (c_1 - r_1j)(c_1 - q_j), and each permutation has two
+// roots (c_1 = r or q in the equation that fixes c_1): 2 N! in all.
 struct StartSystem {
-  ComplexMatrix r;  // r(i, j)
+  ComplexMatrix r;    // r(i, j)
+  ComplexVector q;    // q_j: the second root in c_1 (empty without a right wall)
+  Complex factor(const ComplexVector& c, Eigen::Index i, Eigen::Index j) const {
+    return i == 0 && q.size() ? (c[0] - r(0, j)) * (c[0] - q[j]) : c[i] - r(i, j);
+  }
+  Complex slope(const ComplexVector& c, Eigen::Index i, Eigen::Index j) const {
+    return i == 0 && q.size() ? 2.0 * c[0] - r(0, j) - q[j] : Complex(1);
+  }
   void evaluate(const ComplexVector& c, ComplexVector& value, ComplexMatrix& jacobian) const {
     const Eigen::Index n = c.size();
     value.resize(n);
     jacobian.resize(n, n);
     for (Eigen::Index j = 0; j < n; ++j) {
       Complex product = 1;
-      for (Eigen::Index i = 0; i < n; ++i) product *= c[i] - r(i, j);
+      for (Eigen::Index i = 0; i < n; ++i) product *= factor(c, i, j);
       value[j] = product;
       for (Eigen::Index i = 0; i < n; ++i) {
-        Complex others = 1;
+        Complex others = slope(c, i, j);
         for (Eigen::Index k = 0; k < n; ++k) {
-          if (k != i) others *= c[k] - r(k, j);
+          if (k != i) others *= factor(c, k, j);
         }
         jacobian(j, i) = others;
       }
@@ -253,6 +268,10 @@ SearchResult search(const Scaled& scaled, std::uint64_t seed, const std::stop_to
   for (Eigen::Index i = 0; i < n; ++i) {
     for (Eigen::Index j = 0; j < n; ++j) start.r(i, j) = std::polar(radius(random), angle(random));
   }
+  if (scaled.rightRatio > 0) {
+    start.q.resize(n);
+    for (Eigen::Index j = 0; j < n; ++j) start.q[j] = std::polar(radius(random), angle(random));
+  }
   const Homotopy homotopy{scaled, start, std::polar(1.0, angle(random))};
   SearchResult result;
   std::vector<Eigen::Index> permutation(static_cast<std::size_t>(n));
@@ -262,28 +281,30 @@ SearchResult search(const Scaled& scaled, std::uint64_t seed, const std::stop_to
       result.stopped = true;
       return result;
     }
-    ComplexVector c(n);
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const Eigen::Index i = permutation[std::size_t(j)];
-      c[i] = start.r(i, j);
+    for (int second = 0; second < (start.q.size() ? 2 : 1); ++second) {
+      ComplexVector c(n);
+      for (Eigen::Index j = 0; j < n; ++j) {
+        const Eigen::Index i = permutation[std::size_t(j)];
+        c[i] = i == 0 && second ? start.q[j] : start.r(i, j);
+      }
+      ++result.paths;
+      const TrackedPath path = track(homotopy, c);
+      if (path.end == PathEnd::Failed) return result;
+      if (path.end == PathEnd::Infinite) {
+        ++result.infinite;
+        continue;
+      }
+      bool repeated = false;
+      for (Root& other : result.finite) {
+        if ((other.c - path.c).norm() > 1e-4 * (1 + path.c.norm())) continue;
+        // two paths at one end: a multiple root (the two designs of N = 2, 1:2 meet at
+        // m2/m1 = 9/16), where F's Jacobian is singular; at a regular root one of them jumped,
+        // and some solution may have been missed
+        if (!singularAt(scaled, path.c)) return result;
+        other.multiple = repeated = true;
+      }
+      if (!repeated) result.finite.push_back({path.c, false});
     }
-    ++result.paths;
-    const TrackedPath path = track(homotopy, c);
-    if (path.end == PathEnd::Failed) return result;
-    if (path.end == PathEnd::Infinite) {
-      ++result.infinite;
-      continue;
-    }
-    bool repeated = false;
-    for (Root& other : result.finite) {
-      if ((other.c - path.c).norm() > 1e-4 * (1 + path.c.norm())) continue;
-      // two paths at one end: a multiple root (the two designs of N = 2, 1:2 meet at
-      // m2/m1 = 9/16), where F's Jacobian is singular; at a regular root one of them jumped,
-      // and some solution may have been missed
-      if (!singularAt(scaled, path.c)) return result;
-      other.multiple = repeated = true;
-    }
-    if (!repeated) result.finite.push_back({path.c, false});
   } while (std::next_permutation(permutation.begin(), permutation.end()));
   result.complete = true;
   return result;
@@ -293,10 +314,16 @@ SearchResult search(const Scaled& scaled, std::uint64_t seed, const std::stop_to
 
 ChainDesigns designSprings(const std::vector<double>& masses, double k1, const std::vector<int>& harmonics,
                            std::stop_token stop) {
+  return designSprings(masses, k1, 0, harmonics, stop);
+}
+
+ChainDesigns designSprings(const std::vector<double>& masses, double k1, double rightSpring,
+                           const std::vector<int>& harmonics, std::stop_token stop) {
   ChainDesigns designs;
   const std::size_t n = masses.size();
   const bool usable =
       n >= 1 && n <= std::size_t(kMaxDesignMasses) && harmonics.size() == n && k1 > 0 && std::isfinite(k1) &&
+      rightSpring >= 0 && std::isfinite(rightSpring) && (rightSpring == 0 || k1 / rightSpring < 1e300) &&
       std::all_of(masses.begin(), masses.end(), [](double m) { return m > 0 && std::isfinite(m); }) &&
       std::all_of(harmonics.begin(), harmonics.end(), [](int h) { return h >= 1; }) &&
       std::adjacent_find(harmonics.begin(), harmonics.end(), [](int a, int b) { return a <= b; }) == harmonics.end();
@@ -312,6 +339,7 @@ ChainDesigns designSprings(const std::vector<double>& masses, double k1, const s
   const double fastest = double(reduced.front());
   for (double m : masses) scaled.masses.push_back(m / heaviest);
   for (int h : reduced) scaled.lambdas.push_back(double(h) * h / (fastest * fastest));
+  if (rightSpring > 0) scaled.rightRatio = k1 / rightSpring;
 
   std::optional<SearchResult> found;
   for (std::uint64_t attempt = 0; attempt < 4 && !found; ++attempt) {
@@ -349,7 +377,7 @@ ChainDesigns designSprings(const std::vector<double>& masses, double k1, const s
     for (std::size_t i = 0; i < n; ++i) design.springs.push_back(i == 0 ? k1 : double(s / (*c)[i]));
     design.omega0 = double(sqrt(s / Quad(heaviest)) / Quad(fastest));
     // the designed chain's own spectrum, in binary128: the design stands only if it checks
-    const ChainModes modes = chainModes(MassChain{masses, design.springs, 0, 0, 1});
+    const ChainModes modes = chainModes(MassChain{masses, design.springs, rightSpring, 0, 1});
     for (std::size_t j = 0; j < n; ++j) {
       const double wanted = reduced[j] * design.omega0;
       design.ratioError = std::max(design.ratioError, std::abs(modes.omega[Eigen::Index(j)] / wanted - 1));

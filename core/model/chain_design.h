@@ -26,7 +26,7 @@ enum class DesignOutcome {
   Stopped,             ///< the stop token was triggered
 };
 
-/// The springs of a chain with masses `masses` (no right wall) whose frequencies are in the
+/// The springs of a chain with masses `masses` (no right wall: see below for one) whose frequencies are in the
 /// ratio `harmonics[0] : ... : harmonics[N-1]` (fastest first, strictly decreasing), `k1`
 /// fixing the scale (docs/model.md section 11).
 ///
@@ -45,7 +45,7 @@ enum class DesignOutcome {
 struct ChainDesigns {
   DesignOutcome outcome = DesignOutcome::BadRequest;
   std::vector<ChainDesign> designs;
-  int paths = 0;          ///< paths followed in the successful search (N!)
+  int paths = 0;          ///< paths followed in the successful search (N!; 2 N! with a right wall)
   int complexEnds = 0;    ///< distinct solutions with a complex or non-positive compliance
   int infiniteEnds = 0;   ///< paths that went to infinity (solutions the system lacks)
   // (a multiple root, where designs meet, is reached by several paths and counted once)
@@ -59,5 +59,11 @@ inline constexpr int kMaxDesignMasses = 7;
 /// between paths.
 ChainDesigns designSprings(const std::vector<double>& masses, double k1, const std::vector<int>& harmonics,
                            std::stop_token stop = {});
+
+/// The same with a right wall: k_1 and the wall's k_(N+1) = `rightSpring` as given (0: none),
+/// k_2 ... k_N designed. The wall makes the equations quadratic in 1/k_1 (the ratio of the two
+/// walls' compliances is fixed), so 2 N! paths are followed; everything else is as above.
+ChainDesigns designSprings(const std::vector<double>& masses, double k1, double rightSpring,
+                           const std::vector<int>& harmonics, std::stop_token stop = {});
 
 }  // namespace grazelab::core

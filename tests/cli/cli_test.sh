@@ -229,6 +229,16 @@ assert math.isclose(d['chain']['springs'][1], $note_k2, rel_tol=1e-14), (d['chai
       || fail "the 1:2 design's ${branch%%:*} branch"
   fi
 done
+# a right wall is kept as given and k2 ... kN designed around it: the designed chain (wall
+# included) has the ratios by its own spectrum, and its run's flights from the stop last T
+if expect_ok info --masses 1,0.2,0.05 --frequencies 3:2:1 --right-spring 0.01; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['chain']['right_spring'] == 0.01 and d['design']['solutions'] == 12, d['design']
+assert len(d['design']['designs']) == 4 and all(x['ratio_error'] <= 1e-13 for x in d['design']['designs']), d['design']
+assert d['ratios']['commensurate'] and d['ratios']['harmonics'] == [3, 2, 1], d['ratios']" || fail "a design with a right wall"
+fi
+EXPECT_WORD="no chain with these masses" expect_invalid info --masses 1,0.2,0.05 --frequencies 3:2:1 --right-spring 0.5
 EXPECT_WORD="no chain with these masses" expect_invalid info --masses 1,0.6 --frequencies 2:1
 EXPECT_WORD="have 2 designs" expect_invalid info --masses 1,0.5 --frequencies 2:1 --design-branch 3
 EXPECT_WORD="strictly decreasing" expect_invalid info --masses 1,0.5 --frequencies 1:2

@@ -20,8 +20,9 @@ namespace grazelab::core {
 namespace {
 
 // the designed chain's frequencies are n_j w0, by its own binary128 spectrum
-void expectInRatio(const std::vector<double>& masses, const ChainDesign& design, const std::vector<int>& harmonics) {
-  const ChainModes modes = chainModes(MassChain{masses, design.springs, 0, 0, 1});
+void expectInRatio(const std::vector<double>& masses, const ChainDesign& design, const std::vector<int>& harmonics,
+                   double rightSpring = 0) {
+  const ChainModes modes = chainModes(MassChain{masses, design.springs, rightSpring, 0, 1});
   for (std::size_t j = 0; j < masses.size(); ++j) {
     EXPECT_NEAR(modes.omega[Eigen::Index(j)] / (harmonics[j] * design.omega0), 1.0, 1e-14) << "mode " << j + 1;
   }
@@ -93,19 +94,28 @@ TEST(ChainDesign, DesignsAreExactAndScaleWithTheMassesAndK1) {
 }
 
 // Brute force, independent of the homotopy: the mismatch of a three-mass chain's ratios from
-// the request over a dense grid of (log k2, log k3), k1 = 1; each grid minimum is refined by a
-// pattern search, and those that reach zero are the designs in the grid's range: the homotopy
-// must have found each of them (every design found) and no other (none made up).
+// the request over a dense grid of (log k2, log k3), k1 = 1 (and a right wall as given); each
+// grid minimum is refined by a pattern search, and those that reach zero are the designs in the
+// grid's range: the homotopy must have found each of them (every design found) and no other
+// (none made up).
 TEST(ChainDesign, EveryDesignOfThreeMassesIsFound) {
-  for (const auto& [masses, harmonics] : std::vector<std::pair<std::vector<double>, std::vector<int>>>{
-           {{1.0, 0.2, 0.05}, {3, 2, 1}}, {{1.0, 1.0, 0.2}, {4, 3, 1}}, {{1.0, 0.4, 0.2}, {5, 3, 1}},
-           {{1.0, 0.1, 0.3}, {4, 3, 1}}, {{1.0, 0.5, 2.0}, {3, 2, 1}}}) {
-    const ChainDesigns designs = designSprings(masses, 1.0, harmonics);
+  struct Request {
+    std::vector<double> masses;
+    std::vector<int> harmonics;
+    double rightSpring;
+  };
+  for (const auto& [masses, harmonics, rightSpring] : std::vector<Request>{
+           {{1.0, 0.2, 0.05}, {3, 2, 1}, 0.0}, {{1.0, 1.0, 0.2}, {4, 3, 1}, 0.0}, {{1.0, 0.4, 0.2}, {5, 3, 1}, 0.0},
+           {{1.0, 0.1, 0.3}, {4, 3, 1}, 0.0}, {{1.0, 0.5, 2.0}, {3, 2, 1}, 0.0},
+           // a right wall: its spring kept, the equations quadratic in 1/k1 (twice the paths)
+           {{1.0, 0.2, 0.05}, {3, 2, 1}, 0.01}, {{1.0, 1.0, 1.0}, {3, 2, 1}, 0.5}, {{1.0, 0.4, 0.2}, {5, 3, 1}, 2.0},
+           {{0.3, 1.0, 0.5}, {4, 3, 1}, 0.2}}) {
+    const ChainDesigns designs = designSprings(masses, 1.0, rightSpring, harmonics);
     ASSERT_NE(designs.outcome, DesignOutcome::Incomplete);
-    EXPECT_EQ(designs.paths, 6);
+    EXPECT_EQ(designs.paths, rightSpring > 0 ? 12 : 6);
     // the chain's frequencies by Eigen's dense solver in double, apart from chainModes
     const auto mismatch = [&](double logK2, double logK3) {
-      const double k[4] = {1.0, std::exp(logK2), std::exp(logK3), 0.0};
+      const double k[4] = {1.0, std::exp(logK2), std::exp(logK3), rightSpring};
       Eigen::Matrix3d scaled;  // M^-1/2 K M^-1/2
       for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
@@ -161,7 +171,7 @@ TEST(ChainDesign, EveryDesignOfThreeMassesIsFound) {
     }
     int inRange = 0;
     for (const ChainDesign& design : designs.designs) {
-      expectInRatio(masses, design, harmonics);
+      expectInRatio(masses, design, harmonics, rightSpring);
       const double a = std::log(design.springs[1]), b = std::log(design.springs[2]);
       if (a < kLow || a > kHigh || b < kLow || b > kHigh) continue;
       ++inRange;
@@ -169,8 +179,41 @@ TEST(ChainDesign, EveryDesignOfThreeMassesIsFound) {
         return std::abs(s.first - a) < 1e-5 && std::abs(s.second - b) < 1e-5;
       })) << "a design no brute force confirms: k2 = " << design.springs[1] << ", k3 = " << design.springs[2];
     }
-    EXPECT_EQ(int(solutions.size()), inRange) << "masses " << masses[0] << ", " << masses[1] << ", " << masses[2];
+    EXPECT_EQ(int(solutions.size()), inRange) << "masses " << masses[0] << ", " << masses[1] << ", " << masses[2]
+                                              << ", right wall " << rightSpring;
   }
+}
+
+// A right wall scales with the chain (masses x1000, k1 and k_(N+1) x10: the springs x10, w0 x
+// sqrt(10 / 1000)); a wall weak against k1 is a perturbation: its designs tend to the wall-less
+// ones (each within the wall's relative stiffness).
+TEST(ChainDesign, RightWallDesignsScaleAndVanishWithTheWall) {
+  const std::vector<double> masses{1.0, 0.2, 0.05};
+  const std::vector<int> harmonics{3, 2, 1};
+  const ChainDesigns walled = designSprings(masses, 1.0, 0.3, harmonics);
+  ASSERT_EQ(walled.outcome, DesignOutcome::Designed);
+  const ChainDesigns heavy = designSprings({1000.0, 200.0, 50.0}, 10.0, 3.0, harmonics);
+  ASSERT_EQ(heavy.designs.size(), walled.designs.size());
+  for (std::size_t d = 0; d < walled.designs.size(); ++d) {
+    expectInRatio(masses, walled.designs[d], harmonics, 0.3);
+    for (std::size_t i = 0; i < masses.size(); ++i) {
+      EXPECT_NEAR(heavy.designs[d].springs[i] / (10 * walled.designs[d].springs[i]), 1.0, 1e-13);
+    }
+    EXPECT_NEAR(heavy.designs[d].omega0 / (walled.designs[d].omega0 * 0.1), 1.0, 1e-13);
+  }
+  const ChainDesigns free = designSprings(masses, 1.0, harmonics);
+  const ChainDesigns faint = designSprings(masses, 1.0, 1e-9, harmonics);
+  ASSERT_EQ(free.outcome, DesignOutcome::Designed);
+  ASSERT_EQ(faint.designs.size(), free.designs.size());
+  for (std::size_t d = 0; d < free.designs.size(); ++d) {
+    expectInRatio(masses, faint.designs[d], harmonics, 1e-9);
+    for (std::size_t i = 0; i < masses.size(); ++i) {
+      EXPECT_NEAR(faint.designs[d].springs[i] / free.designs[d].springs[i], 1.0, 1e-6);
+    }
+  }
+  // a wall as stiff as it gets is refused as input, never a silent design
+  EXPECT_EQ(designSprings(masses, 1.0, -1.0, harmonics).outcome, DesignOutcome::BadRequest);
+  EXPECT_EQ(designSprings(masses, 1.0, std::nan(""), harmonics).outcome, DesignOutcome::BadRequest);
 }
 
 TEST(ChainDesign, RefusesBadRequests) {

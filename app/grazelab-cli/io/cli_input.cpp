@@ -121,8 +121,8 @@ const OptionSpec kOptions[] = {
                      "(default none).", "K", nullptr},
     {"stop-mass", "With --masses: the mass the stop acts on, 1 to N (default the last).", "S", nullptr},
     {"frequencies", "With --masses: design the springs so that the frequencies are in the ratio "
-                    "n1:n2:...:nN (fastest first), k1 from --springs (default 1); every design is "
-                    "listed.", "n1:...:nN", nullptr},
+                    "n1:n2:...:nN (fastest first), k1 from --springs (default 1) and a right wall's "
+                    "--right-spring kept as given; every design is listed.", "n1:...:nN", nullptr},
     {"design-branch", "With --frequencies: the design to use, 1 to the number found (default 1; "
                       "designs are ordered by k2, largest first).", "I", nullptr},
     {"precision", "Arithmetic of the run: auto (default: double, and the whole run again in "
@@ -359,7 +359,6 @@ std::optional<std::vector<int>> toRatios(const QString& text, std::size_t masses
 
 // the springs of `chain` designed for --frequencies: the chosen design, or why there is none
 Parsed<MassChainInput> designedChain(const OptionValues& options, core::MassChain chain, std::stop_token stop) {
-  if (chain.rightSpring > 0) return {std::nullopt, "--frequencies designs chains without a right wall (--right-spring) for now"};
   QString error;
   const QString request = options.value("frequencies");
   const auto ratios = toRatios(request, chain.masses.size(), error);
@@ -387,7 +386,7 @@ Parsed<MassChainInput> designedChain(const OptionValues& options, core::MassChai
                                 .arg(options.value("design-branch"))};
     }
   }
-  ChainDesignChoice choice{*ratios, core::designSprings(chain.masses, k1, *ratios, stop), branch};
+  ChainDesignChoice choice{*ratios, core::designSprings(chain.masses, k1, chain.rightSpring, *ratios, stop), branch};
   const core::ChainDesigns& designs = choice.designs;
   switch (designs.outcome) {
     case core::DesignOutcome::Stopped: return {std::nullopt, {}};

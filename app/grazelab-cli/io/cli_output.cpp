@@ -254,9 +254,10 @@ JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<C
          {"solutions", V::of(std::int64_t(design->designs.paths))},
          {"complex_or_not_positive", V::of(std::int64_t(design->designs.complexEnds))},
          {"at_infinity", V::of(std::int64_t(design->designs.infiniteEnds))},
-         {"method", V::of("every solution of the design equations followed from a start system with N! "
-                          "roots (homotopy); the positive ones polished in binary128 and checked "
-                          "against the designed chain's own spectrum; ordered by k2, largest first")}});
+         {"method", V::of(std::string("every solution of the design equations followed from a start system with ")
+                              .append(chain.rightSpring > 0 ? "2 N! roots (a right wall: quadratic in 1/k1)" : "N! roots")
+                              .append(" (homotopy); the positive ones polished in binary128 and checked "
+                                      "against the designed chain's own spectrum; ordered by k2, largest first"))}});
   }
   return V::object(
       {{"chain", V::object({{"masses", numbers(chain.masses)},
