@@ -91,7 +91,7 @@ BasicChainState<S> stateAt(const BasicChainDynamics<S>& dynamics, const BasicCha
 template <typename S>
 BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight,
                                   std::type_identity_t<S> horizon, long maxWindows,
-                                  std::optional<std::type_identity_t<S>> releaseJerk) {
+                                  std::optional<BasicLeaving<std::type_identity_t<S>>> leaving) {
   // u_s(t) - d = sum_j P[s][j] (q_j cos w_j t + qdot_j / w_j sin w_j t) - d
   // one per thread, reused: a run's flights then allocate nothing here (a quarter of the time of
   // a small chain's contact went to malloc and free)
@@ -109,10 +109,11 @@ BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const B
   distance.harmonics = dynamics.harmonics;
   distance.omega0 = dynamics.omega0;
   // a flight from the stop (after an impact, u_s = d set exactly), at rest there (a grazing
-  // touch, v_s = 0 too), or released there (f''(0) = F_s / m_s = 0 as well): those Taylor
-  // terms at 0 are 0, not the rounding of the modal sums
-  distance.startTerms = releaseJerk ? 3 : flight.onStop ? (flight.atRest ? 2 : 1) : 0;
-  const BasicFirstZero<S> zero = firstZero<S>(distance, dynamics.period, horizon, maxWindows, releaseJerk);
+  // touch, v_s = 0 too), or released there (f''(0) = F_s / m_s = 0 as well, and f'''(0) when it
+  // leaves by its fourth derivative): those Taylor terms at 0 are 0, not the rounding of the
+  // modal sums
+  distance.startTerms = leaving ? leaving->order : flight.onStop ? (flight.atRest ? 2 : 1) : 0;
+  const BasicFirstZero<S> zero = firstZero<S>(distance, dynamics.period, horizon, maxWindows, leaving);
   switch (zero.kind) {
     case ZeroKind::Crossing: return {ChainContactKind::Impact, zero.t};
     case ZeroKind::Touch: return {ChainContactKind::Touch, zero.t};
@@ -131,7 +132,8 @@ BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const B
   template void stateInto<S>(const BasicChainDynamics<S>&, const BasicChainFlight<S>&, std::type_identity_t<S>,    \
                              BasicChainState<S>&);                                                                 \
   template BasicChainContact<S> firstContact<S>(const BasicChainDynamics<S>&, const BasicChainFlight<S>&,          \
-                                                std::type_identity_t<S>, long, std::optional<std::type_identity_t<S>>);
+                                                std::type_identity_t<S>, long,                                     \
+                                                std::optional<BasicLeaving<std::type_identity_t<S>>>);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

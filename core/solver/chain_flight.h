@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/model/mass_chain.h"
+#include "core/solver/sinusoid_zero.h"
 
 namespace grazelab::core {
 
@@ -93,11 +94,11 @@ using ChainContact = BasicChainContact<double>;
 /// touch (an even-multiplicity zero no sign-change method sees) is never missed, only possibly
 /// called a touch when two crossings lie closer than double resolves. A flight starting on the
 /// stop leaves it by its velocity (or, at v_s = 0, its acceleration; after a release, given as
-/// `releaseJerk`, its third derivative). Commensurate chains are searched over one period (a
+/// `leaving`, its third derivative, or its fourth when the third is 0 too). Commensurate chains are searched over one period (a
 /// contact comes by T); others up to `horizon` or `maxWindows` windows.
 template <typename S>
 BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight,
                                   std::type_identity_t<S> horizon = 0, long maxWindows = 1'000'000,
-                                  std::optional<std::type_identity_t<S>> releaseJerk = std::nullopt);
+                                  std::optional<BasicLeaving<std::type_identity_t<S>>> leaving = std::nullopt);
 
 }  // namespace grazelab::core

@@ -31,29 +31,72 @@ S slowestPeriod(const BasicChainStuckPhase<S>& phase) {
   return slowest;
 }
 
-// u_s''' on the stop at rest with no force (v_s = 0, F_s = 0: a release, or a start there):
-// dF_s/dt / m_s = (k_s v_(s-1) + k_(s+1) v_(s+1)) / m_s, when its sign is resolved; nothing
-// otherwise. Negative: the mass leaves the stop; positive: the springs start pressing it on.
+// The springs' force on mass i over its mass, k_i (x_(i-1) - x_i) + k_(i+1) (x_(i+1) - x_i)
+// over m_i (walls at 0), for x the displacements (the acceleration) or the velocities (its rate),
+// with a bound of its rounding (`error`: the error x carries already, as a multiple of |x|).
 template <typename S>
-std::optional<S> stopJerk(const MassChain& chain, const BasicChainState<S>& at) {
+struct Rate {
+  S value = 0, error = 0;
+};
+template <typename S>
+Rate<S> springsOn(const MassChain& chain, Eigen::Index i, const ChainVector<S>& x, const S& relativeError) {
   using std::abs;
   const Eigen::Index n = chain.size();
-  const Eigen::Index s = chain.stopped() - 1;
-  const S left = s > 0 ? S(S(chain.springs[std::size_t(s)]) * at.v[s - 1]) : S(0);
-  const S right = s + 1 < n ? S(S(chain.springs[std::size_t(s + 1)]) * at.v[s + 1]) : S(0);
-  const S mass = S(chain.masses[std::size_t(s)]);
-  const S jerk = (left + right) / mass;
-  const S error = 4 * std::numeric_limits<S>::epsilon() * (abs(left) + abs(right)) / mass;
-  if (!(abs(jerk) > error)) return std::nullopt;
-  return jerk;
+  const S leftK = S(chain.springs[std::size_t(i)]);
+  const S rightK = S(i + 1 < n ? chain.springs[std::size_t(i + 1)] : chain.rightSpring);
+  const S leftX = i > 0 ? S(x[i - 1]) : S(0), rightX = i + 1 < n ? S(x[i + 1]) : S(0);
+  const S mass = S(chain.masses[std::size_t(i)]);
+  const S size = (leftK * (abs(leftX) + abs(x[i])) + rightK * (abs(rightX) + abs(x[i]))) / mass;
+  return {(leftK * (leftX - x[i]) + rightK * (rightX - x[i])) / mass,
+          (4 * std::numeric_limits<S>::epsilon() + relativeError) * size};
 }
 
-// the jerk a flight leaves the stop by after a release: stopJerk when negative
+// How mass s at rest on the stop with no force (v_s = 0, F_s = 0: a release, or a start there)
+// moves first: u_s''' = (k_s v_(s-1) + k_(s+1) v_(s+1)) / m_s (the force's rate), or when that is
+// 0, u_s'''' = (k_s a_(s-1) + k_(s+1) a_(s+1)) / m_s with a the neighbours' accelerations (the
+// rate of the force's rate: a_s = 0 and v = 0 there). The first whose sign is resolved, as its
+// order and value; nothing when neither is. Negative: the mass leaves the stop; positive: the
+// springs start pressing it on. `computed`: the state comes from a closed form (a touch, a
+// release), its velocities good to some tens of roundings of the motion's speed (each mass's
+// sqrt(2E / m_i)), not exact as a given start's are: a flat touch's rounding-sized velocities
+// must not pass for a jerk.
 template <typename S>
-std::optional<S> releaseJerk(const MassChain& chain, const BasicChainState<S>& at) {
-  const std::optional<S> jerk = stopJerk(chain, at);
-  if (!jerk || !(*jerk < 0)) return std::nullopt;
-  return jerk;
+std::optional<BasicLeaving<S>> stopLeaving(const MassChain& chain, const BasicChainState<S>& at, bool computed) {
+  using std::abs;
+  using std::sqrt;
+  const Eigen::Index n = chain.size();
+  const Eigen::Index s = chain.stopped() - 1;
+  const S mass = S(chain.masses[std::size_t(s)]);
+  const auto next = [&](const auto& rateOf) {
+    const Rate<S> left = s > 0 ? rateOf(s - 1) : Rate<S>{};
+    const Rate<S> right = s + 1 < n ? rateOf(s + 1) : Rate<S>{};
+    const S leftK = S(chain.springs[std::size_t(s)]), rightK = s + 1 < n ? S(chain.springs[std::size_t(s + 1)]) : S(0);
+    const S value = (leftK * left.value + rightK * right.value) / mass;
+    const S error = (4 * std::numeric_limits<S>::epsilon() * (leftK * abs(left.value) + rightK * abs(right.value)) +
+                     leftK * left.error + rightK * right.error) /
+                    mass;
+    return Rate<S>{value, error};
+  };
+  const S energy = computed ? chainEnergy(chain, at) : S(0);
+  const Rate<S> jerk = next([&](Eigen::Index i) {
+    const S speed = sqrt(2 * abs(energy) / S(chain.masses[std::size_t(i)]));
+    return Rate<S>{at.v[i], 64 * std::numeric_limits<S>::epsilon() * speed};
+  });
+  if (abs(jerk.value) > jerk.error) return BasicLeaving<S>{3, jerk.value};
+  // no jerk: a flat point (the neighbours at rest, or balancing): the displacements' own error is
+  // a few tens of roundings (they come from a flight's closed form, as in stopForce)
+  const S carried = 64 * std::numeric_limits<S>::epsilon();
+  const Rate<S> snap = next([&](Eigen::Index i) { return springsOn(chain, i, at.u, carried); });
+  if (abs(snap.value) > snap.error) return BasicLeaving<S>{4, snap.value};
+  return std::nullopt;
+}
+
+// how a flight leaves the stop after a release: stopLeaving when negative
+template <typename S>
+std::optional<BasicLeaving<S>> releaseLeaving(const MassChain& chain, const BasicChainState<S>& at) {
+  const std::optional<BasicLeaving<S>> leaving = stopLeaving(chain, at, true);
+  if (!leaving || !(leaving->value < 0)) return std::nullopt;
+  return leaving;
 }
 
 }  // namespace
@@ -114,7 +157,7 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
       if (S(due) >= from) sampling.sink(due, at(S(due) - from));
     }
   };
-  std::optional<S> jerk;  // set when the flight starts at a release
+  std::optional<BasicLeaving<S>> leaving;  // set when the flight starts at a release
   // reused from flight to flight: no allocation for them once sized
   BasicChainFlight<S> flight;
   State at;
@@ -125,12 +168,12 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
     const BasicStopForce<S> force = stopForce(chain, state);
     const bool onStop = state.u[s] == dynamics.gap && state.v[s] == 0;
     // at rest on the stop with no force either way (a start there): the springs' first change
-    // decides, as at a release: it pulls the mass off (a flight leaving by its jerk) or presses
-    // it on (held)
-    std::optional<S> startJerk;
-    if (onStop && !jerk && !(abs(force.value) > force.error)) startJerk = stopJerk(chain, state);
-    if (startJerk && *startJerk < 0) jerk = startJerk;
-    if (onStop && !jerk && (force.value > force.error || (startJerk && *startJerk > 0))) {
+    // decides, as at a release: it pulls the mass off (a flight leaving by its jerk, or its
+    // fourth derivative where the jerk is 0 too) or presses it on (held)
+    std::optional<BasicLeaving<S>> startLeaving;
+    if (onStop && !leaving && !(abs(force.value) > force.error)) startLeaving = stopLeaving(chain, state, anyEvent);
+    if (startLeaving && startLeaving->value < 0) leaving = startLeaving;
+    if (onStop && !leaving && (force.value > force.error || (startLeaving && startLeaving->value > 0))) {
       if (!anyEvent || lastType != EventType::Stick || lastTime != t) {
         record(EventType::Stick, state, state.v, t);
       }
@@ -151,8 +194,8 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
       samplePiece(t, S(t + release.t), false, stuckAt);
       State released = stuckStateAt(phase, release.t);
       t += release.t;
-      jerk = releaseJerk(chain, released);
-      if (!jerk) return finish(ChainStop::Undecided, released, t);
+      leaving = releaseLeaving(chain, released);
+      if (!leaving) return finish(ChainStop::Undecided, released, t);
       record(EventType::Release, released, released.v, t);
       state = released;
       continue;
@@ -167,8 +210,8 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
     }
     flightInto(dynamics, state, flight);
     const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * slowest);
-    const BasicChainContact<S> contact = firstContact(dynamics, flight, horizon, 1'000'000, jerk);
-    jerk.reset();
+    const BasicChainContact<S> contact = firstContact(dynamics, flight, horizon, 1'000'000, leaving);
+    leaving.reset();
     const bool past = tEnd > 0 && (contact.kind == ChainContactKind::None || contact.kind == ChainContactKind::Budget ||
                                    t + contact.t > tEnd);
     const auto flightAt = [&](const S& offset) { return stateAt(dynamics, flight, offset); };
@@ -195,13 +238,18 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
       at.v[s] = -at.v[s];
       record(EventType::Impact, at, vBefore, when);
     } else {
-      // at rest on the stop: pulled away (grazing) or pressed into it (a stick)
+      // at rest on the stop: pulled away (grazing) or pressed into it (a stick); with no force
+      // either way (a flat touch: a flight that left by its fourth derivative comes back so at
+      // a commensurate chain's period) the force's next rates decide, as at a start there
       at.v[s] = 0;
       const BasicStopForce<S> pressed = stopForce(chain, at);
-      if (pressed.value > pressed.error) {
+      const std::optional<BasicLeaving<S>> flat =
+          abs(pressed.value) > pressed.error ? std::nullopt : stopLeaving(chain, at, true);
+      if (pressed.value > pressed.error || (flat && flat->value > 0)) {
         record(EventType::Stick, at, vBefore, when);
-      } else if (pressed.value < -pressed.error) {
+      } else if (pressed.value < -pressed.error || flat) {
         record(EventType::Grazing, at, vBefore, when);
+        leaving = flat;  // (none after an ordinary grazing: the next flight leaves by its pull)
       } else {
         return finish(ChainStop::Undecided, at, when);
       }

@@ -16,12 +16,12 @@ constexpr S epsilonOf() {
   return std::numeric_limits<S>::epsilon();
 }
 
-// cos x and sin x less their Taylor polynomials of degree below m (m = 0 .. 3): C_m and S_m.
+// cos x and sin x less their Taylor polynomials of degree below m (m = 0 .. 4): C_m and S_m.
 // C_m' = -S_(m-1), S_m' = C_(m-1). Below |x| = 1/2 from their series, so that each keeps its
 // relative precision as x -> 0; above, by subtraction (no cancellation there).
 template <typename S>
 struct Remainders {
-  S C[4], S_[4];
+  S C[5], S_[5];
 };
 // the series' coefficients (-1)^m / (2m + 4)! for C_3 / y^2 and (-1)^(m+1) / (2m + 3)! for S_2 / (x y),
 // as many as S's precision needs below |x| = 1/2 (the first left out under 2^-digits of the lead)
@@ -44,36 +44,38 @@ struct SeriesCoefficients {
 template <typename S>
 Remainders<S> remainders(const S& x, const S& c, const S& s) {
   using std::abs;
-  Remainders<S> r{{c, c - 1, c - 1, c - 1 + x * x / 2}, {s, s, s - x, s - x}};
+  Remainders<S> r{{c, c - 1, c - 1, c - 1 + x * x / 2, c - 1 + x * x / 2},
+                  {s, s, s - x, s - x, s - x + x * x * x / 6}};
   if (abs(x) < S(0.5)) {
-    // the series in y = x^2 by Horner: C_3 = y^2 sum_m (-1)^m y^m / (2m+4)!, S_2 = x y sum_m
-    // (-1)^(m+1) y^m / (2m+3)!
+    // the series in y = x^2 by Horner: C_3 = C_4 = y^2 sum_m (-1)^m y^m / (2m+4)!, S_2 = S_3 =
+    // x y sum_m (-1)^(m+1) y^m / (2m+3)!, and S_4 = S_2 + x^3/6 the same sum from m = 1 (its
+    // tail, so that no leading term cancels)
     static const SeriesCoefficients<S> series;
     constexpr int terms = SeriesCoefficients<S>::kTerms;
     const S y = x * x;
-    S cosine = series.cosine[terms - 1], sine = series.sine[terms - 1];
-    for (int m = terms - 2; m >= 0; --m) {
-      cosine = cosine * y + series.cosine[std::size_t(m)];
-      sine = sine * y + series.sine[std::size_t(m)];
-    }
-    r.C[3] = y * y * cosine;
+    S cosine = series.cosine[terms - 1], tail = series.sine[terms - 1];
+    for (int m = terms - 2; m >= 0; --m) cosine = cosine * y + series.cosine[std::size_t(m)];
+    for (int m = terms - 2; m >= 1; --m) tail = tail * y + series.sine[std::size_t(m)];
+    const S sine = tail * y + series.sine[0];
+    r.C[3] = r.C[4] = y * y * cosine;
     r.C[1] = r.C[2] = r.C[3] - y / 2;
     r.S_[2] = r.S_[3] = x * y * sine;
+    r.S_[4] = x * y * y * tail;
   }
   return r;
 }
 
-// bounds of |C_m(x)| and |S_m(x)| for m = 0 .. 3, and the scale their rounding is relative to
+// bounds of |C_m(x)| and |S_m(x)| for m = 0 .. 4, and the scale their rounding is relative to
 template <typename S>
 struct RemainderScales {
-  S of[4];
+  S of[5];
 };
 template <typename S>
 RemainderScales<S> remainderScales(const S& x) {
   using std::abs;
   const S ax = abs(x);
-  if (ax < S(0.5)) return {{S(1), ax, ax * ax / 2, ax * ax * ax / 6}};
-  return {{S(2), S(2), 2 + ax, 2 + ax + ax * ax / 2}};
+  if (ax < S(0.5)) return {{S(1), ax, ax * ax / 2, ax * ax * ax / 6, ax * ax * ax * ax / 24}};
+  return {{S(2), S(2), 2 + ax, 2 + ax + ax * ax / 2, 2 + ax + ax * ax / 2 + ax * ax * ax / 6}};
 }
 
 // f, its first two derivatives with their rounding errors, and bounds of |f'|, |f''|, |f'''|
@@ -83,7 +85,7 @@ struct Evaluator {
   const BasicSinusoidSum<S>& sum;
   S period = 0;
   Vector& amplitude;  // R_j = hypot(a_j, b_j), in a buffer reused by the thread's searches
-  S bound2 = 0, bound3 = 0, bound4 = 0;
+  S bound2 = 0, bound3 = 0, bound4 = 0, bound5 = 0;
   S fastest = 0;  // the largest w_j
   int highest = 0;  // the highest harmonic, 0 when evaluated mode by mode
   // the plain sum's rounding bounds of f, f', f'' are linear in |t|: roundings[m] + |t| growth[m]
@@ -102,6 +104,7 @@ struct Evaluator {
       bound2 += w * w * amplitude[j];
       bound3 += w * w * w * amplitude[j];
       bound4 += w * w * w * w * amplitude[j];
+      bound5 += w * w * w * w * w * amplitude[j];
       if (w > fastest) fastest = w;
     }
     for (Eigen::Index j = 0; j < f.a.size(); ++j) {
@@ -288,7 +291,7 @@ struct Search {
 template <typename S>
 BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& sum, std::type_identity_t<S> period,
                             std::type_identity_t<S> horizon, long maxWindows,
-                            std::optional<std::type_identity_t<S>> releaseJerk) {
+                            std::optional<BasicLeaving<std::type_identity_t<S>>> leaving) {
   using std::abs;
   using std::max;
   using std::min;
@@ -316,9 +319,12 @@ BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& sum, std::type_identity_t
   // f's return to 0 at T is that start again (searched up to it, a flat return would only halve
   // windows down to the resolution)
   bool flatReturn = false;
-  if (releaseJerk) {
-    if (!(*releaseJerk < 0) || sum.startTerms != 3) return {ZeroKind::Touch, S(0)};
-    t0 = min(S(2 * abs(*releaseJerk) / f.bound4), S(end / 2));
+  if (leaving) {
+    // f(t) <= D t^k/k! + B_(k+1) t^(k+1)/(k+1)! < 0 below (k+1)|D|/B_(k+1): half of that
+    const int k = leaving->order;
+    if (!(leaving->value < 0) || (k != 3 && k != 4) || sum.startTerms != k) return {ZeroKind::Touch, S(0)};
+    t0 = min(S(S(k + 1) * abs(leaving->value) / (2 * (k == 3 ? f.bound4 : f.bound5))), S(end / 2));
+    flatReturn = period > 0 && k == 4;
     start = f.at(t0);
     if (!(start.f < -start.error)) return {ZeroKind::Touch, S(0)};
   } else if (abs(start.f) <= start.error) {
@@ -382,7 +388,8 @@ BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& sum, std::type_identity_t
 
 #define GRAZELAB_INSTANTIATE(S)                                                                              \
   template BasicFirstZero<S> firstZero<S>(const BasicSinusoidSum<S>&, std::type_identity_t<S>,                 \
-                                          std::type_identity_t<S>, long, std::optional<std::type_identity_t<S>>);
+                                          std::type_identity_t<S>, long,                                      \
+                                          std::optional<BasicLeaving<std::type_identity_t<S>>>);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

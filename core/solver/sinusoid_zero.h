@@ -22,9 +22,9 @@ struct BasicSinusoidSum {
   /// sincos by angle addition (its roundings counted in the error bound); empty otherwise
   std::vector<int> harmonics;
   S omega0 = 0;
-  /// f's first `startTerms` Taylor coefficients at 0 are 0 exactly (0 .. 3): 1 when f starts on
+  /// f's first `startTerms` Taylor coefficients at 0 are 0 exactly (0 .. 4): 1 when f starts on
   /// 0 (a flight from the stop: offset = -sum a_j), 2 when also at rest there (f'(0) = 0), 3 at a
-  /// release (f''(0) = 0 too). f is then evaluated as sum a_j C_k(w_j t) + b_j S_k(w_j t), the
+  /// release (f''(0) = 0 too), 4 at a release with no jerk either (f'''(0) = 0). f is then evaluated as sum a_j C_k(w_j t) + b_j S_k(w_j t), the
   /// cosines and sines less their Taylor terms below degree k (offset unused), so that near t = 0
   /// (and near a period's end, by periodicity) its value keeps its relative precision instead of
   /// being lost in the rounding of offset + sum a_j
@@ -38,6 +38,14 @@ enum class ZeroKind {
   Touch,     ///< f reaches 0 with f' = 0 within what the precision resolves (an even-multiplicity zero)
   None,      ///< never: f is periodic with `period` and stays below 0 over a whole period
   Budget,    ///< not within the horizon or the window budget
+};
+
+/// How f leaves 0 at t = 0 when its first `order` derivatives there are 0 (f = f' = f'' = 0 at
+/// a release, f''' too at a flat one): by f^(order)(0) = `value` < 0.
+template <typename S>
+struct BasicLeaving {
+  int order = 3;  ///< 3 or 4 (= the sum's startTerms)
+  S value = 0;
 };
 
 template <typename S>
@@ -58,13 +66,15 @@ using FirstZero = BasicFirstZero<double>;
 /// the answer is a Touch at 0. A periodic f (`period` > 0) is searched over one period; any other
 /// up to `horizon` or `maxWindows` windows.
 ///
-/// `releaseJerk` (< 0, with startTerms = 3) marks an f that starts where a held mass is released:
-/// f, f' and f'' are 0 there and f leaves 0 by its third derivative; f(t) <= f'''(0) t^3/6 +
-/// B4 t^4/24 < 0 rules out a zero below 4|f'''(0)|/B4.
+/// `leaving` (with startTerms = its order, 3 or 4) marks an f that starts where a held mass is
+/// released: f and its first order - 1 derivatives are 0 there and f leaves 0 by the next one,
+/// D = f^(k)(0) < 0; f(t) <= D t^k/k! + B_(k+1) t^(k+1)/(k+1)! < 0 rules out a zero below
+/// (k+1)|D|/B_(k+1). At k = 4 a periodic f comes back to 0 from below at its period's end (a
+/// flat return, as at k = 2: a touch at T).
 /// In double, long double or binary128 (Quad): the rounding bounds and the resolution follow S.
 template <typename S>
 BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& f, std::type_identity_t<S> period,
                             std::type_identity_t<S> horizon, long maxWindows = 1'000'000,
-                            std::optional<std::type_identity_t<S>> releaseJerk = std::nullopt);
+                            std::optional<BasicLeaving<std::type_identity_t<S>>> leaving = std::nullopt);
 
 }  // namespace grazelab::core

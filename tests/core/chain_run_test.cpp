@@ -303,6 +303,52 @@ TEST(ChainRun, AStartAtRestOnTheStopLeavesItOrSticks) {
   EXPECT_EQ(pressed.contacts, 5);
 }
 
+// A flat start: mass s at rest on the stop with no force (its neighbour at d too) and no jerk
+// (everything at rest). Its fourth derivative, (k_s a_(s-1)) / m_s with a the neighbour's
+// acceleration, decides: pulled off (mass 1 behind d) it leaves as t^4, and on a resonant chain
+// comes back just so at every period T (a grazing with no force, leaving the same way again),
+// in double and in binary128; pushed on (mass 1 beyond d) it is held at once and released
+// later. Until the fourth derivative was taken, both were undecided at t = 0.
+TEST(ChainRun, AFlatStartLeavesByItsFourthDerivativeOrIsHeld) {
+  const MassChain chain = designed({1.0, 0.2, 0.05}, {3, 2, 1});
+  const double period = chainDynamics(chain).period;
+  const ChainState pulled{Eigen::Vector3d(0.3, 1.0, 1.0), Eigen::Vector3d::Zero()};
+  const ChainRun run = runChain(chain, pulled, 4);
+  ASSERT_EQ(run.events.size(), 4u) << int(run.stop);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(run.events[k].type, EventType::Grazing) << k;
+    EXPECT_NEAR(run.events[k].t, double(k + 1) * period, 1e-12 * period) << k;
+    EXPECT_NEAR(run.events[k].u[0], 0.3, 1e-12) << k;  // the start again
+  }
+  BasicChainState<Quad> pulledQuad{ChainVector<Quad>(3), ChainVector<Quad>::Zero(3)};
+  pulledQuad.u << Quad(0.3), Quad(1), Quad(1);
+  const BasicChainRun<Quad> quad = runChain<Quad>(chain, pulledQuad, 2);
+  ASSERT_EQ(quad.events.size(), 2u) << int(quad.stop);
+  EXPECT_EQ(quad.events[1].type, EventType::Grazing);
+  EXPECT_NEAR(double(quad.events[1].t), 2 * period, 1e-12 * period);
+
+  const ChainRun pushed = runChain(chain, ChainState{Eigen::Vector3d(1.7, 1.0, 1.0), Eigen::Vector3d::Zero()}, 3);
+  ASSERT_GE(pushed.events.size(), 2u) << int(pushed.stop);
+  EXPECT_EQ(pushed.events[0].type, EventType::Stick);
+  EXPECT_EQ(pushed.events[0].t, 0);
+  EXPECT_EQ(pushed.events[1].type, EventType::Release);
+  EXPECT_GT(pushed.events[1].t, 0);
+
+  // N = 2 (the stop on mass 2, mass 1 at rest on d): the two-mass solver's events, detuned
+  const Model model{1.0, 0.3, 1.0, 0.7, 1.0, std::nullopt};
+  const MassChain two{{1.0, 0.3}, {1.0, 0.7}, 0, 0, 1.0};
+  Request request;
+  request.initial = {1.0, 1.0, 0.0, 0.0};
+  request.maxContacts = 6;
+  const Result reference = simulate(model, request);
+  const ChainRun flat = runChain(two, ChainState{Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d::Zero()}, 6);
+  ASSERT_EQ(flat.events.size(), reference.events.size()) << int(flat.stop);
+  for (std::size_t k = 0; k < flat.events.size(); ++k) {
+    EXPECT_EQ(flat.events[k].type, reference.events[k].type) << k;
+    EXPECT_NEAR(flat.events[k].t, reference.events[k].t, 1e-12 * (1 + reference.events[k].t)) << k;
+  }
+}
+
 TEST(ChainRun, ScalesWithTheChain) {
   // masses x 1000, springs x 10, gap x 7: times x 10, displacements x 7
   std::mt19937 random(3);
