@@ -12,7 +12,7 @@ column names, maps a dict of 2-D arrays (row = y, column = x).
 Numbers are taken as Python or NumPy numbers (0-d arrays too), ``fractions.Fraction`` (the exact
 ratio, to 40 digits) or decimal text (read in the run's precision); a keyword that is not the
 function's, or a list where a number is expected, raises ``TypeError``. Invalid values raise
-``ValueError`` with the command line's one-line message; Ctrl+C stops a
+``ValueError`` with the command line's one-line message, its options named by their keywords; Ctrl+C stops a
 running computation within a second and raises ``KeyboardInterrupt``; the GIL is released while
 the core computes, so threads run computations at once. Long calls take ``progress``, a callable
 ``progress(fraction, text)`` (fraction None when not known), called on the calling thread.
@@ -91,10 +91,13 @@ def _command(command, options, progress=None, events=False, positional=(), disca
 
 
 def _message(line):
+    """The command line's one-line message in the module's words: its prefix dropped and each
+    option named by its keyword (``--glo-weights`` -> ``glo_weights``)."""
     for prefix in ("grazelab-cli: ", "grazelab-cli report: ", "grazelab-cli stability: "):
         if line.startswith(prefix):
-            return line[len(prefix):]
-    return line
+            line = line[len(prefix):]
+            break
+    return _convert.keywords_of_options(line)
 
 
 def _notes(lines):
@@ -299,10 +302,13 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
             and progress is None and k2 is None and t_end is None and samples is None):
         # a short run of a designed chain: the same command called directly, its numbers handed
         # over as numbers (None when one is of a type it does not take: then as text, below)
-        answer = _simulate_here(("m1", m1, "m2", m2, "k1", k1, "gap", gap, "branch", branch,
-                                 "precision", precision, "glo", glo, "onepp", onepp, "state", state,
-                                 "perturb", perturb, "contacts", contacts, "search-steps", search_steps,
-                                 "trust", trust), Result, events, MAX_EVENTS, not events)
+        try:
+            answer = _simulate_here(("m1", m1, "m2", m2, "k1", k1, "gap", gap, "branch", branch,
+                                     "precision", precision, "glo", glo, "onepp", onepp, "state", state,
+                                     "perturb", perturb, "contacts", contacts, "search-steps", search_steps,
+                                     "trust", trust), Result, events, MAX_EVENTS, not events)
+        except ValueError as error:
+            raise ValueError(_message(str(error))) from None
         if answer is not None:
             result, decimals = answer
             if decimals is None and result["trust"]["verdict"] != "unreliable":

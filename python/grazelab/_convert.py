@@ -10,6 +10,7 @@ import json
 import math
 import numbers
 import os as _os
+import re
 
 import numpy as _np
 
@@ -17,6 +18,14 @@ import numpy as _np
 _BARE = {"quick", "onepp"}
 # flags whose parts are joined by ':' (an axis NAME:from:to:count, an energy range A:B) or '/'
 _JOINED_BY = {"x": ":", "y": ":", "energy_range": ":", "shard": "/"}
+
+
+_OPTION = re.compile(r"(?<![\w-])--([a-z][a-z0-9]*(?:-[a-z0-9]+)*)")
+
+
+def keywords_of_options(text):
+    """A command line's message in the module's words: each ``--flag-name`` as ``flag_name``."""
+    return _OPTION.sub(lambda found: found.group(1).replace("-", "_"), text)
 
 
 class Result(dict):

@@ -195,7 +195,7 @@ def test_a_map_of_n_masses_equals_the_cli_npy(cli, tmp_path):
     assert over.spec["start"]["balancing_weight"] == "w3" and np.all(over.arrays["horizon"] >= 0)
     with pytest.raises(ValueError, match="two weight axes"):
         gl.map(**weights, x="w1:0:1:2", y="v3:0:1:2")
-    with pytest.raises(ValueError, match="given by --masses"):
+    with pytest.raises(ValueError, match="given by masses"):
         gl.map(x="u1:0:1:2", y="v1:0:1:2", glo_weights=[1, 0])
 
 

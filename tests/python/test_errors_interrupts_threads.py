@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
-"""Refusals are the command line's, Ctrl+C stops a computation, threads compute at once."""
+"""Refusals are the command line's (in the module's words), Ctrl+C stops a computation, threads compute at once."""
 
 import os
 import signal
@@ -32,7 +32,9 @@ def test_invalid_input_raises_value_error_with_the_cli_message(cli, call, flags)
     cli_line = done.stderr.strip().splitlines()[-1]
     with pytest.raises(ValueError) as raised:
         call()
-    assert cli_line == "grazelab-cli: " + str(raised.value)
+    # the same line, its options named by their keywords (--max-impacts: max_impacts)
+    assert gl._convert.keywords_of_options(cli_line) == "grazelab-cli: " + str(raised.value)
+    assert "--" not in str(raised.value)
     assert not os.path.exists("/tmp/never.json")
 
 
@@ -60,6 +62,16 @@ def test_functions_have_python_signatures_and_refuse_what_is_not_theirs():
         gl.simulate(glo=[0.5])
     with pytest.raises(TypeError, match="expected a number"):
         gl.simulate(contacts=True, m2=True)
+    # a bad value: ValueError in the module's words (keywords, not the command line's flags),
+    # on the direct path and on the text path alike
+    for call in (lambda: gl.simulate(glo=0.5, onepp=6), lambda: gl.simulate(glo=0.5, onepp=6, t_end=3)):
+        with pytest.raises(ValueError, match=r"^give one of glo, onepp, state") as raised:
+            call()
+        assert "--" not in str(raised.value)
+    with pytest.raises(ValueError, match="^search_steps"):
+        gl.simulate(search_steps=0)
+    with pytest.raises(ValueError, match="describe a chain given by masses$"):
+        gl.map(x="u1:0:1:2", y="v1:0:1:2", glo_weights=[1, 0])
     # the module's names only
     assert [name for name in dir(gl) if not name.startswith("_")] == sorted(
         set(gl.__all__) | {"map", "help"})
