@@ -7,6 +7,8 @@
 #include <QMouseEvent>
 #include <QTest>
 #include <QTimer>
+#include <QDeadlineTimer>
+#include <QJsonArray>
 #include <QXYSeries>
 
 #include <algorithm>
@@ -19,6 +21,8 @@
 #include "ui/pictures/heat_map.h"
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/plot_view.h"
+#include "ui/widgets/chain_editor.h"
+#include "ui/widgets/parameter_panel.h"
 
 using namespace grazelab::ui;
 using grazelab::ui::testing::openTestWindow;
@@ -73,7 +77,9 @@ class ScenesTest : public QObject {
                            kind == PlotKind::FrequencyEnergy ||
                            kind == PlotKind::GrazingMaximum || kind == PlotKind::SpreadAgainstSize ||
                            kind == PlotKind::FlightHistogram || kind == PlotKind::DetunedFlights ||
-                           kind == PlotKind::ResonantFlights;
+                           kind == PlotKind::ResonantFlights || kind == PlotKind::ChainStopTrace ||
+                           kind == PlotKind::ChainFlights || kind == PlotKind::ChainPhase ||
+                           kind == PlotKind::ChainDetunedFlights;
         if (curve) QVERIFY2(m_window->displayed()->request->job.figures.count(kind), qPrintable(name));
       }
       QVERIFY2(!scene.description().isEmpty(), qPrintable(name));
@@ -264,6 +270,61 @@ class ScenesTest : public QObject {
     const auto& model = m_window->displayed()->request->job.spec.model;
     const auto modes = grazelab::core::computeModes(model);
     QVERIFY(std::abs(modes.omegaFast / modes.omegaSlow - m_window->params().frequencyRatio) < 1e-9);
+  }
+
+  // a chain of N masses (issue 33): designed for 1:2:3 its frequencies are in the ratio and no
+  // flight from the stop outlasts T (Theorem 2.3 for N = 3), while the same chain detuned has
+  // flights past T; an impossible resonance for the masses is refused with a sentence; four
+  // masses in 1:2:3:4 are designed and run the same way; the chain travels in the session
+  void threeMassesStayBelowTheirPeriodAndImpossibleResonancesAreRefused() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("three-masses")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const SceneJob* job = &m_window->displayed()->request->job;
+    QVERIFY2(job->ok, qPrintable(job->message));
+    QVERIFY2(job->chainSummary.contains(QStringLiteral("3 : 2 : 1")), qPrintable(job->chainSummary));
+    QVERIFY2(job->chainStatus.contains(QStringLiteral("200 contacts")), qPrintable(job->chainStatus));
+    QCOMPARE(job->chainDesigns, 6);
+    const auto flights = figure(*m_window, PlotKind::ChainFlights).curve;
+    QVERIFY(flights.size() > 150);
+    for (const QPointF& point : flights) QVERIFY2(point.y() <= 1.0 + 1e-12, qPrintable(QString::number(point.y())));
+    double longest = 0;
+    for (const QPointF& point : figure(*m_window, PlotKind::ChainDetunedFlights).curve) longest = std::max(longest, point.y());
+    QVERIFY2(longest > 1.01, qPrintable(QString::number(longest)));
+    // the trace stays at or below the stop, and touches it at each contact
+    for (const QPointF& point : figure(*m_window, PlotKind::ChainStopTrace).curve) QVERIFY(point.y() <= 1.0 + 1e-12);
+
+    Params params = m_window->params();
+    params.massChain.masses = {1.0, 1.0, 1.0};
+    m_window->setParams(params);
+    // refused: the window says why (status line and panel), the last chain stays drawn
+    QDeadlineTimer deadline(60000);
+    while (m_window->problem().isEmpty() && !deadline.hasExpired()) QTest::qWait(5);
+    const QString refusal = QStringLiteral("No chain with these masses has the frequencies in the ratio 1:2:3");
+    QVERIFY2(m_window->problem().contains(refusal), qPrintable(m_window->problem()));
+    QVERIFY2(m_window->parameterPanel()->chainEditor()->summary().contains(refusal),
+             qPrintable(m_window->parameterPanel()->chainEditor()->summary()));
+
+    params.massChain = MassChainParams{}.resized(4);
+    params.massChain.masses = {1.0, 0.6, 0.36, 0.216};
+    params.massChain.harmonics = {4, 3, 2, 1};
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    job = &m_window->displayed()->request->job;
+    QVERIFY2(job->ok, qPrintable(job->message));
+    QVERIFY2(job->chainSummary.contains(QStringLiteral("4 : 3 : 2 : 1")), qPrintable(job->chainSummary));
+    for (const QPointF& point : figure(*m_window, PlotKind::ChainFlights).curve) QVERIFY(point.y() <= 1.0 + 1e-12);
+
+    // the whole chain is part of the parameters a session saves, and reads back the same
+    QString error;
+    const auto back = paramsFromJson(toJson(m_window->params()), Params{}, &error);
+    QVERIFY2(back.has_value(), qPrintable(error));
+    QVERIFY(back->massChain == m_window->params().massChain);
+    QJsonObject bad = toJson(m_window->params());
+    QJsonObject chain = bad.value(QStringLiteral("massChain")).toObject();
+    chain.insert(QStringLiteral("weights"), QJsonArray{0.5, 0.5, 0.5, 0.5});
+    bad.insert(QStringLiteral("massChain"), chain);
+    QVERIFY(!paramsFromJson(bad, Params{}, &error));
+    QVERIFY2(error.contains(QStringLiteral("sum")), qPrintable(error));
   }
 
   // the animated chain: plays forward at its rate, steps from contact to contact, and its time

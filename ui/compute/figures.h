@@ -30,6 +30,10 @@ enum class PlotKind {
   Landscape,        ///< a map over the grazing-start plane, the run's section over it
   ModesAtlas,       ///< the periodic impacting families: 2 pi / T against log E, click an orbit
   Multipliers,      ///< the chosen orbit's multipliers against the unit circle
+  ChainStopTrace,   ///< N masses: the stopped mass's u_s/d against t/T, the stop and the contacts
+  ChainFlights,     ///< N masses: free flights from the stop over T (the bound of a resonant chain)
+  ChainPhase,       ///< N masses: the stopped mass's phase portrait
+  ChainDetunedFlights,  ///< N masses: the same start on the chain detuned, flights over T
 };
 
 /// A curve a scene computes itself (no run needed), drawn by a CurvePlot: the curve, the

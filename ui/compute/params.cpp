@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string_view>
+#include <tuple>
 
 namespace grazelab::ui {
 namespace {
@@ -22,7 +24,119 @@ constexpr std::array kAllKeys = {ParamKey::Lambda, ParamKey::M1,           Param
 constexpr std::array kAllDirections = {PerturbDirection::V2, PerturbDirection::U2,
                                        PerturbDirection::U1, PerturbDirection::V1};
 
+QJsonArray numbersArray(const auto& values) {
+  QJsonArray array;
+  for (const auto value : values) array.append(double(value));
+  return array;
+}
+
+QJsonObject toJson(const MassChainParams& chain) {
+  return QJsonObject{{QStringLiteral("masses"), numbersArray(chain.masses)},
+                     {QStringLiteral("springs"), numbersArray(chain.springs)},
+                     {QStringLiteral("harmonics"), numbersArray(chain.harmonics)},
+                     {QStringLiteral("designBranch"), chain.designBranch},
+                     {QStringLiteral("stopMass"), chain.stopMass},
+                     {QStringLiteral("weights"), numbersArray(chain.weights)}};
+}
+
+// numbers, each finite and within [low, high]; nothing when any is not
+std::optional<std::vector<double>> numbersOf(const QJsonValue& value, double low, double high) {
+  if (!value.isArray()) return std::nullopt;
+  std::vector<double> numbers;
+  for (const QJsonValue& item : value.toArray()) {
+    if (!item.isDouble() || !std::isfinite(item.toDouble()) || item.toDouble() < low || item.toDouble() > high) {
+      return std::nullopt;
+    }
+    numbers.push_back(item.toDouble());
+  }
+  return numbers;
+}
+
+std::optional<MassChainParams> massChainFromJson(const QJsonObject& object, const MassChainParams& base,
+                                                 QString& error) {
+  MassChainParams chain = base;
+  const QStringList known{QStringLiteral("masses"), QStringLiteral("springs"), QStringLiteral("harmonics"),
+                          QStringLiteral("designBranch"), QStringLiteral("stopMass"), QStringLiteral("weights")};
+  for (const QString& name : object.keys()) {
+    if (!known.contains(name)) {
+      error = QStringLiteral("unknown field \"massChain.%1\" (known: %2)").arg(name, known.join(QStringLiteral(", ")));
+      return std::nullopt;
+    }
+  }
+  if (object.contains(QStringLiteral("masses"))) {
+    const auto masses = numbersOf(object.value(QStringLiteral("masses")), 1e-6, 1e6);
+    if (!masses || masses->empty() || int(masses->size()) > MassChainParams::kMaxMasses || masses->front() <= 0) {
+      error = QStringLiteral("\"massChain.masses\" must be 1 to %1 masses in [1e-6, 1e6]").arg(MassChainParams::kMaxMasses);
+      return std::nullopt;
+    }
+    chain = chain.resized(int(masses->size()));
+    chain.masses = *masses;
+  }
+  const std::size_t n = chain.masses.size();
+  if (object.contains(QStringLiteral("springs"))) {
+    const auto springs = numbersOf(object.value(QStringLiteral("springs")), 1e-6, 1e6);
+    if (!springs || springs->size() != n) {
+      error = QStringLiteral("\"massChain.springs\" must be %1 springs in [1e-6, 1e6] (one per mass)").arg(n);
+      return std::nullopt;
+    }
+    chain.springs = *springs;
+  }
+  if (object.contains(QStringLiteral("harmonics"))) {
+    const auto harmonics = numbersOf(object.value(QStringLiteral("harmonics")), 1, 64);
+    bool whole = harmonics && (harmonics->empty() || harmonics->size() == n);
+    for (std::size_t j = 0; whole && harmonics && j < harmonics->size(); ++j) {
+      whole = (*harmonics)[j] == std::floor((*harmonics)[j]) && (j == 0 || (*harmonics)[j] < (*harmonics)[j - 1]);
+    }
+    if (!whole) {
+      error = QStringLiteral("\"massChain.harmonics\" must be empty or %1 whole numbers, fastest first").arg(n);
+      return std::nullopt;
+    }
+    chain.harmonics.assign(harmonics->begin(), harmonics->end());
+  }
+  for (const auto& [name, field, high] : {std::tuple{"designBranch", &chain.designBranch, 720},
+                                          std::tuple{"stopMass", &chain.stopMass, int(n)}}) {
+    const QJsonValue value = object.value(QString::fromLatin1(name));
+    if (value.isUndefined()) continue;
+    const double number = value.toDouble(-1);
+    const int low = std::string_view(name) == "stopMass" ? 0 : 1;
+    if (!value.isDouble() || number != std::floor(number) || number < low || number > high) {
+      error = QStringLiteral("\"massChain.%1\" must be a whole number from %2 to %3").arg(QString::fromLatin1(name)).arg(low).arg(high);
+      return std::nullopt;
+    }
+    *field = int(number);
+  }
+  if (chain.stopMass > int(n)) chain.stopMass = 0;
+  if (object.contains(QStringLiteral("weights"))) {
+    const auto weights = numbersOf(object.value(QStringLiteral("weights")), -1e3, 1e3);
+    double sum = 0;
+    if (weights) for (double w : *weights) sum += w;
+    if (!weights || weights->size() != n || !(std::abs(sum - 1) <= 1e-9)) {
+      error = QStringLiteral("\"massChain.weights\" must be %1 numbers summing to 1").arg(n);
+      return std::nullopt;
+    }
+    chain.weights = *weights;
+  }
+  if (chain.springs.size() != n || chain.weights.size() != n || (!chain.harmonics.empty() && chain.harmonics.size() != n)) {
+    error = QStringLiteral("\"massChain\": give springs, harmonics and weights for %1 masses").arg(n);
+    return std::nullopt;
+  }
+  return chain;
+}
+
 }  // namespace
+
+MassChainParams MassChainParams::resized(int count) const {
+  MassChainParams chain = *this;
+  count = std::clamp(count, 1, kMaxMasses);
+  const auto n = std::size_t(count);
+  chain.masses.resize(n, masses.empty() ? 1.0 : masses.back());
+  chain.springs.resize(n, 1.0);
+  chain.weights.assign(n, 1.0 / count);
+  if (chain.harmonics.size() != n) chain.harmonics.clear();
+  if (chain.stopMass > count) chain.stopMass = 0;
+  if (n != masses.size()) chain.designBranch = 1;
+  return chain;
+}
 
 double Params::value(ParamKey key) const {
   switch (key) {
@@ -90,6 +204,7 @@ QJsonObject toJson(const Params& params) {
                 QString::fromUtf8(core::toString(params.branch).data()));
   const Params::MapRegion& r = params.mapRegion;
   object.insert(QStringLiteral("mapRegion"), QJsonArray{r.u1From, r.u1To, r.v1From, r.v1To});
+  object.insert(QStringLiteral("massChain"), toJson(params.massChain));
   return object;
 }
 
@@ -102,7 +217,7 @@ std::optional<Params> paramsFromJson(const QJsonObject& object, const Params& ba
   // a misspelt name would otherwise be dropped and its run replaced by another ("horizon"
   // for "contacts" ran 200 contacts where a million were asked)
   QStringList known{QStringLiteral("direction"), QStringLiteral("resonantDesign"), QStringLiteral("branch"),
-                    QStringLiteral("mapRegion")};
+                    QStringLiteral("mapRegion"), QStringLiteral("massChain")};
   for (ParamKey key : kAllKeys) known.append(jsonKey(key));
   for (const QString& name : object.keys()) {
     if (!known.contains(name)) {
@@ -155,6 +270,13 @@ std::optional<Params> paramsFromJson(const QJsonObject& object, const Params& ba
       return fail(QStringLiteral("\"mapRegion\" must be [u1From, u1To, v1From, v1To] with From < To"));
     }
     params.mapRegion = {r[0].toDouble(), r[1].toDouble(), r[2].toDouble(), r[3].toDouble()};
+  }
+  if (const QJsonValue value = object.value(QStringLiteral("massChain")); !value.isUndefined()) {
+    if (!value.isObject()) return fail(QStringLiteral("\"massChain\" must be an object"));
+    QString problem;
+    const auto chain = massChainFromJson(value.toObject(), params.massChain, problem);
+    if (!chain) return fail(problem);
+    params.massChain = *chain;
   }
   return params;
 }

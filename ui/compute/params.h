@@ -6,6 +6,7 @@
 #include <QString>
 
 #include <optional>
+#include <vector>
 
 #include "core/model/resonance.h"
 
@@ -27,6 +28,27 @@ enum class ParamKey {
 
 /// Which component of the start state the perturbation moves.
 enum class PerturbDirection { V2, U2, U1, V1 };
+
+/// A chain of N masses (the N-mass scenes): its masses, its springs as given or designed for a
+/// resonance, the stop's mass, and the grazing linear orbit its runs start from.
+struct MassChainParams {
+  static constexpr int kMaxMasses = 8;
+  std::vector<double> masses{1.0, 0.2, 0.05};  ///< m1 ... mN
+  std::vector<double> springs{1.0, 1.0, 1.0};  ///< k1 ... kN as given (designed: only k1 is used)
+  /// the resonance asked for, fastest mode first (3, 2, 1 for 1:2:3); empty: the springs as given
+  std::vector<int> harmonics{3, 2, 1};
+  int designBranch = 1;  ///< which design of the resonance (1-based, ordered by k2)
+  int stopMass = 0;      ///< 1-based; 0: the last mass
+  /// GLO_lambda's weights, fastest mode first, summing to 1: the run starts on it at its touch
+  /// (pushed by Params::perturbation along v_s)
+  std::vector<double> weights{0.5, 0.3, 0.2};
+
+  int size() const { return int(masses.size()); }
+  /// The chain with `count` masses: new masses copy the last, new springs 1, the weights
+  /// spread evenly, a resonance of another length dropped (springs as given).
+  MassChainParams resized(int count) const;
+  friend bool operator==(const MassChainParams&, const MassChainParams&) = default;
+};
 
 /// Everything that decides a run, as plain values. Scenes read what they need.
 struct Params {
@@ -50,6 +72,7 @@ struct Params {
   };
   MapRegion mapRegion;
   core::Branch branch = core::Branch::Upper;
+  MassChainParams massChain;  ///< the N-mass scenes' chain (the others ignore it)
 
   double value(ParamKey key) const;
   void setValue(ParamKey key, double value);

@@ -41,6 +41,7 @@ Params enterScene(const Params& own, const Params& chain) {
   params.k2 = chain.k2;
   params.resonantDesign = chain.resonantDesign;
   params.branch = chain.branch;
+  params.massChain = chain.massChain;
   return params;
 }
 
@@ -97,7 +98,7 @@ std::vector<std::unique_ptr<Scene>> makeScenes() {
   const std::vector<Scene::Spec (*)()> table = {
       grazingFamilyScene, onePeriodicScene, perturbationScene, randomStartsScene,
       stickingScene,      detunedScene,     nearGrazingScene,  landscapeScene,
-      accuracyScene,      modesScene,
+      accuracyScene,      modesScene,       threeMassesScene,
   };
   std::vector<std::unique_ptr<Scene>> scenes;
   for (auto make : table) scenes.push_back(std::make_unique<Scene>(make()));

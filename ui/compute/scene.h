@@ -44,6 +44,9 @@ class Scene {
     QString text;
     Params defaults;
     QList<ParamKey> parameters;
+    /// a scene of a chain of N masses: the panel edits Params::massChain (ChainEditor) instead
+    /// of the two-mass chain
+    bool massChain = false;
     QList<PlotKind> plots;
     /// everything the scene computes for these parameters (derived.ok is true): its curves,
     /// surveys and the run's start. Called by the worker, never on the GUI thread; long loops
@@ -65,6 +68,7 @@ class Scene {
   QString description() const { return m_spec.text; }
   Params defaults() const { return m_spec.defaults; }
   QList<ParamKey> parameters() const { return m_spec.parameters; }
+  bool massChain() const { return m_spec.massChain; }
   QList<PlotKind> plots() const { return m_spec.plots; }
   /// `cache`: what the scene kept from before (none: it starts afresh).
   SceneJob build(const Params& params, const DerivedModel& derived, std::stop_token stop = {},

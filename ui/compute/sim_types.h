@@ -45,6 +45,16 @@ struct SceneJob {
   std::optional<core::PeriodicOrbit<double>> orbit;
   /// slider ranges that depend on the chain (the admissible T/T2 of the 1IPP family)
   std::map<ParamKey, std::pair<double, double>> sliderRanges;
+  /// the N-mass scenes: what the chain is (its springs, frequencies and their ratio, period) or
+  /// why there is none (`chainRefused`), and how many designs its resonance has
+  QString chainSummary;
+  int chainDesigns = 0;
+  bool chainRefused = false;
+  /// the N-mass scenes' run in words for the status line (its contacts, end, energy, trust):
+  /// the two-mass run behind them is none
+  QString chainStatus;
+  std::optional<core::Trust> chainTrust;
+  double chainTFinal = 0;  ///< the N-mass run's end [time]
 };
 
 /// What a scene's own computation has so far, with the fraction of it done (0 when unknown).

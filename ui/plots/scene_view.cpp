@@ -44,7 +44,11 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::SpreadAgainstSize:
     case PlotKind::FlightHistogram:
     case PlotKind::DetunedFlights:
-    case PlotKind::ResonantFlights: return new CurvePlot(kind, parent);
+    case PlotKind::ResonantFlights:
+    case PlotKind::ChainStopTrace:
+    case PlotKind::ChainFlights:
+    case PlotKind::ChainPhase:
+    case PlotKind::ChainDetunedFlights: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);
     case PlotKind::WorkPrecision: return new AccuracyView(parent);
     case PlotKind::Landscape: return new LandscapeView(parent);

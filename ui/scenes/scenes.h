@@ -17,6 +17,7 @@ Scene::Spec nearGrazingScene();     // Poincaré section
 Scene::Spec landscapeScene();       // a map of first flights over the grazing-start plane
 Scene::Spec accuracyScene();        // methods against the exact solver
 Scene::Spec modesScene();           // nonlinear normal modes: periodic impacting families
+Scene::Spec threeMassesScene();     // a chain of N masses: 1:2:3 and what carries over
 
 /// The landscape's map for these parameters: the grazing-start plane over the region of
 /// params.mapRegion (u1 in units of d, v1 in units of d w2), 256 x 256 runs of 10 contacts.

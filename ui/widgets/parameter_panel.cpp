@@ -14,6 +14,7 @@
 #include <QVBoxLayout>
 
 #include "core/model/resonance.h"
+#include "ui/widgets/chain_editor.h"
 #include "ui/widgets/eliding_combo_box.h"
 #include "ui/compute/scene.h"
 #include "ui/widgets/slider_spin.h"
@@ -74,6 +75,27 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   m_feasibility->setToolTip(tr("A 1:2 resonant chain exists only for m₂/m₁ ≤ 9/16."));
   chainLayout->addWidget(m_feasibility);
   layout->addWidget(chain);
+  m_chainBox = chain;
+
+  // the chain of N masses (the N-mass scenes, in place of the two-mass chain)
+  auto* massChain = new QGroupBox(tr("Chain of N masses"), this);
+  massChain->setObjectName(QStringLiteral("massChainBox"));
+  auto* massChainLayout = new QVBoxLayout(massChain);
+  m_chainEditor = new ChainEditor(massChain);
+  massChainLayout->addWidget(m_chainEditor);
+  layout->addWidget(massChain);
+  m_chainLayout = chainLayout;
+  m_massChainLayout = massChainLayout;
+  m_massChainBox = massChain;
+  connect(m_chainEditor, &ChainEditor::chainChanged, this, [this](const MassChainParams& chain) {
+    m_params.massChain = chain;
+    changed();
+  });
+  connect(m_chainEditor, &ChainEditor::inputRefused, this, [this](const QString& reason) {
+    m_refusal->setText(reason);
+    m_refusal->show();
+    emit inputRefused(reason);
+  });
 
   // where the run starts
   auto* start = new QGroupBox(tr("Start"), this);
@@ -153,9 +175,18 @@ void ParameterPanel::setScene(const Scene& scene) {
   for (auto it = m_controls.begin(); it != m_controls.end(); ++it) {
     it.value()->setVisible(m_sceneKeys.contains(it.key()));
   }
+  // a chain of N masses is edited in its own box, the gap with it
+  m_massChainScene = scene.massChain();
+  m_chainBox->setVisible(!m_massChainScene);
+  m_massChainBox->setVisible(m_massChainScene);
+  if (SliderSpin* gap = m_controls.value(ParamKey::Gap)) {
+    if (m_massChainScene) m_massChainLayout->addWidget(gap);
+    else m_chainLayout->insertWidget(3, gap);  // after m1, m2, k1, as built
+  }
+  // an N-mass run is pushed along the stopped mass's velocity only
   const bool perturb = m_sceneKeys.contains(ParamKey::Perturbation);
-  m_direction->setVisible(perturb);
-  m_directionLabel->setVisible(perturb);
+  m_direction->setVisible(perturb && !m_massChainScene);
+  m_directionLabel->setVisible(perturb && !m_massChainScene);
   // a box with nothing the scene exposes is not shown empty (the random starts pick their own)
   m_startBox->setVisible(perturb || m_sceneKeys.contains(ParamKey::Lambda) ||
                          m_sceneKeys.contains(ParamKey::Period));
@@ -174,7 +205,12 @@ void ParameterPanel::setParams(const Params& params) {
   m_design->setChecked(params.resonantDesign);
   m_branch->setCurrentIndex(m_branch->findData(int(params.branch)));
   m_direction->setCurrentIndex(m_direction->findData(int(params.direction)));
+  if (m_chainEditor->chain() != params.massChain) m_chainEditor->setChain(params.massChain);
   updateFeasibility();
+}
+
+void ParameterPanel::setChainSummary(const QString& text, int designs, bool refused) {
+  m_chainEditor->setSummary(text, designs, refused);
 }
 
 void ParameterPanel::setSliderRanges(const std::map<ParamKey, std::pair<double, double>>& ranges) {

@@ -13,12 +13,14 @@
 #include "core/model/state.h"
 #include "ui/compute/params.h"
 
+class QBoxLayout;
 class QCheckBox;
 class QComboBox;
 class QLabel;
 
 namespace grazelab::ui {
 
+class ChainEditor;
 class Scene;
 class SliderSpin;
 
@@ -55,6 +57,10 @@ class ParameterPanel : public QWidget {
   void clearRefusal();
 
   SliderSpin* control(ParamKey key) const { return m_controls.value(key); }
+  /// The N-mass scenes' chain editor (shown only for them).
+  ChainEditor* chainEditor() const { return m_chainEditor; }
+  /// What the worker says the N-mass chain is (SceneJob::chainSummary).
+  void setChainSummary(const QString& text, int designs, bool refused);
 
  signals:
   void paramsChanged(const grazelab::ui::Params& params);
@@ -84,6 +90,12 @@ class ParameterPanel : public QWidget {
   QLabel* m_notes = nullptr;
   QLabel* m_sceneText = nullptr;
   QWidget* m_startBox = nullptr;
+  QWidget* m_chainBox = nullptr;       ///< the two-mass chain
+  QWidget* m_massChainBox = nullptr;   ///< the chain of N masses
+  ChainEditor* m_chainEditor = nullptr;
+  QBoxLayout* m_chainLayout = nullptr;
+  QBoxLayout* m_massChainLayout = nullptr;
+  bool m_massChainScene = false;
   QWidget* m_runBox = nullptr;
 };
 

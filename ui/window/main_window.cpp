@@ -75,6 +75,7 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   leftLayout->setContentsMargins(6, 6, 6, 6);
   leftLayout->addWidget(m_panel);
   auto* readoutBox = new QGroupBox(tr("Derived (mode 1 = fast, mode 2 = slow)"));
+  m_readoutBox = readoutBox;
   readoutBox->setToolTip(tr("Mode 1 is the FAST mode and mode 2 the SLOW one: the proofs need "
                             "ω₁ = 2 ω₂, so T₂ = 2 T₁ and every free motion repeats after T₂."));
   auto* readoutLayout = new QVBoxLayout(readoutBox);
@@ -466,6 +467,7 @@ void MainWindow::showScene(int index) {
   }
   buildPlots();
   m_panel->setScene(scene());
+  m_readoutBox->setVisible(!scene().massChain());  // an N-mass chain says what it is in its editor
   m_panel->setParams(m_sceneParams[std::size_t(index)]);
   recompute();
 }
@@ -562,6 +564,10 @@ void MainWindow::onUpdate(const SimUpdate& update) {
   if (update.result->stop == core::StopReason::InvalidInput) {
     setProgressVisible(false);
     showProblem(QString::fromStdString(update.result->message));
+    // an N-mass chain that cannot be made says why where it is edited as well
+    if (scene().massChain() && update.request->sceneName == scene().name()) {
+      m_panel->setChainSummary(job.chainSummary, 0, job.chainRefused);
+    }
     return;
   }
   if (m_displayed && m_displayed->trustPending && update.id == m_displayed->id &&
@@ -604,7 +610,10 @@ void MainWindow::applyPending() {
   m_displayed = std::move(m_pending);
   m_pending.reset();
   m_panel->setNotes(m_displayed->request->job.notes);
-  if (const SimRequest& shown = *m_displayed->request; shown.derived.ok) {
+  if (scene().massChain()) {
+    const SceneJob& job = m_displayed->request->job;
+    m_panel->setChainSummary(job.chainSummary, job.chainDesigns, job.chainRefused);
+  } else if (const SimRequest& shown = *m_displayed->request; shown.derived.ok) {
     m_readout->showModel(shown.derived, core::energy(shown.job.spec.model, shown.job.spec.run.initial));
   }
   QElapsedTimer cost;

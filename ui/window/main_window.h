@@ -220,6 +220,7 @@ class MainWindow : public QMainWindow {
   bool m_sceneChosen = false;  ///< a scene is on screen (its parameters carry over to the next)
   ParameterPanel* m_panel = nullptr;
   ReadoutPanel* m_readout = nullptr;
+  QWidget* m_readoutBox = nullptr;  ///< the two-mass chain's derived values (hidden for N masses)
   QWidget* m_plotArea = nullptr;
   QGridLayout* m_plotGrid = nullptr;
   QList<PlotView*> m_plots;

@@ -32,6 +32,18 @@ void MainWindow::showProblem(const QString& message) {
 }
 
 void MainWindow::showStatus(const SimUpdate& update) {
+  if (scene().massChain()) {
+    // a chain of N masses: its own run, told by its scene (no two-mass run is made)
+    const SceneJob& job = update.request->job;
+    QString text = job.ok ? job.chainStatus : tr("Not computed: %1").arg(job.message);
+    if (job.ok && job.chainTrust) {
+      text += QStringLiteral(" · ") + trustInWords(*job.chainTrust, job.chainTFinal);
+    }
+    if (!update.final || update.superseded) text += tr(" · computing…");
+    if (!m_problem.isEmpty()) text = tr("Not computed: %1 (showing the last valid result)").arg(m_problem);
+    m_status->setMessage(text);
+    return;
+  }
   const core::Result& result = *update.result;
   const core::Cost& cost = result.cost;
   // "1 stick", "2 sticks": the count decides the word

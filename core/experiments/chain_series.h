@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <stop_token>
+#include <vector>
+
+#include "core/model/mass_chain.h"
+#include "core/solver/chain_run.h"
+#include "core/solver/trust.h"
+
+namespace grazelab::core::experiments {
+
+/// A run of a chain of N masses as the explorer's N-mass scenes draw it (docs/explorer.md): the
+/// exact run (core/solver/chain_run.h), the chain's spectrum and common period, every free
+/// flight's length, and the stopped mass and one chosen mass on a time grid over the run's
+/// first `window`.
+struct ChainSeriesSpec {
+  MassChain chain;   ///< usable (validate(chain) empty)
+  ChainState start;  ///< u_s <= d
+  long contacts = 200;
+  double window = 0;  ///< [time] the grid's span from t = 0 (0: none)
+  int gridPoints = 1500;
+  int phaseMass = 0;  ///< 1-based; 0: the stopped mass
+  TrustMode trust = TrustMode::Auto;  ///< the run's error estimate (core/solver/chain_trust.h)
+};
+
+/// One free flight: from an event (or the start) to the next contact.
+struct ChainFlight {
+  long contact = 0;        ///< the contact that ends it (1-based)
+  double duration = 0;     ///< [time]
+  bool fromStop = false;   ///< it starts on the stop (after an impact, a grazing or a release)
+  bool afterImpact = false;
+};
+
+/// A point of the grid: the stopped mass and the chosen one.
+struct ChainGridPoint {
+  double t = 0;
+  double us = 0, vs = 0;          ///< the stopped mass
+  double uChosen = 0, vChosen = 0;  ///< the chosen mass (ChainSeriesSpec::phaseMass)
+};
+
+struct ChainSeries {
+  ChainRun run;
+  ChainModes modes;
+  SpectrumRatios ratios;
+  double period = 0;  ///< T = 2 pi / w0 when commensurate (every flight from the stop ends by it), else 0
+  std::vector<ChainFlight> flights;
+  std::vector<ChainGridPoint> grid;
+  Trust trust;  ///< the run again one precision up, compared event by event (Unchecked: off)
+};
+
+/// Runs `spec`; stops early (run cancelled) when `stop` is requested.
+ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop = {});
+
+}  // namespace grazelab::core::experiments

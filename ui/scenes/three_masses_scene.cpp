@@ -1,0 +1,296 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include <QCoreApplication>
+#include <QStringList>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/experiments/chain_series.h"
+#include "core/model/chain_design.h"
+#include "core/model/mass_chain.h"
+#include "core/model/model.h"
+#include "core/orbits/chain_glo.h"
+#include "ui/scenes/scenes.h"
+#include "ui/widgets/chain_editor.h"
+
+namespace grazelab::ui {
+namespace {
+
+QString tr(const char* text) {
+  return QCoreApplication::translate("grazelab::ui::ThreeMassesScene", text);
+}
+
+QString number(double value, int digits = 4) { return QString::number(value, 'g', digits); }
+
+QString list(const std::vector<double>& values, int digits = 4) {
+  QStringList parts;
+  for (double value : values) parts.append(number(value, digits));
+  return parts.join(QStringLiteral(", "));
+}
+
+// the chain the panel describes: its springs as given, or designed for its resonance (the
+// design asked for); or why there is none, in words
+struct ChainChoice {
+  std::optional<core::MassChain> chain;
+  QString problem;
+  int designs = 0;
+};
+
+ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_token stop) {
+  ChainChoice choice;
+  core::MassChain chain{given.masses, given.springs, 0, given.stopMass, gap};
+  if (!given.harmonics.empty()) {
+    const core::ChainDesigns designs = core::designSprings(given.masses, given.springs.front(), given.harmonics, stop);
+    switch (designs.outcome) {
+      case core::DesignOutcome::Designed: break;
+      case core::DesignOutcome::NoPositiveDesign:
+        choice.problem = tr("No chain with these masses has the frequencies in the ratio %1: every one of the "
+                            "%2 solutions of the design equations is complex or has a spring ≤ 0. "
+                            "Change the masses, or pick another resonance.")
+                             .arg(resonanceName(given.harmonics))
+                             .arg(designs.paths);
+        return choice;
+      case core::DesignOutcome::Incomplete:
+        choice.problem = tr("The design of %1 could not follow every solution, so no list of designs can be "
+                            "promised: change the masses slightly.")
+                             .arg(resonanceName(given.harmonics));
+        return choice;
+      case core::DesignOutcome::Stopped: return choice;
+      case core::DesignOutcome::BadRequest:
+        choice.problem = tr("The resonance %1 cannot be designed for %2 masses.")
+                             .arg(resonanceName(given.harmonics))
+                             .arg(given.masses.size());
+        return choice;
+    }
+    choice.designs = int(designs.designs.size());
+    const int design = std::clamp(given.designBranch, 1, choice.designs);
+    chain.springs = designs.designs[std::size_t(design - 1)].springs;
+  }
+  if (const auto problems = core::validate(chain); !problems.empty()) {
+    choice.problem = QString::fromStdString(core::describe(problems));
+    return choice;
+  }
+  choice.chain = chain;
+  return choice;
+}
+
+// what the chain is, in words: springs, frequencies, their ratio, the period
+QString summaryOf(const core::MassChain& chain, const MassChainParams& given, int designs,
+                  const core::experiments::ChainSeries& series) {
+  std::vector<double> omega(series.modes.omega.data(), series.modes.omega.data() + series.modes.omega.size());
+  QString text = given.harmonics.empty()
+                     ? tr("Springs k = %1 (as given).").arg(list(chain.springs))
+                     : tr("Springs designed for %1 (design %2 of %3): k = %4.")
+                           .arg(resonanceName(given.harmonics))
+                           .arg(std::clamp(given.designBranch, 1, designs))
+                           .arg(designs)
+                           .arg(list(chain.springs));
+  text += QLatin1Char(' ') + tr("Frequencies ω = %1 (fastest first).").arg(list(omega));
+  const core::SpectrumRatios& ratios = series.ratios;
+  QStringList harmonics;
+  for (int n : ratios.harmonics) harmonics.append(QString::number(n));
+  if (ratios.commensurate) {
+    text += QLatin1Char(' ') + tr("In the ratio %1 × ω₀ (ω₀ = %2, off by %3): every free motion repeats after "
+                                  "T = 2π/ω₀ = %4.")
+                                   .arg(harmonics.join(QStringLiteral(" : ")), number(ratios.omega0, 6),
+                                        number(ratios.detuning, 2), number(series.period, 6));
+  } else if (!ratios.harmonics.empty()) {
+    text += QLatin1Char(' ') + tr("Not commensurate: nearest %1, detuned by %2 %; no common period.")
+                                   .arg(harmonics.join(QStringLiteral(" : ")), number(100 * ratios.detuning, 2));
+  } else {
+    text += QLatin1Char(' ') + tr("Not commensurate: no common period.");
+  }
+  return text;
+}
+
+CurveFigure flightFigure(const QString& title, const core::experiments::ChainSeries& series, double unit,
+                         bool bound, const QString& unitName) {
+  CurveFigure figure;
+  figure.title = title;
+  figure.xTitle = tr("contact index");
+  figure.yTitle = tr("free-flight time / %1").arg(unitName);
+  figure.toolTip = tr("Each free flight from the stop (after an impact, a grazing or a release), over the "
+                      "chain's common period T. A resonant chain's free motion repeats after T, so no "
+                      "flight from the stop lasts longer (Theorem 2.3 for any N); a chain with no common "
+                      "period has no such bound.");
+  figure.curveName = tr("flights");
+  figure.dots = true;
+  long last = 1;
+  for (const core::experiments::ChainFlight& flight : series.flights) {
+    if (!flight.fromStop) continue;
+    figure.curve.emplace_back(double(flight.contact), flight.duration / unit);
+    last = std::max(last, flight.contact);
+  }
+  if (bound) {
+    figure.referenceName = tr("T");
+    figure.reference = {QPointF(0, 1), QPointF(double(last), 1)};
+  }
+  return figure;
+}
+
+QString stopInWords(core::ChainStop stop) {
+  switch (stop) {
+    case core::ChainStop::ContactLimit: return tr("the contacts asked for");
+    case core::ChainStop::TimeLimit: return tr("its end time");
+    case core::ChainStop::NoFurtherContact: return tr("no further contact (the flight stays below the stop)");
+    case core::ChainStop::Undecided:
+      return tr("undecided: a contact within double's rounding (grazelab-cli simulate --precision auto "
+                "decides it in a higher precision)");
+    case core::ChainStop::SearchBudget: return tr("the contact search's budget");
+    case core::ChainStop::Cancelled: return tr("cancelled");
+  }
+  return {};
+}
+
+// the run in words for the status line
+QString statusOf(const core::experiments::ChainSeries& series, int masses) {
+  const core::ChainRun& run = series.run;
+  const auto counted = [](long n, const QString& one, const QString& many) {
+    return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
+  };
+  const double drift = std::abs(run.energyFinal - run.energyInitial) / std::max(std::abs(run.energyInitial), 1e-300);
+  return tr("%1 masses: %2 (%3, %4, %5) until t = %6, ended by %7 · energy drift %8")
+      .arg(masses)
+      .arg(counted(run.contacts, tr("contact"), tr("contacts")), counted(run.impacts, tr("impact"), tr("impacts")),
+           counted(run.grazings, tr("grazing"), tr("grazings")), counted(run.sticks, tr("stick"), tr("sticks")))
+      .arg(number(run.tFinal, 6), stopInWords(run.stop), QString::number(drift, 'e', 1));
+}
+
+}  // namespace
+
+Scene::Spec threeMassesScene() {
+  Scene::Spec scene;
+  scene.name = QStringLiteral("Three masses in 1:2:3");
+  scene.alias = QStringLiteral("three-masses");
+  scene.title = tr("Three masses in 1:2:3");
+  scene.text = tr("<b>What generalises to N masses.</b> A chain of three masses with its springs designed so "
+                  "that the frequencies are in the ratio 1:2:3 starts on a grazing linear orbit, a "
+                  "weighted sum of the modes that just touches the stop, pushed off it by δ. <i>Look "
+                  "for:</i> the impacts of the stopped mass (top left) and its free-flight times (top "
+                  "right): every one stays at or below the common period T, as for two masses; the same "
+                  "start on the chain detuned by 1 % (bottom left) has flights past T. <i>Why:</i> with "
+                  "ω₁ : ω₂ : ω₃ = 3 : 2 : 1 every free motion repeats after T, so a flight from the stop "
+                  "meets it again by then. Change the masses, the resonance (some are impossible for "
+                  "some masses: you are told why), or the number of masses.");
+  scene.defaults.perturbation = -0.05;
+  scene.defaults.horizon = 200;
+  scene.defaults.massChain = MassChainParams{};
+  scene.massChain = true;
+  scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
+  scene.plots = {PlotKind::ChainStopTrace, PlotKind::ChainFlights, PlotKind::ChainPhase, PlotKind::ChainDetunedFlights};
+  scene.build = [](const Scene&, const Params& params, const DerivedModel& derived, std::stop_token stop) {
+    SceneJob job;
+    const MassChainParams& given = params.massChain;
+    const ChainChoice choice = chooseChain(given, params.gap, stop);
+    if (!choice.chain) {
+      job.message = choice.problem;
+      job.chainSummary = choice.problem;
+      job.chainRefused = true;
+      return job;
+    }
+    const core::MassChain& chain = *choice.chain;
+    const core::ChainGloStart glo = core::chainGloStart(chain, given.weights);
+    if (glo.problem != core::GloStartProblem::None) {
+      job.message = glo.problem == core::GloStartProblem::WeightOnNode
+                        ? tr("A weight is on a mode that does not move the stopped mass: it has no grazing orbit")
+                        : tr("The weights of the grazing orbit must be finite and sum to 1");
+      job.chainSummary = job.message;
+      job.chainRefused = true;
+      return job;
+    }
+    core::ChainState start = glo.state;
+    const Eigen::Index s = chain.stopped() - 1;
+    start.v[s] += params.perturbation;  // pushed off the orbit along the stopped mass's velocity
+    const core::ChainModes modes = core::chainModes(chain);
+    const double slowest = 2 * std::numbers::pi / modes.omega.minCoeff();
+    core::experiments::ChainSeriesSpec spec{chain, start, long(params.horizon), 6 * slowest, 1500, 0};
+    const core::experiments::ChainSeries series = core::experiments::chainSeries(spec, stop);
+    if (stop.stop_requested()) return job;
+    const bool resonant = series.period > 0;
+    const double unit = resonant ? series.period : slowest;
+    const QString unitName = resonant ? tr("T") : tr("slowest period");
+
+    // u_s(t) of the stopped mass over the first periods, the stop at 1, the contacts on it
+    CurveFigure trace;
+    trace.title = tr("Mass %1 (on the stop's side): u%1 / d").arg(chain.stopped());
+    trace.xTitle = tr("t / %1").arg(unitName);
+    trace.yTitle = tr("u / d");
+    trace.toolTip = tr("The stopped mass's displacement over the gap d; the dashed line is the stop. Each "
+                       "dot is a contact.");
+    trace.curveName = tr("u%1 / d").arg(chain.stopped());
+    for (const core::experiments::ChainGridPoint& point : series.grid) {
+      trace.curve.emplace_back(point.t / unit, point.us / chain.gap);
+    }
+    const double window = spec.window / unit;
+    trace.referenceName = tr("stop");
+    trace.reference = {QPointF(0, 1), QPointF(window, 1)};
+    trace.markerName = tr("contacts");
+    for (const core::ChainEvent& event : series.run.events) {
+      if (event.t > spec.window) break;
+      if (core::isContact(event.type)) trace.markers.emplace_back(event.t / unit, 1.0);
+    }
+    job.figures[PlotKind::ChainStopTrace] = trace;
+
+    job.figures[PlotKind::ChainFlights] = flightFigure(
+        resonant ? tr("Free flights from the stop / T (≤ 1)") : tr("Free flights / slowest period (no common period: no bound)"),
+        series, unit, resonant, unitName);
+
+    CurveFigure phase;
+    phase.title = tr("Phase portrait of mass %1").arg(chain.stopped());
+    phase.xTitle = tr("u / d");
+    phase.yTitle = tr("v / (d ω)");
+    phase.toolTip = tr("The stopped mass's velocity against its displacement over the first periods; at "
+                       "u/d = 1 the impacts reverse the velocity.");
+    phase.curveName = tr("(u, v)");
+    const double speed = chain.gap * modes.omega.maxCoeff();
+    for (const core::experiments::ChainGridPoint& point : series.grid) {
+      phase.curve.emplace_back(point.us / chain.gap, point.vs / speed);
+    }
+    phase.referenceName = tr("stop");
+    phase.reference = {QPointF(1, -1.5), QPointF(1, 1.5)};
+    job.figures[PlotKind::ChainPhase] = phase;
+
+    // the contrast: the same start on the chain with k2 1 % stiffer (no common period)
+    if (resonant && chain.size() >= 2) {
+      core::MassChain detuned = chain;
+      detuned.springs[1] *= 1.01;
+      core::experiments::ChainSeriesSpec other{detuned, start, long(params.horizon), 0, 0, 0};
+      const core::experiments::ChainSeries contrast = core::experiments::chainSeries(other, stop);
+      CurveFigure figure = flightFigure(tr("k₂ 1 % off: flights / the resonant T"), contrast, series.period, true, tr("T"));
+      // a detuned flight can last hundreds of T: the axis stops at 3 T, and says how many pass it
+      const auto above = std::count_if(figure.curve.begin(), figure.curve.end(), [](const QPointF& p) { return p.y() > 3; });
+      if (above > 0) {
+        figure.title = tr("k₂ 1 % off: flights / T (%1 longer than 3 T, off the axis)").arg(above);
+        double last = 1;
+        for (const QPointF& point : figure.curve) last = std::max(last, point.x());
+        figure.xMin = 0;
+        figure.xMax = last * 1.02;
+        figure.yMin = 0;
+        figure.yMax = 3;
+      }
+      job.figures[PlotKind::ChainDetunedFlights] = figure;
+    } else {
+      CurveFigure none;
+      none.title = tr("Detuned contrast: only for a resonant chain");
+      none.xTitle = tr("contact index");
+      none.yTitle = tr("free-flight time / T");
+      job.figures[PlotKind::ChainDetunedFlights] = none;
+    }
+    job.chainSummary = summaryOf(chain, given, choice.designs, series);
+    job.chainDesigns = choice.designs;
+    job.chainStatus = statusOf(series, chain.size());
+    job.chainTrust = series.trust;
+    job.chainTFinal = series.run.tFinal;
+    // the two-mass run behind the scene's figures is none: everything drawn is the chain's
+    job.spec.model = derived.model;
+    job.spec.run.maxContacts = 0;
+    job.spec.run.needs.events = false;
+    job.ok = true;
+    return job;
+  };
+  return scene;
+}
+
+}  // namespace grazelab::ui

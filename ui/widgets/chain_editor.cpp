@@ -1,0 +1,265 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/widgets/chain_editor.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <numeric>
+
+#include "ui/widgets/batched_layout.h"
+#include "ui/widgets/slider_spin.h"
+
+namespace grazelab::ui {
+namespace {
+
+// subscripts for the labels (m₁ … m₈)
+QString subscript(int index) {
+  static const QString digits = QStringLiteral("₀₁₂₃₄₅₆₇₈₉");
+  QString text;
+  for (const QChar digit : QString::number(index)) text += digits[digit.digitValue()];
+  return text;
+}
+
+ParamSpec massSpec(int index) {
+  ParamSpec spec = paramSpec(ParamKey::M1);
+  spec.label = QObject::tr("m%1").arg(subscript(index));
+  spec.toolTip = QObject::tr("Mass %1 (counted from the left wall).").arg(index);
+  spec.sliderMin = 0.01;
+  spec.sliderMax = 100;
+  spec.spinMin = 1e-6;
+  spec.spinMax = 1e6;
+  spec.logarithmic = true;
+  spec.marks = {};
+  return spec;
+}
+
+ParamSpec springSpec(int index) {
+  ParamSpec spec = paramSpec(ParamKey::K1);
+  spec.label = QObject::tr("k%1").arg(subscript(index));
+  spec.toolTip = index == 1 ? QObject::tr("The spring from the wall to mass 1 (the chain's stiffness scale).")
+                            : QObject::tr("The spring between masses %1 and %2.").arg(index - 1).arg(index);
+  spec.sliderMin = 0.01;
+  spec.sliderMax = 100;
+  spec.spinMin = 1e-6;
+  spec.spinMax = 1e6;
+  spec.logarithmic = true;
+  spec.marks = {};
+  return spec;
+}
+
+ParamSpec weightSpec(int index) {
+  ParamSpec spec = paramSpec(ParamKey::Lambda);
+  spec.label = QObject::tr("λ%1").arg(subscript(index));
+  spec.toolTip = QObject::tr("The weight of mode %1 (mode 1 the fastest) in the grazing linear orbit "
+                             "GLO_λ = Σ λⱼ GLOMⱼ the run starts on, at its touch of the stop. The "
+                             "last weight is 1 minus the others.")
+                     .arg(index);
+  spec.sliderMin = -1;
+  spec.sliderMax = 2;
+  spec.spinMin = -1e3;
+  spec.spinMax = 1e3;
+  spec.marks = {0.0, 1.0};
+  return spec;
+}
+
+}  // namespace
+
+QString resonanceName(const std::vector<int>& harmonics) {
+  if (harmonics.empty()) return QObject::tr("none: springs as given");
+  QStringList parts;
+  for (auto it = harmonics.rbegin(); it != harmonics.rend(); ++it) parts.append(QString::number(*it));
+  return parts.join(QLatin1Char(':'));
+}
+
+QList<std::vector<int>> ChainEditor::resonancesFor(int masses) {
+  QList<std::vector<int>> list{{}};
+  if (masses == 2) list.append({{2, 1}, {3, 1}, {3, 2}, {4, 1}});
+  if (masses == 3) list.append({{3, 2, 1}, {4, 2, 1}, {5, 3, 1}, {4, 3, 2}});
+  if (masses >= 4 && masses <= 6) {
+    std::vector<int> chain(static_cast<std::size_t>(masses));
+    std::iota(chain.rbegin(), chain.rend(), 1);  // N : ... : 1
+    list.append(chain);
+  }
+  return list;
+}
+
+ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  auto* form = new QFormLayout;
+  form->setContentsMargins(0, 0, 0, 0);
+  m_count = new QSpinBox(this);
+  m_count->setObjectName(QStringLiteral("chainMassCount"));
+  m_count->setRange(1, MassChainParams::kMaxMasses);
+  m_count->setToolTip(tr("How many masses the chain has (1 to %1), from the left wall.").arg(MassChainParams::kMaxMasses));
+  m_stop = new QSpinBox(this);
+  m_stop->setObjectName(QStringLiteral("chainStopMass"));
+  m_stop->setToolTip(tr("The mass the rigid stop acts on, at its gap d to the right of that mass's rest."));
+  auto* countRow = new QHBoxLayout;
+  countRow->addWidget(m_count);
+  countRow->addWidget(new QLabel(tr("stop on"), this));
+  countRow->addWidget(m_stop);
+  countRow->addStretch(1);
+  form->addRow(tr("masses"), countRow);
+  m_resonance = new QComboBox(this);
+  m_resonance->setObjectName(QStringLiteral("chainResonance"));
+  m_resonance->setToolTip(tr("The frequency ratio asked for, slowest mode first (1:2:3: ω₃ : ω₂ : ω₁ = 1 : 2 : 3). "
+                             "The springs k₂ … k_N are then designed for it, k₁ kept; a ratio no chain "
+                             "with these masses has is refused with the reason."));
+  m_design = new QComboBox(this);
+  m_design->setObjectName(QStringLiteral("chainDesign"));
+  m_design->setToolTip(tr("A resonance usually has several designs of the springs for the same masses "
+                          "(ordered by k₂, stiffest first): pick one."));
+  auto* resonanceRow = new QHBoxLayout;
+  resonanceRow->addWidget(m_resonance, 1);
+  resonanceRow->addWidget(m_design);
+  form->addRow(tr("resonance"), resonanceRow);
+  layout->addLayout(form);
+  m_rows = new QVBoxLayout;
+  m_rows->setContentsMargins(0, 0, 0, 0);
+  m_rows->setSpacing(2);
+  layout->addLayout(m_rows);
+  m_summary = new QLabel(this);
+  m_summary->setObjectName(QStringLiteral("chainSummary"));
+  m_summary->setWordWrap(true);
+  m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(m_summary);
+
+  connect(m_count, &QSpinBox::valueChanged, this, [this](int count) {
+    m_chain = m_chain.resized(count);
+    fillResonances();
+    rebuildRows();
+    changed();
+  });
+  connect(m_stop, &QSpinBox::valueChanged, this, [this](int stop) {
+    m_chain.stopMass = stop == m_chain.size() ? 0 : stop;
+    changed();
+  });
+  connect(m_resonance, &QComboBox::currentIndexChanged, this, [this](int index) {
+    const QList<std::vector<int>> offered = resonancesFor(m_chain.size());
+    if (index < 0 || index >= offered.size()) return;
+    m_chain.harmonics = offered[index];
+    m_chain.designBranch = 1;
+    rebuildRows();
+    changed();
+  });
+  connect(m_design, &QComboBox::currentIndexChanged, this, [this](int index) {
+    if (index < 0) return;
+    m_chain.designBranch = index + 1;
+    changed();
+  });
+  setChain(m_chain);
+}
+
+void ChainEditor::setChain(const MassChainParams& chain) {
+  m_chain = chain;
+  {
+    const QSignalBlocker blockCount(m_count);
+    const QSignalBlocker blockStop(m_stop);
+    m_count->setValue(chain.size());
+    m_stop->setRange(1, chain.size());
+    m_stop->setValue(chain.stopMass > 0 ? chain.stopMass : chain.size());
+  }
+  fillResonances();
+  rebuildRows();
+}
+
+void ChainEditor::fillResonances() {
+  const QSignalBlocker block(m_resonance);
+  m_resonance->clear();
+  int chosen = 0;
+  const QList<std::vector<int>> offered = resonancesFor(m_chain.size());
+  for (int i = 0; i < offered.size(); ++i) {
+    m_resonance->addItem(resonanceName(offered[i]));
+    if (offered[i] == m_chain.harmonics) chosen = i;
+  }
+  if (!m_chain.harmonics.empty() && !offered.contains(m_chain.harmonics)) {
+    // a resonance from a session file that the menu does not list: shown as it is
+    m_resonance->addItem(resonanceName(m_chain.harmonics));
+    chosen = m_resonance->count() - 1;
+  }
+  m_resonance->setCurrentIndex(chosen);
+}
+
+void ChainEditor::rebuildRows() {
+  const BatchedLayout oneLayoutPass(this);
+  // taken out of the layout by hand: a held (disabled) layout ignores its children's removal
+  // and would keep their dead items
+  const auto discard = [this](QWidget* widget) {
+    m_rows->removeWidget(widget);
+    delete widget;
+  };
+  for (QList<SliderSpin*>* list : {&m_masses, &m_springs, &m_weights}) {
+    for (SliderSpin* control : *list) discard(control);
+    list->clear();
+  }
+  if (m_lastWeight) discard(m_lastWeight);
+  m_lastWeight = nullptr;
+  {
+    const QSignalBlocker blockStop(m_stop);
+    m_stop->setRange(1, m_chain.size());
+    m_stop->setValue(m_chain.stopMass > 0 ? m_chain.stopMass : m_chain.size());
+  }
+  const auto add = [this](const ParamSpec& spec, double value, auto store) {
+    auto* control = new SliderSpin(spec, this);
+    control->setValue(value);
+    m_rows->addWidget(control);
+    connect(control, &SliderSpin::valueChanged, this, [this, store](double typed) {
+      store(typed);
+      changed();
+    });
+    connect(control, &SliderSpin::refused, this, &ChainEditor::inputRefused);
+    return control;
+  };
+  const int n = m_chain.size();
+  for (int i = 0; i < n; ++i) {
+    m_masses.append(add(massSpec(i + 1), m_chain.masses[std::size_t(i)],
+                        [this, i](double value) { m_chain.masses[std::size_t(i)] = value; }));
+  }
+  // designed: only k1 is the user's (the scale); the others come back in the summary
+  const int springs = m_chain.harmonics.empty() ? n : 1;
+  for (int i = 0; i < springs; ++i) {
+    m_springs.append(add(springSpec(i + 1), m_chain.springs[std::size_t(i)],
+                         [this, i](double value) { m_chain.springs[std::size_t(i)] = value; }));
+  }
+  for (int j = 0; j + 1 < n; ++j) {
+    m_weights.append(add(weightSpec(j + 1), m_chain.weights[std::size_t(j)], [this, j, n](double value) {
+      m_chain.weights[std::size_t(j)] = value;
+      // the last weight balances the others (the weights of GLO_λ sum to 1)
+      double others = 0;
+      for (int k = 0; k + 1 < n; ++k) others += m_chain.weights[std::size_t(k)];
+      m_chain.weights[std::size_t(n - 1)] = 1 - others;
+      m_lastWeight->setText(tr("λ%1 = 1 − the others = %2").arg(QString::number(n), QString::number(1 - others, 'g', 6)));
+    }));
+  }
+  m_lastWeight = new QLabel(this);
+  m_lastWeight->setObjectName(QStringLiteral("chainLastWeight"));
+  m_lastWeight->setText(tr("λ%1 = 1 − the others = %2").arg(QString::number(n), QString::number(m_chain.weights.back(), 'g', 6)));
+  m_lastWeight->setToolTip(weightSpec(n).toolTip);
+  m_rows->addWidget(m_lastWeight);
+  m_design->setVisible(!m_chain.harmonics.empty());
+}
+
+void ChainEditor::setSummary(const QString& text, int designs, bool refused) {
+  m_summary->setText(text);
+  m_summary->setStyleSheet(refused ? QStringLiteral("QLabel { color: #a01010; font-weight: bold; }") : QString());
+  const QSignalBlocker block(m_design);
+  if (m_design->count() != designs) {
+    m_design->clear();
+    for (int d = 1; d <= designs; ++d) m_design->addItem(tr("design %1 of %2").arg(d).arg(designs));
+  }
+  m_design->setCurrentIndex(std::min(m_chain.designBranch, designs) - 1);
+  m_design->setVisible(!m_chain.harmonics.empty() && designs > 0);
+}
+
+QString ChainEditor::summary() const { return m_summary->text(); }
+
+void ChainEditor::changed() { emit chainChanged(m_chain); }
+
+}  // namespace grazelab::ui
