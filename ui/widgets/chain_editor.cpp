@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/widgets/chain_editor.h"
 
+#include "ui/widgets/eliding_combo_box.h"
+
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -107,19 +109,23 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
   countRow->addWidget(m_stop);
   countRow->addStretch(1);
   form->addRow(tr("masses"), countRow);
-  m_resonance = new QComboBox(this);
+  m_resonance = new ElidingComboBox(this);
   m_resonance->setObjectName(QStringLiteral("chainResonance"));
   m_resonance->setToolTip(tr("The frequency ratio asked for, slowest mode first (1:2:3: ω₃ : ω₂ : ω₁ = 1 : 2 : 3). "
                              "The springs k₂ … k_N are then designed for it, k₁ kept; a ratio no chain "
                              "with these masses has is refused with the reason."));
-  m_design = new QComboBox(this);
+  m_design = new ElidingComboBox(this);
   m_design->setObjectName(QStringLiteral("chainDesign"));
   m_design->setToolTip(tr("A resonance usually has several designs of the springs for the same masses "
                           "(ordered by k₂, stiffest first): pick one."));
-  auto* resonanceRow = new QHBoxLayout;
-  resonanceRow->addWidget(m_resonance, 1);
-  resonanceRow->addWidget(m_design);
-  form->addRow(tr("resonance"), resonanceRow);
+  // narrow: a projector's panel has little room (the popups show the whole texts)
+  for (QComboBox* combo : {m_resonance, m_design}) {
+    combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    combo->setMinimumContentsLength(10);
+  }
+  form->addRow(tr("resonance"), m_resonance);
+  m_designLabel = new QLabel(tr("springs"), this);
+  form->addRow(m_designLabel, m_design);
   layout->addLayout(form);
   m_rows = new QVBoxLayout;
   m_rows->setContentsMargins(0, 0, 0, 0);
@@ -235,15 +241,16 @@ void ChainEditor::rebuildRows() {
       double others = 0;
       for (int k = 0; k + 1 < n; ++k) others += m_chain.weights[std::size_t(k)];
       m_chain.weights[std::size_t(n - 1)] = 1 - others;
-      m_lastWeight->setText(tr("λ%1 = 1 − the others = %2").arg(QString::number(n), QString::number(1 - others, 'g', 6)));
+      m_lastWeight->setText(tr("λ%1 = 1 − the others = %2").arg(subscript(n), QString::number(1 - others, 'g', 6)));
     }));
   }
   m_lastWeight = new QLabel(this);
   m_lastWeight->setObjectName(QStringLiteral("chainLastWeight"));
-  m_lastWeight->setText(tr("λ%1 = 1 − the others = %2").arg(QString::number(n), QString::number(m_chain.weights.back(), 'g', 6)));
+  m_lastWeight->setText(tr("λ%1 = 1 − the others = %2").arg(subscript(n), QString::number(m_chain.weights.back(), 'g', 6)));
   m_lastWeight->setToolTip(weightSpec(n).toolTip);
   m_rows->addWidget(m_lastWeight);
   m_design->setVisible(!m_chain.harmonics.empty());
+  m_designLabel->setVisible(!m_chain.harmonics.empty());
 }
 
 void ChainEditor::setSummary(const QString& text, int designs, bool refused) {
@@ -256,6 +263,7 @@ void ChainEditor::setSummary(const QString& text, int designs, bool refused) {
   }
   m_design->setCurrentIndex(std::min(m_chain.designBranch, designs) - 1);
   m_design->setVisible(!m_chain.harmonics.empty() && designs > 0);
+  m_designLabel->setVisible(m_design->isVisibleTo(this));
 }
 
 QString ChainEditor::summary() const { return m_summary->text(); }

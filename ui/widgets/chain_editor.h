@@ -54,6 +54,7 @@ class ChainEditor : public QWidget {
   QSpinBox* m_stop = nullptr;
   QComboBox* m_resonance = nullptr;
   QComboBox* m_design = nullptr;
+  QLabel* m_designLabel = nullptr;
   QVBoxLayout* m_rows = nullptr;
   QList<SliderSpin*> m_masses;
   QList<SliderSpin*> m_springs;
