@@ -12,6 +12,7 @@ namespace grazelab::core::experiments {
 
 ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop) {
   ChainSeries series;
+  series.chain = spec.chain;
   series.modes = chainModes(spec.chain);
   series.ratios = detectRatios(series.modes.omega);
   if (series.ratios.commensurate) series.period = 2 * std::numbers::pi / series.ratios.omega0;
@@ -21,7 +22,8 @@ ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop) {
   if (spec.window > 0 && spec.gridPoints > 1) {
     for (int i = 0; i < spec.gridPoints; ++i) sampling.times.push_back(spec.window * i / (spec.gridPoints - 1));
     sampling.sink = [&](double t, const ChainState& state) {
-      series.grid.push_back({t, state.u[s], state.v[s], state.u[chosen], state.v[chosen]});
+      series.grid.push_back({t, state.u[s], state.v[s], state.u[chosen], state.v[chosen],
+                             std::vector<double>(state.u.data(), state.u.data() + state.u.size())});
     };
   }
   series.run = runChain(spec.chain, spec.start, spec.contacts, 0.0, stop, {}, sampling);

@@ -38,9 +38,11 @@ struct ChainGridPoint {
   double t = 0;
   double us = 0, vs = 0;          ///< the stopped mass
   double uChosen = 0, vChosen = 0;  ///< the chosen mass (ChainSeriesSpec::phaseMass)
+  std::vector<double> u;          ///< every mass's displacement (the animated chain)
 };
 
 struct ChainSeries {
+  MassChain chain;
   ChainRun run;
   ChainModes modes;
   SpectrumRatios ratios;

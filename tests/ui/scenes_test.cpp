@@ -20,6 +20,7 @@
 #include "ui/plots/chain_view.h"
 #include "ui/pictures/heat_map.h"
 #include "ui/plots/landscape_view.h"
+#include "ui/plots/mass_chain_view.h"
 #include "ui/plots/plot_view.h"
 #include "ui/widgets/chain_editor.h"
 #include "ui/widgets/parameter_panel.h"
@@ -70,8 +71,10 @@ class ScenesTest : public QObject {
       QVERIFY2(bool(m_window->chainView()) == shows(scene, PlotKind::Chain), qPrintable(name));
       // every view it lists is on screen, each curve view with its figure
       const qsizetype views = m_window->plots().size() + (m_window->accuracyView() ? 1 : 0) +
-                              (m_window->chainView() ? 1 : 0) + (m_window->landscapeView() ? 1 : 0);
+                              (m_window->chainView() ? 1 : 0) + (m_window->landscapeView() ? 1 : 0) +
+                              (shows(scene, PlotKind::MassChain) ? 1 : 0);
       QCOMPARE(views, scene.plots().size());
+      QCOMPARE(m_window->sceneViews().size(), scene.plots().size());
       for (PlotKind kind : scene.plots()) {
         const bool curve = kind == PlotKind::OnePeriodicData || kind == PlotKind::ImpactSpeed ||
                            kind == PlotKind::FrequencyEnergy ||
@@ -292,6 +295,23 @@ class ScenesTest : public QObject {
     QVERIFY2(longest > 1.01, qPrintable(QString::number(longest)));
     // the trace stays at or below the stop, and touches it at each contact
     for (const QPointF& point : figure(*m_window, PlotKind::ChainStopTrace).curve) QVERIFY(point.y() <= 1.0 + 1e-12);
+    // the chain moving starts at the orbit's touch and has the stopped mass on the stop at each
+    // contact (its grid interpolated: to 1 % of d)
+    MassChainView* moving = nullptr;
+    for (SceneView* view : m_window->sceneViews()) {
+      if (auto* found = dynamic_cast<MassChainView*>(view)) moving = found;
+    }
+    QVERIFY(moving);
+    const auto& series = *job->chainSeries;
+    QCOMPARE(moving->displacementsAt(0).size(), std::size_t(3));
+    QCOMPARE(moving->displacementsAt(0)[2], series.chain.gap);
+    int seen = 0;
+    for (const auto& event : series.run.events) {
+      if (event.t > series.grid.back().t) break;
+      QVERIFY(std::abs(moving->displacementsAt(event.t)[2] - series.chain.gap) < 0.01 * series.chain.gap);
+      ++seen;
+    }
+    QVERIFY(seen >= 5);
 
     Params params = m_window->params();
     params.massChain.masses = {1.0, 1.0, 1.0};

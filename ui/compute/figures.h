@@ -34,6 +34,7 @@ enum class PlotKind {
   ChainFlights,     ///< N masses: free flights from the stop over T (the bound of a resonant chain)
   ChainPhase,       ///< N masses: the stopped mass's phase portrait
   ChainDetunedFlights,  ///< N masses: the same start on the chain detuned, flights over T
+  MassChain,        ///< N masses: the chain moving (MassChainView)
 };
 
 /// A curve a scene computes itself (no run needed), drawn by a CurvePlot: the curve, the

@@ -14,6 +14,7 @@
 #include <stop_token>
 #include <string>
 
+#include "core/experiments/chain_series.h"
 #include "core/experiments/run.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/periodic_orbit.h"
@@ -55,6 +56,8 @@ struct SceneJob {
   QString chainStatus;
   std::optional<core::Trust> chainTrust;
   double chainTFinal = 0;  ///< the N-mass run's end [time]
+  /// the N-mass run with every mass on a time grid over its first periods (the animated chain)
+  std::shared_ptr<const core::experiments::ChainSeries> chainSeries;
 };
 
 /// What a scene's own computation has so far, with the fraction of it done (0 when unknown).

@@ -8,6 +8,7 @@
 
 #include "ui/plots/accuracy_view.h"
 #include "ui/plots/chain_view.h"
+#include "ui/plots/mass_chain_view.h"
 #include "ui/plots/curve_plot.h"
 #include "ui/plots/free_flight_plot.h"
 #include "ui/plots/landscape_view.h"
@@ -50,6 +51,7 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::ChainPhase:
     case PlotKind::ChainDetunedFlights: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);
+    case PlotKind::MassChain: return new MassChainView(parent);
     case PlotKind::WorkPrecision: return new AccuracyView(parent);
     case PlotKind::Landscape: return new LandscapeView(parent);
     case PlotKind::ModesAtlas: return new ModesPlot(parent);

@@ -168,18 +168,19 @@ Scene::Spec threeMassesScene() {
   scene.text = tr("<b>What generalises to N masses.</b> A chain of three masses with its springs designed so "
                   "that the frequencies are in the ratio 1:2:3 starts on a grazing linear orbit, a "
                   "weighted sum of the modes that just touches the stop, pushed off it by δ. <i>Look "
-                  "for:</i> the impacts of the stopped mass (top left) and its free-flight times (top "
-                  "right): every one stays at or below the common period T, as for two masses; the same "
-                  "start on the chain detuned by 1 % (bottom left) has flights past T. <i>Why:</i> with "
-                  "ω₁ : ω₂ : ω₃ = 3 : 2 : 1 every free motion repeats after T, so a flight from the stop "
-                  "meets it again by then. Change the masses, the resonance (some are impossible for "
+                  "for:</i> the impacts of the stopped mass (its trace, and the chain moving) and its "
+                  "free-flight times: every one stays at or below the common period T, as for two "
+                  "masses; the same start on the chain detuned by 1 % has flights past T. <i>Why:</i> "
+                  "with ω₁ : ω₂ : ω₃ = 3 : 2 : 1 every free motion repeats after T, so a flight from the "
+                  "stop meets it again by then. Change the masses, the resonance (some are impossible for "
                   "some masses: you are told why), or the number of masses.");
   scene.defaults.perturbation = -0.05;
   scene.defaults.horizon = 200;
   scene.defaults.massChain = MassChainParams{};
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::ChainStopTrace, PlotKind::ChainFlights, PlotKind::ChainPhase, PlotKind::ChainDetunedFlights};
+  scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::ChainFlights, PlotKind::ChainPhase,
+                 PlotKind::ChainDetunedFlights};
   scene.build = [](const Scene&, const Params& params, const DerivedModel& derived, std::stop_token stop) {
     SceneJob job;
     const MassChainParams& given = params.massChain;
@@ -206,7 +207,8 @@ Scene::Spec threeMassesScene() {
     const core::ChainModes modes = core::chainModes(chain);
     const double slowest = 2 * std::numbers::pi / modes.omega.minCoeff();
     core::experiments::ChainSeriesSpec spec{chain, start, long(params.horizon), 6 * slowest, 1500, 0};
-    const core::experiments::ChainSeries series = core::experiments::chainSeries(spec, stop);
+    const auto shared = std::make_shared<const core::experiments::ChainSeries>(core::experiments::chainSeries(spec, stop));
+    const core::experiments::ChainSeries& series = *shared;
     if (stop.stop_requested()) return job;
     const bool resonant = series.period > 0;
     const double unit = resonant ? series.period : slowest;
@@ -284,6 +286,7 @@ Scene::Spec threeMassesScene() {
     job.chainStatus = statusOf(series, chain.size());
     job.chainTrust = series.trust;
     job.chainTFinal = series.run.tFinal;
+    job.chainSeries = shared;
     // the two-mass run behind the scene's figures is none: everything drawn is the chain's
     job.spec.model = derived.model;
     job.spec.run.maxContacts = 0;
