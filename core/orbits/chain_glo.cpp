@@ -130,6 +130,25 @@ GrazingModes grazingModes(const MassChain& chain) {
   return result;
 }
 
+std::vector<std::pair<double, double>> gloTopCurve(int fast, int slow, double from, double to, int points,
+                                                   int phases) {
+  std::vector<std::pair<double, double>> curve;
+  // the two cosines at each phase once, then every lambda from them
+  std::vector<double> fastCos(std::size_t(std::max(phases, 1))), slowCos(fastCos.size());
+  for (std::size_t k = 0; k < fastCos.size(); ++k) {
+    const double theta = 2 * std::numbers::pi * double(k) / double(fastCos.size());
+    fastCos[k] = std::cos(fast * theta);
+    slowCos[k] = std::cos(slow * theta);
+  }
+  for (int i = 0; i <= points; ++i) {
+    const double lambda = from + (to - from) * i / std::max(points, 1);
+    double top = -std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < fastCos.size(); ++k) top = std::max(top, (1 - lambda) * fastCos[k] + lambda * slowCos[k]);
+    curve.emplace_back(lambda, top);
+  }
+  return curve;
+}
+
 GrazingInterval grazingInterval(int fast, int slow) {
   const std::vector<int> harmonics{fast, slow};
   const auto weights = [](double lambda) { return std::vector<double>{1 - lambda, lambda}; };

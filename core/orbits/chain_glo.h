@@ -3,6 +3,7 @@
 #pragma once
 
 #include <stop_token>
+#include <utility>
 #include <vector>
 
 #include "core/model/mass_chain.h"
@@ -50,6 +51,14 @@ struct GrazingInterval {
   double flatPoint = 0;  ///< n1^2 / (n1^2 - n2^2): where sum lambda_j n_j^2 = 0
 };
 GrazingInterval grazingInterval(int fast, int slow);
+
+/// The top of u_s / d over a period of GLO with weights (1 - lambda, lambda) on harmonics (fast,
+/// slow), max_theta (1 - lambda) cos(fast theta) + lambda cos(slow theta), at `points` + 1
+/// values of lambda from `from` to `to`, each the largest of `phases` samples of the common
+/// period: a picture's accuracy (~ (pi fast / phases)^2 / 2 of the weights), not the set's
+/// ends, which grazingInterval certifies. (lambda, top) pairs.
+std::vector<std::pair<double, double>> gloTopCurve(int fast, int slow, double from, double to, int points,
+                                                   int phases);
 
 /// The modes of a chain that have a GLOM (those that move the stopped mass; 0-based, fastest
 /// first) and the ratios of their frequencies: a grazing set is a question about these alone.

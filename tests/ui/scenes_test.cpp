@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 
 #include "core/model/linear_modes.h"
 #include "tests/ui/explorer_test_support.h"
@@ -82,7 +83,7 @@ class ScenesTest : public QObject {
                            kind == PlotKind::FlightHistogram || kind == PlotKind::DetunedFlights ||
                            kind == PlotKind::ResonantFlights || kind == PlotKind::ChainStopTrace ||
                            kind == PlotKind::ChainFlights || kind == PlotKind::ChainPhase ||
-                           kind == PlotKind::ChainDetunedFlights;
+                           kind == PlotKind::ChainDetunedFlights || kind == PlotKind::GrazingSet;
         if (curve) QVERIFY2(m_window->displayed()->request->job.figures.count(kind), qPrintable(name));
       }
       QVERIFY2(!scene.description().isEmpty(), qPrintable(name));
@@ -345,6 +346,72 @@ class ScenesTest : public QObject {
     bad.insert(QStringLiteral("massChain"), chain);
     QVERIFY(!paramsFromJson(bad, Params{}, &error));
     QVERIFY2(error.contains(QStringLiteral("sum")), qPrintable(error));
+  }
+
+  // Lemma 2.1 for other resonances (issue 33): the grazing set the scene draws for 1:2, 1:3 and
+  // 2:3 is the exact one (1:n: [0, n^2/(n^2 - 1)]; 2:3 by brute force here: the top of GLO over
+  // 20 000 phases, bisected on lambda), the panel's weights get a verdict, and three modes give
+  // a region whose boundary grazes just so
+  void grazingSetsAreTheExactOnes() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("grazing-sets")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const auto top = [](const std::vector<int>& n, const std::vector<double>& w) {
+      double highest = -1e300;
+      for (int k = 0; k < 20000; ++k) {
+        const double theta = 2 * M_PI * k / 20000;
+        double sum = 0;
+        for (std::size_t j = 0; j < n.size(); ++j) sum += w[j] * std::cos(n[j] * theta);
+        highest = std::max(highest, sum);
+      }
+      return highest;
+    };
+    struct Case {
+      std::vector<double> masses;
+      std::vector<int> harmonics;
+    };
+    for (const Case& each : {Case{{1.0, 0.5}, {2, 1}}, Case{{1.0, 0.3}, {3, 1}}, Case{{1.0, 0.1}, {3, 2}}}) {
+      Params params = m_window->params();
+      params.massChain = MassChainParams{}.resized(2);
+      params.massChain.masses = each.masses;
+      params.massChain.harmonics = each.harmonics;
+      params.massChain.weights = {0.5, 0.5};
+      m_window->setParams(params);
+      QVERIFY(waitForLatestFinal(*m_window, 60000));
+      const SceneJob& job = m_window->displayed()->request->job;
+      QVERIFY2(job.ok, qPrintable(job.message));
+      const CurveFigure& set = figure(*m_window, PlotKind::GrazingSet);
+      QCOMPARE(set.reference.size(), std::size_t(2));
+      const double low = set.reference[0].x(), high = set.reference[1].x();
+      const int n1 = each.harmonics[0], n2 = each.harmonics[1];
+      // the upper end by bisection on the brute-force top (above 1 + 1e-9: crosses)
+      double in = 1, out = 3;
+      for (int step = 0; step < 50; ++step) {
+        const double mid = (in + out) / 2;
+        (top({n1, n2}, {1 - mid, mid}) > 1 + 1e-9 ? out : in) = mid;
+      }
+      if (n2 == 1) QVERIFY2(std::abs(high - double(n1 * n1) / (n1 * n1 - 1)) < 1e-12, qPrintable(QString::number(high)));
+      // (a top flat at its end, as at 1:n, rises as the square of the distance past it: 1e-4)
+      QVERIFY2(std::abs(high - in) < 1e-4, qPrintable(QStringLiteral("%1 against %2").arg(high).arg(in)));
+      QVERIFY2(std::abs(low) < 1e-12, qPrintable(QString::number(low)));
+      QVERIFY2(job.chainStatus.contains(QStringLiteral("grazes")), qPrintable(job.chainStatus));
+      // the panel's weights past the set's end: the verdict says it crosses
+      params.massChain.weights = {1 - (high + 0.2), high + 0.2};
+      m_window->setParams(params);
+      QVERIFY(waitForLatestFinal(*m_window, 60000));
+      QVERIFY2(m_window->displayed()->request->job.chainStatus.contains(QStringLiteral("crosses")),
+               qPrintable(m_window->displayed()->request->job.chainStatus));
+    }
+    // three modes: 1:2:3, each boundary point grazes just so (its brute-force top is 1)
+    Params params = m_window->params();
+    params.massChain = MassChainParams{};  // 1, 0.2, 0.05 in 1:2:3
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const CurveFigure& region = figure(*m_window, PlotKind::GrazingSet);
+    QVERIFY(region.curve.size() > 40);
+    for (const QPointF& point : region.curve) {
+      const double lambda2 = point.x(), lambda3 = point.y();
+      QVERIFY(std::abs(top({3, 2, 1}, {1 - lambda2 - lambda3, lambda2, lambda3}) - 1) < 1e-6);
+    }
   }
 
   // the animated chain: plays forward at its rate, steps from contact to contact, and its time

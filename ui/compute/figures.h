@@ -35,6 +35,7 @@ enum class PlotKind {
   ChainPhase,       ///< N masses: the stopped mass's phase portrait
   ChainDetunedFlights,  ///< N masses: the same start on the chain detuned, flights over T
   MassChain,        ///< N masses: the chain moving (MassChainView)
+  GrazingSet,       ///< N masses: the grazing set of two modes (top against lambda) or three (a region)
 };
 
 /// A curve a scene computes itself (no run needed), drawn by a CurvePlot: the curve, the

@@ -98,7 +98,7 @@ std::vector<std::unique_ptr<Scene>> makeScenes() {
   const std::vector<Scene::Spec (*)()> table = {
       grazingFamilyScene, onePeriodicScene, perturbationScene, randomStartsScene,
       stickingScene,      detunedScene,     nearGrazingScene,  landscapeScene,
-      accuracyScene,      modesScene,       threeMassesScene,
+      accuracyScene,      modesScene,       threeMassesScene, grazingSetsScene,
   };
   std::vector<std::unique_ptr<Scene>> scenes;
   for (auto make : table) scenes.push_back(std::make_unique<Scene>(make()));

@@ -49,7 +49,8 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::ChainStopTrace:
     case PlotKind::ChainFlights:
     case PlotKind::ChainPhase:
-    case PlotKind::ChainDetunedFlights: return new CurvePlot(kind, parent);
+    case PlotKind::ChainDetunedFlights:
+    case PlotKind::GrazingSet: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);
     case PlotKind::MassChain: return new MassChainView(parent);
     case PlotKind::WorkPrecision: return new AccuracyView(parent);

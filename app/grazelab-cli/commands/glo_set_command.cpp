@@ -50,22 +50,12 @@ std::optional<core::MassChain> chainOf(const OptionValues& options, std::stop_to
   return core::massChainOf(model.value->model);
 }
 
-// The top of u_s / d over a period of the weights (1 - lambda, lambda) on harmonics (fast,
-// slow), for the picture: sampled at 4096 phases of the common period (a picture's accuracy,
-// ~1e-5; the set's ends drawn are the certified search's)
+// The top of u_s / d over a period of the weights (1 - lambda, lambda), for the picture: 4096
+// phases of the common period (a picture's accuracy, ~1e-5; the set's ends drawn are the
+// certified search's)
 std::vector<QPointF> topCurve(int fast, int slow, double from, double to) {
-  constexpr int kLambdas = 400;
-  constexpr int kPhases = 4096;
   std::vector<QPointF> curve;
-  for (int i = 0; i <= kLambdas; ++i) {
-    const double lambda = from + (to - from) * i / kLambdas;
-    double top = -1e300;
-    for (int k = 0; k < kPhases; ++k) {
-      const double theta = 2 * std::numbers::pi * k / kPhases;
-      top = std::max(top, (1 - lambda) * std::cos(fast * theta) + lambda * std::cos(slow * theta));
-    }
-    curve.emplace_back(lambda, top);
-  }
+  for (const auto& [lambda, top] : core::gloTopCurve(fast, slow, from, to, 400, 4096)) curve.emplace_back(lambda, top);
   return curve;
 }
 

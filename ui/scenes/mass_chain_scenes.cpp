@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "ui/scenes/mass_chain_scenes.h"
+
+#include <QCoreApplication>
+#include <QStringList>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/model/chain_design.h"
+#include "core/model/model.h"
+#include "ui/widgets/chain_editor.h"
+
+namespace grazelab::ui {
+namespace {
+
+QString tr(const char* text) {
+  return QCoreApplication::translate("grazelab::ui::MassChainScenes", text);
+}
+
+QString number(double value, int digits = 4) { return QString::number(value, 'g', digits); }
+
+QString list(const std::vector<double>& values, int digits = 4) {
+  QStringList parts;
+  for (double value : values) parts.append(number(value, digits));
+  return parts.join(QStringLiteral(", "));
+}
+
+QString stopInWords(core::ChainStop stop) {
+  switch (stop) {
+    case core::ChainStop::ContactLimit: return tr("the contacts asked for");
+    case core::ChainStop::TimeLimit: return tr("its end time");
+    case core::ChainStop::NoFurtherContact: return tr("no further contact (the flight stays below the stop)");
+    case core::ChainStop::Undecided:
+      return tr("undecided: a contact within double's rounding (grazelab-cli simulate --precision auto "
+                "decides it in a higher precision)");
+    case core::ChainStop::SearchBudget: return tr("the contact search's budget");
+    case core::ChainStop::Cancelled: return tr("cancelled");
+  }
+  return {};
+}
+
+}  // namespace
+
+ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_token stop) {
+  ChainChoice choice;
+  core::MassChain chain{given.masses, given.springs, 0, given.stopMass, gap};
+  if (!given.harmonics.empty()) {
+    const core::ChainDesigns designs = core::designSprings(given.masses, given.springs.front(), given.harmonics, stop);
+    switch (designs.outcome) {
+      case core::DesignOutcome::Designed: break;
+      case core::DesignOutcome::NoPositiveDesign:
+        choice.problem = tr("No chain with these masses has the frequencies in the ratio %1: every one of the "
+                            "%2 solutions of the design equations is complex or has a spring ≤ 0. "
+                            "Change the masses, or pick another resonance.")
+                             .arg(resonanceName(given.harmonics))
+                             .arg(designs.paths);
+        return choice;
+      case core::DesignOutcome::Incomplete:
+        choice.problem = tr("The design of %1 could not follow every solution, so no list of designs can be "
+                            "promised: change the masses slightly.")
+                             .arg(resonanceName(given.harmonics));
+        return choice;
+      case core::DesignOutcome::Stopped: return choice;
+      case core::DesignOutcome::BadRequest:
+        choice.problem = tr("The resonance %1 cannot be designed for %2 masses.")
+                             .arg(resonanceName(given.harmonics))
+                             .arg(given.masses.size());
+        return choice;
+    }
+    choice.designs = int(designs.designs.size());
+    const int design = std::clamp(given.designBranch, 1, choice.designs);
+    chain.springs = designs.designs[std::size_t(design - 1)].springs;
+  }
+  if (const auto problems = core::validate(chain); !problems.empty()) {
+    choice.problem = QString::fromStdString(core::describe(problems));
+    return choice;
+  }
+  choice.chain = chain;
+  return choice;
+}
+
+QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& given, int designs,
+                       const core::ChainModes& modes, const core::SpectrumRatios& ratios) {
+  const std::vector<double> omega(modes.omega.data(), modes.omega.data() + modes.omega.size());
+  QString text = given.harmonics.empty()
+                     ? tr("Springs k = %1 (as given).").arg(list(chain.springs))
+                     : tr("Springs designed for %1 (design %2 of %3): k = %4.")
+                           .arg(resonanceName(given.harmonics))
+                           .arg(std::clamp(given.designBranch, 1, designs))
+                           .arg(designs)
+                           .arg(list(chain.springs));
+  text += QLatin1Char(' ') + tr("Frequencies ω = %1 (fastest first).").arg(list(omega));
+  QStringList harmonics;
+  for (int n : ratios.harmonics) harmonics.append(QString::number(n));
+  if (ratios.commensurate) {
+    text += QLatin1Char(' ') + tr("In the ratio %1 × ω₀ (ω₀ = %2, off by %3): every free motion repeats after "
+                                  "T = 2π/ω₀ = %4.")
+                                   .arg(harmonics.join(QStringLiteral(" : ")), number(ratios.omega0, 6),
+                                        number(ratios.detuning, 2), number(2 * M_PI / ratios.omega0, 6));
+  } else if (!ratios.harmonics.empty()) {
+    text += QLatin1Char(' ') + tr("Not commensurate: nearest %1, detuned by %2 %; no common period.")
+                                   .arg(harmonics.join(QStringLiteral(" : ")), number(100 * ratios.detuning, 2));
+  } else {
+    text += QLatin1Char(' ') + tr("Not commensurate: no common period.");
+  }
+  return text;
+}
+
+QString chainStatusOf(const core::experiments::ChainSeries& series) {
+  const core::ChainRun& run = series.run;
+  const auto counted = [](long n, const QString& one, const QString& many) {
+    return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
+  };
+  const double drift = std::abs(run.energyFinal - run.energyInitial) / std::max(std::abs(run.energyInitial), 1e-300);
+  return tr("%1 masses: %2 (%3, %4, %5) until t = %6, ended by %7 · energy drift %8")
+      .arg(series.chain.size())
+      .arg(counted(run.contacts, tr("contact"), tr("contacts")), counted(run.impacts, tr("impact"), tr("impacts")),
+           counted(run.grazings, tr("grazing"), tr("grazings")), counted(run.sticks, tr("stick"), tr("sticks")))
+      .arg(number(run.tFinal, 6), stopInWords(run.stop), QString::number(drift, 'e', 1));
+}
+
+}  // namespace grazelab::ui

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+// What the scenes of a chain of N masses share: the chain the panel describes (its springs as
+// given, or designed for its resonance), and the run and the chain in words.
+#include <QString>
+
+#include <optional>
+#include <stop_token>
+
+#include "core/experiments/chain_series.h"
+#include "core/model/mass_chain.h"
+#include "ui/compute/params.h"
+
+namespace grazelab::ui {
+
+/// The chain of `given` with the gap `gap`: its springs as given, or designed for its resonance
+/// (the design asked for); or why there is none, in words (nothing either when stopped).
+struct ChainChoice {
+  std::optional<core::MassChain> chain;
+  QString problem;
+  int designs = 0;  ///< how many designs its resonance has for these masses (0: as given)
+};
+ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_token stop);
+
+/// What the chain is, in words: springs, frequencies, their ratio and the common period.
+QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& given, int designs,
+                       const core::ChainModes& modes, const core::SpectrumRatios& ratios);
+
+/// The run in words for the status line: contacts by kind, its end and why, energy drift.
+QString chainStatusOf(const core::experiments::ChainSeries& series);
+
+}  // namespace grazelab::ui
