@@ -9,6 +9,7 @@
 #include <QTimer>
 #include <QDeadlineTimer>
 #include <QJsonArray>
+#include <QLabel>
 #include <QXYSeries>
 
 #include <algorithm>
@@ -412,6 +413,33 @@ class ScenesTest : public QObject {
       const double lambda2 = point.x(), lambda3 = point.y();
       QVERIFY(std::abs(top({3, 2, 1}, {1 - lambda2 - lambda3, lambda2, lambda3}) - 1) < 1e-6);
     }
+  }
+
+  // Theorem 2.1 for N = 3 (issue 33): the 1IPP family's data tend to the grazing limit the
+  // theorem gives and its impact speed to 0 as T -> T*; the slider's orbit is periodic (its
+  // exact run meets the stop at T, 2T, 3T)
+  void chainOnePeriodicOrbitsTendToTheirGrazingLimit() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("chain-1ipp")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const SceneJob& job = m_window->displayed()->request->job;
+    QVERIFY2(job.ok, qPrintable(job.message));
+    const CurveFigure& data = figure(*m_window, PlotKind::OnePeriodicData);
+    const CurveFigure& speed = figure(*m_window, PlotKind::ImpactSpeed);
+    QCOMPARE(data.reference.size(), std::size_t(1));
+    QVERIFY(data.curve.size() > 50);
+    // the family's last orbits, T within 1e-6 of T*: the data at the limit's, the speed near 0
+    const QPointF nearest = data.curve.back();
+    QVERIFY(nearest.x() > 1 - 1e-6);
+    QVERIFY2(std::abs(nearest.y() - data.reference[0].y()) < 1e-4,
+             qPrintable(QStringLiteral("%1 against %2").arg(nearest.y()).arg(data.reference[0].y())));
+    QVERIFY(speed.curve.back().y() < 1e-4);
+    for (const QPointF& contact : figure(*m_window, PlotKind::ChainStopTrace).markers) {
+      QVERIFY2(std::abs(contact.x() - std::round(contact.x())) < 1e-9, qPrintable(QString::number(contact.x(), 'g', 17)));
+    }
+    QCOMPARE(figure(*m_window, PlotKind::ChainStopTrace).markers.size(), std::size_t(3));
+    // the weights are not this scene's: hidden
+    const auto* lastWeight = m_window->parameterPanel()->chainEditor()->findChild<QLabel*>(QStringLiteral("chainLastWeight"));
+    QVERIFY(lastWeight && !lastWeight->isVisibleTo(m_window.get()));
   }
 
   // the animated chain: plays forward at its rate, steps from contact to contact, and its time

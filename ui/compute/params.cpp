@@ -20,7 +20,7 @@ namespace {
 constexpr std::array kAllKeys = {ParamKey::Lambda, ParamKey::M1,           ParamKey::M2,
                                  ParamKey::Gap,    ParamKey::K1,           ParamKey::K2,
                                  ParamKey::Perturbation, ParamKey::Horizon, ParamKey::Period,
-                                 ParamKey::FrequencyRatio};
+                                 ParamKey::FrequencyRatio, ParamKey::ChainPeriod};
 constexpr std::array kAllDirections = {PerturbDirection::V2, PerturbDirection::U2,
                                        PerturbDirection::U1, PerturbDirection::V1};
 
@@ -150,6 +150,7 @@ double Params::value(ParamKey key) const {
     case ParamKey::Horizon: return horizon;
     case ParamKey::Period: return periodFraction;
     case ParamKey::FrequencyRatio: return frequencyRatio;
+    case ParamKey::ChainPeriod: return chainPeriodFraction;
   }
   return 0;
 }
@@ -166,6 +167,7 @@ void Params::setValue(ParamKey key, double value) {
     case ParamKey::Horizon: horizon = value; break;
     case ParamKey::Period: periodFraction = value; break;
     case ParamKey::FrequencyRatio: frequencyRatio = value; break;
+    case ParamKey::ChainPeriod: chainPeriodFraction = value; break;
   }
 }
 
@@ -181,6 +183,7 @@ QString jsonKey(ParamKey key) {
     case ParamKey::Horizon: return QStringLiteral("contacts");
     case ParamKey::Period: return QStringLiteral("periodOverT2");
     case ParamKey::FrequencyRatio: return QStringLiteral("frequencyRatio");
+    case ParamKey::ChainPeriod: return QStringLiteral("chainPeriodOverT");
   }
   return {};
 }

@@ -24,6 +24,7 @@ enum class ParamKey {
   Horizon,       ///< number of contacts to compute
   Period,        ///< T / T2 for the one-impact-per-period orbit
   FrequencyRatio,  ///< w_fast / w_slow of a detuned chain (the detuned-contrast scene)
+  ChainPeriod,     ///< T / T* of an N-mass chain's 1IPP orbit (T* its common period)
 };
 
 /// Which component of the start state the perturbation moves.
@@ -63,6 +64,7 @@ struct Params {
   double horizon = 200;         ///< contacts
   double periodFraction = 0.9;  ///< T / T2 of the 1IPP orbit
   double frequencyRatio = 2.05; ///< w_fast / w_slow of the detuned chain
+  double chainPeriodFraction = 0.9;  ///< T / T* of the N-mass 1IPP orbit
   bool resonantDesign = true;   ///< k2 from the 1:2 design (core::resonantK2)
   /// The landscape's region of the grazing-start plane, u1 in units of the gap d and v1 in
   /// units of d w2 (so that it frames the grazing family whatever the chain)

@@ -99,6 +99,7 @@ std::vector<std::unique_ptr<Scene>> makeScenes() {
       grazingFamilyScene, onePeriodicScene, perturbationScene, randomStartsScene,
       stickingScene,      detunedScene,     nearGrazingScene,  landscapeScene,
       accuracyScene,      modesScene,       threeMassesScene, grazingSetsScene,
+      chainOnePeriodicScene,
   };
   std::vector<std::unique_ptr<Scene>> scenes;
   for (auto make : table) scenes.push_back(std::make_unique<Scene>(make()));

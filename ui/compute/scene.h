@@ -47,6 +47,8 @@ class Scene {
     /// a scene of a chain of N masses: the panel edits Params::massChain (ChainEditor) instead
     /// of the two-mass chain
     bool massChain = false;
+    /// the N-mass scene starts on a grazing linear orbit of the editor's weights (shown)
+    bool gloWeights = true;
     QList<PlotKind> plots;
     /// everything the scene computes for these parameters (derived.ok is true): its curves,
     /// surveys and the run's start. Called by the worker, never on the GUI thread; long loops
@@ -69,6 +71,7 @@ class Scene {
   Params defaults() const { return m_spec.defaults; }
   QList<ParamKey> parameters() const { return m_spec.parameters; }
   bool massChain() const { return m_spec.massChain; }
+  bool gloWeights() const { return m_spec.gloWeights; }
   QList<PlotKind> plots() const { return m_spec.plots; }
   /// `cache`: what the scene kept from before (none: it starts afresh).
   SceneJob build(const Params& params, const DerivedModel& derived, std::stop_token stop = {},

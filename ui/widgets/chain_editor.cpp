@@ -249,6 +249,7 @@ void ChainEditor::rebuildRows() {
   m_lastWeight->setText(tr("λ%1 = 1 − the others = %2").arg(subscript(n), QString::number(m_chain.weights.back(), 'g', 6)));
   m_lastWeight->setToolTip(weightSpec(n).toolTip);
   m_rows->addWidget(m_lastWeight);
+  setWeightsShown(m_weightsShown);
   m_design->setVisible(!m_chain.harmonics.empty());
   m_designLabel->setVisible(!m_chain.harmonics.empty());
 }
@@ -267,6 +268,12 @@ void ChainEditor::setSummary(const QString& text, int designs, bool refused) {
 }
 
 QString ChainEditor::summary() const { return m_summary->text(); }
+
+void ChainEditor::setWeightsShown(bool shown) {
+  m_weightsShown = shown;
+  for (SliderSpin* weight : m_weights) weight->setVisible(shown);
+  if (m_lastWeight) m_lastWeight->setVisible(shown);
+}
 
 void ChainEditor::changed() { emit chainChanged(m_chain); }
 

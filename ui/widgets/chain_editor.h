@@ -34,6 +34,8 @@ class ChainEditor : public QWidget {
   /// how many designs the resonance has for these masses, or why it has none (`refused`).
   void setSummary(const QString& text, int designs, bool refused);
   QString summary() const;
+  /// Shows the weights of the grazing linear orbit (a scene that starts elsewhere hides them).
+  void setWeightsShown(bool shown);
 
   /// The resonances offered for `masses` masses, as their harmonics fastest first ("1:2:3" is
   /// 3, 2, 1); the first entry, empty, is "as given".
@@ -61,6 +63,7 @@ class ChainEditor : public QWidget {
   QList<SliderSpin*> m_weights;
   QLabel* m_lastWeight = nullptr;
   QLabel* m_summary = nullptr;
+  bool m_weightsShown = true;
 };
 
 /// A resonance's name as the menu shows it, slowest first ("1:2:3" for harmonics 3, 2, 1).

@@ -55,6 +55,12 @@ ParamSpec paramSpec(ParamKey key) {
               tr("Period T of the one-impact-per-period orbit as a fraction of T₂, the slow "
                  "period. As T → T₂ from below the orbit tends to GLO(λ*) (Theorem 2.1)."),
               0.5, 0.999, 0.01, 0.999999, 6, false, {}};
+    case ParamKey::ChainPeriod:
+      return {key, tr("T / T*"),
+              tr("Period T of the chain's one-impact-per-period orbit as a fraction of T*, the "
+                 "chain's common period. As T → T* from below the orbit tends to a grazing linear "
+                 "orbit whose weights the theorem gives (Theorem 2.1 for N masses)."),
+              0.3, 0.999, 0.01, 0.999999, 6, false, {}};
     case ParamKey::FrequencyRatio:
       return {key, tr("ω₁ / ω₂"),
               tr("Ratio of the fast to the slow frequency of the detuned chain (k₂ is chosen to "

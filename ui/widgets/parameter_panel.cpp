@@ -103,6 +103,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   auto* startLayout = new QVBoxLayout(start);
   addControl(startLayout, ParamKey::Lambda);
   addControl(startLayout, ParamKey::Period);
+  addControl(startLayout, ParamKey::ChainPeriod);
   addControl(startLayout, ParamKey::Perturbation);
   auto* directionRow = new QHBoxLayout;
   m_directionLabel = new QLabel(tr("direction"), start);
@@ -179,6 +180,7 @@ void ParameterPanel::setScene(const Scene& scene) {
   m_massChainScene = scene.massChain();
   m_chainBox->setVisible(!m_massChainScene);
   m_massChainBox->setVisible(m_massChainScene);
+  m_chainEditor->setWeightsShown(scene.gloWeights());
   if (SliderSpin* gap = m_controls.value(ParamKey::Gap)) {
     if (m_massChainScene) m_massChainLayout->addWidget(gap);
     else m_chainLayout->insertWidget(3, gap);  // after m1, m2, k1, as built
@@ -189,7 +191,7 @@ void ParameterPanel::setScene(const Scene& scene) {
   m_directionLabel->setVisible(perturb && !m_massChainScene);
   // a box with nothing the scene exposes is not shown empty (the random starts pick their own)
   m_startBox->setVisible(perturb || m_sceneKeys.contains(ParamKey::Lambda) ||
-                         m_sceneKeys.contains(ParamKey::Period));
+                         m_sceneKeys.contains(ParamKey::Period) || m_sceneKeys.contains(ParamKey::ChainPeriod));
   m_runBox->setVisible(m_sceneKeys.contains(ParamKey::Horizon));
   updateFeasibility();
 }
