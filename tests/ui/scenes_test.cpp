@@ -442,6 +442,33 @@ class ScenesTest : public QObject {
     QVERIFY(lastWeight && !lastWeight->isVisibleTo(m_window.get()));
   }
 
+  // a string of eight masses (issue 33): the stop inside it (mass 5), its slowest mode pushed:
+  // every contact asked for is found, the stopped mass on the stop at each (u5 = d, from the
+  // grid to 1 % of d), no flight bound drawn for a chain with no common period, and no error
+  // estimate claimed where none was made
+  void eightMassesRunWithTheStopInside() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("eight-masses")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const SceneJob& job = m_window->displayed()->request->job;
+    QVERIFY2(job.ok, qPrintable(job.message));
+    QCOMPARE(job.chainSeries->chain.size(), 8);
+    QCOMPARE(job.chainSeries->chain.stopped(), 5);
+    QCOMPARE(job.chainSeries->run.contacts, 100L);
+    QVERIFY(!job.chainSeries->ratios.commensurate);
+    QVERIFY(figure(*m_window, PlotKind::ChainFlights).reference.empty());
+    QVERIFY(!job.chainTrust.has_value());
+    QVERIFY2(job.chainStatus.contains(QStringLiteral("no error estimate")), qPrintable(job.chainStatus));
+    MassChainView* moving = nullptr;
+    for (SceneView* view : m_window->sceneViews()) {
+      if (auto* found = dynamic_cast<MassChainView*>(view)) moving = found;
+    }
+    QVERIFY(moving);
+    for (const auto& event : job.chainSeries->run.events) {
+      QCOMPARE(event.u[4], 1.0);  // on the stop exactly at its contacts
+      if (event.t <= job.chainSeries->grid.back().t) QVERIFY(std::abs(moving->displacementsAt(event.t)[4] - 1) < 0.01);
+    }
+  }
+
   // the animated chain: plays forward at its rate, steps from contact to contact, and its time
   // is the cursor of the trace and the phase portrait
   void chainAnimationPlaysStepsAndMovesTheCursors() {

@@ -41,7 +41,7 @@ Params enterScene(const Params& own, const Params& chain) {
   params.k2 = chain.k2;
   params.resonantDesign = chain.resonantDesign;
   params.branch = chain.branch;
-  params.massChain = chain.massChain;
+  // (a chain of N masses stays with its scene: each N-mass scene is about its own chain)
   return params;
 }
 
@@ -99,7 +99,7 @@ std::vector<std::unique_ptr<Scene>> makeScenes() {
       grazingFamilyScene, onePeriodicScene, perturbationScene, randomStartsScene,
       stickingScene,      detunedScene,     nearGrazingScene,  landscapeScene,
       accuracyScene,      modesScene,       threeMassesScene, grazingSetsScene,
-      chainOnePeriodicScene,
+      chainOnePeriodicScene, eightMassesScene,
   };
   std::vector<std::unique_ptr<Scene>> scenes;
   for (auto make : table) scenes.push_back(std::make_unique<Scene>(make()));

@@ -95,7 +95,8 @@ core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, dou
 
 /// The parameters a scene runs with when it is entered: its own settings (start, push, length,
 /// map region) as it last had them, on the chain the user was looking at (the chain is shared
-/// on purpose: it is what the scenes compare).
+/// on purpose: it is what the scenes compare). The chain of N masses of the N-mass scenes is
+/// their own (a string of eight masses, a 1:3 pair, three masses in 1:2:3) and stays with them.
 Params enterScene(const Params& own, const Params& chain);
 
 /// The start most scenes share: GLO(lambda) data pushed by the panel's perturbation, run for
