@@ -13,6 +13,8 @@ namespace grazelab::core::experiments {
 ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop) {
   ChainSeries series;
   series.chain = spec.chain;
+  series.start = spec.start;
+  series.contactsAsked = spec.contacts;
   series.modes = chainModes(spec.chain);
   series.ratios = detectRatios(series.modes.omega);
   if (series.ratios.commensurate) series.period = 2 * std::numbers::pi / series.ratios.omega0;

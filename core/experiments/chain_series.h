@@ -43,6 +43,8 @@ struct ChainGridPoint {
 
 struct ChainSeries {
   MassChain chain;
+  ChainState start;
+  long contactsAsked = 0;
   ChainRun run;
   ChainModes modes;
   SpectrumRatios ratios;

@@ -56,15 +56,17 @@ class HeadlessTest : public QObject {
   // ids --scene takes, with the titles as the menu shows them
   void listsScenesOnePerLine() {
     const QStringList lines = listScenes();
-    QCOMPARE(lines.size(), qsizetype(10));
+    QCOMPARE(lines.size(), qsizetype(14));  // the note's ten, then the four of N masses
     QVERIFY2(lines.first().startsWith(QStringLiteral("grazing ")), qPrintable(lines.first()));
     QVERIFY(lines.first().contains(QStringLiteral("Ctrl+1")));
     QVERIFY(lines[8].contains(QStringLiteral("Accuracy: methods against the exact solver")));
-    QVERIFY2(lines.last().startsWith(QStringLiteral("modes ")) && lines.last().contains(QStringLiteral("Ctrl+M")),
-             qPrintable(lines.last()));
+    QVERIFY2(lines[9].startsWith(QStringLiteral("modes ")) && lines[9].contains(QStringLiteral("Ctrl+M")),
+             qPrintable(lines[9]));
+    QVERIFY2(lines.last().startsWith(QStringLiteral("eight-masses ")), qPrintable(lines.last()));
     const QStringList ids = listSceneIds();
     for (const char* id : {"grazing", "1ipp", "perturbations", "random-starts", "sticking",
-                           "detuned", "near-grazing", "landscape", "accuracy", "modes"}) {
+                           "detuned", "near-grazing", "landscape", "accuracy", "modes",
+                           "three-masses", "grazing-sets", "chain-1ipp", "eight-masses"}) {
       QVERIFY2(ids.contains(QString::fromLatin1(id)), id);
     }
   }

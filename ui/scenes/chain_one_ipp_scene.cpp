@@ -52,7 +52,7 @@ Scene::Spec chainOnePeriodicScene() {
                   "period T*, a periodic motion with one impact per period (1IPP), in closed form. <i>Look "
                   "for:</i> as T → T* the impact speed falls to 0 and the data after the impact tend to "
                   "those of one grazing linear orbit (ringed at T/T* = 1), whose weights the theorem "
-                  "gives: a convex mix of the modes, each by its share a_sj / ω_j². The slider's orbit "
+                  "gives: a convex mix of the modes, each by its share aₛⱼ / ωⱼ². The slider's orbit "
                   "over three periods (its trace, and the chain) impacts once a period. <i>Why:</i> near "
                   "T* the impact is ever gentler, and the motion between impacts ever closer to the free "
                   "motion that touches the stop.");

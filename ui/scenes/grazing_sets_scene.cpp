@@ -38,12 +38,12 @@ CurveFigure intervalFigure(int fast, int slow, const core::GrazingInterval& set,
   figure.title = tr("%1: GLO grazes for λ in [%2, %3]").arg(ratio, number(set.low, 4), number(set.high, 4));
   figure.xTitle = tr("λ (the slow mode's weight)");
   figure.yTitle = tr("top of u / d over a period");
-  figure.toolTip = tr("GLO_λ = (1 − λ) GLOM_fast + λ GLOM_slow. Its top over a period is 1 (it touches the "
+  figure.toolTip = tr("GLO(λ) = (1 − λ) GLOM(fast) + λ GLOM(slow). Its top over a period is 1 (it touches the "
                       "stop and stays below) exactly on the grazing set, whose ends are certified (the "
                       "note's [0, 4/3] for 1:2; [0, n²/(n² − 1)] for 1:n); elsewhere it passes the stop.");
   const double width = set.high - set.low;
   const double from = std::min(-0.5, set.low - 0.25 * width), to = std::max(1.5, set.high + 0.25 * width);
-  figure.curveName = tr("top of GLO_λ");
+  figure.curveName = tr("top of GLO(λ)");
   for (const auto& [x, top] : core::gloTopCurve(fast, slow, from, to, 240, 1024)) figure.curve.emplace_back(x, top);
   figure.referenceName = tr("grazing set");
   figure.reference = {QPointF(set.low, 1), QPointF(set.high, 1)};
@@ -69,7 +69,7 @@ CurveFigure regionFigure(const std::vector<int>& harmonics, const std::vector<co
   figure.title = tr("%1:%2:%3: the weights that graze (inside)").arg(harmonics[2]).arg(harmonics[1]).arg(harmonics[0]);
   figure.xTitle = tr("λ₂");
   figure.yTitle = tr("λ₃");
-  figure.toolTip = tr("GLO_λ = λ₁ GLOM₁ + λ₂ GLOM₂ + λ₃ GLOM₃ with λ₁ = 1 − λ₂ − λ₃ grazes exactly inside this "
+  figure.toolTip = tr("GLO(λ) = λ₁ GLOM₁ + λ₂ GLOM₂ + λ₃ GLOM₃ with λ₁ = 1 − λ₂ − λ₃ grazes exactly inside this "
                       "convex region (its boundary certified along rays from the centre); the simplex of "
                       "non-negative weights is always inside. The ring is the weights of the panel.");
   figure.curveName = tr("boundary of the grazing set");
@@ -90,7 +90,7 @@ Scene::Spec grazingSetsScene() {
   scene.alias = QStringLiteral("grazing-sets");
   scene.title = tr("Grazing sets of other resonances");
   scene.text = tr("<b>Lemma 2.1 for any resonance.</b> A weighted sum of the pure-mode grazing orbits, "
-                  "GLO_λ = Σ λⱼ GLOMⱼ (weights summing to 1), touches the stop at t = 0. It is a grazing "
+                  "GLO(λ) = Σ λⱼ GLOMⱼ (weights summing to 1), touches the stop at t = 0. It is a grazing "
                   "orbit when it never passes the stop over a period. <i>Look for:</i> with two modes, the "
                   "top of u/d over a period against λ is 1 on an interval, the grazing set (for 1:2 the "
                   "note's [0, 4/3], for 1:3 [0, 9/8]); with three, the weights that graze fill a convex "
@@ -145,16 +145,16 @@ Scene::Spec grazingSetsScene() {
       if (stop.stop_requested()) return job;
       job.figures[PlotKind::GrazingSet] = regionFigure(harmonics, boundary, weights[1], weights[2]);
     }
-    // the orbit itself over one period (unpushed: GLO_λ as it is), every mass on the grid
+    // the orbit itself over one period (unpushed: GLO(λ) as it is), every mass on the grid
     const double period = 2 * std::numbers::pi / used.ratios.omega0;
     core::experiments::ChainSeriesSpec spec{chain, glo.state, 1, period, 900, 0, core::TrustMode::Off};
     const auto shared = std::make_shared<const core::experiments::ChainSeries>(core::experiments::chainSeries(spec, stop));
     if (stop.stop_requested()) return job;
     CurveFigure trace;
-    trace.title = tr("GLO_λ over one period: u%1 / d").arg(chain.stopped());
+    trace.title = tr("GLO(λ) over one period: u%1 / d").arg(chain.stopped());
     trace.xTitle = tr("t / T");
     trace.yTitle = tr("u / d");
-    trace.toolTip = tr("The stopped mass of GLO_λ over its period T, the stop dashed: a grazing orbit stays at or "
+    trace.toolTip = tr("The stopped mass of GLO(λ) over its period T, the stop dashed: a grazing orbit stays at or "
                        "below it and touches it at t = 0 and T.");
     trace.curveName = tr("u%1 / d").arg(chain.stopped());
     for (const core::experiments::ChainGridPoint& point : shared->grid) trace.curve.emplace_back(point.t / period, point.us / chain.gap);

@@ -59,7 +59,7 @@ ParamSpec weightSpec(int index) {
   ParamSpec spec = paramSpec(ParamKey::Lambda);
   spec.label = QObject::tr("λ%1").arg(subscript(index));
   spec.toolTip = QObject::tr("The weight of mode %1 (mode 1 the fastest) in the grazing linear orbit "
-                             "GLO_λ = Σ λⱼ GLOMⱼ the run starts on, at its touch of the stop. The "
+                             "GLO(λ) = Σ λⱼ GLOMⱼ the run starts on, at its touch of the stop. The "
                              "last weight is 1 minus the others.")
                      .arg(index);
   spec.sliderMin = -1;
@@ -237,7 +237,7 @@ void ChainEditor::rebuildRows() {
   for (int j = 0; j + 1 < n; ++j) {
     m_weights.append(add(weightSpec(j + 1), m_chain.weights[std::size_t(j)], [this, j, n](double value) {
       m_chain.weights[std::size_t(j)] = value;
-      // the last weight balances the others (the weights of GLO_λ sum to 1)
+      // the last weight balances the others (the weights of GLO(λ) sum to 1)
       double others = 0;
       for (int k = 0; k + 1 < n; ++k) others += m_chain.weights[std::size_t(k)];
       m_chain.weights[std::size_t(n - 1)] = 1 - others;

@@ -95,7 +95,7 @@ bool MainWindow::writeSnapshot(QWidget* widget, const QString& path, QString* er
   });
   // the picture first: a session file beside a missing picture would only confuse
   bool saved = false;
-  const auto save = [&] { saved = saveSnapshot(widget, path, json, sessionTitle(shown), error); };
+  const auto save = [&] { saved = saveSnapshot(widget, path, json, sessionTitle(shown, scene().massChain()), error); };
   if (widget == this) withDisplayedRunInPanel(save);
   else save();
   return saved && saveFileAtomically(sessionPathFor(path), json, error);
@@ -151,10 +151,14 @@ QStringList MainWindow::csvHeader() const {
   // the parameters first, as comments (pandas: comment="#"; R: comment.char = "#"): in words,
   // as a session to open in the explorer, and as the command line that runs the same run
   const Session shown = displayedSession();
-  QStringList header{sessionTitle(shown),
+  QStringList header{sessionTitle(shown, scene().massChain()),
                      QStringLiteral("session: %1").arg(QString::fromUtf8(
                          QJsonDocument::fromJson(sessionToJson(shown)).toJson(QJsonDocument::Compact)))};
-  if (m_displayed) {
+  if (m_displayed && scene().massChain()) {
+    if (const auto& series = m_displayed->request->job.chainSeries) {
+      header.append(QStringLiteral("the run again: %1").arg(chainSimulateCommand(*series)));
+    }
+  } else if (m_displayed) {
     header.append(QStringLiteral("the run again: %1").arg(simulateCommand(m_displayed->request->job.spec)));
   }
   return header;

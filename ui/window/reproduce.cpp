@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/window/reproduce.h"
 
+#include <QStringList>
+
 #include <cmath>
 
 #include "ui/widgets/number_box.h"
@@ -26,6 +28,25 @@ QString simulateCommand(const core::experiments::Spec& spec) {
   if (spec.run.flightSearchSteps != core::defaultSearchSteps<double>()) {
     line += QStringLiteral(" --search-steps %1").arg(spec.run.flightSearchSteps);
   }
+  return line;
+}
+
+QString chainSimulateCommand(const core::experiments::ChainSeries& series) {
+  const core::MassChain& chain = series.chain;
+  const auto joined = [](const auto& values) {
+    QStringList parts;
+    for (const double value : values) parts.append(shortestText(value));
+    return parts.join(QLatin1Char(','));
+  };
+  std::vector<double> state(series.start.u.data(), series.start.u.data() + series.start.u.size());
+  state.insert(state.end(), series.start.v.data(), series.start.v.data() + series.start.v.size());
+  QString line = QStringLiteral("grazelab-cli simulate --masses %1 --springs %2")
+                     .arg(joined(chain.masses), joined(chain.springs));
+  if (chain.rightSpring > 0) line += QStringLiteral(" --right-spring %1").arg(shortestText(chain.rightSpring));
+  line += QStringLiteral(" --stop-mass %1 --gap %2 --state %3 --contacts %4 --precision double")
+              .arg(chain.stopped())
+              .arg(shortestText(chain.gap), joined(state))
+              .arg(series.contactsAsked);
   return line;
 }
 

@@ -4,6 +4,7 @@
 
 #include <QString>
 
+#include "core/experiments/chain_series.h"
 #include "core/experiments/run.h"
 
 namespace grazelab::ui {
@@ -15,5 +16,11 @@ namespace grazelab::ui {
 /// shortest round-trip form; the precision is `auto`, the explorer's rule, so the events are
 /// the same to the last bit.
 QString simulateCommand(const core::experiments::Spec& spec);
+
+/// The same for a run of a chain of N masses:
+///   grazelab-cli simulate --masses … --springs … [--right-spring K] --stop-mass S --gap D
+///                         --state u1,…,uN,v1,…,vN --contacts N
+/// with the springs the run used (designed ones as numbers), in double as the explorer runs it.
+QString chainSimulateCommand(const core::experiments::ChainSeries& series);
 
 }  // namespace grazelab::ui

@@ -77,9 +77,29 @@ QString sessionPathFor(const QString& snapshotPath) {
   return info.dir().filePath(info.fileName() + QStringLiteral(".session.json"));
 }
 
-QString sessionTitle(const Session& session) {
+QString sessionTitle(const Session& session, bool massChain) {
   const Params& p = session.params;
   const auto n = [](double value) { return shortestText(value); };
+  if (massChain) {
+    // a chain of N masses: its own numbers (the two-mass ones are not this run's)
+    const MassChainParams& c = p.massChain;
+    const auto joined = [&n](const auto& values) {
+      QStringList parts;
+      for (const auto value : values) parts.append(n(double(value)));
+      return parts.join(QStringLiteral(", "));
+    };
+    QStringList ratio;
+    for (auto it = c.harmonics.rbegin(); it != c.harmonics.rend(); ++it) ratio.append(QString::number(*it));
+    const QString springs = c.harmonics.empty()
+                                ? QStringLiteral("k = (%1)").arg(joined(c.springs))
+                                : QStringLiteral("k₁ = %1 and the springs of %2 (design %3)")
+                                      .arg(n(c.springs.front()), ratio.join(QLatin1Char(':')))
+                                      .arg(c.designBranch);
+    return QStringLiteral("GrazeLab: %1 (masses (%2), %3, stop on mass %4, d = %5, weights (%6), δ = %7, %8 contacts)")
+        .arg(session.scene, joined(c.masses), springs)
+        .arg(c.stopMass > 0 ? c.stopMass : c.size())
+        .arg(n(p.gap), joined(c.weights), n(p.perturbation), n(p.horizon));
+  }
   const QString chain = QStringLiteral("m₁ = %1, m₂ = %2, k₁ = %3, k₂ = %4, d = %5")
                             .arg(n(p.m1), n(p.m2), n(p.k1), n(p.k2), n(p.gap));
   if (session.start) {

@@ -38,6 +38,6 @@ std::optional<Session> readSessionFile(const QString& path, const Params& defaul
 QString sessionPathFor(const QString& snapshotPath);
 /// The session in one line of words, for a document's title and a CSV's header
 /// ("GrazeLab: Grazing family GLO_lambda (λ = 0.5, δ = -0.05, m₁ = 1, …, 60 contacts)").
-QString sessionTitle(const Session& session);
+QString sessionTitle(const Session& session, bool massChain = false);
 
 }  // namespace grazelab::ui
