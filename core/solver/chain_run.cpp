@@ -51,17 +51,51 @@ Rate<S> springsOn(const MassChain& chain, Eigen::Index i, const ChainVector<S>& 
           (4 * std::numeric_limits<S>::epsilon() + relativeError) * size};
 }
 
-// How mass s at rest on the stop with no force (v_s = 0, F_s = 0: a release, or a start there)
-// moves first: u_s''' = (k_s v_(s-1) + k_(s+1) v_(s+1)) / m_s (the force's rate), or when that is
-// 0, u_s'''' = (k_s a_(s-1) + k_(s+1) a_(s+1)) / m_s with a the neighbours' accelerations (the
-// rate of the force's rate: a_s = 0 and v = 0 there). The first whose sign is resolved, as its
-// order and value; nothing when neither is. Negative: the mass leaves the stop; positive: the
-// springs start pressing it on. `computed`: the state comes from a closed form (a touch, a
-// release), its velocities good to some tens of roundings of the motion's speed (each mass's
-// sqrt(2E / m_i)), not exact as a given start's are: a flat touch's rounding-sized velocities
-// must not pass for a jerk.
+// k (x - y) when the difference and the product are exact in S (an error-free sum and an fma
+// say so); nothing when either rounds
 template <typename S>
-std::optional<BasicLeaving<S>> stopLeaving(const MassChain& chain, const BasicChainState<S>& at, bool computed) {
+std::optional<S> exactTerm(const S& k, const S& x, const S& y) {
+  using std::fma;
+  const S difference = x - y;
+  const S back = difference - x;
+  if ((x - (difference - back)) + (-y - back) != 0) return std::nullopt;  // the difference rounded
+  const S product = k * difference;
+  if (fma(k, difference, -product) != 0) return std::nullopt;            // the product rounded
+  return product;
+}
+
+// Whether mass s, at rest on the stop in a given start, is exactly flat: the springs' force on it
+// and that force's rate are both exactly 0 in the start's own numbers (each term exact, the two
+// sides exact opposites). Only then may its fourth derivative decide: a force within rounding
+// but not 0 (a neighbour one ulp past the gap) is undecided here and decided one precision up,
+// where it is resolved.
+template <typename S>
+bool exactlyFlat(const MassChain& chain, const BasicChainState<S>& at) {
+  const Eigen::Index n = chain.size();
+  const Eigen::Index s = chain.stopped() - 1;
+  const S us = at.u[s];
+  const S zero = 0;
+  const S leftK = S(chain.springs[std::size_t(s)]);
+  const S rightK = S(s + 1 < n ? chain.springs[std::size_t(s + 1)] : chain.rightSpring);
+  const auto left = exactTerm(leftK, s > 0 ? S(at.u[s - 1]) : zero, us);
+  const auto right = exactTerm(rightK, s + 1 < n ? S(at.u[s + 1]) : zero, us);
+  if (!left || !right || *left != -*right) return false;
+  const auto leftRate = exactTerm(leftK, s > 0 ? S(at.v[s - 1]) : zero, zero);
+  const auto rightRate = exactTerm(s + 1 < n ? rightK : zero, s + 1 < n ? S(at.v[s + 1]) : zero, zero);
+  return leftRate && rightRate && *leftRate == -*rightRate;
+}
+
+// How mass s at rest on the stop with no force (v_s = 0, F_s = 0: a release, or a start there)
+// moves first: by the force's rate, u_s''' = (k_s v_(s-1) + k_(s+1) v_(s+1)) / m_s, when its sign
+// is resolved; or, when the start is exactly flat (`flat`: exactlyFlat, no force and no rate at
+// all), by u_s'''' = (k_s a_(s-1) + k_(s+1) a_(s+1)) / m_s with a the neighbours' accelerations.
+// As its order and value; nothing when neither decides. Negative: the mass leaves the stop;
+// positive: the springs start pressing it on. `computed`: the state comes from a closed form (a
+// touch, a release), its velocities good to some tens of roundings of the motion's speed (each
+// mass's sqrt(2E / m_i)), not exact as a given start's are.
+template <typename S>
+std::optional<BasicLeaving<S>> stopLeaving(const MassChain& chain, const BasicChainState<S>& at, bool computed,
+                                           bool flat) {
   using std::abs;
   using std::sqrt;
   const Eigen::Index n = chain.size();
@@ -83,10 +117,10 @@ std::optional<BasicLeaving<S>> stopLeaving(const MassChain& chain, const BasicCh
     return Rate<S>{at.v[i], 64 * std::numeric_limits<S>::epsilon() * speed};
   });
   if (abs(jerk.value) > jerk.error) return BasicLeaving<S>{3, jerk.value};
-  // no jerk: a flat point (the neighbours at rest, or balancing): the displacements' own error is
-  // a few tens of roundings (they come from a flight's closed form, as in stopForce)
-  const S carried = 64 * std::numeric_limits<S>::epsilon();
-  const Rate<S> snap = next([&](Eigen::Index i) { return springsOn(chain, i, at.u, carried); });
+  if (!flat) return std::nullopt;
+  // exactly flat: the fourth derivative, from the neighbours' accelerations (the start's own
+  // numbers: rounded only by this arithmetic)
+  const Rate<S> snap = next([&](Eigen::Index i) { return springsOn(chain, i, at.u, S(0)); });
   if (abs(snap.value) > snap.error) return BasicLeaving<S>{4, snap.value};
   return std::nullopt;
 }
@@ -94,7 +128,7 @@ std::optional<BasicLeaving<S>> stopLeaving(const MassChain& chain, const BasicCh
 // how a flight leaves the stop after a release: stopLeaving when negative
 template <typename S>
 std::optional<BasicLeaving<S>> releaseLeaving(const MassChain& chain, const BasicChainState<S>& at) {
-  const std::optional<BasicLeaving<S>> leaving = stopLeaving(chain, at, true);
+  const std::optional<BasicLeaving<S>> leaving = stopLeaving(chain, at, true, false);
   if (!leaving || !(leaving->value < 0)) return std::nullopt;
   return leaving;
 }
@@ -171,7 +205,7 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
     // decides, as at a release: it pulls the mass off (a flight leaving by its jerk, or its
     // fourth derivative where the jerk is 0 too) or presses it on (held)
     std::optional<BasicLeaving<S>> startLeaving;
-    if (onStop && !leaving && !(abs(force.value) > force.error)) startLeaving = stopLeaving(chain, state, anyEvent);
+    if (onStop && !leaving && !(abs(force.value) > force.error)) startLeaving = stopLeaving(chain, state, anyEvent, !anyEvent && exactlyFlat(chain, state));
     if (startLeaving && startLeaving->value < 0) leaving = startLeaving;
     if (onStop && !leaving && (force.value > force.error || (startLeaving && startLeaving->value > 0))) {
       if (!anyEvent || lastType != EventType::Stick || lastTime != t) {
@@ -211,6 +245,7 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
     flightInto(dynamics, state, flight);
     const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * slowest);
     const BasicChainContact<S> contact = firstContact(dynamics, flight, horizon, 1'000'000, leaving);
+    const std::optional<BasicLeaving<S>> flightLeaving = leaving;
     leaving.reset();
     const bool past = tEnd > 0 && (contact.kind == ChainContactKind::None || contact.kind == ChainContactKind::Budget ||
                                    t + contact.t > tEnd);
@@ -229,6 +264,17 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
       // its acceleration takes it away, within rounding, and no force presses it on)
       return finish(ChainStop::Undecided, state, t);
     }
+    if (contact.kind == ChainContactKind::Touch && flightLeaving && flightLeaving->order == 4 &&
+        contact.t == dynamics.period) {
+      // a flat start's return at T: the chain's free motion repeats after T exactly (its
+      // frequencies are taken as exact multiples), so the state is the start's again, exactly
+      // flat, and leaves the same way (a grazing with no force)
+      samplePiece(t, S(t + contact.t), false, flightAt);
+      t += contact.t;
+      record(EventType::Grazing, state, state.v, t);
+      leaving = flightLeaving;
+      continue;
+    }
     samplePiece(t, S(t + contact.t), false, flightAt);
     stateInto(dynamics, flight, contact.t, at);
     vBefore = at.v;
@@ -238,18 +284,13 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
       at.v[s] = -at.v[s];
       record(EventType::Impact, at, vBefore, when);
     } else {
-      // at rest on the stop: pulled away (grazing) or pressed into it (a stick); with no force
-      // either way (a flat touch: a flight that left by its fourth derivative comes back so at
-      // a commensurate chain's period) the force's next rates decide, as at a start there
+      // at rest on the stop: pulled away (grazing) or pressed into it (a stick)
       at.v[s] = 0;
       const BasicStopForce<S> pressed = stopForce(chain, at);
-      const std::optional<BasicLeaving<S>> flat =
-          abs(pressed.value) > pressed.error ? std::nullopt : stopLeaving(chain, at, true);
-      if (pressed.value > pressed.error || (flat && flat->value > 0)) {
+      if (pressed.value > pressed.error) {
         record(EventType::Stick, at, vBefore, when);
-      } else if (pressed.value < -pressed.error || flat) {
+      } else if (pressed.value < -pressed.error) {
         record(EventType::Grazing, at, vBefore, when);
-        leaving = flat;  // (none after an ordinary grazing: the next flight leaves by its pull)
       } else {
         return finish(ChainStop::Undecided, at, when);
       }

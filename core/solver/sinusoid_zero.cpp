@@ -342,6 +342,11 @@ BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& sum, std::type_identity_t
     start = f.at(t0);
     if (!(start.f < -start.error)) return {ZeroKind::Touch, S(0)};
   }
+  // an interval cleared by Taylor's bound that the windows cannot resolve (a pull off the stop
+  // of a few ulps: t0 of 1e-16 against windows of 1e-15) would end in a touch made of rounding
+  // at the resolution (a loop of touches 1e-12 apart was seen): undecided at the start instead,
+  // decided one precision up
+  if (t0 > 0 && t0 < search.resolution) return {ZeroKind::Touch, S(0)};
   // periodic: a whole period at most (f(T) = f(0), so the search sees the return); the halving
   // runs over [t0, end] in pieces a fraction of the fastest period wide, so that a long horizon
   // does not start from one huge window

@@ -315,7 +315,20 @@ class ScenesTest : public QObject {
     }
     QVERIFY(seen >= 5);
 
+    // another mass's phase portrait: its state at each contact marked on it
     Params params = m_window->params();
+    params.massChain.shownMass = 1;
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    {
+      const CurveFigure& phase = figure(*m_window, PlotKind::ChainPhase);
+      QVERIFY2(phase.title.contains(QStringLiteral("mass 1")), qPrintable(phase.title));
+      const auto& shownSeries = *m_window->displayed()->request->job.chainSeries;
+      QVERIFY(!phase.markers.empty());
+      QCOMPARE(phase.markers.front().x(), shownSeries.run.events.front().u[0] / shownSeries.chain.gap);
+      QVERIFY(std::abs(phase.curve.front().x() - shownSeries.start.u[0] / shownSeries.chain.gap) < 1e-12);
+    }
+    params.massChain.shownMass = 0;
     params.massChain.masses = {1.0, 1.0, 1.0};
     m_window->setParams(params);
     // refused: the window says why (status line and panel), the last chain stays drawn

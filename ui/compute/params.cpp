@@ -36,6 +36,7 @@ QJsonObject toJson(const MassChainParams& chain) {
                      {QStringLiteral("harmonics"), numbersArray(chain.harmonics)},
                      {QStringLiteral("designBranch"), chain.designBranch},
                      {QStringLiteral("stopMass"), chain.stopMass},
+                     {QStringLiteral("shownMass"), chain.shownMass},
                      {QStringLiteral("weights"), numbersArray(chain.weights)}};
 }
 
@@ -56,7 +57,8 @@ std::optional<MassChainParams> massChainFromJson(const QJsonObject& object, cons
                                                  QString& error) {
   MassChainParams chain = base;
   const QStringList known{QStringLiteral("masses"), QStringLiteral("springs"), QStringLiteral("harmonics"),
-                          QStringLiteral("designBranch"), QStringLiteral("stopMass"), QStringLiteral("weights")};
+                          QStringLiteral("designBranch"), QStringLiteral("stopMass"), QStringLiteral("shownMass"),
+                          QStringLiteral("weights")};
   for (const QString& name : object.keys()) {
     if (!known.contains(name)) {
       error = QStringLiteral("unknown field \"massChain.%1\" (known: %2)").arg(name, known.join(QStringLiteral(", ")));
@@ -93,12 +95,13 @@ std::optional<MassChainParams> massChainFromJson(const QJsonObject& object, cons
     }
     chain.harmonics.assign(harmonics->begin(), harmonics->end());
   }
-  for (const auto& [name, field, high] : {std::tuple{"designBranch", &chain.designBranch, 720},
-                                          std::tuple{"stopMass", &chain.stopMass, int(n)}}) {
+  for (const auto& [name, field, high] : {std::tuple{"designBranch", &chain.designBranch, 40320},
+                                          std::tuple{"stopMass", &chain.stopMass, int(n)},
+                                          std::tuple{"shownMass", &chain.shownMass, int(n)}}) {
     const QJsonValue value = object.value(QString::fromLatin1(name));
     if (value.isUndefined()) continue;
     const double number = value.toDouble(-1);
-    const int low = std::string_view(name) == "stopMass" ? 0 : 1;
+    const int low = std::string_view(name) == "designBranch" ? 1 : 0;
     if (!value.isDouble() || number != std::floor(number) || number < low || number > high) {
       error = QStringLiteral("\"massChain.%1\" must be a whole number from %2 to %3").arg(QString::fromLatin1(name)).arg(low).arg(high);
       return std::nullopt;
@@ -106,6 +109,7 @@ std::optional<MassChainParams> massChainFromJson(const QJsonObject& object, cons
     *field = int(number);
   }
   if (chain.stopMass > int(n)) chain.stopMass = 0;
+  if (chain.shownMass > int(n)) chain.shownMass = 0;
   if (object.contains(QStringLiteral("weights"))) {
     const auto weights = numbersOf(object.value(QStringLiteral("weights")), -1e3, 1e3);
     double sum = 0;
@@ -134,6 +138,7 @@ MassChainParams MassChainParams::resized(int count) const {
   chain.weights.assign(n, 1.0 / count);
   if (chain.harmonics.size() != n) chain.harmonics.clear();
   if (chain.stopMass > count) chain.stopMass = 0;
+  if (chain.shownMass > count) chain.shownMass = 0;
   if (n != masses.size()) chain.designBranch = 1;
   return chain;
 }

@@ -43,8 +43,13 @@ struct MassChainParams {
   /// GLO_lambda's weights, fastest mode first, summing to 1: the run starts on it at its touch
   /// (pushed by Params::perturbation along v_s)
   std::vector<double> weights{0.5, 0.3, 0.2};
+  /// the mass whose phase portrait and Poincaré points are drawn (1-based; 0: the stopped mass)
+  int shownMass = 0;
 
   int size() const { return int(masses.size()); }
+  /// the stopped mass and the shown one, 1-based, with their defaults resolved
+  int stopped() const { return stopMass > 0 ? stopMass : size(); }
+  int shown() const { return shownMass > 0 ? shownMass : stopped(); }
   /// The chain with `count` masses: new masses copy the last, new springs 1, the weights
   /// spread evenly, a resonance of another length dropped (springs as given).
   MassChainParams resized(int count) const;

@@ -98,7 +98,7 @@ Scene::Spec threeMassesScene() {
     const double slowest = 2 * std::numbers::pi / modes.omega.minCoeff();
     // (the error estimate of a chain with no common period shadows long searches in long
     // double: its own scene asks for none, and says so)
-    core::experiments::ChainSeriesSpec spec{chain, start, long(params.horizon), 6 * slowest, 1500, 0,
+    core::experiments::ChainSeriesSpec spec{chain, start, long(params.horizon), 6 * slowest, 1500, given.shown(),
                                             self.plots().contains(PlotKind::ChainDetunedFlights) ? core::TrustMode::Auto
                                                                                                    : core::TrustMode::Off};
     const auto shared = std::make_shared<const core::experiments::ChainSeries>(core::experiments::chainSeries(spec, stop));
@@ -133,19 +133,36 @@ Scene::Spec threeMassesScene() {
         resonant ? tr("Free flights from the stop / T (≤ 1)") : tr("Free flights / slowest period (no common period: no bound)"),
         series, unit, resonant, unitName);
 
+    // the shown mass (the stopped one by default): its phase portrait over the first periods,
+    // and its state at every contact (a Poincaré section on H, projected on its (u, v))
+    const int shown = given.shown();
+    const bool shownIsStopped = shown == chain.stopped();
     CurveFigure phase;
-    phase.title = tr("Phase portrait of mass %1").arg(chain.stopped());
-    phase.xTitle = tr("u / d");
-    phase.yTitle = tr("v / (d ω)");
-    phase.toolTip = tr("The stopped mass's velocity against its displacement over the first periods; at "
-                       "u/d = 1 the impacts reverse the velocity.");
+    phase.title = tr("Phase portrait of mass %1").arg(shown);
+    phase.xTitle = tr("u%1 / d").arg(shown);
+    phase.yTitle = tr("v%1 / (d ω₁)").arg(shown);
+    phase.toolTip = shownIsStopped ? tr("The stopped mass's velocity against its displacement over the first "
+                                        "periods; at u/d = 1 the impacts reverse the velocity.")
+                                   : tr("Mass %1's velocity against its displacement over the first periods "
+                                        "(the panel's 'phase of' chooses the mass); the dots are its state at "
+                                        "each contact of the stopped mass.")
+                                         .arg(shown);
     phase.curveName = tr("(u, v)");
     const double speed = chain.gap * modes.omega.maxCoeff();
     for (const core::experiments::ChainGridPoint& point : series.grid) {
-      phase.curve.emplace_back(point.us / chain.gap, point.vs / speed);
+      phase.curve.emplace_back(point.uChosen / chain.gap, point.vChosen / speed);
     }
-    phase.referenceName = tr("stop");
-    phase.reference = {QPointF(1, -1.5), QPointF(1, 1.5)};
+    if (shownIsStopped) {
+      phase.referenceName = tr("stop");
+      phase.reference = {QPointF(1, -1.5), QPointF(1, 1.5)};
+    } else {
+      phase.markerName = tr("at contacts");
+      const Eigen::Index i = Eigen::Index(shown - 1);
+      for (const core::ChainEvent& event : series.run.events) {
+        if (event.t > spec.window) break;
+        if (core::isContact(event.type)) phase.markers.emplace_back(event.u[i] / chain.gap, event.vBefore[i] / speed);
+      }
+    }
     job.figures[PlotKind::ChainPhase] = phase;
 
     // the contrast: the same start on the chain with k2 1 % stiffer (no common period)

@@ -95,6 +95,7 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   auto* form = new QFormLayout;
+  m_form = form;
   form->setContentsMargins(0, 0, 0, 0);
   m_count = new QSpinBox(this);
   m_count->setObjectName(QStringLiteral("chainMassCount"));
@@ -109,6 +110,14 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
   countRow->addWidget(m_stop);
   countRow->addStretch(1);
   form->addRow(tr("masses"), countRow);
+  m_shown = new QSpinBox(this);
+  m_shown->setObjectName(QStringLiteral("chainShownMass"));
+  m_shown->setToolTip(tr("The mass whose phase portrait and Poincaré points (its state at each contact) are "
+                         "drawn; the stopped mass by default."));
+  auto* shownRow = new QHBoxLayout;
+  shownRow->addWidget(m_shown);
+  shownRow->addStretch(1);
+  form->addRow(tr("phase of"), shownRow);
   m_resonance = new ElidingComboBox(this);
   m_resonance->setObjectName(QStringLiteral("chainResonance"));
   m_resonance->setToolTip(tr("The frequency ratio asked for, slowest mode first (1:2:3: ω₃ : ω₂ : ω₁ = 1 : 2 : 3). "
@@ -145,6 +154,10 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
   });
   connect(m_stop, &QSpinBox::valueChanged, this, [this](int stop) {
     m_chain.stopMass = stop == m_chain.size() ? 0 : stop;
+    changed();
+  });
+  connect(m_shown, &QSpinBox::valueChanged, this, [this](int shown) {
+    m_chain.shownMass = shown == m_chain.stopped() ? 0 : shown;
     changed();
   });
   connect(m_resonance, &QComboBox::currentIndexChanged, this, [this](int index) {
@@ -209,8 +222,11 @@ void ChainEditor::rebuildRows() {
   m_lastWeight = nullptr;
   {
     const QSignalBlocker blockStop(m_stop);
+    const QSignalBlocker blockShown(m_shown);
     m_stop->setRange(1, m_chain.size());
     m_stop->setValue(m_chain.stopMass > 0 ? m_chain.stopMass : m_chain.size());
+    m_shown->setRange(1, m_chain.size());
+    m_shown->setValue(m_chain.shownMass > 0 ? m_chain.shownMass : m_chain.stopped());
   }
   const auto add = [this](const ParamSpec& spec, double value, auto store) {
     auto* control = new SliderSpin(spec, this);
@@ -268,6 +284,8 @@ void ChainEditor::setSummary(const QString& text, int designs, bool refused) {
 }
 
 QString ChainEditor::summary() const { return m_summary->text(); }
+
+void ChainEditor::setShownMassOffered(bool offered) { m_form->setRowVisible(m_shown, offered); }
 
 void ChainEditor::setWeightsShown(bool shown) {
   m_weightsShown = shown;

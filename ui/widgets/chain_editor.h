@@ -8,6 +8,7 @@
 #include "ui/compute/params.h"
 
 class QComboBox;
+class QFormLayout;
 class QLabel;
 class QSpinBox;
 class QVBoxLayout;
@@ -36,6 +37,8 @@ class ChainEditor : public QWidget {
   QString summary() const;
   /// Shows the weights of the grazing linear orbit (a scene that starts elsewhere hides them).
   void setWeightsShown(bool shown);
+  /// Offers the choice of the mass whose phase portrait is drawn (a scene that draws one).
+  void setShownMassOffered(bool offered);
 
   /// The resonances offered for `masses` masses, as their harmonics fastest first ("1:2:3" is
   /// 3, 2, 1); the first entry, empty, is "as given".
@@ -54,6 +57,8 @@ class ChainEditor : public QWidget {
   MassChainParams m_chain;
   QSpinBox* m_count = nullptr;
   QSpinBox* m_stop = nullptr;
+  QSpinBox* m_shown = nullptr;
+  QFormLayout* m_form = nullptr;
   QComboBox* m_resonance = nullptr;
   QComboBox* m_design = nullptr;
   QLabel* m_designLabel = nullptr;
