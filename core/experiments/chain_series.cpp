@@ -22,14 +22,16 @@ ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop) {
   const Eigen::Index chosen = spec.phaseMass > 0 ? Eigen::Index(spec.phaseMass - 1) : s;
   ChainSampling<double> sampling;
   if (spec.window > 0 && spec.gridPoints > 1) {
-    for (int i = 0; i < spec.gridPoints; ++i) sampling.times.push_back(spec.window * i / (spec.gridPoints - 1));
+    for (int i = 0; i < spec.gridPoints; ++i)
+      sampling.times.push_back(spec.window * i / (spec.gridPoints - 1));
     sampling.sink = [&](double t, const ChainState& state) {
       series.grid.push_back({t, state.u[s], state.v[s], state.u[chosen], state.v[chosen],
                              std::vector<double>(state.u.data(), state.u.data() + state.u.size())});
     };
   }
   series.run = runChain(spec.chain, spec.start, spec.contacts, 0.0, stop, {}, sampling);
-  series.trust = chainTrust(spec.chain, spec.start, series.run, spec.contacts, 0.0, spec.trust, stop);
+  series.trust =
+      chainTrust(spec.chain, spec.start, series.run, spec.contacts, 0.0, spec.trust, stop);
   // each flight ends at a contact: it started at the event before (or the start)
   double from = 0;
   bool fromStop = spec.start.u[s] == spec.chain.gap && spec.start.v[s] <= 0;

@@ -21,24 +21,24 @@ struct ChainSeriesSpec {
   long contacts = 200;
   double window = 0;  ///< [time] the grid's span from t = 0 (0: none)
   int gridPoints = 1500;
-  int phaseMass = 0;  ///< 1-based; 0: the stopped mass
+  int phaseMass = 0;                  ///< 1-based; 0: the stopped mass
   TrustMode trust = TrustMode::Auto;  ///< the run's error estimate (core/solver/chain_trust.h)
 };
 
 /// One free flight: from an event (or the start) to the next contact.
 struct ChainFlight {
-  long contact = 0;        ///< the contact that ends it (1-based)
-  double duration = 0;     ///< [time]
-  bool fromStop = false;   ///< it starts on the stop (after an impact, a grazing or a release)
+  long contact = 0;       ///< the contact that ends it (1-based)
+  double duration = 0;    ///< [time]
+  bool fromStop = false;  ///< it starts on the stop (after an impact, a grazing or a release)
   bool afterImpact = false;
 };
 
 /// A point of the grid: the stopped mass and the chosen one.
 struct ChainGridPoint {
   double t = 0;
-  double us = 0, vs = 0;          ///< the stopped mass
+  double us = 0, vs = 0;            ///< the stopped mass
   double uChosen = 0, vChosen = 0;  ///< the chosen mass (ChainSeriesSpec::phaseMass)
-  std::vector<double> u;          ///< every mass's displacement (the animated chain)
+  std::vector<double> u;            ///< every mass's displacement (the animated chain)
 };
 
 struct ChainSeries {
@@ -48,7 +48,8 @@ struct ChainSeries {
   ChainRun run;
   ChainModes modes;
   SpectrumRatios ratios;
-  double period = 0;  ///< T = 2 pi / w0 when commensurate (every flight from the stop ends by it), else 0
+  double period =
+      0;  ///< T = 2 pi / w0 when commensurate (every flight from the stop ends by it), else 0
   std::vector<ChainFlight> flights;
   std::vector<ChainGridPoint> grid;
   Trust trust;  ///< the run again one precision up, compared event by event (Unchecked: off)

@@ -27,20 +27,6 @@ namespace {
 constexpr int kSliderSteps = 10000;
 constexpr double kSlowMotion = 0.15;  // speed factor near a contact, when asked for
 
-// A spring from x0 to x1 at height y: straight ends and `coils` zigzags of half-height `rise`.
-QPainterPath springPath(double x0, double x1, double y, double rise, int coils) {
-  QPainterPath path(QPointF(x0, y));
-  const double lead = 0.12 * (x1 - x0);
-  path.lineTo(x0 + lead, y);
-  const double step = (x1 - x0 - 2 * lead) / (2 * coils);
-  for (int i = 0; i < 2 * coils; ++i) {
-    path.lineTo(x0 + lead + (i + 0.5) * step, y + (i % 2 == 0 ? -rise : rise));
-  }
-  path.lineTo(x1 - lead, y);
-  path.lineTo(x1, y);
-  return path;
-}
-
 }  // namespace
 
 /// The drawing: wall, springs, masses and stop, at the view's current time.

@@ -17,30 +17,12 @@
 #include <numbers>
 
 #include "ui/plots/plot_style.h"
+#include "ui/widgets/param_specs.h"
 
 namespace grazelab::ui {
 namespace {
 
 constexpr int kSliderSteps = 10000;
-
-// A spring from x0 to x1 at height y: straight ends and `coils` zigzags of half-height `rise`.
-QPainterPath springPath(double x0, double x1, double y, double rise, int coils) {
-  QPainterPath path(QPointF(x0, y));
-  const double lead = 0.12 * (x1 - x0);
-  path.lineTo(x0 + lead, y);
-  const double step = (x1 - x0 - 2 * lead) / (2 * coils);
-  for (int i = 0; i < 2 * coils; ++i) path.lineTo(x0 + lead + (i + 0.5) * step, y + (i % 2 == 0 ? -rise : rise));
-  path.lineTo(x1 - lead, y);
-  path.lineTo(x1, y);
-  return path;
-}
-
-QString subscript(int index) {
-  static const QString digits = QStringLiteral("₀₁₂₃₄₅₆₇₈₉");
-  QString text;
-  for (const QChar digit : QString::number(index)) text += digits[digit.digitValue()];
-  return text;
-}
 
 }  // namespace
 
@@ -71,10 +53,12 @@ class MassChainView::Canvas : public QWidget {
     const double rest = 1.6 * amplitude + 0.5 * chain.gap;
     const double heaviest = *std::max_element(chain.masses.begin(), chain.masses.end());
     std::vector<double> box(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) box[std::size_t(i)] = 0.45 * rest * std::cbrt(chain.masses[std::size_t(i)] / heaviest);
+    for (int i = 0; i < n; ++i)
+      box[std::size_t(i)] = 0.45 * rest * std::cbrt(chain.masses[std::size_t(i)] / heaviest);
     const bool rightWall = chain.rightSpring > 0;
     const double stopX = (s + 1) * rest + box[std::size_t(s)] / 2 + chain.gap;
-    const double span = std::max((n + (rightWall ? 1 : 0)) * rest + box.back() / 2, stopX) + 0.35 * rest;
+    const double span =
+        std::max((n + (rightWall ? 1 : 0)) * rest + box.back() / 2, stopX) + 0.35 * rest;
     const double pad = 12;
     const double scale = (width() - 2 * pad) / span;
     const double middle = height() * 0.42;
@@ -92,7 +76,8 @@ class MassChainView::Canvas : public QWidget {
     const double wallTop = middle - 0.3 * height(), wallBottom = middle + 0.3 * height();
     const auto wall = [&](double x, int side) {
       painter.drawLine(QPointF(px(x), wallTop), QPointF(px(x), wallBottom));
-      for (double y = wallTop; y < wallBottom; y += 10) painter.drawLine(QPointF(px(x), y), QPointF(px(x) + 8 * side, y + 8));
+      for (double y = wallTop; y < wallBottom; y += 10)
+        painter.drawLine(QPointF(px(x), y), QPointF(px(x) + 8 * side, y + 8));
     };
     wall(0, -1);
     const double rightWallX = (n + 1) * rest;
@@ -113,16 +98,19 @@ class MassChainView::Canvas : public QWidget {
     painter.setPen(QPen(flash.isValid() ? flash : QColor(Qt::black), lineWidth * 2));
     painter.drawLine(QPointF(px(stopX), postTop), QPointF(px(stopX), wallBottom));
     painter.setPen(QPen(Qt::black, 1));
-    for (double y = postTop; y < wallBottom; y += 8) painter.drawLine(QPointF(px(stopX) + 2, y + 6), QPointF(px(stopX) + 8, y));
+    for (double y = postTop; y < wallBottom; y += 8)
+      painter.drawLine(QPointF(px(stopX) + 2, y + 6), QPointF(px(stopX) + 8, y));
     // masses
     for (int i = 0; i < n; ++i) {
       const double centre = (i + 1) * rest + u[std::size_t(i)];
       const double size = box[std::size_t(i)];
       const double boxHeight = std::min(size * scale, tallest);
-      const QRectF rectangle(QPointF(px(centre - size / 2), middle - boxHeight / 2), QSizeF(size * scale, boxHeight));
+      const QRectF rectangle(QPointF(px(centre - size / 2), middle - boxHeight / 2),
+                             QSizeF(size * scale, boxHeight));
       const bool stopped = i == s;
       painter.setPen(QPen(Qt::black, lineWidth));
-      painter.setBrush(stopped ? (flash.isValid() ? flash : QColor(0x00, 0x72, 0xB2)) : QColor(0x44, 0x44, 0x44));
+      painter.setBrush(stopped ? (flash.isValid() ? flash : QColor(0x00, 0x72, 0xB2))
+                               : QColor(0x44, 0x44, 0x44));
       painter.drawRect(rectangle);
       if (stopped) {  // its tab reaches down to the post's height
         const double tabX = px(centre + size / 2);
@@ -130,7 +118,7 @@ class MassChainView::Canvas : public QWidget {
       }
       painter.setPen(Qt::white);
       if (rectangle.width() > painter.fontMetrics().horizontalAdvance(QStringLiteral("m8"))) {
-        painter.drawText(rectangle, Qt::AlignCenter, tr("m%1").arg(subscript(i + 1)));
+        painter.drawText(rectangle, Qt::AlignCenter, tr("m%1").arg(subscriptDigits(i + 1)));
       }
     }
     // the gap d, from the stopped mass's face at rest to the post
@@ -138,11 +126,14 @@ class MassChainView::Canvas : public QWidget {
     const double restFace = px((s + 1) * rest + box[std::size_t(s)] / 2);
     const double rulerY = postTop - 2;
     painter.drawLine(QPointF(restFace, rulerY), QPointF(px(stopX), rulerY));
-    painter.drawText(QRectF(restFace, rulerY - 18, px(stopX) - restFace, 16), Qt::AlignHCenter | Qt::AlignBottom, tr("d"));
+    painter.drawText(QRectF(restFace, rulerY - 18, px(stopX) - restFace, 16),
+                     Qt::AlignHCenter | Qt::AlignBottom, tr("d"));
     const double unit = view.m_series->period > 0 ? view.m_series->period : 0;
-    painter.drawText(rect().adjusted(8, 6, -8, -6), Qt::AlignLeft | Qt::AlignTop,
-                     unit > 0 ? tr("t = %1  (%2 T)").arg(view.m_time, 0, 'f', 2).arg(view.m_time / unit, 0, 'f', 2)
-                              : tr("t = %1").arg(view.m_time, 0, 'f', 2));
+    painter.drawText(
+        rect().adjusted(8, 6, -8, -6), Qt::AlignLeft | Qt::AlignTop,
+        unit > 0
+            ? tr("t = %1  (%2 T)").arg(view.m_time, 0, 'f', 2).arg(view.m_time / unit, 0, 'f', 2)
+            : tr("t = %1").arg(view.m_time, 0, 'f', 2));
   }
 
  private:
@@ -169,12 +160,14 @@ MassChainView::MassChainView(QWidget* parent) : QWidget(parent) {
   m_slider->setToolTip(tr("Drag to any time of the first periods"));
   controls->addWidget(m_slider, 1);
   layout->addLayout(controls);
-  setToolTip(tr("Every mass on its springs and the stop, moving as computed over the run's first periods; "
-                "the stopped mass (blue) strikes the post with its tab, flashing at each contact."));
+  setToolTip(
+      tr("Every mass on its springs and the stop, moving as computed over the run's first periods; "
+         "the stopped mass (blue) strikes the post with its tab, flashing at each contact."));
   m_timer.setInterval(16);
   connect(&m_timer, &QTimer::timeout, this, &MassChainView::tick);
   connect(m_play, &QToolButton::clicked, this, [this] { setPlaying(!playing()); });
-  connect(m_slider, &QSlider::valueChanged, this, [this](int position) { setTime(m_end * position / kSliderSteps); });
+  connect(m_slider, &QSlider::valueChanged, this,
+          [this](int position) { setTime(m_end * position / kSliderSteps); });
 }
 
 void MassChainView::show(const SimUpdate& update) {
@@ -207,8 +200,9 @@ void MassChainView::setPresentation(bool on, int textPixels) {
 std::vector<double> MassChainView::displacementsAt(double t) const {
   if (!m_series || m_series->grid.empty()) return {};
   const auto& grid = m_series->grid;
-  const auto after = std::lower_bound(grid.begin(), grid.end(), t,
-                                      [](const core::experiments::ChainGridPoint& p, double time) { return p.t < time; });
+  const auto after = std::lower_bound(
+      grid.begin(), grid.end(), t,
+      [](const core::experiments::ChainGridPoint& p, double time) { return p.t < time; });
   if (after == grid.begin()) return grid.front().u;
   if (after == grid.end()) return grid.back().u;
   const auto& b = *after;

@@ -61,4 +61,17 @@ void useLightMarker(QScatterSeries* series, const QPen& outline) {
   series->setProperty("grazelabOutline", QVariant::fromValue(outline));
 }
 
+QPainterPath springPath(double x0, double x1, double y, double rise, int coils) {
+  QPainterPath path(QPointF(x0, y));
+  const double lead = 0.12 * (x1 - x0);
+  path.lineTo(x0 + lead, y);
+  const double step = (x1 - x0 - 2 * lead) / (2 * coils);
+  for (int i = 0; i < 2 * coils; ++i) {
+    path.lineTo(x0 + lead + (i + 0.5) * step, y + (i % 2 == 0 ? -rise : rise));
+  }
+  path.lineTo(x1 - lead, y);
+  path.lineTo(x1, y);
+  return path;
+}
+
 }  // namespace grazelab::ui

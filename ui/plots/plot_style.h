@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QColor>
+#include <QPainterPath>
 #include <QPen>
 
 #include "ui/pictures/colors.h"
@@ -26,5 +27,9 @@ QScatterSeries* makeScatter(const QString& name, const QColor& color, double siz
 /// QGraphicsItem per point, whose updates dominated the time from a slider move to the redraw.
 /// Call again after changing the shape, colour or size.
 void useLightMarker(QScatterSeries* series, const QPen& outline = Qt::NoPen);
+
+/// A spring drawn from x0 to x1 at height y (the animated chains): straight ends and `coils`
+/// zigzags of half-height `rise`.
+QPainterPath springPath(double x0, double x1, double y, double rise, int coils);
 
 }  // namespace grazelab::ui

@@ -24,9 +24,12 @@ QString number(double value, int digits = 6) { return QString::number(value, 'g'
 
 QString verdictInWords(core::GloGrazing verdict) {
   switch (verdict) {
-    case core::GloGrazing::Grazes: return tr("grazes: it touches the stop once a period and stays below it");
-    case core::GloGrazing::Boundary: return tr("is on the set's edge: a touch within double's rounding");
-    case core::GloGrazing::Crosses: return tr("crosses the stop: it is not a grazing orbit");
+    case core::GloGrazing::Grazes:
+      return tr("grazes: it touches the stop once a period and stays below it");
+    case core::GloGrazing::Boundary:
+      return tr("is on the set's edge: a touch within double's rounding");
+    case core::GloGrazing::Crosses:
+      return tr("crosses the stop: it is not a grazing orbit");
   }
   return {};
 }
@@ -35,16 +38,20 @@ QString verdictInWords(core::GloGrazing verdict) {
 CurveFigure intervalFigure(int fast, int slow, const core::GrazingInterval& set, double lambda) {
   CurveFigure figure;
   const QString ratio = QStringLiteral("%1:%2").arg(slow).arg(fast);
-  figure.title = tr("%1: GLO grazes for λ in [%2, %3]").arg(ratio, number(set.low, 4), number(set.high, 4));
+  figure.title =
+      tr("%1: GLO grazes for λ in [%2, %3]").arg(ratio, number(set.low, 4), number(set.high, 4));
   figure.xTitle = tr("λ (the slow mode's weight)");
   figure.yTitle = tr("top of u / d over a period");
-  figure.toolTip = tr("GLO(λ) = (1 − λ) GLOM(fast) + λ GLOM(slow). Its top over a period is 1 (it touches the "
-                      "stop and stays below) exactly on the grazing set, whose ends are certified (the "
-                      "note's [0, 4/3] for 1:2; [0, n²/(n² − 1)] for 1:n); elsewhere it passes the stop.");
+  figure.toolTip =
+      tr("GLO(λ) = (1 − λ) GLOM(fast) + λ GLOM(slow). Its top over a period is 1 (it touches the "
+         "stop and stays below) exactly on the grazing set, whose ends are certified (the "
+         "note's [0, 4/3] for 1:2; [0, n²/(n² − 1)] for 1:n); elsewhere it passes the stop.");
   const double width = set.high - set.low;
-  const double from = std::min(-0.5, set.low - 0.25 * width), to = std::max(1.5, set.high + 0.25 * width);
+  const double from = std::min(-0.5, set.low - 0.25 * width),
+               to = std::max(1.5, set.high + 0.25 * width);
   figure.curveName = tr("top of GLO(λ)");
-  for (const auto& [x, top] : core::gloTopCurve(fast, slow, from, to, 240, 1024)) figure.curve.emplace_back(x, top);
+  for (const auto& [x, top] : core::gloTopCurve(fast, slow, from, to, 240, 1024))
+    figure.curve.emplace_back(x, top);
   figure.referenceName = tr("grazing set");
   figure.reference = {QPointF(set.low, 1), QPointF(set.high, 1)};
   figure.markerName = tr("λ = %1").arg(number(lambda, 4));
@@ -63,17 +70,23 @@ CurveFigure intervalFigure(int fast, int slow, const core::GrazingInterval& set,
 }
 
 // three modes: the region in the (λ2, λ3) plane, the pure modes and the weights asked for
-CurveFigure regionFigure(const std::vector<int>& harmonics, const std::vector<core::GrazingRegionPoint>& boundary,
-                         double lambda2, double lambda3) {
+CurveFigure regionFigure(const std::vector<int>& harmonics,
+                         const std::vector<core::GrazingRegionPoint>& boundary, double lambda2,
+                         double lambda3) {
   CurveFigure figure;
-  figure.title = tr("%1:%2:%3: the weights that graze (inside)").arg(harmonics[2]).arg(harmonics[1]).arg(harmonics[0]);
+  figure.title = tr("%1:%2:%3: the weights that graze (inside)")
+                     .arg(harmonics[2])
+                     .arg(harmonics[1])
+                     .arg(harmonics[0]);
   figure.xTitle = tr("λ₂");
   figure.yTitle = tr("λ₃");
-  figure.toolTip = tr("GLO(λ) = λ₁ GLOM₁ + λ₂ GLOM₂ + λ₃ GLOM₃ with λ₁ = 1 − λ₂ − λ₃ grazes exactly inside this "
-                      "convex region (its boundary certified along rays from the centre); the simplex of "
-                      "non-negative weights is always inside. The ring is the weights of the panel.");
+  figure.toolTip =
+      tr("GLO(λ) = λ₁ GLOM₁ + λ₂ GLOM₂ + λ₃ GLOM₃ with λ₁ = 1 − λ₂ − λ₃ grazes exactly inside this "
+         "convex region (its boundary certified along rays from the centre); the simplex of "
+         "non-negative weights is always inside. The ring is the weights of the panel.");
   figure.curveName = tr("boundary of the grazing set");
-  for (const core::GrazingRegionPoint& point : boundary) figure.curve.emplace_back(point.lambda2, point.lambda3);
+  for (const core::GrazingRegionPoint& point : boundary)
+    figure.curve.emplace_back(point.lambda2, point.lambda3);
   if (!figure.curve.empty()) figure.curve.push_back(figure.curve.front());  // closed
   figure.markerName = tr("pure modes GLOM₁, GLOM₂, GLOM₃");
   figure.markers = {QPointF(0, 0), QPointF(1, 0), QPointF(0, 1)};
@@ -89,15 +102,16 @@ Scene::Spec grazingSetsScene() {
   scene.name = QStringLiteral("Grazing sets of other resonances");
   scene.alias = QStringLiteral("grazing-sets");
   scene.title = tr("Grazing sets of other resonances");
-  scene.text = tr("<b>Lemma 2.1 for any resonance.</b> A weighted sum of the pure-mode grazing orbits, "
-                  "GLO(λ) = Σ λⱼ GLOMⱼ (weights summing to 1), touches the stop at t = 0. It is a grazing "
-                  "orbit when it never passes the stop over a period. <i>Look for:</i> with two modes, the "
-                  "top of u/d over a period against λ is 1 on an interval, the grazing set (for 1:2 the "
-                  "note's [0, 4/3], for 1:3 [0, 9/8]); with three, the weights that graze fill a convex "
-                  "region of the (λ₂, λ₃) plane. Move the weights in the panel: the orbit over one period "
-                  "(its trace and the chain) touches the stop, or passes it. <i>Why:</i> each phase of the "
-                  "period gives one linear condition on the weights, so the set is convex and holds every "
-                  "non-negative mix.");
+  scene.text =
+      tr("<b>Lemma 2.1 for any resonance.</b> A weighted sum of the pure-mode grazing orbits, "
+         "GLO(λ) = Σ λⱼ GLOMⱼ (weights summing to 1), touches the stop at t = 0. It is a grazing "
+         "orbit when it never passes the stop over a period. <i>Look for:</i> with two modes, the "
+         "top of u/d over a period against λ is 1 on an interval, the grazing set (for 1:2 the "
+         "note's [0, 4/3], for 1:3 [0, 9/8]); with three, the weights that graze fill a convex "
+         "region of the (λ₂, λ₃) plane. Move the weights in the panel: the orbit over one period "
+         "(its trace and the chain) touches the stop, or passes it. <i>Why:</i> each phase of the "
+         "period gives one linear condition on the weights, so the set is convex and holds every "
+         "non-negative mix.");
   scene.defaults.perturbation = 0;
   scene.defaults.massChain.masses = {1.0, 0.3};
   scene.defaults.massChain.springs = {1.0, 1.0};
@@ -106,7 +120,8 @@ Scene::Spec grazingSetsScene() {
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap};
   scene.plots = {PlotKind::GrazingSet, PlotKind::ChainStopTrace, PlotKind::MassChain};
-  scene.build = [](const Scene&, const Params& params, const DerivedModel& derived, std::stop_token stop) {
+  scene.build = [](const Scene&, const Params& params, const DerivedModel& derived,
+                   std::stop_token stop) {
     SceneJob job;
     const MassChainParams& given = params.massChain;
     const ChainChoice choice = chooseChain(given, params.gap, stop);
@@ -120,17 +135,21 @@ Scene::Spec grazingSetsScene() {
     const core::MassChain& chain = *choice.chain;
     const core::GrazingModes used = core::grazingModes(chain);
     if (!used.ratios.commensurate) {
-      return refuse(tr("No grazing set: the modes that move the stopped mass are not commensurate (no common "
-                       "period). Pick a resonance."));
+      return refuse(
+          tr("No grazing set: the modes that move the stopped mass are not commensurate (no common "
+             "period). Pick a resonance."));
     }
     if (used.modes.size() < 2 || used.modes.size() > 3) {
-      return refuse(tr("Grazing sets are drawn for two or three modes that move the stopped mass; this chain "
-                       "has %1.").arg(used.modes.size()));
+      return refuse(
+          tr("Grazing sets are drawn for two or three modes that move the stopped mass; this chain "
+             "has %1.")
+              .arg(used.modes.size()));
     }
     const core::ChainGloStart glo = core::chainGloStart(chain, given.weights);
     if (glo.problem != core::GloStartProblem::None) {
       return refuse(glo.problem == core::GloStartProblem::WeightOnNode
-                        ? tr("A weight is on a mode that does not move the stopped mass: it has no grazing orbit")
+                        ? tr("A weight is on a mode that does not move the stopped mass: it has no "
+                             "grazing orbit")
                         : tr("The weights of the grazing orbit must be finite and sum to 1"));
     }
     std::vector<double> weights;  // on the modes that move the stopped mass
@@ -139,7 +158,8 @@ Scene::Spec grazingSetsScene() {
     const core::GloGrazing verdict = core::gloGrazing(harmonics, weights);
     if (used.modes.size() == 2) {
       job.figures[PlotKind::GrazingSet] =
-          intervalFigure(harmonics[0], harmonics[1], core::grazingInterval(harmonics[0], harmonics[1]), weights[1]);
+          intervalFigure(harmonics[0], harmonics[1],
+                         core::grazingInterval(harmonics[0], harmonics[1]), weights[1]);
     } else {
       const auto boundary = core::grazingRegion(harmonics[0], harmonics[1], harmonics[2], 48, stop);
       if (stop.stop_requested()) return job;
@@ -147,17 +167,22 @@ Scene::Spec grazingSetsScene() {
     }
     // the orbit itself over one period (unpushed: GLO(λ) as it is), every mass on the grid
     const double period = 2 * std::numbers::pi / used.ratios.omega0;
-    core::experiments::ChainSeriesSpec spec{chain, glo.state, 1, period, 900, 0, core::TrustMode::Off};
-    const auto shared = std::make_shared<const core::experiments::ChainSeries>(core::experiments::chainSeries(spec, stop));
+    core::experiments::ChainSeriesSpec spec{chain, glo.state,           1, period, 900,
+                                            0,     core::TrustMode::Off};
+    const auto shared = std::make_shared<const core::experiments::ChainSeries>(
+        core::experiments::chainSeries(spec, stop));
     if (stop.stop_requested()) return job;
     CurveFigure trace;
     trace.title = tr("GLO(λ) over one period: u%1 / d").arg(chain.stopped());
     trace.xTitle = tr("t / T");
     trace.yTitle = tr("u / d");
-    trace.toolTip = tr("The stopped mass of GLO(λ) over its period T, the stop dashed: a grazing orbit stays at or "
-                       "below it and touches it at t = 0 and T.");
+    trace.toolTip =
+        tr("The stopped mass of GLO(λ) over its period T, the stop dashed: a grazing orbit stays "
+           "at or "
+           "below it and touches it at t = 0 and T.");
     trace.curveName = tr("u%1 / d").arg(chain.stopped());
-    for (const core::experiments::ChainGridPoint& point : shared->grid) trace.curve.emplace_back(point.t / period, point.us / chain.gap);
+    for (const core::experiments::ChainGridPoint& point : shared->grid)
+      trace.curve.emplace_back(point.t / period, point.us / chain.gap);
     trace.referenceName = tr("stop");
     trace.reference = {QPointF(0, 1), QPointF(1, 1)};
     job.figures[PlotKind::ChainStopTrace] = trace;
@@ -165,7 +190,8 @@ Scene::Spec grazingSetsScene() {
     for (double w : weights) written.append(number(w, 4));
     job.chainSummary = chainSummaryOf(chain, given, choice.designs, shared->modes, shared->ratios);
     job.chainDesigns = choice.designs;
-    job.chainStatus = tr("GLO with weights (%1) %2").arg(written.join(QStringLiteral(", ")), verdictInWords(verdict));
+    job.chainStatus = tr("GLO with weights (%1) %2")
+                          .arg(written.join(QStringLiteral(", ")), verdictInWords(verdict));
     job.chainSeries = shared;
     job.spec.model = derived.model;
     job.spec.run.maxContacts = 0;

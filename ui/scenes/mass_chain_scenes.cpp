@@ -29,14 +29,20 @@ QString list(const std::vector<double>& values, int digits = 4) {
 
 QString stopInWords(core::ChainStop stop) {
   switch (stop) {
-    case core::ChainStop::ContactLimit: return tr("the contacts asked for");
-    case core::ChainStop::TimeLimit: return tr("its end time");
-    case core::ChainStop::NoFurtherContact: return tr("no further contact (the flight stays below the stop)");
+    case core::ChainStop::ContactLimit:
+      return tr("the contacts asked for");
+    case core::ChainStop::TimeLimit:
+      return tr("its end time");
+    case core::ChainStop::NoFurtherContact:
+      return tr("no further contact (the flight stays below the stop)");
     case core::ChainStop::Undecided:
-      return tr("undecided: a contact within double's rounding (grazelab-cli simulate --precision auto "
-                "decides it in a higher precision)");
-    case core::ChainStop::SearchBudget: return tr("the contact search's budget");
-    case core::ChainStop::Cancelled: return tr("cancelled");
+      return tr(
+          "undecided: a contact within double's rounding (grazelab-cli simulate --precision auto "
+          "decides it in a higher precision)");
+    case core::ChainStop::SearchBudget:
+      return tr("the contact search's budget");
+    case core::ChainStop::Cancelled:
+      return tr("cancelled");
   }
   return {};
 }
@@ -47,22 +53,27 @@ ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_toke
   ChainChoice choice;
   core::MassChain chain{given.masses, given.springs, 0, given.stopMass, gap};
   if (!given.harmonics.empty()) {
-    const core::ChainDesigns designs = core::designSprings(given.masses, given.springs.front(), given.harmonics, stop);
+    const core::ChainDesigns designs =
+        core::designSprings(given.masses, given.springs.front(), given.harmonics, stop);
     switch (designs.outcome) {
-      case core::DesignOutcome::Designed: break;
+      case core::DesignOutcome::Designed:
+        break;
       case core::DesignOutcome::NoPositiveDesign:
-        choice.problem = tr("No chain with these masses has the frequencies in the ratio %1: every one of the "
-                            "%2 solutions of the design equations is complex or has a spring ≤ 0. "
-                            "Change the masses, or pick another resonance.")
-                             .arg(resonanceName(given.harmonics))
-                             .arg(designs.paths);
+        choice.problem =
+            tr("No chain with these masses has the frequencies in the ratio %1: every one of the "
+               "%2 solutions of the design equations is complex or has a spring ≤ 0. "
+               "Change the masses, or pick another resonance.")
+                .arg(resonanceName(given.harmonics))
+                .arg(designs.paths);
         return choice;
       case core::DesignOutcome::Incomplete:
-        choice.problem = tr("The design of %1 could not follow every solution, so no list of designs can be "
-                            "promised: change the masses slightly.")
-                             .arg(resonanceName(given.harmonics));
+        choice.problem =
+            tr("The design of %1 could not follow every solution, so no list of designs can be "
+               "promised: change the masses slightly.")
+                .arg(resonanceName(given.harmonics));
         return choice;
-      case core::DesignOutcome::Stopped: return choice;
+      case core::DesignOutcome::Stopped:
+        return choice;
       case core::DesignOutcome::BadRequest:
         choice.problem = tr("The resonance %1 cannot be designed for %2 masses.")
                              .arg(resonanceName(given.harmonics))
@@ -84,24 +95,25 @@ ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_toke
 QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& given, int designs,
                        const core::ChainModes& modes, const core::SpectrumRatios& ratios) {
   const std::vector<double> omega(modes.omega.data(), modes.omega.data() + modes.omega.size());
-  QString text = given.harmonics.empty()
-                     ? tr("Springs k = %1 (as given).").arg(list(chain.springs))
-                     : tr("Springs designed for %1 (design %2 of %3): k = %4.")
-                           .arg(resonanceName(given.harmonics))
-                           .arg(std::clamp(given.designBranch, 1, designs))
-                           .arg(designs)
-                           .arg(list(chain.springs));
+  QString text = given.harmonics.empty() ? tr("Springs k = %1 (as given).").arg(list(chain.springs))
+                                         : tr("Springs designed for %1 (design %2 of %3): k = %4.")
+                                               .arg(resonanceName(given.harmonics))
+                                               .arg(std::clamp(given.designBranch, 1, designs))
+                                               .arg(designs)
+                                               .arg(list(chain.springs));
   text += QLatin1Char(' ') + tr("Frequencies ω = %1 (fastest first).").arg(list(omega));
   QStringList harmonics;
   for (int n : ratios.harmonics) harmonics.append(QString::number(n));
   if (ratios.commensurate) {
-    text += QLatin1Char(' ') + tr("In the ratio %1 × ω₀ (ω₀ = %2, off by %3): every free motion repeats after "
-                                  "T = 2π/ω₀ = %4.")
-                                   .arg(harmonics.join(QStringLiteral(" : ")), number(ratios.omega0, 6),
-                                        number(ratios.detuning, 2), number(2 * M_PI / ratios.omega0, 6));
+    text += QLatin1Char(' ') +
+            tr("In the ratio %1 × ω₀ (ω₀ = %2, off by %3): every free motion repeats after "
+               "T = 2π/ω₀ = %4.")
+                .arg(harmonics.join(QStringLiteral(" : ")), number(ratios.omega0, 6),
+                     number(ratios.detuning, 2), number(2 * M_PI / ratios.omega0, 6));
   } else if (!ratios.harmonics.empty()) {
-    text += QLatin1Char(' ') + tr("Not commensurate: nearest %1, detuned by %2 %; no common period.")
-                                   .arg(harmonics.join(QStringLiteral(" : ")), number(100 * ratios.detuning, 2));
+    text += QLatin1Char(' ') +
+            tr("Not commensurate: nearest %1, detuned by %2 %; no common period.")
+                .arg(harmonics.join(QStringLiteral(" : ")), number(100 * ratios.detuning, 2));
   } else {
     text += QLatin1Char(' ') + tr("Not commensurate: no common period.");
   }
@@ -113,11 +125,14 @@ QString chainStatusOf(const core::experiments::ChainSeries& series) {
   const auto counted = [](long n, const QString& one, const QString& many) {
     return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
   };
-  const double drift = std::abs(run.energyFinal - run.energyInitial) / std::max(std::abs(run.energyInitial), 1e-300);
+  const double drift =
+      std::abs(run.energyFinal - run.energyInitial) / std::max(std::abs(run.energyInitial), 1e-300);
   return tr("%1 masses: %2 (%3, %4, %5) until t = %6, ended by %7 · energy drift %8")
       .arg(series.chain.size())
-      .arg(counted(run.contacts, tr("contact"), tr("contacts")), counted(run.impacts, tr("impact"), tr("impacts")),
-           counted(run.grazings, tr("grazing"), tr("grazings")), counted(run.sticks, tr("stick"), tr("sticks")))
+      .arg(counted(run.contacts, tr("contact"), tr("contacts")),
+           counted(run.impacts, tr("impact"), tr("impacts")),
+           counted(run.grazings, tr("grazing"), tr("grazings")),
+           counted(run.sticks, tr("stick"), tr("sticks")))
       .arg(number(run.tFinal, 6), stopInWords(run.stop), QString::number(drift, 'e', 1));
 }
 

@@ -23,16 +23,17 @@ QString tr(const char* text) {
   return QCoreApplication::translate("grazelab::ui::ThreeMassesScene", text);
 }
 
-CurveFigure flightFigure(const QString& title, const core::experiments::ChainSeries& series, double unit,
-                         bool bound, const QString& unitName) {
+CurveFigure flightFigure(const QString& title, const core::experiments::ChainSeries& series,
+                         double unit, bool bound, const QString& unitName) {
   CurveFigure figure;
   figure.title = title;
   figure.xTitle = tr("contact index");
-  figure.yTitle = tr("free-flight time / %1").arg(unitName);
-  figure.toolTip = tr("Each free flight from the stop (after an impact, a grazing or a release), over the "
-                      "chain's common period T. A resonant chain's free motion repeats after T, so no "
-                      "flight from the stop lasts longer (Theorem 2.3 for any N); a chain with no common "
-                      "period has no such bound.");
+  figure.yTitle = tr("flight time / %1").arg(unitName);
+  figure.toolTip =
+      tr("Each free flight from the stop (after an impact, a grazing or a release), over the "
+         "chain's common period T. A resonant chain's free motion repeats after T, so no "
+         "flight from the stop lasts longer (Theorem 2.3 for any N); a chain with no common "
+         "period has no such bound.");
   figure.curveName = tr("flights");
   figure.dots = true;
   long last = 1;
@@ -55,23 +56,25 @@ Scene::Spec threeMassesScene() {
   scene.name = QStringLiteral("Three masses in 1:2:3");
   scene.alias = QStringLiteral("three-masses");
   scene.title = tr("Three masses in 1:2:3");
-  scene.text = tr("<b>What generalises to N masses.</b> A chain of three masses with its springs designed so "
-                  "that the frequencies are in the ratio 1:2:3 starts on a grazing linear orbit, a "
-                  "weighted sum of the modes that just touches the stop, pushed off it by δ. <i>Look "
-                  "for:</i> the impacts of the stopped mass (its trace, and the chain moving) and its "
-                  "free-flight times: every one stays at or below the common period T, as for two "
-                  "masses; the same start on the chain detuned by 1 % has flights past T. <i>Why:</i> "
-                  "with ω₁ : ω₂ : ω₃ = 3 : 2 : 1 every free motion repeats after T, so a flight from the "
-                  "stop meets it again by then. Change the masses, the resonance (some are impossible for "
-                  "some masses: you are told why), or the number of masses.");
+  scene.text = tr(
+      "<b>What generalises to N masses.</b> A chain of three masses with its springs designed so "
+      "that the frequencies are in the ratio 1:2:3 starts on a grazing linear orbit, a "
+      "weighted sum of the modes that just touches the stop, pushed off it by δ. <i>Look "
+      "for:</i> the impacts of the stopped mass (its trace, and the chain moving) and its "
+      "free-flight times: every one stays at or below the common period T, as for two "
+      "masses; the same start on the chain detuned by 1 % has flights past T. <i>Why:</i> "
+      "with ω₁ : ω₂ : ω₃ = 3 : 2 : 1 every free motion repeats after T, so a flight from the "
+      "stop meets it again by then. Change the masses, the resonance (some are impossible for "
+      "some masses: you are told why), or the number of masses.");
   scene.defaults.perturbation = -0.05;
   scene.defaults.horizon = 200;
   scene.defaults.massChain = MassChainParams{};
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::ChainFlights, PlotKind::ChainPhase,
-                 PlotKind::ChainDetunedFlights};
-  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived, std::stop_token stop) {
+  scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::ChainFlights,
+                 PlotKind::ChainPhase, PlotKind::ChainDetunedFlights};
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
+                   std::stop_token stop) {
     SceneJob job;
     const MassChainParams& given = params.massChain;
     const ChainChoice choice = chooseChain(given, params.gap, stop);
@@ -85,7 +88,8 @@ Scene::Spec threeMassesScene() {
     const core::ChainGloStart glo = core::chainGloStart(chain, given.weights);
     if (glo.problem != core::GloStartProblem::None) {
       job.message = glo.problem == core::GloStartProblem::WeightOnNode
-                        ? tr("A weight is on a mode that does not move the stopped mass: it has no grazing orbit")
+                        ? tr("A weight is on a mode that does not move the stopped mass: it has no "
+                             "grazing orbit")
                         : tr("The weights of the grazing orbit must be finite and sum to 1");
       job.chainSummary = job.message;
       job.chainRefused = true;
@@ -98,10 +102,17 @@ Scene::Spec threeMassesScene() {
     const double slowest = 2 * std::numbers::pi / modes.omega.minCoeff();
     // (the error estimate of a chain with no common period shadows long searches in long
     // double: its own scene asks for none, and says so)
-    core::experiments::ChainSeriesSpec spec{chain, start, long(params.horizon), 6 * slowest, 1500, given.shown(),
-                                            self.plots().contains(PlotKind::ChainDetunedFlights) ? core::TrustMode::Auto
-                                                                                                   : core::TrustMode::Off};
-    const auto shared = std::make_shared<const core::experiments::ChainSeries>(core::experiments::chainSeries(spec, stop));
+    core::experiments::ChainSeriesSpec spec{chain,
+                                            start,
+                                            long(params.horizon),
+                                            6 * slowest,
+                                            1500,
+                                            given.shown(),
+                                            self.plots().contains(PlotKind::ChainDetunedFlights)
+                                                ? core::TrustMode::Auto
+                                                : core::TrustMode::Off};
+    const auto shared = std::make_shared<const core::experiments::ChainSeries>(
+        core::experiments::chainSeries(spec, stop));
     const core::experiments::ChainSeries& series = *shared;
     if (stop.stop_requested()) return job;
     const bool resonant = series.period > 0;
@@ -113,8 +124,9 @@ Scene::Spec threeMassesScene() {
     trace.title = tr("Mass %1 (on the stop's side): u%1 / d").arg(chain.stopped());
     trace.xTitle = tr("t / %1").arg(unitName);
     trace.yTitle = tr("u / d");
-    trace.toolTip = tr("The stopped mass's displacement over the gap d; the dashed line is the stop. Each "
-                       "dot is a contact.");
+    trace.toolTip =
+        tr("The stopped mass's displacement over the gap d; the dashed line is the stop. Each "
+           "dot is a contact.");
     trace.curveName = tr("u%1 / d").arg(chain.stopped());
     for (const core::experiments::ChainGridPoint& point : series.grid) {
       trace.curve.emplace_back(point.t / unit, point.us / chain.gap);
@@ -129,9 +141,10 @@ Scene::Spec threeMassesScene() {
     }
     job.figures[PlotKind::ChainStopTrace] = trace;
 
-    job.figures[PlotKind::ChainFlights] = flightFigure(
-        resonant ? tr("Free flights from the stop / T (≤ 1)") : tr("Free flights / slowest period (no common period: no bound)"),
-        series, unit, resonant, unitName);
+    job.figures[PlotKind::ChainFlights] =
+        flightFigure(resonant ? tr("Free flights from the stop / T (≤ 1)")
+                              : tr("Free flights / slowest period (no common period: no bound)"),
+                     series, unit, resonant, unitName);
 
     // the shown mass (the stopped one by default): its phase portrait over the first periods,
     // and its state at every contact (a Poincaré section on H, projected on its (u, v))
@@ -141,12 +154,13 @@ Scene::Spec threeMassesScene() {
     phase.title = tr("Phase portrait of mass %1").arg(shown);
     phase.xTitle = tr("u%1 / d").arg(shown);
     phase.yTitle = tr("v%1 / (d ω₁)").arg(shown);
-    phase.toolTip = shownIsStopped ? tr("The stopped mass's velocity against its displacement over the first "
-                                        "periods; at u/d = 1 the impacts reverse the velocity.")
-                                   : tr("Mass %1's velocity against its displacement over the first periods "
-                                        "(the panel's 'phase of' chooses the mass); the dots are its state at "
-                                        "each contact of the stopped mass.")
-                                         .arg(shown);
+    phase.toolTip = shownIsStopped
+                        ? tr("The stopped mass's velocity against its displacement over the first "
+                             "periods; at u/d = 1 the impacts reverse the velocity.")
+                        : tr("Mass %1's velocity against its displacement over the first periods "
+                             "(the panel's 'phase of' chooses the mass); the dots are its state at "
+                             "each contact of the stopped mass.")
+                              .arg(shown);
     phase.curveName = tr("(u, v)");
     const double speed = chain.gap * modes.omega.maxCoeff();
     for (const core::experiments::ChainGridPoint& point : series.grid) {
@@ -160,7 +174,8 @@ Scene::Spec threeMassesScene() {
       const Eigen::Index i = Eigen::Index(shown - 1);
       for (const core::ChainEvent& event : series.run.events) {
         if (event.t > spec.window) break;
-        if (core::isContact(event.type)) phase.markers.emplace_back(event.u[i] / chain.gap, event.vBefore[i] / speed);
+        if (core::isContact(event.type))
+          phase.markers.emplace_back(event.u[i] / chain.gap, event.vBefore[i] / speed);
       }
     }
     job.figures[PlotKind::ChainPhase] = phase;
@@ -171,11 +186,14 @@ Scene::Spec threeMassesScene() {
       core::MassChain detuned = chain;
       detuned.springs[1] *= 1.01;
       // (its flights only: no error estimate, which would cost more than the rest of the scene)
-      core::experiments::ChainSeriesSpec other{detuned, start, long(params.horizon), 0, 0, 0, core::TrustMode::Off};
+      core::experiments::ChainSeriesSpec other{detuned, start, long(params.horizon), 0,
+                                               0,       0,     core::TrustMode::Off};
       const core::experiments::ChainSeries contrast = core::experiments::chainSeries(other, stop);
-      CurveFigure figure = flightFigure(tr("k₂ 1 % off: flights / the resonant T"), contrast, series.period, true, tr("T"));
+      CurveFigure figure = flightFigure(tr("k₂ 1 % off: flights / the resonant T"), contrast,
+                                        series.period, true, tr("T"));
       // a detuned flight can last hundreds of T: the axis stops at 3 T, and says how many pass it
-      const auto above = std::count_if(figure.curve.begin(), figure.curve.end(), [](const QPointF& p) { return p.y() > 3; });
+      const auto above = std::count_if(figure.curve.begin(), figure.curve.end(),
+                                       [](const QPointF& p) { return p.y() > 3; });
       if (above > 0) {
         figure.title = tr("k₂ 1 % off: flights / T (%1 past 3 T)").arg(above);
         double last = 1;
@@ -190,15 +208,16 @@ Scene::Spec threeMassesScene() {
       CurveFigure none;
       none.title = tr("Detuned contrast: only for a resonant chain");
       none.xTitle = tr("contact index");
-      none.yTitle = tr("free-flight time / T");
+      none.yTitle = tr("flight time / T");
       job.figures[PlotKind::ChainDetunedFlights] = none;
     }
     job.chainSummary = chainSummaryOf(chain, given, choice.designs, series.modes, series.ratios);
     job.chainDesigns = choice.designs;
     job.chainStatus = chainStatusOf(series);
     if (spec.trust == core::TrustMode::Off) {
-      job.chainStatus += tr(" · no error estimate here (its shadow run in long double would take seconds on a "
-                            "chain with no common period: grazelab-cli simulate --masses … --trust auto gives it)");
+      job.chainStatus += tr(
+          " · no error estimate here (its shadow run in long double would take seconds on a "
+          "chain with no common period: grazelab-cli simulate --masses … --trust auto gives it)");
     } else {
       job.chainTrust = series.trust;
     }
@@ -219,14 +238,15 @@ Scene::Spec eightMassesScene() {
   scene.name = QStringLiteral("A string of eight masses");
   scene.alias = QStringLiteral("eight-masses");
   scene.title = tr("A string of eight masses");
-  scene.text = tr("<b>Many modes, exact touches.</b> Eight equal masses on equal springs, the stop on mass 5 "
-                  "(inside the string), start on its slowest mode alone with its top on the stop, pushed "
-                  "off by δ along mass 5's velocity. Its frequencies are not commensurate: no common period "
-                  "bounds the flights. <i>Look for:</i> the string moving and mass 5's trace: near the top "
-                  "of the mode the contacts are touches and soft impacts that a sign-change event finder "
-                  "would miss; here each is found by a certified search (every window of time excluded by "
-                  "a bound on the motion's derivatives). <i>Why:</i> a touch is a double root of u₅(t) − d, "
-                  "which no change of sign reveals. Try 2 to 8 masses, other stops, or a resonance.");
+  scene.text = tr(
+      "<b>Many modes, exact touches.</b> Eight equal masses on equal springs, the stop on mass 5 "
+      "(inside the string), start on its slowest mode alone with its top on the stop, pushed "
+      "off by δ along mass 5's velocity. Its frequencies are not commensurate: no common period "
+      "bounds the flights. <i>Look for:</i> the string moving and mass 5's trace: near the top "
+      "of the mode the contacts are touches and soft impacts that a sign-change event finder "
+      "would miss; here each is found by a certified search (every window of time excluded by "
+      "a bound on the motion's derivatives). <i>Why:</i> a touch is a double root of u₅(t) − d, "
+      "which no change of sign reveals. Try 2 to 8 masses, other stops, or a resonance.");
   scene.defaults.massChain = MassChainParams{}.resized(8);
   scene.defaults.massChain.masses.assign(8, 1.0);
   scene.defaults.massChain.springs.assign(8, 1.0);
@@ -235,7 +255,8 @@ Scene::Spec eightMassesScene() {
   scene.defaults.massChain.weights.back() = 1.0;  // the slowest mode alone
   scene.defaults.perturbation = -1e-4;
   scene.defaults.horizon = 100;
-  scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::ChainFlights, PlotKind::ChainPhase};
+  scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::ChainFlights,
+                 PlotKind::ChainPhase};
   return scene;
 }
 

@@ -20,17 +20,9 @@
 namespace grazelab::ui {
 namespace {
 
-// subscripts for the labels (m₁ … m₈)
-QString subscript(int index) {
-  static const QString digits = QStringLiteral("₀₁₂₃₄₅₆₇₈₉");
-  QString text;
-  for (const QChar digit : QString::number(index)) text += digits[digit.digitValue()];
-  return text;
-}
-
 ParamSpec massSpec(int index) {
   ParamSpec spec = paramSpec(ParamKey::M1);
-  spec.label = QObject::tr("m%1").arg(subscript(index));
+  spec.label = QObject::tr("m%1").arg(subscriptDigits(index));
   spec.toolTip = QObject::tr("Mass %1 (counted from the left wall).").arg(index);
   spec.sliderMin = 0.01;
   spec.sliderMax = 100;
@@ -43,9 +35,10 @@ ParamSpec massSpec(int index) {
 
 ParamSpec springSpec(int index) {
   ParamSpec spec = paramSpec(ParamKey::K1);
-  spec.label = QObject::tr("k%1").arg(subscript(index));
-  spec.toolTip = index == 1 ? QObject::tr("The spring from the wall to mass 1 (the chain's stiffness scale).")
-                            : QObject::tr("The spring between masses %1 and %2.").arg(index - 1).arg(index);
+  spec.label = QObject::tr("k%1").arg(subscriptDigits(index));
+  spec.toolTip =
+      index == 1 ? QObject::tr("The spring from the wall to mass 1 (the chain's stiffness scale).")
+                 : QObject::tr("The spring between masses %1 and %2.").arg(index - 1).arg(index);
   spec.sliderMin = 0.01;
   spec.sliderMax = 100;
   spec.spinMin = 1e-6;
@@ -57,10 +50,11 @@ ParamSpec springSpec(int index) {
 
 ParamSpec weightSpec(int index) {
   ParamSpec spec = paramSpec(ParamKey::Lambda);
-  spec.label = QObject::tr("λ%1").arg(subscript(index));
-  spec.toolTip = QObject::tr("The weight of mode %1 (mode 1 the fastest) in the grazing linear orbit "
-                             "GLO(λ) = Σ λⱼ GLOMⱼ the run starts on, at its touch of the stop. The "
-                             "last weight is 1 minus the others.")
+  spec.label = QObject::tr("λ%1").arg(subscriptDigits(index));
+  spec.toolTip = QObject::tr(
+                     "The weight of mode %1 (mode 1 the fastest) in the grazing linear orbit "
+                     "GLO(λ) = Σ λⱼ GLOMⱼ the run starts on, at its touch of the stop. The "
+                     "last weight is 1 minus the others.")
                      .arg(index);
   spec.sliderMin = -1;
   spec.sliderMax = 2;
@@ -75,7 +69,8 @@ ParamSpec weightSpec(int index) {
 QString resonanceName(const std::vector<int>& harmonics) {
   if (harmonics.empty()) return QObject::tr("none: springs as given");
   QStringList parts;
-  for (auto it = harmonics.rbegin(); it != harmonics.rend(); ++it) parts.append(QString::number(*it));
+  for (auto it = harmonics.rbegin(); it != harmonics.rend(); ++it)
+    parts.append(QString::number(*it));
   return parts.join(QLatin1Char(':'));
 }
 
@@ -100,10 +95,12 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
   m_count = new QSpinBox(this);
   m_count->setObjectName(QStringLiteral("chainMassCount"));
   m_count->setRange(1, MassChainParams::kMaxMasses);
-  m_count->setToolTip(tr("How many masses the chain has (1 to %1), from the left wall.").arg(MassChainParams::kMaxMasses));
+  m_count->setToolTip(tr("How many masses the chain has (1 to %1), from the left wall.")
+                          .arg(MassChainParams::kMaxMasses));
   m_stop = new QSpinBox(this);
   m_stop->setObjectName(QStringLiteral("chainStopMass"));
-  m_stop->setToolTip(tr("The mass the rigid stop acts on, at its gap d to the right of that mass's rest."));
+  m_stop->setToolTip(
+      tr("The mass the rigid stop acts on, at its gap d to the right of that mass's rest."));
   auto* countRow = new QHBoxLayout;
   countRow->addWidget(m_count);
   countRow->addWidget(new QLabel(tr("stop on"), this));
@@ -112,21 +109,24 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
   form->addRow(tr("masses"), countRow);
   m_shown = new QSpinBox(this);
   m_shown->setObjectName(QStringLiteral("chainShownMass"));
-  m_shown->setToolTip(tr("The mass whose phase portrait and Poincaré points (its state at each contact) are "
-                         "drawn; the stopped mass by default."));
+  m_shown->setToolTip(
+      tr("The mass whose phase portrait and Poincaré points (its state at each contact) are "
+         "drawn; the stopped mass by default."));
   auto* shownRow = new QHBoxLayout;
   shownRow->addWidget(m_shown);
   shownRow->addStretch(1);
   form->addRow(tr("phase of"), shownRow);
   m_resonance = new ElidingComboBox(this);
   m_resonance->setObjectName(QStringLiteral("chainResonance"));
-  m_resonance->setToolTip(tr("The frequency ratio asked for, slowest mode first (1:2:3: ω₃ : ω₂ : ω₁ = 1 : 2 : 3). "
-                             "The springs k₂ … k_N are then designed for it, k₁ kept; a ratio no chain "
-                             "with these masses has is refused with the reason."));
+  m_resonance->setToolTip(
+      tr("The frequency ratio asked for, slowest mode first (1:2:3: ω₃ : ω₂ : ω₁ = 1 : 2 : 3). "
+         "The springs k₂ … k_N are then designed for it, k₁ kept; a ratio no chain "
+         "with these masses has is refused with the reason."));
   m_design = new ElidingComboBox(this);
   m_design->setObjectName(QStringLiteral("chainDesign"));
-  m_design->setToolTip(tr("A resonance usually has several designs of the springs for the same masses "
-                          "(ordered by k₂, stiffest first): pick one."));
+  m_design->setToolTip(
+      tr("A resonance usually has several designs of the springs for the same masses "
+         "(ordered by k₂, stiffest first): pick one."));
   // narrow: a projector's panel has little room (the popups show the whole texts)
   for (QComboBox* combo : {m_resonance, m_design}) {
     combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
@@ -251,18 +251,22 @@ void ChainEditor::rebuildRows() {
                          [this, i](double value) { m_chain.springs[std::size_t(i)] = value; }));
   }
   for (int j = 0; j + 1 < n; ++j) {
-    m_weights.append(add(weightSpec(j + 1), m_chain.weights[std::size_t(j)], [this, j, n](double value) {
-      m_chain.weights[std::size_t(j)] = value;
-      // the last weight balances the others (the weights of GLO(λ) sum to 1)
-      double others = 0;
-      for (int k = 0; k + 1 < n; ++k) others += m_chain.weights[std::size_t(k)];
-      m_chain.weights[std::size_t(n - 1)] = 1 - others;
-      m_lastWeight->setText(tr("λ%1 = 1 − the others = %2").arg(subscript(n), QString::number(1 - others, 'g', 6)));
-    }));
+    m_weights.append(
+        add(weightSpec(j + 1), m_chain.weights[std::size_t(j)], [this, j, n](double value) {
+          m_chain.weights[std::size_t(j)] = value;
+          // the last weight balances the others (the weights of GLO(λ) sum to 1)
+          double others = 0;
+          for (int k = 0; k + 1 < n; ++k) others += m_chain.weights[std::size_t(k)];
+          m_chain.weights[std::size_t(n - 1)] = 1 - others;
+          m_lastWeight->setText(tr("λ%1 = 1 − the others = %2")
+                                    .arg(subscriptDigits(n), QString::number(1 - others, 'g', 6)));
+        }));
   }
   m_lastWeight = new QLabel(this);
   m_lastWeight->setObjectName(QStringLiteral("chainLastWeight"));
-  m_lastWeight->setText(tr("λ%1 = 1 − the others = %2").arg(subscript(n), QString::number(m_chain.weights.back(), 'g', 6)));
+  m_lastWeight->setText(
+      tr("λ%1 = 1 − the others = %2")
+          .arg(subscriptDigits(n), QString::number(m_chain.weights.back(), 'g', 6)));
   m_lastWeight->setToolTip(weightSpec(n).toolTip);
   m_rows->addWidget(m_lastWeight);
   setWeightsShown(m_weightsShown);
@@ -272,7 +276,8 @@ void ChainEditor::rebuildRows() {
 
 void ChainEditor::setSummary(const QString& text, int designs, bool refused) {
   m_summary->setText(text);
-  m_summary->setStyleSheet(refused ? QStringLiteral("QLabel { color: #a01010; font-weight: bold; }") : QString());
+  m_summary->setStyleSheet(refused ? QStringLiteral("QLabel { color: #a01010; font-weight: bold; }")
+                                   : QString());
   const QSignalBlocker block(m_design);
   if (m_design->count() != designs) {
     m_design->clear();

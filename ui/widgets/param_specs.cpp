@@ -71,4 +71,12 @@ ParamSpec paramSpec(ParamKey key) {
   return {key, {}, {}, 0, 1, 0, 1, 3, false, {}};
 }
 
+QString subscriptDigits(int number) {
+  QString text;
+  for (const QChar digit : QString::number(number)) {
+    text += digit.isDigit() ? QChar(0x2080 + digit.digitValue()) : digit;
+  }
+  return text;
+}
+
 }  // namespace grazelab::ui

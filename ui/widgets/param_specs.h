@@ -26,4 +26,7 @@ struct ParamSpec {
 /// The spec of each parameter (translated labels and tooltips).
 ParamSpec paramSpec(ParamKey key);
 
+/// A number in subscript digits, for labels (m₁, λ₁₂).
+QString subscriptDigits(int number);
+
 }  // namespace grazelab::ui
