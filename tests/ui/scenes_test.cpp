@@ -282,8 +282,15 @@ class ScenesTest : public QObject {
   // flights past T; an impossible resonance for the masses is refused with a sentence; four
   // masses in 1:2:3:4 are designed and run the same way; the chain travels in the session
   void threeMassesStayBelowTheirPeriodAndImpossibleResonancesAreRefused() {
+    // a two-mass chain with no 1:2 design, left in a two-mass scene, does not refuse the
+    // N-mass scene (which never runs it)
+    Params infeasible = m_window->params();
+    infeasible.m2 = 0.9;
+    m_window->setParams(infeasible);
+    QVERIFY(!m_window->problem().isEmpty());
     m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("three-masses")));
     QVERIFY(waitForLatestFinal(*m_window, 60000));
+    QVERIFY2(m_window->problem().isEmpty(), qPrintable(m_window->problem()));
     const SceneJob* job = &m_window->displayed()->request->job;
     QVERIFY2(job->ok, qPrintable(job->message));
     QVERIFY2(job->chainSummary.contains(QStringLiteral("3 : 2 : 1")), qPrintable(job->chainSummary));

@@ -445,8 +445,10 @@ void MainWindow::layoutViews() {
 
 void MainWindow::selectScene(int index) {
   if (index < 0 || index >= int(m_scenes.size())) return;
-  // the chain comes along; the scene keeps its own start, push and length
-  if (m_sceneChosen && index != m_sceneIndex) {
+  // the chain comes along; the scene keeps its own start, push and length (an N-mass scene
+  // keeps its own chain, and the two-mass one, which it does not use, is not carried into it:
+  // an infeasible two-mass chain would refuse a scene that never runs it)
+  if (m_sceneChosen && index != m_sceneIndex && !m_scenes[std::size_t(index)]->massChain()) {
     Params& entered = m_sceneParams[std::size_t(index)];
     entered = enterScene(entered, params());
   }
@@ -513,7 +515,10 @@ void MainWindow::onParamsChanged(const Params& params) {
 
 void MainWindow::recompute() {
   Params& current = m_sceneParams[std::size_t(m_sceneIndex)];
-  const DerivedModel derived = deriveModel(current);
+  DerivedModel derived = deriveModel(current);
+  // an N-mass scene runs no two-mass chain: one it cannot make (from a session) stands in by
+  // the scene's own, which its job never runs
+  if (!derived.ok && scene().massChain()) derived = deriveModel(scene().defaults());
   if (!derived.ok) {
     showProblem(derived.message);
     return;
