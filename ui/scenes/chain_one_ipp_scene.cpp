@@ -67,19 +67,13 @@ Scene::Spec chainOnePeriodicScene() {
   scene.build = [](const Scene&, const Params& params, const DerivedModel& derived,
                    std::stop_token stop) {
     SceneJob job;
-    const auto refuse = [&job](const QString& why) {
-      job.message = why;
-      job.chainSummary = why;
-      job.chainRefused = true;
-      return job;
-    };
     const ChainChoice choice = chooseChain(params.massChain, params.gap, stop);
-    if (!choice.chain) return refuse(choice.problem);
+    if (!choice.chain) return refusedChainJob(choice.problem);
     const core::MassChain& chain = *choice.chain;
     const core::ChainModes modes = core::chainModes(chain);
     const core::SpectrumRatios ratios = core::detectRatios(modes.omega);
     if (!ratios.commensurate) {
-      return refuse(
+      return refusedChainJob(
           tr("The 1IPP family ends at a grazing orbit only on a chain with a common period: pick a "
              "resonance"));
     }
@@ -99,7 +93,7 @@ Scene::Spec chainOnePeriodicScene() {
     const double T = params.chainPeriodFraction * Tstar;
     const core::ChainOnePeriodicOrbit orbit = core::chainOnePeriodicOrbit(chain, T);
     if (!orbit.admissible()) {
-      return refuse(
+      return refusedChainJob(
           tr("No admissible 1IPP orbit of period T = %1 T*: its flight meets the stop before T, or "
              "its impact speed is not into the stop. The dots show where the family is "
              "admissible.")
@@ -162,10 +156,7 @@ Scene::Spec chainOnePeriodicScene() {
     job.chainTrust = shared->trust;
     job.chainTFinal = shared->run.tFinal;
     job.chainSeries = shared;
-    job.spec.model = derived.model;
-    job.spec.run.maxContacts = 0;
-    job.spec.run.needs.events = false;
-    job.ok = true;
+    readyChainJob(job, derived);
     return job;
   };
   return scene;

@@ -125,32 +125,23 @@ Scene::Spec grazingSetsScene() {
     SceneJob job;
     const MassChainParams& given = params.massChain;
     const ChainChoice choice = chooseChain(given, params.gap, stop);
-    const auto refuse = [&job](const QString& why) {
-      job.message = why;
-      job.chainSummary = why;
-      job.chainRefused = true;
-      return job;
-    };
-    if (!choice.chain) return refuse(choice.problem);
+    if (!choice.chain) return refusedChainJob(choice.problem);
     const core::MassChain& chain = *choice.chain;
     const core::GrazingModes used = core::grazingModes(chain);
     if (!used.ratios.commensurate) {
-      return refuse(
+      return refusedChainJob(
           tr("No grazing set: the modes that move the stopped mass are not commensurate (no common "
              "period). Pick a resonance."));
     }
     if (used.modes.size() < 2 || used.modes.size() > 3) {
-      return refuse(
+      return refusedChainJob(
           tr("Grazing sets are drawn for two or three modes that move the stopped mass; this chain "
              "has %1.")
               .arg(used.modes.size()));
     }
     const core::ChainGloStart glo = core::chainGloStart(chain, given.weights);
     if (glo.problem != core::GloStartProblem::None) {
-      return refuse(glo.problem == core::GloStartProblem::WeightOnNode
-                        ? tr("A weight is on a mode that does not move the stopped mass: it has no "
-                             "grazing orbit")
-                        : tr("The weights of the grazing orbit must be finite and sum to 1"));
+      return refusedChainJob(gloStartProblemInWords(glo.problem));
     }
     std::vector<double> weights;  // on the modes that move the stopped mass
     for (int mode : used.modes) weights.push_back(given.weights[std::size_t(mode)]);
@@ -193,10 +184,7 @@ Scene::Spec grazingSetsScene() {
     job.chainStatus = tr("GLO with weights (%1) %2")
                           .arg(written.join(QStringLiteral(", ")), verdictInWords(verdict));
     job.chainSeries = shared;
-    job.spec.model = derived.model;
-    job.spec.run.maxContacts = 0;
-    job.spec.run.needs.events = false;
-    job.ok = true;
+    readyChainJob(job, derived);
     return job;
   };
   return scene;

@@ -136,4 +136,26 @@ QString chainStatusOf(const core::experiments::ChainSeries& series) {
       .arg(number(run.tFinal, 6), stopInWords(run.stop), QString::number(drift, 'e', 1));
 }
 
+SceneJob refusedChainJob(const QString& why) {
+  SceneJob job;
+  job.message = why;
+  job.chainSummary = why;
+  job.chainRefused = true;
+  return job;
+}
+
+QString gloStartProblemInWords(core::GloStartProblem problem) {
+  return problem == core::GloStartProblem::WeightOnNode
+             ? tr("A weight is on a mode that does not move the stopped mass: it has no grazing "
+                  "orbit")
+             : tr("The weights of the grazing orbit must be finite and sum to 1");
+}
+
+void readyChainJob(SceneJob& job, const DerivedModel& derived) {
+  job.spec.model = derived.model;
+  job.spec.run.maxContacts = 0;
+  job.spec.run.needs.events = false;
+  job.ok = true;
+}
+
 }  // namespace grazelab::ui

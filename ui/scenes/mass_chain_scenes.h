@@ -11,7 +11,9 @@
 
 #include "core/experiments/chain_series.h"
 #include "core/model/mass_chain.h"
+#include "core/orbits/chain_glo.h"
 #include "ui/compute/params.h"
+#include "ui/compute/sim_types.h"
 
 namespace grazelab::ui {
 
@@ -30,5 +32,15 @@ QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& give
 
 /// The run in words for the status line: contacts by kind, its end and why, energy drift.
 QString chainStatusOf(const core::experiments::ChainSeries& series);
+
+/// A job refused with `why`, said in the status line and under the chain editor.
+SceneJob refusedChainJob(const QString& why);
+
+/// Why GLO(λ) of the panel's weights cannot be made, in words.
+QString gloStartProblemInWords(core::GloStartProblem problem);
+
+/// Marks an N-mass scene's job ready: its figures are the chain's, and the two-mass run the
+/// worker makes after a scene's own computation is none (no contacts, no events).
+void readyChainJob(SceneJob& job, const DerivedModel& derived);
 
 }  // namespace grazelab::ui

@@ -78,22 +78,11 @@ Scene::Spec threeMassesScene() {
     SceneJob job;
     const MassChainParams& given = params.massChain;
     const ChainChoice choice = chooseChain(given, params.gap, stop);
-    if (!choice.chain) {
-      job.message = choice.problem;
-      job.chainSummary = choice.problem;
-      job.chainRefused = true;
-      return job;
-    }
+    if (!choice.chain) return refusedChainJob(choice.problem);
     const core::MassChain& chain = *choice.chain;
     const core::ChainGloStart glo = core::chainGloStart(chain, given.weights);
     if (glo.problem != core::GloStartProblem::None) {
-      job.message = glo.problem == core::GloStartProblem::WeightOnNode
-                        ? tr("A weight is on a mode that does not move the stopped mass: it has no "
-                             "grazing orbit")
-                        : tr("The weights of the grazing orbit must be finite and sum to 1");
-      job.chainSummary = job.message;
-      job.chainRefused = true;
-      return job;
+      return refusedChainJob(gloStartProblemInWords(glo.problem));
     }
     core::ChainState start = glo.state;
     const Eigen::Index s = chain.stopped() - 1;
@@ -224,10 +213,7 @@ Scene::Spec threeMassesScene() {
     job.chainTFinal = series.run.tFinal;
     job.chainSeries = shared;
     // the two-mass run behind the scene's figures is none: everything drawn is the chain's
-    job.spec.model = derived.model;
-    job.spec.run.maxContacts = 0;
-    job.spec.run.needs.events = false;
-    job.ok = true;
+    readyChainJob(job, derived);
     return job;
   };
   return scene;
