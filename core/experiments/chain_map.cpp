@@ -44,8 +44,11 @@ bool summarize(const ChainMapSpec& spec, const ChainState& start, double period,
   bool fromStop = start.u[s] == spec.chain.gap && start.v[s] <= 0;
   double leftAt = 0;
   const BasicChainState<S> first{start.u.cast<S>(), start.v.cast<S>()};
+  // the map's chain is in double (a parameter axis moves it by double steps): a point raised
+  // to a higher precision runs that same chain there
+  const BasicMassChain<S> chain = chainCast<S>(spec.chain);
   std::optional<ChainTrustCheck<S>> check;
-  if (spec.estimateHorizon) check.emplace(spec.chain, first, long(spec.contacts), S(0), TrustMode::Auto, stop);
+  if (spec.estimateHorizon) check.emplace(chain, first, long(spec.contacts), S(0), TrustMode::Auto, stop);
   const ChainEventSink<S> sink = [&](const BasicChainEvent<S>& event) {
     if (check) check->observe(event);
     const double t = toDouble(event.t);
@@ -61,7 +64,7 @@ bool summarize(const ChainMapSpec& spec, const ChainState& start, double period,
     fromStop = event.type != EventType::Stick;
     leftAt = t;
   };
-  const BasicChainRun<S> run = runChain(spec.chain, first, long(spec.contacts), S(0), stop, sink);
+  const BasicChainRun<S> run = runChain(chain, first, long(spec.contacts), S(0), stop, sink);
   if (run.stop == ChainStop::Undecided) {
     if (raise) return false;
     // undecided in binary128 too: the map cannot say what the run does (no partial counts)

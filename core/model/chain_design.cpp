@@ -27,12 +27,15 @@ using ComplexMatrix = Eigen::MatrixXcd;
 // The problem scaled to numbers near 1: masses over the largest, eigenvalues n_j^2 / n_max^2
 // (w0 = 1 / n_max at unit stiffness scale). The unknowns are the compliances c_i = 1 / k_i of
 // that scaled chain.
-struct Scaled {
-  std::vector<double> masses;
-  std::vector<double> lambdas;
+// In double for the search; in binary128 to refine a design for a chain given in binary128.
+template <typename R>
+struct BasicScaled {
+  std::vector<R> masses;
+  std::vector<R> lambdas;
   /// a right wall: its compliance over c_1 (k_1 / k_(N+1), scale-free); 0 without one
-  double rightRatio = 0;
+  R rightRatio = 0;
 };
+using Scaled = BasicScaled<double>;
 
 // u_0(lambda; c) of the chain: the displacement the wall would need for a free vibration at
 // eigenvalue lambda with u_N = 1. Walking from the free end, the force in spring i is the
@@ -41,8 +44,8 @@ struct Scaled {
 // compliance c_(N+1) = rho c_1 the walk starts from its spring's force -u_N / c_(N+1): all of
 // it times c_(N+1) (u_N = rho c_1, force -1), which makes u_0 quadratic in c_1 and still affine
 // in the others. With `gradient`, its derivatives in c as well (forward mode).
-template <typename T>
-T wallDisplacement(const std::vector<double>& masses, double lambda, double rightRatio, const std::vector<T>& c,
+template <typename T, typename R>
+T wallDisplacement(const std::vector<R>& masses, const R& lambda, const R& rightRatio, const std::vector<T>& c,
                    std::vector<T>* gradient) {
   const std::size_t n = masses.size();
   const bool wall = rightRatio > 0;
@@ -65,8 +68,8 @@ T wallDisplacement(const std::vector<double>& masses, double lambda, double righ
 }
 
 // F(c) and its Jacobian: one equation per eigenvalue.
-template <typename T>
-void target(const Scaled& scaled, const std::vector<T>& c, Eigen::Matrix<T, Eigen::Dynamic, 1>& value,
+template <typename T, typename R>
+void target(const BasicScaled<R>& scaled, const std::vector<T>& c, Eigen::Matrix<T, Eigen::Dynamic, 1>& value,
             Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>* jacobian) {
   const std::size_t n = scaled.masses.size();
   value.resize(Eigen::Index(n));
@@ -207,11 +210,11 @@ TrackedPath track(const Homotopy& homotopy, ComplexVector c) {
   return {c.norm() > kInfinite ? PathEnd::Infinite : PathEnd::Finite, c};
 }
 
-// A real root of F polished in binary128 (Newton from the path's end).
-std::optional<std::vector<Quad>> polish(const Scaled& scaled, const ComplexVector& end) {
+// A real root of F polished in binary128 (Newton from `c`: a path's end, or a double design's
+// compliances), F's numbers in R (double, or binary128 for a chain given in it).
+template <typename R>
+std::optional<std::vector<Quad>> polish(const BasicScaled<R>& scaled, std::vector<Quad> c) {
   const std::size_t n = scaled.masses.size();
-  std::vector<Quad> c(n);
-  for (std::size_t i = 0; i < n; ++i) c[i] = Quad(end[Eigen::Index(i)].real());
   using QuadVector = Eigen::Matrix<Quad, Eigen::Dynamic, 1>;
   using QuadMatrix = Eigen::Matrix<Quad, Eigen::Dynamic, Eigen::Dynamic>;
   // quadratic at a simple root; at a double one (a design at the edge of existing) each step
@@ -365,7 +368,9 @@ ChainDesigns designSprings(const std::vector<double>& masses, double k1, double 
       ++designs.complexEnds;
       continue;
     }
-    const std::optional<std::vector<Quad>> c = polish(scaled, end);
+    std::vector<Quad> start(n);
+    for (std::size_t i = 0; i < n; ++i) start[i] = Quad(end[Eigen::Index(i)].real());
+    const std::optional<std::vector<Quad>> c = polish(scaled, std::move(start));
     if (!c || !std::all_of(c->begin(), c->end(), [](const Quad& x) { return x > 0; })) {
       ++designs.complexEnds;
       continue;
@@ -400,6 +405,35 @@ ChainDesigns designSprings(const std::vector<double>& masses, double k1, double 
   });
   designs.outcome = designs.designs.empty() ? DesignOutcome::NoPositiveDesign : DesignOutcome::Designed;
   return designs;
+}
+
+std::optional<std::vector<Quad>> refinedSprings(const std::vector<Quad>& masses, const Quad& k1,
+                                                const Quad& rightSpring, const std::vector<int>& harmonics,
+                                                const ChainDesign& design) {
+  const std::size_t n = masses.size();
+  if (n == 0 || harmonics.size() != n || design.springs.size() != n || !(design.omega0 > 0)) return std::nullopt;
+  int divisor = 0;
+  for (int h : harmonics) divisor = std::gcd(divisor, h);
+  const Quad fastest = Quad(harmonics.front() / divisor);
+  BasicScaled<Quad> scaled;
+  const Quad heaviest = *std::max_element(masses.begin(), masses.end());
+  for (const Quad& m : masses) scaled.masses.push_back(m / heaviest);
+  for (int h : harmonics) scaled.lambdas.push_back(Quad(h / divisor) * Quad(h / divisor) / (fastest * fastest));
+  if (rightSpring > 0) scaled.rightRatio = k1 / rightSpring;
+  // the design's compliances in the scaled problem: k_i = s / c_i with s = w0^2 m_max n_max^2
+  const Quad s = Quad(design.omega0) * Quad(design.omega0) * heaviest * fastest * fastest;
+  std::vector<Quad> c(n);
+  for (std::size_t i = 0; i < n; ++i) c[i] = s / Quad(design.springs[i]);
+  const std::optional<std::vector<Quad>> root = polish(scaled, c);
+  if (!root) return std::nullopt;
+  std::vector<Quad> springs(n);
+  const Quad scale = k1 * (*root)[0];
+  for (std::size_t i = 0; i < n; ++i) {
+    // the same design, only sharper: Newton stays within double's error of where it began
+    if (!((*root)[i] > 0) || !(fabs((*root)[i] / c[i] - 1) < Quad(1e-9))) return std::nullopt;
+    springs[i] = i == 0 ? k1 : scale / (*root)[i];
+  }
+  return springs;
 }
 
 }  // namespace grazelab::core

@@ -2,8 +2,11 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
+#include <optional>
 #include <stop_token>
 #include <vector>
+
+#include "core/numbers/scalar.h"
 
 namespace grazelab::core {
 
@@ -65,5 +68,15 @@ ChainDesigns designSprings(const std::vector<double>& masses, double k1, const s
 /// walls' compliances is fixed), so 2 N! paths are followed; everything else is as above.
 ChainDesigns designSprings(const std::vector<double>& masses, double k1, double rightSpring,
                            const std::vector<int>& harmonics, std::stop_token stop = {});
+
+/// One of those designs for a chain whose numbers are given in binary128 (the masses, k_1 and the
+/// wall read from their decimal text in it, which double rounds): the same root of the design
+/// equations polished by Newton with every number in binary128, from `design` (found for the
+/// chain rounded to double). The springs k_1 ... k_N then put the binary128 chain's frequencies in
+/// the ratio to binary128's rounding, where the double design is off by double's. Empty when
+/// Newton leaves the design (it moves each compliance by double's error at most).
+std::optional<std::vector<Quad>> refinedSprings(const std::vector<Quad>& masses, const Quad& k1,
+                                                const Quad& rightSpring, const std::vector<int>& harmonics,
+                                                const ChainDesign& design);
 
 }  // namespace grazelab::core

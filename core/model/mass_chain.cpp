@@ -61,23 +61,8 @@ MassChain massChainOf(const Model& model) {
   return {{model.m1, model.m2}, {model.k1, model.k2}, 0.0, 2, model.gap};
 }
 
-Eigen::MatrixXd massMatrix(const MassChain& chain) {
-  return Eigen::Map<const Eigen::VectorXd>(chain.masses.data(), chain.size()).asDiagonal();
-}
-
-Eigen::MatrixXd stiffnessMatrix(const MassChain& chain) {
-  const int n = chain.size();
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-  for (int i = 0; i < n; ++i) {
-    const double right = i + 1 < n ? chain.springs[std::size_t(i + 1)] : chain.rightSpring;
-    K(i, i) = chain.springs[std::size_t(i)] + right;
-    if (i + 1 < n) K(i, i + 1) = K(i + 1, i) = -right;
-  }
-  return K;
-}
-
 template <typename S>
-BasicChainModes<S> chainModesIn(const MassChain& chain) {
+BasicChainModes<S> chainModesIn(const BasicMassChain<Quad>& chain) {
   const int n = chain.size();
   // In binary128: a solver in precision eps finds each w_j^2 to eps * w_1^2 absolutely, so a
   // slow mode of a stiff chain (masses and springs over six decades) loses w_1^2 / w_N^2 of
@@ -88,13 +73,13 @@ BasicChainModes<S> chainModesIn(const MassChain& chain) {
   using Matrix = Eigen::Matrix<Quad, Eigen::Dynamic, Eigen::Dynamic>;
   using Vector = Eigen::Matrix<Quad, Eigen::Dynamic, 1>;
   Vector invRoot(n);
-  for (int i = 0; i < n; ++i) invRoot(i) = Quad(1) / sqrt(Quad(chain.masses[std::size_t(i)]));
+  for (int i = 0; i < n; ++i) invRoot(i) = Quad(1) / sqrt(chain.masses[std::size_t(i)]);
   // the symmetric form M^-1/2 K M^-1/2: its orthonormal eigenvectors V give P = M^-1/2 V,
   // M-orthonormal
   Matrix A = Matrix::Zero(n, n);
   for (int i = 0; i < n; ++i) {
-    const Quad right = i + 1 < n ? Quad(chain.springs[std::size_t(i + 1)]) : Quad(chain.rightSpring);
-    A(i, i) = (Quad(chain.springs[std::size_t(i)]) + right) * invRoot(i) * invRoot(i);
+    const Quad right = i + 1 < n ? chain.springs[std::size_t(i + 1)] : chain.rightSpring;
+    A(i, i) = (chain.springs[std::size_t(i)] + right) * invRoot(i) * invRoot(i);
     if (i + 1 < n) A(i, i + 1) = A(i + 1, i) = -right * invRoot(i) * invRoot(i + 1);
   }
   const Eigen::SelfAdjointEigenSolver<Matrix> solver(A);
@@ -141,9 +126,9 @@ BasicChainModes<S> chainModesIn(const MassChain& chain) {
 
 ChainModes chainModes(const MassChain& chain) { return chainModesIn<double>(chain); }
 
-template BasicChainModes<double> chainModesIn<double>(const MassChain&);
-template BasicChainModes<long double> chainModesIn<long double>(const MassChain&);
-template BasicChainModes<Quad> chainModesIn<Quad>(const MassChain&);
+template BasicChainModes<double> chainModesIn<double>(const BasicMassChain<Quad>&);
+template BasicChainModes<long double> chainModesIn<long double>(const BasicMassChain<Quad>&);
+template BasicChainModes<Quad> chainModesIn<Quad>(const BasicMassChain<Quad>&);
 
 SpectrumRatios detectRatios(const Eigen::VectorXd& omega, double tolerance, int maxHarmonic) {
   SpectrumRatios ratios;

@@ -6,9 +6,12 @@
 
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/model/model.h"
+#include "core/numbers/eigen_quad.h"
+#include "core/numbers/scalar.h"
 
 namespace grazelab::core {
 
@@ -16,17 +19,35 @@ namespace grazelab::core {
 /// [m2] -- ... --kN-- [mN], optionally --k(N+1)-- wall on the right; the stop at `gap` acts on
 /// mass `stopMass` (1-based, the last by default). N = 2 with the stop on mass 2 is the note's
 /// chain (model.h).
-struct MassChain {
-  std::vector<double> masses;   ///< m_1 ... m_N [mass], all > 0
-  std::vector<double> springs;  ///< k_1 ... k_N [force/length], all > 0: wall-m1, then m(i-1)-mi
-  double rightSpring = 0;       ///< k_(N+1) from m_N to a right wall [force/length]; 0: none
-  int stopMass = 0;             ///< s, 1-based; 0: the last mass
-  double gap = 1;               ///< d > 0 [length]
+///
+/// Its numbers are in a precision S: a run in binary128 takes its chain in binary128, read from
+/// the decimal text in that precision (0.7 is not double's 0.7 there), and its designed springs
+/// polished in it; everything else (the explorer, the double runs) uses MassChain.
+template <typename S>
+struct BasicMassChain {
+  std::vector<S> masses;   ///< m_1 ... m_N [mass], all > 0
+  std::vector<S> springs;  ///< k_1 ... k_N [force/length], all > 0: wall-m1, then m(i-1)-mi
+  S rightSpring = 0;       ///< k_(N+1) from m_N to a right wall [force/length]; 0: none
+  int stopMass = 0;        ///< s, 1-based; 0: the last mass
+  S gap = 1;               ///< d > 0 [length]
 
   int size() const { return int(masses.size()); }
   /// s, 1-based, with the default resolved.
   int stopped() const { return stopMass > 0 ? stopMass : size(); }
 };
+using MassChain = BasicMassChain<double>;
+
+/// The same chain with its numbers in another precision (exact from double to a wider one).
+template <typename To, typename From>
+BasicMassChain<To> chainCast(const BasicMassChain<From>& chain) {
+  BasicMassChain<To> cast;
+  for (const From& m : chain.masses) cast.masses.push_back(static_cast<To>(m));
+  for (const From& k : chain.springs) cast.springs.push_back(static_cast<To>(k));
+  cast.rightSpring = static_cast<To>(chain.rightSpring);
+  cast.stopMass = chain.stopMass;
+  cast.gap = static_cast<To>(chain.gap);
+  return cast;
+}
 
 /// Every problem with the chain: no mass, lists of different lengths, values that are not
 /// positive and finite, a stop mass out of range. Empty when the chain is usable.
@@ -36,8 +57,21 @@ std::vector<Problem> validate(const MassChain& chain);
 MassChain massChainOf(const Model& model);
 
 /// M = diag(m) and the tridiagonal K: K[i][i] = k_i + k_(i+1), K[i][i+1] = K[i+1][i] = -k_(i+1).
-Eigen::MatrixXd massMatrix(const MassChain& chain);
-Eigen::MatrixXd stiffnessMatrix(const MassChain& chain);
+template <typename S>
+Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> massMatrix(const BasicMassChain<S>& chain) {
+  return Eigen::Map<const Eigen::Matrix<S, Eigen::Dynamic, 1>>(chain.masses.data(), chain.size()).asDiagonal();
+}
+template <typename S>
+Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> stiffnessMatrix(const BasicMassChain<S>& chain) {
+  const int n = chain.size();
+  Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> K = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>::Zero(n, n);
+  for (int i = 0; i < n; ++i) {
+    const S right = i + 1 < n ? chain.springs[std::size_t(i + 1)] : chain.rightSpring;
+    K(i, i) = chain.springs[std::size_t(i)] + right;
+    if (i + 1 < n) K(i, i + 1) = K(i + 1, i) = -right;
+  }
+  return K;
+}
 
 /// The normal modes of a chain (docs/model.md section 11): P^T M P = I, P^T K P = diag(w_j^2),
 /// listed fastest first (mode 1 = the fastest, as in the two-mass chain), each column signed so
@@ -58,9 +92,15 @@ using ChainModes = BasicChainModes<double>;
 /// grows as N^3 in software arithmetic: 7 us for N = 2, 0.4 ms for N = 8, 14 ms for N = 32
 /// (grazelab_core_bench --benchmark_filter=ChainModes).
 ChainModes chainModes(const MassChain& chain);
-/// The same rounded to S (double, long double) or kept in binary128 (Quad).
+/// The same rounded to S (double, long double) or kept in binary128 (Quad), from a chain whose
+/// numbers are in binary128 (the solver's own precision) or any narrower one.
 template <typename S>
-BasicChainModes<S> chainModesIn(const MassChain& chain);
+BasicChainModes<S> chainModesIn(const BasicMassChain<Quad>& chain);
+template <typename S, typename R>
+  requires(!std::is_same_v<R, Quad>)
+BasicChainModes<S> chainModesIn(const BasicMassChain<R>& chain) {
+  return chainModesIn<S>(chainCast<Quad>(chain));
+}
 
 /// The ratios of a chain's frequencies: commensurate when w_j = n_j w0 with positive integers
 /// n_j (gcd 1, at most `maxHarmonic`) to within `tolerance` relative; `detuning` says how far

@@ -14,17 +14,19 @@
 
 namespace grazelab::core {
 
-ChainGloStart chainGloStart(const MassChain& chain, const std::vector<double>& weights) {
-  ChainGloStart start;
-  const ChainModes modes = chainModes(chain);
+template <typename S>
+BasicChainGloStart<S> chainGloStartIn(const BasicMassChain<S>& chain, const std::vector<S>& weights) {
+  using std::abs;
+  BasicChainGloStart<S> start;
+  const BasicChainModes<S> modes = chainModesIn<S>(chain);
   const Eigen::Index n = modes.omega.size();
   if (Eigen::Index(weights.size()) != n) {
     start.problem = GloStartProblem::WrongCount;
     return start;
   }
-  double sum = 0;
+  S sum = 0;
   for (std::size_t j = 0; j < weights.size(); ++j) {
-    if (!std::isfinite(weights[j])) {
+    if (!isFinite(weights[j])) {
       start.problem = GloStartProblem::NotFinite;
       return start;
     }
@@ -34,13 +36,13 @@ ChainGloStart chainGloStart(const MassChain& chain, const std::vector<double>& w
     }
     sum += weights[j];
   }
-  if (!(std::abs(sum - 1) <= 1e-12)) {
+  if (!(abs(sum - 1) <= S(1e-12))) {
     start.problem = GloStartProblem::NotAffine;
     return start;
   }
   const int s = chain.stopped() - 1;
-  start.state.u = Eigen::VectorXd::Zero(n);
-  start.state.v = Eigen::VectorXd::Zero(n);
+  start.state.u = ChainVector<S>::Zero(n);
+  start.state.v = ChainVector<S>::Zero(n);
   for (Eigen::Index j = 0; j < n; ++j) {
     if (weights[std::size_t(j)] == 0) continue;
     start.state.u += weights[std::size_t(j)] * chain.gap / modes.P(s, j) * modes.P.col(j);
@@ -48,6 +50,11 @@ ChainGloStart chainGloStart(const MassChain& chain, const std::vector<double>& w
   start.state.u[s] = chain.gap;  // on the stop exactly: sum lambda_j d = d up to rounding
   return start;
 }
+
+template BasicChainGloStart<double> chainGloStartIn<double>(const BasicMassChain<double>&, const std::vector<double>&);
+template BasicChainGloStart<long double> chainGloStartIn<long double>(const BasicMassChain<long double>&,
+                                                                      const std::vector<long double>&);
+template BasicChainGloStart<Quad> chainGloStartIn<Quad>(const BasicMassChain<Quad>&, const std::vector<Quad>&);
 
 GloGrazing gloGrazing(const std::vector<int>& harmonics, const std::vector<double>& weights) {
   // f(theta) = sum_j lambda_j cos(n_j theta) - 1, 2 pi periodic, f(0) = f'(0) = 0

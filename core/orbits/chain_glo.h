@@ -23,13 +23,20 @@ enum class GloStartProblem {
   NotFinite,
 };
 
-struct ChainGloStart {
+template <typename S>
+struct BasicChainGloStart {
   GloStartProblem problem = GloStartProblem::None;
-  ChainState state;  ///< at the touch: u_s = d exactly, v = 0
+  BasicChainState<S> state;  ///< at the touch: u_s = d exactly, v = 0
 };
+using ChainGloStart = BasicChainGloStart<double>;
 
-/// GLO_lambda's data of a usable chain, `weights` fastest mode first.
-ChainGloStart chainGloStart(const MassChain& chain, const std::vector<double>& weights);
+/// GLO_lambda's data of a usable chain, `weights` fastest mode first, in the chain's precision
+/// (double, long double or binary128: its modes rounded to S from binary128).
+template <typename S>
+BasicChainGloStart<S> chainGloStartIn(const BasicMassChain<S>& chain, const std::vector<S>& weights);
+inline ChainGloStart chainGloStart(const MassChain& chain, const std::vector<double>& weights) {
+  return chainGloStartIn<double>(chain, weights);
+}
 
 /// Whether sum_j lambda_j cos(n_j theta) <= 1 for every theta (W_lambda is a grazing linear
 /// orbit), decided by the certified first-zero search over one period of the flight

@@ -10,7 +10,7 @@
 namespace grazelab::core {
 
 template <typename S>
-BasicChainDynamics<S> chainDynamicsIn(const MassChain& chain) {
+BasicChainDynamics<S> chainDynamicsIn(const BasicMassChain<S>& chain) {
   const BasicChainModes<S> modes = chainModesIn<S>(chain);
   BasicChainDynamics<S> dynamics;
   dynamics.P = modes.P;
@@ -124,7 +124,7 @@ BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const B
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                                  \
-  template BasicChainDynamics<S> chainDynamicsIn<S>(const MassChain&);                                            \
+  template BasicChainDynamics<S> chainDynamicsIn<S>(const BasicMassChain<S>&);                                            \
   template BasicChainFlight<S> flightFrom<S>(const BasicChainDynamics<S>&, const BasicChainState<S>&);             \
   template BasicChainState<S> stateAt<S>(const BasicChainDynamics<S>&, const BasicChainFlight<S>&,                 \
                                          std::type_identity_t<S>);                                                 \

@@ -46,9 +46,9 @@ struct BasicChainDynamics {
 using ChainDynamics = BasicChainDynamics<double>;
 
 /// The dynamics of a usable chain (validate(chain) empty): its modes (chainModesIn) and whether
-/// its frequencies are commensurate (detectRatios, to 1e-9), in S.
+/// its frequencies are commensurate (detectRatios, to 1e-9), in S, from the chain's numbers in S.
 template <typename S>
-BasicChainDynamics<S> chainDynamicsIn(const MassChain& chain);
+BasicChainDynamics<S> chainDynamicsIn(const BasicMassChain<S>& chain);
 inline ChainDynamics chainDynamics(const MassChain& chain) { return chainDynamicsIn<double>(chain); }
 
 /// One free flight, in modal coordinates at its start: u(t) = P (q cos wt + qdot / w sin wt)

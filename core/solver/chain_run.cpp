@@ -11,9 +11,9 @@
 namespace grazelab::core {
 
 template <typename S>
-S chainEnergy(const MassChain& chain, const BasicChainState<S>& state) {
-  const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> M = massMatrix(chain).cast<S>();
-  const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> K = stiffnessMatrix(chain).cast<S>();
+S chainEnergy(const BasicMassChain<S>& chain, const BasicChainState<S>& state) {
+  const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> M = massMatrix(chain);
+  const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> K = stiffnessMatrix(chain);
   return S(0.5) * state.v.dot(M * state.v) + S(0.5) * state.u.dot(K * state.u);
 }
 
@@ -39,7 +39,7 @@ struct Rate {
   S value = 0, error = 0;
 };
 template <typename S>
-Rate<S> springsOn(const MassChain& chain, Eigen::Index i, const ChainVector<S>& x, const S& relativeError) {
+Rate<S> springsOn(const BasicMassChain<S>& chain, Eigen::Index i, const ChainVector<S>& x, const S& relativeError) {
   using std::abs;
   const Eigen::Index n = chain.size();
   const S leftK = S(chain.springs[std::size_t(i)]);
@@ -70,7 +70,7 @@ std::optional<S> exactTerm(const S& k, const S& x, const S& y) {
 // but not 0 (a neighbour one ulp past the gap) is undecided here and decided one precision up,
 // where it is resolved.
 template <typename S>
-bool exactlyFlat(const MassChain& chain, const BasicChainState<S>& at) {
+bool exactlyFlat(const BasicMassChain<S>& chain, const BasicChainState<S>& at) {
   const Eigen::Index n = chain.size();
   const Eigen::Index s = chain.stopped() - 1;
   const S us = at.u[s];
@@ -94,7 +94,7 @@ bool exactlyFlat(const MassChain& chain, const BasicChainState<S>& at) {
 // touch, a release), its velocities good to some tens of roundings of the motion's speed (each
 // mass's sqrt(2E / m_i)), not exact as a given start's are.
 template <typename S>
-std::optional<BasicLeaving<S>> stopLeaving(const MassChain& chain, const BasicChainState<S>& at, bool computed,
+std::optional<BasicLeaving<S>> stopLeaving(const BasicMassChain<S>& chain, const BasicChainState<S>& at, bool computed,
                                            bool flat) {
   using std::abs;
   using std::sqrt;
@@ -127,7 +127,7 @@ std::optional<BasicLeaving<S>> stopLeaving(const MassChain& chain, const BasicCh
 
 // how a flight leaves the stop after a release: stopLeaving when negative
 template <typename S>
-std::optional<BasicLeaving<S>> releaseLeaving(const MassChain& chain, const BasicChainState<S>& at) {
+std::optional<BasicLeaving<S>> releaseLeaving(const BasicMassChain<S>& chain, const BasicChainState<S>& at) {
   const std::optional<BasicLeaving<S>> leaving = stopLeaving(chain, at, true, false);
   if (!leaving || !(leaving->value < 0)) return std::nullopt;
   return leaving;
@@ -136,7 +136,7 @@ std::optional<BasicLeaving<S>> releaseLeaving(const MassChain& chain, const Basi
 }  // namespace
 
 template <typename S>
-BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
+BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
                           std::type_identity_t<S> tEnd, std::stop_token stop,
                           const ChainEventSink<std::type_identity_t<S>>& sink,
                           const ChainSampling<std::type_identity_t<S>>& sampling) {
@@ -304,8 +304,8 @@ BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& star
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                                  \
-  template S chainEnergy<S>(const MassChain&, const BasicChainState<S>&);                                         \
-  template BasicChainRun<S> runChain<S>(const MassChain&, const BasicChainState<S>&, long, std::type_identity_t<S>, \
+  template S chainEnergy<S>(const BasicMassChain<S>&, const BasicChainState<S>&);                                         \
+  template BasicChainRun<S> runChain<S>(const BasicMassChain<S>&, const BasicChainState<S>&, long, std::type_identity_t<S>, \
                                         std::stop_token, const ChainEventSink<S>&, const ChainSampling<S>&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)

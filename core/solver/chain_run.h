@@ -72,7 +72,7 @@ struct ChainSampling {
 
 /// The energy 1/2 v^T M v + 1/2 u^T K u of a chain's state.
 template <typename S>
-S chainEnergy(const MassChain& chain, const BasicChainState<S>& state);
+S chainEnergy(const BasicMassChain<S>& chain, const BasicChainState<S>& state);
 
 /// An exact run of a usable chain (validate(chain) empty) from `start` (u_s <= d): closed-form
 /// flights in the chain's modes, each contact by firstContact (certified: none missed), elastic
@@ -84,7 +84,7 @@ S chainEnergy(const MassChain& chain, const BasicChainState<S>& state);
 /// precision of `start`: double, long double or binary128 (Quad). With a `sink`, each event is
 /// handed to it as it happens and none is kept; with `sampling`, the states it asks for.
 template <typename S>
-BasicChainRun<S> runChain(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
+BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
                           std::type_identity_t<S> tEnd = 0, std::stop_token stop = {},
                           const ChainEventSink<std::type_identity_t<S>>& sink = {},
                           const ChainSampling<std::type_identity_t<S>>& sampling = {});

@@ -11,13 +11,13 @@ namespace {
 // the masses first .. first+count-1 with their springs as a chain of their own; `wallSpring` on
 // the left (k of the spring from the left wall or clamp), `rightSpring` on the right (0: free)
 template <typename S>
-typename BasicChainStuckPhase<S>::Side makeSide(const MassChain& chain, Eigen::Index first, Eigen::Index count,
-                                                double rightSpring) {
+typename BasicChainStuckPhase<S>::Side makeSide(const BasicMassChain<S>& chain, Eigen::Index first, Eigen::Index count,
+                                                const S& rightSpring) {
   typename BasicChainStuckPhase<S>::Side side;
   side.first = first;
   side.count = count;
   if (count == 0) return side;
-  MassChain part;
+  BasicMassChain<S> part;
   part.masses.assign(chain.masses.begin() + first, chain.masses.begin() + first + count);
   part.springs.assign(chain.springs.begin() + first, chain.springs.begin() + first + count);
   part.rightSpring = rightSpring;
@@ -29,13 +29,13 @@ typename BasicChainStuckPhase<S>::Side makeSide(const MassChain& chain, Eigen::I
 }  // namespace
 
 template <typename S>
-BasicChainStuckPhase<S> stuckPhase(const MassChain& chain, const BasicChainState<S>& start) {
+BasicChainStuckPhase<S> stuckPhase(const BasicMassChain<S>& chain, const BasicChainState<S>& start) {
   BasicChainStuckPhase<S> phase;
   const Eigen::Index n = chain.size();
   const Eigen::Index s = chain.stopped() - 1;
   const S d = S(chain.gap);
   // a spring's compliance, in S
-  const auto compliance = [](double k) { return S(1) / S(k); };
+  const auto compliance = [](const S& k) { return S(1) / k; };
   phase.stop = int(s);
   phase.gap = d;
   // left: masses 0 .. s-1 between the wall and the clamp (springs k_0 .. k_s); right: masses
@@ -95,7 +95,7 @@ BasicChainState<S> stuckStateAt(const BasicChainStuckPhase<S>& phase, std::type_
 }
 
 template <typename S>
-BasicStopForce<S> stopForce(const MassChain& chain, const BasicChainState<S>& state) {
+BasicStopForce<S> stopForce(const BasicMassChain<S>& chain, const BasicChainState<S>& state) {
   using std::abs;
   // -(K u)_s term by term: k_s (u_(s-1) - u_s) + k_(s+1) (u_(s+1) - u_s), walls at 0
   const Eigen::Index n = chain.size();
@@ -137,9 +137,9 @@ BasicFirstZero<S> releaseOf(const BasicChainStuckPhase<S>& phase, std::type_iden
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                                  \
-  template BasicChainStuckPhase<S> stuckPhase<S>(const MassChain&, const BasicChainState<S>&);                    \
+  template BasicChainStuckPhase<S> stuckPhase<S>(const BasicMassChain<S>&, const BasicChainState<S>&);                    \
   template BasicChainState<S> stuckStateAt<S>(const BasicChainStuckPhase<S>&, std::type_identity_t<S>);           \
-  template BasicStopForce<S> stopForce<S>(const MassChain&, const BasicChainState<S>&);                           \
+  template BasicStopForce<S> stopForce<S>(const BasicMassChain<S>&, const BasicChainState<S>&);                           \
   template BasicFirstZero<S> releaseOf<S>(const BasicChainStuckPhase<S>&, std::type_identity_t<S>, long);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)

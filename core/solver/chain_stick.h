@@ -40,7 +40,7 @@ using ChainStuckPhase = BasicChainStuckPhase<double>;
 
 /// The stuck phase from `start` (u_s = d, v_s = 0, F_s > 0) of a usable chain.
 template <typename S>
-BasicChainStuckPhase<S> stuckPhase(const MassChain& chain, const BasicChainState<S>& start);
+BasicChainStuckPhase<S> stuckPhase(const BasicMassChain<S>& chain, const BasicChainState<S>& start);
 
 /// The state `t` after the phase's start (u_s = d, v_s = 0).
 template <typename S>
@@ -53,7 +53,7 @@ struct BasicStopForce {
   S error = 0;
 };
 template <typename S>
-BasicStopForce<S> stopForce(const MassChain& chain, const BasicChainState<S>& state);
+BasicStopForce<S> stopForce(const BasicMassChain<S>& chain, const BasicChainState<S>& state);
 
 /// When the phase ends: -F_s(t) searched for its first zero by firstZero (certified, over up to
 /// `horizon`): a Crossing is the release; a Touch means the force comes back to zero within

@@ -22,7 +22,7 @@ std::string precisionName() {
 }  // namespace
 
 template <typename S>
-ChainTrustCheck<S>::ChainTrustCheck(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
+ChainTrustCheck<S>::ChainTrustCheck(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
                                     std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop)
     : m_mode(mode) {
   if (mode == TrustMode::Off) {
@@ -32,9 +32,9 @@ ChainTrustCheck<S>::ChainTrustCheck(const MassChain& chain, const BasicChainStat
   // the shadow: one precision up; binary128 by binary128 on the chain scaled 3x in length and
   // 1/sqrt(3) in time (springs x 3, masses as given: w x sqrt(3))
   m_scaled = std::is_same_v<S, H>;
-  MassChain shadowChain = chain;
+  BasicMassChain<H> shadowChain = chainCast<H>(chain);
   if (m_scaled) {
-    for (double& k : shadowChain.springs) k *= 3;
+    for (H& k : shadowChain.springs) k *= 3;
     shadowChain.rightSpring *= 3;
     shadowChain.gap *= 3;
     m_length = 3;
@@ -52,14 +52,14 @@ ChainTrustCheck<S>::ChainTrustCheck(const MassChain& chain, const BasicChainStat
     return;
   }
   // the scales: the largest |u_i| and |v_i| at the shadow's events (the gap at least)
-  m_uScale = chain.gap;
+  m_uScale = toDouble(chain.gap);
   double vScale = 0;
   for (const BasicChainEvent<H>& event : m_shadow.events) {
     m_uScale = std::max(m_uScale, toDouble(event.u.cwiseAbs().maxCoeff() / m_length));
     vScale = std::max(vScale, toDouble(event.vBefore.cwiseAbs().maxCoeff() / (m_length * m_time)));
   }
   m_vScale = vScale > 0 ? vScale : 1.0;
-  m_slowest = twoPi<double>() / chainModes(chain).omega.minCoeff();
+  m_slowest = twoPi<double>() / chainModesIn<double>(chain).omega.minCoeff();
 }
 
 template <typename S>
@@ -150,7 +150,7 @@ Trust ChainTrustCheck<S>::finish(const BasicChainRun<S>& run) const {
 }
 
 template <typename S>
-Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
+Trust chainTrust(const BasicMassChain<S>& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
                  long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop) {
   ChainTrustCheck<S> check(chain, start, maxContacts, tEnd, mode, stop);
   for (const BasicChainEvent<S>& event : run.events) check.observe(event);
@@ -158,7 +158,7 @@ Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const 
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                       \
-  template Trust chainTrust<S>(const MassChain&, const BasicChainState<S>&, const BasicChainRun<S>&, long, \
+  template Trust chainTrust<S>(const BasicMassChain<S>&, const BasicChainState<S>&, const BasicChainRun<S>&, long, \
                                std::type_identity_t<S>, TrustMode, std::stop_token);                      \
   template class ChainTrustCheck<S>;
 GRAZELAB_INSTANTIATE(double)

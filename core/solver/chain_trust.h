@@ -36,7 +36,7 @@ constexpr long chainShadowContacts() {
 }
 
 template <typename S>
-Trust chainTrust(const MassChain& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
+Trust chainTrust(const BasicMassChain<S>& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
                  long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
 
 /// chainTrust for a run whose events stream (a ChainEventSink): the shadow is run first and
@@ -47,7 +47,7 @@ template <typename S>
 class ChainTrustCheck {
  public:
   using H = ShadowScalar<S>;
-  ChainTrustCheck(const MassChain& chain, const BasicChainState<S>& start, long maxContacts,
+  ChainTrustCheck(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
                   std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
   /// The run's next event.
   void observe(const BasicChainEvent<S>& event);

@@ -380,7 +380,32 @@ u1 = Decimal(json.load(open('$work/quad.json'), parse_float=str)['initial']['u']
 assert abs(u1 - Decimal('1.4')) < Decimal('1e-33') and abs(Decimal(1.4) - Decimal('1.4')) > Decimal('1e-17'), u1" || fail "N masses in binary128"
   fi
 fi
-EXPECT_WORD="in double for now" expect_invalid simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --glo-weights 0.5,0.3,0.2 --precision quad
+# a designed chain in binary128: the masses read in it (0.2 is not double's 0.2 there) and the
+# springs designed for them to its rounding, so that its frequencies are 3:2:1 to ~1e-33 where
+# the double design is off by ~1e-16: the characteristic polynomial of K - lambda M, exact in
+# fractions from the printed numbers, has roots 9x, 4x, x (its coefficients' ratios 14, 49, 36)
+if expect_ok simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --glo-weights 0.5,0.3,0.2 --contacts 3 --precision quad; then
+  python3 -c "
+import json
+from fractions import Fraction as F
+d = json.load(open('$out'), parse_float=str)
+c = d['chain']
+m = [F(x) for x in c['masses']]; k = [F(x) for x in c['springs']]
+assert abs(m[1] - F('0.2')) < F(1, 10 ** 33) and abs(F(0.2) - F('0.2')) > F(1, 10 ** 18), c['masses']
+a = [k[0] + k[1], k[1] + k[2], k[2]]
+# det(K - l M) = -m1 m2 m3 l^3 + c2 l^2 - c1 l + c0 for the tridiagonal K
+p3 = m[0] * m[1] * m[2]
+p2 = a[0] * m[1] * m[2] + a[1] * m[0] * m[2] + a[2] * m[0] * m[1]
+p1 = a[0] * a[1] * m[2] + a[0] * a[2] * m[1] + a[1] * a[2] * m[0] - k[1] ** 2 * m[2] - k[2] ** 2 * m[0]
+p0 = a[0] * a[1] * a[2] - a[0] * k[2] ** 2 - a[2] * k[1] ** 2
+x = p2 / p3 / 14
+errors = [abs(p1 / p3 / (49 * x * x) - 1), abs(p0 / p3 / (36 * x ** 3) - 1)]
+assert max(errors) < F(1, 10 ** 30), [float(e) for e in errors]
+assert d['precision']['used'] == 'quad' and len(d['events']) == 3, d['precision']
+s = d['initial']['u']
+assert F(s[2]) == F(c['gap']), s" || fail "a chain designed in binary128"
+fi
+EXPECT_WORD="in double for now" expect_invalid simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --onepp 5 --precision quad
 # --precision auto: mass 1 pressed one ulp past the gap is undecided in double (the force on
 # mass 2 is within its rounding); the run again in long double, then in binary128, gives the
 # two-mass solver's events (which decides it in double from its exact residuals). The ulp is

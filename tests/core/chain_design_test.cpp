@@ -15,6 +15,7 @@
 
 #include "core/model/mass_chain.h"
 #include "core/model/model.h"
+#include "core/numbers/scalar.h"
 
 namespace grazelab::core {
 namespace {
@@ -214,6 +215,58 @@ TEST(ChainDesign, RightWallDesignsScaleAndVanishWithTheWall) {
   // a wall as stiff as it gets is refused as input, never a silent design
   EXPECT_EQ(designSprings(masses, 1.0, -1.0, harmonics).outcome, DesignOutcome::BadRequest);
   EXPECT_EQ(designSprings(masses, 1.0, std::nan(""), harmonics).outcome, DesignOutcome::BadRequest);
+}
+
+// A chain given in binary128 (masses 0.2, 0.05 read from their decimal text there, which double
+// rounds 1e-17 away): each double design refined for it is in the ratio to binary128's rounding.
+// Two masses in 1:2 against the closed form (w1^2 = 4 w2^2 makes the characteristic polynomial's
+// (sum of roots)^2 / product = 25/4, a quadratic in k2 whose two roots are the note's branches);
+// three, with and without a wall, by the characteristic polynomial of K - lambda M, whose roots
+// are 9x, 4x, x when its coefficients' ratios are 14, 49, 36. The double design itself is off by
+// double's rounding there (the refinement is what makes a binary128 run's chain resonant).
+TEST(ChainDesign, RefinedDesignsAreExactInBinary128) {
+  const Quad m2 = parseScalar<Quad>("0.2").value.value(), m3 = parseScalar<Quad>("0.05").value.value();
+  const Quad k1 = parseScalar<Quad>("1.3").value.value();
+  {
+    const std::vector<Quad> masses{Quad(1), m2};
+    const ChainDesigns designs = designSprings({1.0, 0.2}, 1.3, {2, 1});
+    ASSERT_EQ(designs.designs.size(), 2u);
+    // (a k2 + b)^2 = 25/4 m1 m2 k1 k2 with a = m1 + m2, b = m2 k1
+    const Quad a = masses[0] + masses[1], b = masses[1] * k1, c = Quad(25) / 4 * masses[0] * masses[1] * k1;
+    const Quad p = 2 * a * b - c, root = sqrt(p * p - 4 * a * a * b * b);
+    const Quad branches[2] = {(-p + root) / (2 * a * a), (-p - root) / (2 * a * a)};  // upper first
+    for (std::size_t d = 0; d < 2; ++d) {
+      const auto springs = refinedSprings(masses, k1, Quad(0), {2, 1}, designs.designs[d]);
+      ASSERT_TRUE(springs.has_value()) << d;
+      EXPECT_EQ((*springs)[0], k1);
+      EXPECT_LT(double(fabs((*springs)[1] / branches[d] - 1)), 1e-31) << d;
+      EXPECT_GT(double(fabs(Quad(designs.designs[d].springs[1]) / branches[d] - 1)), 1e-20) << d;
+    }
+  }
+  for (const Quad& wall : {Quad(0), parseScalar<Quad>("0.3").value.value()}) {
+    const std::vector<Quad> masses{Quad(1), m2, m3};
+    const ChainDesigns designs = designSprings({1.0, 0.2, 0.05}, 1.3, double(wall), {3, 2, 1});
+    ASSERT_EQ(designs.outcome, DesignOutcome::Designed);
+    // the coefficients' ratios' worst error for springs k (K tridiagonal, its last diagonal k3 + wall)
+    const auto ratioError = [&](const std::vector<Quad>& k) {
+      const Quad a0 = k[0] + k[1], a1 = k[1] + k[2], a2 = k[2] + wall;
+      const Quad p3 = masses[0] * masses[1] * masses[2];
+      const Quad p2 = a0 * masses[1] * masses[2] + a1 * masses[0] * masses[2] + a2 * masses[0] * masses[1];
+      const Quad p1 = a0 * a1 * masses[2] + a0 * a2 * masses[1] + a1 * a2 * masses[0] - k[1] * k[1] * masses[2] -
+                      k[2] * k[2] * masses[0];
+      const Quad p0 = a0 * a1 * a2 - a0 * k[2] * k[2] - a2 * k[1] * k[1];
+      const Quad x = p2 / p3 / 14;
+      return double(std::max(fabs(p1 / p3 / (49 * x * x) - 1), fabs(p0 / p3 / (36 * x * x * x) - 1)));
+    };
+    for (const ChainDesign& design : designs.designs) {
+      const auto springs = refinedSprings(masses, k1, wall, {3, 2, 1}, design);
+      ASSERT_TRUE(springs.has_value());
+      EXPECT_LT(ratioError(*springs), 1e-30) << double(wall);
+      std::vector<Quad> unrefined{k1};
+      for (std::size_t i = 1; i < 3; ++i) unrefined.push_back(Quad(design.springs[i]));
+      EXPECT_GT(ratioError(unrefined), 1e-20) << double(wall);
+    }
+  }
 }
 
 TEST(ChainDesign, RefusesBadRequests) {

@@ -322,7 +322,7 @@ TEST(ChainRun, AFlatStartLeavesByItsFourthDerivativeOrIsHeld) {
   }
   BasicChainState<Quad> pulledQuad{ChainVector<Quad>(3), ChainVector<Quad>::Zero(3)};
   pulledQuad.u << Quad(0.3), Quad(1), Quad(1);
-  const BasicChainRun<Quad> quad = runChain<Quad>(chain, pulledQuad, 2);
+  const BasicChainRun<Quad> quad = runChain(chainCast<Quad>(chain), pulledQuad, 2);
   ASSERT_EQ(quad.events.size(), 2u) << int(quad.stop);
   EXPECT_EQ(quad.events[1].type, EventType::Grazing);
   EXPECT_NEAR(double(quad.events[1].t), 2 * period, 1e-12 * period);

@@ -43,7 +43,7 @@ TEST(ChainTrust, TheHorizonOfAChaoticRunIsWhereItPartsFromBinary128) {
   EXPECT_EQ(again.stateError, trust.stateError);
   // against binary128: within 1e-6 of the scales up to a little before the horizon, not by the end
   const BasicChainRun<Quad> exact =
-      runChain(chain, BasicChainState<Quad>{pressedStart().u.cast<Quad>(), pressedStart().v.cast<Quad>()}, 100);
+      runChain(chainCast<Quad>(chain), BasicChainState<Quad>{pressedStart().u.cast<Quad>(), pressedStart().v.cast<Quad>()}, 100);
   double before = 0, after = 0;
   for (std::size_t k = 0; k < std::min(run.events.size(), exact.events.size()); ++k) {
     const double t = run.events[k].t;
@@ -61,7 +61,7 @@ TEST(ChainTrust, TheHorizonOfAChaoticRunIsWhereItPartsFromBinary128) {
 // them; both agree on a periodic run, and auto's horizon stays within twice the time it compared
 TEST(ChainTrust, AutoShadowsTheFirstContactsOfALongRun) {
   // one mass bouncing on its stop: periodic, its errors grow slowly
-  const MassChain chain{{2.0}, {3.0}, 0, 0, 0.5};
+  const BasicMassChain<long double> chain{{2.0L}, {3.0L}, 0, 0, 0.5L};
   const BasicChainState<long double> start{Eigen::Matrix<long double, 1, 1>(0.1L),
                                            Eigen::Matrix<long double, 1, 1>(1.7L)};
   const long contacts = chainShadowContacts<long double>() + 300;

@@ -110,12 +110,11 @@ const char* refusalWords(core::OnePeriodicRefusal refusal) {
   return "unknown";
 }
 
-// The run's start in S: --state, --glo-weights (GLO_lambda at its touch) or --onepp T (the 1IPP
-// orbit's data right after its impact), plus --perturb. --state and --perturb are read in S (0.1
-// is 0.1 to binary128's digits); the chain's numbers are read as doubles (MassChain holds
-// doubles), the run's arithmetic on them is S
+// The run's start in S, from the chain in S: --state, --glo-weights (GLO_lambda at its touch) or
+// --onepp T (the 1IPP orbit's data right after its impact, in double), plus --perturb. --state,
+// the weights and --perturb are read in S (0.1 is 0.1 to binary128's digits)
 template <typename S>
-std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, const core::MassChain& chain,
+std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, const core::BasicMassChain<S>& chain,
                                                    QString& error) {
   const Eigen::Index n = chain.size();
   const int s = chain.stopped() - 1;
@@ -126,33 +125,32 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
                 .arg(n);
     return std::nullopt;
   }
-  if constexpr (!std::is_same_v<S, double>) {
-    if (options.isSet("onepp") || options.isSet("glo-weights")) {
-      error = "--glo-weights and --onepp start a chain of N masses in double for now (give --precision double "
-              "or auto, or --state in the precision)";
-      return std::nullopt;
-    }
-  }
   core::BasicChainState<S> start;
   if (options.isSet("onepp")) {
-    bool ok = false;
-    const double T = options.value("onepp").toDouble(&ok);
-    const core::ChainOnePeriodicOrbit orbit = core::chainOnePeriodicOrbit(chain, ok ? T : -1.0);
-    if (!orbit.admissible()) {
-      error = QStringLiteral("--onepp %1: no admissible 1IPP orbit of that period: %2")
-                  .arg(options.value("onepp"), refusalWords(orbit.refusal));
+    if constexpr (!std::is_same_v<S, double>) {
+      error = "--onepp starts a chain of N masses in double for now (give --precision double or auto, or --state "
+              "in the precision)";
       return std::nullopt;
+    } else {
+      bool ok = false;
+      const double T = options.value("onepp").toDouble(&ok);
+      const core::ChainOnePeriodicOrbit orbit = core::chainOnePeriodicOrbit(chain, ok ? T : -1.0);
+      if (!orbit.admissible()) {
+        error = QStringLiteral("--onepp %1: no admissible 1IPP orbit of that period: %2")
+                    .arg(options.value("onepp"), refusalWords(orbit.refusal));
+        return std::nullopt;
+      }
+      start = orbit.postImpact;
     }
-    start = {orbit.postImpact.u.cast<S>(), orbit.postImpact.v.cast<S>()};
   } else if (options.isSet("state")) {
     const auto values = numberList<S>(options, "state", 2 * n, "u1,...,uN,v1,...,vN", error);
     if (!values) return std::nullopt;
     using Vector = core::ChainVector<S>;
     start = {Eigen::Map<const Vector>(values->data(), n), Eigen::Map<const Vector>(values->data() + n, n)};
   } else {
-    const auto weights = numberList<double>(options, "glo-weights", n, "l1,...,lN", error);
+    const auto weights = numberList<S>(options, "glo-weights", n, "l1,...,lN", error);
     if (!weights) return std::nullopt;
-    const core::ChainGloStart glo = core::chainGloStart(chain, *weights);
+    const core::BasicChainGloStart<S> glo = core::chainGloStartIn<S>(chain, *weights);
     switch (glo.problem) {
       case core::GloStartProblem::None: break;
       case core::GloStartProblem::WrongCount:
@@ -168,7 +166,7 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
                 "info's node_at_stop)";
         return std::nullopt;
     }
-    start = {glo.state.u.cast<S>(), glo.state.v.cast<S>()};
+    start = glo.state;
   }
   if (options.isSet("perturb")) {
     const auto delta = numberList<S>(options, "perturb", 2 * n, "du1,...,duN,dv1,...,dvN", error);
@@ -177,11 +175,11 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
     start.u += Eigen::Map<const Vector>(delta->data(), n);
     start.v += Eigen::Map<const Vector>(delta->data() + n, n);
   }
-  if (start.u[s] > S(chain.gap)) {
+  if (start.u[s] > chain.gap) {
     error = QStringLiteral("the start has u%1 = %2 past the stop (gap %3)")
                 .arg(s + 1)
                 .arg(core::toDouble(start.u[s]))
-                .arg(chain.gap);
+                .arg(core::toDouble(chain.gap));
     return std::nullopt;
   }
   return start;
@@ -247,7 +245,7 @@ std::optional<S> timeLimit(const QString& tEndText, QString& error) {
 // `keepEvents` false: the run's statistics alone (the Python module's events=False), its error
 // estimate made online as the events come, none of them held
 template <typename S>
-std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::MassChain& chain, long contacts,
+std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::BasicMassChain<S>& chain, long contacts,
                                    const QString& tEndText, std::stop_token stop, QString& error,
                                    bool keepEvents = true, core::TrustMode trustMode = core::TrustMode::Off) {
   const auto start = chainStart<S>(options, chain, error);
@@ -291,7 +289,7 @@ V samplesValue(const ChainRunIn<S>& in) {
 
 // (events null when they were not kept)
 template <typename S>
-V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precision, const core::Trust& trust,
+V runDocument(const core::BasicMassChain<S>& masses, const ChainRunIn<S>& in, V precision, const core::Trust& trust,
               bool sampled, bool keptEvents = true) {
   const core::BasicChainRun<S>& run = in.run;
   std::vector<V> events;
@@ -302,7 +300,7 @@ V runDocument(const core::MassChain& masses, const ChainRunIn<S>& in, V precisio
                                 {"v_pre", numbers<S>(event.vBefore)},
                                 {"v_post", V::number(event.vAfter)}}));
   }
-  const core::ChainDynamics dynamics = core::chainDynamics(masses);
+  const core::BasicChainDynamics<S> dynamics = core::chainDynamicsIn<S>(masses);
   const std::string message = stopMessage(run.stop);
   using std::abs;
   V document = V::object(
@@ -353,14 +351,15 @@ std::string csvLine(const core::BasicChainEvent<S>& event) {
 // The summary of a streamed run: what the json says but its events, as the two-mass summary
 // lays it out
 template <typename S>
-std::string summaryText(const core::MassChain& masses, const ChainRunIn<S>& in, double seconds,
+std::string summaryText(const core::BasicMassChain<S>& masses, const ChainRunIn<S>& in, double seconds,
                         const std::string& precision, const std::vector<std::string>& raised,
                         const core::Trust& trust) {
   const core::BasicChainRun<S>& run = in.run;
-  const core::ChainDynamics dynamics = core::chainDynamics(masses);
+  const core::BasicChainDynamics<S> dynamics = core::chainDynamicsIn<S>(masses);
+  using Vector = core::ChainVector<S>;
   std::string text;
-  text += "chain          masses " + listText<double>(Eigen::Map<const Eigen::VectorXd>(masses.masses.data(), masses.size())) +
-          " springs " + listText<double>(Eigen::Map<const Eigen::VectorXd>(masses.springs.data(), masses.size())) +
+  text += "chain          masses " + listText<S>(Eigen::Map<const Vector>(masses.masses.data(), masses.size())) +
+          " springs " + listText<S>(Eigen::Map<const Vector>(masses.springs.data(), masses.size())) +
           (masses.rightSpring > 0 ? " right spring " + core::formatScalar(masses.rightSpring) : std::string()) +
           " stop on mass " + std::to_string(masses.stopped()) + " gap " + core::formatScalar(masses.gap) +
           (dynamics.period > 0 ? " (commensurate; T=" + core::formatScalar(dynamics.period) + ")" : std::string(" (not commensurate)")) + "\n";
@@ -438,7 +437,12 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     error = chain.error;
     return kExitInvalidInput;
   }
-  const core::MassChain& masses = chain.value->chain;
+  // the chain's numbers in each rung's precision (read again from their text there)
+  const auto chainIn = [&]<typename S>() -> std::optional<core::BasicMassChain<S>> {
+    Parsed<core::BasicMassChain<S>> parsed = massChainIn<S>(options, *chain.value);
+    if (!parsed.value) error = parsed.error;
+    return std::move(parsed.value);
+  };
   // the Python module's events=False: a json document without events, none of them held
   const bool keepEvents = !(format == ChainFormat::Json && io.events && io.events->discard);
   const long maxContacts = format == ChainFormat::Json && keepEvents ? kMaxChainContacts : kMaxStreamedContacts;
@@ -484,18 +488,20 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
   std::optional<bool> raisedAgrees;
   // a streamed rung (csv, summary): the events go out as they come, none is held
   const auto streamed = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
-    const auto start = chainStart<S>(options, masses, error);
+    const auto masses = chainIn.template operator()<S>();
+    if (!masses) return kExitInvalidInput;
+    const auto start = chainStart<S>(options, *masses, error);
     if (!start) return kExitInvalidInput;
     const long before = written;  // rows a lower precision wrote
     raisedAgrees.reset();
     const auto limit = timeLimit<S>(tEnd, error);
     if (!limit) return kExitInvalidInput;
     if (format == ChainFormat::Csv && !headed) {
-      std::fputs(csvHeader(masses.size(), masses.stopped()).c_str(), io.out);
+      std::fputs(csvHeader(masses->size(), masses->stopped()).c_str(), io.out);
       headed = true;
     }
     std::optional<core::ChainTrustCheck<S>> check;
-    if (format == ChainFormat::Summary) check.emplace(masses, *start, contacts, *limit, *trustMode, stop);
+    if (format == ChainFormat::Summary) check.emplace(*masses, *start, contacts, *limit, *trustMode, stop);
     if (stop.stop_requested()) return kExitInterrupted;
     const auto began = std::chrono::steady_clock::now();  // the run's own time, its shadow apart
     long seen = 0;
@@ -516,7 +522,7 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       lastWrittenTime = core::toDouble(event.t);
       lastWrittenType = event.type;
     };
-    const ChainRunIn<S> in{*start, core::runChain(masses, *start, contacts, *limit, stop, sink), *limit, {}, false, std::nullopt};
+    const ChainRunIn<S> in{*start, core::runChain(*masses, *start, contacts, *limit, stop, sink), *limit, {}, false, std::nullopt};
     std::fflush(io.out);
     if (in.run.stop == core::ChainStop::Cancelled) {
       if (format == ChainFormat::Csv) error = QStringLiteral("the %1 events before it are written").arg(written);
@@ -531,7 +537,7 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       std::vector<std::string> raised;
       for (const V& line : escalations) raised.push_back(line.text);
       const std::string used = std::string(name) + (precisionText == "auto" ? " (auto)" : "");
-      std::fputs(summaryText(masses, in, seconds, used, raised, check->finish(in.run)).c_str(), io.out);
+      std::fputs(summaryText(*masses, in, seconds, used, raised, check->finish(in.run)).c_str(), io.out);
       std::fflush(io.out);
     } else if (!escalations.empty()) {
       // the rows before the raise are the lower precision's: say whether the raised run meets
@@ -548,7 +554,9 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
   // one rung of the ladder in S: the exit code when it ends the command, nothing to go up
   const auto rung = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
     if (format != ChainFormat::Json) return streamed.template operator()<S>(name, next, last);
-    const auto in = runIn<S>(options, masses, contacts, tEnd, stop, error, keepEvents, *trustMode);
+    const auto masses = chainIn.template operator()<S>();
+    if (!masses) return kExitInvalidInput;
+    const auto in = runIn<S>(options, *masses, contacts, tEnd, stop, error, keepEvents, *trustMode);
     if (!in) return kExitInvalidInput;
     if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
     if (!last && in->run.stop == core::ChainStop::Undecided) {
@@ -556,9 +564,9 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       return std::nullopt;
     }
     const core::Trust trust = in->trust ? *in->trust
-                                        : core::chainTrust(masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
+                                        : core::chainTrust(*masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
     if (stop.stop_requested()) return kExitInterrupted;
-    emitDocument(io, runDocument(masses, *in, report(name), trust,
+    emitDocument(io, runDocument(*masses, *in, report(name), trust,
                                  options.isSet("sample-step") || options.isSet("sample-times"), keepEvents));
     return 0;
   };

@@ -312,10 +312,11 @@ Parsed<core::StartSpec<S>> parseStartSpec(const OptionValues& options,
 namespace {
 
 // "a,b,c" as numbers, or the reason it is not
-std::optional<std::vector<double>> toList(const QString& option, const QString& text, QString& error) {
-  std::vector<double> values;
+template <typename S = double>
+std::optional<std::vector<S>> toList(const QString& option, const QString& text, QString& error) {
+  std::vector<S> values;
   for (const QString& part : text.split(',')) {
-    const auto value = toNumber<double>(option, part, error);
+    const auto value = toNumber<S>(option, part, error);
     if (!value) return std::nullopt;
     values.push_back(*value);
   }
@@ -558,7 +559,44 @@ Parsed<RunInput<S>> parseRun(const OptionValues& options) {
   return {std::move(run), {}};
 }
 
+template <typename S>
+Parsed<core::BasicMassChain<S>> massChainIn(const OptionValues& options, const MassChainInput& input) {
+  if constexpr (std::is_same_v<S, double>) {
+    return {input.chain, {}};
+  } else {
+    // every number was read and checked in double already: read again, each parses in S too
+    QString error;
+    core::BasicMassChain<S> chain = core::chainCast<S>(input.chain);
+    chain.masses = *toList<S>("masses", options.value("masses"), error);
+    if (options.isSet("right-spring")) chain.rightSpring = *toNumber<S>("right-spring", options.value("right-spring"), error);
+    chain.gap = *toNumber<S>("gap", options.value("gap"), error);
+    if (!input.design) {
+      chain.springs = *toList<S>("springs", options.value("springs"), error);
+      return {std::move(chain), {}};
+    }
+    // designed: the double design's root polished with the chain's own numbers in binary128
+    const ChainDesignChoice& choice = *input.design;
+    std::vector<core::Quad> masses;
+    for (const S& m : chain.masses) masses.push_back(core::Quad(m));
+    // --springs gives k1 alone here (checked)
+    if (options.isSet("springs")) chain.springs.front() = *toNumber<S>("springs", options.value("springs"), error);
+    const core::Quad k1 = core::Quad(chain.springs.front());
+    const auto springs = core::refinedSprings(masses, k1, core::Quad(chain.rightSpring), choice.harmonics,
+                                              choice.designs.designs[std::size_t(choice.branch - 1)]);
+    if (!springs) {
+      return {std::nullopt, QStringLiteral("--frequencies %1: design %2 cannot be refined for the masses read in %3: "
+                                           "give --precision double")
+                                .arg(options.value("frequencies"))
+                                .arg(choice.branch)
+                                .arg(std::is_same_v<S, core::Quad> ? "binary128" : "long double")};
+    }
+    for (std::size_t i = 0; i < springs->size(); ++i) chain.springs[i] = static_cast<S>((*springs)[i]);
+    return {std::move(chain), {}};
+  }
+}
+
 #define GRAZELAB_INSTANTIATE(S)                                                     \
+  template Parsed<core::BasicMassChain<S>> massChainIn<S>(const OptionValues&, const MassChainInput&); \
   template core::ExactParameters exactParameters<S>(const OptionValues&);     \
   template Parsed<ModelInput<S>> parseModel<S>(const OptionValues&);          \
   template Parsed<core::StartSpec<S>> parseStartSpec<S>(const OptionValues&,  \

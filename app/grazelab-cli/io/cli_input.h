@@ -106,4 +106,10 @@ struct MassChainInput {
 /// reason. An interrupted design returns no chain and an empty error (`stop` was requested).
 Parsed<MassChainInput> parseMassChain(const OptionValues& options, std::stop_token stop = {});
 
+/// The chain of `input` (parseMassChain's) with its numbers in the run's precision S: read again
+/// from their decimal text in S (0.7 in binary128 is not double's 0.7), designed springs refined
+/// for those numbers in binary128 (core::refinedSprings); in double, input.chain itself.
+template <typename S>
+Parsed<core::BasicMassChain<S>> massChainIn(const OptionValues& options, const MassChainInput& input);
+
 }  // namespace grazelab::cli

@@ -199,11 +199,12 @@ JsonValue infoValue(const ModelInput<S>& model) {
   return JsonValue::object({{"model", modelValue(model, std::string(core::toString(core::precisionOf<S>())))}});
 }
 
-JsonValue massChainValue(const core::MassChain& chain, double period) {
+template <typename S>
+JsonValue massChainValue(const core::BasicMassChain<S>& chain, const S& period) {
   using V = JsonValue;
-  const auto numbers = [](const std::vector<double>& values) {
+  const auto numbers = [](const std::vector<S>& values) {
     std::vector<V> items;
-    for (double value : values) items.push_back(V::number(value));
+    for (const S& value : values) items.push_back(V::number(value));
     return V::array(std::move(items));
   };
   return V::object({{"masses", numbers(chain.masses)},
@@ -213,6 +214,9 @@ JsonValue massChainValue(const core::MassChain& chain, double period) {
                     {"gap", V::number(chain.gap)},
                     {"period", period > 0 ? V::number(period) : V::null()}});
 }
+template JsonValue massChainValue<double>(const core::BasicMassChain<double>&, const double&);
+template JsonValue massChainValue<long double>(const core::BasicMassChain<long double>&, const long double&);
+template JsonValue massChainValue<core::Quad>(const core::BasicMassChain<core::Quad>&, const core::Quad&);
 
 JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<ChainDesignChoice>& design) {
   using V = JsonValue;

@@ -41,8 +41,10 @@ void emitDocument(const Io& io, JsonValue document);
 /// (null when not estimated), verdict, reason.
 JsonValue trustValue(const core::Trust& trust);
 /// A chain of N masses as the other commands' documents name it: masses, springs, right_spring
-/// (null: none), stop_mass, gap and the common `period` of a commensurate chain (null: none).
-JsonValue massChainValue(const core::MassChain& chain, double period);
+/// (null: none), stop_mass, gap and the common `period` of a commensurate chain (null: none), to
+/// the digits of the chain's precision.
+template <typename S>
+JsonValue massChainValue(const core::BasicMassChain<S>& chain, const S& period);
 
 /// The arithmetic of a run as its output reports it: asked for ("auto", "double", ...), used
 /// in the end, and each raise of --precision auto (one line: from where and why).
