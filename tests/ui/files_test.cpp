@@ -376,17 +376,29 @@ class FilesTest : public QObject {
   void anNMassExportReproducesItsRun() {
     m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("three-masses")));
     QVERIFY(waitForLatestFinal(*m_window, 60000));
+    // with a right wall (designed around it) and the section on (u2, v3): the export carries both
+    Params walled = m_window->params();
+    walled.massChain.rightSpring = 0.3;
+    walled.massChain.sectionX = 2;
+    walled.massChain.sectionY = 6;
+    m_window->setParams(walled);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
     const auto series = m_window->displayed()->request->job.chainSeries;
     QVERIFY(series && series->run.events.size() > 100);
+    QCOMPARE(series->chain.rightSpring, 0.3);
     QTemporaryDir dir;
     const QString csvPath = dir.filePath(QStringLiteral("three.csv"));
     QString error;
     QVERIFY2(m_window->exportCsv(csvPath, &error), qPrintable(error));
     const QList<QByteArray> lines = readAll(csvPath).split('\n');
-    QVERIFY2(lines[0].contains("masses (1, 0.2, 0.05)") && lines[0].contains("1:2:3"), lines[0].constData());
+    QVERIFY2(lines[0].contains("masses (1, 0.2, 0.05)") && lines[0].contains("1:2:3") &&
+                 lines[0].contains("right wall's k = 0.3"),
+             lines[0].constData());
     QVERIFY2(!lines[0].contains("m₂ = "), lines[0].constData());
     const QByteArray command = lines[2].mid(QByteArray("# the run again: ").size());
-    QVERIFY2(command.startsWith("grazelab-cli simulate --masses 1,0.2,0.05 --springs "), command.constData());
+    QVERIFY2(command.startsWith("grazelab-cli simulate --masses 1,0.2,0.05 --springs ") &&
+                 command.contains(" --right-spring 0.3"),
+             command.constData());
 
     // the session beside it reopens the same chain and run
     Params other = m_window->params();
@@ -397,6 +409,9 @@ class FilesTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     const auto again = m_window->displayed()->request->job.chainSeries;
     QVERIFY(again);
+    QCOMPARE(again->chain.rightSpring, 0.3);
+    QCOMPARE(m_window->params().massChain.sectionX, 2);
+    QCOMPARE(m_window->params().massChain.sectionY, 6);
     QCOMPARE(again->run.events.size(), series->run.events.size());
     for (std::size_t i = 0; i < series->run.events.size(); ++i) QCOMPARE(again->run.events[i].t, series->run.events[i].t);
 

@@ -20,6 +20,7 @@
 #include "tests/ui/explorer_test_support.h"
 #include "ui/window/main_window.h"
 #include "ui/plots/chain_view.h"
+#include "ui/plots/curve_plot.h"
 #include "ui/pictures/heat_map.h"
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/mass_chain_view.h"
@@ -84,7 +85,8 @@ class ScenesTest : public QObject {
                            kind == PlotKind::FlightHistogram || kind == PlotKind::DetunedFlights ||
                            kind == PlotKind::ResonantFlights || kind == PlotKind::ChainStopTrace ||
                            kind == PlotKind::ChainFlights || kind == PlotKind::ChainPhase ||
-                           kind == PlotKind::ChainDetunedFlights || kind == PlotKind::GrazingSet;
+                           kind == PlotKind::ChainDetunedFlights || kind == PlotKind::ChainSection ||
+                           kind == PlotKind::GrazingSet;
         if (curve) QVERIFY2(m_window->displayed()->request->job.figures.count(kind), qPrintable(name));
       }
       QVERIFY2(!scene.description().isEmpty(), qPrintable(name));
@@ -335,6 +337,22 @@ class ScenesTest : public QObject {
       QCOMPARE(phase.markers.front().x(), shownSeries.run.events.front().u[0] / shownSeries.chain.gap);
       QVERIFY(std::abs(phase.curve.front().x() - shownSeries.start.u[0] / shownSeries.chain.gap) < 1e-12);
     }
+    // the Poincaré points on H on the chosen pair (u2, v3): every contact's state there, the
+    // velocity the one before the contact, scaled as the phase portrait is
+    params.massChain.sectionX = 2;
+    params.massChain.sectionY = 6;
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    {
+      const CurveFigure& section = figure(*m_window, PlotKind::ChainSection);
+      const auto& run = m_window->displayed()->request->job.chainSeries;
+      QVERIFY2(section.title.contains(QStringLiteral("(u2, v3)")), qPrintable(section.title));
+      QCOMPARE(qsizetype(section.curve.size()), qsizetype(run->run.contacts));
+      const double speed = run->chain.gap * run->modes.omega.maxCoeff();
+      QCOMPARE(section.curve.front().x(), run->run.events.front().u[1] / run->chain.gap);
+      QCOMPARE(section.curve.front().y(), run->run.events.front().vBefore[2] / speed);
+    }
+    params.massChain.sectionX = params.massChain.sectionY = 0;
     params.massChain.shownMass = 0;
     params.massChain.masses = {1.0, 1.0, 1.0};
     m_window->setParams(params);
@@ -433,6 +451,71 @@ class ScenesTest : public QObject {
       const double lambda2 = point.x(), lambda3 = point.y();
       QVERIFY(std::abs(top({3, 2, 1}, {1 - lambda2 - lambda3, lambda2, lambda3}) - 1) < 1e-6);
     }
+  }
+
+  // the ring of the panel's weights in the (λ2, λ3) plane is dragged: the weights follow it (the
+  // first balancing), the orbit and its verdict are the new weights'; a click elsewhere moves it
+  // there; the two-mode dot moves λ along its axis
+  void grazingSetPointIsDraggedInThePlane() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("grazing-sets")));
+    Params params = m_window->params();
+    params.massChain = MassChainParams{};  // 1:2:3, weights (0.5, 0.3, 0.2)
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    CurvePlot* plot = nullptr;
+    for (CurvePlot* candidate : m_window->findChildren<CurvePlot*>()) {
+      if (candidate->isVisible() && candidate->draggable()) plot = candidate;
+    }
+    QVERIFY(plot);
+    const auto at = [plot](QPointF value) { return plot->mapFromScene(plot->chart()->mapToPosition(value)); };
+    const QPoint ring = at(QPointF(0.3, 0.2));
+    // past the boundary where it is nearest the simplex's centre: outside the set, inside the plot
+    const QPointF centre(1.0 / 3, 1.0 / 3);
+    QPointF nearest = figure(*m_window, PlotKind::GrazingSet).curve.front();
+    for (const QPointF& point : figure(*m_window, PlotKind::GrazingSet).curve) {
+      if (QLineF(centre, point).length() < QLineF(centre, nearest).length()) nearest = point;
+    }
+    const QPointF beyond = centre + 1.2 * (nearest - centre);
+    const QPoint target = at(beyond);
+    // a pixel in weight units: the drag lands within one or two of the target
+    const double pixel = std::abs(plot->chart()->mapToValue(QPointF(101, 0)).x() - plot->chart()->mapToValue(QPointF(100, 0)).x());
+    QTest::mousePress(plot->viewport(), Qt::LeftButton, {}, ring);
+    for (int step = 1; step <= 4; ++step) {
+      const QPointF through = QPointF(ring) + (QPointF(target) - QPointF(ring)) * (step / 4.0);
+      QMouseEvent move(QEvent::MouseMove, through, plot->viewport()->mapToGlobal(through), Qt::LeftButton,
+                       Qt::LeftButton, Qt::NoModifier);
+      QApplication::sendEvent(plot->viewport(), &move);
+    }
+    QTest::mouseRelease(plot->viewport(), Qt::LeftButton, {}, target);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const std::vector<double> weights = m_window->params().massChain.weights;
+    QVERIFY2(std::abs(weights[1] - beyond.x()) <= 2 * pixel + 1e-3, qPrintable(QString::number(weights[1])));
+    QVERIFY2(std::abs(weights[2] - beyond.y()) <= 2 * pixel + 1e-3, qPrintable(QString::number(weights[2])));
+    QVERIFY(std::abs(weights[0] + weights[1] + weights[2] - 1) < 1e-12);
+    const CurveFigure& region = figure(*m_window, PlotKind::GrazingSet);
+    QCOMPARE(region.reference.front(), QPointF(weights[1], weights[2]));
+    QVERIFY2(m_window->displayed()->request->job.chainStatus.contains(QStringLiteral("crosses")),
+             qPrintable(m_window->displayed()->request->job.chainStatus));
+
+    // the two-mode set: dragging the dot moves λ (the slow mode's weight), the fast one balancing
+    params = m_window->params();
+    params.massChain = m_window->scene().defaults().massChain;  // 1:3, λ = 0.5
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const CurveFigure& set = figure(*m_window, PlotKind::GrazingSet);
+    QVERIFY(plot->draggable());
+    const QPoint dot = at(set.markers.front());
+    const QPoint right = at(QPointF(1.0, set.markers.front().y()));
+    QTest::mousePress(plot->viewport(), Qt::LeftButton, {}, dot);
+    QMouseEvent move(QEvent::MouseMove, QPointF(right), plot->viewport()->mapToGlobal(QPointF(right)), Qt::LeftButton,
+                     Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(plot->viewport(), &move);
+    QTest::mouseRelease(plot->viewport(), Qt::LeftButton, {}, right);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const std::vector<double> two = m_window->params().massChain.weights;
+    const double pixel2 = std::abs(plot->chart()->mapToValue(QPointF(101, 0)).x() - plot->chart()->mapToValue(QPointF(100, 0)).x());
+    QVERIFY2(std::abs(two[1] - 1.0) <= 2 * pixel2 + 1e-3, qPrintable(QString::number(two[1])));
+    QCOMPARE(two[0] + two[1], 1.0);
   }
 
   // Theorem 2.1 for N = 3 (issue 33): the 1IPP family's data tend to the grazing limit the

@@ -34,6 +34,7 @@ enum class PlotKind {
   ChainFlights,     ///< N masses: free flights from the stop over T (the bound of a resonant chain)
   ChainPhase,       ///< N masses: the stopped mass's phase portrait
   ChainDetunedFlights,  ///< N masses: the same start on the chain detuned, flights over T
+  ChainSection,     ///< N masses: the state at each contact (on H) on two chosen coordinates
   MassChain,        ///< N masses: the chain moving (MassChainView)
   GrazingSet,       ///< N masses: the grazing set of two modes (top against lambda) or three (a region)
 };
@@ -56,6 +57,10 @@ struct CurveFigure {
   std::vector<QPointF> reference;  ///< two points: a dashed line; one: a ringed point
   /// fixed axes [xMin, xMax] x [yMin, yMax], so that the marker's motion is seen (empty: fit)
   double xMin = 0, xMax = 0, yMin = 0, yMax = 0;
+  /// the one-point reference (or else the one marker) is the panel's GLO weights on these modes
+  /// (0-based, fastest first: x is the second's weight, y the third's, the first balancing):
+  /// dragging it, or clicking, moves them (empty: nothing to drag)
+  std::vector<int> draggedModes;
 };
 
 using Figures = std::map<PlotKind, CurveFigure>;

@@ -33,10 +33,13 @@ QJsonArray numbersArray(const auto& values) {
 QJsonObject toJson(const MassChainParams& chain) {
   return QJsonObject{{QStringLiteral("masses"), numbersArray(chain.masses)},
                      {QStringLiteral("springs"), numbersArray(chain.springs)},
+                     {QStringLiteral("rightSpring"), chain.rightSpring},
                      {QStringLiteral("harmonics"), numbersArray(chain.harmonics)},
                      {QStringLiteral("designBranch"), chain.designBranch},
                      {QStringLiteral("stopMass"), chain.stopMass},
                      {QStringLiteral("shownMass"), chain.shownMass},
+                     {QStringLiteral("sectionX"), chain.sectionX},
+                     {QStringLiteral("sectionY"), chain.sectionY},
                      {QStringLiteral("weights"), numbersArray(chain.weights)}};
 }
 
@@ -56,8 +59,10 @@ std::optional<std::vector<double>> numbersOf(const QJsonValue& value, double low
 std::optional<MassChainParams> massChainFromJson(const QJsonObject& object, const MassChainParams& base,
                                                  QString& error) {
   MassChainParams chain = base;
-  const QStringList known{QStringLiteral("masses"), QStringLiteral("springs"), QStringLiteral("harmonics"),
+  const QStringList known{QStringLiteral("masses"), QStringLiteral("springs"), QStringLiteral("rightSpring"),
+                          QStringLiteral("harmonics"),
                           QStringLiteral("designBranch"), QStringLiteral("stopMass"), QStringLiteral("shownMass"),
+                          QStringLiteral("sectionX"), QStringLiteral("sectionY"),
                           QStringLiteral("weights")};
   for (const QString& name : object.keys()) {
     if (!known.contains(name)) {
@@ -83,6 +88,15 @@ std::optional<MassChainParams> massChainFromJson(const QJsonObject& object, cons
     }
     chain.springs = *springs;
   }
+  if (object.contains(QStringLiteral("rightSpring"))) {
+    const QJsonValue value = object.value(QStringLiteral("rightSpring"));
+    const double k = value.toDouble(-1);
+    if (!value.isDouble() || !(k == 0 || (k >= 1e-6 && k <= 1e6))) {
+      error = QStringLiteral("\"massChain.rightSpring\" must be 0 (no right wall) or a spring in [1e-6, 1e6]");
+      return std::nullopt;
+    }
+    chain.rightSpring = k;
+  }
   if (object.contains(QStringLiteral("harmonics"))) {
     const auto harmonics = numbersOf(object.value(QStringLiteral("harmonics")), 1, 64);
     bool whole = harmonics && (harmonics->empty() || harmonics->size() == n);
@@ -97,7 +111,9 @@ std::optional<MassChainParams> massChainFromJson(const QJsonObject& object, cons
   }
   for (const auto& [name, field, high] : {std::tuple{"designBranch", &chain.designBranch, 40320},
                                           std::tuple{"stopMass", &chain.stopMass, int(n)},
-                                          std::tuple{"shownMass", &chain.shownMass, int(n)}}) {
+                                          std::tuple{"shownMass", &chain.shownMass, int(n)},
+                                          std::tuple{"sectionX", &chain.sectionX, int(2 * n)},
+                                          std::tuple{"sectionY", &chain.sectionY, int(2 * n)}}) {
     const QJsonValue value = object.value(QString::fromLatin1(name));
     if (value.isUndefined()) continue;
     const double number = value.toDouble(-1);
@@ -139,6 +155,8 @@ MassChainParams MassChainParams::resized(int count) const {
   if (chain.harmonics.size() != n) chain.harmonics.clear();
   if (chain.stopMass > count) chain.stopMass = 0;
   if (chain.shownMass > count) chain.shownMass = 0;
+  // a coordinate's number moves with the count (v1 is N + 1): back to the default pair
+  if (n != masses.size()) chain.sectionX = chain.sectionY = 0;
   if (n != masses.size()) chain.designBranch = 1;
   return chain;
 }

@@ -36,6 +36,7 @@ struct MassChainParams {
   static constexpr int kMaxMasses = 8;
   std::vector<double> masses{1.0, 0.2, 0.05};  ///< m1 ... mN
   std::vector<double> springs{1.0, 1.0, 1.0};  ///< k1 ... kN as given (designed: only k1 is used)
+  double rightSpring = 0;  ///< k(N+1) from mN to a right wall, kept as given when designing; 0: no wall
   /// the resonance asked for, fastest mode first (3, 2, 1 for 1:2:3); empty: the springs as given
   std::vector<int> harmonics{3, 2, 1};
   int designBranch = 1;  ///< which design of the resonance (1-based, ordered by k2)
@@ -45,11 +46,19 @@ struct MassChainParams {
   std::vector<double> weights{0.5, 0.3, 0.2};
   /// the mass whose phase portrait and Poincaré points are drawn (1-based; 0: the stopped mass)
   int shownMass = 0;
+  /// the coordinates the Poincaré points on H are projected on, 1-based in the state (u1 ... uN,
+  /// v1 ... vN: 1 ... 2N); 0: the default pair (u, v) of mass 1, or of mass 2 when mass 1 is stopped
+  int sectionX = 0, sectionY = 0;
 
   int size() const { return int(masses.size()); }
   /// the stopped mass and the shown one, 1-based, with their defaults resolved
   int stopped() const { return stopMass > 0 ? stopMass : size(); }
   int shown() const { return shownMass > 0 ? shownMass : stopped(); }
+  /// the section's coordinates, 1-based in the state, with their defaults resolved
+  int sectionXResolved() const { return sectionX > 0 ? sectionX : sectionMass(); }
+  int sectionYResolved() const { return sectionY > 0 ? sectionY : size() + sectionMass(); }
+  /// the default section's mass: 1, or 2 when mass 1 is the stopped one
+  int sectionMass() const { return stopped() == 1 && size() > 1 ? 2 : 1; }
   /// The chain with `count` masses: new masses copy the last, new springs 1, the weights
   /// spread evenly, a resonance of another length dropped (springs as given).
   MassChainParams resized(int count) const;

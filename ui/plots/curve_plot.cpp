@@ -3,6 +3,7 @@
 #include "ui/plots/curve_plot.h"
 
 #include <QChart>
+#include <QMouseEvent>
 #include <QLineSeries>
 #include <QScatterSeries>
 #include <QValueAxis>
@@ -48,12 +49,60 @@ void CurvePlot::show(const SimUpdate& update) {
   setData(m_marker, figure.markers);
   setData(m_reference, point ? std::vector<QPointF>{} : figure.reference);
   setData(m_referencePoint, point ? figure.reference : std::vector<QPointF>{});
+  m_draggable = !figure.draggedModes.empty() && (point || figure.markers.size() == 1);
+  if (m_draggable) m_ring = point ? figure.reference.front() : figure.markers.front();
+  setMouseTracking(m_draggable);  // the hand over the ring
   if (figure.xMax > figure.xMin && figure.yMax > figure.yMin) {
     setFixedRange(QRectF(QPointF(figure.xMin, figure.yMin), QPointF(figure.xMax, figure.yMax)));
   } else {
     setFixedRange(std::nullopt);
   }
   scheduleRefresh();
+}
+
+bool CurvePlot::onRing(QPointF position) const {
+  constexpr double kReach = 18;  // pixels: the ring is 14 across
+  const QPointF ring = chart()->mapToPosition(m_ring);
+  return m_draggable && QLineF(ring, position).length() <= kReach;
+}
+
+void CurvePlot::mousePressEvent(QMouseEvent* event) {
+  if (event->button() == Qt::LeftButton && !(event->modifiers() & Qt::ShiftModifier) &&
+      onRing(event->position())) {
+    emit activated(this);
+    m_dragging = true;
+    setCursor(Qt::ClosedHandCursor);
+    event->accept();
+    return;
+  }
+  PlotView::mousePressEvent(event);
+}
+
+void CurvePlot::mouseMoveEvent(QMouseEvent* event) {
+  if (m_dragging) {
+    const QPointF position = event->position();
+    if (chart()->plotArea().contains(position)) {
+      m_ring = chart()->mapToValue(position);
+      emit referenceDragged(m_ring);
+    }
+    event->accept();
+    return;
+  }
+  if (m_draggable && event->buttons() == Qt::NoButton) {
+    if (onRing(event->position())) setCursor(Qt::OpenHandCursor);
+    else unsetCursor();
+  }
+  PlotView::mouseMoveEvent(event);
+}
+
+void CurvePlot::mouseReleaseEvent(QMouseEvent* event) {
+  if (m_dragging) {
+    m_dragging = false;
+    setCursor(Qt::OpenHandCursor);
+    event->accept();
+    return;
+  }
+  PlotView::mouseReleaseEvent(event);
 }
 
 }  // namespace grazelab::ui

@@ -50,6 +50,7 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::ChainFlights:
     case PlotKind::ChainPhase:
     case PlotKind::ChainDetunedFlights:
+    case PlotKind::ChainSection:
     case PlotKind::GrazingSet: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);
     case PlotKind::MassChain: return new MassChainView(parent);

@@ -45,7 +45,8 @@ CurveFigure intervalFigure(int fast, int slow, const core::GrazingInterval& set,
   figure.toolTip =
       tr("GLO(λ) = (1 − λ) GLOM(fast) + λ GLOM(slow). Its top over a period is 1 (it touches the "
          "stop and stays below) exactly on the grazing set, whose ends are certified (the "
-         "note's [0, 4/3] for 1:2; [0, n²/(n² − 1)] for 1:n); elsewhere it passes the stop.");
+         "note's [0, 4/3] for 1:2; [0, n²/(n² − 1)] for 1:n); elsewhere it passes the stop. Drag "
+         "the dot, or click, to move the panel's λ.");
   const double width = set.high - set.low;
   const double from = std::min(-0.5, set.low - 0.25 * width),
                to = std::max(1.5, set.high + 0.25 * width);
@@ -83,7 +84,8 @@ CurveFigure regionFigure(const std::vector<int>& harmonics,
   figure.toolTip =
       tr("GLO(λ) = λ₁ GLOM₁ + λ₂ GLOM₂ + λ₃ GLOM₃ with λ₁ = 1 − λ₂ − λ₃ grazes exactly inside this "
          "convex region (its boundary certified along rays from the centre); the simplex of "
-         "non-negative weights is always inside. The ring is the weights of the panel.");
+         "non-negative weights is always inside. The ring is the weights of the panel: drag it, or "
+         "click in the plane, to move them.");
   figure.curveName = tr("boundary of the grazing set");
   for (const core::GrazingRegionPoint& point : boundary)
     figure.curve.emplace_back(point.lambda2, point.lambda3);
@@ -108,8 +110,8 @@ Scene::Spec grazingSetsScene() {
          "orbit when it never passes the stop over a period. <i>Look for:</i> with two modes, the "
          "top of u/d over a period against λ is 1 on an interval, the grazing set (for 1:2 the "
          "note's [0, 4/3], for 1:3 [0, 9/8]); with three, the weights that graze fill a convex "
-         "region of the (λ₂, λ₃) plane. Move the weights in the panel: the orbit over one period "
-         "(its trace and the chain) touches the stop, or passes it. <i>Why:</i> each phase of the "
+         "region of the (λ₂, λ₃) plane. Move the weights (drag the point in the plot, or the panel's "
+         "sliders): the orbit over one period (its trace and the chain) touches the stop, or passes it. <i>Why:</i> each phase of the "
          "period gives one linear condition on the weights, so the set is convex and holds every "
          "non-negative mix.");
   scene.defaults.perturbation = 0;
@@ -151,10 +153,12 @@ Scene::Spec grazingSetsScene() {
       job.figures[PlotKind::GrazingSet] =
           intervalFigure(harmonics[0], harmonics[1],
                          core::grazingInterval(harmonics[0], harmonics[1]), weights[1]);
+      job.figures[PlotKind::GrazingSet].draggedModes = used.modes;
     } else {
       const auto boundary = core::grazingRegion(harmonics[0], harmonics[1], harmonics[2], 48, stop);
       if (stop.stop_requested()) return job;
       job.figures[PlotKind::GrazingSet] = regionFigure(harmonics, boundary, weights[1], weights[2]);
+      job.figures[PlotKind::GrazingSet].draggedModes = used.modes;
     }
     // the orbit itself over one period (unpushed: GLO(λ) as it is), every mass on the grid
     const double period = 2 * std::numbers::pi / used.ratios.omega0;

@@ -51,10 +51,10 @@ QString stopInWords(core::ChainStop stop) {
 
 ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_token stop) {
   ChainChoice choice;
-  core::MassChain chain{given.masses, given.springs, 0, given.stopMass, gap};
+  core::MassChain chain{given.masses, given.springs, given.rightSpring, given.stopMass, gap};
   if (!given.harmonics.empty()) {
     const core::ChainDesigns designs =
-        core::designSprings(given.masses, given.springs.front(), given.harmonics, stop);
+        core::designSprings(given.masses, given.springs.front(), given.rightSpring, given.harmonics, stop);
     switch (designs.outcome) {
       case core::DesignOutcome::Designed:
         break;
@@ -101,6 +101,7 @@ QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& give
                                                .arg(std::clamp(given.designBranch, 1, designs))
                                                .arg(designs)
                                                .arg(list(chain.springs));
+  if (chain.rightSpring > 0) text += QLatin1Char(' ') + tr("Right wall: k = %1.").arg(number(chain.rightSpring, 4));
   text += QLatin1Char(' ') + tr("Frequencies ω = %1 (fastest first).").arg(list(omega));
   QStringList harmonics;
   for (int n : ratios.harmonics) harmonics.append(QString::number(n));

@@ -49,6 +49,36 @@ CurveFigure flightFigure(const QString& title, const core::experiments::ChainSer
   return figure;
 }
 
+// The state at each contact of the stopped mass (a Poincaré section on H, where u_s = d)
+// projected on the two coordinates the panel chose: displacements over d, velocities (before the
+// contact) over d w1, as the phase portrait scales them.
+CurveFigure sectionFigure(const MassChainParams& given, const core::experiments::ChainSeries& series,
+                          double speed) {
+  const core::MassChain& chain = series.chain;
+  const int n = chain.size();
+  const int x = given.sectionXResolved(), y = given.sectionYResolved();
+  const auto name = [n](int c) { return c <= n ? tr("u%1").arg(c) : tr("v%1").arg(c - n); };
+  const auto scaled = [&](int c) { return c <= n ? tr("%1 / d").arg(name(c)) : tr("%1 / (d ω₁)").arg(name(c)); };
+  const auto value = [&](const core::ChainEvent& event, int c) {
+    return c <= n ? event.u[c - 1] / chain.gap : event.vBefore[c - n - 1] / speed;
+  };
+  CurveFigure figure;
+  figure.title = tr("Poincaré points on H: (%1, %2)").arg(name(x), name(y));
+  figure.xTitle = scaled(x);
+  figure.yTitle = scaled(y);
+  figure.toolTip =
+      tr("The chain's state at each contact of mass %1 with the stop (the section H: u%1 = d), on "
+         "the two coordinates chosen in the panel's 'section on' (velocities just before the "
+         "contact). A resonant chain's points lie on few curves; a chaotic run fills a region.")
+          .arg(chain.stopped());
+  figure.curveName = tr("contacts");
+  figure.dots = true;
+  for (const core::ChainEvent& event : series.run.events) {
+    if (core::isContact(event.type)) figure.curve.emplace_back(value(event, x), value(event, y));
+  }
+  return figure;
+}
+
 }  // namespace
 
 Scene::Spec threeMassesScene() {
@@ -72,7 +102,7 @@ Scene::Spec threeMassesScene() {
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::ChainFlights,
-                 PlotKind::ChainPhase, PlotKind::ChainDetunedFlights};
+                 PlotKind::ChainPhase, PlotKind::ChainSection, PlotKind::ChainDetunedFlights};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                    std::stop_token stop) {
     SceneJob job;
@@ -168,6 +198,9 @@ Scene::Spec threeMassesScene() {
       }
     }
     job.figures[PlotKind::ChainPhase] = phase;
+    if (self.plots().contains(PlotKind::ChainSection)) {
+      job.figures[PlotKind::ChainSection] = sectionFigure(given, series, speed);
+    }
 
     // the contrast: the same start on the chain with k2 1 % stiffer (no common period)
     const bool contrast = self.plots().contains(PlotKind::ChainDetunedFlights);
@@ -191,6 +224,13 @@ Scene::Spec threeMassesScene() {
         figure.xMax = last * 1.02;
         figure.yMin = 0;
         figure.yMax = 3;
+      }
+      if (contrast.run.stop == core::ChainStop::SearchBudget) {
+        // its last flight never came back within the search's 1000 slowest periods: say so,
+        // rather than let the chart end as if the run had
+        figure.title = figure.curve.size() == 1
+                           ? tr("k₂ 1 % off: 1 flight, then none in 1000 slow periods")
+                           : tr("k₂ 1 % off: %1 flights, then none in 1000 slow periods").arg(figure.curve.size());
       }
       job.figures[PlotKind::ChainDetunedFlights] = figure;
     } else if (contrast) {
@@ -242,7 +282,7 @@ Scene::Spec eightMassesScene() {
   scene.defaults.perturbation = -1e-4;
   scene.defaults.horizon = 100;
   scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::ChainFlights,
-                 PlotKind::ChainPhase};
+                 PlotKind::ChainPhase, PlotKind::ChainSection};
   return scene;
 }
 

@@ -4,6 +4,7 @@
 
 #include "ui/widgets/eliding_combo_box.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -45,6 +46,13 @@ ParamSpec springSpec(int index) {
   spec.spinMax = 1e6;
   spec.logarithmic = true;
   spec.marks = {};
+  return spec;
+}
+
+ParamSpec wallSpec(int masses) {
+  ParamSpec spec = springSpec(masses + 1);
+  spec.toolTip = QObject::tr("The spring from mass %1 to the right wall (kept as given when the springs are designed).")
+                     .arg(masses);
   return spec;
 }
 
@@ -116,6 +124,24 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
   shownRow->addWidget(m_shown);
   shownRow->addStretch(1);
   form->addRow(tr("phase of"), shownRow);
+  m_shownRow = shownRow;
+  m_sectionX = new QComboBox(this);
+  m_sectionX->setObjectName(QStringLiteral("chainSectionX"));
+  m_sectionY = new QComboBox(this);
+  m_sectionY->setObjectName(QStringLiteral("chainSectionY"));
+  for (QComboBox* axis : {m_sectionX, m_sectionY}) {
+    axis->setToolTip(
+        tr("The two coordinates of the state the Poincaré points on H are drawn on: at each "
+           "contact the stopped mass is on the stop (u_s = d), and the other masses' positions "
+           "and the velocities (before the contact) say where the motion is."));
+  }
+  auto* sectionRow = new QHBoxLayout;
+  sectionRow->addWidget(m_sectionX);
+  sectionRow->addWidget(new QLabel(tr("against"), this));
+  sectionRow->addWidget(m_sectionY);
+  sectionRow->addStretch(1);
+  form->addRow(tr("section on"), sectionRow);
+  m_sectionRow = sectionRow;
   m_resonance = new ElidingComboBox(this);
   m_resonance->setObjectName(QStringLiteral("chainResonance"));
   m_resonance->setToolTip(
@@ -132,6 +158,10 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
     combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     combo->setMinimumContentsLength(10);
   }
+  m_wall = new QCheckBox(tr("a spring from the last mass to a wall"), this);
+  m_wall->setObjectName(QStringLiteral("chainRightWall"));
+  m_wall->setToolTip(tr("A right wall: the last mass held by one more spring, k_(N+1). Designs keep it as given."));
+  form->addRow(tr("right wall"), m_wall);
   form->addRow(tr("resonance"), m_resonance);
   m_designLabel = new QLabel(tr("springs"), this);
   form->addRow(m_designLabel, m_design);
@@ -154,10 +184,27 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
   });
   connect(m_stop, &QSpinBox::valueChanged, this, [this](int stop) {
     m_chain.stopMass = stop == m_chain.size() ? 0 : stop;
+    fillSection();  // the default pair follows the stop
     changed();
   });
   connect(m_shown, &QSpinBox::valueChanged, this, [this](int shown) {
     m_chain.shownMass = shown == m_chain.stopped() ? 0 : shown;
+    changed();
+  });
+  connect(m_wall, &QCheckBox::toggled, this, [this](bool wall) {
+    if (!wall && m_chain.rightSpring > 0) m_lastWall = m_chain.rightSpring;
+    m_chain.rightSpring = wall ? m_lastWall : 0.0;
+    rebuildRows();
+    changed();
+  });
+  connect(m_sectionX, &QComboBox::currentIndexChanged, this, [this](int index) {
+    if (index < 0) return;
+    m_chain.sectionX = index + 1 == m_chain.sectionMass() ? 0 : index + 1;
+    changed();
+  });
+  connect(m_sectionY, &QComboBox::currentIndexChanged, this, [this](int index) {
+    if (index < 0) return;
+    m_chain.sectionY = index + 1 == m_chain.size() + m_chain.sectionMass() ? 0 : index + 1;
     changed();
   });
   connect(m_resonance, &QComboBox::currentIndexChanged, this, [this](int index) {
@@ -177,6 +224,27 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
 }
 
 void ChainEditor::setChain(const MassChainParams& chain) {
+  // the same rows with other values (a weight dragged in a plot, a session of the same shape):
+  // the values set in place, not every row rebuilt on each move of the mouse
+  const bool sameRows = chain.size() == m_chain.size() && chain.harmonics == m_chain.harmonics &&
+                        (chain.rightSpring > 0) == (m_chain.rightSpring > 0) &&
+                        m_masses.size() == chain.size() && m_lastWeight;
+  if (sameRows) {
+    m_chain = chain;
+    const int n = chain.size();
+    for (int i = 0; i < n; ++i) m_masses[i]->setValue(chain.masses[std::size_t(i)]);
+    for (int i = 0; i < m_springs.size(); ++i) m_springs[i]->setValue(chain.springs[std::size_t(i)]);
+    if (m_wallSpring) m_wallSpring->setValue(chain.rightSpring);
+    for (int j = 0; j < m_weights.size(); ++j) m_weights[j]->setValue(chain.weights[std::size_t(j)]);
+    m_lastWeight->setText(tr("λ%1 = 1 − the others = %2")
+                              .arg(subscriptDigits(n), QString::number(chain.weights.back(), 'g', 6)));
+    const QSignalBlocker blockStop(m_stop);
+    const QSignalBlocker blockShown(m_shown);
+    m_stop->setValue(chain.stopped());
+    m_shown->setValue(chain.shown());
+    fillSection();
+    return;
+  }
   m_chain = chain;
   {
     const QSignalBlocker blockCount(m_count);
@@ -184,6 +252,10 @@ void ChainEditor::setChain(const MassChainParams& chain) {
     m_count->setValue(chain.size());
     m_stop->setRange(1, chain.size());
     m_stop->setValue(chain.stopMass > 0 ? chain.stopMass : chain.size());
+  }
+  {
+    const QSignalBlocker blockWall(m_wall);
+    m_wall->setChecked(chain.rightSpring > 0);
   }
   fillResonances();
   rebuildRows();
@@ -220,6 +292,8 @@ void ChainEditor::rebuildRows() {
   }
   if (m_lastWeight) discard(m_lastWeight);
   m_lastWeight = nullptr;
+  if (m_wallSpring) discard(m_wallSpring);
+  m_wallSpring = nullptr;
   {
     const QSignalBlocker blockStop(m_stop);
     const QSignalBlocker blockShown(m_shown);
@@ -228,6 +302,7 @@ void ChainEditor::rebuildRows() {
     m_shown->setRange(1, m_chain.size());
     m_shown->setValue(m_chain.shownMass > 0 ? m_chain.shownMass : m_chain.stopped());
   }
+  fillSection();
   const auto add = [this](const ParamSpec& spec, double value, auto store) {
     auto* control = new SliderSpin(spec, this);
     control->setValue(value);
@@ -249,6 +324,9 @@ void ChainEditor::rebuildRows() {
   for (int i = 0; i < springs; ++i) {
     m_springs.append(add(springSpec(i + 1), m_chain.springs[std::size_t(i)],
                          [this, i](double value) { m_chain.springs[std::size_t(i)] = value; }));
+  }
+  if (m_chain.rightSpring > 0) {
+    m_wallSpring = add(wallSpec(n), m_chain.rightSpring, [this](double value) { m_chain.rightSpring = value; });
   }
   for (int j = 0; j + 1 < n; ++j) {
     m_weights.append(
@@ -290,7 +368,22 @@ void ChainEditor::setSummary(const QString& text, int designs, bool refused) {
 
 QString ChainEditor::summary() const { return m_summary->text(); }
 
-void ChainEditor::setShownMassOffered(bool offered) { m_form->setRowVisible(m_shown, offered); }
+void ChainEditor::fillSection() {
+  const QSignalBlocker blockX(m_sectionX);
+  const QSignalBlocker blockY(m_sectionY);
+  const int n = m_chain.size();
+  for (QComboBox* axis : {m_sectionX, m_sectionY}) {
+    axis->clear();
+    for (int i = 1; i <= n; ++i) axis->addItem(tr("u%1").arg(subscriptDigits(i)));
+    for (int i = 1; i <= n; ++i) axis->addItem(tr("v%1").arg(subscriptDigits(i)));
+  }
+  m_sectionX->setCurrentIndex(m_chain.sectionXResolved() - 1);
+  m_sectionY->setCurrentIndex(m_chain.sectionYResolved() - 1);
+}
+
+void ChainEditor::setSectionOffered(bool offered) { m_form->setRowVisible(m_sectionRow, offered); }
+
+void ChainEditor::setShownMassOffered(bool offered) { m_form->setRowVisible(m_shownRow, offered); }
 
 void ChainEditor::setWeightsShown(bool shown) {
   m_weightsShown = shown;

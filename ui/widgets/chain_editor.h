@@ -7,9 +7,11 @@
 
 #include "ui/compute/params.h"
 
+class QCheckBox;
 class QComboBox;
 class QFormLayout;
 class QLabel;
+class QLayout;
 class QSpinBox;
 class QVBoxLayout;
 
@@ -39,6 +41,8 @@ class ChainEditor : public QWidget {
   void setWeightsShown(bool shown);
   /// Offers the choice of the mass whose phase portrait is drawn (a scene that draws one).
   void setShownMassOffered(bool offered);
+  /// Offers the choice of the two coordinates the Poincaré points on H are drawn on.
+  void setSectionOffered(bool offered);
 
   /// The resonances offered for `masses` masses, as their harmonics fastest first ("1:2:3" is
   /// 3, 2, 1); the first entry, empty, is "as given".
@@ -52,12 +56,17 @@ class ChainEditor : public QWidget {
  private:
   void rebuildRows();
   void fillResonances();
+  void fillSection();
   void changed();
 
   MassChainParams m_chain;
   QSpinBox* m_count = nullptr;
   QSpinBox* m_stop = nullptr;
   QSpinBox* m_shown = nullptr;
+  QLayout* m_shownRow = nullptr;
+  QComboBox* m_sectionX = nullptr;
+  QComboBox* m_sectionY = nullptr;
+  QLayout* m_sectionRow = nullptr;
   QFormLayout* m_form = nullptr;
   QComboBox* m_resonance = nullptr;
   QComboBox* m_design = nullptr;
@@ -66,6 +75,9 @@ class ChainEditor : public QWidget {
   QList<SliderSpin*> m_masses;
   QList<SliderSpin*> m_springs;
   QList<SliderSpin*> m_weights;
+  QCheckBox* m_wall = nullptr;
+  SliderSpin* m_wallSpring = nullptr;
+  double m_lastWall = 1;  ///< the wall's spring restored when the wall comes back
   QLabel* m_lastWeight = nullptr;
   QLabel* m_summary = nullptr;
   bool m_weightsShown = true;

@@ -37,6 +37,7 @@
 #include "ui/plots/accuracy_view.h"
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/chain_view.h"
+#include "ui/plots/curve_plot.h"
 #include "ui/plots/scene_view.h"
 #include "ui/plots/plot_view.h"
 #include "ui/plots/phase_plot.h"
@@ -332,6 +333,12 @@ SceneView* MainWindow::addView(PlotKind kind) {
     connect(plot, &PlotView::enlargeRequested, this, [this](PlotView* plot) { toggleEnlarged(plot); });
     if (qobject_cast<PoincarePlot*>(plot)) {
       connect(plot, &PlotView::clickedAt, this, [this](QPointF value) { startFromSection(value); });
+    }
+    if (auto* curve = qobject_cast<CurvePlot*>(plot)) {
+      connect(curve, &CurvePlot::referenceDragged, this, &MainWindow::setGloWeightsFrom);
+      connect(curve, &PlotView::clickedAt, this, [this, curve](QPointF value) {
+        if (curve->draggable()) setGloWeightsFrom(value);
+      });
     }
     auto* phase = qobject_cast<PhasePlot*>(plot);
     if (phase && phase->mass() == PhasePlot::Mass::Two) {

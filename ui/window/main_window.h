@@ -148,6 +148,10 @@ class MainWindow : public QMainWindow {
   /// run's start and takes the speed (in the same direction) that keeps the energy level.
   /// False (and why, on the status line) off the line or when no such state exists.
   bool startFromStopLine(QPointF u2v2, double tolerance);
+  /// Sets the GLO weights of an N-mass scene from a point of its grazing-set plot (dragged or
+  /// clicked): x the second mode's weight, y the third's (three modes), the first balancing
+  /// (CurveFigure::draggedModes), each rounded to 1e-3; a plot with nothing to drag changes nothing.
+  void setGloWeightsFrom(QPointF value);
   /// Shows or hides the parameter panel (F9).
   void setPanelVisible(bool visible);
 

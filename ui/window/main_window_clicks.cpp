@@ -4,6 +4,7 @@
 // portrait starts a run there on the same energy; the landscape's rectangles and its way back.
 #include <QLabel>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/model/model.h"
@@ -15,6 +16,29 @@
 #include "ui/window/status_line.h"
 
 namespace grazelab::ui {
+
+void MainWindow::setGloWeightsFrom(QPointF value) {
+  if (!m_displayed) return;
+  const Figures& figures = m_displayed->request->job.figures;
+  const auto found = figures.find(PlotKind::GrazingSet);
+  if (found == figures.end()) return;
+  const std::vector<int>& modes = found->second.draggedModes;
+  Params next = params();
+  std::vector<double>& weights = next.massChain.weights;
+  if (modes.size() < 2 || modes.size() > 3) return;
+  for (int mode : modes) {
+    if (mode < 0 || mode >= int(weights.size())) return;
+  }
+  // to the plot's resolution: a weight the panel shows in three decimals, not sixteen
+  const auto rounded = [](double x) { return std::round(x * 1000) / 1000; };
+  const double x = rounded(value.x()), y = modes.size() == 3 ? rounded(value.y()) : 0.0;
+  std::fill(weights.begin(), weights.end(), 0.0);
+  weights[std::size_t(modes[1])] = x;
+  if (modes.size() == 3) weights[std::size_t(modes[2])] = y;
+  weights[std::size_t(modes[0])] = 1 - x - y;
+  if (weights == params().massChain.weights) return;
+  setParams(next);
+}
 
 bool MainWindow::startFromSection(QPointF u1v1) {
   if (!m_displayed) return false;

@@ -90,11 +90,12 @@ QString sessionTitle(const Session& session, bool massChain) {
     };
     QStringList ratio;
     for (auto it = c.harmonics.rbegin(); it != c.harmonics.rend(); ++it) ratio.append(QString::number(*it));
-    const QString springs = c.harmonics.empty()
-                                ? QStringLiteral("k = (%1)").arg(joined(c.springs))
-                                : QStringLiteral("k₁ = %1 and the springs of %2 (design %3)")
-                                      .arg(n(c.springs.front()), ratio.join(QLatin1Char(':')))
-                                      .arg(c.designBranch);
+    QString springs = c.harmonics.empty()
+                          ? QStringLiteral("k = (%1)").arg(joined(c.springs))
+                          : QStringLiteral("k₁ = %1 and the springs of %2 (design %3)")
+                                .arg(n(c.springs.front()), ratio.join(QLatin1Char(':')))
+                                .arg(c.designBranch);
+    if (c.rightSpring > 0) springs += QStringLiteral(", a right wall's k = %1").arg(n(c.rightSpring));
     return QStringLiteral("GrazeLab: %1 (masses (%2), %3, stop on mass %4, d = %5, weights (%6), δ = %7, %8 contacts)")
         .arg(session.scene, joined(c.masses), springs)
         .arg(c.stopMass > 0 ? c.stopMass : c.size())
