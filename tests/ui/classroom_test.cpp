@@ -426,6 +426,10 @@ class ClassroomTest : public QObject {
     QTest::keyClick(box, Qt::Key_PageDown);
     QCOMPARE(m_window->sceneIndex(), 1);
     QVERIFY(waitForLatestFinal(*m_window));
+    // the scenes of N masses after the note's: Alt+1 ... Alt+4
+    QTest::keyClick(m_window.get(), Qt::Key_2, Qt::AltModifier);
+    QCOMPARE(m_window->scene().alias(), QStringLiteral("grazing-sets"));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
     QTest::keyClick(m_window.get(), Qt::Key_1, Qt::ControlModifier);
     QVERIFY(waitForLatestFinal(*m_window));
     box = m_window->parameterPanel()->control(ParamKey::Lambda)->spinBox();

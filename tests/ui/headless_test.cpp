@@ -62,7 +62,8 @@ class HeadlessTest : public QObject {
     QVERIFY(lines[8].contains(QStringLiteral("Accuracy: methods against the exact solver")));
     QVERIFY2(lines[9].startsWith(QStringLiteral("modes ")) && lines[9].contains(QStringLiteral("Ctrl+M")),
              qPrintable(lines[9]));
-    QVERIFY2(lines.last().startsWith(QStringLiteral("eight-masses ")), qPrintable(lines.last()));
+    QVERIFY2(lines.last().startsWith(QStringLiteral("eight-masses ")) && lines.last().contains(QStringLiteral("Alt+4")),
+             qPrintable(lines.last()));
     const QStringList ids = listSceneIds();
     for (const char* id : {"grazing", "1ipp", "perturbations", "random-starts", "sticking",
                            "detuned", "near-grazing", "landscape", "accuracy", "modes",

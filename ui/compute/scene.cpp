@@ -90,6 +90,8 @@ core::State perturbed(core::State state, const Params& params) {
 QString sceneShortcut(int index) {
   if (index < 9) return QStringLiteral("Ctrl+%1").arg(index + 1);
   if (index == 9) return QStringLiteral("Ctrl+M");
+  // the N-mass scenes after the note's: Alt+1 ... (Ctrl+Shift+digit is a symbol on many layouts)
+  if (index < 19) return QStringLiteral("Alt+%1").arg(index - 9);
   return {};
 }
 

@@ -113,7 +113,7 @@ core::StartOrProblem<double> gloStart(const core::Model& model, const Params& pa
 core::State perturbed(core::State state, const Params& params);
 
 /// The key that chooses the scene at `index` (0-based) in the menu order: Ctrl+1 ... Ctrl+9,
-/// then Ctrl+M for the tenth (Ctrl+0 resets the view); empty beyond.
+/// then Ctrl+M for the tenth (Ctrl+0 resets the view), then Alt+1 ... Alt+9; empty beyond.
 QString sceneShortcut(int index);
 
 /// All scenes, in menu order (the first is the default).

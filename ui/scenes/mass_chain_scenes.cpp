@@ -27,6 +27,35 @@ QString list(const std::vector<double>& values, int digits = 4) {
   return parts.join(QStringLiteral(", "));
 }
 
+// The modes as a table: each one's frequency, its harmonic number (w_j = n_j w0 on a
+// commensurate chain; the nearest ratio's, marked ~, on another) and its GLOM's shape: the
+// displacements over d of the mode alone with its top on the stop (a mode with a node at the
+// stopped mass has none: it never reaches the stop)
+QString modesTable(const core::ChainModes& modes, const core::SpectrumRatios& ratios, int stopped) {
+  const Eigen::Index n = modes.omega.size();
+  QString html = QStringLiteral("<table cellspacing=\"0\" cellpadding=\"2\"><tr><th align=\"left\">%1</th>"
+                                "<th align=\"right\">&nbsp;ω</th><th align=\"right\">&nbsp;n</th>"
+                                "<th align=\"left\">&nbsp;%2</th></tr>")
+                     .arg(tr("mode"), tr("shape u / d of its GLOM"));
+  for (Eigen::Index j = 0; j < n; ++j) {
+    QString harmonic;
+    if (std::size_t(j) < ratios.harmonics.size()) {
+      harmonic = (ratios.commensurate ? QString() : QStringLiteral("~")) + QString::number(ratios.harmonics[std::size_t(j)]);
+    }
+    QString shape = tr("node at mass %1: no GLOM").arg(stopped);
+    if (!modes.nodeAtStop[std::size_t(j)]) {
+      QStringList parts;
+      for (Eigen::Index i = 0; i < n; ++i) parts.append(number(modes.P(i, j) / modes.P(stopped - 1, j), 3));
+      shape = parts.join(QStringLiteral(", "));
+    }
+    html += QStringLiteral("<tr><td>%1</td><td align=\"right\">&nbsp;%2</td><td align=\"right\">&nbsp;%3</td>"
+                           "<td>&nbsp;%4</td></tr>")
+                .arg(j + 1)
+                .arg(number(modes.omega[j]), harmonic, shape);
+  }
+  return html + QStringLiteral("</table>");
+}
+
 QString stopInWords(core::ChainStop stop) {
   switch (stop) {
     case core::ChainStop::ContactLimit:
@@ -118,7 +147,7 @@ QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& give
   } else {
     text += QLatin1Char(' ') + tr("Not commensurate: no common period.");
   }
-  return text;
+  return text + modesTable(modes, ratios, chain.stopped());
 }
 
 QString chainStatusOf(const core::experiments::ChainSeries& series) {
