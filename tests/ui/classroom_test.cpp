@@ -517,12 +517,18 @@ class ClassroomTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window));
     QVERIFY(trace->followsData());
     for (const PlotView* plot : m_window->plots()) QVERIFY(!plot->isStale());
+    m_window->resize(1100, 640);  // narrow plots: the note wraps to three lines
+    QTest::qWait(50);
     params.m2 = 0.9;  // no 1:2 chain
     m_window->setParams(params);
     QVERIFY(!m_window->problem().isEmpty());
     for (const PlotView* plot : m_window->plots()) {
       QVERIFY(plot->isStale());
-      QVERIFY(plot->findChild<QLabel*>(QStringLiteral("staleNote"))->isVisible());
+      const QLabel* note = plot->findChild<QLabel*>(QStringLiteral("staleNote"));
+      QVERIFY(note->isVisible());
+      // tall enough for its wrapped lines (a third line was cut in a narrow plot)
+      QVERIFY2(note->height() >= note->heightForWidth(note->width()),
+               qPrintable(QStringLiteral("%1 < %2").arg(note->height()).arg(note->heightForWidth(note->width()))));
     }
     params.m2 = 0.4;
     m_window->setParams(params);

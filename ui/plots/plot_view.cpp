@@ -177,6 +177,12 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
   new PlotGrid(chart, m_axisX, m_axisY);  // the chart's child: Qt Charts' own grid, hidden
 
   setRenderHint(QPainter::Antialiasing);
+  // the whole plot repainted on each change: under QGraphicsView's minimal updates, Qt Charts'
+  // axis labels, relaid out as the ranges move, left pieces of old labels on screen in a real
+  // window ("(" between two ticks, half a "-1.5" under the axis; never in a rendered picture).
+  // Measured with grazelab --bench under Xvfb: the default scene's edit 6.0 -> 8.0 ms median,
+  // the animation still 62 fps
+  setViewportUpdateMode(QGraphicsView::FullViewportUpdate);
   setRubberBand(QChartView::RectangleRubberBand);
   setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(kMinimumSize);  // again after each resize (resizeEvent)
@@ -338,7 +344,10 @@ void PlotView::placeStaleNote() {
   const QRect area = mapFromScene(chart()->mapToScene(chart()->plotArea())).boundingRect();
   const int room = std::max(60, area.width() - 8);
   m_staleNote->setMaximumWidth(room);
-  m_staleNote->adjustSize();
+  // its height for the width it gets: adjustSize() chose a wrapped label's height for another
+  // width, and a third line was cut in a narrow plot
+  const int width = std::min(room, m_staleNote->sizeHint().width());
+  m_staleNote->resize(width, m_staleNote->heightForWidth(width));
   m_staleNote->move(std::max(0, area.right() - m_staleNote->width() - 4), area.top() + 4);
 }
 

@@ -158,9 +158,11 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
     combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     combo->setMinimumContentsLength(10);
   }
-  m_wall = new QCheckBox(tr("a spring from the last mass to a wall"), this);
+  // no text of its own: a long one widened the panel past a projector's column
+  m_wall = new QCheckBox(this);
   m_wall->setObjectName(QStringLiteral("chainRightWall"));
-  m_wall->setToolTip(tr("A right wall: the last mass held by one more spring, k_(N+1). Designs keep it as given."));
+  m_wall->setToolTip(tr("A right wall: the last mass held by one more spring, k_(N+1), to a wall on the right. "
+                        "Designs keep it as given."));
   form->addRow(tr("right wall"), m_wall);
   form->addRow(tr("resonance"), m_resonance);
   m_designLabel = new QLabel(tr("springs"), this);
