@@ -12,32 +12,36 @@
 
 namespace grazelab::core {
 
-ChainOnePeriodicOrbit chainOnePeriodicOrbit(const MassChain& chain, double T) {
-  ChainOnePeriodicOrbit orbit;
-  if (!(T > 0) || !std::isfinite(T)) return orbit;
-  const ChainDynamics dynamics = chainDynamics(chain);
-  const ChainModes modes = chainModes(chain);
+template <typename S>
+BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& chain, std::type_identity_t<S> T) {
+  using std::abs;
+  using std::cos;
+  using std::sin;
+  BasicChainOnePeriodicOrbit<S> orbit;
+  if (!(T > 0) || !isFinite(T)) return orbit;
+  const BasicChainDynamics<S> dynamics = chainDynamicsIn<S>(chain);
+  const BasicChainModes<S> modes = chainModesIn<S>(chain);
   const Eigen::Index n = dynamics.omega.size();
   const int s = dynamics.stop;
-  const double ms = chain.masses[std::size_t(s)];
+  const S ms = chain.masses[std::size_t(s)];
   // g(T) = sum_j a_.j Phi_j(T), a_kj = m_s P[k][j] P[s][j]; a mode with a node at the stop adds 0
-  Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
+  ChainVector<S> g = ChainVector<S>::Zero(n);
   for (Eigen::Index j = 0; j < n; ++j) {
     if (modes.nodeAtStop[std::size_t(j)]) continue;
-    const double half = dynamics.omega[j] * T / 2;
-    const double sine = std::sin(half);
+    const S half = dynamics.omega[j] * T / 2;
+    const S sine = sin(half);
     // within a few roundings of a multiple of the mode's period: no data there
-    if (std::abs(sine) <= 64 * std::numeric_limits<double>::epsilon() * (1 + half)) {
+    if (abs(sine) <= 64 * std::numeric_limits<S>::epsilon() * (1 + half)) {
       orbit.refusal = OnePeriodicRefusal::MultipleOfPeriod;
       return orbit;
     }
-    const double phi = std::cos(half) / sine / dynamics.omega[j];
+    const S phi = cos(half) / sine / dynamics.omega[j];
     g += ms * dynamics.P(s, j) * phi * dynamics.P.col(j);
   }
   orbit.V = chain.gap / g[s];
   orbit.postImpact.u = orbit.V * g;
   orbit.postImpact.u[s] = chain.gap;
-  orbit.postImpact.v = Eigen::VectorXd::Zero(n);
+  orbit.postImpact.v = ChainVector<S>::Zero(n);
   orbit.postImpact.v[s] = orbit.V;
   orbit.energy = chainEnergy(chain, orbit.postImpact);
   if (!(orbit.V < 0)) {
@@ -46,13 +50,13 @@ ChainOnePeriodicOrbit chainOnePeriodicOrbit(const MassChain& chain, double T) {
   }
   // the flight from the data must meet the stop first at T: searched a little beyond it, not as
   // a periodic flight (T is the orbit's period, not the chain's)
-  ChainDynamics open = dynamics;
+  BasicChainDynamics<S> open = dynamics;
   open.period = 0;
-  const ChainContact contact = firstContact(open, flightFrom(open, orbit.postImpact), T * (1 + 1e-6));
-  const double tolerance = 1e-9 * T;
+  const BasicChainContact<S> contact = firstContact(open, flightFrom(open, orbit.postImpact), S(T * S(1 + 1e-6)));
+  const S tolerance = S(1e-9) * T;
   switch (contact.kind) {
     case ChainContactKind::Impact:
-      orbit.refusal = std::abs(contact.t - T) <= tolerance ? OnePeriodicRefusal::None
+      orbit.refusal = abs(contact.t - T) <= tolerance ? OnePeriodicRefusal::None
                       : contact.t < T                      ? OnePeriodicRefusal::ReturnsEarly
                                                            : OnePeriodicRefusal::NotDecided;
       break;
@@ -66,6 +70,11 @@ ChainOnePeriodicOrbit chainOnePeriodicOrbit(const MassChain& chain, double T) {
   }
   return orbit;
 }
+
+template BasicChainOnePeriodicOrbit<double> chainOnePeriodicOrbitIn<double>(const BasicMassChain<double>&, double);
+template BasicChainOnePeriodicOrbit<long double> chainOnePeriodicOrbitIn<long double>(const BasicMassChain<long double>&,
+                                                                                      long double);
+template BasicChainOnePeriodicOrbit<Quad> chainOnePeriodicOrbitIn<Quad>(const BasicMassChain<Quad>&, Quad);
 
 std::vector<double> onePeriodicGrazingWeights(const MassChain& chain, double periodStar) {
   const ChainModes modes = chainModes(chain);

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <stop_token>
+#include <type_traits>
 #include <vector>
 
 #include "core/model/mass_chain.h"
@@ -17,14 +18,22 @@ namespace grazelab::core {
 /// = sum_j a_kj Phi_j(T), the data right after the impact are v = V e_s, V = d / g_s(T), u =
 /// V g(T) (u_s = d). Admissible when V < 0 and the exact flight from them first meets the stop
 /// at T (certified search). The refusals are the two-mass ones.
-struct ChainOnePeriodicOrbit {
+template <typename S>
+struct BasicChainOnePeriodicOrbit {
   OnePeriodicRefusal refusal = OnePeriodicRefusal::BadPeriod;
-  ChainState postImpact;  ///< u = V g(T), v = V e_s
-  double V = 0;           ///< the stopped mass's velocity after the impact
-  double energy = 0;
+  BasicChainState<S> postImpact;  ///< u = V g(T), v = V e_s
+  S V = 0;                        ///< the stopped mass's velocity after the impact
+  S energy = 0;
   bool admissible() const { return refusal == OnePeriodicRefusal::None; }
 };
-ChainOnePeriodicOrbit chainOnePeriodicOrbit(const MassChain& chain, double T);
+using ChainOnePeriodicOrbit = BasicChainOnePeriodicOrbit<double>;
+/// In the chain's precision S (double, long double or binary128): the data, and the flight
+/// that checks them, computed in S from the chain's numbers in S.
+template <typename S>
+BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& chain, std::type_identity_t<S> T);
+inline ChainOnePeriodicOrbit chainOnePeriodicOrbit(const MassChain& chain, double T) {
+  return chainOnePeriodicOrbitIn<double>(chain, T);
+}
 
 /// The GLO the 1IPP data tend to as T tends to a common period T* of the modes in I (those whose
 /// period divides T*; the modes with a node at the stop left out): weights lambda_j = a_sj w_j^-2

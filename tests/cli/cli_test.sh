@@ -405,7 +405,19 @@ assert d['precision']['used'] == 'quad' and len(d['events']) == 3, d['precision'
 s = d['initial']['u']
 assert F(s[2]) == F(c['gap']), s" || fail "a chain designed in binary128"
 fi
-EXPECT_WORD="in double for now" expect_invalid simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --onepp 5 --precision quad
+# a 1IPP orbit in binary128: its data computed there, so that its impacts come at T, 2T, 3T to
+# binary128's precision (data computed in double would drift by 1e-16 of T a period)
+if expect_ok simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --onepp 7.1 --contacts 3 --precision quad; then
+  python3 -c "
+import json
+from fractions import Fraction as F
+d = json.load(open('$out'), parse_float=str)
+times = [F(e['t']) for e in d['events']]
+assert [e['type'] for e in d['events']] == ['impact'] * 3, d['events']
+errors = [abs(t / (k + 1) / F('7.1') - 1) for k, t in enumerate(times)]
+assert max(errors) < F(1, 10 ** 28), [float(e) for e in errors]
+assert d['precision']['used'] == 'quad'" || fail "a 1IPP orbit of N masses in binary128"
+fi
 # --precision auto: mass 1 pressed one ulp past the gap is undecided in double (the force on
 # mass 2 is within its rounding); the run again in long double, then in binary128, gives the
 # two-mass solver's events (which decides it in double from its exact residuals). The ulp is

@@ -111,8 +111,8 @@ const char* refusalWords(core::OnePeriodicRefusal refusal) {
 }
 
 // The run's start in S, from the chain in S: --state, --glo-weights (GLO_lambda at its touch) or
-// --onepp T (the 1IPP orbit's data right after its impact, in double), plus --perturb. --state,
-// the weights and --perturb are read in S (0.1 is 0.1 to binary128's digits)
+// --onepp T (the 1IPP orbit's data right after its impact), plus --perturb. --state, the weights,
+// T and --perturb are read in S (0.1 is 0.1 to binary128's digits)
 template <typename S>
 std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, const core::BasicMassChain<S>& chain,
                                                    QString& error) {
@@ -127,21 +127,14 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
   }
   core::BasicChainState<S> start;
   if (options.isSet("onepp")) {
-    if constexpr (!std::is_same_v<S, double>) {
-      error = "--onepp starts a chain of N masses in double for now (give --precision double or auto, or --state "
-              "in the precision)";
+    const core::ParsedScalar<S> T = core::parseScalar<S>(options.value("onepp").trimmed().toStdString());
+    const core::BasicChainOnePeriodicOrbit<S> orbit = core::chainOnePeriodicOrbitIn<S>(chain, T.value.value_or(S(-1)));
+    if (!orbit.admissible()) {
+      error = QStringLiteral("--onepp %1: no admissible 1IPP orbit of that period: %2")
+                  .arg(options.value("onepp"), refusalWords(orbit.refusal));
       return std::nullopt;
-    } else {
-      bool ok = false;
-      const double T = options.value("onepp").toDouble(&ok);
-      const core::ChainOnePeriodicOrbit orbit = core::chainOnePeriodicOrbit(chain, ok ? T : -1.0);
-      if (!orbit.admissible()) {
-        error = QStringLiteral("--onepp %1: no admissible 1IPP orbit of that period: %2")
-                    .arg(options.value("onepp"), refusalWords(orbit.refusal));
-        return std::nullopt;
-      }
-      start = orbit.postImpact;
     }
+    start = orbit.postImpact;
   } else if (options.isSet("state")) {
     const auto values = numberList<S>(options, "state", 2 * n, "u1,...,uN,v1,...,vN", error);
     if (!values) return std::nullopt;
