@@ -323,6 +323,31 @@ class ScenesTest : public QObject {
       ++seen;
     }
     QVERIFY(seen >= 5);
+    // the animation's time is a line on the trace (t over T) and a ring on the phase portrait
+    // (the stopped mass's state then: at the first contact, on the stop)
+    const double when = series.run.events.front().t;
+    moving->setTime(when);
+    const auto seriesOf = [this](const QString& title) {
+      std::vector<std::vector<QPointF>> all;
+      for (PlotView* plot : m_window->plots()) {
+        if (!plot->title().startsWith(title)) continue;
+        for (QAbstractSeries* item : plot->chart()->series()) {
+          if (auto* xy = qobject_cast<QXYSeries*>(item)) { const QList<QPointF> list = xy->points(); all.emplace_back(list.begin(), list.end()); }
+        }
+      }
+      return all;
+    };
+    const double period = series.period;
+    bool line = false;
+    for (const auto& points : seriesOf(QStringLiteral("Mass 3"))) {
+      line = line || (points.size() == 2 && points[0].x() == when / period && points[1].x() == when / period);
+    }
+    QVERIFY(line);
+    bool ring = false;
+    for (const auto& points : seriesOf(QStringLiteral("Phase portrait"))) {
+      ring = ring || (points.size() == 1 && std::abs(points[0].x() - 1.0) < 0.01);
+    }
+    QVERIFY(ring);
 
     // another mass's phase portrait: its state at each contact marked on it
     Params params = m_window->params();

@@ -57,6 +57,11 @@ struct CurveFigure {
   std::vector<QPointF> reference;  ///< two points: a dashed line; one: a ringed point
   /// fixed axes [xMin, xMax] x [yMin, yMax], so that the marker's motion is seen (empty: fit)
   double xMin = 0, xMax = 0, yMin = 0, yMax = 0;
+  /// the x axis is time over this unit (a trace): the animated chain's time is a line there
+  double timeUnit = 0;
+  /// the time of each curve point (a phase portrait along the run): the animated chain's time
+  /// is a ring on the curve there (empty: no cursor)
+  std::vector<double> curveTimes;
   /// the one-point reference (or else the one marker) is the panel's GLO weights on these modes
   /// (0-based, fastest first: x is the second's weight, y the third's, the first balancing):
   /// dragging it, or clicking, moves them (empty: nothing to drag)

@@ -3,6 +3,9 @@
 #include "ui/plots/curve_plot.h"
 
 #include <QChart>
+#include <QXYSeries>
+
+#include <algorithm>
 #include <QMouseEvent>
 #include <QLineSeries>
 #include <QScatterSeries>
@@ -49,6 +52,11 @@ void CurvePlot::show(const SimUpdate& update) {
   setData(m_marker, figure.markers);
   setData(m_reference, point ? std::vector<QPointF>{} : figure.reference);
   setData(m_referencePoint, point ? figure.reference : std::vector<QPointF>{});
+  m_timeUnit = figure.timeUnit;
+  const bool timed = !figure.dots && figure.curveTimes.size() == figure.curve.size() && !figure.curve.empty();
+  m_curveTimes = timed ? figure.curveTimes : std::vector<double>{};
+  m_timedCurve = timed ? figure.curve : std::vector<QPointF>{};
+  setChainTime(m_chainTime);
   m_draggable = !figure.draggedModes.empty() && (point || figure.markers.size() == 1);
   if (m_draggable) m_ring = point ? figure.reference.front() : figure.markers.front();
   setMouseTracking(m_draggable);  // the hand over the ring
@@ -103,6 +111,56 @@ void CurvePlot::mouseReleaseEvent(QMouseEvent* event) {
     return;
   }
   PlotView::mouseReleaseEvent(event);
+}
+
+void CurvePlot::setChainTime(double t) {
+  m_chainTime = t;
+  if (m_timeUnit <= 0 && m_curveTimes.empty()) {
+    if (m_timeLine) m_timeLine->clear();
+    if (m_timeRing) m_timeRing->clear();
+    return;
+  }
+  // not entries: they never count for the axes, the CSV or the decimation (as the two-mass
+  // trace's cursor); see-through, so that a contact under them shows
+  QColor through = colors::kAccent;
+  through.setAlpha(120);
+  if (m_timeUnit > 0) {
+    if (!m_timeLine) {
+      m_timeLine = makeLine(QString(), through, 2.0);
+      chart()->addSeries(m_timeLine);
+      for (QAbstractAxis* axis : chart()->axes()) m_timeLine->attachAxis(axis);
+      setInLegend(m_timeLine, false);
+    }
+    const auto* y = qobject_cast<QValueAxis*>(chart()->axes(Qt::Vertical).value(0));
+    const double x = t / m_timeUnit;
+    if (y) m_timeLine->replace({QPointF(x, y->min()), QPointF(x, y->max())});
+  } else if (m_timeLine) {
+    m_timeLine->clear();
+  }
+  if (!m_curveTimes.empty()) {
+    if (!m_timeRing) {
+      auto* ring = makeScatter(QString(), through, 14);
+      ring->setColor(Qt::transparent);
+      ring->setPen(QPen(colors::kAccent, 2.5));
+      useLightMarker(ring, QPen(colors::kAccent, 2.5));  // a ring: the curve shows through it
+      m_timeRing = ring;
+      chart()->addSeries(m_timeRing);
+      for (QAbstractAxis* axis : chart()->axes()) m_timeRing->attachAxis(axis);
+      setInLegend(m_timeRing, false);
+    }
+    // the curve's point at t, between the two samples around it; none past the curve's times
+    const auto after = std::upper_bound(m_curveTimes.begin(), m_curveTimes.end(), t);
+    if (after == m_curveTimes.begin() || after == m_curveTimes.end()) {
+      m_timeRing->clear();
+    } else {
+      const std::size_t i = std::size_t(after - m_curveTimes.begin());
+      const double span = m_curveTimes[i] - m_curveTimes[i - 1];
+      const double share = span > 0 ? (t - m_curveTimes[i - 1]) / span : 0.0;
+      m_timeRing->replace({m_timedCurve[i - 1] + share * (m_timedCurve[i] - m_timedCurve[i - 1])});
+    }
+  } else if (m_timeRing) {
+    m_timeRing->clear();
+  }
 }
 
 }  // namespace grazelab::ui

@@ -5,6 +5,8 @@
 #include "ui/compute/figures.h"
 #include "ui/plots/plot_view.h"
 
+class QXYSeries;
+
 namespace grazelab::ui {
 
 /// A curve the scene computed itself (a family of orbits against its parameter), the current
@@ -17,6 +19,9 @@ class CurvePlot final : public PlotView {
   void show(const SimUpdate& update) override;
   /// The figure shown has a handle to drag (CurveFigure::draggedModes).
   bool draggable() const { return m_draggable; }
+  /// Marks the animated chain's time: a line on a trace (CurveFigure::timeUnit), a ring on a
+  /// curve along the run (CurveFigure::curveTimes); nothing on other figures.
+  void setChainTime(double t) override;
 
  signals:
   /// The ring of a draggable figure (CurveFigure::draggedModes) was dragged to `value`, in the
@@ -38,6 +43,13 @@ class CurvePlot final : public PlotView {
   int m_referencePoint = 0;  ///< a ring (one point)
   int m_marker = 0;
   bool m_draggable = false;
+  // the animated chain's time, and how the figure shown places it
+  double m_chainTime = 0;
+  double m_timeUnit = 0;
+  std::vector<double> m_curveTimes;
+  std::vector<QPointF> m_timedCurve;
+  QXYSeries* m_timeLine = nullptr;
+  QXYSeries* m_timeRing = nullptr;
   bool m_dragging = false;
   QPointF m_ring;  ///< where the handle (ring or marker) is, in the data's coordinates
 };

@@ -218,6 +218,7 @@ void MassChainView::setTime(double t) {
   const QSignalBlocker block(m_slider);
   m_slider->setValue(m_end > 0 ? int(std::lround(m_time / m_end * kSliderSteps)) : 0);
   m_canvas->update();
+  emit timeChanged(m_time);
 }
 
 void MassChainView::setPlaying(bool on) {

@@ -40,6 +40,10 @@ class MassChainView : public QWidget, public SceneView {
   /// Every mass's displacement at time t (interpolated between the grid's points).
   std::vector<double> displacementsAt(double t) const;
 
+ signals:
+  /// The animation's time moved (played, stepped or dragged): the other views mark it.
+  void timeChanged(double t);
+
  private:
   class Canvas;
   void tick();

@@ -29,6 +29,8 @@ class SceneView {
     (void)t;
     (void)state;
   }
+  /// The time of the animated chain of N masses: a view of that run marks it (others ignore it).
+  virtual void setChainTime(double t) { (void)t; }
   /// Time-based views show a readable window of a long run (a few slow periods at the
   /// animation's time) unless the whole run is asked for.
   virtual void setWholeRun(bool whole) { (void)whole; }

@@ -130,6 +130,7 @@ Scene::Spec chainOnePeriodicScene() {
     trace.curveName = tr("u%1 / d").arg(chain.stopped());
     for (const core::experiments::ChainGridPoint& point : shared->grid)
       trace.curve.emplace_back(point.t / T, point.us / d);
+    trace.timeUnit = T;  // the animation's time a line on it
     trace.referenceName = tr("stop");
     trace.reference = {QPointF(0, 1), QPointF(3, 1)};
     trace.markerName = tr("contacts");

@@ -178,6 +178,7 @@ Scene::Spec grazingSetsScene() {
     trace.curveName = tr("u%1 / d").arg(chain.stopped());
     for (const core::experiments::ChainGridPoint& point : shared->grid)
       trace.curve.emplace_back(point.t / period, point.us / chain.gap);
+    trace.timeUnit = period;  // the animation's time a line on it
     trace.referenceName = tr("stop");
     trace.reference = {QPointF(0, 1), QPointF(1, 1)};
     job.figures[PlotKind::ChainStopTrace] = trace;

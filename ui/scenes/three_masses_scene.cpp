@@ -150,6 +150,7 @@ Scene::Spec threeMassesScene() {
     for (const core::experiments::ChainGridPoint& point : series.grid) {
       trace.curve.emplace_back(point.t / unit, point.us / chain.gap);
     }
+    trace.timeUnit = unit;  // the animation's time a line on it
     const double window = spec.window / unit;
     trace.referenceName = tr("stop");
     trace.reference = {QPointF(0, 1), QPointF(window, 1)};
@@ -184,6 +185,7 @@ Scene::Spec threeMassesScene() {
     const double speed = chain.gap * modes.omega.maxCoeff();
     for (const core::experiments::ChainGridPoint& point : series.grid) {
       phase.curve.emplace_back(point.uChosen / chain.gap, point.vChosen / speed);
+      phase.curveTimes.push_back(point.t);  // the animation's time a ring on it
     }
     if (shownIsStopped) {
       phase.referenceName = tr("stop");

@@ -38,6 +38,7 @@
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/chain_view.h"
 #include "ui/plots/curve_plot.h"
+#include "ui/plots/mass_chain_view.h"
 #include "ui/plots/scene_view.h"
 #include "ui/plots/plot_view.h"
 #include "ui/plots/phase_plot.h"
@@ -367,6 +368,14 @@ void MainWindow::linkViews() {
     connect(m_chain, &ChainView::timeChanged, this, [this](double t, const core::State& state) {
       for (SceneView* view : m_sceneViews) view->setTimeCursor(t, state);
     });
+  }
+  for (SceneView* view : m_sceneViews) {
+    // the N-mass chain's animation: its time marked on the trace and the phase portrait
+    if (auto* moving = dynamic_cast<MassChainView*>(view)) {
+      connect(moving, &MassChainView::timeChanged, this, [this](double t) {
+        for (SceneView* other : m_sceneViews) other->setChainTime(t);
+      });
+    }
   }
 }
 
