@@ -361,6 +361,11 @@ class ScenesTest : public QObject {
       QVERIFY(!phase.markers.empty());
       QCOMPARE(phase.markers.front().x(), shownSeries.run.events.front().u[0] / shownSeries.chain.gap);
       QVERIFY(std::abs(phase.curve.front().x() - shownSeries.start.u[0] / shownSeries.chain.gap) < 1e-12);
+      // and its trace beside the stopped mass's, on the same grid
+      const CurveFigure& trace = figure(*m_window, PlotKind::ChainStopTrace);
+      QCOMPARE(trace.other.size(), trace.curve.size());
+      QCOMPARE(trace.other.front().y(), shownSeries.grid.front().uChosen / shownSeries.chain.gap);
+      QVERIFY2(trace.otherName.contains(QStringLiteral("u1")), qPrintable(trace.otherName));
     }
     // the Poincaré points on H on the chosen pair (u2, v3): every contact's state there, the
     // velocity the one before the contact, scaled as the phase portrait is

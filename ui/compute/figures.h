@@ -51,6 +51,9 @@ struct CurveFigure {
   /// the curve's points are values at separate events (a flight per contact): drawn as dots,
   /// not joined by a line (joined spikes merge into a block on a projector)
   bool dots = false;
+  /// a second line beside the curve (another mass's trace, asked for), in another colour
+  QString otherName;
+  std::vector<QPointF> other;
   QString markerName;
   std::vector<QPointF> markers;
   QString referenceName;

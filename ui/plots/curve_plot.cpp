@@ -18,6 +18,7 @@ namespace grazelab::ui {
 CurvePlot::CurvePlot(PlotKind kind, QWidget* parent)
     : PlotView(QString(), QString(), QString(), parent), m_kind(kind) {
   m_curve = addEntry(makeLine(QString(), colors::kTrace, 2.0), Decimation::None);
+  m_other = addEntry(makeLine(QString(), colors::kOverlay, 1.5), Decimation::None);
   auto* dots = makeScatter(QString(), colors::kTrace, 5.5);
   dots->setPen(Qt::NoPen);
   m_dots = addEntry(dots, Decimation::Scatter);
@@ -43,12 +44,14 @@ void CurvePlot::show(const SimUpdate& update) {
   const auto& list = entries();
   list[std::size_t(m_curve)].series->setName(figure.dots ? QString() : figure.curveName);
   list[std::size_t(m_dots)].series->setName(figure.dots ? figure.curveName : QString());
+  list[std::size_t(m_other)].series->setName(figure.other.empty() ? QString() : figure.otherName);
   list[std::size_t(m_marker)].series->setName(figure.markerName);
   const bool point = figure.reference.size() == 1;
   list[std::size_t(m_reference)].series->setName(point ? QString() : figure.referenceName);
   list[std::size_t(m_referencePoint)].series->setName(point ? figure.referenceName : QString());
   setData(m_curve, figure.dots ? std::vector<QPointF>{} : figure.curve);
   setData(m_dots, figure.dots ? figure.curve : std::vector<QPointF>{});
+  setData(m_other, figure.other);
   setData(m_marker, figure.markers);
   setData(m_reference, point ? std::vector<QPointF>{} : figure.reference);
   setData(m_referencePoint, point ? figure.reference : std::vector<QPointF>{});

@@ -39,6 +39,7 @@ class CurvePlot final : public PlotView {
   PlotKind m_kind;
   int m_dots = 0;  ///< the curve as dots (CurveFigure::dots)
   int m_curve = 0;
+  int m_other = 0;  ///< CurveFigure::other
   int m_reference = 0;       ///< a dashed line (two points)
   int m_referencePoint = 0;  ///< a ring (one point)
   int m_marker = 0;

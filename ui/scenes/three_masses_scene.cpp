@@ -151,6 +151,14 @@ Scene::Spec threeMassesScene() {
       trace.curve.emplace_back(point.t / unit, point.us / chain.gap);
     }
     trace.timeUnit = unit;  // the animation's time a line on it
+    // the mass the panel's 'phase of' names, when it is another: its trace beside the stopped one
+    if (given.shown() != chain.stopped()) {
+      trace.title = tr("Mass %1 (on the stop's side) and mass %2: u / d").arg(chain.stopped()).arg(given.shown());
+      trace.otherName = tr("u%1 / d").arg(given.shown());
+      for (const core::experiments::ChainGridPoint& point : series.grid) {
+        trace.other.emplace_back(point.t / unit, point.uChosen / chain.gap);
+      }
+    }
     const double window = spec.window / unit;
     trace.referenceName = tr("stop");
     trace.reference = {QPointF(0, 1), QPointF(window, 1)};

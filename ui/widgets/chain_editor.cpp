@@ -118,8 +118,8 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
   m_shown = new QSpinBox(this);
   m_shown->setObjectName(QStringLiteral("chainShownMass"));
   m_shown->setToolTip(
-      tr("The mass whose phase portrait and Poincaré points (its state at each contact) are "
-         "drawn; the stopped mass by default."));
+      tr("The mass whose phase portrait (with its state at each contact) is drawn, and whose "
+         "trace is drawn beside the stopped mass's; the stopped mass by default."));
   auto* shownRow = new QHBoxLayout;
   shownRow->addWidget(m_shown);
   shownRow->addStretch(1);
