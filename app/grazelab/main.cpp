@@ -71,7 +71,8 @@ int main(int argc, char* argv[]) {
 
   QCommandLineParser parser;
   parser.setApplicationDescription(QApplication::translate(
-      "main", "Explore a two-mass chain against a rigid stop in 1:2 internal resonance."));
+      "main", "Explore chains of masses against a rigid stop: the two-mass chain in 1:2 internal "
+              "resonance, and chains of N masses in any resonance."));
   parser.addHelpOption();
   parser.addVersionOption();
   const QCommandLineOption listScenes(QStringLiteral("list-scenes"),

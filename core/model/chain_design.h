@@ -74,7 +74,9 @@ ChainDesigns designSprings(const std::vector<double>& masses, double k1, double 
 /// equations polished by Newton with every number in binary128, from `design` (found for the
 /// chain rounded to double). The springs k_1 ... k_N then put the binary128 chain's frequencies in
 /// the ratio to binary128's rounding, where the double design is off by double's. Empty when
-/// Newton leaves the design (it moves each compliance by double's error at most).
+/// Newton leaves the design (it moves each compliance by double's error, or its square root
+/// where two designs meet), or when the refined chain's own binary128 spectrum is not in the
+/// ratio to 1e-28 (a chain just past the edge where two designs meet, which double rounds back).
 std::optional<std::vector<Quad>> refinedSprings(const std::vector<Quad>& masses, const Quad& k1,
                                                 const Quad& rightSpring, const std::vector<int>& harmonics,
                                                 const ChainDesign& design);

@@ -243,6 +243,14 @@ TEST(ChainDesign, RefinedDesignsAreExactInBinary128) {
       EXPECT_GT(double(fabs(Quad(designs.designs[d].springs[1]) / branches[d] - 1)), 1e-20) << d;
     }
   }
+  // masses just past the edge where the two 1:2 designs meet (m2/m1 = 9/16 plus 1e-19): double
+  // rounds them onto the edge, where a design exists; binary128 has none to refine it to
+  {
+    const std::vector<Quad> past{Quad(1), parseScalar<Quad>("0.5625000000000000001").value.value()};
+    const ChainDesigns edge = designSprings({1.0, 0.5625}, 1.0, {2, 1});
+    ASSERT_EQ(edge.outcome, DesignOutcome::Designed);
+    for (const ChainDesign& design : edge.designs) EXPECT_FALSE(refinedSprings(past, Quad(1), Quad(0), {2, 1}, design));
+  }
   for (const Quad& wall : {Quad(0), parseScalar<Quad>("0.3").value.value()}) {
     const std::vector<Quad> masses{Quad(1), m2, m3};
     const ChainDesigns designs = designSprings({1.0, 0.2, 0.05}, 1.3, double(wall), {3, 2, 1});

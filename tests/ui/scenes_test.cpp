@@ -10,6 +10,7 @@
 #include <QDeadlineTimer>
 #include <QJsonArray>
 #include <QLabel>
+#include <QValueAxis>
 #include <QXYSeries>
 
 #include <algorithm>
@@ -325,24 +326,41 @@ class ScenesTest : public QObject {
     QVERIFY(seen >= 5);
     // the animation's time is a line on the trace (t over T) and a ring on the phase portrait
     // (the stopped mass's state then: at the first contact, on the stop)
-    const double when = series.run.events.front().t;
-    moving->setTime(when);
+    const double period = series.period;
+    // as shown (the animation at its start, the axes fitted after the line was placed): the line
+    // at t = 0 spans the fitted axis
+    QTest::qWait(100);  // the plots' deferred refresh
+    double when = moving->time();
     const auto seriesOf = [this](const QString& title) {
       std::vector<std::vector<QPointF>> all;
       for (PlotView* plot : m_window->plots()) {
         if (!plot->title().startsWith(title)) continue;
         for (QAbstractSeries* item : plot->chart()->series()) {
-          if (auto* xy = qobject_cast<QXYSeries*>(item)) { const QList<QPointF> list = xy->points(); all.emplace_back(list.begin(), list.end()); }
+          if (auto* xy = qobject_cast<QXYSeries*>(item)) {
+            const QList<QPointF> list = xy->points();
+            all.emplace_back(list.begin(), list.end());
+          }
         }
       }
       return all;
     };
-    const double period = series.period;
-    bool line = false;
-    for (const auto& points : seriesOf(QStringLiteral("Mass 3"))) {
-      line = line || (points.size() == 2 && points[0].x() == when / period && points[1].x() == when / period);
-    }
-    QVERIFY(line);
+    const auto lineSpansTheAxis = [&] {
+      bool line = false;
+      for (PlotView* plot : m_window->plots()) {
+        if (!plot->title().startsWith(QStringLiteral("Mass 3"))) continue;
+        const auto* y = qobject_cast<QValueAxis*>(plot->chart()->axes(Qt::Vertical).value(0));
+        for (const auto& points : seriesOf(QStringLiteral("Mass 3"))) {
+          // at t / T, from the axis' bottom to its top as fitted
+          line = line || (points.size() == 2 && points[0].x() == when / period && points[1].x() == when / period &&
+                          points[0].y() == y->min() && points[1].y() == y->max());
+        }
+      }
+      return line;
+    };
+    QVERIFY(lineSpansTheAxis());
+    when = series.run.events.front().t;
+    moving->setTime(when);
+    QVERIFY(lineSpansTheAxis());
     bool ring = false;
     for (const auto& points : seriesOf(QStringLiteral("Phase portrait"))) {
       ring = ring || (points.size() == 1 && std::abs(points[0].x() - 1.0) < 0.01);

@@ -133,6 +133,11 @@ void CurvePlot::setChainTime(double t) {
       chart()->addSeries(m_timeLine);
       for (QAbstractAxis* axis : chart()->axes()) m_timeLine->attachAxis(axis);
       setInLegend(m_timeLine, false);
+      // from the axis' bottom to its top as they are once fitted (show() places it before the
+      // refresh that fits the axes)
+      if (auto* axis = qobject_cast<QValueAxis*>(chart()->axes(Qt::Vertical).value(0))) {
+        connect(axis, &QValueAxis::rangeChanged, this, [this] { setChainTime(m_chainTime); });
+      }
     }
     const auto* y = qobject_cast<QValueAxis*>(chart()->axes(Qt::Vertical).value(0));
     const double x = t / m_timeUnit;
@@ -151,9 +156,12 @@ void CurvePlot::setChainTime(double t) {
       for (QAbstractAxis* axis : chart()->axes()) m_timeRing->attachAxis(axis);
       setInLegend(m_timeRing, false);
     }
-    // the curve's point at t, between the two samples around it; none past the curve's times
+    // the curve's point at t, between the two samples around it; none outside the curve's
+    // times (its last one included: the animation's end)
     const auto after = std::upper_bound(m_curveTimes.begin(), m_curveTimes.end(), t);
-    if (after == m_curveTimes.begin() || after == m_curveTimes.end()) {
+    if (t == m_curveTimes.back()) {
+      m_timeRing->replace({m_timedCurve.back()});
+    } else if (after == m_curveTimes.begin() || after == m_curveTimes.end()) {
       m_timeRing->clear();
     } else {
       const std::size_t i = std::size_t(after - m_curveTimes.begin());

@@ -141,9 +141,9 @@ Scene::Spec chainOnePeriodicScene() {
     QStringList weights;
     for (double w : limitWeights) weights.append(number(w, 4));
     job.chainSummary =
-        chainSummaryOf(chain, params.massChain, choice.designs, modes, ratios) + QLatin1Char(' ') +
-        tr("As T → T* = %1 the 1IPP data tend to GLO with weights (%2) (fastest mode first).")
-            .arg(number(Tstar, 6), weights.join(QStringLiteral(", ")));
+        chainSummaryOf(chain, params.massChain, choice.designs, modes, ratios,
+                       tr("As T → T* = %1 the 1IPP data tend to GLO with weights (%2) (fastest mode first).")
+                           .arg(number(Tstar, 6), weights.join(QStringLiteral(", "))));
     job.chainDesigns = choice.designs;
     double distance = 0;
     if (limit.problem == core::GloStartProblem::None)

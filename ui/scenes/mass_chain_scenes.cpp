@@ -122,7 +122,7 @@ ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_toke
 }
 
 QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& given, int designs,
-                       const core::ChainModes& modes, const core::SpectrumRatios& ratios) {
+                       const core::ChainModes& modes, const core::SpectrumRatios& ratios, const QString& more) {
   const std::vector<double> omega(modes.omega.data(), modes.omega.data() + modes.omega.size());
   QString text = given.harmonics.empty() ? tr("Springs k = %1 (as given).").arg(list(chain.springs))
                                          : tr("Springs designed for %1 (design %2 of %3): k = %4.")
@@ -147,6 +147,7 @@ QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& give
   } else {
     text += QLatin1Char(' ') + tr("Not commensurate: no common period.");
   }
+  if (!more.isEmpty()) text += QLatin1Char(' ') + more;
   return text + modesTable(modes, ratios, chain.stopped());
 }
 

@@ -26,9 +26,11 @@ struct ChainChoice {
 };
 ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_token stop);
 
-/// What the chain is, in words: springs, frequencies, their ratio and the common period.
+/// What the chain is, in words: springs, frequencies, their ratio and the common period, then
+/// `more` (a scene's own sentence), then the table of its modes.
 QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& given, int designs,
-                       const core::ChainModes& modes, const core::SpectrumRatios& ratios);
+                       const core::ChainModes& modes, const core::SpectrumRatios& ratios,
+                       const QString& more = {});
 
 /// The run in words for the status line: contacts by kind, its end and why, energy drift.
 QString chainStatusOf(const core::experiments::ChainSeries& series);
