@@ -29,6 +29,17 @@ ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop) {
                              std::vector<double>(state.u.data(), state.u.data() + state.u.size())});
     };
   }
+  if (spec.free) {
+    // one closed-form flight over the grid, through the stop if it goes there
+    const ChainDynamics dynamics = chainDynamics(spec.chain);
+    const BasicChainFlight<double> flight = flightFrom(dynamics, spec.start);
+    if (sampling.sink) {
+      for (double t : sampling.times) sampling.sink(t, stateAt(dynamics, flight, t));
+    }
+    series.run.final = spec.start;
+    series.run.stop = ChainStop::TimeLimit;
+    return series;
+  }
   series.run = runChain(spec.chain, spec.start, spec.contacts, 0.0, stop, {}, sampling);
   series.trust =
       chainTrust(spec.chain, spec.start, series.run, spec.contacts, 0.0, spec.trust, stop);

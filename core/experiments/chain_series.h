@@ -23,6 +23,9 @@ struct ChainSeriesSpec {
   int gridPoints = 1500;
   int phaseMass = 0;                  ///< 1-based; 0: the stopped mass
   TrustMode trust = TrustMode::Auto;  ///< the run's error estimate (core/solver/chain_trust.h)
+  /// the linear motion alone, the stop ignored (a grazing linear orbit that passes the stop is
+  /// drawn passing it): the grid only, no run (no events, no flights)
+  bool free = false;
 };
 
 /// One free flight: from an event (or the start) to the next contact.

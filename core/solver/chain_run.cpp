@@ -221,7 +221,10 @@ BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<
         samplePiece(t, S(tEnd), true, stuckAt);
         return finish(ChainStop::TimeLimit, stuckStateAt(phase, tEnd - t), tEnd);
       }
-      if (release.kind == ZeroKind::Budget) return finish(ChainStop::SearchBudget, state, t);
+      if (release.kind == ZeroKind::Budget) {
+        samplePiece(t, S(t + release.t), true, stuckAt);  // held at least as far as it searched
+        return finish(ChainStop::SearchBudget, state, t);
+      }
       if (release.kind != ZeroKind::Crossing) {
         return finish(ChainStop::Undecided, stuckStateAt(phase, release.t), t + release.t);
       }
@@ -258,7 +261,11 @@ BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<
       samplePiece(t, S(t + slowest), true, flightAt);  // linear forever: one slowest period drawn
       return finish(ChainStop::NoFurtherContact, state, t);
     }
-    if (contact.kind == ChainContactKind::Budget) return finish(ChainStop::SearchBudget, state, t);
+    if (contact.kind == ChainContactKind::Budget) {
+      // no contact as far as the search went: that much of the flight is drawn
+      samplePiece(t, S(t + contact.t), true, flightAt);
+      return finish(ChainStop::SearchBudget, state, t);
+    }
     if (contact.kind == ChainContactKind::Touch && contact.t == 0) {
       // a flight that cannot be seen to leave the stop it starts on (neither its velocity nor
       // its acceleration takes it away, within rounding, and no force presses it on)

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -64,6 +65,40 @@ TEST(ChainSeries, AChainWithNoCommonPeriodHasNoBound) {
   EXPECT_EQ(series.run.contacts, 30);
   EXPECT_TRUE(series.grid.empty());
   EXPECT_NE(series.trust.verdict, Verdict::Unchecked);  // the estimate asked for is made
+}
+
+// A run that meets no contact within its search (no common period, pushed off the stop: the
+// next approach stays below it for 1000 slowest periods) still draws its motion: the flight is
+// contact-free as far as the search went, so the grid covers the window. And `free`: the linear
+// motion alone, through the stop (a GLO outside its grazing set passes it).
+TEST(ChainSeries, ARunWithoutContactsStillDrawsItsMotionAndFreeIgnoresTheStop) {
+  MassChain chain;
+  chain.masses = {1.0, 0.2, 0.05, 0.05};
+  chain.springs = {1.0, 1.0, 1.0, 1.0};
+  ChainState start = chainGloStart(chain, {0.25, 0.25, 0.25, 0.25}).state;
+  start.v[3] -= 0.05;
+  const ChainSeriesSpec spec{chain, start, 5, 30.0, 300, 0, TrustMode::Off};
+  const ChainSeries series = chainSeries(spec);
+  ASSERT_EQ(series.run.stop, ChainStop::SearchBudget);
+  EXPECT_EQ(series.run.contacts, 0);
+  ASSERT_EQ(series.grid.size(), 300u);
+  EXPECT_EQ(series.grid.back().t, 30.0);
+  for (const ChainGridPoint& point : series.grid) EXPECT_LT(point.us, chain.gap) << point.t;
+
+  MassChain resonant;
+  resonant.masses = {1.0, 0.2, 0.05};
+  resonant.springs = designSprings(resonant.masses, 1.0, {3, 2, 1}).designs.at(0).springs;
+  const ChainState outside = chainGloStart(resonant, {-0.4, 1.2, 0.2}).state;
+  ChainSeriesSpec free{resonant, outside, 1, 8.0, 400, 0, TrustMode::Off};
+  free.free = true;
+  const ChainSeries linear = chainSeries(free);
+  EXPECT_TRUE(linear.run.events.empty());
+  ASSERT_EQ(linear.grid.size(), 400u);
+  double top = 0;
+  for (const ChainGridPoint& point : linear.grid) top = std::max(top, point.us);
+  EXPECT_GT(top, 1.2 * resonant.gap);  // through the stop, as the closed form has it
+  const ChainSeries stopped = chainSeries(ChainSeriesSpec{resonant, outside, 1, 8.0, 400, 0, TrustMode::Off});
+  for (const ChainGridPoint& point : stopped.grid) EXPECT_LE(point.us, resonant.gap * (1 + 1e-12));
 }
 
 }  // namespace

@@ -86,13 +86,20 @@ class MassChainView::Canvas : public QWidget {
     painter.setPen(QPen(colors::kTrace, lineWidth));
     painter.setBrush(Qt::NoBrush);
     const double rise = std::min(0.08 * height(), 10.0) + 2;
+    // as many coils as its drawn length holds apart (a short spring with seven was a solid block
+    // on a projector), straight when too short for one
+    const auto spring = [&](double from, double to) {
+      const int coils = std::min(7, int((to - from) / (5 * lineWidth)));
+      if (coils < 1) painter.drawLine(QPointF(from, middle), QPointF(to, middle));
+      else painter.drawPath(springPath(from, to, middle, rise, coils));
+    };
     double left = 0;
     for (int i = 0; i < n; ++i) {
       const double centre = (i + 1) * rest + u[std::size_t(i)];
-      painter.drawPath(springPath(px(left), px(centre - box[std::size_t(i)] / 2), middle, rise, 7));
+      spring(px(left), px(centre - box[std::size_t(i)] / 2));
       left = centre + box[std::size_t(i)] / 2;
     }
-    if (rightWall) painter.drawPath(springPath(px(left), px(rightWallX), middle, rise, 7));
+    if (rightWall) spring(px(left), px(rightWallX));
     // the stop: a post below the chain line that a tab under the stopped mass strikes
     const double postTop = middle + tallest / 2 + 4;
     painter.setPen(QPen(flash.isValid() ? flash : QColor(Qt::black), lineWidth * 2));
@@ -126,7 +133,8 @@ class MassChainView::Canvas : public QWidget {
     const double restFace = px((s + 1) * rest + box[std::size_t(s)] / 2);
     const double rulerY = postTop - 2;
     painter.drawLine(QPointF(restFace, rulerY), QPointF(px(stopX), rulerY));
-    painter.drawText(QRectF(restFace, rulerY - 18, px(stopX) - restFace, 16),
+    const double textHeight = painter.fontMetrics().height();  // the presentation font's too
+    painter.drawText(QRectF(restFace, rulerY - textHeight - 2, px(stopX) - restFace, textHeight),
                      Qt::AlignHCenter | Qt::AlignBottom, tr("d"));
     const double unit = view.m_series->period > 0 ? view.m_series->period : 0;
     painter.drawText(

@@ -160,10 +160,12 @@ Scene::Spec grazingSetsScene() {
       job.figures[PlotKind::GrazingSet] = regionFigure(harmonics, boundary, weights[1], weights[2]);
       job.figures[PlotKind::GrazingSet].draggedModes = used.modes;
     }
-    // the orbit itself over one period (unpushed: GLO(λ) as it is), every mass on the grid
+    // the orbit itself over one period (unpushed: GLO(λ) as it is), every mass on the grid: the
+    // linear motion, so that weights outside the set are seen to pass the stop
     const double period = 2 * std::numbers::pi / used.ratios.omega0;
     core::experiments::ChainSeriesSpec spec{chain, glo.state,           1, period, 900,
                                             0,     core::TrustMode::Off};
+    spec.free = true;
     const auto shared = std::make_shared<const core::experiments::ChainSeries>(
         core::experiments::chainSeries(spec, stop));
     if (stop.stop_requested()) return job;
@@ -173,8 +175,8 @@ Scene::Spec grazingSetsScene() {
     trace.yTitle = tr("u / d");
     trace.toolTip =
         tr("The stopped mass of GLO(λ) over its period T, the stop dashed: a grazing orbit stays "
-           "at or "
-           "below it and touches it at t = 0 and T.");
+           "at or below it and touches it at t = 0 and T; weights outside the set pass it (the "
+           "linear motion is drawn, as if the stop were not there).");
     trace.curveName = tr("u%1 / d").arg(chain.stopped());
     for (const core::experiments::ChainGridPoint& point : shared->grid)
       trace.curve.emplace_back(point.t / period, point.us / chain.gap);

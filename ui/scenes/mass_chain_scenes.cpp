@@ -69,7 +69,8 @@ QString stopInWords(core::ChainStop stop) {
           "undecided: a contact within double's rounding (grazelab-cli simulate --precision auto "
           "decides it in a higher precision)");
     case core::ChainStop::SearchBudget:
-      return tr("the contact search's budget");
+      return tr("the contact search's budget: no contact decided within 1000 of the slowest "
+                "periods (not commensurate: no period bounds the next one)");
     case core::ChainStop::Cancelled:
       return tr("cancelled");
   }
@@ -88,12 +89,21 @@ ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_toke
       case core::DesignOutcome::Designed:
         break;
       case core::DesignOutcome::NoPositiveDesign:
+        // a wall the design keeps as given can be what rules every design out: named then
         choice.problem =
-            tr("No chain with these masses has the frequencies in the ratio %1: every one of the "
-               "%2 solutions of the design equations is complex or has a spring ≤ 0. "
-               "Change the masses, or pick another resonance.")
-                .arg(resonanceName(given.harmonics))
-                .arg(designs.paths);
+            given.rightSpring > 0
+                ? tr("No chain with these masses and this right wall (k = %3) has the frequencies in "
+                     "the ratio %1: every one of the %2 solutions of the design equations is complex "
+                     "or has a spring ≤ 0. Change the masses or the wall's spring, or pick another "
+                     "resonance.")
+                      .arg(resonanceName(given.harmonics))
+                      .arg(designs.paths)
+                      .arg(number(given.rightSpring, 4))
+                : tr("No chain with these masses has the frequencies in the ratio %1: every one of "
+                     "the %2 solutions of the design equations is complex or has a spring ≤ 0. "
+                     "Change the masses, or pick another resonance.")
+                      .arg(resonanceName(given.harmonics))
+                      .arg(designs.paths);
         return choice;
       case core::DesignOutcome::Incomplete:
         choice.problem =

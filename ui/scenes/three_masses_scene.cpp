@@ -120,11 +120,13 @@ Scene::Spec threeMassesScene() {
     const core::ChainModes modes = core::chainModes(chain);
     const double slowest = 2 * std::numbers::pi / modes.omega.minCoeff();
     // (the error estimate of a chain with no common period shadows long searches in long
-    // double: its own scene asks for none, and says so)
+    // double: its own scene asks for none, and says so). The trace, the phase portrait and the
+    // animation span four slowest periods: six drew twenty fast swings into a plot a third of a
+    // projector wide, lines merging into a band in presentation's thick pen
     core::experiments::ChainSeriesSpec spec{chain,
                                             start,
                                             long(params.horizon),
-                                            6 * slowest,
+                                            4 * slowest,
                                             1500,
                                             given.shown(),
                                             self.plots().contains(PlotKind::ChainDetunedFlights)

@@ -220,6 +220,9 @@ void MainWindow::buildMenus() {
   add(view, tr("Play / &pause the motion"), {QKeySequence(Qt::Key_Space)},
       tr("Start or stop the animated chain (scenes that show it)"), [this] {
         if (m_chain) m_chain->setPlaying(!m_chain->playing());
+        for (SceneView* view : m_sceneViews) {
+          if (auto* moving = dynamic_cast<MassChainView*>(view)) moving->setPlaying(!moving->playing());
+        }
       });
   view->addSeparator();
   m_presentationAction = add(

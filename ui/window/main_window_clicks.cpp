@@ -35,7 +35,7 @@ void MainWindow::setGloWeightsFrom(QPointF value) {
   std::fill(weights.begin(), weights.end(), 0.0);
   weights[std::size_t(modes[1])] = x;
   if (modes.size() == 3) weights[std::size_t(modes[2])] = y;
-  weights[std::size_t(modes[0])] = 1 - x - y;
+  weights[std::size_t(modes[0])] = rounded(1 - x - y);  // not 0.41200000000000003
   if (weights == params().massChain.weights) return;
   setParams(next);
 }

@@ -36,7 +36,10 @@ void MainWindow::showStatus(const SimUpdate& update) {
     // a chain of N masses: its own run, told by its scene (no two-mass run is made)
     const SceneJob& job = update.request->job;
     QString text = job.ok ? job.chainStatus : tr("Not computed: %1").arg(job.message);
-    if (job.ok && job.chainTrust) {
+    if (job.ok && job.chainTrust && job.chainTrust->shadowEvents == 0 && job.chainTrust->verdict != core::Verdict::Unchecked) {
+      // a run with no event gives its shadow nothing to compare ("ok ... until t = 0" said nothing)
+      text += QStringLiteral(" · ") + tr("no error estimate (no contact to compare)");
+    } else if (job.ok && job.chainTrust) {
       text += QStringLiteral(" · ") + trustInWords(*job.chainTrust, job.chainTFinal);
     }
     if (!update.final || update.superseded) text += tr(" · computing…");
