@@ -5,9 +5,11 @@
 # library with its headers, a CMake package and a pkg-config file. A program of someone else's
 # (examples/core-consumer) builds against the installed package, and again from pkg-config, and
 # its contacts equal grazelab-cli's for the same start.
-# usage: install_test.sh BUILD_DIR SOURCE_DIR VERSION
+# The example is configured with this project's own generator and compiler (Ninja, g++): a fresh
+# Debian root set up by tools/setup-debian.sh has no `make` for CMake's default generator.
+# usage: install_test.sh BUILD_DIR SOURCE_DIR VERSION GENERATOR CXX_COMPILER
 set -eu
-build=$1 source=$2 version=$3
+build=$1 source=$2 version=$3 generator=$4 cxx=$5
 dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
 cmake --install "$build" --prefix "$dir/prefix" > "$dir/install.log"
 prefix=$dir/prefix
@@ -18,13 +20,13 @@ for f in include/grazelab/core/solver/simulate.h include/grazelab/core/model/lin
 done
 ls "$prefix"/lib/libgrazelab_core.a > /dev/null
 # the CMake package
-cmake -S "$source/examples/core-consumer" -B "$dir/example" -DCMAKE_PREFIX_PATH="$prefix" \
-      -DCMAKE_BUILD_TYPE=Release > "$dir/configure.log" || { cat "$dir/configure.log"; exit 1; }
+cmake -S "$source/examples/core-consumer" -B "$dir/example" -G "$generator" \
+      -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release > "$dir/configure.log" || { cat "$dir/configure.log"; exit 1; }
 cmake --build "$dir/example" > "$dir/build.log" || { cat "$dir/build.log"; exit 1; }
 "$dir/example/impacts" > "$dir/cmake.out"
 head -1 "$dir/cmake.out" | grep -q "^GrazeLab $version: 5 contacts" || { echo "FAIL: $(head -1 "$dir/cmake.out")"; exit 1; }
 # pkg-config
-PKG_CONFIG_PATH="$prefix/lib/pkgconfig" g++ -O2 "$source/examples/core-consumer/main.cpp" \
+PKG_CONFIG_PATH="$prefix/lib/pkgconfig" "$cxx" -O2 "$source/examples/core-consumer/main.cpp" \
   $(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs grazelab-core) -o "$dir/impacts-pc"
 "$dir/impacts-pc" > "$dir/pc.out"
 cmp "$dir/cmake.out" "$dir/pc.out" || { echo "FAIL: the pkg-config build differs"; exit 1; }

@@ -21,6 +21,7 @@ packages=(
   python3 python3-mpmath                    # the independent high-precision reference
   python3-dev pybind11-dev                  # the Python module (python/)
   python3-numpy python3-pytest              # its arrays and its tests
+  python3-venv                              # `pip install .` into a venv (README, its test)
 )
 
 missing=()
