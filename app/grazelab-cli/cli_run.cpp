@@ -158,7 +158,7 @@ const std::vector<Command>& commands() {
        },
        {}},
       {"report",
-       kChain + kStart + QStringList{"contacts", "t-end", "out", "methods", "quick"},
+       kChain + kStart + kMassChain + QStringList{"contacts", "t-end", "out", "methods", "quick"},
        false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          return runReportOrStability(true, parser, io, stop);
@@ -188,14 +188,14 @@ const std::vector<Command>& commands() {
          return ended(io, runFamily(parser, io, stop, error), error);
        },
        {}},
-      {"orbit", kChain + QStringList{"precision", "onepp", "format", "period", "impacts", "energy", "guess"}, false,
+      {"orbit", kChain + kMassChain + QStringList{"precision", "onepp", "format", "period", "impacts", "energy", "guess"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
          const int code = runOrbit(parser, io, stop, error);
          return code == kExitInvalidInput ? fail(io, error) : code;
        },
        {}},
-      {"modes", kChain + QStringList{"precision", "out", "max-impacts", "energy-range"}, false, writesFiles(runModes), {}},
+      {"modes", kChain + kMassChain + QStringList{"precision", "out", "max-impacts", "energy-range"}, false, writesFiles(runModes), {}},
       {"glo-set", kChain + kMassChain + QStringList{"precision", "directions", "out"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;

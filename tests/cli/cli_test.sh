@@ -60,15 +60,18 @@ takes = {
     "simulate": model + start + ["contacts", "t-end", "search-steps", "format", "trust",
                                  "sample-step", "sample-times", "masses", "springs", "right-spring",
                                  "stop-mass", "frequencies", "design-branch", "glo-weights"],
-    "report": model[:-1] + start + ["contacts", "t-end", "out", "methods", "quick"],
+    "report": model[:-1] + start + ["contacts", "t-end", "out", "methods", "quick", "masses", "springs",
+                                    "right-spring", "stop-mass", "frequencies", "design-branch"],
     "stability": ["out", "methods", "quick"],
     "map": model + start + ["contacts", "trust", "out", "x", "y", "threads", "shard", "picture", "masses",
                             "springs", "right-spring", "stop-mass", "frequencies", "design-branch", "glo-weights"],
     "merge": ["out"],
     "family": model + ["onepp", "out", "count", "masses", "springs", "right-spring", "stop-mass",
                        "frequencies", "design-branch"],
-    "orbit": model + ["onepp", "format", "period", "impacts", "energy", "guess"],
-    "modes": model + ["out", "max-impacts", "energy-range"],
+    "orbit": model + ["onepp", "format", "period", "impacts", "energy", "guess", "masses", "springs",
+                      "right-spring", "stop-mass", "frequencies", "design-branch"],
+    "modes": model + ["out", "max-impacts", "energy-range", "masses", "springs", "right-spring",
+                      "stop-mass", "frequencies", "design-branch"],
     "glo-set": model + ["masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch",
                         "directions", "out"],
 }
@@ -77,20 +80,28 @@ help_text = subprocess.run([cli, "--help"], capture_output=True, text=True).stdo
 for option in options:  # the table names every option the program has, and no other
     assert (f"--{option} " in help_text or f"-{option} " in help_text), option
 # an option a command takes may start real work: a refusal comes before any, so a run still
-# going after a second was not refused (killed; it runs in a folder of its own)
+# going long after a refusal would have come was not refused (killed; it runs in a folder of its
+# own). How long a refusal takes is measured here, eight at once as the probes run: under the
+# sanitizers on a loaded machine a refusal alone took more than a second
+import concurrent.futures, tempfile, time
+def refusal_seconds(_):
+    began = time.monotonic()
+    subprocess.run([cli, "info", "--quick", "1"], capture_output=True)
+    return time.monotonic() - began
+with concurrent.futures.ThreadPoolExecutor(8) as pool:
+    limit = max(1.0, 5 * max(pool.map(refusal_seconds, range(8))))
 def probe(case):
     command, option = case
     flag = f"-{option}" if len(option) == 1 else f"--{option}"
     args = [cli, command, flag] + ([] if option == "quick" else ["1"]) + (["part"] if command == "merge" else [])
     try:
-        run = subprocess.run(args, capture_output=True, text=True, timeout=1.0, cwd=work)
+        run = subprocess.run(args, capture_output=True, text=True, timeout=limit, cwd=work)
     except subprocess.TimeoutExpired:
         return None if option in takes[command] else f"{command} {flag}: not refused (still running)"
     refused = "not apply to" in run.stderr
     if refused != (option not in takes[command]) or (refused and run.returncode != 2):
         return f"{command} {flag}: exit {run.returncode}, {run.stderr.strip()[:120]}"
     return None
-import concurrent.futures, tempfile
 with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(8) as pool:
     wrong = [w for w in pool.map(probe, [(c, o) for c in takes for o in options]) if w]
 assert not wrong, "\n".join(wrong)

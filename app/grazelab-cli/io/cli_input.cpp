@@ -113,8 +113,9 @@ const OptionSpec kOptions[] = {
     {"gap", "Gap d between mass 2 at rest and the stop (default 1).", "value", "1"},
     {"k2", "Stiffness m1-m2 as given: no resonance imposed (excludes --branch).", "value", nullptr},
     {"branch", "k2 from the 1:2 design: upper (default) or lower.", "upper|lower", nullptr},
-    {"masses", "A chain of N masses m1,...,mN (info, simulate, glo-set): the whole chain, with "
-               "--springs; excludes --m1 --m2 --k1 --k2 --branch.", "m1,...,mN", nullptr},
+    {"masses", "A chain of N masses m1,...,mN (info, simulate, map, family, glo-set; orbit, modes "
+               "and report: two masses stopped on mass 2, --frequencies 2:1 being the 1:2 design): the "
+               "whole chain, with --springs; excludes --m1 --m2 --k1 --k2 --branch.", "m1,...,mN", nullptr},
     {"springs", "The springs k1,...,kN of --masses: wall to m1, then between neighbours.",
      "k1,...,kN", nullptr},
     {"right-spring", "With --masses: a spring k(N+1) from the last mass to a right wall "
@@ -229,7 +230,16 @@ core::ExactParameters exactParameters(const OptionValues& options) {
 }
 
 template <typename S>
+Parsed<ModelInput<S>> twoMassChain(const OptionValues& options);
+
+template <typename S>
 Parsed<ModelInput<S>> parseModel(const OptionValues& options) {
+  if (options.isSet("masses")) return twoMassChain<S>(options);
+  for (const char* chainOption : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch"}) {
+    if (options.isSet(chainOption)) {
+      return {std::nullopt, QStringLiteral("--%1 describes a chain given by --masses").arg(chainOption)};
+    }
+  }
   QString error;
   S values[4];
   const char* names[] = {"m1", "m2", "k1", "gap"};
@@ -455,6 +465,48 @@ Parsed<MassChainInput> parseMassChain(const OptionValues& options, std::stop_tok
   const auto problems = core::validate(chain);
   if (!problems.empty()) return {std::nullopt, fromStd(core::describe(problems))};
   return {MassChainInput{chain, std::nullopt}, {}};
+}
+
+// The chain of --masses for the commands that compute the note's chain (orbit, modes, report):
+// two masses, the stop on mass 2, no right wall. It is the chain the two-mass options would give:
+// --frequencies 2:1 is the 1:2 design of branch upper (--design-branch 1, the larger k2) or lower
+// (2), with the design's exact resonance; springs given, or designed for another ratio, are k1
+// and k2 as given. Every number is read from its text in S, as --m1 ... would be.
+template <typename S>
+Parsed<ModelInput<S>> twoMassChain(const OptionValues& options) {
+  // the shape first: a chain of more masses is not designed only to be refused
+  const qsizetype count = options.value("masses").split(',').size();
+  const bool stopOnTwo = !options.isSet("stop-mass") || options.value("stop-mass").trimmed() == "2";
+  const bool noWall = !options.isSet("right-spring") || core::parseScalar<double>(options.value("right-spring").toStdString()).value == 0.0;
+  if (count != 2 || !stopOnTwo || !noWall) {
+    return {std::nullopt, "this command computes the two-mass chain stopped on mass 2 (no right wall) for now: "
+                          "give --masses m1,m2, or the two-mass options"};
+  }
+  Parsed<MassChainInput> input = parseMassChain(options);
+  if (!input.value) return {std::nullopt, input.error};
+  QString error;
+  const std::vector<S> masses = *toList<S>("masses", options.value("masses"), error);
+  const S gap = *toNumber<S>("gap", options.value("gap"), error);
+  core::BasicModel<S> model{masses[0], masses[1], S(1), S(1), gap, std::nullopt};
+  if (options.isSet("springs")) model.k1 = toList<S>("springs", options.value("springs"), error)->front();
+  const std::optional<ChainDesignChoice>& design = input.value->design;
+  if (design && design->harmonics == std::vector<int>{2, 1}) {
+    const core::Branch branch = design->branch == 1 ? core::Branch::Upper : core::Branch::Lower;
+    const auto designed = core::designedModel(model.m1, model.m2, model.k1, model.gap, branch);
+    if (!designed) {
+      return {std::nullopt, QStringLiteral("--frequencies 2:1: no 1:2 design for the masses read in this precision "
+                                           "(m2/m1 > 9/16 there): give --precision double")};
+    }
+    model = *designed;
+  } else {
+    const Parsed<core::BasicMassChain<S>> inS = massChainIn<S>(options, *input.value);
+    if (!inS.value) return {std::nullopt, inS.error};
+    model.k2 = inS.value->springs[1];
+  }
+  if (const auto problems = core::validate(model); !problems.empty()) return {std::nullopt, fromStd(core::describe(problems))};
+  const core::ChainOrProblem<S> formed = core::makeChain(model);
+  if (!formed.chain) return {std::nullopt, fromStd(formed.problem)};
+  return {ModelInput<S>{model, *formed.chain}, {}};
 }
 
 template <typename S>

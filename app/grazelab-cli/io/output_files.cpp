@@ -41,15 +41,34 @@ std::optional<QString> parseOutputPrefix(const OptionValues& parser, const char*
     error = QStringLiteral("--out: '%1' is a folder; give a prefix such as %1/%2").arg(prefix, example);
     return std::nullopt;
   }
-  if (!QDir().mkpath(info.absolutePath())) {
+  // the folder is made when the first file is written (a refusal after this leaves none): here
+  // only whether it can be, from the nearest folder that exists
+  QFileInfo existing(info.absolutePath());
+  while (!existing.exists() && existing.absoluteFilePath() != existing.absolutePath()) {
+    existing = QFileInfo(existing.absolutePath());
+  }
+  if (!existing.isDir() || !existing.isWritable()) {
     error = QStringLiteral("--out: cannot make the folder %1").arg(info.absolutePath());
     return std::nullopt;
   }
   return prefix;
 }
 
+namespace {
+
+// the folder of an --out prefix is made when something is written into it: a command refused
+// before it writes leaves no empty folder behind
+bool makeFolderOf(const QString& path, QString& error) {
+  const QString folder = QFileInfo(path).absolutePath();
+  if (QDir().mkpath(folder)) return true;
+  error = QStringLiteral("cannot make the folder %1").arg(folder);
+  return false;
+}
+
+}  // namespace
+
 bool saveAtomically(const QString& path, const QByteArray& bytes, QString& error) {
-  return pictures::saveFileAtomically(path, bytes, &error);
+  return makeFolderOf(path, error) && pictures::saveFileAtomically(path, bytes, &error);
 }
 
 bool picturesAvailable() { return qobject_cast<QGuiApplication*>(QCoreApplication::instance()) != nullptr; }
@@ -70,7 +89,7 @@ bool savePngAndSvg(const QString& prefix, QSize size, const QString& title, cons
     draw(painter);
   }
   const pictures::PictureMetadata metadata{title, textKey, description};
-  return pictures::writePng(prefix + ".png", image, metadata, &error) &&
+  return makeFolderOf(prefix, error) && pictures::writePng(prefix + ".png", image, metadata, &error) &&
          pictures::writeSvg(prefix + ".svg", size, draw, metadata, &error);
 }
 

@@ -37,7 +37,8 @@ std::optional<FileOutput> openFileOutput(const OptionValues& parser, const Io& i
                                          const char* files, const char* name, QString& error);
 
 /// --out PREFIX of a command that writes PREFIX.* files (`files` names them in the message for a
-/// missing --out; `example` ends the suggested prefix): not a folder; its folder made if missing.
+/// missing --out; `example` ends the suggested prefix): not a folder, and in a folder that exists
+/// or can be made (it is made when the first file is written: a refusal leaves none behind).
 std::optional<QString> parseOutputPrefix(const OptionValues& parser, const char* files,
                                          const char* example, QString& error);
 
