@@ -73,6 +73,41 @@ void BM_SimulateToDocument(benchmark::State& state) {
 }
 BENCHMARK(BM_SimulateToDocument);
 
+// `simulate --glo 0.5 --perturb 0,0,0,-0.05 --contacts N --format summary --trust off`: the
+// command's streamed run against the core's run of the same request (issue 47: within 1.2x)
+OptionValues summaryRun(double contacts) {
+  return OptionValues(std::vector<std::pair<QString, QString>>{
+      {"glo", "0.5"}, {"perturb", "0,0,0,-0.05"}, {"contacts", QString::number(contacts, 'f', 0)},
+      {"format", "summary"}, {"trust", "off"}});
+}
+
+void BM_CoreRunSummaryStart(benchmark::State& state) {
+  auto run = *grazelab::cli::parseRun<double>(summaryRun(double(state.range(0)))).value;
+  for (auto _ : state) {
+    grazelab::core::BasicSimulator<double> simulator(run.model.model, run.request);
+    simulator.advance(std::numeric_limits<std::int64_t>::max(), {});
+    benchmark::DoNotOptimize(simulator.result().tFinal);
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_CoreRunSummaryStart)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
+void BM_SimulateSummary(benchmark::State& state) {
+  const OptionValues options = summaryRun(double(state.range(0)));
+  std::FILE* sink = std::fopen("/dev/null", "w");
+  for (auto _ : state) {
+    grazelab::cli::Io io;
+    io.out = sink;
+    io.messages = sink;
+    QString error;
+    benchmark::DoNotOptimize(grazelab::cli::runSimulate(options, {}, grazelab::core::TrustMode::Off, io,
+                                                        std::stop_token{}, error));
+  }
+  std::fclose(sink);
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_SimulateSummary)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();
