@@ -136,68 +136,88 @@ std::optional<BasicLeaving<S>> releaseLeaving(const BasicMassChain<S>& chain, co
 }  // namespace
 
 template <typename S>
-BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
-                          std::type_identity_t<S> tEnd, std::stop_token stop,
-                          const ChainEventSink<std::type_identity_t<S>>& sink,
-                          const ChainSampling<std::type_identity_t<S>>& sampling) {
+BasicChainSimulator<S>::BasicChainSimulator(const BasicMassChain<S>& chain, const BasicChainState<S>& start,
+                                            long maxContacts, std::type_identity_t<S> tEnd,
+                                            ChainEventSink<std::type_identity_t<S>> sink,
+                                            ChainSampling<std::type_identity_t<S>> sampling)
+    : m_chain(chain),
+      m_dynamics(chainDynamicsIn<S>(chain)),
+      m_maxContacts(maxContacts),
+      m_tEnd(tEnd),
+      m_slowest(twoPi<S>() / m_dynamics.omega.minCoeff()),
+      m_sink(std::move(sink)),
+      m_sampling(std::move(sampling)),
+      m_state(start) {
+  m_run.energyInitial = chainEnergy(m_chain, start);
+}
+
+template <typename S>
+bool BasicChainSimulator<S>::finish(ChainStop reason, const BasicChainState<S>& at, const S& when) {
+  m_run.stop = reason;
+  m_run.final = at;
+  m_run.tFinal = when;
+  m_run.energyFinal = chainEnergy(m_chain, at);
+  m_done = true;
+  return true;
+}
+
+template <typename S>
+void BasicChainSimulator<S>::record(EventType type, const BasicChainState<S>& at, const ChainVector<S>& vBefore,
+                                    const S& when) {
+  const int s = m_dynamics.stop;
+  if (m_sink) m_sink({when, type, at.u, vBefore, at.v[s]});
+  else m_run.events.push_back({when, type, at.u, vBefore, at.v[s]});
+  m_anyEvent = true;
+  m_lastType = type;
+  m_lastTime = when;
+  if (isContact(type)) ++m_run.contacts;
+  switch (type) {
+    case EventType::Impact: ++m_run.impacts; break;
+    case EventType::Grazing: ++m_run.grazings; break;
+    case EventType::Stick: ++m_run.sticks; break;
+    case EventType::Release: ++m_run.releases; break;
+  }
+}
+
+template <typename S>
+double BasicChainSimulator<S>::sampleTime(std::size_t index) const {
+  if (!m_sampling.times.empty()) {
+    return index < m_sampling.times.size() ? m_sampling.times[index] : std::numeric_limits<double>::infinity();
+  }
+  return double(index) * m_sampling.spacing;
+}
+
+// dense samples: the next one due, handed out over each piece of motion [from, until) (its end
+// too when the run ends there), `at(offset)` the piece's closed form
+template <typename S>
+template <typename At>
+void BasicChainSimulator<S>::samplePiece(const S& from, const S& until, bool withEnd, const At& at) {
+  if (!m_sampling.wanted()) return;
+  for (double due = sampleTime(m_sampleIndex); S(due) < until || (withEnd && S(due) == until);
+       due = sampleTime(++m_sampleIndex)) {
+    if (m_stop.stop_requested()) return;
+    if (S(due) >= from) m_sampling.sink(due, at(S(due) - from));
+  }
+}
+
+template <typename S>
+bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
   using std::abs;
   using State = BasicChainState<S>;
-  const BasicChainDynamics<S> dynamics = chainDynamicsIn<S>(chain);
+  if (m_done) return true;
+  m_stop = std::move(stop);
+  const BasicChainDynamics<S>& dynamics = m_dynamics;
+  const BasicMassChain<S>& chain = m_chain;
   const int s = dynamics.stop;
-  BasicChainRun<S> run;
-  run.energyInitial = chainEnergy(chain, start);
-  State state = start;
-  S t = 0;
-  const S slowest = twoPi<S>() / dynamics.omega.minCoeff();
-  const auto finish = [&](ChainStop reason, const State& at, const S& when) {
-    run.stop = reason;
-    run.final = at;
-    run.tFinal = when;
-    run.energyFinal = chainEnergy(chain, at);
-    return run;
-  };
-  // the last event, kept here as well: a streamed run holds no list to look back in
-  bool anyEvent = false;
-  EventType lastType = EventType::Impact;
-  S lastTime = 0;
-  const auto record = [&](EventType type, const State& at, const ChainVector<S>& vBefore, const S& when) {
-    if (sink) sink({when, type, at.u, vBefore, at.v[s]});
-    else run.events.push_back({when, type, at.u, vBefore, at.v[s]});
-    anyEvent = true;
-    lastType = type;
-    lastTime = when;
-    if (isContact(type)) ++run.contacts;
-    switch (type) {
-      case EventType::Impact: ++run.impacts; break;
-      case EventType::Grazing: ++run.grazings; break;
-      case EventType::Stick: ++run.sticks; break;
-      case EventType::Release: ++run.releases; break;
-    }
-  };
-  // dense samples: the next one due, handed out over each piece of motion [from, until) (its
-  // end too when the run ends there), `at(offset)` the piece's closed form
-  std::size_t sampleIndex = 0;
-  const auto sampleTime = [&](std::size_t index) {
-    if (!sampling.times.empty()) {
-      return index < sampling.times.size() ? sampling.times[index] : std::numeric_limits<double>::infinity();
-    }
-    return double(index) * sampling.spacing;
-  };
-  const auto samplePiece = [&](const S& from, const S& until, bool withEnd, const auto& at) {
-    if (!sampling.wanted()) return;
-    for (double due = sampleTime(sampleIndex); S(due) < until || (withEnd && S(due) == until);
-         due = sampleTime(++sampleIndex)) {
-      if (stop.stop_requested()) return;
-      if (S(due) >= from) sampling.sink(due, at(S(due) - from));
-    }
-  };
-  std::optional<BasicLeaving<S>> leaving;  // set when the flight starts at a release
-  // reused from flight to flight: no allocation for them once sized
-  BasicChainFlight<S> flight;
-  State at;
-  ChainVector<S> vBefore;
-  while (run.contacts < maxContacts) {
-    if (stop.stop_requested()) return finish(ChainStop::Cancelled, state, t);
+  const S tEnd = m_tEnd;
+  State& state = m_state;
+  S& t = m_t;
+  std::optional<BasicLeaving<S>>& leaving = m_leaving;
+  // the piece ends after `contactBudget` more contacts, at the top of the loop: the run then
+  // resumes there as if it had never stopped
+  const long pieceEnd = m_maxContacts - m_run.contacts > contactBudget ? m_run.contacts + contactBudget : m_maxContacts;
+  while (m_run.contacts < pieceEnd) {
+    if (m_stop.stop_requested()) return finish(ChainStop::Cancelled, state, t);
     // at rest on the stop, pressed into it (a touch, or the start): held until released
     const BasicStopForce<S> force = stopForce(chain, state);
     const bool onStop = state.u[s] == dynamics.gap && state.v[s] == 0;
@@ -205,16 +225,18 @@ BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<
     // decides, as at a release: it pulls the mass off (a flight leaving by its jerk, or its
     // fourth derivative where the jerk is 0 too) or presses it on (held)
     std::optional<BasicLeaving<S>> startLeaving;
-    if (onStop && !leaving && !(abs(force.value) > force.error)) startLeaving = stopLeaving(chain, state, anyEvent, !anyEvent && exactlyFlat(chain, state));
+    if (onStop && !leaving && !(abs(force.value) > force.error)) {
+      startLeaving = stopLeaving(chain, state, m_anyEvent, !m_anyEvent && exactlyFlat(chain, state));
+    }
     if (startLeaving && startLeaving->value < 0) leaving = startLeaving;
     if (onStop && !leaving && (force.value > force.error || (startLeaving && startLeaving->value > 0))) {
-      if (!anyEvent || lastType != EventType::Stick || lastTime != t) {
+      if (!m_anyEvent || m_lastType != EventType::Stick || m_lastTime != t) {
         record(EventType::Stick, state, state.v, t);
       }
       const BasicChainStuckPhase<S> phase = stuckPhase(chain, state);
       const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * slowestPeriod(phase));
       const BasicFirstZero<S> release = releaseOf(phase, horizon);
-      if (stop.stop_requested()) return finish(ChainStop::Cancelled, state, t);
+      if (m_stop.stop_requested()) return finish(ChainStop::Cancelled, state, t);
       const bool past = tEnd > 0 && (release.kind == ZeroKind::Budget || t + release.t > tEnd);
       const auto stuckAt = [&](const S& offset) { return stuckStateAt(phase, offset); };
       if (past) {
@@ -245,20 +267,20 @@ BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<
       state = reflected;
       continue;
     }
-    flightInto(dynamics, state, flight);
-    const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * slowest);
-    const BasicChainContact<S> contact = firstContact(dynamics, flight, horizon, 1'000'000, leaving);
+    flightInto(dynamics, state, m_flight);
+    const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * m_slowest);
+    const BasicChainContact<S> contact = firstContact(dynamics, m_flight, horizon, 1'000'000, leaving);
     const std::optional<BasicLeaving<S>> flightLeaving = leaving;
     leaving.reset();
     const bool past = tEnd > 0 && (contact.kind == ChainContactKind::None || contact.kind == ChainContactKind::Budget ||
                                    t + contact.t > tEnd);
-    const auto flightAt = [&](const S& offset) { return stateAt(dynamics, flight, offset); };
+    const auto flightAt = [&](const S& offset) { return stateAt(dynamics, m_flight, offset); };
     if (past) {
       samplePiece(t, S(tEnd), true, flightAt);
-      return finish(ChainStop::TimeLimit, stateAt(dynamics, flight, tEnd - t), tEnd);
+      return finish(ChainStop::TimeLimit, stateAt(dynamics, m_flight, tEnd - t), tEnd);
     }
     if (contact.kind == ChainContactKind::None) {
-      samplePiece(t, S(t + slowest), true, flightAt);  // linear forever: one slowest period drawn
+      samplePiece(t, S(t + m_slowest), true, flightAt);  // linear forever: one slowest period drawn
       return finish(ChainStop::NoFurtherContact, state, t);
     }
     if (contact.kind == ChainContactKind::Budget) {
@@ -283,34 +305,46 @@ BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<
       continue;
     }
     samplePiece(t, S(t + contact.t), false, flightAt);
-    stateInto(dynamics, flight, contact.t, at);
-    vBefore = at.v;
+    stateInto(dynamics, m_flight, contact.t, m_at);
+    m_vBefore = m_at.v;
     const S when = t + contact.t;
-    at.u[s] = dynamics.gap;  // on the stop exactly: the next flight starts on it
+    m_at.u[s] = dynamics.gap;  // on the stop exactly: the next flight starts on it
     if (contact.kind == ChainContactKind::Impact) {
-      at.v[s] = -at.v[s];
-      record(EventType::Impact, at, vBefore, when);
+      m_at.v[s] = -m_at.v[s];
+      record(EventType::Impact, m_at, m_vBefore, when);
     } else {
       // at rest on the stop: pulled away (grazing) or pressed into it (a stick)
-      at.v[s] = 0;
-      const BasicStopForce<S> pressed = stopForce(chain, at);
+      m_at.v[s] = 0;
+      const BasicStopForce<S> pressed = stopForce(chain, m_at);
       if (pressed.value > pressed.error) {
-        record(EventType::Stick, at, vBefore, when);
+        record(EventType::Stick, m_at, m_vBefore, when);
       } else if (pressed.value < -pressed.error) {
-        record(EventType::Grazing, at, vBefore, when);
+        record(EventType::Grazing, m_at, m_vBefore, when);
       } else {
-        return finish(ChainStop::Undecided, at, when);
+        return finish(ChainStop::Undecided, m_at, when);
       }
     }
-    state = at;
+    state = m_at;
     t = when;
   }
+  if (m_run.contacts < m_maxContacts) return false;  // the piece's contacts made: more to come
   // the last event's state, when a sample falls on it
   samplePiece(t, t, true, [&](const S&) { return state; });
   return finish(ChainStop::ContactLimit, state, t);
 }
 
+template <typename S>
+BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+                          std::type_identity_t<S> tEnd, std::stop_token stop,
+                          const ChainEventSink<std::type_identity_t<S>>& sink,
+                          const ChainSampling<std::type_identity_t<S>>& sampling) {
+  BasicChainSimulator<S> simulator(chain, start, maxContacts, tEnd, sink, sampling);
+  simulator.advance(maxContacts, std::move(stop));
+  return simulator.takeRun();
+}
+
 #define GRAZELAB_INSTANTIATE(S)                                                                                  \
+  template class BasicChainSimulator<S>;                                                                                 \
   template S chainEnergy<S>(const BasicMassChain<S>&, const BasicChainState<S>&);                                         \
   template BasicChainRun<S> runChain<S>(const BasicMassChain<S>&, const BasicChainState<S>&, long, std::type_identity_t<S>, \
                                         std::stop_token, const ChainEventSink<S>&, const ChainSampling<S>&);

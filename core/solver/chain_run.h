@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <optional>
 #include <stop_token>
 #include <type_traits>
 #include <vector>
@@ -73,6 +74,63 @@ struct ChainSampling {
 /// The energy 1/2 v^T M v + 1/2 u^T K u of a chain's state.
 template <typename S>
 S chainEnergy(const BasicMassChain<S>& chain, const BasicChainState<S>& state);
+
+/// A run of a chain of N masses in pieces, for callers that show it as it grows (the explorer's
+/// worker): each advance() makes at most a given number of more contacts and the run grows in
+/// place; runChain is one advance to the end. The pieces change nothing: a run advanced in any
+/// pieces is the run made at once, bit for bit (the loop stops and resumes between flights).
+template <typename S>
+class BasicChainSimulator {
+ public:
+  /// As runChain's arguments (below); the chain is copied, `sink` and `sampling` are kept.
+  BasicChainSimulator(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+                      std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
+                      ChainSampling<std::type_identity_t<S>> sampling = {});
+
+  /// Runs until `contactBudget` more contacts were made, the run is over, or `stop` is requested
+  /// (then over: ChainStop::Cancelled). Returns true when the run is over.
+  bool advance(long contactBudget, std::stop_token stop = {});
+
+  bool done() const { return m_done; }
+  /// The run so far: its events (none kept with a sink) and counts; `final`, `tFinal`,
+  /// `energyFinal` and `stop` once it is over.
+  const BasicChainRun<S>& run() const { return m_run; }
+  BasicChainRun<S> takeRun() { return std::move(m_run); }
+  /// Where the run stands: the time of its last event (or the start), in [0, the end].
+  const S& time() const { return m_t; }
+
+ private:
+  /// ends the run there, for `reason`; true (advance's answer)
+  bool finish(ChainStop reason, const BasicChainState<S>& at, const S& when);
+  void record(EventType type, const BasicChainState<S>& at, const ChainVector<S>& vBefore, const S& when);
+  double sampleTime(std::size_t index) const;
+  template <typename At>
+  void samplePiece(const S& from, const S& until, bool withEnd, const At& at);
+
+  BasicMassChain<S> m_chain;
+  BasicChainDynamics<S> m_dynamics;
+  long m_maxContacts;
+  S m_tEnd;
+  S m_slowest;
+  ChainEventSink<S> m_sink;
+  ChainSampling<S> m_sampling;
+  std::stop_token m_stop;
+  BasicChainRun<S> m_run;
+  BasicChainState<S> m_state;
+  S m_t = 0;
+  bool m_done = false;
+  // the last event, kept here as well: a streamed run holds no list to look back in
+  bool m_anyEvent = false;
+  EventType m_lastType = EventType::Impact;
+  S m_lastTime = 0;
+  std::size_t m_sampleIndex = 0;            ///< the next sample due
+  std::optional<BasicLeaving<S>> m_leaving;  ///< set when the flight starts at a release
+  // reused from flight to flight: no allocation for them once sized
+  BasicChainFlight<S> m_flight;
+  BasicChainState<S> m_at;
+  ChainVector<S> m_vBefore;
+};
+using ChainSimulator = BasicChainSimulator<double>;
 
 /// An exact run of a usable chain (validate(chain) empty) from `start` (u_s <= d): closed-form
 /// flights in the chain's modes, each contact by firstContact (certified: none missed), elastic

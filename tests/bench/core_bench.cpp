@@ -6,10 +6,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "core/model/chain.h"
 #include "core/solver/contact.h"
+#include "core/experiments/chain_series.h"
 #include "core/experiments/run.h"
 #include "core/model/linear_modes.h"
 #include "core/model/chain_design.h"
@@ -220,6 +222,24 @@ void ChainRunContacts(benchmark::State& state) {
   state.SetItemsProcessed(contacts);
 }
 BENCHMARK(ChainRunContacts)->Arg(0)->Arg(3)->Arg(10)->Arg(100)->Unit(benchmark::kMillisecond);
+
+// The explorer's scene "A string of eight masses" as its job computes it: eight equal masses on
+// equal springs, the stop on mass 5, the slowest mode with its top on the stop pushed by 1e-4;
+// 100 contacts with the trace's grid of 1500 points over four slowest periods, no estimate
+// (core::experiments::chainSeries, items = contacts)
+void EightMassesScene(benchmark::State& state) {
+  core::experiments::ChainSeriesSpec spec;
+  spec.chain = core::MassChain{std::vector<double>(8, 1.0), std::vector<double>(8, 1.0), 0, 5, 1.0};
+  const core::ChainModes modes = core::chainModes(spec.chain);
+  spec.start = core::ChainState{modes.P.col(7) / modes.P(4, 7), Eigen::VectorXd::Zero(8)};
+  spec.start.v[4] = -1e-4;
+  spec.contacts = 100;
+  spec.window = 4 * 2 * std::numbers::pi / modes.omega.minCoeff();
+  spec.trust = core::TrustMode::Off;
+  for (auto _ : state) benchmark::DoNotOptimize(core::experiments::chainSeries(spec).run.tFinal);
+  state.SetItemsProcessed(state.iterations() * spec.contacts);
+}
+BENCHMARK(EightMassesScene)->Unit(benchmark::kMillisecond);
 
 // Periodic orbits (issue 22): one orbit with its monodromy and checks; the continuation of
 // the 1IPP family (items = orbits); the atlas up to K impacts (the budgets: K = 2 under 10 s,

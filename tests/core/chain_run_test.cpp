@@ -405,6 +405,83 @@ TEST(ChainRun, AStreamedRunIsTheKeptRun) {
   EXPECT_EQ(online.stateError, whole.stateError);
 }
 
+// a run advanced in pieces (the explorer's worker shows each) is the run made at once, bit for
+// bit, events and samples alike: pieces of 1, 3 and 17 contacts on a designed 3:2:1 chain near
+// grazing, a chain that sticks and releases (stop on an interior mass), eight masses on a
+// string stopped inside it, a right wall, binary128; a run that ends before its contacts
+// (a time limit) ends the same way
+template <typename S>
+void expectPiecesAreTheWhole(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long contacts, S tEnd,
+                             const std::string& name) {
+  using Sampled = std::vector<std::pair<double, BasicChainState<S>>>;
+  const auto samplingInto = [](Sampled& into) {
+    return ChainSampling<S>{0.05, {}, [&into](double t, const BasicChainState<S>& state) { into.emplace_back(t, state); }};
+  };
+  Sampled wholeSamples;
+  const BasicChainRun<S> whole = runChain(chain, start, contacts, tEnd, {}, {}, samplingInto(wholeSamples));
+  for (long piece : {1L, 3L, 17L}) {
+    Sampled samples;
+    BasicChainSimulator<S> simulator(chain, start, contacts, tEnd, {}, samplingInto(samples));
+    long pieces = 0;
+    while (!simulator.advance(piece)) {
+      ++pieces;
+      ASSERT_EQ(simulator.run().contacts, piece * pieces) << name;
+      ASSERT_FALSE(simulator.done());
+    }
+    const BasicChainRun<S>& run = simulator.run();
+    ASSERT_EQ(run.events.size(), whole.events.size()) << name << ", pieces of " << piece;
+    for (std::size_t k = 0; k < run.events.size(); ++k) {
+      ASSERT_TRUE(run.events[k].t == whole.events[k].t && run.events[k].type == whole.events[k].type &&
+                  run.events[k].u == whole.events[k].u && run.events[k].vBefore == whole.events[k].vBefore &&
+                  run.events[k].vAfter == whole.events[k].vAfter)
+          << name << ", pieces of " << piece << ": event " << k;
+    }
+    EXPECT_EQ(run.stop, whole.stop) << name;
+    EXPECT_TRUE(run.tFinal == whole.tFinal && run.final.u == whole.final.u && run.final.v == whole.final.v) << name;
+    EXPECT_TRUE(run.energyFinal == whole.energyFinal) << name;
+    ASSERT_EQ(samples.size(), wholeSamples.size()) << name;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      ASSERT_TRUE(samples[k].first == wholeSamples[k].first && samples[k].second.u == wholeSamples[k].second.u &&
+                  samples[k].second.v == wholeSamples[k].second.v)
+          << name << ", sample " << k;
+    }
+    EXPECT_TRUE(simulator.advance(5)) << "a run over stays over";
+    EXPECT_EQ(simulator.run().events.size(), whole.events.size());
+  }
+}
+
+TEST(ChainRun, ARunInPiecesIsTheWholeRun) {
+  {
+    const MassChain chain = designed({1.0, 0.2, 0.05}, {3, 2, 1});
+    ChainState start{Eigen::Vector3d(0.2, 0.3, 0.999), Eigen::Vector3d(0.0, 0.0, -1e-3)};
+    expectPiecesAreTheWhole(chain, start, 60, 0.0, "3:2:1 near grazing");
+  }
+  {
+    const MassChain chain{{1.0, 0.7, 0.4}, {1.0, 0.8, 0.6}, 0, 2, 1.0};
+    const ChainState start{Eigen::Vector3d(1.4, 1.0, 1.3), Eigen::Vector3d(0.1, 0.0, -0.2)};
+    const ChainRun run = runChain(chain, start, 40);
+    ASSERT_GT(run.sticks, 0);
+    ASSERT_GT(run.releases, 0);
+    expectPiecesAreTheWhole(chain, start, 40, 0.0, "sticks on mass 2");
+    expectPiecesAreTheWhole(chain, start, 40, run.events[20].t, "sticks, ended by time");
+    expectPiecesAreTheWhole(chainCast<Quad>(chain), BasicChainState<Quad>{start.u.cast<Quad>(), start.v.cast<Quad>()},
+                            12, Quad(0), "sticks, binary128");
+  }
+  {
+    MassChain chain{std::vector<double>(8, 1.0), std::vector<double>(8, 1.0), 0, 5, 1.0};
+    ChainState start{Eigen::VectorXd::Zero(8), Eigen::VectorXd::Zero(8)};
+    const ChainModes modes = chainModes(chain);
+    start.u = modes.P.col(7) / modes.P(4, 7);  // the slowest mode with its top on the stop
+    start.v[4] = -1e-4;
+    expectPiecesAreTheWhole(chain, start, 40, 0.0, "eight masses, stop on 5");
+  }
+  {
+    const MassChain chain{{1.0, 2.0}, {1.5, 0.7}, 0.9, 1, 0.5};
+    const ChainState start{Eigen::Vector2d(0.1, -0.3), Eigen::Vector2d(0.8, 0.2)};
+    expectPiecesAreTheWhole(chain, start, 50, 0.0, "right wall, stop on 1");
+  }
+}
+
 // dense samples: on the grid asked for, up to the run's end; each keeps the energy; on the
 // stop during a stuck phase and never past it; the samples obey M u'' = -K u away from the
 // events (a central difference of samples h apart, the stopped mass included, where it flies);
