@@ -137,10 +137,17 @@ _START_DOC = """    glo: start on GLO_lambda data, this lambda (default 0.5 when
 """
 
 
+_TWO_MASS_CHAIN_DOC = """    masses, springs, right_spring, stop_mass, frequencies, design_branch: the chain as in ``info``:
+        two masses stopped on mass 2 for now, ``frequencies=(2, 1)`` being the 1:2 design
+        (``design_branch`` 1 upper, 2 lower); the same bits as the two-mass keywords.
+"""
+
+
 def _documented(function):
     """Fills a docstring's shared keyword paragraphs: {chain}, {precision}, {start}."""
     function.__doc__ = (function.__doc__.replace("{chain}", _CHAIN_DOC)
-                        .replace("{precision}", _PRECISION_DOC).replace("{start}", _START_DOC))
+                        .replace("{precision}", _PRECISION_DOC).replace("{start}", _START_DOC)
+                        .replace("{two_mass_chain}", _TWO_MASS_CHAIN_DOC))
     return function
 
 
@@ -227,6 +234,19 @@ def _mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, d
             raise TypeError("frequencies: a sequence of whole numbers n1, ..., nN (fastest first)")
         options["frequencies"] = ":".join(str(int(n)) for n in frequencies)
     return options
+
+
+def _chain_keywords(options, two_mass, masses, springs, right_spring, stop_mass, frequencies, design_branch):
+    """`options` with the chain: the two-mass keywords `two_mass`, or the chain given by masses
+    (orbit, modes and report: two masses stopped on mass 2, the command line says so otherwise)."""
+    if masses is None:
+        if any(value is not None for value in (springs, right_spring, stop_mass, frequencies, design_branch)):
+            raise ValueError("springs, right_spring, stop_mass, frequencies and design_branch describe a chain "
+                             "given by masses")
+        return dict(options, **two_mass)
+    chain = _mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, design_branch,
+                                {name: value for name, value in two_mass.items() if name != "gap"})
+    return dict(options, gap=two_mass["gap"], **chain)
 
 
 @_documented
@@ -359,7 +379,10 @@ def _simulated(result, decimals):
 def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
           gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto",
           onepp: _Optional[float] = None, impacts: _Optional[int] = None, energy: _Optional[float] = None,
-          guess: _Optional[_Sequence[float]] = None) -> Result:
+          guess: _Optional[_Sequence[float]] = None, masses: _Optional[_Sequence[float]] = None,
+          springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
+          stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
+          design_branch: _Optional[int] = None) -> Result:
     """One periodic impacting orbit with its exact multipliers (``grazelab-cli orbit``): the
     1IPP orbit of period ``onepp``, or the orbit with ``impacts`` impacts per period at energy
     ``energy`` found by Newton from ``guess``. Raises ValueError when Newton does not converge
@@ -372,9 +395,10 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
     impacts: impacts per period K of the orbit sought.
     energy: its energy E [energy].
     guess: (u1, v1), a guess of the orbit's point just after an impact on H.
-"""
-    options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
-                   impacts=impacts, energy=energy, guess=guess)
+{two_mass_chain}"""
+    options = _chain_keywords(dict(precision=precision, impacts=impacts, energy=energy, guess=guess),
+                              dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch),
+                              masses, springs, right_spring, stop_mass, frequencies, design_branch)
     if onepp is not None:
         options.update(onepp=True, period=onepp)
     result, _, _, _ = _command("orbit", options, document=True)
@@ -535,7 +559,10 @@ def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
 def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
           gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto",
           max_impacts: int = 4, energy_range: _Union[str, _Sequence[float], None] = None,
-          out=None, progress: _Optional[_Progress] = None) -> Result:
+          out=None, progress: _Optional[_Progress] = None, masses: _Optional[_Sequence[float]] = None,
+          springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
+          stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
+          design_branch: _Optional[int] = None) -> Result:
     """The atlas of the chain's periodic impacting families (``grazelab-cli modes``). Returns
     the JSON's fields; each family of ``families`` has ``table``, its rows as a structured
     array with the CSV's columns.
@@ -546,9 +573,10 @@ def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
         1/100 to 10000 times the grazing end's energy).
     out: a prefix: the command line's files are kept there (without pictures).
     progress: ``progress(fraction, text)``, called on the calling thread.
-"""
-    options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
-                   max_impacts=max_impacts, energy_range=energy_range)
+{two_mass_chain}"""
+    options = _chain_keywords(dict(precision=precision, max_impacts=max_impacts, energy_range=energy_range),
+                              dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch),
+                              masses, springs, right_spring, stop_mass, frequencies, design_branch)
     _, held = _command("modes", dict(options, out=out), progress, keep_files=True)
     files = _Files(out, "modes", held)
     result = _convert.parse_json(files.read(".json").decode("utf-8"), exact_decimals=precision in ("long", "quad"))
@@ -601,7 +629,10 @@ def report(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
            state: _Optional[_Sequence[float]] = None, perturb: _Optional[_Sequence[float]] = None,
            contacts: _Optional[int] = None, t_end: _Optional[float] = None,
            methods: _Union[str, _Sequence[str], None] = None, quick: bool = False, out=None,
-           progress: _Optional[_Progress] = None) -> Result:
+           progress: _Optional[_Progress] = None, masses: _Optional[_Sequence[float]] = None,
+           springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
+           stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
+           design_branch: _Optional[int] = None) -> Result:
     """Every comparison method against the exact solver, error against run time
     (``grazelab-cli report``). Returns ``table`` (results.csv as a structured array),
     ``markdown`` (report.md) and ``log``; with ``out=DIR`` the files stay there (the module
@@ -614,10 +645,11 @@ def report(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
     quick: fewer settings and runs (seconds instead of minutes).
     out: the directory to write into (created if missing).
     progress: ``progress(fraction, text)``, called on the calling thread.
-"""
-    options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, glo=glo, onepp=onepp,
-                   state=state, perturb=perturb, contacts=contacts, t_end=t_end, methods=methods,
-                   quick=quick)
+{two_mass_chain}"""
+    options = _chain_keywords(dict(glo=glo, onepp=onepp, state=state, perturb=perturb, contacts=contacts,
+                                   t_end=t_end, methods=methods, quick=quick),
+                              dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch),
+                              masses, springs, right_spring, stop_mass, frequencies, design_branch)
     return _directory_command("report", "results.csv", out, progress, options)
 
 
