@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "core/solver/chain_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -213,8 +214,10 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
   State& state = m_state;
   S& t = m_t;
   std::optional<BasicLeaving<S>>& leaving = m_leaving;
-  // the piece ends after `contactBudget` more contacts, at the top of the loop: the run then
-  // resumes there as if it had never stopped
+  // the piece ends after `contactBudget` more contacts (at least one: a caller looping on an
+  // empty budget would never see the run end), at the top of the loop: the run then resumes
+  // there as if it had never stopped
+  contactBudget = std::max(contactBudget, 1L);
   const long pieceEnd = m_maxContacts - m_run.contacts > contactBudget ? m_run.contacts + contactBudget : m_maxContacts;
   while (m_run.contacts < pieceEnd) {
     if (m_stop.stop_requested()) return finish(ChainStop::Cancelled, state, t);
