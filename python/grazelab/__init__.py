@@ -144,7 +144,7 @@ _TWO_MASS_CHAIN_DOC = """    masses, springs, right_spring, stop_mass, frequenci
 
 
 def _documented(function):
-    """Fills a docstring's shared keyword paragraphs: {chain}, {precision}, {start}."""
+    """Fills a docstring's shared keyword paragraphs: {chain}, {precision}, {start}, {two_mass_chain}."""
     function.__doc__ = (function.__doc__.replace("{chain}", _CHAIN_DOC)
                         .replace("{precision}", _PRECISION_DOC).replace("{start}", _START_DOC)
                         .replace("{two_mass_chain}", _TWO_MASS_CHAIN_DOC))
