@@ -90,7 +90,7 @@ py::dtype eventDtype() {
   column("type", "<U8", offsetof(EventRow, type));
   column("u1", "<f8", offsetof(EventRow, u1));
   column("u2", "<f8", offsetof(EventRow, u2));
-  column("v1", "<f8", offsetof(EventRow, v1));
+  column("v1_pre", "<f8", offsetof(EventRow, v1Pre));
   column("v2_pre", "<f8", offsetof(EventRow, v2Pre));
   column("v2_post", "<f8", offsetof(EventRow, v2Post));
   py::dict description;

@@ -54,7 +54,7 @@ def main():
     for g in range(groups):
         part = slice(g * size, (g + 1) * size)
         # the map comes round again after about 40 contacts: earlier contacts drawn on top
-        right.plot(events["u1"][part], events["v1"][part], "s", markersize=4, color=colours[g],
+        right.plot(events["u1"][part], events["v1_pre"][part], "s", markersize=4, color=colours[g],
                    zorder=3 + groups - g, label=f"contacts {g * size}–{min((g + 1) * size, len(events)) - 1}")
     start = run.initial.state
     right.plot(start.u1, start.v1, "s", markersize=9, markerfacecolor="none", color="black",

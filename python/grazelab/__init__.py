@@ -262,8 +262,9 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
              design_branch: _Optional[int] = None, glo_weights: _Optional[_Sequence[float]] = None) -> Result:
     """One exact run (``grazelab-cli simulate``). Returns the JSON's fields (model, initial,
     final, stop_reason, contacts, energy, accuracy, trust, precision, timing) with ``events`` a
-    structured array of the columns t, type, u1, u2, v1, v2_pre, v2_post (the arrays the core
-    filled, no copy) and ``notes`` the command line's notes. A run in long double or binary128
+    structured array of the columns t, type, u1, u2, v1_pre, v2_pre, v2_post (the arrays the core
+    filled, no copy; for N masses u1..uN, v1_pre..vN_pre and the stopped mass's v<s>_post, the
+    command line's CSV columns) and ``notes`` the command line's notes. A run in long double or binary128
     also has ``events_decimal``: each numeric column as the exact decimal text the command line
     writes, and ``decimal``: the JSON's numbers as text. Warns (GrazeLabWarning) when the run's
     own error estimate says unreliable.
@@ -286,11 +287,11 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
     masses, springs, right_spring, stop_mass, frequencies, design_branch: a chain of N masses, as
         in ``info`` (then the two-mass keywords stay at their defaults). Its run starts from
         ``state`` = (u1, ..., uN, v1, ..., vN) or from ``glo_weights``, plus ``perturb`` (2N
-        numbers), in double, with ``contacts`` and ``t_end``; the result has ``chain`` (with the
-        common ``period`` of a commensurate chain), ``initial``, ``events`` (each with t, type, u,
-        v_pre and the stopped mass's v_post; None with events=False, which holds none and so
-        takes any number of contacts), ``final``, ``stop_reason``, ``message``,
-        ``contacts``, ``energy``, ``trust`` (the run again one precision up, compared event
+        numbers), with ``contacts`` and ``t_end``; the result has ``chain`` (with the
+        common ``period`` of a commensurate chain), ``initial``, ``events`` (the structured
+        array above; None with events=False, which holds none and so takes any number of
+        contacts), ``final`` (t, u1..uN, v1..vN), ``stop_reason``, ``message``,
+        ``contacts`` (total and by type), ``energy``, ``trust`` (the run again one precision up, compared event
         by event: the whole run with trust="full", its first contacts with "auto") and ``precision``; or from ``onepp`` = T, the 1IPP orbit of that period
         right after its impact; ``samples`` a structured array (t, u1..uN, v1..vN). No
         ``glo``: ``glo_weights`` instead; sticks hold the stopped mass until their release, as for
@@ -308,14 +309,8 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         if samples is not None:
             grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
             options["sample_times" if grid else "sample_step"] = samples
-        result, _, _, _ = _command("simulate", options, progress, document=True, discard_events=not events)
-        if result.get("samples") is not None:
-            # (t, u1..uN, v1..vN) as a structured array, as for two masses
-            n = len(result["chain"]["masses"])
-            names = ["t"] + [f"u{i + 1}" for i in range(n)] + [f"v{i + 1}" for i in range(n)]
-            rows = [(p["t"], *p["u"], *p["v"]) for p in result["samples"]]
-            result["samples"] = _np.array(rows, dtype=[(name, "f8") for name in names])
-        return result
+        result, lines, _, _ = _command("simulate", options, progress, document=True, discard_events=not events)
+        return _chain_simulated(result, lines)
     if frequencies is not None or design_branch is not None or springs is not None or glo_weights is not None:
         raise ValueError("springs, frequencies, design_branch and glo_weights describe a chain given by masses")
     if (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS and contacts <= MAX_EVENTS
@@ -361,11 +356,39 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
     return _simulated(result, decimals)
 
 
+def _chain_simulated(result, lines):
+    """A run of a chain given by masses as simulate returns it: its events and samples as
+    structured arrays with the columns of the command line's CSV (the same names as two masses
+    give: t, type, u1..uN, v1_pre..vN_pre, v<s>_post; samples t, u1..uN, v1..vN)."""
+    n = len(result["chain"]["masses"])
+    s = result["chain"]["stop_mass"]
+    numeric = ([f"u{i + 1}" for i in range(n)] + [f"v{i + 1}_pre" for i in range(n)] + [f"v{s}_post"])
+    if result["events"] is not None:
+        events = result["events"]
+        table = _np.empty(len(events), dtype=[("t", "f8"), ("type", "<U8")] + [(name, "f8") for name in numeric])
+        for name in ("t", "type", *numeric):
+            table[name] = [event[name] for event in events]
+        result["events"] = table
+        if "decimal" in result:
+            written = result["decimal"].pop("events")
+            result["events_decimal"] = {name: _np.array([event[name] for event in written], dtype=str)
+                                        for name in ("t", *numeric)}
+    if result.get("samples") is not None:
+        columns = result["samples"]
+        names = ["t"] + [f"u{i + 1}" for i in range(n)] + [f"v{i + 1}" for i in range(n)]
+        table = _np.empty(len(columns["t"]), dtype=[(name, "f8") for name in names])
+        for name in names:
+            table[name] = columns[name]
+        result["samples"] = table
+    result["notes"] = _notes(lines)
+    return result
+
+
 def _simulated(result, decimals):
     """A two-mass run's result (its document with its events and notes) and the events' decimal
     text (None in double), as simulate returns it."""
     if decimals is not None:
-        columns = ("t", "u1", "u2", "v1", "v2_pre", "v2_post")
+        columns = ("t", "u1", "u2", "v1_pre", "v2_pre", "v2_post")
         text = _np.array(decimals, dtype=str).reshape(-1, len(columns))
         result["events_decimal"] = {name: text[:, i] for i, name in enumerate(columns)}
         result["decimal"].pop("events", None)

@@ -429,7 +429,7 @@ class FilesTest : public QObject {
     for (qsizetype i = 0; i < printed.size(); ++i) {
       const QJsonObject event = printed[i].toObject();
       QCOMPARE(event.value(QStringLiteral("t")).toDouble(), series->run.events[std::size_t(i)].t);
-      QCOMPARE(event.value(QStringLiteral("u")).toArray()[0].toDouble(), series->run.events[std::size_t(i)].u[0]);
+      QCOMPARE(event.value(QStringLiteral("u1")).toDouble(), series->run.events[std::size_t(i)].u[0]);
     }
   }
 

@@ -269,6 +269,12 @@ def check(cli, chain, state, contacts, precision=None, complete=False):
     """The CLI's run against the reference, event by event; with `complete`, a run that ends
     before its contacts (undecided, say) is a problem too."""
     printed = cli_run(cli, chain, state, contacts, precision)
+    count = len(chain["masses"])
+    for event in printed["events"]:  # the csv's columns u1..uN, v1_pre..vN_pre, v<s>_post as lists
+        event["u"] = [event[f"u{i + 1}"] for i in range(count)]
+        event["v_pre"] = [event[f"v{i + 1}_pre"] for i in range(count)]
+        event["v_post"] = event[f"v{chain['stop'] + 1}_post"]
+    contacts_made = printed["contacts"]["total"]
     if chain.get("ratios"):
         chain["springs"] = printed["chain"]["springs"]
     chain["modes"] = modes(chain["masses"], chain["springs"], chain["right_spring"])
@@ -277,8 +283,8 @@ def check(cli, chain, state, contacts, precision=None, complete=False):
     # heavy soft masses moves at 1e-8, a light stiff one at 1e8
     speed_scale = float(chain["gap"] * max(chain["modes"][0]))
     problems = []
-    if complete and printed["contacts"] < contacts:
-        problems.append(f"ended by {printed['stop_reason']} after {printed['contacts']} contacts of {contacts}")
+    if complete and contacts_made < contacts:
+        problems.append(f"ended by {printed['stop_reason']} after {contacts_made} contacts of {contacts}")
     n = len(chain["masses"])
     s = chain["stop"]
     u, v = state[:n], state[n:]
@@ -342,7 +348,7 @@ def check(cli, chain, state, contacts, precision=None, complete=False):
         t = event["t"]
         if kind == "stick":
             stuck = (u, v)
-    return problems, printed["contacts"]
+    return problems, contacts_made
 
 
 def report(label, problems, contacts):

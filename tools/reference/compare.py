@@ -12,7 +12,7 @@ Over the first 50 events the script reports
 
 - t:    max |t_cli - t_ref| / T2
 - pos:  max |u_cli - u_ref| / ps,  ps = max(gap, max |u| over the reference events)
-- vel:  max |v_cli - v_ref| / (omega_slow * ps)   (v1, v2_pre and v2_post)
+- vel:  max |v_cli - v_ref| / (omega_slow * ps)   (v1_pre, v2_pre and v2_post)
 - type: number of events whose type differs (and a count mismatch if the two programs do
         not produce the same number of events within the first 50)
 - amplif: how much the motion itself amplifies a 1e-16 nudge of the initial state (a second
@@ -143,7 +143,7 @@ def event_errors(a_out, b_out, T2, ps, vs):
             "t": abs(to_mpf(b.get("t")) - to_mpf(a["t"])) / T2,
             "pos": max(abs(to_mpf(b.get(k)) - to_mpf(a[k])) for k in ("u1", "u2")) / ps,
             "vel": max(abs(to_mpf(b.get(k)) - to_mpf(a[k]))
-                       for k in ("v1", "v2_pre", "v2_post")) / vs,
+                       for k in ("v1_pre", "v2_pre", "v2_post")) / vs,
         }, a["type"] == b.get("type")))
     if a_out["reference"]["termination"] == "t_end":
         a, b = a_out["final"], b_out.get("final", {})

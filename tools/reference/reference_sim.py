@@ -46,7 +46,7 @@ only if v1 > vs * 10^-((dps-8)/2) (the fourth-order touch of GLO_4/3 is located 
 Output
 ------
 JSON on stdout in the shape of `grazelab-cli simulate --format json` (docs/design.md):
-`model`, `events` [{t, type, u1, u2, v1, v2_pre, v2_post}], `final` {t, u1, u2, v1, v2},
+`model`, `events` [{t, type, u1, u2, v1_pre, v2_pre, v2_post}], `final` {t, u1, u2, v1, v2},
 `energy` {initial, max_rel_drift}, `timing`, plus a `reference` block describing the run.
 ALL REAL NUMBERS ARE WRITTEN AS JSON NUMBERS (not strings) WITH `--digits` SIGNIFICANT
 DIGITS (default 30, at most dps). A standard JSON parser reading them into binary64 loses
@@ -433,7 +433,7 @@ class Simulator:
     # -- simulation ---------------------------------------------------------------------
     def add_event(self, t, kind, state, v2_pre, v2_post):
         self.events.append({"t": t, "type": kind, "u1": state[0], "u2": state[1],
-                            "v1": state[2], "v2_pre": v2_pre, "v2_post": v2_post})
+                            "v1_pre": state[2], "v2_pre": v2_pre, "v2_post": v2_post})
         energy = self.chain.energy(state[0], state[1], state[2], v2_post)
         drift = abs(energy - self.energy0) / self.energy0 if self.energy0 > 0 else abs(energy)
         self.max_drift = max(self.max_drift, drift)
@@ -731,7 +731,7 @@ def main(argv=None):
         "initial": {"u1": n(initial[0]), "u2": n(initial[1]),
                     "v1": n(initial[2]), "v2": n(initial[3])},
         "events": [{"t": n(e["t"]), "type": e["type"], "u1": n(e["u1"]), "u2": n(e["u2"]),
-                    "v1": n(e["v1"]), "v2_pre": n(e["v2_pre"]), "v2_post": n(e["v2_post"])}
+                    "v1_pre": n(e["v1_pre"]), "v2_pre": n(e["v2_pre"]), "v2_post": n(e["v2_post"])}
                    for e in events],
         "final": {"t": n(sim.final_t), "u1": n(final[0]), "u2": n(final[1]),
                   "v1": n(final[2]), "v2": n(final[3])},

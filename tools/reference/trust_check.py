@@ -41,8 +41,8 @@ def true_errors(ref_out, cli_out):
     size["u2"] = abs(gap)
     states = [ref_out["initial"], ref_out["final"]]
     for e in ref_events:
-        states.append({"u1": e["u1"], "u2": e["u2"], "v1": e["v1"], "v2": e["v2_pre"]})
-        states.append({"u1": e["u1"], "u2": e["u2"], "v1": e["v1"], "v2": e["v2_post"]})
+        states.append({"u1": e["u1"], "u2": e["u2"], "v1": e["v1_pre"], "v2": e["v2_pre"]})
+        states.append({"u1": e["u1"], "u2": e["u2"], "v1": e["v1_pre"], "v2": e["v2_post"]})
     for s in states:
         for k in keys:
             size[k] = max(size[k], abs(to(s[k])))

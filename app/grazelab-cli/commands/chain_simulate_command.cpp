@@ -35,11 +35,44 @@ constexpr long kMaxStreamedContacts = std::numeric_limits<long>::max();
 
 enum class ChainFormat { Json, Csv, Summary };
 
+// The names of a chain's columns, made once per document (an owned name is an allocation)
+struct ColumnNames {
+  std::vector<JsonKey> u, v, vPre;  ///< u1..uN, v1..vN, v1_pre..vN_pre
+  JsonKey vPost;  ///< v<s>_post
+
+  ColumnNames(Eigen::Index n, int stopped) : vPost(JsonKey::owned("v" + std::to_string(stopped) + "_post")) {
+    for (Eigen::Index i = 1; i <= n; ++i) {
+      u.push_back(JsonKey::owned("u" + std::to_string(i)));
+      v.push_back(JsonKey::owned("v" + std::to_string(i)));
+      vPre.push_back(JsonKey::owned("v" + std::to_string(i) + "_pre"));
+    }
+  }
+};
+
+// a state at time t as the two-mass documents write it: {t, u1..uN, v1..vN}
 template <typename S>
-V numbers(const core::ChainVector<S>& values) {
-  std::vector<V> items;
-  for (Eigen::Index i = 0; i < values.size(); ++i) items.push_back(V::number(values[i]));
-  return V::array(std::move(items));
+V stateValue(const ColumnNames& names, const S& t, const core::BasicChainState<S>& state) {
+  std::vector<V::Field> fields;
+  fields.reserve(2 * names.u.size() + 1);
+  fields.emplace_back("t", V::number(t));
+  for (std::size_t i = 0; i < names.u.size(); ++i) fields.emplace_back(names.u[i], V::number(state.u[Eigen::Index(i)]));
+  for (std::size_t i = 0; i < names.v.size(); ++i) fields.emplace_back(names.v[i], V::number(state.v[Eigen::Index(i)]));
+  return V::object(std::move(fields));
+}
+
+// an event as the csv's row: {t, type, u1..uN, v1_pre..vN_pre, v<s>_post}
+template <typename S>
+V eventValue(const ColumnNames& names, const core::BasicChainEvent<S>& event) {
+  std::vector<V::Field> fields;
+  fields.reserve(2 * names.u.size() + 3);
+  fields.emplace_back("t", V::number(event.t));
+  fields.emplace_back("type", V::of(std::string(core::toString(event.type))));
+  for (std::size_t i = 0; i < names.u.size(); ++i) fields.emplace_back(names.u[i], V::number(event.u[Eigen::Index(i)]));
+  for (std::size_t i = 0; i < names.vPre.size(); ++i) {
+    fields.emplace_back(names.vPre[i], V::number(event.vBefore[Eigen::Index(i)]));
+  }
+  fields.emplace_back(names.vPost, V::number(event.vAfter));
+  return V::object(std::move(fields));
 }
 
 std::string stopName(core::ChainStop stop) {
@@ -115,7 +148,7 @@ const char* refusalWords(core::OnePeriodicRefusal refusal) {
 // T and --perturb are read in S (0.1 is 0.1 to binary128's digits)
 template <typename S>
 std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, const core::BasicMassChain<S>& chain,
-                                                   QString& error) {
+                                                   QString& error, std::string* description = nullptr) {
   const Eigen::Index n = chain.size();
   const int s = chain.stopped() - 1;
   if (int(options.isSet("state")) + int(options.isSet("glo-weights")) + int(options.isSet("onepp")) != 1) {
@@ -168,6 +201,15 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
     start.u += Eigen::Map<const Vector>(delta->data(), n);
     start.v += Eigen::Map<const Vector>(delta->data() + n, n);
   }
+  if (description) {
+    *description = options.isSet("onepp")
+                       ? "1IPP orbit of period T = " + options.value("onepp").trimmed().toStdString() +
+                             ", right after its impact"
+                   : options.isSet("state") ? std::string("the state given")
+                                            : "GLO_lambda at its touch, weights " +
+                                                  options.value("glo-weights").toStdString();
+    if (options.isSet("perturb")) *description += ", pushed by " + options.value("perturb").toStdString();
+  }
   if (start.u[s] > chain.gap) {
     error = QStringLiteral("the start has u%1 = %2 past the stop (gap %3)")
                 .arg(s + 1)
@@ -183,6 +225,7 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
 template <typename S>
 struct ChainRunIn {
   core::BasicChainState<S> start;
+  std::string description;  ///< how the start was given, in words
   core::BasicChainRun<S> run;
   S tEnd = 0;
   std::vector<std::pair<double, core::ChainState>> samples;  ///< (t, state) asked for, in double
@@ -241,13 +284,14 @@ template <typename S>
 std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::BasicMassChain<S>& chain, long contacts,
                                    const QString& tEndText, std::stop_token stop, QString& error,
                                    bool keepEvents = true, core::TrustMode trustMode = core::TrustMode::Off) {
-  const auto start = chainStart<S>(options, chain, error);
+  std::string description;
+  const auto start = chainStart<S>(options, chain, error, &description);
   if (!start) return std::nullopt;
   const auto tEnd = timeLimit<S>(tEndText, error);
   if (!tEnd) return std::nullopt;
   const auto asked = samplingOf(options, error);
   if (!asked) return std::nullopt;
-  ChainRunIn<S> in{*start, {}, *tEnd, {}, false, std::nullopt};
+  ChainRunIn<S> in{*start, std::move(description), {}, *tEnd, {}, false, std::nullopt};
   core::ChainSampling<S> sampling{asked->spacing, asked->times, {}};
   if (asked->spacing > 0 || !asked->times.empty()) {
     sampling.sink = [&](double t, const core::BasicChainState<S>& state) {
@@ -269,15 +313,24 @@ std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::Basi
   return in;
 }
 
-// the samples as {t, u, v} in double
+// the samples as columns t, u1..uN, v1..vN in double, as for two masses
 template <typename S>
-V samplesValue(const ChainRunIn<S>& in) {
-  std::vector<V> items;
-  items.reserve(in.samples.size());
+V samplesValue(const ColumnNames& names, const ChainRunIn<S>& in) {
+  const std::size_t n = names.u.size();
+  std::vector<std::vector<V>> columns(2 * n + 1);
+  for (std::vector<V>& column : columns) column.reserve(in.samples.size());
   for (const auto& [t, state] : in.samples) {
-    items.push_back(V::object({{"t", V::number(t)}, {"u", numbers<double>(state.u)}, {"v", numbers<double>(state.v)}}));
+    columns[0].push_back(V::number(t));
+    for (std::size_t i = 0; i < n; ++i) {
+      columns[1 + i].push_back(V::number(state.u[Eigen::Index(i)]));
+      columns[1 + n + i].push_back(V::number(state.v[Eigen::Index(i)]));
+    }
   }
-  return V::array(std::move(items));
+  std::vector<V::Field> fields;
+  fields.emplace_back("t", V::array(std::move(columns[0])));
+  for (std::size_t i = 0; i < n; ++i) fields.emplace_back(names.u[i], V::array(std::move(columns[1 + i])));
+  for (std::size_t i = 0; i < n; ++i) fields.emplace_back(names.v[i], V::array(std::move(columns[1 + n + i])));
+  return V::object(std::move(fields));
 }
 
 // (events null when they were not kept)
@@ -286,31 +339,31 @@ V runDocument(const core::BasicMassChain<S>& masses, const ChainRunIn<S>& in, V 
               bool sampled, bool keptEvents = true) {
   const core::BasicChainRun<S>& run = in.run;
   std::vector<V> events;
-  for (const core::BasicChainEvent<S>& event : run.events) {
-    events.push_back(V::object({{"t", V::number(event.t)},
-                                {"type", V::of(std::string(core::toString(event.type)))},
-                                {"u", numbers<S>(event.u)},
-                                {"v_pre", numbers<S>(event.vBefore)},
-                                {"v_post", V::number(event.vAfter)}}));
-  }
+  events.reserve(run.events.size());
+  const ColumnNames names(masses.size(), masses.stopped());
+  for (const core::BasicChainEvent<S>& event : run.events) events.push_back(eventValue(names, event));
   const core::BasicChainDynamics<S> dynamics = core::chainDynamicsIn<S>(masses);
   const std::string message = stopMessage(run.stop);
   using std::abs;
   V document = V::object(
       {{"chain", massChainValue(masses, dynamics.period)},
-       {"initial", V::object({{"u", numbers<S>(in.start.u)}, {"v", numbers<S>(in.start.v)}})},
+       {"initial", V::object({{"description", V::of(in.description)}, {"state", stateValue(names, S(0), in.start)}})},
        {"events", keptEvents ? V::array(std::move(events)) : V::null()},
-       {"final", V::object({{"t", V::number(run.tFinal)}, {"u", numbers<S>(run.final.u)}, {"v", numbers<S>(run.final.v)}})},
+       {"final", stateValue(names, run.tFinal, run.final)},
        {"stop_reason", V::of(stopName(run.stop))},
        {"message", message.empty() ? V::null() : V::of(message)},
-       {"contacts", V::of(std::int64_t(run.contacts))},
+       {"contacts", V::object({{"total", V::of(std::int64_t(run.contacts))},
+                               {"impacts", V::of(std::int64_t(run.impacts))},
+                               {"grazings", V::of(std::int64_t(run.grazings))},
+                               {"sticks", V::of(std::int64_t(run.sticks))},
+                               {"releases", V::of(std::int64_t(run.releases))}})},
        {"energy", V::object({{"initial", V::number(run.energyInitial)},
                              {"final", V::number(run.energyFinal)},
                              {"relative_drift", V::number(S(abs(run.energyFinal / run.energyInitial - 1)))}})},
        {"trust", trustValue(trust)},
        {"precision", std::move(precision)}});
   if (sampled) {
-    document.fields.emplace_back("samples", samplesValue(in));
+    document.fields.emplace_back("samples", samplesValue(names, in));
     document.fields.emplace_back("samples_truncated", V::of(in.samplesTruncated));
   }
   return document;
@@ -515,7 +568,8 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       lastWrittenTime = core::toDouble(event.t);
       lastWrittenType = event.type;
     };
-    const ChainRunIn<S> in{*start, core::runChain(*masses, *start, contacts, *limit, stop, sink), *limit, {}, false, std::nullopt};
+    const ChainRunIn<S> in{*start, {}, core::runChain(*masses, *start, contacts, *limit, stop, sink), *limit, {}, false,
+                           std::nullopt};
     std::fflush(io.out);
     if (in.run.stop == core::ChainStop::Cancelled) {
       if (format == ChainFormat::Csv) error = QStringLiteral("the %1 events before it are written").arg(written);

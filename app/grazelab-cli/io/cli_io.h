@@ -23,12 +23,12 @@ struct Sample;
 namespace grazelab::cli {
 
 /// One event of a run as the Python module hands it to NumPy without a copy: the columns of the
-/// command line's CSV (t,type,u1,u2,v1,v2_pre,v2_post), numbers rounded to double, the type in
+/// command line's CSV (t,type,u1,u2,v1_pre,v2_pre,v2_post), numbers rounded to double, the type in
 /// UCS-4 as NumPy's '<U8'. 80 bytes; the module describes the same layout to NumPy.
 struct EventRow {
   double t;
   char32_t type[8];
-  double u1, u2, v1, v2Pre, v2Post;
+  double u1, u2, v1Pre, v2Pre, v2Post;
 };
 static_assert(sizeof(EventRow) == 80);
 
@@ -36,7 +36,7 @@ static_assert(sizeof(EventRow) == 80);
 /// numbers of each event are also kept as the decimal text the command line writes.
 struct EventTable {
   std::vector<EventRow> rows;
-  std::vector<std::string> decimals;  ///< empty, or 6 per row: t,u1,u2,v1,v2_pre,v2_post
+  std::vector<std::string> decimals;  ///< empty, or 6 per row: t,u1,u2,v1_pre,v2_pre,v2_post
   /// At most this many rows are kept: the next event sets `full` and calls `whenFull` (which
   /// stops the run) instead of growing the table without bound.
   std::size_t maxRows = std::size_t(-1);

@@ -112,7 +112,7 @@ std::string eventJson(const core::BasicEvent<S>& event) {
                  {"type", quoted(std::string(core::toString(event.type)))},
                  {"u1", number(event.before.u1)},
                  {"u2", number(event.before.u2)},
-                 {"v1", number(event.before.v1)},
+                 {"v1_pre", number(event.before.v1)},
                  {"v2_pre", number(event.before.v2)},
                  {"v2_post", number(event.after.v2)}});
 }
@@ -319,7 +319,7 @@ void RunWriter<S>::begin(const core::BasicResult<S>&) {
       break;
     }
     case Format::Csv:
-      write("t,type,u1,u2,v1,v2_pre,v2_post\n");
+      write("t,type,u1,u2,v1_pre,v2_pre,v2_post\n");
       break;
     case Format::Summary:
       break;
@@ -345,13 +345,13 @@ void appendEvent(EventTable& table, const core::BasicEvent<S>& event) {
   for (std::size_t i = 0; i < type.size() && i < std::size(row.type); ++i) row.type[i] = char32_t(type[i]);
   row.u1 = core::toDouble(event.before.u1);
   row.u2 = core::toDouble(event.before.u2);
-  row.v1 = core::toDouble(event.before.v1);
+  row.v1Pre = core::toDouble(event.before.v1);
   row.v2Pre = core::toDouble(event.before.v2);
   row.v2Post = core::toDouble(event.after.v2);
   if constexpr (!std::is_same_v<S, double>) {
     for (std::size_t i = table.decimals.size() / 6; i < table.rows.size(); ++i) {
       const EventRow& earlier = table.rows[i];
-      for (double value : {earlier.t, earlier.u1, earlier.u2, earlier.v1, earlier.v2Pre, earlier.v2Post}) {
+      for (double value : {earlier.t, earlier.u1, earlier.u2, earlier.v1Pre, earlier.v2Pre, earlier.v2Post}) {
         table.decimals.push_back(number(value));
       }
     }
