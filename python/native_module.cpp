@@ -4,7 +4,9 @@
 // (runCommandLine), on a thread of its own with the GIL released. The calling thread wakes every
 // 100 ms: Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the
 // command's latest progress goes to the caller's callback, both on the caller's thread.
-// grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy.
+// grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy. Short
+// runs are called directly (simulate, simulate_chain), and a chain of N masses is prepared once
+// (prepare_chain: grazelab.Chain) for every run of it.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -13,11 +15,17 @@
 #include <QString>
 #include <QStringList>
 
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
+#include <limits>
+#include <map>
+#include <functional>
+#include <initializer_list>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -28,13 +36,16 @@
 #include <vector>
 
 #include "cli_run.h"
+#include "commands/chain_simulate_command.h"
 #include "commands/simulate_command.h"
 #include "core/experiments/maps.h"
 #include "core/solver/recorder.h"
 #include "exit_codes.h"
 #include "io/cli_io.h"
+#include "io/cli_output.h"
 #include "io/map_files.h"
 #include "io/option_values.h"
+#include "io/prepared_chain.h"
 #include "value_to_python.h"
 
 namespace py = pybind11;
@@ -222,6 +233,50 @@ bool deliverProgress(ProgressMailbox& mailbox, const py::object& progress,
   return true;
 }
 
+// Runs `work` on a thread of its own with the GIL released. The calling thread wakes every
+// 100 ms: Ctrl+C (PyErr_CheckSignals) requests `stop` and is raised once the work has ended;
+// `onWake` (with the GIL held) may stop it too by returning false, its exception kept in
+// `pythonError`. Returns the work's code.
+int interruptibly(std::stop_source& stop, const std::function<int(std::stop_token)>& work,
+                  const std::function<bool()>& onWake, std::optional<py::error_already_set>& pythonError) {
+  std::mutex doneMutex;
+  std::condition_variable doneSignal;
+  bool done = false;
+  int code = 0;
+  std::exception_ptr failure;
+  {
+    py::gil_scoped_release released;
+    std::thread worker([&] {
+      try {
+        code = work(stop.get_token());
+      } catch (...) {
+        failure = std::current_exception();  // out of memory, most likely
+      }
+      std::lock_guard lock(doneMutex);
+      done = true;
+      doneSignal.notify_all();
+    });
+    for (;;) {
+      {
+        std::unique_lock lock(doneMutex);
+        if (doneSignal.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; })) break;
+      }
+      if (stop.stop_requested()) continue;  // stopping: wait for the work to end
+      py::gil_scoped_acquire held;
+      // Ctrl+C (or another signal handler that raised): stop the work, raise once it ended
+      if (PyErr_CheckSignals() != 0) {
+        pythonError.emplace();
+        stop.request_stop();
+        continue;
+      }
+      if (onWake && !onWake()) stop.request_stop();
+    }
+    worker.join();
+  }
+  if (failure) std::rethrow_exception(failure);
+  return code;
+}
+
 // A command's document as Results; one that holds numbers wider than double (long double,
 // binary128) also has `decimal`: its numbers as text.
 py::object documentToPython(const grazelab::cli::JsonValue& document, const py::object& resultType,
@@ -277,45 +332,13 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
     };
   }
 
-  std::mutex doneMutex;
-  std::condition_variable doneSignal;
-  bool done = false;
-  int code = 0;
   std::optional<py::error_already_set> pythonError;
-  std::exception_ptr failure;
-  {
-    py::gil_scoped_release released;
-    std::thread worker([&] {
-      try {
-        code = grazelab::cli::runCommandLine(commandLine, io, stop.get_token());
-      } catch (...) {
-        failure = std::current_exception();  // out of memory, most likely
-      }
-      std::lock_guard lock(doneMutex);
-      done = true;
-      doneSignal.notify_all();
-    });
-    for (;;) {
-      {
-        std::unique_lock lock(doneMutex);
-        if (doneSignal.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; })) break;
-      }
-      if (stop.stop_requested()) continue;  // stopping: wait for the command to end
-      py::gil_scoped_acquire held;
-      // Ctrl+C (or another signal handler that raised): stop the command, raise once it ended
-      if (PyErr_CheckSignals() != 0) {
-        pythonError.emplace();
-        stop.request_stop();
-        continue;
-      }
-      if (!deliverProgress(mailbox, progress, pythonError)) stop.request_stop();
-    }
-    worker.join();
-  }
+  const int code = interruptibly(
+      stop, [&](std::stop_token token) { return grazelab::cli::runCommandLine(commandLine, io, token); },
+      [&] { return deliverProgress(mailbox, progress, pythonError); }, pythonError);
   // the last progress (a command shorter than one wake-up reports its end too)
   if (!pythonError && code == 0) deliverProgress(mailbox, progress, pythonError);
   if (pythonError) throw std::move(*pythonError);
-  if (failure) std::rethrow_exception(failure);
   if (table->full) throw py::value_error(tooManyEvents(maxEvents));
   const std::string out = output.take();
   const std::string log = messages.take();
@@ -402,18 +425,21 @@ py::list notesOf(const std::string& messages) {
 // name, value, ...) with None for an option not given: no command-line text, no parser, no thread (a short
 // run, which the caller keeps short: nothing interrupts it), its document handed over as values,
 // not as text. The numbers are read as the command line reads their shortest decimal text.
-py::object simulateHere(const py::sequence& given, const py::object& resultType, bool eventsAsArrays,
-                        std::size_t maxEvents, bool discardEvents) {
+// Options given by name as (name, value, name, value, ...), None for an option not given; a
+// sequence only for the options in `sequences`. Nothing when a value is not of a type read
+// directly (then give the options as text).
+std::optional<std::vector<grazelab::cli::GivenOption>> givenOptions(const py::sequence& given,
+                                                                    std::initializer_list<std::string_view> sequences) {
   std::vector<grazelab::cli::GivenOption> named;
   const py::object flat = py::reinterpret_steal<py::object>(PySequence_Fast(given.ptr(), "options"));
   if (!flat) throw py::error_already_set();
   const Py_ssize_t count = PySequence_Fast_GET_SIZE(flat.ptr());
-  if (count % 2 != 0) throw py::type_error("simulate: options are name, value, name, value, ...");
+  if (count % 2 != 0) throw py::type_error("options are name, value, name, value, ...");
   named.reserve(std::size_t(count / 2));
   for (Py_ssize_t i = 0; i < count; i += 2) {
     PyObject* key = PySequence_Fast_GET_ITEM(flat.ptr(), i);
     PyObject* value = PySequence_Fast_GET_ITEM(flat.ptr(), i + 1);
-    if (!PyUnicode_Check(key)) throw py::type_error("simulate: options are name, value, name, value, ...");
+    if (!PyUnicode_Check(key)) throw py::type_error("options are name, value, name, value, ...");
     if (value == Py_None) continue;
     grazelab::cli::GivenOption option;
     Py_ssize_t size = 0;
@@ -422,11 +448,18 @@ py::object simulateHere(const py::sequence& given, const py::object& resultType,
     option.name.assign(name, std::size_t(size));
     // a sequence only where one is expected: elsewhere the text path says what is wrong
     const bool sequence = PyTuple_Check(value) || PyList_Check(value);
-    if (sequence && option.name != "state" && option.name != "perturb") return py::none();
-    if (!readGiven(value, option)) return py::none();
+    if (sequence && std::find(sequences.begin(), sequences.end(), option.name) == sequences.end()) return std::nullopt;
+    if (!readGiven(value, option)) return std::nullopt;
     named.push_back(std::move(option));
   }
-  const grazelab::cli::OptionValues options(std::move(named));
+  return named;
+}
+
+py::object simulateHere(const py::sequence& given, const py::object& resultType, bool eventsAsArrays,
+                        std::size_t maxEvents, bool discardEvents) {
+  auto named = givenOptions(given, {"state", "perturb"});
+  if (!named) return py::none();
+  const grazelab::cli::OptionValues options(std::move(*named));
   QString error;
   const auto precision = grazelab::cli::parsePrecisionOption(options, error);
   if (!precision) throw py::value_error(error.simplified().toStdString());
@@ -475,6 +508,196 @@ py::object simulateHere(const py::sequence& given, const py::object& resultType,
   return py::make_tuple(result, decimals);
 }
 
+// The NumPy types of a chain's events (t, type, u1..uN, v1_pre..vN_pre, vS_post: the csv's
+// columns) and samples (t, u1..uN, v1..vN), in double, type as '<U8'; made once per (N, S) and
+// kept to the process's end, as the two-mass ones (a dtype costs microseconds to describe).
+struct ChainDtypes {
+  py::dtype events, samples;
+};
+const ChainDtypes& chainDtypes(std::size_t n, std::size_t stopped) {
+  static auto* const made = new std::map<std::pair<std::size_t, std::size_t>, ChainDtypes>();
+  const auto found = made->find({n, stopped});
+  if (found != made->end()) return found->second;
+  const auto describe = [](const std::vector<std::string>& names, bool withType) {
+    py::list fields;
+    for (const std::string& name : names) fields.append(py::make_tuple(name, "<f8"));
+    if (withType) fields.insert(1, py::make_tuple("type", "<U8"));
+    return py::dtype::from_args(fields);
+  };
+  std::vector<std::string> events{"t"}, samples{"t"};
+  for (std::size_t i = 1; i <= n; ++i) events.push_back("u" + std::to_string(i));
+  for (std::size_t i = 1; i <= n; ++i) events.push_back("v" + std::to_string(i) + "_pre");
+  events.push_back("v" + std::to_string(stopped) + "_post");
+  for (std::size_t i = 1; i <= n; ++i) samples.push_back("u" + std::to_string(i));
+  for (std::size_t i = 1; i <= n; ++i) samples.push_back("v" + std::to_string(i));
+  return made->emplace(std::pair{n, stopped}, ChainDtypes{describe(events, true), describe(samples, false)})
+      .first->second;
+}
+
+// A chain's events, objects of the same fields in the dtype's order, as one structured array
+// (t, the type's UCS-4 letters, then the numbers in double)
+py::array chainEventArray(const std::vector<grazelab::cli::JsonValue>& events, const py::dtype& dtype) {
+  py::array array(dtype, py::array::ShapeContainer{static_cast<py::ssize_t>(events.size())});
+  auto* data = static_cast<char*>(array.mutable_data());
+  const std::size_t itemsize = std::size_t(dtype.itemsize());
+  for (std::size_t k = 0; k < events.size(); ++k) {
+    char* row = data + k * itemsize;
+    std::memset(row, 0, itemsize);
+    char* number = row;
+    for (const grazelab::cli::JsonValue::Field& field : events[k].fields) {
+      if (field.second.kind == grazelab::cli::JsonValue::Kind::String) {  // type: 8 UCS-4 letters after t
+        char32_t letters[8] = {};
+        for (std::size_t i = 0; i < field.second.text.size() && i < 8; ++i) letters[i] = char32_t(field.second.text[i]);
+        std::memcpy(row + sizeof(double), letters, sizeof letters);
+        number = row + sizeof(double) + sizeof letters;
+        continue;
+      }
+      const double value = field.second.kind == grazelab::cli::JsonValue::Kind::Null
+                               ? std::numeric_limits<double>::quiet_NaN() : field.second.toDouble();
+      std::memcpy(number, &value, sizeof value);
+      number += sizeof value;
+    }
+  }
+  return array;
+}
+
+// A chain's samples, an object of columns in the dtype's order, as one structured array
+py::array chainSampleArray(const grazelab::cli::JsonValue& columns, const py::dtype& dtype) {
+  const std::size_t count = columns.fields.empty() ? 0 : columns.fields.front().second.items.size();
+  py::array array(dtype, py::array::ShapeContainer{static_cast<py::ssize_t>(count)});
+  auto* data = static_cast<char*>(array.mutable_data());
+  const std::size_t itemsize = std::size_t(dtype.itemsize());
+  for (std::size_t c = 0; c < columns.fields.size(); ++c) {
+    const std::vector<grazelab::cli::JsonValue>& column = columns.fields[c].second.items;
+    for (std::size_t k = 0; k < count; ++k) {
+      const double value = column[k].toDouble();
+      std::memcpy(data + k * itemsize + c * sizeof(double), &value, sizeof value);
+    }
+  }
+  return array;
+}
+
+// grazelab.Chain's native half: a chain of N masses read, checked and designed once, shared by
+// every run of it (cli::PreparedMassChain).
+struct ChainHandle {
+  std::shared_ptr<const grazelab::cli::PreparedMassChain> chain;
+};
+
+// prepare_chain(options) -> ChainHandle: the chain of `options` ((name, text, ...): masses,
+// springs, right-spring, stop-mass, gap, frequencies, design-branch), designed on a thread of
+// its own (a seven-mass design takes seconds: Ctrl+C stops it); ValueError with the command
+// line's line when there is none.
+ChainHandle prepareChain(const py::sequence& given) {
+  auto named = givenOptions(given, {});
+  if (!named) throw py::type_error("Chain: its options are given as text");
+  const grazelab::cli::OptionValues options(std::move(*named));
+  std::stop_source stop;
+  std::optional<py::error_already_set> pythonError;
+  grazelab::cli::Parsed<std::shared_ptr<const grazelab::cli::PreparedMassChain>> made;
+  interruptibly(
+      stop,
+      [&](std::stop_token token) {
+        made = grazelab::cli::PreparedMassChain::make(options, token);
+        return 0;
+      },
+      {}, pythonError);
+  if (pythonError) throw std::move(*pythonError);
+  if (!made.value) throw py::value_error(made.error.simplified().toStdString());
+  return {std::move(*made.value)};
+}
+
+// simulate_chain(chain, options, result_type, discard_events, direct) -> (result, the events'
+// decimal text of the note's chain in long double or binary128, else None), or None when an
+// option's value is not of a type read directly (then give the options as text). The note's
+// chain is run by the note's engine (its result that of simulate with the two-mass keywords). The run of
+// `grazelab-cli simulate --masses ...` on the prepared chain, its document handed over as
+// values; `direct`: on the calling thread (a short run of a commensurate chain, whose every
+// flight is decided within a period), else on a thread of its own that Ctrl+C stops.
+py::object simulateChain(const ChainHandle& chain, const py::sequence& given, const py::object& resultType,
+                         bool discardEvents, bool direct) {
+  auto named = givenOptions(given, {"state", "perturb", "glo-weights", "sample-times"});
+  if (!named) return py::none();
+  const grazelab::cli::OptionValues options(std::move(*named));
+  MemoryStream messages;
+  auto table = std::make_unique<EventTable>();
+  table->discard = discardEvents;
+  grazelab::cli::Io io;
+  io.out = messages.file();  // (a run whose document is taken as values writes no output)
+  io.messages = messages.file();
+  io.events = table.get();
+  grazelab::cli::JsonValue document;
+  io.document = &document;
+  std::vector<grazelab::core::Sample> twoMassSamples;
+  io.samples = &twoMassSamples;
+  QString error;
+  const auto work = [&](std::stop_token stop) {
+    return grazelab::cli::runChainSimulate(*chain.chain, options, io, std::move(stop), error);
+  };
+  int code = 0;
+  if (direct) {
+    py::gil_scoped_release released;
+    code = work({});
+  } else {
+    std::stop_source stop;
+    std::optional<py::error_already_set> pythonError;
+    code = interruptibly(stop, work, {}, pythonError);
+    if (pythonError) throw std::move(*pythonError);
+  }
+  if (code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
+  const std::string log = messages.take();
+  if (code != 0) {
+    PyErr_SetString(PyExc_OSError, error.isEmpty() ? ("simulate failed (exit " + std::to_string(code) + ")").c_str()
+                                                   : error.simplified().toStdString().c_str());
+    throw py::error_already_set();
+  }
+  static PyObject* const eventsKey = PyUnicode_InternFromString("events");
+  static PyObject* const notesKey = PyUnicode_InternFromString("notes");
+  if (document.find("model")) {
+    // the note's chain, run by the note's engine: its document, its events in the table
+    py::object decimals = py::none();
+    py::object events = py::none();
+    if (!discardEvents) {
+      if (!table->decimals.empty()) decimals = py::cast(table->decimals);
+      events = eventArray(std::move(table));
+    }
+    py::object result = documentToPython(document, resultType, document.holdsWideNumbers(), std::move(twoMassSamples));
+    if (PyDict_SetItem(result.ptr(), eventsKey, events.ptr()) != 0 ||
+        PyDict_SetItem(result.ptr(), notesKey, notesOf(log).ptr()) != 0) {
+      throw py::error_already_set();
+    }
+    return py::make_tuple(result, decimals);
+  }
+  // the events and samples as structured arrays (as for two masses), the rest as values; in a
+  // wider precision than double the whole document as text too, under `decimal`
+  const grazelab::cli::JsonValue* described = document.find("chain");
+  const ChainDtypes& dtypes = chainDtypes(described->find("masses")->items.size(),
+                                          std::size_t(described->find("stop_mass")->integer));
+  const grazelab::cli::JsonValue* events = document.find("events");
+  const py::object eventArray = events->kind == grazelab::cli::JsonValue::Kind::Array
+                                    ? py::object(chainEventArray(events->items, dtypes.events)) : py::object(py::none());
+  const grazelab::cli::JsonValue* samples = document.find("samples");
+  const py::object sampleArray = samples ? py::object(chainSampleArray(*samples, dtypes.samples)) : py::object();
+  const py::object decimal = document.holdsWideNumbers() ? grazelab::python::toPython(document, resultType, true)
+                                                         : py::object();
+  document.remove("events");
+  document.remove("samples");
+  py::object result = grazelab::python::toPython(document, resultType);
+  if (PyDict_SetItem(result.ptr(), eventsKey, eventArray.ptr()) != 0 ||
+      PyDict_SetItem(result.ptr(), notesKey, notesOf(log).ptr()) != 0) {
+    throw py::error_already_set();
+  }
+  if (sampleArray) result["samples"] = sampleArray;
+  if (decimal) result["decimal"] = decimal;
+  return py::make_tuple(result, py::none());
+}
+
+// The chain as the documents write it (masses, springs designed, right spring, stop, gap, the
+// common period of a commensurate chain), in double.
+py::object chainDescription(const ChainHandle& chain, const py::object& resultType) {
+  const grazelab::core::BasicReadyChain<double>& ready = *chain.chain->ready<double>().value;
+  return grazelab::python::toPython(grazelab::cli::massChainValue(ready.numbers, ready.dynamics.period), resultType);
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_native, module) {
@@ -498,6 +721,21 @@ PYBIND11_MODULE(_native, module) {
              "result_type a simulate's document comes back as values of that type, not text; "
              "with keep_files family and modes without --out hand their files back as "
              "{name: bytes} and write none.");
+  py::class_<ChainHandle>(module, "PreparedChain",
+                          "A chain of N masses read, checked and designed once (use grazelab.Chain).")
+      .def("describe", &chainDescription, py::arg("result_type"),
+           "The chain as the documents write it (designed springs, the common period), in double.")
+      .def_property_readonly("period", [](const ChainHandle& chain) {
+        return chain.chain->ready<double>().value->dynamics.period;
+      }, "The common period of a commensurate chain, 0 otherwise.");
+  module.def("prepare_chain", &prepareChain, py::arg("options"),
+             "A chain of N masses from its options as (name, text, ...): masses, springs, right-spring, "
+             "stop-mass, gap, frequencies, design-branch. Raises ValueError when there is none.");
+  module.def("simulate_chain", &simulateChain, py::arg("chain"), py::arg("options"), py::arg("result_type"),
+             py::arg("discard_events") = false, py::arg("direct") = false,
+             "grazelab-cli simulate --masses ... on a prepared chain, its run options as (name, value, ...): "
+             "(the result: its document as values, with events and notes; the note's chain's events' decimal "
+             "text or None), or None when a value is of a type not read directly (give the options as text).");
   module.def("simulate", &simulateHere, py::arg("options"), py::arg("result_type"),
              py::arg("events") = true, py::arg("max_events") = std::size_t(-1),
              py::arg("discard_events") = false,

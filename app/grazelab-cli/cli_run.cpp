@@ -183,6 +183,8 @@ const std::vector<Command>& commands() {
          if (std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return parser.isSet(name); })) {
            if (!parser.isSet("masses")) return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
            if (!parser.isSet("onepp")) return fail(io, "family: name the family: --onepp (one impact per period)");
+           // the note's chain, however written, is the note's family (its engine, its files)
+           if (writesTheNotesChain(parser)) return ended(io, runFamily(parser, io, stop, error), error);
            return ended(io, runChainFamily(parser, io, stop, error), error);
          }
          return ended(io, runFamily(parser, io, stop, error), error);

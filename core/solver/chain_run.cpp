@@ -137,12 +137,12 @@ std::optional<BasicLeaving<S>> releaseLeaving(const BasicMassChain<S>& chain, co
 }  // namespace
 
 template <typename S>
-BasicChainSimulator<S>::BasicChainSimulator(const BasicMassChain<S>& chain, const BasicChainState<S>& start,
+BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, const BasicChainState<S>& start,
                                             long maxContacts, std::type_identity_t<S> tEnd,
                                             ChainEventSink<std::type_identity_t<S>> sink,
                                             ChainSampling<std::type_identity_t<S>> sampling)
-    : m_chain(chain),
-      m_dynamics(chainDynamicsIn<S>(chain)),
+    : m_chain(chain.numbers),
+      m_dynamics(chain.dynamics),
       m_maxContacts(maxContacts),
       m_tEnd(tEnd),
       m_slowest(twoPi<S>() / m_dynamics.omega.minCoeff()),
@@ -341,12 +341,23 @@ BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<
                           std::type_identity_t<S> tEnd, std::stop_token stop,
                           const ChainEventSink<std::type_identity_t<S>>& sink,
                           const ChainSampling<std::type_identity_t<S>>& sampling) {
+  return runChain(readyChain(chain), start, maxContacts, tEnd, std::move(stop), sink, sampling);
+}
+
+template <typename S>
+BasicChainRun<S> runChain(const BasicReadyChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+                          std::type_identity_t<S> tEnd, std::stop_token stop,
+                          const ChainEventSink<std::type_identity_t<S>>& sink,
+                          const ChainSampling<std::type_identity_t<S>>& sampling) {
   BasicChainSimulator<S> simulator(chain, start, maxContacts, tEnd, sink, sampling);
   simulator.advance(maxContacts, std::move(stop));
   return simulator.takeRun();
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                                  \
+  template BasicChainRun<S> runChain<S>(const BasicReadyChain<S>&, const BasicChainState<S>&, long,                 \
+                                        std::type_identity_t<S>, std::stop_token, const ChainEventSink<S>&,         \
+                                        const ChainSampling<S>&);                                                   \
   template class BasicChainSimulator<S>;                                                                                 \
   template S chainEnergy<S>(const BasicMassChain<S>&, const BasicChainState<S>&);                                         \
   template BasicChainRun<S> runChain<S>(const BasicMassChain<S>&, const BasicChainState<S>&, long, std::type_identity_t<S>, \

@@ -8,6 +8,7 @@
 #include <optional>
 #include <stop_token>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/model/mass_chain.h"
@@ -71,6 +72,19 @@ struct ChainSampling {
   bool wanted() const { return sink && (spacing > 0 || !times.empty()); }
 };
 
+/// A usable chain (validate(chain) empty) made ready to run: its numbers and its dynamics (the
+/// modes, exact multiples n_j w0 when commensurate: a binary128 eigensolve), computed once and
+/// shared by every run, shadow run and document of it. Immutable.
+template <typename S>
+struct BasicReadyChain {
+  BasicMassChain<S> numbers;
+  BasicChainDynamics<S> dynamics;
+};
+template <typename S>
+BasicReadyChain<S> readyChain(const BasicMassChain<S>& chain) {
+  return {chain, chainDynamicsIn<S>(chain)};
+}
+
 /// The energy 1/2 v^T M v + 1/2 u^T K u of a chain's state.
 template <typename S>
 S chainEnergy(const BasicMassChain<S>& chain, const BasicChainState<S>& state);
@@ -83,9 +97,14 @@ template <typename S>
 class BasicChainSimulator {
  public:
   /// As runChain's arguments (below); the chain is copied, `sink` and `sampling` are kept.
-  BasicChainSimulator(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+  BasicChainSimulator(const BasicReadyChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
                       std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
                       ChainSampling<std::type_identity_t<S>> sampling = {});
+  /// The same, the chain made ready here.
+  BasicChainSimulator(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+                      std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
+                      ChainSampling<std::type_identity_t<S>> sampling = {})
+      : BasicChainSimulator(readyChain(chain), start, maxContacts, tEnd, std::move(sink), std::move(sampling)) {}
 
   /// Runs until `contactBudget` more contacts were made, the run is over, or `stop` is requested
   /// (then over: ChainStop::Cancelled). Returns true when the run is over.
@@ -143,6 +162,12 @@ using ChainSimulator = BasicChainSimulator<double>;
 /// handed to it as it happens and none is kept; with `sampling`, the states it asks for.
 template <typename S>
 BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+                          std::type_identity_t<S> tEnd = 0, std::stop_token stop = {},
+                          const ChainEventSink<std::type_identity_t<S>>& sink = {},
+                          const ChainSampling<std::type_identity_t<S>>& sampling = {});
+/// The same for a chain made ready once (its runs skip the eigensolve).
+template <typename S>
+BasicChainRun<S> runChain(const BasicReadyChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
                           std::type_identity_t<S> tEnd = 0, std::stop_token stop = {},
                           const ChainEventSink<std::type_identity_t<S>>& sink = {},
                           const ChainSampling<std::type_identity_t<S>>& sampling = {});

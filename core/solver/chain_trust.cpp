@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace grazelab::core {
 namespace {
@@ -22,44 +23,63 @@ std::string precisionName() {
 }  // namespace
 
 template <typename S>
+ChainShadow<S> chainShadow(const BasicMassChain<S>& chain) {
+  using H = ShadowScalar<S>;
+  // one precision up; binary128 by binary128 on the chain scaled 3x in length and 1/sqrt(3) in
+  // time (springs x 3, masses as given: w x sqrt(3))
+  ChainShadow<S> shadow;
+  shadow.scaled = std::is_same_v<S, H>;
+  BasicMassChain<H> shadowChain = chainCast<H>(chain);
+  if (shadow.scaled) {
+    for (H& k : shadowChain.springs) k *= 3;
+    shadowChain.rightSpring *= 3;
+    shadowChain.gap *= 3;
+    shadow.length = 3;
+    using std::sqrt;
+    shadow.time = sqrt(H(3));
+  }
+  shadow.ready = readyChain(shadowChain);
+  shadow.slowest = twoPi<double>() / chainModesIn<double>(chain).omega.minCoeff();
+  shadow.gap = toDouble(chain.gap);
+  return shadow;
+}
+
+template <typename S>
 ChainTrustCheck<S>::ChainTrustCheck(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+                                    std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop)
+    : ChainTrustCheck(mode == TrustMode::Off ? ChainShadow<S>{} : chainShadow(chain), start, maxContacts, tEnd, mode,
+                      std::move(stop)) {}
+
+template <typename S>
+ChainTrustCheck<S>::ChainTrustCheck(const ChainShadow<S>& shadow, const BasicChainState<S>& start, long maxContacts,
                                     std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop)
     : m_mode(mode) {
   if (mode == TrustMode::Off) {
     m_trust.reason = "not estimated (--trust off)";
     return;
   }
-  // the shadow: one precision up; binary128 by binary128 on the chain scaled 3x in length and
-  // 1/sqrt(3) in time (springs x 3, masses as given: w x sqrt(3))
-  m_scaled = std::is_same_v<S, H>;
-  BasicMassChain<H> shadowChain = chainCast<H>(chain);
-  if (m_scaled) {
-    for (H& k : shadowChain.springs) k *= 3;
-    shadowChain.rightSpring *= 3;
-    shadowChain.gap *= 3;
-    m_length = 3;
-    using std::sqrt;
-    m_time = sqrt(H(3));
-  }
+  m_scaled = shadow.scaled;
+  m_length = shadow.length;
+  m_time = shadow.time;
   const BasicChainState<H> shadowStart{start.u.template cast<H>() * m_length,
                                        start.v.template cast<H>() * (m_length * m_time)};
   // auto: the first contacts only (a budget fixed by the precision), when the run may make more
   if (mode == TrustMode::Auto && maxContacts > chainShadowContacts<S>()) m_cap = chainShadowContacts<S>();
-  m_shadow = runChain(shadowChain, shadowStart, m_cap > 0 ? m_cap : maxContacts, H(tEnd) / m_time, stop);
+  m_shadow = runChain(shadow.ready, shadowStart, m_cap > 0 ? m_cap : maxContacts, H(tEnd) / m_time, stop);
   if (stop.stop_requested()) {
     m_interrupted = true;
     m_trust.reason = "the estimate was interrupted";
     return;
   }
   // the scales: the largest |u_i| and |v_i| at the shadow's events (the gap at least)
-  m_uScale = toDouble(chain.gap);
+  m_uScale = shadow.gap;
   double vScale = 0;
   for (const BasicChainEvent<H>& event : m_shadow.events) {
     m_uScale = std::max(m_uScale, toDouble(event.u.cwiseAbs().maxCoeff() / m_length));
     vScale = std::max(vScale, toDouble(event.vBefore.cwiseAbs().maxCoeff() / (m_length * m_time)));
   }
   m_vScale = vScale > 0 ? vScale : 1.0;
-  m_slowest = twoPi<double>() / chainModesIn<double>(chain).omega.minCoeff();
+  m_slowest = shadow.slowest;
 }
 
 template <typename S>
@@ -150,6 +170,14 @@ Trust ChainTrustCheck<S>::finish(const BasicChainRun<S>& run) const {
 }
 
 template <typename S>
+Trust chainTrust(const ChainShadow<S>& shadow, const BasicChainState<S>& start, const BasicChainRun<S>& run,
+                 long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop) {
+  ChainTrustCheck<S> check(shadow, start, maxContacts, tEnd, mode, stop);
+  for (const BasicChainEvent<S>& event : run.events) check.observe(event);
+  return check.finish(run);
+}
+
+template <typename S>
 Trust chainTrust(const BasicMassChain<S>& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
                  long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop) {
   ChainTrustCheck<S> check(chain, start, maxContacts, tEnd, mode, stop);
@@ -158,6 +186,9 @@ Trust chainTrust(const BasicMassChain<S>& chain, const BasicChainState<S>& start
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                       \
+  template ChainShadow<S> chainShadow<S>(const BasicMassChain<S>&);                                       \
+  template Trust chainTrust<S>(const ChainShadow<S>&, const BasicChainState<S>&, const BasicChainRun<S>&, long, \
+                               std::type_identity_t<S>, TrustMode, std::stop_token);                      \
   template Trust chainTrust<S>(const BasicMassChain<S>&, const BasicChainState<S>&, const BasicChainRun<S>&, long, \
                                std::type_identity_t<S>, TrustMode, std::stop_token);                      \
   template class ChainTrustCheck<S>;

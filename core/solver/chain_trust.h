@@ -35,6 +35,26 @@ constexpr long chainShadowContacts() {
   else return 1L << 14;
 }
 
+/// The shadow run's chain, made ready once: the chain in the shadow precision (scaled in binary128),
+/// with the factors that map its motion back, and the primary chain's scales in double (the
+/// units of the errors).
+template <typename S>
+struct ChainShadow {
+  using H = ShadowScalar<S>;
+  BasicReadyChain<H> ready;
+  H length = 1, time = 1;  ///< shadow = primary x length, shadow times = primary times / time
+  bool scaled = false;
+  double slowest = 1;  ///< the primary chain's slowest period, in double
+  double gap = 1;      ///< the primary chain's gap, in double
+};
+/// The shadow of a usable chain.
+template <typename S>
+ChainShadow<S> chainShadow(const BasicMassChain<S>& chain);
+
+template <typename S>
+Trust chainTrust(const ChainShadow<S>& shadow, const BasicChainState<S>& start, const BasicChainRun<S>& run,
+                 long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
+/// The same, the shadow made here.
 template <typename S>
 Trust chainTrust(const BasicMassChain<S>& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
                  long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
@@ -47,6 +67,9 @@ template <typename S>
 class ChainTrustCheck {
  public:
   using H = ShadowScalar<S>;
+  ChainTrustCheck(const ChainShadow<S>& shadow, const BasicChainState<S>& start, long maxContacts,
+                  std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
+  /// The same, the shadow made here (Off makes none).
   ChainTrustCheck(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
                   std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
   /// The run's next event.

@@ -36,11 +36,13 @@ import numpy as _np
 from . import _convert
 from ._convert import Result
 from ._native import run as _run
+from ._native import prepare_chain as _prepare_chain
 from ._native import simulate as _simulate_here
+from ._native import simulate_chain as _simulate_chain
 from ._native import version as __version__
 
 # map and help are left out of a star import: they would hide Python's own
-__all__ = ["info", "simulate", "merge", "family", "orbit", "modes", "glo_set", "report", "stability",
+__all__ = ["Chain", "info", "simulate", "merge", "family", "orbit", "modes", "glo_set", "report", "stability",
            "Result", "GrazeLabWarning", "MAX_EVENTS"]
 
 # ``progress(fraction, text)``: fraction in [0, 1], or None when not known. (A number keyword,
@@ -301,16 +303,14 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         on the stop); ``glo_set`` says which weights graze.
 """
     if masses is not None:
-        options = dict(gap=gap, precision=precision, state=state, contacts=contacts, t_end=t_end,
-                       glo=glo, onepp=onepp, perturb=perturb, glo_weights=glo_weights,
-                       trust=trust,
-                       **_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies,
-                                             design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
-        if samples is not None:
-            grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
-            options["sample_times" if grid else "sample_step"] = samples
-        result, lines, _, _ = _command("simulate", options, progress, document=True, discard_events=not events)
-        return _chain_simulated(result, lines)
+        # (the two-mass keywords beside masses refused)
+        _mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, design_branch,
+                            dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch))
+        chain = Chain(masses=masses, springs=springs, right_spring=right_spring, stop_mass=stop_mass,
+                      frequencies=frequencies, design_branch=design_branch, gap=gap)
+        return chain._simulate(dict(precision=precision, state=state, glo=glo, onepp=onepp, perturb=perturb,
+                                    contacts=contacts, t_end=t_end, trust=trust, glo_weights=glo_weights),
+                               events, samples, progress)
     if frequencies is not None or design_branch is not None or springs is not None or glo_weights is not None:
         raise ValueError("springs, frequencies, design_branch and glo_weights describe a chain given by masses")
     if (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS and contacts <= MAX_EVENTS
@@ -356,31 +356,91 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
     return _simulated(result, decimals)
 
 
-def _chain_simulated(result, lines):
-    """A run of a chain given by masses as simulate returns it: its events and samples as
-    structured arrays with the columns of the command line's CSV (the same names as two masses
-    give: t, type, u1..uN, v1_pre..vN_pre, v<s>_post; samples t, u1..uN, v1..vN)."""
-    n = len(result["chain"]["masses"])
-    s = result["chain"]["stop_mass"]
-    numeric = ([f"u{i + 1}" for i in range(n)] + [f"v{i + 1}_pre" for i in range(n)] + [f"v{s}_post"])
-    if result["events"] is not None:
-        events = result["events"]
-        table = _np.empty(len(events), dtype=[("t", "f8"), ("type", "<U8")] + [(name, "f8") for name in numeric])
-        for name in ("t", "type", *numeric):
-            table[name] = [event[name] for event in events]
-        result["events"] = table
-        if "decimal" in result:
-            written = result["decimal"].pop("events")
+class Chain:
+    """A chain of N masses read, checked and designed once: every run of it reuses its springs
+    (designed for ``frequencies`` when asked), its modes and its error estimate's shadow chain,
+    so that a script running it many times pays for them once (a 3:2:1 design costs
+    milliseconds, a short run microseconds).
+
+    Keywords (as ``simulate``'s chain given by masses):
+    masses: m1, ..., mN [mass].
+    springs: k1, ..., kN [force/length] (k1 alone, the scale, with ``frequencies``).
+    right_spring: a spring from mN to a right wall [force/length] (default none).
+    stop_mass: the mass that meets the stop, 1-based (default the last).
+    frequencies: n1, ..., nN: springs designed so that w_j = n_j w0 (fastest first).
+    design_branch: which design of those ratios, 1-based (default 1).
+    gap: the stop's distance from the stopped mass's rest position [length].
+
+    ``chain.description`` is the chain as the documents write it (its springs as designed, the
+    common ``period`` of a commensurate chain); ``chain.simulate(...)`` runs it."""
+
+    def __init__(self, *, masses: _Sequence[float], springs: _Optional[_Sequence[float]] = None,
+                 right_spring: _Optional[float] = None, stop_mass: _Optional[int] = None,
+                 frequencies: _Optional[_Sequence[int]] = None, design_branch: _Optional[int] = None,
+                 gap: float = 1.0):
+        options = _mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, design_branch, {})
+        options["gap"] = gap
+        given = _convert.option_texts({name: value for name, value in options.items() if value is not None})
+        try:
+            self._prepared = _prepare_chain([part for pair in given for part in pair])
+        except ValueError as error:
+            raise ValueError(_message(str(error))) from None
+        self.description = self._prepared.describe(Result)
+
+    def __repr__(self):
+        return f"Chain({self.description!r})"
+
+    def simulate(self, *, precision: str = "auto", state: _Optional[_Sequence[float]] = None,
+                 glo_weights: _Optional[_Sequence[float]] = None, onepp: _Optional[float] = None,
+                 perturb: _Optional[_Sequence[float]] = None, contacts: _Optional[int] = None,
+                 t_end: _Optional[float] = None, trust: str = "auto", events: bool = True,
+                 samples: _Union[float, _Sequence[float], None] = None,
+                 progress: _Optional[_Progress] = None) -> Result:
+        """One exact run of this chain: the keywords and the result of ``simulate`` with
+        ``masses`` (the same bits), the chain not read nor designed again."""
+        return self._simulate(dict(precision=precision, state=state, glo_weights=glo_weights, onepp=onepp,
+                                   perturb=perturb, contacts=contacts, t_end=t_end, trust=trust),
+                              events, samples, progress)
+
+    def _simulate(self, options, events, samples, progress):
+        options = {name: value for name, value in options.items() if value is not None}
+        if samples is not None:
+            grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
+            options["sample_times" if grid else "sample_step"] = samples
+        contacts = options.get("contacts")
+        # a short run of a commensurate chain (every flight decided within a period) on the
+        # calling thread; anything longer on a thread of its own that Ctrl+C stops
+        direct = (progress is None and "t_end" not in options and samples is None and self._prepared.period > 0
+                  and (contacts is None or (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS)))
+        try:
+            flat = tuple(part for name, value in options.items() for part in (name.replace("_", "-"), value))
+            answer = _simulate_chain(self._prepared, flat, Result, not events, direct)
+            if answer is None:  # values of other types (NumPy, Fraction): as the command line's text
+                flat = tuple(part for pair in _convert.option_texts(options) for part in pair)
+                answer = _simulate_chain(self._prepared, flat, Result, not events, direct)
+        except ValueError as error:
+            raise ValueError(_message(str(error))) from None
+        except OSError as error:
+            raise OSError(_message(str(error))) from None
+        if progress is not None:
+            progress(1.0, "done")
+        result, decimals = answer
+        if "model" in result:  # the note's chain, run by the note's engine
+            return _simulated(result, decimals)
+        return _chain_simulated(result)
+
+
+def _chain_simulated(result):
+    """A run of a chain given by masses as simulate returns it (its events and samples already
+    structured arrays with the command line's columns); in a wider precision than double, the
+    events' exact text as ``events_decimal``, as for two masses."""
+    if "decimal" in result:
+        written = result["decimal"].pop("events")
+        result["decimal"].pop("samples", None)
+        if written is not None:
+            names = [name for name in result["events"].dtype.names if name != "type"]
             result["events_decimal"] = {name: _np.array([event[name] for event in written], dtype=str)
-                                        for name in ("t", *numeric)}
-    if result.get("samples") is not None:
-        columns = result["samples"]
-        names = ["t"] + [f"u{i + 1}" for i in range(n)] + [f"v{i + 1}" for i in range(n)]
-        table = _np.empty(len(columns["t"]), dtype=[(name, "f8") for name in names])
-        for name in names:
-            table[name] = columns[name]
-        result["samples"] = table
-    result["notes"] = _notes(lines)
+                                        for name in names}
     return result
 
 

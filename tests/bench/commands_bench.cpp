@@ -9,11 +9,14 @@
 #include <stop_token>
 #include <vector>
 
+#include "commands/chain_simulate_command.h"
 #include "commands/simulate_command.h"
+#include "core/solver/chain_trust.h"
 #include "core/solver/simulate.h"
 #include "io/cli_input.h"
 #include "io/cli_io.h"
 #include "io/json_value.h"
+#include "io/prepared_chain.h"
 
 namespace {
 
@@ -107,6 +110,79 @@ void BM_SimulateSummary(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 BENCHMARK(BM_SimulateSummary)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
+// A chain of three masses made once, as grazelab.Chain holds it: Arg(0) the designed 3:2:1
+// chain of masses 1, 0.2, 0.05, Arg(1) the same masses on springs 1, 1, 1 (not commensurate)
+grazelab::cli::PreparedMassChain const& preparedThreeMasses(bool designed) {
+  static const auto make = [](bool withDesign) {
+    std::vector<std::pair<QString, QString>> options{{"masses", "1,0.2,0.05"}};
+    if (withDesign) options.emplace_back("frequencies", "3:2:1");
+    else options.emplace_back("springs", "1,1,1");
+    return *grazelab::cli::PreparedMassChain::make(OptionValues(std::move(options))).value;
+  };
+  static const auto designedChain = make(true);
+  static const auto givenChain = make(false);
+  return designed ? *designedChain : *givenChain;
+}
+
+// Chain.simulate(state=[0, 0, 0, 0, 0, 6.7], contacts=10, trust=...) as the module hands it over
+OptionValues threeMassRun(const char* trust) {
+  GivenOption state{"state", {}, {}, true};
+  state.numbers.assign({0, 0, 0, 0, 0, 6.7});
+  GivenOption contacts{"contacts", {}, {}, true};
+  contacts.numbers.assign({10});
+  return OptionValues(std::vector<GivenOption>{{"precision", "auto", {}, false}, state, contacts,
+                                               {"trust", trust, {}, false}});
+}
+
+// The one-off set-up of grazelab.Chain(masses=[1, 0.2, 0.05], frequencies=[3, 2, 1]): read,
+// designed, made ready in double (its modes) with its shadow (trust auto's chain in long double)
+void BM_PrepareDesignedChain(benchmark::State& state) {
+  const OptionValues options(std::vector<std::pair<QString, QString>>{{"masses", "1,0.2,0.05"}, {"frequencies", "3:2:1"}});
+  for (auto _ : state) {
+    const auto chain = grazelab::cli::PreparedMassChain::make(options);
+    benchmark::DoNotOptimize(chain.value.value()->ready<double>().value->dynamics.period);
+    benchmark::DoNotOptimize(chain.value.value()->shadow<double>().slowest);
+  }
+}
+BENCHMARK(BM_PrepareDesignedChain)->Unit(benchmark::kMicrosecond);
+
+// The core's own work in a 10-contact run of a prepared chain: the run, and with Arg(1) its
+// shadow run and comparison (trust auto)
+void BM_PreparedChainCoreRun(benchmark::State& state) {
+  const auto& chain = preparedThreeMasses(true);
+  const auto& ready = *chain.ready<double>().value;
+  const grazelab::core::ChainState start{Eigen::VectorXd::Zero(3), (Eigen::VectorXd(3) << 0, 0, 6.7).finished()};
+  const auto mode = state.range(0) ? grazelab::core::TrustMode::Auto : grazelab::core::TrustMode::Off;
+  for (auto _ : state) {
+    const auto run = grazelab::core::runChain(ready, start, 10);
+    if (mode != grazelab::core::TrustMode::Off) {
+      benchmark::DoNotOptimize(grazelab::core::chainTrust(chain.shadow<double>(), start, run, 10, 0, mode).stateError);
+    }
+    benchmark::DoNotOptimize(run.tFinal);
+  }
+}
+BENCHMARK(BM_PreparedChainCoreRun)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// The whole command on a prepared chain, its document as values (what Chain.simulate calls):
+// Arg(0) trust off, Arg(1) trust auto
+void BM_PreparedChainSimulate(benchmark::State& state) {
+  const auto& chain = preparedThreeMasses(true);
+  const OptionValues options = threeMassRun(state.range(0) ? "auto" : "off");
+  std::FILE* sink = std::fopen("/dev/null", "w");
+  for (auto _ : state) {
+    grazelab::cli::EventTable table;
+    grazelab::cli::JsonValue document;
+    grazelab::cli::Io io;
+    io.out = io.messages = sink;
+    io.events = &table;
+    io.document = &document;
+    QString error;
+    benchmark::DoNotOptimize(grazelab::cli::runChainSimulate(chain, options, io, {}, error));
+  }
+  std::fclose(sink);
+}
+BENCHMARK(BM_PreparedChainSimulate)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

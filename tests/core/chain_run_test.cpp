@@ -482,6 +482,52 @@ TEST(ChainRun, ARunInPiecesIsTheWholeRun) {
   }
 }
 
+// A chain made ready once runs as the chain itself, however many runs share it: the same events,
+// final state and error estimate to the bit, each run from another start in turn (a run that
+// changed the ready chain, or a shadow kept from the run before, would show here); in double,
+// long double and binary128, resonant or not, an interior stop, a right wall
+template <typename S>
+void expectReadyRunsAsTheChain(const BasicMassChain<S>& chain, const std::vector<ChainState>& starts, long contacts,
+                               const char* name) {
+  const BasicReadyChain<S> ready = readyChain(chain);
+  const ChainShadow<S> shadow = chainShadow(chain);
+  for (int pass = 0; pass < 2; ++pass) {
+    for (const ChainState& given : starts) {
+      const BasicChainState<S> start{given.u.cast<S>(), given.v.cast<S>()};
+      const BasicChainRun<S> once = runChain(chain, start, contacts);
+      const BasicChainRun<S> shared = runChain(ready, start, contacts);
+      ASSERT_EQ(once.events.size(), shared.events.size()) << name;
+      for (std::size_t k = 0; k < once.events.size(); ++k) {
+        ASSERT_TRUE(once.events[k].t == shared.events[k].t && once.events[k].type == shared.events[k].type &&
+                    once.events[k].u == shared.events[k].u && once.events[k].vBefore == shared.events[k].vBefore &&
+                    once.events[k].vAfter == shared.events[k].vAfter)
+            << name << " event " << k;
+      }
+      EXPECT_TRUE(once.final.u == shared.final.u && once.final.v == shared.final.v && once.stop == shared.stop) << name;
+      const Trust made = chainTrust(chain, start, once, contacts, S(0), TrustMode::Full);
+      const Trust kept = chainTrust(shadow, start, shared, contacts, S(0), TrustMode::Full);
+      EXPECT_TRUE(made.verdict == kept.verdict && made.stateError == kept.stateError &&
+                  made.timeError == kept.timeError && made.horizon == kept.horizon && made.reason == kept.reason)
+          << name << ": " << made.reason << " against " << kept.reason;
+    }
+  }
+}
+
+TEST(ChainRun, AChainMadeReadyOnceRunsAsTheChain) {
+  std::mt19937 random(29);
+  const MassChain resonant = designed({1.0, 0.2, 0.05}, {3, 2, 1});
+  const MassChain interior{{1.0, 0.7, 0.4}, {1.0, 0.8, 0.6}, 0.5, 2, 0.8};
+  const MassChain four = designed({1.0, 0.6, 0.36, 0.216}, {4, 3, 2, 1});
+  for (const auto& [chain, name] : {std::pair{resonant, "3:2:1"}, std::pair{interior, "interior stop, right wall"},
+                                    std::pair{four, "4:3:2:1"}}) {
+    std::vector<ChainState> starts;
+    for (int k = 0; k < 3; ++k) starts.push_back(randomStart(chain, random));
+    expectReadyRunsAsTheChain(chain, starts, 25, name);
+    expectReadyRunsAsTheChain(chainCast<long double>(chain), starts, 10, name);
+    expectReadyRunsAsTheChain(chainCast<Quad>(chain), starts, 4, name);
+  }
+}
+
 // dense samples: on the grid asked for, up to the run's end; each keeps the energy; on the
 // stop during a stuck phase and never past it; the samples obey M u'' = -K u away from the
 // events (a central difference of samples h apart, the stopped mass included, where it flies);

@@ -8,12 +8,15 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "commands/simulate_command.h"
 #include "core/orbits/chain_glo.h"
 #include "core/orbits/chain_onepp.h"
 #include "core/solver/chain_run.h"
@@ -22,6 +25,7 @@
 #include "io/cli_input.h"
 #include "io/cli_output.h"
 #include "io/json_value.h"
+#include "io/prepared_chain.h"
 
 namespace grazelab::cli {
 namespace {
@@ -46,6 +50,14 @@ struct ColumnNames {
       v.push_back(JsonKey::owned("v" + std::to_string(i)));
       vPre.push_back(JsonKey::owned("v" + std::to_string(i) + "_pre"));
     }
+  }
+  /// The names of a chain of n masses stopped on mass `stopped`, made once per process (a short
+  /// run's document would spend more on them than on its run)
+  static const ColumnNames& of(Eigen::Index n, int stopped) {
+    static std::mutex mutex;
+    static std::map<std::pair<Eigen::Index, int>, ColumnNames> made;
+    const std::lock_guard lock(mutex);
+    return made.try_emplace({n, stopped}, n, stopped).first->second;
   }
 };
 
@@ -109,7 +121,19 @@ template <typename S>
 std::optional<std::vector<S>> numberList(const OptionValues& options, const char* name, Eigen::Index count,
                                          const QString& layout, QString& error) {
   std::vector<S> values;
-  for (const QString& part : options.value(name).split(',')) {
+  // numbers handed over as numbers (the Python module): in double the very numbers their
+  // shortest text would give, read without the text
+  const auto given = std::is_same_v<S, double> ? options.numbers(name) : std::nullopt;
+  if (given) {
+    for (const double value : *given) {
+      if (!std::isfinite(value)) {
+        error = QStringLiteral("--%1: '%2' is not a finite number").arg(name).arg(value);
+        return std::nullopt;
+      }
+      values.push_back(value == 0 ? S(0) : S(value));  // (-0 reads as 0 from its text "0")
+    }
+  }
+  for (const QString& part : given ? QStringList() : options.value(name).split(',')) {
     const core::ParsedScalar<S> value = core::parseScalar<S>(part.trimmed().toStdString());
     if (!value.value || !core::isFinite(*value.value)) {
       error = QStringLiteral("--%1: '%2' is not a finite number").arg(name, part);
@@ -143,6 +167,37 @@ const char* refusalWords(core::OnePeriodicRefusal refusal) {
   return "unknown";
 }
 
+// exactly one start of a chain of n masses given, or false with `error` set
+bool oneStartOf(const OptionValues& options, Eigen::Index n, QString& error) {
+  if (int(options.isSet("state")) + int(options.isSet("glo-weights")) + int(options.isSet("onepp")) == 1) return true;
+  error = QStringLiteral("a chain of N masses starts from --state u1,...,uN,v1,...,vN (%1 numbers), "
+                         "--glo-weights l1,...,lN (%2) or --onepp T: one of them")
+              .arg(2 * n)
+              .arg(n);
+  return false;
+}
+
+// --glo is the two-mass chain's: a chain of N masses has --glo-weights; false with `error` set
+bool noTwoMassStart(const OptionValues& options, QString& error) {
+  if (!options.isSet("glo")) return true;
+  error = "--glo is not available for a chain of N masses: start it with --state u1,...,uN,v1,...,vN, "
+          "--glo-weights l1,...,lN or --onepp T";
+  return false;
+}
+
+// The note's chain given by --masses (writesTheNotesChain), its start given as a chain's: run by
+// the note's engine, as the two-mass options would run it (the same bits)
+int runTheNotesChain(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
+  if (!noTwoMassStart(options, error) || !oneStartOf(options, 2, error)) return kExitInvalidInput;
+  const auto twoMass = notesRunOptions(options, error);
+  if (!twoMass) return kExitInvalidInput;
+  const auto precision = parsePrecisionOption(*twoMass, error);
+  if (!precision) return kExitInvalidInput;
+  const auto trust = parseTrustOption(*twoMass, error);
+  if (!trust) return kExitInvalidInput;
+  return runSimulate(*twoMass, *precision, *trust, io, std::move(stop), error);
+}
+
 // The run's start in S, from the chain in S: --state, --glo-weights (GLO_lambda at its touch) or
 // --onepp T (the 1IPP orbit's data right after its impact), plus --perturb. --state, the weights,
 // T and --perturb are read in S (0.1 is 0.1 to binary128's digits)
@@ -151,13 +206,7 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
                                                    QString& error, std::string* description = nullptr) {
   const Eigen::Index n = chain.size();
   const int s = chain.stopped() - 1;
-  if (int(options.isSet("state")) + int(options.isSet("glo-weights")) + int(options.isSet("onepp")) != 1) {
-    error = QStringLiteral("a chain of N masses starts from --state u1,...,uN,v1,...,vN (%1 numbers), "
-                           "--glo-weights l1,...,lN (%2) or --onepp T: one of them")
-                .arg(2 * n)
-                .arg(n);
-    return std::nullopt;
-  }
+  if (!oneStartOf(options, n, error)) return std::nullopt;
   core::BasicChainState<S> start;
   if (options.isSet("onepp")) {
     const core::ParsedScalar<S> T = core::parseScalar<S>(options.value("onepp").trimmed().toStdString());
@@ -278,12 +327,21 @@ std::optional<S> timeLimit(const QString& tEndText, QString& error) {
   return *parsed.value;
 }
 
+// the shadow chain an error estimate of `mode` runs (none made for Off, which runs none)
+template <typename S>
+const core::ChainShadow<S>& shadowFor(const PreparedMassChain& chain, core::TrustMode mode) {
+  static const core::ChainShadow<S> none;
+  return mode == core::TrustMode::Off ? none : chain.shadow<S>();
+}
+
 // `keepEvents` false: the run's statistics alone (the Python module's events=False), its error
 // estimate made online as the events come, none of them held
 template <typename S>
-std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::BasicMassChain<S>& chain, long contacts,
+std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const PreparedMassChain& prepared, long contacts,
                                    const QString& tEndText, std::stop_token stop, QString& error,
                                    bool keepEvents = true, core::TrustMode trustMode = core::TrustMode::Off) {
+  const core::BasicReadyChain<S>& ready = *prepared.ready<S>().value;
+  const core::BasicMassChain<S>& chain = ready.numbers;
   std::string description;
   const auto start = chainStart<S>(options, chain, error, &description);
   if (!start) return std::nullopt;
@@ -303,12 +361,12 @@ std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const core::Basi
     };
   }
   if (keepEvents) {
-    in.run = core::runChain(chain, *start, contacts, *tEnd, stop, {}, sampling);
+    in.run = core::runChain(ready, *start, contacts, *tEnd, stop, {}, sampling);
     return in;
   }
-  core::ChainTrustCheck<S> check(chain, *start, contacts, *tEnd, trustMode, stop);
+  core::ChainTrustCheck<S> check(shadowFor<S>(prepared, trustMode), *start, contacts, *tEnd, trustMode, stop);
   const core::ChainEventSink<S> sink = [&check](const core::BasicChainEvent<S>& event) { check.observe(event); };
-  in.run = core::runChain(chain, *start, contacts, *tEnd, stop, sink, sampling);
+  in.run = core::runChain(ready, *start, contacts, *tEnd, stop, sink, sampling);
   in.trust = check.finish(in.run);
   return in;
 }
@@ -335,18 +393,18 @@ V samplesValue(const ColumnNames& names, const ChainRunIn<S>& in) {
 
 // (events null when they were not kept)
 template <typename S>
-V runDocument(const core::BasicMassChain<S>& masses, const ChainRunIn<S>& in, V precision, const core::Trust& trust,
+V runDocument(const core::BasicReadyChain<S>& ready, const ChainRunIn<S>& in, V precision, const core::Trust& trust,
               bool sampled, bool keptEvents = true) {
+  const core::BasicMassChain<S>& masses = ready.numbers;
   const core::BasicChainRun<S>& run = in.run;
   std::vector<V> events;
   events.reserve(run.events.size());
-  const ColumnNames names(masses.size(), masses.stopped());
+  const ColumnNames& names = ColumnNames::of(masses.size(), masses.stopped());
   for (const core::BasicChainEvent<S>& event : run.events) events.push_back(eventValue(names, event));
-  const core::BasicChainDynamics<S> dynamics = core::chainDynamicsIn<S>(masses);
   const std::string message = stopMessage(run.stop);
   using std::abs;
   V document = V::object(
-      {{"chain", massChainValue(masses, dynamics.period)},
+      {{"chain", massChainValue(masses, ready.dynamics.period)},
        {"initial", V::object({{"description", V::of(in.description)}, {"state", stateValue(names, S(0), in.start)}})},
        {"events", keptEvents ? V::array(std::move(events)) : V::null()},
        {"final", stateValue(names, run.tFinal, run.final)},
@@ -397,11 +455,12 @@ std::string csvLine(const core::BasicChainEvent<S>& event) {
 // The summary of a streamed run: what the json says but its events, as the two-mass summary
 // lays it out
 template <typename S>
-std::string summaryText(const core::BasicMassChain<S>& masses, const ChainRunIn<S>& in, double seconds,
+std::string summaryText(const core::BasicReadyChain<S>& ready, const ChainRunIn<S>& in, double seconds,
                         const std::string& precision, const std::vector<std::string>& raised,
                         const core::Trust& trust) {
   const core::BasicChainRun<S>& run = in.run;
-  const core::BasicChainDynamics<S> dynamics = core::chainDynamicsIn<S>(masses);
+  const core::BasicMassChain<S>& masses = ready.numbers;
+  const core::BasicChainDynamics<S>& dynamics = ready.dynamics;
   using Vector = core::ChainVector<S>;
   std::string text;
   text += "chain          masses " + listText<S>(Eigen::Map<const Vector>(masses.masses.data(), masses.size())) +
@@ -442,14 +501,23 @@ std::string summaryText(const core::BasicMassChain<S>& masses, const ChainRunIn<
 }  // namespace
 
 int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
-  for (const char* notYet : {"glo"}) {
-    if (options.isSet(notYet)) {
-      error = QStringLiteral("--%1 is not available for a chain of N masses: start it with --state "
-                             "u1,...,uN,v1,...,vN, --glo-weights l1,...,lN or --onepp T")
-                  .arg(notYet);
-      return kExitInvalidInput;
-    }
+  if (writesTheNotesChain(options)) return runTheNotesChain(options, io, std::move(stop), error);
+  const auto chain = PreparedMassChain::make(options, stop);
+  if (!chain.value && chain.error.isEmpty()) return kExitInterrupted;
+  if (!chain.value) {
+    error = chain.error;
+    return kExitInvalidInput;
   }
+  return runChainSimulate(**chain.value, options, io, stop, error);
+}
+
+int runChainSimulate(const PreparedMassChain& chain, const OptionValues& options, const Io& io, std::stop_token stop,
+                     QString& error) {
+  if (chain.isTheNotesChain()) {
+    const OptionValues whole(options, chain.givenOptions(), {});
+    return runTheNotesChain(whole, io, std::move(stop), error);
+  }
+  if (!noTwoMassStart(options, error)) return kExitInvalidInput;
   const QString formatText = options.isSet("format") ? options.value("format") : QStringLiteral("json");
   if (!QStringList{"json", "csv", "summary"}.contains(formatText)) {
     error = QStringLiteral("--format: '%1' is not json, csv or summary for a chain of N masses").arg(formatText);
@@ -477,17 +545,12 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
     error = QStringLiteral("--trust: '%1' is not off, auto or full").arg(options.value("trust"));
     return kExitInvalidInput;
   }
-  const auto chain = parseMassChain(options, stop);
-  if (!chain.value && chain.error.isEmpty()) return kExitInterrupted;
-  if (!chain.value) {
-    error = chain.error;
-    return kExitInvalidInput;
-  }
-  // the chain's numbers in each rung's precision (read again from their text there)
-  const auto chainIn = [&]<typename S>() -> std::optional<core::BasicMassChain<S>> {
-    Parsed<core::BasicMassChain<S>> parsed = massChainIn<S>(options, *chain.value);
-    if (!parsed.value) error = parsed.error;
-    return std::move(parsed.value);
+  // the chain in each rung's precision (its numbers read again from their text there), made
+  // ready once
+  const auto chainIn = [&]<typename S>() -> const core::BasicReadyChain<S>* {
+    const Parsed<core::BasicReadyChain<S>>& ready = chain.ready<S>();
+    if (!ready.value) error = ready.error;
+    return ready.value ? &*ready.value : nullptr;
   };
   // the Python module's events=False: a json document without events, none of them held
   const bool keepEvents = !(format == ChainFormat::Json && io.events && io.events->discard);
@@ -534,8 +597,9 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
   std::optional<bool> raisedAgrees;
   // a streamed rung (csv, summary): the events go out as they come, none is held
   const auto streamed = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
-    const auto masses = chainIn.template operator()<S>();
-    if (!masses) return kExitInvalidInput;
+    const core::BasicReadyChain<S>* ready = chainIn.template operator()<S>();
+    if (!ready) return kExitInvalidInput;
+    const core::BasicMassChain<S>* masses = &ready->numbers;
     const auto start = chainStart<S>(options, *masses, error);
     if (!start) return kExitInvalidInput;
     const long before = written;  // rows a lower precision wrote
@@ -547,7 +611,7 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       headed = true;
     }
     std::optional<core::ChainTrustCheck<S>> check;
-    if (format == ChainFormat::Summary) check.emplace(*masses, *start, contacts, *limit, *trustMode, stop);
+    if (format == ChainFormat::Summary) check.emplace(shadowFor<S>(chain, *trustMode), *start, contacts, *limit, *trustMode, stop);
     if (stop.stop_requested()) return kExitInterrupted;
     const auto began = std::chrono::steady_clock::now();  // the run's own time, its shadow apart
     long seen = 0;
@@ -568,7 +632,7 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       lastWrittenTime = core::toDouble(event.t);
       lastWrittenType = event.type;
     };
-    const ChainRunIn<S> in{*start, {}, core::runChain(*masses, *start, contacts, *limit, stop, sink), *limit, {}, false,
+    const ChainRunIn<S> in{*start, {}, core::runChain(*ready, *start, contacts, *limit, stop, sink), *limit, {}, false,
                            std::nullopt};
     std::fflush(io.out);
     if (in.run.stop == core::ChainStop::Cancelled) {
@@ -584,7 +648,7 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       std::vector<std::string> raised;
       for (const V& line : escalations) raised.push_back(line.text);
       const std::string used = std::string(name) + (precisionText == "auto" ? " (auto)" : "");
-      std::fputs(summaryText(*masses, in, seconds, used, raised, check->finish(in.run)).c_str(), io.out);
+      std::fputs(summaryText(*ready, in, seconds, used, raised, check->finish(in.run)).c_str(), io.out);
       std::fflush(io.out);
     } else if (!escalations.empty()) {
       // the rows before the raise are the lower precision's: say whether the raised run meets
@@ -601,9 +665,9 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
   // one rung of the ladder in S: the exit code when it ends the command, nothing to go up
   const auto rung = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
     if (format != ChainFormat::Json) return streamed.template operator()<S>(name, next, last);
-    const auto masses = chainIn.template operator()<S>();
-    if (!masses) return kExitInvalidInput;
-    const auto in = runIn<S>(options, *masses, contacts, tEnd, stop, error, keepEvents, *trustMode);
+    const core::BasicReadyChain<S>* ready = chainIn.template operator()<S>();
+    if (!ready) return kExitInvalidInput;
+    const auto in = runIn<S>(options, chain, contacts, tEnd, stop, error, keepEvents, *trustMode);
     if (!in) return kExitInvalidInput;
     if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
     if (!last && in->run.stop == core::ChainStop::Undecided) {
@@ -611,9 +675,10 @@ int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token 
       return std::nullopt;
     }
     const core::Trust trust = in->trust ? *in->trust
-                                        : core::chainTrust(*masses, in->start, in->run, contacts, in->tEnd, *trustMode, stop);
+                                        : core::chainTrust(shadowFor<S>(chain, *trustMode), in->start, in->run, contacts,
+                                                           in->tEnd, *trustMode, stop);
     if (stop.stop_requested()) return kExitInterrupted;
-    emitDocument(io, runDocument(*masses, *in, report(name), trust,
+    emitDocument(io, runDocument(*ready, *in, report(name), trust,
                                  options.isSet("sample-step") || options.isSet("sample-times"), keepEvents));
     return 0;
   };

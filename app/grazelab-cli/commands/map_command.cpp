@@ -78,7 +78,18 @@ std::optional<Shard> parseShard(const QString& text, QString& error) {
   return shard;
 }
 
-std::optional<core::MapSpec> parseSpec(const QCommandLineParser& parser, QString& error) {
+// The axes of a map of the note's chain written with --masses that the two-mass map shares:
+// u1, u2, v1, v2, from --state (not the GLO weights w<j> nor --glo-weights; --glo and --onepp
+// are the two-mass options', refused for a chain given by --masses)
+bool onStateAxes(const QCommandLineParser& parser) {
+  const auto onState = [&](const char* axis) {
+    const QString name = parser.value(axis).section(':', 0, 0).trimmed();
+    return QStringList{"u1", "u2", "v1", "v2"}.contains(name);
+  };
+  return onState("x") && onState("y") && !parser.isSet("glo-weights") && !parser.isSet("glo") && !parser.isSet("onepp");
+}
+
+std::optional<core::MapSpec> parseSpec(const OptionValues& parser, QString& error) {
   core::MapSpec spec;
   for (const char* name : {"x", "y"}) {
     if (!parser.isSet(name)) {
@@ -203,8 +214,11 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
             "or binary128 where a contact needs it); use simulate for one run in long or quad";
     return kExitInvalidInput;
   }
-  // a chain of N masses (--masses) or the two-mass chain
-  const bool masses = parser.isSet("masses");
+  // a chain of N masses (--masses) or the two-mass chain; the note's chain written with --masses
+  // over the axes u<i>, v<i> from a --state (at rest at 0 by default, as for N masses) is the
+  // note's map (its engine: the two-mass options' bits)
+  const bool notes = parser.isSet("masses") && writesTheNotesChain(parser) && onStateAxes(parser);
+  const bool masses = parser.isSet("masses") && !notes;
   std::optional<core::MapSpec> spec;
   std::optional<core::ChainMapSpec> chainSpec;
   if (masses) {
@@ -212,6 +226,11 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
     chainSpec = parseChainMapSpec(parser, stop, error, stopped);
     if (stopped) return kExitInterrupted;
     if (!chainSpec) return kExitInvalidInput;
+  } else if (notes) {
+    const OptionValues given(parser);
+    const OptionValues atRest(given, {GivenOption{"state", "0,0,0,0", {}, false}}, {});
+    spec = parseSpec(parser.isSet("state") ? given : atRest, error);
+    if (!spec) return kExitInvalidInput;
   } else {
     for (const char* name : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch", "glo-weights"}) {
       if (parser.isSet(name)) {

@@ -214,8 +214,20 @@ template <typename S>
 core::ExactParameters exactParameters(const OptionValues& options) {
   // the decimal read with 400 bits: equal to the value read in S only when S holds it exactly
   using Wide = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<400, boost::multiprecision::digit_base_2>>;
+  // the text each number was written as: the two-mass options, or --masses m1,m2 and --springs
+  // k1[,k2] for the same chain (k1 = 1 when not given, k2 designed when not given)
+  const QStringList masses = options.value("masses").split(',');
+  const QStringList springs = options.isSet("springs") ? options.value("springs").split(',') : QStringList();
+  auto textOf = [&](const char* name) -> QString {
+    if (!options.isSet("masses")) return options.value(name);
+    const std::string_view field(name);
+    if (field == "m1" || field == "m2") return masses.value(field == "m1" ? 0 : 1).trimmed();
+    if (field == "k1") return springs.isEmpty() ? QStringLiteral("1") : springs.value(0).trimmed();
+    if (field == "k2") return springs.value(1).trimmed();
+    return options.value(name);
+  };
   auto exact = [&](const char* name) {
-    const QString text = options.value(name);
+    const QString text = textOf(name);
     if (text.isEmpty()) return true;
     QString error;
     const auto value = toNumber<S>(name, text, error);
@@ -472,13 +484,50 @@ Parsed<MassChainInput> parseMassChain(const OptionValues& options, std::stop_tok
 // --frequencies 2:1 is the 1:2 design of branch upper (--design-branch 1, the larger k2) or lower
 // (2), with the design's exact resonance; springs given, or designed for another ratio, are k1
 // and k2 as given. Every number is read from its text in S, as --m1 ... would be.
-template <typename S>
-Parsed<ModelInput<S>> twoMassChain(const OptionValues& options) {
-  // the shape first: a chain of more masses is not designed only to be refused
+namespace {
+
+// --masses m1,m2 stopped on mass 2 with no right wall: the shape of the note's chain
+bool hasTheNotesShape(const OptionValues& options) {
   const qsizetype count = options.value("masses").split(',').size();
   const bool stopOnTwo = !options.isSet("stop-mass") || options.value("stop-mass").trimmed() == "2";
   const bool noWall = !options.isSet("right-spring") || core::parseScalar<double>(options.value("right-spring").toStdString()).value == 0.0;
-  if (count != 2 || !stopOnTwo || !noWall) {
+  return count == 2 && stopOnTwo && noWall;
+}
+
+}  // namespace
+
+bool writesTheNotesChain(const OptionValues& options) {
+  if (!options.isSet("masses") || !options.isSet("frequencies") || !hasTheNotesShape(options)) return false;
+  QString error;
+  const auto ratios = toRatios(options.value("frequencies"), 2, error);
+  return ratios && *ratios == std::vector<int>{2, 1};
+}
+
+std::optional<OptionValues> notesRunOptions(const OptionValues& options, QString& error) {
+  if (!options.isSet("glo-weights")) return OptionValues(options, {}, {});
+  const QStringList parts = options.value("glo-weights").split(',');
+  double sum = 0;
+  for (const QString& part : parts) {
+    const core::ParsedScalar<double> weight = core::parseScalar<double>(part.trimmed().toStdString());
+    if (parts.size() != 2 || !weight.value || !std::isfinite(*weight.value)) {
+      error = "--glo-weights: one finite weight per mode";
+      return std::nullopt;
+    }
+    sum += *weight.value;
+  }
+  // (the tolerance of the chain's own GLO start, core/orbits/chain_glo.cpp)
+  if (!(std::abs(sum - 1) <= 1e-12)) {
+    error = "--glo-weights: the weights must sum to 1 (an affine combination of the GLOMs keeps the "
+            "stopped mass on the stop)";
+    return std::nullopt;
+  }
+  return OptionValues(options, {GivenOption{"glo", parts[1].trimmed(), {}, false}}, {"glo-weights"});
+}
+
+template <typename S>
+Parsed<ModelInput<S>> twoMassChain(const OptionValues& options) {
+  // the shape first: a chain of more masses is not designed only to be refused
+  if (!hasTheNotesShape(options)) {
     return {std::nullopt, "this command computes the two-mass chain stopped on mass 2 (no right wall) for now: "
                           "give --masses m1,m2, or the two-mass options"};
   }

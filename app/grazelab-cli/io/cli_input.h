@@ -106,6 +106,18 @@ struct MassChainInput {
 /// reason. An interrupted design returns no chain and an empty error (`stop` was requested).
 Parsed<MassChainInput> parseMassChain(const OptionValues& options, std::stop_token stop = {});
 
+/// Whether --masses writes the note's chain: two masses stopped on mass 2, no right wall, the
+/// springs designed for the ratios 2:1 (--frequencies 2:1). Its runs are the note's engine's (the
+/// two-mass solver with the design's exact 1:2 resonance and its quartic contact search), so
+/// that it gives the two-mass options' bits however it is written.
+bool writesTheNotesChain(const OptionValues& options);
+
+/// The options of a run of the note's chain given by --masses, as the two-mass commands read
+/// them (`options` kept by reference): --glo-weights l1,l2, summing to 1, become --glo l2
+/// (GLO_lambda = (1 - lambda) GLOM_1 + lambda GLOM_2); every other option is read as given.
+/// Nothing, with `error`, for weights that are not two finite numbers summing to 1.
+std::optional<OptionValues> notesRunOptions(const OptionValues& options, QString& error);
+
 /// The chain of `input` (parseMassChain's) with its numbers in the run's precision S: read again
 /// from their decimal text in S (0.7 in binary128 is not double's 0.7), designed springs refined
 /// for those numbers in binary128 (core::refinedSprings); in double, input.chain itself.

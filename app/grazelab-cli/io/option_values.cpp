@@ -18,6 +18,16 @@ OptionValues::OptionValues(std::vector<std::pair<QString, QString>> given) {
 
 OptionValues::OptionValues(std::vector<GivenOption> given) : m_given(std::move(given)) {}
 
+OptionValues::OptionValues(const OptionValues& base, std::vector<GivenOption> given, std::vector<std::string> dropped)
+    : m_base(&base), m_given(std::move(given)), m_dropped(std::move(dropped)) {}
+
+bool OptionValues::dropped(std::string_view name) const {
+  for (const std::string& gone : m_dropped) {
+    if (gone == name) return true;
+  }
+  return false;
+}
+
 const GivenOption* OptionValues::given(std::string_view name) const {
   for (const GivenOption& option : m_given) {
     if (option.name == name) return &option;
@@ -27,7 +37,8 @@ const GivenOption* OptionValues::given(std::string_view name) const {
 
 bool OptionValues::isSet(std::string_view name) const {
   if (m_parser) return m_parser->isSet(QString::fromUtf8(name.data(), qsizetype(name.size())));
-  return given(name) != nullptr;
+  if (given(name)) return true;
+  return m_base && !dropped(name) && m_base->isSet(name);
 }
 
 bool OptionValues::isSet(const QString& name) const {
@@ -38,6 +49,7 @@ bool OptionValues::isSet(const QString& name) const {
 QString OptionValues::value(std::string_view name) const {
   if (m_parser) return m_parser->value(QString::fromUtf8(name.data(), qsizetype(name.size())));
   const GivenOption* option = given(name);
+  if (!option && m_base && !dropped(name)) return m_base->value(name);
   if (!option) return defaultOptionValue(name);
   if (!option->numeric) return option->text;
   std::string joined;
@@ -56,6 +68,7 @@ QString OptionValues::value(const QString& name) const {
 std::optional<std::span<const double>> OptionValues::numbers(std::string_view name) const {
   if (m_parser) return std::nullopt;
   const GivenOption* option = given(name);
+  if (!option && m_base && !dropped(name)) return m_base->numbers(name);
   if (!option || !option->numeric) return std::nullopt;
   return std::span<const double>(option->numbers.data(), option->numbers.size());
 }

@@ -38,6 +38,9 @@ class OptionValues {
   explicit OptionValues(std::vector<std::pair<QString, QString>> given);
   /// Options by name, each as its text or its numbers.
   explicit OptionValues(std::vector<GivenOption> given);
+  /// `base` (kept by reference: it must outlive this) with the options `given` added, each
+  /// replacing base's of the same name, and the options named in `dropped` taken out.
+  OptionValues(const OptionValues& base, std::vector<GivenOption> given, std::vector<std::string> dropped);
 
   bool isSet(const char* name) const { return isSet(std::string_view(name)); }
   bool isSet(std::string_view name) const;
@@ -53,8 +56,12 @@ class OptionValues {
  private:
   const GivenOption* given(std::string_view name) const;
 
+  bool dropped(std::string_view name) const;
+
   const QCommandLineParser* m_parser = nullptr;
+  const OptionValues* m_base = nullptr;
   std::vector<GivenOption> m_given;
+  std::vector<std::string> m_dropped;
 };
 
 /// The default text of an option of `info` and `simulate` (empty when it has none).

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#include "io/prepared_chain.h"
+
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace grazelab::cli {
+
+Parsed<std::shared_ptr<const PreparedMassChain>> PreparedMassChain::make(const OptionValues& options,
+                                                                         std::stop_token stop) {
+  Parsed<MassChainInput> input = parseMassChain(options, std::move(stop));
+  if (!input.value) return {std::nullopt, input.error};
+  // the chain's options kept as text (a command line's options live in its parser, which goes)
+  std::vector<GivenOption> own;
+  for (const char* name : {"masses", "springs", "right-spring", "stop-mass", "gap", "frequencies", "design-branch"}) {
+    if (options.isSet(name)) own.push_back({name, options.value(name), {}, false});
+  }
+  return {std::shared_ptr<const PreparedMassChain>(new PreparedMassChain(std::move(own), std::move(*input.value))),
+          {}};
+}
+
+PreparedMassChain::PreparedMassChain(std::vector<GivenOption> given, MassChainInput input)
+    : m_given(given), m_options(std::move(given)), m_input(std::move(input)), m_notes(writesTheNotesChain(m_options)) {}
+
+template <typename S>
+PreparedMassChain::InPrecision<S>& PreparedMassChain::in() const {
+  if constexpr (std::is_same_v<S, double>) return m_double;
+  else if constexpr (std::is_same_v<S, long double>) return m_long;
+  else return m_quad;
+}
+
+template <typename S>
+const Parsed<core::BasicReadyChain<S>>& PreparedMassChain::ready() const {
+  InPrecision<S>& slot = in<S>();
+  std::call_once(slot.readyOnce, [&] {
+    Parsed<core::BasicMassChain<S>> numbers = massChainIn<S>(m_options, m_input);
+    if (numbers.value) slot.ready.value = core::readyChain(*numbers.value);
+    slot.ready.error = numbers.error;
+  });
+  return slot.ready;
+}
+
+template <typename S>
+const core::ChainShadow<S>& PreparedMassChain::shadow() const {
+  InPrecision<S>& slot = in<S>();
+  std::call_once(slot.shadowOnce, [&] { slot.shadow = core::chainShadow(ready<S>().value->numbers); });
+  return slot.shadow;
+}
+
+#define GRAZELAB_INSTANTIATE(S)                                                               \
+  template const Parsed<core::BasicReadyChain<S>>& PreparedMassChain::ready<S>() const; \
+  template const core::ChainShadow<S>& PreparedMassChain::shadow<S>() const;
+GRAZELAB_INSTANTIATE(double)
+GRAZELAB_INSTANTIATE(long double)
+GRAZELAB_INSTANTIATE(core::Quad)
+#undef GRAZELAB_INSTANTIATE
+
+}  // namespace grazelab::cli

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <stop_token>
+#include <vector>
+
+#include "core/solver/chain_run.h"
+#include "core/solver/chain_trust.h"
+#include "io/cli_input.h"
+#include "io/option_values.h"
+
+namespace grazelab::cli {
+
+/// A chain of N masses as the commands read it (--masses, --springs, --right-spring,
+/// --stop-mass, --gap, --frequencies, --design-branch): read, checked and designed once, then
+/// made ready to run in each precision (its numbers read again there, its modes computed) and
+/// its shadow (the run's error estimate) the first time a run asks for them. The command line
+/// makes one per command; the Python module's Chain one per object, shared by every run of it.
+/// Immutable once made; safe to use from several threads.
+class PreparedMassChain {
+ public:
+  /// The chain of `options`, or the line that says why there is none; an interrupted design
+  /// gives neither (`stop` was requested).
+  static Parsed<std::shared_ptr<const PreparedMassChain>> make(const OptionValues& options,
+                                                               std::stop_token stop = {});
+
+  /// The chain in double, and how its springs came when designed.
+  const MassChainInput& input() const { return m_input; }
+  /// The chain's own options (those given of the seven above), as text.
+  const OptionValues& options() const { return m_options; }
+  const std::vector<GivenOption>& givenOptions() const { return m_given; }
+  /// It is the note's chain, written with --masses (writesTheNotesChain).
+  bool isTheNotesChain() const { return m_notes; }
+
+  /// The chain in S, ready to run; or why its numbers cannot be read there (a design that
+  /// cannot be refined for them).
+  template <typename S>
+  const Parsed<core::BasicReadyChain<S>>& ready() const;
+  /// The shadow of its runs in S (precondition: ready<S>() has a value).
+  template <typename S>
+  const core::ChainShadow<S>& shadow() const;
+
+ private:
+  PreparedMassChain(std::vector<GivenOption> given, MassChainInput input);
+
+  template <typename S>
+  struct InPrecision {
+    std::once_flag readyOnce, shadowOnce;
+    Parsed<core::BasicReadyChain<S>> ready;
+    core::ChainShadow<S> shadow;
+  };
+  template <typename S>
+  InPrecision<S>& in() const;
+
+  std::vector<GivenOption> m_given;
+  OptionValues m_options;
+  MassChainInput m_input;
+  bool m_notes = false;
+  mutable InPrecision<double> m_double;
+  mutable InPrecision<long double> m_long;
+  mutable InPrecision<core::Quad> m_quad;
+};
+
+}  // namespace grazelab::cli
