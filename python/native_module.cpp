@@ -534,31 +534,13 @@ const ChainDtypes& chainDtypes(std::size_t n, std::size_t stopped) {
       .first->second;
 }
 
-// A chain's events, objects of the same fields in the dtype's order, as one structured array
-// (t, the type's UCS-4 letters, then the numbers in double)
-py::array chainEventArray(const std::vector<grazelab::cli::JsonValue>& events, const py::dtype& dtype) {
-  py::array array(dtype, py::array::ShapeContainer{static_cast<py::ssize_t>(events.size())});
-  auto* data = static_cast<char*>(array.mutable_data());
-  const std::size_t itemsize = std::size_t(dtype.itemsize());
-  for (std::size_t k = 0; k < events.size(); ++k) {
-    char* row = data + k * itemsize;
-    std::memset(row, 0, itemsize);
-    char* number = row;
-    for (const grazelab::cli::JsonValue::Field& field : events[k].fields) {
-      if (field.second.kind == grazelab::cli::JsonValue::Kind::String) {  // type: 8 UCS-4 letters after t
-        char32_t letters[8] = {};
-        for (std::size_t i = 0; i < field.second.text.size() && i < 8; ++i) letters[i] = char32_t(field.second.text[i]);
-        std::memcpy(row + sizeof(double), letters, sizeof letters);
-        number = row + sizeof(double) + sizeof letters;
-        continue;
-      }
-      const double value = field.second.kind == grazelab::cli::JsonValue::Kind::Null
-                               ? std::numeric_limits<double>::quiet_NaN() : field.second.toDouble();
-      std::memcpy(number, &value, sizeof value);
-      number += sizeof value;
-    }
-  }
-  return array;
+// A chain's events as one structured array that owns the table's rows (no copy: the rows move
+// into the array's base object; their layout is the dtype's)
+py::array chainEventArray(grazelab::cli::ChainEventTable&& table, const py::dtype& dtype) {
+  auto* rows = new std::vector<char>(std::move(table.rows));
+  py::capsule owner(rows, [](void* p) { delete static_cast<std::vector<char>*>(p); });
+  return py::array(dtype, {static_cast<py::ssize_t>(table.count)}, {static_cast<py::ssize_t>(table.rowBytes())},
+                   rows->data(), owner);
 }
 
 // A chain's samples, an object of columns in the dtype's order, as one structured array
@@ -621,10 +603,12 @@ py::object simulateChain(const ChainHandle& chain, const py::sequence& given, co
   MemoryStream messages;
   auto table = std::make_unique<EventTable>();
   table->discard = discardEvents;
+  grazelab::cli::ChainEventTable chainTable;
   grazelab::cli::Io io;
   io.out = messages.file();  // (a run whose document is taken as values writes no output)
   io.messages = messages.file();
   io.events = table.get();
+  io.chainEvents = &chainTable;
   grazelab::cli::JsonValue document;
   io.document = &document;
   std::vector<grazelab::core::Sample> twoMassSamples;
@@ -672,15 +656,14 @@ py::object simulateChain(const ChainHandle& chain, const py::sequence& given, co
   const grazelab::cli::JsonValue* described = document.find("chain");
   const ChainDtypes& dtypes = chainDtypes(described->find("masses")->items.size(),
                                           std::size_t(described->find("stop_mass")->integer));
-  const grazelab::cli::JsonValue* events = document.find("events");
-  const py::object eventArray = events->kind == grazelab::cli::JsonValue::Kind::Array
-                                    ? py::object(chainEventArray(events->items, dtypes.events)) : py::object(py::none());
+  const py::object eventArray =
+      discardEvents ? py::object(py::none()) : py::object(chainEventArray(std::move(chainTable), dtypes.events));
   const grazelab::cli::JsonValue* samples = document.find("samples");
   const py::object sampleArray = samples ? py::object(chainSampleArray(*samples, dtypes.samples)) : py::object();
-  const py::object decimal = document.holdsWideNumbers() ? grazelab::python::toPython(document, resultType, true)
-                                                         : py::object();
   document.remove("events");
   document.remove("samples");
+  const py::object decimal = document.holdsWideNumbers() ? grazelab::python::toPython(document, resultType, true)
+                                                         : py::object();
   py::object result = grazelab::python::toPython(document, resultType);
   if (PyDict_SetItem(result.ptr(), eventsKey, eventArray.ptr()) != 0 ||
       PyDict_SetItem(result.ptr(), notesKey, notesOf(log).ptr()) != 0) {
@@ -688,7 +671,8 @@ py::object simulateChain(const ChainHandle& chain, const py::sequence& given, co
   }
   if (sampleArray) result["samples"] = sampleArray;
   if (decimal) result["decimal"] = decimal;
-  return py::make_tuple(result, py::none());
+  // in long double or binary128 the events' decimal text, 2N + 2 a row, as the command line writes it
+  return py::make_tuple(result, chainTable.decimals.empty() ? py::object(py::none()) : py::cast(chainTable.decimals));
 }
 
 // The chain as the documents write it (masses, springs designed, right spring, stop, gap, the

@@ -64,7 +64,8 @@ ChainOrProblem<S> makeChain(const BasicModel<S>& model) {
   if (!representable) {
     return {std::nullopt,
             "the ratios m2/m1 = " + formatScalar(beta) + " and k2/k1 = " + formatScalar(kappa) +
-                " are beyond the range of this precision (try --precision long or quad)"};
+                " are beyond the range of this precision",
+            ChainProblem::BeyondRange};
   }
   // the fast phase over one slow period is ratio * 2 pi, known to ratio * 2 pi * eps: beyond
   // 1e-6 rad the fast mode's contribution (and with it every contact time) is rounding, and
@@ -75,8 +76,8 @@ ChainOrProblem<S> makeChain(const BasicModel<S>& model) {
             "w1/w2 = " + formatScalar(chain.ratio) +
                 ": the fast mode turns so often per slow period that its phase is rounding in " +
                 std::string(toString(precisionOf<S>())) + " (at most " +
-                formatScalar(S(S(1e-6) / (twoPi<S>() * epsilon<S>()))) +
-                (std::is_same_v<S, Quad> ? ")" : "; --precision quad resolves more)")};
+                formatScalar(S(S(1e-6) / (twoPi<S>() * epsilon<S>()))) + ")",
+            ChainProblem::PhaseRounding};
   }
   return {chain, {}};
 }

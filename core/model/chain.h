@@ -38,11 +38,19 @@ struct Chain {
   S stuckOmega = 0;  ///< frequency of mass 1 alone while mass 2 is held on the stop (units of w2)
 };
 
+/// Why a chain cannot be formed in a precision: both may go in a wider one.
+enum class ChainProblem {
+  None,
+  BeyondRange,    ///< a ratio of its numbers is beyond the precision's range
+  PhaseRounding,  ///< the fast mode's phase over a slow period is rounding in the precision
+};
+
 /// A chain, or the one line saying why it cannot be formed in this precision.
 template <typename S>
 struct ChainOrProblem {
   std::optional<Chain<S>> chain;
   std::string problem;
+  ChainProblem kind = ChainProblem::None;
 };
 
 /// Forms the nondimensional chain. Precondition: validate(model) is empty. Fails (with a reason)

@@ -130,7 +130,7 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
     orbit.reason = "the free flight from the data touches the stop at t = " +
                    formatScalar(S(arrival / chain.omegaSlow)) + " within the rounding of " +
                    std::string(toString(precisionOf<S>())) +
-                   ": whether it returns first at T is not decided (--precision auto goes higher)";
+                   ": whether it returns first at T is not decided in this precision";
     return orbit;
   }
   if (abs(arrival - tau) > S(1e-9) * max(tau, twoPi<S>())) {

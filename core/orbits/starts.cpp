@@ -24,7 +24,7 @@ StartOrProblem<S> makeStart(const Chain<S>& chain, const StartSpec<S>& spec) {
       break;
     case Kind::OnePeriodic: {
       const OnePeriodicOrbit<S> orbit = onePeriodicOrbit(chain, spec.period);
-      if (!orbit.admissible) return {std::nullopt, orbit.reason};
+      if (!orbit.admissible) return {std::nullopt, orbit.reason, orbit.refusal == OnePeriodicRefusal::NotDecided};
       start.state = orbit.postImpact;
       start.description = "1IPP orbit of period T = " + formatScalar(spec.period);
       break;

@@ -44,6 +44,7 @@ template <typename S>
 struct StartOrProblem {
   std::optional<Start<S>> start;
   std::string problem;
+  bool undecided = false;  ///< the precision cannot decide it (a 1IPP orbit's return): a higher one may
 };
 
 template <typename S>

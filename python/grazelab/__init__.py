@@ -308,8 +308,8 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
                             dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch))
         chain = Chain(masses=masses, springs=springs, right_spring=right_spring, stop_mass=stop_mass,
                       frequencies=frequencies, design_branch=design_branch, gap=gap)
-        return chain._simulate(dict(precision=precision, state=state, glo=glo, onepp=onepp, perturb=perturb,
-                                    contacts=contacts, t_end=t_end, trust=trust, glo_weights=glo_weights),
+        return chain._simulate(("precision", precision, "state", state, "glo", glo, "onepp", onepp, "perturb", perturb,
+                                "contacts", contacts, "t-end", t_end, "trust", trust, "glo-weights", glo_weights),
                                events, samples, progress)
     if frequencies is not None or design_branch is not None or springs is not None or glo_weights is not None:
         raise ValueError("springs, frequencies, design_branch and glo_weights describe a chain given by masses")
@@ -398,25 +398,26 @@ class Chain:
                  progress: _Optional[_Progress] = None) -> Result:
         """One exact run of this chain: the keywords and the result of ``simulate`` with
         ``masses`` (the same bits), the chain not read nor designed again."""
-        return self._simulate(dict(precision=precision, state=state, glo_weights=glo_weights, onepp=onepp,
-                                   perturb=perturb, contacts=contacts, t_end=t_end, trust=trust),
+        return self._simulate(("precision", precision, "state", state, "glo-weights", glo_weights, "onepp", onepp,
+                               "perturb", perturb, "contacts", contacts, "t-end", t_end, "trust", trust),
                               events, samples, progress)
 
-    def _simulate(self, options, events, samples, progress):
-        options = {name: value for name, value in options.items() if value is not None}
+    def _simulate(self, flat, events, samples, progress):
+        """The run of the options `flat` (name, value, ...; None: not given) with `samples`."""
         if samples is not None:
             grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
-            options["sample_times" if grid else "sample_step"] = samples
-        contacts = options.get("contacts")
+            flat += ("sample-times" if grid else "sample-step", samples)
+        named = dict(zip(flat[::2], flat[1::2]))
+        contacts = named["contacts"]
         # a short run of a commensurate chain (every flight decided within a period) on the
         # calling thread; anything longer on a thread of its own that Ctrl+C stops
-        direct = (progress is None and "t_end" not in options and samples is None and self._prepared.period > 0
+        direct = (progress is None and named["t-end"] is None and samples is None and self._prepared.period > 0
                   and (contacts is None or (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS)))
         try:
-            flat = tuple(part for name, value in options.items() for part in (name.replace("_", "-"), value))
             answer = _simulate_chain(self._prepared, flat, Result, not events, direct)
             if answer is None:  # values of other types (NumPy, Fraction): as the command line's text
-                flat = tuple(part for pair in _convert.option_texts(options) for part in pair)
+                given = {name.replace("-", "_"): value for name, value in named.items() if value is not None}
+                flat = tuple(part for pair in _convert.option_texts(given) for part in pair)
                 answer = _simulate_chain(self._prepared, flat, Result, not events, direct)
         except ValueError as error:
             raise ValueError(_message(str(error))) from None
@@ -427,21 +428,11 @@ class Chain:
         result, decimals = answer
         if "model" in result:  # the note's chain, run by the note's engine
             return _simulated(result, decimals)
-        return _chain_simulated(result)
-
-
-def _chain_simulated(result):
-    """A run of a chain given by masses as simulate returns it (its events and samples already
-    structured arrays with the command line's columns); in a wider precision than double, the
-    events' exact text as ``events_decimal``, as for two masses."""
-    if "decimal" in result:
-        written = result["decimal"].pop("events")
-        result["decimal"].pop("samples", None)
-        if written is not None:
-            names = [name for name in result["events"].dtype.names if name != "type"]
-            result["events_decimal"] = {name: _np.array([event[name] for event in written], dtype=str)
-                                        for name in names}
-    return result
+        if decimals is not None:  # the events' exact text, as for two masses
+            columns = [name for name in result["events"].dtype.names if name != "type"]
+            text = _np.array(decimals, dtype=str).reshape(-1, len(columns))
+            result["events_decimal"] = {name: text[:, i] for i, name in enumerate(columns)}
+        return result
 
 
 def _simulated(result, decimals):

@@ -180,6 +180,23 @@ assert d['precision']['used'] == 'quad' and len(d['precision']['escalations']) =
 assert d['contacts']['impacts'] == 60 and d['contacts']['undecided_touches'] == 0, d['contacts']
 assert abs(d['final']['t'] - 359.87351789519487) < 1e-9, d['final']['t']" || fail "auto precision"
 fi
+# a chain beyond a precision's reach (a ratio beyond double's range; a fast phase that is
+# rounding in double and long double) is refused there with the flag that helps, and raised by
+# --precision auto: the refusal is typed as the precision's, not recognised by its words
+if expect_ok simulate --m1 1e200 --m2 1e-200 --glo 0.5 --perturb 0,0,0,-1e-3 --contacts 3; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['precision']['used'] == 'long' and d['precision']['escalations'][0].startswith('from double: the ratios'), d['precision']
+assert d['contacts']['impacts'] == 3, d['contacts']" || fail "a ratio beyond double's range raised"
+fi
+EXPECT_WORD="try --precision long or quad" expect_invalid simulate --m1 1e200 --m2 1e-200 --glo 0.5 --contacts 3 --precision double
+if expect_ok simulate --k2 1e-30 --state 0,0,0,1 --contacts 1 --trust off; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert d['precision']['used'] == 'quad' and len(d['precision']['escalations']) == 2, d['precision']
+assert d['contacts']['impacts'] == 1, d['contacts']" || fail "a fast phase rounding in double raised"
+fi
+EXPECT_WORD="--precision quad resolves more" expect_invalid simulate --k2 1e-30 --state 0,0,0,1 --contacts 1 --precision long
 # issue 29: a run raised to binary128 says the start it used, in binary128's digits (the head,
 # written before the raise, holds double's): the 1IPP orbit 3e-11 below T1, whose closed form
 # loses digits there (its v2 differs from double's by 2e-6 relative)

@@ -7,11 +7,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -391,6 +393,35 @@ V samplesValue(const ColumnNames& names, const ChainRunIn<S>& in) {
   return V::object(std::move(fields));
 }
 
+// The run's events into `table` (the Python module's arrays): packed rows in double, and in a
+// wider precision each number's decimal text
+template <typename S>
+void fillEventTable(ChainEventTable& table, const core::BasicChainRun<S>& run, const core::BasicMassChain<S>& chain) {
+  table.masses = std::size_t(chain.size());
+  table.stopped = chain.stopped();
+  table.count = run.events.size();
+  const std::size_t rowBytes = table.rowBytes();
+  table.rows.assign(table.count * rowBytes, 0);
+  for (std::size_t k = 0; k < table.count; ++k) {
+    const core::BasicChainEvent<S>& event = run.events[k];
+    char* row = table.rows.data() + k * rowBytes;
+    const auto put = [&](std::size_t offset, const S& value) {
+      const double rounded = core::toDouble(value);
+      std::memcpy(row + offset, &rounded, sizeof rounded);
+      if constexpr (!std::is_same_v<S, double>) table.decimals.push_back(core::formatScalar(value));
+    };
+    put(0, event.t);
+    const std::string_view type = core::toString(event.type);
+    char32_t letters[8] = {};
+    for (std::size_t i = 0; i < type.size() && i < 8; ++i) letters[i] = char32_t(type[i]);
+    std::memcpy(row + sizeof(double), letters, sizeof letters);
+    std::size_t offset = sizeof(double) + sizeof letters;
+    for (Eigen::Index i = 0; i < event.u.size(); ++i, offset += sizeof(double)) put(offset, event.u[i]);
+    for (Eigen::Index i = 0; i < event.vBefore.size(); ++i, offset += sizeof(double)) put(offset, event.vBefore[i]);
+    put(offset, event.vAfter);
+  }
+}
+
 // (events null when they were not kept)
 template <typename S>
 V runDocument(const core::BasicReadyChain<S>& ready, const ChainRunIn<S>& in, V precision, const core::Trust& trust,
@@ -678,8 +709,11 @@ int runChainSimulate(const PreparedMassChain& chain, const OptionValues& options
                                         : core::chainTrust(shadowFor<S>(chain, *trustMode), in->start, in->run, contacts,
                                                            in->tEnd, *trustMode, stop);
     if (stop.stop_requested()) return kExitInterrupted;
+    // the Python module's arrays: the events straight into its table, not into the document
+    const bool intoTable = keepEvents && io.chainEvents;
+    if (intoTable) fillEventTable(*io.chainEvents, in->run, ready->numbers);
     emitDocument(io, runDocument(*ready, *in, report(name), trust,
-                                 options.isSet("sample-step") || options.isSet("sample-times"), keepEvents));
+                                 options.isSet("sample-step") || options.isSet("sample-times"), keepEvents && !intoTable));
     return 0;
   };
   const bool automatic = precisionText == "auto";

@@ -91,11 +91,10 @@ int simulateIn(const OptionValues& options, core::TrustMode trustMode, AutoRun* 
                const Io& io, std::stop_token stop, QString& error) {
   constexpr bool kTopPrecision = std::is_same_v<S, core::Quad>;
   const std::string precisionName(core::toString(core::precisionOf<S>()));
-  // a refusal that names --precision (a chain or start beyond this precision's reach): auto
-  // goes higher before anything is written; any other is the answer
-  auto refused = [&](const std::string& message) {
-    if (autoRun && !kTopPrecision && !autoRun->begun &&
-        message.find("--precision") != std::string::npos) {
+  // a refusal the precision causes (a chain or start beyond its reach): auto goes higher before
+  // anything is written; any other is the answer
+  auto refused = [&](const std::string& message, bool precisionBound) {
+    if (autoRun && !kTopPrecision && !autoRun->begun && precisionBound) {
       autoRun->escalations.push_back("from " + precisionName + ": " + message);
       return kRaisePrecision;
     }
@@ -103,7 +102,7 @@ int simulateIn(const OptionValues& options, core::TrustMode trustMode, AutoRun* 
     return kExitInvalidInput;
   };
   auto parsed = parseRun<S>(options);
-  if (!parsed.value) return refused(parsed.error.toStdString());
+  if (!parsed.value) return refused(parsed.error.toStdString(), parsed.precisionBound);
   RunInput<S>& run = *parsed.value;
   run.request.stopAtUndecided = autoRun != nullptr && !kTopPrecision;
   RunWriter<S> writer(run, io.out, autoRun ? std::string("auto") : precisionName, io.events,
@@ -148,7 +147,7 @@ int simulateIn(const OptionValues& options, core::TrustMode trustMode, AutoRun* 
   if (eventsLookedAt) run.request.onEvent = onEvent;
   core::BasicSimulator<S> simulator(run.model.model, run.request);
   if (simulator.result().stop == core::StopReason::InvalidInput) {
-    return refused(simulator.result().message);
+    return refused(simulator.result().message, false);
   }
   if (!core::isFinite(simulator.result().initialEnergy)) {
     if (autoRun && !kTopPrecision) {

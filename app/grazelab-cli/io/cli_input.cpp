@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <type_traits>
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -244,6 +245,23 @@ core::ExactParameters exactParameters(const OptionValues& options) {
 template <typename S>
 Parsed<ModelInput<S>> twoMassChain(const OptionValues& options);
 
+// The model formed into its nondimensional chain, or why this precision cannot, with the flag
+// that may help (a refusal the precision causes is marked: --precision auto goes higher)
+template <typename S>
+Parsed<ModelInput<S>> formedModel(const core::BasicModel<S>& model) {
+  core::ChainOrProblem<S> formed = core::makeChain(model);
+  if (formed.chain) return {ModelInput<S>{model, *formed.chain}, {}};
+  QString line = fromStd(formed.problem);
+  switch (formed.kind) {
+    case core::ChainProblem::BeyondRange: line += " (try --precision long or quad)"; break;
+    case core::ChainProblem::PhaseRounding:
+      if (!std::is_same_v<S, core::Quad>) line += ": --precision quad resolves more";
+      break;
+    case core::ChainProblem::None: break;
+  }
+  return {std::nullopt, line, formed.kind != core::ChainProblem::None};
+}
+
 template <typename S>
 Parsed<ModelInput<S>> parseModel(const OptionValues& options) {
   if (options.isSet("masses")) return twoMassChain<S>(options);
@@ -287,9 +305,7 @@ Parsed<ModelInput<S>> parseModel(const OptionValues& options) {
   if (model.design) {
     model = *core::designedModel(model.m1, model.m2, model.k1, model.gap, *model.design);
   }
-  core::ChainOrProblem<S> formed = core::makeChain(model);
-  if (!formed.chain) return {std::nullopt, fromStd(formed.problem)};
-  return {ModelInput<S>{model, *formed.chain}, {}};
+  return formedModel(model);
 }
 
 template <typename S>
@@ -553,15 +569,13 @@ Parsed<ModelInput<S>> twoMassChain(const OptionValues& options) {
     model.k2 = inS.value->springs[1];
   }
   if (const auto problems = core::validate(model); !problems.empty()) return {std::nullopt, fromStd(core::describe(problems))};
-  const core::ChainOrProblem<S> formed = core::makeChain(model);
-  if (!formed.chain) return {std::nullopt, fromStd(formed.problem)};
-  return {ModelInput<S>{model, *formed.chain}, {}};
+  return formedModel(model);
 }
 
 template <typename S>
 Parsed<RunInput<S>> parseRun(const OptionValues& options) {
   Parsed<ModelInput<S>> model = parseModel<S>(options);
-  if (!model.value) return {std::nullopt, model.error};
+  if (!model.value) return {std::nullopt, model.error, model.precisionBound};
   RunInput<S> run{*model.value, {}, {}, {}, Format::Json};
   const core::Chain<S>& chain = run.model.chain;
   QString error;
@@ -571,7 +585,8 @@ Parsed<RunInput<S>> parseRun(const OptionValues& options) {
   core::StartOrProblem<S> start = core::makeStart(chain, *spec.value);
   if (!start.start) {
     const QString option = spec.value->kind == core::StartSpec<S>::Kind::OnePeriodic ? "--onepp: " : "";
-    return {std::nullopt, option + fromStd(start.problem)};
+    return {std::nullopt, option + fromStd(start.problem) + (start.undecided ? " (--precision auto goes higher)" : ""),
+            start.undecided};
   }
   const auto stateProblems = core::validateState(run.model.model, start.start->state, "initial");
   if (!stateProblems.empty()) return {std::nullopt, fromStd(core::describe(stateProblems))};

@@ -74,6 +74,9 @@ template <typename T>
 struct Parsed {
   std::optional<T> value;
   QString error;
+  /// the refusal is the precision's (a range, a rounding, an undecided return): a higher
+  /// precision may answer, and --precision auto tries it
+  bool precisionBound = false;
 };
 
 template <typename S>

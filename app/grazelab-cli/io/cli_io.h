@@ -47,6 +47,20 @@ struct EventTable {
   bool discard = false;
 };
 
+/// A chain's events as the Python module hands them to NumPy without a copy: packed rows of t,
+/// the type in UCS-4 ('<U8'), then u1..uN, v1_pre..vN_pre and the stopped mass's vS_post, each
+/// number rounded to double; in long double or binary128 also each number's decimal text, 2N + 2
+/// a row, as the command line writes them. (See Io::chainEvents.)
+struct ChainEventTable {
+  std::size_t masses = 0;  ///< N
+  int stopped = 0;         ///< S, 1-based
+  std::size_t count = 0;   ///< rows
+  std::vector<char> rows;  ///< count x rowBytes()
+  std::vector<std::string> decimals;
+  /// the bytes of a row: t, 8 letters, 2N + 1 numbers
+  std::size_t rowBytes() const { return sizeof(double) + 8 * sizeof(char32_t) + (2 * masses + 1) * sizeof(double); }
+};
+
 /// Where a command writes. The command line: its output on stdout, its messages (notes,
 /// progress, the line that says what a command wrote) on stderr. The Python module: both into
 /// memory, a run's events straight into arrays, progress to the caller.
@@ -59,6 +73,10 @@ struct Io {
   /// When set, `simulate` puts its events here instead of into the text of its output (whose
   /// events array stays empty).
   EventTable* events = nullptr;
+  /// When set, `simulate` of a chain given by masses (its json form) puts its events here
+  /// instead of into its document (whose `events` is then null); `events->discard` still says
+  /// whether to keep them.
+  ChainEventTable* chainEvents = nullptr;
   /// When set, `map` and `merge` put the map here (the Python module: arrays without files);
   /// their files are then written only where --out names them.
   map::StoredMap* map = nullptr;
