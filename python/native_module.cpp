@@ -22,10 +22,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
-#include <limits>
-#include <map>
 #include <functional>
 #include <initializer_list>
+#include <limits>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -589,11 +589,11 @@ ChainHandle prepareChain(const py::sequence& given) {
 }
 
 // simulate_chain(chain, options, result_type, discard_events, direct) -> (result, the events'
-// decimal text of the note's chain in long double or binary128, else None), or None when an
-// option's value is not of a type read directly (then give the options as text). The note's
-// chain is run by the note's engine (its result that of simulate with the two-mass keywords). The run of
-// `grazelab-cli simulate --masses ...` on the prepared chain, its document handed over as
-// values; `direct`: on the calling thread (a short run of a commensurate chain, whose every
+// decimal text in long double or binary128, else None), or None when an option's value is not
+// of a type read directly (then give the options as text). The run of `grazelab-cli simulate
+// --masses ...` on the prepared chain, its document handed over as values and its events as an
+// array; the note's chain is run by the note's engine (the result of simulate with the two-mass
+// keywords). `direct`: on the calling thread (a short run of a commensurate chain, whose every
 // flight is decided within a period), else on a thread of its own that Ctrl+C stops.
 py::object simulateChain(const ChainHandle& chain, const py::sequence& given, const py::object& resultType,
                          bool discardEvents, bool direct) {

@@ -180,9 +180,8 @@ Trust chainTrust(const ChainShadow<S>& shadow, const BasicChainState<S>& start, 
 template <typename S>
 Trust chainTrust(const BasicMassChain<S>& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
                  long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop) {
-  ChainTrustCheck<S> check(chain, start, maxContacts, tEnd, mode, stop);
-  for (const BasicChainEvent<S>& event : run.events) check.observe(event);
-  return check.finish(run);
+  return chainTrust(mode == TrustMode::Off ? ChainShadow<S>{} : chainShadow(chain), start, run, maxContacts, tEnd, mode,
+                    std::move(stop));
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                       \

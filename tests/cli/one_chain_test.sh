@@ -41,37 +41,11 @@ cases=(
 )
 # a command run on both forms of a chain: the same exit code, the same output (or the same one
 # line of refusal); with --out, the same files (the pictures apart: their metadata carry the
-# command line)
+# command line). usage: same_both LABEL NOTE MASSES OUTDIR COMMAND...
 same_both() {
   local label=$1 note=$2 masses=$3 outdir=$4
   shift 4
-  # shellcheck disable=SC2086
-  "$cli" "$@" $note ${outdir:+--out "$work/a/$outdir/x"} > "$work/a.out" 2> "$work/a.err"
-  local codeA=$?
-  # shellcheck disable=SC2086
-  "$cli" "$@" $masses ${outdir:+--out "$work/b/$outdir/x"} > "$work/b.out" 2> "$work/b.err"
-  local codeB=$?
-  if [ "$codeA" -ne "$codeB" ]; then
-    fail "$label: exit $codeA written one way, $codeB the other ($(cat "$work/a.err" "$work/b.err" | head -2))"
-    return
-  fi
-  if [ "$codeA" -ne 0 ]; then
-    cmp -s "$work/a.err" "$work/b.err" || fail "$label: refused differently: $(cat "$work/a.err") / $(cat "$work/b.err")"
-    return
-  fi
-  if [ -s "$work/a.out" ]; then same_json "$work/a.out" "$work/b.out" || fail "$label: the output differs"; fi
-  if [ -n "$outdir" ]; then
-    for file in "$work/a/$outdir"/*; do
-      local name
-      name=$(basename "$file")
-      case "$name" in
-        *.png|*.svg|*.pdf) ;;
-        *.json) same_json "$file" "$work/b/$outdir/$name" || fail "$label: $name differs" ;;
-        *) cmp -s "$file" "$work/b/$outdir/$name" || fail "$label: $name differs" ;;
-      esac
-    done
-  fi
-  ran=$((ran + 1))
+  same_pair "$label" "$outdir" "$* $note" "$* $masses"
 }
 
 # two command lines that write one computation: the same exit code and output (or refusal), and

@@ -27,10 +27,7 @@ class PreparedMassChain {
   static Parsed<std::shared_ptr<const PreparedMassChain>> make(const OptionValues& options,
                                                                std::stop_token stop = {});
 
-  /// The chain in double, and how its springs came when designed.
-  const MassChainInput& input() const { return m_input; }
   /// The chain's own options (those given of the seven above), as text.
-  const OptionValues& options() const { return m_options; }
   const std::vector<GivenOption>& givenOptions() const { return m_given; }
   /// It is the note's chain, written with --masses (writesTheNotesChain).
   bool isTheNotesChain() const { return m_notes; }
@@ -56,8 +53,8 @@ class PreparedMassChain {
   InPrecision<S>& in() const;
 
   std::vector<GivenOption> m_given;
-  OptionValues m_options;
-  MassChainInput m_input;
+  OptionValues m_options;  ///< m_given, read as options
+  MassChainInput m_input;  ///< the chain in double, and how its springs came when designed
   bool m_notes = false;
   mutable InPrecision<double> m_double;
   mutable InPrecision<long double> m_long;
