@@ -310,7 +310,7 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
                       frequencies=frequencies, design_branch=design_branch, gap=gap)
         return chain._simulate(("precision", precision, "state", state, "glo", glo, "onepp", onepp, "perturb", perturb,
                                 "contacts", contacts, "t-end", t_end, "trust", trust, "glo-weights", glo_weights),
-                               events, samples, progress)
+                               events, samples, progress, contacts, t_end)
     if frequencies is not None or design_branch is not None or springs is not None or glo_weights is not None:
         raise ValueError("springs, frequencies, design_branch and glo_weights describe a chain given by masses")
     if (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS and contacts <= MAX_EVENTS
@@ -400,23 +400,22 @@ class Chain:
         ``masses`` (the same bits), the chain not read nor designed again."""
         return self._simulate(("precision", precision, "state", state, "glo-weights", glo_weights, "onepp", onepp,
                                "perturb", perturb, "contacts", contacts, "t-end", t_end, "trust", trust),
-                              events, samples, progress)
+                              events, samples, progress, contacts, t_end)
 
-    def _simulate(self, flat, events, samples, progress):
-        """The run of the options `flat` (name, value, ...; None: not given) with `samples`."""
+    def _simulate(self, flat, events, samples, progress, contacts, t_end):
+        """The run of the options `flat` (name, value, ...; None: not given, `contacts` and
+        `t_end` among them) with `samples`."""
         if samples is not None:
             grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
             flat += ("sample-times" if grid else "sample-step", samples)
-        named = dict(zip(flat[::2], flat[1::2]))
-        contacts = named["contacts"]
         # a short run of a commensurate chain (every flight decided within a period) on the
         # calling thread; anything longer on a thread of its own that Ctrl+C stops
-        direct = (progress is None and named["t-end"] is None and samples is None and self._prepared.period > 0
+        direct = (progress is None and t_end is None and samples is None and self._prepared.period > 0
                   and (contacts is None or (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS)))
         try:
             answer = _simulate_chain(self._prepared, flat, Result, not events, direct)
             if answer is None:  # values of other types (NumPy, Fraction): as the command line's text
-                given = {name.replace("-", "_"): value for name, value in named.items() if value is not None}
+                given = {name.replace("-", "_"): value for name, value in zip(flat[::2], flat[1::2]) if value is not None}
                 flat = tuple(part for pair in _convert.option_texts(given) for part in pair)
                 answer = _simulate_chain(self._prepared, flat, Result, not events, direct)
         except ValueError as error:
