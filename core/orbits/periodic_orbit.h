@@ -100,7 +100,7 @@ struct PeriodicOrbit {
   /// it, not the norm of the product), times the number of products, times the amplification
   /// (the orbit's state is itself only known to the rounding, and the trace moves with it).
   /// Checked against binary128 on degenerate flips of light-mass chains: 50 to 200 times the
-  /// error met (tests/core/atlas_chains_test.cpp)
+  /// error met (tests/core/orbits/atlas_chains_test.cpp)
   S traceError = 0;
   /// the nontrivial pair of multipliers (eigenvalues of DP^k) as (re, im)
   std::array<std::array<S, 2>, 2> multipliers{};
