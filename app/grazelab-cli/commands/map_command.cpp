@@ -217,7 +217,7 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
   // a chain of N masses (--masses) or the two-mass chain; the note's chain written with --masses
   // over the axes u<i>, v<i> from a --state (at rest at 0 by default, as for N masses) is the
   // note's map (its engine: the two-mass options' bits)
-  const bool notes = parser.isSet("masses") && writesTheNotesChain(parser) && onStateAxes(parser);
+  const bool notes = writesTheNotesChain(parser) && onStateAxes(parser);
   const bool masses = parser.isSet("masses") && !notes;
   std::optional<core::MapSpec> spec;
   std::optional<core::ChainMapSpec> chainSpec;
