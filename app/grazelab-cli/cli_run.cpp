@@ -158,7 +158,7 @@ const std::vector<Command>& commands() {
        },
        {}},
       {"report",
-       kChain + kStart + kMassChain + QStringList{"contacts", "t-end", "out", "methods", "quick"},
+       kChain + kStart + kMassChain + QStringList{"glo-weights", "contacts", "t-end", "out", "methods", "quick"},
        false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          return runReportOrStability(true, parser, io, stop);

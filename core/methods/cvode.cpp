@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // SUNDIALS CVODE, Adams or BDF, event-driven (docs/model.md section 8): a contact is a root of
-// u2 - d crossed toward the stop, found by CVODE's root finding; at an impact v2 -> -v2 and the
-// integrator restarts (CVodeReInit) from the stop.
+// u_s - d crossed toward the stop, found by CVODE's root finding; at an impact v_s -> -v_s and
+// the integrator restarts (CVodeReInit) from the stop.
 //
 // At a tangency: CVODE sees sign changes only, so a touch inside one step is missed; a root
-// returned with v2 <= 0 is recorded as a grazing and the flight goes on. A root function that
+// returned with v_s <= 0 is recorded as a grazing and the flight goes on. A root function that
 // is zero at the restart point is inactive until it moves away (CVODE's rule), so a start
 // pressed onto the stop would slide through it: the run stops with "passed through the stop".
 #include <cmath>
@@ -21,56 +21,56 @@ constexpr int kMaxRestartsWithoutProgress = 200;
 
 }  // namespace
 
-MethodRun runCvode(const Task& task, bool bdf, double rtol, const WorkBudget& budget,
-                   std::stop_token stop) {
-  ScaledRun run(task, budget, stop);
-  if (run.refused()) return run.take();
-  CvodeIntegrator cvode(run, {bdf, rtol, 0.0, 1});
+template <typename T>
+void runCvode(ScaledRun<T>& run, bool bdf, double rtol) {
+  using Vector = typename ScaledRun<T>::Vector;
+  CvodeIntegrator<T> cvode(run, {bdf, rtol, 0.0, 1});
+  const int s = run.stop();
   const double delta = run.gap();
   // beyond this the flight went through the stop unnoticed (far past the tolerance's reach)
   const double throughStop = delta + std::max(1e3 * rtol, 1e-6);
   double lastContact = -1;
   int restartsWithoutProgress = 0;
-  cvode.restart(0, run.scaledStart(), false);
-  auto onStep = [&](double tau, const State& x) {
-    if (x.u2 > throughStop) {
+  Vector vAfter(run.size());
+  cvode.restart(0, run.startPosition(), run.startVelocity(), false);
+  auto onStep = [&](double tau, const Vector& q, const Vector& v) {
+    if (q(s) > throughStop) {
       run.finish(RunStatus::Failed,
                  "passed through the stop (a root at the restart point is inactive in CVODE: "
                  "a stuck phase is not seen)",
-                 tau, x);
+                 tau, q, v);
       return false;
     }
-    run.sample(tau, x);
+    run.sample(tau, q, v);
     return true;
   };
-  auto onRoot = [&](double tau, State& x) {
-    State before = x;
-    before.u2 = delta;  // on the stop, to the resolution of the root
-    State after = before;
-    if (before.v2 > 0) {
-      after.v2 = -before.v2;
-      run.contact(EventType::Impact, tau, before, after);
-    } else {
-      run.contact(EventType::Grazing, tau, before, after);
-    }
+  auto onRoot = [&](double tau, Vector& q, Vector& v) {
+    q(s) = delta;  // on the stop, to the resolution of the root
+    vAfter = v;
+    const bool impact = v(s) > 0;
+    if (impact) vAfter(s) = -v(s);
+    run.contact(impact ? EventType::Impact : EventType::Grazing, tau, q, v, q, vAfter);
     if (tau - lastContact < kNoProgress * twoPi<double>()) {
       if (++restartsWithoutProgress > kMaxRestartsWithoutProgress) {
         run.finish(RunStatus::Failed,
                    "chattering: restarts on the stop without progress (a stuck phase: this "
                    "method has no stuck mode)",
-                   tau, after);
+                   tau, q, vAfter);
         return false;
       }
     } else {
       restartsWithoutProgress = 0;
     }
     lastContact = tau;
-    x = after;
-    cvode.restart(tau, x, false);
-    run.sample(tau, x);
+    v = vAfter;
+    cvode.restart(tau, q, v, false);
+    run.sample(tau, q, v);
     return true;
   };
-  return driveCvode(run, cvode, run.scaledStart(), onStep, onRoot);
+  driveCvode(run, cvode, onStep, onRoot);
 }
+
+template void runCvode(ScaledRun<Task>&, bool, double);
+template void runCvode(ScaledRun<ChainTask>&, bool, double);
 
 }  // namespace grazelab::core::methods

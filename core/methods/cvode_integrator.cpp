@@ -8,18 +8,21 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace grazelab::core::methods {
 
-CvodeIntegrator::CvodeIntegrator(const ScaledRun& run, const Options& options)
+template <typename T>
+CvodeIntegrator<T>::CvodeIntegrator(const ScaledRun<T>& run, const Options& options)
     : m_run(run), m_options(options) {
   SUNContext_Create(nullptr, &m_context);
-  m_y = N_VNew_Serial(4, m_context);
+  m_y = N_VNew_Serial(2 * run.size(), m_context);
   m_memory = CVodeCreate(options.bdf ? CV_BDF : CV_ADAMS, m_context);
 }
 
-CvodeIntegrator::~CvodeIntegrator() {
+template <typename T>
+CvodeIntegrator<T>::~CvodeIntegrator() {
   if (m_memory != nullptr) CVodeFree(&m_memory);
   if (m_nonlinearSolver != nullptr) SUNNonlinSolFree(m_nonlinearSolver);
   if (m_linearSolver != nullptr) SUNLinSolFree(m_linearSolver);
@@ -28,62 +31,69 @@ CvodeIntegrator::~CvodeIntegrator() {
   if (m_context != nullptr) SUNContext_Free(&m_context);
 }
 
-int CvodeIntegrator::rhs(double, N_Vector y, N_Vector ydot, void* self) {
+template <typename T>
+int CvodeIntegrator<T>::rhs(double, N_Vector y, N_Vector ydot, void* self) {
   auto& integrator = *static_cast<CvodeIntegrator*>(self);
   ++integrator.m_evaluations;
+  const ScaledRun<T>& run = integrator.m_run;
+  const int n = run.size();
   const double* x = N_VGetArrayPointer(y);
   double* dx = N_VGetArrayPointer(ydot);
-  auto a = integrator.m_run.acceleration(x[0], x[1]);
-  if (integrator.m_inContact) a[1] -= integrator.m_options.stopStiffness * (x[1] - integrator.m_run.gap());
-  dx[0] = x[2];
-  dx[1] = x[3];
-  dx[2] = a[0];
-  dx[3] = a[1];
+  for (int i = 0; i < n; ++i) dx[i] = x[n + i];
+  run.system().accelerationInto([x](int i) { return x[i]; },
+                                [dx, n](int i) -> double& { return dx[n + i]; });
+  const int s = run.stop();
+  if (integrator.m_inContact) dx[n + s] -= integrator.m_options.stopStiffness * (x[s] - run.gap());
   return 0;
 }
 
-int CvodeIntegrator::jacobian(double, N_Vector, N_Vector, SUNMatrix J, void* self, N_Vector,
-                              N_Vector, N_Vector) {
+template <typename T>
+int CvodeIntegrator<T>::jacobian(double, N_Vector, N_Vector, SUNMatrix J, void* self, N_Vector,
+                                 N_Vector, N_Vector) {
   auto& integrator = *static_cast<CvodeIntegrator*>(self);
-  const Chain<double>& c = integrator.m_run.chain();
+  const ScaledRun<T>& run = integrator.m_run;
+  const int n = run.size();
+  const auto A = run.system().stiffness();
   SUNMatZero(J);
-  SM_ELEMENT_D(J, 0, 2) = 1;
-  SM_ELEMENT_D(J, 1, 3) = 1;
-  SM_ELEMENT_D(J, 2, 0) = -(c.p + c.q);
-  SM_ELEMENT_D(J, 2, 1) = c.q;
-  SM_ELEMENT_D(J, 3, 0) = c.w;
-  SM_ELEMENT_D(J, 3, 1) =
-      -c.w - (integrator.m_inContact ? integrator.m_options.stopStiffness : 0.0);
+  for (int i = 0; i < n; ++i) {
+    SM_ELEMENT_D(J, i, n + i) = 1;
+    for (int j = std::max(0, i - 1); j <= std::min(n - 1, i + 1); ++j) SM_ELEMENT_D(J, n + i, j) = -A(i, j);
+  }
+  if (integrator.m_inContact) SM_ELEMENT_D(J, n + run.stop(), run.stop()) -= integrator.m_options.stopStiffness;
   return 0;
 }
 
-int CvodeIntegrator::root(double, N_Vector y, double* g, void* self) {
+template <typename T>
+int CvodeIntegrator<T>::root(double, N_Vector y, double* g, void* self) {
   auto& integrator = *static_cast<CvodeIntegrator*>(self);
-  g[0] = N_VGetArrayPointer(y)[1] - integrator.m_run.gap();
+  g[0] = N_VGetArrayPointer(y)[integrator.m_run.stop()] - integrator.m_run.gap();
   return 0;
 }
 
-void CvodeIntegrator::errorHandler(int, const char*, const char* function, char* message,
-                                   void* self) {
+template <typename T>
+void CvodeIntegrator<T>::errorHandler(int, const char*, const char* function, char* message,
+                                      void* self) {
   // CVODE prints to stderr by default: keep the message for the run's reason instead
   auto& integrator = *static_cast<CvodeIntegrator*>(self);
   integrator.m_lastMessage = std::string(function) + ": " + message;
 }
 
-void CvodeIntegrator::restart(double tau, const State& x, bool inContact) {
+template <typename T>
+void CvodeIntegrator<T>::restart(double tau, const Vector& q, const Vector& v, bool inContact) {
   m_inContact = inContact;
+  const int n = m_run.size();
   double* y = N_VGetArrayPointer(m_y);
-  y[0] = x.u1;
-  y[1] = x.u2;
-  y[2] = x.v1;
-  y[3] = x.v2;
+  for (int i = 0; i < n; ++i) {
+    y[i] = q(i);
+    y[n + i] = v(i);
+  }
   if (!m_started) {
     CVodeInit(m_memory, &CvodeIntegrator::rhs, tau, m_y);
     CVodeSetUserData(m_memory, this);
     CVodeSetErrHandlerFn(m_memory, &CvodeIntegrator::errorHandler, this);
     CVodeSStolerances(m_memory, m_options.rtol, m_options.rtol);
     if (m_options.bdf) {
-      m_matrix = SUNDenseMatrix(4, 4, m_context);
+      m_matrix = SUNDenseMatrix(2 * n, 2 * n, m_context);
       m_linearSolver = SUNLinSol_Dense(m_y, m_matrix, m_context);
       CVodeSetLinearSolver(m_memory, m_linearSolver, m_matrix);
       CVodeSetJacFn(m_memory, &CvodeIntegrator::jacobian);
@@ -102,11 +112,16 @@ void CvodeIntegrator::restart(double tau, const State& x, bool inContact) {
   CVodeSetStopTime(m_memory, m_run.tauEnd());
 }
 
-CvodeIntegrator::Outcome CvodeIntegrator::step(double& tau, State& x) {
+template <typename T>
+typename CvodeIntegrator<T>::Outcome CvodeIntegrator<T>::step(double& tau, Vector& q, Vector& v) {
   m_lastMessage.clear();
   const int flag = CVode(m_memory, m_run.tauEnd(), m_y, &tau, CV_ONE_STEP);
+  const int n = m_run.size();
   const double* y = N_VGetArrayPointer(m_y);
-  x = {y[0], y[1], y[2], y[3]};
+  for (int i = 0; i < n; ++i) {
+    q(i) = y[i];
+    v(i) = y[n + i];
+  }
   if (flag == CV_ROOT_RETURN) return Outcome::Root;
   if (flag == CV_TSTOP_RETURN) return Outcome::End;
   if (flag == CV_SUCCESS) return Outcome::Step;
@@ -115,5 +130,8 @@ CvodeIntegrator::Outcome CvodeIntegrator::step(double& tau, State& x) {
   std::free(name);
   return Outcome::Error;
 }
+
+template class CvodeIntegrator<Task>;
+template class CvodeIntegrator<ChainTask>;
 
 }  // namespace grazelab::core::methods

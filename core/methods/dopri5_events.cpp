@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // Event-driven Dormand-Prince 5(4) (docs/model.md section 8) through Boost.Odeint's dense-output
-// stepper. A contact is a sign change of u2 - d at the end of an accepted step, located on the
-// dense output; at an impact v2 -> -v2 and the stepper restarts from the stop.
+// stepper. A contact is a sign change of u_s - d at the end of an accepted step, located on the
+// dense output; at an impact v_s -> -v_s and the stepper restarts from the stop.
 //
 // At a tangency: only a sign change is seen. A touch of the stop inside one step whose end lies
 // below the stop again is missed by construction (the interpolant is not searched for a
-// maximum); a crossing located with v2 <= 0 (a graze that the interpolant's error pushed over)
+// maximum); a crossing located with v_s <= 0 (a graze that the interpolant's error pushed over)
 // is recorded as a grazing and the flight goes on unchanged. A start pressed onto the stop makes
 // the restarts chatter in zero time: the method has no stuck mode, and stops with a failure.
 #include <boost/numeric/odeint.hpp>
@@ -14,17 +14,13 @@
 #include <array>
 #include <cmath>
 #include <exception>
+#include <vector>
 
 #include "core/methods/root_bracket.h"
 #include "core/methods/runners.h"
-#include "core/methods/scaled_run.h"
 
 namespace grazelab::core::methods {
 namespace {
-
-using Vector = std::array<double, 4>;
-
-State toState(const Vector& x) { return {x[0], x[1], x[2], x[3]}; }
 
 /// Restarts in a row that advanced by less than this fraction of 2 pi: chattering.
 constexpr double kNoProgress = 1e-12;
@@ -32,23 +28,46 @@ constexpr int kMaxRestartsWithoutProgress = 200;
 
 }  // namespace
 
-MethodRun runDopri5Events(const Task& task, double rtol, const WorkBudget& budget,
-                          std::stop_token stop) {
+template <typename T>
+void runDopri5Events(ScaledRun<T>& run, double rtol) {
   namespace odeint = boost::numeric::odeint;
-  ScaledRun run(task, budget, stop);
-  if (run.refused()) return run.take();
+  using Vector = typename ScaledRun<T>::Vector;
+  // Odeint's own containers: (x, v) of the note's chain in a fixed array, of any chain in a vector
+  using OdeState = std::conditional_t<ScaledRun<T>::kNotesChain, std::array<double, 4>, std::vector<double>>;
+  const int n = run.size();
+  const int s = run.stop();
+  auto newState = [n]() {
+    OdeState x{};
+    if constexpr (!ScaledRun<T>::kNotesChain) x.resize(std::size_t(2 * n));
+    return x;
+  };
+  Vector q(n), v(n);
+  auto split = [&](const OdeState& x) {
+    for (int i = 0; i < n; ++i) {
+      q(i) = x[std::size_t(i)];
+      v(i) = x[std::size_t(n + i)];
+    }
+  };
+  auto join = [&](const Vector& position, const Vector& velocity, OdeState& x) {
+    for (int i = 0; i < n; ++i) {
+      x[std::size_t(i)] = position(i);
+      x[std::size_t(n + i)] = velocity(i);
+    }
+  };
   std::int64_t evaluations = 0;
-  auto system = [&run, &evaluations](const Vector& x, Vector& dxdt, double) {
+  const auto& system = run.system();
+  auto rhs = [&system, &evaluations, n](const OdeState& x, OdeState& dxdt, double) {
     ++evaluations;
-    const auto a = run.acceleration(x[0], x[1]);
-    dxdt = {x[2], x[3], a[0], a[1]};
+    for (int i = 0; i < n; ++i) dxdt[std::size_t(i)] = x[std::size_t(n + i)];
+    system.accelerationInto([&x](int i) { return x[std::size_t(i)]; },
+                            [&dxdt, n](int i) -> double& { return dxdt[std::size_t(n + i)]; });
   };
   // the scaled state is O(1): the absolute tolerance is the relative one times that scale
-  auto stepper = odeint::make_dense_output(rtol, rtol, odeint::runge_kutta_dopri5<Vector>());
+  auto stepper = odeint::make_dense_output(rtol, rtol, odeint::runge_kutta_dopri5<OdeState>());
   const double delta = run.gap();
   const double tauEnd = run.tauEnd();
-  const State& x0 = run.scaledStart();
-  Vector x{x0.u1, x0.u2, x0.v1, x0.v2};
+  OdeState x = newState(), atLimit = newState(), probe = newState();
+  join(run.startPosition(), run.startVelocity(), x);
   double tau = 0;
   double lastContact = -1;
   int restartsWithoutProgress = 0;
@@ -57,43 +76,41 @@ MethodRun runDopri5Events(const Task& task, double rtol, const WorkBudget& budge
   auto finishRun = [&]() {
     run.run().steps = steps;
     run.run().rhsEvaluations = evaluations;
-    return run.take();
   };
   try {
     while (true) {
-      if (steps % 64 == 0 && run.mustStop(steps, tau, toState(x))) return finishRun();
-      const auto [t0, t1] = stepper.do_step(system);
+      if (steps % 64 == 0) {
+        split(x);
+        if (run.mustStop(steps, tau, q, v)) return finishRun();
+      }
+      const auto [t0, t1] = stepper.do_step(rhs);
       ++steps;
       const double tLimit = std::min(t1, tauEnd);
-      Vector atLimit = stepper.current_state();
+      atLimit = stepper.current_state();
       if (t1 > tauEnd) stepper.calc_state(tauEnd, atLimit);
-      if (atLimit[1] > delta) {
+      if (atLimit[std::size_t(s)] > delta) {
         // the first crossing of the stop on the dense output of [t0, tLimit]
-        Vector probe;
         auto gap = [&](double t) {
           stepper.calc_state(t, probe);
-          return probe[1] - delta;
+          return probe[std::size_t(s)] - delta;
         };
         stepper.calc_state(t0, probe);
-        const double g0 = std::min(probe[1] - delta, 0.0);
-        const double tContact = illinoisRoot(gap, t0, g0, tLimit, atLimit[1] - delta);
+        const double g0 = std::min(probe[std::size_t(s)] - delta, 0.0);
+        const double tContact = illinoisRoot(gap, t0, g0, tLimit, atLimit[std::size_t(s)] - delta);
         stepper.calc_state(tContact, probe);
-        State before = toState(probe);
-        before.u2 = delta;  // on the stop, to the resolution of the located time
-        State after = before;
-        if (before.v2 > 0) {
-          after.v2 = -before.v2;
-          run.contact(EventType::Impact, tContact, before, after);
-        } else {
-          run.contact(EventType::Grazing, tContact, before, after);
-        }
+        split(probe);
+        q(s) = delta;  // on the stop, to the resolution of the located time
+        Vector vAfter = v;
+        const bool impact = v(s) > 0;
+        if (impact) vAfter(s) = -v(s);
+        run.contact(impact ? EventType::Impact : EventType::Grazing, tContact, q, v, q, vAfter);
         if (tContact - lastContact < kNoProgress * twoPi<double>()) {
           if (++restartsWithoutProgress > kMaxRestartsWithoutProgress) {
             run.finish(RunStatus::Failed,
                        "chattering: " + std::to_string(kMaxRestartsWithoutProgress) +
                            " restarts on the stop without progress (a stuck phase: this method "
                            "has no stuck mode)",
-                       tContact, after);
+                       tContact, q, vAfter);
             return finishRun();
           }
         } else {
@@ -101,22 +118,30 @@ MethodRun runDopri5Events(const Task& task, double rtol, const WorkBudget& budge
         }
         lastContact = tContact;
         tau = tContact;
-        x = {after.u1, after.u2, after.v1, after.v2};
+        join(q, vAfter, x);
         stepper.initialize(x, tau, stepper.current_time_step());
-        run.sample(tau, after);
+        run.sample(tau, q, vAfter);
         continue;
       }
       tau = tLimit;
       x = atLimit;
-      run.sample(tau, toState(x));
+      if constexpr (ScaledRun<T>::kNotesChain) {
+        split(x);
+        run.sample(tau, q, v);
+      }
       if (t1 >= tauEnd) break;
     }
   } catch (const std::exception& error) {
-    run.finish(RunStatus::Failed, std::string("Boost.Odeint: ") + error.what(), tau, toState(x));
+    split(x);
+    run.finish(RunStatus::Failed, std::string("Boost.Odeint: ") + error.what(), tau, q, v);
     return finishRun();
   }
-  run.complete(toState(x));
-  return finishRun();
+  split(x);
+  run.complete(q, v);
+  finishRun();
 }
+
+template void runDopri5Events(ScaledRun<Task>&, double);
+template void runDopri5Events(ScaledRun<ChainTask>&, double);
 
 }  // namespace grazelab::core::methods

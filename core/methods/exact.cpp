@@ -8,6 +8,7 @@
 
 #include "core/methods/runners.h"
 #include "core/methods/scaled_run.h"
+#include "core/solver/chain_run.h"
 #include "core/solver/simulate.h"
 
 namespace grazelab::core::methods {
@@ -77,6 +78,93 @@ MethodRun runIn(const Task& task, const WorkBudget& budget, std::stop_token stop
   return run;
 }
 
+/// A chain run's numbers in double (each rounded once).
+template <typename S>
+ChainRun inDouble(const BasicChainRun<S>& from) {
+  auto vector = [](const ChainVector<S>& x) {
+    ChainVector<double> y(x.size());
+    for (Eigen::Index i = 0; i < x.size(); ++i) y(i) = toDouble(S(x(i)));
+    return y;
+  };
+  ChainRun run;
+  run.events.reserve(from.events.size());
+  for (const BasicChainEvent<S>& e : from.events) {
+    run.events.push_back({toDouble(e.t), e.type, vector(e.u), vector(e.vBefore), toDouble(e.vAfter)});
+  }
+  run.contacts = from.contacts;
+  run.impacts = from.impacts;
+  run.grazings = from.grazings;
+  run.sticks = from.sticks;
+  run.releases = from.releases;
+  run.final = {vector(from.final.u), vector(from.final.v)};
+  run.tFinal = toDouble(from.tFinal);
+  run.stop = from.stop;
+  run.energyInitial = toDouble(from.energyInitial);
+  run.energyFinal = toDouble(from.energyFinal);
+  return run;
+}
+
+template <typename S>
+ChainMethodRun runChainIn(const ChainTask& task, const WorkBudget& budget, std::stop_token stop) {
+  const auto started = std::chrono::steady_clock::now();
+  const BasicMassChain<S> chain = chainCast<S>(task.chain);
+  const BasicChainState<S> start{task.start.u.template cast<S>(), task.start.v.template cast<S>()};
+  BasicChainSimulator<S> simulator(readyChain(chain), start, long(budget.maxSteps), S(task.tEnd));
+  ChainMethodRun run;
+  // in pieces, so that the time budget is checked between them
+  long piece = 1024;
+  bool overTime = false;
+  while (!simulator.advance(piece, stop)) {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (seconds > budget.maxSeconds) {
+      overTime = true;
+      break;
+    }
+    piece = std::min<long>(piece * 2, 1 << 20);
+  }
+  run.result = inDouble(simulator.run());
+  run.steps = run.result.contacts;
+  // the drift over every contact state and the end, in the run's own precision
+  const S e0 = chainEnergy(chain, start);
+  using std::abs;
+  auto driftAt = [&](const BasicChainState<S>& x) { return toDouble(S(abs(chainEnergy(chain, x) - e0) / e0)); };
+  if (e0 > 0) {
+    for (const BasicChainEvent<S>& e : simulator.run().events) {
+      if (e.type != EventType::Release) run.maxEnergyDrift = std::max(run.maxEnergyDrift, driftAt({e.u, e.vBefore}));
+    }
+    if (simulator.done()) run.maxEnergyDrift = std::max(run.maxEnergyDrift, driftAt(simulator.run().final));
+  }
+  switch (simulator.done() ? simulator.run().stop : ChainStop::ContactLimit) {
+    case ChainStop::TimeLimit:
+    case ChainStop::NoFurtherContact:
+      run.status = RunStatus::Completed;
+      break;
+    case ChainStop::ContactLimit:
+      run.status = RunStatus::Budget;
+      run.reason = "contact budget (" + std::to_string(budget.maxSteps) + " contacts) spent";
+      break;
+    case ChainStop::SearchBudget:
+      run.status = RunStatus::Budget;
+      run.reason = "the contact search ran out of its budget before deciding";
+      break;
+    case ChainStop::Undecided:
+      run.status = RunStatus::Budget;
+      run.reason = "a contact undecided in " + std::string(toString(precisionOf<S>()));
+      break;
+    case ChainStop::Cancelled:
+      run.status = RunStatus::Cancelled;
+      run.reason = "cancelled";
+      break;
+  }
+  if (overTime) {
+    run.status = RunStatus::Budget;
+    run.reason = "time budget (" + std::to_string(budget.maxSeconds) + " s) spent";
+  }
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return run;
+}
+
 }  // namespace
 
 MethodRun runExact(const Task& task, Precision precision, const WorkBudget& budget,
@@ -90,6 +178,21 @@ MethodRun runExact(const Task& task, Precision precision, const WorkBudget& budg
       return runIn<long double>(task, budget, stop);
     case Precision::Quad:
       return runIn<Quad>(task, budget, stop);
+  }
+  return refusedRun(task, "unknown precision");
+}
+
+ChainMethodRun runExact(const ChainTask& task, Precision precision, const WorkBudget& budget,
+                        std::stop_token stop) {
+  const std::string problem = taskProblem(task);
+  if (!problem.empty()) return refusedRun(task, problem);
+  switch (precision) {
+    case Precision::Double:
+      return runChainIn<double>(task, budget, stop);
+    case Precision::Long:
+      return runChainIn<long double>(task, budget, stop);
+    case Precision::Quad:
+      return runChainIn<Quad>(task, budget, stop);
   }
   return refusedRun(task, "unknown precision");
 }

@@ -104,32 +104,57 @@ std::string MethodSetting::label() const {
   return out.str();
 }
 
-MethodRun runMethod(const Task& task, const MethodSetting& setting, const WorkBudget& budget,
-                    std::stop_token stop) {
+namespace {
+
+template <typename T>
+typename ScaledRun<T>::Output runOn(const T& task, const MethodSetting& setting,
+                                    const WorkBudget& budget, std::stop_token stop) {
   const double value = setting.value;
   if (setting.kind != MethodKind::Exact && !(value > 0 && std::isfinite(value))) {
     return refusedRun(task, std::string(parameterName(setting.kind)) +
                                 " must be positive and finite");
   }
+  if (setting.kind == MethodKind::Exact) return runExact(task, setting.precision, budget, stop);
+  ScaledRun<T> run(task, budget, stop);
+  if (run.refused()) return run.take();
   switch (setting.kind) {
     case MethodKind::Exact:
-      return runExact(task, setting.precision, budget, stop);
+      break;
     case MethodKind::MoreauJean:
-      return runMoreauJean(task, 0.5, value, budget, stop);
+      runMoreauJean(run, 0.5, value, budget);
+      break;
     case MethodKind::MoreauJeanTheta1:
-      return runMoreauJean(task, 1.0, value, budget, stop);
+      runMoreauJean(run, 1.0, value, budget);
+      break;
     case MethodKind::SchatzmanPaoli:
-      return runSchatzmanPaoli(task, value, budget, stop);
+      runSchatzmanPaoli(run, value, budget);
+      break;
     case MethodKind::Dopri5Events:
-      return runDopri5Events(task, value, budget, stop);
+      runDopri5Events(run, value);
+      break;
     case MethodKind::CvodeAdams:
-      return runCvode(task, false, value, budget, stop);
+      runCvode(run, false, value);
+      break;
     case MethodKind::CvodeBdf:
-      return runCvode(task, true, value, budget, stop);
+      runCvode(run, true, value);
+      break;
     case MethodKind::Penalty:
-      return runPenalty(task, value, setting.penaltyRtol, budget, stop);
+      runPenalty(run, value, setting.penaltyRtol);
+      break;
   }
-  return refusedRun(task, "unknown method");
+  return run.take();
+}
+
+}  // namespace
+
+MethodRun runMethod(const Task& task, const MethodSetting& setting, const WorkBudget& budget,
+                    std::stop_token stop) {
+  return runOn(task, setting, budget, std::move(stop));
+}
+
+ChainMethodRun runMethod(const ChainTask& task, const MethodSetting& setting,
+                         const WorkBudget& budget, std::stop_token stop) {
+  return runOn(task, setting, budget, std::move(stop));
 }
 
 }  // namespace grazelab::core::methods

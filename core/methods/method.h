@@ -9,7 +9,9 @@
 #include <string_view>
 #include <vector>
 
+#include "core/model/mass_chain.h"
 #include "core/model/model.h"
+#include "core/solver/chain_run.h"
 #include "core/solver/recorder.h"
 #include "core/numbers/scalar.h"
 
@@ -78,18 +80,26 @@ enum class RunStatus {
 };
 std::string_view toString(RunStatus status);
 
-/// The same model, start and horizon for every method.
+/// The same chain, start and horizon for every method: the note's chain, written with its own
+/// parameters (Task), or any chain of N masses (ChainTask).
 struct Task {
   Model model;
   State start;
   double tEnd = 0;  ///< the horizon [time]
   Needs needs;      ///< what to keep (the events, samples for an overlay)
 };
+struct ChainTask {
+  MassChain chain;
+  ChainState start;
+  double tEnd = 0;  ///< the horizon [time]
+};
 
-/// What every method returns: the recorder's result (events with their states, final state,
-/// energy, cost) plus the method's own work and why it stopped.
-struct MethodRun {
-  Result result;
+/// What every method returns: its events with their states, final state and energy (the note's
+/// chain: the recorder's Result, with samples for an overlay; any chain: a ChainRun, events in
+/// the one layout of every chain) plus the method's own work and why it stopped.
+template <typename R>
+struct BasicMethodRun {
+  R result;
   std::int64_t steps = 0;           ///< time steps taken (contacts for the exact solver)
   std::int64_t rhsEvaluations = 0;  ///< right-hand side evaluations, where the method has them
   double seconds = 0;               ///< wall time of the run
@@ -97,10 +107,14 @@ struct MethodRun {
   RunStatus status = RunStatus::Completed;
   std::string reason;               ///< one line: why it stopped, or what it did at a tangency
 };
+using MethodRun = BasicMethodRun<Result>;
+using ChainMethodRun = BasicMethodRun<ChainRun>;
 
 /// Runs `setting` on `task`. Never throws for bad input: an unusable model or start is a
 /// Refused run with its reason.
 MethodRun runMethod(const Task& task, const MethodSetting& setting,
                     const WorkBudget& budget = {}, std::stop_token stop = {});
+ChainMethodRun runMethod(const ChainTask& task, const MethodSetting& setting,
+                         const WorkBudget& budget = {}, std::stop_token stop = {});
 
 }  // namespace grazelab::core::methods

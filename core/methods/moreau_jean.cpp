@@ -12,65 +12,66 @@
 
 namespace grazelab::core::methods {
 
-MethodRun runMoreauJean(const Task& task, double theta, double h, const WorkBudget& budget,
-                        std::stop_token stop) {
-  ScaledRun run(task, budget, stop);
-  if (run.refused()) return run.take();
+template <typename T>
+void runMoreauJean(ScaledRun<T>& run, double theta, double h, const WorkBudget& budget) {
+  using Matrix = typename ScaledRun<T>::System::Matrix;
+  using Vector = typename ScaledRun<T>::Vector;
   const FixedSteps steps = fixedSteps(run.tauEnd(), run.toTau(h));
   if (steps.count > budget.maxSteps) {
     run.finish(RunStatus::Budget,
                "needs " + std::to_string(steps.count) + " steps, over the budget of " +
                    std::to_string(budget.maxSteps),
-               0, run.scaledStart());
-    return run.take();
+               0, run.startPosition(), run.startVelocity());
+    return;
   }
-  // x'' = -A x with A = M^-1 K of the scaled chain; the impulse on mass 2 enters through
-  // M^-1 (0, -P) = -mu e2 with mu = P / beta >= 0, so the mass ratio drops out of the law.
-  const Chain<double>& c = run.chain();
-  Eigen::Matrix2d A;
-  A << c.p + c.q, -c.q, -c.w, c.w;
+  // x'' = -A x; the impulse on the stopped mass s enters through M^-1 (0, ..., -P, ..., 0)
+  // = -mu e_s with mu = P / m_s >= 0, so its mass drops out of the law.
+  const int n = run.size();
+  const int s = run.stop();
+  const Matrix A = run.system().stiffness();
   const double hs = steps.h;
-  const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
-  // (I + h^2 theta^2 A) v+ = v - h A (q + h theta (1 - theta) v) - mu e2, from
+  const Matrix identity = Matrix::Identity(n, n);
+  // (I + h^2 theta^2 A) v+ = v - h A (q + h theta (1 - theta) v) - mu e_s, from
   // M (v+ - v) = h [theta f(q+) + (1 - theta) f(q)] + impulse with q+ = q + h [theta v+ + (1-theta) v]
-  const Eigen::Matrix2d Winv = (identity + hs * hs * theta * theta * A).inverse();
-  const Eigen::Matrix2d fromV = Winv * (identity - hs * hs * theta * (1 - theta) * A);
-  const Eigen::Matrix2d fromQ = -hs * Winv * A;
-  const Eigen::Vector2d impulseColumn = Winv.col(1);
-  const double w22 = Winv(1, 1);
+  const Matrix Winv = (identity + hs * hs * theta * theta * A).inverse();
+  const Matrix fromV = Winv * (identity - hs * hs * theta * (1 - theta) * A);
+  const Matrix fromQ = -hs * Winv * A;
+  const Vector impulseColumn = Winv.col(s);
+  const double wss = Winv(s, s);
   const double delta = run.gap();
   constexpr double restitution = 1.0;
 
-  const State& x0 = run.scaledStart();
-  Eigen::Vector2d q(x0.u1, x0.u2), v(x0.v1, x0.v2);
-  auto state = [](const Eigen::Vector2d& q, const Eigen::Vector2d& v) {
-    return State{q(0), q(1), v(0), v(1)};
-  };
-  ImpulseSteps impulses;
+  Vector q = run.startPosition(), v = run.startVelocity();
+  Vector qNext(n), vNext(n), fromPosition(n);
+  ImpulseSteps<T> impulses;
   for (std::int64_t k = 0; k < steps.count; ++k) {
     const double tau = double(k) * hs;
-    if (k % kCheckEverySteps == 0 && run.mustStop(k, tau, state(q, v))) {
+    if (k % kCheckEverySteps == 0 && run.mustStop(k, tau, q, v)) {
       run.run().steps = k;
-      return run.take();
+      return;
     }
-    Eigen::Vector2d vNext = fromV * v + fromQ * q;
+    vNext.noalias() = fromV * v;
+    fromPosition.noalias() = fromQ * q;
+    vNext += fromPosition;
     // active when the gap predicted at mid-step is closed: g(q + h/2 v) <= 0
     double mu = 0;
-    if (q(1) + 0.5 * hs * v(1) >= delta) {
-      // 0 <= U+ + e U  _|_  P >= 0 with U = -v2: one contact, a scalar LCP
-      mu = std::max(0.0, (vNext(1) + restitution * v(1)) / w22);
+    if (q(s) + 0.5 * hs * v(s) >= delta) {
+      // 0 <= U+ + e U  _|_  P >= 0 with U = -v_s: one contact, a scalar LCP
+      mu = std::max(0.0, (vNext(s) + restitution * v(s)) / wss);
       vNext -= mu * impulseColumn;
     }
-    const Eigen::Vector2d qNext = q + hs * (theta * vNext + (1 - theta) * v);
-    impulses.step(run, mu > 0, tau + 0.5 * hs, state(q, v), state(qNext, vNext));
-    q = qNext;
-    v = vNext;
-    run.sample(double(k + 1) * hs, state(q, v));
+    qNext = q + hs * (theta * vNext + (1 - theta) * v);
+    impulses.step(run, mu > 0, tau + 0.5 * hs, q, v, qNext, vNext);
+    q.swap(qNext);
+    v.swap(vNext);
+    run.sample(double(k + 1) * hs, q, v);
   }
-  impulses.flush(run, run.tauEnd(), state(q, v));
+  impulses.flush(run, run.tauEnd(), q, v);
   run.run().steps = steps.count;
-  run.complete(state(q, v));
-  return run.take();
+  run.complete(q, v);
 }
+
+template void runMoreauJean(ScaledRun<Task>&, double, double, const WorkBudget&);
+template void runMoreauJean(ScaledRun<ChainTask>&, double, double, const WorkBudget&);
 
 }  // namespace grazelab::core::methods

@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
+#include "core/solver/chain_run.h"
+#include "core/solver/chain_trust.h"
 #include "core/solver/simulate.h"
 
 namespace grazelab::core::methods {
@@ -23,18 +26,17 @@ bool usable(const WorkPrecisionPoint& point) {
          point.secondsMin > 0;
 }
 
-}  // namespace
-
-WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
-                                const MethodSetting& setting, const WorkBudget& budget,
-                                const TimingPolicy& timing, std::stop_token stop,
-                                MethodRun* firstRun) {
+template <typename T, typename R>
+WorkPrecisionPoint measure(const T& task, const BasicReference<R>& reference,
+                           const MethodSetting& setting, const WorkBudget& budget,
+                           const TimingPolicy& timing, std::stop_token stop,
+                           BasicMethodRun<R>* firstRun) {
   WorkPrecisionPoint point;
   point.setting = setting;
   std::vector<double> seconds;
   double spent = 0;
   for (int run = 0;; ++run) {
-    MethodRun result = runMethod(task, setting, budget, stop);
+    BasicMethodRun<R> result = runMethod(task, setting, budget, stop);
     seconds.push_back(result.seconds);
     spent += result.seconds;
     if (run == 0) {
@@ -57,6 +59,30 @@ WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
   const std::size_t n = seconds.size();
   point.secondsMedian = n % 2 == 1 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
   return point;
+}
+
+/// The period of a task's slowest mode.
+double slowestPeriod(const Task& task) {
+  return twoPi<double>() / makeChain(task.model).chain->omegaSlow;
+}
+double slowestPeriod(const ChainTask& task) {
+  return twoPi<double>() / chainModes(task.chain).omega.minCoeff();
+}
+
+}  // namespace
+
+WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
+                                const MethodSetting& setting, const WorkBudget& budget,
+                                const TimingPolicy& timing, std::stop_token stop,
+                                MethodRun* firstRun) {
+  return measure(task, reference, setting, budget, timing, std::move(stop), firstRun);
+}
+
+WorkPrecisionPoint measurePoint(const ChainTask& task, const ChainReference& reference,
+                                const MethodSetting& setting, const WorkBudget& budget,
+                                const TimingPolicy& timing, std::stop_token stop,
+                                ChainMethodRun* firstRun) {
+  return measure(task, reference, setting, budget, timing, std::move(stop), firstRun);
 }
 
 std::vector<MethodSetting> reportSettings(MethodKind kind, double period, double k1, bool quick) {
@@ -175,20 +201,36 @@ Trust startTrust(const Task& task, std::stop_token stop) {
   return monitor.finish(result);
 }
 
-ComparisonEnd comparisonEnd(const Task& task, std::stop_token stop) {
+Trust startTrust(const ChainTask& task, std::stop_token stop) {
+  const ChainRun run = runChain(task.chain, task.start, std::numeric_limits<long>::max(), task.tEnd, stop);
+  return chainTrust(task.chain, task.start, run, std::numeric_limits<long>::max(), task.tEnd,
+                    TrustMode::Full, stop);
+}
+
+namespace {
+
+template <typename T>
+ComparisonEnd endOf(const T& task, std::stop_token stop) {
   ComparisonEnd end;
   end.tEnd = task.tEnd;
   end.trust = startTrust(task, stop);
   end.horizon = end.trust.horizon;
   if (end.horizon > 0 && end.horizon < task.tEnd) {
-    const double period = twoPi<double>() / makeChain(task.model).chain->omegaSlow;
+    const double period = slowestPeriod(task);
     end.tEnd = std::max(end.horizon - period / 8, end.horizon / 2);
     end.shortened = true;
-    Task shorter = task;
+    T shorter = task;
     shorter.tEnd = end.tEnd;
     end.trust = startTrust(shorter, stop);
   }
   return end;
+}
+
+}  // namespace
+
+ComparisonEnd comparisonEnd(const Task& task, std::stop_token stop) { return endOf(task, std::move(stop)); }
+ComparisonEnd comparisonEnd(const ChainTask& task, std::stop_token stop) {
+  return endOf(task, std::move(stop));
 }
 
 }  // namespace grazelab::core::methods

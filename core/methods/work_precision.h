@@ -43,6 +43,10 @@ WorkPrecisionPoint measurePoint(const Task& task, const Reference& reference,
                                 const MethodSetting& setting, const WorkBudget& budget,
                                 const TimingPolicy& timing, std::stop_token stop = {},
                                 MethodRun* firstRun = nullptr);
+WorkPrecisionPoint measurePoint(const ChainTask& task, const ChainReference& reference,
+                                const MethodSetting& setting, const WorkBudget& budget,
+                                const TimingPolicy& timing, std::stop_token stop = {},
+                                ChainMethodRun* firstRun = nullptr);
 
 /// The CVODE tolerance of the penalty method in the report.
 inline constexpr double kPenaltyReportRtol = 1e-12;
@@ -82,6 +86,7 @@ const WorkPrecisionPoint* cheapestReaching(const std::vector<WorkPrecisionPoint>
 /// The predictability horizon of a task's start: the trust estimate of the exact double run
 /// (a long double shadow, issue 7).
 Trust startTrust(const Task& task, std::stop_token stop = {});
+Trust startTrust(const ChainTask& task, std::stop_token stop = {});
 
 /// Where a comparison of methods on `task` may end: its own end, or, when the predictability
 /// horizon of the start comes first, an eighth of a period before it (the horizon is the time
@@ -94,5 +99,6 @@ struct ComparisonEnd {
   Trust trust;         ///< the estimate of the exact double run up to tEnd
 };
 ComparisonEnd comparisonEnd(const Task& task, std::stop_token stop = {});
+ComparisonEnd comparisonEnd(const ChainTask& task, std::stop_token stop = {});
 
 }  // namespace grazelab::core::methods

@@ -24,6 +24,7 @@
 #include "core/solver/chain_run.h"
 #include "core/solver/chain_trust.h"
 #include "exit_codes.h"
+#include "io/chain_start.h"
 #include "io/cli_input.h"
 #include "io/cli_output.h"
 #include "io/json_value.h"
@@ -117,76 +118,6 @@ std::string stopMessage(core::ChainStop stop) {
   }
 }
 
-// `count` finite numbers from a comma-separated list, read in precision S, or nothing with
-// `error` set
-template <typename S>
-std::optional<std::vector<S>> numberList(const OptionValues& options, const char* name, Eigen::Index count,
-                                         const QString& layout, QString& error) {
-  std::vector<S> values;
-  // numbers handed over as numbers (the Python module): in double the very numbers their
-  // shortest text would give, read without the text
-  const auto given = std::is_same_v<S, double> ? options.numbers(name) : std::nullopt;
-  if (given) {
-    for (const double value : *given) {
-      if (!std::isfinite(value)) {
-        error = QStringLiteral("--%1: '%2' is not a finite number").arg(name).arg(value);
-        return std::nullopt;
-      }
-      values.push_back(value == 0 ? S(0) : S(value));  // (-0 reads as 0 from its text "0")
-    }
-  }
-  for (const QString& part : given ? QStringList() : options.value(name).split(',')) {
-    const core::ParsedScalar<S> value = core::parseScalar<S>(part.trimmed().toStdString());
-    if (!value.value || !core::isFinite(*value.value)) {
-      error = QStringLiteral("--%1: '%2' is not a finite number").arg(name, part);
-      return std::nullopt;
-    }
-    values.push_back(*value.value);
-  }
-  if (Eigen::Index(values.size()) != count) {
-    error = QStringLiteral("--%1: %2 numbers for %3 masses (%4: %5)")
-                .arg(name)
-                .arg(values.size())
-                .arg(count / (layout.contains("v1") ? 2 : 1))
-                .arg(layout)
-                .arg(count);
-    return std::nullopt;
-  }
-  return values;
-}
-
-// why a period has no admissible 1IPP orbit, in words
-const char* refusalWords(core::OnePeriodicRefusal refusal) {
-  switch (refusal) {
-    case core::OnePeriodicRefusal::None: return "admissible";
-    case core::OnePeriodicRefusal::BadPeriod: return "the period is not positive and finite";
-    case core::OnePeriodicRefusal::MultipleOfPeriod: return "the period is a multiple of a mode's period: no data";
-    case core::OnePeriodicRefusal::LeavesIntoStop: return "its data leave into the stop (V >= 0)";
-    case core::OnePeriodicRefusal::NotDecided: return "its return at T cannot be decided in double (V too small)";
-    case core::OnePeriodicRefusal::NeverReturns: return "the flight from its data never returns to the stop";
-    case core::OnePeriodicRefusal::ReturnsEarly: return "the flight from its data meets the stop before T";
-  }
-  return "unknown";
-}
-
-// exactly one start of a chain of n masses given, or false with `error` set
-bool oneStartOf(const OptionValues& options, Eigen::Index n, QString& error) {
-  if (int(options.isSet("state")) + int(options.isSet("glo-weights")) + int(options.isSet("onepp")) == 1) return true;
-  error = QStringLiteral("a chain of N masses starts from --state u1,...,uN,v1,...,vN (%1 numbers), "
-                         "--glo-weights l1,...,lN (%2) or --onepp T: one of them")
-              .arg(2 * n)
-              .arg(n);
-  return false;
-}
-
-// --glo is the two-mass chain's: a chain of N masses has --glo-weights; false with `error` set
-bool noTwoMassStart(const OptionValues& options, QString& error) {
-  if (!options.isSet("glo")) return true;
-  error = "--glo is not available for a chain of N masses: start it with --state u1,...,uN,v1,...,vN, "
-          "--glo-weights l1,...,lN or --onepp T";
-  return false;
-}
-
 // The note's chain given by --masses (writesTheNotesChain), its start given as a chain's: run by
 // the note's engine, as the two-mass options would run it (the same bits)
 int runTheNotesChain(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
@@ -198,77 +129,6 @@ int runTheNotesChain(const OptionValues& options, const Io& io, std::stop_token 
   const auto trust = parseTrustOption(*twoMass, error);
   if (!trust) return kExitInvalidInput;
   return runSimulate(*twoMass, *precision, *trust, io, std::move(stop), error);
-}
-
-// The run's start in S, from the chain in S: --state, --glo-weights (GLO_lambda at its touch) or
-// --onepp T (the 1IPP orbit's data right after its impact), plus --perturb. --state, the weights,
-// T and --perturb are read in S (0.1 is 0.1 to binary128's digits)
-template <typename S>
-std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, const core::BasicMassChain<S>& chain,
-                                                   QString& error, std::string* description = nullptr) {
-  const Eigen::Index n = chain.size();
-  const int s = chain.stopped() - 1;
-  if (!oneStartOf(options, n, error)) return std::nullopt;
-  core::BasicChainState<S> start;
-  if (options.isSet("onepp")) {
-    const core::ParsedScalar<S> T = core::parseScalar<S>(options.value("onepp").trimmed().toStdString());
-    const core::BasicChainOnePeriodicOrbit<S> orbit = core::chainOnePeriodicOrbitIn<S>(chain, T.value.value_or(S(-1)));
-    if (!orbit.admissible()) {
-      error = QStringLiteral("--onepp %1: no admissible 1IPP orbit of that period: %2")
-                  .arg(options.value("onepp"), refusalWords(orbit.refusal));
-      return std::nullopt;
-    }
-    start = orbit.postImpact;
-  } else if (options.isSet("state")) {
-    const auto values = numberList<S>(options, "state", 2 * n, "u1,...,uN,v1,...,vN", error);
-    if (!values) return std::nullopt;
-    using Vector = core::ChainVector<S>;
-    start = {Eigen::Map<const Vector>(values->data(), n), Eigen::Map<const Vector>(values->data() + n, n)};
-  } else {
-    const auto weights = numberList<S>(options, "glo-weights", n, "l1,...,lN", error);
-    if (!weights) return std::nullopt;
-    const core::BasicChainGloStart<S> glo = core::chainGloStartIn<S>(chain, *weights);
-    switch (glo.problem) {
-      case core::GloStartProblem::None: break;
-      case core::GloStartProblem::WrongCount:
-      case core::GloStartProblem::NotFinite:
-        error = "--glo-weights: one finite weight per mode";
-        return std::nullopt;
-      case core::GloStartProblem::NotAffine:
-        error = "--glo-weights: the weights must sum to 1 (an affine combination of the GLOMs keeps the "
-                "stopped mass on the stop)";
-        return std::nullopt;
-      case core::GloStartProblem::WeightOnNode:
-        error = "--glo-weights: a weight on a mode with a node at the stopped mass, which has no GLOM (see "
-                "info's node_at_stop)";
-        return std::nullopt;
-    }
-    start = glo.state;
-  }
-  if (options.isSet("perturb")) {
-    const auto delta = numberList<S>(options, "perturb", 2 * n, "du1,...,duN,dv1,...,dvN", error);
-    if (!delta) return std::nullopt;
-    using Vector = core::ChainVector<S>;
-    start.u += Eigen::Map<const Vector>(delta->data(), n);
-    start.v += Eigen::Map<const Vector>(delta->data() + n, n);
-  }
-  if (description) {
-    *description = options.isSet("onepp")
-                       ? "1IPP orbit of period T = " + options.value("onepp").trimmed().toStdString() +
-                             ", right after its impact"
-                   : options.isSet("state") ? std::string("the state given")
-                                            : "GLO_lambda at its touch, weights " +
-                                                  options.value("glo-weights").toStdString();
-    if (options.isSet("perturb")) *description += ", pushed by " + options.value("perturb").toStdString();
-  }
-  if (start.u[s] > chain.gap) {
-    error = QStringLiteral("the start has u%1 = %2 past the stop (gap %3)")
-                .arg(s + 1)
-                .arg(core::toDouble(start.u[s]))
-                .arg(core::toDouble(chain.gap));
-    return std::nullopt;
-  }
-  return start;
 }
 
 // The run in S, as the document's fields from "events" on; nothing when the start is refused

@@ -10,8 +10,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <variant>
+#include <vector>
 
+#include "core/solver/chain_run.h"
+#include "io/chain_start.h"
 #include "io/cli_input.h"
+#include "io/option_values.h"
 #include "commands/report_internal.h"
 #include "commands/report_support.h"
 
@@ -48,15 +53,10 @@ double fineness(const core::methods::MethodSetting& setting, double period, doub
 
 JsonValue metadata(const ReportInput& input) {
   using V = JsonValue;
-  const core::Model& m = input.task.model;
-  V model = V::object({{"m1", V::number(m.m1)}, {"m2", V::number(m.m2)}, {"k1", V::number(m.k1)},
-                       {"k2", V::number(m.k2)}, {"gap", V::number(m.gap)}});
-  if (m.design) model.set("branch", V::of(std::string(core::toString(*m.design))));
-  const core::State& s = input.task.start;
   return V::object({{"generator", V::of(versionString().toStdString())},
-                    {"model", std::move(model)},
-                    {"start", V::array({V::number(s.u1), V::number(s.u2), V::number(s.v1), V::number(s.v2)})},
-                    {"t_end", V::number(input.task.tEnd)}});
+                    {"model", input.chain},
+                    {"start", input.start},
+                    {"t_end", V::number(input.tEnd)}});
 }
 
 
@@ -70,18 +70,80 @@ using core::methods::ErrorMeasure;
 constexpr double kDefaultPeriods = 200;
 const core::State kDefaultPush{0, 0, 0.05, -0.05};
 
-std::optional<ReportInput> parseReportInput(const QCommandLineParser& parser, QString& error) {
-  if (parser.isSet("t-end") && parser.isSet("contacts")) {
-    error = "give --t-end or --contacts, not both";
-    return std::nullopt;
+/// The problem of a report: its task (the note's chain, or any chain of N masses) and the words
+/// that describe it.
+struct ReportProblem {
+  ReportInput words;
+  std::variant<core::methods::Task, core::methods::ChainTask> task;
+};
+
+/// The horizon of a report (--t-end, --contacts N, or 200 T2) given the times of the exact
+/// run's first contacts (`contactTimes(count)`, at least `count` of them when it makes them);
+/// nothing with `error` set.
+template <typename ContactTimes>
+std::optional<double> reportHorizon(const QCommandLineParser& parser, ReportInput& input, const ContactTimes& contactTimes,
+                                    QString& error) {
+  if (parser.isSet("t-end")) {
+    const auto tEnd = core::parseScalar<double>(parser.value("t-end").trimmed().toStdString()).value;
+    if (!tEnd || !(*tEnd > 0) || !std::isfinite(*tEnd)) {
+      error = "--t-end must be a positive time for a report";
+      return std::nullopt;
+    }
+    input.horizonNote = QStringLiteral("t_end = %1 (given)").arg(*tEnd);
+    return *tEnd;
   }
+  if (parser.isSet("contacts")) {
+    // the horizon ends halfway between the N-th and the next contact of the exact run, so
+    // that no method is judged at a contact instant
+    bool ok = false;
+    const qlonglong contacts = parser.value("contacts").trimmed().toLongLong(&ok);
+    if (!ok || contacts < 1) {
+      error = "--contacts must be at least 1 for a report";
+      return std::nullopt;
+    }
+    const std::vector<double> times = contactTimes(std::int64_t(contacts) + 1);
+    if (std::int64_t(times.size()) < contacts) {
+      error = QStringLiteral("--contacts: this start makes only %1 contacts").arg(times.size());
+      return std::nullopt;
+    }
+    const double nth = times[std::size_t(contacts - 1)];
+    const double tEnd = times.size() > std::size_t(contacts) ? 0.5 * (nth + times[std::size_t(contacts)])
+                                                             : nth + 0.5 * input.period;
+    input.horizonNote = QStringLiteral("t_end = %1, halfway between contact %2 and the next")
+                            .arg(tEnd, 0, 'g', 10)
+                            .arg(contacts);
+    return tEnd;
+  }
+  const double tEnd = kDefaultPeriods * input.period;
+  input.horizonNote = QStringLiteral("t_end = %1 (the default, 200 T2)").arg(tEnd, 0, 'g', 10);
+  return tEnd;
+}
+
+QString numberText(double value) { return QString::number(value, 'g', 17); }
+
+QString listText(const Eigen::VectorXd& values) {
+  QStringList parts;
+  for (const double value : values) parts << numberText(value);
+  return parts.join(", ");
+}
+
+JsonValue numbersValue(const Eigen::VectorXd& values) {
+  std::vector<JsonValue> numbers;
+  for (const double value : values) numbers.push_back(JsonValue::number(value));
+  return JsonValue::array(std::move(numbers));
+}
+
+// The note's chain (the two-mass options, or --masses m1,m2 of its shape): the default problem
+// unless told otherwise
+std::optional<ReportProblem> twoMassProblem(const QCommandLineParser& parser, QString& error) {
   Parsed<RunInput<double>> run = parseRun<double>(parser);
   if (!run.value) {
     error = run.error;
     return std::nullopt;
   }
-  ReportInput input;
-  core::methods::Task& task = input.task;
+  ReportProblem problem;
+  ReportInput& input = problem.words;
+  core::methods::Task task;
   task.model = run.value->model.model;
   task.start = run.value->request.initial;
   input.startDescription = QString::fromStdString(run.value->initialDescription);
@@ -94,47 +156,105 @@ std::optional<ReportInput> parseReportInput(const QCommandLineParser& parser, QS
   const core::Chain<double>& chain = run.value->model.chain;
   input.period = core::twoPi<double>() / chain.omegaSlow;
   task.needs.events = true;
-  if (parser.isSet("t-end")) {
-    task.tEnd = run.value->request.tEnd;
-    if (!(task.tEnd > 0) || !std::isfinite(task.tEnd)) {
-      error = "--t-end must be a positive time for a report";
-      return std::nullopt;
-    }
-    input.horizonNote = QStringLiteral("t_end = %1 (given)").arg(task.tEnd);
-  } else if (parser.isSet("contacts")) {
-    // the horizon ends halfway between the N-th and the next contact of the exact run, so
-    // that no method is judged at a contact instant
-    const std::int64_t contacts = run.value->request.maxContacts;
-    if (contacts < 1) {
-      error = "--contacts must be at least 1 for a report";
-      return std::nullopt;
-    }
+  const auto tEnd = reportHorizon(parser, input, [&task](std::int64_t count) {
     core::Request request;
     request.initial = task.start;
-    request.maxContacts = contacts + 1;
+    request.maxContacts = count;
     request.needs.events = false;
     std::vector<double> times;
     request.onEvent = [&times](const core::Event& e) {
       if (core::isContact(e.type)) times.push_back(e.t);
     };
     core::simulate(task.model, request);
-    if (std::int64_t(times.size()) < contacts) {
-      error = QStringLiteral("--contacts: this start makes only %1 contacts").arg(times.size());
-      return std::nullopt;
-    }
-    const double nth = times[std::size_t(contacts - 1)];
-    task.tEnd = times.size() > std::size_t(contacts) ? 0.5 * (nth + times[std::size_t(contacts)])
-                                                     : nth + 0.5 * input.period;
-    input.horizonNote = QStringLiteral("t_end = %1, halfway between contact %2 and the next")
-                            .arg(task.tEnd, 0, 'g', 10)
-                            .arg(contacts);
-  } else {
-    task.tEnd = kDefaultPeriods * input.period;
-    input.horizonNote = QStringLiteral("t_end = %1 (the default, 200 T2)").arg(task.tEnd, 0, 'g', 10);
-  }
-  return input;
+    return times;
+  }, error);
+  if (!tEnd) return std::nullopt;
+  task.tEnd = *tEnd;
+  const core::Model& m = task.model;
+  input.chainLine = QStringLiteral("m1 = %1, m2 = %2, k1 = %3, k2 = %4%5, gap d = %6")
+                        .arg(m.m1).arg(m.m2).arg(m.k1).arg(m.k2, 0, 'g', 17)
+                        .arg(m.design ? QStringLiteral(" (1:2 design, %1 branch)").arg(core::toString(*m.design).data())
+                                      : QStringLiteral(" (as given)"))
+                        .arg(m.gap);
+  const core::State& s = task.start;
+  input.startLine = QStringLiteral("(u1, u2, v1, v2) = (%1, %2, %3, %4)")
+                        .arg(numberText(s.u1), numberText(s.u2), numberText(s.v1), numberText(s.v2));
+  using V = JsonValue;
+  input.chain = V::object({{"m1", V::number(m.m1)}, {"m2", V::number(m.m2)}, {"k1", V::number(m.k1)},
+                           {"k2", V::number(m.k2)}, {"gap", V::number(m.gap)}});
+  if (m.design) input.chain.set("branch", V::of(std::string(core::toString(*m.design))));
+  input.start = V::array({V::number(s.u1), V::number(s.u2), V::number(s.v1), V::number(s.v2)});
+  input.k1 = m.k1;
+  input.tEnd = task.tEnd;
+  problem.task = std::move(task);
+  return problem;
 }
 
+// A chain of N masses (--masses of any other shape): its start must be given (--state,
+// --glo-weights or --onepp, and --perturb)
+std::optional<ReportProblem> chainProblem(const QCommandLineParser& parser, QString& error) {
+  const OptionValues options(parser);
+  if (!noTwoMassStart(options, error)) return std::nullopt;
+  const Parsed<MassChainInput> parsed = parseMassChain(options);
+  if (!parsed.value) {
+    error = parsed.error;
+    return std::nullopt;
+  }
+  ReportProblem problem;
+  ReportInput& input = problem.words;
+  core::methods::ChainTask task;
+  task.chain = parsed.value->chain;
+  std::string description;
+  const auto start = chainStart<double>(options, task.chain, error, &description);
+  if (!start) return std::nullopt;
+  task.start = *start;
+  input.startDescription = QString::fromStdString(description);
+  const core::ChainModes modes = core::chainModes(task.chain);
+  input.period = core::twoPi<double>() / modes.omega.minCoeff();
+  const auto tEnd = reportHorizon(parser, input, [&task](std::int64_t count) {
+    const core::ChainRun run = core::runChain(task.chain, task.start, long(count));
+    std::vector<double> times;
+    for (const core::ChainEvent& e : run.events) {
+      if (core::isContact(e.type)) times.push_back(e.t);
+    }
+    return times;
+  }, error);
+  if (!tEnd) return std::nullopt;
+  task.tEnd = *tEnd;
+  const core::MassChain& c = task.chain;
+  const Eigen::Map<const Eigen::VectorXd> masses(c.masses.data(), c.size());
+  const Eigen::Map<const Eigen::VectorXd> springs(c.springs.data(), c.size());
+  input.chainLine = QStringLiteral("%1 masses (%2), springs (%3)%4, stopped mass %5, gap d = %6; "
+                                   "w1 = %7 (its fastest mode)")
+                        .arg(c.size())
+                        .arg(listText(masses), listText(springs))
+                        .arg(c.rightSpring > 0 ? QStringLiteral(", right wall spring %1").arg(numberText(c.rightSpring))
+                                               : QString())
+                        .arg(c.stopped())
+                        .arg(numberText(c.gap))
+                        .arg(modes.omega.maxCoeff(), 0, 'g', 10);
+  input.startLine = QStringLiteral("u = (%1), v = (%2)").arg(listText(task.start.u), listText(task.start.v));
+  using V = JsonValue;
+  input.chain = V::object({{"masses", numbersValue(masses)},
+                           {"springs", numbersValue(springs)},
+                           {"right_spring", V::number(c.rightSpring)},
+                           {"stop_mass", V::of(std::int64_t(c.stopped()))},
+                           {"gap", V::number(c.gap)}});
+  input.start = V::object({{"u", numbersValue(task.start.u)}, {"v", numbersValue(task.start.v)}});
+  input.k1 = c.springs.front();
+  input.tEnd = task.tEnd;
+  problem.task = std::move(task);
+  return problem;
+}
+
+std::optional<ReportProblem> parseReportProblem(const QCommandLineParser& parser, QString& error) {
+  if (parser.isSet("t-end") && parser.isSet("contacts")) {
+    error = "give --t-end or --contacts, not both";
+    return std::nullopt;
+  }
+  if (parser.isSet("masses") && !hasTheNotesShape(OptionValues(parser))) return chainProblem(parser, error);
+  return twoMassProblem(parser, error);
+}
 
 // The errors are differences of runs handed back in double: below about one rounding of double
 // (the state, relative to its scales) or of t_end (contact times, in T2) the comparison cannot see
@@ -204,42 +324,43 @@ void addReportOptions(QCommandLineParser& parser) {
   });
 }
 
-int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
+namespace {
+
+// The report's runs on its task, then its files
+template <typename T>
+int reportOn(T& task, ReportInput& input, const std::vector<MethodKind>& methods, const QString& dir, bool quick,
+             const Io& io, std::stop_token stop, QString& error) {
   using namespace core::methods;
-  const auto methods = parseMethodsOption(parser, error);
-  if (!methods) return kExitInvalidInput;
-  auto input = parseReportInput(parser, error);
-  if (!input) return kExitInvalidInput;
-  const auto directory = prepareOutputDirectory(parser, error);
-  if (!directory) return kExitInvalidInput;
-  const bool quick = parser.isSet("quick");
   const TimingPolicy timing = quick ? TimingPolicy{2, 0.5, 0.05, 1000} : TimingPolicy{5, 3.0, 0.2, 1000};
   WorkBudget budget;
   budget.maxSteps = 1'000'000'000;
   budget.maxSeconds = quick ? 5 : 60;
-  Task& task = input->task;
 
   progress(io, "report", QStringLiteral("estimating the predictability horizon of the start"));
   const ComparisonEnd end = comparisonEnd(task, stop);
+  if (stop.stop_requested()) return kExitInterrupted;
   if (end.shortened) {
-    input->horizonNote += QStringLiteral("; moved to t = %1, an eighth of T2 before the "
-                                         "predictability horizon of the start (%2)")
-                              .arg(end.tEnd, 0, 'g', 10)
-                              .arg(end.horizon, 0, 'g', 6);
+    input.horizonNote += QStringLiteral("; moved to t = %1, an eighth of T2 before the "
+                                        "predictability horizon of the start (%2)")
+                             .arg(end.tEnd, 0, 'g', 10)
+                             .arg(end.horizon, 0, 'g', 6);
     task.tEnd = end.tEnd;
+    input.tEnd = end.tEnd;
   }
   progress(io, "report", QStringLiteral("binary128 reference to t = %1 (%2 T2)")
-                         .arg(task.tEnd, 0, 'g', 6).arg(task.tEnd / input->period, 0, 'g', 4));
-  const Reference reference = makeReference(task, budget, stop);
+                         .arg(task.tEnd, 0, 'g', 6).arg(task.tEnd / input.period, 0, 'g', 4));
+  const auto reference = makeReference(task, budget, stop);
   if (stop.stop_requested()) return kExitInterrupted;
   if (reference.run.status != RunStatus::Completed) {
     error = "no trustworthy reference for this problem: " + QString::fromStdString(reference.run.reason);
     return kExitInvalidInput;
   }
+  input.referenceContacts = reference.run.steps;
+  input.referenceSeconds = reference.seconds;
 
   std::vector<std::pair<MethodKind, MethodSetting>> plan;
-  for (MethodKind kind : *methods) {
-    for (const MethodSetting& setting : reportSettings(kind, input->period, task.model.k1, quick)) {
+  for (MethodKind kind : methods) {
+    for (const MethodSetting& setting : reportSettings(kind, input.period, input.k1, quick)) {
       plan.push_back({kind, setting});
     }
   }
@@ -262,13 +383,11 @@ int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token st
   }
 
   const QByteArray csv = resultsCsv(all, comparisonResolution(task.tEnd, reference.period));
-  const QByteArray md =
-      reportMarkdown(*input, end, reference, *methods, byMethod, timing, quick);
-  const QString dir = *directory;
+  const QByteArray md = reportMarkdown(input, end, methods, byMethod, timing, quick);
   if (!writeAtomically(dir + "/results.csv", csv, error)) return 1;
   QString pictures;
   if (picturesAvailable()) {
-    if (!writePictures(dir, *input, *methods, byMethod, error)) return 1;
+    if (!writePictures(dir, input, methods, byMethod, error)) return 1;
     pictures = "work_precision.svg/.png, convergence.svg/.png, ";
   } else {
     progress(io, "report", "no pictures: the Python module draws none");
@@ -276,6 +395,22 @@ int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token st
   if (!writeAtomically(dir + "/report.md", md, error)) return 1;
   progress(io, "report", QStringLiteral("wrote %1/{results.csv, %2report.md}").arg(dir, pictures));
   return kExitOk;
+}
+
+}  // namespace
+
+int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
+  const auto methods = parseMethodsOption(parser, error);
+  if (!methods) return kExitInvalidInput;
+  auto problem = parseReportProblem(parser, error);
+  if (!problem) return kExitInvalidInput;
+  const auto directory = prepareOutputDirectory(parser, error);
+  if (!directory) return kExitInvalidInput;
+  return std::visit(
+      [&](auto& task) {
+        return reportOn(task, problem->words, *methods, *directory, parser.isSet("quick"), io, stop, error);
+      },
+      problem->task);
 }
 
 }  // namespace grazelab::cli

@@ -18,15 +18,21 @@ using core::methods::MethodKind;
 using core::methods::WorkPrecisionPoint;
 using PointsByMethod = std::map<MethodKind, std::vector<WorkPrecisionPoint>>;
 
-/// The task of a report and the words that describe it.
+/// What the files of a report say about its problem, for the note's chain or any chain. The
+/// names are the note's for every chain: w1 its fastest frequency, T2 its slowest period.
 struct ReportInput {
-  core::methods::Task task;
-  QString startDescription;
+  QString chainLine;         ///< "m1 = 1, m2 = 0.5, k1 = 1, k2 = ... (1:2 design, upper branch), gap d = 1"
+  QString startLine;         ///< "(u1, u2, v1, v2) = (...)"
+  QString startDescription;  ///< how the start was given, in words
   QString horizonNote;
-  double period = 0;
+  JsonValue chain;           ///< the chain's numbers, for the pictures' metadata
+  JsonValue start;           ///< the start, likewise
+  double period = 0;         ///< T2 [time]
+  double k1 = 0;             ///< the wall's spring: the penalty's k_c are relative to it
+  double tEnd = 0;           ///< the horizon [time]
+  std::int64_t referenceContacts = 0;
+  double referenceSeconds = 0;
 };
-
-/// The task of the report from the command line: the default problem unless told otherwise.
 
 /// "moreau-jean", ...
 QString name(MethodKind kind);
@@ -39,7 +45,6 @@ JsonValue metadata(const ReportInput& input);
 
 /// DIR/report.md.
 QByteArray reportMarkdown(const ReportInput& input, const core::methods::ComparisonEnd& end,
-                          const core::methods::Reference& reference,
                           const std::vector<MethodKind>& methods, const PointsByMethod& byMethod,
                           const core::methods::TimingPolicy& timing, bool quick);
 

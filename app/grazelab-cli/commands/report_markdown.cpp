@@ -22,30 +22,21 @@ QString cell(const WorkPrecisionPoint* p) {
 }  // namespace
 
 QByteArray reportMarkdown(const ReportInput& input, const core::methods::ComparisonEnd& end,
-                          const core::methods::Reference& reference,
                           const std::vector<MethodKind>& methods,
                           const std::map<MethodKind, std::vector<WorkPrecisionPoint>>& byMethod,
                           const core::methods::TimingPolicy& timing, bool quick) {
-  const core::Model& m = input.task.model;
-  const core::State& s = input.task.start;
   QString md;
   md += "# GrazeLab work-precision report\n\n";
   md += QStringLiteral("Written by %1%2. Every error is measured against the exact solver in "
                        "binary128 (docs/model.md section 8).\n\n")
             .arg(versionString(), quick ? " with --quick (fewer settings and runs)" : "");
   md += "## Problem\n\n";
-  md += QStringLiteral("- Chain: m1 = %1, m2 = %2, k1 = %3, k2 = %4%5, gap d = %6; T2 = %7.\n")
-            .arg(m.m1).arg(m.m2).arg(m.k1).arg(m.k2, 0, 'g', 17)
-            .arg(m.design ? QStringLiteral(" (1:2 design, %1 branch)").arg(core::toString(*m.design).data())
-                          : QStringLiteral(" (as given)"))
-            .arg(m.gap).arg(input.period, 0, 'g', 10);
-  md += QStringLiteral("- Start: %1: (u1, u2, v1, v2) = (%2, %3, %4, %5).\n")
-            .arg(input.startDescription)
-            .arg(s.u1, 0, 'g', 17).arg(s.u2, 0, 'g', 17).arg(s.v1, 0, 'g', 17).arg(s.v2, 0, 'g', 17);
+  md += QStringLiteral("- Chain: %1; T2 = %2.\n").arg(input.chainLine).arg(input.period, 0, 'g', 10);
+  md += QStringLiteral("- Start: %1: %2.\n").arg(input.startDescription, input.startLine);
   md += QStringLiteral("- Horizon: %1 (%2 T2), %3 contacts in the reference.\n")
             .arg(input.horizonNote)
-            .arg(input.task.tEnd / input.period, 0, 'g', 4)
-            .arg(reference.run.result.cost.contacts);
+            .arg(input.tEnd / input.period, 0, 'g', 4)
+            .arg(input.referenceContacts);
   md += QStringLiteral("- Predictability horizon of the start (trust of the exact double run, %1): "
                        "t = %2 (%3 T2); verdict %4, estimated state error %5 at t_end. %6\n")
             .arg(QString::fromStdString(end.trust.horizonMethod))
@@ -58,7 +49,7 @@ QByteArray reportMarkdown(const ReportInput& input, const core::methods::Compari
                      : QStringLiteral("The comparison stays inside it."));
   md += QStringLiteral("- Reference: the exact solver in binary128 on the chain scaled 3x in length, "
                        "5x in mass and 1/sqrt(3) in time (other roundings, same physics), %1.\n")
-            .arg(humanSeconds(reference.seconds));
+            .arg(humanSeconds(input.referenceSeconds));
   md += QStringLiteral("- Errors: state at t_end, max of |du| / d and |dv| / (w1 d); contact "
                        "times / T2 over contacts matched one to one; missed and extra contacts "
                        "counted. Timing: minimum and median of %1 runs per setting (fewer once "
@@ -88,6 +79,38 @@ QByteArray reportMarkdown(const ReportInput& input, const core::methods::Compari
   md += "\nThe exact solver's only knob is its precision (three settings). CVODE's and the "
         "penalty method's loose settings cannot be much cheaper than their tight ones here: "
         "every impact restarts the integrator at order 1 with a small first step.\n\n";
+  md += "## Contacts missed and invented\n\n";
+  md += QStringLiteral("The reference makes %1 contacts up to t_end. A method's contact is matched to the "
+                       "reference's within a quarter of T2 (and half the distance to the neighbouring "
+                       "contacts); a reference contact left without one is missed, a method's contact "
+                       "left without one is extra.\n\n")
+            .arg(input.referenceContacts);
+  md += "| method | settings that miss a contact | most missed (setting) | settings with an extra contact | "
+        "most extra (setting) | missed at the finest setting |\n|---|---|---|---|---|---|\n";
+  for (MethodKind kind : methods) {
+    const auto& points = byMethod.at(kind);
+    int missing = 0, inventing = 0;
+    const WorkPrecisionPoint* mostMissed = nullptr;
+    const WorkPrecisionPoint* mostExtra = nullptr;
+    for (const WorkPrecisionPoint& p : points) {
+      if (p.errors.missed > 0) ++missing;
+      if (p.errors.extra > 0) ++inventing;
+      if (p.errors.missed > 0 && (mostMissed == nullptr || p.errors.missed > mostMissed->errors.missed)) mostMissed = &p;
+      if (p.errors.extra > 0 && (mostExtra == nullptr || p.errors.extra > mostExtra->errors.extra)) mostExtra = &p;
+    }
+    auto worst = [](const WorkPrecisionPoint* p, std::int64_t count) {
+      return p == nullptr ? QStringLiteral("0") : QStringLiteral("%1 (%2)").arg(count).arg(parameterText(p->setting));
+    };
+    md += QStringLiteral("| %1 | %2 of %3 | %4 | %5 of %3 | %6 | %7 |\n")
+              .arg(name(kind))
+              .arg(missing)
+              .arg(points.size())
+              .arg(worst(mostMissed, mostMissed ? mostMissed->errors.missed : 0))
+              .arg(inventing)
+              .arg(worst(mostExtra, mostExtra ? mostExtra->errors.extra : 0))
+              .arg(points.empty() ? QStringLiteral("—") : QString::number(points.back().errors.missed));
+  }
+  md += "\nA run that stopped early is judged up to where it stopped.\n\n";
   md += "## Which method reaches which state error, and at what cost\n\n";
   md += "The cheapest setting whose state error at t_end is at most the target, with its run time (minimum).\n\n";
   md += "| method | 1e-3 | 1e-6 | 1e-9 | 1e-12 |\n|---|---|---|---|---|\n";

@@ -76,7 +76,7 @@ bool writePictures(const QString& dir, const ReportInput& input,
       curve.points.push_back({p.secondsMin, p.errors.state});
       // an error of 0 (binary128 against binary128, seen in double) tells nothing about order
       if (p.errors.contactTime > 0) {
-        order.points.push_back({fineness(p.setting, input.period, input.task.model.k1), p.errors.contactTime});
+        order.points.push_back({fineness(p.setting, input.period, input.k1), p.errors.contactTime});
       }
     }
     std::sort(order.points.begin(), order.points.end(),

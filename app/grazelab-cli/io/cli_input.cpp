@@ -500,17 +500,12 @@ Parsed<MassChainInput> parseMassChain(const OptionValues& options, std::stop_tok
 // --frequencies 2:1 is the 1:2 design of branch upper (--design-branch 1, the larger k2) or lower
 // (2), with the design's exact resonance; springs given, or designed for another ratio, are k1
 // and k2 as given. Every number is read from its text in S, as --m1 ... would be.
-namespace {
-
-// --masses m1,m2 stopped on mass 2 with no right wall: the shape of the note's chain
 bool hasTheNotesShape(const OptionValues& options) {
   const qsizetype count = options.value("masses").split(',').size();
   const bool stopOnTwo = !options.isSet("stop-mass") || options.value("stop-mass").trimmed() == "2";
   const bool noWall = !options.isSet("right-spring") || core::parseScalar<double>(options.value("right-spring").toStdString()).value == 0.0;
   return count == 2 && stopOnTwo && noWall;
 }
-
-}  // namespace
 
 bool writesTheNotesChain(const OptionValues& options) {
   if (!options.isSet("masses") || !options.isSet("frequencies") || !hasTheNotesShape(options)) return false;

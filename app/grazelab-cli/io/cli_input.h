@@ -109,6 +109,10 @@ struct MassChainInput {
 /// reason. An interrupted design returns no chain and an empty error (`stop` was requested).
 Parsed<MassChainInput> parseMassChain(const OptionValues& options, std::stop_token stop = {});
 
+/// Whether --masses writes a chain of the note's shape: two masses stopped on mass 2, no right
+/// wall (any springs): the two-mass engine's chain.
+bool hasTheNotesShape(const OptionValues& options);
+
 /// Whether --masses writes the note's chain: two masses stopped on mass 2, no right wall, the
 /// springs designed for the ratios 2:1 (--frequencies 2:1). Its runs are the note's engine's (the
 /// two-mass solver with the design's exact 1:2 resonance and its quartic contact search), so
