@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "core/methods/scaled_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -121,7 +122,12 @@ ScaledRun<T>::ScaledRun(const T& task, const WorkBudget& budget, std::stop_token
     const MassChain& chain = m_massChain;
     const int n = chain.size();
     const double omega = chainModes(chain).omega.minCoeff();  // the slowest mode
-    m_length = chain.gap;
+    // lengths in units of L = 2^e, e = ilogb of the larger of the gap and the start's size (as
+    // for the note's chain: a method's absolute tolerance is relative to the motion's size)
+    const double size = std::max({chain.gap, task.start.u.cwiseAbs().maxCoeff(),
+                                  task.start.v.cwiseAbs().maxCoeff() / omega});
+    const int exponent = std::ilogb(size);
+    m_length = std::ldexp(1.0, exponent);
     m_timeRate = omega;
     const int s = chain.stopped() - 1;
     m_stiffnessUnit = chain.masses[std::size_t(s)] * omega * omega;
@@ -133,7 +139,7 @@ ScaledRun<T>::ScaledRun(const T& task, const WorkBudget& budget, std::stop_token
       m_system.right(i) = (i + 1 < n ? chain.springs[std::size_t(i + 1)] : chain.rightSpring) / unit;
     }
     m_system.stop = s;
-    m_system.gap = 1;
+    m_system.gap = std::ldexp(chain.gap, -exponent);
     m_tauEnd = task.tEnd * omega;
     m_q0 = task.start.u / m_length;
     m_v0 = task.start.v / (omega * m_length);
@@ -178,7 +184,7 @@ void ScaledRun<T>::contact(EventType type, double tau, const Vector& qBefore, co
     result.events.push_back({physicalTime(tau), type, before.u, before.v, vAfter(stop()) * speed});
     if (type != EventType::Release) {
       ++result.contacts;
-      m_maxContactDrift = std::max(m_maxContactDrift, drift(qBefore, vBefore));
+      m_maxContactDrift = std::max(m_maxContactDrift, drift(qAfter, vAfter));  // as the recorder does
     }
     switch (type) {
       case EventType::Impact: ++result.impacts; break;

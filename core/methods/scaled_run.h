@@ -21,7 +21,8 @@ namespace grazelab::core::methods {
 /// - Task, the note's chain: scaled as in section 7 (tau = w2 t, x = u / L, y = v / (w2 L)) and
 ///   kept by the same Recorder as the exact solver (samples for the explorer's overlays);
 /// - ChainTask, any chain: time in units of its slowest mode (tau = w_N t), lengths in units of
-///   the gap, kept as a ChainRun in the one event layout of every chain.
+///   L as the note's chain chooses it (the power of 2 at or below the larger of the gap and the
+///   start's size), kept as a ChainRun in the one event layout of every chain.
 /// Holds references to its own members: neither copied nor moved.
 template <typename T>
 class ScaledRun {
@@ -99,7 +100,7 @@ class ScaledRun {
   std::optional<Recorder<double>> m_recorder;
   // any chain
   MassChain m_massChain;
-  double m_length = 1;  ///< the gap [length]
+  double m_length = 1;  ///< L [length]
   double m_maxContactDrift = 0;
 };
 

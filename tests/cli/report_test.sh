@@ -64,6 +64,40 @@ else
   fail "report --quick failed: $(tail -3 "$err")"
 fi
 
+# report --masses: any chain of N masses, the same files; the exact rows find every contact
+EXPECT_WORD=--state expect_invalid report --quick --out "$dir/x" --masses 1,1,1 --springs 1,1,1
+EXPECT_WORD=glo expect_invalid report --quick --out "$dir/x" --masses 1,1,1 --springs 1,1,1 --glo 0.5
+EXPECT_WORD=past expect_invalid report --quick --out "$dir/x" --masses 1,1,1 --springs 1,1,1 --state 0,0,2,0,0,0
+[ -e "$dir/x/results.csv" ] && fail "an invalid report --masses wrote files"
+chain_report() {  # NAME, then the chain's options
+  local name="$1"; shift
+  if "$cli" report --quick --out "$dir/$name" "$@" 2>"$err"; then
+    for f in results.csv work_precision.svg work_precision.png convergence.svg convergence.png report.md; do
+      [ -s "$dir/$name/$f" ] || fail "report $name did not write $f"
+    done
+    grep -q "## Contacts missed and invented" "$dir/$name/report.md" || fail "report $name: no table of missed contacts"
+    python3 - "$dir/$name/results.csv" <<'PY' || fail "report $name: results.csv"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert {r["method"] for r in rows} == {"exact", "moreau-jean", "moreau-jean-theta1", "schatzman-paoli",
+                                       "dopri5-events", "cvode-adams", "cvode-bdf", "penalty"}
+for r in rows:
+    assert r["missed_contacts"].isdigit() and r["extra_contacts"].isdigit(), r
+exact = [r for r in rows if r["method"] == "exact"]
+assert len(exact) == 3
+for r in exact:
+    assert r["status"] == "completed" and r["missed_contacts"] == "0" and r["extra_contacts"] == "0", r
+    assert float(r["state_error"]) <= 1e-9, r
+PY
+  else
+    fail "report $name failed: $(tail -3 "$err")"
+  fi
+}
+chain_report three --masses 3,2,1 --frequencies 3:2:1 --glo-weights 0.2,0.3,0.5 --perturb 0,0,0,0,0.02,-0.05 --contacts 20
+chain_report ten --masses 1,1,1,1,1,1,1,1,1,1 --springs 1,1,1,1,1,1,1,1,1,1 --stop-mass 7 \
+  --state 0,0,0,0,0,0,0.5,0,0,0,-0.4,0,0,0,0,0,1.5,0,0,0 --contacts 10
+grep -q "10 masses" "$dir/ten/report.md" || fail "report ten: the chain is not described"
+
 # stability --quick: every cell has a verdict, and a reason when it is not ok
 if "$cli" stability --quick --out "$dir/stability" 2>"$err"; then
   [ -s "$dir/stability/matrix.md" ] || fail "no matrix.md"
