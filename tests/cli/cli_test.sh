@@ -61,7 +61,7 @@ takes = {
                                  "sample-step", "sample-times", "masses", "springs", "right-spring",
                                  "stop-mass", "frequencies", "design-branch", "glo-weights"],
     "report": model[:-1] + start + ["contacts", "t-end", "out", "methods", "quick", "masses", "springs",
-                                    "right-spring", "stop-mass", "frequencies", "design-branch"],
+                                    "right-spring", "stop-mass", "frequencies", "design-branch", "glo-weights"],
     "stability": ["out", "methods", "quick"],
     "map": model + start + ["contacts", "trust", "out", "x", "y", "threads", "shard", "picture", "masses",
                             "springs", "right-spring", "stop-mass", "frequencies", "design-branch", "glo-weights"],
