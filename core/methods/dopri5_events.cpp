@@ -58,9 +58,16 @@ void runDopri5Events(ScaledRun<T>& run, double rtol) {
   const auto& system = run.system();
   auto rhs = [&system, &evaluations, n](const OdeState& x, OdeState& dxdt, double) {
     ++evaluations;
-    for (int i = 0; i < n; ++i) dxdt[std::size_t(i)] = x[std::size_t(n + i)];
-    system.accelerationInto([&x](int i) { return x[std::size_t(i)]; },
-                            [&dxdt, n](int i) -> double& { return dxdt[std::size_t(n + i)]; });
+    if constexpr (ScaledRun<T>::kNotesChain) {
+      // every value read before dxdt is written (it could alias x): the note's runs are timed
+      double a[2];
+      system.accelerationInto([&x](int i) { return x[std::size_t(i)]; }, [&a](int i) -> double& { return a[i]; });
+      dxdt = {x[2], x[3], a[0], a[1]};
+    } else {
+      for (int i = 0; i < n; ++i) dxdt[std::size_t(i)] = x[std::size_t(n + i)];
+      system.accelerationInto([&x](int i) { return x[std::size_t(i)]; },
+                              [&dxdt, n](int i) -> double& { return dxdt[std::size_t(n + i)]; });
+    }
   };
   // the scaled state is O(1): the absolute tolerance is the relative one times that scale
   auto stepper = odeint::make_dense_output(rtol, rtol, odeint::runge_kutta_dopri5<OdeState>());

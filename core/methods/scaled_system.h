@@ -12,8 +12,8 @@ namespace grazelab::core::methods {
 /// with left_i = k_i / m_i and right_i = k_(i+1) / m_i in the run's units (right_N = 0 without a
 /// right wall), and the stop at x_stop = gap. Written spring by spring, so that the note's chain
 /// (left = (p, w), right = (q, 0) of its scaled form) keeps the arithmetic it always had.
-/// D = 2 for the note's chain (fixed size: its runs are timed in the report), Eigen::Dynamic for
-/// a chain of any N.
+/// D = 2 for the note's chain (fixed size: its runs are timed in the report; no right wall),
+/// Eigen::Dynamic for a chain of any N.
 template <int D>
 struct ScaledSystem {
   using Vector = Eigen::Matrix<double, D, 1>;
@@ -30,6 +30,15 @@ struct ScaledSystem {
   /// or maps of a method's own state).
   template <typename X, typename A>
   void accelerationInto(const X& x, A&& a) const {
+    if constexpr (D == 2) {
+      // the note's chain (no right wall), as its hot loops always computed it: the same bits as
+      // the loop below, without its branches
+      const double x0 = x(0), x1 = x(1);
+      const double stretch = x0 - x1;
+      a(0) = -(left(0) * x0 + right(0) * stretch);
+      a(1) = left(1) * stretch;
+      return;
+    }
     const int n = size();
     for (int i = 0; i < n; ++i) {
       const double below = i > 0 ? x(i - 1) : 0.0;
