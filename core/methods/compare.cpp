@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/methods/runners.h"
 #include "core/methods/scaled_run.h"
 #include "core/solver/chain_run.h"
 #include "core/solver/simulate.h"
@@ -228,30 +229,18 @@ ChainReference makeReference(const ChainTask& task, const WorkBudget& budget, st
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     if (seconds > budget.maxSeconds) break;
   }
-  const BasicChainRun<Quad>& result = simulator.run();
-  auto length = [](const ChainVector<Quad>& u) {
-    ChainVector<double> x(u.size());
-    for (Eigen::Index i = 0; i < u.size(); ++i) x(i) = toDouble(Quad(u(i) / kLengthFactor));
-    return x;
-  };
-  auto speed = [&speedFactor](const ChainVector<Quad>& v) {
-    ChainVector<double> x(v.size());
-    for (Eigen::Index i = 0; i < v.size(); ++i) x(i) = toDouble(Quad(v(i) / speedFactor));
-    return x;
-  };
-  ChainRun& run = reference.run.result;
-  for (const BasicChainEvent<Quad>& e : result.events) {
-    run.events.push_back({toDouble(Quad(e.t * timeFactor)), e.type, length(e.u), speed(e.vBefore),
-                          toDouble(Quad(e.vAfter / speedFactor))});
+  // back to the task's units in binary128, then rounded once
+  BasicChainRun<Quad> result = simulator.run();
+  for (BasicChainEvent<Quad>& e : result.events) {
+    e.t *= timeFactor;
+    e.u /= Quad(kLengthFactor);
+    e.vBefore /= speedFactor;
+    e.vAfter /= speedFactor;
   }
-  run.contacts = result.contacts;
-  run.impacts = result.impacts;
-  run.grazings = result.grazings;
-  run.sticks = result.sticks;
-  run.releases = result.releases;
-  run.final = {length(result.final.u), speed(result.final.v)};
-  run.tFinal = toDouble(Quad(result.tFinal * timeFactor));
-  run.stop = result.stop;
+  result.final.u /= Quad(kLengthFactor);
+  result.final.v /= speedFactor;
+  result.tFinal *= timeFactor;
+  reference.run.result = inDouble(result);
   reference.run.steps = result.contacts;
   const bool completed = result.stop == ChainStop::TimeLimit || result.stop == ChainStop::NoFurtherContact;
   std::string message = result.stop == ChainStop::Undecided ? "a contact undecided even in binary128"

@@ -14,6 +14,32 @@
 namespace grazelab::core::methods {
 namespace {
 
+/// Advances an exact run (either engine's simulator) in growing pieces until it is over, the stop
+/// token, or the time budget; true when the time budget ended it.
+template <typename Simulator>
+bool advanceWithin(Simulator& simulator, const WorkBudget& budget, std::stop_token stop,
+                   std::chrono::steady_clock::time_point started) {
+  long piece = 1024;
+  while (!simulator.advance(piece, stop)) {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (seconds > budget.maxSeconds) return true;
+    piece = std::min<long>(piece * 2, 1 << 20);
+  }
+  return false;
+}
+
+/// The end of an exact run: over its time budget, and its wall time.
+template <typename R>
+void finishExact(BasicMethodRun<R>& run, bool overTime, const WorkBudget& budget,
+                 std::chrono::steady_clock::time_point started) {
+  if (overTime) {
+    run.status = RunStatus::Budget;
+    run.reason = "time budget (" + std::to_string(budget.maxSeconds) + " s) spent";
+  }
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
 template <typename S>
 MethodRun runIn(const Task& task, const WorkBudget& budget, std::stop_token stop) {
   const auto started = std::chrono::steady_clock::now();
@@ -24,18 +50,7 @@ MethodRun runIn(const Task& task, const WorkBudget& budget, std::stop_token stop
   request.needs = task.needs;
   BasicSimulator<S> simulator(convertModel<S>(task.model), request);
   MethodRun run;
-  // in pieces, so that the time budget is checked between them
-  std::int64_t piece = 1024;
-  bool overTime = false;
-  while (!simulator.advance(piece, stop)) {
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    if (seconds > budget.maxSeconds) {
-      overTime = true;
-      break;
-    }
-    piece = std::min<std::int64_t>(piece * 2, 1 << 20);
-  }
+  const bool overTime = advanceWithin(simulator, budget, stop, started);
   const BasicResult<S>& result = simulator.result();
   run.result = toDoubleResult(result);
   run.steps = result.cost.contacts;
@@ -70,59 +85,18 @@ MethodRun runIn(const Task& task, const WorkBudget& budget, std::stop_token stop
       run.reason = result.message;
       break;
   }
-  if (overTime) {
-    run.status = RunStatus::Budget;
-    run.reason = "time budget (" + std::to_string(budget.maxSeconds) + " s) spent";
-  }
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  return run;
-}
-
-/// A chain run's numbers in double (each rounded once).
-template <typename S>
-ChainRun inDouble(const BasicChainRun<S>& from) {
-  auto vector = [](const ChainVector<S>& x) {
-    ChainVector<double> y(x.size());
-    for (Eigen::Index i = 0; i < x.size(); ++i) y(i) = toDouble(S(x(i)));
-    return y;
-  };
-  ChainRun run;
-  run.events.reserve(from.events.size());
-  for (const BasicChainEvent<S>& e : from.events) {
-    run.events.push_back({toDouble(e.t), e.type, vector(e.u), vector(e.vBefore), toDouble(e.vAfter)});
-  }
-  run.contacts = from.contacts;
-  run.impacts = from.impacts;
-  run.grazings = from.grazings;
-  run.sticks = from.sticks;
-  run.releases = from.releases;
-  run.final = {vector(from.final.u), vector(from.final.v)};
-  run.tFinal = toDouble(from.tFinal);
-  run.stop = from.stop;
-  run.energyInitial = toDouble(from.energyInitial);
-  run.energyFinal = toDouble(from.energyFinal);
+  finishExact(run, overTime, budget, started);
   return run;
 }
 
 template <typename S>
-ChainMethodRun runChainIn(const ChainTask& task, const WorkBudget& budget, std::stop_token stop) {
+ChainMethodRun runIn(const ChainTask& task, const WorkBudget& budget, std::stop_token stop) {
   const auto started = std::chrono::steady_clock::now();
   const BasicMassChain<S> chain = chainCast<S>(task.chain);
   const BasicChainState<S> start{task.start.u.template cast<S>(), task.start.v.template cast<S>()};
   BasicChainSimulator<S> simulator(readyChain(chain), start, long(budget.maxSteps), S(task.tEnd));
   ChainMethodRun run;
-  // in pieces, so that the time budget is checked between them
-  long piece = 1024;
-  bool overTime = false;
-  while (!simulator.advance(piece, stop)) {
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    if (seconds > budget.maxSeconds) {
-      overTime = true;
-      break;
-    }
-    piece = std::min<long>(piece * 2, 1 << 20);
-  }
+  const bool overTime = advanceWithin(simulator, budget, stop, started);
   run.result = inDouble(simulator.run());
   run.steps = run.result.contacts;
   // the drift over every contact state and the end, in the run's own precision
@@ -157,18 +131,13 @@ ChainMethodRun runChainIn(const ChainTask& task, const WorkBudget& budget, std::
       run.reason = "cancelled";
       break;
   }
-  if (overTime) {
-    run.status = RunStatus::Budget;
-    run.reason = "time budget (" + std::to_string(budget.maxSeconds) + " s) spent";
-  }
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  finishExact(run, overTime, budget, started);
   return run;
 }
 
-}  // namespace
-
-MethodRun runExact(const Task& task, Precision precision, const WorkBudget& budget,
-                   std::stop_token stop) {
+template <typename T>
+typename ScaledRun<T>::Output exactIn(const T& task, Precision precision, const WorkBudget& budget,
+                                      std::stop_token stop) {
   const std::string problem = taskProblem(task);
   if (!problem.empty()) return refusedRun(task, problem);
   switch (precision) {
@@ -182,19 +151,45 @@ MethodRun runExact(const Task& task, Precision precision, const WorkBudget& budg
   return refusedRun(task, "unknown precision");
 }
 
+}  // namespace
+
+template <typename S>
+ChainRun inDouble(const BasicChainRun<S>& from) {
+  auto vector = [](const ChainVector<S>& x) {
+    ChainVector<double> y(x.size());
+    for (Eigen::Index i = 0; i < x.size(); ++i) y(i) = toDouble(S(x(i)));
+    return y;
+  };
+  ChainRun run;
+  run.events.reserve(from.events.size());
+  for (const BasicChainEvent<S>& e : from.events) {
+    run.events.push_back({toDouble(e.t), e.type, vector(e.u), vector(e.vBefore), toDouble(e.vAfter)});
+  }
+  run.contacts = from.contacts;
+  run.impacts = from.impacts;
+  run.grazings = from.grazings;
+  run.sticks = from.sticks;
+  run.releases = from.releases;
+  run.final = {vector(from.final.u), vector(from.final.v)};
+  run.tFinal = toDouble(from.tFinal);
+  run.stop = from.stop;
+  run.energyInitial = toDouble(from.energyInitial);
+  run.energyFinal = toDouble(from.energyFinal);
+  return run;
+}
+
+template ChainRun inDouble(const BasicChainRun<double>&);
+template ChainRun inDouble(const BasicChainRun<long double>&);
+template ChainRun inDouble(const BasicChainRun<Quad>&);
+
+MethodRun runExact(const Task& task, Precision precision, const WorkBudget& budget,
+                   std::stop_token stop) {
+  return exactIn(task, precision, budget, std::move(stop));
+}
+
 ChainMethodRun runExact(const ChainTask& task, Precision precision, const WorkBudget& budget,
                         std::stop_token stop) {
-  const std::string problem = taskProblem(task);
-  if (!problem.empty()) return refusedRun(task, problem);
-  switch (precision) {
-    case Precision::Double:
-      return runChainIn<double>(task, budget, stop);
-    case Precision::Long:
-      return runChainIn<long double>(task, budget, stop);
-    case Precision::Quad:
-      return runChainIn<Quad>(task, budget, stop);
-  }
-  return refusedRun(task, "unknown precision");
+  return exactIn(task, precision, budget, std::move(stop));
 }
 
 }  // namespace grazelab::core::methods
