@@ -207,10 +207,18 @@ ChainReference makeReference(const ChainTask& task, const WorkBudget& budget, st
     reference.run = refusedRun(task, problem);
     return reference;
   }
-  const ChainModes modes = chainModes(task.chain);
-  reference.period = twoPi<double>() / modes.omega.minCoeff();
+  double slowest = 0, fastest = 0;
+  if (task.prepared) {
+    slowest = task.prepared->slowest;
+    fastest = task.prepared->fastest;
+  } else {
+    const ChainModes modes = chainModes(task.chain);
+    slowest = modes.omega.minCoeff();
+    fastest = modes.omega.maxCoeff();
+  }
+  reference.period = twoPi<double>() / slowest;
   reference.positionScale = task.chain.gap;
-  reference.velocityScale = modes.omega.maxCoeff() * task.chain.gap;
+  reference.velocityScale = fastest * task.chain.gap;
   reference.stop = task.chain.stopped() - 1;
 
   BasicMassChain<Quad> chain = chainCast<Quad>(task.chain);

@@ -5,6 +5,7 @@
 // handed back in double.
 #include <chrono>
 #include <cmath>
+#include <type_traits>
 
 #include "core/methods/runners.h"
 #include "core/methods/scaled_run.h"
@@ -13,6 +14,18 @@
 
 namespace grazelab::core::methods {
 namespace {
+
+/// A prepared chain in S.
+template <typename S>
+const BasicReadyChain<S>& readyIn(const PreparedChain& prepared) {
+  if constexpr (std::is_same_v<S, double>) {
+    return prepared.inDouble;
+  } else if constexpr (std::is_same_v<S, long double>) {
+    return prepared.inLong;
+  } else {
+    return prepared.inQuad;
+  }
+}
 
 /// Advances an exact run (either engine's simulator) in growing pieces until it is over, the stop
 /// token, or the time budget; true when the time budget ended it.
@@ -94,7 +107,8 @@ ChainMethodRun runIn(const ChainTask& task, const WorkBudget& budget, std::stop_
   const auto started = std::chrono::steady_clock::now();
   const BasicMassChain<S> chain = chainCast<S>(task.chain);
   const BasicChainState<S> start{task.start.u.template cast<S>(), task.start.v.template cast<S>()};
-  BasicChainSimulator<S> simulator(readyChain(chain), start, long(budget.maxSteps), S(task.tEnd));
+  BasicChainSimulator<S> simulator(task.prepared ? readyIn<S>(*task.prepared) : readyChain(chain), start,
+                                   long(budget.maxSteps), S(task.tEnd));
   ChainMethodRun run;
   const bool overTime = advanceWithin(simulator, budget, stop, started);
   run.result = inDouble(simulator.run());

@@ -147,6 +147,15 @@ typename ScaledRun<T>::Output runOn(const T& task, const MethodSetting& setting,
 
 }  // namespace
 
+ChainTask prepared(ChainTask task) {
+  if (!validate(task.chain).empty()) return task;
+  const ChainModes modes = chainModes(task.chain);
+  task.prepared = std::make_shared<const PreparedChain>(PreparedChain{
+      readyChain(task.chain), readyChain(chainCast<long double>(task.chain)),
+      readyChain(chainCast<Quad>(task.chain)), modes.omega.minCoeff(), modes.omega.maxCoeff()});
+  return task;
+}
+
 MethodRun runMethod(const Task& task, const MethodSetting& setting, const WorkBudget& budget,
                     std::stop_token stop) {
   return runOn(task, setting, budget, std::move(stop));

@@ -121,7 +121,8 @@ ScaledRun<T>::ScaledRun(const T& task, const WorkBudget& budget, std::stop_token
     m_massChain = task.chain;
     const MassChain& chain = m_massChain;
     const int n = chain.size();
-    const double omega = chainModes(chain).omega.minCoeff();  // the slowest mode
+    const double omega =  // the slowest mode
+        task.prepared ? task.prepared->slowest : chainModes(chain).omega.minCoeff();
     // lengths in units of L = 2^e, e = ilogb of the larger of the gap and the start's size (as
     // for the note's chain: a method's absolute tolerance is relative to the motion's size)
     const double size = std::max({chain.gap, task.start.u.cwiseAbs().maxCoeff(),

@@ -66,7 +66,7 @@ double slowestPeriod(const Task& task) {
   return twoPi<double>() / makeChain(task.model).chain->omegaSlow;
 }
 double slowestPeriod(const ChainTask& task) {
-  return twoPi<double>() / chainModes(task.chain).omega.minCoeff();
+  return twoPi<double>() / (task.prepared ? task.prepared->slowest : chainModes(task.chain).omega.minCoeff());
 }
 
 }  // namespace

@@ -243,7 +243,7 @@ std::optional<ReportProblem> chainProblem(const QCommandLineParser& parser, QStr
   input.start = V::object({{"u", numbersValue(task.start.u)}, {"v", numbersValue(task.start.v)}});
   input.k1 = c.springs.front();
   input.tEnd = task.tEnd;
-  problem.task = std::move(task);
+  problem.task = core::methods::prepared(std::move(task));  // no timed run pays for the modes
   return problem;
 }
 
