@@ -3,52 +3,30 @@
 #include "core/experiments/chain_series.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
+#include "core/solver/budget.h"
 #include "core/solver/chain_trust.h"
 
 namespace grazelab::core::experiments {
+namespace {
 
-ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop) {
-  ChainSeries series;
-  series.chain = spec.chain;
-  series.start = spec.start;
-  series.contactsAsked = spec.contacts;
-  series.modes = chainModes(spec.chain);
-  series.ratios = detectRatios(series.modes.omega);
-  if (series.ratios.commensurate) series.period = 2 * std::numbers::pi / series.ratios.omega0;
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Each free flight ends at a contact: it started at the event before (or the start).
+std::vector<ChainFlight> flightsOf(const ChainSeriesSpec& spec, const ChainRun& run) {
   const Eigen::Index s = spec.chain.stopped() - 1;
-  const Eigen::Index chosen = spec.phaseMass > 0 ? Eigen::Index(spec.phaseMass - 1) : s;
-  ChainSampling<double> sampling;
-  if (spec.window > 0 && spec.gridPoints > 1) {
-    for (int i = 0; i < spec.gridPoints; ++i)
-      sampling.times.push_back(spec.window * i / (spec.gridPoints - 1));
-    sampling.sink = [&](double t, const ChainState& state) {
-      series.grid.push_back({t, state.u[s], state.v[s], state.u[chosen], state.v[chosen],
-                             std::vector<double>(state.u.data(), state.u.data() + state.u.size())});
-    };
-  }
-  if (spec.free) {
-    // one closed-form flight over the grid, through the stop if it goes there
-    const ChainDynamics dynamics = chainDynamics(spec.chain);
-    const BasicChainFlight<double> flight = flightFrom(dynamics, spec.start);
-    if (sampling.sink) {
-      for (double t : sampling.times) sampling.sink(t, stateAt(dynamics, flight, t));
-    }
-    series.run.final = spec.start;
-    series.run.stop = ChainStop::TimeLimit;
-    return series;
-  }
-  series.run = runChain(spec.chain, spec.start, spec.contacts, 0.0, stop, {}, sampling);
-  series.trust =
-      chainTrust(spec.chain, spec.start, series.run, spec.contacts, 0.0, spec.trust, stop);
-  // each flight ends at a contact: it started at the event before (or the start)
+  std::vector<ChainFlight> flights;
   double from = 0;
   bool fromStop = spec.start.u[s] == spec.chain.gap && spec.start.v[s] <= 0;
   bool afterImpact = false;
   long contact = 0;
-  for (const ChainEvent& event : series.run.events) {
+  for (const ChainEvent& event : run.events) {
     if (event.type == EventType::Release) {  // a flight from the stop begins
       from = event.t;
       fromStop = true;
@@ -57,13 +35,114 @@ ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop) {
     }
     ++contact;
     if (event.type != EventType::Stick || event.t > from) {
-      series.flights.push_back({contact, event.t - from, fromStop, afterImpact});
+      flights.push_back({contact, event.t - from, fromStop, afterImpact});
     }
     from = event.t;
     fromStop = true;
     afterImpact = event.type == EventType::Impact;
   }
+  return flights;
+}
+
+template <typename S>
+BasicChainState<S> stateIn(const ChainState& state) {
+  BasicChainState<S> in{ChainVector<S>(state.u.size()), ChainVector<S>(state.v.size())};
+  for (Eigen::Index i = 0; i < state.u.size(); ++i) {
+    in.u[i] = S(state.u[i]);
+    in.v[i] = S(state.v[i]);
+  }
+  return in;
+}
+
+// The run of `spec` in S with its grid, reported as it grows; nothing when S cannot decide a
+// contact and a higher precision is left (`lastResort` false: `undecidedAt` is then where), or
+// on a stop.
+template <typename S>
+std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeries& frame, bool lastResort,
+                                    std::stop_token stop, const ChainSeriesProgress& progress,
+                                    double chunkSeconds, double& undecidedAt) {
+  ChainSeries series = frame;
+  const Eigen::Index s = spec.chain.stopped() - 1;
+  const Eigen::Index chosen = spec.phaseMass > 0 ? Eigen::Index(spec.phaseMass - 1) : s;
+  ChainSampling<S> sampling;
+  if (spec.window > 0 && spec.gridPoints > 1) {
+    for (int i = 0; i < spec.gridPoints; ++i) sampling.times.push_back(spec.window * i / (spec.gridPoints - 1));
+    sampling.sink = [&](double t, const BasicChainState<S>& state) {
+      std::vector<double> u(std::size_t(state.u.size()));
+      for (Eigen::Index i = 0; i < state.u.size(); ++i) u[std::size_t(i)] = toDouble(S(state.u[i]));
+      series.grid.push_back({t, u[std::size_t(s)], toDouble(S(state.v[s])), u[std::size_t(chosen)],
+                             toDouble(S(state.v[chosen])), std::move(u)});
+    };
+  }
+  const BasicMassChain<S> chain = chainCast<S>(spec.chain);
+  const BasicChainState<S> start = stateIn<S>(spec.start);
+  if (spec.free) {
+    // one closed-form flight over the grid, through the stop if it goes there
+    const BasicChainDynamics<S> dynamics = chainDynamicsIn<S>(chain);
+    const BasicChainFlight<S> flight = flightFrom(dynamics, start);
+    if (sampling.sink) {
+      for (double t : sampling.times) sampling.sink(t, stateAt(dynamics, flight, S(t)));
+    }
+    series.run.final = spec.start;
+    series.run.stop = ChainStop::TimeLimit;
+    return series;
+  }
+  BasicChainSimulator<S> simulator(readyChain(chain), start, spec.contacts, S(0), {}, sampling);
+  // pieces sized in contacts, adapted to the measured speed so that each costs about
+  // chunkSeconds; the first small, to show something at once
+  std::int64_t budget = 16;
+  auto sinceReport = std::chrono::steady_clock::now();
+  double copySeconds = 0;
+  while (!simulator.done()) {
+    const auto began = std::chrono::steady_clock::now();
+    if (simulator.advance(long(budget), stop) || stop.stop_requested()) break;
+    budget = nextChunkContacts(budget, std::max(secondsSince(began), 1e-6), chunkSeconds);
+    if (!progress || secondsSince(sinceReport) < std::max(chunkSeconds, 4 * copySeconds)) continue;
+    const auto copying = std::chrono::steady_clock::now();
+    ChainSeries sofar = series;
+    sofar.run = inDouble(simulator.run());
+    sofar.flights = flightsOf(spec, sofar.run);
+    copySeconds = secondsSince(copying);
+    progress(sofar, double(sofar.run.contacts) / double(std::max(1L, spec.contacts)));
+    sinceReport = std::chrono::steady_clock::now();
+  }
+  if (stop.stop_requested()) return std::nullopt;
+  if (!lastResort && simulator.run().stop == ChainStop::Undecided) {
+    undecidedAt = toDouble(simulator.run().tFinal);
+    return std::nullopt;
+  }
+  series.trust = chainTrust(chain, start, simulator.run(), spec.contacts, S(0), spec.trust, stop);
+  series.run = inDouble(simulator.takeRun());
+  series.flights = flightsOf(spec, series.run);
   return series;
+}
+
+}  // namespace
+
+ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop, const ChainSeriesProgress& progress,
+                        double chunkSeconds) {
+  ChainSeries frame;
+  frame.chain = spec.chain;
+  frame.start = spec.start;
+  frame.contactsAsked = spec.contacts;
+  frame.modes = chainModes(spec.chain);
+  frame.ratios = detectRatios(frame.modes.omega);
+  if (frame.ratios.commensurate) frame.period = 2 * std::numbers::pi / frame.ratios.omega0;
+  // --precision auto's rule: double; where it cannot decide a contact, long double, then binary128
+  double undecidedAt = 0;
+  std::optional<ChainSeries> series = seriesIn<double>(spec, frame, false, stop, progress, chunkSeconds, undecidedAt);
+  for (const Precision raised : {Precision::Long, Precision::Quad}) {
+    if (series || stop.stop_requested()) break;
+    frame.undecidedAt = undecidedAt;  // the contact the precision below could not decide
+    frame.precision = raised;
+    series = raised == Precision::Long
+                 ? seriesIn<long double>(spec, frame, false, stop, progress, chunkSeconds, undecidedAt)
+                 : seriesIn<Quad>(spec, frame, true, stop, progress, chunkSeconds, undecidedAt);
+  }
+  if (series) return std::move(*series);
+  // stopped: the frame, its run cancelled
+  frame.run.stop = ChainStop::Cancelled;
+  return frame;
 }
 
 }  // namespace grazelab::core::experiments

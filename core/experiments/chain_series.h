@@ -2,9 +2,12 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
+#include <functional>
 #include <stop_token>
+#include <string>
 #include <vector>
 
+#include "core/numbers/scalar.h"
 #include "core/model/mass_chain.h"
 #include "core/solver/chain_run.h"
 #include "core/solver/trust.h"
@@ -56,9 +59,23 @@ struct ChainSeries {
   std::vector<ChainFlight> flights;
   std::vector<ChainGridPoint> grid;
   Trust trust;  ///< the run again one precision up, compared event by event (Unchecked: off)
+  /// the precision the run was made in: double, or long double then binary128 when double met
+  /// a contact it could not decide (--precision auto's rule); its numbers here rounded to double
+  Precision precision = Precision::Double;
+  /// the time of the contact the precision below could not decide (raised runs only) [time]
+  double undecidedAt = 0;
 };
 
-/// Runs `spec`; stops early (run cancelled) when `stop` is requested.
-ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop = {});
+/// What a series in progress hands on: the series so far (the run's events, flights and grid up
+/// to its last contact; its totals those of the run so far) and the fraction of the asked
+/// contacts made. A raised run starts again from t = 0 (its `precision` says so).
+using ChainSeriesProgress = std::function<void(const ChainSeries& sofar, double progress)>;
+
+/// Runs `spec` in double, handing the series so far to `progress` about every `chunkSeconds` of
+/// work (never spending more than a fifth of the time on the copies); when double meets a contact
+/// it cannot decide, the series again from its start in long double, then binary128. Stops early
+/// (run cancelled) when `stop` is requested. In pieces or at once, the same bits.
+ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop = {},
+                        const ChainSeriesProgress& progress = {}, double chunkSeconds = 0.030);
 
 }  // namespace grazelab::core::experiments

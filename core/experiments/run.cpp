@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <utility>
 
 #include "core/solver/budget.h"
@@ -170,6 +171,52 @@ Result newSince(const Result& result, const ResultCounts& sent) {
   return chunk;
 }
 
+// An experiment of chains of N masses: each run in turn, streamed (chainSeries), raised in
+// precision where double cannot decide a contact.
+Update runChains(const Spec& spec, std::stop_token stop, const Options& options,
+                 const std::function<void(const Update&)>& report) {
+  const double count = double(spec.chains.size());
+  ChainRuns done;
+  const auto precisionOf = [](const ChainSeries& series) {
+    return series.precision == Precision::Double ? 0 : series.precision == Precision::Long ? 1 : 2;
+  };
+  Update last;
+  for (std::size_t i = 0; i < spec.chains.size() && !stop.stop_requested(); ++i) {
+    const auto partial = [&](const ChainSeries& sofar, double fraction) {
+      Update update;
+      update.chains = done;
+      update.chains.push_back(std::make_shared<const ChainSeries>(sofar));
+      update.progress = (double(i) + fraction) / count;
+      update.attempt = precisionOf(*update.chains.front());
+      report(update);
+    };
+    done.push_back(std::make_shared<const ChainSeries>(chainSeries(spec.chains[i], stop, partial, options.chunkSeconds)));
+    if (i == 0) {
+      last.attempt = precisionOf(*done.front());
+      if (done.front()->precision != Precision::Double) {
+        char note[96];
+        std::snprintf(note, sizeof note, "the precision below could not decide the contact at t = %.9g",
+                      done.front()->undecidedAt);
+        last.precisionNote = note;
+      }
+      if (spec.chains.size() > 1 && !stop.stop_requested()) {
+        // the run shown, whole, before the runs beside it
+        Update shown = last;
+        shown.chains = done;
+        shown.runDone = true;
+        shown.progress = 1 / count;
+        report(shown);
+      }
+    }
+  }
+  last.chains = std::move(done);
+  last.progress = 1.0;
+  last.final = true;
+  last.runDone = true;
+  report(last);
+  return last;
+}
+
 }  // namespace
 
 void copyTotals(const Result& from, Result& to) {
@@ -184,6 +231,7 @@ void copyTotals(const Result& from, Result& to) {
 
 Update run(const Spec& spec, std::stop_token stop, const Options& options,
            const std::function<void(const Update&)>& report) {
+  if (!spec.chains.empty()) return runChains(spec, stop, options, report);
   // the error estimate: a long double shadow of the same run, in lockstep, while it is cheap
   BasicRequest<long double> shadowRequest = convertRequest<long double>(spec.run);
   TrustMonitor<double> monitor(convertModel<long double>(spec.model), shadowRequest,

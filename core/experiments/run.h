@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/experiments/chain_series.h"
 #include "core/experiments/maps.h"
 #include "core/methods/work_precision.h"
 #include "core/model/model.h"
@@ -65,13 +66,19 @@ struct MapCache {
 };
 
 /// What an experiment computes: one run of `model` from `run.initial` with `run.needs`, and
-/// at most one of the sweeps after it.
+/// at most one of the sweeps after it; or, when `chains` is not empty, the runs of chains of N
+/// masses it lists (the first is the run shown, any other is beside it: a detuned contrast)
+/// instead.
 struct Spec {
   Model model;
   Request run;
   std::optional<AccuracySweep> accuracy;
   std::optional<MapSpec> map;
+  std::vector<ChainSeriesSpec> chains;
 };
+
+/// The runs of an experiment's chains of N masses, as far as computed.
+using ChainRuns = std::vector<std::shared_ptr<const ChainSeries>>;
 
 /// How to compute it: the run is reported in pieces of about `chunkSeconds` of work; the map
 /// runs its rows with `parallelFor` (core starts no thread) and remembers itself in `mapCache`.
@@ -85,8 +92,12 @@ struct Options {
 /// reported.
 struct Update {
   /// The run so far. A partial report carries only `chunk`; a reader that keeps the run appends
-  /// the chunks. The run's last report carries the whole run here.
+  /// the chunks. The run's last report carries the whole run here. None in an experiment of
+  /// chains of N masses (`chains`).
   std::shared_ptr<const Result> result;
+  /// An experiment of chains of N masses (Spec::chains): each run in full as far as it has gone
+  /// (the last one reported may be partial until runDone), every one read-only once reported.
+  ChainRuns chains;
   /// What the run added since the previous report: its new events, points, flights and
   /// samples, and the run's present totals (time, state, cost, stop reason).
   std::shared_ptr<const Result> chunk;
@@ -101,7 +112,7 @@ struct Update {
   bool trustPending = false;
   /// 0: the run as computed in double; 1 or 2: the run again in long double or binary128 from
   /// its start, because double met a contact it cannot decide (--precision auto's rule). A new
-  /// attempt is a new run: a reader draws it from the start.
+  /// attempt is a new run: a reader draws it from the start. (Of N masses: the first run's.)
   int attempt = 0;
   /// why the run was raised (the contact double could not decide); empty when it was not
   std::string precisionNote;
@@ -111,6 +122,8 @@ struct Update {
 
 /// Computes `spec`, reporting as it goes; the last report has `final` set (also when stopped,
 /// with the run cancelled). Returns that last report.
+/// (Of chains of N masses: a report about every chunk of work with the runs so far, the first
+/// run whole before its contrasts; stopped, the last run reported is cancelled or missing.)
 Update run(const Spec& spec, std::stop_token stop, const Options& options,
            const std::function<void(const Update&)>& report);
 

@@ -167,35 +167,6 @@ typename ScaledRun<T>::Output exactIn(const T& task, Precision precision, const 
 
 }  // namespace
 
-template <typename S>
-ChainRun inDouble(const BasicChainRun<S>& from) {
-  auto vector = [](const ChainVector<S>& x) {
-    ChainVector<double> y(x.size());
-    for (Eigen::Index i = 0; i < x.size(); ++i) y(i) = toDouble(S(x(i)));
-    return y;
-  };
-  ChainRun run;
-  run.events.reserve(from.events.size());
-  for (const BasicChainEvent<S>& e : from.events) {
-    run.events.push_back({toDouble(e.t), e.type, vector(e.u), vector(e.vBefore), toDouble(e.vAfter)});
-  }
-  run.contacts = from.contacts;
-  run.impacts = from.impacts;
-  run.grazings = from.grazings;
-  run.sticks = from.sticks;
-  run.releases = from.releases;
-  run.final = {vector(from.final.u), vector(from.final.v)};
-  run.tFinal = toDouble(from.tFinal);
-  run.stop = from.stop;
-  run.energyInitial = toDouble(from.energyInitial);
-  run.energyFinal = toDouble(from.energyFinal);
-  return run;
-}
-
-template ChainRun inDouble(const BasicChainRun<double>&);
-template ChainRun inDouble(const BasicChainRun<long double>&);
-template ChainRun inDouble(const BasicChainRun<Quad>&);
-
 MethodRun runExact(const Task& task, Precision precision, const WorkBudget& budget,
                    std::stop_token stop) {
   return exactIn(task, precision, budget, std::move(stop));

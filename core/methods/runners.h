@@ -17,10 +17,6 @@ MethodRun runExact(const Task& task, Precision precision, const WorkBudget& budg
 ChainMethodRun runExact(const ChainTask& task, Precision precision, const WorkBudget& budget,
                         std::stop_token stop);
 
-/// A chain run's numbers in double, each rounded once.
-template <typename S>
-ChainRun inDouble(const BasicChainRun<S>& run);
-
 /// theta = 1/2 (moreau-jean) or 1 (moreau-jean-theta1); h in physical time.
 template <typename T>
 void runMoreauJean(ScaledRun<T>& run, double theta, double h, const WorkBudget& budget);

@@ -354,12 +354,38 @@ BasicChainRun<S> runChain(const BasicReadyChain<S>& chain, const BasicChainState
   return simulator.takeRun();
 }
 
+template <typename S>
+ChainRun inDouble(const BasicChainRun<S>& from) {
+  auto vector = [](const ChainVector<S>& x) {
+    ChainVector<double> y(x.size());
+    for (Eigen::Index i = 0; i < x.size(); ++i) y(i) = toDouble(S(x(i)));
+    return y;
+  };
+  ChainRun run;
+  run.events.reserve(from.events.size());
+  for (const BasicChainEvent<S>& e : from.events) {
+    run.events.push_back({toDouble(e.t), e.type, vector(e.u), vector(e.vBefore), toDouble(e.vAfter)});
+  }
+  run.contacts = from.contacts;
+  run.impacts = from.impacts;
+  run.grazings = from.grazings;
+  run.sticks = from.sticks;
+  run.releases = from.releases;
+  run.final = {vector(from.final.u), vector(from.final.v)};
+  run.tFinal = toDouble(from.tFinal);
+  run.stop = from.stop;
+  run.energyInitial = toDouble(from.energyInitial);
+  run.energyFinal = toDouble(from.energyFinal);
+  return run;
+}
+
 #define GRAZELAB_INSTANTIATE(S)                                                                                  \
   template BasicChainRun<S> runChain<S>(const BasicReadyChain<S>&, const BasicChainState<S>&, long,                 \
                                         std::type_identity_t<S>, std::stop_token, const ChainEventSink<S>&,         \
                                         const ChainSampling<S>&);                                                   \
   template class BasicChainSimulator<S>;                                                                                 \
   template S chainEnergy<S>(const BasicMassChain<S>&, const BasicChainState<S>&);                                         \
+  template ChainRun inDouble<S>(const BasicChainRun<S>&);                                                                 \
   template BasicChainRun<S> runChain<S>(const BasicMassChain<S>&, const BasicChainState<S>&, long, std::type_identity_t<S>, \
                                         std::stop_token, const ChainEventSink<S>&, const ChainSampling<S>&);
 GRAZELAB_INSTANTIATE(double)

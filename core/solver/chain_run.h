@@ -151,6 +151,11 @@ class BasicChainSimulator {
 };
 using ChainSimulator = BasicChainSimulator<double>;
 
+/// A chain run's numbers in double, each rounded once (a run raised to long double or binary128
+/// as the explorer and the reports show it).
+template <typename S>
+ChainRun inDouble(const BasicChainRun<S>& run);
+
 /// An exact run of a usable chain (validate(chain) empty) from `start` (u_s <= d): closed-form
 /// flights in the chain's modes, each contact by firstContact (certified: none missed), elastic
 /// impacts (v_s reversed), grazing touches that leave the flight unchanged, and sticks: a mass

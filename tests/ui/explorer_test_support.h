@@ -28,6 +28,12 @@ inline bool waitForLatestFinal(MainWindow& window, int timeoutMs = 20000) {
   return false;
 }
 
+/// The N-mass run the window shows (the experiment's first chain run), or none.
+inline std::shared_ptr<const core::experiments::ChainSeries> shownChainRun(const MainWindow& window) {
+  const SimUpdate* shown = window.displayed();
+  return shown && !shown->chains.empty() ? shown->chains.front() : nullptr;
+}
+
 /// A shown explorer window that keeps no settings, sized for the tests' plots.
 inline std::unique_ptr<MainWindow> openTestWindow() {
   auto window = std::make_unique<MainWindow>(

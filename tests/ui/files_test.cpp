@@ -27,6 +27,7 @@
 #include "ui/window/session.h"
 
 using namespace grazelab::ui;
+using grazelab::ui::testing::shownChainRun;
 using grazelab::ui::testing::openTestWindow;
 using grazelab::ui::testing::waitForLatestFinal;
 
@@ -383,7 +384,7 @@ class FilesTest : public QObject {
     walled.massChain.sectionY = 6;
     m_window->setParams(walled);
     QVERIFY(waitForLatestFinal(*m_window, 60000));
-    const auto series = m_window->displayed()->request->job.chainSeries;
+    const auto series = shownChainRun(*m_window);
     QVERIFY(series && series->run.events.size() > 100);
     QCOMPARE(series->chain.rightSpring, 0.3);
     QTemporaryDir dir;
@@ -407,7 +408,7 @@ class FilesTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     QVERIFY2(m_window->openSession(sessionPathFor(csvPath), &error), qPrintable(error));
     QVERIFY(waitForLatestFinal(*m_window, 60000));
-    const auto again = m_window->displayed()->request->job.chainSeries;
+    const auto again = shownChainRun(*m_window);
     QVERIFY(again);
     QCOMPARE(again->chain.rightSpring, 0.3);
     QCOMPARE(m_window->params().massChain.sectionX, 2);

@@ -31,6 +31,7 @@
 
 using namespace grazelab::ui;
 using grazelab::ui::testing::openTestWindow;
+using grazelab::ui::testing::shownChainRun;
 using grazelab::ui::testing::waitForLatestFinal;
 
 namespace {
@@ -61,7 +62,12 @@ class ScenesTest : public QObject {
       const Scene& scene = m_window->scene();
       const QString name = scene.name();
       QVERIFY2(m_window->problem().isEmpty(), qPrintable(name + ": " + m_window->problem()));
-      const auto& needs = m_window->displayed()->request->job.spec.run.needs;
+      // an N-mass scene runs its chains and no two-mass run beside them; a two-mass scene no chain
+      const SimUpdate& shown = *m_window->displayed();
+      QVERIFY2(shown.request->job.spec.chains.empty() != scene.massChain(), qPrintable(name));
+      QVERIFY2(bool(shown.result) != scene.massChain(), qPrintable(name));
+      QVERIFY2(shown.chains.size() == shown.request->job.spec.chains.size(), qPrintable(name));
+      const auto& needs = shown.request->job.spec.run.needs;
       const bool dense = shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::PhaseU2V2) ||
                          shows(scene, PlotKind::PhaseU1V1) || shows(scene, PlotKind::Chain);
       QVERIFY2((needs.samples.spacing > 0) == dense, qPrintable(name));
@@ -70,7 +76,7 @@ class ScenesTest : public QObject {
       QVERIFY2(m_window->displayed()->request->job.spec.map.has_value() == shows(scene, PlotKind::Landscape),
                qPrintable(name));
       QVERIFY2(needs.freeFlights == shows(scene, PlotKind::FreeFlight), qPrintable(name));
-      QVERIFY2(needs.events == (shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::Chain)),
+      QVERIFY2(scene.massChain() || needs.events == (shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::Chain)),
                qPrintable(name));
       QVERIFY2(bool(m_window->chainView()) == shows(scene, PlotKind::Chain), qPrintable(name));
       // every view it lists is on screen, each curve view with its figure
@@ -297,7 +303,7 @@ class ScenesTest : public QObject {
     const SceneJob* job = &m_window->displayed()->request->job;
     QVERIFY2(job->ok, qPrintable(job->message));
     QVERIFY2(job->chainSummary.contains(QStringLiteral("3 : 2 : 1")), qPrintable(job->chainSummary));
-    QVERIFY2(job->chainStatus.contains(QStringLiteral("200 contacts")), qPrintable(job->chainStatus));
+    QVERIFY2(job->status.contains(QStringLiteral("200 contacts")), qPrintable(job->status));
     QCOMPARE(job->chainDesigns, 6);
     const auto flights = figure(*m_window, PlotKind::ChainFlights).curve;
     QVERIFY(flights.size() > 150);
@@ -314,7 +320,8 @@ class ScenesTest : public QObject {
       if (auto* found = dynamic_cast<MassChainView*>(view)) moving = found;
     }
     QVERIFY(moving);
-    const auto& series = *job->chainSeries;
+    QVERIFY(shownChainRun(*m_window));
+    const auto& series = *shownChainRun(*m_window);
     QCOMPARE(moving->displacementsAt(0).size(), std::size_t(3));
     QCOMPARE(moving->displacementsAt(0)[2], series.chain.gap);
     int seen = 0;
@@ -380,7 +387,8 @@ class ScenesTest : public QObject {
     {
       const CurveFigure& phase = figure(*m_window, PlotKind::ChainPhase);
       QVERIFY2(phase.title.contains(QStringLiteral("mass 1")), qPrintable(phase.title));
-      const auto& shownSeries = *m_window->displayed()->request->job.chainSeries;
+      QVERIFY(shownChainRun(*m_window));
+      const auto& shownSeries = *shownChainRun(*m_window);
       QVERIFY(!phase.markers.empty());
       QCOMPARE(phase.markers.front().x(), shownSeries.run.events.front().u[0] / shownSeries.chain.gap);
       QVERIFY(std::abs(phase.curve.front().x() - shownSeries.start.u[0] / shownSeries.chain.gap) < 1e-12);
@@ -398,7 +406,7 @@ class ScenesTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     {
       const CurveFigure& section = figure(*m_window, PlotKind::ChainSection);
-      const auto& run = m_window->displayed()->request->job.chainSeries;
+      const auto& run = shownChainRun(*m_window);
       QVERIFY2(section.title.contains(QStringLiteral("(u2, v3)")), qPrintable(section.title));
       QCOMPARE(qsizetype(section.curve.size()), qsizetype(run->run.contacts));
       const double speed = run->chain.gap * run->modes.omega.maxCoeff();
@@ -485,13 +493,13 @@ class ScenesTest : public QObject {
       // (a top flat at its end, as at 1:n, rises as the square of the distance past it: 1e-4)
       QVERIFY2(std::abs(high - in) < 1e-4, qPrintable(QStringLiteral("%1 against %2").arg(high).arg(in)));
       QVERIFY2(std::abs(low) < 1e-12, qPrintable(QString::number(low)));
-      QVERIFY2(job.chainStatus.contains(QStringLiteral("grazes")), qPrintable(job.chainStatus));
+      QVERIFY2(job.status.contains(QStringLiteral("grazes")), qPrintable(job.status));
       // the panel's weights past the set's end: the verdict says it crosses
       params.massChain.weights = {1 - (high + 0.2), high + 0.2};
       m_window->setParams(params);
       QVERIFY(waitForLatestFinal(*m_window, 60000));
-      QVERIFY2(m_window->displayed()->request->job.chainStatus.contains(QStringLiteral("crosses")),
-               qPrintable(m_window->displayed()->request->job.chainStatus));
+      QVERIFY2(m_window->displayed()->request->job.status.contains(QStringLiteral("crosses")),
+               qPrintable(m_window->displayed()->request->job.status));
     }
     // three modes: 1:2:3, each boundary point grazes just so (its brute-force top is 1)
     Params params = m_window->params();
@@ -551,8 +559,8 @@ class ScenesTest : public QObject {
     double top = 0;
     for (const QPointF& point : figure(*m_window, PlotKind::ChainStopTrace).curve) top = std::max(top, point.y());
     QVERIFY2(top > 1.0 + 1e-3, qPrintable(QString::number(top)));
-    QVERIFY2(m_window->displayed()->request->job.chainStatus.contains(QStringLiteral("crosses")),
-             qPrintable(m_window->displayed()->request->job.chainStatus));
+    QVERIFY2(m_window->displayed()->request->job.status.contains(QStringLiteral("crosses")),
+             qPrintable(m_window->displayed()->request->job.status));
 
     // the two-mode set: dragging the dot moves λ (the slow mode's weight), the fast one balancing
     params = m_window->params();
@@ -611,21 +619,24 @@ class ScenesTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     const SceneJob& job = m_window->displayed()->request->job;
     QVERIFY2(job.ok, qPrintable(job.message));
-    QCOMPARE(job.chainSeries->chain.size(), 8);
-    QCOMPARE(job.chainSeries->chain.stopped(), 5);
-    QCOMPARE(job.chainSeries->run.contacts, 100L);
-    QVERIFY(!job.chainSeries->ratios.commensurate);
+    QCOMPARE(m_window->displayed()->chains.size(), std::size_t(1));
+    QVERIFY(shownChainRun(*m_window));
+    const auto& series = *shownChainRun(*m_window);
+    QCOMPARE(series.chain.size(), 8);
+    QCOMPARE(series.chain.stopped(), 5);
+    QCOMPARE(series.run.contacts, 100L);
+    QVERIFY(!series.ratios.commensurate);
     QVERIFY(figure(*m_window, PlotKind::ChainFlights).reference.empty());
-    QVERIFY(!job.chainTrust.has_value());
-    QVERIFY2(job.chainStatus.contains(QStringLiteral("no error estimate")), qPrintable(job.chainStatus));
+    QVERIFY(series.trust.verdict == grazelab::core::Verdict::Unchecked);
+    QVERIFY2(job.status.contains(QStringLiteral("no error estimate")), qPrintable(job.status));
     MassChainView* moving = nullptr;
     for (SceneView* view : m_window->sceneViews()) {
       if (auto* found = dynamic_cast<MassChainView*>(view)) moving = found;
     }
     QVERIFY(moving);
-    for (const auto& event : job.chainSeries->run.events) {
+    for (const auto& event : series.run.events) {
       QCOMPARE(event.u[4], 1.0);  // on the stop exactly at its contacts
-      if (event.t <= job.chainSeries->grid.back().t) QVERIFY(std::abs(moving->displacementsAt(event.t)[4] - 1) < 0.01);
+      if (event.t <= series.grid.back().t) QVERIFY(std::abs(moving->displacementsAt(event.t)[4] - 1) < 0.01);
     }
   }
 

@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/compute/sim_controller.h"
 
+#include <algorithm>
+
 #include <QMetaObject>
 #include <QTimer>
 
@@ -88,10 +90,7 @@ void SimController::receive(const SimUpdate& update) {
     // stale: a newer request exists. Only a superseded job's whole run is shown (it ended
     // within its grace), never over a newer one's; what it would compute after (its error
     // estimate, a sweep) is not wanted: it stops.
-    const bool wholeRun = update.runDone && !update.chunk &&
-                          update.result->stop != core::StopReason::Cancelled &&
-                          update.result->stop != core::StopReason::InvalidInput;
-    if (wholeRun && update.id > m_shownRunId) {
+    if (isWholeRun(update) && update.id > m_shownRunId) {
       m_shownRunId = update.id;
       stopIfSuperseded(update.id);
       SimUpdate shown = update;
@@ -116,6 +115,17 @@ void SimController::receive(const SimUpdate& update) {
   assembled.chunk.reset();
   assembled.result = m_run;
   emit updated(assembled);
+}
+
+bool isWholeRun(const SimUpdate& update) {
+  if (!update.runDone || update.chunk) return false;
+  if (!update.chains.empty()) {
+    return std::none_of(update.chains.begin(), update.chains.end(), [](const auto& series) {
+      return series->run.stop == core::ChainStop::Cancelled;
+    });
+  }
+  return update.result && update.result->stop != core::StopReason::Cancelled &&
+         update.result->stop != core::StopReason::InvalidInput;
 }
 
 void appendChunk(core::Result& run, const core::Result& chunk) {

@@ -87,6 +87,10 @@ class SimController : public QObject {
   bool m_synchronous = false;
 };
 
+/// Whether the update carries a whole run, not stopped nor refused (all a superseded job may
+/// show): the two-mass run, or every run of N masses so far.
+bool isWholeRun(const SimUpdate& update);
+
 /// Appends a partial update's chunk (new items and present totals) to the run so far.
 void appendChunk(core::Result& run, const core::Result& chunk);
 

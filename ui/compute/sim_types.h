@@ -14,7 +14,6 @@
 #include <stop_token>
 #include <string>
 
-#include "core/experiments/chain_series.h"
 #include "core/experiments/run.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/periodic_orbit.h"
@@ -51,13 +50,11 @@ struct SceneJob {
   QString chainSummary;
   int chainDesigns = 0;
   bool chainRefused = false;
-  /// the N-mass scenes' run in words for the status line (its contacts, end, energy, trust):
-  /// the two-mass run behind them is none
-  QString chainStatus;
-  std::optional<core::Trust> chainTrust;
-  double chainTFinal = 0;  ///< the N-mass run's end [time]
-  /// the N-mass run with every mass on a time grid over its first periods (the animated chain)
-  std::shared_ptr<const core::experiments::ChainSeries> chainSeries;
+  /// what the scene draws of its runs of N masses (spec.chains, as far as computed): its figures
+  /// and `status`. The worker calls it with each report, so that a run is drawn as it grows.
+  std::function<void(SceneJob& job, const core::experiments::ChainRuns& runs)> presentRuns;
+  /// the N-mass scenes' run in words for the status line (made by presentRuns)
+  QString status;
 };
 
 /// What a scene's own computation has so far, with the fraction of it done (0 when unknown).

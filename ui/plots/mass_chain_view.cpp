@@ -179,7 +179,7 @@ MassChainView::MassChainView(QWidget* parent) : QWidget(parent) {
 }
 
 void MassChainView::show(const SimUpdate& update) {
-  m_series = update.request->job.chainSeries;
+  m_series = update.chains.empty() ? nullptr : update.chains.front();
   m_contactTimes.clear();
   m_end = 0;
   if (m_series && !m_series->grid.empty()) {

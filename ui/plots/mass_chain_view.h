@@ -21,7 +21,7 @@ namespace grazelab::ui {
 /// A chain of N masses, moving: the wall, every spring and mass (sized by the cube root of its
 /// mass), the stop at d beside the stopped mass (a post it strikes with a tab), the right wall
 /// when there is one; displacements true to scale, from the scene's grid over the run's first
-/// periods (SceneJob::chainSeries), contacts flashing. Play / pause and a time slider.
+/// periods (the experiment's first chain run), contacts flashing. Play / pause and a time slider.
 class MassChainView : public QWidget, public SceneView {
   Q_OBJECT
 

@@ -64,8 +64,7 @@ Scene::Spec chainOnePeriodicScene() {
   scene.parameters = {ParamKey::Gap, ParamKey::ChainPeriod};
   scene.plots = {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::ChainStopTrace,
                  PlotKind::MassChain};
-  scene.build = [](const Scene&, const Params& params, const DerivedModel& derived,
-                   std::stop_token stop) {
+  scene.build = [](const Scene&, const Params& params, const DerivedModel&, std::stop_token stop) {
     SceneJob job;
     const ChainChoice choice = chooseChain(params.massChain, params.gap, stop);
     if (!choice.chain) return refusedChainJob(choice.problem);
@@ -113,31 +112,7 @@ Scene::Spec chainOnePeriodicScene() {
            "grazes."),
         speed, QPointF(params.chainPeriodFraction, std::abs(orbit.V) / speedScale), QPointF(1, 0));
     // the slider's orbit over three of its periods, every mass on the grid
-    core::experiments::ChainSeriesSpec spec{chain, orbit.postImpact,     3, 3 * T, 900,
-                                            0,     core::TrustMode::Auto};
-    const auto shared = std::make_shared<const core::experiments::ChainSeries>(
-        core::experiments::chainSeries(spec, stop));
-    if (stop.stop_requested()) return job;
-    CurveFigure trace;
-    trace.title = tr("The 1IPP orbit of T = %1 T*: u%2 / d")
-                      .arg(number(params.chainPeriodFraction, 6))
-                      .arg(chain.stopped());
-    trace.xTitle = tr("t / T");
-    trace.yTitle = tr("u / d");
-    trace.toolTip =
-        tr("The stopped mass over three periods of the orbit, from right after an impact: it meets "
-           "the stop once a period, at t = T, 2T, 3T (dots: the exact run's contacts).");
-    trace.curveName = tr("u%1 / d").arg(chain.stopped());
-    for (const core::experiments::ChainGridPoint& point : shared->grid)
-      trace.curve.emplace_back(point.t / T, point.us / d);
-    trace.timeUnit = T;  // the animation's time a line on it
-    trace.referenceName = tr("stop");
-    trace.reference = {QPointF(0, 1), QPointF(3, 1)};
-    trace.markerName = tr("contacts");
-    for (const core::ChainEvent& event : shared->run.events) {
-      if (core::isContact(event.type)) trace.markers.emplace_back(event.t / T, 1.0);
-    }
-    job.figures[PlotKind::ChainStopTrace] = trace;
+    job.spec.chains = {{chain, orbit.postImpact, 3, 3 * T, 900, 0, core::TrustMode::Auto}};
     QStringList weights;
     for (double w : limitWeights) weights.append(number(w, 4));
     job.chainSummary =
@@ -148,16 +123,36 @@ Scene::Spec chainOnePeriodicScene() {
     double distance = 0;
     if (limit.problem == core::GloStartProblem::None)
       distance = (orbit.postImpact.u - limit.state.u).norm() / d;
-    job.chainStatus =
+    const QString orbitInWords =
         tr("1IPP orbit of T = %1 T*: impact speed V = %2, energy %3; its data are %4 d from the "
            "grazing limit's · ")
             .arg(number(params.chainPeriodFraction, 6), number(orbit.V, 6), number(orbit.energy, 6),
-                 number(distance, 3)) +
-        chainStatusOf(*shared);
-    job.chainTrust = shared->trust;
-    job.chainTFinal = shared->run.tFinal;
-    job.chainSeries = shared;
-    readyChainJob(job, derived);
+                 number(distance, 3));
+    job.presentRuns = [fraction = params.chainPeriodFraction, T, orbitInWords](
+                          SceneJob& shown, const core::experiments::ChainRuns& runs) {
+      const core::experiments::ChainSeries& series = *runs.front();
+      const double d = series.chain.gap;
+      const int stopped = series.chain.stopped();
+      CurveFigure trace;
+      trace.title = tr("The 1IPP orbit of T = %1 T*: u%2 / d").arg(number(fraction, 6)).arg(stopped);
+      trace.xTitle = tr("t / T");
+      trace.yTitle = tr("u / d");
+      trace.toolTip =
+          tr("The stopped mass over three periods of the orbit, from right after an impact: it meets "
+             "the stop once a period, at t = T, 2T, 3T (dots: the exact run's contacts).");
+      trace.curveName = tr("u%1 / d").arg(stopped);
+      for (const core::experiments::ChainGridPoint& point : series.grid) trace.curve.emplace_back(point.t / T, point.us / d);
+      trace.timeUnit = T;  // the animation's time a line on it
+      trace.referenceName = tr("stop");
+      trace.reference = {QPointF(0, 1), QPointF(3, 1)};
+      trace.markerName = tr("contacts");
+      for (const core::ChainEvent& event : series.run.events) {
+        if (core::isContact(event.type)) trace.markers.emplace_back(event.t / T, 1.0);
+      }
+      shown.figures[PlotKind::ChainStopTrace] = trace;
+      shown.status = orbitInWords + chainStatusOf(series);
+    };
+    job.ok = true;
     return job;
   };
   return scene;

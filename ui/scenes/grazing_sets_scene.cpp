@@ -122,8 +122,7 @@ Scene::Spec grazingSetsScene() {
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap};
   scene.plots = {PlotKind::GrazingSet, PlotKind::ChainStopTrace, PlotKind::MassChain};
-  scene.build = [](const Scene&, const Params& params, const DerivedModel& derived,
-                   std::stop_token stop) {
+  scene.build = [](const Scene&, const Params& params, const DerivedModel&, std::stop_token stop) {
     SceneJob job;
     const MassChainParams& given = params.massChain;
     const ChainChoice choice = chooseChain(given, params.gap, stop);
@@ -163,35 +162,35 @@ Scene::Spec grazingSetsScene() {
     // the orbit itself over one period (unpushed: GLO(λ) as it is), every mass on the grid: the
     // linear motion, so that weights outside the set are seen to pass the stop
     const double period = 2 * std::numbers::pi / used.ratios.omega0;
-    core::experiments::ChainSeriesSpec spec{chain, glo.state,           1, period, 900,
-                                            0,     core::TrustMode::Off};
-    spec.free = true;
-    const auto shared = std::make_shared<const core::experiments::ChainSeries>(
-        core::experiments::chainSeries(spec, stop));
-    if (stop.stop_requested()) return job;
-    CurveFigure trace;
-    trace.title = tr("GLO(λ) over one period: u%1 / d").arg(chain.stopped());
-    trace.xTitle = tr("t / T");
-    trace.yTitle = tr("u / d");
-    trace.toolTip =
-        tr("The stopped mass of GLO(λ) over its period T, the stop dashed: a grazing orbit stays "
-           "at or below it and touches it at t = 0 and T; weights outside the set pass it (the "
-           "linear motion is drawn, as if the stop were not there).");
-    trace.curveName = tr("u%1 / d").arg(chain.stopped());
-    for (const core::experiments::ChainGridPoint& point : shared->grid)
-      trace.curve.emplace_back(point.t / period, point.us / chain.gap);
-    trace.timeUnit = period;  // the animation's time a line on it
-    trace.referenceName = tr("stop");
-    trace.reference = {QPointF(0, 1), QPointF(1, 1)};
-    job.figures[PlotKind::ChainStopTrace] = trace;
+    core::experiments::ChainSeriesSpec free{chain, glo.state, 1, period, 900, 0, core::TrustMode::Off};
+    free.free = true;
+    job.spec.chains = {free};
+    const core::ChainModes modes = core::chainModes(chain);
+    job.chainSummary = chainSummaryOf(chain, given, choice.designs, modes, core::detectRatios(modes.omega));
+    job.chainDesigns = choice.designs;
     QStringList written;
     for (double w : weights) written.append(number(w, 4));
-    job.chainSummary = chainSummaryOf(chain, given, choice.designs, shared->modes, shared->ratios);
-    job.chainDesigns = choice.designs;
-    job.chainStatus = tr("GLO with weights (%1) %2")
-                          .arg(written.join(QStringLiteral(", ")), verdictInWords(verdict));
-    job.chainSeries = shared;
-    readyChainJob(job, derived);
+    job.status = tr("GLO with weights (%1) %2").arg(written.join(QStringLiteral(", ")), verdictInWords(verdict));
+    job.presentRuns = [period](SceneJob& shown, const core::experiments::ChainRuns& runs) {
+      const core::experiments::ChainSeries& series = *runs.front();
+      const int stopped = series.chain.stopped();
+      CurveFigure trace;
+      trace.title = tr("GLO(λ) over one period: u%1 / d").arg(stopped);
+      trace.xTitle = tr("t / T");
+      trace.yTitle = tr("u / d");
+      trace.toolTip =
+          tr("The stopped mass of GLO(λ) over its period T, the stop dashed: a grazing orbit stays "
+             "at or below it and touches it at t = 0 and T; weights outside the set pass it (the "
+             "linear motion is drawn, as if the stop were not there).");
+      trace.curveName = tr("u%1 / d").arg(stopped);
+      for (const core::experiments::ChainGridPoint& point : series.grid)
+        trace.curve.emplace_back(point.t / period, point.us / series.chain.gap);
+      trace.timeUnit = period;  // the animation's time a line on it
+      trace.referenceName = tr("stop");
+      trace.reference = {QPointF(0, 1), QPointF(1, 1)};
+      shown.figures[PlotKind::ChainStopTrace] = trace;
+    };
+    job.ok = true;
     return job;
   };
   return scene;

@@ -192,11 +192,4 @@ QString gloStartProblemInWords(core::GloStartProblem problem) {
              : tr("The weights of the grazing orbit must be finite and sum to 1");
 }
 
-void readyChainJob(SceneJob& job, const DerivedModel& derived) {
-  job.spec.model = derived.model;
-  job.spec.run.maxContacts = 0;
-  job.spec.run.needs.events = false;
-  job.ok = true;
-}
-
 }  // namespace grazelab::ui

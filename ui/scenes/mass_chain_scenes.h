@@ -41,8 +41,4 @@ SceneJob refusedChainJob(const QString& why);
 /// Why GLO(λ) of the panel's weights cannot be made, in words.
 QString gloStartProblemInWords(core::GloStartProblem problem);
 
-/// Marks an N-mass scene's job ready: its figures are the chain's, and the two-mass run the
-/// worker makes after a scene's own computation is none (no contacts, no events).
-void readyChainJob(SceneJob& job, const DerivedModel& derived);
-
 }  // namespace grazelab::ui

@@ -79,6 +79,128 @@ CurveFigure sectionFigure(const MassChainParams& given, const core::experiments:
   return figure;
 }
 
+// The scene's figures and status of its runs so far: the run shown, then (when asked) the same
+// start on the detuned chain.
+void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs, const MassChainParams& given,
+                        bool contrast, double window, core::TrustMode trust, double slowest) {
+  const core::experiments::ChainSeries& series = *runs.front();
+  const core::MassChain& chain = series.chain;
+  const bool resonant = series.period > 0;
+  const double unit = resonant ? series.period : slowest;
+  const QString unitName = resonant ? tr("T") : tr("slowest period");
+
+  // u_s(t) of the stopped mass over the first periods, the stop at 1, the contacts on it
+  CurveFigure trace;
+  trace.title = tr("Mass %1 (on the stop's side): u%1 / d").arg(chain.stopped());
+  trace.xTitle = tr("t / %1").arg(unitName);
+  trace.yTitle = tr("u / d");
+  trace.toolTip =
+      tr("The stopped mass's displacement over the gap d; the dashed line is the stop. Each "
+         "dot is a contact.");
+  trace.curveName = tr("u%1 / d").arg(chain.stopped());
+  for (const core::experiments::ChainGridPoint& point : series.grid) {
+    trace.curve.emplace_back(point.t / unit, point.us / chain.gap);
+  }
+  trace.timeUnit = unit;  // the animation's time a line on it
+  // the mass the panel's 'phase of' names, when it is another: its trace beside the stopped one
+  if (given.shown() != chain.stopped()) {
+    trace.title = tr("Mass %1 (on the stop's side) and mass %2: u / d").arg(chain.stopped()).arg(given.shown());
+    trace.otherName = tr("u%1 / d").arg(given.shown());
+    for (const core::experiments::ChainGridPoint& point : series.grid) {
+      trace.other.emplace_back(point.t / unit, point.uChosen / chain.gap);
+    }
+  }
+  const double span = window / unit;
+  trace.referenceName = tr("stop");
+  trace.reference = {QPointF(0, 1), QPointF(span, 1)};
+  trace.markerName = tr("contacts");
+  for (const core::ChainEvent& event : series.run.events) {
+    if (event.t > window) break;
+    if (core::isContact(event.type)) trace.markers.emplace_back(event.t / unit, 1.0);
+  }
+  job.figures[PlotKind::ChainStopTrace] = trace;
+
+  job.figures[PlotKind::ChainFlights] =
+      flightFigure(resonant ? tr("Free flights from the stop / T (≤ 1)")
+                            : tr("Free flights / slowest period (no common period: no bound)"),
+                   series, unit, resonant, unitName);
+
+  // the shown mass (the stopped one by default): its phase portrait over the first periods,
+  // and its state at every contact (a Poincaré section on H, projected on its (u, v))
+  const int shown = given.shown();
+  const bool shownIsStopped = shown == chain.stopped();
+  CurveFigure phase;
+  phase.title = tr("Phase portrait of mass %1").arg(shown);
+  phase.xTitle = tr("u%1 / d").arg(shown);
+  phase.yTitle = tr("v%1 / (d ω₁)").arg(shown);
+  phase.toolTip = shownIsStopped
+                      ? tr("The stopped mass's velocity against its displacement over the first "
+                           "periods; at u/d = 1 the impacts reverse the velocity.")
+                      : tr("Mass %1's velocity against its displacement over the first periods "
+                           "(the panel's 'phase of' chooses the mass); the dots are its state at "
+                           "each contact of the stopped mass.")
+                            .arg(shown);
+  phase.curveName = tr("(u, v)");
+  const double speed = chain.gap * series.modes.omega.maxCoeff();
+  for (const core::experiments::ChainGridPoint& point : series.grid) {
+    phase.curve.emplace_back(point.uChosen / chain.gap, point.vChosen / speed);
+    phase.curveTimes.push_back(point.t);  // the animation's time a ring on it
+  }
+  if (shownIsStopped) {
+    phase.referenceName = tr("stop");
+    phase.reference = {QPointF(1, -1.5), QPointF(1, 1.5)};
+  } else {
+    phase.markerName = tr("at contacts");
+    const Eigen::Index i = Eigen::Index(shown - 1);
+    for (const core::ChainEvent& event : series.run.events) {
+      if (event.t > window) break;
+      if (core::isContact(event.type))
+        phase.markers.emplace_back(event.u[i] / chain.gap, event.vBefore[i] / speed);
+    }
+  }
+  job.figures[PlotKind::ChainPhase] = phase;
+  job.figures[PlotKind::ChainSection] = sectionFigure(given, series, speed);
+
+  // the contrast: the same start on the chain with k2 1 % stiffer (no common period)
+  if (contrast && runs.size() > 1) {
+    const core::experiments::ChainSeries& detuned = *runs[1];
+    CurveFigure figure = flightFigure(tr("k₂ 1 % off: flights / the resonant T"), detuned,
+                                      series.period, true, tr("T"));
+    // a detuned flight can last hundreds of T: the axis stops at 3 T, and says how many pass it
+    const auto above = std::count_if(figure.curve.begin(), figure.curve.end(),
+                                     [](const QPointF& p) { return p.y() > 3; });
+    if (above > 0) {
+      figure.title = tr("k₂ 1 % off: flights / T (%1 past 3 T)").arg(above);
+      double last = 1;
+      for (const QPointF& point : figure.curve) last = std::max(last, point.x());
+      figure.xMin = 0;
+      figure.xMax = last * 1.02;
+      figure.yMin = 0;
+      figure.yMax = 3;
+    }
+    if (detuned.run.stop == core::ChainStop::SearchBudget) {
+      // its last flight never came back within the search's 1000 slowest periods: say so,
+      // rather than let the chart end as if the run had
+      figure.title = figure.curve.size() == 1
+                         ? tr("k₂ 1 % off: 1 flight, then none in 1000 slow periods")
+                         : tr("k₂ 1 % off: %1 flights, then none in 1000 slow periods").arg(figure.curve.size());
+    }
+    job.figures[PlotKind::ChainDetunedFlights] = figure;
+  } else if (contrast) {
+    CurveFigure none;
+    none.title = resonant ? tr("k₂ 1 % off: computing…") : tr("Detuned contrast: only for a resonant chain");
+    none.xTitle = tr("contact index");
+    none.yTitle = tr("flight time / T");
+    job.figures[PlotKind::ChainDetunedFlights] = none;
+  }
+  job.status = chainStatusOf(series);
+  if (trust == core::TrustMode::Off) {
+    job.status += tr(
+        " · no error estimate here (its shadow run in long double would take seconds on a "
+        "chain with no common period: grazelab-cli simulate --masses … --trust auto gives it)");
+  }
+}
+
 }  // namespace
 
 Scene::Spec threeMassesScene() {
@@ -103,9 +225,7 @@ Scene::Spec threeMassesScene() {
   scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::ChainFlights,
                  PlotKind::ChainPhase, PlotKind::ChainSection, PlotKind::ChainDetunedFlights};
-  scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
-                   std::stop_token stop) {
-    SceneJob job;
+  scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token stop) {
     const MassChainParams& given = params.massChain;
     const ChainChoice choice = chooseChain(given, params.gap, stop);
     if (!choice.chain) return refusedChainJob(choice.problem);
@@ -118,154 +238,31 @@ Scene::Spec threeMassesScene() {
     const Eigen::Index s = chain.stopped() - 1;
     start.v[s] += params.perturbation;  // pushed off the orbit along the stopped mass's velocity
     const core::ChainModes modes = core::chainModes(chain);
+    const core::SpectrumRatios ratios = core::detectRatios(modes.omega);
     const double slowest = 2 * std::numbers::pi / modes.omega.minCoeff();
+    const bool contrast = self.plots().contains(PlotKind::ChainDetunedFlights);
     // (the error estimate of a chain with no common period shadows long searches in long
     // double: its own scene asks for none, and says so). The trace, the phase portrait and the
     // animation span four slowest periods: six drew twenty fast swings into a plot a third of a
     // projector wide, lines merging into a band in presentation's thick pen
-    core::experiments::ChainSeriesSpec spec{chain,
-                                            start,
-                                            long(params.horizon),
-                                            4 * slowest,
-                                            1500,
-                                            given.shown(),
-                                            self.plots().contains(PlotKind::ChainDetunedFlights)
-                                                ? core::TrustMode::Auto
-                                                : core::TrustMode::Off};
-    const auto shared = std::make_shared<const core::experiments::ChainSeries>(
-        core::experiments::chainSeries(spec, stop));
-    const core::experiments::ChainSeries& series = *shared;
-    if (stop.stop_requested()) return job;
-    const bool resonant = series.period > 0;
-    const double unit = resonant ? series.period : slowest;
-    const QString unitName = resonant ? tr("T") : tr("slowest period");
-
-    // u_s(t) of the stopped mass over the first periods, the stop at 1, the contacts on it
-    CurveFigure trace;
-    trace.title = tr("Mass %1 (on the stop's side): u%1 / d").arg(chain.stopped());
-    trace.xTitle = tr("t / %1").arg(unitName);
-    trace.yTitle = tr("u / d");
-    trace.toolTip =
-        tr("The stopped mass's displacement over the gap d; the dashed line is the stop. Each "
-           "dot is a contact.");
-    trace.curveName = tr("u%1 / d").arg(chain.stopped());
-    for (const core::experiments::ChainGridPoint& point : series.grid) {
-      trace.curve.emplace_back(point.t / unit, point.us / chain.gap);
-    }
-    trace.timeUnit = unit;  // the animation's time a line on it
-    // the mass the panel's 'phase of' names, when it is another: its trace beside the stopped one
-    if (given.shown() != chain.stopped()) {
-      trace.title = tr("Mass %1 (on the stop's side) and mass %2: u / d").arg(chain.stopped()).arg(given.shown());
-      trace.otherName = tr("u%1 / d").arg(given.shown());
-      for (const core::experiments::ChainGridPoint& point : series.grid) {
-        trace.other.emplace_back(point.t / unit, point.uChosen / chain.gap);
-      }
-    }
-    const double window = spec.window / unit;
-    trace.referenceName = tr("stop");
-    trace.reference = {QPointF(0, 1), QPointF(window, 1)};
-    trace.markerName = tr("contacts");
-    for (const core::ChainEvent& event : series.run.events) {
-      if (event.t > spec.window) break;
-      if (core::isContact(event.type)) trace.markers.emplace_back(event.t / unit, 1.0);
-    }
-    job.figures[PlotKind::ChainStopTrace] = trace;
-
-    job.figures[PlotKind::ChainFlights] =
-        flightFigure(resonant ? tr("Free flights from the stop / T (≤ 1)")
-                              : tr("Free flights / slowest period (no common period: no bound)"),
-                     series, unit, resonant, unitName);
-
-    // the shown mass (the stopped one by default): its phase portrait over the first periods,
-    // and its state at every contact (a Poincaré section on H, projected on its (u, v))
-    const int shown = given.shown();
-    const bool shownIsStopped = shown == chain.stopped();
-    CurveFigure phase;
-    phase.title = tr("Phase portrait of mass %1").arg(shown);
-    phase.xTitle = tr("u%1 / d").arg(shown);
-    phase.yTitle = tr("v%1 / (d ω₁)").arg(shown);
-    phase.toolTip = shownIsStopped
-                        ? tr("The stopped mass's velocity against its displacement over the first "
-                             "periods; at u/d = 1 the impacts reverse the velocity.")
-                        : tr("Mass %1's velocity against its displacement over the first periods "
-                             "(the panel's 'phase of' chooses the mass); the dots are its state at "
-                             "each contact of the stopped mass.")
-                              .arg(shown);
-    phase.curveName = tr("(u, v)");
-    const double speed = chain.gap * modes.omega.maxCoeff();
-    for (const core::experiments::ChainGridPoint& point : series.grid) {
-      phase.curve.emplace_back(point.uChosen / chain.gap, point.vChosen / speed);
-      phase.curveTimes.push_back(point.t);  // the animation's time a ring on it
-    }
-    if (shownIsStopped) {
-      phase.referenceName = tr("stop");
-      phase.reference = {QPointF(1, -1.5), QPointF(1, 1.5)};
-    } else {
-      phase.markerName = tr("at contacts");
-      const Eigen::Index i = Eigen::Index(shown - 1);
-      for (const core::ChainEvent& event : series.run.events) {
-        if (event.t > spec.window) break;
-        if (core::isContact(event.type))
-          phase.markers.emplace_back(event.u[i] / chain.gap, event.vBefore[i] / speed);
-      }
-    }
-    job.figures[PlotKind::ChainPhase] = phase;
-    if (self.plots().contains(PlotKind::ChainSection)) {
-      job.figures[PlotKind::ChainSection] = sectionFigure(given, series, speed);
-    }
-
-    // the contrast: the same start on the chain with k2 1 % stiffer (no common period)
-    const bool contrast = self.plots().contains(PlotKind::ChainDetunedFlights);
-    if (contrast && resonant && chain.size() >= 2) {
+    const core::experiments::ChainSeriesSpec run{chain,      start, long(params.horizon), 4 * slowest, 1500,
+                                                 given.shown(), contrast ? core::TrustMode::Auto : core::TrustMode::Off};
+    SceneJob job;
+    job.spec.chains = {run};
+    if (contrast && ratios.commensurate && chain.size() >= 2) {
+      // the contrast: the same start on the chain with k2 1 % stiffer (no common period); its
+      // flights only: no error estimate, which would cost more than the rest of the scene
       core::MassChain detuned = chain;
       detuned.springs[1] *= 1.01;
-      // (its flights only: no error estimate, which would cost more than the rest of the scene)
-      core::experiments::ChainSeriesSpec other{detuned, start, long(params.horizon), 0,
-                                               0,       0,     core::TrustMode::Off};
-      const core::experiments::ChainSeries contrast = core::experiments::chainSeries(other, stop);
-      CurveFigure figure = flightFigure(tr("k₂ 1 % off: flights / the resonant T"), contrast,
-                                        series.period, true, tr("T"));
-      // a detuned flight can last hundreds of T: the axis stops at 3 T, and says how many pass it
-      const auto above = std::count_if(figure.curve.begin(), figure.curve.end(),
-                                       [](const QPointF& p) { return p.y() > 3; });
-      if (above > 0) {
-        figure.title = tr("k₂ 1 % off: flights / T (%1 past 3 T)").arg(above);
-        double last = 1;
-        for (const QPointF& point : figure.curve) last = std::max(last, point.x());
-        figure.xMin = 0;
-        figure.xMax = last * 1.02;
-        figure.yMin = 0;
-        figure.yMax = 3;
-      }
-      if (contrast.run.stop == core::ChainStop::SearchBudget) {
-        // its last flight never came back within the search's 1000 slowest periods: say so,
-        // rather than let the chart end as if the run had
-        figure.title = figure.curve.size() == 1
-                           ? tr("k₂ 1 % off: 1 flight, then none in 1000 slow periods")
-                           : tr("k₂ 1 % off: %1 flights, then none in 1000 slow periods").arg(figure.curve.size());
-      }
-      job.figures[PlotKind::ChainDetunedFlights] = figure;
-    } else if (contrast) {
-      CurveFigure none;
-      none.title = tr("Detuned contrast: only for a resonant chain");
-      none.xTitle = tr("contact index");
-      none.yTitle = tr("flight time / T");
-      job.figures[PlotKind::ChainDetunedFlights] = none;
+      job.spec.chains.push_back({detuned, start, long(params.horizon), 0, 0, 0, core::TrustMode::Off});
     }
-    job.chainSummary = chainSummaryOf(chain, given, choice.designs, series.modes, series.ratios);
+    job.chainSummary = chainSummaryOf(chain, given, choice.designs, modes, ratios);
     job.chainDesigns = choice.designs;
-    job.chainStatus = chainStatusOf(series);
-    if (spec.trust == core::TrustMode::Off) {
-      job.chainStatus += tr(
-          " · no error estimate here (its shadow run in long double would take seconds on a "
-          "chain with no common period: grazelab-cli simulate --masses … --trust auto gives it)");
-    } else {
-      job.chainTrust = series.trust;
-    }
-    job.chainTFinal = series.run.tFinal;
-    job.chainSeries = shared;
-    // the two-mass run behind the scene's figures is none: everything drawn is the chain's
-    readyChainJob(job, derived);
+    job.presentRuns = [given, contrast, window = run.window, trust = run.trust, slowest](
+                          SceneJob& shown, const core::experiments::ChainRuns& runs) {
+      presentThreeMasses(shown, runs, given, contrast, window, trust, slowest);
+    };
+    job.ok = true;
     return job;
   };
   return scene;

@@ -205,7 +205,8 @@ int runLatencyBenchmark(QTextStream& out, const QString& onlyScene) {
       if (step == 0) continue;  // warm-up
       latencies.push_back(clock.nsecsElapsed() * 1e-6);
       paint.push_back(clock.nsecsElapsed() * 1e-6 - drawn);
-      compute.push_back(window.displayed()->result->cost.wallSeconds * 1e3);
+      // (an N-mass scene's runs carry no wall time: 0)
+      compute.push_back(window.displayed()->result ? window.displayed()->result->cost.wallSeconds * 1e3 : 0.0);
       for (auto it = window.viewCosts().begin(); it != window.viewCosts().end(); ++it) {
         viewCost[it.key()] += it.value();
       }

@@ -585,7 +585,7 @@ void MainWindow::onUpdate(const SimUpdate& update) {
     setProgressVisible(false);  // stopped before the scene had anything to run
     return;
   }
-  if (update.result->stop == core::StopReason::InvalidInput) {
+  if (update.result && update.result->stop == core::StopReason::InvalidInput) {
     setProgressVisible(false);
     showProblem(QString::fromStdString(update.result->message));
     // an N-mass chain that cannot be made says why where it is edited as well

@@ -155,8 +155,8 @@ QStringList MainWindow::csvHeader() const {
                      QStringLiteral("session: %1").arg(QString::fromUtf8(
                          QJsonDocument::fromJson(sessionToJson(shown)).toJson(QJsonDocument::Compact)))};
   if (m_displayed && scene().massChain()) {
-    if (const auto& series = m_displayed->request->job.chainSeries) {
-      header.append(QStringLiteral("the run again: %1").arg(chainSimulateCommand(*series)));
+    if (!m_displayed->chains.empty()) {
+      header.append(QStringLiteral("the run again: %1").arg(chainSimulateCommand(*m_displayed->chains.front())));
     }
   } else if (m_displayed) {
     header.append(QStringLiteral("the run again: %1").arg(simulateCommand(m_displayed->request->job.spec)));

@@ -33,15 +33,29 @@ void MainWindow::showProblem(const QString& message) {
 
 void MainWindow::showStatus(const SimUpdate& update) {
   if (scene().massChain()) {
-    // a chain of N masses: its own run, told by its scene (no two-mass run is made)
+    // a chain of N masses: its own runs, told by its scene (no two-mass run is made)
     const SceneJob& job = update.request->job;
-    QString text = job.ok ? job.chainStatus : tr("Not computed: %1").arg(job.message);
-    if (job.ok && job.chainTrust && job.chainTrust->shadowEvents == 0 && job.chainTrust->verdict != core::Verdict::Unchecked) {
-      // a run with no event gives its shadow nothing to compare ("ok ... until t = 0" said nothing)
-      text += QStringLiteral(" · ") + tr("no error estimate (no contact to compare)");
-    } else if (job.ok && job.chainTrust) {
-      text += QStringLiteral(" · ") + trustInWords(*job.chainTrust, job.chainTFinal);
+    QString text = job.ok ? job.status : tr("Not computed: %1").arg(job.message);
+    if (job.ok && !update.chains.empty()) {
+      const core::experiments::ChainSeries& shown = *update.chains.front();
+      if (shown.precision != core::Precision::Double) {
+        text += tr(" · run in %1 (double could not decide a contact)")
+                    .arg(shown.precision == core::Precision::Long ? tr("long double") : tr("binary128"));
+      }
+      const core::Trust& trust = shown.trust;
+      if (trust.verdict == core::Verdict::Unchecked) {
+        // not asked for (the scene says why), or not yet there
+      } else if (trust.shadowEvents == 0) {
+        // a run with no event gives its shadow nothing to compare ("ok ... until t = 0" said nothing)
+        text += QStringLiteral(" · ") + tr("no error estimate (no contact to compare)");
+      } else {
+        text += QStringLiteral(" · ") + trustInWords(trust, shown.run.tFinal);
+      }
     }
+    m_status->setExplanation(m_statusExplanation + (update.precisionNote.empty()
+                                                        ? QString()
+                                                        : QStringLiteral("\n\n") +
+                                                              QString::fromStdString(update.precisionNote)));
     if (!update.final || update.superseded) text += tr(" · computing…");
     if (!m_problem.isEmpty()) text = tr("Not computed: %1 (showing the last valid result)").arg(m_problem);
     m_status->setMessage(text);

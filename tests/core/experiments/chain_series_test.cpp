@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stop_token>
+#include <vector>
 
 #include "core/model/chain_design.h"
 #include "core/orbits/chain_glo.h"
@@ -99,6 +101,148 @@ TEST(ChainSeries, ARunWithoutContactsStillDrawsItsMotionAndFreeIgnoresTheStop) {
   EXPECT_GT(top, 1.2 * resonant.gap);  // through the stop, as the closed form has it
   const ChainSeries stopped = chainSeries(ChainSeriesSpec{resonant, outside, 1, 8.0, 400, 0, TrustMode::Off});
   for (const ChainGridPoint& point : stopped.grid) EXPECT_LE(point.us, resonant.gap * (1 + 1e-12));
+}
+
+// Every number of two runs, to the bit.
+void expectSameRun(const ChainSeries& a, const ChainSeries& b) {
+  ASSERT_EQ(a.run.events.size(), b.run.events.size());
+  for (std::size_t i = 0; i < a.run.events.size(); ++i) {
+    const ChainEvent& x = a.run.events[i];
+    const ChainEvent& y = b.run.events[i];
+    ASSERT_EQ(x.t, y.t) << "event " << i;
+    ASSERT_EQ(x.type, y.type) << "event " << i;
+    ASSERT_EQ(x.u, y.u) << "event " << i;
+    ASSERT_EQ(x.vBefore, y.vBefore) << "event " << i;
+    ASSERT_EQ(x.vAfter, y.vAfter) << "event " << i;
+  }
+  EXPECT_EQ(a.run.tFinal, b.run.tFinal);
+  EXPECT_EQ(a.run.final.u, b.run.final.u);
+  EXPECT_EQ(a.run.final.v, b.run.final.v);
+  EXPECT_EQ(a.run.stop, b.run.stop);
+  EXPECT_EQ(a.run.energyFinal, b.run.energyFinal);
+  ASSERT_EQ(a.grid.size(), b.grid.size());
+  for (std::size_t i = 0; i < a.grid.size(); ++i) ASSERT_EQ(a.grid[i].u, b.grid[i].u) << "grid point " << i;
+  ASSERT_EQ(a.flights.size(), b.flights.size());
+  for (std::size_t i = 0; i < a.flights.size(); ++i) ASSERT_EQ(a.flights[i].duration, b.flights[i].duration);
+  EXPECT_EQ(a.trust.verdict, b.trust.verdict);
+  EXPECT_EQ(a.trust.stateError, b.trust.stateError);
+  EXPECT_EQ(a.trust.horizon, b.trust.horizon);
+  EXPECT_EQ(a.precision, b.precision);
+}
+
+// Chains the explorer's defaults do not use: 3:2:1 with its second design, four masses stopped
+// inside with a right wall, eight equal masses stopped on mass 5 near their slowest mode's top.
+std::vector<ChainSeriesSpec> streamedSpecs() {
+  std::vector<ChainSeriesSpec> specs;
+  MassChain three;
+  three.masses = {1.0, 0.3, 0.08};
+  three.springs = designSprings(three.masses, 1.0, {3, 2, 1}).designs.at(1).springs;
+  three.gap = 0.7;
+  ChainState start = chainGloStart(three, {0.2, 0.5, 0.3}).state;
+  start.v[2] -= 0.03;
+  specs.push_back({three, start, 300, 25.0, 300, 2, TrustMode::Auto});
+  MassChain four;
+  four.masses = {1.0, 0.6, 1.4, 0.9};
+  four.springs = {1.0, 2.0, 0.8, 1.1};
+  four.rightSpring = 0.5;
+  four.stopMass = 2;
+  four.gap = 0.5;
+  ChainState moving{Eigen::VectorXd::Zero(4), Eigen::VectorXd::Zero(4)};
+  moving.u << 0.0, 0.3, 0.0, -0.2;
+  moving.v << 0.2, 0.8, -0.1, 0.0;
+  specs.push_back({four, moving, 400, 30.0, 500, 4, TrustMode::Auto});
+  MassChain eight;
+  eight.masses.assign(8, 1.0);
+  eight.springs.assign(8, 1.0);
+  eight.stopMass = 5;
+  std::vector<double> slowest(8, 0.0);
+  slowest.back() = 1.0;
+  ChainState top = chainGloStart(eight, slowest).state;
+  top.v[4] -= 1e-4;
+  specs.push_back({eight, top, 100, 40.0, 600, 0, TrustMode::Off});
+  return specs;
+}
+
+TEST(ChainSeries, InPiecesTheSameBitsAsAtOnceEachReportAPrefixOfTheRun) {
+  for (const ChainSeriesSpec& spec : streamedSpecs()) {
+    SCOPED_TRACE(testing::Message() << spec.chain.size() << " masses");
+    const ChainSeries once = chainSeries(spec);
+    ASSERT_EQ(once.run.contacts, spec.contacts);
+    std::vector<ChainSeries> reports;
+    std::vector<double> fractions;
+    // a report after every piece (of at least kMinChunkContacts contacts)
+    const ChainSeries streamed = chainSeries(
+        spec, {},
+        [&](const ChainSeries& sofar, double fraction) {
+          reports.push_back(sofar);
+          fractions.push_back(fraction);
+        },
+        1e-12);
+    expectSameRun(once, streamed);
+    ASSERT_GE(reports.size(), 2u);
+    for (std::size_t r = 0; r < reports.size(); ++r) {
+      const ChainSeries& sofar = reports[r];
+      ASSERT_LE(sofar.run.events.size(), once.run.events.size());
+      ASSERT_EQ(sofar.flights.size(), std::size_t(sofar.run.contacts));
+      for (std::size_t i = 0; i < sofar.run.events.size(); ++i) {
+        ASSERT_EQ(sofar.run.events[i].t, once.run.events[i].t) << "report " << r << ", event " << i;
+        ASSERT_EQ(sofar.run.events[i].u, once.run.events[i].u) << "report " << r << ", event " << i;
+      }
+      EXPECT_EQ(fractions[r], double(sofar.run.contacts) / double(spec.contacts));
+      if (r > 0) {
+        EXPECT_GE(sofar.run.events.size(), reports[r - 1].run.events.size());
+      }
+    }
+  }
+}
+
+TEST(ChainSeries, AContactDoubleCannotDecideIsRunAgainInAHigherPrecision) {
+  // mass 1 pressed one ulp past the gap with mass 2 on the stop: the force on mass 2 is within
+  // double's rounding (undecided); long double or binary128 decides it, from the same start
+  MassChain chain;
+  chain.masses = {1.0, 0.5};
+  chain.springs = {1.0, 0.5};
+  ChainState start{Eigen::Vector2d(std::nextafter(1.0, 2.0), 1.0), Eigen::Vector2d::Zero()};
+  const ChainRun inDoubleAlone = runChain(chain, start, 3);
+  ASSERT_EQ(inDoubleAlone.stop, ChainStop::Undecided);
+  const ChainSeriesSpec spec{chain, start, 3, 10.0, 200, 0, TrustMode::Auto};
+  const ChainSeries series = chainSeries(spec);
+  ASSERT_NE(series.precision, Precision::Double);
+  // said where the precision below ended, undecided
+  const BasicChainRun<long double> inLong = runChain(
+      chainCast<long double>(chain), BasicChainState<long double>{start.u.cast<long double>(), start.v.cast<long double>()}, 3);
+  const bool longDecides = inLong.stop != ChainStop::Undecided;
+  EXPECT_EQ(series.precision, longDecides ? Precision::Long : Precision::Quad);
+  EXPECT_EQ(series.undecidedAt, longDecides ? inDoubleAlone.tFinal : double(inLong.tFinal));
+  EXPECT_EQ(series.run.stop, ChainStop::ContactLimit);
+  EXPECT_EQ(series.run.contacts, 3);
+  // the run is that precision's own run, each number rounded once to double
+  const ChainRun expected =
+      series.precision == Precision::Long
+          ? inDouble(runChain(chainCast<long double>(chain),
+                              BasicChainState<long double>{start.u.cast<long double>(), start.v.cast<long double>()}, 3))
+          : inDouble(runChain(chainCast<Quad>(chain), BasicChainState<Quad>{start.u.cast<Quad>(), start.v.cast<Quad>()}, 3));
+  ASSERT_EQ(series.run.events.size(), expected.events.size());
+  for (std::size_t i = 0; i < expected.events.size(); ++i) {
+    EXPECT_EQ(series.run.events[i].t, expected.events[i].t);
+    EXPECT_EQ(series.run.events[i].type, expected.events[i].type);
+  }
+  EXPECT_EQ(series.grid.size(), 200u);  // the grid is the raised run's
+  EXPECT_NE(series.trust.verdict, Verdict::Unchecked);
+}
+
+TEST(ChainSeries, AStopEndsTheSeriesCancelled) {
+  const ChainSeriesSpec spec = streamedSpecs().front();
+  std::stop_source source;
+  int reports = 0;
+  const ChainSeries series = chainSeries(
+      spec, source.get_token(),
+      [&](const ChainSeries&, double) {
+        if (++reports == 2) source.request_stop();
+      },
+      1e-12);
+  EXPECT_EQ(reports, 2);
+  EXPECT_EQ(series.run.stop, ChainStop::Cancelled);
 }
 
 }  // namespace

@@ -115,6 +115,62 @@ TEST(ExperimentRunTest, aStopEndsItWithAFinalReport) {
 
 using testing::sameBits;
 
+TEST(ExperimentRunTest, anExperimentOfChainsRunsThemInTurnTheShownOneFirstAndMakesNoTwoMassRun) {
+  // three masses, stopped on mass 2 (inside), against a right wall; beside it the same start on
+  // the chain with its second spring 3 % stiffer
+  MassChain chain;
+  chain.masses = {0.7, 1.0, 0.4};
+  chain.springs = {1.0, 0.6, 1.5};
+  chain.rightSpring = 0.8;
+  chain.stopMass = 2;
+  chain.gap = 0.4;
+  ChainState start{Eigen::VectorXd::Zero(3), Eigen::VectorXd::Zero(3)};
+  start.v << 0.3, 0.9, -0.2;
+  MassChain other = chain;
+  other.springs[1] *= 1.03;
+  Spec spec;
+  spec.chains = {{chain, start, 250, 30.0, 400, 0, TrustMode::Auto}, {other, start, 250, 0, 0, 0, TrustMode::Off}};
+  Options options;
+  options.chunkSeconds = 1e-12;  // a report after every piece
+  std::vector<Update> reports;
+  const Update last = run(spec, {}, options, [&](const Update& update) { reports.push_back(update); });
+  ASSERT_TRUE(last.final && last.runDone);
+  EXPECT_FALSE(last.result);  // no two-mass run
+  ASSERT_EQ(last.chains.size(), 2u);
+  // each run is the series computed alone, to the bit
+  for (std::size_t i = 0; i < 2; ++i) {
+    const ChainSeries alone = chainSeries(spec.chains[i]);
+    const ChainSeries& shown = *last.chains[i];
+    ASSERT_EQ(shown.run.events.size(), alone.run.events.size());
+    for (std::size_t e = 0; e < alone.run.events.size(); ++e) {
+      ASSERT_EQ(shown.run.events[e].t, alone.run.events[e].t);
+      ASSERT_EQ(shown.run.events[e].u, alone.run.events[e].u);
+    }
+    EXPECT_EQ(shown.trust.stateError, alone.trust.stateError);
+    EXPECT_EQ(shown.grid.size(), alone.grid.size());
+  }
+  // partial reports of the first run carry it alone; then it whole (runDone) before the second
+  // one's; the progress never goes back
+  ASSERT_GE(reports.size(), 4u);
+  std::size_t firstWhole = reports.size();
+  double progress = 0;
+  for (std::size_t r = 0; r < reports.size(); ++r) {
+    const Update& update = reports[r];
+    EXPECT_FALSE(update.result);
+    EXPECT_GE(update.progress, progress);
+    progress = update.progress;
+    if (update.runDone && firstWhole == reports.size()) firstWhole = r;
+  }
+  ASSERT_LT(firstWhole, reports.size() - 1);
+  EXPECT_EQ(reports[firstWhole].chains.size(), 1u);
+  EXPECT_EQ(reports[firstWhole].chains.front()->run.contacts, 250);
+  EXPECT_EQ(reports[firstWhole + 1].chains.size(), 2u);
+  for (std::size_t r = 0; r < firstWhole; ++r) {
+    EXPECT_EQ(reports[r].chains.size(), 1u);
+    EXPECT_LE(reports[r].chains.front()->run.contacts, 250);
+  }
+}
+
 TEST(ExperimentRunTest, itsMapIsTheMapComputedWholeAndIsRemembered) {
   Spec spec = gloRun(0.5, -0.05, 10);
   MapSpec map;
