@@ -640,6 +640,33 @@ class ScenesTest : public QObject {
     }
   }
 
+  // a long run of N masses is drawn as it grows (issue 47): partial reports of the streamed run
+  // reach the plots before the final one, each a prefix of it, the status saying it computes
+  void longChainRunsAreDrawnAsTheyGrow() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("three-masses")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    Params params = m_window->params();
+    params.horizon = 300000;
+    m_window->setParams(params);
+    long partialContacts = -1;
+    QDeadlineTimer deadline(120000);
+    while (!deadline.hasExpired()) {
+      const SimUpdate* shown = m_window->displayed();
+      if (shown && shown->id == m_window->controller()->latestId() && !shown->final && !shown->chains.empty()) {
+        partialContacts = shown->chains.front()->run.contacts;
+        const CurveFigure& flights = figure(*m_window, PlotKind::ChainFlights);
+        QCOMPARE(qsizetype(flights.curve.size()), qsizetype(shown->chains.front()->flights.size()));
+        QVERIFY2(m_window->statusText().contains(QStringLiteral("computing")), qPrintable(m_window->statusText()));
+        break;
+      }
+      QTest::qWait(2);
+    }
+    QVERIFY2(partialContacts >= 0, "no partial run was drawn");
+    QVERIFY(partialContacts < 300000);
+    QVERIFY(waitForLatestFinal(*m_window, 120000));
+    QCOMPARE(shownChainRun(*m_window)->run.contacts, 300000L);
+  }
+
   // the animated chain: plays forward at its rate, steps from contact to contact, and its time
   // is the cursor of the trace and the phase portrait
   void chainAnimationPlaysStepsAndMovesTheCursors() {
