@@ -164,11 +164,11 @@ const std::vector<Command>& commands() {
          return runReportOrStability(true, parser, io, stop);
        },
        "the report runs every method, and every precision of the exact solver, itself"},
-      {"stability", {"out", "methods", "quick"}, false,
+      {"stability", kMassChain + QStringList{"gap", "state", "onepp", "perturb", "glo-weights", "out", "methods", "quick"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          return runReportOrStability(false, parser, io, stop);
        },
-       "it runs its own list of cases (see matrix.md)"},
+       "it runs its own list of cases (see matrix.md), or the cases of a chain given by --masses"},
       {"map", kChain + kStart + kMassChain + QStringList{"glo-weights", "precision", "contacts", "trust", "out", "x", "y", "threads", "shard", "picture"}, false,
        writesFiles(runMap), {}},
       {"merge", {"out"}, true,

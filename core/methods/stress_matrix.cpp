@@ -8,6 +8,7 @@
 
 #include "core/methods/scaled_run.h"
 #include "core/methods/work_precision.h"
+#include "core/orbits/chain_glo.h"
 #include "core/orbits/special_orbits.h"
 #include "core/orbits/starts.h"
 #include "core/solver/simulate.h"
@@ -175,6 +176,110 @@ std::vector<StressCase> stressCases(bool quick) {
   return cases;
 }
 
+namespace {
+
+// A row of the chain matrix: `chain` from `start` over kCasePeriods of its slowest periods, or
+// refused with why it cannot be formed.
+StressCase chainCase(std::string name, std::string description, const MassChain& chain, const ChainState& start) {
+  StressCase row{std::move(name), std::move(description), std::nullopt, {}, {}, {}, 0};
+  if (const auto problems = validate(chain); !problems.empty()) {
+    row.problem = describe(problems);
+    return row;
+  }
+  const Eigen::Index s = chain.stopped() - 1;
+  if (!(start.u[s] <= chain.gap)) {
+    row.problem = "its start is past the stop (u" + std::to_string(s + 1) + " > d)";
+    return row;
+  }
+  ChainTask task = prepared(ChainTask{chain, start, 0, {}});
+  task.tEnd = kCasePeriods * twoPi<double>() / task.prepared->slowest;
+  row.task = std::move(task);
+  return row;
+}
+
+// The chain with every length times `factor`: the gap and the start (the motion the same, scaled).
+StressCase scaledCase(const MassChain& chain, const ChainState& start, double factor) {
+  MassChain scaled = chain;
+  scaled.gap *= factor;
+  return chainCase("gap-" + number(factor), "every length times " + number(factor) + " (the gap and the start)",
+                   scaled, {start.u * factor, start.v * factor});
+}
+
+}  // namespace
+
+std::vector<StressCase> chainStressCases(const MassChain& chain, const ChainState& start,
+                                         const std::vector<double>& gloWeights, bool quick) {
+  std::vector<StressCase> cases;
+  const int n = chain.size();
+  const int stopped = chain.stopped();
+  const Eigen::Index s = stopped - 1;
+  cases.push_back(chainCase("given", std::to_string(n) + " masses, stop on mass " + std::to_string(stopped) +
+                                         ", from the start given",
+                            chain, start));
+  for (double factor : quick ? std::vector<double>{1e-6} : std::vector<double>{1e-6, 1e-12}) {
+    MassChain light = chain;
+    light.masses[std::size_t(s)] *= factor;
+    cases.push_back(chainCase("stopped-mass-x" + number(factor),
+                              "the stopped mass " + number(1 / factor) + " times lighter (springs as given: stiff)",
+                              light, start));
+  }
+  const std::size_t spring = n >= 2 ? 1 : 0;
+  for (double factor : quick ? std::vector<double>{1e6} : std::vector<double>{1e6, 1e-6}) {
+    MassChain detuned = chain;
+    detuned.springs[spring] *= factor;
+    cases.push_back(chainCase("spring-" + std::to_string(spring + 1) + "-x" + number(factor),
+                              "k" + std::to_string(spring + 1) + " times " + number(factor) + " (frequencies far apart)",
+                              detuned, start));
+  }
+  for (double factor : quick ? std::vector<double>{1e12} : std::vector<double>{1e-12, 1e12}) {
+    cases.push_back(scaledCase(chain, start, factor));
+  }
+  // near grazing: the grazing orbit of the weights (or the slowest mode that moves the stopped
+  // mass, alone) pushed off the stop along v_s by epsilon d w_N
+  std::vector<double> weights = gloWeights;
+  std::string whose = "the weights given";
+  if (weights.empty()) {
+    const ChainModes modes = chainModes(chain);
+    weights.assign(std::size_t(n), 0.0);
+    for (Eigen::Index j = n - 1; j >= 0; --j) {
+      if (!modes.nodeAtStop[std::size_t(j)]) {
+        weights[std::size_t(j)] = 1;
+        whose = "mode " + std::to_string(j + 1) + " alone";
+        break;
+      }
+    }
+  }
+  const ChainGloStart glo = chainGloStart(chain, weights);
+  const double slowest = chainModes(chain).omega.minCoeff();
+  for (double epsilon : quick ? std::vector<double>{1e-15} : std::vector<double>{1e-15, 1e-9, 1e-3}) {
+    const std::string name = "push-" + number(epsilon);
+    const std::string description =
+        "the grazing orbit of " + whose + " pushed off the stop by " + number(epsilon) + " d w_N: near grazing";
+    if (glo.problem != GloStartProblem::None) {
+      StressCase refused{name, description, std::nullopt, "its weights make no grazing orbit", {}, {}, 0};
+      cases.push_back(refused);
+      continue;
+    }
+    ChainState pushed = glo.state;
+    pushed.v[s] -= epsilon * chain.gap * slowest;
+    cases.push_back(chainCase(name, description, chain, pushed));
+  }
+  MassChain walled = chain;
+  walled.rightSpring = chain.rightSpring > 0 ? 0.0 : chain.springs.front();
+  cases.push_back(chainCase(chain.rightSpring > 0 ? "no-right-wall" : "right-wall",
+                            chain.rightSpring > 0 ? "the right wall taken away"
+                                                  : "a right wall added (k = k1)",
+                            walled, start));
+  if (n >= 3 && !quick) {
+    MassChain inside = chain;
+    inside.stopMass = (n + 1) / 2 == stopped ? (n + 1) / 2 + 1 : (n + 1) / 2;
+    cases.push_back(chainCase("stop-on-" + std::to_string(inside.stopMass),
+                              "the stop moved to mass " + std::to_string(inside.stopMass) + " (inside the chain)",
+                              inside, start));
+  }
+  return cases;
+}
+
 MethodSetting standardSetting(MethodKind kind, double period, double k1,
                               std::optional<double> penaltyStiffness) {
   switch (kind) {
@@ -211,12 +316,8 @@ CellVerdict verdictOf(RunStatus status) {
   return CellVerdict::Failed;
 }
 
-void judge(StressCell& cell, const MethodRun& run, double tolerance) {
-  cell.verdict = verdictOf(run.status);
-  if (cell.verdict != CellVerdict::Ok) {
-    cell.reason = run.reason.empty() ? std::string(toString(run.status)) : run.reason;
-    return;
-  }
+// The verdict of a run that completed: ok, or inaccurate with every reason.
+void judge(StressCell& cell, double tolerance) {
   std::vector<std::string> problems;
   const Errors& e = cell.errors;
   if (!(e.state <= tolerance)) problems.push_back("state error " + number(e.state) + " > " + number(tolerance));
@@ -232,7 +333,7 @@ void judge(StressCell& cell, const MethodRun& run, double tolerance) {
 void runLong(const StressCase& row, const std::vector<MethodKind>& methods,
              const WorkBudget& budget, const std::function<void(const StressCell&)>& onCell,
              std::vector<LongRunMark>* marks, std::stop_token stop) {
-  const Task& task = *row.task;
+  const Task& task = std::get<Task>(*row.task);
   for (MethodKind kind : methods) {
     StressCell cell;
     cell.caseName = row.name;
@@ -298,48 +399,11 @@ void runLong(const StressCase& row, const std::vector<MethodKind>& methods,
 
 }  // namespace
 
-CaseHorizon runStressCase(const StressCase& row, const std::vector<MethodKind>& methods,
-                             const WorkBudget& budget,
-                             const std::function<void(const StressCell&)>& onCell,
-                             std::vector<LongRunMark>* longRun, std::stop_token stop) {
-  CaseHorizon horizon;
-  auto refuseAll = [&](const std::string& reason) {
-    for (MethodKind kind : methods) {
-      StressCell cell;
-      cell.caseName = row.name;
-      cell.method = kind;
-      cell.verdict = CellVerdict::Refused;
-      cell.reason = reason;
-      cell.errors.state = cell.errors.contactTime = cell.errors.impactSpeed =
-          cell.errors.energyDrift = std::numeric_limits<double>::quiet_NaN();
-      if (onCell) onCell(cell);
-    }
-  };
-  if (!row.task) {
-    refuseAll("the case cannot be formed: " + row.problem);
-    return horizon;
-  }
-  const Task& task = *row.task;
-  horizon.tEnd = task.tEnd;
-  horizon.period = twoPi<double>() / makeChain(task.model).chain->omegaSlow;
-  if (row.longRunContacts > 0) {
-    runLong(row, methods, budget, onCell, longRun, stop);
-    return horizon;
-  }
-  Task withEvents = task;
-  withEvents.needs.events = true;
-  const ComparisonEnd end = comparisonEnd(task, stop);
-  const Trust& trust = end.trust;
-  withEvents.tEnd = end.tEnd;
-  horizon.tEnd = end.tEnd;
-  horizon.shortened = end.shortened;
-  horizon.horizon = end.horizon;
-  horizon.estimatedError = trust.stateError;
-  WorkBudget referenceBudget = budget;
-  referenceBudget.maxSeconds = std::max(budget.maxSeconds, 60.0);
-  const Reference reference = makeReference(withEvents, referenceBudget, stop);
-  // the trust estimate is relative to the motion's own size, the errors here to d and w1 d
-  // (docs/model.md section 8): in the same units, the tolerance grows with the motion's amplitude
+namespace {
+
+// The largest size the reference meets, in the units of the errors (X = d, V = w1 X): the trust
+// estimate is relative to the motion's own size.
+double amplitudeOf(const Reference& reference) {
   double amplitude = 1;
   auto widen = [&](const State& x) {
     amplitude = std::max({amplitude, std::abs(x.u1) / reference.positionScale,
@@ -349,14 +413,47 @@ CaseHorizon runStressCase(const StressCase& row, const std::vector<MethodKind>& 
   };
   for (const Event& event : reference.run.result.events) widen(event.before);
   widen(reference.run.result.final);
+  return amplitude;
+}
+double amplitudeOf(const ChainReference& reference) {
+  double amplitude = 1;
+  auto widen = [&](const ChainVector<double>& u, const ChainVector<double>& v) {
+    amplitude = std::max({amplitude, u.cwiseAbs().maxCoeff() / reference.positionScale,
+                          v.cwiseAbs().maxCoeff() / reference.velocityScale});
+  };
+  for (const ChainEvent& event : reference.run.result.events) widen(event.u, event.vBefore);
+  widen(reference.run.result.final.u, reference.run.result.final.v);
+  return amplitude;
+}
+
+double firstSpring(const Task& task) { return task.model.k1; }
+double firstSpring(const ChainTask& task) { return task.chain.springs.front(); }
+
+template <typename T>
+void runCase(const StressCase& row, const T& task, const std::vector<MethodKind>& methods,
+             const WorkBudget& budget, const std::function<void(const StressCell&)>& onCell,
+             CaseHorizon& horizon, std::stop_token stop) {
+  T withEvents = task;
+  if constexpr (std::is_same_v<T, Task>) withEvents.needs.events = true;
+  const ComparisonEnd end = comparisonEnd(task, stop);
+  const Trust& trust = end.trust;
+  withEvents.tEnd = end.tEnd;
+  horizon.tEnd = end.tEnd;
+  horizon.shortened = end.shortened;
+  horizon.horizon = end.horizon;
+  horizon.estimatedError = trust.stateError;
+  WorkBudget referenceBudget = budget;
+  referenceBudget.maxSeconds = std::max(budget.maxSeconds, 60.0);
+  const auto reference = makeReference(withEvents, referenceBudget, stop);
+  horizon.period = reference.period;
+  // in the errors' units the tolerance grows with the motion's amplitude
   const double exactTolerance =
-      std::max(kExactTolerance, kEstimateMargin * trust.stateError * amplitude);
-  const double period = reference.period;
+      std::max(kExactTolerance, kEstimateMargin * trust.stateError * amplitudeOf(reference));
   for (MethodKind kind : methods) {
     StressCell cell;
     cell.caseName = row.name;
     cell.method = kind;
-    cell.setting = standardSetting(kind, period, task.model.k1, row.penaltyStiffness);
+    cell.setting = standardSetting(kind, reference.period, firstSpring(task), row.penaltyStiffness);
     if (row.only && *row.only != kind) {
       cell.verdict = CellVerdict::Refused;
       cell.reason = "not applicable: this row varies the penalty stiffness only (the other "
@@ -366,16 +463,53 @@ CaseHorizon runStressCase(const StressCase& row, const std::vector<MethodKind>& 
       if (onCell) onCell(cell);
       continue;
     }
-    const MethodRun run = runMethod(withEvents, cell.setting, budget, stop);
+    const auto run = runMethod(withEvents, cell.setting, budget, stop);
     cell.seconds = run.seconds;
     cell.errors = compare(reference, run);
     if (reference.run.status != RunStatus::Completed) {
       cell.verdict = CellVerdict::Refused;
       cell.reason = "not judged: no binary128 reference (" + reference.run.reason + ")";
     } else {
-      judge(cell, run, kind == MethodKind::Exact ? exactTolerance : kStabilityTolerance);
+      cell.verdict = verdictOf(run.status);
+      if (cell.verdict != CellVerdict::Ok) {
+        cell.reason = run.reason.empty() ? std::string(toString(run.status)) : run.reason;
+      } else {
+        judge(cell, kind == MethodKind::Exact ? exactTolerance : kStabilityTolerance);
+      }
     }
     if (onCell) onCell(cell);
+  }
+}
+
+}  // namespace
+
+CaseHorizon runStressCase(const StressCase& row, const std::vector<MethodKind>& methods,
+                          const WorkBudget& budget, const std::function<void(const StressCell&)>& onCell,
+                          std::vector<LongRunMark>* longRun, std::stop_token stop) {
+  CaseHorizon horizon;
+  if (!row.task) {
+    for (MethodKind kind : methods) {
+      StressCell cell;
+      cell.caseName = row.name;
+      cell.method = kind;
+      cell.verdict = CellVerdict::Refused;
+      cell.reason = "the case cannot be formed: " + row.problem;
+      cell.errors.state = cell.errors.contactTime = cell.errors.impactSpeed =
+          cell.errors.energyDrift = std::numeric_limits<double>::quiet_NaN();
+      if (onCell) onCell(cell);
+    }
+    return horizon;
+  }
+  if (const Task* task = std::get_if<Task>(&*row.task)) {
+    horizon.tEnd = task->tEnd;
+    horizon.period = twoPi<double>() / makeChain(task->model).chain->omegaSlow;
+    if (row.longRunContacts > 0) {
+      runLong(row, methods, budget, onCell, longRun, stop);
+      return horizon;
+    }
+    runCase(row, *task, methods, budget, onCell, horizon, stop);
+  } else {
+    runCase(row, std::get<ChainTask>(*row.task), methods, budget, onCell, horizon, stop);
   }
   return horizon;
 }

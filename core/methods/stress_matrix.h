@@ -6,6 +6,7 @@
 #include <optional>
 #include <stop_token>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/methods/compare.h"
@@ -16,9 +17,9 @@ namespace grazelab::core::methods {
 struct StressCase {
   std::string name;         ///< e.g. "mass-ratio-1e-12-upper"
   std::string description;  ///< one line for the table
-  /// The problem; nothing when it cannot be formed (then `problem` says why, and every cell
-  /// is refused with that reason).
-  std::optional<Task> task;
+  /// The problem, on the note's chain or on any chain of N masses; nothing when it cannot be
+  /// formed (then `problem` says why, and every cell is refused with that reason).
+  std::optional<std::variant<Task, ChainTask>> task;
   std::string problem;
   /// Only this method runs here (the penalty stiffness rows); the others are refused as not
   /// applicable.
@@ -64,6 +65,17 @@ inline constexpr double kEstimateMargin = 10;
 
 /// The cases of the matrix. `quick`: a subset that runs in seconds (for ctest).
 std::vector<StressCase> stressCases(bool quick);
+
+/// The matrix of a chain of N masses (validate(chain) empty) from `start`: the chain as given,
+/// then its stiff and extreme variants, each over kCasePeriods slowest periods: the stopped mass
+/// 1e6 and 1e12 times lighter, the second spring (the first for one mass) 1e6 times stiffer and
+/// softer, every length 1e-12 and 1e12 times (start included), its grazing orbit of `gloWeights`
+/// (empty: the slowest mode that moves the stopped mass alone) pushed off the stop by 1e-15 ...
+/// 1e-3 times d w_N, a right wall added (k = k_1) or taken away, the stop moved to the middle
+/// mass (N >= 3). A variant whose start is past its stop, or whose weights make no grazing orbit,
+/// is a row refused with its reason. `quick`: one of each.
+std::vector<StressCase> chainStressCases(const MassChain& chain, const ChainState& start,
+                                         const std::vector<double>& gloWeights, bool quick);
 
 /// The standard setting of each method in the matrix, for a problem of slow period T2 and
 /// spring k1: h = T2 / 1000, rtol = 1e-8, k_c = 1e8 k1 (rtol 1e-10), exact in double.

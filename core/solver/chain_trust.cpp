@@ -86,9 +86,12 @@ template <typename S>
 void ChainTrustCheck<S>::observe(const BasicChainEvent<S>& a) {
   if (m_mode == TrustMode::Off || m_interrupted || m_passed) return;
   const std::size_t k = m_observed++;
-  if (k >= m_shadow.events.size()) return;  // past the shadow: its end is judged in finish()
-  const BasicChainEvent<H>& b = m_shadow.events[k];
   const double t = toDouble(a.t);
+  if (k >= m_shadow.events.size()) {  // past the shadow: its end is judged in finish()
+    if (m_firstPastShadow < 0) m_firstPastShadow = t;
+    return;
+  }
+  const BasicChainEvent<H>& b = m_shadow.events[k];
   if (a.type != b.type) {
     m_trust.reason = "the shadow run in " + precisionName<H>() + " meets another event at t = " + formatScalar(t) +
                      " (" + std::string(toString(a.type)) + " against " + std::string(toString(b.type)) + ")";
@@ -129,12 +132,25 @@ Trust ChainTrustCheck<S>::finish(const BasicChainRun<S>& run) const {
   const bool capped = m_cap > 0 && run.contacts > m_cap;
   bool passed = m_passed;
   double passedAt = m_passedAt;
-  if (!passed && !capped && m_observed != m_shadow.events.size() && run.stop == ChainStop::ContactLimit) {
-    passed = true;
-    passedAt = toDouble(run.tFinal);
-    trust.reason = "the shadow run in " + precisionName<H>() + " ends with another number of events";
-  }
   const double tFinal = toDouble(run.tFinal);
+  // where the shadow itself could not decide a contact, nothing past it is confirmed: a run that
+  // went on (deciding what the higher precision could not) is judged there, whatever it counted
+  const double shadowEnd = toDouble(m_shadow.tFinal * m_time);
+  if (!passed && m_shadow.stop == ChainStop::Undecided && tFinal > shadowEnd) {
+    passed = true;
+    passedAt = shadowEnd;
+    trust.reason = "the shadow run in " + precisionName<H>() + " cannot decide the contact at t = " +
+                   formatScalar(shadowEnd) + ": the run past it is not confirmed";
+  }
+  // another number of events over the span both ran: judged at the first one without its match
+  if (!passed && !capped && m_observed != m_shadow.events.size() &&
+      (run.stop == ChainStop::ContactLimit || run.stop == ChainStop::TimeLimit)) {
+    passed = true;
+    passedAt = m_observed > m_shadow.events.size() ? m_firstPastShadow
+                                                   : toDouble(m_shadow.events[m_observed].t * m_time);
+    trust.reason = "the shadow run in " + precisionName<H>() + " ends with another number of events (" +
+                   std::to_string(m_shadow.events.size()) + " against " + std::to_string(m_observed) + ")";
+  }
   trust.horizonMethod = "shadow run in " + precisionName<H>() + (m_scaled ? " (chain scaled 3x)" : "") + "; ";
   if (passed) {
     trust.horizon = passedAt;

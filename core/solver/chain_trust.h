@@ -90,6 +90,7 @@ class ChainTrustCheck {
   double m_firstError = 0, m_firstTime = 0, m_lastError = 0, m_lastTime = 0;
   bool m_passed = false;
   double m_passedAt = 0;
+  double m_firstPastShadow = -1;  // the time of the run's first event past the shadow's last (-1: none)
   Trust m_trust;
 };
 

@@ -120,5 +120,36 @@ else
   fail "stability --quick failed: $(tail -3 "$err")"
 fi
 
+# stability --masses: the matrix of a chain the note does not have (four masses stopped on the
+# second, from a state): the chain and its variants, every cell with a verdict; the exact solver
+# ok where its estimate is not contradicted; every lengths scaled by 1e12 the same errors (the
+# motion is scale-free); refusals
+if "$cli" stability --quick --masses 1,0.6,1.4,0.9 --springs 1,2,0.8,1.1 --stop-mass 2 --gap 0.5 \
+    --state 0,0.3,0,-0.2,0.2,0.8,-0.1,0 --out "$dir/stability4" 2>"$err"; then
+  python3 - "$dir/stability4/matrix.csv" <<'PY' || fail "stability --masses: matrix.csv"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+cases = sorted({r["case"] for r in rows})
+assert cases == sorted(["given", "stopped-mass-x1e-06", "spring-2-x1e+06", "gap-1e+12", "push-1e-15", "right-wall"]), cases
+assert len(rows) == 6 * 8, len(rows)
+cell = {(r["case"], r["method"]): r for r in rows}
+for r in rows:
+    assert r["verdict"] in {"ok", "inaccurate", "refused", "budget", "failed"}, r
+    assert (r["verdict"] == "ok") == (r["reason"].strip('"') == ""), r
+for case in ("given", "gap-1e+12", "right-wall", "spring-2-x1e+06"):
+    assert cell[(case, "exact")]["verdict"] == "ok", cell[(case, "exact")]
+# (fixed steps: the same steps to rounding; an adaptive step size feels the rounding: 25 %)
+for method, within in (("moreau-jean", 1e-3), ("schatzman-paoli", 1e-3), ("dopri5-events", 0.25)):
+    a, b = cell[("given", method)], cell[("gap-1e+12", method)]
+    assert a["missed_contacts"] == b["missed_contacts"], (a, b)
+    assert abs(float(a["state_error"]) - float(b["state_error"])) <= within * float(a["state_error"]), (a, b)
+PY
+  grep -q "4 masses, stop on mass 2" "$dir/stability4/matrix.md" || fail "stability --masses: the chain is not described"
+else
+  fail "stability --quick --masses failed: $(tail -3 "$err")"
+fi
+EXPECT_WORD="--masses" expect_invalid stability --quick --out "$dir/x" --springs 1,1
+EXPECT_WORD="past the stop" expect_invalid stability --quick --out "$dir/x" --masses 1,1,1 --springs 1,1,1 --state 0,0,2,0,0,0
+
 if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
 echo "all report and stability checks passed"

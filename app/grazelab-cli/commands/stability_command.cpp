@@ -9,6 +9,9 @@
 
 #include "core/methods/stress_matrix.h"
 #include "exit_codes.h"
+#include "io/chain_start.h"
+#include "io/cli_input.h"
+#include "io/option_values.h"
 #include "commands/report_command.h"
 #include "commands/report_support.h"
 
@@ -40,6 +43,28 @@ QString settingText(const core::methods::MethodSetting& setting) {
   return QString::fromUtf8(p.data(), qsizetype(p.size())) + "=" + QString::number(setting.value, 'g', 3);
 }
 
+// The matrix of the chain given by --masses (its springs, wall, stop and gap) from its start
+// (--state, --glo-weights or --onepp, and --perturb): the chain and its stiff and extreme
+// variants. Nothing, with `error`, when the chain or its start is refused.
+std::optional<std::vector<core::methods::StressCase>> chainCases(const QCommandLineParser& parser, bool quick,
+                                                                  std::stop_token stop, QString& error) {
+  const OptionValues options(parser);
+  if (!noTwoMassStart(options, error)) return std::nullopt;
+  const Parsed<MassChainInput> parsed = parseMassChain(options, stop);
+  if (!parsed.value) {
+    error = parsed.error;
+    return std::nullopt;
+  }
+  const core::MassChain& chain = parsed.value->chain;
+  const auto start = chainStart<double>(options, chain, error);
+  if (!start) return std::nullopt;
+  std::vector<double> weights;  // chainStart has read and checked them
+  if (options.isSet("glo-weights")) {
+    for (const QString& part : options.value("glo-weights").split(',')) weights.push_back(part.toDouble());
+  }
+  return core::methods::chainStressCases(chain, *start, weights, quick);
+}
+
 }  // namespace
 
 int runStability(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
@@ -53,7 +78,21 @@ int runStability(const QCommandLineParser& parser, const Io& io, std::stop_token
   budget.maxSeconds = quick ? 0.5 : 20;
   const auto started = std::chrono::steady_clock::now();
 
-  const std::vector<StressCase> cases = stressCases(quick);
+  std::vector<StressCase> cases;
+  if (parser.isSet("masses")) {
+    auto ofTheChain = chainCases(parser, quick, stop, error);
+    if (!ofTheChain) return stop.stop_requested() ? kExitInterrupted : kExitInvalidInput;
+    cases = std::move(*ofTheChain);
+  } else {
+    for (const char* option : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch", "gap", "state", "onepp",
+                               "perturb", "glo-weights"}) {
+      if (parser.isSet(option)) {
+        error = QStringLiteral("--%1 describes a chain given by --masses (without it, stability runs its own cases)").arg(option);
+        return kExitInvalidInput;
+      }
+    }
+    cases = stressCases(quick);
+  }
   std::vector<StressCell> cells;
   std::vector<LongRunMark> marks;
   std::map<std::string, CaseHorizon> horizons;
@@ -84,9 +123,10 @@ int runStability(const QCommandLineParser& parser, const Io& io, std::stop_token
   }
 
   QString md = "# GrazeLab stability matrix\n\n";
-  md += QStringLiteral("Written by %1%2 in %3. Each case runs %4 slow periods T2, or up to the "
+  md += QStringLiteral("Written by %1%2 in %3. Each case runs %4 slowest periods T2, or up to the "
                        "predictability horizon of its start when that comes first (the long run "
-                       "excepted), with every method at its standard setting: h = T2 / 1000, "
+                       "excepted), with every method at its standard setting: h = T2 / 1000 (T2: "
+                       "the slowest mode's period of the case's chain), "
                        "rtol = 1e-8, penalty k_c = 1e8 k1 (CVODE rtol 1e-10), the exact solver "
                        "in double; errors against the exact solver in binary128. A cell is ok "
                        "when the state error at the end and the contact-time error (/ T2) are at "

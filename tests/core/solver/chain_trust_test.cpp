@@ -6,6 +6,8 @@
 // their scales before it, not after; the same run gets the same estimate; off is unchecked.
 #include "core/solver/chain_trust.h"
 
+#include "core/orbits/chain_glo.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -59,6 +61,30 @@ TEST(ChainTrust, TheHorizonOfAChaoticRunIsWhereItPartsFromBinary128) {
 
 // auto shadows a long run's first contacts only (a number fixed by the precision), full all of
 // them; both agree on a periodic run, and auto's horizon stays within twice the time it compared
+TEST(ChainTrust, ARunPastWhereItsShadowCannotDecideIsNotConfirmed) {
+  // four masses stopped on the second, on the grazing orbit of their slowest mode pushed off the
+  // stop by 1.8e-16 (1e-15 d w_4): double decides grazings at every return, long double cannot
+  // decide the first, binary128 finds impacts instead. The double run must not read "ok" (its
+  // shadow compared nothing): it is unreliable from where the shadow stopped
+  MassChain chain;
+  chain.masses = {1.0, 0.6, 1.4, 0.9};
+  chain.springs = {1.0, 2.0, 0.8, 1.1};
+  chain.stopMass = 2;
+  chain.gap = 0.5;
+  ChainState start = chainGloStart(chain, {0, 0, 0, 1}).state;
+  start.v[1] -= 1e-15 * chain.gap * chainModes(chain).omega.minCoeff();
+  const ChainRun run = runChain(chain, start, 100000, 346.0);
+  ASSERT_GT(run.events.size(), 0u);
+  const Trust trust = chainTrust(chain, start, run, 100000, 346.0, TrustMode::Full);
+  EXPECT_EQ(trust.verdict, Verdict::Unreliable) << trust.reason;
+  EXPECT_TRUE(trust.horizonObserved);
+  EXPECT_LE(trust.horizon, run.events.front().t) << trust.reason;
+  // and binary128 decides otherwise: the run in double was indeed not to be trusted
+  const BasicChainRun<Quad> exact =
+      runChain(chainCast<Quad>(chain), BasicChainState<Quad>{start.u.cast<Quad>(), start.v.cast<Quad>()}, 100000, Quad(346));
+  EXPECT_NE(exact.events.size(), run.events.size());
+}
+
 TEST(ChainTrust, AutoShadowsTheFirstContactsOfALongRun) {
   // one mass bouncing on its stop: periodic, its errors grow slowly
   const BasicMassChain<long double> chain{{2.0L}, {3.0L}, 0, 0, 0.5L};
