@@ -177,9 +177,8 @@ Update runChains(const Spec& spec, std::stop_token stop, const Options& options,
                  const std::function<void(const Update&)>& report) {
   const double count = double(spec.chains.size());
   ChainRuns done;
-  const auto precisionOf = [](const ChainSeries& series) {
-    return series.precision == Precision::Double ? 0 : series.precision == Precision::Long ? 1 : 2;
-  };
+  // Update::attempt counts as Precision does: 0 double, 1 long double, 2 binary128
+  const auto precisionOf = [](const ChainSeries& series) { return int(series.precision); };
   Update last;
   for (std::size_t i = 0; i < spec.chains.size() && !stop.stop_requested(); ++i) {
     const auto partial = [&](const ChainSeries& sofar, double fraction) {

@@ -236,10 +236,10 @@ std::vector<StressCase> chainStressCases(const MassChain& chain, const ChainStat
   }
   // near grazing: the grazing orbit of the weights (or the slowest mode that moves the stopped
   // mass, alone) pushed off the stop along v_s by epsilon d w_N
+  const ChainModes modes = chainModes(chain);
   std::vector<double> weights = gloWeights;
   std::string whose = "the weights given";
   if (weights.empty()) {
-    const ChainModes modes = chainModes(chain);
     weights.assign(std::size_t(n), 0.0);
     for (Eigen::Index j = n - 1; j >= 0; --j) {
       if (!modes.nodeAtStop[std::size_t(j)]) {
@@ -250,7 +250,7 @@ std::vector<StressCase> chainStressCases(const MassChain& chain, const ChainStat
     }
   }
   const ChainGloStart glo = chainGloStart(chain, weights);
-  const double slowest = chainModes(chain).omega.minCoeff();
+  const double slowest = modes.omega.minCoeff();
   for (double epsilon : quick ? std::vector<double>{1e-15} : std::vector<double>{1e-15, 1e-9, 1e-3}) {
     const std::string name = "push-" + number(epsilon);
     const std::string description =
