@@ -63,6 +63,10 @@ BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& c
     case ChainContactKind::Touch:
       orbit.refusal = contact.t < T - tolerance ? OnePeriodicRefusal::ReturnsEarly : OnePeriodicRefusal::NotDecided;
       break;
+    case ChainContactKind::Unresolved:
+      // a top within rounding of the stop: an early touch or a near miss, not told apart
+      orbit.refusal = OnePeriodicRefusal::NotDecided;
+      break;
     case ChainContactKind::None:
     case ChainContactKind::Budget:
       orbit.refusal = OnePeriodicRefusal::NeverReturns;

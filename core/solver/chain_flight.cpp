@@ -116,7 +116,12 @@ BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const B
   const BasicFirstZero<S> zero = firstZero<S>(distance, dynamics.period, horizon, maxWindows, leaving);
   switch (zero.kind) {
     case ZeroKind::Crossing: return {ChainContactKind::Impact, zero.t};
-    case ZeroKind::Touch: return {ChainContactKind::Touch, zero.t};
+    case ZeroKind::Touch: {
+      // exact only as the periodic return of a start at rest on the stop (a release's too): the
+      // state at T is the start's again, bit for bit, in a chain whose frequencies are exact multiples of w0
+      const bool periodicReturn = dynamics.period > 0 && zero.t == dynamics.period && flight.atRest;
+      return {periodicReturn ? ChainContactKind::Touch : ChainContactKind::Unresolved, zero.t};
+    }
     case ZeroKind::None: return {ChainContactKind::None, zero.t};
     case ZeroKind::Budget: break;
   }

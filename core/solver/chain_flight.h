@@ -77,7 +77,11 @@ void stateInto(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>&
 /// How a flight first meets the stop.
 enum class ChainContactKind {
   Impact,     ///< mass s crosses u_s = d moving into the stop
-  Touch,      ///< u_s reaches d with v_s = 0 within what the precision resolves (a grazing contact)
+  Touch,      ///< u_s returns to d with v_s = 0 exactly: a start at rest on the stop (or released
+              ///< there) coming back at T, the period of a commensurate chain's every free motion
+  Unresolved,  ///< u_s comes within rounding of d while v_s is within rounding of 0: a grazing, a
+               ///< slow impact and a near miss all fit the computed flight (or, at t = 0, a start on
+               ///< the stop not seen to leave it); decided one precision up
   None,       ///< never: a commensurate chain's flight below the stop for a whole period
   Budget,     ///< not within the search's horizon or window budget (a non-commensurate chain)
 };
@@ -91,8 +95,10 @@ using ChainContact = BasicChainContact<double>;
 
 /// The first contact of mass s with the stop after the flight's start: the first zero of
 /// f(t) = u_s(t) - d by firstZero's certified search (core/solver/sinusoid_zero.h), so that a
-/// touch (an even-multiplicity zero no sign-change method sees) is never missed, only possibly
-/// called a touch when two crossings lie closer than double resolves. A flight starting on the
+/// touch (an even-multiplicity zero no sign-change method sees) is never missed. A touch is only
+/// called one where it is exact (the periodic return of a start at rest on the stop); any other
+/// top within rounding of the stop is Unresolved, never taken for a grazing: the precision cannot
+/// tell it from two crossings closer than it resolves (an impact) or a miss. A flight starting on the
 /// stop leaves it by its velocity (or, at v_s = 0, its acceleration; after a release, given as
 /// `leaving`, its third derivative, or its fourth when the third is 0 too). Commensurate chains are searched over one period (a
 /// contact comes by T); others up to `horizon` or `maxWindows` windows.

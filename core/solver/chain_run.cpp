@@ -291,9 +291,10 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
       samplePiece(t, S(t + contact.t), true, flightAt);
       return finish(ChainStop::SearchBudget, state, t);
     }
-    if (contact.kind == ChainContactKind::Touch && contact.t == 0) {
-      // a flight that cannot be seen to leave the stop it starts on (neither its velocity nor
-      // its acceleration takes it away, within rounding, and no force presses it on)
+    if (contact.kind == ChainContactKind::Unresolved) {
+      // a top within rounding of the stop (or, at 0, a flight not seen to leave the stop it starts
+      // on): a grazing, a slow impact and a near miss differ there by less than S resolves, so
+      // none is recorded; the run ends at the flight's start, decided one precision up
       return finish(ChainStop::Undecided, state, t);
     }
     if (contact.kind == ChainContactKind::Touch && flightLeaving && flightLeaving->order == 4 &&

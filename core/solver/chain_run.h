@@ -34,8 +34,10 @@ enum class ChainStop {
   TimeLimit,         ///< `tEnd` reached
   NoFurtherContact,  ///< a commensurate chain's flight that stays below the stop for a period:
                      ///< linear forever
-  Undecided,         ///< at rest on the stop with no force either way within rounding, or held
-                     ///< there by a force that comes back to 0 without being seen to change sign
+  Undecided,         ///< at rest on the stop with no force either way within rounding, held
+                     ///< there by a force that comes back to 0 without being seen to change
+                     ///< sign, or a flight whose top comes within rounding of the stop (its
+                     ///< start is the run's final state)
   SearchBudget,      ///< no contact (or release) decided within the search's horizon and budget
   Cancelled,         ///< the stop token
 };

@@ -71,9 +71,15 @@ ChainTrustCheck<S>::ChainTrustCheck(const ChainShadow<S>& shadow, const BasicCha
     m_trust.reason = "the estimate was interrupted";
     return;
   }
-  // the scales: the largest |u_i| and |v_i| at the shadow's events (the gap at least)
+  // the scales: the largest |u_i| and |v_i| at the shadow's events, the gap at least and the
+  // largest speed the motion's energy allows (sqrt(2 E / m_i)) at least: a grazing orbit meets
+  // the stop at rest, its velocities there zero but for rounding, which must not be the scale
+  // its rounding is measured against (it read "unreliable" on exactly periodic orbits)
   m_uScale = shadow.gap;
-  double vScale = 0;
+  using std::sqrt;
+  const BasicMassChain<H>& numbers = shadow.ready.numbers;
+  const H lightest = *std::min_element(numbers.masses.begin(), numbers.masses.end());
+  double vScale = toDouble(sqrt(2 * chainEnergy(numbers, shadowStart) / lightest) / (m_length * m_time));
   for (const BasicChainEvent<H>& event : m_shadow.events) {
     m_uScale = std::max(m_uScale, toDouble(event.u.cwiseAbs().maxCoeff() / m_length));
     vScale = std::max(vScale, toDouble(event.vBefore.cwiseAbs().maxCoeff() / (m_length * m_time)));

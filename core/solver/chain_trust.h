@@ -17,7 +17,7 @@ namespace grazelab::core {
 /// every rounding and not the motion), compared event by event. The time error is the largest
 /// difference of an event's time, over the slowest period; the state error the largest of the
 /// displacements' and velocities' differences over their scales (the largest sizes met at the
-/// events), at each event. The horizon is where that error first passes kHorizonTolerance (an
+/// events; the gap and the largest speed the energy allows at least), at each event. The horizon is where that error first passes kHorizonTolerance (an
 /// event of another type or a missing one counts as passing it): observed when the shadow shows
 /// it, else extrapolated from the error's growth between the first and the last event as if
 /// exponential, at most twice the run's time, so that the same run gets the same figure. Ok below
@@ -62,7 +62,8 @@ Trust chainTrust(const BasicMassChain<S>& chain, const BasicChainState<S>& start
 /// chainTrust for a run whose events stream (a ChainEventSink): the shadow is run first and
 /// held (Auto: its first chainShadowContacts<S>() contacts at most; Full: all of them), each of
 /// the run's events is compared as it comes, and the estimate is made when the run has ended.
-/// The scales are the largest sizes met at the shadow's events (the gap at least).
+/// The scales are the largest sizes met at the shadow's events (the gap, and the largest speed
+/// the energy allows, at least).
 template <typename S>
 class ChainTrustCheck {
  public:

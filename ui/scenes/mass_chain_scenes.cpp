@@ -66,8 +66,8 @@ QString stopInWords(core::ChainStop stop) {
       return tr("no further contact (the flight stays below the stop)");
     case core::ChainStop::Undecided:
       return tr(
-          "undecided: a contact within double's rounding (grazelab-cli simulate --precision auto "
-          "decides it in a higher precision)");
+          "undecided: a contact within the rounding of binary128 too (a top of the stopped mass "
+          "at the stop, or at rest there with no force either way)");
     case core::ChainStop::SearchBudget:
       return tr("the contact search's budget: no contact decided within 1000 of the slowest "
                 "periods (not commensurate: no period bounds the next one)");

@@ -102,15 +102,19 @@ std::string stopName(core::ChainStop stop) {
   return "unknown";
 }
 
-std::string stopMessage(core::ChainStop stop) {
+// `widest`: the run is in binary128, the last precision there is to raise it to
+std::string stopMessage(core::ChainStop stop, bool widest) {
   switch (stop) {
     case core::ChainStop::NoFurtherContact:
       return "the frequencies are commensurate and the flight stays below the stop for a whole period: "
              "linear forever";
     case core::ChainStop::Undecided:
-      return "the stopped mass rests on the stop with no force either way within the precision's rounding "
-             "(or, held there, its force comes back to zero without a change of sign it can see): --precision "
-             "auto raises the run until it is decided";
+      return "a contact the precision cannot decide: the stopped mass's top comes within rounding of the stop "
+             "(a grazing, a slow impact and a miss all fit; the run ends at that flight's start), or it rests "
+             "there with no force either way (or, held there, its force comes back to zero without a change of "
+             "sign it can see)" +
+             std::string(widest ? ": binary128, the widest precision, cannot decide it either"
+                                : ": --precision auto raises the run until it is decided");
     case core::ChainStop::SearchBudget:
       return "no contact (or release) was decided within 1000 slowest periods: the frequencies are not "
              "commensurate (give --t-end to search longer)";
@@ -292,7 +296,7 @@ V runDocument(const core::BasicReadyChain<S>& ready, const ChainRunIn<S>& in, V 
   events.reserve(run.events.size());
   const ColumnNames& names = ColumnNames::of(masses.size(), masses.stopped());
   for (const core::BasicChainEvent<S>& event : run.events) events.push_back(eventValue(names, event));
-  const std::string message = stopMessage(run.stop);
+  const std::string message = stopMessage(run.stop, std::is_same_v<S, core::Quad>);
   using std::abs;
   V document = V::object(
       {{"chain", massChainValue(masses, ready.dynamics.period)},
@@ -363,7 +367,7 @@ std::string summaryText(const core::BasicReadyChain<S>& ready, const ChainRunIn<
   text += "contacts       " + std::to_string(run.contacts) + " (impacts " + std::to_string(run.impacts) + ", grazings " +
           std::to_string(run.grazings) + ", sticks " + std::to_string(run.sticks) + "; releases " +
           std::to_string(run.releases) + ")\n";
-  const std::string message = stopMessage(run.stop);
+  const std::string message = stopMessage(run.stop, std::is_same_v<S, core::Quad>);
   text += "stopped        " + stopName(run.stop) + " at t = " + core::formatScalar(run.tFinal) +
           (message.empty() ? std::string() : " (" + message + ")") + "\n";
   char line[200];
