@@ -19,6 +19,15 @@ for f in include/grazelab/core/solver/simulate.h include/grazelab/core/model/lin
   [ -f "$prefix/$f" ] || { echo "FAIL: $f not installed"; exit 1; }
 done
 ls "$prefix"/lib/libgrazelab_core.a > /dev/null
+# the public headers only, each whole with the installed ones: one file including them all
+# compiles against the installed tree alone (no source tree, no SUNDIALS headers)
+for f in methods/cvode_integrator.h methods/runners.h solver/impact_law.h; do
+  [ ! -e "$prefix/include/grazelab/core/$f" ] || { echo "FAIL: the private header core/$f is installed"; exit 1; }
+done
+(cd "$prefix/include/grazelab" && find core -name '*.h' | sort | sed 's/.*/#include "&"/') > "$dir/all_headers.cpp"
+[ "$(wc -l < "$dir/all_headers.cpp")" -gt 40 ] || { echo "FAIL: too few headers installed"; exit 1; }
+(cd "$dir" && "$cxx" -std=c++20 -fsyntax-only -I"$prefix/include/grazelab" -I/usr/include/eigen3 all_headers.cpp) \
+  || { echo "FAIL: an installed header needs one that is not installed"; exit 1; }
 # the CMake package
 cmake -S "$source/examples/core-consumer" -B "$dir/example" -G "$generator" \
       -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release > "$dir/configure.log" || { cat "$dir/configure.log"; exit 1; }

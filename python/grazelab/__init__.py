@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
-"""GrazeLab from Python: the exact simulator of a 2-dof chain against a rigid stop in 1:2
-internal resonance, its maps and its nonlinear normal modes (docs/python.md).
+"""GrazeLab from Python: the exact simulator of chains of masses and springs against a rigid
+stop (the note's two masses in 1:2 internal resonance, or N masses in any resonance:
+``Chain``), its maps and its nonlinear normal modes (docs/python.md).
 
 Each function is a command of ``grazelab-cli`` run in this process by the command line's own
 code. Its keywords are that command's flags in snake_case (``t_end`` is ``--t-end``), with the

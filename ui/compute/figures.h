@@ -24,16 +24,16 @@ enum class PlotKind {
   GrazingMaximum,   ///< Lemma 2.1: max u2/d of GLO(lambda) against lambda, = 1 on [0, 4/3]
   SpreadAgainstSize,  ///< Theorem 2.2: the spread of FFT/T2 against the push size (log-log)
   FlightHistogram,  ///< Theorem 2.3: histogram of FFT/T2 over random starts, bound at 1
-  DetunedFlights,   ///< detuned contrast: the detuned chain's FFT/T2 against contact index
-  ResonantFlights,  ///< detuned contrast: the resonant chain's FFT/T2 against contact index
+  DetunedFlights,   ///< detuned contrast: the same start on the chain detuned, its flights from
+                    ///< the stop against contact index (two masses over T2, N over T)
+  Flights,          ///< a run's flights from the stop against contact index, over the period
+                    ///< that bounds them in resonance (two masses: T2; N: T, or the slowest)
   Chain,            ///< the chain moving (ChainView), the time cursor of the other views
   Landscape,        ///< a map over the grazing-start plane, the run's section over it
   ModesAtlas,       ///< the periodic impacting families: 2 pi / T against log E, click an orbit
   Multipliers,      ///< the chosen orbit's multipliers against the unit circle
   ChainStopTrace,   ///< N masses: the stopped mass's u_s/d against t/T, the stop and the contacts
-  ChainFlights,     ///< N masses: free flights from the stop over T (the bound of a resonant chain)
   ChainPhase,       ///< N masses: the stopped mass's phase portrait
-  ChainDetunedFlights,  ///< N masses: the same start on the chain detuned, flights over T
   ChainSection,     ///< N masses: the state at each contact (on H) on two chosen coordinates
   MassChain,        ///< N masses: the chain moving (MassChainView)
   GrazingSet,       ///< N masses: the grazing set of two modes (top against lambda) or three (a region)

@@ -45,11 +45,9 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::SpreadAgainstSize:
     case PlotKind::FlightHistogram:
     case PlotKind::DetunedFlights:
-    case PlotKind::ResonantFlights:
+    case PlotKind::Flights:
     case PlotKind::ChainStopTrace:
-    case PlotKind::ChainFlights:
     case PlotKind::ChainPhase:
-    case PlotKind::ChainDetunedFlights:
     case PlotKind::ChainSection:
     case PlotKind::GrazingSet: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);

@@ -120,7 +120,7 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
   }
   job.figures[PlotKind::ChainStopTrace] = trace;
 
-  job.figures[PlotKind::ChainFlights] =
+  job.figures[PlotKind::Flights] =
       flightFigure(resonant ? tr("Free flights from the stop / T (≤ 1)")
                             : tr("Free flights / slowest period (no common period: no bound)"),
                    series, unit, resonant, unitName);
@@ -185,13 +185,13 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
                          ? tr("k₂ 1 % off: 1 flight, then none in 1000 slow periods")
                          : tr("k₂ 1 % off: %1 flights, then none in 1000 slow periods").arg(figure.curve.size());
     }
-    job.figures[PlotKind::ChainDetunedFlights] = figure;
+    job.figures[PlotKind::DetunedFlights] = figure;
   } else if (contrast) {
     CurveFigure none;
     none.title = resonant ? tr("k₂ 1 % off: computing…") : tr("Detuned contrast: only for a resonant chain");
     none.xTitle = tr("contact index");
     none.yTitle = tr("flight time / T");
-    job.figures[PlotKind::ChainDetunedFlights] = none;
+    job.figures[PlotKind::DetunedFlights] = none;
   }
   job.status = chainStatusOf(series);
   if (trust == core::TrustMode::Off) {
@@ -223,8 +223,8 @@ Scene::Spec threeMassesScene() {
   scene.defaults.massChain = MassChainParams{};
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::ChainFlights,
-                 PlotKind::ChainPhase, PlotKind::ChainSection, PlotKind::ChainDetunedFlights};
+  scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::Flights,
+                 PlotKind::ChainPhase, PlotKind::ChainSection, PlotKind::DetunedFlights};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token stop) {
     const MassChainParams& given = params.massChain;
     const ChainChoice choice = chooseChain(given, params.gap, stop);
@@ -240,7 +240,7 @@ Scene::Spec threeMassesScene() {
     const core::ChainModes modes = core::chainModes(chain);
     const core::SpectrumRatios ratios = core::detectRatios(modes.omega);
     const double slowest = 2 * std::numbers::pi / modes.omega.minCoeff();
-    const bool contrast = self.plots().contains(PlotKind::ChainDetunedFlights);
+    const bool contrast = self.plots().contains(PlotKind::DetunedFlights);
     // (the error estimate of a chain with no common period shadows long searches in long
     // double: its own scene asks for none, and says so). The trace, the phase portrait and the
     // animation span four slowest periods: six drew twenty fast swings into a plot a third of a
@@ -290,7 +290,7 @@ Scene::Spec eightMassesScene() {
   scene.defaults.massChain.weights.back() = 1.0;  // the slowest mode alone
   scene.defaults.perturbation = -1e-4;
   scene.defaults.horizon = 100;
-  scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::ChainFlights,
+  scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::Flights,
                  PlotKind::ChainPhase, PlotKind::ChainSection};
   return scene;
 }

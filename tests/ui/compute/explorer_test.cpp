@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// Tests for ui/main_window.cpp, ui/sim_controller.cpp and ui/sim_worker.cpp: the live loop
+// Tests for ui/compute/sim_controller.cpp and sim_worker.cpp, through ui/window/main_window.cpp: the live loop
 // from a slider to the plots, latest wins, infeasible input, long runs.
 #include <QCoreApplication>
 #include <QDoubleSpinBox>

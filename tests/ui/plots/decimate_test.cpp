@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// Tests for ui/decimate.cpp.
+// Tests for ui/plots/decimate.cpp.
 #include <QTest>
 
 #include <cmath>

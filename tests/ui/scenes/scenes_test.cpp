@@ -90,9 +90,8 @@ class ScenesTest : public QObject {
                            kind == PlotKind::FrequencyEnergy ||
                            kind == PlotKind::GrazingMaximum || kind == PlotKind::SpreadAgainstSize ||
                            kind == PlotKind::FlightHistogram || kind == PlotKind::DetunedFlights ||
-                           kind == PlotKind::ResonantFlights || kind == PlotKind::ChainStopTrace ||
-                           kind == PlotKind::ChainFlights || kind == PlotKind::ChainPhase ||
-                           kind == PlotKind::ChainDetunedFlights || kind == PlotKind::ChainSection ||
+                           kind == PlotKind::Flights || kind == PlotKind::ChainStopTrace ||
+                           kind == PlotKind::ChainPhase || kind == PlotKind::ChainSection ||
                            kind == PlotKind::GrazingSet;
         if (curve) QVERIFY2(m_window->displayed()->request->job.figures.count(kind), qPrintable(name));
       }
@@ -272,7 +271,7 @@ class ScenesTest : public QObject {
     m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("detuned")));
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     const CurveFigure& detuned = figure(*m_window, PlotKind::DetunedFlights);
-    const CurveFigure& resonant = figure(*m_window, PlotKind::ResonantFlights);
+    const CurveFigure& resonant = figure(*m_window, PlotKind::Flights);
     QVERIFY(!detuned.curve.empty() && !resonant.curve.empty());
     const auto highest = [](const CurveFigure& f) {
       double top = 0;
@@ -305,11 +304,11 @@ class ScenesTest : public QObject {
     QVERIFY2(job->chainSummary.contains(QStringLiteral("3 : 2 : 1")), qPrintable(job->chainSummary));
     QVERIFY2(job->status.contains(QStringLiteral("200 contacts")), qPrintable(job->status));
     QCOMPARE(job->chainDesigns, 6);
-    const auto flights = figure(*m_window, PlotKind::ChainFlights).curve;
+    const auto flights = figure(*m_window, PlotKind::Flights).curve;
     QVERIFY(flights.size() > 150);
     for (const QPointF& point : flights) QVERIFY2(point.y() <= 1.0 + 1e-12, qPrintable(QString::number(point.y())));
     double longest = 0;
-    for (const QPointF& point : figure(*m_window, PlotKind::ChainDetunedFlights).curve) longest = std::max(longest, point.y());
+    for (const QPointF& point : figure(*m_window, PlotKind::DetunedFlights).curve) longest = std::max(longest, point.y());
     QVERIFY2(longest > 1.01, qPrintable(QString::number(longest)));
     // the trace stays at or below the stop, and touches it at each contact
     for (const QPointF& point : figure(*m_window, PlotKind::ChainStopTrace).curve) QVERIFY(point.y() <= 1.0 + 1e-12);
@@ -433,7 +432,7 @@ class ScenesTest : public QObject {
     job = &m_window->displayed()->request->job;
     QVERIFY2(job->ok, qPrintable(job->message));
     QVERIFY2(job->chainSummary.contains(QStringLiteral("4 : 3 : 2 : 1")), qPrintable(job->chainSummary));
-    for (const QPointF& point : figure(*m_window, PlotKind::ChainFlights).curve) QVERIFY(point.y() <= 1.0 + 1e-12);
+    for (const QPointF& point : figure(*m_window, PlotKind::Flights).curve) QVERIFY(point.y() <= 1.0 + 1e-12);
 
     // the whole chain is part of the parameters a session saves, and reads back the same
     QString error;
@@ -626,7 +625,7 @@ class ScenesTest : public QObject {
     QCOMPARE(series.chain.stopped(), 5);
     QCOMPARE(series.run.contacts, 100L);
     QVERIFY(!series.ratios.commensurate);
-    QVERIFY(figure(*m_window, PlotKind::ChainFlights).reference.empty());
+    QVERIFY(figure(*m_window, PlotKind::Flights).reference.empty());
     QVERIFY(series.trust.verdict == grazelab::core::Verdict::Unchecked);
     QVERIFY2(job.status.contains(QStringLiteral("no error estimate")), qPrintable(job.status));
     MassChainView* moving = nullptr;
@@ -654,7 +653,7 @@ class ScenesTest : public QObject {
       const SimUpdate* shown = m_window->displayed();
       if (shown && shown->id == m_window->controller()->latestId() && !shown->final && !shown->chains.empty()) {
         partialContacts = shown->chains.front()->run.contacts;
-        const CurveFigure& flights = figure(*m_window, PlotKind::ChainFlights);
+        const CurveFigure& flights = figure(*m_window, PlotKind::Flights);
         QCOMPARE(qsizetype(flights.curve.size()), qsizetype(shown->chains.front()->flights.size()));
         QVERIFY2(m_window->statusText().contains(QStringLiteral("computing")), qPrintable(m_window->statusText()));
         break;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// Tests for ui/export.cpp, ui/session.cpp and ui/main_window_files.cpp: snapshots, CSV and
+// Tests for ui/window/export.cpp, session.cpp and main_window_files.cpp: snapshots, CSV and
 // sessions are written, carry their parameters and reopen to the same view.
 #include <QDir>
 #include <QFile>

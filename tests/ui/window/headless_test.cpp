@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// Tests for app/grazelab/main.cpp and ui/headless.cpp: the executable lists scenes and renders
+// Tests for app/grazelab/main.cpp and ui/window/headless.cpp: the executable lists scenes and renders
 // each one to a picture without a display.
 #include <QFileInfo>
 #include <QImage>
