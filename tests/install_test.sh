@@ -25,7 +25,7 @@ for f in methods/cvode_integrator.h methods/runners.h solver/impact_law.h; do
   [ ! -e "$prefix/include/grazelab/core/$f" ] || { echo "FAIL: the private header core/$f is installed"; exit 1; }
 done
 (cd "$prefix/include/grazelab" && find core -name '*.h' | sort | sed 's/.*/#include "&"/') > "$dir/all_headers.cpp"
-[ "$(wc -l < "$dir/all_headers.cpp")" -gt 40 ] || { echo "FAIL: too few headers installed"; exit 1; }
+[ "$(wc -l < "$dir/all_headers.cpp")" -gt 20 ] || { echo "FAIL: too few headers installed"; exit 1; }
 (cd "$dir" && "$cxx" -std=c++20 -fsyntax-only -I"$prefix/include/grazelab" -I/usr/include/eigen3 all_headers.cpp) \
   || { echo "FAIL: an installed header needs one that is not installed"; exit 1; }
 # the CMake package

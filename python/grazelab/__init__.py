@@ -387,6 +387,7 @@ class Chain:
         except ValueError as error:
             raise ValueError(_message(str(error))) from None
         self.description = self._prepared.describe(Result)
+        self._commensurate = self._prepared.period > 0  # (read once: a native call per run costs)
 
     def __repr__(self):
         return f"Chain({self.description!r})"
@@ -411,7 +412,7 @@ class Chain:
             flat += ("sample-times" if grid else "sample-step", samples)
         # a short run of a commensurate chain (every flight decided within a period) on the
         # calling thread; anything longer on a thread of its own that Ctrl+C stops
-        direct = (progress is None and t_end is None and samples is None and self._prepared.period > 0
+        direct = (progress is None and t_end is None and samples is None and self._commensurate
                   and (contacts is None or (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS)))
         try:
             answer = _simulate_chain(self._prepared, flat, Result, not events, direct)
