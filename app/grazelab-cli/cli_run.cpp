@@ -235,7 +235,8 @@ int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token
   parser.setApplicationDescription(
       "Exact event-driven simulation of a chain of masses and springs against a rigid stop: the "
       "note's two masses in 1:2 internal resonance (--m1 --m2 --k1 --k2 --branch --gap), or N "
-      "masses in any resonance (--masses, --springs or --frequencies).\nCommands: info (the model and its derived quantities), simulate (a run), "
+      "masses in any resonance (--masses, --springs or --frequencies).\nCommands: info (the model "
+      "and its derived quantities), simulate (a run), "
       "report (every method against the exact solver: error against run time, --out DIR), "
       "stability (every method on stiff and extreme cases, --out DIR), map (a 2-D grid of runs "
       "reduced to summaries: --x, --y, --out PREFIX), merge (join a map's stripes: --out PREFIX "

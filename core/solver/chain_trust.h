@@ -17,8 +17,9 @@ namespace grazelab::core {
 /// every rounding and not the motion), compared event by event. The time error is the largest
 /// difference of an event's time, over the slowest period; the state error the largest of the
 /// displacements' and velocities' differences over their scales (the largest sizes met at the
-/// events; the gap and the largest speed the energy allows at least), at each event. The horizon is where that error first passes kHorizonTolerance (an
-/// event of another type or a missing one counts as passing it): observed when the shadow shows
+/// events; the gap and the largest speed the energy allows at least), at each event. The horizon
+/// is where that error first passes kHorizonTolerance (an event of another type or a missing one
+/// counts as passing it): observed when the shadow shows
 /// it, else extrapolated from the error's growth between the first and the last event as if
 /// exponential, at most twice the run's time, so that the same run gets the same figure. Ok below
 /// kOkTolerance, degraded below kHorizonTolerance, unreliable past the horizon within the run.
