@@ -15,9 +15,13 @@ namespace grazelab::core {
 /// in the shadow precision (ShadowScalar: double by long double, long double by binary128,
 /// binary128 by binary128 on the chain scaled 3x in length and 1/sqrt(3) in time, which changes
 /// every rounding and not the motion), compared event by event. The time error is the largest
-/// difference of an event's time, over the slowest period; the state error the largest of the
-/// displacements' and velocities' differences over their scales (the largest sizes met at the
-/// events; the gap and the largest speed the energy allows at least), at each event. The horizon
+/// difference of an event's time, over the slowest period; the state error is the error of the
+/// state at a given time: the largest of the displacements' and velocities' differences over their
+/// scales (the largest sizes met at the events; the gap and the largest speed the energy allows at
+/// least) at each event, or what its time's error moves the state by at the fastest rate the
+/// motion allows (a light mass meeting the stop at speed V an event time error dt later is V dt
+/// away at any given time), whichever is larger; and, for a run and a whole shadow that both end
+/// at its end time, the difference of their final states. The horizon
 /// is where that error first passes kHorizonTolerance (an event of another type or a missing one
 /// counts as passing it): observed when the shadow shows
 /// it, else extrapolated from the error's growth between the first and the last event as if
@@ -46,6 +50,7 @@ struct ChainShadow {
   H length = 1, time = 1;  ///< shadow = primary x length, shadow times = primary times / time
   bool scaled = false;
   double slowest = 1;  ///< the primary chain's slowest period, in double
+  double fastest = 1;  ///< the primary chain's fastest angular frequency, in double
   double gap = 1;      ///< the primary chain's gap, in double
 };
 /// The shadow of a usable chain.
@@ -80,6 +85,9 @@ class ChainTrustCheck {
   Trust finish(const BasicChainRun<S>& run) const;
 
  private:
+  /// the largest difference of a state (u, v) of the run and one of the shadow, over the scales
+  double difference(const ChainVector<S>& u, const ChainVector<S>& v, const ChainVector<H>& shadowU,
+                    const ChainVector<H>& shadowV) const;
   TrustMode m_mode;
   bool m_interrupted = false;
   bool m_scaled = false;
@@ -87,6 +95,7 @@ class ChainTrustCheck {
   BasicChainRun<H> m_shadow;
   long m_cap = 0;  // the shadow's contact budget (Auto), 0 when it ran as far as the run may
   double m_uScale = 0, m_vScale = 1, m_slowest = 1;
+  double m_rate = 0;  // the fastest a state error can grow from a time error, per unit time
   // the comparison so far
   std::size_t m_observed = 0;
   double m_firstError = 0, m_firstTime = 0, m_lastError = 0, m_lastTime = 0;
