@@ -45,6 +45,7 @@
 #include "ui/plots/poincare_plot.h"
 #include "ui/plots/trace_plot.h"
 #include "ui/widgets/readout_panel.h"
+#include "ui/widgets/wheel_scrolls_panel.h"
 #include "ui/compute/sim_controller.h"
 #include "ui/window/wrapped_tooltips.h"
 
@@ -63,6 +64,7 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   installPresentationStyle();  // before the panel's widgets (and their style sheets) exist
   setWindowIcon(QIcon::fromTheme(QStringLiteral("grazelab"), QIcon(QStringLiteral(":/icons/grazelab.svg"))));
   for (const auto& scene : m_scenes) m_sceneParams.push_back(scene->defaults());
+  m_validParams = m_sceneParams;
 
   m_controller = new SimController(this);
   m_controller->setSynchronous(options.synchronous);
@@ -91,6 +93,7 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   // narrow enough that a 1024-pixel projector holds the panel and three columns of plots
   scroll->setMinimumWidth(320);
+  qApp->installEventFilter(new WheelScrollsPanel(scroll));
   m_side = scroll;
 
   m_plotArea = new QWidget;
@@ -464,6 +467,15 @@ void MainWindow::layoutViews() {
 
 void MainWindow::selectScene(int index) {
   if (index < 0 || index >= int(m_scenes.size())) return;
+  // a refused value stays behind: the scene left goes back to what it last showed
+  if (m_sceneChosen && index != m_sceneIndex && !m_problem.isEmpty()) {
+    m_droppedNote = tr("the refused edit of %1 was dropped (%2): it keeps its last valid values")
+                        .arg(scene().title(), m_problem);
+    m_sceneParams[std::size_t(m_sceneIndex)] = m_validParams[std::size_t(m_sceneIndex)];
+    m_problem.clear();
+    m_panel->setMessage(QString());
+    m_panel->clearRefusal();
+  }
   // the chain comes along; the scene keeps its own start, push and length (an N-mass scene
   // keeps its own chain, and the two-mass one, which it does not use, is not carried into it:
   // an infeasible two-mass chain would refuse a scene that never runs it)
@@ -524,6 +536,7 @@ bool MainWindow::applySession(const Session& session, QString* error) {
 }
 
 void MainWindow::onParamsChanged(const Params& params) {
+  m_droppedNote.clear();
   m_clickedStart.reset();  // an edit goes back to the scene's own start
   m_panel->setClickedStart(std::nullopt);
   m_sceneParams[std::size_t(m_sceneIndex)] = params;
@@ -633,6 +646,7 @@ void MainWindow::applyPending() {
   }
   m_displayed = std::move(m_pending);
   m_pending.reset();
+  if (m_displayed->request->job.ok) m_validParams[std::size_t(m_sceneIndex)] = m_displayed->request->params;
   m_panel->setNotes(m_displayed->request->job.notes);
   if (scene().massChain()) {
     const SceneJob& job = m_displayed->request->job;

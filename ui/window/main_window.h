@@ -220,6 +220,12 @@ class MainWindow : public QMainWindow {
   /// what the scenes keep between computations (the atlas of modes), shared with the worker
   std::shared_ptr<SceneCache> m_sceneCache = std::make_shared<SceneCache>();
   std::vector<Params> m_sceneParams;
+  /// each scene's parameters of the last run it showed: a scene left with a refused value goes
+  /// back to them, and the next is entered with their chain (entered with the refused one, it
+  /// had nothing to show)
+  std::vector<Params> m_validParams;
+  /// said after the status until the next edit: the refused value dropped on leaving a scene
+  QString m_droppedNote;
   int m_sceneIndex = 0;
   bool m_sceneChosen = false;  ///< a scene is on screen (its parameters carry over to the next)
   ParameterPanel* m_panel = nullptr;
@@ -245,8 +251,8 @@ class MainWindow : public QMainWindow {
   /// large application font, so leaving presentation makes them anew
   bool m_viewsBuiltPresenting = false;
   QFont m_deskFont;
-  QRect m_deskGeometry;
-  std::optional<core::State> m_clickedStart;  ///< a start chosen on H, until the next edit  ///< where the window was before presentation mode
+  QRect m_deskGeometry;  ///< where the window was before presentation mode
+  std::optional<core::State> m_clickedStart;  ///< a start chosen on H, until the next edit
   QPalette m_deskPalette;
   QAction* m_presentationAction = nullptr;
   QAction* m_wholeRunAction = nullptr;  ///< checked: time-based views show the whole run
@@ -256,9 +262,9 @@ class MainWindow : public QMainWindow {
   StatusLine* m_status = nullptr;
   /// Pixels either side of the (u2, v2) portrait's stop line that a click counts as on it.
   static constexpr int kStopLineBand = 16;
-  QString m_statusExplanation;
+  QString m_statusExplanation;  ///< what the status line shows, in words (its tooltip)
   QHash<const QWidget*, double> m_viewCosts;
-  std::uint64_t m_runShownId = 0;  ///< the request whose whole run was last put on screen  ///< what the status line shows, in words (its tooltip)
+  std::uint64_t m_runShownId = 0;  ///< the request whose whole run was last put on screen
   QProgressBar* m_progress = nullptr;
   QPushButton* m_cancel = nullptr;
   QTimer m_applyTimer;

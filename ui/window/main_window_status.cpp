@@ -57,6 +57,7 @@ void MainWindow::showStatus(const SimUpdate& update) {
                                                         : QStringLiteral("\n\n") +
                                                               QString::fromStdString(update.precisionNote)));
     if (!update.final || update.superseded) text += tr(" · computing…");
+    if (!m_droppedNote.isEmpty()) text += QStringLiteral(" · ") + m_droppedNote;
     if (!m_problem.isEmpty()) text = tr("Not computed: %1 (showing the last valid result)").arg(m_problem);
     m_status->setMessage(text);
     return;
@@ -99,6 +100,7 @@ void MainWindow::showStatus(const SimUpdate& update) {
   } else if (!result.message.empty()) {
     text += QStringLiteral(" · ") + QString::fromStdString(result.message);
   }
+  if (!m_droppedNote.isEmpty()) text += QStringLiteral(" · ") + m_droppedNote;
   if (!m_problem.isEmpty()) text = tr("Not computed: %1 (showing the last valid result)").arg(m_problem);
   m_status->setMessage(text);
 }
