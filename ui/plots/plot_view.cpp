@@ -188,6 +188,10 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
   setMinimumSize(kMinimumSize);  // again after each resize (resizeEvent)
 
   setTitles(title, xTitle, yTitle);
+  // the titles wrap to the plot area as laid out: when a legend, a wrapped title or larger
+  // presentation fonts change it, they are fitted again (a scene opened while presenting kept
+  // titles fitted to its first layout, and Qt cut them: "log10 max (1 - ...")
+  connect(chart, &QChart::plotAreaChanged, this, &PlotView::fitTitles, Qt::QueuedConnection);
   m_clickTimer.setSingleShot(true);
   connect(&m_clickTimer, &QTimer::timeout, this, [this] { emit clickedAt(m_clickedValue); });
   m_refreshTimer.setSingleShot(true);
@@ -400,10 +404,23 @@ void PlotView::fitTitles() {
   const double yWidth = (area.height() > 0 ? area.height() : height() - 100) - 12;
   const QString title = wrappedTitle(m_title, chart()->titleFont(), titleWidth);
   const QString x = wrappedTitle(m_xTitle, m_axisX->titleFont(), xWidth);
-  const QString y = wrappedTitle(m_yTitle, m_axisY->titleFont(), yWidth);
+  // the vertical title on one line, a little smaller where it must (down to 70 %): Qt leaves a
+  // turned title the width of the tick labels, and cut a second line beside labels as narrow as
+  // "0" and "1" ("frequency..." in a short plot while presenting at 720p)
+  QFont yFont = m_axisX->titleFont();  // the axis titles' font (the x title's is never changed)
+  if (const double needed = QFontMetricsF(yFont).horizontalAdvance(m_yTitle); needed > yWidth && yWidth > 0) {
+    const double scale = std::max(0.7, yWidth / needed);
+    if (yFont.pixelSize() > 0) {
+      yFont.setPixelSize(std::max(1, int(std::floor(yFont.pixelSize() * scale))));
+    } else {
+      yFont.setPointSizeF(yFont.pointSizeF() * scale);
+    }
+  }
+  const QString y = wrappedTitle(m_yTitle, yFont, yWidth);
   // set only when changed: every new title lays the chart out again
   if (chart()->title() != title) chart()->setTitle(title);
   if (m_axisX->titleText() != x) m_axisX->setTitleText(x);
+  if (m_axisY->titleFont() != yFont) m_axisY->setTitleFont(yFont);
   if (m_axisY->titleText() != y) m_axisY->setTitleText(y);
 }
 

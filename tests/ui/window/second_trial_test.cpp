@@ -11,6 +11,7 @@
 
 #include "tests/ui/explorer_test_support.h"
 #include "ui/compute/scene.h"
+#include "ui/plots/plot_view.h"
 #include "ui/widgets/chain_editor.h"
 #include "ui/widgets/parameter_panel.h"
 #include "ui/window/main_window.h"
@@ -135,6 +136,30 @@ class SecondTrialTest : public QObject {
     const QString text = box->text();
     wheelDown(box);
     QVERIFY(box->text() != text);
+  }
+
+  // F5 then Ctrl+3: "log10 max (1 - FFT..."; F5 then Alt+4: "flight time / slowe...", at both
+  // sizes. Opening the scene first and then pressing F5 was fine: scenes are switched here while
+  // presenting, each title checked whole
+  void noTitleIsCutInASceneOpenedWhilePresenting() {
+    for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{1920, 1080}}) {
+      m_window->selectScene(0);
+      QVERIFY(waitForLatestFinal(*m_window));
+      m_window->resize(width, height);
+      m_window->setPresentation(true, height, false);
+      for (int scene = 1; scene < int(m_window->scenes().size()); ++scene) {
+        m_window->selectScene(scene);
+        QVERIFY(waitForLatestFinal(*m_window, 60000));
+        QTest::qWait(50);  // laid out at the window's size, the titles fitted again
+        for (PlotView* plot : m_window->plots()) {
+          QVERIFY2(plot->cutTexts().isEmpty(), qPrintable(QStringLiteral("%1x%2 %3: %4")
+                                                             .arg(width)
+                                                             .arg(height)
+                                                             .arg(m_window->scene().alias(), plot->cutTexts().join(" | "))));
+        }
+      }
+      m_window->setPresentation(false, height, false);
+    }
   }
 
  private:
