@@ -92,7 +92,7 @@ Scene::Spec chainOnePeriodicScene() {
     const double T = params.chainPeriodFraction * Tstar;
     const core::ChainOnePeriodicOrbit orbit = core::chainOnePeriodicOrbit(chain, T);
     if (!orbit.admissible()) {
-      return refusedChainJob(
+      return refusedStartJob(
           tr("No admissible 1IPP orbit of period T = %1 T*: its flight meets the stop before T, or "
              "its impact speed is not into the stop. The dots show where the family is "
              "admissible.")

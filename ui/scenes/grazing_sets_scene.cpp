@@ -142,7 +142,7 @@ Scene::Spec grazingSetsScene() {
     }
     const core::ChainGloStart glo = core::chainGloStart(chain, given.weights);
     if (glo.problem != core::GloStartProblem::None) {
-      return refusedChainJob(gloStartProblemInWords(glo.problem));
+      return refusedStartJob(gloStartProblemInWords(glo.problem));
     }
     std::vector<double> weights;  // on the modes that move the stopped mass
     for (int mode : used.modes) weights.push_back(given.weights[std::size_t(mode)]);

@@ -185,6 +185,12 @@ SceneJob refusedChainJob(const QString& why) {
   return job;
 }
 
+SceneJob refusedStartJob(const QString& why) {
+  SceneJob job;
+  job.message = why;
+  return job;
+}
+
 QString gloStartProblemInWords(core::GloStartProblem problem) {
   return problem == core::GloStartProblem::WeightOnNode
              ? tr("A weight is on a mode that does not move the stopped mass: it has no grazing "

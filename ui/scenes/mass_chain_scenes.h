@@ -37,6 +37,9 @@ QString chainStatusOf(const core::experiments::ChainSeries& series);
 
 /// A job refused with `why`, said in the status line and under the chain editor.
 SceneJob refusedChainJob(const QString& why);
+/// A job refused for its start (weights, a period) on a chain that is fine: the panel keeps the
+/// chain's summary and says why at its foot, so that no control moves.
+SceneJob refusedStartJob(const QString& why);
 
 /// Why GLO(λ) of the panel's weights cannot be made, in words.
 QString gloStartProblemInWords(core::GloStartProblem problem);

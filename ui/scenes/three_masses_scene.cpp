@@ -232,7 +232,7 @@ Scene::Spec threeMassesScene() {
     const core::MassChain& chain = *choice.chain;
     const core::ChainGloStart glo = core::chainGloStart(chain, given.weights);
     if (glo.problem != core::GloStartProblem::None) {
-      return refusedChainJob(gloStartProblemInWords(glo.problem));
+      return refusedStartJob(gloStartProblemInWords(glo.problem));
     }
     core::ChainState start = glo.state;
     const Eigen::Index s = chain.stopped() - 1;

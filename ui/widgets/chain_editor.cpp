@@ -187,6 +187,11 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
   connect(m_stop, &QSpinBox::valueChanged, this, [this](int stop) {
     m_chain.stopMass = stop == m_chain.size() ? 0 : stop;
     fillSection();  // the default pair follows the stop
+    if (m_chain.shownMass == 0) {
+      // so does the phase portrait's mass, and the box says which (it said 3 while 2 was drawn)
+      const QSignalBlocker block(m_shown);
+      m_shown->setValue(m_chain.stopped());
+    }
     changed();
   });
   connect(m_shown, &QSpinBox::valueChanged, this, [this](int shown) {
@@ -355,9 +360,14 @@ void ChainEditor::rebuildRows() {
 }
 
 void ChainEditor::setSummary(const QString& text, int designs, bool refused) {
+  // a refusal moves no control (a drag refused half-way moved the slider under the pointer by
+  // 115 px): the summary keeps its height at least, the designs row stays, greyed
+  m_summary->setMinimumHeight(refused ? m_summary->height() : 0);
   m_summary->setText(text);
   m_summary->setStyleSheet(refused ? QStringLiteral("QLabel { color: #a01010; font-weight: bold; }")
                                    : QString());
+  m_design->setEnabled(!refused);
+  if (refused) return;
   const QSignalBlocker block(m_design);
   if (m_design->count() != designs) {
     m_design->clear();

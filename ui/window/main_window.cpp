@@ -91,6 +91,9 @@ MainWindow::MainWindow(Options options, QWidget* parent)
   scroll->setWidget(left);
   scroll->setWidgetResizable(true);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  // always there: a message that made the panel scroll narrowed it, every text wrapped anew and
+  // the controls moved under the pointer
+  scroll->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOn);
   // narrow enough that a 1024-pixel projector holds the panel and three columns of plots
   scroll->setMinimumWidth(320);
   qApp->installEventFilter(new WheelScrollsPanel(scroll));
@@ -601,9 +604,10 @@ void MainWindow::onUpdate(const SimUpdate& update) {
   if (update.result && update.result->stop == core::StopReason::InvalidInput) {
     setProgressVisible(false);
     showProblem(QString::fromStdString(update.result->message));
-    // an N-mass chain that cannot be made says why where it is edited as well
-    if (scene().massChain() && update.request->sceneName == scene().name()) {
-      m_panel->setChainSummary(job.chainSummary, 0, job.chainRefused);
+    // an N-mass chain that cannot be made says why where it is edited as well (a refused start
+    // leaves the summary of the chain, which is fine)
+    if (scene().massChain() && update.request->sceneName == scene().name() && job.chainRefused) {
+      m_panel->setChainSummary(job.chainSummary, 0, true);
     }
     return;
   }

@@ -6,6 +6,7 @@
 #include <QAbstractSpinBox>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QSpinBox>
 #include <QTest>
 #include <QWheelEvent>
 
@@ -14,6 +15,7 @@
 #include "ui/plots/plot_view.h"
 #include "ui/widgets/chain_editor.h"
 #include "ui/widgets/parameter_panel.h"
+#include "ui/widgets/slider_spin.h"
 #include "ui/window/main_window.h"
 
 using namespace grazelab::ui;
@@ -160,6 +162,65 @@ class SecondTrialTest : public QObject {
       }
       m_window->setPresentation(false, height, false);
     }
+  }
+
+  // Alt+3 at 720p, T/T* dragged from 0.9 towards 0.7: at 0.699 (no admissible 1IPP orbit) the
+  // springs row and the chain's summary vanished and the slider jumped 115 px under the pointer.
+  // A refusal moves no control: not the period's (a refused start), not the masses' (a refused
+  // chain)
+  void aRefusalMovesNoControl() {
+    m_window->resize(1280, 720);
+    m_window->selectScene(sceneIndex(*m_window, QStringLiteral("chain-1ipp")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    QSlider* period = m_window->parameterPanel()->control(ParamKey::ChainPeriod)->slider();
+    const auto place = [this](const QWidget* widget) { return widget->mapTo(m_window.get(), QPoint(0, 0)); };
+    QTest::qWait(100);  // laid out (the summary's wrapped height settles after a turn or two)
+    const QPoint before = place(period);
+    const QString summary = m_window->parameterPanel()->chainEditor()->summary();
+    Params params = m_window->params();
+    params.chainPeriodFraction = 0.699;
+    m_window->setParams(params);
+    QVERIFY(waitForProblem(*m_window));
+    QTest::qWait(50);  // laid out again
+    QCOMPARE(place(period), before);
+    QCOMPARE(m_window->parameterPanel()->chainEditor()->summary(), summary);  // the chain is fine
+
+    const QList<QSlider*> sliders = m_window->parameterPanel()->chainEditor()->findChildren<QSlider*>();
+    QVERIFY(!sliders.isEmpty());
+    QList<QPoint> places;
+    for (const QSlider* slider : sliders) places << place(slider);
+    params.chainPeriodFraction = 0.9;
+    params.massChain.masses = {1.0, 1.0, 1.0};  // no chain of these masses is in 1:2:3
+    m_window->setParams(params);
+    QDeadlineTimer deadline(60000);
+    while (!m_window->parameterPanel()->chainEditor()->summary().startsWith(QStringLiteral("No chain")) &&
+           !deadline.hasExpired()) {
+      QTest::qWait(5);
+    }
+    QTest::qWait(50);
+    for (qsizetype i = 0; i < sliders.size(); ++i) QCOMPARE(place(sliders[i]), places[i]);
+    QCOMPARE(place(period), before);
+  }
+
+  // Alt+1, reset, stop on 2: "phase of" said 3 while the phase portrait drew mass 2
+  void thePhaseBoxNamesTheMassDrawn() {
+    m_window->selectScene(sceneIndex(*m_window, QStringLiteral("three-masses")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    m_window->resetToSceneDefaults();
+    auto* stop = m_window->parameterPanel()->chainEditor()->findChild<QSpinBox*>(QStringLiteral("chainStopMass"));
+    auto* shown = m_window->parameterPanel()->chainEditor()->findChild<QSpinBox*>(QStringLiteral("chainShownMass"));
+    QVERIFY(stop && shown);
+    for (int mass : {2, 1, 3}) {
+      stop->setValue(mass);
+      QCOMPARE(m_window->params().massChain.stopped(), mass);
+      QCOMPARE(shown->value(), m_window->params().massChain.shown());
+      QCOMPARE(shown->value(), mass);
+    }
+    // a mass chosen stays chosen when the stop moves
+    shown->setValue(1);
+    stop->setValue(2);
+    QCOMPARE(m_window->params().massChain.shown(), 1);
+    QCOMPARE(shown->value(), 1);
   }
 
  private:
