@@ -4,13 +4,46 @@
 // scene on screen.
 #include <QAction>
 #include <QApplication>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+#include <algorithm>
 
 #include "ui/window/main_window.h"
 #include "ui/compute/scene.h"
 
 namespace grazelab::ui {
+namespace {
+
+// rich text in a dialog that fits the screen, and scrolls where the text is taller (the list of
+// shortcuts was 1038 px tall in a message box on a 720-line screen, its Close button off it)
+void showText(QWidget* parent, const QString& title, const QString& html) {
+  QDialog dialog(parent);
+  dialog.setObjectName(QStringLiteral("helpText"));
+  dialog.setWindowTitle(title);
+  auto* text = new QTextBrowser(&dialog);
+  text->setHtml(html);
+  text->setFrameShape(QFrame::NoFrame);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, &dialog);
+  QObject::connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  auto* layout = new QVBoxLayout(&dialog);
+  layout->addWidget(text);
+  layout->addWidget(buttons);
+  const QScreen* screen = parent->screen();
+  const QRect room = screen ? screen->availableGeometry() : QRect(0, 0, 1280, 720);
+  const int width = std::min(int(room.width() * 0.9), 60 * dialog.fontMetrics().averageCharWidth() + 200);
+  text->document()->setTextWidth(width - 40);
+  const int height = int(text->document()->size().height()) + buttons->sizeHint().height() + 60;
+  dialog.resize(width, std::min(height, int(room.height() * 0.85)));
+  dialog.exec();
+}
+
+}  // namespace
 
 void MainWindow::showAbout() {
   QMessageBox::about(
@@ -62,26 +95,16 @@ QString MainWindow::shortcutsText() const {
   return QStringLiteral("<table cellspacing=\"4\">%1</table>").arg(table);
 }
 
-void MainWindow::showShortcuts() {
-  QMessageBox box(this);
-  box.setWindowTitle(tr("Keyboard shortcuts"));
-  box.setTextFormat(Qt::RichText);
-  box.setText(shortcutsText());
-  box.exec();
-}
+void MainWindow::showShortcuts() { showText(this, tr("Keyboard shortcuts"), shortcutsText()); }
 
 void MainWindow::showSceneGuide() {
-  QMessageBox box(this);
-  box.setWindowTitle(scene().title());
-  box.setTextFormat(Qt::RichText);
-  box.setText(QStringLiteral("<h3>%1</h3><p>%2</p><p>%3</p>")
+  showText(this, scene().title(), QStringLiteral("<h3>%1</h3><p>%2</p><p>%3</p>")
                   .arg(scene().title(), scene().description(),
                        tr("A click on the Poincaré points (H), on the stop line of mass 2's portrait, on "
                           "the Landscape map or on the modes picture starts a run from there (the panel "
                           "says so; any edit goes back to the scene's start). Ctrl+Shift+R puts every "
                           "value of this scene back; W shows the whole run in u₂(t) and the phase "
                           "portraits; F1 shows this guide, Ctrl+F1 every key.")));
-  box.exec();
 }
 
 }  // namespace grazelab::ui

@@ -3,6 +3,12 @@
 // What a second classroom trial, of the N-mass scenes, tripped over (issue 48): each problem
 // found there has a test here that fails if it comes back.
 #include <QAbstractSlider>
+#include <QAction>
+#include <QApplication>
+#include <QDialog>
+#include <QScreen>
+#include <QTextBrowser>
+#include <QTimer>
 #include <QAbstractSpinBox>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -221,6 +227,34 @@ class SecondTrialTest : public QObject {
     stop->setValue(2);
     QCOMPARE(m_window->params().massChain.shown(), 1);
     QCOMPARE(shown->value(), 1);
+  }
+
+  // the shortcuts were listed in a message box 1038 px tall on a 720-line screen: the dialog fits
+  // the screen, desk or presenting, and scrolls where its text is taller
+  void theShortcutsFitTheScreen() {
+    const QRect room = m_window->screen()->availableGeometry();
+    for (bool presenting : {false, true}) {
+      m_window->setPresentation(presenting, room.height(), false);
+      QSize seen;
+      bool scrolls = false;
+      QTimer::singleShot(200, [&] {
+        if (auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget())) {
+          seen = dialog->size();
+          const auto* text = dialog->findChild<QTextBrowser*>();
+          scrolls = text && text->verticalScrollBar()->maximum() > 0;
+          QVERIFY(!text || text->toPlainText().contains(QStringLiteral("Ctrl+F1")));
+          dialog->reject();
+        }
+      });
+      for (QAction* action : m_window->findChildren<QAction*>()) {
+        if (action->shortcut() == QKeySequence(QStringLiteral("Ctrl+F1"))) action->trigger();
+      }
+      QVERIFY2(seen.isValid(), "a dialog was shown");
+      QVERIFY2(seen.height() <= room.height(), qPrintable(QStringLiteral("%1 > %2").arg(seen.height()).arg(room.height())));
+      QVERIFY(seen.width() <= room.width());
+      if (presenting) QVERIFY2(scrolls, "the large text of presentation mode is taller than the screen here");
+    }
+    m_window->setPresentation(false, room.height(), false);
   }
 
  private:
