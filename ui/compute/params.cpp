@@ -151,10 +151,11 @@ MassChainParams MassChainParams::resized(int count) const {
   const auto n = std::size_t(count);
   chain.masses.resize(n, masses.empty() ? 1.0 : masses.back());
   chain.springs.resize(n, 1.0);
-  // even weights to three decimals (a box shows 0.333, not 0.33333333), the last balancing
+  // even weights to three decimals (a box shows 0.333, not 0.33333333), the first balancing (as
+  // in the editor, where lambda_1 = 1 - the others)
   const double even = std::round(1000.0 / count) / 1000;
   chain.weights.assign(n, even);
-  chain.weights.back() = 1 - even * (count - 1);
+  chain.weights.front() = 1 - even * (count - 1);
   if (chain.harmonics.size() != n) chain.harmonics.clear();
   if (chain.stopMass > count) chain.stopMass = 0;
   if (chain.shownMass > count) chain.shownMass = 0;

@@ -12,6 +12,7 @@
 #include "ui/scenes/mass_chain_scenes.h"
 #include "ui/scenes/scenes.h"
 #include "ui/widgets/chain_editor.h"
+#include "ui/widgets/param_specs.h"
 
 namespace grazelab::ui {
 namespace {
@@ -35,12 +36,13 @@ QString verdictInWords(core::GloGrazing verdict) {
 }
 
 // Lemma 2.1 for two modes: the top of u_s/d over a period against the slow mode's weight
-CurveFigure intervalFigure(int fast, int slow, const core::GrazingInterval& set, double lambda) {
+// (`name`: the panel's name of that weight, the slider it is moved by)
+CurveFigure intervalFigure(int fast, int slow, const core::GrazingInterval& set, double lambda, const QString& name) {
   CurveFigure figure;
   const QString ratio = QStringLiteral("%1:%2").arg(slow).arg(fast);
   figure.title =
-      tr("%1: GLO grazes for λ in [%2, %3]").arg(ratio, number(set.low, 4), number(set.high, 4));
-  figure.xTitle = tr("λ (the slow mode's weight)");
+      tr("%1: GLO grazes for %2 in [%3, %4]").arg(ratio, name, number(set.low, 4), number(set.high, 4));
+  figure.xTitle = tr("%1 (the slow mode's weight)").arg(name);
   figure.yTitle = tr("top of u / d over a period");
   figure.toolTip =
       tr("GLO(λ) = (1 − λ) GLOM(fast) + λ GLOM(slow). Its top over a period is 1 (it touches the "
@@ -55,7 +57,7 @@ CurveFigure intervalFigure(int fast, int slow, const core::GrazingInterval& set,
     figure.curve.emplace_back(x, top);
   figure.referenceName = tr("grazing set");
   figure.reference = {QPointF(set.low, 1), QPointF(set.high, 1)};
-  figure.markerName = tr("λ = %1").arg(number(lambda, 4));
+  figure.markerName = tr("%1 = %2").arg(name, number(lambda, 4));
   const auto here = core::gloTopCurve(fast, slow, lambda, lambda, 0, 4096);
   figure.markers = {QPointF(lambda, here.front().second)};
   double lowest = 1, highest = 1;
@@ -151,7 +153,8 @@ Scene::Spec grazingSetsScene() {
     if (used.modes.size() == 2) {
       job.figures[PlotKind::GrazingSet] =
           intervalFigure(harmonics[0], harmonics[1],
-                         core::grazingInterval(harmonics[0], harmonics[1]), weights[1]);
+                         core::grazingInterval(harmonics[0], harmonics[1]), weights[1],
+                         QStringLiteral("λ") + subscriptDigits(used.modes[1] + 1));
       job.figures[PlotKind::GrazingSet].draggedModes = used.modes;
     } else {
       const auto boundary = core::grazingRegion(harmonics[0], harmonics[1], harmonics[2], 48, stop);

@@ -62,7 +62,7 @@ ParamSpec weightSpec(int index) {
   spec.toolTip = QObject::tr(
                      "The weight of mode %1 (mode 1 the fastest) in the grazing linear orbit "
                      "GLO(λ) = Σ λⱼ GLOMⱼ the run starts on, at its touch of the stop. The "
-                     "last weight is 1 minus the others.")
+                     "first weight (the fastest mode's) is 1 minus the others.")
                      .arg(index);
   spec.sliderMin = -1;
   spec.sliderMax = 2;
@@ -235,16 +235,15 @@ void ChainEditor::setChain(const MassChainParams& chain) {
   // the values set in place, not every row rebuilt on each move of the mouse
   const bool sameRows = chain.size() == m_chain.size() && chain.harmonics == m_chain.harmonics &&
                         (chain.rightSpring > 0) == (m_chain.rightSpring > 0) &&
-                        m_masses.size() == chain.size() && m_lastWeight;
+                        m_masses.size() == chain.size() && m_firstWeight;
   if (sameRows) {
     m_chain = chain;
     const int n = chain.size();
     for (int i = 0; i < n; ++i) m_masses[i]->setValue(chain.masses[std::size_t(i)]);
     for (int i = 0; i < m_springs.size(); ++i) m_springs[i]->setValue(chain.springs[std::size_t(i)]);
     if (m_wallSpring) m_wallSpring->setValue(chain.rightSpring);
-    for (int j = 0; j < m_weights.size(); ++j) m_weights[j]->setValue(chain.weights[std::size_t(j)]);
-    m_lastWeight->setText(tr("λ%1 = 1 − the others = %2")
-                              .arg(subscriptDigits(n), QString::number(chain.weights.back(), 'g', 6)));
+    for (int j = 0; j < m_weights.size(); ++j) m_weights[j]->setValue(chain.weights[std::size_t(j) + 1]);
+    showFirstWeight();
     const QSignalBlocker blockStop(m_stop);
     const QSignalBlocker blockShown(m_shown);
     m_stop->setValue(chain.stopped());
@@ -297,8 +296,8 @@ void ChainEditor::rebuildRows() {
     for (SliderSpin* control : *list) discard(control);
     list->clear();
   }
-  if (m_lastWeight) discard(m_lastWeight);
-  m_lastWeight = nullptr;
+  if (m_firstWeight) discard(m_firstWeight);
+  m_firstWeight = nullptr;
   if (m_wallSpring) discard(m_wallSpring);
   m_wallSpring = nullptr;
   {
@@ -335,25 +334,23 @@ void ChainEditor::rebuildRows() {
   if (m_chain.rightSpring > 0) {
     m_wallSpring = add(wallSpec(n), m_chain.rightSpring, [this](double value) { m_chain.rightSpring = value; });
   }
-  for (int j = 0; j + 1 < n; ++j) {
-    m_weights.append(
-        add(weightSpec(j + 1), m_chain.weights[std::size_t(j)], [this, j, n](double value) {
-          m_chain.weights[std::size_t(j)] = value;
-          // the last weight balances the others (the weights of GLO(λ) sum to 1)
-          double others = 0;
-          for (int k = 0; k + 1 < n; ++k) others += m_chain.weights[std::size_t(k)];
-          m_chain.weights[std::size_t(n - 1)] = 1 - others;
-          m_lastWeight->setText(tr("λ%1 = 1 − the others = %2")
-                                    .arg(subscriptDigits(n), QString::number(1 - others, 'g', 6)));
-        }));
+  // λ2 ... λN on sliders, the fastest mode's λ1 balancing them: the note's λ of two modes (the
+  // slow mode's weight) and the (λ2, λ3) plane of three are the sliders themselves, and move the
+  // grazing set's dot the way they move
+  m_firstWeight = new QLabel(this);
+  m_firstWeight->setObjectName(QStringLiteral("chainFirstWeight"));
+  m_firstWeight->setToolTip(weightSpec(1).toolTip);
+  showFirstWeight();
+  m_rows->addWidget(m_firstWeight);
+  for (int j = 1; j < n; ++j) {
+    m_weights.append(add(weightSpec(j + 1), m_chain.weights[std::size_t(j)], [this, j, n](double value) {
+      m_chain.weights[std::size_t(j)] = value;
+      double others = 0;
+      for (int k = 1; k < n; ++k) others += m_chain.weights[std::size_t(k)];
+      m_chain.weights.front() = 1 - others;  // the weights of GLO(λ) sum to 1
+      showFirstWeight();
+    }));
   }
-  m_lastWeight = new QLabel(this);
-  m_lastWeight->setObjectName(QStringLiteral("chainLastWeight"));
-  m_lastWeight->setText(
-      tr("λ%1 = 1 − the others = %2")
-          .arg(subscriptDigits(n), QString::number(m_chain.weights.back(), 'g', 6)));
-  m_lastWeight->setToolTip(weightSpec(n).toolTip);
-  m_rows->addWidget(m_lastWeight);
   setWeightsShown(m_weightsShown);
   m_design->setVisible(!m_chain.harmonics.empty());
   m_designLabel->setVisible(!m_chain.harmonics.empty());
@@ -400,7 +397,11 @@ void ChainEditor::setShownMassOffered(bool offered) { m_form->setRowVisible(m_sh
 void ChainEditor::setWeightsShown(bool shown) {
   m_weightsShown = shown;
   for (SliderSpin* weight : m_weights) weight->setVisible(shown);
-  if (m_lastWeight) m_lastWeight->setVisible(shown);
+  if (m_firstWeight) m_firstWeight->setVisible(shown);
+}
+
+void ChainEditor::showFirstWeight() {
+  m_firstWeight->setText(tr("λ₁ = 1 − the others = %1").arg(QString::number(m_chain.weights.front(), 'g', 6)));
 }
 
 void ChainEditor::changed() { emit chainChanged(m_chain); }

@@ -58,6 +58,8 @@ class ChainEditor : public QWidget {
   void fillResonances();
   void fillSection();
   void changed();
+  /// the label of λ1, the weight that balances the others
+  void showFirstWeight();
 
   MassChainParams m_chain;
   QSpinBox* m_count = nullptr;
@@ -78,7 +80,7 @@ class ChainEditor : public QWidget {
   QCheckBox* m_wall = nullptr;
   SliderSpin* m_wallSpring = nullptr;
   double m_lastWall = 1;  ///< the wall's spring restored when the wall comes back
-  QLabel* m_lastWeight = nullptr;
+  QLabel* m_firstWeight = nullptr;  ///< λ1 = 1 - the others, shown (not edited)
   QLabel* m_summary = nullptr;
   bool m_weightsShown = true;
 };

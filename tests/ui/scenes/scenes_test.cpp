@@ -605,8 +605,8 @@ class ScenesTest : public QObject {
     }
     QCOMPARE(figure(*m_window, PlotKind::ChainStopTrace).markers.size(), std::size_t(3));
     // the weights are not this scene's: hidden
-    const auto* lastWeight = m_window->parameterPanel()->chainEditor()->findChild<QLabel*>(QStringLiteral("chainLastWeight"));
-    QVERIFY(lastWeight && !lastWeight->isVisibleTo(m_window.get()));
+    const auto* firstWeight = m_window->parameterPanel()->chainEditor()->findChild<QLabel*>(QStringLiteral("chainFirstWeight"));
+    QVERIFY(firstWeight && !firstWeight->isVisibleTo(m_window.get()));
   }
 
   // a string of eight masses (issue 33): the stop inside it (mass 5), its slowest mode pushed:

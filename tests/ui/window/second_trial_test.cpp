@@ -6,6 +6,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QDialog>
+#include <QLabel>
 #include <QScreen>
 #include <QTextBrowser>
 #include <QTimer>
@@ -21,6 +22,7 @@
 #include "ui/plots/plot_view.h"
 #include "ui/widgets/chain_editor.h"
 #include "ui/widgets/parameter_panel.h"
+#include "ui/widgets/number_box.h"
 #include "ui/widgets/slider_spin.h"
 #include "ui/window/main_window.h"
 
@@ -255,6 +257,44 @@ class SecondTrialTest : public QObject {
       if (presenting) QVERIFY2(scrolls, "the large text of presentation mode is taller than the screen here");
     }
     m_window->setPresentation(false, room.height(), false);
+  }
+
+  // Grazing sets, two modes: the panel's λ1 = 0.2 put the dot at λ = 0.8, and moving the slider
+  // right moved the dot left. The panel's sliders are λ2 ... λN (λ1 balancing): the plot's λ is
+  // the slider's, the same name and the same way
+  void theGrazingSetsDotMovesWithItsSlider() {
+    m_window->selectScene(sceneIndex(*m_window, QStringLiteral("grazing-sets")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    QCOMPARE(m_window->params().massChain.size(), 2);
+    const auto dot = [this] {
+      const SimUpdate* shown = m_window->displayed();
+      return shown->request->job.figures.at(PlotKind::GrazingSet).markers.front().x();
+    };
+    const QList<SliderSpin*> weights = m_window->parameterPanel()->chainEditor()->findChildren<SliderSpin*>();
+    SliderSpin* lambda = nullptr;
+    for (SliderSpin* control : weights) {
+      if (control->isVisibleTo(m_window.get()) && control->key() == ParamKey::Lambda) {
+        QVERIFY2(!lambda, "one weight on a slider for two modes");
+        lambda = control;
+      }
+    }
+    QVERIFY(lambda);
+    QCOMPARE(lambda->findChild<QLabel*>()->text(), QStringLiteral("λ₂"));
+    const QString xTitle = m_window->displayed()->request->job.figures.at(PlotKind::GrazingSet).xTitle;
+    QVERIFY2(xTitle.startsWith(QStringLiteral("λ₂")), qPrintable(xTitle));
+    double last = -1e9;
+    for (double value : {0.2, 0.5, 0.8}) {
+      NumberBox* box = lambda->spinBox();
+      box->setFocus();
+      box->selectAll();
+      QTest::keyClicks(box, QString::number(value));
+      QTest::keyClick(box, Qt::Key_Return);
+      QVERIFY(waitForLatestFinal(*m_window, 60000));
+      QCOMPARE(m_window->params().massChain.weights[1], value);
+      QCOMPARE(dot(), value);
+      QVERIFY(dot() > last);
+      last = dot();
+    }
   }
 
  private:
