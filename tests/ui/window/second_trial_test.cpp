@@ -17,6 +17,8 @@
 #include <QTest>
 #include <QWheelEvent>
 
+#include <algorithm>
+
 #include "tests/ui/explorer_test_support.h"
 #include "ui/compute/scene.h"
 #include "ui/plots/plot_view.h"
@@ -295,6 +297,23 @@ class SecondTrialTest : public QObject {
       QVERIFY(dot() > last);
       last = dot();
     }
+  }
+
+  // "Three masses in 1:2:3": every detuned flight was drawn at 0.93-0.995 T, none past T, while
+  // the text promised flights past T (1 % off: two flights of ~200 T, above the axis). The
+  // contrast shows what the text says: flights past T, inside the plot's axes
+  void theDetunedContrastShowsFlightsPastT() {
+    m_window->selectScene(sceneIndex(*m_window, QStringLiteral("three-masses")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    QVERIFY(m_window->scene().description().contains(QStringLiteral("past T")));
+    const CurveFigure& detuned = m_window->displayed()->request->job.figures.at(PlotKind::DetunedFlights);
+    std::vector<QPointF> points = detuned.curve;
+    points.insert(points.end(), detuned.markers.begin(), detuned.markers.end());
+    const double top = detuned.yMax > detuned.yMin ? detuned.yMax : 1e300;
+    const auto shownPastT = std::count_if(points.begin(), points.end(),
+                                          [&](const QPointF& p) { return p.y() > 1.0 && p.y() <= top; });
+    QVERIFY2(shownPastT >= 5, qPrintable(QStringLiteral("%1 flights past T on screen").arg(shownPastT)));
+    QVERIFY2(detuned.title.contains(QStringLiteral("past 3 T")), qPrintable(detuned.title));
   }
 
  private:
