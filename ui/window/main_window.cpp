@@ -470,7 +470,9 @@ void MainWindow::layoutViews() {
 
 void MainWindow::selectScene(int index) {
   if (index < 0 || index >= int(m_scenes.size())) return;
-  // a refused value stays behind: the scene left goes back to what it last showed
+  // a refused value stays behind: the scene left goes back to what it last showed (said until
+  // the next edit or the next switch)
+  m_droppedNote.clear();
   if (m_sceneChosen && index != m_sceneIndex && !m_problem.isEmpty()) {
     m_droppedNote = tr("the refused edit of %1 was dropped (%2): it keeps its last valid values")
                         .arg(scene().title(), m_problem);
