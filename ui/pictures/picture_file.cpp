@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/pictures/picture_file.h"
 
+#include <QBuffer>
 #include <QFileInfo>
 #include <QImageWriter>
 #include <QJsonDocument>
@@ -12,6 +13,7 @@
 #include <QSvgGenerator>
 
 #include "core/version.h"
+#include "ui/pictures/svg_text.h"
 
 namespace grazelab::pictures {
 namespace {
@@ -78,13 +80,19 @@ bool writePng(const QString& path, const QImage& image, const PictureMetadata& m
 }
 
 bool writeSvg(const QString& path, QSize size, const Painting& paint, const PictureMetadata& metadata,
-              QString* error) {
+              QString* error, int dpi) {
   QSaveFile file(path);
   if (!openSaveFile(file, error)) return false;
+  QBuffer drawn;
+  drawn.open(QIODevice::WriteOnly);
   QSvgGenerator generator;
-  generator.setOutputDevice(&file);
+  generator.setOutputDevice(&drawn);
   generator.setSize(size);
   generator.setViewBox(QRect(QPoint(0, 0), size));
+  // a font's points become user units at this resolution (Qt's default, 72, wrote a 9 pt label
+  // as 9 units where the screen laid it out in 12 pixels: the text came out small, and the runs
+  // of a title with symbols, placed by the screen's layout, came apart)
+  generator.setResolution(dpi);
   // Qt 6.4 writes the title and the description as they are: a "<" in them would make the
   // file unreadable
   generator.setTitle(metadata.title.toHtmlEscaped());
@@ -97,6 +105,11 @@ bool writeSvg(const QString& path, QSize size, const Painting& paint, const Pict
   }
   paint(painter);
   painter.end();
+  if (file.write(wholeSvgText(drawn.data())) < 0) {
+    file.cancelWriting();
+    if (error) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+    return false;
+  }
   return commit(file, error);
 }
 

@@ -37,9 +37,10 @@ using Painting = std::function<void(QPainter&)>;
 
 /// PNG of `image`, the metadata as its texts (with "Software": GrazeLab and its version).
 bool writePng(const QString& path, const QImage& image, const PictureMetadata& metadata, QString* error);
-/// SVG of `size` logical pixels.
+/// SVG of `size` logical pixels; fonts sized as on a screen of `dpi` logical dots per inch
+/// (the one the painting's text was laid out for).
 bool writeSvg(const QString& path, QSize size, const Painting& paint, const PictureMetadata& metadata,
-              QString* error);
+              QString* error, int dpi = 96);
 /// One PDF page the size of `size` seen at 96 dpi (nothing cropped or distorted), 300 dpi.
 bool writePdf(const QString& path, QSize size, const Painting& paint, const PictureMetadata& metadata,
               QString* error);

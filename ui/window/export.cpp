@@ -229,7 +229,7 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
         const ScrollAreasAsPictures shown(widget);
         widget->render(&painter);
         shown.paint(painter);
-      }, metadata, error);
+      }, metadata, error, widget->logicalDpiY());
     case pictures::PictureFormat::Pdf:
       return pictures::writePdf(path, widget->size(), [widget](QPainter& painter) {
         const LegendClipping unclipped(widget);
