@@ -66,7 +66,8 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
   const Eigen::Index chosen = spec.phaseMass > 0 ? Eigen::Index(spec.phaseMass - 1) : s;
   ChainSampling<S> sampling;
   if (spec.window > 0 && spec.gridPoints > 1) {
-    for (int i = 0; i < spec.gridPoints; ++i) sampling.times.push_back(spec.window * i / (spec.gridPoints - 1));
+    const int points = spec.free ? spec.gridPoints : std::max(spec.gridPoints, spec.maxGridPoints);
+    for (int i = 0; i < points; ++i) sampling.times.push_back(spec.window * i / (spec.gridPoints - 1));
     sampling.sink = [&](double t, const BasicChainState<S>& state) {
       std::vector<double> u(std::size_t(state.u.size()));
       for (Eigen::Index i = 0; i < state.u.size(); ++i) u[std::size_t(i)] = toDouble(S(state.u[i]));

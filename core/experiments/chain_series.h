@@ -17,18 +17,21 @@ namespace grazelab::core::experiments {
 /// A run of a chain of N masses as the explorer's N-mass scenes draw it (docs/explorer.md): the
 /// exact run (core/solver/chain_run.h), the chain's spectrum and common period, every free
 /// flight's length, and the stopped mass and one chosen mass on a time grid over the run's
-/// first `window`.
+/// first `window` (or, with `maxGridPoints`, at that step over the whole run).
 struct ChainSeriesSpec {
   MassChain chain;   ///< usable (validate(chain) empty)
   ChainState start;  ///< u_s <= d
   long contacts = 200;
   double window = 0;  ///< [time] the grid's span from t = 0 (0: none)
-  int gridPoints = 1500;
+  int gridPoints = 1500;  ///< over `window`: the grid's step is window / (gridPoints - 1)
   int phaseMass = 0;                  ///< 1-based; 0: the stopped mass
   TrustMode trust = TrustMode::Auto;  ///< the run's error estimate (core/solver/chain_trust.h)
   /// the linear motion alone, the stop ignored (a grazing linear orbit that passes the stop is
   /// drawn passing it): the grid only, no run (no events, no flights)
   bool free = false;
+  /// more than gridPoints: the grid goes on past `window` at the same step to the run's end, or
+  /// to this many points (a view that shows `window` at a time can then follow the whole run)
+  int maxGridPoints = 0;
 };
 
 /// One free flight: from an event (or the start) to the next contact.

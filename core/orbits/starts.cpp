@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "core/solver/chain_run.h"
+
 namespace grazelab::core {
 
 template <typename S>
@@ -81,6 +83,39 @@ std::optional<State> stopLineStateAtEnergy(const Model& model, double level, dou
   const double rest = level - energy(model, state);
   if (!(rest >= 0)) return std::nullopt;
   state.v1 = std::copysign(std::sqrt(2 * rest / model.m1), v1Sign);
+  return state;
+}
+
+ChainSectionStart chainSectionStateAtEnergy(const MassChain& chain, double level, const ChainState& base,
+                                            int a, double x, int b, double y) {
+  const int n = chain.size();
+  const int s = chain.stopped() - 1;
+  ChainSectionStart start{base};
+  if (a == s || a == n + s || b == s || b == n + s) {
+    start.problem = ChainSectionProblem::StoppedMassCoordinate;
+    return start;
+  }
+  ChainState& state = start.state;
+  const auto set = [&](int c, double value) { (c < n ? state.u[c] : state.v[c - n]) = value; };
+  set(a, x);
+  set(b, y);
+  state.u[s] = chain.gap;
+  state.v[s] = 0;
+  // what is left for the stopped mass's speed once the springs and the others take their share
+  const double rest = level - chainEnergy(chain, state);
+  if (!(rest >= 0)) {
+    start.problem = ChainSectionProblem::EnergyTooLow;
+    return start;
+  }
+  state.v[s] = -std::sqrt(2 * rest / chain.masses[std::size_t(s)]);
+  return start;
+}
+
+ChainState chainStopLineState(const MassChain& chain, const ChainState& base, double speed) {
+  ChainState state = base;
+  const int s = chain.stopped() - 1;
+  state.u[s] = chain.gap;
+  state.v[s] = -std::abs(speed);
   return state;
 }
 

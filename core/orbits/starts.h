@@ -10,6 +10,7 @@
 #include "core/model/model.h"
 #include "core/orbits/special_orbits.h"
 #include "core/model/resonance.h"
+#include "core/solver/chain_flight.h"
 
 namespace grazelab::core {
 
@@ -61,5 +62,28 @@ std::optional<State> sectionStateAtEnergy(const Model& model, double level, doub
 /// nothing when mass 2's speed and the springs alone hold more than `level`.
 std::optional<State> stopLineStateAtEnergy(const Model& model, double level, double u1,
                                            double speed, double v1Sign);
+
+/// Where a chain of N masses cannot start from a point chosen on its section H.
+enum class ChainSectionProblem {
+  None,
+  StoppedMassCoordinate,  ///< a coordinate is the stopped mass's own (u_s = d on H, v_s is solved)
+  EnergyTooLow,           ///< the chosen coordinates and the springs alone hold more than the energy
+};
+
+struct ChainSectionStart {
+  ChainState state;
+  ChainSectionProblem problem = ChainSectionProblem::None;
+};
+
+/// A chain's state on H (u_s = gap) of energy `level` whose coordinates `a` and `b` (0-based in
+/// (u_1 ... u_N, v_1 ... v_N)) are `x` and `y`, every other one as in `base`, the stopped mass
+/// leaving the stop (v_s <= 0) at the speed the energy leaves it: sectionStateAtEnergy for N
+/// masses (on two masses, with base's u1 and v1 chosen, the same state).
+ChainSectionStart chainSectionStateAtEnergy(const MassChain& chain, double level, const ChainState& base,
+                                            int a, double x, int b, double y);
+
+/// `base` with the stopped mass on the stop leaving it at `speed` (a start chosen on the stop line
+/// of its phase portrait): the other masses as in `base`, so the energy is what that makes it.
+ChainState chainStopLineState(const MassChain& chain, const ChainState& base, double speed);
 
 }  // namespace grazelab::core

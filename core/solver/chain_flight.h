@@ -4,12 +4,14 @@
 
 #include <Eigen/Core>
 
+#include <cassert>
 #include <optional>
 #include <stop_token>
 #include <type_traits>
 #include <vector>
 
 #include "core/model/mass_chain.h"
+#include "core/model/state.h"
 #include "core/solver/sinusoid_zero.h"
 
 namespace grazelab::core {
@@ -26,6 +28,22 @@ struct BasicChainState {
   ChainVector<S> v;
 };
 using ChainState = BasicChainState<double>;
+
+/// A two-mass state as the state of a chain of two (u = (u1, u2), v = (v1, v2)), and back: one
+/// type where both stacks meet (a start chosen with the mouse, a session's start).
+template <typename S>
+BasicChainState<S> chainStateOf(const BasicState<S>& state) {
+  BasicChainState<S> chain{ChainVector<S>(2), ChainVector<S>(2)};
+  chain.u << state.u1, state.u2;
+  chain.v << state.v1, state.v2;
+  return chain;
+}
+/// `state` of a chain of two masses (asserted).
+template <typename S>
+BasicState<S> twoMassStateOf(const BasicChainState<S>& state) {
+  assert(state.u.size() == 2 && state.v.size() == 2);
+  return {state.u[0], state.u[1], state.v[0], state.v[1]};
+}
 
 /// What a chain's free flights are computed from: its modes, with the frequencies of a
 /// commensurate chain taken as exact multiples n_j w0 (so that every flight repeats after

@@ -58,7 +58,7 @@ class Scene {
     /// instead of `build`, for a scene whose computation depends on a start chosen with the
     /// mouse (the Nonlinear modes scene: the orbit clicked); `clicked` is empty otherwise
     std::function<SceneJob(const Scene&, const Params&, const DerivedModel&,
-                           const std::optional<core::State>& clicked, std::stop_token stop,
+                           const std::optional<core::ChainState>& clicked, std::stop_token stop,
                            const ScenePartial& partial, SceneCache& cache)>
         buildFromStart;
   };
@@ -75,7 +75,7 @@ class Scene {
   QList<PlotKind> plots() const { return m_spec.plots; }
   /// `cache`: what the scene kept from before (none: it starts afresh).
   SceneJob build(const Params& params, const DerivedModel& derived, std::stop_token stop = {},
-                 const std::optional<core::State>& clicked = std::nullopt,
+                 const std::optional<core::ChainState>& clicked = std::nullopt,
                  const ScenePartial& partial = {}, SceneCache* cache = nullptr) const {
     if (m_spec.buildFromStart) {
       SceneCache fresh;

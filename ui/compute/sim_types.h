@@ -15,6 +15,7 @@
 #include <string>
 
 #include "core/experiments/run.h"
+#include "core/solver/chain_flight.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/periodic_orbit.h"
 #include "ui/compute/derived.h"
@@ -70,8 +71,9 @@ struct SimRequest {
   Params params;       ///< the parameters that produced it (for the display and snapshots)
   QString sceneName;
   /// a start chosen with the mouse (on H, the stop line, the map, the modes picture): the run
-  /// starts there instead of the scene's own start; part of what reproduces the run
-  std::optional<core::State> clickedStart;
+  /// starts there instead of the scene's own start; part of what reproduces the run. A chain's
+  /// state: two masses' (core::chainStateOf) as N masses'
+  std::optional<core::ChainState> clickedStart;
   DerivedModel derived;  ///< the chain of `params`, as the panel derived it
   /// the scene's computation; empty when `job` is already set (tests and benchmarks). A long
   /// one may show what it has so far through `partial` (the modes atlas, family by family).

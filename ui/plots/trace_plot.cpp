@@ -58,7 +58,6 @@ void TracePlot::show(const SimUpdate& update) {
   m_gap = gap;
   m_window = tLast;
   m_T2 = core::computeModes(update.request->job.spec.model).T2;
-  m_samplesCut = result.samplesTruncated || result.tFinal > tLast * (1 + 1e-9) + 1e-12;
   m_tFinal = result.tFinal;
   placeWindow();
   drawOverlay();
@@ -66,22 +65,16 @@ void TracePlot::show(const SimUpdate& update) {
 }
 
 void TracePlot::placeWindow() {
+  // the samples may cover only the run's first periods: the title says so when the run goes on
   if (m_whole || m_runWindow.wholeFits(m_window, m_T2)) {
     setXWindow(std::nullopt);
-    // the samples may cover only the run's first periods; say so when the run goes on
-    setXTitle(m_samplesCut ? tr("time t (sampled to %1 of the run's %2)")
-                                 .arg(m_window, 0, 'g', 3)
-                                 .arg(m_tFinal, 0, 'g', 3)
-                           : tr("time t"));
+    setXTitle(runAxisTitle(tr("time t"), std::nullopt, m_window, m_tFinal));
     return;
   }
   m_runWindow.follow(m_cursorTime, m_window, m_T2);
-  setXWindow(std::pair(m_runWindow.from(), m_runWindow.to()));
-  // every number a time, the same as W's: what is shown, of what was sampled, of the run
-  // (short: a longer title wrapped to three lines and was cut; W is in the tooltip and menu)
-  const QString shown = tr("%1–%2").arg(m_runWindow.from(), 0, 'g', 3).arg(m_runWindow.to(), 0, 'g', 3);
-  setXTitle(m_samplesCut ? tr("time t (%1 of %2 sampled)").arg(shown).arg(m_window, 0, 'g', 3)
-                         : tr("time t (%1 of %2)").arg(shown).arg(m_tFinal, 0, 'g', 3));
+  const std::pair shown(m_runWindow.from(), m_runWindow.to());
+  setXWindow(shown);
+  setXTitle(runAxisTitle(tr("time t"), shown, m_window, m_tFinal));
 }
 
 void TracePlot::setWholeRun(bool whole) {

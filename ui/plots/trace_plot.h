@@ -31,7 +31,6 @@ class TracePlot final : public PlotView {
   double m_T2 = 0;
   double m_cursorTime = 0;
   bool m_whole = false;
-  bool m_samplesCut = false;  ///< the run goes on past its samples
   double m_tFinal = 0;
   RunWindow m_runWindow;
   int m_overlayTrace = -1;

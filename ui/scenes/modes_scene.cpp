@@ -73,7 +73,7 @@ Scene::Spec modesScene() {
   scene.plots = {PlotKind::ModesAtlas, PlotKind::Multipliers, PlotKind::TraceU2,
                  PlotKind::PhaseU2V2,  PlotKind::Poincare,    PlotKind::Chain};
   scene.buildFromStart = [](const Scene& self, const Params& params, const DerivedModel& derived,
-                            const std::optional<core::State>& clicked, std::stop_token stop,
+                            const std::optional<core::ChainState>& clickedChain, std::stop_token stop,
                             const ScenePartial& partial, SceneCache& cache) {
     SceneJob job;
     job.spec.model = derived.model;
@@ -94,6 +94,8 @@ Scene::Spec modesScene() {
     job.modes = atlasOf(chain, derived, stop, partial, cache);
     if (!job.modes) return job;  // stopped
     // the orbit followed: the one clicked on the atlas, or the 1IPP orbit of the slider's period
+    const std::optional<core::State> clicked =
+        clickedChain && clickedChain->u.size() == 2 ? std::optional(core::twoMassStateOf(*clickedChain)) : std::nullopt;
     if (clicked) {
       // an orbit of the atlas, with its family's impacts per period (closing to 1e-9: the
       // atlas's states close to ~1e-14)

@@ -23,6 +23,8 @@ QString tr(const char* text) {
   return QCoreApplication::translate("grazelab::ui::ThreeMassesScene", text);
 }
 
+constexpr int kMaxGridPoints = 100'000;
+
 CurveFigure flightFigure(const QString& title, const core::experiments::ChainSeries& series,
                          double unit, bool bound, const QString& unitName) {
   CurveFigure figure;
@@ -69,7 +71,9 @@ CurveFigure sectionFigure(const MassChainParams& given, const core::experiments:
   figure.toolTip =
       tr("The chain's state at each contact of mass %1 with the stop (the section H: u%1 = d), on "
          "the two coordinates chosen in the panel's 'section on' (velocities just before the "
-         "contact). A resonant chain's points lie on few curves; a chaotic run fills a region.")
+         "contact). A resonant chain's points lie on few curves; a chaotic run fills a region. "
+         "Click to start a run there: those two coordinates as clicked, the others as at the start "
+         "shown, mass %1 leaving the stop at the speed that keeps the energy.")
           .arg(chain.stopped());
   figure.curveName = tr("contacts");
   figure.dots = true;
@@ -96,12 +100,19 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
   trace.yTitle = tr("u / d");
   trace.toolTip =
       tr("The stopped mass's displacement over the gap d; the dashed line is the stop. Each "
-         "dot is a contact.");
+         "dot is a contact.\nA long run shows four slowest periods at the animation's time; W shows all of it.");
   trace.curveName = tr("u%1 / d").arg(chain.stopped());
   for (const core::experiments::ChainGridPoint& point : series.grid) {
     trace.curve.emplace_back(point.t / unit, point.us / chain.gap);
   }
   trace.timeUnit = unit;  // the animation's time a line on it
+  // the grid covers the whole run (or its first kMaxGridPoints): the trace and the portrait show
+  // `window` of it at the animation's time, all of it on W
+  const double sampled = series.grid.empty() ? 0.0 : series.grid.back().t;
+  // (a grid that reached the run's end stops within a step of it: not cut)
+  const double runEnd = series.grid.size() >= std::size_t(kMaxGridPoints) ? series.run.tFinal : 0.0;
+  trace.timeWindow = window;
+  trace.runEnd = runEnd;
   // the mass the panel's 'phase of' names, when it is another: its trace beside the stopped one
   if (given.shown() != chain.stopped()) {
     trace.title = tr("Mass %1 (on the stop's side) and mass %2: u / d").arg(chain.stopped()).arg(given.shown());
@@ -110,12 +121,11 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
       trace.other.emplace_back(point.t / unit, point.uChosen / chain.gap);
     }
   }
-  const double span = window / unit;
   trace.referenceName = tr("stop");
-  trace.reference = {QPointF(0, 1), QPointF(span, 1)};
+  trace.reference = {QPointF(0, 1), QPointF(sampled / unit, 1)};
   trace.markerName = tr("contacts");
   for (const core::ChainEvent& event : series.run.events) {
-    if (event.t > window) break;
+    if (event.t > sampled) break;
     if (core::isContact(event.type)) trace.markers.emplace_back(event.t / unit, 1.0);
   }
   job.figures[PlotKind::ChainStopTrace] = trace;
@@ -134,18 +144,23 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
   phase.xTitle = tr("u%1 / d").arg(shown);
   phase.yTitle = tr("v%1 / (d ω₁)").arg(shown);
   phase.toolTip = shownIsStopped
-                      ? tr("The stopped mass's velocity against its displacement over the first "
-                           "periods; at u/d = 1 the impacts reverse the velocity.")
-                      : tr("Mass %1's velocity against its displacement over the first periods "
-                           "(the panel's 'phase of' chooses the mass); the dots are its state at "
-                           "each contact of the stopped mass.")
+                      ? tr("The stopped mass's velocity against its displacement; at u/d = 1 the "
+                           "impacts reverse the velocity. Click on the stop line to start a run "
+                           "there: the mass leaves the stop at the clicked speed, the others as at "
+                           "the start shown.")
+                      : tr("Mass %1's velocity against its displacement (the panel's 'phase of' "
+                           "chooses the mass); the dots are its state at each contact of the "
+                           "stopped mass.")
                             .arg(shown);
+  phase.toolTip += tr("\nA long run shows four slowest periods at the animation's time; W shows all of it.");
   phase.curveName = tr("(u, v)");
   const double speed = chain.gap * series.modes.omega.maxCoeff();
   for (const core::experiments::ChainGridPoint& point : series.grid) {
     phase.curve.emplace_back(point.uChosen / chain.gap, point.vChosen / speed);
     phase.curveTimes.push_back(point.t);  // the animation's time a ring on it
   }
+  phase.timeWindow = window;
+  phase.runEnd = runEnd;
   if (shownIsStopped) {
     phase.referenceName = tr("stop");
     phase.reference = {QPointF(1, -1.5), QPointF(1, 1.5)};
@@ -153,9 +168,11 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
     phase.markerName = tr("at contacts");
     const Eigen::Index i = Eigen::Index(shown - 1);
     for (const core::ChainEvent& event : series.run.events) {
-      if (event.t > window) break;
-      if (core::isContact(event.type))
+      if (event.t > sampled) break;
+      if (core::isContact(event.type)) {
         phase.markers.emplace_back(event.u[i] / chain.gap, event.vBefore[i] / speed);
+        phase.markerTimes.push_back(event.t);
+      }
     }
   }
   job.figures[PlotKind::ChainPhase] = phase;
@@ -258,8 +275,11 @@ Scene::Spec threeMassesScene() {
     // double: its own scene asks for none, and says so). The trace, the phase portrait and the
     // animation span four slowest periods: six drew twenty fast swings into a plot a third of a
     // projector wide, lines merging into a band in presentation's thick pen
-    const core::experiments::ChainSeriesSpec run{chain,      start, long(params.horizon), 4 * slowest, 1500,
-                                                 given.shown(), contrast ? core::TrustMode::Auto : core::TrustMode::Off};
+    core::experiments::ChainSeriesSpec run{chain,      start, long(params.horizon), 4 * slowest, 1500,
+                                           given.shown(), contrast ? core::TrustMode::Auto : core::TrustMode::Off};
+    // the grid goes on over the whole run at that step (the animation plays all of it, W
+    // shows all of it), to at most this many points: ~15 MB for eight masses
+    run.maxGridPoints = kMaxGridPoints;
     SceneJob job;
     job.spec.chains = {run};
     if (contrast && ratios.commensurate && chain.size() >= 2) {

@@ -16,6 +16,7 @@
 #include "core/model/resonance.h"
 #include "ui/widgets/chain_editor.h"
 #include "ui/widgets/eliding_combo_box.h"
+#include "ui/widgets/param_specs.h"
 #include "ui/compute/scene.h"
 #include "ui/widgets/slider_spin.h"
 
@@ -234,15 +235,20 @@ void ParameterPanel::setMessage(const QString& message) {
 
 QString ParameterPanel::message() const { return m_message->isVisible() ? m_message->text() : QString(); }
 
-void ParameterPanel::setClickedStart(const std::optional<core::State>& start) {
+void ParameterPanel::setClickedStart(const std::optional<core::ChainState>& start) {
   if (!start) {
     m_clickedStart->hide();
     return;
   }
-  const auto n = [](double value) { return QString::number(value, 'g', 4); };
-  m_clickedStart->setText(tr("<b>Running from a clicked start</b>: u₁ = %1, u₂ = %2, v₁ = %3, v₂ = %4 "
-                             "(not the panel's; edit any value to go back)")
-                              .arg(n(start->u1), n(start->u2), n(start->v1), n(start->v2)));
+  // u₁ = …, u₂ = …, then v₁ = …, as the session writes them
+  QStringList parts;
+  for (const auto& [name, values] : {std::pair(QStringLiteral("u"), &start->u), std::pair(QStringLiteral("v"), &start->v)}) {
+    for (Eigen::Index i = 0; i < values->size(); ++i) {
+      parts.append(QStringLiteral("%1%2 = %3").arg(name, subscriptDigits(int(i) + 1), QString::number((*values)[i], 'g', 4)));
+    }
+  }
+  m_clickedStart->setText(tr("<b>Running from a clicked start</b>: %1 (not the panel's; edit any value to go back)")
+                              .arg(parts.join(QStringLiteral(", "))));
   m_clickedStart->show();
 }
 

@@ -10,7 +10,7 @@
 #include <map>
 #include <utility>
 
-#include "core/model/state.h"
+#include "core/solver/chain_flight.h"
 #include "ui/compute/params.h"
 
 class QBoxLayout;
@@ -42,7 +42,7 @@ class ParameterPanel : public QWidget {
   const Params& params() const { return m_params; }
 
   /// Says that a run starts from a clicked state (nothing: the scene's own start again).
-  void setClickedStart(const std::optional<core::State>& start);
+  void setClickedStart(const std::optional<core::ChainState>& start);
   QString clickedStartText() const;
   /// Notes on the start the run uses (a push lost in rounding); empty hides them.
   void setNotes(const QStringList& notes);

@@ -325,12 +325,13 @@ SceneView* MainWindow::addView(PlotKind kind) {
     m_landscape = landscape;
     landscape->setBackEnabled(!m_regionHistory.empty());
     connect(landscape, &LandscapeView::startRequested, this,
-            [this](const core::State& start) { startFromClick(start); });
+            [this](const core::State& start) { startFromClick(core::chainStateOf(start)); });
     connect(landscape, &LandscapeView::regionRequested, this, &MainWindow::showMapRegion);
     connect(landscape, &LandscapeView::backRequested, this, [this] { mapRegionBack(); });
   }
   if (auto* modes = dynamic_cast<ModesPlot*>(view)) {
-    connect(modes, &ModesPlot::orbitChosen, this, [this](const core::State& start) { startFromClick(start); });
+    connect(modes, &ModesPlot::orbitChosen, this,
+            [this](const core::State& start) { startFromClick(core::chainStateOf(start)); });
     connect(modes, &ModesPlot::missed, this, [this] {
       m_status->setMessage(tr("Click within %1 pixels of a family's dots to follow that orbit.")
                                .arg(ModesPlot::kChoiceRadius));
@@ -341,22 +342,23 @@ SceneView* MainWindow::addView(PlotKind kind) {
     if (!m_currentPlot) m_currentPlot = plot;
     connect(plot, &PlotView::activated, this, [this](PlotView* active) { m_currentPlot = active; });
     connect(plot, &PlotView::enlargeRequested, this, [this](PlotView* plot) { toggleEnlarged(plot); });
-    if (qobject_cast<PoincarePlot*>(plot)) {
+    // a band a hand hits on a projector: kStopLineBand pixels either side of the stop line
+    const auto stopLineBand = [](PlotView* portrait) {
+      const double perPixel = std::abs(portrait->chart()->mapToValue(QPointF(100, 0)).x() -
+                                       portrait->chart()->mapToValue(QPointF(0, 0)).x()) / 100;
+      return kStopLineBand * perPixel;
+    };
+    auto* curve = qobject_cast<CurvePlot*>(plot);
+    auto* phase = qobject_cast<PhasePlot*>(plot);
+    if (qobject_cast<PoincarePlot*>(plot) || (curve && curve->kind() == PlotKind::ChainSection)) {
       connect(plot, &PlotView::clickedAt, this, [this](QPointF value) { startFromSection(value); });
-    }
-    if (auto* curve = qobject_cast<CurvePlot*>(plot)) {
+    } else if ((phase && phase->mass() == PhasePlot::Mass::Two) || (curve && curve->kind() == PlotKind::ChainPhase)) {
+      connect(plot, &PlotView::clickedAt, this,
+              [this, plot, stopLineBand](QPointF value) { startFromStopLine(value, stopLineBand(plot)); });
+    } else if (curve) {
       connect(curve, &CurvePlot::referenceDragged, this, &MainWindow::setGloWeightsFrom);
       connect(curve, &PlotView::clickedAt, this, [this, curve](QPointF value) {
         if (curve->draggable()) setGloWeightsFrom(value);
-      });
-    }
-    auto* phase = qobject_cast<PhasePlot*>(plot);
-    if (phase && phase->mass() == PhasePlot::Mass::Two) {
-      connect(plot, &PlotView::clickedAt, this, [this, phase](QPointF value) {
-        // a band a hand hits on a projector: kStopLineBand pixels either side of the line
-        const double perPixel = std::abs(phase->chart()->mapToValue(QPointF(100, 0)).x() -
-                                         phase->chart()->mapToValue(QPointF(0, 0)).x()) / 100;
-        startFromStopLine(value, kStopLineBand * perPixel);
       });
     }
   }
@@ -533,6 +535,18 @@ bool MainWindow::applySession(const Session& session, QString* error) {
     if (error) *error = tr("unknown scene \"%1\"").arg(session.scene);
     return false;
   }
+  // a start of as many masses as the scene's chain, or none: nothing changes otherwise
+  const Scene& target = *m_scenes[std::size_t(index)];
+  const Eigen::Index masses = target.massChain() ? Eigen::Index(session.params.massChain.size()) : 2;
+  if (session.start && session.start->u.size() != masses) {
+    if (error) {
+      *error = tr("the start has %1 masses where the chain of \"%2\" has %3")
+                   .arg(session.start->u.size())
+                   .arg(session.scene)
+                   .arg(masses);
+    }
+    return false;
+  }
   // the session's parameters as saved, whatever the scene on screen had
   m_sceneParams[std::size_t(index)] = session.params;
   showScene(index);
@@ -579,7 +593,14 @@ void MainWindow::recompute() {
                      clicked = m_clickedStart, cache = m_sceneCache](std::stop_token stop,
                                                                      const ScenePartial& partial) {
     SceneJob job = scene.build(params, derived, stop, clicked, partial, cache.get());
-    if (clicked && job.ok) job.spec.run.initial = *clicked;
+    if (clicked && job.ok) {
+      // the start clicked in place of the scene's own: a chain's runs (the shown one and its
+      // contrast, the same start on a detuned chain), or the two-mass run
+      for (core::experiments::ChainSeriesSpec& chain : job.spec.chains) {
+        if (chain.chain.size() == clicked->u.size()) chain.start = *clicked;
+      }
+      if (job.spec.chains.empty() && clicked->u.size() == 2) job.spec.run.initial = core::twoMassStateOf(*clicked);
+    }
     return job;
   };
   m_controller->submit(std::move(request));

@@ -142,11 +142,14 @@ class MainWindow : public QMainWindow {
   /// Starts a run from the point (u1, v1) of the section H: u2 = d and v2 <= 0 (leaving the
   /// stop) on the energy level of the run shown. False (and why, on the status line) when no
   /// state of that energy lies there. The next parameter edit goes back to the scene's start.
+  /// N masses: the point is on the section's two coordinates as plotted (u / d, v / (d ω₁)),
+  /// the others as at the shown run's start (core::chainSectionStateAtEnergy).
   bool startFromSection(QPointF u1v1);
   /// Starts a run from a click on the (u2, v2) portrait within `tolerance` of the stop line
   /// u2 = d: mass 2 leaves the stop at speed |v2| (v2 <= 0), mass 1 keeps the position of the
   /// run's start and takes the speed (in the same direction) that keeps the energy level.
-  /// False (and why, on the status line) off the line or when no such state exists.
+  /// False (and why, on the status line) off the line or when no such state exists. N masses:
+  /// the stopped mass's portrait as plotted, the others as at the shown run's start.
   bool startFromStopLine(QPointF u2v2, double tolerance);
   /// Sets the GLO weights of an N-mass scene from a point of its grazing-set plot (dragged or
   /// clicked): x the second mode's weight, y the third's (three modes), the first balancing
@@ -188,7 +191,10 @@ class MainWindow : public QMainWindow {
   void onUpdate(const SimUpdate& update);
   void applyPending();
   /// Runs from a clicked state until the next parameter edit.
-  void startFromClick(const core::State& start);
+  void startFromClick(const core::ChainState& start);
+  /// startFromSection and startFromStopLine on the chain of N masses shown
+  bool startChainFromSection(QPointF value);
+  bool startChainFromStopLine(QPointF value, double tolerance);
   /// Every plot fits the next result (after an edit; the one on screen is not redrawn).
   void followDataFromNextUpdate();
   void showProblem(const QString& message);
@@ -252,7 +258,7 @@ class MainWindow : public QMainWindow {
   bool m_viewsBuiltPresenting = false;
   QFont m_deskFont;
   QRect m_deskGeometry;  ///< where the window was before presentation mode
-  std::optional<core::State> m_clickedStart;  ///< a start chosen on H, until the next edit
+  std::optional<core::ChainState> m_clickedStart;  ///< a start chosen on H, until the next edit
   QPalette m_deskPalette;
   QAction* m_presentationAction = nullptr;
   QAction* m_wholeRunAction = nullptr;  ///< checked: time-based views show the whole run

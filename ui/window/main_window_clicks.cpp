@@ -42,6 +42,7 @@ void MainWindow::setGloWeightsFrom(QPointF value) {
 
 bool MainWindow::startFromSection(QPointF u1v1) {
   if (!m_displayed) return false;
+  if (scene().massChain()) return startChainFromSection(u1v1);
   const core::Model& model = m_displayed->request->job.spec.model;
   const double level = core::energy(model, m_displayed->request->job.spec.run.initial);
   const std::optional<core::State> start = core::sectionStateAtEnergy(model, level, u1v1.x(), u1v1.y());
@@ -53,12 +54,13 @@ bool MainWindow::startFromSection(QPointF u1v1) {
                           .arg(u1v1.y(), 0, 'g', 4));
     return false;
   }
-  startFromClick(*start);
+  startFromClick(core::chainStateOf(*start));
   return true;
 }
 
 bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
   if (!m_displayed) return false;
+  if (scene().massChain()) return startChainFromStopLine(u2v2, tolerance);
   const core::Model& model = m_displayed->request->job.spec.model;
   if (!(std::abs(u2v2.x() - model.gap) <= tolerance)) {
     m_status->setMessage(tr("Click within %1 pixels of the stop line u₂ = d (dashed) to start mass 2 "
@@ -78,7 +80,63 @@ bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
                           .arg(shown.u1, 0, 'g', 4));
     return false;
   }
-  startFromClick(*start);
+  startFromClick(core::chainStateOf(*start));
+  return true;
+}
+
+bool MainWindow::startChainFromSection(QPointF value) {
+  const auto& chains = m_displayed->request->job.spec.chains;
+  if (chains.empty()) return false;
+  const core::MassChain& chain = chains.front().chain;
+  const core::ChainState& shown = chains.front().start;
+  const MassChainParams& given = m_displayed->request->params.massChain;
+  const int n = chain.size();
+  // the plot's units: displacements over d, velocities over d w1 (the fastest frequency)
+  const double speed = chain.gap * core::chainModes(chain).omega.maxCoeff();
+  const auto unscaled = [&](int c, double plotted) { return plotted * (c < n ? chain.gap : speed); };
+  const int a = given.sectionXResolved() - 1, b = given.sectionYResolved() - 1;
+  const double level = core::chainEnergy(chain, shown);
+  const core::ChainSectionStart start = core::chainSectionStateAtEnergy(
+      chain, level, shown, a, unscaled(a, value.x()), b, unscaled(b, value.y()));
+  switch (start.problem) {
+    case core::ChainSectionProblem::None:
+      break;
+    case core::ChainSectionProblem::StoppedMassCoordinate:
+      m_status->setMessage(tr("The section shows mass %1's own coordinate, which H fixes (u%1 = d) or "
+                              "the energy decides (v%1): choose other coordinates in 'section on' "
+                              "to start from a click.")
+                               .arg(chain.stopped()));
+      return false;
+    case core::ChainSectionProblem::EnergyTooLow:
+      m_status->setMessage(tr("No state of this energy (E = %1) there: the springs and the masses as at "
+                              "the start already hold more. Click inside the points.")
+                               .arg(level, 0, 'g', 6));
+      return false;
+  }
+  startFromClick(start.state);
+  return true;
+}
+
+bool MainWindow::startChainFromStopLine(QPointF value, double tolerance) {
+  const auto& chains = m_displayed->request->job.spec.chains;
+  if (chains.empty()) return false;
+  const core::MassChain& chain = chains.front().chain;
+  const MassChainParams& given = m_displayed->request->params.massChain;
+  if (given.shown() != chain.stopped()) {
+    m_status->setMessage(tr("Starts are clicked on the stop line of mass %1's portrait: set 'phase "
+                            "of' to %1, or click the Poincaré points.")
+                             .arg(chain.stopped()));
+    return false;
+  }
+  if (!(std::abs(value.x() - 1) <= tolerance)) {
+    m_status->setMessage(tr("Click within %1 pixels of the stop line u%2 / d = 1 (dashed) to start mass %2 "
+                            "from the stop at that speed.")
+                             .arg(kStopLineBand)
+                             .arg(chain.stopped()));
+    return false;
+  }
+  const double speed = chain.gap * core::chainModes(chain).omega.maxCoeff();
+  startFromClick(core::chainStopLineState(chain, chains.front().start, value.y() * speed));
   return true;
 }
 
@@ -112,7 +170,7 @@ bool MainWindow::mapRegionBack() {
   return true;
 }
 
-void MainWindow::startFromClick(const core::State& start) {
+void MainWindow::startFromClick(const core::ChainState& start) {
   m_clickedStart = start;
   m_panel->setClickedStart(start);
   m_panel->clearRefusal();  // a refused value typed before does not describe this run

@@ -26,11 +26,12 @@ QByteArray sessionToJson(const Session& session) {
   object.insert(QStringLiteral("scene"), session.scene);
   object.insert(QStringLiteral("params"), toJson(session.params));
   if (session.start) {
-    const core::State& x = *session.start;
-    object.insert(QStringLiteral("start"), QJsonObject{{QStringLiteral("u1"), x.u1},
-                                                       {QStringLiteral("u2"), x.u2},
-                                                       {QStringLiteral("v1"), x.v1},
-                                                       {QStringLiteral("v2"), x.v2}});
+    QJsonObject start;
+    for (Eigen::Index i = 0; i < session.start->u.size(); ++i) {
+      start.insert(QStringLiteral("u%1").arg(i + 1), session.start->u[i]);
+      start.insert(QStringLiteral("v%1").arg(i + 1), session.start->v[i]);
+    }
+    object.insert(QStringLiteral("start"), start);
   }
   return QJsonDocument(object).toJson(QJsonDocument::Indented);
 }
@@ -56,17 +57,21 @@ std::optional<Session> sessionFromJson(const QByteArray& json, const Params& def
   if (!params) return fail(paramsError);
   session.params = *params;
   if (object.contains(QStringLiteral("start"))) {
+    // u1 ... uN and v1 ... vN: N from the positions given (two masses: u1, u2, v1, v2)
     const QJsonObject start = object.value(QStringLiteral("start")).toObject();
-    double x[4] = {};
-    const char* names[4] = {"u1", "u2", "v1", "v2"};
-    for (int i = 0; i < 4; ++i) {
-      const QJsonValue value = start.value(QLatin1String(names[i]));
+    int n = 0;
+    while (start.contains(QStringLiteral("u%1").arg(n + 1))) ++n;
+    if (n < 2) return fail(QStringLiteral("\"start\" needs the numbers u1, u2, ..., v1, v2, ... of every mass"));
+    core::ChainState state{core::ChainVector<double>(n), core::ChainVector<double>(n)};
+    for (int i = 0; i < 2 * n; ++i) {
+      const QString name = QStringLiteral("%1%2").arg(i < n ? QLatin1Char('u') : QLatin1Char('v')).arg(i % n + 1);
+      const QJsonValue value = start.value(name);
       if (!value.isDouble() || !std::isfinite(value.toDouble())) {
-        return fail(QStringLiteral("\"start\" needs a finite number \"%1\"").arg(QLatin1String(names[i])));
+        return fail(QStringLiteral("\"start\" needs a finite number \"%1\"").arg(name));
       }
-      x[i] = value.toDouble();
+      (i < n ? state.u[i] : state.v[i - n]) = value.toDouble();
     }
-    session.start = core::State{x[0], x[1], x[2], x[3]};
+    session.start = state;
   }
   return session;
 }
@@ -96,6 +101,15 @@ QString sessionTitle(const Session& session, bool massChain) {
                                 .arg(n(c.springs.front()), ratio.join(QLatin1Char(':')))
                                 .arg(c.designBranch);
     if (c.rightSpring > 0) springs += QStringLiteral(", a right wall's k = %1").arg(n(c.rightSpring));
+    if (session.start) {
+      // the weights and the push do not describe a clicked start: the start itself does
+      const core::ChainState& x = *session.start;
+      return QStringLiteral("GrazeLab: %1 (masses (%2), %3, stop on mass %4, d = %5, from the clicked start u = (%6), v = (%7), %8 contacts)")
+          .arg(session.scene, joined(c.masses), springs)
+          .arg(c.stopMass > 0 ? c.stopMass : c.size())
+          .arg(n(p.gap), joined(std::vector<double>(x.u.begin(), x.u.end())),
+               joined(std::vector<double>(x.v.begin(), x.v.end())), n(p.horizon));
+    }
     return QStringLiteral("GrazeLab: %1 (masses (%2), %3, stop on mass %4, d = %5, weights (%6), δ = %7, %8 contacts)")
         .arg(session.scene, joined(c.masses), springs)
         .arg(c.stopMass > 0 ? c.stopMass : c.size())
@@ -103,9 +117,9 @@ QString sessionTitle(const Session& session, bool massChain) {
   }
   const QString chain = QStringLiteral("m₁ = %1, m₂ = %2, k₁ = %3, k₂ = %4, d = %5")
                             .arg(n(p.m1), n(p.m2), n(p.k1), n(p.k2), n(p.gap));
-  if (session.start) {
+  if (session.start && session.start->u.size() == 2) {
     // the scene's λ and push do not describe a clicked start: the start itself does
-    const core::State& x = *session.start;
+    const core::State x = core::twoMassStateOf(*session.start);
     return QStringLiteral("GrazeLab: %1 (%2, from the clicked start u₁ = %3, u₂ = %4, v₁ = %5, v₂ = %6, %7 contacts)")
         .arg(session.scene, chain, n(x.u1), n(x.u2), n(x.v1), n(x.v2))
         .arg(n(p.horizon));

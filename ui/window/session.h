@@ -7,7 +7,7 @@
 
 #include <optional>
 
-#include "core/model/state.h"
+#include "core/solver/chain_flight.h"
 #include "ui/compute/params.h"
 
 namespace grazelab::ui {
@@ -15,12 +15,13 @@ namespace grazelab::ui {
 /// What reproduces a view: the scene, its parameters and, when the run was started with the
 /// mouse, that start. Saved as JSON:
 ///   {"format": "grazelab-session", "version": 1, "scene": NAME, "params": {...},
-///    "start": {"u1": ..., "u2": ..., "v1": ..., "v2": ...}}   (start only when clicked)
+///    "start": {"u1": ..., "u2": ..., "v1": ..., "v2": ...}}   (start only when clicked; a
+///    chain of N masses has u1 ... uN and v1 ... vN)
 /// Numbers are written in their shortest round-trip form, so a start reads back bit for bit.
 struct Session {
   QString scene;  ///< Scene::name()
   Params params;
-  std::optional<core::State> start;  ///< a clicked start, in place of the scene's own
+  std::optional<core::ChainState> start;  ///< a clicked start, in place of the scene's own
 };
 
 QByteArray sessionToJson(const Session& session);

@@ -52,6 +52,37 @@ TEST(ChainSeries, FlightsTileTheRunAndStayBelowThePeriod) {
   EXPECT_EQ(series.trust.verdict, Verdict::Unchecked);
 }
 
+TEST(ChainSeries, AWholeRunGridGoesOnAtTheWindowsStepToTheRunsEndOrItsCap) {
+  // the explorer shows a window of the grid at the animation's time, and the whole run on W
+  MassChain chain;
+  chain.masses = {1.0, 0.2, 0.05};
+  chain.springs = designSprings(chain.masses, 1.0, {3, 2, 1}).designs.at(0).springs;
+  ChainState start = chainGloStart(chain, {0.5, 0.3, 0.2}).state;
+  start.v[2] -= 0.05;
+  ChainSeriesSpec spec{chain, start, 60, 20.0, 401, 0, TrustMode::Off};
+  const ChainSeries windowOnly = chainSeries(spec);
+  spec.maxGridPoints = 1'000'000;
+  const ChainSeries whole = chainSeries(spec);
+  const double step = 20.0 / 400;
+  ASSERT_GT(whole.run.tFinal, 10 * 20.0);
+  // to the run's end at the window's step, the window's points the same bits
+  ASSERT_EQ(windowOnly.grid.size(), 401u);
+  EXPECT_EQ(whole.grid.size(), std::size_t(std::floor(whole.run.tFinal / step)) + 1);
+  EXPECT_LE(whole.grid.back().t, whole.run.tFinal);
+  EXPECT_GT(whole.grid.back().t, whole.run.tFinal - step);
+  for (std::size_t i = 0; i < windowOnly.grid.size(); ++i) {
+    EXPECT_EQ(whole.grid[i].t, windowOnly.grid[i].t);
+    EXPECT_EQ(whole.grid[i].u, windowOnly.grid[i].u);
+  }
+  // each point is the run's state then: u_s at the contacts' times is d, in between below it
+  for (const ChainGridPoint& point : whole.grid) EXPECT_LE(point.us, chain.gap * (1 + 1e-12));
+  // and the run itself is the same
+  EXPECT_EQ(whole.run.tFinal, windowOnly.run.tFinal);
+  // capped: that many points
+  spec.maxGridPoints = 1000;
+  EXPECT_EQ(chainSeries(spec).grid.size(), 1000u);
+}
+
 TEST(ChainSeries, AChainWithNoCommonPeriodHasNoBound) {
   MassChain chain;
   chain.masses.assign(4, 1.0);

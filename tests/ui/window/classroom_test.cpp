@@ -547,12 +547,16 @@ class ClassroomTest : public QObject {
     PlotView* trace = plotTitled(*m_window, QStringLiteral("Displacement"));
     // a window of three slow periods of the samples' stretch, then (W) all the samples; every
     // number a time, the run's end among them (it said "3 T₂ of 3.55e+03" where W said
-    // "first 3.55e+03 of 8.76e+05")
+    // "first 3.55e+03 of 8.76e+05"), and no number in a code ("3.55e+03": "3554", "8.8×10⁵")
     const QString windowTitle = axis(*trace, Qt::Horizontal)->titleText();
-    const QString tFinal = QString::number(m_window->displayed()->result->tFinal, 'g', 3);
-    const QString tSampled = QString::number(m_window->displayed()->result->samples.back().t, 'g', 3);
-    QVERIFY2(windowTitle.contains(tSampled + QStringLiteral(" sampled")) && !windowTitle.contains(QStringLiteral("T₂")),
+    const QString tFinal = timeText(m_window->displayed()->result->tFinal);
+    const QString tSampled = timeText(m_window->displayed()->result->samples.back().t);
+    QVERIFY2(windowTitle.contains(QStringLiteral("sampled to %1 of %2").arg(tSampled, tFinal)) &&
+                 !windowTitle.contains(QStringLiteral("T₂")) && !windowTitle.contains(QStringLiteral("e+")),
              qPrintable(windowTitle));
+    QCOMPARE(timeText(3554.4), QStringLiteral("3554"));
+    QCOMPARE(timeText(876000), QStringLiteral("8.8×10⁵"));
+    QCOMPARE(timeText(26.66), QStringLiteral("26.7"));
     const double T2 = grazelab::core::computeModes(m_window->displayed()->request->job.spec.model).T2;
     QVERIFY(axis(*trace, Qt::Horizontal)->max() - axis(*trace, Qt::Horizontal)->min() <= 3 * T2 * (1 + 1e-9));
     QTest::keyClick(m_window.get(), Qt::Key_W);

@@ -15,18 +15,24 @@
 #include <QScrollBar>
 #include <QSpinBox>
 #include <QTest>
+#include <QValueAxis>
 #include <QWheelEvent>
 
 #include <algorithm>
+#include <cmath>
+
+#include "core/orbits/starts.h"
 
 #include "tests/ui/explorer_test_support.h"
 #include "ui/compute/scene.h"
+#include "ui/plots/curve_plot.h"
 #include "ui/plots/plot_view.h"
 #include "ui/widgets/chain_editor.h"
 #include "ui/widgets/parameter_panel.h"
 #include "ui/widgets/number_box.h"
 #include "ui/widgets/slider_spin.h"
 #include "ui/window/main_window.h"
+#include "ui/window/session.h"
 
 using namespace grazelab::ui;
 using grazelab::ui::testing::openTestWindow;
@@ -314,6 +320,95 @@ class SecondTrialTest : public QObject {
                                           [&](const QPointF& p) { return p.y() > 1.0 && p.y() <= top; });
     QVERIFY2(shownPastT >= 5, qPrintable(QStringLiteral("%1 flights past T on screen").arg(shownPastT)));
     QVERIFY2(detuned.title.contains(QStringLiteral("past 3 T")), qPrintable(detuned.title));
+  }
+
+  // F1 says a click on the Poincaré points or on the stop line starts a run there, and W shows
+  // the whole run; in the N-mass scenes neither did anything. Three masses: a click on the
+  // section starts there (the two coordinates clicked, the energy kept), on the stop line
+  // mass 3 leaves the stop at the clicked speed, the session keeps the start bit for bit, and
+  // W turns the trace's window of four slowest periods into the whole run
+  void clicksAndWWorkForNMasses() {
+    m_window->selectScene(sceneIndex(*m_window, QStringLiteral("three-masses")));
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const auto plotOf = [&](PlotKind kind) -> CurvePlot* {
+      for (CurvePlot* plot : m_window->findChildren<CurvePlot*>()) {
+        if (plot->kind() == kind && plot->isVisible()) return plot;
+      }
+      return nullptr;
+    };
+    CurvePlot* section = plotOf(PlotKind::ChainSection);
+    CurvePlot* phase = plotOf(PlotKind::ChainPhase);
+    CurvePlot* trace = plotOf(PlotKind::ChainStopTrace);
+    QVERIFY(section && phase && trace);
+    const grazelab::core::experiments::ChainSeriesSpec shown = m_window->displayed()->request->job.spec.chains.front();
+    const grazelab::core::MassChain chain = shown.chain;
+    const double speed = chain.gap * grazelab::core::chainModes(chain).omega.maxCoeff();
+    const double level = grazelab::core::chainEnergy(chain, shown.start);
+
+    // the section (u1, v1): a point between one the run reached and the origin
+    const QPointF reached = m_window->displayed()->request->job.figures.at(PlotKind::ChainSection).curve.at(5);
+    const QPointF target = 0.5 * reached;
+    section->refreshNow();
+    QTest::mouseClick(section->viewport(), Qt::LeftButton, {}, section->chart()->mapToPosition(target).toPoint());
+    QTRY_VERIFY(!section->clickPending());
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const grazelab::core::ChainState start = m_window->displayed()->request->job.spec.chains.front().start;
+    QVERIFY(m_window->displayed()->request->clickedStart.has_value());
+    QCOMPARE(start.u[2], chain.gap);
+    QVERIFY(start.v[2] < 0);
+    QVERIFY(std::abs(start.u[0] / chain.gap - target.x()) < 0.02 * std::abs(reached.x()) + 1e-3);
+    QVERIFY(std::abs(start.v[0] / speed - target.y()) < 0.02 * std::abs(reached.y()) + 1e-3);
+    QCOMPARE(start.u[1], shown.start.u[1]);  // the others as at the start shown
+    QVERIFY(std::abs(grazelab::core::chainEnergy(chain, start) - level) < 1e-12 * level);
+    QVERIFY(shownChainRun(*m_window)->run.contacts > 0);
+    QVERIFY(m_window->parameterPanel()->clickedStartText().contains(QStringLiteral("u₃ = 1")));
+    // the same start on the detuned contrast
+    QCOMPARE(m_window->displayed()->request->job.spec.chains.back().start.v[0], start.v[0]);
+
+    // the session reopens that start, bit for bit
+    const QByteArray json = sessionToJson(m_window->session());
+    QString error;
+    const auto session = sessionFromJson(json, Params{}, &error);
+    QVERIFY2(session && session->start, qPrintable(error));
+    QVERIFY(session->start->u == start.u && session->start->v == start.v);
+
+    // a point beyond the energy: refused with a reason, nothing recomputed
+    const std::uint64_t before = m_window->displayed()->id;
+    QVERIFY(!m_window->startFromSection(QPointF(50, 0)));
+    QVERIFY(m_window->statusText().contains(QStringLiteral("No state of this energy")));
+    QCOMPARE(m_window->displayed()->id, before);
+
+    // the stop line of mass 3's portrait, 10 px off
+    phase->refreshNow();
+    const QPointF line(1.0, -0.4);
+    QTest::mouseClick(phase->viewport(), Qt::LeftButton, {}, phase->chart()->mapToPosition(line).toPoint() + QPoint(-10, 0));
+    QTRY_VERIFY(!phase->clickPending());
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    const grazelab::core::ChainState fromLine = m_window->displayed()->request->job.spec.chains.front().start;
+    QCOMPARE(fromLine.u[2], chain.gap);
+    QVERIFY(std::abs(fromLine.v[2] / speed - line.y()) < 0.03);
+    QCOMPARE(fromLine.u[0], start.u[0]);
+    QVERIFY(!m_window->startFromStopLine(QPointF(0.5, -0.4), 0.01));
+    QVERIFY(m_window->statusText().contains(QStringLiteral("pixels of the stop line")));
+
+    // W: the trace's window of four slowest periods, then the whole run
+    const auto series = shownChainRun(*m_window);
+    const double slowest = 2 * M_PI / series->modes.omega.minCoeff();
+    const double unit = series->period;
+    QVERIFY(series->run.tFinal > 10 * 4 * slowest);
+    QVERIFY(series->grid.back().t > series->run.tFinal - 4 * slowest);  // sampled to its end
+    trace->refreshNow();
+    const auto span = [&] {
+      const auto* x = qobject_cast<QValueAxis*>(trace->chart()->axes(Qt::Horizontal).first());
+      return (x->max() - x->min()) * unit;
+    };
+    QVERIFY2(span() <= 4 * slowest * (1 + 1e-9), qPrintable(QString::number(span())));
+    QTest::keyClick(m_window.get(), Qt::Key_W);
+    trace->refreshNow();
+    QVERIFY2(span() >= series->run.tFinal * 0.99, qPrintable(QString::number(span())));
+    QTest::keyClick(m_window.get(), Qt::Key_W);
+    trace->refreshNow();
+    QVERIFY(span() <= 4 * slowest * (1 + 1e-9));
   }
 
  private:
