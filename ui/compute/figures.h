@@ -65,13 +65,6 @@ struct CurveFigure {
   /// the time of each curve point (a phase portrait along the run): the animated chain's time
   /// is a ring on the curve there (empty: no cursor)
   std::vector<double> curveTimes;
-  /// a long run along time: the view shows this span [time] of it at the animation's time,
-  /// and all of it on W (0: all of it always). A trace's x is time over timeUnit; a portrait's
-  /// points have curveTimes, and its markers markerTimes.
-  double timeWindow = 0;
-  std::vector<double> markerTimes;
-  /// [time] where the run ends when the curve stops before it (its samples were cut), else 0
-  double runEnd = 0;
   /// the one-point reference (or else the one marker) is the panel's GLO weights on these modes
   /// (0-based, fastest first: x is the second's weight, y the third's, the first balancing):
   /// dragging it, or clicking, moves them (empty: nothing to drag)

@@ -88,6 +88,10 @@ class Scene {
   Spec m_spec;
 };
 
+/// The grid of a chain's whole run (W): at most this many points (~15 MB for eight masses), at
+/// the step of the scene's window.
+constexpr int kWholeRunGridPoints = 100'000;
+
 /// The needs implied by a set of visible plots: dense samples only for traces and phase
 /// portraits (over the first `sampleWindow` time units), Poincaré points and free flights only
 /// when plotted.

@@ -17,9 +17,10 @@ namespace grazelab::ui {
 
 CurvePlot::CurvePlot(PlotKind kind, QWidget* parent)
     : PlotView(QString(), QString(), QString(), parent), m_kind(kind) {
-  m_curve = addEntry(makeLine(QString(), colors::kTrace, 2.0), Decimation::None);
-  m_recent = addEntry(makeLine(QString(), colors::kTrace, 2.0), Decimation::None);
-  m_other = addEntry(makeLine(QString(), colors::kOverlay, 1.5), Decimation::None);
+  // to the pixels (Path: any curve, folded families and portraits too): a chain's whole run
+  // (W) holds up to 100 000 points, which Qt Charts would stroke one by one at every redraw
+  m_curve = addEntry(makeLine(QString(), colors::kTrace, 2.0), Decimation::Path);
+  m_other = addEntry(makeLine(QString(), colors::kOverlay, 1.5), Decimation::Path);
   auto* dots = makeScatter(QString(), colors::kTrace, 5.5);
   dots->setPen(Qt::NoPen);
   m_dots = addEntry(dots, Decimation::Scatter);
@@ -53,8 +54,6 @@ void CurvePlot::show(const SimUpdate& update) {
   setData(m_curve, figure.dots ? std::vector<QPointF>{} : figure.curve);
   setData(m_dots, figure.dots ? figure.curve : std::vector<QPointF>{});
   setData(m_other, figure.other);
-  m_markers = figure.markers;
-  m_markerTimes = figure.markerTimes.size() == figure.markers.size() ? figure.markerTimes : std::vector<double>{};
   setData(m_marker, figure.markers);
   setData(m_reference, point ? std::vector<QPointF>{} : figure.reference);
   setData(m_referencePoint, point ? figure.reference : std::vector<QPointF>{});
@@ -62,12 +61,6 @@ void CurvePlot::show(const SimUpdate& update) {
   const bool timed = !figure.dots && figure.curveTimes.size() == figure.curve.size() && !figure.curve.empty();
   m_curveTimes = timed ? figure.curveTimes : std::vector<double>{};
   m_timedCurve = timed ? figure.curve : std::vector<QPointF>{};
-  m_timeWindow = figure.timeWindow > 0 && (m_timeUnit > 0 || timed) && !figure.curve.empty() ? figure.timeWindow : 0;
-  if (m_timeWindow > 0) m_tLast = m_timeUnit > 0 ? figure.curve.back().x() * m_timeUnit : m_curveTimes.back();
-  m_runEnd = figure.runEnd;
-  m_xTitle = figure.xTitle;
-  list[std::size_t(m_recent)].series->setName(QString());
-  placeWindow();
   setChainTime(m_chainTime);
   m_draggable = !figure.draggedModes.empty() && (point || figure.markers.size() == 1);
   if (m_draggable) m_ring = point ? figure.reference.front() : figure.markers.front();
@@ -77,58 +70,6 @@ void CurvePlot::show(const SimUpdate& update) {
   } else {
     setFixedRange(std::nullopt);
   }
-  scheduleRefresh();
-}
-
-void CurvePlot::placeWindow() {
-  const auto& list = entries();
-  QXYSeries* curve = list[std::size_t(m_curve)].series;
-  QXYSeries* recent = list[std::size_t(m_recent)].series;
-  if (m_timeWindow <= 0) {
-    setXWindow(std::nullopt);
-    curve->setVisible(true);
-    return;
-  }
-  const bool trace = m_timeUnit > 0;
-  const double tLast = m_tLast;
-  const double runEnd = std::max(m_runEnd, tLast);
-  // RunWindow's span is kPeriods of its period: the figure's window
-  const double period = m_timeWindow / RunWindow::kPeriods;
-  const bool windowed = !m_whole && !m_runWindow.wholeFits(tLast, period);
-  if (windowed) m_runWindow.follow(m_chainTime, tLast, period);
-  const std::pair shown(m_runWindow.from(), m_runWindow.to());
-  if (trace) {
-    const std::pair inUnits(shown.first / m_timeUnit, shown.second / m_timeUnit);
-    setXWindow(windowed ? std::optional(inUnits) : std::nullopt);
-    setXTitle(runAxisTitle(m_xTitle, windowed ? std::optional(inUnits) : std::nullopt, tLast / m_timeUnit,
-                           runEnd / m_timeUnit));
-    return;
-  }
-  // a portrait: the whole curve still sets the axes (they do not jump as the window moves) but
-  // is drawn only whole, as the two-mass portrait; the window's stretch, and its markers, are
-  const auto inWindow = [&](double t) { return t >= shown.first && t <= shown.second; };
-  std::vector<QPointF> stretch;
-  std::vector<QPointF> markers;
-  if (windowed) {
-    for (std::size_t i = 0; i < m_curveTimes.size(); ++i) {
-      if (inWindow(m_curveTimes[i])) stretch.push_back(m_timedCurve[i]);
-    }
-    for (std::size_t i = 0; i < m_markers.size(); ++i) {
-      if (m_markerTimes.empty() || inWindow(m_markerTimes[i])) markers.push_back(m_markers[i]);
-    }
-  }
-  const QString name = curve->name().isEmpty() ? recent->name() : curve->name();
-  curve->setVisible(!windowed);
-  curve->setName(windowed ? QString() : name);
-  recent->setName(windowed ? name : QString());
-  setData(m_recent, stretch);
-  setData(m_marker, windowed ? markers : m_markers);
-  setXTitle(runAxisTitle(m_xTitle, std::nullopt, tLast, runEnd));
-}
-
-void CurvePlot::setWholeRun(bool whole) {
-  m_whole = whole;
-  placeWindow();
   scheduleRefresh();
 }
 
@@ -179,12 +120,6 @@ void CurvePlot::mouseReleaseEvent(QMouseEvent* event) {
 
 void CurvePlot::setChainTime(double t) {
   m_chainTime = t;
-  const double period = m_timeWindow / RunWindow::kPeriods;
-  if (m_timeWindow > 0 && !m_whole && !m_runWindow.wholeFits(m_tLast, period) &&
-      m_runWindow.follow(t, m_tLast, period)) {
-    placeWindow();
-    scheduleRefresh();
-  }
   if (m_timeUnit <= 0 && m_curveTimes.empty()) {
     if (m_timeLine) m_timeLine->clear();
     if (m_timeRing) m_timeRing->clear();

@@ -23,7 +23,6 @@ class CurvePlot final : public PlotView {
   /// Marks the animated chain's time: a line on a trace (CurveFigure::timeUnit), a ring on a
   /// curve along the run (CurveFigure::curveTimes); nothing on other figures.
   void setChainTime(double t) override;
-  void setWholeRun(bool whole) override;
 
  signals:
   /// The ring of a draggable figure (CurveFigure::draggedModes) was dragged to `value`, in the
@@ -38,8 +37,6 @@ class CurvePlot final : public PlotView {
  private:
   /// the press is on the handle: the ring, or the one marker (within a finger's reach)
   bool onRing(QPointF position) const;
-  /// a long run (CurveFigure::timeWindow): its window at the animation's time, or all of it
-  void placeWindow();
   PlotKind m_kind;
   int m_dots = 0;  ///< the curve as dots (CurveFigure::dots)
   int m_curve = 0;
@@ -47,17 +44,7 @@ class CurvePlot final : public PlotView {
   int m_reference = 0;       ///< a dashed line (two points)
   int m_referencePoint = 0;  ///< a ring (one point)
   int m_marker = 0;
-  int m_recent = 0;  ///< a long run's portrait: the stretch of its curve in the window
   bool m_draggable = false;
-  // a long run along time: what the window is cut from
-  double m_timeWindow = 0;
-  double m_runEnd = 0;
-  double m_tLast = 0;  ///< [time] the curve's last
-  QString m_xTitle;
-  std::vector<QPointF> m_markers;
-  std::vector<double> m_markerTimes;
-  RunWindow m_runWindow;
-  bool m_whole = false;
   // the animated chain's time, and how the figure shown places it
   double m_chainTime = 0;
   double m_timeUnit = 0;

@@ -4,10 +4,7 @@
 #include "ui/plots/multipliers_plot.h"
 #include "ui/plots/scene_view.h"
 
-#include <QObject>
-
 #include <algorithm>
-#include <cmath>
 
 #include "ui/plots/accuracy_view.h"
 #include "ui/plots/chain_view.h"
@@ -61,39 +58,6 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::Multipliers: return new MultipliersPlot(parent);
   }
   return nullptr;
-}
-
-QString timeText(double t) {
-  const double size = std::abs(t);
-  if (size < 1e5) {
-    const int digits = size >= 1 ? int(std::floor(std::log10(size))) + 1 : 1;
-    QString text = QString::number(t, 'f', std::max(0, 3 - digits));
-    // "26.70" -> "26.7", "5.00" -> "5"
-    if (text.contains(QLatin1Char('.'))) {
-      while (text.endsWith(QLatin1Char('0'))) text.chop(1);
-      if (text.endsWith(QLatin1Char('.'))) text.chop(1);
-    }
-    return text;
-  }
-  const int exponent = int(std::floor(std::log10(size)));
-  static const QString superscripts = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
-  QString power;
-  for (QChar digit : QString::number(exponent)) power += superscripts[digit.digitValue()];
-  return QStringLiteral("%1×10%2").arg(QString::number(t / std::pow(10.0, exponent), 'g', 2), power);
-}
-
-QString runAxisTitle(const QString& axis, std::optional<std::pair<double, double>> shown, double sampledTo,
-                     double runEnd) {
-  const bool cut = runEnd > sampledTo * (1 + 1e-9) + 1e-12;
-  if (!shown) {
-    return cut ? QObject::tr("%1 (sampled to %2 of the run's %3)").arg(axis, timeText(sampledTo), timeText(runEnd))
-               : axis;
-  }
-  // every number a time, the same as W's: what is shown, of what was sampled, of the run
-  // (short: a longer title wrapped to three lines and was cut; W is in the tooltip and menu)
-  const QString window = QStringLiteral("%1–%2").arg(timeText(shown->first), timeText(shown->second));
-  return cut ? QObject::tr("%1 (%2; sampled to %3 of %4)").arg(axis, window, timeText(sampledTo), timeText(runEnd))
-             : QObject::tr("%1 (%2 of %3)").arg(axis, window, timeText(runEnd));
 }
 
 bool RunWindow::follow(double cursor, double tLast, double T2) {

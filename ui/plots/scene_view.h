@@ -2,11 +2,9 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include <optional>
-#include <utility>
-
 #include "core/model/state.h"
 #include "ui/compute/sim_types.h"
+#include "ui/compute/time_text.h"
 
 class QWidget;
 
@@ -62,16 +60,6 @@ class RunWindow {
   double m_from = 0;
   double m_to = 0;
 };
-
-/// A time as a class reads it: three significant digits and no exponent below 100 000 ("26.7",
-/// "3554"), a power of ten above ("8.9×10⁶"; "3.55e+03" was read as a code).
-QString timeText(double t);
-
-/// The time axis' title of a view of a long run: `axis` and what it shows, a window
-/// (`shown`, in the axis' units) or the whole, of the run (to `runEnd`) and of its samples
-/// (to `sampledTo`, cut short when it is before the run's end).
-QString runAxisTitle(const QString& axis, std::optional<std::pair<double, double>> shown, double sampledTo,
-                     double runEnd);
 
 /// Which items of a run a view has taken, so that the next update of the same run (same
 /// request id: the run grown) hands it only the items after them.

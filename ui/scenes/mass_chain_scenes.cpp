@@ -134,7 +134,12 @@ ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_toke
 QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& given, int designs,
                        const core::ChainModes& modes, const core::SpectrumRatios& ratios, const QString& more) {
   const std::vector<double> omega(modes.omega.data(), modes.omega.data() + modes.omega.size());
-  QString text = given.harmonics.empty() ? tr("Springs k = %1 (as given).").arg(list(chain.springs))
+  const bool noneOffered = ChainEditor::resonancesFor(chain.size()).size() == 1;
+  QString text = given.harmonics.empty() ? (noneOffered ? tr("Springs k = %1 (as given: no resonance is offered for %2).")
+                                                              .arg(list(chain.springs),
+                                                                   chain.size() == 1 ? tr("one mass")
+                                                                                     : tr("%1 masses").arg(chain.size()))
+                                                        : tr("Springs k = %1 (as given).").arg(list(chain.springs)))
                                          : tr("Springs designed for %1 (design %2 of %3): k = %4.")
                                                .arg(resonanceName(given.harmonics))
                                                .arg(std::clamp(given.designBranch, 1, designs))
@@ -168,8 +173,8 @@ QString chainStatusOf(const core::experiments::ChainSeries& series) {
   };
   const double drift =
       std::abs(run.energyFinal - run.energyInitial) / std::max(std::abs(run.energyInitial), 1e-300);
-  return tr("%1 masses: %2 (%3, %4, %5) until t = %6, ended by %7 · energy drift %8")
-      .arg(series.chain.size())
+  return tr("%1: %2 (%3, %4, %5) until t = %6, ended by %7 · energy drift %8")
+      .arg(counted(series.chain.size(), tr("mass"), tr("masses")))
       .arg(counted(run.contacts, tr("contact"), tr("contacts")),
            counted(run.impacts, tr("impact"), tr("impacts")),
            counted(run.grazings, tr("grazing"), tr("grazings")),

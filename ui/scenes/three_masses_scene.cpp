@@ -12,6 +12,7 @@
 #include "core/model/mass_chain.h"
 #include "core/model/model.h"
 #include "core/orbits/chain_glo.h"
+#include "ui/compute/time_text.h"
 #include "ui/scenes/mass_chain_scenes.h"
 #include "ui/scenes/scenes.h"
 #include "ui/widgets/chain_editor.h"
@@ -23,7 +24,7 @@ QString tr(const char* text) {
   return QCoreApplication::translate("grazelab::ui::ThreeMassesScene", text);
 }
 
-constexpr int kMaxGridPoints = 100'000;
+constexpr int kGridPoints = 1500;  // over the window of four slowest periods
 
 CurveFigure flightFigure(const QString& title, const core::experiments::ChainSeries& series,
                          double unit, bool bound, const QString& unitName) {
@@ -100,19 +101,21 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
   trace.yTitle = tr("u / d");
   trace.toolTip =
       tr("The stopped mass's displacement over the gap d; the dashed line is the stop. Each "
-         "dot is a contact.\nA long run shows four slowest periods at the animation's time; W shows all of it.");
+         "dot is a contact.\nA long run shows its first four slowest periods; W shows all of it.");
   trace.curveName = tr("u%1 / d").arg(chain.stopped());
   for (const core::experiments::ChainGridPoint& point : series.grid) {
     trace.curve.emplace_back(point.t / unit, point.us / chain.gap);
   }
   trace.timeUnit = unit;  // the animation's time a line on it
-  // the grid covers the whole run (or its first kMaxGridPoints): the trace and the portrait show
-  // `window` of it at the animation's time, all of it on W
+  // the grid spans `window`, or the whole run when W asks for it (ChainSeriesSpec::maxGridPoints,
+  // set by the window); the axis says what of the run it shows
   const double sampled = series.grid.empty() ? 0.0 : series.grid.back().t;
-  // (a grid that reached the run's end stops within a step of it: not cut)
-  const double runEnd = series.grid.size() >= std::size_t(kMaxGridPoints) ? series.run.tFinal : 0.0;
-  trace.timeWindow = window;
-  trace.runEnd = runEnd;
+  const bool whole = sampled > window * (1 + 1e-9);
+  const double step = window / (kGridPoints - 1);
+  const bool goesOn = series.run.tFinal > sampled + step;  // (a grid ends within a step of the run)
+  trace.xTitle = runAxisTitle(trace.xTitle,
+                              goesOn && !whole ? std::optional(std::pair(0.0, sampled / unit)) : std::nullopt,
+                              sampled / unit, (goesOn ? series.run.tFinal : sampled) / unit);
   // the mass the panel's 'phase of' names, when it is another: its trace beside the stopped one
   if (given.shown() != chain.stopped()) {
     trace.title = tr("Mass %1 (on the stop's side) and mass %2: u / d").arg(chain.stopped()).arg(given.shown());
@@ -152,15 +155,13 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
                            "chooses the mass); the dots are its state at each contact of the "
                            "stopped mass.")
                             .arg(shown);
-  phase.toolTip += tr("\nA long run shows four slowest periods at the animation's time; W shows all of it.");
+  phase.toolTip += tr("\nA long run shows its first four slowest periods; W shows all of it.");
   phase.curveName = tr("(u, v)");
   const double speed = chain.gap * series.modes.omega.maxCoeff();
   for (const core::experiments::ChainGridPoint& point : series.grid) {
     phase.curve.emplace_back(point.uChosen / chain.gap, point.vChosen / speed);
     phase.curveTimes.push_back(point.t);  // the animation's time a ring on it
   }
-  phase.timeWindow = window;
-  phase.runEnd = runEnd;
   if (shownIsStopped) {
     phase.referenceName = tr("stop");
     phase.reference = {QPointF(1, -1.5), QPointF(1, 1.5)};
@@ -171,7 +172,6 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
       if (event.t > sampled) break;
       if (core::isContact(event.type)) {
         phase.markers.emplace_back(event.u[i] / chain.gap, event.vBefore[i] / speed);
-        phase.markerTimes.push_back(event.t);
       }
     }
   }
@@ -209,10 +209,10 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
     if (detuned.run.stop == core::ChainStop::SearchBudget) {
       // its last flight never came back within the search's 1000 slowest periods: say so,
       // rather than let the chart end as if the run had
-      figure.title = figure.curve.size() == 1
-                         ? tr("k₂ 5 % off: 1 flight, then none in 1000 slow periods")
-                         : tr("k₂ 5 % off: %1 flights, then none in 1000 slow periods")
-                               .arg(figure.curve.size() + figure.markers.size());
+      const std::size_t flights = figure.curve.size() + figure.markers.size();
+      figure.title = flights == 0   ? tr("k₂ 5 % off: no flight from the stop ends in 1000 slow periods")
+                     : flights == 1 ? tr("k₂ 5 % off: 1 flight, then none in 1000 slow periods")
+                                    : tr("k₂ 5 % off: %1 flights, then none in 1000 slow periods").arg(flights);
     }
     job.figures[PlotKind::DetunedFlights] = figure;
   } else if (contrast) {
@@ -275,11 +275,10 @@ Scene::Spec threeMassesScene() {
     // double: its own scene asks for none, and says so). The trace, the phase portrait and the
     // animation span four slowest periods: six drew twenty fast swings into a plot a third of a
     // projector wide, lines merging into a band in presentation's thick pen
-    core::experiments::ChainSeriesSpec run{chain,      start, long(params.horizon), 4 * slowest, 1500,
-                                           given.shown(), contrast ? core::TrustMode::Auto : core::TrustMode::Off};
-    // the grid goes on over the whole run at that step (the animation plays all of it, W
-    // shows all of it), to at most this many points: ~15 MB for eight masses
-    run.maxGridPoints = kMaxGridPoints;
+    const core::experiments::ChainSeriesSpec run{chain,         start,
+                                                 long(params.horizon), 4 * slowest,
+                                                 kGridPoints,   given.shown(),
+                                                 contrast ? core::TrustMode::Auto : core::TrustMode::Off};
     SceneJob job;
     job.spec.chains = {run};
     if (contrast && ratios.commensurate && chain.size() >= 2) {

@@ -179,7 +179,12 @@ ChainEditor::ChainEditor(QWidget* parent) : QWidget(parent) {
   layout->addWidget(m_summary);
 
   connect(m_count, &QSpinBox::valueChanged, this, [this](int count) {
+    const bool resonant = !m_chain.harmonics.empty();
     m_chain = m_chain.resized(count);
+    // a resonant chain stays resonant: N : ... : 1, the first resonance offered for that many
+    // masses (1:2:3 became "none" without a word); where none is offered the summary says so
+    const QList<std::vector<int>> offered = resonancesFor(count);
+    if (resonant && offered.size() > 1) m_chain.harmonics = offered[1];
     fillResonances();
     rebuildRows();
     changed();

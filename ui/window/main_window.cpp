@@ -218,9 +218,12 @@ void MainWindow::buildMenus() {
   m_wholeRunAction = add(
       view, tr("Show the &whole run"), {QKeySequence(Qt::Key_W)},
       tr("u₂(t) and the phase portraits: the whole run, or a window of a few slow periods at the "
-         "animation's time (a long run drawn whole fills the plot)"),
+         "animation's time (a long run drawn whole fills the plot); N masses: the trace, the "
+         "portrait and the animation over the whole run, or its first four slowest periods"),
       [this](bool whole) {
         for (SceneView* view : m_sceneViews) view->setWholeRun(whole);
+        // a chain's grid spans what is shown: computed again over the whole run, or its start
+        if (scene().massChain()) recompute();
       });
   m_wholeRunAction->setCheckable(true);
   add(view, tr("Play / &pause the motion"), {QKeySequence(Qt::Key_Space)},
@@ -590,9 +593,13 @@ void MainWindow::recompute() {
   request.derived = derived;
   // the scene travels as a copy (texts and a function): the worker never reads the window's
   request.prepare = [scene = *m_scenes[std::size_t(m_sceneIndex)], params = current, derived,
-                     clicked = m_clickedStart, cache = m_sceneCache](std::stop_token stop,
-                                                                     const ScenePartial& partial) {
+                     clicked = m_clickedStart, cache = m_sceneCache,
+                     whole = m_wholeRunAction->isChecked()](std::stop_token stop, const ScenePartial& partial) {
     SceneJob job = scene.build(params, derived, stop, clicked, partial, cache.get());
+    // W: a chain's grid goes on over the whole run (the two-mass runs sample it anyway)
+    if (whole) {
+      for (core::experiments::ChainSeriesSpec& chain : job.spec.chains) chain.maxGridPoints = kWholeRunGridPoints;
+    }
     if (clicked && job.ok) {
       // the start clicked in place of the scene's own: a chain's runs (the shown one and its
       // contrast, the same start on a detuned chain), or the two-mass run
