@@ -17,10 +17,12 @@ namespace grazelab::ui {
 
 CurvePlot::CurvePlot(PlotKind kind, QWidget* parent)
     : PlotView(QString(), QString(), QString(), parent), m_kind(kind) {
-  // to the pixels (Path: any curve, folded families and portraits too): a chain's whole run
-  // (W) holds up to 100 000 points, which Qt Charts would stroke one by one at every redraw
-  m_curve = addEntry(makeLine(QString(), colors::kTrace, 2.0), Decimation::Path);
-  m_other = addEntry(makeLine(QString(), colors::kOverlay, 1.5), Decimation::Path);
+  // to the pixels: a chain's whole run (W) holds up to 100 000 points, which Qt Charts would
+  // stroke one by one at every redraw. A trace keeps each pixel column's least and greatest
+  // value (its tops on the stop); any other curve (folded families, portraits) its path
+  const Decimation along = kind == PlotKind::ChainStopTrace ? Decimation::Trace : Decimation::Path;
+  m_curve = addEntry(makeLine(QString(), colors::kTrace, 2.0), along);
+  m_other = addEntry(makeLine(QString(), colors::kOverlay, 1.5), along);
   auto* dots = makeScatter(QString(), colors::kTrace, 5.5);
   dots->setPen(Qt::NoPen);
   m_dots = addEntry(dots, Decimation::Scatter);
@@ -34,7 +36,8 @@ CurvePlot::CurvePlot(PlotKind kind, QWidget* parent)
   auto* marker = makeScatter(QString(), colors::kImpact, 12);
   marker->setPen(QPen(Qt::white, 1.5));
   useLightMarker(marker, QPen(Qt::white, 1.5));
-  m_marker = addEntry(marker, Decimation::None);
+  // (one to a marker's cell: the hundreds of contacts of a whole run drew as a faint band)
+  m_marker = addEntry(marker, Decimation::Scatter);
 }
 
 void CurvePlot::show(const SimUpdate& update) {
