@@ -53,7 +53,9 @@ class ChainView::Canvas : public QWidget {
     // lengths: rest spacing R between wall, mass 1 and mass 2, wide enough for the largest
     // displacement; every length (displacements, gap) on one scale
     const double amplitude = view.m_amplitude;
-    const double rest = 1.6 * amplitude + 0.5 * gap;
+    // and twice the most the masses close in, so that boxes at most 0.45 R wide never meet (a
+    // heavy mass 2, m2 = 1.37, swings against mass 1 and they were drawn on top of each other)
+    const double rest = std::max(1.6 * amplitude + 0.5 * gap, 2 * view.m_squeeze);
     const double heaviest = std::max(model.m1, model.m2);
     const double box1 = 0.45 * rest * std::cbrt(model.m1 / heaviest);
     const double box2 = 0.45 * rest * std::cbrt(model.m2 / heaviest);
@@ -213,6 +215,7 @@ void ChainView::show(const SimUpdate& update) {
     m_rate = T2 / 2;
     m_nearContact = T2 / 40;
     m_amplitude = m_model.gap;
+    m_squeeze = 0;
     m_contactTimes.clear();
     m_contactTypes.clear();
   }
@@ -220,6 +223,7 @@ void ChainView::show(const SimUpdate& update) {
   for (std::size_t index = m_taken.samples; index < result.samples.size(); ++index) {
     const core::State& state = result.samples[index].state;
     m_amplitude = std::max({m_amplitude, std::abs(state.u1), std::abs(state.u2)});
+    m_squeeze = std::max(m_squeeze, state.u1 - state.u2);
   }
   m_taken.samples = result.samples.size();
   m_end = result.samples.empty() ? 0 : result.samples.back().t;

@@ -81,6 +81,7 @@ class ChainView : public QWidget, public SceneView {
   double m_rate = 1;
   double m_nearContact = 0;  ///< a contact closer than this slows the motion [time]
   double m_amplitude = 1;    ///< the largest |u| of the run, for the scale
+  double m_squeeze = 0;      ///< the largest u1 - u2 of the run: how far the masses close in
   QTimer m_timer;
   QElapsedTimer m_clockTimer;
   bool m_presentation = false;

@@ -50,7 +50,8 @@ class MassChainView::Canvas : public QWidget {
     // one length scale for displacements, gap and spacing: rest spacing R wide enough for the
     // largest displacement
     const double amplitude = view.m_amplitude;
-    const double rest = 1.6 * amplitude + 0.5 * chain.gap;
+    // and twice the most two neighbours close in, so that boxes at most 0.45 R wide never meet
+    const double rest = std::max(1.6 * amplitude + 0.5 * chain.gap, 2 * view.m_squeeze);
     const double heaviest = *std::max_element(chain.masses.begin(), chain.masses.end());
     std::vector<double> box(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i)
@@ -123,9 +124,19 @@ class MassChainView::Canvas : public QWidget {
         const double tabX = px(centre + size / 2);
         painter.drawLine(QPointF(tabX, middle + boxHeight / 2), QPointF(tabX, postTop + 6));
       }
-      painter.setPen(Qt::white);
-      if (rectangle.width() > painter.fontMetrics().horizontalAdvance(QStringLiteral("m8"))) {
-        painter.drawText(rectangle, Qt::AlignCenter, tr("m%1").arg(subscriptDigits(i + 1)));
+      // its name inside, or above it when the box is too small to hold it (a light mass was
+      // left unnamed)
+      const QString name = tr("m%1").arg(subscriptDigits(i + 1));
+      const double nameWidth = painter.fontMetrics().horizontalAdvance(name);
+      if (rectangle.width() > nameWidth + 2 && rectangle.height() > painter.fontMetrics().height()) {
+        painter.setPen(Qt::white);
+        painter.drawText(rectangle, Qt::AlignCenter, name);
+      } else {
+        painter.setPen(Qt::black);
+        const double textHeight = painter.fontMetrics().height();
+        painter.drawText(QRectF(rectangle.center().x() - nameWidth, rectangle.top() - textHeight - 1, 2 * nameWidth,
+                                textHeight),
+                         Qt::AlignHCenter | Qt::AlignBottom, name);
       }
     }
     // the gap d, from the stopped mass's face at rest to the post
@@ -185,8 +196,10 @@ void MassChainView::show(const SimUpdate& update) {
   if (m_series && !m_series->grid.empty()) {
     m_end = m_series->grid.back().t;
     m_amplitude = m_series->chain.gap;
+    m_squeeze = 0;
     for (const core::experiments::ChainGridPoint& point : m_series->grid) {
       for (double x : point.u) m_amplitude = std::max(m_amplitude, std::abs(x));
+      for (std::size_t i = 0; i + 1 < point.u.size(); ++i) m_squeeze = std::max(m_squeeze, point.u[i] - point.u[i + 1]);
     }
     for (const core::ChainEvent& event : m_series->run.events) {
       if (event.t > m_end) break;

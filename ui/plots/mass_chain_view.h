@@ -57,6 +57,7 @@ class MassChainView : public QWidget, public SceneView {
   double m_end = 0;
   double m_rate = 1;       ///< time units a second (one slowest period in 2 s)
   double m_amplitude = 1;  ///< the largest |u| on the grid, for the scale
+  double m_squeeze = 0;    ///< the largest u_i - u_(i+1) on the grid: how far neighbours close in
   QTimer m_timer;
   QElapsedTimer m_clock;
   bool m_presentation = false;

@@ -310,10 +310,12 @@ Scene::Spec eightMassesScene() {
       "(inside the string), start on its slowest mode alone with its top on the stop, pushed "
       "off by δ along mass 5's velocity. Its frequencies are not commensurate: no common period "
       "bounds the flights. <i>Look for:</i> the string moving and mass 5's trace: near the top "
-      "of the mode the contacts are touches and soft impacts that a sign-change event finder "
-      "would miss; here each is found by a certified search (every window of time excluded by "
-      "a bound on the motion's derivatives). <i>Why:</i> a touch is a double root of u₅(t) − d, "
-      "which no change of sign reveals. Try 2 to 8 masses, other stops, or a resonance.");
+      "of the mode the first contacts are soft impacts, at under 1 % of the mode's speed, "
+      "over so soon that a sign-change event finder stepping across them would miss them; here "
+      "each is found by a certified search (every window of time excluded by a bound on the "
+      "motion's derivatives). <i>Why:</i> a soft impact is nearly a double root of u₅(t) − d (a "
+      "touch is one), whose change of sign lasts a moment. Try 2 to 8 masses, other stops, or "
+      "a resonance.");
   scene.defaults.massChain = MassChainParams{}.resized(8);
   scene.defaults.massChain.masses.assign(8, 1.0);
   scene.defaults.massChain.springs.assign(8, 1.0);
