@@ -34,6 +34,8 @@ class LandscapeView : public QWidget, public SceneView {
   explicit LandscapeView(QWidget* parent = nullptr);
 
   QWidget* widget() override { return this; }
+  /// The map alone: not the quantity box, the Back button or the status line above it.
+  QRect pictureArea() const override { return mapArea().toAlignedRect(); }
   void show(const SimUpdate& update) override;
   void setPresentation(bool on, int textPixels) override;
   /// The map's finished cells (x = u1, y = v1 of the start, value = the quantity shown) and

@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
+#include <QRect>
+
 #include "core/model/state.h"
 #include "ui/compute/sim_types.h"
 #include "ui/compute/time_text.h"
@@ -35,6 +37,9 @@ class SceneView {
   /// Time-based views show a readable window of a long run (a few slow periods at the
   /// animation's time) unless the whole run is asked for.
   virtual void setWholeRun(bool whole) { (void)whole; }
+  /// The part of the view a saved picture of it shows, in its own coordinates (empty: all of
+  /// it): a view with controls of its own leaves them out.
+  virtual QRect pictureArea() const { return {}; }
   /// Whether the view draws the scene's own data only (no run), so that it can show what the
   /// scene has computed so far (SimUpdate::scenePartial).
   virtual bool drawsSceneDataOnly() const { return false; }

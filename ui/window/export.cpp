@@ -201,18 +201,25 @@ class SeriesInTheirAxes {
 
 }  // namespace
 
-QImage renderImage(QWidget* widget, qreal pixelRatio) {
-  QImage image(widget->size() * pixelRatio, QImage::Format_ARGB32_Premultiplied);
+QImage renderImage(QWidget* widget, qreal pixelRatio, QRect area) {
+  if (area.isEmpty()) area = widget->rect();
+  QImage image(area.size() * pixelRatio, QImage::Format_ARGB32_Premultiplied);
   image.setDevicePixelRatio(pixelRatio);
   image.fill(widget->palette().color(QPalette::Window));
   QPainter painter(&image);
   painter.setRenderHint(QPainter::Antialiasing);
-  widget->render(&painter);
+  widget->render(&painter, QPoint(), QRegion(area));
   return image;
 }
 
 bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessionJson,
-                  const QString& title, QString* error) {
+                  const QString& title, QString* error, QRect area) {
+  if (area.isEmpty()) area = widget->rect();
+  // the area drawn in the widget's own coordinates, moved to the picture's corner
+  const auto draw = [widget, area](QPainter& painter) {
+    painter.translate(-area.topLeft());
+    widget->render(&painter, area.topLeft(), QRegion(area));
+  };
   const auto format = pictures::pictureFormat(path);
   if (!format) {
     if (error) *error = QStringLiteral("unknown picture type for %1: use .png, .svg or .pdf").arg(path);
@@ -220,21 +227,21 @@ bool saveSnapshot(QWidget* widget, const QString& path, const QByteArray& sessio
   }
   const pictures::PictureMetadata metadata{title, QStringLiteral("GrazeLabSession"), sessionJson};
   switch (*format) {
-    case pictures::PictureFormat::Png: return pictures::writePng(path, renderImage(widget), metadata, error);
+    case pictures::PictureFormat::Png: return pictures::writePng(path, renderImage(widget, 2.0, area), metadata, error);
     case pictures::PictureFormat::Svg:
-      return pictures::writeSvg(path, widget->size(), [widget](QPainter& painter) {
+      return pictures::writeSvg(path, area.size(), [widget, draw](QPainter& painter) {
         // no clipping in Qt 6.4's SVG (see SeriesInTheirAxes): the panel as a picture of what
         // it shows, as in a PDF, and each series held to its axes
         const SeriesInTheirAxes held(widget);
         const ScrollAreasAsPictures shown(widget);
-        widget->render(&painter);
+        draw(painter);
         shown.paint(painter);
       }, metadata, error, widget->logicalDpiY());
     case pictures::PictureFormat::Pdf:
-      return pictures::writePdf(path, widget->size(), [widget](QPainter& painter) {
+      return pictures::writePdf(path, area.size(), [widget, draw](QPainter& painter) {
         const LegendClipping unclipped(widget);
         const ScrollAreasAsPictures shown(widget);
-        widget->render(&painter);
+        draw(painter);
         shown.paint(painter);
       }, metadata, error);
   }

@@ -200,7 +200,7 @@ class MainWindow : public QMainWindow {
   void showProblem(const QString& message);
   void showStatus(const SimUpdate& update);
   void setProgressVisible(bool visible);
-  bool writeSnapshot(QWidget* widget, const QString& path, QString* error);
+  bool writeSnapshot(QWidget* widget, const QString& path, QString* error, QRect area = {});
   enum class FileAction { Read, Write };
   /// Says in the status line what was saved where (and the session file beside it).
   void confirmSaved(const QString& what, const QString& path);

@@ -80,7 +80,7 @@ void MainWindow::withDisplayedRunInPanel(const std::function<void()>& draw) {
   draw();
 }
 
-bool MainWindow::writeSnapshot(QWidget* widget, const QString& path, QString* error) {
+bool MainWindow::writeSnapshot(QWidget* widget, const QString& path, QString* error, QRect area) {
   buildAllViews();  // a file right after a scene switch holds every view and the run
   const Session shown = displayedSession();
   const QByteArray json = sessionToJson(shown);
@@ -95,7 +95,9 @@ bool MainWindow::writeSnapshot(QWidget* widget, const QString& path, QString* er
   });
   // the picture first: a session file beside a missing picture would only confuse
   bool saved = false;
-  const auto save = [&] { saved = saveSnapshot(widget, path, json, sessionTitle(shown, scene().massChain()), error); };
+  const auto save = [&] {
+    saved = saveSnapshot(widget, path, json, sessionTitle(shown, scene().massChain()), error, area);
+  };
   if (widget == this) withDisplayedRunInPanel(save);
   else save();
   return saved && saveFileAtomically(sessionPathFor(path), json, error);
@@ -120,7 +122,7 @@ bool MainWindow::savePlotSnapshot(const QString& path, QString* error, QSize siz
     return false;
   }
   if (!size.isValid() || size == view->widget()->size() || !m_displayed) {
-    return writeSnapshot(view->widget(), path, error);
+    return writeSnapshot(view->widget(), path, error, view->pictureArea());
   }
   // at another size: the same view made again off screen, laid out for that size, its text
   // grown with the picture (a 1920 x 1080 figure with the desk's 13 px text reads as a stamp
@@ -144,7 +146,7 @@ bool MainWindow::savePlotSnapshot(const QString& path, QString* error, QSize siz
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
     plot->refreshNow();
   }
-  return writeSnapshot(widget, path, error);
+  return writeSnapshot(widget, path, error, copy->pictureArea());
 }
 
 QStringList MainWindow::csvHeader() const {

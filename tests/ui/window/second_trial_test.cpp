@@ -14,6 +14,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSpinBox>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QValueAxis>
 #include <QWheelEvent>
@@ -26,6 +27,7 @@
 #include "tests/ui/explorer_test_support.h"
 #include "ui/compute/scene.h"
 #include "ui/plots/curve_plot.h"
+#include "ui/plots/landscape_view.h"
 #include "ui/plots/plot_view.h"
 #include "ui/widgets/chain_editor.h"
 #include "ui/widgets/parameter_panel.h"
@@ -419,6 +421,25 @@ class SecondTrialTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     trace->refreshNow();
     QVERIFY(span() < 5 * slowest);
+  }
+
+  // a saved Landscape map held the "Show:" box and a disabled Back button: the map alone
+  void aSavedMapIsTheMapAlone() {
+    m_window->selectScene(sceneIndex(*m_window, QStringLiteral("landscape")));
+    QVERIFY(waitForLatestFinal(*m_window, 120000));
+    auto* map = m_window->findChild<LandscapeView*>();
+    QVERIFY(map);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("map.png"));
+    QString error;
+    QVERIFY2(m_window->savePlotSnapshot(path, &error, QSize(), map), qPrintable(error));
+    const QImage saved(path);
+    const QRect area = map->pictureArea();
+    QCOMPARE(saved.size(), area.size() * 2);  // (PNGs twice as dense)
+    for (const QWidget* control : map->findChildren<QWidget*>()) {
+      if (control->isVisible()) QVERIFY2(control->geometry().bottom() < area.top(), qPrintable(control->objectName()));
+    }
+    QVERIFY(area.height() < map->height());
   }
 
  private:
