@@ -40,7 +40,8 @@ class MassChainView::Canvas : public QWidget {
     painter.setRenderHint(QPainter::Antialiasing);
     const MassChainView& view = *m_view;
     if (!view.m_series || view.m_series->grid.empty()) {
-      painter.drawText(rect(), Qt::AlignCenter, tr("no motion to show yet"));
+      painter.drawText(rect().adjusted(8, 8, -8, -8), Qt::AlignCenter | Qt::TextWordWrap,
+                       view.m_emptyNote.isEmpty() ? tr("no motion to show yet") : view.m_emptyNote);
       return;
     }
     const core::MassChain& chain = view.m_series->chain;
@@ -187,6 +188,11 @@ MassChainView::MassChainView(QWidget* parent) : QWidget(parent) {
   connect(m_play, &QToolButton::clicked, this, [this] { setPlaying(!playing()); });
   connect(m_slider, &QSlider::valueChanged, this,
           [this](int position) { setTime(m_end * position / kSliderSteps); });
+}
+
+void MassChainView::setEmptyNote(const QString& why) {
+  m_emptyNote = why;
+  m_canvas->update();
 }
 
 void MassChainView::show(const SimUpdate& update) {

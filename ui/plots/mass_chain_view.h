@@ -30,6 +30,7 @@ class MassChainView : public QWidget, public SceneView {
 
   QWidget* widget() override { return this; }
   QString viewTitle() const override { return tr("The chain of N masses, moving"); }
+  void setEmptyNote(const QString& why) override;
   void show(const SimUpdate& update) override;
   void setPresentation(bool on, int textPixels) override;
 
@@ -56,6 +57,7 @@ class MassChainView : public QWidget, public SceneView {
   double m_time = 0;
   double m_end = 0;
   double m_rate = 1;       ///< time units a second (one slowest period in 2 s)
+  QString m_emptyNote;  ///< why there is no motion (setEmptyNote)
   double m_amplitude = 1;  ///< the largest |u| on the grid, for the scale
   double m_squeeze = 0;    ///< the largest u_i - u_(i+1) on the grid: how far neighbours close in
   QTimer m_timer;

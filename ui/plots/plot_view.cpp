@@ -174,7 +174,7 @@ PlotView::PlotView(const QString& title, const QString& xTitle, const QString& y
   m_axisY = new QValueAxis;
   chart->addAxis(m_axisX, Qt::AlignBottom);
   chart->addAxis(m_axisY, Qt::AlignLeft);
-  new PlotGrid(chart, m_axisX, m_axisY);  // the chart's child: Qt Charts' own grid, hidden
+  m_grid = new PlotGrid(chart, m_axisX, m_axisY);  // the chart's child: Qt Charts' own grid, hidden
 
   setRenderHint(QPainter::Antialiasing);
   // the whole plot repainted on each change: under QGraphicsView's minimal updates, Qt Charts'
@@ -340,6 +340,24 @@ void PlotView::setStale(bool stale) {
   chart()->setPlotAreaBackgroundBrush(QColor(0xe8, 0xe8, 0xe8));
   chart()->setPlotAreaBackgroundVisible(stale);
 }
+
+void PlotView::setEmptyNote(const QString& why) {
+  if (why.isEmpty() && !m_emptyNote) return;
+  if (!m_emptyNote) {
+    m_emptyNote = new QLabel(this);
+    m_emptyNote->setObjectName(QStringLiteral("emptyNote"));
+    m_emptyNote->setAlignment(Qt::AlignCenter);
+    m_emptyNote->setWordWrap(true);
+    m_emptyNote->setAttribute(Qt::WA_TransparentForMouseEvents);
+  }
+  m_emptyNote->setText(why);
+  m_emptyNote->setVisible(!why.isEmpty());
+  m_emptyNote->setGeometry(rect().adjusted(16, 16, -16, -16));
+  for (QAbstractAxis* axis : chart()->axes()) axis->setVisible(why.isEmpty());
+  m_grid->setVisible(why.isEmpty());
+}
+
+QString PlotView::emptyNote() const { return m_emptyNote && m_emptyNote->isVisible() ? m_emptyNote->text() : QString(); }
 
 void PlotView::placeStaleNote() {
   if (!m_staleNote || !m_staleNote->isVisible()) return;
@@ -735,6 +753,7 @@ void PlotView::keyPressEvent(QKeyEvent* event) {
 
 void PlotView::resizeEvent(QResizeEvent* event) {
   QChartView::resizeEvent(event);
+  if (m_emptyNote) m_emptyNote->setGeometry(rect().adjusted(16, 16, -16, -16));
   fitTitles();
   updateLegend();  // wraps to the new width
   // QChartView raises its own minimum size to the chart's and never lowers it: a legend of

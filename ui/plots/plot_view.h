@@ -133,6 +133,9 @@ class PlotView : public QChartView, public SceneView {
   /// plot area and a note in its corner), or clears the mark.
   void setStale(bool stale);
   bool isStale() const { return m_stale; }
+  /// In place of bare -1..1 axes: the sentence in the middle, no axes; empty clears it.
+  void setEmptyNote(const QString& why) override;
+  QString emptyNote() const;
   /// A click waits for the double-click interval before it is sent as clickedAt.
   bool clickPending() const { return m_clickTimer.isActive(); }
 
@@ -228,6 +231,8 @@ class PlotView : public QChartView, public SceneView {
   QString m_title, m_xTitle, m_yTitle;  ///< whole, as set
   std::optional<Fonts> m_deskFonts;  ///< the fonts before presentation mode
   QLabel* m_staleNote = nullptr;
+  QLabel* m_emptyNote = nullptr;  ///< setEmptyNote's sentence
+  QGraphicsItem* m_grid = nullptr;  ///< the grid (PlotGrid), owned by the chart
   void placeStaleNote();
   std::unique_ptr<WrappedLegend> m_legend;
   QTimer m_refreshTimer;

@@ -37,6 +37,9 @@ class SceneView {
   /// Time-based views show a readable window of a long run (a few slow periods at the
   /// animation's time) unless the whole run is asked for.
   virtual void setWholeRun(bool whole) { (void)whole; }
+  /// Why the view has nothing to show (a refused chain on a scene not run yet), said where its
+  /// data would be; empty: the view shows its data.
+  virtual void setEmptyNote(const QString& why) { (void)why; }
   /// The part of the view a saved picture of it shows, in its own coordinates (empty: all of
   /// it): a view with controls of its own leaves them out.
   virtual QRect pictureArea() const { return {}; }

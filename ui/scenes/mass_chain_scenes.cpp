@@ -173,6 +173,12 @@ QString chainStatusOf(const core::experiments::ChainSeries& series) {
   };
   const double drift =
       std::abs(run.energyFinal - run.energyInitial) / std::max(std::abs(run.energyInitial), 1e-300);
+  if (run.contacts == 0 && run.stop == core::ChainStop::SearchBudget) {
+    // ("0 contacts until t = 0, ended by the search's budget" read as a run that never began)
+    return tr("%1: no contact of the stopped mass in its first 1000 slowest periods (a chain with no "
+              "common period: nothing bounds when it comes back; a search goes no further)")
+        .arg(counted(series.chain.size(), tr("mass"), tr("masses")));
+  }
   return tr("%1: %2 (%3, %4, %5) until t = %6, ended by %7 · energy drift %8")
       .arg(counted(series.chain.size(), tr("mass"), tr("masses")))
       .arg(counted(run.contacts, tr("contact"), tr("contacts")),

@@ -696,6 +696,7 @@ void MainWindow::applyPending() {
   QElapsedTimer viewClock;
   for (SceneView* view : m_sceneViews) {
     viewClock.start();
+    view->setEmptyNote(QString());  // a run to show: no reason for nothing
     view->show(*m_displayed);
     m_viewCosts[view->widget()] = viewClock.nsecsElapsed() * 1e-6;
   }

@@ -26,9 +26,14 @@ void MainWindow::showProblem(const QString& message) {
   // the last valid result stays on screen; only the message and the read-outs change
   m_problem = message;
   m_panel->setMessage(message);
-  for (PlotView* plot : m_plots) plot->setStale(m_displayed.has_value());
   m_readout->setStale(true);
-  m_status->setMessage(tr("Not computed: %1 (showing the last valid result)").arg(message));
+  // the scene's last valid run stays, greyed; a scene with none yet says why in its views (they
+  // showed bare -1..1 axes, and the status line a last valid result that was not there)
+  const bool shown = m_displayed.has_value() && m_displayed->request->sceneName == scene().name();
+  for (PlotView* plot : m_plots) plot->setStale(shown);
+  for (SceneView* view : m_sceneViews) view->setEmptyNote(shown ? QString() : tr("Nothing computed: %1").arg(message));
+  m_status->setMessage(shown ? tr("Not computed: %1 (showing the last valid result)").arg(message)
+                             : tr("Not computed: %1").arg(message));
 }
 
 void MainWindow::showStatus(const SimUpdate& update) {

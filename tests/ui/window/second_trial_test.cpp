@@ -423,6 +423,32 @@ class SecondTrialTest : public QObject {
     QVERIFY(span() < 5 * slowest);
   }
 
+  // a chain refused in a scene with no run yet (a session of six masses in 1:2:...:6 that no
+  // design reaches) drew bare -1..1 axes, and the status promised "the last valid result": each
+  // view says why instead, the status promises nothing; a valid chain brings the plots back
+  void aSceneWithNothingComputedSaysWhy() {
+    Session session{QStringLiteral("Three masses in 1:2:3"), m_window->params(), std::nullopt};
+    MassChainParams chain = MassChainParams{}.resized(6);
+    chain.masses = {1.0, 0.2, 0.05, 1.0, 1.0, 1.0};
+    chain.harmonics = {6, 5, 4, 3, 2, 1};
+    session.params.massChain = chain;
+    QString error;
+    QVERIFY2(m_window->applySession(session, &error), qPrintable(error));
+    QVERIFY(waitForProblem(*m_window));
+    QVERIFY(!m_window->statusText().contains(QStringLiteral("last valid")));
+    for (PlotView* plot : m_window->plots()) {
+      QVERIFY2(plot->emptyNote().contains(QStringLiteral("No chain with these masses")), qPrintable(plot->title()));
+    }
+    chain.harmonics.clear();  // the springs as given: a chain, a run (on its slowest mode: it returns)
+    chain.weights = {0, 0, 0, 0, 0, 1};
+    Params params = m_window->params();
+    params.massChain = chain;
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window, 60000));
+    QVERIFY2(showsItsRun(*m_window), qPrintable(m_window->statusText()));
+    for (PlotView* plot : m_window->plots()) QVERIFY(plot->emptyNote().isEmpty());
+  }
+
   // a saved Landscape map held the "Show:" box and a disabled Back button: the map alone
   void aSavedMapIsTheMapAlone() {
     m_window->selectScene(sceneIndex(*m_window, QStringLiteral("landscape")));
