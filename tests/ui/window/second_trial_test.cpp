@@ -449,6 +449,38 @@ class SecondTrialTest : public QObject {
     for (PlotView* plot : m_window->plots()) QVERIFY(plot->emptyNote().isEmpty());
   }
 
+  // a session reopened in a fresh window showed other tick steps than the window that saved it:
+  // every plot's axes are those of its run, whatever was on screen before
+  void aReopenedSessionHasTheSameAxes() {
+    for (const QString& alias : {QStringLiteral("grazing"), QStringLiteral("perturbations"), QStringLiteral("three-masses")}) {
+      m_window->selectScene(sceneIndex(*m_window, alias));
+      QVERIFY(waitForLatestFinal(*m_window, 60000));
+      Params params = m_window->params();
+      params.perturbation *= 0.2;
+      params.lambda = 0.9;
+      m_window->setParams(params);
+      QVERIFY(waitForLatestFinal(*m_window, 60000));
+      const auto axesOf = [](const MainWindow& window) {
+        QStringList ranges;
+        for (PlotView* plot : window.plots()) {
+          plot->refreshNow();
+          for (QAbstractAxis* axis : plot->chart()->axes()) {
+            const auto* value = qobject_cast<QValueAxis*>(axis);
+            ranges << QStringLiteral("%1: %2..%3 by %4").arg(plot->title()).arg(value->min()).arg(value->max()).arg(value->tickInterval());
+          }
+        }
+        return ranges;
+      };
+      const QStringList saved = axesOf(*m_window);
+      auto fresh = openTestWindow();
+      QVERIFY(waitForLatestFinal(*fresh));
+      QString error;
+      QVERIFY2(fresh->applySession(m_window->session(), &error), qPrintable(error));
+      QVERIFY(waitForLatestFinal(*fresh, 60000));
+      QCOMPARE(axesOf(*fresh), saved);
+    }
+  }
+
   // a saved Landscape map held the "Show:" box and a disabled Back button: the map alone
   void aSavedMapIsTheMapAlone() {
     m_window->selectScene(sceneIndex(*m_window, QStringLiteral("landscape")));
