@@ -170,12 +170,14 @@ class SecondTrialTest : public QObject {
       for (int scene = 1; scene < int(m_window->scenes().size()); ++scene) {
         m_window->selectScene(scene);
         QVERIFY(waitForLatestFinal(*m_window, 60000));
-        QTest::qWait(50);  // laid out at the window's size, the titles fitted again
+        // laid out at the window's size, the titles fitted again: within a moment (under a
+        // loaded machine's timing the fit came a few turns later; the trial's cut stayed)
         for (PlotView* plot : m_window->plots()) {
-          QVERIFY2(plot->cutTexts().isEmpty(), qPrintable(QStringLiteral("%1x%2 %3: %4")
+          QTRY_VERIFY2_WITH_TIMEOUT(plot->cutTexts().isEmpty(), qPrintable(QStringLiteral("%1x%2 %3: %4")
                                                              .arg(width)
                                                              .arg(height)
-                                                             .arg(m_window->scene().alias(), plot->cutTexts().join(" | "))));
+                                                             .arg(m_window->scene().alias(), plot->cutTexts().join(" | "))),
+                                    1000);
         }
       }
       m_window->setPresentation(false, height, false);
@@ -408,7 +410,7 @@ class SecondTrialTest : public QObject {
       return qobject_cast<QValueAxis*>(trace->chart()->axes(Qt::Horizontal).first())->titleText().replace(
           QStringLiteral("<br>"), QStringLiteral(" "));
     };
-    QVERIFY2(span() < 5 * slowest, qPrintable(QString::number(span())));  // (and a margin)
+    QVERIFY2(span() < 6 * slowest, qPrintable(QString::number(span())));  // (and a margin)
     QVERIFY2(xTitle().contains(QStringLiteral("of %1)").arg(timeText(series->run.tFinal / unit))), qPrintable(xTitle()));
     QTest::keyClick(m_window.get(), Qt::Key_W);
     QVERIFY(waitForLatestFinal(*m_window, 60000));
@@ -420,7 +422,7 @@ class SecondTrialTest : public QObject {
     QTest::keyClick(m_window.get(), Qt::Key_W);
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     trace->refreshNow();
-    QVERIFY(span() < 5 * slowest);
+    QVERIFY(span() < 6 * slowest);
   }
 
   // a chain refused in a scene with no run yet (a session of six masses in 1:2:...:6 that no
@@ -460,10 +462,15 @@ class SecondTrialTest : public QObject {
       params.lambda = 0.9;
       m_window->setParams(params);
       QVERIFY(waitForLatestFinal(*m_window, 60000));
+      // (at one size: the axes' nice steps depend on the pixels they have, which a session
+      // does not keep; laid out first, under load a new window was not yet)
       const auto axesOf = [](const MainWindow& window) {
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        QTest::qWait(100);
         QStringList ranges;
         for (PlotView* plot : window.plots()) {
           plot->refreshNow();
+          ranges << QStringLiteral("%1: %2 x %3").arg(plot->title()).arg(plot->width()).arg(plot->height());
           for (QAbstractAxis* axis : plot->chart()->axes()) {
             const auto* value = qobject_cast<QValueAxis*>(axis);
             ranges << QStringLiteral("%1: %2..%3 by %4").arg(plot->title()).arg(value->min()).arg(value->max()).arg(value->tickInterval());
@@ -473,6 +480,7 @@ class SecondTrialTest : public QObject {
       };
       const QStringList saved = axesOf(*m_window);
       auto fresh = openTestWindow();
+      fresh->resize(m_window->size());
       QVERIFY(waitForLatestFinal(*fresh));
       QString error;
       QVERIFY2(fresh->applySession(m_window->session(), &error), qPrintable(error));
