@@ -306,7 +306,7 @@ Scene::Spec eightMassesScene() {
   scene.alias = QStringLiteral("eight-masses");
   scene.title = tr("A string of eight masses");
   scene.text = tr(
-      "<b>Many modes, exact touches.</b> Eight equal masses on equal springs, the stop on mass 5 "
+      "<b>Many modes, exact contacts.</b> Eight equal masses on equal springs, the stop on mass 5 "
       "(inside the string), start on its slowest mode alone with its top on the stop, pushed "
       "off by δ along mass 5's velocity. Its frequencies are not commensurate: no common period "
       "bounds the flights. <i>Look for:</i> the string moving and mass 5's trace: near the top "
