@@ -69,6 +69,9 @@ struct CurveFigure {
   /// (0-based, fastest first: x is the second's weight, y the third's, the first balancing):
   /// dragging it, or clicking, moves them (empty: nothing to drag)
   std::vector<int> draggedModes;
+  /// said in place of the plot when it has no curve and no markers (a run with no contact has no
+  /// flight to draw: bare -1..1 axes said nothing)
+  QString whyEmpty;
 };
 
 using Figures = std::map<PlotKind, CurveFigure>;

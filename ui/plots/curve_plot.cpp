@@ -58,6 +58,7 @@ void CurvePlot::show(const SimUpdate& update) {
   setData(m_dots, figure.dots ? figure.curve : std::vector<QPointF>{});
   setData(m_other, figure.other);
   setData(m_marker, figure.markers);
+  setEmptyNote(figure.curve.empty() && figure.markers.empty() ? figure.whyEmpty : QString());
   setData(m_reference, point ? std::vector<QPointF>{} : figure.reference);
   setData(m_referencePoint, point ? figure.reference : std::vector<QPointF>{});
   m_timeUnit = figure.timeUnit;

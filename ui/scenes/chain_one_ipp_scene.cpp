@@ -11,6 +11,7 @@
 #include "core/orbits/chain_onepp.h"
 #include "ui/scenes/mass_chain_scenes.h"
 #include "ui/scenes/scenes.h"
+#include "ui/widgets/param_specs.h"
 
 namespace grazelab::ui {
 namespace {
@@ -134,13 +135,13 @@ Scene::Spec chainOnePeriodicScene() {
       const double d = series.chain.gap;
       const int stopped = series.chain.stopped();
       CurveFigure trace;
-      trace.title = tr("The 1IPP orbit of T = %1 T*: u%2 / d").arg(number(fraction, 6)).arg(stopped);
+      trace.title = tr("The 1IPP orbit of T = %1 T*: u%2 / d").arg(number(fraction, 6), subscriptDigits(stopped));
       trace.xTitle = tr("t / T");
       trace.yTitle = tr("u / d");
       trace.toolTip =
           tr("The stopped mass over three periods of the orbit, from right after an impact: it meets "
              "the stop once a period, at t = T, 2T, 3T (dots: the exact run's contacts).");
-      trace.curveName = tr("u%1 / d").arg(stopped);
+      trace.curveName = tr("u%1 / d").arg(subscriptDigits(stopped));
       for (const core::experiments::ChainGridPoint& point : series.grid) trace.curve.emplace_back(point.t / T, point.us / d);
       trace.timeUnit = T;  // the animation's time a line on it
       trace.referenceName = tr("stop");

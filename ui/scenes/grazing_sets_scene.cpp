@@ -178,14 +178,14 @@ Scene::Spec grazingSetsScene() {
       const core::experiments::ChainSeries& series = *runs.front();
       const int stopped = series.chain.stopped();
       CurveFigure trace;
-      trace.title = tr("GLO(λ) over one period: u%1 / d").arg(stopped);
+      trace.title = tr("GLO(λ) over one period: u%1 / d").arg(subscriptDigits(stopped));
       trace.xTitle = tr("t / T");
       trace.yTitle = tr("u / d");
       trace.toolTip =
           tr("The stopped mass of GLO(λ) over its period T, the stop dashed: a grazing orbit stays "
              "at or below it and touches it at t = 0 and T; weights outside the set pass it (the "
              "linear motion is drawn, as if the stop were not there).");
-      trace.curveName = tr("u%1 / d").arg(stopped);
+      trace.curveName = tr("u%1 / d").arg(subscriptDigits(stopped));
       for (const core::experiments::ChainGridPoint& point : series.grid)
         trace.curve.emplace_back(point.t / period, point.us / series.chain.gap);
       trace.timeUnit = period;  // the animation's time a line on it

@@ -16,6 +16,7 @@
 #include "ui/scenes/mass_chain_scenes.h"
 #include "ui/scenes/scenes.h"
 #include "ui/widgets/chain_editor.h"
+#include "ui/widgets/param_specs.h"
 
 namespace grazelab::ui {
 namespace {
@@ -31,7 +32,7 @@ CurveFigure flightFigure(const QString& title, const core::experiments::ChainSer
   CurveFigure figure;
   figure.title = title;
   figure.xTitle = tr("contact index");
-  figure.yTitle = tr("flight time / %1").arg(unitName);
+  figure.yTitle = tr("flight / %1").arg(unitName);  // (short: "flight time / slowest period" was cut)
   figure.toolTip =
       tr("Each free flight from the stop (after an impact, a grazing or a release), over the "
          "chain's common period T. A resonant chain's free motion repeats after T, so no "
@@ -39,6 +40,7 @@ CurveFigure flightFigure(const QString& title, const core::experiments::ChainSer
          "period has no such bound.");
   figure.curveName = tr("flights");
   figure.dots = true;
+  figure.whyEmpty = tr("No contact with the stop in this run: no flight from it to draw.");
   long last = 1;
   for (const core::experiments::ChainFlight& flight : series.flights) {
     if (!flight.fromStop) continue;
@@ -60,7 +62,10 @@ CurveFigure sectionFigure(const MassChainParams& given, const core::experiments:
   const core::MassChain& chain = series.chain;
   const int n = chain.size();
   const int x = given.sectionXResolved(), y = given.sectionYResolved();
-  const auto name = [n](int c) { return c <= n ? tr("u%1").arg(c) : tr("v%1").arg(c - n); };
+  // with subscripts, as the panel writes them (u₃, not u3)
+  const auto name = [n](int c) {
+    return c <= n ? tr("u%1").arg(subscriptDigits(c)) : tr("v%1").arg(subscriptDigits(c - n));
+  };
   const auto scaled = [&](int c) { return c <= n ? tr("%1 / d").arg(name(c)) : tr("%1 / (d ω₁)").arg(name(c)); };
   const auto value = [&](const core::ChainEvent& event, int c) {
     return c <= n ? event.u[c - 1] / chain.gap : event.vBefore[c - n - 1] / speed;
@@ -78,6 +83,12 @@ CurveFigure sectionFigure(const MassChainParams& given, const core::experiments:
           .arg(chain.stopped());
   figure.curveName = tr("contacts");
   figure.dots = true;
+  if (n == 1) {
+    // one mass: on H its place is the stop and its speed the energy's, a single point
+    figure.whyEmpty = tr("One mass: on H its place is the stop and its speed the energy's; no section to draw.");
+    return figure;
+  }
+  figure.whyEmpty = tr("No contact with the stop in this run: no point on H to draw.");
   for (const core::ChainEvent& event : series.run.events) {
     if (core::isContact(event.type)) figure.curve.emplace_back(value(event, x), value(event, y));
   }
@@ -96,13 +107,13 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
 
   // u_s(t) of the stopped mass over the first periods, the stop at 1, the contacts on it
   CurveFigure trace;
-  trace.title = tr("Mass %1 (on the stop's side): u%1 / d").arg(chain.stopped());
+  trace.title = tr("Mass %1 (on the stop's side): u%2 / d").arg(chain.stopped()).arg(subscriptDigits(chain.stopped()));
   trace.xTitle = tr("t / %1").arg(unitName);
   trace.yTitle = tr("u / d");
   trace.toolTip =
       tr("The stopped mass's displacement over the gap d; the dashed line is the stop. Each "
          "dot is a contact.\nA long run shows its first four slowest periods; W shows all of it.");
-  trace.curveName = tr("u%1 / d").arg(chain.stopped());
+  trace.curveName = tr("u%1 / d").arg(subscriptDigits(chain.stopped()));
   for (const core::experiments::ChainGridPoint& point : series.grid) {
     trace.curve.emplace_back(point.t / unit, point.us / chain.gap);
   }
@@ -119,7 +130,7 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
   // the mass the panel's 'phase of' names, when it is another: its trace beside the stopped one
   if (given.shown() != chain.stopped()) {
     trace.title = tr("Mass %1 (on the stop's side) and mass %2: u / d").arg(chain.stopped()).arg(given.shown());
-    trace.otherName = tr("u%1 / d").arg(given.shown());
+    trace.otherName = tr("u%1 / d").arg(subscriptDigits(given.shown()));
     for (const core::experiments::ChainGridPoint& point : series.grid) {
       trace.other.emplace_back(point.t / unit, point.uChosen / chain.gap);
     }
@@ -144,8 +155,8 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
   const bool shownIsStopped = shown == chain.stopped();
   CurveFigure phase;
   phase.title = tr("Phase portrait of mass %1").arg(shown);
-  phase.xTitle = tr("u%1 / d").arg(shown);
-  phase.yTitle = tr("v%1 / (d ω₁)").arg(shown);
+  phase.xTitle = tr("u%1 / d").arg(subscriptDigits(shown));
+  phase.yTitle = tr("v%1 / (d ω₁)").arg(subscriptDigits(shown));
   phase.toolTip = shownIsStopped
                       ? tr("The stopped mass's velocity against its displacement; at u/d = 1 the "
                            "impacts reverse the velocity. Click on the stop line to start a run "
@@ -217,9 +228,13 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
     job.figures[PlotKind::DetunedFlights] = figure;
   } else if (contrast) {
     CurveFigure none;
-    none.title = resonant ? tr("k₂ 5 % off: computing…") : tr("Detuned contrast: only for a resonant chain");
+    none.title = chain.size() < 2 ? tr("Detuned contrast: needs two masses or more")
+                 : resonant       ? tr("k₂ 5 % off: computing…")
+                                  : tr("Detuned contrast: only for a resonant chain");
+    if (chain.size() < 2) none.whyEmpty = tr("The contrast detunes k₂, the spring between masses 1 and 2: a chain of one mass has none.");
+    else if (!resonant) none.whyEmpty = tr("The contrast detunes a resonant chain: this one has no common period to lose.");
     none.xTitle = tr("contact index");
-    none.yTitle = tr("flight time / T");
+    none.yTitle = tr("flight / T");
     job.figures[PlotKind::DetunedFlights] = none;
   }
   job.status = chainStatusOf(series);

@@ -32,7 +32,9 @@ bool WheelScrollsPanel::eventFilter(QObject* watched, QEvent* event) {
     widget->setFocusPolicy(Qt::StrongFocus);
     return false;
   }
-  if (widget->hasFocus()) return false;
+  // a focused number steps; a list never turns under the wheel (a flick over the resonance box
+  // chose another resonance and computed everything again), it opens with a click or the keys
+  if (widget->hasFocus() && !qobject_cast<QComboBox*>(widget)) return false;
   QCoreApplication::sendEvent(m_area->verticalScrollBar(), event);
   return true;
 }

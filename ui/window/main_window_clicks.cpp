@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/model/model.h"
 #include "core/orbits/starts.h"
+#include "core/solver/chain_run.h"
 #include "ui/compute/derived.h"
 #include "ui/window/main_window.h"
 #include "ui/widgets/parameter_panel.h"
@@ -91,13 +93,46 @@ bool MainWindow::startChainFromSection(QPointF value) {
   const core::ChainState& shown = chains.front().start;
   const MassChainParams& given = m_displayed->request->params.massChain;
   const int n = chain.size();
+  if (n == 1) {
+    m_status->setMessage(tr("A chain of one mass has no section to start from: on H its place is the "
+                            "stop and its speed is the energy's. Click the stop line of its portrait."));
+    return false;
+  }
   // the plot's units: displacements over d, velocities over d w1 (the fastest frequency)
   const double speed = chain.gap * core::chainModes(chain).omega.maxCoeff();
   const auto unscaled = [&](int c, double plotted) { return plotted * (c < n ? chain.gap : speed); };
   const int a = given.sectionXResolved() - 1, b = given.sectionYResolved() - 1;
   const double level = core::chainEnergy(chain, shown);
+  // the other coordinates as at the run's contact drawn nearest the click (on the energy level
+  // and on H, as the click is): the start's own, far from the section's points, held more than
+  // the energy almost everywhere (eight masses: every click was refused)
+  core::ChainState base = shown;
+  if (!m_displayed->chains.empty()) {
+    const auto coordinate = [&](const core::ChainEvent& event, int c) {
+      return c < n ? event.u[c] / chain.gap : event.vBefore[c - n] / speed;
+    };
+    std::vector<const core::ChainEvent*> contacts;
+    for (const core::ChainEvent& event : m_displayed->chains.front()->run.events) {
+      if (core::isContact(event.type)) contacts.push_back(&event);
+    }
+    // distances in the plot's proportions: each coordinate over the points' spread
+    double spreadX = 1e-300, spreadY = 1e-300;
+    for (const core::ChainEvent* event : contacts) {
+      spreadX = std::max(spreadX, std::abs(coordinate(*event, a) - coordinate(*contacts.front(), a)));
+      spreadY = std::max(spreadY, std::abs(coordinate(*event, b) - coordinate(*contacts.front(), b)));
+    }
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const core::ChainEvent* event : contacts) {
+      const double distance = std::hypot((coordinate(*event, a) - value.x()) / spreadX,
+                                         (coordinate(*event, b) - value.y()) / spreadY);
+      if (distance < nearest) {
+        nearest = distance;
+        base = core::ChainState{event->u, event->vBefore};
+      }
+    }
+  }
   const core::ChainSectionStart start = core::chainSectionStateAtEnergy(
-      chain, level, shown, a, unscaled(a, value.x()), b, unscaled(b, value.y()));
+      chain, level, base, a, unscaled(a, value.x()), b, unscaled(b, value.y()));
   switch (start.problem) {
     case core::ChainSectionProblem::None:
       break;
@@ -108,8 +143,8 @@ bool MainWindow::startChainFromSection(QPointF value) {
                                .arg(chain.stopped()));
       return false;
     case core::ChainSectionProblem::EnergyTooLow:
-      m_status->setMessage(tr("No state of this energy (E = %1) there: the springs and the masses as at "
-                              "the start already hold more. Click inside the points.")
+      m_status->setMessage(tr("No state of this energy (E = %1) there: with the other masses as at the "
+                              "nearest contact, the springs already hold more. Click nearer the points.")
                                .arg(level, 0, 'g', 6));
       return false;
   }

@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // The file side of MainWindow: snapshots, CSV, sessions, clipboard. Every write goes through
 // QSaveFile (ui/export.h); a failure is shown and leaves the old file and the session intact.
+#include <utility>
+
 #include <QApplication>
 #include <QComboBox>
 #include <QDialog>
@@ -44,7 +46,8 @@ QString fileNamePart(const QString& title) {
   for (const QChar c : plain) {
     if (c.isLetterOrNumber() && c.unicode() < 128) {
       if (gap && !part.isEmpty()) {
-        if (++words == 4) break;
+        // four words, and a number after them ("phase-portrait-of-mass-3": the mass was dropped)
+        if (++words >= 4 && !c.isDigit()) break;
         part += QLatin1Char('-');
       }
       part += c.toLower();
@@ -70,8 +73,14 @@ void MainWindow::withDisplayedRunInPanel(const std::function<void()>& draw) {
   m_panel->setParams(shown.params);
   m_panel->setMessage(QString());
   m_panel->setClickedStart(shown.start);
-  if (!m_problem.isEmpty()) m_status->setMessage(QString());
+  // the status line says the run's own words: not a refusal of the panel's values, nor a note
+  // left by the last save ("Saved the window to …" was drawn into the next picture)
+  const QString problem = std::exchange(m_problem, QString());
+  const QString dropped = std::exchange(m_droppedNote, QString());
+  showStatus(*m_displayed);
   const auto restore = qScopeGuard([&] {
+    m_problem = problem;
+    m_droppedNote = dropped;
     m_panel->setParams(typed);
     m_panel->setMessage(panelMessage);
     m_panel->setClickedStart(m_clickedStart);

@@ -98,13 +98,22 @@ QString MainWindow::shortcutsText() const {
 void MainWindow::showShortcuts() { showText(this, tr("Keyboard shortcuts"), shortcutsText()); }
 
 void MainWindow::showSceneGuide() {
-  showText(this, scene().title(), QStringLiteral("<h3>%1</h3><p>%2</p><p>%3</p>")
-                  .arg(scene().title(), scene().description(),
-                       tr("A click on the Poincaré points (H), on the stop line of mass 2's portrait, on "
-                          "the Landscape map or on the modes picture starts a run from there (the panel "
-                          "says so; any edit goes back to the scene's start). Ctrl+Shift+R puts every "
-                          "value of this scene back; W shows the whole run in u₂(t) and the phase "
-                          "portraits; F1 shows this guide, Ctrl+F1 every key.")));
+  // what the mouse and W do, in this scene's own words (the two-mass text named mass 2's
+  // portrait and u2(t) in scenes of N masses)
+  const QString mouse =
+      scene().massChain()
+          ? tr("A click on the Poincaré points (H) or on the stop line of the stopped mass's portrait "
+               "starts a run from there (the panel says so; any edit goes back to the scene's "
+               "start). Ctrl+Shift+R puts every value of this scene back; W computes and shows the "
+               "whole run in the trace, the portrait and the animation (else its first four slowest "
+               "periods); F1 shows this guide, Ctrl+F1 every key.")
+          : tr("A click on the Poincaré points (H), on the stop line of mass 2's portrait, on "
+               "the Landscape map or on the modes picture starts a run from there (the panel "
+               "says so; any edit goes back to the scene's start). Ctrl+Shift+R puts every "
+               "value of this scene back; W shows the whole run in u₂(t) and the phase "
+               "portraits; F1 shows this guide, Ctrl+F1 every key.");
+  showText(this, scene().title(),
+           QStringLiteral("<h3>%1</h3><p>%2</p><p>%3</p>").arg(scene().title(), scene().description(), mouse));
 }
 
 }  // namespace grazelab::ui
