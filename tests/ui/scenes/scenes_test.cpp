@@ -397,7 +397,7 @@ class ScenesTest : public QObject {
       const CurveFigure& trace = figure(*m_window, PlotKind::ChainStopTrace);
       QCOMPARE(trace.other.size(), trace.curve.size());
       QCOMPARE(trace.other.front().y(), shownSeries.grid.front().uChosen / shownSeries.chain.gap);
-      QVERIFY2(trace.otherName.contains(QStringLiteral("u1")), qPrintable(trace.otherName));
+      QVERIFY2(trace.otherName.contains(QStringLiteral("u₁")), qPrintable(trace.otherName));
     }
     // the Poincaré points on H on the chosen pair (u2, v3): every contact's state there, the
     // velocity the one before the contact, scaled as the phase portrait is
@@ -408,7 +408,7 @@ class ScenesTest : public QObject {
     {
       const CurveFigure& section = figure(*m_window, PlotKind::ChainSection);
       const auto& run = shownChainRun(*m_window);
-      QVERIFY2(section.title.contains(QStringLiteral("(u2, v3)")), qPrintable(section.title));
+      QVERIFY2(section.title.contains(QStringLiteral("(u₂, v₃)")), qPrintable(section.title));
       QCOMPARE(qsizetype(section.curve.size()), qsizetype(run->run.contacts));
       const double speed = run->chain.gap * run->modes.omega.maxCoeff();
       QCOMPARE(section.curve.front().x(), run->run.events.front().u[1] / run->chain.gap);
