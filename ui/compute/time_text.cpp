@@ -11,9 +11,11 @@ namespace grazelab::ui {
 
 QString timeText(double t) {
   const double size = std::abs(t);
-  if (size < 1e5) {
-    const int digits = size >= 1 ? int(std::floor(std::log10(size))) + 1 : 1;
-    QString text = QString::number(t, 'f', std::max(0, 3 - digits));
+  if (size == 0 || !std::isfinite(t)) return QString::number(t);
+  const int exponent = int(std::floor(std::log10(size)));
+  if (exponent >= -3 && exponent < 5) {
+    // three significant digits in fixed notation: 0.00123, 0.534, 26.7, 3554
+    QString text = QString::number(t, 'f', std::max(0, 2 - exponent));
     // "26.70" -> "26.7", "5.00" -> "5"
     if (text.contains(QLatin1Char('.'))) {
       while (text.endsWith(QLatin1Char('0'))) text.chop(1);
@@ -21,10 +23,9 @@ QString timeText(double t) {
     }
     return text;
   }
-  const int exponent = int(std::floor(std::log10(size)));
   static const QString superscripts = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
-  QString power;
-  for (QChar digit : QString::number(exponent)) power += superscripts[digit.digitValue()];
+  QString power = exponent < 0 ? QStringLiteral("⁻") : QString();
+  for (QChar digit : QString::number(std::abs(exponent))) power += superscripts[digit.digitValue()];
   return QStringLiteral("%1×10%2").arg(QString::number(t / std::pow(10.0, exponent), 'g', 2), power);
 }
 

@@ -9,8 +9,9 @@
 
 namespace grazelab::ui {
 
-/// A time as a class reads it: three significant digits and no exponent below 100 000 ("26.7",
-/// "3554"), a power of ten above ("8.9×10⁶"; "3.55e+03" was read as a code).
+/// A time as a class reads it: three significant digits and no exponent from 0.001 to 99 999
+/// ("0.00123", "26.7", "3554"), a power of ten beyond ("8.9×10⁶", "2.5×10⁻⁴"; "3.55e+03" was
+/// read as a code).
 QString timeText(double t);
 
 /// The time axis' title of a view of a long run: `axis` and what it shows, a window

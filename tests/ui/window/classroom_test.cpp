@@ -557,6 +557,10 @@ class ClassroomTest : public QObject {
     QCOMPARE(timeText(3554.4), QStringLiteral("3554"));
     QCOMPARE(timeText(876000), QStringLiteral("8.8×10⁵"));
     QCOMPARE(timeText(26.66), QStringLiteral("26.7"));
+    QCOMPARE(timeText(0.534), QStringLiteral("0.534"));
+    QCOMPARE(timeText(0.00123), QStringLiteral("0.00123"));
+    QCOMPARE(timeText(2.5e-4), QStringLiteral("2.5×10⁻⁴"));
+    QCOMPARE(timeText(0), QStringLiteral("0"));
     const double T2 = grazelab::core::computeModes(m_window->displayed()->request->job.spec.model).T2;
     QVERIFY(axis(*trace, Qt::Horizontal)->max() - axis(*trace, Qt::Horizontal)->min() <= 3 * T2 * (1 + 1e-9));
     QTest::keyClick(m_window.get(), Qt::Key_W);
