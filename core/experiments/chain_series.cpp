@@ -76,11 +76,12 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
     };
   }
   const BasicMassChain<S> chain = chainCast<S>(spec.chain);
-  const BasicChainState<S> start = stateIn<S>(spec.start);
+  BasicChainStart<S> start = stateIn<S>(spec.start);
+  for (double weight : spec.gloWeights) start.stillModes.push_back(weight == 0);
   if (spec.free) {
     // one closed-form flight over the grid, through the stop if it goes there
     const BasicChainDynamics<S> dynamics = chainDynamicsIn<S>(chain);
-    const BasicChainFlight<S> flight = flightFrom(dynamics, start);
+    const BasicChainFlight<S> flight = flightFrom(dynamics, start.state);
     if (sampling.sink) {
       for (double t : sampling.times) sampling.sink(t, stateAt(dynamics, flight, S(t)));
     }
@@ -125,6 +126,7 @@ ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop, const
   ChainSeries frame;
   frame.chain = spec.chain;
   frame.start = spec.start;
+  frame.gloWeights = spec.gloWeights;
   frame.contactsAsked = spec.contacts;
   frame.modes = chainModes(spec.chain);
   frame.ratios = detectRatios(frame.modes.omega);

@@ -32,6 +32,10 @@ struct ChainSeriesSpec {
   /// more than gridPoints: the grid goes on past `window` at the same step to the run's end, or
   /// to this many points (a view that shows `window` at a time can then follow the whole run)
   int maxGridPoints = 0;
+  /// when `start` is GLO_lambda at its touch, unpushed: its weights (fastest mode first). Its modes
+  /// of weight 0 are then exactly still (BasicChainStart; GLOM_1 of a 3:2:1 chain grazes at T/3),
+  /// and the run's command line gives the start as these weights. Empty: `start` as it is.
+  std::vector<double> gloWeights = {};
 };
 
 /// One free flight: from an event (or the start) to the next contact.
@@ -53,6 +57,7 @@ struct ChainGridPoint {
 struct ChainSeries {
   MassChain chain;
   ChainState start;
+  std::vector<double> gloWeights;  ///< ChainSeriesSpec::gloWeights
   long contactsAsked = 0;
   ChainRun run;
   ChainModes modes;

@@ -228,8 +228,9 @@ ChainReference makeReference(const ChainTask& task, const WorkBudget& budget, st
   chain.gap *= kLengthFactor;
   const Quad timeFactor = sqrt(Quad(kLengthFactor));  // reference times are the task's / this
   const Quad speedFactor = Quad(kLengthFactor) * timeFactor;
-  const BasicChainState<Quad> start{task.start.u.cast<Quad>() * Quad(kLengthFactor),
-                                    task.start.v.cast<Quad>() * speedFactor};
+  const BasicChainStart<Quad> start{{task.start.u.cast<Quad>() * Quad(kLengthFactor),
+                                     task.start.v.cast<Quad>() * speedFactor},
+                                    task.stillModes};
   BasicChainSimulator<Quad> simulator(readyChain(chain), start, long(budget.maxSteps),
                                       Quad(task.tEnd) / timeFactor);
   while (!simulator.advance(4096, stop)) {

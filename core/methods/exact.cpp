@@ -106,7 +106,7 @@ template <typename S>
 ChainMethodRun runIn(const ChainTask& task, const WorkBudget& budget, std::stop_token stop) {
   const auto started = std::chrono::steady_clock::now();
   const BasicMassChain<S> chain = chainCast<S>(task.chain);
-  const BasicChainState<S> start{task.start.u.template cast<S>(), task.start.v.template cast<S>()};
+  const BasicChainStart<S> start{{task.start.u.template cast<S>(), task.start.v.template cast<S>()}, task.stillModes};
   BasicChainSimulator<S> simulator(task.prepared ? readyIn<S>(*task.prepared) : readyChain(chain), start,
                                    long(budget.maxSteps), S(task.tEnd));
   ChainMethodRun run;
@@ -114,7 +114,7 @@ ChainMethodRun runIn(const ChainTask& task, const WorkBudget& budget, std::stop_
   run.result = inDouble(simulator.run());
   run.steps = run.result.contacts;
   // the drift over every contact state and the end, in the run's own precision
-  const S e0 = chainEnergy(chain, start);
+  const S e0 = chainEnergy(chain, start.state);
   using std::abs;
   auto driftAt = [&](const BasicChainState<S>& x) { return toDouble(S(abs(chainEnergy(chain, x) - e0) / e0)); };
   if (e0 > 0) {

@@ -98,6 +98,9 @@ struct ChainTask {
   /// that no timed run pays for the chain's modes (a binary128 eigensolve: 0.37 ms at N = 10).
   /// Empty: each run makes what it needs.
   std::shared_ptr<const PreparedChain> prepared;
+  /// the start's modes known to be exactly still (BasicChainStart): the exact method and the
+  /// reference keep them so; the time-stepping methods have no use for it
+  std::vector<bool> stillModes;
 };
 
 /// What every run of a chain needs of it, made once: the chain ready in each precision of the

@@ -191,7 +191,7 @@ StressCase chainCase(std::string name, std::string description, const MassChain&
     row.problem = "its start is past the stop (u" + std::to_string(s + 1) + " > d)";
     return row;
   }
-  ChainTask task = prepared(ChainTask{chain, start, 0, {}});
+  ChainTask task = prepared(ChainTask{chain, start, 0, {}, {}});
   task.tEnd = kCasePeriods * twoPi<double>() / task.prepared->slowest;
   row.task = std::move(task);
   return row;

@@ -43,7 +43,9 @@ BasicChainGloStart<S> chainGloStartIn(const BasicMassChain<S>& chain, const std:
   const int s = chain.stopped() - 1;
   start.state.u = ChainVector<S>::Zero(n);
   start.state.v = ChainVector<S>::Zero(n);
+  start.stillModes.assign(std::size_t(n), false);
   for (Eigen::Index j = 0; j < n; ++j) {
+    start.stillModes[std::size_t(j)] = weights[std::size_t(j)] == 0;
     if (weights[std::size_t(j)] == 0) continue;
     start.state.u += weights[std::size_t(j)] * chain.gap / modes.P(s, j) * modes.P.col(j);
   }

@@ -27,6 +27,11 @@ template <typename S>
 struct BasicChainGloStart {
   GloStartProblem problem = GloStartProblem::None;
   BasicChainState<S> state;  ///< at the touch: u_s = d exactly, v = 0
+  /// the modes of weight 0: exactly still (a run from `start()` keeps them so, where the rounded
+  /// state alone would hold ~1e-17 of each, and GLOM_1 of a 3:2:1 chain's touch at T/3 would be
+  /// undecided in every precision)
+  std::vector<bool> stillModes;
+  BasicChainStart<S> start() const { return {state, stillModes}; }
 };
 using ChainGloStart = BasicChainGloStart<double>;
 

@@ -2,7 +2,9 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "core/solver/chain_flight.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <type_traits>
 
 #include "core/solver/sinusoid_zero.h"
@@ -89,6 +91,37 @@ BasicChainState<S> stateAt(const BasicChainDynamics<S>& dynamics, const BasicCha
 }
 
 template <typename S>
+int stopRepeats(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight) {
+  if (!(dynamics.period > 0)) return 1;
+  int repeats = 0;
+  for (Eigen::Index j = 0; j < flight.q.size(); ++j) {
+    const S p = dynamics.P(dynamics.stop, j);
+    if (p * flight.q[j] != 0 || p * flight.qdot[j] != 0) {
+      repeats = std::gcd(repeats, dynamics.harmonics[std::size_t(j)]);
+    }
+  }
+  return std::max(repeats, 1);
+}
+
+template <typename S>
+bool afterStopPeriod(const BasicChainDynamics<S>& dynamics, int repeats, BasicChainFlight<S>& flight) {
+  using std::cos;
+  using std::sin;
+  bool turned = false;
+  for (Eigen::Index j = 0; j < flight.q.size(); ++j) {
+    const int turns = dynamics.harmonics.empty() ? 0 : dynamics.harmonics[std::size_t(j)] % repeats;
+    // a whole number of its periods, or still: as it was, exactly
+    if (turns == 0 || (flight.q[j] == 0 && flight.qdot[j] == 0)) continue;
+    const S w = dynamics.omega[j], angle = twoPi<S>() * S(turns) / S(repeats);
+    const S c = cos(angle), s = sin(angle), q = flight.q[j], qdot = flight.qdot[j];
+    flight.q[j] = q * c + qdot / w * s;
+    flight.qdot[j] = -q * w * s + qdot * c;
+    turned = true;
+  }
+  return turned;
+}
+
+template <typename S>
 BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight,
                                   std::type_identity_t<S> horizon, long maxWindows,
                                   std::optional<BasicLeaving<std::type_identity_t<S>>> leaving) {
@@ -113,13 +146,15 @@ BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const B
   // leaves by its fourth derivative): those Taylor terms at 0 are 0, not the rounding of the
   // modal sums
   distance.startTerms = leaving ? leaving->order : flight.onStop ? (flight.atRest ? 2 : 1) : 0;
-  const BasicFirstZero<S> zero = firstZero<S>(distance, dynamics.period, horizon, maxWindows, leaving);
+  // u_s's own period: T/g when only harmonics that g divides move the stopped mass (T/1 is T)
+  const S period = dynamics.period / S(stopRepeats(dynamics, flight));
+  const BasicFirstZero<S> zero = firstZero<S>(distance, period, horizon, maxWindows, leaving);
   switch (zero.kind) {
     case ZeroKind::Crossing: return {ChainContactKind::Impact, zero.t};
     case ZeroKind::Touch: {
-      // exact only as the periodic return of a start at rest on the stop (a release's too): the
-      // state at T is the start's again, bit for bit, in a chain whose frequencies are exact multiples of w0
-      const bool periodicReturn = dynamics.period > 0 && zero.t == dynamics.period && flight.atRest;
+      // exact only as the periodic return of a start at rest on the stop (a release's too): u_s
+      // after its period is its start again, in a chain whose frequencies are exact multiples of w0
+      const bool periodicReturn = period > 0 && zero.t == period && flight.atRest;
       return {periodicReturn ? ChainContactKind::Touch : ChainContactKind::Unresolved, zero.t};
     }
     case ZeroKind::None: return {ChainContactKind::None, zero.t};
@@ -136,6 +171,8 @@ BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const B
   template void flightInto<S>(const BasicChainDynamics<S>&, const BasicChainState<S>&, BasicChainFlight<S>&);      \
   template void stateInto<S>(const BasicChainDynamics<S>&, const BasicChainFlight<S>&, std::type_identity_t<S>,    \
                              BasicChainState<S>&);                                                                 \
+  template int stopRepeats<S>(const BasicChainDynamics<S>&, const BasicChainFlight<S>&);                           \
+  template bool afterStopPeriod<S>(const BasicChainDynamics<S>&, int, BasicChainFlight<S>&);                       \
   template BasicChainContact<S> firstContact<S>(const BasicChainDynamics<S>&, const BasicChainFlight<S>&,          \
                                                 std::type_identity_t<S>, long,                                     \
                                                 std::optional<BasicLeaving<std::type_identity_t<S>>>);

@@ -8,6 +8,7 @@
 #include <optional>
 #include <stop_token>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/model/mass_chain.h"
@@ -80,6 +81,20 @@ struct BasicChainFlight {
 };
 using ChainFlight = BasicChainFlight<double>;
 
+/// A run's start: its state, and the modes known to be exactly still in it. A GLO start with
+/// weights 0 on some modes (GLOM_1 alone, say) is such a start: its state, rounded, holds about
+/// 1e-17 of those modes again, which its numbers alone cannot tell from a real motion (nor, then,
+/// a touch of the stop from a near miss); a start given by its numbers alone has none.
+template <typename S>
+struct BasicChainStart {
+  BasicChainState<S> state;
+  std::vector<bool> stillModes;  ///< mode j+1 (fastest first) does not move; empty: none known
+  BasicChainStart() = default;
+  BasicChainStart(const BasicChainState<S>& at, std::vector<bool> still = {})  // NOLINT: a state is a start
+      : state(at), stillModes(std::move(still)) {}
+};
+using ChainStart = BasicChainStart<double>;
+
 template <typename S>
 BasicChainFlight<S> flightFrom(const BasicChainDynamics<S>& dynamics, const BasicChainState<S>& start);
 template <typename S>
@@ -92,11 +107,26 @@ template <typename S>
 void stateInto(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight, std::type_identity_t<S> t,
                BasicChainState<S>& out);
 
+/// How many times u_s's motion in a flight repeats within the common period T of a commensurate
+/// chain: the gcd g of the harmonics of the modes that move the stopped mass in it (GLOM_1 of a
+/// 3:2:1 chain alone returns to the stop after T/3), so u_s - d has period T/g. 1 on a chain that
+/// is not commensurate, or when no mode moves the stopped mass.
+template <typename S>
+int stopRepeats(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight);
+
+/// The flight after u_s's own period T/g (stopRepeats): the modes that move the stopped mass
+/// exactly as they were (each a whole number of its periods on), the others (those with a node
+/// there) turned by 2 pi n_j / g. u_s's flight goes on unchanged through a grazing touch at T/g.
+/// True when a mode turned (the flight's start state is then no longer the old one's).
+template <typename S>
+bool afterStopPeriod(const BasicChainDynamics<S>& dynamics, int repeats, BasicChainFlight<S>& flight);
+
 /// How a flight first meets the stop.
 enum class ChainContactKind {
   Impact,     ///< mass s crosses u_s = d moving into the stop
   Touch,      ///< u_s returns to d with v_s = 0 exactly: a start at rest on the stop (or released
-              ///< there) coming back at T, the period of a commensurate chain's every free motion
+              ///< there) coming back after u_s's own period T/g (stopRepeats), T the period of a
+              ///< commensurate chain's every free motion
   Unresolved,  ///< u_s comes within rounding of d while v_s is within rounding of 0: a grazing, a
                ///< slow impact and a near miss all fit the computed flight (or, at t = 0, a start on
                ///< the stop not seen to leave it); decided one precision up
@@ -114,12 +144,14 @@ using ChainContact = BasicChainContact<double>;
 /// The first contact of mass s with the stop after the flight's start: the first zero of
 /// f(t) = u_s(t) - d by firstZero's certified search (core/solver/sinusoid_zero.h), so that a
 /// touch (an even-multiplicity zero no sign-change method sees) is never missed. A touch is only
-/// called one where it is exact (the periodic return of a start at rest on the stop); any other
+/// called one where it is exact (the periodic return of a start at rest on the stop, after T/g);
+/// any other
 /// top within rounding of the stop is Unresolved, never taken for a grazing: the precision cannot
 /// tell it from two crossings closer than it resolves (an impact) or a miss. A flight starting on the
 /// stop leaves it by its velocity (or, at v_s = 0, its acceleration; after a release, given as
-/// `leaving`, its third derivative, or its fourth when the third is 0 too). Commensurate chains are searched over one period (a
-/// contact comes by T); others up to `horizon` or `maxWindows` windows.
+/// `leaving`, its third derivative, or its fourth when the third is 0 too). Commensurate chains are
+/// searched over u_s's period T/g (a contact comes by then); others up to `horizon` or
+/// `maxWindows` windows.
 template <typename S>
 BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>& flight,
                                   std::type_identity_t<S> horizon = 0, long maxWindows = 1'000'000,

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "core/solver/chain_stick.h"
 
@@ -137,7 +138,7 @@ std::optional<BasicLeaving<S>> releaseLeaving(const BasicMassChain<S>& chain, co
 }  // namespace
 
 template <typename S>
-BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, const BasicChainState<S>& start,
+BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start,
                                             long maxContacts, std::type_identity_t<S> tEnd,
                                             ChainEventSink<std::type_identity_t<S>> sink,
                                             ChainSampling<std::type_identity_t<S>> sampling)
@@ -148,8 +149,9 @@ BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, con
       m_slowest(twoPi<S>() / m_dynamics.omega.minCoeff()),
       m_sink(std::move(sink)),
       m_sampling(std::move(sampling)),
-      m_state(start) {
-  m_run.energyInitial = chainEnergy(m_chain, start);
+      m_state(start.state),
+      m_stillModes(start.stillModes) {
+  m_run.energyInitial = chainEnergy(m_chain, start.state);
 }
 
 template <typename S>
@@ -270,7 +272,15 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
       state = reflected;
       continue;
     }
-    flightInto(dynamics, state, m_flight);
+    if (!std::exchange(m_flightKept, false)) {
+      flightInto(dynamics, state, m_flight);
+      if (!m_anyEvent) {
+        // the start's first flight: the modes it names still are exactly 0, not P^T M u's roundings
+        for (std::size_t j = 0; j < m_stillModes.size() && Eigen::Index(j) < m_flight.q.size(); ++j) {
+          if (m_stillModes[j]) m_flight.q[Eigen::Index(j)] = m_flight.qdot[Eigen::Index(j)] = 0;
+        }
+      }
+    }
     const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * m_slowest);
     const BasicChainContact<S> contact = firstContact(dynamics, m_flight, horizon, 1'000'000, leaving);
     const std::optional<BasicLeaving<S>> flightLeaving = leaving;
@@ -297,15 +307,22 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
       // none is recorded; the run ends at the flight's start, decided one precision up
       return finish(ChainStop::Undecided, state, t);
     }
-    if (contact.kind == ChainContactKind::Touch && flightLeaving && flightLeaving->order == 4 &&
-        contact.t == dynamics.period) {
-      // a flat start's return at T: the chain's free motion repeats after T exactly (its
-      // frequencies are taken as exact multiples), so the state is the start's again, exactly
-      // flat, and leaves the same way (a grazing with no force)
+    if (contact.kind == ChainContactKind::Touch) {
+      // a start at rest on the stop back after u_s's own period T/g (firstContact calls a touch
+      // only there): the frequencies are taken as exact multiples of w0, so every mode that moves
+      // the stopped mass is as it was, exactly, and the flight goes on through the grazing
+      // unchanged (the other modes turned); it leaves the stop as it left it before (a flat start
+      // by its fourth derivative, with no force)
       samplePiece(t, S(t + contact.t), false, flightAt);
       t += contact.t;
+      if (afterStopPeriod(dynamics, stopRepeats(dynamics, m_flight), m_flight)) {
+        stateInto(dynamics, m_flight, S(0), state);
+        state.u[s] = dynamics.gap;
+        state.v[s] = 0;
+      }
       record(EventType::Grazing, state, state.v, t);
       leaving = flightLeaving;
+      m_flightKept = true;
       continue;
     }
     samplePiece(t, S(t + contact.t), false, flightAt);
@@ -313,21 +330,8 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
     m_vBefore = m_at.v;
     const S when = t + contact.t;
     m_at.u[s] = dynamics.gap;  // on the stop exactly: the next flight starts on it
-    if (contact.kind == ChainContactKind::Impact) {
-      m_at.v[s] = -m_at.v[s];
-      record(EventType::Impact, m_at, m_vBefore, when);
-    } else {
-      // at rest on the stop: pulled away (grazing) or pressed into it (a stick)
-      m_at.v[s] = 0;
-      const BasicStopForce<S> pressed = stopForce(chain, m_at);
-      if (pressed.value > pressed.error) {
-        record(EventType::Stick, m_at, m_vBefore, when);
-      } else if (pressed.value < -pressed.error) {
-        record(EventType::Grazing, m_at, m_vBefore, when);
-      } else {
-        return finish(ChainStop::Undecided, m_at, when);
-      }
-    }
+    m_at.v[s] = -m_at.v[s];  // an impact: the one contact left (a touch is a periodic return, above)
+    record(EventType::Impact, m_at, m_vBefore, when);
     state = m_at;
     t = when;
   }
@@ -338,7 +342,8 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
 }
 
 template <typename S>
-BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const std::type_identity_t<BasicChainStart<S>>& start,
+                          long maxContacts,
                           std::type_identity_t<S> tEnd, std::stop_token stop,
                           const ChainEventSink<std::type_identity_t<S>>& sink,
                           const ChainSampling<std::type_identity_t<S>>& sampling) {
@@ -346,7 +351,8 @@ BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<
 }
 
 template <typename S>
-BasicChainRun<S> runChain(const BasicReadyChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+BasicChainRun<S> runChain(const BasicReadyChain<S>& chain, const std::type_identity_t<BasicChainStart<S>>& start,
+                          long maxContacts,
                           std::type_identity_t<S> tEnd, std::stop_token stop,
                           const ChainEventSink<std::type_identity_t<S>>& sink,
                           const ChainSampling<std::type_identity_t<S>>& sampling) {
@@ -381,13 +387,13 @@ ChainRun inDouble(const BasicChainRun<S>& from) {
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                                  \
-  template BasicChainRun<S> runChain<S>(const BasicReadyChain<S>&, const BasicChainState<S>&, long,                 \
+  template BasicChainRun<S> runChain<S>(const BasicReadyChain<S>&, const BasicChainStart<S>&, long,                 \
                                         std::type_identity_t<S>, std::stop_token, const ChainEventSink<S>&,         \
                                         const ChainSampling<S>&);                                                   \
   template class BasicChainSimulator<S>;                                                                                 \
   template S chainEnergy<S>(const BasicMassChain<S>&, const BasicChainState<S>&);                                         \
   template ChainRun inDouble<S>(const BasicChainRun<S>&);                                                                 \
-  template BasicChainRun<S> runChain<S>(const BasicMassChain<S>&, const BasicChainState<S>&, long, std::type_identity_t<S>, \
+  template BasicChainRun<S> runChain<S>(const BasicMassChain<S>&, const BasicChainStart<S>&, long, std::type_identity_t<S>, \
                                         std::stop_token, const ChainEventSink<S>&, const ChainSampling<S>&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)

@@ -99,11 +99,11 @@ template <typename S>
 class BasicChainSimulator {
  public:
   /// As runChain's arguments (below); the chain is copied, `sink` and `sampling` are kept.
-  BasicChainSimulator(const BasicReadyChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+  BasicChainSimulator(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start, long maxContacts,
                       std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
                       ChainSampling<std::type_identity_t<S>> sampling = {});
   /// The same, the chain made ready here.
-  BasicChainSimulator(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+  BasicChainSimulator(const BasicMassChain<S>& chain, const BasicChainStart<S>& start, long maxContacts,
                       std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
                       ChainSampling<std::type_identity_t<S>> sampling = {})
       : BasicChainSimulator(readyChain(chain), start, maxContacts, tEnd, std::move(sink), std::move(sampling)) {}
@@ -138,6 +138,7 @@ class BasicChainSimulator {
   std::stop_token m_stop;
   BasicChainRun<S> m_run;
   BasicChainState<S> m_state;
+  std::vector<bool> m_stillModes;  ///< the start's modes known to be still (its first flight's)
   S m_t = 0;
   bool m_done = false;
   // the last event, kept here as well: a streamed run holds no list to look back in
@@ -146,6 +147,7 @@ class BasicChainSimulator {
   S m_lastTime = 0;
   std::size_t m_sampleIndex = 0;            ///< the next sample due
   std::optional<BasicLeaving<S>> m_leaving;  ///< set when the flight starts at a release
+  bool m_flightKept = false;  ///< m_flight goes on from `m_state` (through a periodic touch)
   // reused from flight to flight: no allocation for them once sized
   BasicChainFlight<S> m_flight;
   BasicChainState<S> m_at;
@@ -165,16 +167,19 @@ ChainRun inDouble(const BasicChainRun<S>& run);
 /// clamp into two exact chains) until the force on it falls to zero (releaseOf, certified); up
 /// to `maxContacts` contacts or `tEnd` (0: none). A search without `tEnd` (a flight of a
 /// non-commensurate chain, a stuck phase) goes up to 1000 of the slowest periods. In the
-/// precision of `start`: double, long double or binary128 (Quad). With a `sink`, each event is
+/// precision of the chain: double, long double or binary128 (Quad). A start may name modes that
+/// are exactly still in it (BasicChainStart): its first flight has none of them. With a `sink`, each event is
 /// handed to it as it happens and none is kept; with `sampling`, the states it asks for.
 template <typename S>
-BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const std::type_identity_t<BasicChainStart<S>>& start,
+                          long maxContacts,
                           std::type_identity_t<S> tEnd = 0, std::stop_token stop = {},
                           const ChainEventSink<std::type_identity_t<S>>& sink = {},
                           const ChainSampling<std::type_identity_t<S>>& sampling = {});
 /// The same for a chain made ready once (its runs skip the eigensolve).
 template <typename S>
-BasicChainRun<S> runChain(const BasicReadyChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+BasicChainRun<S> runChain(const BasicReadyChain<S>& chain, const std::type_identity_t<BasicChainStart<S>>& start,
+                          long maxContacts,
                           std::type_identity_t<S> tEnd = 0, std::stop_token stop = {},
                           const ChainEventSink<std::type_identity_t<S>>& sink = {},
                           const ChainSampling<std::type_identity_t<S>>& sampling = {});

@@ -47,13 +47,13 @@ ChainShadow<S> chainShadow(const BasicMassChain<S>& chain) {
 }
 
 template <typename S>
-ChainTrustCheck<S>::ChainTrustCheck(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+ChainTrustCheck<S>::ChainTrustCheck(const BasicMassChain<S>& chain, const BasicChainStart<S>& start, long maxContacts,
                                     std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop)
     : ChainTrustCheck(mode == TrustMode::Off ? ChainShadow<S>{} : chainShadow(chain), start, maxContacts, tEnd, mode,
                       std::move(stop)) {}
 
 template <typename S>
-ChainTrustCheck<S>::ChainTrustCheck(const ChainShadow<S>& shadow, const BasicChainState<S>& start, long maxContacts,
+ChainTrustCheck<S>::ChainTrustCheck(const ChainShadow<S>& shadow, const BasicChainStart<S>& start, long maxContacts,
                                     std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop)
     : m_mode(mode) {
   if (mode == TrustMode::Off) {
@@ -63,8 +63,10 @@ ChainTrustCheck<S>::ChainTrustCheck(const ChainShadow<S>& shadow, const BasicCha
   m_scaled = shadow.scaled;
   m_length = shadow.length;
   m_time = shadow.time;
-  const BasicChainState<H> shadowStart{start.u.template cast<H>() * m_length,
-                                       start.v.template cast<H>() * (m_length * m_time)};
+  // the same modes still in the shadow's start (a chain scaled in length and time has the same modes)
+  const BasicChainStart<H> shadowStart{{start.state.u.template cast<H>() * m_length,
+                                        start.state.v.template cast<H>() * (m_length * m_time)},
+                                       start.stillModes};
   // auto: the first contacts only (a budget fixed by the precision), when the run may make more
   if (mode == TrustMode::Auto && maxContacts > chainShadowContacts<S>()) m_cap = chainShadowContacts<S>();
   m_shadow = runChain(shadow.ready, shadowStart, m_cap > 0 ? m_cap : maxContacts, H(tEnd) / m_time, stop);
@@ -81,7 +83,7 @@ ChainTrustCheck<S>::ChainTrustCheck(const ChainShadow<S>& shadow, const BasicCha
   using std::sqrt;
   const BasicMassChain<H>& numbers = shadow.ready.numbers;
   const H lightest = *std::min_element(numbers.masses.begin(), numbers.masses.end());
-  double vScale = toDouble(sqrt(2 * chainEnergy(numbers, shadowStart) / lightest) / (m_length * m_time));
+  double vScale = toDouble(sqrt(2 * chainEnergy(numbers, shadowStart.state) / lightest) / (m_length * m_time));
   for (const BasicChainEvent<H>& event : m_shadow.events) {
     m_uScale = std::max(m_uScale, toDouble(event.u.cwiseAbs().maxCoeff() / m_length));
     vScale = std::max(vScale, toDouble(event.vBefore.cwiseAbs().maxCoeff() / (m_length * m_time)));
@@ -230,7 +232,7 @@ Trust ChainTrustCheck<S>::finish(const BasicChainRun<S>& run) const {
 }
 
 template <typename S>
-Trust chainTrust(const ChainShadow<S>& shadow, const BasicChainState<S>& start, const BasicChainRun<S>& run,
+Trust chainTrust(const ChainShadow<S>& shadow, const std::type_identity_t<BasicChainStart<S>>& start, const BasicChainRun<S>& run,
                  long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop) {
   ChainTrustCheck<S> check(shadow, start, maxContacts, tEnd, mode, stop);
   for (const BasicChainEvent<S>& event : run.events) check.observe(event);
@@ -238,7 +240,7 @@ Trust chainTrust(const ChainShadow<S>& shadow, const BasicChainState<S>& start, 
 }
 
 template <typename S>
-Trust chainTrust(const BasicMassChain<S>& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
+Trust chainTrust(const BasicMassChain<S>& chain, const std::type_identity_t<BasicChainStart<S>>& start, const BasicChainRun<S>& run,
                  long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop) {
   return chainTrust(mode == TrustMode::Off ? ChainShadow<S>{} : chainShadow(chain), start, run, maxContacts, tEnd, mode,
                     std::move(stop));
@@ -246,9 +248,9 @@ Trust chainTrust(const BasicMassChain<S>& chain, const BasicChainState<S>& start
 
 #define GRAZELAB_INSTANTIATE(S)                                                                       \
   template ChainShadow<S> chainShadow<S>(const BasicMassChain<S>&);                                       \
-  template Trust chainTrust<S>(const ChainShadow<S>&, const BasicChainState<S>&, const BasicChainRun<S>&, long, \
+  template Trust chainTrust<S>(const ChainShadow<S>&, const BasicChainStart<S>&, const BasicChainRun<S>&, long, \
                                std::type_identity_t<S>, TrustMode, std::stop_token);                      \
-  template Trust chainTrust<S>(const BasicMassChain<S>&, const BasicChainState<S>&, const BasicChainRun<S>&, long, \
+  template Trust chainTrust<S>(const BasicMassChain<S>&, const BasicChainStart<S>&, const BasicChainRun<S>&, long, \
                                std::type_identity_t<S>, TrustMode, std::stop_token);                      \
   template class ChainTrustCheck<S>;
 GRAZELAB_INSTANTIATE(double)

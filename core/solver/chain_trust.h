@@ -58,11 +58,11 @@ template <typename S>
 ChainShadow<S> chainShadow(const BasicMassChain<S>& chain);
 
 template <typename S>
-Trust chainTrust(const ChainShadow<S>& shadow, const BasicChainState<S>& start, const BasicChainRun<S>& run,
+Trust chainTrust(const ChainShadow<S>& shadow, const std::type_identity_t<BasicChainStart<S>>& start, const BasicChainRun<S>& run,
                  long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
 /// The same, the shadow made here.
 template <typename S>
-Trust chainTrust(const BasicMassChain<S>& chain, const BasicChainState<S>& start, const BasicChainRun<S>& run,
+Trust chainTrust(const BasicMassChain<S>& chain, const std::type_identity_t<BasicChainStart<S>>& start, const BasicChainRun<S>& run,
                  long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
 
 /// chainTrust for a run whose events stream (a ChainEventSink): the shadow is run first and
@@ -74,10 +74,10 @@ template <typename S>
 class ChainTrustCheck {
  public:
   using H = ShadowScalar<S>;
-  ChainTrustCheck(const ChainShadow<S>& shadow, const BasicChainState<S>& start, long maxContacts,
+  ChainTrustCheck(const ChainShadow<S>& shadow, const BasicChainStart<S>& start, long maxContacts,
                   std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
   /// The same, the shadow made here (Off makes none).
-  ChainTrustCheck(const BasicMassChain<S>& chain, const BasicChainState<S>& start, long maxContacts,
+  ChainTrustCheck(const BasicMassChain<S>& chain, const BasicChainStart<S>& start, long maxContacts,
                   std::type_identity_t<S> tEnd, TrustMode mode, std::stop_token stop = {});
   /// The run's next event.
   void observe(const BasicChainEvent<S>& event);

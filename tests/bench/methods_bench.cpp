@@ -85,7 +85,7 @@ void ChainPerStep(benchmark::State& state) {
   start.v(n - 1) = 1.5;
   start.v(0) = -0.4;
   const double period = core::twoPi<double>() / core::chainModes(chain).omega.minCoeff();
-  const core::methods::ChainTask task = core::methods::prepared({chain, start, 20 * period, {}});
+  const core::methods::ChainTask task = core::methods::prepared({chain, start, 20 * period, {}, {}});
   const core::methods::MethodSetting setting = core::methods::standardSetting(kind, period, chain.springs[0]);
   const core::methods::ChainReference reference = core::methods::makeReference(task);
   const core::methods::ChainMethodRun first = core::methods::runMethod(task, setting);

@@ -290,10 +290,11 @@ Scene::Spec threeMassesScene() {
     // double: its own scene asks for none, and says so). The trace, the phase portrait and the
     // animation span four slowest periods: six drew twenty fast swings into a plot a third of a
     // projector wide, lines merging into a band in presentation's thick pen
-    const core::experiments::ChainSeriesSpec run{chain,         start,
+    core::experiments::ChainSeriesSpec run{chain,         start,
                                                  long(params.horizon), 4 * slowest,
                                                  kGridPoints,   given.shown(),
                                                  contrast ? core::TrustMode::Auto : core::TrustMode::Off};
+    if (params.perturbation == 0) run.gloWeights = given.weights;  // GLO itself: its still modes kept
     SceneJob job;
     job.spec.chains = {run};
     if (contrast && ratios.commensurate && chain.size() >= 2) {

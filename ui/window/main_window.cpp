@@ -604,7 +604,9 @@ void MainWindow::recompute() {
       // the start clicked in place of the scene's own: a chain's runs (the shown one and its
       // contrast, the same start on a detuned chain), or the two-mass run
       for (core::experiments::ChainSeriesSpec& chain : job.spec.chains) {
-        if (chain.chain.size() == clicked->u.size()) chain.start = *clicked;
+        if (chain.chain.size() != clicked->u.size()) continue;
+        chain.start = *clicked;
+        chain.gloWeights.clear();
       }
       if (job.spec.chains.empty() && clicked->u.size() == 2) job.spec.run.initial = core::twoMassStateOf(*clicked);
     }

@@ -43,9 +43,12 @@ QString chainSimulateCommand(const core::experiments::ChainSeries& series) {
   QString line = QStringLiteral("grazelab-cli simulate --masses %1 --springs %2")
                      .arg(joined(chain.masses), joined(chain.springs));
   if (chain.rightSpring > 0) line += QStringLiteral(" --right-spring %1").arg(shortestText(chain.rightSpring));
-  line += QStringLiteral(" --stop-mass %1 --gap %2 --state %3 --contacts %4 --precision double")
+  // a GLO start as its weights: its modes of weight 0 still, as the explorer ran it
+  const QString start = series.gloWeights.empty() ? QStringLiteral("--state %1").arg(joined(state))
+                                                  : QStringLiteral("--glo-weights %1").arg(joined(series.gloWeights));
+  line += QStringLiteral(" --stop-mass %1 --gap %2 %3 --contacts %4 --precision double")
               .arg(chain.stopped())
-              .arg(shortestText(chain.gap), joined(state))
+              .arg(shortestText(chain.gap), start)
               .arg(series.contactsAsked);
   return line;
 }

@@ -139,7 +139,7 @@ int runTheNotesChain(const OptionValues& options, const Io& io, std::stop_token 
 // (`error`) or the run was stopped (`stopped`)
 template <typename S>
 struct ChainRunIn {
-  core::BasicChainState<S> start;
+  core::BasicChainStart<S> start;  ///< its state, and the modes still in it
   std::string description;  ///< how the start was given, in words
   core::BasicChainRun<S> run;
   S tEnd = 0;
@@ -300,7 +300,7 @@ V runDocument(const core::BasicReadyChain<S>& ready, const ChainRunIn<S>& in, V 
   using std::abs;
   V document = V::object(
       {{"chain", massChainValue(masses, ready.dynamics.period)},
-       {"initial", V::object({{"description", V::of(in.description)}, {"state", stateValue(names, S(0), in.start)}})},
+       {"initial", V::object({{"description", V::of(in.description)}, {"state", stateValue(names, S(0), in.start.state)}})},
        {"events", keptEvents ? V::array(std::move(events)) : V::null()},
        {"final", stateValue(names, run.tFinal, run.final)},
        {"stop_reason", V::of(stopName(run.stop))},
@@ -363,7 +363,7 @@ std::string summaryText(const core::BasicReadyChain<S>& ready, const ChainRunIn<
           (masses.rightSpring > 0 ? " right spring " + core::formatScalar(masses.rightSpring) : std::string()) +
           " stop on mass " + std::to_string(masses.stopped()) + " gap " + core::formatScalar(masses.gap) +
           (dynamics.period > 0 ? " (commensurate; T=" + core::formatScalar(dynamics.period) + ")" : std::string(" (not commensurate)")) + "\n";
-  text += "start          u=" + listText<S>(in.start.u) + " v=" + listText<S>(in.start.v) + "\n";
+  text += "start          u=" + listText<S>(in.start.state.u) + " v=" + listText<S>(in.start.state.v) + "\n";
   text += "contacts       " + std::to_string(run.contacts) + " (impacts " + std::to_string(run.impacts) + ", grazings " +
           std::to_string(run.grazings) + ", sticks " + std::to_string(run.sticks) + "; releases " +
           std::to_string(run.releases) + ")\n";

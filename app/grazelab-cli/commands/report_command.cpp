@@ -207,12 +207,13 @@ std::optional<ReportProblem> chainProblem(const QCommandLineParser& parser, QStr
   std::string description;
   const auto start = chainStart<double>(options, task.chain, error, &description);
   if (!start) return std::nullopt;
-  task.start = *start;
+  task.start = start->state;
+  task.stillModes = start->stillModes;
   input.startDescription = QString::fromStdString(description);
   const core::ChainModes modes = core::chainModes(task.chain);
   input.period = core::twoPi<double>() / modes.omega.minCoeff();
   const auto tEnd = reportHorizon(parser, input, [&task](std::int64_t count) {
-    const core::ChainRun run = core::runChain(task.chain, task.start, long(count));
+    const core::ChainRun run = core::runChain(task.chain, {task.start, task.stillModes}, long(count));
     std::vector<double> times;
     for (const core::ChainEvent& e : run.events) {
       if (core::isContact(e.type)) times.push_back(e.t);

@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "io/chain_start.h"
 
+#include <algorithm>
+
 #include <QStringList>
 
 #include <cmath>
@@ -85,12 +87,12 @@ bool noTwoMassStart(const OptionValues& options, QString& error) {
 }
 
 template <typename S>
-std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, const core::BasicMassChain<S>& chain,
+std::optional<core::BasicChainStart<S>> chainStart(const OptionValues& options, const core::BasicMassChain<S>& chain,
                                                    QString& error, std::string* description) {
   const Eigen::Index n = chain.size();
   const int s = chain.stopped() - 1;
   if (!oneStartOf(options, n, error)) return std::nullopt;
-  core::BasicChainState<S> start;
+  core::BasicChainStart<S> start;
   if (options.isSet("onepp")) {
     const core::ParsedScalar<S> T = core::parseScalar<S>(options.value("onepp").trimmed().toStdString());
     const core::BasicChainOnePeriodicOrbit<S> orbit = core::chainOnePeriodicOrbitIn<S>(chain, T.value.value_or(S(-1)));
@@ -99,12 +101,12 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
                   .arg(options.value("onepp"), refusalWords(orbit.refusal));
       return std::nullopt;
     }
-    start = orbit.postImpact;
+    start.state = orbit.postImpact;
   } else if (options.isSet("state")) {
     const auto values = numberList<S>(options, "state", 2 * n, "u1,...,uN,v1,...,vN", error);
     if (!values) return std::nullopt;
     using Vector = core::ChainVector<S>;
-    start = {Eigen::Map<const Vector>(values->data(), n), Eigen::Map<const Vector>(values->data() + n, n)};
+    start.state = {Eigen::Map<const Vector>(values->data(), n), Eigen::Map<const Vector>(values->data() + n, n)};
   } else {
     const auto weights = numberList<S>(options, "glo-weights", n, "l1,...,lN", error);
     if (!weights) return std::nullopt;
@@ -124,14 +126,16 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
                 "info's node_at_stop)";
         return std::nullopt;
     }
-    start = glo.state;
+    start = glo.start();
   }
   if (options.isSet("perturb")) {
     const auto delta = numberList<S>(options, "perturb", 2 * n, "du1,...,duN,dv1,...,dvN", error);
     if (!delta) return std::nullopt;
     using Vector = core::ChainVector<S>;
-    start.u += Eigen::Map<const Vector>(delta->data(), n);
-    start.v += Eigen::Map<const Vector>(delta->data() + n, n);
+    start.state.u += Eigen::Map<const Vector>(delta->data(), n);
+    start.state.v += Eigen::Map<const Vector>(delta->data() + n, n);
+    // pushed: every mode may move now
+    if (std::any_of(delta->begin(), delta->end(), [](const S& x) { return x != 0; })) start.stillModes.clear();
   }
   if (description) {
     *description = options.isSet("onepp")
@@ -142,10 +146,10 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
                                                   options.value("glo-weights").toStdString();
     if (options.isSet("perturb")) *description += ", pushed by " + options.value("perturb").toStdString();
   }
-  if (start.u[s] > chain.gap) {
+  if (start.state.u[s] > chain.gap) {
     error = QStringLiteral("the start has u%1 = %2 past the stop (gap %3)")
                 .arg(s + 1)
-                .arg(core::toDouble(start.u[s]))
+                .arg(core::toDouble(start.state.u[s]))
                 .arg(core::toDouble(chain.gap));
     return std::nullopt;
   }
@@ -153,12 +157,12 @@ std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, 
 }
 
 
-template std::optional<core::BasicChainState<double>> chainStart(const OptionValues&, const core::BasicMassChain<double>&,
+template std::optional<core::BasicChainStart<double>> chainStart(const OptionValues&, const core::BasicMassChain<double>&,
                                                                  QString&, std::string*);
-template std::optional<core::BasicChainState<long double>> chainStart(const OptionValues&,
+template std::optional<core::BasicChainStart<long double>> chainStart(const OptionValues&,
                                                                       const core::BasicMassChain<long double>&,
                                                                       QString&, std::string*);
-template std::optional<core::BasicChainState<core::Quad>> chainStart(const OptionValues&,
+template std::optional<core::BasicChainStart<core::Quad>> chainStart(const OptionValues&,
                                                                      const core::BasicMassChain<core::Quad>&,
                                                                      QString&, std::string*);
 

@@ -22,9 +22,10 @@ bool noTwoMassStart(const OptionValues& options, QString& error);
 /// The run's start in S, from the chain in S: --state, --glo-weights (GLO_lambda at its touch) or
 /// --onepp T (the 1IPP orbit's data right after its impact), plus --perturb. --state, the weights,
 /// T and --perturb are read in S (0.1 is 0.1 to binary128's digits). `description`, when given,
-/// receives how the start was given, in words. Nothing, with `error`, for a start refused.
+/// receives how the start was given, in words. A GLO start not pushed names its modes of weight 0
+/// as still. Nothing, with `error`, for a start refused.
 template <typename S>
-std::optional<core::BasicChainState<S>> chainStart(const OptionValues& options, const core::BasicMassChain<S>& chain,
+std::optional<core::BasicChainStart<S>> chainStart(const OptionValues& options, const core::BasicMassChain<S>& chain,
                                                    QString& error, std::string* description = nullptr);
 
 }  // namespace grazelab::cli

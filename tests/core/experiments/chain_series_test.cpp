@@ -52,6 +52,30 @@ TEST(ChainSeries, FlightsTileTheRunAndStayBelowThePeriod) {
   EXPECT_EQ(series.trust.verdict, Verdict::Unchecked);
 }
 
+TEST(ChainSeries, AGloStartGivenByItsWeightsKeepsItsStillModes) {
+  // GLOM_2 of a 3:2:1 chain: given by its weights, every contact a grazing after T/2 in double;
+  // given as its state alone, double cannot decide its first touch (the still modes' roundings):
+  // undecided in every precision, or decided in one where those round to 0 exactly
+  MassChain chain;
+  chain.masses = {1.0, 0.2, 0.05};
+  chain.springs = designSprings(chain.masses, 1.0, {3, 2, 1}).designs.at(0).springs;
+  const std::vector<double> weights = {0, 1, 0};
+  ChainSeriesSpec spec{chain, chainGloStart(chain, weights).state, 30, 0, 0, 0, TrustMode::Auto};
+  spec.gloWeights = weights;
+  const ChainSeries series = chainSeries(spec);
+  EXPECT_EQ(series.precision, Precision::Double);
+  EXPECT_EQ(series.run.grazings, 30);
+  ASSERT_EQ(series.flights.size(), 30u);
+  for (const ChainFlight& flight : series.flights) EXPECT_NEAR(flight.duration, series.period / 2, 1e-12);
+  EXPECT_EQ(series.gloWeights, weights);
+  EXPECT_EQ(series.trust.verdict, Verdict::Ok);
+  spec.gloWeights.clear();
+  const ChainSeries alone = chainSeries(spec);
+  EXPECT_NE(alone.precision, Precision::Double);
+  if (alone.run.stop == ChainStop::Undecided) EXPECT_EQ(alone.run.contacts, 0);
+  else EXPECT_EQ(alone.run.grazings, 30);
+}
+
 TEST(ChainSeries, AWholeRunGridGoesOnAtTheWindowsStepToTheRunsEndOrItsCap) {
   // the explorer shows a window of the grid at the animation's time, and the whole run on W
   MassChain chain;

@@ -45,14 +45,14 @@ std::vector<NamedTask> chainTasks(double periods) {
   three.masses = {1.0, 2.0, 0.5};
   three.springs = {1.0, 0.7, 1.3};
   three.gap = 0.8;
-  tasks.push_back({"three", {three, stateOf({0.1, -0.2, 0.5}, {0.0, 0.3, 0.9}), 0, {}}});
+  tasks.push_back({"three", {three, stateOf({0.1, -0.2, 0.5}, {0.0, 0.3, 0.9}), 0, {}, {}}});
   MassChain interior;
   interior.masses = {1.0, 0.6, 1.4, 0.9};
   interior.springs = {1.0, 2.0, 0.8, 1.1};
   interior.rightSpring = 0.5;
   interior.stopMass = 2;
   interior.gap = 0.5;
-  tasks.push_back({"interior-stop-right-wall", {interior, stateOf({0.0, 0.3, 0.0, -0.2}, {0.2, 0.8, -0.1, 0.0}), 0, {}}});
+  tasks.push_back({"interior-stop-right-wall", {interior, stateOf({0.0, 0.3, 0.0, -0.2}, {0.2, 0.8, -0.1, 0.0}), 0, {}, {}}});
   MassChain ten;
   ten.masses.assign(10, 1.0);
   ten.springs.assign(10, 1.0);
@@ -60,7 +60,7 @@ std::vector<NamedTask> chainTasks(double periods) {
   start.u(9) = 0.5;
   start.v(9) = 1.5;
   start.v(0) = -0.4;
-  tasks.push_back({"ten", {ten, start, 0, {}}});
+  tasks.push_back({"ten", {ten, start, 0, {}, {}}});
   for (NamedTask& named : tasks) named.task.tEnd = periods * slowestPeriod(named.task.chain);
   return tasks;
 }
@@ -78,7 +78,7 @@ TEST(ChainMethods, TheNotesChainWrittenAsAChainRunsTheSameMethods) {
     Task task{model, State{0.3, 0.8, 0.2, 0.5}, 6 * period, {}};
     task.needs.events = true;
     const ChainTask chainTask{massChainOf(model), stateOf({task.start.u1, task.start.u2}, {task.start.v1, task.start.v2}),
-                              task.tEnd, {}};
+                              task.tEnd, {}, {}};
     for (MethodKind kind : {MethodKind::MoreauJean, MethodKind::MoreauJeanTheta1, MethodKind::SchatzmanPaoli,
                             MethodKind::Dopri5Events, MethodKind::CvodeAdams, MethodKind::CvodeBdf, MethodKind::Penalty}) {
       const bool stepper = kind == MethodKind::MoreauJean || kind == MethodKind::MoreauJeanTheta1 ||
