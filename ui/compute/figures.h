@@ -28,14 +28,13 @@ enum class PlotKind {
                     ///< the stop against contact index (two masses over T2, N over T)
   Flights,          ///< a run's flights from the stop against contact index, over the period
                     ///< that bounds them in resonance (two masses: T2; N: T, or the slowest)
-  Chain,            ///< the chain moving (ChainView), the time cursor of the other views
+  Chain,            ///< the chain moving, any number of masses (ChainView), the time cursor of the other views
   Landscape,        ///< a map over the grazing-start plane, the run's section over it
   ModesAtlas,       ///< the periodic impacting families: 2 pi / T against log E, click an orbit
   Multipliers,      ///< the chosen orbit's multipliers against the unit circle
   ChainStopTrace,   ///< N masses: the stopped mass's u_s/d against t/T, the stop and the contacts
   ChainPhase,       ///< N masses: the stopped mass's phase portrait
   ChainSection,     ///< N masses: the state at each contact (on H) on two chosen coordinates
-  MassChain,        ///< N masses: the chain moving (MassChainView)
   GrazingSet,       ///< N masses: the grazing set of two modes (top against lambda) or three (a region)
 };
 

@@ -17,9 +17,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/model/linear_modes.h"
 #include "ui/plots/plot_style.h"
+#include "ui/widgets/param_specs.h"
 
 namespace grazelab::ui {
 namespace {
@@ -29,7 +31,7 @@ constexpr double kSlowMotion = 0.15;  // speed factor near a contact, when asked
 
 }  // namespace
 
-/// The drawing: wall, springs, masses and stop, at the view's current time.
+/// The drawing: walls, springs, masses and stop, at the view's current time.
 class ChainView::Canvas : public QWidget {
  public:
   explicit Canvas(ChainView* view) : QWidget(view), m_view(view) {
@@ -43,102 +45,141 @@ class ChainView::Canvas : public QWidget {
     painter.fillRect(rect(), Qt::white);
     painter.setRenderHint(QPainter::Antialiasing);
     const ChainView& view = *m_view;
-    if (!view.m_result || view.m_result->samples.empty()) {
-      painter.drawText(rect(), Qt::AlignCenter, tr("no motion to show yet"));
+    const std::vector<double> u = view.displacementsAt(view.m_time);
+    const core::MassChain& chain = view.m_chain;
+    const int n = chain.size();
+    if (u.empty() || int(u.size()) != n) {
+      painter.drawText(rect().adjusted(8, 8, -8, -8), Qt::AlignCenter | Qt::TextWordWrap,
+                       view.m_emptyNote.isEmpty() ? tr("no motion to show yet") : view.m_emptyNote);
       return;
     }
-    const core::Model& model = view.m_model;
-    const core::State state = view.stateAt(view.m_time);
-    const double gap = model.gap;
-    // lengths: rest spacing R between wall, mass 1 and mass 2, wide enough for the largest
-    // displacement; every length (displacements, gap) on one scale
+    const int s = chain.stopped() - 1;
+    // one length scale for displacements, gap and spacing: rest spacing R wide enough for the
+    // largest displacement
     const double amplitude = view.m_amplitude;
-    // and twice the most the masses close in, so that boxes at most 0.45 R wide never meet (a
-    // heavy mass 2, m2 = 1.37, swings against mass 1 and they were drawn on top of each other)
-    const double rest = std::max(1.6 * amplitude + 0.5 * gap, 2 * view.m_squeeze);
-    const double heaviest = std::max(model.m1, model.m2);
-    const double box1 = 0.45 * rest * std::cbrt(model.m1 / heaviest);
-    const double box2 = 0.45 * rest * std::cbrt(model.m2 / heaviest);
-    const double span = 2 * rest + box2 / 2 + gap + 0.35 * rest;
+    // and twice the most two neighbours close in, so that boxes at most 0.45 R wide never meet
+    const double rest = std::max(1.6 * amplitude + 0.5 * chain.gap, 2 * view.m_squeeze);
+    const double heaviest = *std::max_element(chain.masses.begin(), chain.masses.end());
+    std::vector<double> box(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+      box[std::size_t(i)] = 0.45 * rest * std::cbrt(chain.masses[std::size_t(i)] / heaviest);
+    const bool rightWall = chain.rightSpring > 0;
+    const double stopX = (s + 1) * rest + box[std::size_t(s)] / 2 + chain.gap;
+    const double span =
+        std::max((n + (rightWall ? 1 : 0)) * rest + box.back() / 2, stopX) + 0.35 * rest;
     const double pad = 12;
     const double scale = (width() - 2 * pad) / span;
-    const double middle = height() * 0.45;
-    auto px = [&](double x) { return pad + x * scale; };
+    const double middle = height() * 0.42;
+    const auto px = [&](double x) { return pad + x * scale; };
     const double lineWidth = view.m_presentation ? 3.0 : 1.6;
+    const double tallest = height() * 0.4;
 
-    const double x1 = rest + state.u1;  // centres
-    const double x2 = 2 * rest + state.u2;
-    const double stopX = 2 * rest + box2 / 2 + gap;
-    const double height1 = std::min(box1 * scale, height() * 0.5);
-    const double height2 = std::min(box2 * scale, height() * 0.5);
-
-    // a contact just passed: the stop and mass 2 flash in its colour
+    // a contact just passed: the stop and the stopped mass flash in its colour
     QColor flash;
     for (std::size_t i = 0; i < view.m_contactTimes.size(); ++i) {
       const double since = view.m_time - view.m_contactTimes[i];
-      if (since >= 0 && since < 0.06 * view.m_rate * 2) {
+      if (since >= 0 && since < 0.12 * view.m_rate) {
         flash = view.m_contactTypes[i] == core::EventType::Impact ? colors::kImpact : colors::kGrazing;
       }
     }
-
-    // wall
+    // walls
     painter.setPen(QPen(Qt::black, lineWidth));
-    const double wallTop = middle - 0.6 * height() * 0.5;
-    const double wallBottom = middle + 0.6 * height() * 0.5;
-    painter.drawLine(QPointF(px(0), wallTop), QPointF(px(0), wallBottom));
-    for (double y = wallTop; y < wallBottom; y += 10) {
-      painter.drawLine(QPointF(px(0), y), QPointF(px(0) - 8, y + 8));
-    }
-    // stop, hatched on its far side
-    painter.setPen(QPen(flash.isValid() ? flash : QColor(Qt::black), lineWidth * 2));
-    painter.drawLine(QPointF(px(stopX), wallTop), QPointF(px(stopX), wallBottom));
-    painter.setPen(QPen(Qt::black, 1));
-    for (double y = wallTop; y < wallBottom; y += 10) {
-      painter.drawLine(QPointF(px(stopX) + 2, y + 8), QPointF(px(stopX) + 10, y));
-    }
-    // springs
+    const double wallTop = middle - 0.3 * height(), wallBottom = middle + 0.3 * height();
+    const auto wall = [&](double x, int side) {
+      painter.drawLine(QPointF(px(x), wallTop), QPointF(px(x), wallBottom));
+      for (double y = wallTop; y < wallBottom; y += 10)
+        painter.drawLine(QPointF(px(x), y), QPointF(px(x) + 8 * side, y + 8));
+    };
+    wall(0, -1);
+    const double rightWallX = (n + 1) * rest;
+    if (rightWall) wall(rightWallX, +1);
+    // springs, between the faces of the boxes
     painter.setPen(QPen(colors::kTrace, lineWidth));
     painter.setBrush(Qt::NoBrush);
-    const double rise = 0.12 * std::min(height1, height2) + 3;
-    painter.drawPath(springPath(px(0), px(x1 - box1 / 2), middle, rise, 8));
-    painter.drawPath(springPath(px(x1 + box1 / 2), px(x2 - box2 / 2), middle, rise, 8));
-    // masses
-    auto drawMass = [&](double centre, double size, double boxHeight, const QString& label,
-                        const QColor& fill) {
-      const QRectF box(QPointF(px(centre - size / 2), middle - boxHeight / 2),
-                       QSizeF(size * scale, boxHeight));
+    const double rise = std::min(0.08 * height(), 10.0) + 2;
+    // as many coils as its drawn length holds apart (a short spring with seven was a solid block
+    // on a projector), straight when too short for one
+    const auto spring = [&](double from, double to) {
+      const int coils = std::min(7, int((to - from) / (5 * lineWidth)));
+      if (coils < 1) painter.drawLine(QPointF(from, middle), QPointF(to, middle));
+      else painter.drawPath(springPath(from, to, middle, rise, coils));
+    };
+    double left = 0;
+    for (int i = 0; i < n; ++i) {
+      const double centre = (i + 1) * rest + u[std::size_t(i)];
+      spring(px(left), px(centre - box[std::size_t(i)] / 2));
+      left = centre + box[std::size_t(i)] / 2;
+    }
+    if (rightWall) spring(px(left), px(rightWallX));
+    // the stop: a post below the chain line that a tab under the stopped mass strikes
+    const double postTop = middle + tallest / 2 + 4;
+    painter.setPen(QPen(flash.isValid() ? flash : QColor(Qt::black), lineWidth * 2));
+    painter.drawLine(QPointF(px(stopX), postTop), QPointF(px(stopX), wallBottom));
+    painter.setPen(QPen(Qt::black, 1));
+    for (double y = postTop; y < wallBottom; y += 8)
+      painter.drawLine(QPointF(px(stopX) + 2, y + 6), QPointF(px(stopX) + 8, y));
+    // masses; the model's masses are points on springs: far enough from rest neighbours pass
+    // each other, which boxes true to scale cannot hide: the later one is drawn see-through and
+    // it is said
+    int overlap = -1;
+    for (int i = 0; i < n; ++i) {
+      const double centre = (i + 1) * rest + u[std::size_t(i)];
+      const double size = box[std::size_t(i)];
+      const double boxHeight = std::min(size * scale, tallest);
+      const QRectF rectangle(QPointF(px(centre - size / 2), middle - boxHeight / 2),
+                             QSizeF(size * scale, boxHeight));
+      const bool stopped = i == s;
+      QColor fill = stopped ? (flash.isValid() ? flash : QColor(0x00, 0x72, 0xB2)) : QColor(0x44, 0x44, 0x44);
+      if (i > 0 && (i + 1) * rest + u[std::size_t(i)] - size / 2 <
+                       i * rest + u[std::size_t(i - 1)] + box[std::size_t(i - 1)] / 2) {
+        overlap = i;
+        fill.setAlpha(170);
+      }
       painter.setPen(QPen(Qt::black, lineWidth));
       painter.setBrush(fill);
-      painter.drawRect(box);
-      painter.setPen(Qt::white);
-      painter.drawText(box, Qt::AlignCenter, label);
-    };
-    drawMass(x1, box1, height1, tr("m₁"), QColor(0x44, 0x44, 0x44));
-    // the model's masses are points on springs: far enough from rest they pass each other,
-    // which boxes true to scale cannot hide; mass 2 is drawn see-through and it is said
-    const bool overlap = x1 + box1 / 2 > x2 - box2 / 2;
-    QColor fill2 = flash.isValid() ? flash : QColor(0x00, 0x72, 0xB2);
-    if (overlap) fill2.setAlpha(170);
-    drawMass(x2, box2, height2, tr("m₂"), fill2);
-    if (overlap) {
+      painter.drawRect(rectangle);
+      if (stopped) {  // its tab reaches down to the post's height
+        const double tabX = px(centre + size / 2);
+        painter.drawLine(QPointF(tabX, middle + boxHeight / 2), QPointF(tabX, postTop + 6));
+      }
+      // its name inside, or above it when the box is too small to hold it (a light mass was
+      // left unnamed)
+      const QString name = tr("m%1").arg(subscriptDigits(i + 1));
+      const double nameWidth = painter.fontMetrics().horizontalAdvance(name);
+      if (rectangle.width() > nameWidth + 2 && rectangle.height() > painter.fontMetrics().height()) {
+        painter.setPen(Qt::white);
+        painter.drawText(rectangle, Qt::AlignCenter, name);
+      } else {
+        painter.setPen(Qt::black);
+        const double textHeight = painter.fontMetrics().height();
+        painter.drawText(QRectF(rectangle.center().x() - nameWidth, rectangle.top() - textHeight - 1, 2 * nameWidth,
+                                textHeight),
+                         Qt::AlignHCenter | Qt::AlignBottom, name);
+      }
+    }
+    // the gap d, from the stopped mass's face at rest to the post
+    painter.setPen(QPen(Qt::black, 1));
+    const double restFace = px((s + 1) * rest + box[std::size_t(s)] / 2);
+    const double rulerY = postTop - 2;
+    painter.drawLine(QPointF(restFace, rulerY), QPointF(px(stopX), rulerY));
+    const double textHeight = painter.fontMetrics().height();  // the presentation font's too
+    painter.drawText(QRectF(restFace, rulerY - textHeight - 2, px(stopX) - restFace, textHeight),
+                     Qt::AlignHCenter | Qt::AlignBottom, tr("d"));
+    if (overlap > 0) {
       painter.setPen(QColor(0xa0, 0x10, 0x10));
       painter.drawText(rect().adjusted(8, 6, -8, -6), Qt::AlignLeft | Qt::AlignBottom | Qt::TextWordWrap,
-                       tr("m₁ and m₂ overlap here: the linear model lets the masses pass each other "
-                          "(it has no contact between them)"));
+                       tr("m%1 and m%2 overlap here: the linear model lets the masses pass each other "
+                          "(it has no contact between them)")
+                           .arg(subscriptDigits(overlap), subscriptDigits(overlap + 1)));
+      painter.setPen(Qt::black);
     }
-    // the gap d, measured from mass 2 at rest
-    painter.setPen(QPen(Qt::black, 1));
-    const double restFace = px(2 * rest + box2 / 2);
-    const double rulerY = middle + std::max(height1, height2) / 2 + 14;
-    painter.drawLine(QPointF(restFace, rulerY), QPointF(px(stopX), rulerY));
-    painter.drawLine(QPointF(restFace, rulerY - 4), QPointF(restFace, rulerY + 4));
-    painter.drawLine(QPointF(px(stopX), rulerY - 4), QPointF(px(stopX), rulerY + 4));
-    painter.drawText(QRectF(restFace, rulerY + 2, px(stopX) - restFace, 40),
-                     Qt::AlignHCenter | Qt::AlignTop, tr("d"));
-    // the clock
-    const double T2 = core::computeModes(model).T2;
+    // the clock, in the run's period where it has one
     painter.drawText(rect().adjusted(8, 6, -8, -6), Qt::AlignLeft | Qt::AlignTop,
-                     tr("t = %1  (%2 T₂)").arg(view.m_time, 0, 'f', 2).arg(view.m_time / T2, 0, 'f', 2));
+                     view.m_unit > 0 ? tr("t = %1  (%2 %3)")
+                                           .arg(view.m_time, 0, 'f', 2)
+                                           .arg(view.m_time / view.m_unit, 0, 'f', 2)
+                                           .arg(view.m_unitName)
+                                     : tr("t = %1").arg(view.m_time, 0, 'f', 2));
   }
 
  private:
@@ -166,21 +207,22 @@ ChainView::ChainView(QWidget* parent) : QWidget(parent) {
     controls->addWidget(b);
     return b;
   };
-  m_previous = button(QStyle::SP_MediaSkipBackward, tr("previous contact"),
-                      tr("Back to the previous contact ([)"));
+  QToolButton* previous =
+      button(QStyle::SP_MediaSkipBackward, tr("previous contact"), tr("Back to the previous contact ([)"));
   m_play = button(QStyle::SP_MediaPlay, tr("play"), tr("Play or pause the motion (Space)"));
-  m_next = button(QStyle::SP_MediaSkipForward, tr("next contact"), tr("On to the next contact (])"));
+  QToolButton* next = button(QStyle::SP_MediaSkipForward, tr("next contact"), tr("On to the next contact (])"));
   m_speed = new QComboBox(this);
   for (double speed : {0.1, 0.25, 0.5, 1.0, 2.0, 4.0}) {
     m_speed->addItem(tr("%1×").arg(speed), speed);
   }
   m_speed->setCurrentIndex(3);
-  m_speed->setToolTip(tr("Playing speed; at 1× one slow period T₂ takes two seconds."));
+  m_speed->setToolTip(tr("Playing speed; at 1× the slowest mode's period takes two seconds."));
   controls->addWidget(m_speed);
   m_slowNearContacts = new QCheckBox(tr("slow at contacts"), this);
   m_slowNearContacts->setChecked(true);
-  m_slowNearContacts->setToolTip(tr("Play at %1× of the speed within T₂/40 of a contact, so "
-                                    "that the impact can be seen.").arg(kSlowMotion));
+  m_slowNearContacts->setToolTip(tr("Play at %1× of the speed within 1/40 of the slowest period of a "
+                                    "contact, so that the impact can be seen.")
+                                     .arg(kSlowMotion));
   controls->addStretch(1);
   layout->addLayout(controls);
   // the time slider on a row of its own, the whole width: the view stays narrow enough for a
@@ -193,37 +235,67 @@ ChainView::ChainView(QWidget* parent) : QWidget(parent) {
   layout->addWidget(m_slider);
 
   setFocusPolicy(Qt::StrongFocus);
-  setToolTip(tr("The two masses on their springs and the rigid stop, moving as computed. The "
-                "time shown is marked on the u₂(t) trace and the phase portraits. Space: "
-                "play / pause; [ and ]: previous / next contact."));
+  setToolTip(tr("Every mass on its springs and the rigid stop, moving as computed; the stopped mass "
+                "(blue) strikes the post with its tab, flashing at each contact. The time shown is "
+                "marked on the trace and the phase portraits. Space: play / pause; [ and ]: "
+                "previous / next contact."));
   m_timer.setInterval(16);  // a 60 Hz display
   connect(&m_timer, &QTimer::timeout, this, &ChainView::tick);
   connect(m_play, &QToolButton::clicked, this, [this] { setPlaying(!playing()); });
-  connect(m_previous, &QToolButton::clicked, this, [this] { stepContact(-1); });
-  connect(m_next, &QToolButton::clicked, this, [this] { stepContact(+1); });
+  connect(previous, &QToolButton::clicked, this, [this] { stepContact(-1); });
+  connect(next, &QToolButton::clicked, this, [this] { stepContact(+1); });
   connect(m_slider, &QSlider::valueChanged, this, [this](int position) {
     setTime(m_end * position / kSliderSteps);
   });
 }
 
+void ChainView::setEmptyNote(const QString& why) {
+  m_emptyNote = why;
+  m_canvas->update();
+}
+
+void ChainView::startMotion(const core::MassChain& chain, double slowestPeriod, double unit, const QString& unitName) {
+  m_chain = chain;
+  m_rate = slowestPeriod / 2;
+  m_nearContact = slowestPeriod / 40;
+  m_unit = unit;
+  m_unitName = unitName;
+  m_amplitude = chain.gap;
+  m_squeeze = 0;
+  m_contactTimes.clear();
+  m_contactTypes.clear();
+}
+
+void ChainView::widen(const std::vector<double>& u) {
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    m_amplitude = std::max(m_amplitude, std::abs(u[i]));
+    if (i + 1 < u.size()) m_squeeze = std::max(m_squeeze, u[i] - u[i + 1]);
+  }
+}
+
 void ChainView::show(const SimUpdate& update) {
+  if (!update.chains.empty()) takeSeries(update.chains.front());
+  else takeSamples(update);
+  setTime(std::min(m_time, m_end));
+}
+
+// the two-mass run: only what it added since the last update
+void ChainView::takeSamples(const SimUpdate& update) {
+  m_series.reset();
   m_result = update.result;
+  if (!m_result) {
+    m_end = 0;
+    return;
+  }
   const core::Result& result = *m_result;
   if (m_taken.startsOver(update)) {
-    m_model = update.request->job.spec.model;
-    const double T2 = core::computeModes(m_model).T2;
-    m_rate = T2 / 2;
-    m_nearContact = T2 / 40;
-    m_amplitude = m_model.gap;
-    m_squeeze = 0;
-    m_contactTimes.clear();
-    m_contactTypes.clear();
+    const core::Model& model = update.request->job.spec.model;
+    const double T2 = core::computeModes(model).T2;
+    startMotion(core::massChainOf(model), T2, T2, tr("T₂"));
   }
-  // only what the run added since the last update
   for (std::size_t index = m_taken.samples; index < result.samples.size(); ++index) {
     const core::State& state = result.samples[index].state;
-    m_amplitude = std::max({m_amplitude, std::abs(state.u1), std::abs(state.u2)});
-    m_squeeze = std::max(m_squeeze, state.u1 - state.u2);
+    widen({state.u1, state.u2});
   }
   m_taken.samples = result.samples.size();
   m_end = result.samples.empty() ? 0 : result.samples.back().t;
@@ -236,7 +308,22 @@ void ChainView::show(const SimUpdate& update) {
     m_contactTypes.push_back(event.type);
   }
   m_taken.events = next;
-  setTime(std::min(m_time, m_end));
+}
+
+// an N-mass run's grid: each report is the run so far, whole
+void ChainView::takeSeries(const std::shared_ptr<const core::experiments::ChainSeries>& series) {
+  m_result.reset();
+  m_taken = {};
+  m_series = series;
+  m_end = series->grid.empty() ? 0 : series->grid.back().t;
+  startMotion(series->chain, 2 * std::numbers::pi / series->modes.omega.minCoeff(), series->period, tr("T"));
+  for (const core::experiments::ChainGridPoint& point : series->grid) widen(point.u);
+  for (const core::ChainEvent& event : series->run.events) {
+    if (event.t > m_end) break;
+    if (!core::isContact(event.type)) continue;
+    m_contactTimes.push_back(event.t);
+    m_contactTypes.push_back(event.type);
+  }
 }
 
 void ChainView::setPresentation(bool on, int textPixels) {
@@ -249,19 +336,30 @@ void ChainView::setPresentation(bool on, int textPixels) {
   m_canvas->update();
 }
 
-core::State ChainView::stateAt(double t) const {
-  if (!m_result || m_result->samples.empty()) return {};
-  const auto& samples = m_result->samples;
-  const auto after = std::lower_bound(samples.begin(), samples.end(), t,
-                                      [](const core::Sample& s, double time) { return s.t < time; });
-  if (after == samples.begin()) return samples.front().state;
-  if (after == samples.end()) return samples.back().state;
-  const core::Sample& b = *after;
-  const core::Sample& a = *(after - 1);
-  const double w = (t - a.t) / (b.t - a.t);
-  auto mix = [w](double x, double y) { return x + w * (y - x); };
-  return {mix(a.state.u1, b.state.u1), mix(a.state.u2, b.state.u2), mix(a.state.v1, b.state.v1),
-          mix(a.state.v2, b.state.v2)};
+std::vector<double> ChainView::displacementsAt(double t) const {
+  // the neighbours of t among the motion's times, and their displacements
+  const auto between = [t](const auto& points, const auto& timeOf, const auto& displacements) {
+    const auto after = std::lower_bound(points.begin(), points.end(), t,
+                                        [&](const auto& p, double time) { return timeOf(p) < time; });
+    if (after == points.begin()) return displacements(points.front());
+    if (after == points.end()) return displacements(points.back());
+    const std::vector<double> a = displacements(*(after - 1)), b = displacements(*after);
+    const double w = (t - timeOf(*(after - 1))) / (timeOf(*after) - timeOf(*(after - 1)));
+    std::vector<double> u(a.size());
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = a[i] + w * (b[i] - a[i]);
+    return u;
+  };
+  if (m_series && !m_series->grid.empty()) {
+    return between(
+        m_series->grid, [](const core::experiments::ChainGridPoint& p) { return p.t; },
+        [](const core::experiments::ChainGridPoint& p) { return p.u; });
+  }
+  if (m_result && !m_result->samples.empty()) {
+    return between(
+        m_result->samples, [](const core::Sample& p) { return p.t; },
+        [](const core::Sample& p) { return std::vector<double>{p.state.u1, p.state.u2}; });
+  }
+  return {};
 }
 
 void ChainView::setTime(double t) {
@@ -271,14 +369,14 @@ void ChainView::setTime(double t) {
     m_slider->setValue(m_end > 0 ? int(std::lround(m_time / m_end * kSliderSteps)) : 0);
   }
   m_canvas->update();
-  emit timeChanged(m_time, stateAt(m_time));
+  emit timeChanged(m_time);
 }
 
 void ChainView::setPlaying(bool on) {
   if (on == playing()) return;
   if (on) {
     if (m_time >= m_end) m_time = 0;
-    m_clockTimer.start();
+    m_clock.start();
     m_timer.start();
   } else {
     m_timer.stop();
@@ -312,7 +410,7 @@ double ChainView::speedFactor() const {
 void ChainView::tick() {
   ++m_framesPlayed;
   // wall time since the last frame (a late frame does not make the motion jump far)
-  const double seconds = std::min(0.1, m_clockTimer.restart() / 1000.0);
+  const double seconds = std::min(0.1, m_clock.restart() / 1000.0);
   double t = m_time + seconds * m_rate * speedFactor();
   if (t > m_end) t = 0;  // loops
   setTime(t);

@@ -10,51 +10,53 @@
 #include <memory>
 #include <vector>
 
-#include "core/solver/simulate.h"
-#include "ui/plots/scene_view.h"
+#include "core/experiments/chain_series.h"
+#include "core/model/mass_chain.h"
 #include "ui/compute/sim_types.h"
+#include "ui/plots/scene_view.h"
 
 class QCheckBox;
 class QComboBox;
-class QLabel;
 class QSlider;
 class QToolButton;
 
 namespace grazelab::ui {
 
-/// The chain itself, moving: the wall, the two springs drawn as springs, the masses and the
-/// stop at d, displacements true to scale. Driven by the run's dense output (its samples, with
-/// linear interpolation between them) and its contacts, which flash. Play / pause (Space),
-/// speed, slow motion near contacts, step to the next or previous contact ([ and ]), and a
-/// time slider; the time it shows is the cursor of every time-based plot (timeChanged).
+/// A chain of any number of masses, moving: the wall, every spring and mass (sized by the cube
+/// root of its mass), the stop at d beside the stopped mass (a post it strikes with a tab), the
+/// right wall when there is one; displacements true to scale. Driven by the run's dense output
+/// (the two-mass run's samples, or the grid of an experiment's first chain run), linearly
+/// interpolated, and its contacts, which flash. Play / pause (Space), speed, slow motion near
+/// contacts, step to the next or previous contact ([ and ]), and a time slider; the time it
+/// shows is the cursor of every time-based view (timeChanged).
 class ChainView : public QWidget, public SceneView {
   Q_OBJECT
 
  public:
   explicit ChainView(QWidget* parent = nullptr);
-
   QWidget* widget() override { return this; }
   QString viewTitle() const override { return tr("The chain, moving"); }
+  void setEmptyNote(const QString& why) override;
   void show(const SimUpdate& update) override;
   void setPresentation(bool on, int textPixels) override;
-
   double time() const { return m_time; }
   bool playing() const { return m_timer.isActive(); }
-  /// The state shown at time t (interpolated between samples).
-  core::State stateAt(double t) const;
+  /// Every mass's displacement at time t (interpolated between the samples); empty when there
+  /// is no motion.
+  std::vector<double> displacementsAt(double t) const;
   void setTime(double t);
   void setPlaying(bool on);
   /// Moves to the next (+1) or previous (-1) contact after / before the current time.
   void stepContact(int direction);
-  /// Time units of the run per second of wall time at speed 1 (one slow period in 2 s).
+  /// Time units of the run per second of wall time at speed 1 (one slowest period in 2 s).
   double rate() const { return m_rate; }
   /// Animation steps taken while playing (one per timer tick, at most 62.5 a second): the
   /// latency benchmark's animation rate.
   std::int64_t framesPlayed() const { return m_framesPlayed; }
 
  signals:
-  /// The animation shows time t, state `state` (the plots draw their cursor there).
-  void timeChanged(double t, const grazelab::core::State& state);
+  /// The animation shows time t (the other views mark it).
+  void timeChanged(double t);
 
  protected:
   void keyPressEvent(QKeyEvent* event) override;
@@ -63,30 +65,37 @@ class ChainView : public QWidget, public SceneView {
   class Canvas;
   void tick();
   double speedFactor() const;
+  /// the motion's scales and contacts, from the first update of a run on
+  void startMotion(const core::MassChain& chain, double slowestPeriod, double unit, const QString& unitName);
+  void takeSamples(const SimUpdate& update);
+  void takeSeries(const std::shared_ptr<const core::experiments::ChainSeries>& series);
+  void widen(const std::vector<double>& u);
 
   Canvas* m_canvas = nullptr;
   QToolButton* m_play = nullptr;
-  QToolButton* m_previous = nullptr;
-  QToolButton* m_next = nullptr;
   QComboBox* m_speed = nullptr;
   QCheckBox* m_slowNearContacts = nullptr;
   QSlider* m_slider = nullptr;
-
+  // the motion: the two-mass run's samples, or an N-mass run's grid (one of them)
   std::shared_ptr<const core::Result> m_result;
-  std::vector<double> m_contactTimes;  ///< within the samples' window
+  std::shared_ptr<const core::experiments::ChainSeries> m_series;
+  core::MassChain m_chain;  ///< the chain drawn
+  std::vector<double> m_contactTimes;  ///< within the motion's span
   std::vector<core::EventType> m_contactTypes;
-  core::Model m_model;
+  QString m_emptyNote;  ///< why there is no motion (setEmptyNote)
+  QString m_unitName;   ///< the clock's unit ("T₂", "T"), empty when none
+  double m_unit = 0;    ///< its length [time]
   double m_time = 0;
   double m_end = 0;
   double m_rate = 1;
   double m_nearContact = 0;  ///< a contact closer than this slows the motion [time]
-  double m_amplitude = 1;    ///< the largest |u| of the run, for the scale
-  double m_squeeze = 0;      ///< the largest u1 - u2 of the run: how far the masses close in
+  double m_amplitude = 1;    ///< the largest |u| of the motion, for the scale
+  double m_squeeze = 0;      ///< the largest u_i - u_(i+1): how far neighbours close in
   QTimer m_timer;
-  QElapsedTimer m_clockTimer;
+  QElapsedTimer m_clock;
   bool m_presentation = false;
   std::int64_t m_framesPlayed = 0;
-  RunProgress m_taken;  ///< samples and events already taken in
+  RunProgress m_taken;  ///< the two-mass run's samples and events already taken in
 };
 
 }  // namespace grazelab::ui

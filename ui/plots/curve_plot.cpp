@@ -65,7 +65,7 @@ void CurvePlot::show(const SimUpdate& update) {
   const bool timed = !figure.dots && figure.curveTimes.size() == figure.curve.size() && !figure.curve.empty();
   m_curveTimes = timed ? figure.curveTimes : std::vector<double>{};
   m_timedCurve = timed ? figure.curve : std::vector<QPointF>{};
-  setChainTime(m_chainTime);
+  setTimeCursor(m_cursorTime);
   m_draggable = !figure.draggedModes.empty() && (point || figure.markers.size() == 1);
   if (m_draggable) m_ring = point ? figure.reference.front() : figure.markers.front();
   setMouseTracking(m_draggable);  // the hand over the ring
@@ -122,8 +122,8 @@ void CurvePlot::mouseReleaseEvent(QMouseEvent* event) {
   PlotView::mouseReleaseEvent(event);
 }
 
-void CurvePlot::setChainTime(double t) {
-  m_chainTime = t;
+void CurvePlot::setTimeCursor(double t) {
+  m_cursorTime = t;
   if (m_timeUnit <= 0 && m_curveTimes.empty()) {
     if (m_timeLine) m_timeLine->clear();
     if (m_timeRing) m_timeRing->clear();
@@ -142,7 +142,7 @@ void CurvePlot::setChainTime(double t) {
       // from the axis' bottom to its top as they are once fitted (show() places it before the
       // refresh that fits the axes)
       if (auto* axis = qobject_cast<QValueAxis*>(chart()->axes(Qt::Vertical).value(0))) {
-        connect(axis, &QValueAxis::rangeChanged, this, [this] { setChainTime(m_chainTime); });
+        connect(axis, &QValueAxis::rangeChanged, this, [this] { setTimeCursor(m_cursorTime); });
       }
     }
     const auto* y = qobject_cast<QValueAxis*>(chart()->axes(Qt::Vertical).value(0));

@@ -22,7 +22,7 @@ class CurvePlot final : public PlotView {
   bool draggable() const { return m_draggable; }
   /// Marks the animated chain's time: a line on a trace (CurveFigure::timeUnit), a ring on a
   /// curve along the run (CurveFigure::curveTimes); nothing on other figures.
-  void setChainTime(double t) override;
+  void setTimeCursor(double t) override;
 
  signals:
   /// The ring of a draggable figure (CurveFigure::draggedModes) was dragged to `value`, in the
@@ -46,7 +46,7 @@ class CurvePlot final : public PlotView {
   int m_marker = 0;
   bool m_draggable = false;
   // the animated chain's time, and how the figure shown places it
-  double m_chainTime = 0;
+  double m_cursorTime = 0;
   double m_timeUnit = 0;
   std::vector<double> m_curveTimes;
   std::vector<QPointF> m_timedCurve;

@@ -46,7 +46,21 @@ double PhasePlot::lastTime() const {
   return m_samples == 0 ? 0 : m_run->samples[m_samples - 1].t;
 }
 
-void PhasePlot::setTimeCursor(double t, const core::State& state) {
+std::optional<QPointF> PhasePlot::pointAt(double t) const {
+  if (m_samples == 0) return std::nullopt;
+  const auto first = m_run->samples.begin(), end = first + std::ptrdiff_t(m_samples);
+  const auto after = std::lower_bound(first, end, t, [](const core::Sample& s, double time) { return s.t < time; });
+  const auto point = [this](const core::State& x) {
+    return m_mass == Mass::Two ? QPointF(x.u2, x.v2) : QPointF(x.u1, x.v1);
+  };
+  if (after == first) return point(first->state);
+  if (after == end) return point((end - 1)->state);
+  const core::Sample& a = *(after - 1);
+  const double w = (t - a.t) / (after->t - a.t);
+  return point(a.state) + w * (point(after->state) - point(a.state));
+}
+
+void PhasePlot::setTimeCursor(double t) {
   m_cursorTime = t;
   const double tLast = lastTime();
   if (!m_whole && !m_runWindow.wholeFits(tLast, m_T2) && m_runWindow.follow(t, tLast, m_T2)) {
@@ -64,7 +78,8 @@ void PhasePlot::setTimeCursor(double t, const core::State& state) {
     setInLegend(dot, false);
     m_cursor = dot;
   }
-  m_cursor->replace({m_mass == Mass::Two ? QPointF(state.u2, state.v2) : QPointF(state.u1, state.v1)});
+  if (const std::optional<QPointF> at = pointAt(t)) m_cursor->replace({*at});
+  else m_cursor->clear();
 }
 
 void PhasePlot::show(const SimUpdate& update) {

@@ -2,6 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
+#include <optional>
+
 #include "ui/plots/plot_view.h"
 
 namespace grazelab::ui {
@@ -14,7 +16,8 @@ class PhasePlot final : public PlotView {
   enum class Mass { One, Two };
   explicit PhasePlot(Mass mass, QWidget* parent = nullptr);
   void show(const SimUpdate& update) override;
-  void setTimeCursor(double t, const core::State& state) override;
+  /// The animation's time: a ring on the run's state there (between samples, interpolated).
+  void setTimeCursor(double t) override;
   void setWholeRun(bool whole) override;
   Mass mass() const { return m_mass; }
 
@@ -23,6 +26,8 @@ class PhasePlot final : public PlotView {
   /// Draws the window's stretch of the path over the pale whole run, or the whole run alone.
   void placeWindow();
   double lastTime() const;  ///< the time of the last sample shown (0 when none)
+  /// the mass's (u, v) at time t, interpolated between the samples shown (none: nothing)
+  std::optional<QPointF> pointAt(double t) const;
 
   int m_path = 0;    ///< the whole run
   int m_recent = 0;  ///< the window's stretch, over it

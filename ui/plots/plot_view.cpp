@@ -227,8 +227,6 @@ int PlotView::addEntry(QXYSeries* series, Decimation decimation, bool inBounds) 
   return int(m_entries.size()) - 1;
 }
 
-void PlotView::setTimeCursor(double, const core::State&) {}
-
 void PlotView::setPresentation(bool on, int textPixels) {
   QChart* chart = this->chart();
   if (!m_deskFonts) {

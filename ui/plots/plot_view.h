@@ -120,10 +120,6 @@ class PlotView : public QChartView, public SceneView {
   /// Applies pending data now instead of at the next turn of the event loop.
   void refreshNow();
 
-  /// The animation's time and state: time-based plots mark it (a line on u2(t), a dot on a
-  /// phase portrait); others ignore it. Drawn at once, without re-decimating the data.
-  void setTimeCursor(double t, const core::State& state) override;
-
   /// Presentation mode: text of `textPixels` (titles a little larger), lines at least 3 px,
   /// markers half again as large; off restores the desk look.
   void setPresentation(bool on, int textPixels) override;

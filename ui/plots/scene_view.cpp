@@ -8,7 +8,6 @@
 
 #include "ui/plots/accuracy_view.h"
 #include "ui/plots/chain_view.h"
-#include "ui/plots/mass_chain_view.h"
 #include "ui/plots/curve_plot.h"
 #include "ui/plots/free_flight_plot.h"
 #include "ui/plots/landscape_view.h"
@@ -51,7 +50,6 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::ChainSection:
     case PlotKind::GrazingSet: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);
-    case PlotKind::MassChain: return new MassChainView(parent);
     case PlotKind::WorkPrecision: return new AccuracyView(parent);
     case PlotKind::Landscape: return new LandscapeView(parent);
     case PlotKind::ModesAtlas: return new ModesPlot(parent);

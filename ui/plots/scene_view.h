@@ -27,13 +27,9 @@ class SceneView {
   virtual void show(const SimUpdate& update) = 0;
   /// Presentation mode: text of `textPixels`, thicker lines; off restores the desk look.
   virtual void setPresentation(bool on, int textPixels) = 0;
-  /// The animation's time and state (time-based views mark it; others ignore it).
-  virtual void setTimeCursor(double t, const core::State& state) {
-    (void)t;
-    (void)state;
-  }
-  /// The time of the animated chain of N masses: a view of that run marks it (others ignore it).
-  virtual void setChainTime(double t) { (void)t; }
+  /// The animated chain's time: a view of the same run marks it (its own state there: the
+  /// trace a line, the phase portrait a ring); others ignore it.
+  virtual void setTimeCursor(double t) { (void)t; }
   /// Time-based views show a readable window of a long run (a few slow periods at the
   /// animation's time) unless the whole run is asked for.
   virtual void setWholeRun(bool whole) { (void)whole; }

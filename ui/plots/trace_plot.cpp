@@ -83,7 +83,7 @@ void TracePlot::setWholeRun(bool whole) {
   scheduleRefresh();
 }
 
-void TracePlot::setTimeCursor(double t, const core::State&) {
+void TracePlot::setTimeCursor(double t) {
   m_cursorTime = t;
   if (!m_whole && !m_runWindow.wholeFits(m_window, m_T2) && m_runWindow.follow(t, m_window, m_T2)) {
     placeWindow();

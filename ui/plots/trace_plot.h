@@ -17,7 +17,8 @@ class TracePlot final : public PlotView {
   /// Draws another method's run over the exact one (its u2 at its own steps, dashed, and its
   /// contacts as crosses); an empty run removes the overlay.
   void setOverlay(std::shared_ptr<const core::Result> run, const QString& name);
-  void setTimeCursor(double t, const core::State& state) override;
+  /// The animation's time: a line, drawn at once without re-decimating the data.
+  void setTimeCursor(double t) override;
   void setWholeRun(bool whole) override;
 
  private:

@@ -64,7 +64,7 @@ Scene::Spec chainOnePeriodicScene() {
   scene.gloWeights = false;  // it starts on the 1IPP orbit
   scene.parameters = {ParamKey::Gap, ParamKey::ChainPeriod};
   scene.plots = {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::ChainStopTrace,
-                 PlotKind::MassChain};
+                 PlotKind::Chain};
   scene.build = [](const Scene&, const Params& params, const DerivedModel&, std::stop_token stop) {
     SceneJob job;
     const ChainChoice choice = chooseChain(params.massChain, params.gap, stop);

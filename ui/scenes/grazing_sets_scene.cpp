@@ -123,7 +123,7 @@ Scene::Spec grazingSetsScene() {
   scene.defaults.massChain.weights = {0.5, 0.5};
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap};
-  scene.plots = {PlotKind::GrazingSet, PlotKind::ChainStopTrace, PlotKind::MassChain};
+  scene.plots = {PlotKind::GrazingSet, PlotKind::ChainStopTrace, PlotKind::Chain};
   scene.build = [](const Scene&, const Params& params, const DerivedModel&, std::stop_token stop) {
     SceneJob job;
     const MassChainParams& given = params.massChain;

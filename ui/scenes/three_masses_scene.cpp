@@ -268,7 +268,7 @@ Scene::Spec threeMassesScene() {
   scene.defaults.massChain = MassChainParams{};
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::Flights,
+  scene.plots = {PlotKind::ChainStopTrace, PlotKind::Chain, PlotKind::Flights,
                  PlotKind::ChainPhase, PlotKind::ChainSection, PlotKind::DetunedFlights};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token stop) {
     const MassChainParams& given = params.massChain;
@@ -340,7 +340,7 @@ Scene::Spec eightMassesScene() {
   scene.defaults.massChain.weights.back() = 1.0;  // the slowest mode alone
   scene.defaults.perturbation = -1e-4;
   scene.defaults.horizon = 100;
-  scene.plots = {PlotKind::ChainStopTrace, PlotKind::MassChain, PlotKind::Flights,
+  scene.plots = {PlotKind::ChainStopTrace, PlotKind::Chain, PlotKind::Flights,
                  PlotKind::ChainPhase, PlotKind::ChainSection};
   return scene;
 }

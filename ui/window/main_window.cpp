@@ -38,7 +38,6 @@
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/chain_view.h"
 #include "ui/plots/curve_plot.h"
-#include "ui/plots/mass_chain_view.h"
 #include "ui/plots/scene_view.h"
 #include "ui/plots/plot_view.h"
 #include "ui/plots/phase_plot.h"
@@ -229,9 +228,6 @@ void MainWindow::buildMenus() {
   add(view, tr("Play / &pause the motion"), {QKeySequence(Qt::Key_Space)},
       tr("Start or stop the animated chain (scenes that show it)"), [this] {
         if (m_chain) m_chain->setPlaying(!m_chain->playing());
-        for (SceneView* view : m_sceneViews) {
-          if (auto* moving = dynamic_cast<MassChainView*>(view)) moving->setPlaying(!moving->playing());
-        }
       });
   view->addSeparator();
   m_presentationAction = add(
@@ -379,17 +375,9 @@ void MainWindow::linkViews() {
   }
   if (m_chain) {
     // the animation's time is the cursor of every view
-    connect(m_chain, &ChainView::timeChanged, this, [this](double t, const core::State& state) {
-      for (SceneView* view : m_sceneViews) view->setTimeCursor(t, state);
+    connect(m_chain, &ChainView::timeChanged, this, [this](double t) {
+      for (SceneView* view : m_sceneViews) view->setTimeCursor(t);
     });
-  }
-  for (SceneView* view : m_sceneViews) {
-    // the N-mass chain's animation: its time marked on the trace and the phase portrait
-    if (auto* moving = dynamic_cast<MassChainView*>(view)) {
-      connect(moving, &MassChainView::timeChanged, this, [this](double t) {
-        for (SceneView* other : m_sceneViews) other->setChainTime(t);
-      });
-    }
   }
 }
 

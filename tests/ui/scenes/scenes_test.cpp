@@ -24,7 +24,6 @@
 #include "ui/plots/curve_plot.h"
 #include "ui/pictures/heat_map.h"
 #include "ui/plots/landscape_view.h"
-#include "ui/plots/mass_chain_view.h"
 #include "ui/plots/plot_view.h"
 #include "ui/widgets/chain_editor.h"
 #include "ui/widgets/parameter_panel.h"
@@ -68,8 +67,9 @@ class ScenesTest : public QObject {
       QVERIFY2(bool(shown.result) != scene.massChain(), qPrintable(name));
       QVERIFY2(shown.chains.size() == shown.request->job.spec.chains.size(), qPrintable(name));
       const auto& needs = shown.request->job.spec.run.needs;
-      const bool dense = shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::PhaseU2V2) ||
-                         shows(scene, PlotKind::PhaseU1V1) || shows(scene, PlotKind::Chain);
+      // (a scene of N masses runs no two-mass run: it asks it for nothing)
+      const bool dense = !scene.massChain() && (shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::PhaseU2V2) ||
+                                                shows(scene, PlotKind::PhaseU1V1) || shows(scene, PlotKind::Chain));
       QVERIFY2((needs.samples.spacing > 0) == dense, qPrintable(name));
       QVERIFY2(needs.poincare == (shows(scene, PlotKind::Poincare) || shows(scene, PlotKind::Landscape)),
                qPrintable(name));
@@ -81,8 +81,7 @@ class ScenesTest : public QObject {
       QVERIFY2(bool(m_window->chainView()) == shows(scene, PlotKind::Chain), qPrintable(name));
       // every view it lists is on screen, each curve view with its figure
       const qsizetype views = m_window->plots().size() + (m_window->accuracyView() ? 1 : 0) +
-                              (m_window->chainView() ? 1 : 0) + (m_window->landscapeView() ? 1 : 0) +
-                              (shows(scene, PlotKind::MassChain) ? 1 : 0);
+                              (m_window->chainView() ? 1 : 0) + (m_window->landscapeView() ? 1 : 0);
       QCOMPARE(views, scene.plots().size());
       QCOMPARE(m_window->sceneViews().size(), scene.plots().size());
       for (PlotKind kind : scene.plots()) {
@@ -316,10 +315,7 @@ class ScenesTest : public QObject {
     for (const QPointF& point : figure(*m_window, PlotKind::ChainStopTrace).curve) QVERIFY(point.y() <= 1.0 + 1e-12);
     // the chain moving starts at the orbit's touch and has the stopped mass on the stop at each
     // contact (its grid interpolated: to 1 % of d)
-    MassChainView* moving = nullptr;
-    for (SceneView* view : m_window->sceneViews()) {
-      if (auto* found = dynamic_cast<MassChainView*>(view)) moving = found;
-    }
+    ChainView* moving = m_window->chainView();
     QVERIFY(moving);
     QVERIFY(shownChainRun(*m_window));
     const auto& series = *shownChainRun(*m_window);
@@ -332,6 +328,14 @@ class ScenesTest : public QObject {
       ++seen;
     }
     QVERIFY(seen >= 3);
+    // the same view as for two masses: [ and ] step from contact to contact
+    moving->setTime(0);
+    moving->stepContact(+1);
+    QCOMPARE(moving->time(), series.run.events[0].t);
+    moving->stepContact(+1);
+    QCOMPARE(moving->time(), series.run.events[1].t);
+    moving->stepContact(-1);
+    QCOMPARE(moving->time(), series.run.events[0].t);
     // Space plays and pauses it, as it does the two-mass chain
     QTest::keyClick(m_window.get(), Qt::Key_Space);
     QVERIFY(moving->playing());
@@ -630,10 +634,7 @@ class ScenesTest : public QObject {
     QVERIFY(figure(*m_window, PlotKind::Flights).reference.empty());
     QVERIFY(series.trust.verdict == grazelab::core::Verdict::Unchecked);
     QVERIFY2(job.status.contains(QStringLiteral("no error estimate")), qPrintable(job.status));
-    MassChainView* moving = nullptr;
-    for (SceneView* view : m_window->sceneViews()) {
-      if (auto* found = dynamic_cast<MassChainView*>(view)) moving = found;
-    }
+    ChainView* moving = m_window->chainView();
     QVERIFY(moving);
     for (const auto& event : series.run.events) {
       QCOMPARE(event.u[4], 1.0);  // on the stop exactly at its contacts
@@ -683,7 +684,7 @@ class ScenesTest : public QObject {
     chain->stepContact(-1);
     QCOMPARE(chain->time(), events[0].t);
     // at a contact the state shown is on the stop
-    QVERIFY(std::abs(chain->stateAt(chain->time()).u2 - m_window->params().gap) < 1e-3);
+    QVERIFY(std::abs(chain->displacementsAt(chain->time())[1] - m_window->params().gap) < 1e-3);
     // the trace's cursor line stands at that time
     PlotView* trace = m_window->plots().first();
     QXYSeries* cursor = nullptr;
