@@ -65,21 +65,21 @@ bool summarize(const ChainMapSpec& spec, const ChainState& start, double period,
     leftAt = t;
   };
   const BasicChainRun<S> run = runChain(chain, first, long(spec.contacts), S(0), stop, sink);
-  if (run.stop == ChainStop::Undecided) {
+  if (run.stop == StopReason::Undecided) {
     if (raise) return false;
     // undecided in binary128 too: the map cannot say what the run does (no partial counts)
     point = noRun();
     return true;
   }
   // a flight from the stop that never ends: the resonant chain's flight stays below forever
-  if (run.stop == ChainStop::NoFurtherContact && fromStop && std::isnan(point.fftFirst)) point.fftFirst = kInfinity;
+  if (run.stop == StopReason::NoFurtherContact && fromStop && std::isnan(point.fftFirst)) point.fftFirst = kInfinity;
   point.impacts = run.impacts;
   point.grazings = run.grazings;
   point.sticks = run.sticks;
   point.fftMin = flights > 0 ? low : kNaN;
   point.fftMax = flights > 0 ? high : kNaN;
   point.fftMean = flights > 0 ? sum / double(flights) : kNaN;
-  if (check && run.stop != ChainStop::Cancelled) {
+  if (check && run.stop != StopReason::Cancelled) {
     const Trust trust = check->finish(run);
     if (trust.verdict != Verdict::Unchecked) point.horizon = trust.horizon;
   }

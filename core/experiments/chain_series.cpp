@@ -86,7 +86,7 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
       for (double t : sampling.times) sampling.sink(t, stateAt(dynamics, flight, S(t)));
     }
     series.run.final = spec.start;
-    series.run.stop = ChainStop::TimeLimit;
+    series.run.stop = StopReason::TimeLimit;
     return series;
   }
   BasicChainSimulator<S> simulator(readyChain(chain), start, spec.contacts, S(0), {}, sampling);
@@ -109,7 +109,7 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
     sinceReport = std::chrono::steady_clock::now();
   }
   if (stop.stop_requested()) return std::nullopt;
-  if (!lastResort && simulator.run().stop == ChainStop::Undecided) {
+  if (!lastResort && simulator.run().stop == StopReason::Undecided) {
     undecidedAt = toDouble(simulator.run().tFinal);
     return std::nullopt;
   }
@@ -144,7 +144,7 @@ ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop, const
   }
   if (series) return std::move(*series);
   // stopped: the frame, its run cancelled
-  frame.run.stop = ChainStop::Cancelled;
+  frame.run.stop = StopReason::Cancelled;
   return frame;
 }
 

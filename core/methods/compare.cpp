@@ -251,12 +251,12 @@ ChainReference makeReference(const ChainTask& task, const WorkBudget& budget, st
   result.tFinal *= timeFactor;
   reference.run.result = inDouble(result);
   reference.run.steps = result.contacts;
-  const bool completed = result.stop == ChainStop::TimeLimit || result.stop == ChainStop::NoFurtherContact;
-  std::string message = result.stop == ChainStop::Undecided ? "a contact undecided even in binary128"
-                        : result.stop == ChainStop::SearchBudget
+  const bool completed = result.stop == StopReason::TimeLimit || result.stop == StopReason::NoFurtherContact;
+  std::string message = result.stop == StopReason::Undecided ? "a contact undecided even in binary128"
+                        : result.stop == StopReason::SearchBudget
                             ? "the contact search ran out of its budget"
                             : "contact budget spent";
-  judgeReference(reference.run, simulator.done(), completed, result.stop == ChainStop::Cancelled, false,
+  judgeReference(reference.run, simulator.done(), completed, result.stop == StopReason::Cancelled, false,
                  message);
   reference.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -123,26 +123,31 @@ ChainMethodRun runIn(const ChainTask& task, const WorkBudget& budget, std::stop_
     }
     if (simulator.done()) run.maxEnergyDrift = std::max(run.maxEnergyDrift, driftAt(simulator.run().final));
   }
-  switch (simulator.done() ? simulator.run().stop : ChainStop::ContactLimit) {
-    case ChainStop::TimeLimit:
-    case ChainStop::NoFurtherContact:
+  switch (simulator.done() ? simulator.run().stop : StopReason::ContactLimit) {
+    case StopReason::TimeLimit:
+    case StopReason::NoFurtherContact:
       run.status = RunStatus::Completed;
       break;
-    case ChainStop::ContactLimit:
+    case StopReason::ContactLimit:
       run.status = RunStatus::Budget;
       run.reason = "contact budget (" + std::to_string(budget.maxSteps) + " contacts) spent";
       break;
-    case ChainStop::SearchBudget:
+    case StopReason::SearchBudget:
       run.status = RunStatus::Budget;
       run.reason = "the contact search ran out of its budget before deciding";
       break;
-    case ChainStop::Undecided:
+    case StopReason::Undecided:
       run.status = RunStatus::Budget;
       run.reason = "a contact undecided in " + std::string(toString(precisionOf<S>()));
       break;
-    case ChainStop::Cancelled:
+    case StopReason::Cancelled:
       run.status = RunStatus::Cancelled;
       run.reason = "cancelled";
+      break;
+    case StopReason::SearchLimit:  // (the two-mass engine's alone)
+    case StopReason::InvalidInput:
+      run.status = RunStatus::Refused;
+      run.reason = std::string(toString(simulator.run().stop));
       break;
   }
   finishExact(run, overTime, budget, started);

@@ -256,9 +256,9 @@ void ScaledRun<T>::finish(RunStatus status, std::string reason, double tau, cons
     m_run.maxEnergyDrift = std::max(m_run.result.cost.maxRelEnergyDrift, drift(q, v));
   } else {
     ChainRun& result = m_run.result;
-    result.stop = status == RunStatus::Completed   ? ChainStop::TimeLimit
-                  : status == RunStatus::Cancelled ? ChainStop::Cancelled
-                                                   : ChainStop::ContactLimit;
+    result.stop = status == RunStatus::Completed   ? StopReason::TimeLimit
+                  : status == RunStatus::Cancelled ? StopReason::Cancelled
+                                                   : StopReason::ContactLimit;
     result.tFinal = physicalTime(tau);
     result.final = physical(q, v);
     result.energyFinal = finite(q, v) ? chainEnergy(m_massChain, result.final)

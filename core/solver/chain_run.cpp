@@ -155,7 +155,7 @@ BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, con
 }
 
 template <typename S>
-bool BasicChainSimulator<S>::finish(ChainStop reason, const BasicChainState<S>& at, const S& when) {
+bool BasicChainSimulator<S>::finish(StopReason reason, const BasicChainState<S>& at, const S& when) {
   m_run.stop = reason;
   m_run.final = at;
   m_run.tFinal = when;
@@ -222,7 +222,7 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
   contactBudget = std::max(contactBudget, 1L);
   const long pieceEnd = m_maxContacts - m_run.contacts > contactBudget ? m_run.contacts + contactBudget : m_maxContacts;
   while (m_run.contacts < pieceEnd) {
-    if (m_stop.stop_requested()) return finish(ChainStop::Cancelled, state, t);
+    if (m_stop.stop_requested()) return finish(StopReason::Cancelled, state, t);
     // at rest on the stop, pressed into it (a touch, or the start): held until released
     const BasicStopForce<S> force = stopForce(chain, state);
     const bool onStop = state.u[s] == dynamics.gap && state.v[s] == 0;
@@ -241,25 +241,25 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
       const BasicChainStuckPhase<S> phase = stuckPhase(chain, state);
       const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * slowestPeriod(phase));
       const BasicFirstZero<S> release = releaseOf(phase, horizon);
-      if (m_stop.stop_requested()) return finish(ChainStop::Cancelled, state, t);
+      if (m_stop.stop_requested()) return finish(StopReason::Cancelled, state, t);
       const bool past = tEnd > 0 && (release.kind == ZeroKind::Budget || t + release.t > tEnd);
       const auto stuckAt = [&](const S& offset) { return stuckStateAt(phase, offset); };
       if (past) {
         samplePiece(t, S(tEnd), true, stuckAt);
-        return finish(ChainStop::TimeLimit, stuckStateAt(phase, tEnd - t), tEnd);
+        return finish(StopReason::TimeLimit, stuckStateAt(phase, tEnd - t), tEnd);
       }
       if (release.kind == ZeroKind::Budget) {
         samplePiece(t, S(t + release.t), true, stuckAt);  // held at least as far as it searched
-        return finish(ChainStop::SearchBudget, state, t);
+        return finish(StopReason::SearchBudget, state, t);
       }
       if (release.kind != ZeroKind::Crossing) {
-        return finish(ChainStop::Undecided, stuckStateAt(phase, release.t), t + release.t);
+        return finish(StopReason::Undecided, stuckStateAt(phase, release.t), t + release.t);
       }
       samplePiece(t, S(t + release.t), false, stuckAt);
       State released = stuckStateAt(phase, release.t);
       t += release.t;
       leaving = releaseLeaving(chain, released);
-      if (!leaving) return finish(ChainStop::Undecided, released, t);
+      if (!leaving) return finish(StopReason::Undecided, released, t);
       record(EventType::Release, released, released.v, t);
       state = released;
       continue;
@@ -290,22 +290,22 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
     const auto flightAt = [&](const S& offset) { return stateAt(dynamics, m_flight, offset); };
     if (past) {
       samplePiece(t, S(tEnd), true, flightAt);
-      return finish(ChainStop::TimeLimit, stateAt(dynamics, m_flight, tEnd - t), tEnd);
+      return finish(StopReason::TimeLimit, stateAt(dynamics, m_flight, tEnd - t), tEnd);
     }
     if (contact.kind == ChainContactKind::None) {
       samplePiece(t, S(t + m_slowest), true, flightAt);  // linear forever: one slowest period drawn
-      return finish(ChainStop::NoFurtherContact, state, t);
+      return finish(StopReason::NoFurtherContact, state, t);
     }
     if (contact.kind == ChainContactKind::Budget) {
       // no contact as far as the search went: that much of the flight is drawn
       samplePiece(t, S(t + contact.t), true, flightAt);
-      return finish(ChainStop::SearchBudget, state, t);
+      return finish(StopReason::SearchBudget, state, t);
     }
     if (contact.kind == ChainContactKind::Unresolved) {
       // a top within rounding of the stop (or, at 0, a flight not seen to leave the stop it starts
       // on): a grazing, a slow impact and a near miss differ there by less than S resolves, so
       // none is recorded; the run ends at the flight's start, decided one precision up
-      return finish(ChainStop::Undecided, state, t);
+      return finish(StopReason::Undecided, state, t);
     }
     if (contact.kind == ChainContactKind::Touch) {
       // a start at rest on the stop back after u_s's own period T/g (firstContact calls a touch
@@ -338,7 +338,7 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
   if (m_run.contacts < m_maxContacts) return false;  // the piece's contacts made: more to come
   // the last event's state, when a sample falls on it
   samplePiece(t, t, true, [&](const S&) { return state; });
-  return finish(ChainStop::ContactLimit, state, t);
+  return finish(StopReason::ContactLimit, state, t);
 }
 
 template <typename S>

@@ -28,20 +28,6 @@ struct BasicChainEvent {
 };
 using ChainEvent = BasicChainEvent<double>;
 
-/// Why a run of a chain of N masses ended.
-enum class ChainStop {
-  ContactLimit,      ///< `maxContacts` contacts
-  TimeLimit,         ///< `tEnd` reached
-  NoFurtherContact,  ///< a commensurate chain's flight that stays below the stop for a period:
-                     ///< linear forever
-  Undecided,         ///< at rest on the stop with no force either way within rounding, held
-                     ///< there by a force that comes back to 0 without being seen to change
-                     ///< sign, or a flight whose top comes within rounding of the stop (its
-                     ///< start is the run's final state)
-  SearchBudget,      ///< no contact (or release) decided within the search's horizon and budget
-  Cancelled,         ///< the stop token
-};
-
 template <typename S>
 struct BasicChainRun {
   std::vector<BasicChainEvent<S>> events;  ///< contacts and releases, in time order (none kept
@@ -50,7 +36,7 @@ struct BasicChainRun {
   long impacts = 0, grazings = 0, sticks = 0, releases = 0;  ///< the events by type
   BasicChainState<S> final;                ///< the state at `tFinal`
   S tFinal = 0;
-  ChainStop stop = ChainStop::ContactLimit;
+  StopReason stop = StopReason::ContactLimit;  ///< never SearchLimit nor InvalidInput
   S energyInitial = 0;
   S energyFinal = 0;
 };
@@ -109,7 +95,7 @@ class BasicChainSimulator {
       : BasicChainSimulator(readyChain(chain), start, maxContacts, tEnd, std::move(sink), std::move(sampling)) {}
 
   /// Runs until `contactBudget` more contacts were made, the run is over, or `stop` is requested
-  /// (then over: ChainStop::Cancelled). Returns true when the run is over.
+  /// (then over: StopReason::Cancelled). Returns true when the run is over.
   bool advance(long contactBudget, std::stop_token stop = {});
 
   bool done() const { return m_done; }
@@ -122,7 +108,7 @@ class BasicChainSimulator {
 
  private:
   /// ends the run there, for `reason`; true (advance's answer)
-  bool finish(ChainStop reason, const BasicChainState<S>& at, const S& when);
+  bool finish(StopReason reason, const BasicChainState<S>& at, const S& when);
   void record(EventType type, const BasicChainState<S>& at, const ChainVector<S>& vBefore, const S& when);
   double sampleTime(std::size_t index) const;
   template <typename At>

@@ -161,7 +161,7 @@ Trust ChainTrustCheck<S>::finish(const BasicChainRun<S>& run) const {
   // where the shadow itself could not decide a contact, nothing past it is confirmed: a run that
   // went on (deciding what the higher precision could not) is judged there, whatever it counted
   const double shadowEnd = toDouble(m_shadow.tFinal * m_time);
-  if (!passed && m_shadow.stop == ChainStop::Undecided && tFinal > shadowEnd) {
+  if (!passed && m_shadow.stop == StopReason::Undecided && tFinal > shadowEnd) {
     passed = true;
     passedAt = shadowEnd;
     trust.reason = "the shadow run in " + precisionName<H>() + " cannot decide the contact at t = " +
@@ -169,7 +169,7 @@ Trust ChainTrustCheck<S>::finish(const BasicChainRun<S>& run) const {
   }
   // another number of events over the span both ran: judged at the first one without its match
   if (!passed && !capped && m_observed != m_shadow.events.size() &&
-      (run.stop == ChainStop::ContactLimit || run.stop == ChainStop::TimeLimit)) {
+      (run.stop == StopReason::ContactLimit || run.stop == StopReason::TimeLimit)) {
     passed = true;
     passedAt = m_observed > m_shadow.events.size() ? m_firstPastShadow
                                                    : toDouble(m_shadow.events[m_observed].t * m_time);
@@ -179,7 +179,7 @@ Trust ChainTrustCheck<S>::finish(const BasicChainRun<S>& run) const {
   // both ended at the end time with the same events: their final states are the state at a given
   // time, compared directly (the last flight's drift since the last event included)
   double firstError = m_firstError, firstTime = m_firstTime, lastError = m_lastError, lastTime = m_lastTime;
-  if (!passed && !capped && run.stop == ChainStop::TimeLimit && m_shadow.stop == ChainStop::TimeLimit) {
+  if (!passed && !capped && run.stop == StopReason::TimeLimit && m_shadow.stop == StopReason::TimeLimit) {
     const double finalError = difference(run.final.u, run.final.v, m_shadow.final.u, m_shadow.final.v);
     trust.stateError = std::max(trust.stateError, finalError);
     if (finalError > 0 && firstError == 0) {

@@ -18,6 +18,28 @@ std::string_view toString(EventType type) {
   return "unknown";
 }
 
+std::string_view toString(StopReason reason) {
+  switch (reason) {
+    case StopReason::ContactLimit:
+      return "contact-limit";
+    case StopReason::TimeLimit:
+      return "time-limit";
+    case StopReason::NoFurtherContact:
+      return "no-further-contact";
+    case StopReason::SearchLimit:
+      return "search-limit";
+    case StopReason::SearchBudget:
+      return "search-budget";
+    case StopReason::Undecided:
+      return "undecided";
+    case StopReason::Cancelled:
+      return "cancelled";
+    case StopReason::InvalidInput:
+      return "invalid-input";
+  }
+  return "unknown";
+}
+
 std::optional<EventType> parseEventType(std::string_view text) {
   for (EventType type :
        {EventType::Impact, EventType::Grazing, EventType::Stick, EventType::Release}) {

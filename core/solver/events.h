@@ -25,6 +25,27 @@ std::optional<EventType> parseEventType(std::string_view text);
 /// True for the events that are contacts with the stop (all but Release).
 inline bool isContact(EventType type) { return type != EventType::Release; }
 
+/// Why a run ended, for two masses and N.
+enum class StopReason {
+  ContactLimit,      ///< maxContacts reached
+  TimeLimit,         ///< tEnd reached
+  NoFurtherContact,  ///< a resonant (commensurate) flight that stays below the stop for a whole
+                     ///< period: linear forever
+  SearchLimit,       ///< two masses, detuned: no contact within the search horizon
+  SearchBudget,      ///< no contact (or release) decided within the search's horizon and budget
+                     ///< (a chain that is not resonant)
+  Undecided,         ///< a contact the precision cannot decide: a top of the stopped mass within
+                     ///< rounding of the stop (a grazing, a slow impact and a miss all fit), or at
+                     ///< rest there with no force either way, or held there by a force that comes
+                     ///< back to 0 without being seen to change sign; the run ends at that
+                     ///< flight's start (--precision auto goes on in a higher precision)
+  Cancelled,         ///< the stop token was triggered
+  InvalidInput,      ///< two masses: the model or the initial state is unusable (see message)
+};
+/// "contact-limit", "time-limit", "no-further-contact", "search-limit", "search-budget",
+/// "undecided", "cancelled", "invalid-input".
+std::string_view toString(StopReason reason);
+
 /// One event: when, what, and the state just before and just after it.
 template <typename S>
 struct BasicEvent {

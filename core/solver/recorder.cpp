@@ -9,28 +9,6 @@
 
 namespace grazelab::core {
 
-std::string_view toString(StopReason reason) {
-  switch (reason) {
-    case StopReason::ContactLimit:
-      return "contact-limit";
-    case StopReason::TimeLimit:
-      return "time-limit";
-    case StopReason::NoFurtherContact:
-      return "no-further-contact";
-    case StopReason::SearchLimit:
-      return "search-limit";
-    case StopReason::SearchBudget:
-      return "search-budget";
-    case StopReason::Undecided:
-      return "undecided";
-    case StopReason::Cancelled:
-      return "cancelled";
-    case StopReason::InvalidInput:
-      return "invalid-input";
-  }
-  return "unknown";
-}
-
 template <typename S>
 Recorder<S>::Recorder(const Chain<S>& chain, const Scale<S>& scale, const BasicState<S>& initial,
                       const Needs& needs, std::function<void(const BasicEvent<S>&)> onEvent,

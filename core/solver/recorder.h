@@ -88,19 +88,6 @@ struct Cost {
   double maxContactResidual = 0;   ///< max |u2 - gap| at the found contact times [length]
 };
 
-/// Why a run stopped.
-enum class StopReason {
-  ContactLimit,      ///< maxContacts reached
-  TimeLimit,         ///< tEnd reached
-  NoFurtherContact,  ///< a resonant free flight that never reaches the stop (linear forever)
-  SearchLimit,       ///< detuned: no contact within the search horizon
-  SearchBudget,      ///< detuned: the search ran out of its step budget before deciding
-  Undecided,         ///< a contact whose class (touch or crossing) the precision cannot decide,
-                     ///< and the request asked to stop there (to go on in a higher precision)
-  Cancelled,         ///< the stop token was triggered
-  InvalidInput,      ///< the model or the initial state is unusable (see message)
-};
-std::string_view toString(StopReason reason);
 
 /// Everything a run produced, as plain values in physical units.
 template <typename S>

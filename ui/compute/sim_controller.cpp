@@ -121,7 +121,7 @@ bool isWholeRun(const SimUpdate& update) {
   if (!update.runDone || update.chunk) return false;
   if (!update.chains.empty()) {
     return std::none_of(update.chains.begin(), update.chains.end(), [](const auto& series) {
-      return series->run.stop == core::ChainStop::Cancelled;
+      return series->run.stop == core::StopReason::Cancelled;
     });
   }
   return update.result && update.result->stop != core::StopReason::Cancelled &&

@@ -56,23 +56,25 @@ QString modesTable(const core::ChainModes& modes, const core::SpectrumRatios& ra
   return html + QStringLiteral("</table>");
 }
 
-QString stopInWords(core::ChainStop stop) {
+QString stopInWords(core::StopReason stop) {
   switch (stop) {
-    case core::ChainStop::ContactLimit:
+    case core::StopReason::ContactLimit:
       return tr("the contacts asked for");
-    case core::ChainStop::TimeLimit:
+    case core::StopReason::TimeLimit:
       return tr("its end time");
-    case core::ChainStop::NoFurtherContact:
+    case core::StopReason::NoFurtherContact:
       return tr("no further contact (the flight stays below the stop)");
-    case core::ChainStop::Undecided:
+    case core::StopReason::Undecided:
       return tr(
           "undecided: a contact within the rounding of binary128 too (a top of the stopped mass "
           "at the stop, or at rest there with no force either way)");
-    case core::ChainStop::SearchBudget:
+    case core::StopReason::SearchBudget:
       return tr("the contact search's budget: no contact decided within 1000 of the slowest "
                 "periods (not commensurate: no period bounds the next one)");
-    case core::ChainStop::Cancelled:
+    case core::StopReason::Cancelled:
       return tr("cancelled");
+    case core::StopReason::SearchLimit:    // (two masses only)
+    case core::StopReason::InvalidInput: break;
   }
   return {};
 }
@@ -173,7 +175,7 @@ QString chainStatusOf(const core::experiments::ChainSeries& series) {
   };
   const double drift =
       std::abs(run.energyFinal - run.energyInitial) / std::max(std::abs(run.energyInitial), 1e-300);
-  if (run.contacts == 0 && run.stop == core::ChainStop::SearchBudget) {
+  if (run.contacts == 0 && run.stop == core::StopReason::SearchBudget) {
     // ("0 contacts until t = 0, ended by the search's budget" read as a run that never began)
     return tr("%1: no contact of the stopped mass in its first 1000 slowest periods (a chain with no "
               "common period: nothing bounds when it comes back; a search goes no further)")

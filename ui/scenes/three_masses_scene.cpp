@@ -217,7 +217,7 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
       figure.yMin = 0;
       figure.yMax = 3.1;
     }
-    if (detuned.run.stop == core::ChainStop::SearchBudget) {
+    if (detuned.run.stop == core::StopReason::SearchBudget) {
       // its last flight never came back within the search's 1000 slowest periods: say so,
       // rather than let the chart end as if the run had
       const std::size_t flights = figure.curve.size() + figure.markers.size();

@@ -90,32 +90,20 @@ V eventValue(const ColumnNames& names, const core::BasicChainEvent<S>& event) {
   return V::object(std::move(fields));
 }
 
-std::string stopName(core::ChainStop stop) {
-  switch (stop) {
-    case core::ChainStop::ContactLimit: return "contact-limit";
-    case core::ChainStop::TimeLimit: return "time-limit";
-    case core::ChainStop::NoFurtherContact: return "no-further-contact";
-    case core::ChainStop::Undecided: return "undecided";
-    case core::ChainStop::SearchBudget: return "search-budget";
-    case core::ChainStop::Cancelled: return "cancelled";
-  }
-  return "unknown";
-}
-
 // `widest`: the run is in binary128, the last precision there is to raise it to
-std::string stopMessage(core::ChainStop stop, bool widest) {
+std::string stopMessage(core::StopReason stop, bool widest) {
   switch (stop) {
-    case core::ChainStop::NoFurtherContact:
+    case core::StopReason::NoFurtherContact:
       return "the frequencies are commensurate and the flight stays below the stop for a whole period: "
              "linear forever";
-    case core::ChainStop::Undecided:
+    case core::StopReason::Undecided:
       return "a contact the precision cannot decide: the stopped mass's top comes within rounding of the stop "
              "(a grazing, a slow impact and a miss all fit; the run ends at that flight's start), or it rests "
              "there with no force either way (or, held there, its force comes back to zero without a change of "
              "sign it can see)" +
              std::string(widest ? ": binary128, the widest precision, cannot decide it either"
                                 : ": --precision auto raises the run until it is decided");
-    case core::ChainStop::SearchBudget:
+    case core::StopReason::SearchBudget:
       return "no contact (or release) was decided within 1000 slowest periods: the frequencies are not "
              "commensurate (give --t-end to search longer)";
     default: return "";
@@ -303,7 +291,7 @@ V runDocument(const core::BasicReadyChain<S>& ready, const ChainRunIn<S>& in, V 
        {"initial", V::object({{"description", V::of(in.description)}, {"state", stateValue(names, S(0), in.start.state)}})},
        {"events", keptEvents ? V::array(std::move(events)) : V::null()},
        {"final", stateValue(names, run.tFinal, run.final)},
-       {"stop_reason", V::of(stopName(run.stop))},
+       {"stop_reason", V::of(std::string(core::toString(run.stop)))},
        {"message", message.empty() ? V::null() : V::of(message)},
        {"contacts", V::object({{"total", V::of(std::int64_t(run.contacts))},
                                {"impacts", V::of(std::int64_t(run.impacts))},
@@ -368,7 +356,7 @@ std::string summaryText(const core::BasicReadyChain<S>& ready, const ChainRunIn<
           std::to_string(run.grazings) + ", sticks " + std::to_string(run.sticks) + "; releases " +
           std::to_string(run.releases) + ")\n";
   const std::string message = stopMessage(run.stop, std::is_same_v<S, core::Quad>);
-  text += "stopped        " + stopName(run.stop) + " at t = " + core::formatScalar(run.tFinal) +
+  text += "stopped        " + std::string(core::toString(run.stop)) + " at t = " + core::formatScalar(run.tFinal) +
           (message.empty() ? std::string() : " (" + message + ")") + "\n";
   char line[200];
   std::snprintf(line, sizeof line, "wall time      %.4g s (%.4g contacts/s)\n", seconds,
@@ -530,11 +518,11 @@ int runChainSimulate(const PreparedMassChain& chain, const OptionValues& options
     const ChainRunIn<S> in{*start, {}, core::runChain(*ready, *start, contacts, *limit, stop, sink), *limit, {}, false,
                            std::nullopt};
     std::fflush(io.out);
-    if (in.run.stop == core::ChainStop::Cancelled) {
+    if (in.run.stop == core::StopReason::Cancelled) {
       if (format == ChainFormat::Csv) error = QStringLiteral("the %1 events before it are written").arg(written);
       return kExitInterrupted;
     }
-    if (!last && in.run.stop == core::ChainStop::Undecided) {
+    if (!last && in.run.stop == core::StopReason::Undecided) {
       escalate(name, next, core::toDouble(in.run.tFinal));
       return std::nullopt;
     }
@@ -564,8 +552,8 @@ int runChainSimulate(const PreparedMassChain& chain, const OptionValues& options
     if (!ready) return kExitInvalidInput;
     const auto in = runIn<S>(options, chain, contacts, tEnd, stop, error, keepEvents, *trustMode);
     if (!in) return kExitInvalidInput;
-    if (in->run.stop == core::ChainStop::Cancelled) return kExitInterrupted;
-    if (!last && in->run.stop == core::ChainStop::Undecided) {
+    if (in->run.stop == core::StopReason::Cancelled) return kExitInterrupted;
+    if (!last && in->run.stop == core::StopReason::Undecided) {
       escalate(name, next, core::toDouble(in->run.tFinal));
       return std::nullopt;
     }

@@ -72,7 +72,7 @@ TEST(ChainSeries, AGloStartGivenByItsWeightsKeepsItsStillModes) {
   spec.gloWeights.clear();
   const ChainSeries alone = chainSeries(spec);
   EXPECT_NE(alone.precision, Precision::Double);
-  if (alone.run.stop == ChainStop::Undecided) EXPECT_EQ(alone.run.contacts, 0);
+  if (alone.run.stop == StopReason::Undecided) EXPECT_EQ(alone.run.contacts, 0);
   else EXPECT_EQ(alone.run.grazings, 30);
 }
 
@@ -136,7 +136,7 @@ TEST(ChainSeries, ARunWithoutContactsStillDrawsItsMotionAndFreeIgnoresTheStop) {
   start.v[3] -= 0.05;
   const ChainSeriesSpec spec{chain, start, 5, 30.0, 300, 0, TrustMode::Off};
   const ChainSeries series = chainSeries(spec);
-  ASSERT_EQ(series.run.stop, ChainStop::SearchBudget);
+  ASSERT_EQ(series.run.stop, StopReason::SearchBudget);
   EXPECT_EQ(series.run.contacts, 0);
   ASSERT_EQ(series.grid.size(), 300u);
   EXPECT_EQ(series.grid.back().t, 30.0);
@@ -259,17 +259,17 @@ TEST(ChainSeries, AContactDoubleCannotDecideIsRunAgainInAHigherPrecision) {
   chain.springs = {1.0, 0.5};
   ChainState start{Eigen::Vector2d(std::nextafter(1.0, 2.0), 1.0), Eigen::Vector2d::Zero()};
   const ChainRun inDoubleAlone = runChain(chain, start, 3);
-  ASSERT_EQ(inDoubleAlone.stop, ChainStop::Undecided);
+  ASSERT_EQ(inDoubleAlone.stop, StopReason::Undecided);
   const ChainSeriesSpec spec{chain, start, 3, 10.0, 200, 0, TrustMode::Auto};
   const ChainSeries series = chainSeries(spec);
   ASSERT_NE(series.precision, Precision::Double);
   // said where the precision below ended, undecided
   const BasicChainRun<long double> inLong = runChain(
       chainCast<long double>(chain), BasicChainState<long double>{start.u.cast<long double>(), start.v.cast<long double>()}, 3);
-  const bool longDecides = inLong.stop != ChainStop::Undecided;
+  const bool longDecides = inLong.stop != StopReason::Undecided;
   EXPECT_EQ(series.precision, longDecides ? Precision::Long : Precision::Quad);
   EXPECT_EQ(series.undecidedAt, longDecides ? inDoubleAlone.tFinal : double(inLong.tFinal));
-  EXPECT_EQ(series.run.stop, ChainStop::ContactLimit);
+  EXPECT_EQ(series.run.stop, StopReason::ContactLimit);
   EXPECT_EQ(series.run.contacts, 3);
   // the run is that precision's own run, each number rounded once to double
   const ChainRun expected =
@@ -297,7 +297,7 @@ TEST(ChainSeries, AStopEndsTheSeriesCancelled) {
       },
       1e-12);
   EXPECT_EQ(reports, 2);
-  EXPECT_EQ(series.run.stop, ChainStop::Cancelled);
+  EXPECT_EQ(series.run.stop, StopReason::Cancelled);
 }
 
 }  // namespace

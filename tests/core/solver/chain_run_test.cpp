@@ -169,8 +169,8 @@ TEST(ChainRun, ResonantFlightsReturnByTheirPeriodAndKeepTheEnergy) {
       const ChainState start = randomStart(chain, random);
       if (start.u[chain.size() - 1] > chain.gap) continue;
       const ChainRun run = runChain(chain, start, 300);
-      if (run.stop == ChainStop::NoFurtherContact) continue;
-      ASSERT_EQ(run.stop, ChainStop::ContactLimit);
+      if (run.stop == StopReason::NoFurtherContact) continue;
+      ASSERT_EQ(run.stop, StopReason::ContactLimit);
       for (std::size_t k = 1; k < run.events.size(); ++k) {
         const double flight = run.events[k].t - run.events[k - 1].t;
         if (run.events[k].type == EventType::Release) continue;  // a stuck phase, not a flight
@@ -336,7 +336,7 @@ TEST(ChainRun, AGrazingIsRecordedOnlyWhereItIsExact) {
         const BasicChainRun<long double> inLong =
             runChain(chainCast<long double>(*chain), stateCast<long double>(start), 200, (long double)tEnd);
         expectAPrefixOf(inLong, reference, slowest, what + ", long double");
-        if (inDouble.stop != ChainStop::Undecided) grazingsKept += inDouble.grazings;
+        if (inDouble.stop != StopReason::Undecided) grazingsKept += inDouble.grazings;
       }
     }
   }
@@ -358,7 +358,7 @@ void expectGrazesAtItsOwnPeriod(const MassChain& chain, const std::vector<double
   const S period = ready.dynamics.period / S(repeats);
   ASSERT_GT(period, S(0)) << what;
   const BasicChainRun<S> run = runChain(ready, glo.start(), 50);
-  ASSERT_EQ(run.stop, ChainStop::ContactLimit) << what;
+  ASSERT_EQ(run.stop, StopReason::ContactLimit) << what;
   ASSERT_EQ(run.grazings, 50) << what;
   for (std::size_t k = 0; k < run.events.size(); ++k) {
     const BasicChainEvent<S>& e = run.events[k];
@@ -368,7 +368,7 @@ void expectGrazesAtItsOwnPeriod(const MassChain& chain, const std::vector<double
   // its state alone holds ~1e-17 of the still modes (their amplitudes from P^T M u), which its
   // numbers cannot tell from a motion: undecided, or the same grazings where they round to 0
   const BasicChainRun<S> alone = runChain(ready, glo.state, 50);
-  if (alone.stop == ChainStop::Undecided) {
+  if (alone.stop == StopReason::Undecided) {
     EXPECT_TRUE(alone.events.empty()) << what << ", its state alone";
   } else {
     EXPECT_EQ(alone.grazings, 50) << what << ", its state alone";

@@ -76,14 +76,14 @@ TEST(ChainTrust, ARunThatCannotDecideItsFirstContactIsNotConfirmed) {
   ChainState start = chainGloStart(chain, {0, 0, 0, 1}).state;
   start.v[1] -= 1e-15 * chain.gap * chainModes(chain).omega.minCoeff();
   const ChainRun run = runChain(chain, start, 100000, 346.0);
-  EXPECT_EQ(run.stop, ChainStop::Undecided);
+  EXPECT_EQ(run.stop, StopReason::Undecided);
   EXPECT_EQ(run.events.size(), 0u);
   EXPECT_EQ(run.tFinal, 0.0);
   EXPECT_EQ(run.final.v, start.v);
   // and binary128 decides impacts
   const BasicChainRun<Quad> exact =
       runChain(chainCast<Quad>(chain), BasicChainState<Quad>{start.u.cast<Quad>(), start.v.cast<Quad>()}, 100000, Quad(346));
-  EXPECT_EQ(exact.stop, ChainStop::TimeLimit);
+  EXPECT_EQ(exact.stop, StopReason::TimeLimit);
   EXPECT_GT(exact.impacts, 0);
   EXPECT_EQ(exact.grazings, 0);
 }
@@ -128,13 +128,13 @@ TEST(ChainTrust, AStiffLightMassIsJudgedAtAGivenTimeNotOnlyAtItsEvents) {
   light.masses.back() *= 1e-6;
   const double tEnd = 40;
   const ChainRun run = runChain(light, start, 1000000, tEnd);
-  ASSERT_EQ(run.stop, ChainStop::TimeLimit);
+  ASSERT_EQ(run.stop, StopReason::TimeLimit);
   ASSERT_GT(run.impacts, 1000);
   const Trust trust = chainTrust(light, start, run, 1000000, tEnd, TrustMode::Full);
   const BasicChainRun<Quad> exact = runChain(chainCast<Quad>(light),
                                              BasicChainState<Quad>{start.u.cast<Quad>(), start.v.cast<Quad>()},
                                              1000000, Quad(tEnd));
-  ASSERT_EQ(exact.stop, ChainStop::TimeLimit);
+  ASSERT_EQ(exact.stop, StopReason::TimeLimit);
   double actual = 0;
   for (Eigen::Index i = 0; i < 3; ++i) {
     actual = std::max(actual, std::abs(run.final.u[i] - double(exact.final.u[i])) / light.gap);
