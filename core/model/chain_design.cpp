@@ -51,8 +51,11 @@ T wallDisplacement(const std::vector<R>& masses, const R& lambda, const R& right
   const bool wall = rightRatio > 0;
   T u = wall ? T(rightRatio) * c[0] : T(1);
   T force = wall ? T(-1) : T(0);
-  std::vector<T> du(gradient ? n : 0, T(0));
-  std::vector<T> dForce(gradient ? n : 0, T(0));
+  // reused by the thread's calls: a design tracks thousands of points, and these vectors' malloc
+  // and free took a fifth of its time
+  thread_local std::vector<T> du, dForce;
+  du.assign(gradient ? n : 0, T(0));
+  dForce.assign(gradient ? n : 0, T(0));
   if (gradient && wall) du[0] = T(rightRatio);
   for (std::size_t i = n; i-- > 0;) {
     force += T(lambda * masses[i]) * u;
@@ -63,7 +66,7 @@ T wallDisplacement(const std::vector<R>& masses, const R& lambda, const R& right
     }
     u -= c[i] * force;
   }
-  if (gradient) *gradient = du;
+  if (gradient) gradient->assign(du.begin(), du.end());
   return u;
 }
 
@@ -74,7 +77,7 @@ void target(const BasicScaled<R>& scaled, const std::vector<T>& c, Eigen::Matrix
   const std::size_t n = scaled.masses.size();
   value.resize(Eigen::Index(n));
   if (jacobian) jacobian->resize(Eigen::Index(n), Eigen::Index(n));
-  std::vector<T> gradient;
+  thread_local std::vector<T> gradient;
   for (std::size_t j = 0; j < n; ++j) {
     value[Eigen::Index(j)] = wallDisplacement(scaled.masses, scaled.lambdas[j], scaled.rightRatio, c, jacobian ? &gradient : nullptr);
     if (jacobian) {
@@ -121,10 +124,11 @@ struct Homotopy {
   Complex gamma;
   // H(c, t) = (1 - t) gamma G(c) + t F(c), its Jacobian in c and its derivative in t
   void evaluate(const ComplexVector& c, double t, ComplexVector& h, ComplexMatrix& hc, ComplexVector* ht) const {
-    ComplexVector g, f;
-    ComplexMatrix gc, fc;
+    thread_local ComplexVector g, f;  // (reused: no allocation once sized)
+    thread_local ComplexMatrix gc, fc;
+    thread_local std::vector<Complex> cs;
     start.evaluate(c, g, gc);
-    const std::vector<Complex> cs(c.data(), c.data() + c.size());
+    cs.assign(c.data(), c.data() + c.size());
     target(scaled, cs, f, &fc);
     h = (1 - t) * gamma * g + t * f;
     hc = (1 - t) * gamma * gc + t * fc;
@@ -132,10 +136,11 @@ struct Homotopy {
   }
   // dc/dt on the path through (c, t)
   std::optional<ComplexVector> tangent(const ComplexVector& c, double t) const {
-    ComplexVector h, ht;
-    ComplexMatrix hc;
+    thread_local ComplexVector h, ht;
+    thread_local ComplexMatrix hc;
+    thread_local Eigen::PartialPivLU<ComplexMatrix> lu;
     evaluate(c, t, h, hc, &ht);
-    const Eigen::PartialPivLU<ComplexMatrix> lu(hc);
+    lu.compute(hc);
     ComplexVector dc = -lu.solve(ht);
     if (!dc.allFinite()) return std::nullopt;
     return dc;
@@ -171,10 +176,11 @@ TrackedPath track(const Homotopy& homotopy, ComplexVector c) {
       const double scale = 1 + next.norm();
       double previous = std::numeric_limits<double>::infinity();
       for (int newton = 0; newton < 4; ++newton) {
-        ComplexVector value;
-        ComplexMatrix jacobian;
+        thread_local ComplexVector value;
+        thread_local ComplexMatrix jacobian;
+        thread_local Eigen::PartialPivLU<ComplexMatrix> lu;
         homotopy.evaluate(next, t + h, value, jacobian, nullptr);
-        const ComplexVector delta = Eigen::PartialPivLU<ComplexMatrix>(jacobian).solve(value);
+        const ComplexVector delta = lu.compute(jacobian).solve(value);
         if (!delta.allFinite()) break;
         const double size = delta.norm();
         // the first correction must be small against the point and each next one contract
