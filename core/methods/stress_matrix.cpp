@@ -179,35 +179,37 @@ std::vector<StressCase> stressCases(bool quick) {
 namespace {
 
 // A row of the chain matrix: `chain` from `start` over kCasePeriods of its slowest periods, or
-// refused with why it cannot be formed.
-StressCase chainCase(std::string name, std::string description, const MassChain& chain, const ChainState& start) {
+// refused with why it cannot be formed. (A start's still modes are those of the chain given: a
+// variant with other springs or masses has other modes, and its start none.)
+StressCase chainCase(std::string name, std::string description, const MassChain& chain, const ChainStart& start) {
   StressCase row{std::move(name), std::move(description), std::nullopt, {}, {}, {}, 0};
   if (const auto problems = validate(chain); !problems.empty()) {
     row.problem = describe(problems);
     return row;
   }
   const Eigen::Index s = chain.stopped() - 1;
-  if (!(start.u[s] <= chain.gap)) {
+  if (!(start.state.u[s] <= chain.gap)) {
     row.problem = "its start is past the stop (u" + std::to_string(s + 1) + " > d)";
     return row;
   }
-  ChainTask task = prepared(ChainTask{chain, start, 0, {}, {}});
+  ChainTask task = prepared(ChainTask{chain, start.state, 0, {}, start.stillModes});
   task.tEnd = kCasePeriods * twoPi<double>() / task.prepared->slowest;
   row.task = std::move(task);
   return row;
 }
 
-// The chain with every length times `factor`: the gap and the start (the motion the same, scaled).
-StressCase scaledCase(const MassChain& chain, const ChainState& start, double factor) {
+// The chain with every length times `factor`: the gap and the start (the motion the same, scaled,
+// its modes the same).
+StressCase scaledCase(const MassChain& chain, const ChainStart& start, double factor) {
   MassChain scaled = chain;
   scaled.gap *= factor;
   return chainCase("gap-" + number(factor), "every length times " + number(factor) + " (the gap and the start)",
-                   scaled, {start.u * factor, start.v * factor});
+                   scaled, ChainStart{{start.state.u * factor, start.state.v * factor}, start.stillModes});
 }
 
 }  // namespace
 
-std::vector<StressCase> chainStressCases(const MassChain& chain, const ChainState& start,
+std::vector<StressCase> chainStressCases(const MassChain& chain, const ChainStart& start,
                                          const std::vector<double>& gloWeights, bool quick) {
   std::vector<StressCase> cases;
   const int n = chain.size();
@@ -221,7 +223,7 @@ std::vector<StressCase> chainStressCases(const MassChain& chain, const ChainStat
     light.masses[std::size_t(s)] *= factor;
     cases.push_back(chainCase("stopped-mass-x" + number(factor),
                               "the stopped mass " + number(1 / factor) + " times lighter (springs as given: stiff)",
-                              light, start));
+                              light, start.state));
   }
   const std::size_t spring = n >= 2 ? 1 : 0;
   for (double factor : quick ? std::vector<double>{1e6} : std::vector<double>{1e6, 1e-6}) {
@@ -229,7 +231,7 @@ std::vector<StressCase> chainStressCases(const MassChain& chain, const ChainStat
     detuned.springs[spring] *= factor;
     cases.push_back(chainCase("spring-" + std::to_string(spring + 1) + "-x" + number(factor),
                               "k" + std::to_string(spring + 1) + " times " + number(factor) + " (frequencies far apart)",
-                              detuned, start));
+                              detuned, start.state));
   }
   for (double factor : quick ? std::vector<double>{1e12} : std::vector<double>{1e-12, 1e12}) {
     cases.push_back(scaledCase(chain, start, factor));

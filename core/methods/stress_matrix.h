@@ -73,8 +73,9 @@ std::vector<StressCase> stressCases(bool quick);
 /// (empty: the slowest mode that moves the stopped mass alone) pushed off the stop by 1e-15 ...
 /// 1e-3 times d w_N, a right wall added (k = k_1) or taken away, the stop moved to the middle
 /// mass (N >= 3). A variant whose start is past its stop, or whose weights make no grazing orbit,
-/// is a row refused with its reason. `quick`: one of each.
-std::vector<StressCase> chainStressCases(const MassChain& chain, const ChainState& start,
+/// is a row refused with its reason. `quick`: one of each. The start's still modes (a GLO start's
+/// weights 0) hold for the chain given and its scaled copies, whose modes they are.
+std::vector<StressCase> chainStressCases(const MassChain& chain, const ChainStart& start,
                                          const std::vector<double>& gloWeights, bool quick);
 
 /// The standard setting of each method in the matrix, for a problem of slow period T2 and

@@ -202,9 +202,9 @@ Trust startTrust(const Task& task, std::stop_token stop) {
 }
 
 Trust startTrust(const ChainTask& task, std::stop_token stop) {
-  const ChainRun run = runChain(task.chain, task.start, std::numeric_limits<long>::max(), task.tEnd, stop);
-  return chainTrust(task.chain, task.start, run, std::numeric_limits<long>::max(), task.tEnd,
-                    TrustMode::Full, stop);
+  const ChainStart start{task.start, task.stillModes};
+  const ChainRun run = runChain(task.chain, start, std::numeric_limits<long>::max(), task.tEnd, stop);
+  return chainTrust(task.chain, start, run, std::numeric_limits<long>::max(), task.tEnd, TrustMode::Full, stop);
 }
 
 namespace {

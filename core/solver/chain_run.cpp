@@ -223,6 +223,8 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
   const long pieceEnd = m_maxContacts - m_run.contacts > contactBudget ? m_run.contacts + contactBudget : m_maxContacts;
   while (m_run.contacts < pieceEnd) {
     if (m_stop.stop_requested()) return finish(StopReason::Cancelled, state, t);
+    // m_flight goes on from `state` only into the flight right after its periodic touch
+    const bool flightKept = std::exchange(m_flightKept, false);
     // at rest on the stop, pressed into it (a touch, or the start): held until released
     const BasicStopForce<S> force = stopForce(chain, state);
     const bool onStop = state.u[s] == dynamics.gap && state.v[s] == 0;
@@ -272,7 +274,7 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
       state = reflected;
       continue;
     }
-    if (!std::exchange(m_flightKept, false)) {
+    if (!flightKept) {
       flightInto(dynamics, state, m_flight);
       if (!m_anyEvent) {
         // the start's first flight: the modes it names still are exactly 0, not P^T M u's roundings

@@ -62,7 +62,7 @@ std::optional<std::vector<core::methods::StressCase>> chainCases(const QCommandL
   if (options.isSet("glo-weights")) {
     for (const QString& part : options.value("glo-weights").split(',')) weights.push_back(part.toDouble());
   }
-  return core::methods::chainStressCases(chain, start->state, weights, quick);
+  return core::methods::chainStressCases(chain, *start, weights, quick);
 }
 
 }  // namespace

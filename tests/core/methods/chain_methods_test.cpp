@@ -10,8 +10,11 @@
 #include <string>
 
 #include "core/methods/compare.h"
+#include "core/methods/stress_matrix.h"
 #include "core/methods/work_precision.h"
+#include "core/model/chain_design.h"
 #include "core/model/mass_chain.h"
+#include "core/orbits/chain_glo.h"
 #include "core/solver/chain_run.h"
 #include "support/cases.h"
 
@@ -145,6 +148,41 @@ TEST(ChainMethods, TheExactMethodIsTheChainEngine) {
     }
     EXPECT_EQ(exact.steps, engine.contacts);
   }
+}
+
+TEST(ChainMethods, AGlomOfAFastModeIsDecidedByTheExactColumnTheHorizonAndTheMatrix) {
+  // GLOM_1 of a 3:2:1 chain grazes every T/3 when its still modes are kept (issue 47, item 5):
+  // the exact method, the reference, the start's error estimate (the report's horizon) and the
+  // stability matrix's rows of the chain given and its scaled copies keep them too; dropped
+  // anywhere, that part stopped undecided at t = 0 while simulate decided
+  MassChain chain;
+  chain.masses = {1.0, 0.2, 0.05};
+  chain.springs = designSprings(chain.masses, 1.0, {3, 2, 1}).designs.at(0).springs;
+  const ChainGloStart glo = chainGloStart(chain, {1, 0, 0});
+  const double period = chainDynamics(chain).period;
+  // (its end between two returns: at one, the precisions' sums of T/3 may fall on either side)
+  ChainTask task = prepared(ChainTask{chain, glo.state, 10.5 * period, {}, glo.stillModes});
+  const ChainMethodRun exact = runMethod(task, {MethodKind::Exact, 0, Precision::Double});
+  ASSERT_EQ(exact.status, RunStatus::Completed) << exact.reason;
+  EXPECT_EQ(exact.result.grazings, 31);
+  const Trust trust = startTrust(task);
+  EXPECT_EQ(trust.verdict, Verdict::Ok) << trust.reason;
+  EXPECT_GE(trust.shadowEvents, 31);
+  const ComparisonEnd end = comparisonEnd(task);
+  EXPECT_FALSE(end.shortened);
+  EXPECT_EQ(end.tEnd, task.tEnd);
+  const std::vector<StressCase> cases = chainStressCases(chain, glo.start(), {}, true);
+  int decided = 0;
+  for (const StressCase& row : cases) {
+    if (row.name != "given" && row.name.rfind("gap-", 0) != 0) continue;
+    ASSERT_TRUE(row.task) << row.name << ": " << row.problem;
+    const ChainTask& given = std::get<ChainTask>(*row.task);
+    EXPECT_EQ(given.stillModes, glo.stillModes) << row.name;
+    const ChainMethodRun run = runMethod(given, {MethodKind::Exact, 0, Precision::Double});
+    EXPECT_EQ(run.status, RunStatus::Completed) << row.name << ": " << run.reason;
+    ++decided;
+  }
+  EXPECT_EQ(decided, 2);  // quick: the chain given and one scaled copy
 }
 
 TEST(ChainMethods, APreparedTaskRunsTheSameBits) {
