@@ -4,6 +4,7 @@
 
 #include <QApplication>
 #include <QStyleFactory>
+#include <QStyleOptionComplex>
 
 #include <cmath>
 
@@ -29,6 +30,35 @@ int PresentationStyle::pixelMetric(PixelMetric metric, const QStyleOption* optio
     default:
       return size;
   }
+}
+
+// how much wider a spin box's arrows are drawn than the base style draws them (0 at the desk)
+int PresentationStyle::spinArrowsExtra(const QStyleOptionComplex* option, const QWidget* widget) const {
+  if (!(m_scale > 1) || !option) return 0;
+  const QRect up = QProxyStyle::subControlRect(CC_SpinBox, option, SC_SpinBoxUp, widget);
+  return up.isValid() ? int(std::lround(up.width() * (m_scale - 1))) : 0;
+}
+
+QRect PresentationStyle::subControlRect(ComplexControl control, const QStyleOptionComplex* option, SubControl sub,
+                                        const QWidget* widget) const {
+  const QRect rect = QProxyStyle::subControlRect(control, option, sub, widget);
+  if (control != CC_SpinBox) return rect;
+  const int extra = spinArrowsExtra(option, widget);
+  switch (sub) {
+    case SC_SpinBoxUp:
+    case SC_SpinBoxDown: return rect.adjusted(-extra, 0, 0, 0);
+    case SC_SpinBoxEditField: return rect.adjusted(0, 0, -extra, 0);
+    default: return rect;
+  }
+}
+
+QSize PresentationStyle::sizeFromContents(ContentsType type, const QStyleOption* option, const QSize& size,
+                                          const QWidget* widget) const {
+  QSize contents = QProxyStyle::sizeFromContents(type, option, size, widget);
+  if (type == CT_SpinBox) {
+    contents.rwidth() += spinArrowsExtra(qstyleoption_cast<const QStyleOptionComplex*>(option), widget);
+  }
+  return contents;
 }
 
 void installPresentationStyle() {

@@ -22,8 +22,14 @@ class PresentationStyle : public QProxyStyle {
   void setScale(double scale) { m_scale = scale; }
   int pixelMetric(PixelMetric metric, const QStyleOption* option = nullptr,
                   const QWidget* widget = nullptr) const override;
+  /// Spin boxes' arrows as wide as the text is large (the base style draws them a fixed 14 px).
+  QRect subControlRect(ComplexControl control, const QStyleOptionComplex* option, SubControl sub,
+                       const QWidget* widget = nullptr) const override;
+  QSize sizeFromContents(ContentsType type, const QStyleOption* option, const QSize& size,
+                         const QWidget* widget = nullptr) const override;
 
  private:
+  int spinArrowsExtra(const QStyleOptionComplex* option, const QWidget* widget) const;
   double m_scale = 1;
 };
 
