@@ -415,6 +415,40 @@ TEST(ChainRun, AGlomOfAFastModeGrazesAtItsOwnPeriod) {
   EXPECT_GE(tried, int(cases.size()));
 }
 
+TEST(ChainRun, AfterItsStopPeriodAFlightIsItsClosedFormThere) {
+  // u_s's period T/g and the flight after it: the modes that move the stopped mass exactly as they
+  // were, a mode with a node at the stop turned by 2 pi n_j / g as its closed form says, a still
+  // one still. The 3:2:1 chain's mode 2 is given a node at the stop here (P[s][1] = 0), which
+  // no designed chain in the tests has.
+  ChainDynamics dynamics = chainDynamics(designed({1.0, 0.2, 0.05}, {3, 2, 1}));
+  ASSERT_EQ(dynamics.harmonics, (std::vector<int>{3, 2, 1}));
+  dynamics.P(dynamics.stop, 1) = 0;
+  ChainFlight flight;
+  flight.q = Eigen::Vector3d(0.5, 0.3, 0.0);
+  flight.qdot = Eigen::Vector3d(0.0, 0.1, 0.0);
+  EXPECT_EQ(stopRepeats(dynamics, flight), 3);  // mode 1 alone moves the stopped mass
+  const ChainFlight before = flight;
+  EXPECT_TRUE(afterStopPeriod(dynamics, 3, flight));
+  EXPECT_EQ(flight.q[0], before.q[0]);
+  EXPECT_EQ(flight.qdot[0], before.qdot[0]);
+  EXPECT_EQ(flight.q[2], 0.0);
+  EXPECT_EQ(flight.qdot[2], 0.0);
+  const double w = dynamics.omega[1], angle = w * dynamics.period / 3;  // 4 pi / 3
+  EXPECT_NEAR(angle, 4 * std::numbers::pi / 3, 1e-14);
+  EXPECT_NEAR(flight.q[1], before.q[1] * std::cos(angle) + before.qdot[1] / w * std::sin(angle), 1e-15);
+  EXPECT_NEAR(flight.qdot[1], -before.q[1] * w * std::sin(angle) + before.qdot[1] * std::cos(angle), 1e-15);
+  // with every moving mode a whole number of its periods on, nothing turns
+  flight = before;
+  flight.q[1] = flight.qdot[1] = 0;
+  EXPECT_FALSE(afterStopPeriod(dynamics, 3, flight));
+  // every mode moving the stopped mass (g = 1): the flight is its start again, bit for bit
+  const ChainDynamics plain = chainDynamics(designed({1.0, 0.2, 0.05}, {3, 2, 1}));
+  flight = before;
+  EXPECT_EQ(stopRepeats(plain, flight), 1);
+  EXPECT_FALSE(afterStopPeriod(plain, 1, flight));
+  EXPECT_EQ(flight.q, before.q);
+}
+
 TEST(ChainRun, AGlomPushedOffItsModeIsDecidedAsAnyStart) {
   // GLOM_1 of 3:2:1 with the slow mode's velocity pushed by 1e-9: no mode is still any more, every
   // mode moves the stopped mass (g = 1); its events agree with binary128's where double decides
