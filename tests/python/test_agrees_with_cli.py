@@ -524,6 +524,25 @@ def test_glo_starts_and_grazing_sets_of_n_masses(cli_json):
         gl.simulate(glo_weights=[0.5, 0.5])
 
 
+def test_a_fast_mode_glom_grazes_at_its_own_period(cli_json):
+    # GLOM_1 of 3:2:1 (u3 = d cos 3 w0 t) returns after T/3 and GLOM_2 after T/2, decided in double
+    # by simulate and by a prepared chain alike, as by the command line (they were undecided at
+    # t = 0 in every precision)
+    chain = dict(masses=[1, 0.2, 0.05], frequencies=[3, 2, 1])
+    prepared = gl.Chain(**chain)
+    for weights, repeats in (([1, 0, 0], 3), ([0, 1, 0], 2)):
+        run = gl.simulate(**chain, glo_weights=weights, contacts=4)
+        assert run.precision.used == "double"
+        assert list(run.events["type"]) == ["grazing"] * 4
+        period = run.chain.period / repeats
+        assert np.allclose(run.events["t"], period * np.arange(1, 5), rtol=1e-12, atol=0)
+        again = prepared.simulate(glo_weights=weights, contacts=4)
+        assert np.array_equal(again.events["t"], run.events["t"])
+        expected = cli_json("simulate", "--masses=1,0.2,0.05", "--frequencies=3:2:1",
+                            "--glo-weights=" + ",".join(map(str, weights)), "--contacts=4")
+        assert_events_equal(run, expected, columns=[name for name in run.events.dtype.names if name != "type"])
+
+
 def test_the_1ipp_family_of_n_masses(cli, tmp_path):
     # the designed 3:2:1 chain: the same table as the command line's files; the data tend to
     # the grazing limit's GLO; a run from an admissible orbit impacts at T, 2T, 3T
