@@ -307,15 +307,17 @@ assert all(abs(e['t'] - (k + 1) * T) < 1e-12 * T for k, e in enumerate(d['events
 fi
 # a GLOM of a fast mode alone returns to the stop after its own period T/n, in double (it was
 # undecided at t = 0 in every precision); 4:2:1's two fast modes after T/2
-for case in "3:2:1 1,0,0 3" "3:2:1 0,1,0 2" "4:2:1 0.5,0.5,0 2"; do
+for case in "1,0.2,0.05 3:2:1 1,0,0 3" "1,0.2,0.05 3:2:1 0,1,0 2" "1,0.2,0.05 4:2:1 0.5,0.5,0 2" \
+            "1,0.5,0.2,0.05 4:3:2:1 0,1,0,0 3" "1,0.6,0.3,0.1,0.03 5:4:3:2:1 0,0,1,0,0 3" \
+            "1,0.2,0.05 6:4:1 0.5,0.5,0 2"; do
   set -- $case
-  if expect_ok simulate --masses 1,0.2,0.05 --frequencies "$1" --glo-weights "$2" --contacts 4 --precision auto; then
+  if expect_ok simulate --masses "$1" --frequencies "$2" --glo-weights "$3" --contacts 4 --precision auto; then
     python3 -c "
 import json; d=json.load(open('$out'))
-T = d['chain']['period'] / $3
+T = d['chain']['period'] / $4
 assert d['precision']['used'] == 'double', d['precision']
 assert [e['type'] for e in d['events']] == ['grazing'] * 4, d['events']
-assert all(abs(e['t'] - (k + 1) * T) < 1e-12 * T for k, e in enumerate(d['events']))" || fail "GLO $2 of $1"
+assert all(abs(e['t'] - (k + 1) * T) < 1e-12 * T for k, e in enumerate(d['events']))" || fail "GLO $3 of $2"
   fi
 done
 if expect_ok simulate --masses 1,0.2,0.05 --frequencies 3:2:1 --glo-weights 0.5,0.3,0.2 --perturb 0,0,0,0,0,0.01 --contacts 3; then
