@@ -31,16 +31,18 @@ namespace grazelab::ui {
 namespace {
 
 // a range that is never empty, padded by 2 % on each side; a spread below 1e-3 of the plot's
-// scale (round-off around a constant) is shown as flat rather than blown up
-std::pair<double, double> padded(double low, double high, double scale) {
+// scale (round-off around a constant) is shown as flat rather than blown up; an exact constant
+// (one point repeated) in a window `flatWidth` wide, a tenth of the plot's scale (a repeated
+// point at v = 0 was framed by ticks of +-0.00000005 that read as a spread)
+std::pair<double, double> padded(double low, double high, double scale, double flatWidth) {
   if (!(low <= high)) return {-1.0, 1.0};
   double span = high - low;
   const double least = std::max(1e-3 * scale, 1e-12);
   if (span < least) {
     const double middle = 0.5 * (low + high);
-    low = middle - 0.5 * least;
-    high = middle + 0.5 * least;
-    span = least;
+    span = span == 0 ? std::max(least, flatWidth) : least;
+    low = middle - 0.5 * span;
+    high = middle + 0.5 * span;
   }
   return {low - 0.02 * span, high + 0.02 * span};
 }
@@ -520,8 +522,9 @@ QRectF PlotView::wantedRange() {
     const double floored = m_axesIndependent ? scale : std::max(scale, 1e-3 * overall);
     return std::isfinite(floored) && floored > 0 ? floored : 1.0;
   };
-  auto [x0, x1] = padded(xLow, xHigh, usable(scaleX));
-  auto [y0, y1] = padded(yLow, yHigh, usable(scaleY));
+  const auto flatWidth = [&](double scale) { return 0.1 * usable(m_axesIndependent ? scale : overall); };
+  auto [x0, x1] = padded(xLow, xHigh, usable(scaleX), flatWidth(scaleX));
+  auto [y0, y1] = padded(yLow, yHigh, usable(scaleY), flatWidth(scaleY));
   // a marker on the data's edge is drawn whole: room for the largest marker's radius (and its
   // outline) beyond the padding, in pixels of the plot area (the start dot of mass 1 was cut)
   const double radius = largestMarkerRadius();
