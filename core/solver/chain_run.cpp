@@ -135,7 +135,48 @@ std::optional<BasicLeaving<S>> releaseLeaving(const BasicMassChain<S>& chain, co
   return leaving;
 }
 
+// The note's model of a two-mass chain stopped on its second mass with no right wall, when the
+// note's kernel runs it: in 1:2 resonance (the design branch its k2 is nearer), or not
+// commensurate (its springs as given). Nothing otherwise (another ratio: the modal kernel).
+template <typename S>
+std::optional<BasicModel<S>> notesModelOf(const BasicMassChain<S>& chain, const BasicChainDynamics<S>& dynamics) {
+  using std::abs;
+  if (chain.size() != 2 || chain.stopped() != 2 || chain.rightSpring != 0) return std::nullopt;
+  const S& m1 = chain.masses[0];
+  const S& m2 = chain.masses[1];
+  const S& k1 = chain.springs[0];
+  const S& k2 = chain.springs[1];
+  if (dynamics.harmonics.empty()) return BasicModel<S>{m1, m2, k1, k2, chain.gap, std::nullopt};
+  if (dynamics.harmonics != std::vector<int>{2, 1}) return std::nullopt;
+  const auto upper = designedModel(m1, m2, k1, chain.gap, Branch::Upper);
+  const auto lower = designedModel(m1, m2, k1, chain.gap, Branch::Lower);
+  if (!upper || !lower) return std::nullopt;
+  return abs(upper->k2 - k2) <= abs(lower->k2 - k2) ? upper : lower;
+}
+
+template <typename S>
+std::optional<Chain<S>> notesChainOf(const BasicModel<S>& model) {
+  if (!validate(model).empty()) return std::nullopt;
+  return makeChain(model).chain;
+}
+
 }  // namespace
+
+template <typename S>
+BasicReadyChain<S> readyChain(const BasicMassChain<S>& chain, Kernel kernel) {
+  BasicReadyChain<S> ready{chain, chainDynamicsIn<S>(chain), std::nullopt};
+  if (kernel == Kernel::Best) {
+    if (const auto model = notesModelOf(chain, ready.dynamics)) ready.notes = notesChainOf(*model);
+  }
+  return ready;
+}
+
+template <typename S>
+BasicReadyChain<S> readyChain(const BasicModel<S>& model) {
+  BasicMassChain<S> chain{{model.m1, model.m2}, {model.k1, model.k2}, S(0), 2, model.gap};
+  BasicReadyChain<S> ready{chain, chainDynamicsIn<S>(chain), notesChainOf(model)};
+  return ready;
+}
 
 template <typename S>
 BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start,
@@ -150,8 +191,24 @@ BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, con
       m_sink(std::move(sink)),
       m_sampling(std::move(sampling)),
       m_state(start.state),
-      m_stillModes(start.stillModes) {
-  m_run.energyInitial = chainEnergy(m_chain, start.state);
+      m_stillModes(start.stillModes),
+      // a start naming still modes (GLOM_1 alone, say) takes the modal kernel, which keeps them
+      // still; the note's kernel has only the rounded state, which holds 1e-17 of them again
+      m_notes(std::find(start.stillModes.begin(), start.stillModes.end(), true) == start.stillModes.end()
+                  ? chain.notes
+                  : std::nullopt) {
+  if (!m_notes) {
+    m_run.energyInitial = chainEnergy(m_chain, start.state);
+    return;
+  }
+  // the note's kernel, as the note's simulator sets it up (the same scales: the same bits)
+  const BasicState<S> initial = twoMassStateOf(start.state);
+  m_scale = chooseScale(*m_notes, initial);
+  m_scaled.x = m_scale.toScaled(initial);
+  m_stepper.emplace(*m_notes, m_scale.gap);
+  m_at = {ChainVector<S>(2), ChainVector<S>(2)};
+  m_vBefore.resize(2);
+  m_run.energyInitial = physicalEnergy(*m_notes, initial);
 }
 
 template <typename S>
@@ -159,7 +216,7 @@ bool BasicChainSimulator<S>::finish(StopReason reason, const BasicChainState<S>&
   m_run.stop = reason;
   m_run.final = at;
   m_run.tFinal = when;
-  m_run.energyFinal = chainEnergy(m_chain, at);
+  m_run.energyFinal = m_notes ? physicalEnergy(*m_notes, twoMassStateOf(at)) : chainEnergy(m_chain, at);
   m_done = true;
   return true;
 }
@@ -221,6 +278,7 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
   // there as if it had never stopped
   contactBudget = std::max(contactBudget, 1L);
   const long pieceEnd = m_maxContacts - m_run.contacts > contactBudget ? m_run.contacts + contactBudget : m_maxContacts;
+  if (m_stepper) return advanceNotes(pieceEnd);
   while (m_run.contacts < pieceEnd) {
     if (m_stop.stop_requested()) return finish(StopReason::Cancelled, state, t);
     // m_flight goes on from `state` only into the flight right after its periodic touch
@@ -343,6 +401,63 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
   return finish(StopReason::ContactLimit, state, t);
 }
 
+// The note's kernel: its exact stepper moves the scaled state from event to event (a flight or a
+// stuck phase each), as the note's simulator drives it; each event and the end in physical units
+// by the same scales, so the note's chain gives the note's bits. A contact the precision cannot
+// decide ends the run there (Undecided), as the modal kernel's do.
+template <typename S>
+bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
+  const S tauEnd = m_tEnd > 0 ? m_scale.toScaledTime(m_tEnd) : S(std::numeric_limits<double>::infinity());
+  // without an end time the search goes 1000 slow periods, as the modal kernel's
+  const S horizon = m_tEnd > 0 ? S(std::numeric_limits<double>::infinity()) : S(twoPi<S>() * S(1000));
+  const auto physical = [&](const BasicState<S>& scaled) { return chainStateOf(m_scale.toPhysical(scaled)); };
+  // the motion of the stepper's last step, at physical time `from` + offset
+  const auto motionFrom = [&](const S& from) {
+    return [this, from](const S& offset) {
+      return chainStateOf(m_scale.toPhysical(m_stepper->segmentAt(m_scale.toScaledTime(S(from + offset)))));
+    };
+  };
+  while (m_run.contacts < pieceEnd) {
+    if (m_stop.stop_requested()) return finish(StopReason::Cancelled, physical(m_scaled.x), m_t);
+    if (m_scaled.tau >= tauEnd) return finish(StopReason::TimeLimit, physical(m_scaled.x), m_tEnd);
+    const Step<S> step = m_stepper->advance(m_scaled, tauEnd, horizon, m_stop, defaultSearchSteps<S>(), true);
+    const S from = m_t;
+    const S when = m_scale.toPhysicalTime(step.tau);
+    switch (step.kind) {
+      case Step<S>::Kind::Event: {
+        samplePiece(from, when, false, motionFrom(from));
+        // into the vectors reused from event to event (no allocation per contact)
+        const BasicState<S> after = m_scale.toPhysical(step.after);
+        const BasicState<S> before = m_scale.toPhysical(step.before);
+        m_at.u << after.u1, after.u2;
+        m_at.v << after.v1, after.v2;
+        m_vBefore << before.v1, before.v2;
+        record(step.type, m_at, m_vBefore, when);
+        m_t = when;
+        continue;
+      }
+      case Step<S>::Kind::End:
+        samplePiece(from, m_tEnd, true, motionFrom(from));
+        return finish(StopReason::TimeLimit, physical(step.before), m_tEnd);
+      case Step<S>::Kind::NoFurtherContact:
+        samplePiece(from, S(from + m_slowest), true, motionFrom(from));  // one slowest period drawn
+        return finish(StopReason::NoFurtherContact, physical(step.before), m_t);
+      case Step<S>::Kind::SearchLimit:
+      case Step<S>::Kind::SearchBudget:
+        samplePiece(from, when, true, motionFrom(from));  // as far as the search went
+        return finish(StopReason::SearchBudget, physical(step.before), when);
+      case Step<S>::Kind::Undecided:
+        return finish(StopReason::Undecided, physical(m_scaled.x), m_t);
+      case Step<S>::Kind::Cancelled:
+        return finish(StopReason::Cancelled, physical(m_scaled.x), m_t);
+    }
+  }
+  if (m_run.contacts < m_maxContacts) return false;
+  const BasicChainState<S> last = physical(m_scaled.x);
+  samplePiece(m_t, m_t, true, [&](const S&) { return last; });
+  return finish(StopReason::ContactLimit, last, m_t);
+}
+
 template <typename S>
 BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const std::type_identity_t<BasicChainStart<S>>& start,
                           long maxContacts,
@@ -392,6 +507,8 @@ ChainRun inDouble(const BasicChainRun<S>& from) {
   template BasicChainRun<S> runChain<S>(const BasicReadyChain<S>&, const BasicChainStart<S>&, long,                 \
                                         std::type_identity_t<S>, std::stop_token, const ChainEventSink<S>&,         \
                                         const ChainSampling<S>&);                                                   \
+  template BasicReadyChain<S> readyChain<S>(const BasicMassChain<S>&, Kernel);                                      \
+  template BasicReadyChain<S> readyChain<S>(const BasicModel<S>&);                                                     \
   template class BasicChainSimulator<S>;                                                                                 \
   template S chainEnergy<S>(const BasicMassChain<S>&, const BasicChainState<S>&);                                         \
   template ChainRun inDouble<S>(const BasicChainRun<S>&);                                                                 \

@@ -11,9 +11,11 @@
 #include <utility>
 #include <vector>
 
+#include "core/model/chain.h"
 #include "core/model/mass_chain.h"
 #include "core/solver/chain_flight.h"
 #include "core/solver/events.h"
+#include "core/solver/exact_stepper.h"
 
 namespace grazelab::core {
 
@@ -63,15 +65,35 @@ struct ChainSampling {
 /// A usable chain (validate(chain) empty) made ready to run: its numbers and its dynamics (the
 /// modes, exact multiples n_j w0 when commensurate: a binary128 eigensolve), computed once and
 /// shared by every run, shadow run and document of it. Immutable.
+///
+/// Its runs take one of two kernels, the same everywhere else (events, stops, samples, pieces):
+/// the modal one (closed-form flights in the chain's modes, firstContact's certified search), or,
+/// for the note's chain, the note's (`notes`): two masses, the stop on the second, no right wall,
+/// in 1:2 resonance or not commensurate at all, run in the scaled two-mass form by its exact
+/// stepper (closed-form flight, the resonant quartic search, the detuned certified march), which
+/// gives the note's results bit for bit however the chain is written. A start naming modes that
+/// are exactly still (BasicChainStart) is run by the modal kernel, which keeps them still.
 template <typename S>
 struct BasicReadyChain {
   BasicMassChain<S> numbers;
   BasicChainDynamics<S> dynamics;
+  std::optional<Chain<S>> notes;  ///< the note's kernel's chain; empty: the modal kernel
 };
+using ReadyChain = BasicReadyChain<double>;
+
+/// Which kernel a chain's runs take: the note's wherever it applies, or the modal one always (to
+/// compare the two on the note's chain).
+enum class Kernel { Best, Modal };
+
+/// A chain made ready; with Kernel::Best a two-mass chain in 1:2 resonance runs as the note's
+/// chain of the design branch its springs are nearer (the resonance exact, as
+/// chainDynamicsIn takes it), and one not commensurate as the note's chain of those springs.
 template <typename S>
-BasicReadyChain<S> readyChain(const BasicMassChain<S>& chain) {
-  return {chain, chainDynamicsIn<S>(chain)};
-}
+BasicReadyChain<S> readyChain(const BasicMassChain<S>& chain, Kernel kernel = Kernel::Best);
+/// The note's chain given by its model (a usable one: validate(model) empty), ready to run by
+/// the note's kernel; the modal one when the model's ratios are beyond the range of S.
+template <typename S>
+BasicReadyChain<S> readyChain(const BasicModel<S>& model);
 
 /// The energy 1/2 v^T M v + 1/2 u^T K u of a chain's state.
 template <typename S>
@@ -93,6 +115,9 @@ class BasicChainSimulator {
                       std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
                       ChainSampling<std::type_identity_t<S>> sampling = {})
       : BasicChainSimulator(readyChain(chain), start, maxContacts, tEnd, std::move(sink), std::move(sampling)) {}
+  // the note's kernel holds a reference to the simulator's own chain
+  BasicChainSimulator(const BasicChainSimulator&) = delete;
+  BasicChainSimulator& operator=(const BasicChainSimulator&) = delete;
 
   /// Runs until `contactBudget` more contacts were made, the run is over, or `stop` is requested
   /// (then over: StopReason::Cancelled). Returns true when the run is over.
@@ -110,6 +135,8 @@ class BasicChainSimulator {
   /// ends the run there, for `reason`; true (advance's answer)
   bool finish(StopReason reason, const BasicChainState<S>& at, const S& when);
   void record(EventType type, const BasicChainState<S>& at, const ChainVector<S>& vBefore, const S& when);
+  /// advance() by the note's kernel
+  bool advanceNotes(long pieceEnd);
   double sampleTime(std::size_t index) const;
   template <typename At>
   void samplePiece(const S& from, const S& until, bool withEnd, const At& at);
@@ -138,6 +165,12 @@ class BasicChainSimulator {
   BasicChainFlight<S> m_flight;
   BasicChainState<S> m_at;
   ChainVector<S> m_vBefore;
+  // the note's kernel (ReadyChain::notes): its chain, its scales, its stepper on that chain and
+  // where it stands (scaled); unused by the modal kernel
+  std::optional<Chain<S>> m_notes;
+  Scale<S> m_scale;
+  std::optional<ExactStepper<S>> m_stepper;
+  IntegrationState<S> m_scaled;
 };
 using ChainSimulator = BasicChainSimulator<double>;
 

@@ -223,6 +223,25 @@ void ChainRunContacts(benchmark::State& state) {
 }
 BENCHMARK(ChainRunContacts)->Arg(0)->Arg(3)->Arg(10)->Arg(100)->Unit(benchmark::kMillisecond);
 
+// The note's near-grazing run (NearGrazingUpper's start) through the one run of every chain,
+// its events streamed to a sink (nothing kept), items = contacts: Arg(0) by the modal kernel,
+// Arg(1) by the note's kernel that the run picks for this chain (the same events as simulate).
+void NotesChainOneRun(benchmark::State& state) {
+  const core::Model model = testing::resonantChain(0.5);
+  const core::State start = testing::nearGrazingStart(model, 0.5, 0.05);
+  const core::ReadyChain ready = state.range(0) == 0 ? core::readyChain(core::massChainOf(model), core::Kernel::Modal)
+                                                     : core::readyChain(model);
+  const long contacts = 100'000;
+  long seen = 0;
+  const core::ChainEventSink<double> sink = [&](const core::ChainEvent&) { ++seen; };
+  for (auto _ : state) {
+    const core::ChainRun run = core::runChain(ready, core::chainStateOf(start), contacts, 0.0, {}, sink);
+    benchmark::DoNotOptimize(run.final);
+  }
+  state.SetItemsProcessed(seen);
+}
+BENCHMARK(NotesChainOneRun)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 // The explorer's scene "A string of eight masses" as its job computes it: eight equal masses on
 // equal springs, the stop on mass 5, the slowest mode with its top on the stop pushed by 1e-4;
 // 100 contacts with the trace's grid of 1500 points over four slowest periods, no estimate

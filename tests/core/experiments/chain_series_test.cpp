@@ -252,12 +252,15 @@ TEST(ChainSeries, InPiecesTheSameBitsAsAtOnceEachReportAPrefixOfTheRun) {
 }
 
 TEST(ChainSeries, AContactDoubleCannotDecideIsRunAgainInAHigherPrecision) {
-  // mass 1 pressed one ulp past the gap with mass 2 on the stop: the force on mass 2 is within
-  // double's rounding (undecided); long double or binary128 decides it, from the same start
+  // mass 1 pressed one ulp past the gap with mass 2 on the stop (mass 3 beside it at the gap): the
+  // force on mass 2 is within the modal kernel's bound of double's rounding (undecided); long
+  // double or binary128 decides it, from the same start. (On two masses the note's kernel takes
+  // u1 - u2 exactly and decides it in double.)
   MassChain chain;
-  chain.masses = {1.0, 0.5};
-  chain.springs = {1.0, 0.5};
-  ChainState start{Eigen::Vector2d(std::nextafter(1.0, 2.0), 1.0), Eigen::Vector2d::Zero()};
+  chain.masses = {1.0, 0.5, 0.5};
+  chain.springs = {1.0, 0.5, 0.5};
+  chain.stopMass = 2;
+  ChainState start{Eigen::Vector3d(std::nextafter(1.0, 2.0), 1.0, 1.0), Eigen::Vector3d::Zero()};
   const ChainRun inDoubleAlone = runChain(chain, start, 3);
   ASSERT_EQ(inDoubleAlone.stop, StopReason::Undecided);
   const ChainSeriesSpec spec{chain, start, 3, 10.0, 200, 0, TrustMode::Auto};

@@ -54,11 +54,11 @@ long double stopDistance(const ChainDynamics& dynamics, const ChainFlight& fligh
   return f;
 }
 
-TEST(ChainRun, TwoMassesAreTheNotesSolver) {
-  // the note's designed chain: near-grazing starts (60 contacts), and starts pressed on the
-  // stop (a stick at once, its release, the flights after; 20 contacts: these runs are chaotic,
-  // the two solvers' roundings part by 1e-10 after some 25): the same events as the two-mass
-  // solver
+TEST(ChainRun, TwoMassesByTheModalKernelAreTheNotesSolver) {
+  // the note's designed chain run by the modal kernel (two algorithms): near-grazing starts (60
+  // contacts), and starts pressed on the stop (a stick at once, its release, the flights after;
+  // 20 contacts: these runs are chaotic, the two solvers' roundings part by 1e-10 after some 25):
+  // the same events as the two-mass solver
   const auto model = designedModel<double>(1.0, 0.5, 1.0, 1.0, Branch::Upper);
   ASSERT_TRUE(model);
   const MassChain chain{{1.0, 0.5}, {1.0, model->k2}, 0, 0, 1.0};
@@ -72,7 +72,7 @@ TEST(ChainRun, TwoMassesAreTheNotesSolver) {
     request.maxContacts = contacts;
     const Result two = simulate(*model, request);
     ChainState start{Eigen::Vector2d(u1, u2), Eigen::Vector2d(v1, v2)};
-    const ChainRun n = runChain(chain, start, contacts);
+    const ChainRun n = runChain(readyChain(chain, Kernel::Modal), start, contacts);
     ASSERT_EQ(n.contacts, contacts) << u1 << ": " << int(n.stop);
     ASSERT_EQ(n.events.size(), two.events.size()) << u1 << ": " << toString(two.stop) << " " << two.message;
     for (std::size_t k = 0; k < n.events.size(); ++k) {
@@ -82,6 +82,91 @@ TEST(ChainRun, TwoMassesAreTheNotesSolver) {
       EXPECT_NEAR(n.events[k].vAfter, two.events[k].after.v2, 1e-9) << "event " << k;
     }
   }
+}
+
+// The note's chain however it is given to the one run (its model, or its numbers with the 1:2
+// design's springs or detuned ones) is run by the note's kernel: the events, the end and the
+// energies of simulate() to the last bit, in every precision, on chains the note does not name
+// (both branches, other masses, a chain scaled by 2^-40 and 3e7, detuned springs), from starts
+// near grazing, pressed on the stop, on it moving in, and in pieces; with a time limit too.
+template <typename S>
+void expectTheNotesBits(const BasicModel<S>& model, const BasicReadyChain<S>& ready, const BasicState<S>& initial,
+                        long contacts, const S& tEnd, const std::string& label) {
+  ASSERT_TRUE(ready.notes) << label;
+  BasicRequest<S> request;
+  request.initial = initial;
+  request.maxContacts = contacts;
+  request.stopAtUndecided = true;
+  if (tEnd > 0) request.tEnd = tEnd;
+  const BasicResult<S> two = simulate(model, request);
+  BasicChainSimulator<S> simulator(ready, chainStateOf(initial), contacts, tEnd);
+  while (!simulator.advance(7)) {
+  }
+  const BasicChainRun<S>& one = simulator.run();
+  ASSERT_EQ(one.events.size(), two.events.size()) << label << ": " << toString(two.stop) << " / " << toString(one.stop);
+  for (std::size_t k = 0; k < one.events.size(); ++k) {
+    const BasicEvent<S>& e = two.events[k];
+    ASSERT_TRUE(one.events[k].t == e.t && one.events[k].type == e.type) << label << ", event " << k;
+    ASSERT_TRUE(one.events[k].u[0] == e.after.u1 && one.events[k].u[1] == e.after.u2) << label << ", event " << k;
+    ASSERT_TRUE(one.events[k].vBefore[0] == e.before.v1 && one.events[k].vBefore[1] == e.before.v2)
+        << label << ", event " << k;
+    ASSERT_TRUE(one.events[k].vAfter == e.after.v2) << label << ", event " << k;
+  }
+  const StopReason expected = two.stop == StopReason::SearchLimit ? StopReason::SearchBudget : two.stop;
+  EXPECT_EQ(one.stop, expected) << label;
+  EXPECT_TRUE(one.tFinal == two.tFinal) << label;
+  EXPECT_TRUE(twoMassStateOf(one.final) == two.final) << label;
+  EXPECT_TRUE(one.energyInitial == two.initialEnergy) << label;
+}
+
+template <typename S>
+void notesChainsInThePrecision() {
+  const std::vector<std::tuple<double, double, double, double>> starts{
+      {0.5, 0.9, 0.8, 0.6}, {-1.2, 0.95, 0.3, 0.9}, {0.0, 1.0, 0.3, -0.2}, {0.7, 0.99, 0.1, 0.3},
+      {1.5, 1.0, 0.2, 0.0}, {2.5, 1.0, -0.7, 0.0}, {0.5, 1.0, 0.0, 0.3},   {-0.25, 1.0, 0.0, -1e-7}};
+  struct Given {
+    double m1, m2, k1, gap;
+    std::optional<Branch> branch;  ///< none: detuned, k2 = 0.37 k1
+  };
+  for (const Given& given : {Given{1, 0.5, 1, 1, Branch::Upper}, Given{2, 0.3, 1.5, 0.7, Branch::Lower},
+                             Given{1, 0.3, 1, 1, Branch::Upper}, Given{0x1p-40, 0x1p-41, 3e7, 0x1p-40, Branch::Upper},
+                             Given{1, 0.4, 1.2, 1, std::nullopt}}) {
+    const S m1(given.m1), m2(given.m2), k1(given.k1), gap(given.gap);
+    const BasicModel<S> model = given.branch ? *designedModel<S>(m1, m2, k1, gap, *given.branch)
+                                             : BasicModel<S>{m1, m2, k1, S(0.37) * k1, gap, std::nullopt};
+    // the same chain by its numbers: the design branch found from its springs
+    const BasicMassChain<S> numbers{{m1, m2}, {k1, model.k2}, S(0), 0, gap};
+    for (const auto& [u1, u2, v1, v2] : starts) {
+      using std::sqrt;
+      const S length = gap;
+      const S speed = gap * sqrt(k1 / m1);
+      const BasicState<S> initial{S(u1) * length, S(u2) * length, S(v1) * speed, S(v2) * speed};
+      std::ostringstream label;
+      label << toString(precisionOf<S>()) << " m2 " << given.m2 << " start " << u1 << "," << u2;
+      const long contacts = v2 == 0 ? 20 : 60;
+      expectTheNotesBits(model, readyChain(model), initial, contacts, S(0), label.str() + " (model)");
+      expectTheNotesBits(model, readyChain(numbers), initial, contacts, S(0), label.str() + " (numbers)");
+      const S tEnd = S(37.5) / sqrt(k1 / m1);
+      expectTheNotesBits(model, readyChain(model), initial, 1000, tEnd, label.str() + " (time limit)");
+    }
+  }
+}
+
+TEST(ChainRun, TheNotesChainIsRunByTheNotesKernelBitForBit) {
+  notesChainsInThePrecision<double>();
+  notesChainsInThePrecision<long double>();
+  notesChainsInThePrecision<Quad>();
+}
+
+TEST(ChainRun, OtherTwoMassChainsTakeTheModalKernel) {
+  // a 3:1 chain (the note's kernel knows 1:2 and the chains not commensurate), a right wall, the
+  // stop on the first mass: the modal kernel
+  const MassChain threeToOne = designed({1.0, 0.5}, {3, 1});
+  EXPECT_FALSE(readyChain(threeToOne).notes);
+  EXPECT_TRUE(readyChain(designed({1.0, 0.5}, {2, 1})).notes);
+  EXPECT_FALSE(readyChain(MassChain{{1.0, 0.5}, {1.0, 0.37}, 0.2, 0, 1.0}).notes);
+  EXPECT_FALSE(readyChain(MassChain{{1.0, 0.5}, {1.0, 0.37}, 0, 1, 1.0}).notes);
+  EXPECT_FALSE(readyChain(designed({1.0, 0.5}, {2, 1}), Kernel::Modal).notes);
 }
 
 // The springs' force on the stopped mass, straight from the displacements
