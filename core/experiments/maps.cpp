@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/orbits/special_orbits.h"
 #include "core/solver/simulate.h"
 #include "core/solver/trust.h"
@@ -78,7 +78,7 @@ std::optional<Model> pointModel(const MapSpec& spec, const PointValues& values) 
 
 // the start at this point: the base start, its coordinates from the axes, then the push
 template <typename S>
-std::optional<BasicState<S>> pointStart(const MapSpec& spec, const Chain<S>& chain,
+std::optional<BasicState<S>> pointStart(const MapSpec& spec, const TwoMassForm<S>& chain,
                                         const PointValues& values) {
   BasicState<S> state{0, chain.model.gap, 0, 0};
   using Kind = StartSpec<double>::Kind;
@@ -168,7 +168,7 @@ double basePeriod(const Model& given) {
   if (!validate(given).empty()) return kNaN;
   const std::optional<Model> model =
       given.design ? designedModel(given.m1, given.m2, given.k1, given.gap, *given.design) : given;
-  const ChainOrProblem<double> formed = model ? makeChain(*model) : ChainOrProblem<double>{};
+  const TwoMassFormOrProblem<double> formed = model ? makeTwoMassForm(*model) : TwoMassFormOrProblem<double>{};
   return formed.chain ? twoPi<double>() / formed.chain->omegaSlow : kNaN;
 }
 
@@ -213,7 +213,7 @@ template <typename S>
 bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& values,
                     bool stopAtUndecided, std::stop_token stop, PointSummary& summary) {
   const BasicModel<S> model = convertModel<S>(given);
-  const ChainOrProblem<S> formed = makeChain(model);
+  const TwoMassFormOrProblem<S> formed = makeTwoMassForm(model);
   if (!formed.chain) {
     summary = invalidPoint();
     return true;

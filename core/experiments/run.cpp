@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "core/solver/budget.h"
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 
 namespace grazelab::core::experiments {
 
@@ -53,7 +53,7 @@ std::optional<std::pair<Result, Trust>> runRaised(const Spec& spec, bool lastRes
 Update sweepAccuracy(const Spec& spec, Update last, std::stop_token stop,
                      const std::function<void(const Update&)>& report) {
   const AccuracySweep& sweep = *spec.accuracy;
-  const ChainOrProblem<double> formed = makeChain(spec.model);
+  const TwoMassFormOrProblem<double> formed = makeTwoMassForm(spec.model);
   if (!formed.chain) {
     report(last);
     return last;

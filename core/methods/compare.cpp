@@ -150,7 +150,7 @@ Reference makeReference(const Task& task, const WorkBudget& budget, std::stop_to
     reference.run = refusedRun(task, problem);
     return reference;
   }
-  const Chain<double> chain = *makeChain(task.model).chain;
+  const TwoMassForm<double> chain = *makeTwoMassForm(task.model).chain;
   reference.period = twoPi<double>() / chain.omegaSlow;
   reference.positionScale = task.model.gap;
   reference.velocityScale = chain.ratio * chain.omegaSlow * task.model.gap;

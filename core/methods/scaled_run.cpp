@@ -40,7 +40,7 @@ std::string taskProblem(const Task& task) {
     problems.push_back({"t-end", "must be positive and finite (got " + formatNumber(task.tEnd) + ")"});
   }
   if (problems.empty()) {
-    const ChainOrProblem<double> formed = makeChain(task.model);
+    const TwoMassFormOrProblem<double> formed = makeTwoMassForm(task.model);
     if (!formed.chain) problems.push_back({"model", formed.problem});
   }
   return describe(problems);
@@ -100,8 +100,8 @@ ScaledRun<T>::ScaledRun(const T& task, const WorkBudget& budget, std::stop_token
   m_refused = false;
   m_run.result.final = task.start;
   if constexpr (kNotesChain) {
-    m_chain = makeChain(task.model).chain;
-    const Chain<double>& c = *m_chain;
+    m_chain = makeTwoMassForm(task.model).chain;
+    const TwoMassForm<double>& c = *m_chain;
     m_scale = chooseScale(c, task.start);
     m_timeRate = m_scale.omegaSlow;
     m_stiffnessUnit = c.model.m2 * c.omegaSlow * c.omegaSlow;

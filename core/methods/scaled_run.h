@@ -10,7 +10,7 @@
 
 #include "core/methods/method.h"
 #include "core/methods/scaled_system.h"
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/solver/recorder.h"
 
 namespace grazelab::core::methods {
@@ -95,7 +95,7 @@ class ScaledRun {
   std::stop_token m_stop;
   std::chrono::steady_clock::time_point m_started = std::chrono::steady_clock::now();
   // the note's chain
-  std::optional<Chain<double>> m_chain;
+  std::optional<TwoMassForm<double>> m_chain;
   Scale<double> m_scale;
   std::optional<Recorder<double>> m_recorder;
   // any chain

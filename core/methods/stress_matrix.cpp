@@ -34,12 +34,12 @@ StressCase gloCase(std::string name, std::string description, const Model& model
     result.problem = problem;
     return result;
   }
-  const ChainOrProblem<double> formed = makeChain(model);
+  const TwoMassFormOrProblem<double> formed = makeTwoMassForm(model);
   if (!formed.chain) {
     result.problem = formed.problem;
     return result;
   }
-  const Chain<double>& chain = *formed.chain;
+  const TwoMassForm<double>& chain = *formed.chain;
   StartSpec<double> spec;
   spec.kind = StartSpec<double>::Kind::Glo;
   spec.lambda = lambda;
@@ -126,7 +126,7 @@ std::vector<StressCase> stressCases(bool quick) {
   for (double offset : quick ? std::vector<double>{1e-13} : std::vector<double>{1e-4, 1e-7, 1e-10, 1e-13}) {
     for (int sign : {+1, -1}) {
       const Model model = detuned(0.5, kappaForRatio(0.5, 2.0L + sign * (long double)offset));
-      const ChainOrProblem<double> formed = makeChain(model);
+      const TwoMassFormOrProblem<double> formed = makeTwoMassForm(model);
       const std::string ratio = std::string(sign > 0 ? "2+" : "2-") + number(offset);
       const std::string actual =
           formed.chain ? (formed.chain->resonant ? "exactly resonant after rounding"
@@ -154,7 +154,7 @@ std::vector<StressCase> stressCases(bool quick) {
     StressCase sticking{"sticking-start", "on the stop at rest with u1 = 1.5 d: pressed, stuck, released",
                            std::nullopt, {}, {}, {}, 0};
     const Model model = designed(0.5, Branch::Upper);
-    const double period = twoPi<double>() / makeChain(model).chain->omegaSlow;
+    const double period = twoPi<double>() / makeTwoMassForm(model).chain->omegaSlow;
     sticking.task = Task{model, State{1.5, 1, 0, 0}, kCasePeriods * period, {}};
     cases.push_back(sticking);
   }
@@ -504,7 +504,7 @@ CaseHorizon runStressCase(const StressCase& row, const std::vector<MethodKind>& 
   }
   if (const Task* task = std::get_if<Task>(&*row.task)) {
     horizon.tEnd = task->tEnd;
-    horizon.period = twoPi<double>() / makeChain(task->model).chain->omegaSlow;
+    horizon.period = twoPi<double>() / makeTwoMassForm(task->model).chain->omegaSlow;
     if (row.longRunContacts > 0) {
       runLong(row, methods, budget, onCell, longRun, stop);
       return horizon;

@@ -63,7 +63,7 @@ WorkPrecisionPoint measure(const T& task, const BasicReference<R>& reference,
 
 /// The period of a task's slowest mode.
 double slowestPeriod(const Task& task) {
-  return twoPi<double>() / makeChain(task.model).chain->omegaSlow;
+  return twoPi<double>() / makeTwoMassForm(task.model).chain->omegaSlow;
 }
 double slowestPeriod(const ChainTask& task) {
   return twoPi<double>() / (task.prepared ? task.prepared->slowest : chainModes(task.chain).omega.minCoeff());

@@ -6,13 +6,13 @@
 #include <limits>
 #include <numbers>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 
 namespace grazelab::core {
 
 Modes computeModes(const Model& model) {
   Modes modes;
-  const ChainOrProblem<double> formed = makeChain(model);
+  const TwoMassFormOrProblem<double> formed = makeTwoMassForm(model);
   if (!formed.chain) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     modes.omegaFast = modes.omegaSlow = modes.T1 = modes.T2 = nan;
@@ -20,7 +20,7 @@ Modes computeModes(const Model& model) {
     modes.Pinv.setConstant(nan);
     return modes;
   }
-  const Chain<double>& chain = *formed.chain;
+  const TwoMassForm<double>& chain = *formed.chain;
   modes.omegaSlow = chain.omegaSlow;
   modes.omegaFast = chain.ratio * chain.omegaSlow;
   modes.T1 = 2 * std::numbers::pi / modes.omegaFast;

@@ -13,7 +13,7 @@ namespace grazelab::core {
 /// "Labelling" note of docs/model.md): the proofs need w1 = 2 w2, so T2 = 2 T1 and every free
 /// motion of a resonant chain is T2-periodic. Eigen indices are 0-based: P(0, j) is the mass-1 row,
 /// P(1, j) the mass-2 row, column 0 the fast mode, column 1 the slow mode; P(1, j) > 0.
-/// Built from the closed forms of core/model/chain.h (the solver itself works with those).
+/// Built from the closed forms of core/model/two_mass_form.h (the solver itself works with those).
 struct Modes {
   double omegaFast = 0;  ///< w1 [1/time]; exactly 2 * omegaSlow when resonant
   double omegaSlow = 0;  ///< w2 [1/time]

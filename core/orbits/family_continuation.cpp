@@ -41,7 +41,7 @@ struct Evaluation {
 };
 
 template <typename S>
-Evaluation<S> evaluate(const Chain<S>& chain, const Units<S>& units, const Vector3<S>& y, int impacts) {
+Evaluation<S> evaluate(const TwoMassForm<S>& chain, const Units<S>& units, const Vector3<S>& y, int impacts) {
   Evaluation<S> e;
   using std::exp;
   const S energy = units.energy * exp(y[2]);
@@ -99,7 +99,7 @@ std::optional<Vector3<S>> solve(const Eigen::Matrix<S, 2, 3>& jacobian, const Ve
 // or when it converges farther than `reach` from `y`: an orbit that far from the predictor
 // belongs to another family.
 template <typename S>
-std::optional<std::pair<Vector3<S>, Evaluation<S>>> correct(const Chain<S>& chain, const Units<S>& units,
+std::optional<std::pair<Vector3<S>, Evaluation<S>>> correct(const TwoMassForm<S>& chain, const Units<S>& units,
                                                             Vector3<S> y, const Vector3<S>& plane,
                                                             const Vector3<S>& t, int impacts, const S& reach) {
   using std::abs;
@@ -159,7 +159,7 @@ Vector3<S> between(const Vector3<S>& a, const Vector3<S>& b, const S& fraction) 
 // corrected orbits on either side of the last bracket.
 template <typename S, typename Test>
 std::pair<std::optional<PeriodicOrbit<S>>, std::optional<PeriodicOrbit<S>>> locate(
-    const Chain<S>& chain, const Units<S>& units, const Vector3<S>& from, const Vector3<S>& to,
+    const TwoMassForm<S>& chain, const Units<S>& units, const Vector3<S>& from, const Vector3<S>& to,
     const Vector3<S>& t, S step, int impacts, const Test& test, bool signAtFrom, std::stop_token stop,
     std::vector<TraceSample<S>>* met = nullptr) {
   Vector3<S> yLow = from;
@@ -197,7 +197,7 @@ std::pair<std::optional<PeriodicOrbit<S>>, std::optional<PeriodicOrbit<S>>> loca
 // `outside` (no orbit of the family), each trial solved by Newton at fixed energy from the
 // nearest orbit found, down to the precision of S or to where S cannot decide the impacts.
 template <typename S>
-PeriodicOrbit<S> approachInEnergy(const Chain<S>& chain, const Units<S>& units, PeriodicOrbit<S> inside,
+PeriodicOrbit<S> approachInEnergy(const TwoMassForm<S>& chain, const Units<S>& units, PeriodicOrbit<S> inside,
                                   S outside, int impacts, std::stop_token stop) {
   using std::abs;
   const auto onFamily = [&](const S& energy) -> std::optional<PeriodicOrbit<S>> {
@@ -241,7 +241,7 @@ S halfwayDistance(const Units<S>& units, const PeriodicOrbit<S>& orbit) {
 // free motion repeats after T2 = 2 T1; only the pure fast mode after T1), and the one-impact
 // family ends on GLO_lambda* at T2 (Theorem 2.1). The end then is the limit orbit itself.
 template <typename S>
-void nameGrazingEnd(const Chain<S>& chain, int impacts, FamilyEnd<S>& end) {
+void nameGrazingEnd(const TwoMassForm<S>& chain, int impacts, FamilyEnd<S>& end) {
   using std::abs;
   using std::round;
   if (!chain.resonant) return;
@@ -267,7 +267,7 @@ void nameGrazingEnd(const Chain<S>& chain, int impacts, FamilyEnd<S>& end) {
 }
 
 template <typename S>
-ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>& start,
+ContinuedFamily<S> continueFamily(const TwoMassForm<S>& chain, const PeriodicOrbit<S>& start,
                                   int direction, const ContinuationOptions<S>& options,
                                   std::stop_token stop) {
   using std::abs;
@@ -418,8 +418,8 @@ ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>&
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                             \
-  template void nameGrazingEnd<S>(const Chain<S>&, int, FamilyEnd<S>&);                      \
-  template ContinuedFamily<S> continueFamily<S>(const Chain<S>&, const PeriodicOrbit<S>&, int, \
+  template void nameGrazingEnd<S>(const TwoMassForm<S>&, int, FamilyEnd<S>&);                      \
+  template ContinuedFamily<S> continueFamily<S>(const TwoMassForm<S>&, const PeriodicOrbit<S>&, int, \
                                                 const ContinuationOptions<S>&, std::stop_token);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)

@@ -102,12 +102,12 @@ struct ContinuedFamily {
 /// when that is known exactly: a period tending to an odd number of fast periods T1 (GLOM1), or
 /// the one-impact family tending to T2 (GLO_lambda*); `exact` says whether it was.
 template <typename S>
-void nameGrazingEnd(const Chain<S>& chain, int impacts, FamilyEnd<S>& end);
+void nameGrazingEnd(const TwoMassForm<S>& chain, int impacts, FamilyEnd<S>& end);
 
 /// Follows the family through `start` (an admissible k-impact orbit) with its energy first
 /// moving the way of `direction` (+1: up, -1: down), until it ends.
 template <typename S>
-ContinuedFamily<S> continueFamily(const Chain<S>& chain, const PeriodicOrbit<S>& start,
+ContinuedFamily<S> continueFamily(const TwoMassForm<S>& chain, const PeriodicOrbit<S>& start,
                                   int direction, const ContinuationOptions<S>& options,
                                   std::stop_token stop = {});
 

@@ -34,7 +34,7 @@ struct EnergyRange {
 // (between two of its ends) cut where its energy leaves the range (located by bisection in T),
 // each piece a family from its low-energy end, with the special points inside it.
 template <typename S>
-std::vector<ModeFamily<S>> onePeriodicFamilies(const Chain<S>& chain, const OnePeriodicScan<S>& scan,
+std::vector<ModeFamily<S>> onePeriodicFamilies(const TwoMassForm<S>& chain, const OnePeriodicScan<S>& scan,
                                                const EnergyRange<S>& range, std::stop_token stop) {
   using std::abs;
   const auto orbitAt = [&](const S& T) { return onePeriodicOrbitStability(chain, T).orbit; };
@@ -199,7 +199,7 @@ double birthOffsetBound(const ModeFamily<S>& family, const FamilyBifurcation<S>&
 // The flip of a k-impact family that a 2k-impact family's PeriodDoubling end meets: the flip
 // whose orbit is nearest the end's state (within 5 % of the gap and of w2 times the gap).
 template <typename S>
-std::optional<std::pair<int, std::size_t>> flipMet(const Chain<S>& chain, const std::vector<ModeFamily<S>>& families,
+std::optional<std::pair<int, std::size_t>> flipMet(const TwoMassForm<S>& chain, const std::vector<ModeFamily<S>>& families,
                                                    const FamilyEnd<S>& end, int impacts) {
   using std::abs;
   const S d = chain.model.gap;
@@ -225,7 +225,7 @@ std::optional<std::pair<int, std::size_t>> flipMet(const Chain<S>& chain, const 
 }  // namespace
 
 template <typename S>
-ModesAtlas<S> computeModesAtlas(const Chain<S>& chain, int maxImpacts, const S& energyLow,
+ModesAtlas<S> computeModesAtlas(const TwoMassForm<S>& chain, int maxImpacts, const S& energyLow,
                                 const S& energyHigh, std::stop_token stop,
                                 const std::function<void(const ModeFamily<S>&)>& familyDone) {
   ModesAtlas<S> atlas;
@@ -304,7 +304,7 @@ ModesAtlas<S> computeModesAtlas(const Chain<S>& chain, int maxImpacts, const S& 
 }
 
 template <typename S>
-AtlasEnergyRange<S> defaultAtlasEnergyRange(const Chain<S>& chain) {
+AtlasEnergyRange<S> defaultAtlasEnergyRange(const TwoMassForm<S>& chain) {
   const S grazing = physicalEnergy(chain, gloData(chain, lambdaStar(chain)));
   return {grazing / S(100), grazing * S(10000)};
 }
@@ -321,9 +321,9 @@ std::optional<int> impactsOfAtlasOrbit(const ModesAtlas<S>& atlas, const BasicSt
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                  \
-  template AtlasEnergyRange<S> defaultAtlasEnergyRange<S>(const Chain<S>&);                       \
+  template AtlasEnergyRange<S> defaultAtlasEnergyRange<S>(const TwoMassForm<S>&);                       \
   template std::optional<int> impactsOfAtlasOrbit<S>(const ModesAtlas<S>&, const BasicState<S>&); \
-  template ModesAtlas<S> computeModesAtlas<S>(const Chain<S>&, int, const S&, const S&,          \
+  template ModesAtlas<S> computeModesAtlas<S>(const TwoMassForm<S>&, int, const S&, const S&,          \
                                               std::stop_token,                                   \
                                               const std::function<void(const ModeFamily<S>&)>&);
 GRAZELAB_INSTANTIATE(double)

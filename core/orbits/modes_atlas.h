@@ -65,7 +65,7 @@ struct AtlasEnergyRange {
   S high = 0;
 };
 template <typename S>
-AtlasEnergyRange<S> defaultAtlasEnergyRange(const Chain<S>& chain);
+AtlasEnergyRange<S> defaultAtlasEnergyRange(const TwoMassForm<S>& chain);
 
 /// The most impacts per period the atlas follows unless told otherwise.
 inline constexpr int kDefaultAtlasMaxImpacts = 4;
@@ -79,7 +79,7 @@ std::optional<int> impactsOfAtlasOrbit(const ModesAtlas<S>& atlas, const BasicSt
 /// Computes the atlas; `familyDone` is called with each family as it is finished (for a
 /// display that shows them as they come).
 template <typename S>
-ModesAtlas<S> computeModesAtlas(const Chain<S>& chain, int maxImpacts, const S& energyLow,
+ModesAtlas<S> computeModesAtlas(const TwoMassForm<S>& chain, int maxImpacts, const S& energyLow,
                                 const S& energyHigh, std::stop_token stop = {},
                                 const std::function<void(const ModeFamily<S>&)>& familyDone = {});
 

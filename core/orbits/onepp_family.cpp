@@ -26,14 +26,14 @@ OnePeriodicOrbit<double> rounded(const OnePeriodicOrbit<Quad>& orbit) {
 
 }  // namespace
 
-std::vector<OnePeriodicOrbit<double>> onePeriodicFamily(const Chain<double>& chain, std::int64_t count,
+std::vector<OnePeriodicOrbit<double>> onePeriodicFamily(const TwoMassForm<double>& chain, std::int64_t count,
                                                         std::stop_token stop) {
   const double T2 = twoPi<double>() / chain.omegaSlow;
   // each member in binary128 from its (double) period, rounded once: near T2, V ~ (T2 - T) is
   // conditioned like T2 / (T2 - T) in T, and a double evaluation lost up to 1e-4 of it there
   // (an independent 40-digit check at the printed periods); this way every row is right to
   // double precision for the period it prints
-  const ChainOrProblem<Quad> quad = makeChain(convertModel<Quad>(chain.model));
+  const TwoMassFormOrProblem<Quad> quad = makeTwoMassForm(convertModel<Quad>(chain.model));
   if (!quad.chain) return {};
   std::vector<double> periods;
   for (std::int64_t k = 1; k <= count; ++k) periods.push_back(T2 * double(k) / double(count + 1));
@@ -51,7 +51,7 @@ std::vector<OnePeriodicOrbit<double>> onePeriodicFamily(const Chain<double>& cha
   return family;
 }
 
-OnePeriodicOrbit<double> grazingEnd(const Chain<double>& chain) {
+OnePeriodicOrbit<double> grazingEnd(const TwoMassForm<double>& chain) {
   OnePeriodicOrbit<double> end;
   end.T = twoPi<double>() / chain.omegaSlow;
   end.postImpact = gloData(chain, lambdaStar(chain));

@@ -6,7 +6,7 @@
 #include <stop_token>
 #include <vector>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/numbers/scalar.h"
 #include "core/orbits/special_orbits.h"
 
@@ -17,11 +17,11 @@ namespace grazelab::core {
 /// (V -> 0), sorted by T. Periods at a multiple of T1 or T2 (no orbit) are left out. Each
 /// member is computed in binary128 from its double period and rounded once.
 /// A stop ends it early (the members so far).
-std::vector<OnePeriodicOrbit<double>> onePeriodicFamily(const Chain<double>& chain, std::int64_t count,
+std::vector<OnePeriodicOrbit<double>> onePeriodicFamily(const TwoMassForm<double>& chain, std::int64_t count,
                                                         std::stop_token stop = {});
 
 /// The grazing end of the family: T = T2, the GLO_lambda* data (V = 0, u1 of GLO_lambda*) and
 /// its energy; admissible as the family's limit.
-OnePeriodicOrbit<double> grazingEnd(const Chain<double>& chain);
+OnePeriodicOrbit<double> grazingEnd(const TwoMassForm<double>& chain);
 
 }  // namespace grazelab::core

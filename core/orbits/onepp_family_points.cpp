@@ -66,7 +66,7 @@ namespace {
 
 // The 1IPP orbit of period T with its trace, if admissible.
 template <typename S>
-std::optional<PeriodicOrbit<S>> orbitAt(const Chain<S>& chain, const S& T) {
+std::optional<PeriodicOrbit<S>> orbitAt(const TwoMassForm<S>& chain, const S& T) {
   OrbitSearch<S> search = onePeriodicOrbitStability(chain, T);
   return std::move(search.orbit);
 }
@@ -86,7 +86,7 @@ constexpr std::array<S, 2> levels() {
 template <typename S>
 class Scanner {
  public:
-  Scanner(const Chain<S>& chain, std::stop_token stop) : m_chain(chain), m_stop(stop) {}
+  Scanner(const TwoMassForm<S>& chain, std::stop_token stop) : m_chain(chain), m_stop(stop) {}
 
   bool stopped() const { return m_stop.stop_requested(); }
 
@@ -207,14 +207,14 @@ class Scanner {
   }
 
  private:
-  const Chain<S>& m_chain;
+  const TwoMassForm<S>& m_chain;
   std::stop_token m_stop;
 };
 
 }  // namespace
 
 template <typename S>
-OnePeriodicScan<S> scanOnePeriodicFamily(const Chain<S>& chain, int samples, std::stop_token stop) {
+OnePeriodicScan<S> scanOnePeriodicFamily(const TwoMassForm<S>& chain, int samples, std::stop_token stop) {
   using std::pow;
   OnePeriodicScan<S> scan;
   const Scanner<S> scanner(chain, stop);
@@ -307,7 +307,7 @@ OnePeriodicScan<S> scanOnePeriodicFamily(const Chain<S>& chain, int samples, std
 }
 
 template <typename S>
-std::vector<FamilyBifurcation<S>> onePeriodicBifurcations(const Chain<S>& chain, int samples,
+std::vector<FamilyBifurcation<S>> onePeriodicBifurcations(const TwoMassForm<S>& chain, int samples,
                                                           std::stop_token stop) {
   OnePeriodicScan<S> scan = scanOnePeriodicFamily(chain, samples, stop);
   if (!scan.complete) return {};
@@ -315,7 +315,7 @@ std::vector<FamilyBifurcation<S>> onePeriodicBifurcations(const Chain<S>& chain,
 }
 
 template <typename S>
-std::vector<std::array<S, 2>> onePeriodicParts(const Chain<S>& chain, int samples) {
+std::vector<std::array<S, 2>> onePeriodicParts(const TwoMassForm<S>& chain, int samples) {
   const S T2 = twoPi<S>() / chain.omegaSlow;
   std::vector<std::array<S, 2>> parts;
   std::optional<S> first;
@@ -346,7 +346,7 @@ double birthOffsetBound(const FamilyBifurcation<S>& flip, const std::vector<S>& 
 }
 
 template <typename S>
-FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& flip, int impacts,
+FlipSwitch<S> switchAtFlip(const TwoMassForm<S>& chain, const FamilyBifurcation<S>& flip, int impacts,
                            double maxRelativeOffset, std::stop_token stop) {
   using std::abs;
   using std::sqrt;
@@ -436,12 +436,12 @@ FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& fl
   template int sideOfLevel<S>(const PeriodicOrbit<S>&, const S&);                                 \
   template bool traceMayCrossUnseen<S>(const PeriodicOrbit<S>&, const PeriodicOrbit<S>&,          \
                                        const PeriodicOrbit<S>&);                                  \
-  template OnePeriodicScan<S> scanOnePeriodicFamily<S>(const Chain<S>&, int, std::stop_token);    \
-  template std::vector<FamilyBifurcation<S>> onePeriodicBifurcations<S>(const Chain<S>&, int,     \
+  template OnePeriodicScan<S> scanOnePeriodicFamily<S>(const TwoMassForm<S>&, int, std::stop_token);    \
+  template std::vector<FamilyBifurcation<S>> onePeriodicBifurcations<S>(const TwoMassForm<S>&, int,     \
                                                                         std::stop_token);         \
-  template std::vector<std::array<S, 2>> onePeriodicParts<S>(const Chain<S>&, int);             \
+  template std::vector<std::array<S, 2>> onePeriodicParts<S>(const TwoMassForm<S>&, int);             \
   template double birthOffsetBound<S>(const FamilyBifurcation<S>&, const std::vector<S>&);          \
-  template FlipSwitch<S> switchAtFlip<S>(const Chain<S>&, const FamilyBifurcation<S>&, int,       \
+  template FlipSwitch<S> switchAtFlip<S>(const TwoMassForm<S>&, const FamilyBifurcation<S>&, int,       \
                                          double, std::stop_token);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)

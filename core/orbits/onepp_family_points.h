@@ -110,17 +110,17 @@ struct OnePeriodicScan {
   bool complete = false;                           ///< false when stopped
 };
 template <typename S>
-OnePeriodicScan<S> scanOnePeriodicFamily(const Chain<S>& chain, int samples, std::stop_token stop = {});
+OnePeriodicScan<S> scanOnePeriodicFamily(const TwoMassForm<S>& chain, int samples, std::stop_token stop = {});
 
 /// The special points of scanOnePeriodicFamily alone (nothing after a stop).
 template <typename S>
-std::vector<FamilyBifurcation<S>> onePeriodicBifurcations(const Chain<S>& chain, int samples,
+std::vector<FamilyBifurcation<S>> onePeriodicBifurcations(const TwoMassForm<S>& chain, int samples,
                                                           std::stop_token stop = {});
 
 /// The admissible runs of the 1IPP family over (0, T2), sampled at T2 i / (samples + 1): each
 /// as the first and last sampled period of the run (to that resolution; for messages).
 template <typename S>
-std::vector<std::array<S, 2>> onePeriodicParts(const Chain<S>& chain, int samples);
+std::vector<std::array<S, 2>> onePeriodicParts(const TwoMassForm<S>& chain, int samples);
 
 /// Which side of `level` (-2 or +2) the orbit's trace is on: +1 above, -1 below, 0 on it within
 /// the rounding its checks show (parabolic: along an isochronous family the trace stays at 2).
@@ -159,7 +159,7 @@ struct FlipSwitch {
 template <typename S>
 double birthOffsetBound(const FamilyBifurcation<S>& flip, const std::vector<S>& energies);
 template <typename S>
-FlipSwitch<S> switchAtFlip(const Chain<S>& chain, const FamilyBifurcation<S>& flip, int impacts = 1,
+FlipSwitch<S> switchAtFlip(const TwoMassForm<S>& chain, const FamilyBifurcation<S>& flip, int impacts = 1,
                            double maxRelativeOffset = 1e-3, std::stop_token stop = {});
 
 }  // namespace grazelab::core

@@ -21,13 +21,13 @@ Vector4<S> asVector(const BasicState<S>& x) {
 
 // The physical spring constant k2 the solver uses (the design value when designed).
 template <typename S>
-S stiffness2(const Chain<S>& chain) {
+S stiffness2(const TwoMassForm<S>& chain) {
   return chain.kappa * chain.model.k1;
 }
 
 // The vector field of the free flight at x: (v1, v2, a1, a2).
 template <typename S>
-std::array<S, 4> field(const Chain<S>& chain, const BasicState<S>& x) {
+std::array<S, 4> field(const TwoMassForm<S>& chain, const BasicState<S>& x) {
   const BasicModel<S>& m = chain.model;
   const S k2 = stiffness2(chain);
   return {x.v1, x.v2, (-m.k1 * x.u1 + k2 * (x.u2 - x.u1)) / m.m1, k2 * (x.u1 - x.u2) / m.m2};
@@ -35,7 +35,7 @@ std::array<S, 4> field(const Chain<S>& chain, const BasicState<S>& x) {
 
 // Q diag(fast, slow) Q^-1 with Q = [[rhoFast, rhoSlow], [1, 1]] (the mode shapes u1/u2)
 template <typename S>
-std::array<std::array<S, 2>, 2> inModes(const Chain<S>& chain, const S& fast, const S& slow) {
+std::array<std::array<S, 2>, 2> inModes(const TwoMassForm<S>& chain, const S& fast, const S& slow) {
   const S rf = chain.rhoFast;
   const S rs = chain.rhoSlow;
   const S scale = S(1) / (rf - rs);
@@ -46,7 +46,7 @@ std::array<std::array<S, 2>, 2> inModes(const Chain<S>& chain, const S& fast, co
 // Periodicity and symmetry are judged relative to the state's size: the gap for positions and
 // w2 times the gap for speeds (the orbit's own size when it is larger).
 template <typename S>
-std::array<S, 4> stateScales(const Chain<S>& chain, const BasicState<S>& x) {
+std::array<S, 4> stateScales(const TwoMassForm<S>& chain, const BasicState<S>& x) {
   using std::abs;
   const S d = chain.model.gap;
   const S position = std::max({d, abs(x.u1), abs(x.u2)});
@@ -55,7 +55,7 @@ std::array<S, 4> stateScales(const Chain<S>& chain, const BasicState<S>& x) {
 }
 
 template <typename S>
-S relativeDistance(const Chain<S>& chain, const BasicState<S>& a, const BasicState<S>& b) {
+S relativeDistance(const TwoMassForm<S>& chain, const BasicState<S>& a, const BasicState<S>& b) {
   using std::abs;
   const std::array<S, 4> scale = stateScales(chain, a);
   const Vector4<S> x = asVector(a);
@@ -72,7 +72,7 @@ template <typename S>
 struct SecondMassMotion {
   std::array<S, 2> w{}, q{}, r{};
 
-  SecondMassMotion(const Chain<S>& chain, const BasicState<S>& x) {
+  SecondMassMotion(const TwoMassForm<S>& chain, const BasicState<S>& x) {
     const S rf = chain.rhoFast;
     const S rs = chain.rhoSlow;
     const S scale = S(1) / (rf - rs);  // Q = [[rf, rs], [1, 1]], Q^-1 = [[1, -rs], [-1, rf]] / (rf - rs)
@@ -98,7 +98,7 @@ struct SecondMassMotion {
 
 // The infinity norm of m in units of the gap and of w2 times the gap.
 template <typename S>
-S scaledNorm(const Chain<S>& chain, const Matrix4<S>& m) {
+S scaledNorm(const TwoMassForm<S>& chain, const Matrix4<S>& m) {
   using std::abs;
   const std::array<S, 4> unit = {S(1), S(1), chain.omegaSlow, chain.omegaSlow};
   S largest = 0;
@@ -117,7 +117,7 @@ S scaledNorm(const Chain<S>& chain, const Matrix4<S>& m) {
 // sine and cosine each): the rounding they gather over 256 steps only moves a sign change
 // within a few ulps of a zero of v2, and the root itself is solved from exact evaluations.
 template <typename S>
-S flightClearance(const Chain<S>& chain, const BasicState<S>& from, const S& tau) {
+S flightClearance(const TwoMassForm<S>& chain, const BasicState<S>& from, const S& tau) {
   using std::abs;
   using std::cos;
   using std::sin;
@@ -192,7 +192,7 @@ S trivialPairDistance(const Matrix4<S>& m) {
 }  // namespace
 
 template <typename S>
-Matrix4<S> flowMatrix(const Chain<S>& chain, const S& tau) {
+Matrix4<S> flowMatrix(const TwoMassForm<S>& chain, const S& tau) {
   using std::cos;
   using std::sin;
   const S wSlow = chain.omegaSlow;
@@ -215,7 +215,7 @@ Matrix4<S> flowMatrix(const Chain<S>& chain, const S& tau) {
 }
 
 template <typename S>
-Matrix4<S> saltationMatrix(const Chain<S>& chain, const BasicState<S>& before) {
+Matrix4<S> saltationMatrix(const TwoMassForm<S>& chain, const BasicState<S>& before) {
   Matrix4<S> s = Matrix4<S>::Identity();
   const S a2 = stiffness2(chain) * (before.u1 - chain.model.gap) / chain.model.m2;
   s(1, 1) = S(-1);
@@ -225,7 +225,7 @@ Matrix4<S> saltationMatrix(const Chain<S>& chain, const BasicState<S>& before) {
 }
 
 template <typename S>
-std::optional<BasicState<S>> sectionState(const Chain<S>& chain, const S& energy, const S& u1,
+std::optional<BasicState<S>> sectionState(const TwoMassForm<S>& chain, const S& energy, const S& u1,
                                           const S& v1) {
   using std::sqrt;
   const BasicModel<S>& m = chain.model;
@@ -267,7 +267,7 @@ bool stabilityDecided(const PeriodicOrbit<S>& orbit) {
 }
 
 template <typename S>
-PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start, int impacts,
+PeriodicOrbit<S> evaluateOrbit(const TwoMassForm<S>& chain, const BasicState<S>& start, int impacts,
                                const S& closeTolerance) {
   using std::abs;
   using std::sqrt;
@@ -390,7 +390,7 @@ PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start
 }
 
 template <typename S>
-S locatedTraceError(const Chain<S>& chain, const PeriodicOrbit<S>& orbit) {
+S locatedTraceError(const TwoMassForm<S>& chain, const PeriodicOrbit<S>& orbit) {
   using std::abs;
   using std::sqrt;
   const S h = sqrt(epsilon<S>());
@@ -409,7 +409,7 @@ S locatedTraceError(const Chain<S>& chain, const PeriodicOrbit<S>& orbit) {
 }
 
 template <typename S>
-OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, const S& v1,
+OrbitSearch<S> findOrbit(const TwoMassForm<S>& chain, const S& energy, const S& u1, const S& v1,
                          int impacts, std::stop_token stop) {
   using std::abs;
   OrbitSearch<S> search;
@@ -523,7 +523,7 @@ OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, co
 }
 
 template <typename S>
-OrbitSearch<S> onePeriodicOrbitStability(const Chain<S>& chain, const S& T) {
+OrbitSearch<S> onePeriodicOrbitStability(const TwoMassForm<S>& chain, const S& T) {
   OrbitSearch<S> search;
   const OnePeriodicOrbit<S> data = onePeriodicOrbit(chain, T);
   if (!data.admissible) {
@@ -591,19 +591,19 @@ std::string orbitSymmetry(const PeriodicOrbit<S>& orbit, const S& tolerance) {
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                    \
-  template Matrix4<S> flowMatrix<S>(const Chain<S>&, const S&);                                    \
-  template Matrix4<S> saltationMatrix<S>(const Chain<S>&, const BasicState<S>&);                   \
-  template std::optional<BasicState<S>> sectionState<S>(const Chain<S>&, const S&, const S&,       \
+  template Matrix4<S> flowMatrix<S>(const TwoMassForm<S>&, const S&);                                    \
+  template Matrix4<S> saltationMatrix<S>(const TwoMassForm<S>&, const BasicState<S>&);                   \
+  template std::optional<BasicState<S>> sectionState<S>(const TwoMassForm<S>&, const S&, const S&,       \
                                                         const S&);                                 \
   template S defaultCloseTolerance<S>();                                                           \
   template S closeTolerance<S>(const PeriodicOrbit<S>&);                                          \
   template bool stabilityDecided<S>(const PeriodicOrbit<S>&);                                     \
-  template S locatedTraceError<S>(const Chain<S>&, const PeriodicOrbit<S>&);                           \
-  template PeriodicOrbit<S> evaluateOrbit<S>(const Chain<S>&, const BasicState<S>&, int,           \
+  template S locatedTraceError<S>(const TwoMassForm<S>&, const PeriodicOrbit<S>&);                           \
+  template PeriodicOrbit<S> evaluateOrbit<S>(const TwoMassForm<S>&, const BasicState<S>&, int,           \
                                              const S&);                                            \
-  template OrbitSearch<S> findOrbit<S>(const Chain<S>&, const S&, const S&, const S&, int,         \
+  template OrbitSearch<S> findOrbit<S>(const TwoMassForm<S>&, const S&, const S&, const S&, int,         \
                                        std::stop_token);                                           \
-  template OrbitSearch<S> onePeriodicOrbitStability<S>(const Chain<S>&, const S&);                 \
+  template OrbitSearch<S> onePeriodicOrbitStability<S>(const TwoMassForm<S>&, const S&);                 \
   template std::string orbitSymmetry<S>(const PeriodicOrbit<S>&, const S&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)

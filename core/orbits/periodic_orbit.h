@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/numbers/eigen_quad.h"
 #include "core/solver/events.h"
 #include "core/model/state.h"
@@ -35,18 +35,18 @@ using Matrix2 = Eigen::Matrix<S, 2, 2>;
 /// The exact flow matrix of a free flight of duration `tau` [time]: x(tau) = Phi x(0), from the
 /// chain's modes (x = (u1, u2, v1, v2), physical units).
 template <typename S>
-Matrix4<S> flowMatrix(const Chain<S>& chain, const S& tau);
+Matrix4<S> flowMatrix(const TwoMassForm<S>& chain, const S& tau);
 
 /// The saltation matrix of an elastic impact of mass 2 on the guard u2 = gap, arriving in the
 /// state `before` (v2 > 0): I except S[u2][u2] = S[v2][v2] = -1, S[v2][u2] = 2 a2 / v2, with
 /// a2 = k2 (u1 - gap) / m2 the acceleration of mass 2 at the contact.
 template <typename S>
-Matrix4<S> saltationMatrix(const Chain<S>& chain, const BasicState<S>& before);
+Matrix4<S> saltationMatrix(const TwoMassForm<S>& chain, const BasicState<S>& before);
 
 /// The state on H+ (u2 = gap, leaving the stop: v2 <= 0) of energy `energy` with mass 1 at
 /// (u1, v1); nothing when mass 1 and the springs alone hold more than `energy`.
 template <typename S>
-std::optional<BasicState<S>> sectionState(const Chain<S>& chain, const S& energy, const S& u1,
+std::optional<BasicState<S>> sectionState(const TwoMassForm<S>& chain, const S& energy, const S& u1,
                                           const S& v1);
 
 /// Linear stability of a periodic orbit from the trace of its reduced Jacobian DP^k (det 1).
@@ -120,7 +120,7 @@ struct PeriodicOrbit {
 /// exactly `impacts` impacts and nothing else (no grazing, no stick, no contact double cannot
 /// decide), closes to `closeTolerance` (relative), and is not a shorter orbit repeated.
 template <typename S>
-PeriodicOrbit<S> evaluateOrbit(const Chain<S>& chain, const BasicState<S>& start, int impacts,
+PeriodicOrbit<S> evaluateOrbit(const TwoMassForm<S>& chain, const BasicState<S>& start, int impacts,
                                const S& closeTolerance);
 
 /// The tolerance a converged orbit closes to in S: a few hundred ulps of the state's scale.
@@ -165,19 +165,19 @@ struct OrbitSearch {
 /// at least one ulp), from the trace's gradient there (finite differences of sqrt(eps)). Near
 /// a degenerate flip the trace can move by 1e-9 for a state moved by 1e-14.
 template <typename S>
-S locatedTraceError(const Chain<S>& chain, const PeriodicOrbit<S>& orbit);
+S locatedTraceError(const TwoMassForm<S>& chain, const PeriodicOrbit<S>& orbit);
 
 /// A kIPP orbit of energy `energy` near the section point (u1, v1) on H+, by Newton on
 /// P^k(x) - x with the exact Jacobian DP^k - I. Fails with a reason when the energy has no
 /// state there, a step loses the impact sequence, Newton does not converge, the orbit is not
 /// admissible, or a stop is requested.
 template <typename S>
-OrbitSearch<S> findOrbit(const Chain<S>& chain, const S& energy, const S& u1, const S& v1,
+OrbitSearch<S> findOrbit(const TwoMassForm<S>& chain, const S& energy, const S& u1, const S& v1,
                          int impacts, std::stop_token stop = {});
 
 /// The 1IPP orbit of period T (closed-form data, docs/model.md section 5) with its stability.
 template <typename S>
-OrbitSearch<S> onePeriodicOrbitStability(const Chain<S>& chain, const S& T);
+OrbitSearch<S> onePeriodicOrbitStability(const TwoMassForm<S>& chain, const S& T);
 
 /// The symmetry of an orbit under time reversal R(u1, v1) = (u1, -v1) on the section: "A" when
 /// every impact has v1 = 0, "B" when the impacts are mirror images of each other in pairs,

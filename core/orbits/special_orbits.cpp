@@ -13,7 +13,7 @@
 namespace grazelab::core {
 
 template <typename S>
-BasicState<S> glomData(const Chain<S>& chain, Mode mode) {
+BasicState<S> glomData(const TwoMassForm<S>& chain, Mode mode) {
   const S& gap = chain.model.gap;
   return {gap * (mode == Mode::Fast ? chain.rhoFast : chain.rhoSlow), gap, S(0), S(0)};
 }
@@ -40,7 +40,7 @@ std::string describe(GloKind kind) {
 }
 
 template <typename S>
-BasicState<S> gloData(const Chain<S>& chain, const S& lambda) {
+BasicState<S> gloData(const TwoMassForm<S>& chain, const S& lambda) {
   using std::fma;
   const S& gap = chain.model.gap;
   // u2 stays exactly the gap: (1 - l) gap + l gap would round
@@ -60,7 +60,7 @@ BasicState<S> gloData(const Chain<S>& chain, const S& lambda) {
 }
 
 template <typename S>
-S lambdaStar(const Chain<S>& chain) {
+S lambdaStar(const TwoMassForm<S>& chain) {
   // P_2j^2 = 1 / (m1 (rho_j^2 + beta)); lambda* = (P22^2 / w2^2) / (P21^2 / w1^2 + P22^2 / w2^2)
   const S fastWeight = S(1) / ((chain.rhoFast * chain.rhoFast + chain.beta) * chain.ratio * chain.ratio);
   const S slowWeight = S(1) / (chain.rhoSlow * chain.rhoSlow + chain.beta);
@@ -68,7 +68,7 @@ S lambdaStar(const Chain<S>& chain) {
 }
 
 template <typename S>
-OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
+OnePeriodicOrbit<S> onePeriodicOrbit(const TwoMassForm<S>& chain, const S& T) {
   using std::abs;
   using std::cos;
   using std::max;
@@ -145,7 +145,7 @@ OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T) {
 }
 
 namespace {
-Chain<double> chainOf(const Model& model) { return *makeChain(model).chain; }
+TwoMassForm<double> chainOf(const Model& model) { return *makeTwoMassForm(model).chain; }
 }  // namespace
 
 State glomData(const Model& model, const Modes&, Mode mode) { return glomData(chainOf(model), mode); }
@@ -162,7 +162,7 @@ OnePeriodicOrbit<double> onePeriodicOrbit(const Model& model, const Modes&, doub
 }
 
 double onePeriodicLowerEnd(const Model& model, const Modes& modes) {
-  const Chain<double> chain = chainOf(model);
+  const TwoMassForm<double> chain = chainOf(model);
   auto admissible = [&](double T) { return onePeriodicOrbit(chain, T).admissible; };
   const double T2 = modes.T2;
   const double step = T2 / 256;
@@ -177,11 +177,11 @@ double onePeriodicLowerEnd(const Model& model, const Modes& modes) {
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                              \
-  template BasicState<S> glomData<S>(const Chain<S>&, Mode);                 \
+  template BasicState<S> glomData<S>(const TwoMassForm<S>&, Mode);                 \
   template GloKind classifyGlo<S>(const S&);                                 \
-  template BasicState<S> gloData<S>(const Chain<S>&, const S&);              \
-  template S lambdaStar<S>(const Chain<S>&);                                 \
-  template OnePeriodicOrbit<S> onePeriodicOrbit<S>(const Chain<S>&, const S&);
+  template BasicState<S> gloData<S>(const TwoMassForm<S>&, const S&);              \
+  template S lambdaStar<S>(const TwoMassForm<S>&);                                 \
+  template OnePeriodicOrbit<S> onePeriodicOrbit<S>(const TwoMassForm<S>&, const S&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

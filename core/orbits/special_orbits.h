@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/model/linear_modes.h"
 #include "core/model/state.h"
 
@@ -15,7 +15,7 @@ enum class Mode { Fast = 1, Slow = 2 };
 
 /// GLOM_i data on H (docs/model.md section 5): u1 = gap u1/u2 of mode i, u2 = gap, v = 0.
 template <typename S>
-BasicState<S> glomData(const Chain<S>& chain, Mode mode);
+BasicState<S> glomData(const TwoMassForm<S>& chain, Mode mode);
 
 /// What the motion from GLO_lambda data does (Lemma 2.1), decided from lambda itself
 /// (lambda = 4/3 is compared exactly, not with a rounded 4/3).
@@ -34,12 +34,12 @@ std::string describe(GloKind kind);
 /// resonance identity), which puts u1 on the side of the gap that classifyGlo(lambda) says:
 /// u1 <= gap for lambda <= 4/3, u1 > gap beyond, whatever the rounding.
 template <typename S>
-BasicState<S> gloData(const Chain<S>& chain, const S& lambda);
+BasicState<S> gloData(const TwoMassForm<S>& chain, const S& lambda);
 
 /// lambda* = a22 w2^-2 / (a21 w1^-2 + a22 w2^-2), a_kj = m2 P_kj P_2j (Theorem 2.1, Lemma 2.2):
 /// the GLO_lambda that one-impact-per-period orbits tend to as their period tends to T2.
 template <typename S>
-S lambdaStar(const Chain<S>& chain);
+S lambdaStar(const TwoMassForm<S>& chain);
 
 /// Why the closed-form data of a period give no admissible 1IPP orbit.
 enum class OnePeriodicRefusal {
@@ -74,7 +74,7 @@ struct OnePeriodicOrbit {
 /// stays below the stop on (0, T) (checked with the exact contact search: its first contact is
 /// at T).
 template <typename S>
-OnePeriodicOrbit<S> onePeriodicOrbit(const Chain<S>& chain, const S& T);
+OnePeriodicOrbit<S> onePeriodicOrbit(const TwoMassForm<S>& chain, const S& T);
 
 // Double-precision conveniences for the explorer (they form the chain themselves).
 State glomData(const Model& model, const Modes& modes, Mode mode);

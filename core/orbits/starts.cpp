@@ -9,7 +9,7 @@
 namespace grazelab::core {
 
 template <typename S>
-StartOrProblem<S> makeStart(const Chain<S>& chain, const StartSpec<S>& spec) {
+StartOrProblem<S> makeStart(const TwoMassForm<S>& chain, const StartSpec<S>& spec) {
   Start<S> start;
   using Kind = typename StartSpec<S>::Kind;
   switch (spec.kind) {
@@ -61,7 +61,7 @@ StartOrProblem<S> makeStart(const Chain<S>& chain, const StartSpec<S>& spec) {
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                \
-  template StartOrProblem<S> makeStart<S>(const Chain<S>&, const StartSpec<S>&);
+  template StartOrProblem<S> makeStart<S>(const TwoMassForm<S>&, const StartSpec<S>&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

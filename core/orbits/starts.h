@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/model/model.h"
 #include "core/orbits/special_orbits.h"
 #include "core/model/resonance.h"
@@ -49,7 +49,7 @@ struct StartOrProblem {
 };
 
 template <typename S>
-StartOrProblem<S> makeStart(const Chain<S>& chain, const StartSpec<S>& spec);
+StartOrProblem<S> makeStart(const TwoMassForm<S>& chain, const StartSpec<S>& spec);
 
 /// A state on the section H (u2 = gap) of energy `level` with mass 1 at (u1, v1), mass 2
 /// leaving the stop (v2 <= 0, as after an impact) at the speed the energy leaves it (a start

@@ -155,9 +155,9 @@ std::optional<BasicModel<S>> notesModelOf(const BasicMassChain<S>& chain, const 
 }
 
 template <typename S>
-std::optional<Chain<S>> notesChainOf(const BasicModel<S>& model) {
+std::optional<TwoMassForm<S>> notesChainOf(const BasicModel<S>& model) {
   if (!validate(model).empty()) return std::nullopt;
-  return makeChain(model).chain;
+  return makeTwoMassForm(model).chain;
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/model/mass_chain.h"
 #include "core/solver/chain_flight.h"
 #include "core/solver/events.h"
@@ -77,7 +77,7 @@ template <typename S>
 struct BasicReadyChain {
   BasicMassChain<S> numbers;
   BasicChainDynamics<S> dynamics;
-  std::optional<Chain<S>> notes;  ///< the note's kernel's chain; empty: the modal kernel
+  std::optional<TwoMassForm<S>> notes;  ///< the note's kernel's chain; empty: the modal kernel
 };
 using ReadyChain = BasicReadyChain<double>;
 
@@ -167,7 +167,7 @@ class BasicChainSimulator {
   ChainVector<S> m_vBefore;
   // the note's kernel (ReadyChain::notes): its chain, its scales, its stepper on that chain and
   // where it stands (scaled); unused by the modal kernel
-  std::optional<Chain<S>> m_notes;
+  std::optional<TwoMassForm<S>> m_notes;
   Scale<S> m_scale;
   std::optional<ExactStepper<S>> m_stepper;
   IntegrationState<S> m_scaled;

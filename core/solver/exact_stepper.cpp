@@ -13,7 +13,7 @@ namespace grazelab::core {
 // drifts linearly, about one ulp per flight. The end state is therefore moved back onto the
 // energy level of the flight's start, along the energy gradient with x2 held on the stop.
 template <typename S>
-S restoreEnergy(const Chain<S>& chain, BasicState<S>& state, const S& target) {
+S restoreEnergy(const TwoMassForm<S>& chain, BasicState<S>& state, const S& target) {
   using std::abs;
   const S error = scaledEnergy(chain, state) - target;
   const S gradientU1 = (S(1) + chain.kappa) * state.u1 - chain.kappa * state.u2;
@@ -30,7 +30,7 @@ S restoreEnergy(const Chain<S>& chain, BasicState<S>& state, const S& target) {
 }
 
 template <typename S>
-ExactStepper<S>::ExactStepper(const Chain<S>& chain, const S& scaledGap)
+ExactStepper<S>::ExactStepper(const TwoMassForm<S>& chain, const S& scaledGap)
     : m_chain(chain), m_gap(scaledGap) {}
 
 template <typename S>
@@ -178,7 +178,7 @@ void ExactStepper<S>::segmentOnGrid(const S& first, const S& step, std::span<Bas
 
 #define GRAZELAB_INSTANTIATE(S)  \
   template class ExactStepper<S>; \
-  template S restoreEnergy<S>(const Chain<S>&, BasicState<S>&, const S&);
+  template S restoreEnergy<S>(const TwoMassForm<S>&, BasicState<S>&, const S&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

@@ -6,7 +6,7 @@
 #include <span>
 #include <stop_token>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/solver/contact.h"
 #include "core/solver/events.h"
 #include "core/solver/free_flight.h"
@@ -77,7 +77,7 @@ template <typename S>
 class ExactStepper {
  public:
   /// The chain is held by reference and must outlive the stepper.
-  ExactStepper(const Chain<S>& chain, const S& scaledGap);
+  ExactStepper(const TwoMassForm<S>& chain, const S& scaledGap);
 
   /// Advances `state` to the next event, or to `tauEnd` if it comes first. `searchHorizon`
   /// bounds a detuned flight's search (scaled time), `searchSteps` the steps of its march.
@@ -94,7 +94,7 @@ class ExactStepper {
   void segmentOnGrid(const S& first, const S& step, std::span<BasicState<S>> out) const;
 
  private:
-  const Chain<S>& m_chain;
+  const TwoMassForm<S>& m_chain;
   S m_gap;
   std::optional<Flight<S>> m_flight;
   std::optional<StuckMotion<S>> m_stuck;
@@ -106,6 +106,6 @@ class ExactStepper {
 /// gradient with x2 held: a correction of rounding size. Returns the relative energy error it
 /// removed.
 template <typename S>
-S restoreEnergy(const Chain<S>& chain, BasicState<S>& state, const S& target);
+S restoreEnergy(const TwoMassForm<S>& chain, BasicState<S>& state, const S& target);
 
 }  // namespace grazelab::core

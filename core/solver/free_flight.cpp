@@ -60,7 +60,7 @@ FlightTime<S> FlightTime<S>::nearest(const S& tau) {
 }
 
 template <typename S>
-Flight<S>::Flight(const Chain<S>& chain, const S& gap, const BasicState<S>& start,
+Flight<S>::Flight(const TwoMassForm<S>& chain, const S& gap, const BasicState<S>& start,
                   const S& u1Residual)
     : m_chain(&chain),
       m_gap(gap),
@@ -141,11 +141,11 @@ namespace {
 // d^n x / dtau^n from d^(n-2): x1'' = -(p x1 + q (x1 - x2)), x2'' = w (x1 - x2), the spring
 // stretch kept as one difference. One definition, so that every use rounds alike.
 template <typename S>
-std::array<S, 2> taylorRowOfStretch(const Chain<S>& chain, const S& first, const S& stretch) {
+std::array<S, 2> taylorRowOfStretch(const TwoMassForm<S>& chain, const S& first, const S& stretch) {
   return {-(chain.p * first + chain.q * stretch), chain.w * stretch};
 }
 template <typename S>
-std::array<S, 2> nextTaylorRow(const Chain<S>& chain, const std::array<S, 2>& twoBefore) {
+std::array<S, 2> nextTaylorRow(const TwoMassForm<S>& chain, const std::array<S, 2>& twoBefore) {
   return taylorRowOfStretch(chain, twoBefore[0], S(twoBefore[0] - twoBefore[1]));
 }
 
@@ -170,7 +170,7 @@ void Flight<S>::fillTaylor(const Anchor& anchor) const {
   if (anchor.taylorReady) return;
   Anchor& target = const_cast<Anchor&>(anchor);
   target.taylorReady = true;
-  const Chain<S>& chain = *m_chain;
+  const TwoMassForm<S>& chain = *m_chain;
   auto& d = target.derivatives;
   d[0] = {anchor.state.u1, anchor.state.u2};
   d[1] = {anchor.state.v1, anchor.state.v2};
@@ -258,7 +258,7 @@ BasicState<S> Flight<S>::stateFromPhases(const Anchor& anchor, const std::array<
     dc[j] = anchor.c[j] * cosineMinusOne[j] + anchor.a[j] * sine[j];
     dRate[j] = omega[j] * (-anchor.c[j] * sine[j] + anchor.a[j] * cosineMinusOne[j]);
   }
-  const Chain<S>& chain = *m_chain;
+  const TwoMassForm<S>& chain = *m_chain;
   const S increment1 = chain.rhoFast * dc[0] + chain.rhoSlow * dc[1];
   const S u1 = anchor.state.u1 + increment1;
   if (u1Residual) {

@@ -6,7 +6,7 @@
 #include <span>
 #include <utility>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/numbers/scalar.h"
 #include "core/model/state.h"
 
@@ -45,10 +45,10 @@ class Flight {
   /// Precondition: `start` is a scaled state of `chain`, `gap` the scaled stop delta.
   /// `u1Residual` is exact x1 minus start.u1 (what the start's x1 lost to rounding): the spring
   /// stretch x1 - x2, which sets how a flight from the stop leaves it, uses it.
-  Flight(const Chain<S>& chain, const S& gap, const BasicState<S>& start,
+  Flight(const TwoMassForm<S>& chain, const S& gap, const BasicState<S>& start,
          const S& u1Residual = S(0));
 
-  const Chain<S>& chain() const { return *m_chain; }
+  const TwoMassForm<S>& chain() const { return *m_chain; }
   const BasicState<S>& start() const { return m_start; }
   const S& gapLevel() const { return m_gap; }
   /// True when the flight starts on the contact plane H (x2 == delta exactly).
@@ -124,7 +124,7 @@ class Flight {
                                 const std::array<S, 2>& cosineMinusOne, S* u1Residual) const;
   BasicState<S> taylorAt(const Anchor& anchor, const S& s, S* u1Residual) const;
 
-  const Chain<S>* m_chain;
+  const TwoMassForm<S>* m_chain;
   S m_gap;
   BasicState<S> m_start;
   S m_startU1Residual = 0;

@@ -10,7 +10,7 @@
 namespace grazelab::core {
 
 template <typename S>
-Recorder<S>::Recorder(const Chain<S>& chain, const Scale<S>& scale, const BasicState<S>& initial,
+Recorder<S>::Recorder(const TwoMassForm<S>& chain, const Scale<S>& scale, const BasicState<S>& initial,
                       const Needs& needs, std::function<void(const BasicEvent<S>&)> onEvent,
                       BasicResult<S>& result)
     : m_chain(chain),

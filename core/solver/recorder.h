@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/solver/events.h"
 #include "core/solver/exact_stepper.h"
 
@@ -118,7 +118,7 @@ template <typename S>
 class Recorder {
  public:
   /// `initial` is the scaled start state (its energy is the reference for the drift).
-  Recorder(const Chain<S>& chain, const Scale<S>& scale, const BasicState<S>& initial,
+  Recorder(const TwoMassForm<S>& chain, const Scale<S>& scale, const BasicState<S>& initial,
            const Needs& needs, std::function<void(const BasicEvent<S>&)> onEvent,
            BasicResult<S>& result);
 
@@ -135,7 +135,7 @@ class Recorder {
  private:
   void addSample(double t, const State& state);
 
-  const Chain<S>& m_chain;
+  const TwoMassForm<S>& m_chain;
   Scale<S> m_scale;
   Needs m_needs;
   std::function<void(const BasicEvent<S>&)> m_onEvent;

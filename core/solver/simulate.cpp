@@ -55,7 +55,7 @@ BasicSimulator<S>::BasicSimulator(const BasicModel<S>& model, const BasicRequest
   for (Problem& problem : validateRequest(request)) problems.push_back(std::move(problem));
   m_result.final = request.initial;
   if (problems.empty()) {
-    ChainOrProblem<S> formed = makeChain(model);
+    TwoMassFormOrProblem<S> formed = makeTwoMassForm(model);
     if (!formed.chain) problems.push_back({"model", formed.problem});
     m_chain = std::move(formed.chain);
   }
@@ -65,7 +65,7 @@ BasicSimulator<S>::BasicSimulator(const BasicModel<S>& model, const BasicRequest
     m_done = true;
     return;
   }
-  const Chain<S>& chain = *m_chain;
+  const TwoMassForm<S>& chain = *m_chain;
   m_scale = chooseScale(chain, request.initial);
   m_state.x = m_scale.toScaled(request.initial);
   m_result.initialEnergy = physicalEnergy(chain, request.initial);

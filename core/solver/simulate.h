@@ -7,7 +7,7 @@
 #include <optional>
 #include <stop_token>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/solver/exact_stepper.h"
 #include "core/model/model.h"
 #include "core/solver/recorder.h"
@@ -78,7 +78,7 @@ class BasicSimulator {
   /// Hands over the result (the simulator is done with it).
   BasicResult<S> takeResult() { return std::move(m_result); }
   /// The nondimensional chain (empty for invalid input).
-  const std::optional<Chain<S>>& chain() const { return m_chain; }
+  const std::optional<TwoMassForm<S>>& chain() const { return m_chain; }
   /// Where the run stands (scaled units), and its scales.
   const IntegrationState<S>& state() const { return m_state; }
   const Scale<S>& scale() const { return m_scale; }
@@ -88,7 +88,7 @@ class BasicSimulator {
 
   BasicRequest<S> m_request;
   BasicResult<S> m_result;
-  std::optional<Chain<S>> m_chain;
+  std::optional<TwoMassForm<S>> m_chain;
   Scale<S> m_scale;
   std::optional<ExactStepper<S>> m_stepper;
   std::optional<Recorder<S>> m_recorder;

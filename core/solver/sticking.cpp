@@ -8,7 +8,7 @@
 namespace grazelab::core {
 
 template <typename S>
-StuckMotion<S>::StuckMotion(const Chain<S>& chain, const S& gap, const BasicState<S>& start,
+StuckMotion<S>::StuckMotion(const TwoMassForm<S>& chain, const S& gap, const BasicState<S>& start,
                             const S& u1Residual)
     : m_gap(gap), m_start(start), m_omega(chain.stuckOmega) {
   using std::atan;

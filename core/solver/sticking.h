@@ -2,7 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/model/state.h"
 
 namespace grazelab::core {
@@ -20,7 +20,7 @@ class StuckMotion {
  public:
   /// Precondition: pressedOnStop(start, gap, u1Residual). `u1Residual` is exact x1 minus
   /// start.u1 (a pressing below the rounding of u1 lasts accordingly short).
-  StuckMotion(const Chain<S>& chain, const S& gap, const BasicState<S>& start,
+  StuckMotion(const TwoMassForm<S>& chain, const S& gap, const BasicState<S>& start,
               const S& u1Residual = S(0));
 
   /// State tau after the start of the phase (x2 = delta, y2 = 0 throughout).

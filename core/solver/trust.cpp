@@ -263,7 +263,7 @@ void TrustMonitor<S>::observe(const BasicEvent<S>& event) {
 template <typename S>
 double TrustMonitor<S>::phaseRounding(const BasicResult<S>& primary) const {
   using std::abs;
-  const Chain<H>& chain = *m_shadow->chain();
+  const TwoMassForm<H>& chain = *m_shadow->chain();
   const BasicState<H> x = convertState<H>(primary.final);
   const H dt = H(epsilon<S>()) * (abs(H(primary.tFinal)) + m_period);
   const H w2 = m_omega * m_omega;

@@ -9,7 +9,7 @@
 #include <numbers>
 #include <vector>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/solver/contact.h"
 #include "core/experiments/chain_series.h"
 #include "core/experiments/run.h"
@@ -80,7 +80,7 @@ BENCHMARK(Detuned)->Arg(100'000)->Unit(benchmark::kMillisecond);
 // one contact search from a fixed state: the cost of the quartic path alone
 void NextContactResonant(benchmark::State& state) {
   const core::Model model = testing::resonantChain(0.5);
-  const core::Chain<double> chain = *core::makeChain(model).chain;
+  const core::TwoMassForm<double> chain = *core::makeTwoMassForm(model).chain;
   const core::State start = testing::nearGrazingStart(model, 0.5, 0.05);
   const core::Scale<double> scale = core::chooseScale(chain, start);
   const core::State scaled = scale.toScaled(start);
@@ -97,7 +97,7 @@ BENCHMARK(NextContactResonant);
 // grid by rotation (Flight::statesOnGrid); items are samples.
 void FlightSamples(benchmark::State& state) {
   const core::Model model = testing::resonantChain(0.5);
-  const core::Chain<double> chain = *core::makeChain(model).chain;
+  const core::TwoMassForm<double> chain = *core::makeTwoMassForm(model).chain;
   const core::State start = testing::nearGrazingStart(model, 0.5, 0.05);
   const core::Scale<double> scale = core::chooseScale(chain, start);
   const core::Flight<double> flight(chain, scale.gap, scale.toScaled(start));
@@ -265,7 +265,7 @@ BENCHMARK(EightMassesScene)->Unit(benchmark::kMillisecond);
 // K = 4 under 60 s on two cores).
 template <typename S>
 void OnePeriodicOrbitWithStability(benchmark::State& state) {
-  const core::Chain<S> chain = *core::makeChain(*core::designedModel<S>(S(1), S(0.5), S(1), S(1), core::Branch::Upper)).chain;
+  const core::TwoMassForm<S> chain = *core::makeTwoMassForm(*core::designedModel<S>(S(1), S(0.5), S(1), S(1), core::Branch::Upper)).chain;
   const S T = S(0.8) * core::twoPi<S>() / chain.omegaSlow;
   for (auto _ : state) benchmark::DoNotOptimize(core::onePeriodicOrbitStability(chain, T).orbit->trace);
   state.SetItemsProcessed(state.iterations());
@@ -274,7 +274,7 @@ BENCHMARK(OnePeriodicOrbitWithStability<double>);
 BENCHMARK(OnePeriodicOrbitWithStability<core::Quad>);
 
 void TwoImpactOrbitByNewton(benchmark::State& state) {
-  const core::Chain<double> chain = *core::makeChain(testing::resonantChain(0.5)).chain;
+  const core::TwoMassForm<double> chain = *core::makeTwoMassForm(testing::resonantChain(0.5)).chain;
   for (auto _ : state) {
     benchmark::DoNotOptimize(core::findOrbit(chain, 1.99998, 0.8, 0.05, 2).orbit->period);
   }
@@ -283,7 +283,7 @@ void TwoImpactOrbitByNewton(benchmark::State& state) {
 BENCHMARK(TwoImpactOrbitByNewton);
 
 void ContinueOnePeriodicFamily(benchmark::State& state) {
-  const core::Chain<double> chain = *core::makeChain(testing::resonantChain(0.5)).chain;
+  const core::TwoMassForm<double> chain = *core::makeTwoMassForm(testing::resonantChain(0.5)).chain;
   const double T2 = core::twoPi<double>() / chain.omegaSlow;
   const core::PeriodicOrbit<double> start = *core::onePeriodicOrbitStability(chain, 0.9 * T2).orbit;
   core::ContinuationOptions<double> options;
@@ -299,7 +299,7 @@ void ContinueOnePeriodicFamily(benchmark::State& state) {
 BENCHMARK(ContinueOnePeriodicFamily)->Unit(benchmark::kMillisecond);
 
 void ModesAtlas(benchmark::State& state) {
-  const core::Chain<double> chain = *core::makeChain(testing::resonantChain(0.5)).chain;
+  const core::TwoMassForm<double> chain = *core::makeTwoMassForm(testing::resonantChain(0.5)).chain;
   const double grazing = core::physicalEnergy(chain, core::gloData(chain, core::lambdaStar(chain)));
   for (auto _ : state) {
     const core::ModesAtlas<double> atlas =

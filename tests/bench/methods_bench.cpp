@@ -20,7 +20,7 @@ using core::methods::MethodKind;
 /// The report's default problem over `periods` slow periods.
 core::methods::Task defaultTask(double periods) {
   const core::Model model = testing::resonantChain(0.5);
-  const core::Chain<double> chain = *core::makeChain(model).chain;
+  const core::TwoMassForm<double> chain = *core::makeTwoMassForm(model).chain;
   core::StartSpec<double> spec;
   spec.lambda = 0.5;
   spec.perturbation = core::State{0, 0, 0.05, -0.05};
@@ -49,7 +49,7 @@ void runSetting(benchmark::State& state, const core::methods::Task& task,
 void PerStep(benchmark::State& state) {
   const MethodKind kind = core::methods::kAllMethods[state.range(0)];
   const core::methods::Task task = defaultTask(20);
-  const double period = core::twoPi<double>() / core::makeChain(task.model).chain->omegaSlow;
+  const double period = core::twoPi<double>() / core::makeTwoMassForm(task.model).chain->omegaSlow;
   state.SetLabel(std::string(core::methods::methodName(kind)));
   runSetting(state, task, core::methods::standardSetting(kind, period, 1.0));
 }

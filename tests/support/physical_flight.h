@@ -7,7 +7,7 @@
 #include <cmath>
 #include <memory>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/solver/contact.h"
 #include "core/solver/free_flight.h"
 
@@ -28,11 +28,11 @@ class PhysicalFlight {
   /// `march`: treat a resonant chain as detuned (same numbers), so that the detuned march
   /// searches it: a second, independent search to compare with.
   PhysicalFlight(const core::Model& model, const core::State& start, bool march = false)
-      : m_chain(std::make_unique<core::Chain<double>>(chainOf(model, march))),
+      : m_chain(std::make_unique<core::TwoMassForm<double>>(chainOf(model, march))),
         m_scale(core::chooseScale(*m_chain, start)),
         m_flight(*m_chain, m_scale.gap, m_scale.toScaled(start)) {}
 
-  const core::Chain<double>& chain() const { return *m_chain; }
+  const core::TwoMassForm<double>& chain() const { return *m_chain; }
   const core::Flight<double>& scaled() const { return m_flight; }
   double omega() const { return m_chain->omegaSlow; }
   double length() const { return std::ldexp(1.0, m_scale.exponent); }
@@ -73,13 +73,13 @@ class PhysicalFlight {
   }
 
  private:
-  static core::Chain<double> chainOf(const core::Model& model, bool march) {
-    core::Chain<double> chain = *core::makeChain(model).chain;
+  static core::TwoMassForm<double> chainOf(const core::Model& model, bool march) {
+    core::TwoMassForm<double> chain = *core::makeTwoMassForm(model).chain;
     if (march) chain.resonant = false;
     return chain;
   }
 
-  std::unique_ptr<core::Chain<double>> m_chain;  // the flight points into it
+  std::unique_ptr<core::TwoMassForm<double>> m_chain;  // the flight points into it
   core::Scale<double> m_scale;
   core::Flight<double> m_flight;
 };

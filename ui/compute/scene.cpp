@@ -6,7 +6,7 @@
 
 #include <QCoreApplication>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/orbits/special_orbits.h"
 #include "core/orbits/starts.h"
 
@@ -48,7 +48,7 @@ Params enterScene(const Params& own, const Params& chain) {
 core::StartOrProblem<double> gloStart(const core::Model& model, const Params& params) {
   // core's one place for starts, as the command line's --glo L --perturb ...: the same state
   // and the same notes (a push below one ulp of the start)
-  const core::ChainOrProblem<double> formed = core::makeChain(model);
+  const core::TwoMassFormOrProblem<double> formed = core::makeTwoMassForm(model);
   if (!formed.chain) return {std::nullopt, formed.problem};
   core::StartSpec<double> spec;
   spec.kind = core::StartSpec<double>::Kind::Glo;

@@ -18,7 +18,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/orbits/special_orbits.h"
 #include "ui/pictures/heat_map.h"
 #include "core/model/linear_modes.h"
@@ -123,7 +123,7 @@ void LandscapeView::show(const SimUpdate& update) {
   const SimRequest& request = *update.request;
   m_gap = request.job.spec.model.gap;
   // the grazing family and its two modes, from the run's chain
-  const core::ChainOrProblem<double> formed = core::makeChain(request.job.spec.model);
+  const core::TwoMassFormOrProblem<double> formed = core::makeTwoMassForm(request.job.spec.model);
   m_family.clear();
   m_T2 = core::computeModes(request.job.spec.model).T2;
   if (formed.chain && formed.chain->resonant) {

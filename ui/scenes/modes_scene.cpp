@@ -7,7 +7,7 @@
 #include <mutex>
 #include <optional>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/special_orbits.h"
 #include "core/orbits/periodic_orbit.h"
@@ -22,7 +22,7 @@ QString tr(const char* text) {
 
 // The chain's atlas, over the command line's default energies and impacts: the one kept in
 // `cache` when it is this chain's, else computed (each family shown as it is finished) and kept.
-std::shared_ptr<const core::ModesAtlas<double>> atlasOf(const core::Chain<double>& chain, const DerivedModel& derived,
+std::shared_ptr<const core::ModesAtlas<double>> atlasOf(const core::TwoMassForm<double>& chain, const DerivedModel& derived,
                                                         std::stop_token stop, const ScenePartial& partial,
                                                         SceneCache& cache) {
   {
@@ -77,12 +77,12 @@ Scene::Spec modesScene() {
                             const ScenePartial& partial, SceneCache& cache) {
     SceneJob job;
     job.spec.model = derived.model;
-    const core::ChainOrProblem<double> formed = core::makeChain(derived.model);
+    const core::TwoMassFormOrProblem<double> formed = core::makeTwoMassForm(derived.model);
     if (!formed.chain) {
       job.message = QString::fromStdString(formed.problem);
       return job;
     }
-    const core::Chain<double>& chain = *formed.chain;
+    const core::TwoMassForm<double>& chain = *formed.chain;
     if (!chain.resonant) {
       job.message = tr("the nonlinear modes start from the one-impact family of the 1:2 resonant "
                        "chain: tick the 1:2 design");

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/experiments/theorem_surveys.h"
 #include "core/orbits/special_orbits.h"
 #include "core/orbits/starts.h"
@@ -102,7 +102,7 @@ Scene::Spec onePeriodicScene() {
       return job;
     }
     // the run's start as the command line's --onepp T makes it (core's one place for starts)
-    const core::ChainOrProblem<double> formed = core::makeChain(derived.model);
+    const core::TwoMassFormOrProblem<double> formed = core::makeTwoMassForm(derived.model);
     if (!formed.chain) {
       job.message = QString::fromStdString(formed.problem);
       return job;

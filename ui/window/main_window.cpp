@@ -27,7 +27,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/model/model.h"
 #include "ui/compute/derived.h"
 #include "ui/widgets/parameter_panel.h"

@@ -72,7 +72,7 @@ std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& pars
     error = model.error;
     return std::nullopt;
   }
-  const core::Chain<S>& chain = model.value->chain;
+  const core::TwoMassForm<S>& chain = model.value->chain;
   FamilyStability<S> result;
   for (const core::OnePeriodicOrbit<double>& p : family) {
     if (stop.stop_requested()) return std::nullopt;
@@ -158,7 +158,7 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
   if (!output) return kExitInvalidInput;
   const QString& prefix = output->prefix;
 
-  const core::Chain<double>& chain = model.value->chain;
+  const core::TwoMassForm<double>& chain = model.value->chain;
   const std::vector<core::OnePeriodicOrbit<double>> family = core::onePeriodicFamily(chain, count, stop);
   if (stop.stop_requested()) return kExitInterrupted;
   const core::OnePeriodicOrbit<double> end = core::grazingEnd(chain);

@@ -55,7 +55,7 @@ int modesIn(const QCommandLineParser& parser, const FileOutput& output, const QS
     error = model.error;
     return kExitInvalidInput;
   }
-  const core::Chain<S>& chain = model.value->chain;
+  const core::TwoMassForm<S>& chain = model.value->chain;
   if (!chain.resonant) {
     error = "modes: the atlas starts from the 1IPP family of the 1:2 resonant chain (give no --k2)";
     return kExitInvalidInput;

@@ -29,7 +29,7 @@ JsonValue stateValue(const core::BasicState<S>& x) {
 
 // The orbit's document: written with a field per line, or handed to Python as values.
 template <typename S>
-JsonValue orbitValue(const core::PeriodicOrbit<S>& orbit, const core::Chain<S>& chain,
+JsonValue orbitValue(const core::PeriodicOrbit<S>& orbit, const core::TwoMassForm<S>& chain,
                      const std::string& precision) {
   using V = JsonValue;
   const S T2 = core::twoPi<S>() / chain.omegaSlow;
@@ -95,7 +95,7 @@ Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, 
     error = model.error;
     return Outcome::Refused;
   }
-  const core::Chain<S>& chain = model.value->chain;
+  const core::TwoMassForm<S>& chain = model.value->chain;
   core::OrbitSearch<S> search;
   if (parser.isSet("onepp")) {
     const std::optional<S> T = scalarOption<S>(parser, "period", error);

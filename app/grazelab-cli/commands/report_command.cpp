@@ -153,7 +153,7 @@ std::optional<ReportProblem> twoMassProblem(const QCommandLineParser& parser, QS
     task.start = task.start + kDefaultPush;
     input.startDescription += ", pushed by (0, 0, 0.05, -0.05) (the default problem)";
   }
-  const core::Chain<double>& chain = run.value->model.chain;
+  const core::TwoMassForm<double>& chain = run.value->model.chain;
   input.period = core::twoPi<double>() / chain.omegaSlow;
   task.needs.events = true;
   const auto tEnd = reportHorizon(parser, input, [&task](std::int64_t count) {

@@ -250,17 +250,17 @@ Parsed<ModelInput<S>> twoMassChain(const OptionValues& options);
 // that may help (a refusal the precision causes is marked: --precision auto goes higher)
 template <typename S>
 Parsed<ModelInput<S>> formedModel(const core::BasicModel<S>& model) {
-  core::ChainOrProblem<S> formed = core::makeChain(model);
+  core::TwoMassFormOrProblem<S> formed = core::makeTwoMassForm(model);
   if (formed.chain) return {ModelInput<S>{model, *formed.chain}, {}};
   QString line = fromStd(formed.problem);
   switch (formed.kind) {
-    case core::ChainProblem::BeyondRange: line += " (try --precision long or quad)"; break;
-    case core::ChainProblem::PhaseRounding:
+    case core::TwoMassFormProblem::BeyondRange: line += " (try --precision long or quad)"; break;
+    case core::TwoMassFormProblem::PhaseRounding:
       if (!std::is_same_v<S, core::Quad>) line += ": --precision quad resolves more";
       break;
-    case core::ChainProblem::None: break;
+    case core::TwoMassFormProblem::None: break;
   }
-  return {std::nullopt, line, formed.kind != core::ChainProblem::None};
+  return {std::nullopt, line, formed.kind != core::TwoMassFormProblem::None};
 }
 
 template <typename S>
@@ -573,7 +573,7 @@ Parsed<RunInput<S>> parseRun(const OptionValues& options) {
   Parsed<ModelInput<S>> model = parseModel<S>(options);
   if (!model.value) return {std::nullopt, model.error, model.precisionBound};
   RunInput<S> run{*model.value, {}, {}, {}, Format::Json};
-  const core::Chain<S>& chain = run.model.chain;
+  const core::TwoMassForm<S>& chain = run.model.chain;
   QString error;
 
   Parsed<core::StartSpec<S>> spec = parseStartSpec<S>(options, run.model.model);

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/model/chain_design.h"
 #include "core/model/mass_chain.h"
 #include "core/model/model.h"
@@ -53,7 +53,7 @@ core::ExactParameters exactParameters(const OptionValues& options);
 template <typename S>
 struct ModelInput {
   core::BasicModel<S> model;
-  core::Chain<S> chain;
+  core::TwoMassForm<S> chain;
 };
 
 /// Output formats of `simulate`.

@@ -54,7 +54,7 @@ JsonValue stateValue(const S& t, const core::BasicState<S>& state) {
 template <typename S>
 JsonValue modelValue(const ModelInput<S>& input, const std::string& precision) {
   const core::BasicModel<S>& model = input.model;
-  const core::Chain<S>& chain = input.chain;
+  const core::TwoMassForm<S>& chain = input.chain;
   const S omegaFast = chain.ratio * chain.omegaSlow;
   // M-normalised mode shapes: columns (rho_j, 1) / (sqrt(m1) sqrt(rho_j^2 + beta))
   using std::sqrt;
@@ -441,7 +441,7 @@ void RunWriter<S>::end(const core::BasicResult<S>& result, bool interrupted,
       break;
     case Format::Summary: {
       const core::Cost& cost = result.cost;
-      const core::Chain<S>& chain = m_run.model.chain;
+      const core::TwoMassForm<S>& chain = m_run.model.chain;
       const core::BasicModel<S>& model = m_run.model.model;
       std::string text;
       text += "start          " + m_run.initialDescription + "\n";

@@ -10,7 +10,7 @@
 
 #include <cmath>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/model/chain_design.h"
 #include "core/model/resonance.h"
 #include "core/orbits/chain_glo.h"

@@ -9,7 +9,7 @@
 #include <bit>
 #include <optional>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/experiments/run.h"
 #include "core/orbits/special_orbits.h"
 #include "core/orbits/starts.h"
@@ -28,7 +28,7 @@ Spec gloRun(double lambda, double push, std::int64_t contacts) {
   StartSpec<double> start;
   start.lambda = lambda;
   start.perturbation = State{0, 0, 0, push};
-  spec.run.initial = makeStart(*makeChain(spec.model).chain, start).start->state;
+  spec.run.initial = makeStart(*makeTwoMassForm(spec.model).chain, start).start->state;
   spec.run.maxContacts = contacts;
   spec.run.needs.events = true;
   spec.run.needs.poincare = true;
@@ -85,7 +85,7 @@ TEST(ExperimentRunTest, itsPiecesAreTheRunComputedWhole) {
 TEST(ExperimentRunTest, aContactDoubleCannotDecideIsDecidedInAHigherPrecision) {
   Spec spec;
   spec.model = resonantChain();
-  spec.run.initial = gloData(*makeChain(spec.model).chain, 0.0);
+  spec.run.initial = gloData(*makeTwoMassForm(spec.model).chain, 0.0);
   spec.run.initial.v2 -= 3e-9;
   spec.run.maxContacts = 20;
   spec.run.needs.events = true;

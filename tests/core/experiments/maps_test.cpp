@@ -8,7 +8,7 @@
 #include <cmath>
 #include <thread>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/orbits/special_orbits.h"
 #include "core/experiments/maps.h"
 #include "parallel/tbb_parallel_for.h"
@@ -31,7 +31,7 @@ using testing::sameBits;
 double periodOf(const Model& model) {
   Model designed = model;
   designed.k2 = designKappa(model.m2 / model.m1, *model.design) * model.k1;
-  return twoPi<double>() / makeChain(designed).chain->omegaSlow;
+  return twoPi<double>() / makeTwoMassForm(designed).chain->omegaSlow;
 }
 
 TEST(MapsTest, theGrazingFamilyFliesExactlyT2OverMassRatiosAndLambdas) {

@@ -74,7 +74,7 @@ TEST(ChainMethods, TheNotesChainWrittenAsAChainRunsTheSameMethods) {
   // every method makes the same contacts and ends in the same state up to rounding
   for (const double m2 : {0.5, 0.3}) {
     const Model model = testing::resonantChain(m2);
-    const Chain<double> chain = *makeChain(model).chain;
+    const TwoMassForm<double> chain = *makeTwoMassForm(model).chain;
     const double period = twoPi<double>() / chain.omegaSlow;
     // a start that hits squarely (near grazing, CVODE's methods may slide through the stop in
     // either form: that is theirs, not the form's)

@@ -20,7 +20,7 @@ namespace {
 /// The report's default problem, over `periods` slow periods.
 Task defaultTask(double periods) {
   const Model model = testing::resonantChain(0.5);
-  const Chain<double> chain = *makeChain(model).chain;
+  const TwoMassForm<double> chain = *makeTwoMassForm(model).chain;
   StartSpec<double> spec;
   spec.lambda = 0.5;
   spec.perturbation = State{0, 0, 0.05, -0.05};
@@ -29,7 +29,7 @@ Task defaultTask(double periods) {
   return task;
 }
 
-double period(const Task& task) { return twoPi<double>() / makeChain(task.model).chain->omegaSlow; }
+double period(const Task& task) { return twoPi<double>() / makeTwoMassForm(task.model).chain->omegaSlow; }
 
 TEST(Methods, NamesRoundTrip) {
   for (MethodKind kind : kAllMethods) {
@@ -208,7 +208,7 @@ TEST(Methods, AnUnstableExplicitSchemeDivergesLoudly) {
   Model model;
   model.k2 = 1e6;
   model.design.reset();
-  const Chain<double> chain = *makeChain(model).chain;
+  const TwoMassForm<double> chain = *makeTwoMassForm(model).chain;
   StartSpec<double> spec;
   spec.perturbation = State{0, 0, 0.05, -0.05};
   Task task{model, makeStart(chain, spec).start->state, 20 * twoPi<double>() / chain.omegaSlow, {}};

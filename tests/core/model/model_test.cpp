@@ -3,7 +3,7 @@
 // Tests for core/model.cpp.
 #include "core/model/model.h"
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 
 #include <gtest/gtest.h>
 
@@ -76,7 +76,7 @@ TEST(Model, EnergyOfAStateNotFiniteIsNotFinite) {
   EXPECT_EQ(energy(model, State{0.3, 1.0, 0, -inf}), inf);
   EXPECT_EQ(energy(model, State{-inf, 1.0, 0, 0}), inf);
   EXPECT_TRUE(std::isnan(energy(model, State{std::nan(""), 1.0, 0, 0})));
-  const Chain<long double> chain = *makeChain(convertModel<long double>(model)).chain;
+  const TwoMassForm<long double> chain = *makeTwoMassForm(convertModel<long double>(model)).chain;
   EXPECT_EQ(physicalEnergy(chain, BasicState<long double>{0, 1, 0, -INFINITY}), INFINITY);
 }
 

@@ -3,7 +3,7 @@
 // Tests for core/resonance.cpp.
 #include "core/model/resonance.h"
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/orbits/starts.h"
 
 #include <gtest/gtest.h>
@@ -61,7 +61,7 @@ TEST(Resonance, EveryFeasibleRatioGivesOneToTwoOnBothBranches) {
       Model given = designed;
       given.design.reset();
       const Modes modes = computeModes(given);
-      const Chain<long double> wide = *makeChain(convertModel<long double>(given)).chain;
+      const TwoMassForm<long double> wide = *makeTwoMassForm(convertModel<long double>(given)).chain;
       if (!modes.resonant) {
         EXPECT_LT(std::abs(modes.detuning), 1e-13) << "beta " << beta;
         EXPECT_NEAR(modes.detuning / double(wide.detuning), 1.0, 1e-12) << "beta " << beta;

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <set>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/special_orbits.h"
 #include "core/orbits/family_continuation.h"
@@ -22,11 +22,11 @@
 namespace grazelab::core {
 namespace {
 
-Chain<double> resonantChain(double m2, Branch branch) {
-  return *makeChain(*designedModel(1.0, m2, 1.0, 1.0, branch)).chain;
+TwoMassForm<double> resonantChain(double m2, Branch branch) {
+  return *makeTwoMassForm(*designedModel(1.0, m2, 1.0, 1.0, branch)).chain;
 }
 
-double grazingEnergy(const Chain<double>& chain) {
+double grazingEnergy(const TwoMassForm<double>& chain) {
   return physicalEnergy(chain, gloData(chain, lambdaStar(chain)));
 }
 
@@ -51,7 +51,7 @@ std::string name(const Case& c) {
 
 TEST(AtlasChainsTest, theScanAndTheContinuationFindTheSameFlipsOfTheOnePeriodicFamily) {
   for (const Case& c : sweep()) {
-    const Chain<double> chain = resonantChain(c.m2, c.branch);
+    const TwoMassForm<double> chain = resonantChain(c.m2, c.branch);
     const OnePeriodicScan<double> scan = scanOnePeriodicFamily(chain, 400);
     ASSERT_TRUE(scan.complete);
     // the part that ends on the grazing orbit at T2, continued in energy from an orbit of it
@@ -102,7 +102,7 @@ TEST(AtlasChainsTest, theScanAndTheContinuationFindTheSameFlipsOfTheOnePeriodicF
 
 TEST(AtlasChainsTest, theLowerBranchsClosePairOfFlipsGivesBothFamilies) {
   // m2/m1 = 1/2, lower design: the trace dips below -2 between E = 0.2141 and 0.2337 only
-  const Chain<double> chain = resonantChain(0.5, Branch::Lower);
+  const TwoMassForm<double> chain = resonantChain(0.5, Branch::Lower);
   const double E0 = grazingEnergy(chain);
   const ModesAtlas<double> atlas = computeModesAtlas(chain, 2, E0 / 100, E0 * 10000);
   ASSERT_TRUE(atlas.complete);
@@ -130,7 +130,7 @@ TEST(AtlasChainsTest, theLowerBranchsClosePairOfFlipsGivesBothFamilies) {
 // Along every family of the atlas: the rows are admissible orbits of its impacts, neighbours
 // are near each other (no jump onto another family), and every located special point has the
 // trace its definition says.
-void expectSoundAtlas(const Chain<double>& chain, const ModesAtlas<double>& atlas, const std::string& label) {
+void expectSoundAtlas(const TwoMassForm<double>& chain, const ModesAtlas<double>& atlas, const std::string& label) {
   for (const ModeFamily<double>& family : atlas.families) {
     for (std::size_t i = 0; i < family.orbits.size(); i += 5) {
       const PeriodicOrbit<double> again =
@@ -157,7 +157,7 @@ void expectSoundAtlas(const Chain<double>& chain, const ModesAtlas<double>& atla
 
 TEST(AtlasChainsTest, onEveryChainEveryFlipGivesItsFamilyOrSaysWhyAndNoFamilyJumps) {
   for (const Case& c : sweep()) {
-    const Chain<double> chain = resonantChain(c.m2, c.branch);
+    const TwoMassForm<double> chain = resonantChain(c.m2, c.branch);
     const double E0 = grazingEnergy(chain);
     const ModesAtlas<double> atlas = computeModesAtlas(chain, 4, E0 / 10, E0 * 100);
     ASSERT_TRUE(atlas.complete);
@@ -187,7 +187,7 @@ TEST(AtlasChainsTest, onEveryChainEveryFlipGivesItsFamilyOrSaysWhyAndNoFamilyJum
 }
 
 TEST(AtlasChainsTest, aNarrowRangeAroundAFlipKeepsItWithItsFamily) {
-  const Chain<double> chain = resonantChain(0.5, Branch::Upper);
+  const TwoMassForm<double> chain = resonantChain(0.5, Branch::Upper);
   // the default chain's flip at E = 0.7, in a range of +-1e-5 around it and in ranges ending at it
   for (const auto& [low, high] : {std::pair{0.69999, 0.70001}, std::pair{0.5, 0.7}, std::pair{0.7, 1.0}}) {
     const ModesAtlas<double> atlas = computeModesAtlas(chain, 2, low, high);
@@ -207,7 +207,7 @@ TEST(AtlasChainsTest, aNarrowRangeAroundAFlipKeepsItWithItsFamily) {
 TEST(AtlasChainsTest, theContinuationDoesNotJumpOntoAnotherFamily) {
   // m2/m1 = 0.55, lower design: the 2-impact family of symmetry B goes on to GLOM1 at
   // E = 2.585410196624968 (T -> 3 T1); it once jumped onto the type-A family at E = 2.44
-  const Chain<double> chain = resonantChain(0.55, Branch::Lower);
+  const TwoMassForm<double> chain = resonantChain(0.55, Branch::Lower);
   const double E0 = grazingEnergy(chain);
   const ModesAtlas<double> atlas = computeModesAtlas(chain, 4, E0 / 100, E0 * 10000);
   ASSERT_TRUE(atlas.complete);
@@ -235,7 +235,7 @@ TEST(AtlasChainsTest, aScaledChainHasTheSameAtlas) {
   // energies times d^2 (the birth search once pushed by d twice and found nothing at 1e6)
   for (const Branch branch : {Branch::Upper, Branch::Lower}) {
     const auto atlasOf = [&](double gap) {
-      const Chain<double> chain = *makeChain(*designedModel(1.0, 0.5, 1.0, gap, branch)).chain;
+      const TwoMassForm<double> chain = *makeTwoMassForm(*designedModel(1.0, 0.5, 1.0, gap, branch)).chain;
       const double E0 = grazingEnergy(chain);
       return computeModesAtlas(chain, 2, E0 / 100, E0 * 10000);
     };
@@ -267,7 +267,7 @@ TEST(AtlasChainsTest, theEnergyErrorOfEverySpecialPointHoldsAgainstALongerPrecis
   for (const double m2 : {0.2, 0.35, 0.52}) {
     const auto atlasIn = [m2](auto zero) {
       using S = decltype(zero);
-      const Chain<S> chain = *makeChain(*designedModel(S(1), S(m2), S(1), S(1), Branch::Lower)).chain;
+      const TwoMassForm<S> chain = *makeTwoMassForm(*designedModel(S(1), S(m2), S(1), S(1), Branch::Lower)).chain;
       const S E0 = physicalEnergy(chain, gloData(chain, lambdaStar(chain)));
       return computeModesAtlas(chain, 4, S(E0 / 10), S(E0 * 100));
     };
@@ -299,7 +299,7 @@ TEST(AtlasChainsTest, aNewtonThatStallsOnAPlateauGivesNoOrbit) {
   // flip's eigenvector: Newton once stopped there at a residual of 1e-9 (within the tolerance
   // amplified for rounding) with a step as long as the orbit's distance from the flip still to
   // go, and the atlas gave a 4-impact family on the wrong side of the flip, ended after one row
-  const Chain<double> chain = resonantChain(0.2, Branch::Lower);
+  const TwoMassForm<double> chain = resonantChain(0.2, Branch::Lower);
   const OrbitSearch<double> search = findOrbit(chain, 0.55722626556298327, 1.0434494716098159, 8.17961466548961e-05, 4);
   EXPECT_FALSE(search.orbit.has_value()) << "residual " << search.orbit->checks.periodicityResidual;
   // a converged orbit's step is far below its residual's scale

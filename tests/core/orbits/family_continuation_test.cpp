@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/special_orbits.h"
 #include "core/orbits/family_continuation.h"
@@ -17,17 +17,17 @@
 namespace grazelab::core {
 namespace {
 
-Chain<double> resonantChain(double m2, Branch branch = Branch::Upper) {
-  return *makeChain(*designedModel(1.0, m2, 1.0, 1.0, branch)).chain;
+TwoMassForm<double> resonantChain(double m2, Branch branch = Branch::Upper) {
+  return *makeTwoMassForm(*designedModel(1.0, m2, 1.0, 1.0, branch)).chain;
 }
 
-double slowPeriod(const Chain<double>& chain) { return twoPi<double>() / chain.omegaSlow; }
+double slowPeriod(const TwoMassForm<double>& chain) { return twoPi<double>() / chain.omegaSlow; }
 
-double grazingEnergy(const Chain<double>& chain) {
+double grazingEnergy(const TwoMassForm<double>& chain) {
   return physicalEnergy(chain, gloData(chain, lambdaStar(chain)));
 }
 
-ContinuationOptions<double> range(const Chain<double>& chain) {
+ContinuationOptions<double> range(const TwoMassForm<double>& chain) {
   ContinuationOptions<double> options;
   options.energyLow = grazingEnergy(chain) / 100;
   options.energyHigh = grazingEnergy(chain) * 1000;
@@ -36,7 +36,7 @@ ContinuationOptions<double> range(const Chain<double>& chain) {
 
 TEST(PeriodicContinuationTest, theOnePeriodicFamilyInEnergyIsTheClosedFormInThePeriod) {
   for (const double m2 : {0.3, 0.5}) {
-    const Chain<double> chain = resonantChain(m2);
+    const TwoMassForm<double> chain = resonantChain(m2);
     const double T2 = slowPeriod(chain);
     const PeriodicOrbit<double> start = *onePeriodicOrbitStability(chain, 0.9 * T2).orbit;
     for (int direction : {-1, 1}) {
@@ -57,7 +57,7 @@ TEST(PeriodicContinuationTest, theOnePeriodicFamilyInEnergyIsTheClosedFormInTheP
 }
 
 TEST(PeriodicContinuationTest, itsFlipsAreTheClosedFormsAndItEndsOnTheGrazingOrbit) {
-  const Chain<double> chain = resonantChain(0.5);
+  const TwoMassForm<double> chain = resonantChain(0.5);
   const double T2 = slowPeriod(chain);
   const PeriodicOrbit<double> start = *onePeriodicOrbitStability(chain, 0.9 * T2).orbit;
   const ContinuedFamily<double> up = continueFamily(chain, start, 1, range(chain));
@@ -91,7 +91,7 @@ TEST(PeriodicContinuationTest, itsFlipsAreTheClosedFormsAndItEndsOnTheGrazingOrb
 }
 
 TEST(PeriodicContinuationTest, theAtlasFamiliesBornAtFlipsHaveTwiceTheImpactsAndAreAdmissible) {
-  const Chain<double> chain = resonantChain(0.5);
+  const TwoMassForm<double> chain = resonantChain(0.5);
   std::vector<int> seen;
   const ModesAtlas<double> atlas = computeModesAtlas<double>(chain, 4, grazingEnergy(chain) / 100, grazingEnergy(chain) * 1e4, {},
                                                      [&](const ModeFamily<double>& f) { seen.push_back(f.id); });
@@ -123,7 +123,7 @@ TEST(PeriodicContinuationTest, theAtlasFamiliesBornAtFlipsHaveTwiceTheImpactsAnd
 // impacts come in mirror pairs (u1, v1), (u1, -v1), on a type-A one every impact has v1 = 0,
 // checked on the orbit's own path.
 TEST(PeriodicContinuationTest, theAtlasHasSymmetricFamiliesOfBothTypes) {
-  const Chain<double> chain = resonantChain(0.5);
+  const TwoMassForm<double> chain = resonantChain(0.5);
   const ModesAtlas<double> atlas = computeModesAtlas<double>(chain, 2, grazingEnergy(chain) / 100, grazingEnergy(chain) * 1e4);
   bool a = false, b = false;
   for (const ModeFamily<double>& family : atlas.families) {
@@ -167,7 +167,7 @@ TEST(PeriodicContinuationTest, theAtlasHasSymmetricFamiliesOfBothTypes) {
 }
 
 TEST(PeriodicContinuationTest, aStopLeavesTheAtlasIncomplete) {
-  const Chain<double> chain = resonantChain(0.5);
+  const TwoMassForm<double> chain = resonantChain(0.5);
   std::stop_source stopper;
   const ModesAtlas<double> atlas = computeModesAtlas<double>(chain, 4, grazingEnergy(chain) / 100, grazingEnergy(chain) * 1e4,
                                                      stopper.get_token(),

@@ -14,12 +14,12 @@
 namespace grazelab::core {
 namespace {
 
-Chain<double> designedChain(double m2) {
-  return *makeChain(*designedModel(1.0, m2, 1.0, 1.0, Branch::Upper)).chain;
+TwoMassForm<double> designedChain(double m2) {
+  return *makeTwoMassForm(*designedModel(1.0, m2, 1.0, 1.0, Branch::Upper)).chain;
 }
 
 TEST(FamilyTest, energyIsTheMechanicalEnergyOfThePostImpactState) {
-  const Chain<double> chain = designedChain(0.3);
+  const TwoMassForm<double> chain = designedChain(0.3);
   const Model& m = chain.model;
   for (const OnePeriodicOrbit<double>& p : onePeriodicFamily(chain, 200)) {
     // E = 1/2 m2 V^2 + 1/2 k1 u1^2 + 1/2 k2 (gap - u1)^2 (mass 1 at rest at the impact)
@@ -33,7 +33,7 @@ TEST(FamilyTest, energyIsTheMechanicalEnergyOfThePostImpactState) {
 }
 
 TEST(FamilyTest, admissibleMembersHitTheStopOncePerPeriodAndRepeat) {
-  const Chain<double> chain = designedChain(0.5);
+  const TwoMassForm<double> chain = designedChain(0.5);
   const std::vector<OnePeriodicOrbit<double>> family = onePeriodicFamily(chain, 64);
   int checked = 0;
   for (const OnePeriodicOrbit<double>& p : family) {
@@ -56,7 +56,7 @@ TEST(FamilyTest, admissibleMembersHitTheStopOncePerPeriodAndRepeat) {
 
 TEST(FamilyTest, theGrazingEndMeetsTheLambdaStarData) {
   for (double m2 : {0.05, 0.3, 0.5, 0.56}) {
-    const Chain<double> chain = designedChain(m2);
+    const TwoMassForm<double> chain = designedChain(m2);
     const OnePeriodicOrbit<double> end = grazingEnd(chain);
     const State star = gloData(chain, lambdaStar(chain));
     EXPECT_EQ(end.postImpact.u1, star.u1);
@@ -79,7 +79,7 @@ TEST(FamilyTest, theGrazingEndMeetsTheLambdaStarData) {
 }
 
 TEST(FamilyTest, periodsAreSortedInsideTheOpenInterval) {
-  const Chain<double> chain = designedChain(0.5);
+  const TwoMassForm<double> chain = designedChain(0.5);
   const double T2 = twoPi<double>() / chain.omegaSlow;
   const std::vector<OnePeriodicOrbit<double>> family = onePeriodicFamily(chain, 99);
   ASSERT_GE(family.size(), 99u);

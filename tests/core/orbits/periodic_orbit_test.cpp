@@ -10,7 +10,7 @@
 #include <cmath>
 #include <optional>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/orbits/special_orbits.h"
 #include "core/orbits/periodic_orbit.h"
 #include "core/orbits/starts.h"
@@ -20,17 +20,17 @@ namespace grazelab::core {
 namespace {
 
 template <typename S = double>
-Chain<S> resonantChain(double m2 = 0.5, Branch branch = Branch::Upper) {
-  return *makeChain(*designedModel<S>(S(1), S(m2), S(1), S(1), branch)).chain;
+TwoMassForm<S> resonantChain(double m2 = 0.5, Branch branch = Branch::Upper) {
+  return *makeTwoMassForm(*designedModel<S>(S(1), S(m2), S(1), S(1), branch)).chain;
 }
 
 template <typename S>
-S slowPeriod(const Chain<S>& chain) {
+S slowPeriod(const TwoMassForm<S>& chain) {
   return twoPi<S>() / chain.omegaSlow;
 }
 
 TEST(PeriodicOrbitTest, theFlowMatrixCarriesAStateAsTheSolverDoes) {
-  const Chain<double> chain = resonantChain();
+  const TwoMassForm<double> chain = resonantChain();
   const State start{0.1, -0.2, 0.05, 0.1};  // small: a free flight that stays below the stop
   for (double tau : {0.1, 1.7, 5.3, 8.8}) {
     Request request;
@@ -52,7 +52,7 @@ TEST(PeriodicOrbitTest, theFlowMatrixCarriesAStateAsTheSolverDoes) {
 
 TEST(PeriodicOrbitTest, everyOnePeriodicOrbitSatisfiesTheIdentities) {
   for (Branch branch : {Branch::Upper, Branch::Lower}) {
-    const Chain<double> chain = resonantChain(0.5, branch);
+    const TwoMassForm<double> chain = resonantChain(0.5, branch);
     const double T2 = slowPeriod(chain);
     int checked = 0;
     for (double fraction = 0.52; fraction < 0.999; fraction += 0.013) {
@@ -82,7 +82,7 @@ TEST(PeriodicOrbitTest, everyOnePeriodicOrbitSatisfiesTheIdentities) {
 // at fixed energy (which keep only about half of double's digits). Periods on both admissible
 // parts of the family (below T1 and above).
 TEST(PeriodicOrbitTest, theExactJacobianIsTheMapsFiniteDifference) {
-  const Chain<double> chain = resonantChain();
+  const TwoMassForm<double> chain = resonantChain();
   const double T2 = slowPeriod(chain);
   for (double fraction : {0.45, 0.8, 0.93}) {
     const OrbitSearch<double> found = onePeriodicOrbitStability(chain, fraction * T2);
@@ -126,7 +126,7 @@ TEST(PeriodicOrbitTest, theExactJacobianIsTheMapsFiniteDifference) {
 }
 
 TEST(PeriodicOrbitTest, newtonFindsTheOnePeriodicOrbitOfTheClosedForm) {
-  const Chain<double> chain = resonantChain();
+  const TwoMassForm<double> chain = resonantChain();
   const double T2 = slowPeriod(chain);
   for (double fraction : {0.45, 0.8, 0.95}) {
     const OrbitSearch<double> closedForm = onePeriodicOrbitStability(chain, fraction * T2);
@@ -144,8 +144,8 @@ TEST(PeriodicOrbitTest, newtonFindsTheOnePeriodicOrbitOfTheClosedForm) {
 }
 
 TEST(PeriodicOrbitTest, binary128AgreesWithDoubleAndMeetsTheIdentitiesTo1e28) {
-  const Chain<double> chain = resonantChain();
-  const Chain<Quad> exact = resonantChain<Quad>();
+  const TwoMassForm<double> chain = resonantChain();
+  const TwoMassForm<Quad> exact = resonantChain<Quad>();
   const double T2 = slowPeriod(chain);
   for (double fraction : {0.45, 0.72, 0.9}) {
     const OrbitSearch<double> inDouble = onePeriodicOrbitStability(chain, fraction * T2);
@@ -162,7 +162,7 @@ TEST(PeriodicOrbitTest, binary128AgreesWithDoubleAndMeetsTheIdentitiesTo1e28) {
 }
 
 TEST(PeriodicOrbitTest, aPathThatIsNotTheOrbitIsRefusedWithItsReason) {
-  const Chain<double> chain = resonantChain();
+  const TwoMassForm<double> chain = resonantChain();
   const double T2 = slowPeriod(chain);
   const OrbitSearch<double> found = onePeriodicOrbitStability(chain, 0.8 * T2);
   ASSERT_TRUE(found.orbit) << found.problem;

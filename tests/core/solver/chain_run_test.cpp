@@ -158,6 +158,40 @@ TEST(ChainRun, TheNotesChainIsRunByTheNotesKernelBitForBit) {
   notesChainsInThePrecision<Quad>();
 }
 
+TEST(ChainRun, TheNotesKernelSamplesTheNotesMotion) {
+  // samples of a run by the note's kernel (through flights, a stick and its release) are the
+  // states the note's simulator samples at those times, to rounding
+  const Model model = *designedModel<double>(1.0, 0.3, 1.0, 1.0, Branch::Lower);
+  for (const State& initial : {State{0.5, 0.9, 0.8, 0.6}, State{1.5, 1.0, 0.2, 0.0}}) {
+    std::vector<double> times;
+    for (int k = 0; k < 400; ++k) times.push_back(0.173 * k);
+    Request request;
+    request.initial = initial;
+    request.maxContacts = 30;
+    request.stopAtUndecided = true;
+    request.needs.samples.times = times;
+    request.needs.samples.includeContacts = false;
+    const Result two = simulate(model, request);
+    std::vector<std::pair<double, ChainState>> samples;
+    ChainSampling<double> sampling;
+    sampling.times = times;
+    sampling.sink = [&](double t, const ChainState& state) { samples.emplace_back(t, state); };
+    const ChainRun one = runChain(readyChain(model), chainStateOf(initial), 30, 0.0, {}, {}, sampling);
+    ASSERT_EQ(one.contacts, 30);
+    ASSERT_EQ(samples.size(), two.samples.size());
+    ASSERT_GT(samples.size(), 100u);
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      const State& expected = two.samples[k].state;
+      EXPECT_EQ(samples[k].first, two.samples[k].t);
+      const ChainState& got = samples[k].second;
+      for (const auto& [a, b] : {std::pair{got.u[0], expected.u1}, std::pair{got.u[1], expected.u2},
+                                 std::pair{got.v[0], expected.v1}, std::pair{got.v[1], expected.v2}}) {
+        EXPECT_NEAR(a, b, 1e-13) << "sample " << k << " at t = " << samples[k].first;
+      }
+    }
+  }
+}
+
 TEST(ChainRun, OtherTwoMassChainsTakeTheModalKernel) {
   // a 3:1 chain (the note's kernel knows 1:2 and the chains not commensurate), a right wall, the
   // stop on the first mass: the modal kernel

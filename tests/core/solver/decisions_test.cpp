@@ -22,7 +22,7 @@ namespace {
 template <typename S>
 BasicRequest<S> pushedGlom1(S push, std::int64_t contacts, BasicModel<S>& model) {
   model = convertModel<S>(testing::resonantChain(0.5));
-  const Chain<S> chain = *makeChain(model).chain;
+  const TwoMassForm<S> chain = *makeTwoMassForm(model).chain;
   BasicRequest<S> request;
   request.initial = gloData(chain, S(0));
   request.initial.v2 -= push;
@@ -91,7 +91,7 @@ TEST(Decisions, AU1RoundedOntoTheStopDoesNotInventMicroImpacts) {
   request.maxContacts = 6;
   request.needs.freeFlights = true;
   const Result result = simulate(model, request);
-  const double period = twoPi<double>() / makeChain(model).chain->omegaSlow;
+  const double period = twoPi<double>() / makeTwoMassForm(model).chain->omegaSlow;
   EXPECT_EQ(result.cost.sticks, 1);
   EXPECT_EQ(result.cost.impacts, 5);
   for (const FreeFlight& flight : result.freeFlights) {
@@ -119,7 +119,7 @@ TEST(Decisions, AnImpactWhoseSpeedUnderflowsIsUndecidedNotAGraze) {
 
 TEST(Decisions, TimesDoNotDriftOverAMillionContacts) {
   const Model model = testing::resonantChain(0.5);
-  const Chain<double> chain = *makeChain(model).chain;
+  const TwoMassForm<double> chain = *makeTwoMassForm(model).chain;
   Request request;
   request.initial = gloData(chain, 0.5);
   request.maxContacts = 1'000'000;
@@ -127,7 +127,7 @@ TEST(Decisions, TimesDoNotDriftOverAMillionContacts) {
   const Result result = simulate(model, request);
   ASSERT_EQ(result.cost.grazings, 1'000'000);
   // 10^6 T2 in binary128, rounded once
-  const Chain<Quad> exact = *makeChain(convertModel<Quad>(model)).chain;
+  const TwoMassForm<Quad> exact = *makeTwoMassForm(convertModel<Quad>(model)).chain;
   const double expected = toDouble(Quad(Quad(1'000'000) * twoPi<Quad>() / exact.omegaSlow));
   const double ulp = std::nextafter(expected, INFINITY) - expected;
   EXPECT_LE(std::abs(result.tFinal - expected), 8 * ulp)
@@ -162,13 +162,13 @@ TEST(Decisions, ChainsWhoseFastPhaseIsRoundingAreRefusedUpFront) {
   // w1/w2 ~ 1e20: beyond what double resolves (~4.5e9), within binary128's reach (~8e26)
   model.k1 = 1;
   model.k2 = 1e-40;
-  EXPECT_EQ(makeChain(model).chain, std::nullopt);
-  EXPECT_TRUE(makeChain(convertModel<Quad>(model)).chain.has_value());
+  EXPECT_EQ(makeTwoMassForm(model).chain, std::nullopt);
+  EXPECT_TRUE(makeTwoMassForm(convertModel<Quad>(model)).chain.has_value());
 }
 
 TEST(Decisions, OnePeriodicOrbitsCloseToT2AreNotTakenForMultiplesOfT1) {
   const Model model = testing::resonantChain(0.5);
-  const Chain<double> chain = *makeChain(model).chain;
+  const TwoMassForm<double> chain = *makeTwoMassForm(model).chain;
   const double T2 = twoPi<double>() / chain.omegaSlow;
   const OnePeriodicOrbit<double> nearT2 = onePeriodicOrbit(chain, T2 * (1 - 8e-14));
   EXPECT_EQ(nearT2.reason.find("multiple"), std::string::npos) << nearT2.reason;
@@ -180,11 +180,11 @@ TEST(Decisions, AnAdmissibilityDoubleCannotDecideSaysSoAndLongDoubleDecides) {
   // 3e-9 below T1 the flight touches the stop near T1 within double's rounding: not "the first
   // return is at 4.44288294", but undecided; long double finds the return at T
   const Model model = testing::resonantChain(0.5);
-  const OnePeriodicOrbit<double> inDouble = onePeriodicOrbit(*makeChain(model).chain, 4.44288293);
+  const OnePeriodicOrbit<double> inDouble = onePeriodicOrbit(*makeTwoMassForm(model).chain, 4.44288293);
   EXPECT_FALSE(inDouble.admissible);
   EXPECT_NE(inDouble.reason.find("not decided"), std::string::npos) << inDouble.reason;
   const OnePeriodicOrbit<long double> inLong =
-      onePeriodicOrbit(*makeChain(convertModel<long double>(model)).chain, 4.44288293L);
+      onePeriodicOrbit(*makeTwoMassForm(convertModel<long double>(model)).chain, 4.44288293L);
   EXPECT_TRUE(inLong.admissible) << inLong.reason;
 }
 

@@ -157,7 +157,7 @@ TEST(Extremes, LambdaNearFourThirdsKeepsItsClass) {
   // class 8: the class follows lambda, the data follows the class
   for (const Model& model : {testing::resonantChain(1e-12), testing::resonantChain(1e-4, 1.0, Branch::Lower),
                              testing::resonantChain(0.5)}) {
-    const Chain<double> chain = *makeChain(model).chain;
+    const TwoMassForm<double> chain = *makeTwoMassForm(model).chain;
     const double below = 4.0 / 3.0;  // the double nearest 4/3 lies below it
     const double above = std::nextafter(below, 2.0);
     EXPECT_EQ(classifyGlo(below), GloKind::Grazing);

@@ -58,7 +58,7 @@ TEST(Sticking, ReleaseWhenTheReactionVanishes) {
   for (const State start : {State{1.25, 1.0, 0.0, 0.0}, State{1.0, 1.0, 0.4, 0.0},
                             State{1.0000001, 1.0, -0.2, 0.0}, State{3.0, 1.0, 2.0, 0.0}}) {
     // the stuck motion runs in scaled units (lengths by the gap, time by 1/w2)
-    const Chain<double> chain = *makeChain(model).chain;
+    const TwoMassForm<double> chain = *makeTwoMassForm(model).chain;
     const Scale<double> scale = chooseScale(chain, start);
     const StuckMotion<double> motion(chain, scale.gap, scale.toScaled(start));
     const double release = motion.releaseTime() / chain.omegaSlow;

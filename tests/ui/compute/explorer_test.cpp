@@ -25,7 +25,7 @@
 #include <optional>
 #include <random>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/orbits/special_orbits.h"
 #include "tests/ui/explorer_test_support.h"
 #include "core/model/linear_modes.h"
@@ -466,7 +466,7 @@ class ExplorerTest : public QObject {
     m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("near-grazing")));
     QVERIFY(waitForLatestFinal(*m_window));
     SimRequest request = *m_window->displayed()->request;
-    const grazelab::core::Chain<double> chain = *grazelab::core::makeChain(request.job.spec.model).chain;
+    const grazelab::core::TwoMassForm<double> chain = *grazelab::core::makeTwoMassForm(request.job.spec.model).chain;
     request.job.spec.run.initial = grazelab::core::gloData(chain, 0.0);
     request.job.spec.run.initial.v2 -= 3e-9;
     request.job.spec.run.maxContacts = 20;

@@ -141,7 +141,7 @@ class ScenesTest : public QObject {
       QCOMPARE(got.impacts, expected.impacts);
     }
     // FFT = T2 somewhere (the grazing set), never above it
-    const grazelab::core::ChainOrProblem<double> formed = grazelab::core::makeChain(map.spec.model);
+    const grazelab::core::TwoMassFormOrProblem<double> formed = grazelab::core::makeTwoMassForm(map.spec.model);
     const double T2 = grazelab::core::twoPi<double>() / formed.chain->omegaSlow;
     int atT2 = 0;
     for (const auto& point : *map.points) {

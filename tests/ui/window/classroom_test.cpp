@@ -24,7 +24,7 @@
 #include <algorithm>
 #include <numbers>
 
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/model/linear_modes.h"
 #include "core/orbits/special_orbits.h"

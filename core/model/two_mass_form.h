@@ -11,8 +11,10 @@
 
 namespace grazelab::core {
 
-/// The chain in nondimensional form (docs/model.md sections 2 and 7), computed once from a model
-/// and const afterwards. Time is measured by the slow frequency (tau = w2 t), so the slow mode has
+/// The note's chain of two masses in nondimensional form (docs/model.md sections 2 and 7): what
+/// the note's kernel runs (core/solver/exact_stepper.h) and its orbits are computed in; "chain"
+/// alone means a chain of N masses (core/model/mass_chain.h). Computed once from a model and
+/// const afterwards. Time is measured by the slow frequency (tau = w2 t), so the slow mode has
 /// frequency 1 and period 2 pi, the fast one `ratio` (2 exactly when resonant).
 ///
 /// Everything is formed from the ratios beta = m2/m1 and kappa = k2/k1 in closed form, never from
@@ -21,7 +23,7 @@ namespace grazelab::core {
 /// quantity to relative precision for m2/m1 -> 0, stiff springs (k2/k1 -> infinity) and any
 /// absolute size of the numbers.
 template <typename S>
-struct Chain {
+struct TwoMassForm {
   BasicModel<S> model;  ///< the physical parameters it came from
   S beta = 0;           ///< m2 / m1
   S kappa = 0;          ///< k2 / k1 (the design value when model.design is set)
@@ -39,7 +41,7 @@ struct Chain {
 };
 
 /// Why a chain cannot be formed in a precision: both may go in a wider one.
-enum class ChainProblem {
+enum class TwoMassFormProblem {
   None,
   BeyondRange,    ///< a ratio of its numbers is beyond the precision's range
   PhaseRounding,  ///< the fast mode's phase over a slow period is rounding in the precision
@@ -47,16 +49,16 @@ enum class ChainProblem {
 
 /// A chain, or the one line saying why it cannot be formed in this precision.
 template <typename S>
-struct ChainOrProblem {
-  std::optional<Chain<S>> chain;
+struct TwoMassFormOrProblem {
+  std::optional<TwoMassForm<S>> chain;
   std::string problem;
-  ChainProblem kind = ChainProblem::None;
+  TwoMassFormProblem kind = TwoMassFormProblem::None;
 };
 
-/// Forms the nondimensional chain. Precondition: validate(model) is empty. Fails (with a reason)
+/// Forms the nondimensional two-mass form. Precondition: validate(model) is empty. Fails (with a reason)
 /// only when a ratio of the inputs is beyond the range of S.
 template <typename S>
-ChainOrProblem<S> makeChain(const BasicModel<S>& model);
+TwoMassFormOrProblem<S> makeTwoMassForm(const BasicModel<S>& model);
 
 /// The scales of one run (docs/model.md section 7): lengths by L = 2^exponent (a power of two, so
 /// scaling is exact), velocities by w2 L, time by 1 / w2.
@@ -75,18 +77,18 @@ struct Scale {
 /// L from the gap and the start's own size: the largest of gap, |u1|, |u2|, |v1| / w2, |v2| / w2,
 /// rounded to a power of two.
 template <typename S>
-Scale<S> chooseScale(const Chain<S>& chain, const BasicState<S>& initial);
+Scale<S> chooseScale(const TwoMassForm<S>& chain, const BasicState<S>& initial);
 
 /// Scaled energy E / (k1 L^2) = 1/2 [lambdaSlow (y1^2 + beta y2^2) + x1^2 + kappa (x2 - x1)^2]
 /// of a scaled state: O(1) numbers whatever the units.
 template <typename S>
-S scaledEnergy(const Chain<S>& chain, const BasicState<S>& x);
+S scaledEnergy(const TwoMassForm<S>& chain, const BasicState<S>& x);
 
 /// Physical energy E = 1/2 v^T M v + 1/2 u^T K u of a physical state, formed through the scaled
 /// variables (it overflows first in physical units); infinite when it is beyond the range of S
 /// or the state is infinite, NaN for a state with a NaN.
 template <typename S>
-S physicalEnergy(const Chain<S>& chain, const BasicState<S>& physical);
+S physicalEnergy(const TwoMassForm<S>& chain, const BasicState<S>& physical);
 
 /// Physical energy of a physical state of a model (double precision convenience; forms the
 /// chain itself). Infinite when beyond double range or the model is unusable.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-#include "core/model/chain.h"
+#include "core/model/two_mass_form.h"
 
 #include <algorithm>
 
@@ -9,11 +9,11 @@
 namespace grazelab::core {
 
 template <typename S>
-ChainOrProblem<S> makeChain(const BasicModel<S>& model) {
+TwoMassFormOrProblem<S> makeTwoMassForm(const BasicModel<S>& model) {
   using std::abs;
   using std::hypot;
   using std::sqrt;
-  Chain<S> chain;
+  TwoMassForm<S> chain;
   chain.model = model;
   chain.beta = model.m2 / model.m1;
   chain.kappa = model.design ? designKappa(chain.beta, *model.design) : S(model.k2 / model.k1);
@@ -65,7 +65,7 @@ ChainOrProblem<S> makeChain(const BasicModel<S>& model) {
     return {std::nullopt,
             "the ratios m2/m1 = " + formatScalar(beta) + " and k2/k1 = " + formatScalar(kappa) +
                 " are beyond the range of this precision",
-            ChainProblem::BeyondRange};
+            TwoMassFormProblem::BeyondRange};
   }
   // the fast phase over one slow period is ratio * 2 pi, known to ratio * 2 pi * eps: beyond
   // 1e-6 rad the fast mode's contribution (and with it every contact time) is rounding, and
@@ -77,7 +77,7 @@ ChainOrProblem<S> makeChain(const BasicModel<S>& model) {
                 ": the fast mode turns so often per slow period that its phase is rounding in " +
                 std::string(toString(precisionOf<S>())) + " (at most " +
                 formatScalar(S(S(1e-6) / (twoPi<S>() * epsilon<S>()))) + ")",
-            ChainProblem::PhaseRounding};
+            TwoMassFormProblem::PhaseRounding};
   }
   return {chain, {}};
 }
@@ -101,7 +101,7 @@ BasicState<S> Scale<S>::toPhysical(const BasicState<S>& x) const {
 }
 
 template <typename S>
-Scale<S> chooseScale(const Chain<S>& chain, const BasicState<S>& initial) {
+Scale<S> chooseScale(const TwoMassForm<S>& chain, const BasicState<S>& initial) {
   using std::abs;
   using std::ilogb;
   Scale<S> scale;
@@ -116,7 +116,7 @@ Scale<S> chooseScale(const Chain<S>& chain, const BasicState<S>& initial) {
 }
 
 template <typename S>
-S scaledEnergy(const Chain<S>& chain, const BasicState<S>& x) {
+S scaledEnergy(const TwoMassForm<S>& chain, const BasicState<S>& x) {
   const S stretch = x.u2 - x.u1;
   return (chain.lambdaSlow * (x.v1 * x.v1 + chain.beta * x.v2 * x.v2) + x.u1 * x.u1 +
           chain.kappa * stretch * stretch) /
@@ -124,7 +124,7 @@ S scaledEnergy(const Chain<S>& chain, const BasicState<S>& x) {
 }
 
 template <typename S>
-S physicalEnergy(const Chain<S>& chain, const BasicState<S>& physical) {
+S physicalEnergy(const TwoMassForm<S>& chain, const BasicState<S>& physical) {
   using std::abs;
   using std::ldexp;
   // a state at infinity (the 1IPP data where g2(T) = 0) or not a number: its energy is that too
@@ -138,17 +138,17 @@ S physicalEnergy(const Chain<S>& chain, const BasicState<S>& physical) {
 }
 
 double energy(const BasicModel<double>& model, const BasicState<double>& state) {
-  const ChainOrProblem<double> formed = makeChain(model);
+  const TwoMassFormOrProblem<double> formed = makeTwoMassForm(model);
   return formed.chain ? physicalEnergy(*formed.chain, state)
                       : std::numeric_limits<double>::infinity();
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                      \
-  template ChainOrProblem<S> makeChain<S>(const BasicModel<S>&);                     \
+  template TwoMassFormOrProblem<S> makeTwoMassForm<S>(const BasicModel<S>&);                     \
   template struct Scale<S>;                                                          \
-  template Scale<S> chooseScale<S>(const Chain<S>&, const BasicState<S>&);          \
-  template S scaledEnergy<S>(const Chain<S>&, const BasicState<S>&);                \
-  template S physicalEnergy<S>(const Chain<S>&, const BasicState<S>&);
+  template Scale<S> chooseScale<S>(const TwoMassForm<S>&, const BasicState<S>&);          \
+  template S scaledEnergy<S>(const TwoMassForm<S>&, const BasicState<S>&);                \
+  template S physicalEnergy<S>(const TwoMassForm<S>&, const BasicState<S>&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)
