@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <type_traits>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -75,7 +76,16 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
                              toDouble(S(state.v[chosen])), std::move(u)});
     };
   }
-  const BasicMassChain<S> chain = chainCast<S>(spec.chain);
+  BasicMassChain<S> chain = chainCast<S>(spec.chain);
+  if constexpr (!std::is_same_v<S, double>) {
+    // a designed chain raised: its design's root refined for these numbers, as the command line
+    // runs it (where that fails, double's design widened: in the ratio to double's rounding)
+    if (spec.design) {
+      if (const auto springs = designedSpringsIn<S>(chain.masses, chain.springs.front(), chain.rightSpring, *spec.design)) {
+        chain.springs = *springs;
+      }
+    }
+  }
   BasicChainStart<S> start = stateIn<S>(spec.start);
   for (double weight : spec.gloWeights) start.stillModes.push_back(weight == 0);
   if (spec.free) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/model/chain_design.h"
 #include "core/numbers/scalar.h"
 #include "core/model/mass_chain.h"
 #include "core/solver/chain_run.h"
@@ -36,6 +37,10 @@ struct ChainSeriesSpec {
   /// of weight 0 are then exactly still (BasicChainStart; GLOM_1 of a 3:2:1 chain grazes at T/3),
   /// and the run's command line gives the start as these weights. Empty: `start` as it is.
   std::vector<double> gloWeights = {};
+  /// the design the chain's springs are (core/model/chain_design.h), when designed: a run raised
+  /// to long double or binary128 takes them refined for its numbers there, as the command line
+  /// does (designedSpringsIn), not double's rounding of them
+  std::optional<DesignChoice> design = {};
 };
 
 /// One free flight: from an event (or the start) to the next contact.

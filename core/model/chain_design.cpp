@@ -12,6 +12,8 @@
 #include <numeric>
 #include <optional>
 #include <random>
+#include <type_traits>
+#include <utility>
 
 #include "core/model/mass_chain.h"
 #include "core/numbers/eigen_quad.h"
@@ -455,5 +457,47 @@ std::optional<std::vector<Quad>> refinedSprings(const std::vector<Quad>& masses,
   }
   return springs;
 }
+
+DesignChoice chooseDesign(const std::vector<double>& masses, double k1, double rightSpring,
+                          const std::vector<int>& harmonics, int number, std::stop_token stop) {
+  DesignChoice choice{harmonics, designSprings(masses, k1, rightSpring, harmonics, std::move(stop)), number,
+                      DesignChoiceProblem::None};
+  switch (choice.designs.outcome) {
+    case DesignOutcome::Designed:
+      if (number < 1 || number > int(choice.designs.designs.size())) choice.problem = DesignChoiceProblem::NoSuchDesign;
+      break;
+    case DesignOutcome::NoPositiveDesign: choice.problem = DesignChoiceProblem::NoPositiveDesign; break;
+    case DesignOutcome::Incomplete: choice.problem = DesignChoiceProblem::Incomplete; break;
+    case DesignOutcome::Stopped: choice.problem = DesignChoiceProblem::Stopped; break;
+    case DesignOutcome::BadRequest: choice.problem = DesignChoiceProblem::BadRequest; break;
+  }
+  return choice;
+}
+
+template <typename S>
+std::optional<std::vector<S>> designedSpringsIn(const std::vector<S>& masses, const S& k1, const S& rightSpring,
+                                                const DesignChoice& choice) {
+  if (choice.problem != DesignChoiceProblem::None) return std::nullopt;
+  if constexpr (std::is_same_v<S, double>) {
+    return choice.chosen().springs;
+  } else {
+    std::vector<Quad> wide;
+    for (const S& m : masses) wide.push_back(Quad(m));
+    const auto refined = refinedSprings(wide, Quad(k1), Quad(rightSpring), choice.harmonics, choice.chosen());
+    if (!refined) return std::nullopt;
+    std::vector<S> springs;
+    for (const Quad& k : *refined) springs.push_back(static_cast<S>(k));
+    return springs;
+  }
+}
+
+template std::optional<std::vector<double>> designedSpringsIn<double>(const std::vector<double>&, const double&,
+                                                                      const double&, const DesignChoice&);
+template std::optional<std::vector<long double>> designedSpringsIn<long double>(const std::vector<long double>&,
+                                                                                const long double&,
+                                                                                const long double&,
+                                                                                const DesignChoice&);
+template std::optional<std::vector<Quad>> designedSpringsIn<Quad>(const std::vector<Quad>&, const Quad&, const Quad&,
+                                                                  const DesignChoice&);
 
 }  // namespace grazelab::core

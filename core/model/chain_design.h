@@ -81,4 +81,40 @@ std::optional<std::vector<Quad>> refinedSprings(const std::vector<Quad>& masses,
                                                 const Quad& rightSpring, const std::vector<int>& harmonics,
                                                 const ChainDesign& design);
 
+/// Why a chain's springs could not be designed as asked (chooseDesign).
+enum class DesignChoiceProblem {
+  None,
+  NoPositiveDesign,  ///< DesignOutcome::NoPositiveDesign
+  Incomplete,        ///< DesignOutcome::Incomplete
+  Stopped,           ///< DesignOutcome::Stopped
+  BadRequest,        ///< DesignOutcome::BadRequest
+  NoSuchDesign,      ///< designs were found, fewer than the number asked for
+};
+
+/// Springs designed for requested frequency ratios, as every face asks for them (the command
+/// line's --frequencies and --design-branch, the explorer's resonance and design, Python's
+/// frequencies and design_branch): the design search's whole answer, and which design the chain
+/// takes. Made once per chain; its numbers in a wider precision come from it (designedSpringsIn).
+struct DesignChoice {
+  std::vector<int> harmonics;  ///< as asked, fastest first
+  ChainDesigns designs;
+  int number = 1;  ///< the design taken, 1-based
+  DesignChoiceProblem problem = DesignChoiceProblem::None;
+
+  const ChainDesign& chosen() const { return designs.designs[std::size_t(number - 1)]; }
+};
+
+/// The designs of a chain of these masses, k_1 and right wall (0: none) for the ratios
+/// `harmonics`, and design `number` (1-based) taken (designSprings; the problem when there is none
+/// or fewer than `number`).
+DesignChoice chooseDesign(const std::vector<double>& masses, double k1, double rightSpring,
+                          const std::vector<int>& harmonics, int number, std::stop_token stop = {});
+
+/// The chosen design's springs for a chain whose masses, k_1 and wall are these numbers in S: in
+/// double the design itself; in long double and binary128 its root polished for those numbers in
+/// binary128 (refinedSprings), then rounded to S. Empty when it cannot be refined there.
+template <typename S>
+std::optional<std::vector<S>> designedSpringsIn(const std::vector<S>& masses, const S& k1, const S& rightSpring,
+                                                const DesignChoice& choice);
+
 }  // namespace grazelab::core

@@ -47,7 +47,7 @@ enum class TwoMassFormProblem {
   PhaseRounding,  ///< the fast mode's phase over a slow period is rounding in the precision
 };
 
-/// A chain, or the one line saying why it cannot be formed in this precision.
+/// The form, or the one line saying why it cannot be formed in this precision.
 template <typename S>
 struct TwoMassFormOrProblem {
   std::optional<TwoMassForm<S>> chain;

@@ -148,14 +148,19 @@ std::optional<BasicModel<S>> notesModelOf(const BasicMassChain<S>& chain, const 
   const S& k2 = chain.springs[1];
   if (dynamics.harmonics.empty()) return BasicModel<S>{m1, m2, k1, k2, chain.gap, std::nullopt};
   if (dynamics.harmonics != std::vector<int>{2, 1}) return std::nullopt;
-  const auto upper = designedModel(m1, m2, k1, chain.gap, Branch::Upper);
-  const auto lower = designedModel(m1, m2, k1, chain.gap, Branch::Lower);
-  if (!upper || !lower) return std::nullopt;
-  return abs(upper->k2 - k2) <= abs(lower->k2 - k2) ? upper : lower;
+  // the ratio is found to 1e-9, which near m2/m1 = 9/16 (where the ratio is flat in k2) lets k2
+  // be 1e-4 off the design: the note's kernel, which runs the design itself, takes only springs
+  // that are a design's to rounding (the others keep theirs, on the modal kernel)
+  const S tolerance = S(1024) * std::numeric_limits<S>::epsilon();
+  for (const Branch branch : {Branch::Upper, Branch::Lower}) {
+    const auto model = designedModel(m1, m2, k1, chain.gap, branch);
+    if (model && abs(model->k2 - k2) <= tolerance * model->k2) return model;
+  }
+  return std::nullopt;
 }
 
 template <typename S>
-std::optional<TwoMassForm<S>> notesChainOf(const BasicModel<S>& model) {
+std::optional<TwoMassForm<S>> notesFormOf(const BasicModel<S>& model) {
   if (!validate(model).empty()) return std::nullopt;
   return makeTwoMassForm(model).chain;
 }
@@ -166,15 +171,17 @@ template <typename S>
 BasicReadyChain<S> readyChain(const BasicMassChain<S>& chain, Kernel kernel) {
   BasicReadyChain<S> ready{chain, chainDynamicsIn<S>(chain), std::nullopt};
   if (kernel == Kernel::Best) {
-    if (const auto model = notesModelOf(chain, ready.dynamics)) ready.notes = notesChainOf(*model);
+    if (const auto model = notesModelOf(chain, ready.dynamics)) ready.notes = notesFormOf(*model);
   }
   return ready;
 }
 
 template <typename S>
 BasicReadyChain<S> readyChain(const BasicModel<S>& model) {
-  BasicMassChain<S> chain{{model.m1, model.m2}, {model.k1, model.k2}, S(0), 2, model.gap};
-  BasicReadyChain<S> ready{chain, chainDynamicsIn<S>(chain), notesChainOf(model)};
+  // a design's k2 from the design itself (the model's may be a rounding of it for display)
+  const S k2 = model.design ? S(designKappa(S(model.m2 / model.m1), *model.design) * model.k1) : model.k2;
+  BasicMassChain<S> chain{{model.m1, model.m2}, {model.k1, k2}, S(0), 2, model.gap};
+  BasicReadyChain<S> ready{chain, chainDynamicsIn<S>(chain), notesFormOf(model)};
   return ready;
 }
 
@@ -297,12 +304,17 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
     if (onStop && !leaving && (force.value > force.error || (startLeaving && startLeaving->value > 0))) {
       if (!m_anyEvent || m_lastType != EventType::Stick || m_lastTime != t) {
         record(EventType::Stick, state, state.v, t);
+        // the last contact asked for: the run ends held there, as the note's kernel's does
+        if (m_run.contacts >= m_maxContacts) {
+          samplePiece(t, t, true, [&](const S&) { return state; });
+          return finish(StopReason::ContactLimit, state, t);
+        }
       }
       const BasicChainStuckPhase<S> phase = stuckPhase(chain, state);
       const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * slowestPeriod(phase));
       const BasicFirstZero<S> release = releaseOf(phase, horizon);
       if (m_stop.stop_requested()) return finish(StopReason::Cancelled, state, t);
-      const bool past = tEnd > 0 && (release.kind == ZeroKind::Budget || t + release.t > tEnd);
+      const bool past = tEnd > 0 && ((release.kind == ZeroKind::Budget && release.t >= horizon) || t + release.t > tEnd);
       const auto stuckAt = [&](const S& offset) { return stuckStateAt(phase, offset); };
       if (past) {
         samplePiece(t, S(tEnd), true, stuckAt);
@@ -345,8 +357,10 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
     const BasicChainContact<S> contact = firstContact(dynamics, m_flight, horizon, 1'000'000, leaving);
     const std::optional<BasicLeaving<S>> flightLeaving = leaving;
     leaving.reset();
-    const bool past = tEnd > 0 && (contact.kind == ChainContactKind::None || contact.kind == ChainContactKind::Budget ||
-                                   t + contact.t > tEnd);
+    // (a search out of its window budget short of its horizon, the end time, decided nothing up
+    // to there: not a time limit; at the horizon it says Budget with t = horizon exactly)
+    const bool past = tEnd > 0 && (contact.kind == ChainContactKind::None || t + contact.t > tEnd ||
+                                   (contact.kind == ChainContactKind::Budget && contact.t >= horizon));
     const auto flightAt = [&](const S& offset) { return stateAt(dynamics, m_flight, offset); };
     if (past) {
       samplePiece(t, S(tEnd), true, flightAt);
@@ -419,7 +433,12 @@ bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
   };
   while (m_run.contacts < pieceEnd) {
     if (m_stop.stop_requested()) return finish(StopReason::Cancelled, physical(m_scaled.x), m_t);
-    if (m_scaled.tau >= tauEnd) return finish(StopReason::TimeLimit, physical(m_scaled.x), m_tEnd);
+    if (m_scaled.tau >= tauEnd) {
+      // an event at the end time: its state is the end's (and the sample due there)
+      const BasicChainState<S> end = physical(m_scaled.x);
+      samplePiece(m_t, m_tEnd, true, [&](const S&) { return end; });
+      return finish(StopReason::TimeLimit, end, m_tEnd);
+    }
     const Step<S> step = m_stepper->advance(m_scaled, tauEnd, horizon, m_stop, defaultSearchSteps<S>(), true);
     const S from = m_t;
     const S when = m_scale.toPhysicalTime(step.tau);
@@ -437,6 +456,9 @@ bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
         continue;
       }
       case Step<S>::Kind::End:
+        // without an end time, a flight from the stop back on it in no time the search can tell:
+        // undecided there, as the modal kernel's
+        if (!(m_tEnd > 0)) return finish(StopReason::Undecided, m_anyEvent ? m_at : m_state, m_t);
         samplePiece(from, m_tEnd, true, motionFrom(from));
         return finish(StopReason::TimeLimit, physical(step.before), m_tEnd);
       case Step<S>::Kind::NoFurtherContact:
@@ -444,8 +466,10 @@ bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
         return finish(StopReason::NoFurtherContact, physical(step.before), m_t);
       case Step<S>::Kind::SearchLimit:
       case Step<S>::Kind::SearchBudget:
-        samplePiece(from, when, true, motionFrom(from));  // as far as the search went
-        return finish(StopReason::SearchBudget, physical(step.before), when);
+        // no contact decided as far as the search went (drawn that far): the run ends at the
+        // flight's start, as the modal kernel's (simulate ends at the search's end)
+        samplePiece(from, when, true, motionFrom(from));
+        return finish(StopReason::SearchBudget, m_anyEvent ? m_at : m_state, m_t);  // the start's own numbers
       case Step<S>::Kind::Undecided:
         return finish(StopReason::Undecided, physical(m_scaled.x), m_t);
       case Step<S>::Kind::Cancelled:

@@ -77,7 +77,7 @@ template <typename S>
 struct BasicReadyChain {
   BasicMassChain<S> numbers;
   BasicChainDynamics<S> dynamics;
-  std::optional<TwoMassForm<S>> notes;  ///< the note's kernel's chain; empty: the modal kernel
+  std::optional<TwoMassForm<S>> notes;  ///< the note's kernel's form of it; empty: the modal kernel
 };
 using ReadyChain = BasicReadyChain<double>;
 
@@ -85,9 +85,10 @@ using ReadyChain = BasicReadyChain<double>;
 /// compare the two on the note's chain).
 enum class Kernel { Best, Modal };
 
-/// A chain made ready; with Kernel::Best a two-mass chain in 1:2 resonance runs as the note's
-/// chain of the design branch its springs are nearer (the resonance exact, as
-/// chainDynamicsIn takes it), and one not commensurate as the note's chain of those springs.
+/// A chain made ready; with Kernel::Best a two-mass chain whose k2 is a 1:2 design's to rounding
+/// (1024 ulps) runs as the note's chain of that branch, and one not commensurate as the note's
+/// chain of those springs; any other (near 1:2 but off the design, another ratio, a chain the
+/// note's form cannot be made for in S) on the modal kernel.
 template <typename S>
 BasicReadyChain<S> readyChain(const BasicMassChain<S>& chain, Kernel kernel = Kernel::Best);
 /// The note's chain given by its model (a usable one: validate(model) empty), ready to run by

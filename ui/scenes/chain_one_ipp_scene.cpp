@@ -114,6 +114,7 @@ Scene::Spec chainOnePeriodicScene() {
         speed, QPointF(params.chainPeriodFraction, std::abs(orbit.V) / speedScale), QPointF(1, 0));
     // the slider's orbit over three of its periods, every mass on the grid
     job.spec.chains = {{chain, orbit.postImpact, 3, 3 * T, 900, 0, core::TrustMode::Auto}};
+    job.spec.chains.front().design = choice.design;
     QStringList weights;
     for (double w : limitWeights) weights.append(number(w, 4));
     job.chainSummary =

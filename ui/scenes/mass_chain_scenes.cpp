@@ -85,12 +85,17 @@ ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_toke
   ChainChoice choice;
   core::MassChain chain{given.masses, given.springs, given.rightSpring, given.stopMass, gap};
   if (!given.harmonics.empty()) {
-    const core::ChainDesigns designs =
-        core::designSprings(given.masses, given.springs.front(), given.rightSpring, given.harmonics, stop);
-    switch (designs.outcome) {
-      case core::DesignOutcome::Designed:
+    core::DesignChoice design = core::chooseDesign(given.masses, given.springs.front(), given.rightSpring,
+                                                   given.harmonics, std::max(given.designBranch, 1), stop);
+    const core::ChainDesigns& designs = design.designs;
+    switch (design.problem) {
+      case core::DesignChoiceProblem::None:
         break;
-      case core::DesignOutcome::NoPositiveDesign:
+      case core::DesignChoiceProblem::NoSuchDesign:
+        design.number = int(designs.designs.size());  // the last there is (the editor offers only those)
+        design.problem = core::DesignChoiceProblem::None;
+        break;
+      case core::DesignChoiceProblem::NoPositiveDesign:
         // a wall the design keeps as given can be what rules every design out: named then
         choice.problem =
             given.rightSpring > 0
@@ -107,23 +112,23 @@ ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_toke
                       .arg(resonanceName(given.harmonics))
                       .arg(designs.paths);
         return choice;
-      case core::DesignOutcome::Incomplete:
+      case core::DesignChoiceProblem::Incomplete:
         choice.problem =
             tr("The design of %1 could not follow every solution, so no list of designs can be "
                "promised: change the masses slightly.")
                 .arg(resonanceName(given.harmonics));
         return choice;
-      case core::DesignOutcome::Stopped:
+      case core::DesignChoiceProblem::Stopped:
         return choice;
-      case core::DesignOutcome::BadRequest:
+      case core::DesignChoiceProblem::BadRequest:
         choice.problem = tr("The resonance %1 cannot be designed for %2 masses.")
                              .arg(resonanceName(given.harmonics))
                              .arg(given.masses.size());
         return choice;
     }
     choice.designs = int(designs.designs.size());
-    const int design = std::clamp(given.designBranch, 1, choice.designs);
-    chain.springs = designs.designs[std::size_t(design - 1)].springs;
+    chain.springs = design.chosen().springs;
+    choice.design = std::move(design);
   }
   if (const auto problems = core::validate(chain); !problems.empty()) {
     choice.problem = QString::fromStdString(core::describe(problems));

@@ -12,6 +12,7 @@
 #include "core/experiments/chain_series.h"
 #include "core/model/mass_chain.h"
 #include "core/orbits/chain_glo.h"
+#include "core/model/chain_design.h"
 #include "ui/compute/params.h"
 #include "ui/compute/sim_types.h"
 
@@ -23,6 +24,8 @@ struct ChainChoice {
   std::optional<core::MassChain> chain;
   QString problem;
   int designs = 0;  ///< how many designs its resonance has for these masses (0: as given)
+  /// the design it took (its runs raised in precision take its springs refined there)
+  std::optional<core::DesignChoice> design;
 };
 ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_token stop);
 

@@ -296,6 +296,7 @@ Scene::Spec threeMassesScene() {
                                                  contrast ? core::TrustMode::Auto : core::TrustMode::Off};
     if (params.perturbation == 0) run.gloWeights = given.weights;  // GLO itself: its still modes kept
     SceneJob job;
+    run.design = choice.design;
     job.spec.chains = {run};
     if (contrast && ratios.commensurate && chain.size() >= 2) {
       // the contrast: the same start on the chain with k2 5 % stiffer (no common period); its

@@ -426,30 +426,29 @@ Parsed<MassChainInput> designedChain(const OptionValues& options, core::MassChai
                                 .arg(options.value("design-branch"))};
     }
   }
-  ChainDesignChoice choice{*ratios, core::designSprings(chain.masses, k1, chain.rightSpring, *ratios, stop), branch};
+  core::DesignChoice choice = core::chooseDesign(chain.masses, k1, chain.rightSpring, *ratios, branch, stop);
   const core::ChainDesigns& designs = choice.designs;
-  switch (designs.outcome) {
-    case core::DesignOutcome::Stopped: return {std::nullopt, {}};
-    case core::DesignOutcome::BadRequest: return {std::nullopt, "--frequencies: the request cannot be designed"};
-    case core::DesignOutcome::Incomplete:
+  switch (choice.problem) {
+    case core::DesignChoiceProblem::Stopped: return {std::nullopt, {}};
+    case core::DesignChoiceProblem::BadRequest: return {std::nullopt, "--frequencies: the request cannot be designed"};
+    case core::DesignChoiceProblem::Incomplete:
       return {std::nullopt, QStringLiteral("--frequencies %1: the design search could not follow every one of its "
                                            "solutions, so no list of designs can be promised")
                                 .arg(request)};
-    case core::DesignOutcome::NoPositiveDesign:
+    case core::DesignChoiceProblem::NoPositiveDesign:
       return {std::nullopt, QStringLiteral("--frequencies %1: no chain with these masses has these ratios: each of "
                                            "the %2 solutions of the design equations is complex or has a spring <= 0")
                                 .arg(request)
                                 .arg(designs.paths)};
-    case core::DesignOutcome::Designed: break;
+    case core::DesignChoiceProblem::NoSuchDesign:
+      return {std::nullopt, QStringLiteral("--design-branch %1: the ratios %2 have %3 design%4 for these masses (1 to %3)")
+                                .arg(branch)
+                                .arg(request)
+                                .arg(designs.designs.size())
+                                .arg(designs.designs.size() == 1 ? "" : "s")};
+    case core::DesignChoiceProblem::None: break;
   }
-  if (branch > int(designs.designs.size())) {
-    return {std::nullopt, QStringLiteral("--design-branch %1: the ratios %2 have %3 design%4 for these masses (1 to %3)")
-                              .arg(branch)
-                              .arg(request)
-                              .arg(designs.designs.size())
-                              .arg(designs.designs.size() == 1 ? "" : "s")};
-  }
-  chain.springs = designs.designs[std::size_t(branch - 1)].springs;
+  chain.springs = choice.chosen().springs;
   return {MassChainInput{chain, std::move(choice)}, {}};
 }
 
@@ -550,9 +549,9 @@ Parsed<ModelInput<S>> twoMassChain(const OptionValues& options) {
   const S gap = *toNumber<S>("gap", options.value("gap"), error);
   core::BasicModel<S> model{masses[0], masses[1], S(1), S(1), gap, std::nullopt};
   if (options.isSet("springs")) model.k1 = toList<S>("springs", options.value("springs"), error)->front();
-  const std::optional<ChainDesignChoice>& design = input.value->design;
+  const std::optional<core::DesignChoice>& design = input.value->design;
   if (design && design->harmonics == std::vector<int>{2, 1}) {
-    const core::Branch branch = design->branch == 1 ? core::Branch::Upper : core::Branch::Lower;
+    const core::Branch branch = design->number == 1 ? core::Branch::Upper : core::Branch::Lower;
     const auto designed = core::designedModel(model.m1, model.m2, model.k1, model.gap, branch);
     if (!designed) {
       return {std::nullopt, QStringLiteral("--frequencies 2:1: no 1:2 design for the masses read in this precision "
@@ -687,22 +686,18 @@ Parsed<core::BasicMassChain<S>> massChainIn(const OptionValues& options, const M
       return {std::move(chain), {}};
     }
     // designed: the double design's root polished with the chain's own numbers in binary128
-    const ChainDesignChoice& choice = *input.design;
-    std::vector<core::Quad> masses;
-    for (const S& m : chain.masses) masses.push_back(core::Quad(m));
+    const core::DesignChoice& choice = *input.design;
     // --springs gives k1 alone here (checked)
     if (options.isSet("springs")) chain.springs.front() = *toNumber<S>("springs", options.value("springs"), error);
-    const core::Quad k1 = core::Quad(chain.springs.front());
-    const auto springs = core::refinedSprings(masses, k1, core::Quad(chain.rightSpring), choice.harmonics,
-                                              choice.designs.designs[std::size_t(choice.branch - 1)]);
+    const auto springs = core::designedSpringsIn<S>(chain.masses, chain.springs.front(), chain.rightSpring, choice);
     if (!springs) {
       return {std::nullopt, QStringLiteral("--frequencies %1: design %2 cannot be refined for the masses read in %3: "
                                            "give --precision double")
                                 .arg(options.value("frequencies"))
-                                .arg(choice.branch)
+                                .arg(choice.number)
                                 .arg(std::is_same_v<S, core::Quad> ? "binary128" : "long double")};
     }
-    for (std::size_t i = 0; i < springs->size(); ++i) chain.springs[i] = static_cast<S>((*springs)[i]);
+    chain.springs = *springs;
     return {std::move(chain), {}};
   }
 }

@@ -88,18 +88,10 @@ Parsed<core::StartSpec<S>> parseStartSpec(const OptionValues& options,
 template <typename S>
 Parsed<RunInput<S>> parseRun(const OptionValues& options);
 
-/// Springs designed for requested frequency ratios (--frequencies, --design-branch): the
-/// design search's whole answer, and which design the chain took.
-struct ChainDesignChoice {
-  std::vector<int> harmonics;  ///< as asked, fastest first
-  core::ChainDesigns designs;
-  int branch = 1;  ///< 1-based
-};
-
-/// A chain of N masses, and how its springs came when designed.
+/// A chain of N masses, and how its springs came when designed (--frequencies, --design-branch).
 struct MassChainInput {
   core::MassChain chain;
-  std::optional<ChainDesignChoice> design;
+  std::optional<core::DesignChoice> design;
 };
 
 /// A chain of N masses (--masses, --springs, --right-spring, --stop-mass, --gap), checked; or,

@@ -218,7 +218,7 @@ template JsonValue massChainValue<double>(const core::BasicMassChain<double>&, c
 template JsonValue massChainValue<long double>(const core::BasicMassChain<long double>&, const long double&);
 template JsonValue massChainValue<core::Quad>(const core::BasicMassChain<core::Quad>&, const core::Quad&);
 
-JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<ChainDesignChoice>& design) {
+JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<core::DesignChoice>& design) {
   using V = JsonValue;
   const core::ChainModes modes = core::chainModes(chain);
   const core::SpectrumRatios ratios = core::detectRatios(modes.omega);
@@ -253,7 +253,7 @@ JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<C
     }
     designValue = V::object(
         {{"frequencies", V::array(std::move(asked))},
-         {"branch", V::of(std::int64_t(design->branch))},
+         {"branch", V::of(std::int64_t(design->number))},
          {"designs", V::array(std::move(found))},
          {"solutions", V::of(std::int64_t(design->designs.paths))},
          {"complex_or_not_positive", V::of(std::int64_t(design->designs.complexEnds))},

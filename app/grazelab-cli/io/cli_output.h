@@ -33,7 +33,7 @@ JsonValue infoValue(const ModelInput<S>& model);
 /// `info` of a chain of N masses: the chain, each mode (frequency, period, shape, whether it has
 /// a node at the stop, its harmonic number) and the frequencies' ratios, in double; for a
 /// designed chain also its `design`: the ratios asked, the design used and every design found.
-JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<ChainDesignChoice>& design = std::nullopt);
+JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<core::DesignChoice>& design = std::nullopt);
 /// A command's one JSON document: handed over as values (Io::document, the Python module) or
 /// written to stdout, one field per line.
 void emitDocument(const Io& io, JsonValue document);
