@@ -13,6 +13,7 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <numeric>
 
 #include "ui/widgets/batched_layout.h"
@@ -363,8 +364,11 @@ void ChainEditor::rebuildRows() {
 
 void ChainEditor::setSummary(const QString& text, int designs, bool refused) {
   // a refusal moves no control (a drag refused half-way moved the slider under the pointer by
-  // 115 px): the summary keeps its height at least, the designs row stays, greyed
-  m_summary->setMinimumHeight(refused ? m_summary->height() : 0);
+  // 115 px): the summary keeps at least the height its text so far needs at its width (not
+  // merely its present height, which a relayout under way can have shrunk), the designs row
+  // stays, greyed
+  const int kept = std::max(m_summary->height(), m_summary->heightForWidth(m_summary->width()));
+  m_summary->setMinimumHeight(refused ? kept : 0);
   m_summary->setText(text);
   m_summary->setStyleSheet(refused ? QStringLiteral("QLabel { color: #a01010; font-weight: bold; }")
                                    : QString());
