@@ -553,7 +553,7 @@ def map(*, x: _Union[str, _Sequence], y: _Union[str, _Sequence], m1: float = 1.0
     progress: ``progress(fraction, text)``, called on the calling thread.
     masses, springs, right_spring, stop_mass, frequencies, design_branch: a chain of N masses, as
         in ``simulate``; its axes are u<i> or v<i> (i from 1 to N) of the start ``state`` (2N
-        numbers, default at rest at 0), its flights' ratios in units of the chain's period (the
+        numbers, default the grazing-start plane: the stopped mass at rest on the stop, all else 0), its flights' ratios in units of the chain's period (the
         common period T, else the slowest mode's), the horizon with ``trust`` "auto" as for two masses.
         Axes w<j> instead (both of them, three modes or more) are GLO weights lambda_j: every run
         starts on GLO_lambda at its touch plus ``perturb`` (2N numbers), lambda ``glo_weights``

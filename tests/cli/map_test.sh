@@ -163,6 +163,14 @@ assert int(point['impacts']) == 5 and abs(float(point['fft_first']) - (events[1]
 flights = [float(r['fft_first']) for r in rows if math.isfinite(float(r['fft_first']))]
 assert len(flights) > 100 and max(flights) <= T * (1 + 1e-12), max(flights)" || fail "a map of N masses"
 fi
+# with no --state a map of N masses starts on the grazing-start plane, as the two-mass map: the
+# stopped mass (here the second of three, with a wall; gap 0.7) at rest on the stop, all else 0
+plane=(--masses 1,0.5,2 --springs 1,0.8,1.3 --right-spring 0.4 --stop-mass 2 --gap 0.7 --x u1:-0.5:0.5:4 --y v3:-0.3:0.3:3 --contacts 6)
+expect_ok map "${plane[@]}" --out "$work/plane/default" &&
+  expect_ok map "${plane[@]}" --state 0,0.7,0,0,0,0 --out "$work/plane/given" &&
+  for q in $quantities; do
+    cmp -s "$work/plane/default-$q.npy" "$work/plane/given-$q.npy" || fail "N masses: the default start is not the grazing-start plane ($q)"
+  done
 EXPECT_WORD="u<i>|v<i>" expect_invalid map --masses 1,1 --springs 1,1 --x lambda:0:1:3 --y u1:0:1:3 --out "$work/bad3/a"
 EXPECT_WORD="--state" expect_invalid map --masses 1,1 --springs 1,1 --x u1:0:1:3 --y v1:0:1:3 --glo 0.5 --out "$work/bad3/a"
 EXPECT_WORD="given by --masses" expect_invalid map --springs 1,1 --x u1:0:1:3 --y v1:0:1:3 --out "$work/bad3/a"

@@ -98,7 +98,7 @@ for case in "${cases[@]}"; do
   same_both "case $index: modes" "$note" "$masses" "modes$index" modes --max-impacts 2 --energy-range 0.3:1.5
   # the note's design written with --masses is run by the note's engine: simulate (its starts
   # written as a chain's: --glo-weights 1 - lambda, lambda for --glo lambda), family, map (over
-  # u<i>, v<i> from a state, at rest at 0 by default as for N masses)
+  # u<i>, v<i>, from the grazing-start plane when no state is given, as for every chain)
   case "$masses" in *"--frequencies 2:1"*) ;; *) continue ;; esac
   same_pair "case $index: simulate from a state" "" "simulate $note --state 0.1,0.5,0,0.3 --contacts 40" \
     "simulate $masses --state 0.1,0.5,0,0.3 --contacts 40"
@@ -110,8 +110,11 @@ for case in "${cases[@]}"; do
     "simulate $masses --state 0,0.6,0,0 --t-end 20 --sample-step 0.5"
   same_both "case $index: glo-set" "$note" "$masses" "" glo-set
   same_pair "case $index: family" "family$index" "family --onepp --count 150 $note" "family --onepp --count 150 $masses"
-  same_pair "case $index: map" "map$index" "map --x u1:-0.8:0.8:5 --y v2:-0.4:0.4:4 --contacts 4 --state 0,0,0,0 $note" \
+  same_pair "case $index: map" "map$index" "map --x u1:-0.8:0.8:5 --y v2:-0.4:0.4:4 --contacts 4 $note" \
     "map --x u1:-0.8:0.8:5 --y v2:-0.4:0.4:4 --contacts 4 $masses"
+  same_pair "case $index: map from a state" "mapstate$index" \
+    "map --x u1:-0.8:0.8:5 --y v1:-0.4:0.4:4 --contacts 4 --state 0,0.5,0,0 $note" \
+    "map --x u1:-0.8:0.8:5 --y v1:-0.4:0.4:4 --contacts 4 --state 0,0.5,0,0 $masses"
 done
 [ "$ran" -ge 26 ] || fail "only $ran commands ran on both forms"
 # the note's chain written with --masses keeps a chain's starts: one of them, --glo refused

@@ -215,8 +215,8 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
     return kExitInvalidInput;
   }
   // a chain of N masses (--masses) or the two-mass chain; the note's chain written with --masses
-  // over the axes u<i>, v<i> from a --state (at rest at 0 by default, as for N masses) is the
-  // note's map (its engine: the two-mass options' bits)
+  // over the axes u<i>, v<i> (from a --state, else the grazing-start plane, as for every chain)
+  // is the note's map (its engine: the two-mass options' bits)
   const bool notes = writesTheNotesChain(parser) && onStateAxes(parser);
   const bool masses = parser.isSet("masses") && !notes;
   std::optional<core::MapSpec> spec;
@@ -227,9 +227,7 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
     if (stopped) return kExitInterrupted;
     if (!chainSpec) return kExitInvalidInput;
   } else if (notes) {
-    const OptionValues given(parser);
-    const OptionValues atRest(given, {GivenOption{"state", "0,0,0,0", {}, false}}, {});
-    spec = parseSpec(parser.isSet("state") ? given : atRest, error);
+    spec = parseSpec(parser, error);
     if (!spec) return kExitInvalidInput;
   } else {
     for (const char* name : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch", "glo-weights"}) {

@@ -40,7 +40,8 @@ std::optional<std::vector<double>> finiteNumbers(const OptionValues& options, co
 }  // namespace
 
 // A map of a chain of N masses: --masses ... (as simulate); axes u<i> or v<i> set the start
-// --state u1..uN,v1..vN (default: at rest at 0), or axes w<j> the GLO weights of a start on
+// --state u1..uN,v1..vN (default: the grazing-start plane, the stopped mass at rest on the stop and
+// every other coordinate 0, as the two-mass map's), or axes w<j> the GLO weights of a start on
 // GLO_lambda (--glo-weights, default 0; the last weight no axis sets balances the others)
 // pushed by --perturb
 std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options, std::stop_token stop,
@@ -71,6 +72,7 @@ std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options,
   const Eigen::Index n = spec.chain.size();
   spec.start = {Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
   spec.push = spec.start;
+  spec.start.u[spec.chain.stopped() - 1] = spec.chain.gap;  // the grazing-start plane
   for (const char* name : {"x", "y"}) {
     if (!options.isSet(name)) {
       error = QStringLiteral("--%1 u<i>|v<i>|w<j>:from:to:count is required").arg(name);

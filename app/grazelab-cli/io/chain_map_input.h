@@ -14,7 +14,7 @@
 namespace grazelab::cli {
 
 /// A map of a chain of N masses from the command line: the chain (--masses ... as simulate),
-/// the start --state u1..uN,v1..vN (default at rest at 0), --x and --y u<i>|v<i>:from:to:count,
+/// the start --state u1..uN,v1..vN (default the grazing-start plane: u_s = d, all else 0), --x and --y u<i>|v<i>:from:to:count,
 /// or w<j> (GLO weights: --glo-weights, --perturb), --contacts, --trust; or nothing with `error` set (`stopped`: a design interrupted).
 std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options, std::stop_token stop,
                                                     QString& error, bool& stopped);
