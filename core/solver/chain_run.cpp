@@ -14,9 +14,18 @@ namespace grazelab::core {
 
 template <typename S>
 S chainEnergy(const BasicMassChain<S>& chain, const BasicChainState<S>& state) {
-  const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> M = massMatrix(chain);
-  const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> K = stiffnessMatrix(chain);
-  return S(0.5) * state.v.dot(M * state.v) + S(0.5) * state.u.dot(K * state.u);
+  // each spring's stretch squared, in O(N) with no matrix made: a run measures its energy at
+  // every event, and a chain may have a thousand masses
+  const Eigen::Index n = state.u.size();
+  S kinetic = 0;
+  S potential = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    kinetic += chain.masses[std::size_t(i)] * state.v[i] * state.v[i];
+    const S stretch = i == 0 ? state.u[0] : S(state.u[i] - state.u[i - 1]);
+    potential += chain.springs[std::size_t(i)] * stretch * stretch;
+  }
+  if (chain.rightSpring > 0) potential += chain.rightSpring * state.u[n - 1] * state.u[n - 1];
+  return S(0.5) * kinetic + S(0.5) * potential;
 }
 
 namespace {
@@ -219,25 +228,38 @@ BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, con
 }
 
 template <typename S>
+S BasicChainSimulator<S>::energyOf(const BasicChainState<S>& at) const {
+  return m_notes ? physicalEnergy(*m_notes, twoMassStateOf(at)) : chainEnergy(m_chain, at);
+}
+
+template <typename S>
 bool BasicChainSimulator<S>::finish(StopReason reason, const BasicChainState<S>& at, const S& when) {
   m_run.stop = reason;
   m_run.final = at;
   m_run.tFinal = when;
-  m_run.energyFinal = m_notes ? physicalEnergy(*m_notes, twoMassStateOf(at)) : chainEnergy(m_chain, at);
+  m_run.energyFinal = energyOf(at);
   m_done = true;
   return true;
 }
 
 template <typename S>
 void BasicChainSimulator<S>::record(EventType type, const BasicChainState<S>& at, const ChainVector<S>& vBefore,
-                                    const S& when) {
+                                    const S& when, const S& residual) {
   const int s = m_dynamics.stop;
   if (m_sink) m_sink({when, type, at.u, vBefore, at.v[s]});
   else m_run.events.push_back({when, type, at.u, vBefore, at.v[s]});
   m_anyEvent = true;
   m_lastType = type;
   m_lastTime = when;
-  if (isContact(type)) ++m_run.contacts;
+  // the run's own accuracy, event by event: its energy against the start's (the stopped mass's
+  // distance from the stop at a contact, before it is put on it, comes with the contact)
+  using std::abs;
+  const double drift = toDouble(S(abs(energyOf(at) / m_run.energyInitial - 1)));
+  if (drift > m_run.maxEnergyDrift || !(drift == drift)) m_run.maxEnergyDrift = drift;
+  if (isContact(type)) {
+    ++m_run.contacts;
+    m_run.maxContactResidual = std::max(m_run.maxContactResidual, toDouble(residual));
+  }
   switch (type) {
     case EventType::Impact: ++m_run.impacts; break;
     case EventType::Grazing: ++m_run.grazings; break;
@@ -389,12 +411,14 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
       // by its fourth derivative, with no force)
       samplePiece(t, S(t + contact.t), false, flightAt);
       t += contact.t;
+      S residual = 0;
       if (afterStopPeriod(dynamics, stopRepeats(dynamics, m_flight), m_flight)) {
         stateInto(dynamics, m_flight, S(0), state);
+        residual = abs(state.u[s] - dynamics.gap);
         state.u[s] = dynamics.gap;
         state.v[s] = 0;
       }
-      record(EventType::Grazing, state, state.v, t);
+      record(EventType::Grazing, state, state.v, t, residual);
       leaving = flightLeaving;
       m_flightKept = true;
       continue;
@@ -403,9 +427,10 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
     stateInto(dynamics, m_flight, contact.t, m_at);
     m_vBefore = m_at.v;
     const S when = t + contact.t;
+    const S residual = abs(m_at.u[s] - dynamics.gap);
     m_at.u[s] = dynamics.gap;  // on the stop exactly: the next flight starts on it
     m_at.v[s] = -m_at.v[s];  // an impact: the one contact left (a touch is a periodic return, above)
-    record(EventType::Impact, m_at, m_vBefore, when);
+    record(EventType::Impact, m_at, m_vBefore, when, residual);
     state = m_at;
     t = when;
   }
@@ -451,7 +476,7 @@ bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
         m_at.u << after.u1, after.u2;
         m_at.v << after.v1, after.v2;
         m_vBefore << before.v1, before.v2;
-        record(step.type, m_at, m_vBefore, when);
+        record(step.type, m_at, m_vBefore, when, timesPowerOfTwo(step.residual, m_scale.exponent));
         m_t = when;
         continue;
       }
@@ -524,6 +549,8 @@ ChainRun inDouble(const BasicChainRun<S>& from) {
   run.stop = from.stop;
   run.energyInitial = toDouble(from.energyInitial);
   run.energyFinal = toDouble(from.energyFinal);
+  run.maxEnergyDrift = from.maxEnergyDrift;
+  run.maxContactResidual = from.maxContactResidual;
   return run;
 }
 

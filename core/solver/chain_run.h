@@ -41,6 +41,10 @@ struct BasicChainRun {
   StopReason stop = StopReason::ContactLimit;  ///< never SearchLimit nor InvalidInput
   S energyInitial = 0;
   S energyFinal = 0;
+  /// the run's accuracy as it went: the largest |E / E0 - 1| over the states after its events
+  /// (NaN once one was not finite), and the largest |u_s - d| at its contacts [length]
+  double maxEnergyDrift = 0;
+  double maxContactResidual = 0;
 };
 using ChainRun = BasicChainRun<double>;
 
@@ -133,9 +137,13 @@ class BasicChainSimulator {
   const S& time() const { return m_t; }
 
  private:
+  /// the energy of a state of the run (the note's kernel: as the note's simulator measures it)
+  S energyOf(const BasicChainState<S>& at) const;
   /// ends the run there, for `reason`; true (advance's answer)
   bool finish(StopReason reason, const BasicChainState<S>& at, const S& when);
-  void record(EventType type, const BasicChainState<S>& at, const ChainVector<S>& vBefore, const S& when);
+  /// `residual`: a contact's |u_s - d| as its flight reached it (before it is put on the stop)
+  void record(EventType type, const BasicChainState<S>& at, const ChainVector<S>& vBefore, const S& when,
+              const S& residual = 0);
   /// advance() by the note's kernel
   bool advanceNotes(long pieceEnd);
   double sampleTime(std::size_t index) const;

@@ -300,7 +300,9 @@ V runDocument(const core::BasicReadyChain<S>& ready, const ChainRunIn<S>& in, V 
                                {"releases", V::of(std::int64_t(run.releases))}})},
        {"energy", V::object({{"initial", V::number(run.energyInitial)},
                              {"final", V::number(run.energyFinal)},
-                             {"relative_drift", V::number(S(abs(run.energyFinal / run.energyInitial - 1)))}})},
+                             {"relative_drift", V::number(S(abs(run.energyFinal / run.energyInitial - 1)))},
+                             {"max_rel_drift", V::number(run.maxEnergyDrift)}})},
+       {"accuracy", V::object({{"max_contact_residual", V::number(run.maxContactResidual)}})},
        {"trust", trustValue(trust)},
        {"precision", std::move(precision)}});
   if (sampled) {
@@ -363,8 +365,11 @@ std::string summaryText(const core::BasicReadyChain<S>& ready, const ChainRunIn<
                 seconds > 0 ? double(run.contacts) / seconds : 0.0);
   text += line;
   using std::abs;
-  std::snprintf(line, sizeof line, "energy drift   %.3g (relative, final against initial)\n",
-                core::toDouble(abs(run.energyFinal / run.energyInitial - 1)));
+  std::snprintf(line, sizeof line, "energy drift   %.3g (max relative, at events; final against initial %.3g)\n",
+                run.maxEnergyDrift, core::toDouble(abs(run.energyFinal / run.energyInitial - 1)));
+  text += line;
+  std::snprintf(line, sizeof line, "|u%d - gap|     %.3g (max at contacts, as the flights reached them)\n",
+                masses.stopped(), run.maxContactResidual);
   text += line;
   text += "precision      " + precision + "\n";
   for (const std::string& rung : raised) text += "               raised: " + rung + "\n";

@@ -122,6 +122,11 @@ void expectTheNotesBits(const BasicModel<S>& model, const BasicReadyChain<S>& re
   EXPECT_TRUE(one.tFinal == tEndExpected) << label;
   EXPECT_TRUE(twoMassStateOf(one.final) == finalExpected) << label;
   EXPECT_TRUE(one.energyInitial == two.initialEnergy) << label;
+  // its accuracy as the note's recorder measures it: the same residuals; the energy drift over
+  // the physical states, not the scaled ones (rounding apart)
+  EXPECT_EQ(one.maxContactResidual, two.cost.maxContactResidual) << label;
+  EXPECT_NEAR(one.maxEnergyDrift, two.cost.maxRelEnergyDrift, 16 * toDouble(std::numeric_limits<S>::epsilon()))
+      << label;
 }
 
 template <typename S>
@@ -161,6 +166,55 @@ TEST(ChainRun, TheNotesChainIsRunByTheNotesKernelBitForBit) {
   notesChainsInThePrecision<double>();
   notesChainsInThePrecision<long double>();
   notesChainsInThePrecision<Quad>();
+}
+
+// A run measures its own accuracy as it goes: the largest energy drift over its events' states
+// (at least the final state's, when it ends on an event) and the largest |u_s - d| of its
+// contacts as the flights reached them, both at the rounding of the run's precision, and far
+// smaller one precision up: chains of 3 to 6 masses, resonant and not, a wall, interior stops.
+template <typename S>
+void measuresItsAccuracyIn(double bound, double& largestResidual) {
+  std::mt19937 random(20261130);
+  long contacts = 0;
+  const std::vector<MassChain> chains{MassChain{{1.0, 0.2, 0.05}, {}, 0, 0, 1.0},  // 3:2:1, designed in S below
+                                      MassChain{{1.0, 0.7, 1.3, 0.5}, {1.0, 0.8, 1.4, 0.6}, 0.3, 2, 1.0},
+                                      MassChain{{1.0, 1.0, 1.0, 1.0, 1.0}, {1, 1, 1, 1, 1}, 0, 3, 0.5},
+                                      MassChain{{0.4, 1.0, 0.8, 1.1, 0.6, 1.0}, {1.2, 1, 0.7, 1.3, 0.9, 1.1}, 0, 0, 1.0}};
+  for (const MassChain& given : chains) {
+    BasicMassChain<S> chain = chainCast<S>(given);
+    if (given.springs.empty()) {
+      // a design in S's own numbers: double's rounding of it, run in binary128 as exactly 3:2:1,
+      // drifts by 1e-17 (what the measure is for)
+      const DesignChoice design = chooseDesign(given.masses, 1.0, 0.0, {3, 2, 1}, 1);
+      chain.springs = *designedSpringsIn<S>(chain.masses, S(1), S(0), design);
+    }
+    const BasicReadyChain<S> ready = readyChain(chain);
+    for (int trial = 0; trial < 4; ++trial) {
+      ChainState start = randomStart(given, random);
+      start.u[given.stopped() - 1] = std::min(start.u[given.stopped() - 1], 0.9 * given.gap);  // below the stop
+      const BasicChainState<S> state{start.u.template cast<S>(), start.v.template cast<S>()};
+      const BasicChainRun<S> run = runChain(ready, state, 200);
+      contacts += run.contacts;
+      EXPECT_LE(run.maxEnergyDrift, bound) << given.size() << " masses, trial " << trial;
+      EXPECT_LE(run.maxContactResidual, bound * toDouble(chain.gap)) << given.size() << " masses, trial " << trial;
+      if (run.stop == StopReason::ContactLimit) {
+        using std::abs;
+        EXPECT_GE(run.maxEnergyDrift, toDouble(S(abs(run.energyFinal / run.energyInitial - 1))));
+      }
+      largestResidual = std::max(largestResidual, run.maxContactResidual);
+    }
+  }
+  EXPECT_GT(contacts, 2000);  // (a start may stay below the stop for good)
+}
+
+TEST(ChainRun, ARunMeasuresItsOwnAccuracy) {
+  double inDouble = 0, inQuad = 0;
+  measuresItsAccuracyIn<double>(1e-12, inDouble);
+  measuresItsAccuracyIn<Quad>(1e-28, inQuad);
+  // the residuals are measured, not the stop's own value put back: some contact of double's
+  // runs lands off it by rounding, and binary128's land far closer
+  EXPECT_GT(inDouble, 0.0);
+  EXPECT_LT(inQuad, 1e-6 * inDouble);
 }
 
 TEST(ChainRun, TheNotesKernelSamplesTheNotesMotion) {
