@@ -392,7 +392,7 @@ EXPECT_WORD="--state u1" expect_invalid simulate --masses 1,0.5 --springs 1,0.5
 EXPECT_WORD="4 numbers for 3 masses" expect_invalid simulate --masses 1,1,1 --springs 1,1,1 --state 0,0,0,0
 EXPECT_WORD="past the stop" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,2,0,0
 EXPECT_WORD="not available for a chain" expect_invalid simulate --masses 1,1 --springs 1,1 --glo 0.5
-EXPECT_WORD="not json, csv or summary" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format ndjson
+EXPECT_WORD="not json, jsonl, csv or summary" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --format ndjson
 EXPECT_WORD="not off, auto or full" expect_invalid simulate --masses 1,1 --springs 1,1 --state 0,0,0,1 --trust most
 # the error estimate of N masses: a short run agrees with its shadow; a long chaotic one passes
 # its horizon, observed, within the run
@@ -516,9 +516,16 @@ expect_interrupted() {  # SIGNAL LIMIT_MS WHAT -- command arguments
 }
 
 # SIGINT during a long run of ten masses, and during a seven-mass design (its 5040 paths take
-# tens of seconds), ends it within 1 s
+# tens of seconds), ends it within 1 s; the json, streamed past 10^6 contacts, is a whole document
+# (its events so far, cancelled)
 expect_interrupted INT 1000 "a run of ten masses" -- simulate --masses 1,1,1,1,1,1,1,1,1,1 \
-  --springs 1,1,1,1,1,1,1,1,1,1 --state 0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,2 --contacts 1000000
+  --springs 1,1,1,1,1,1,1,1,1,1 --state 0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,2 --contacts 100000000 --trust off
+python3 -c "
+import json
+d = json.load(open('$out'))
+assert d['stop_reason'] == 'cancelled' and len(d['events']) > 1000 and d['contacts']['total'] == len(d['events']), d['stop_reason']
+assert d['final']['t'] == d['events'][-1]['t'] and d['trust']['verdict'] == 'unchecked', (d['final'], d['trust'])" ||
+  fail "an interrupted json of ten masses is not a whole document: $(tail -c 300 "$out")"
 expect_interrupted INT 1000 "a seven-mass design" -- info --masses 1,0.8,0.6,0.5,0.4,0.3,0.2 \
   --frequencies 7:6:5:4:3:2:1
 
@@ -530,6 +537,18 @@ if expect_ok simulate $nm; then
   cp "$out" "$work/n.json"
   if expect_ok simulate $nm --format csv --trust off; then
     cp "$out" "$work/n.csv"
+    if expect_ok simulate $nm --format jsonl; then
+      # jsonl: the run's head, each event, the end: the json's fields record by record
+      python3 -c "
+import json
+d = json.load(open('$work/n.json'))
+records = [json.loads(line) for line in open('$out')]
+assert [r.pop('record') for r in records] == ['run'] + ['event'] * len(d['events']) + ['end'], records[:2]
+assert records[0] == {k: d[k] for k in ('chain', 'initial')}, records[0]
+assert records[1:-1] == d['events']
+end = {k: v for k, v in d.items() if k not in ('chain', 'initial', 'events')}
+assert records[-1] == end, (records[-1], end)" || fail "N masses streamed as jsonl"
+    fi
     if expect_ok simulate $nm --format summary; then
       python3 -c "
 import csv, json

@@ -12,6 +12,7 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -35,23 +36,27 @@ namespace {
 
 using V = JsonValue;
 
-// the events of a chain of N masses are kept in memory until the json document is written (csv
-// and summary stream them: no bound but the run's own)
-constexpr long kMaxChainContacts = 1'000'000;
+// the events a run hands to the Python module's table are held there until it returns; every
+// other output streams them (no bound but the run's own)
+constexpr long kMaxHeldContacts = 1'000'000;
 constexpr long kMaxStreamedContacts = std::numeric_limits<long>::max();
 
-enum class ChainFormat { Json, Csv, Summary };
+enum class ChainFormat { Json, JsonLines, Csv, Summary };
 
 // The names of a chain's columns, made once per document (an owned name is an allocation)
 struct ColumnNames {
   std::vector<JsonKey> u, v, vPre;  ///< u1..uN, v1..vN, v1_pre..vN_pre
   JsonKey vPost;  ///< v<s>_post
 
-  ColumnNames(Eigen::Index n, int stopped) : vPost(JsonKey::owned("v" + std::to_string(stopped) + "_post")) {
+  // (names appended, not "literal" + string: GCC 12 warns falsely on that at -O2)
+  static std::string name(char letter, Eigen::Index i, const char* suffix = "") {
+    return std::string(1, letter).append(std::to_string(i)).append(suffix);
+  }
+  ColumnNames(Eigen::Index n, int stopped) : vPost(JsonKey::owned(name('v', stopped, "_post"))) {
     for (Eigen::Index i = 1; i <= n; ++i) {
-      u.push_back(JsonKey::owned("u" + std::to_string(i)));
-      v.push_back(JsonKey::owned("v" + std::to_string(i)));
-      vPre.push_back(JsonKey::owned("v" + std::to_string(i) + "_pre"));
+      u.push_back(JsonKey::owned(name('u', i)));
+      v.push_back(JsonKey::owned(name('v', i)));
+      vPre.push_back(JsonKey::owned(name('v', i, "_pre")));
     }
   }
   /// The names of a chain of n masses stopped on mass `stopped`, made once per process (a short
@@ -123,20 +128,6 @@ int runTheNotesChain(const OptionValues& options, const Io& io, std::stop_token 
   return runSimulate(*twoMass, *precision, *trust, io, std::move(stop), error);
 }
 
-// The run in S, as the document's fields from "events" on; nothing when the start is refused
-// (`error`) or the run was stopped (`stopped`)
-template <typename S>
-struct ChainRunIn {
-  core::BasicChainStart<S> start;  ///< its state, and the modes still in it
-  std::string description;  ///< how the start was given, in words
-  core::BasicChainRun<S> run;
-  S tEnd = 0;
-  std::vector<std::pair<double, core::ChainState>> samples;  ///< (t, state) asked for, in double
-  bool samplesTruncated = false;
-  /// a run whose events were not kept: its error estimate, made as they came (else empty)
-  std::optional<core::Trust> trust;
-};
-
 // the most samples a json holds (as for two masses)
 constexpr std::size_t kMaxChainSamples = 4'000'000;
 
@@ -188,130 +179,6 @@ const core::ChainShadow<S>& shadowFor(const PreparedMassChain& chain, core::Trus
   return mode == core::TrustMode::Off ? none : chain.shadow<S>();
 }
 
-// `keepEvents` false: the run's statistics alone (the Python module's events=False), its error
-// estimate made online as the events come, none of them held
-template <typename S>
-std::optional<ChainRunIn<S>> runIn(const OptionValues& options, const PreparedMassChain& prepared, long contacts,
-                                   const QString& tEndText, std::stop_token stop, QString& error,
-                                   bool keepEvents = true, core::TrustMode trustMode = core::TrustMode::Off) {
-  const core::BasicReadyChain<S>& ready = *prepared.ready<S>().value;
-  const core::BasicMassChain<S>& chain = ready.numbers;
-  std::string description;
-  const auto start = chainStart<S>(options, chain, error, &description);
-  if (!start) return std::nullopt;
-  const auto tEnd = timeLimit<S>(tEndText, error);
-  if (!tEnd) return std::nullopt;
-  const auto asked = samplingOf(options, error);
-  if (!asked) return std::nullopt;
-  ChainRunIn<S> in{*start, std::move(description), {}, *tEnd, {}, false, std::nullopt};
-  core::ChainSampling<S> sampling{asked->spacing, asked->times, {}};
-  if (asked->spacing > 0 || !asked->times.empty()) {
-    sampling.sink = [&](double t, const core::BasicChainState<S>& state) {
-      if (in.samples.size() >= kMaxChainSamples) {
-        in.samplesTruncated = true;
-        return;
-      }
-      in.samples.emplace_back(t, core::ChainState{state.u.template cast<double>(), state.v.template cast<double>()});
-    };
-  }
-  if (keepEvents) {
-    in.run = core::runChain(ready, *start, contacts, *tEnd, stop, {}, sampling);
-    return in;
-  }
-  core::ChainTrustCheck<S> check(shadowFor<S>(prepared, trustMode), *start, contacts, *tEnd, trustMode, stop);
-  const core::ChainEventSink<S> sink = [&check](const core::BasicChainEvent<S>& event) { check.observe(event); };
-  in.run = core::runChain(ready, *start, contacts, *tEnd, stop, sink, sampling);
-  in.trust = check.finish(in.run);
-  return in;
-}
-
-// the samples as columns t, u1..uN, v1..vN in double, as for two masses
-template <typename S>
-V samplesValue(const ColumnNames& names, const ChainRunIn<S>& in) {
-  const std::size_t n = names.u.size();
-  std::vector<std::vector<V>> columns(2 * n + 1);
-  for (std::vector<V>& column : columns) column.reserve(in.samples.size());
-  for (const auto& [t, state] : in.samples) {
-    columns[0].push_back(V::number(t));
-    for (std::size_t i = 0; i < n; ++i) {
-      columns[1 + i].push_back(V::number(state.u[Eigen::Index(i)]));
-      columns[1 + n + i].push_back(V::number(state.v[Eigen::Index(i)]));
-    }
-  }
-  std::vector<V::Field> fields;
-  fields.emplace_back("t", V::array(std::move(columns[0])));
-  for (std::size_t i = 0; i < n; ++i) fields.emplace_back(names.u[i], V::array(std::move(columns[1 + i])));
-  for (std::size_t i = 0; i < n; ++i) fields.emplace_back(names.v[i], V::array(std::move(columns[1 + n + i])));
-  return V::object(std::move(fields));
-}
-
-// The run's events into `table` (the Python module's arrays): packed rows in double, and in a
-// wider precision each number's decimal text
-template <typename S>
-void fillEventTable(ChainEventTable& table, const core::BasicChainRun<S>& run, const core::BasicMassChain<S>& chain) {
-  table.masses = std::size_t(chain.size());
-  table.stopped = chain.stopped();
-  table.count = run.events.size();
-  const std::size_t rowBytes = table.rowBytes();
-  table.rows.assign(table.count * rowBytes, 0);
-  for (std::size_t k = 0; k < table.count; ++k) {
-    const core::BasicChainEvent<S>& event = run.events[k];
-    char* row = table.rows.data() + k * rowBytes;
-    const auto put = [&](std::size_t offset, const S& value) {
-      const double rounded = core::toDouble(value);
-      std::memcpy(row + offset, &rounded, sizeof rounded);
-      if constexpr (!std::is_same_v<S, double>) table.decimals.push_back(core::formatScalar(value));
-    };
-    put(0, event.t);
-    const std::string_view type = core::toString(event.type);
-    char32_t letters[8] = {};
-    for (std::size_t i = 0; i < type.size() && i < 8; ++i) letters[i] = char32_t(type[i]);
-    std::memcpy(row + sizeof(double), letters, sizeof letters);
-    std::size_t offset = sizeof(double) + sizeof letters;
-    for (Eigen::Index i = 0; i < event.u.size(); ++i, offset += sizeof(double)) put(offset, event.u[i]);
-    for (Eigen::Index i = 0; i < event.vBefore.size(); ++i, offset += sizeof(double)) put(offset, event.vBefore[i]);
-    put(offset, event.vAfter);
-  }
-}
-
-// (events null when they were not kept)
-template <typename S>
-V runDocument(const core::BasicReadyChain<S>& ready, const ChainRunIn<S>& in, V precision, const core::Trust& trust,
-              bool sampled, bool keptEvents = true) {
-  const core::BasicMassChain<S>& masses = ready.numbers;
-  const core::BasicChainRun<S>& run = in.run;
-  std::vector<V> events;
-  events.reserve(run.events.size());
-  const ColumnNames& names = ColumnNames::of(masses.size(), masses.stopped());
-  for (const core::BasicChainEvent<S>& event : run.events) events.push_back(eventValue(names, event));
-  const std::string message = stopMessage(run.stop, std::is_same_v<S, core::Quad>);
-  using std::abs;
-  V document = V::object(
-      {{"chain", massChainValue(masses, ready.dynamics.period)},
-       {"initial", V::object({{"description", V::of(in.description)}, {"state", stateValue(names, S(0), in.start.state)}})},
-       {"events", keptEvents ? V::array(std::move(events)) : V::null()},
-       {"final", stateValue(names, run.tFinal, run.final)},
-       {"stop_reason", V::of(std::string(core::toString(run.stop)))},
-       {"message", message.empty() ? V::null() : V::of(message)},
-       {"contacts", V::object({{"total", V::of(std::int64_t(run.contacts))},
-                               {"impacts", V::of(std::int64_t(run.impacts))},
-                               {"grazings", V::of(std::int64_t(run.grazings))},
-                               {"sticks", V::of(std::int64_t(run.sticks))},
-                               {"releases", V::of(std::int64_t(run.releases))}})},
-       {"energy", V::object({{"initial", V::number(run.energyInitial)},
-                             {"final", V::number(run.energyFinal)},
-                             {"relative_drift", V::number(S(abs(run.energyFinal / run.energyInitial - 1)))},
-                             {"max_rel_drift", V::number(run.maxEnergyDrift)}})},
-       {"accuracy", V::object({{"max_contact_residual", V::number(run.maxContactResidual)}})},
-       {"trust", trustValue(trust)},
-       {"precision", std::move(precision)}});
-  if (sampled) {
-    document.fields.emplace_back("samples", samplesValue(names, in));
-    document.fields.emplace_back("samples_truncated", V::of(in.samplesTruncated));
-  }
-  return document;
-}
-
 template <typename S>
 std::string listText(const core::ChainVector<S>& values) {
   std::string text = "[";
@@ -337,13 +204,11 @@ std::string csvLine(const core::BasicChainEvent<S>& event) {
   return line.append(",").append(core::formatScalar(event.vAfter)).append("\n");
 }
 
-// The summary of a streamed run: what the json says but its events, as the two-mass summary
-// lays it out
+// The summary of a run: what the json says but its events, as the two-mass summary lays it out
 template <typename S>
-std::string summaryText(const core::BasicReadyChain<S>& ready, const ChainRunIn<S>& in, double seconds,
-                        const std::string& precision, const std::vector<std::string>& raised,
-                        const core::Trust& trust) {
-  const core::BasicChainRun<S>& run = in.run;
+std::string summaryText(const core::BasicReadyChain<S>& ready, const core::BasicChainStart<S>& start,
+                        const core::BasicChainRun<S>& run, double seconds, const std::string& precision,
+                        const std::vector<std::string>& raised, const core::Trust& trust) {
   const core::BasicMassChain<S>& masses = ready.numbers;
   const core::BasicChainDynamics<S>& dynamics = ready.dynamics;
   using Vector = core::ChainVector<S>;
@@ -353,7 +218,7 @@ std::string summaryText(const core::BasicReadyChain<S>& ready, const ChainRunIn<
           (masses.rightSpring > 0 ? " right spring " + core::formatScalar(masses.rightSpring) : std::string()) +
           " stop on mass " + std::to_string(masses.stopped()) + " gap " + core::formatScalar(masses.gap) +
           (dynamics.period > 0 ? " (commensurate; T=" + core::formatScalar(dynamics.period) + ")" : std::string(" (not commensurate)")) + "\n";
-  text += "start          u=" + listText<S>(in.start.state.u) + " v=" + listText<S>(in.start.state.v) + "\n";
+  text += "start          u=" + listText<S>(start.state.u) + " v=" + listText<S>(start.state.v) + "\n";
   text += "contacts       " + std::to_string(run.contacts) + " (impacts " + std::to_string(run.impacts) + ", grazings " +
           std::to_string(run.grazings) + ", sticks " + std::to_string(run.sticks) + "; releases " +
           std::to_string(run.releases) + ")\n";
@@ -386,6 +251,79 @@ std::string summaryText(const core::BasicReadyChain<S>& ready, const ChainRunIn<
   return text;
 }
 
+// An event into the Python module's table: packed doubles, and in a wider precision each number's
+// decimal text
+template <typename S>
+void appendRow(ChainEventTable& table, const core::BasicChainEvent<S>& event) {
+  const std::size_t rowBytes = table.rowBytes();
+  table.rows.resize((table.count + 1) * rowBytes);
+  char* row = table.rows.data() + table.count * rowBytes;
+  ++table.count;
+  const auto put = [&](std::size_t offset, const S& value) {
+    const double rounded = core::toDouble(value);
+    std::memcpy(row + offset, &rounded, sizeof rounded);
+    if constexpr (!std::is_same_v<S, double>) table.decimals.push_back(core::formatScalar(value));
+  };
+  put(0, event.t);
+  const std::string_view type = core::toString(event.type);
+  char32_t letters[8] = {};
+  for (std::size_t i = 0; i < type.size() && i < 8; ++i) letters[i] = char32_t(type[i]);
+  std::memcpy(row + sizeof(double), letters, sizeof letters);
+  std::size_t offset = sizeof(double) + sizeof letters;
+  for (Eigen::Index i = 0; i < event.u.size(); ++i, offset += sizeof(double)) put(offset, event.u[i]);
+  for (Eigen::Index i = 0; i < event.vBefore.size(); ++i, offset += sizeof(double)) put(offset, event.vBefore[i]);
+  put(offset, event.vAfter);
+}
+
+// The samples asked for, in double (the json's columns), as the run passes them
+struct HeldSamples {
+  std::vector<std::pair<double, core::ChainState>> samples;
+  bool truncated = false;
+};
+
+// the samples as columns t, u1..uN, v1..vN in double, as for two masses
+V samplesValue(const ColumnNames& names, const HeldSamples& held) {
+  const std::size_t n = names.u.size();
+  std::vector<std::vector<V>> columns(2 * n + 1);
+  for (std::vector<V>& column : columns) column.reserve(held.samples.size());
+  for (const auto& [t, state] : held.samples) {
+    columns[0].push_back(V::number(t));
+    for (std::size_t i = 0; i < n; ++i) {
+      columns[1 + i].push_back(V::number(state.u[Eigen::Index(i)]));
+      columns[1 + n + i].push_back(V::number(state.v[Eigen::Index(i)]));
+    }
+  }
+  std::vector<V::Field> fields;
+  fields.emplace_back("t", V::array(std::move(columns[0])));
+  for (std::size_t i = 0; i < n; ++i) fields.emplace_back(names.u[i], V::array(std::move(columns[1 + i])));
+  for (std::size_t i = 0; i < n; ++i) fields.emplace_back(names.v[i], V::array(std::move(columns[1 + n + i])));
+  return V::object(std::move(fields));
+}
+
+// What the output holds so far, across the rungs of --precision auto: a raised run starts again
+// from its start and writes only the events past those a lower precision wrote (they stay on the
+// output), comparing the last of them with its own
+struct Written {
+  bool begun = false;  ///< the head (json, jsonl) or header (csv) is out
+  long events = 0;
+  double lastTime = 0;
+  core::EventType lastType = core::EventType::Impact;
+  const char* precision = "";  ///< the precision that wrote them
+  std::optional<bool> raisedAgrees;  ///< the raised run met the last of them again
+};
+
+// A document's fields on the output: json one per line (the events one per line between head and
+// end), jsonl one record per line ("run", each "event", "end"). Every record whole, so that an
+// interrupted run leaves complete ones.
+void writeFields(std::FILE* out, const std::vector<V::Field>& fields, bool lines) {
+  std::string text;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    text.append(lines ? (i > 0 ? ", " : "") : (i > 0 ? ",\n  " : "  "));
+    text.append(jsonQuoted(std::string(fields[i].first.view()))).append(": ").append(oneLine(fields[i].second));
+  }
+  std::fwrite(text.data(), 1, text.size(), out);
+}
+
 }  // namespace
 
 int runChainSimulate(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
@@ -407,15 +345,17 @@ int runChainSimulate(const PreparedMassChain& chain, const OptionValues& options
   }
   if (!noTwoMassStart(options, error)) return kExitInvalidInput;
   const QString formatText = options.isSet("format") ? options.value("format") : QStringLiteral("json");
-  if (!QStringList{"json", "csv", "summary"}.contains(formatText)) {
-    error = QStringLiteral("--format: '%1' is not json, csv or summary for a chain of N masses").arg(formatText);
+  if (!QStringList{"json", "jsonl", "csv", "summary"}.contains(formatText)) {
+    error = QStringLiteral("--format: '%1' is not json, jsonl, csv or summary").arg(formatText);
     return kExitInvalidInput;
   }
-  const ChainFormat format = formatText == "csv" ? ChainFormat::Csv
+  const ChainFormat format = formatText == "csv"       ? ChainFormat::Csv
                              : formatText == "summary" ? ChainFormat::Summary
+                             : formatText == "jsonl"   ? ChainFormat::JsonLines
                                                        : ChainFormat::Json;
-  if (format != ChainFormat::Json && (options.isSet("sample-step") || options.isSet("sample-times"))) {
-    error = "--sample-step and --sample-times are written in --format json for a chain of N masses";
+  const bool sampled = options.isSet("sample-step") || options.isSet("sample-times");
+  if ((format == ChainFormat::Csv || format == ChainFormat::Summary) && sampled) {
+    error = "--sample-step and --sample-times are written in --format json and jsonl only";
     return kExitInvalidInput;
   }
   if (format == ChainFormat::Csv && options.isSet("trust") && options.value("trust") != "off") {
@@ -428,150 +368,227 @@ int runChainSimulate(const PreparedMassChain& chain, const OptionValues& options
     return kExitInvalidInput;
   }
   const auto trustMode = core::parseTrustMode(
-      (options.isSet("trust") ? options.value("trust") : QStringLiteral("auto")).toStdString());
+      (options.isSet("trust") ? options.value("trust") : QStringLiteral("auto"))
+          .toStdString());
   if (!trustMode) {
     error = QStringLiteral("--trust: '%1' is not off, auto or full").arg(options.value("trust"));
     return kExitInvalidInput;
   }
-  // the chain in each rung's precision (its numbers read again from their text there), made
-  // ready once
-  const auto chainIn = [&]<typename S>() -> const core::BasicReadyChain<S>* {
-    const Parsed<core::BasicReadyChain<S>>& ready = chain.ready<S>();
-    if (!ready.value) error = ready.error;
-    return ready.value ? &*ready.value : nullptr;
-  };
-  // the Python module's events=False: a json document without events, none of them held
-  const bool keepEvents = !(format == ChainFormat::Json && io.events && io.events->discard);
-  const long maxContacts = format == ChainFormat::Json && keepEvents ? kMaxChainContacts : kMaxStreamedContacts;
+  // the Python module: the document as values, the events into its table (held there: bounded)
+  // or, with events=False, nowhere
+  const bool asValues = io.document != nullptr;
+  const bool intoTable = asValues && io.chainEvents && !(io.events && io.events->discard);
+  const long maxContacts = intoTable ? kMaxHeldContacts : kMaxStreamedContacts;
   long contacts = options.isSet("t-end") ? maxContacts : 100;
   if (options.isSet("contacts")) {
     bool ok = false;
     contacts = options.value("contacts").toLong(&ok);
     if (!ok || contacts < 0 || contacts > maxContacts) {
-      error = QStringLiteral("--contacts: a whole number from 0 to %1 for a chain of N masses in json (its events are "
-                             "kept until written; --format csv or summary stream them, with no bound)")
-                  .arg(kMaxChainContacts);
+      error = intoTable ? QStringLiteral("--contacts: a whole number from 0 to %1 when the events are kept in memory "
+                                         "(stream them to a file with --format csv or jsonl: no bound)")
+                              .arg(kMaxHeldContacts)
+                        : QStringLiteral("--contacts: a whole number >= 0");
       return kExitInvalidInput;
     }
   }
-  const auto fullTrustHeld = [&] { return *trustMode == core::TrustMode::Full && contacts > kMaxChainContacts; };
-  if ((format == ChainFormat::Summary || !keepEvents) && fullTrustHeld()) {
+  if (*trustMode == core::TrustMode::Full && contacts > kMaxHeldContacts) {
     error = QStringLiteral("--trust full holds the shadow run's events: at most %1 contacts (auto shadows the first "
                            "ones and stays bounded)")
-                .arg(kMaxChainContacts);
+                .arg(kMaxHeldContacts);
     return kExitInvalidInput;
   }
+  const auto asked = samplingOf(options, error);
+  if (!asked) return kExitInvalidInput;
   const QString tEnd = options.isSet("t-end") ? options.value("t-end") : QString();
   // --precision auto: double, and the whole run again one precision up while it ends undecided
   // (a touch or a release within the precision's rounding)
-  std::vector<V> escalations;
-  const auto report = [&](const char* used) {
-    return V::object({{"requested", V::of(precisionText.toStdString())},
-                      {"used", V::of(used)},
-                      {"escalations", V::array(escalations)}});
-  };
-  const auto escalate = [&](const char* from, const char* to, double when) {
-    escalations.push_back(V::of(std::string("undecided in ") + from + " at t = " + core::formatScalar(when) +
-                                ": the whole run again in " + to));
-  };
-  // csv: the events written so far (a raised run writes only those past them); the header once
-  // the start is known to be good (bad input writes nothing)
-  long written = 0;
-  bool headed = false;
-  // the last event written (in the lower precision, when a run is raised): the raised run's
-  // event of the same number is compared with it
-  double lastWrittenTime = 0;
-  core::EventType lastWrittenType = core::EventType::Impact;
-  std::optional<bool> raisedAgrees;
-  // a streamed rung (csv, summary): the events go out as they come, none is held
-  const auto streamed = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
-    const core::BasicReadyChain<S>* ready = chainIn.template operator()<S>();
-    if (!ready) return kExitInvalidInput;
-    const core::BasicMassChain<S>* masses = &ready->numbers;
-    const auto start = chainStart<S>(options, *masses, error);
+  std::vector<std::string> escalations;
+  Written written;
+  // one rung of the ladder in S: the exit code when it ends the command, nothing to go up
+  const auto rung = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
+    const Parsed<core::BasicReadyChain<S>>& prepared = chain.ready<S>();
+    if (!prepared.value) {
+      error = prepared.error;
+      return kExitInvalidInput;
+    }
+    const core::BasicReadyChain<S>& ready = *prepared.value;
+    const core::BasicMassChain<S>& masses = ready.numbers;
+    std::string description;
+    const auto start = chainStart<S>(options, masses, error, &description);
     if (!start) return kExitInvalidInput;
-    const long before = written;  // rows a lower precision wrote
-    raisedAgrees.reset();
     const auto limit = timeLimit<S>(tEnd, error);
     if (!limit) return kExitInvalidInput;
-    if (format == ChainFormat::Csv && !headed) {
-      std::fputs(csvHeader(masses->size(), masses->stopped()).c_str(), io.out);
-      headed = true;
+    const ColumnNames& names = ColumnNames::of(masses.size(), masses.stopped());
+    // the Python module's table is refilled by a raised run (nothing of it was handed over)
+    if (intoTable) {
+      *io.chainEvents = ChainEventTable{};
+      io.chainEvents->masses = std::size_t(masses.size());
+      io.chainEvents->stopped = masses.stopped();
     }
+    const bool lines = format == ChainFormat::JsonLines;
+    const bool text = !asValues && (format == ChainFormat::Json || lines);
+    if (!written.begun && !asValues && format != ChainFormat::Summary) {
+      // the head once the start is known to be good (bad input writes nothing)
+      if (format == ChainFormat::Csv) {
+        std::fputs(csvHeader(masses.size(), masses.stopped()).c_str(), io.out);
+      } else {
+        const std::vector<V::Field> head{
+            {"chain", massChainValue(masses, ready.dynamics.period)},
+            {"initial", V::object({{"description", V::of(description)}, {"state", stateValue(names, S(0), start->state)}})}};
+        std::fputs(lines ? "{\"record\": \"run\", " : "{\n", io.out);
+        writeFields(io.out, head, lines);
+        std::fputs(lines ? "}\n" : ",\n  \"events\": [", io.out);
+      }
+      written.begun = true;
+    }
+    const long before = written.events;
+    written.raisedAgrees.reset();
     std::optional<core::ChainTrustCheck<S>> check;
-    if (format == ChainFormat::Summary) check.emplace(shadowFor<S>(chain, *trustMode), *start, contacts, *limit, *trustMode, stop);
-    if (stop.stop_requested()) return kExitInterrupted;
+    if (format != ChainFormat::Csv) check.emplace(shadowFor<S>(chain, *trustMode), *start, contacts, *limit, *trustMode, stop);
+    if (stop.stop_requested() && !text) return kExitInterrupted;
+    HeldSamples held;
+    core::ChainSampling<S> sampling{asked->spacing, asked->times, {}};
+    if (sampled) {
+      sampling.sink = [&held](double t, const core::BasicChainState<S>& state) {
+        if (held.samples.size() >= kMaxChainSamples) {
+          held.truncated = true;
+          return;
+        }
+        held.samples.emplace_back(t, core::ChainState{state.u.template cast<double>(), state.v.template cast<double>()});
+      };
+    }
     const auto began = std::chrono::steady_clock::now();  // the run's own time, its shadow apart
     long seen = 0;
     const core::ChainEventSink<S> sink = [&](const core::BasicChainEvent<S>& event) {
       if (check) check->observe(event);
-      if (format != ChainFormat::Csv) return;
-      if (++seen <= written) {
-        if (seen == written) {
+      if (intoTable) appendRow(*io.chainEvents, event);
+      if (asValues || format == ChainFormat::Summary) return;
+      if (++seen <= written.events) {
+        if (seen == written.events) {
           // the raised run at the last event the lower precision wrote: the same event?
           using std::abs;
-          raisedAgrees = event.type == lastWrittenType &&
-                         abs(core::toDouble(event.t) - lastWrittenTime) <= 1e-9 * (1 + abs(lastWrittenTime));
+          written.raisedAgrees = event.type == written.lastType &&
+                                 abs(core::toDouble(event.t) - written.lastTime) <= 1e-9 * (1 + abs(written.lastTime));
         }
         return;
       }
-      std::fputs(csvLine(event).c_str(), io.out);
-      ++written;
-      lastWrittenTime = core::toDouble(event.t);
-      lastWrittenType = event.type;
+      if (format == ChainFormat::Csv) {
+        std::fputs(csvLine(event).c_str(), io.out);
+      } else if (lines) {
+        std::string record = oneLine(eventValue(names, event));
+        record.insert(1, "\"record\": \"event\", ");
+        std::fputs(record.append("\n").c_str(), io.out);
+      } else {
+        std::fputs((written.events == 0 ? "\n    " : ",\n    "), io.out);
+        std::fputs(oneLine(eventValue(names, event)).c_str(), io.out);
+      }
+      ++written.events;
+      written.lastTime = core::toDouble(event.t);
+      written.lastType = event.type;
+      written.precision = name;
     };
-    const ChainRunIn<S> in{*start, {}, core::runChain(*ready, *start, contacts, *limit, stop, sink), *limit, {}, false,
-                           std::nullopt};
+    const core::BasicChainRun<S> run = core::runChain(ready, *start, contacts, *limit, stop, sink, sampling);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     std::fflush(io.out);
-    if (in.run.stop == core::StopReason::Cancelled) {
-      if (format == ChainFormat::Csv) error = QStringLiteral("the %1 events before it are written").arg(written);
+    const bool cancelled = run.stop == core::StopReason::Cancelled;
+    if (cancelled && !text) {
+      if (format == ChainFormat::Csv) error = QStringLiteral("the %1 events before it are written").arg(written.events);
       return kExitInterrupted;
     }
-    if (!last && in.run.stop == core::StopReason::Undecided) {
-      escalate(name, next, core::toDouble(in.run.tFinal));
+    if (!last && run.stop == core::StopReason::Undecided) {
+      escalations.push_back(std::string("undecided in ") + name + " at t = " + core::formatScalar(core::toDouble(run.tFinal)) +
+                            ": the whole run again in " + next);
       return std::nullopt;
+    }
+    // events written before a raise stay on the output: say whether the raised run meets the
+    // last of them again (same type, time to 1e-9)
+    // (a stream, not string concatenation: GCC 12 warns falsely on that at -O2)
+    std::ostringstream kept;
+    if (before > 0 && !asValues && format != ChainFormat::Summary) {
+      if (!written.raisedAgrees) {
+        kept << "the run ends before the last of the " << before
+             << " events written before the raise: the events past its end are the lower precision's";
+      } else {
+        kept << "events 1 to " << before << " were written before the raise, in a lower precision, and the raised run "
+             << (*written.raisedAgrees ? "meets the last of them again (same type, time to 1e-9)"
+                                       : "DIFFERS from the last of them: they are not to be trusted");
+      }
+    }
+    if (format == ChainFormat::Csv) {
+      if (!escalations.empty()) {
+        std::fprintf(io.messages, "grazelab-cli: note: the run was raised to %s (undecided below it) after %ld rows; %s\n",
+                     name, before,
+                     before == 0              ? "every row is its own"
+                     : !written.raisedAgrees  ? "it ends before the last of them: the rows past its end are the lower precision's"
+                     : *written.raisedAgrees  ? "it meets the last of them again (same type, time to 1e-9)"
+                                              : "it DIFFERS from the last of them: the rows before the raise are not to be trusted");
+      }
+      return 0;
+    }
+    // an interrupted json or jsonl still ends its document: the events so far, stop reason
+    // cancelled, no estimate
+    core::Trust trust;
+    trust.reason = "not estimated: the run was interrupted";
+    if (!cancelled) trust = check->finish(run);
+    if (stop.stop_requested() && !text) return kExitInterrupted;
+    if (!kept.str().empty()) {
+      if (written.raisedAgrees == false) trust.verdict = core::Verdict::Unreliable;
+      trust.reason = kept.str() + "; " + trust.reason;
     }
     if (format == ChainFormat::Summary) {
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-      std::vector<std::string> raised;
-      for (const V& line : escalations) raised.push_back(line.text);
       const std::string used = std::string(name) + (precisionText == "auto" ? " (auto)" : "");
-      std::fputs(summaryText(*ready, in, seconds, used, raised, check->finish(in.run)).c_str(), io.out);
+      std::fputs(summaryText(ready, *start, run, seconds, used, escalations, trust).c_str(), io.out);
       std::fflush(io.out);
-    } else if (!escalations.empty()) {
-      // the rows before the raise are the lower precision's: say whether the raised run meets
-      // the last of them again (same type, time to 1e-9)
-      std::fprintf(io.messages, "grazelab-cli: note: the run was raised to %s (undecided below it) after %ld rows; %s\n",
-                   name, before,
-                   before == 0      ? "every row is its own"
-                   : !raisedAgrees  ? "it ends before the last of them: the rows past its end are the lower precision's"
-                   : *raisedAgrees  ? "it meets the last of them again (same type, time to 1e-9)"
-                                    : "it DIFFERS from the last of them: the rows before the raise are not to be trusted");
+      return 0;
     }
-    return 0;
-  };
-  // one rung of the ladder in S: the exit code when it ends the command, nothing to go up
-  const auto rung = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
-    if (format != ChainFormat::Json) return streamed.template operator()<S>(name, next, last);
-    const core::BasicReadyChain<S>* ready = chainIn.template operator()<S>();
-    if (!ready) return kExitInvalidInput;
-    const auto in = runIn<S>(options, chain, contacts, tEnd, stop, error, keepEvents, *trustMode);
-    if (!in) return kExitInvalidInput;
-    if (in->run.stop == core::StopReason::Cancelled) return kExitInterrupted;
-    if (!last && in->run.stop == core::StopReason::Undecided) {
-      escalate(name, next, core::toDouble(in->run.tFinal));
-      return std::nullopt;
+    using std::abs;
+    std::vector<V> raised;
+    for (const std::string& line : escalations) raised.push_back(V::of(line));
+    const std::string message = stopMessage(run.stop, std::is_same_v<S, core::Quad>);
+    std::vector<V::Field> end{
+        {"final", stateValue(names, run.tFinal, run.final)},
+        {"stop_reason", V::of(std::string(core::toString(run.stop)))},
+        {"message", message.empty() ? V::null() : V::of(message)},
+        {"contacts", V::object({{"total", V::of(std::int64_t(run.contacts))},
+                                {"impacts", V::of(std::int64_t(run.impacts))},
+                                {"grazings", V::of(std::int64_t(run.grazings))},
+                                {"sticks", V::of(std::int64_t(run.sticks))},
+                                {"releases", V::of(std::int64_t(run.releases))}})},
+        {"energy", V::object({{"initial", V::number(run.energyInitial)},
+                              {"final", V::number(run.energyFinal)},
+                              {"relative_drift", V::number(S(abs(run.energyFinal / run.energyInitial - 1)))},
+                              {"max_rel_drift", V::number(run.maxEnergyDrift)}})},
+        {"accuracy", V::object({{"max_contact_residual", V::number(run.maxContactResidual)}})},
+        {"trust", trustValue(trust)},
+        {"precision", V::object({{"requested", V::of(precisionText.toStdString())},
+                                 {"used", V::of(name)},
+                                 {"escalations", V::array(std::move(raised))}})}};
+    if (sampled) {
+      end.emplace_back("samples", samplesValue(names, held));
+      end.emplace_back("samples_truncated", V::of(held.truncated));
     }
-    const core::Trust trust = in->trust ? *in->trust
-                                        : core::chainTrust(shadowFor<S>(chain, *trustMode), in->start, in->run, contacts,
-                                                           in->tEnd, *trustMode, stop);
-    if (stop.stop_requested()) return kExitInterrupted;
-    // the Python module's arrays: the events straight into its table, not into the document
-    const bool intoTable = keepEvents && io.chainEvents;
-    if (intoTable) fillEventTable(*io.chainEvents, in->run, ready->numbers);
-    emitDocument(io, runDocument(*ready, *in, report(name), trust,
-                                 options.isSet("sample-step") || options.isSet("sample-times"), keepEvents && !intoTable));
-    return 0;
+    if (asValues) {
+      std::vector<V::Field> fields{
+          {"chain", massChainValue(masses, ready.dynamics.period)},
+          {"initial", V::object({{"description", V::of(description)}, {"state", stateValue(names, S(0), start->state)}})},
+          {"events", V::null()}};
+      for (V::Field& field : end) fields.push_back(std::move(field));
+      *io.document = V::object(std::move(fields));
+      return 0;
+    }
+    if (lines) {
+      std::fputs("{\"record\": \"end\", ", io.out);
+      writeFields(io.out, end, true);
+      std::fputs("}\n", io.out);
+    } else {
+      std::fputs(written.events == 0 ? "],\n" : "\n  ],\n", io.out);
+      writeFields(io.out, end, false);
+      std::fputs("\n}\n", io.out);
+    }
+    std::fflush(io.out);
+    if (!stop.stop_requested()) return 0;
+    error = QStringLiteral("the %1 events before it are written, and the document's end").arg(written.events);
+    return kExitInterrupted;
   };
   const bool automatic = precisionText == "auto";
   if (automatic || precisionText == "double") {
