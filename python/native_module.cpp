@@ -36,10 +36,8 @@
 #include <vector>
 
 #include "cli_run.h"
-#include "commands/chain_simulate_command.h"
 #include "commands/simulate_command.h"
 #include "core/experiments/maps.h"
-#include "core/solver/recorder.h"
 #include "exit_codes.h"
 #include "io/cli_io.h"
 #include "io/cli_output.h"
@@ -51,9 +49,6 @@
 namespace py = pybind11;
 
 namespace {
-
-using grazelab::cli::EventRow;
-using grazelab::cli::EventTable;
 
 // An in-memory FILE* (open_memstream): what a command writes on its output or its messages.
 class MemoryStream {
@@ -118,52 +113,10 @@ struct ProgressMailbox {
   std::string text;
 };
 
-// The NumPy type of EventRow: the CSV's columns, type as '<U8'.
-py::dtype eventDtype() {
-  py::list names, formats, offsets;
-  auto column = [&](const char* name, const char* format, std::size_t offset) {
-    names.append(name);
-    formats.append(format);
-    offsets.append(offset);
-  };
-  column("t", "<f8", offsetof(EventRow, t));
-  column("type", "<U8", offsetof(EventRow, type));
-  column("u1", "<f8", offsetof(EventRow, u1));
-  column("u2", "<f8", offsetof(EventRow, u2));
-  column("v1_pre", "<f8", offsetof(EventRow, v1Pre));
-  column("v2_pre", "<f8", offsetof(EventRow, v2Pre));
-  column("v2_post", "<f8", offsetof(EventRow, v2Post));
-  py::dict description;
-  description["names"] = names;
-  description["formats"] = formats;
-  description["offsets"] = offsets;
-  description["itemsize"] = sizeof(EventRow);
-  return py::dtype::from_args(description);
-}
-
-// NumPy types made once, when the module is imported (a dtype from a description costs a few
-// microseconds: as much as a short run); constants, never changed, kept to the process's end.
-struct NumpyTypes {
-  py::dtype events;
-  py::dtype samples;
-};
-const NumpyTypes* numpyTypes = nullptr;
-
-// The events as a NumPy array that owns the table's rows (no copy: the vector moves into the
-// array's base object).
-py::array eventArray(std::unique_ptr<EventTable> table) {
-  const py::dtype& dtype = numpyTypes->events;
-  const auto count = static_cast<py::ssize_t>(table->rows.size());
-  if (count == 0) return py::array(dtype, py::array::ShapeContainer{py::ssize_t(0)}, py::array::StridesContainer{py::ssize_t(sizeof(EventRow))});
-  auto* rows = new std::vector<EventRow>(std::move(table->rows));
-  py::capsule owner(rows, [](void* p) { delete static_cast<std::vector<EventRow>*>(p); });
-  return py::array(dtype, {count}, {py::ssize_t(sizeof(EventRow))}, rows->data(), owner);
-}
-
 // Why a run stopped at `maxEvents` events held in memory.
 std::string tooManyEvents(std::size_t maxEvents) {
-  return "the run made more than " + std::to_string(maxEvents) + " events (" +
-         std::to_string(maxEvents * sizeof(EventRow) / 1'000'000) +
+  return "the run made more than " + std::to_string(maxEvents) + " events (at least " +
+         std::to_string(maxEvents * 72 / 1'000'000) +
          " MB in memory): ask for fewer contacts or a shorter t_end, or stream the run to a file "
          "with grazelab-cli simulate --format csv";
 }
@@ -208,37 +161,6 @@ py::tuple mapInMemory(grazelab::cli::map::StoredMap&& map) {
   const py::array array(dtype, {static_cast<py::ssize_t>(points->size())},
                         {static_cast<py::ssize_t>(sizeof(PointSummary))}, points->data(), owner);
   return py::make_tuple(py::bytes(document), array);
-}
-
-// The NumPy type of a two-mass run's samples: t, u1, u2, v1, v2.
-py::dtype sampleDtype() {
-  using grazelab::core::Sample;
-  static_assert(sizeof(Sample) == 5 * sizeof(double));
-  py::list names, formats, offsets;
-  const std::size_t state = offsetof(Sample, state);
-  const std::pair<const char*, std::size_t> columns[] = {
-      {"t", offsetof(Sample, t)}, {"u1", state + 0 * sizeof(double)}, {"u2", state + 1 * sizeof(double)},
-      {"v1", state + 2 * sizeof(double)}, {"v2", state + 3 * sizeof(double)}};
-  for (const auto& [name, offset] : columns) {
-    names.append(name);
-    formats.append("<f8");
-    offsets.append(offset);
-  }
-  py::dict description;
-  description["names"] = names;
-  description["formats"] = formats;
-  description["offsets"] = offsets;
-  description["itemsize"] = sizeof(Sample);
-  return py::dtype::from_args(description);
-}
-
-// A run's samples as a NumPy array (t, u1, u2, v1, v2) that owns them (no copy).
-py::array sampleArray(std::vector<grazelab::core::Sample>&& samples) {
-  using grazelab::core::Sample;
-  auto* owned = new std::vector<Sample>(std::move(samples));
-  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<Sample>*>(p); });
-  return py::array(numpyTypes->samples, {static_cast<py::ssize_t>(owned->size())},
-                   {static_cast<py::ssize_t>(sizeof(Sample))}, owned->data(), owner);
 }
 
 // Hands the latest progress, if any arrived since the last call, to the caller's callback (with
@@ -306,19 +228,112 @@ int interruptibly(std::stop_source& stop, const std::function<int(std::stop_toke
   return code;
 }
 
+// The NumPy types of a chain's events (t, type, u1..uN, v1_pre..vN_pre, vS_post: the csv's
+// columns) and samples (t, u1..uN, v1..vN), in double, type as '<U8'; made once per (N, S) and
+// kept to the process's end (a dtype costs microseconds to describe: as much as a short run).
+struct ChainDtypes {
+  py::dtype events, samples;
+};
+const ChainDtypes& chainDtypes(std::size_t n, std::size_t stopped) {
+  static auto* const made = new std::map<std::pair<std::size_t, std::size_t>, ChainDtypes>();
+  const auto found = made->find({n, stopped});
+  if (found != made->end()) return found->second;
+  const auto describe = [](const std::vector<std::string>& names, bool withType) {
+    py::list fields;
+    for (const std::string& name : names) fields.append(py::make_tuple(name, "<f8"));
+    if (withType) fields.insert(1, py::make_tuple("type", "<U8"));
+    return py::dtype::from_args(fields);
+  };
+  std::vector<std::string> events{"t"}, samples{"t"};
+  for (std::size_t i = 1; i <= n; ++i) events.push_back("u" + std::to_string(i));
+  for (std::size_t i = 1; i <= n; ++i) events.push_back("v" + std::to_string(i) + "_pre");
+  events.push_back("v" + std::to_string(stopped) + "_post");
+  for (std::size_t i = 1; i <= n; ++i) samples.push_back("u" + std::to_string(i));
+  for (std::size_t i = 1; i <= n; ++i) samples.push_back("v" + std::to_string(i));
+  return made->emplace(std::pair{n, stopped}, ChainDtypes{describe(events, true), describe(samples, false)})
+      .first->second;
+}
+
+// A chain's events as one structured array that owns the table's rows (no copy: the rows move
+// into the array's base object; their layout is the dtype's)
+py::array chainEventArray(grazelab::cli::ChainEventTable&& table, const py::dtype& dtype) {
+  auto* rows = new std::vector<char>(std::move(table.rows));
+  py::capsule owner(rows, [](void* p) { delete static_cast<std::vector<char>*>(p); });
+  return py::array(dtype, {static_cast<py::ssize_t>(table.count)}, {static_cast<py::ssize_t>(table.rowBytes())},
+                   rows->data(), owner);
+}
+
+// A chain's samples, an object of columns in the dtype's order, as one structured array
+py::array chainSampleArray(const grazelab::cli::JsonValue& columns, const py::dtype& dtype) {
+  const std::size_t count = columns.fields.empty() ? 0 : columns.fields.front().second.items.size();
+  py::array array(dtype, py::array::ShapeContainer{static_cast<py::ssize_t>(count)});
+  auto* data = static_cast<char*>(array.mutable_data());
+  const std::size_t itemsize = std::size_t(dtype.itemsize());
+  for (std::size_t c = 0; c < columns.fields.size(); ++c) {
+    const std::vector<grazelab::cli::JsonValue>& column = columns.fields[c].second.items;
+    for (std::size_t k = 0; k < count; ++k) {
+      const double value = column[k].toDouble();
+      std::memcpy(data + k * itemsize + c * sizeof(double), &value, sizeof value);
+    }
+  }
+  return array;
+}
+
+// The notes among a command's messages: each line "grazelab-cli: note: TEXT" as TEXT.
+py::list notesOf(const std::string& messages) {
+  static constexpr std::string_view kNote = "grazelab-cli: note: ";
+  py::list notes;
+  std::size_t at = 0;
+  while (at < messages.size()) {
+    std::size_t end = messages.find('\n', at);
+    if (end == std::string::npos) end = messages.size();
+    const std::string_view line(messages.data() + at, end - at);
+    if (line.substr(0, kNote.size()) == kNote) notes.append(py::str(std::string(line.substr(kNote.size()))));
+    at = end + 1;
+  }
+  return notes;
+}
+
 // A command's document as Results; one that holds numbers wider than double (long double,
 // binary128) also has `decimal`: its numbers as text.
 py::object documentToPython(const grazelab::cli::JsonValue& document, const py::object& resultType,
-                            bool withDecimals, std::vector<grazelab::core::Sample>&& samples) {
+                            bool withDecimals) {
   py::object result = grazelab::python::toPython(document, resultType);
-  // a two-mass run's samples come apart from its document (a chain of N masses lists its own)
-  if (result.contains("samples_truncated") && !result.contains("samples")) {
-    result["samples"] = sampleArray(std::move(samples));
-  }
   if (withDecimals) {
     result["decimal"] = grazelab::python::toPython(document, resultType, true);
   }
   return result;
+}
+
+// A simulate's document as its Python result, the same for every chain however it was written:
+// its events, from `table`, as one structured array (None when discarded) and its samples (columns
+// in the document) as another, the rest as values (in a wider precision than double also the whole
+// document as text, under `decimal`), and `notes`, the command's notes among `messages`. Returns
+// (the result, the events' decimal text in long double or binary128, 2N + 2 a row, else None).
+py::tuple simulationResult(grazelab::cli::JsonValue& document, grazelab::cli::ChainEventTable&& table,
+                           const py::object& resultType, const std::string& messages) {
+  const grazelab::cli::JsonValue* described = document.find("chain");
+  const ChainDtypes& dtypes = chainDtypes(described->find("masses")->items.size(),
+                                          std::size_t(described->find("stop_mass")->integer));
+  const py::object events =
+      table.discard ? py::object(py::none()) : py::object(chainEventArray(std::move(table), dtypes.events));
+  const grazelab::cli::JsonValue* samples = document.find("samples");
+  const py::object sampleArray = samples ? py::object(chainSampleArray(*samples, dtypes.samples)) : py::object();
+  document.remove("events");
+  document.remove("samples");
+  const py::object decimal = document.holdsWideNumbers() ? grazelab::python::toPython(document, resultType, true)
+                                                         : py::object();
+  py::object result = grazelab::python::toPython(document, resultType);
+  // (names made once: a short run's call is a few microseconds)
+  static PyObject* const eventsKey = PyUnicode_InternFromString("events");
+  static PyObject* const notesKey = PyUnicode_InternFromString("notes");
+  if (PyDict_SetItem(result.ptr(), eventsKey, events.ptr()) != 0 ||
+      PyDict_SetItem(result.ptr(), notesKey, notesOf(messages).ptr()) != 0) {
+    throw py::error_already_set();
+  }
+  if (sampleArray) result["samples"] = sampleArray;
+  if (decimal) result["decimal"] = decimal;
+  return py::make_tuple(result, table.decimals.empty() ? py::object(py::none()) : py::cast(table.decimals));
 }
 
 // run(arguments, progress=None, events=False, max_events, discard_events=False, keep_map=False,
@@ -333,23 +348,19 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   MemoryStream output;
   MemoryStream messages;
   std::stop_source stop;
-  auto table = std::make_unique<EventTable>();
-  table->maxRows = maxEvents;
-  table->whenFull = [&stop] { stop.request_stop(); };
+  grazelab::cli::ChainEventTable table;
+  table.maxRows = maxEvents;
+  table.whenFull = [&stop] { stop.request_stop(); };
+  table.discard = discardEvents;
   ProgressMailbox mailbox;
   grazelab::cli::Io io;
   io.out = output.file();
   io.messages = messages.file();
-  table->discard = discardEvents;
-  if (eventsAsArrays || discardEvents) io.events = table.get();
+  if (eventsAsArrays || discardEvents) io.chainEvents = &table;
   grazelab::cli::map::StoredMap map;
   if (keepMap) io.map = &map;
   grazelab::cli::JsonValue document;
-  std::vector<grazelab::core::Sample> samples;
-  if (!resultType.is_none()) {
-    io.document = &document;
-    io.samples = &samples;
-  }
+  if (!resultType.is_none()) io.document = &document;
   std::vector<std::pair<std::string, std::string>> files;
   if (keepFiles) io.files = &files;
   if (!progress.is_none()) {
@@ -368,20 +379,24 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   // the last progress (a command shorter than one wake-up reports its end too)
   if (!pythonError && code == 0) deliverProgress(mailbox, progress, pythonError);
   if (pythonError) throw std::move(*pythonError);
-  if (table->full) throw py::value_error(tooManyEvents(maxEvents));
+  if (table.full) throw py::value_error(tooManyEvents(maxEvents));
   const std::string out = output.take();
   const std::string log = messages.take();
   py::object events = py::none();
   py::object decimals = py::none();
-  if (eventsAsArrays && !discardEvents) {
-    if (!table->decimals.empty()) decimals = py::cast(table->decimals);
-    events = eventArray(std::move(table));
-  }
   py::object mapResult = py::none();
   if (keepMap && code == 0) mapResult = mapInMemory(std::move(map));
   py::object documentResult = py::none();
   if (!resultType.is_none() && code == 0) {
-    documentResult = documentToPython(document, resultType, document.holdsWideNumbers(), std::move(samples));
+    if (io.chainEvents && document.find("chain") && document.find("events")) {
+      // a simulate: its events and samples as arrays
+      const py::tuple simulated = simulationResult(document, std::move(table), resultType, log);
+      documentResult = simulated[0];
+      events = documentResult["events"];
+      decimals = simulated[1];
+    } else {
+      documentResult = documentToPython(document, resultType, document.holdsWideNumbers());
+    }
   }
   py::object filesResult = py::none();
   if (keepFiles && code == 0) {
@@ -432,21 +447,6 @@ bool readGiven(PyObject* value, grazelab::cli::GivenOption& option) {
   return true;
 }
 
-// The notes among a command's messages: each line "grazelab-cli: note: TEXT" as TEXT.
-py::list notesOf(const std::string& messages) {
-  static constexpr std::string_view kNote = "grazelab-cli: note: ";
-  py::list notes;
-  std::size_t at = 0;
-  while (at < messages.size()) {
-    std::size_t end = messages.find('\n', at);
-    if (end == std::string::npos) end = messages.size();
-    const std::string_view line(messages.data() + at, end - at);
-    if (line.substr(0, kNote.size()) == kNote) notes.append(py::str(std::string(line.substr(kNote.size()))));
-    at = end + 1;
-  }
-  return notes;
-}
-
 // simulate(options, result_type, events, max_events, discard_events)
 //   -> (result with its events and notes, decimals), or None when an option's value is not of a
 //      type read directly (then give the options as text)
@@ -489,103 +489,30 @@ py::object simulateHere(const py::sequence& given, const py::object& resultType,
   auto named = givenOptions(given, {"state", "perturb"});
   if (!named) return py::none();
   const grazelab::cli::OptionValues options(std::move(*named));
-  QString error;
-  const auto precision = grazelab::cli::parsePrecisionOption(options, error);
-  if (!precision) throw py::value_error(error.simplified().toStdString());
-  const auto trust = grazelab::cli::parseTrustOption(options, error);
-  if (!trust) throw py::value_error(error.simplified().toStdString());
-
   ReusedMessages& messages = ReusedMessages::ofThisThread();  // (a short run on this thread)
-  auto table = std::make_unique<EventTable>();
-  table->maxRows = maxEvents;
-  table->discard = discardEvents;
+  grazelab::cli::ChainEventTable table;
+  table.maxRows = maxEvents;
+  table.discard = discardEvents || !eventsAsArrays;
   grazelab::cli::Io io;
   io.out = messages.rewound();  // (a run whose document is taken as values writes no output)
   io.messages = io.out;
-  if (eventsAsArrays || discardEvents) io.events = table.get();
+  io.chainEvents = &table;
   grazelab::cli::JsonValue document;
   io.document = &document;
-  std::vector<grazelab::core::Sample> samples;
-  io.samples = &samples;
+  QString error;
   int code = 0;
   {
     py::gil_scoped_release released;
-    code = grazelab::cli::runSimulate(options, *precision, *trust, io, std::stop_token{}, error);
+    code = grazelab::cli::runSimulate(options, io, std::stop_token{}, error);
   }
   if (code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
-  if (table->full) throw py::value_error(tooManyEvents(maxEvents));
-  const std::string log = messages.written();
+  if (table.full) throw py::value_error(tooManyEvents(maxEvents));
   if (code != 0) {
     PyErr_SetString(PyExc_OSError, error.isEmpty() ? ("simulate failed (exit " + std::to_string(code) + ")").c_str()
                                                    : error.simplified().toStdString().c_str());
     throw py::error_already_set();
   }
-  py::object events = py::none();
-  py::object decimals = py::none();
-  if (eventsAsArrays && !discardEvents) {
-    if (!table->decimals.empty()) decimals = py::cast(table->decimals);
-    events = eventArray(std::move(table));
-  }
-  py::object result = documentToPython(document, resultType, document.holdsWideNumbers(), std::move(samples));
-  // (names made once: a short run's call is a few microseconds)
-  static PyObject* const eventsKey = PyUnicode_InternFromString("events");
-  static PyObject* const notesKey = PyUnicode_InternFromString("notes");
-  if (PyDict_SetItem(result.ptr(), eventsKey, events.ptr()) != 0 ||
-      PyDict_SetItem(result.ptr(), notesKey, notesOf(log).ptr()) != 0) {
-    throw py::error_already_set();
-  }
-  return py::make_tuple(result, decimals);
-}
-
-// The NumPy types of a chain's events (t, type, u1..uN, v1_pre..vN_pre, vS_post: the csv's
-// columns) and samples (t, u1..uN, v1..vN), in double, type as '<U8'; made once per (N, S) and
-// kept to the process's end, as the two-mass ones (a dtype costs microseconds to describe).
-struct ChainDtypes {
-  py::dtype events, samples;
-};
-const ChainDtypes& chainDtypes(std::size_t n, std::size_t stopped) {
-  static auto* const made = new std::map<std::pair<std::size_t, std::size_t>, ChainDtypes>();
-  const auto found = made->find({n, stopped});
-  if (found != made->end()) return found->second;
-  const auto describe = [](const std::vector<std::string>& names, bool withType) {
-    py::list fields;
-    for (const std::string& name : names) fields.append(py::make_tuple(name, "<f8"));
-    if (withType) fields.insert(1, py::make_tuple("type", "<U8"));
-    return py::dtype::from_args(fields);
-  };
-  std::vector<std::string> events{"t"}, samples{"t"};
-  for (std::size_t i = 1; i <= n; ++i) events.push_back("u" + std::to_string(i));
-  for (std::size_t i = 1; i <= n; ++i) events.push_back("v" + std::to_string(i) + "_pre");
-  events.push_back("v" + std::to_string(stopped) + "_post");
-  for (std::size_t i = 1; i <= n; ++i) samples.push_back("u" + std::to_string(i));
-  for (std::size_t i = 1; i <= n; ++i) samples.push_back("v" + std::to_string(i));
-  return made->emplace(std::pair{n, stopped}, ChainDtypes{describe(events, true), describe(samples, false)})
-      .first->second;
-}
-
-// A chain's events as one structured array that owns the table's rows (no copy: the rows move
-// into the array's base object; their layout is the dtype's)
-py::array chainEventArray(grazelab::cli::ChainEventTable&& table, const py::dtype& dtype) {
-  auto* rows = new std::vector<char>(std::move(table.rows));
-  py::capsule owner(rows, [](void* p) { delete static_cast<std::vector<char>*>(p); });
-  return py::array(dtype, {static_cast<py::ssize_t>(table.count)}, {static_cast<py::ssize_t>(table.rowBytes())},
-                   rows->data(), owner);
-}
-
-// A chain's samples, an object of columns in the dtype's order, as one structured array
-py::array chainSampleArray(const grazelab::cli::JsonValue& columns, const py::dtype& dtype) {
-  const std::size_t count = columns.fields.empty() ? 0 : columns.fields.front().second.items.size();
-  py::array array(dtype, py::array::ShapeContainer{static_cast<py::ssize_t>(count)});
-  auto* data = static_cast<char*>(array.mutable_data());
-  const std::size_t itemsize = std::size_t(dtype.itemsize());
-  for (std::size_t c = 0; c < columns.fields.size(); ++c) {
-    const std::vector<grazelab::cli::JsonValue>& column = columns.fields[c].second.items;
-    for (std::size_t k = 0; k < count; ++k) {
-      const double value = column[k].toDouble();
-      std::memcpy(data + k * itemsize + c * sizeof(double), &value, sizeof value);
-    }
-  }
-  return array;
+  return simulationResult(document, std::move(table), resultType, messages.written());
 }
 
 // grazelab.Chain's native half: a chain of N masses read, checked and designed once, shared by
@@ -625,84 +552,45 @@ ChainHandle prepareChain(const py::sequence& given) {
 // keywords). `direct`: on the calling thread (a short run of a commensurate chain, whose every
 // flight is decided within a period), else on a thread of its own that Ctrl+C stops.
 py::object simulateChain(const ChainHandle& chain, const py::sequence& given, const py::object& resultType,
-                         bool discardEvents, bool direct) {
+                         bool discardEvents, bool direct, std::size_t maxEvents) {
   auto named = givenOptions(given, {"state", "perturb", "glo-weights", "sample-times"});
   if (!named) return py::none();
   const grazelab::cli::OptionValues options(std::move(*named));
   std::optional<MemoryStream> ownMessages;
   std::FILE* const messages = direct ? ReusedMessages::ofThisThread().rewound() : ownMessages.emplace().file();
-  auto table = std::make_unique<EventTable>();
-  table->discard = discardEvents;
-  grazelab::cli::ChainEventTable chainTable;
+  std::stop_source stop;
+  grazelab::cli::ChainEventTable table;
+  table.discard = discardEvents;
+  table.maxRows = maxEvents;
+  table.whenFull = [&stop] { stop.request_stop(); };
   grazelab::cli::Io io;
   io.out = messages;  // (a run whose document is taken as values writes no output)
   io.messages = messages;
-  io.events = table.get();
-  io.chainEvents = &chainTable;
+  io.chainEvents = &table;
   grazelab::cli::JsonValue document;
   io.document = &document;
-  std::vector<grazelab::core::Sample> twoMassSamples;
-  io.samples = &twoMassSamples;
   QString error;
   const auto work = [&](std::stop_token stop) {
-    return grazelab::cli::runChainSimulate(*chain.chain, options, io, std::move(stop), error);
+    return grazelab::cli::runSimulate(*chain.chain, options, io, std::move(stop), error);
   };
   int code = 0;
   if (direct) {
     py::gil_scoped_release released;
-    code = work({});
+    code = work(stop.get_token());
   } else {
-    std::stop_source stop;
     std::optional<py::error_already_set> pythonError;
     code = interruptibly(stop, work, {}, pythonError);
     if (pythonError) throw std::move(*pythonError);
   }
   if (code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
+  if (table.full) throw py::value_error(tooManyEvents(maxEvents));
   const std::string log = direct ? ReusedMessages::ofThisThread().written() : ownMessages->take();
   if (code != 0) {
     PyErr_SetString(PyExc_OSError, error.isEmpty() ? ("simulate failed (exit " + std::to_string(code) + ")").c_str()
                                                    : error.simplified().toStdString().c_str());
     throw py::error_already_set();
   }
-  static PyObject* const eventsKey = PyUnicode_InternFromString("events");
-  static PyObject* const notesKey = PyUnicode_InternFromString("notes");
-  if (document.find("model")) {
-    // the note's chain, run by the note's engine: its document, its events in the table
-    py::object decimals = py::none();
-    py::object events = py::none();
-    if (!discardEvents) {
-      if (!table->decimals.empty()) decimals = py::cast(table->decimals);
-      events = eventArray(std::move(table));
-    }
-    py::object result = documentToPython(document, resultType, document.holdsWideNumbers(), std::move(twoMassSamples));
-    if (PyDict_SetItem(result.ptr(), eventsKey, events.ptr()) != 0 ||
-        PyDict_SetItem(result.ptr(), notesKey, notesOf(log).ptr()) != 0) {
-      throw py::error_already_set();
-    }
-    return py::make_tuple(result, decimals);
-  }
-  // the events and samples as structured arrays (as for two masses), the rest as values; in a
-  // wider precision than double the whole document as text too, under `decimal`
-  const grazelab::cli::JsonValue* described = document.find("chain");
-  const ChainDtypes& dtypes = chainDtypes(described->find("masses")->items.size(),
-                                          std::size_t(described->find("stop_mass")->integer));
-  const py::object eventArray =
-      discardEvents ? py::object(py::none()) : py::object(chainEventArray(std::move(chainTable), dtypes.events));
-  const grazelab::cli::JsonValue* samples = document.find("samples");
-  const py::object sampleArray = samples ? py::object(chainSampleArray(*samples, dtypes.samples)) : py::object();
-  document.remove("events");
-  document.remove("samples");
-  const py::object decimal = document.holdsWideNumbers() ? grazelab::python::toPython(document, resultType, true)
-                                                         : py::object();
-  py::object result = grazelab::python::toPython(document, resultType);
-  if (PyDict_SetItem(result.ptr(), eventsKey, eventArray.ptr()) != 0 ||
-      PyDict_SetItem(result.ptr(), notesKey, notesOf(log).ptr()) != 0) {
-    throw py::error_already_set();
-  }
-  if (sampleArray) result["samples"] = sampleArray;
-  if (decimal) result["decimal"] = decimal;
-  // in long double or binary128 the events' decimal text, 2N + 2 a row, as the command line writes it
-  return py::make_tuple(result, chainTable.decimals.empty() ? py::object(py::none()) : py::cast(chainTable.decimals));
+  return simulationResult(document, std::move(table), resultType, log);
 }
 
 // The chain as the documents write it (masses, springs designed, right spring, stop, gap, the
@@ -720,8 +608,6 @@ PYBIND11_MODULE(_native, module) {
   QCoreApplication::setApplicationName(QStringLiteral("grazelab-cli"));
   QCoreApplication::setApplicationVersion(QString::fromUtf8(grazelab::cli::kVersion));
   module.attr("version") = grazelab::cli::kVersion;
-  // (deliberately never freed: a dtype released after the interpreter's end would crash it)
-  numpyTypes = new NumpyTypes{eventDtype(), sampleDtype()};
   module.def("run", &run, py::arg("arguments"), py::arg("progress") = py::none(),
              py::arg("events") = false, py::arg("max_events") = std::size_t(-1),
              py::arg("discard_events") = false, py::arg("keep_map") = false,
@@ -746,7 +632,7 @@ PYBIND11_MODULE(_native, module) {
              "A chain of N masses from its options as (name, text, ...): masses, springs, right-spring, "
              "stop-mass, gap, frequencies, design-branch. Raises ValueError when there is none.");
   module.def("simulate_chain", &simulateChain, py::arg("chain"), py::arg("options"), py::arg("result_type"),
-             py::arg("discard_events") = false, py::arg("direct") = false,
+             py::arg("discard_events") = false, py::arg("direct") = false, py::arg("max_events") = std::size_t(-1),
              "grazelab-cli simulate --masses ... on a prepared chain, its run options as (name, value, ...): "
              "(the result: its document as values, with events and notes; the note's chain's events' decimal "
              "text or None), or None when a value is of a type not read directly (give the options as text).");

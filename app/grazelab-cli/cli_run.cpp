@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "commands/chain_family_command.h"
-#include "commands/chain_simulate_command.h"
 #include "commands/family_command.h"
 #include "commands/glo_set_command.h"
 #include "commands/map_command.h"
@@ -138,22 +137,16 @@ const std::vector<Command>& commands() {
       {"simulate", kChain + kStart + kMassChain + QStringList{"glo-weights", "precision", "contacts", "t-end", "search-steps", "format", "trust", "sample-step", "sample-times"}, false,
        [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
-         if (parser.isSet("glo-weights") ||
-             std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return parser.isSet(name); })) {
-           if (!parser.isSet("masses")) return fail(io, "--springs, --right-spring, --stop-mass, --frequencies and --glo-weights describe a chain given by --masses");
-           const int code = runChainSimulate(parser, io, stop, error);
-           // a streamed run says what it wrote before the interrupt
-           if (code == kExitInterrupted) {
-             std::fprintf(io.messages, "grazelab-cli: interrupted: %s\n",
-                          error.isEmpty() ? "nothing written" : qPrintable(error));
-           }
-           return code == kExitInvalidInput ? fail(io, error) : code;
+         if (!parser.isSet("masses") &&
+             (parser.isSet("glo-weights") ||
+              std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return parser.isSet(name); }))) {
+           return fail(io, "--springs, --right-spring, --stop-mass, --frequencies and --glo-weights describe a chain given by --masses");
          }
-         const auto precision = parsePrecisionOption(parser, error);
-         if (!precision) return fail(io, error);
-         const auto trust = parseTrustOption(parser, error);
-         if (!trust) return fail(io, error);
-         const int code = runSimulate(parser, *precision, *trust, io, stop, error);
+         const int code = runSimulate(parser, io, stop, error);
+         // a streamed run says what it wrote before the interrupt
+         if (code == kExitInterrupted) {
+           std::fprintf(io.messages, "grazelab-cli: interrupted: %s\n", error.isEmpty() ? "nothing written" : qPrintable(error));
+         }
          return code == kExitInvalidInput ? fail(io, error) : code;
        },
        {}},

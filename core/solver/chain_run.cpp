@@ -180,7 +180,10 @@ template <typename S>
 BasicReadyChain<S> readyChain(const BasicMassChain<S>& chain, Kernel kernel) {
   BasicReadyChain<S> ready{chain, chainDynamicsIn<S>(chain), std::nullopt};
   if (kernel == Kernel::Best) {
-    if (const auto model = notesModelOf(chain, ready.dynamics)) ready.notes = notesFormOf(*model);
+    if (const auto model = notesModelOf(chain, ready.dynamics)) {
+      ready.notes = notesFormOf(*model);
+      if (ready.notes) ready.notesModel = model;
+    }
   }
   return ready;
 }
@@ -191,6 +194,7 @@ BasicReadyChain<S> readyChain(const BasicModel<S>& model) {
   const S k2 = model.design ? S(designKappa(S(model.m2 / model.m1), *model.design) * model.k1) : model.k2;
   BasicMassChain<S> chain{{model.m1, model.m2}, {model.k1, k2}, S(0), 2, model.gap};
   BasicReadyChain<S> ready{chain, chainDynamicsIn<S>(chain), notesFormOf(model)};
+  if (ready.notes) ready.notesModel = model;
   return ready;
 }
 
@@ -198,11 +202,12 @@ template <typename S>
 BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start,
                                             long maxContacts, std::type_identity_t<S> tEnd,
                                             ChainEventSink<std::type_identity_t<S>> sink,
-                                            ChainSampling<std::type_identity_t<S>> sampling)
+                                            ChainSampling<std::type_identity_t<S>> sampling, std::int64_t searchSteps)
     : m_chain(chain.numbers),
       m_dynamics(chain.dynamics),
       m_maxContacts(maxContacts),
       m_tEnd(tEnd),
+      m_searchSteps(searchSteps > 0 ? searchSteps : defaultSearchSteps<S>()),
       m_slowest(twoPi<S>() / m_dynamics.omega.minCoeff()),
       m_sink(std::move(sink)),
       m_sampling(std::move(sampling)),
@@ -464,7 +469,7 @@ bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
       samplePiece(m_t, m_tEnd, true, [&](const S&) { return end; });
       return finish(StopReason::TimeLimit, end, m_tEnd);
     }
-    const Step<S> step = m_stepper->advance(m_scaled, tauEnd, horizon, m_stop, defaultSearchSteps<S>(), true);
+    const Step<S> step = m_stepper->advance(m_scaled, tauEnd, horizon, m_stop, m_searchSteps, true);
     const S from = m_t;
     const S when = m_scale.toPhysicalTime(step.tau);
     switch (step.kind) {
@@ -521,8 +526,8 @@ BasicChainRun<S> runChain(const BasicReadyChain<S>& chain, const std::type_ident
                           long maxContacts,
                           std::type_identity_t<S> tEnd, std::stop_token stop,
                           const ChainEventSink<std::type_identity_t<S>>& sink,
-                          const ChainSampling<std::type_identity_t<S>>& sampling) {
-  BasicChainSimulator<S> simulator(chain, start, maxContacts, tEnd, sink, sampling);
+                          const ChainSampling<std::type_identity_t<S>>& sampling, std::int64_t searchSteps) {
+  BasicChainSimulator<S> simulator(chain, start, maxContacts, tEnd, sink, sampling, searchSteps);
   simulator.advance(maxContacts, std::move(stop));
   return simulator.takeRun();
 }
@@ -557,7 +562,7 @@ ChainRun inDouble(const BasicChainRun<S>& from) {
 #define GRAZELAB_INSTANTIATE(S)                                                                                  \
   template BasicChainRun<S> runChain<S>(const BasicReadyChain<S>&, const BasicChainStart<S>&, long,                 \
                                         std::type_identity_t<S>, std::stop_token, const ChainEventSink<S>&,         \
-                                        const ChainSampling<S>&);                                                   \
+                                        const ChainSampling<S>&, std::int64_t);                                     \
   template BasicReadyChain<S> readyChain<S>(const BasicMassChain<S>&, Kernel);                                      \
   template BasicReadyChain<S> readyChain<S>(const BasicModel<S>&);                                                     \
   template class BasicChainSimulator<S>;                                                                                 \

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <stop_token>
@@ -82,6 +83,9 @@ struct BasicReadyChain {
   BasicMassChain<S> numbers;
   BasicChainDynamics<S> dynamics;
   std::optional<TwoMassForm<S>> notes;  ///< the note's kernel's form of it; empty: the modal kernel
+  /// the note's model of it, with `notes` (its design branch when it is a 1:2 design's): what
+  /// the documents say of the note's chain (T2, lambda*, ...)
+  std::optional<BasicModel<S>> notesModel = {};
 };
 using ReadyChain = BasicReadyChain<double>;
 
@@ -112,9 +116,12 @@ template <typename S>
 class BasicChainSimulator {
  public:
   /// As runChain's arguments (below); the chain is copied, `sink` and `sampling` are kept.
+  /// `searchSteps`: the note's kernel's budget for one detuned flight's certified march, in steps
+  /// (0: about a second's worth, defaultSearchSteps); running out ends the run SearchBudget. (The
+  /// modal kernel's searches are bounded by 1000 slowest periods, or tEnd.)
   BasicChainSimulator(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start, long maxContacts,
                       std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
-                      ChainSampling<std::type_identity_t<S>> sampling = {});
+                      ChainSampling<std::type_identity_t<S>> sampling = {}, std::int64_t searchSteps = 0);
   /// The same, the chain made ready here.
   BasicChainSimulator(const BasicMassChain<S>& chain, const BasicChainStart<S>& start, long maxContacts,
                       std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
@@ -154,6 +161,7 @@ class BasicChainSimulator {
   BasicChainDynamics<S> m_dynamics;
   long m_maxContacts;
   S m_tEnd;
+  std::int64_t m_searchSteps;  ///< the note's kernel's, per flight
   S m_slowest;
   ChainEventSink<S> m_sink;
   ChainSampling<S> m_sampling;
@@ -204,12 +212,13 @@ BasicChainRun<S> runChain(const BasicMassChain<S>& chain, const std::type_identi
                           std::type_identity_t<S> tEnd = 0, std::stop_token stop = {},
                           const ChainEventSink<std::type_identity_t<S>>& sink = {},
                           const ChainSampling<std::type_identity_t<S>>& sampling = {});
-/// The same for a chain made ready once (its runs skip the eigensolve).
+/// The same for a chain made ready once (its runs skip the eigensolve); `searchSteps` as
+/// BasicChainSimulator's.
 template <typename S>
 BasicChainRun<S> runChain(const BasicReadyChain<S>& chain, const std::type_identity_t<BasicChainStart<S>>& start,
                           long maxContacts,
                           std::type_identity_t<S> tEnd = 0, std::stop_token stop = {},
                           const ChainEventSink<std::type_identity_t<S>>& sink = {},
-                          const ChainSampling<std::type_identity_t<S>>& sampling = {});
+                          const ChainSampling<std::type_identity_t<S>>& sampling = {}, std::int64_t searchSteps = 0);
 
 }  // namespace grazelab::core

@@ -330,14 +330,7 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
             if decimals is None and result["trust"]["verdict"] != "unreliable":
                 return result  # (the common case, without another call)
             return _simulated(result, decimals)
-    try:
-        count = int(_convert._text("contacts", contacts)) if contacts is not None else None
-    except (TypeError, ValueError):
-        count = None  # the command line says what is wrong with it
-    if events and count is not None and count > MAX_EVENTS:
-        raise ValueError(f"contacts: {count} events would take {count * 80 / 1e9:.1f} GB "
-                         f"in memory (at most grazelab.MAX_EVENTS = {MAX_EVENTS}); stream them "
-                         f"to a file with grazelab-cli simulate --format csv")
+    count = _check_held_events(events, contacts)
     options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision, glo=glo,
                    onepp=onepp, state=state, perturb=perturb, contacts=contacts, t_end=t_end,
                    search_steps=search_steps, trust=trust)
@@ -414,36 +407,43 @@ class Chain:
         # calling thread; anything longer on a thread of its own that Ctrl+C stops
         direct = (progress is None and t_end is None and samples is None and self._commensurate
                   and (contacts is None or (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS)))
+        _check_held_events(events, contacts)
         try:
-            answer = _simulate_chain(self._prepared, flat, Result, not events, direct)
+            answer = _simulate_chain(self._prepared, flat, Result, not events, direct, MAX_EVENTS)
             if answer is None:  # values of other types (NumPy, Fraction): as the command line's text
                 given = {name.replace("-", "_"): value for name, value in zip(flat[::2], flat[1::2]) if value is not None}
                 flat = tuple(part for pair in _convert.option_texts(given) for part in pair)
-                answer = _simulate_chain(self._prepared, flat, Result, not events, direct)
+                answer = _simulate_chain(self._prepared, flat, Result, not events, direct, MAX_EVENTS)
         except ValueError as error:
             raise ValueError(_message(str(error))) from None
         except OSError as error:
             raise OSError(_message(str(error))) from None
         if progress is not None:
             progress(1.0, "done")
-        result, decimals = answer
-        if "model" in result:  # the note's chain, run by the note's engine
-            return _simulated(result, decimals)
-        if decimals is not None:  # the events' exact text, as for two masses
-            columns = [name for name in result["events"].dtype.names if name != "type"]
-            text = _np.array(decimals, dtype=str).reshape(-1, len(columns))
-            result["events_decimal"] = {name: text[:, i] for i, name in enumerate(columns)}
-        return result
+        return _simulated(*answer)
+
+
+def _check_held_events(events, contacts):
+    """The number of contacts asked for (None when not given or not a number: the command line
+    says what is wrong with it); ValueError when the events kept would pass MAX_EVENTS."""
+    try:
+        count = int(_convert._text("contacts", contacts)) if contacts is not None else None
+    except (TypeError, ValueError):
+        return None
+    if events and count is not None and count > MAX_EVENTS:
+        raise ValueError(f"contacts: {count} events would take {count * 72 / 1e9:.1f} GB "
+                         f"in memory or more (at most grazelab.MAX_EVENTS = {MAX_EVENTS}); stream them "
+                         f"to a file with grazelab-cli simulate --format csv")
+    return count
 
 
 def _simulated(result, decimals):
-    """A two-mass run's result (its document with its events and notes) and the events' decimal
-    text (None in double), as simulate returns it."""
+    """A run's result (its document with its events and notes) and the events' decimal text (None
+    in double), as simulate returns it for every chain."""
     if decimals is not None:
-        columns = ("t", "u1", "u2", "v1_pre", "v2_pre", "v2_post")
+        columns = [name for name in result["events"].dtype.names if name != "type"]
         text = _np.array(decimals, dtype=str).reshape(-1, len(columns))
         result["events_decimal"] = {name: text[:, i] for i, name in enumerate(columns)}
-        result["decimal"].pop("events", None)
     if result.get("trust", {}).get("verdict") == "unreliable":
         _warnings.warn(f"simulate: the run's error estimate says unreliable: "
                        f"{result['trust'].get('reason', '')}", GrazeLabWarning, stacklevel=3)

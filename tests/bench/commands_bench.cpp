@@ -9,10 +9,9 @@
 #include <stop_token>
 #include <vector>
 
-#include "commands/chain_simulate_command.h"
 #include "commands/simulate_command.h"
 #include "core/solver/chain_trust.h"
-#include "core/solver/simulate.h"
+#include "core/solver/chain_run.h"
 #include "io/cli_input.h"
 #include "io/cli_io.h"
 #include "io/json_value.h"
@@ -43,13 +42,13 @@ void BM_ReadOptions(benchmark::State& state) {
 }
 BENCHMARK(BM_ReadOptions);
 
-// the core's run alone, from the read options
+// the core's run alone (the one run, the note's kernel), from the read options
 void BM_CoreRun(benchmark::State& state) {
   const auto run = *grazelab::cli::parseRun<double>(shortRun()).value;
+  const grazelab::core::ReadyChain ready = grazelab::core::readyChain(run.model.model);
+  const grazelab::core::ChainState start = grazelab::core::chainStateOf(run.request.initial);
   for (auto _ : state) {
-    grazelab::core::BasicSimulator<double> simulator(run.model.model, run.request);
-    simulator.advance(std::numeric_limits<std::int64_t>::max(), {});
-    benchmark::DoNotOptimize(simulator.result().tFinal);
+    benchmark::DoNotOptimize(grazelab::core::runChain(ready, start, long(run.request.maxContacts)).tFinal);
   }
 }
 BENCHMARK(BM_CoreRun);
@@ -59,18 +58,15 @@ void BM_SimulateToDocument(benchmark::State& state) {
   const OptionValues options = shortRun();
   std::FILE* sink = std::fopen("/dev/null", "w");
   for (auto _ : state) {
-    grazelab::cli::EventTable table;
+    grazelab::cli::ChainEventTable table;
     grazelab::cli::JsonValue document;
-    std::vector<grazelab::core::Sample> samples;
     grazelab::cli::Io io;
     io.out = sink;
     io.messages = sink;
-    io.events = &table;
+    io.chainEvents = &table;
     io.document = &document;
-    io.samples = &samples;
     QString error;
-    benchmark::DoNotOptimize(grazelab::cli::runSimulate(options, {}, grazelab::core::TrustMode::Off, io,
-                                                        std::stop_token{}, error));
+    benchmark::DoNotOptimize(grazelab::cli::runSimulate(options, io, std::stop_token{}, error));
   }
   std::fclose(sink);
 }
@@ -86,10 +82,12 @@ OptionValues summaryRun(double contacts) {
 
 void BM_CoreRunSummaryStart(benchmark::State& state) {
   auto run = *grazelab::cli::parseRun<double>(summaryRun(double(state.range(0)))).value;
+  const grazelab::core::ReadyChain ready = grazelab::core::readyChain(run.model.model);
+  const grazelab::core::ChainState start = grazelab::core::chainStateOf(run.request.initial);
+  // (a summary looks at no event: the run hands them to a sink that keeps none)
+  const grazelab::core::ChainEventSink<double> none = [](const grazelab::core::ChainEvent&) {};
   for (auto _ : state) {
-    grazelab::core::BasicSimulator<double> simulator(run.model.model, run.request);
-    simulator.advance(std::numeric_limits<std::int64_t>::max(), {});
-    benchmark::DoNotOptimize(simulator.result().tFinal);
+    benchmark::DoNotOptimize(grazelab::core::runChain(ready, start, long(run.request.maxContacts), 0.0, {}, none).tFinal);
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
@@ -103,8 +101,7 @@ void BM_SimulateSummary(benchmark::State& state) {
     io.out = sink;
     io.messages = sink;
     QString error;
-    benchmark::DoNotOptimize(grazelab::cli::runSimulate(options, {}, grazelab::core::TrustMode::Off, io,
-                                                        std::stop_token{}, error));
+    benchmark::DoNotOptimize(grazelab::cli::runSimulate(options, io, std::stop_token{}, error));
   }
   std::fclose(sink);
   state.SetItemsProcessed(state.iterations() * state.range(0));
@@ -171,14 +168,14 @@ void BM_PreparedChainSimulate(benchmark::State& state) {
   const OptionValues options = threeMassRun(state.range(0) ? "auto" : "off");
   std::FILE* sink = std::fopen("/dev/null", "w");
   for (auto _ : state) {
-    grazelab::cli::EventTable table;
+    grazelab::cli::ChainEventTable table;
     grazelab::cli::JsonValue document;
     grazelab::cli::Io io;
     io.out = io.messages = sink;
-    io.events = &table;
+    io.chainEvents = &table;
     io.document = &document;
     QString error;
-    benchmark::DoNotOptimize(grazelab::cli::runChainSimulate(chain, options, io, {}, error));
+    benchmark::DoNotOptimize(grazelab::cli::runSimulate(chain, options, io, {}, error));
   }
   std::fclose(sink);
 }

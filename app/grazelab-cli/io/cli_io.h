@@ -16,36 +16,7 @@ struct StoredMap;
 struct JsonValue;
 }  // namespace grazelab::cli
 
-namespace grazelab::core {
-struct Sample;
-}  // namespace grazelab::core
-
 namespace grazelab::cli {
-
-/// One event of a run as the Python module hands it to NumPy without a copy: the columns of the
-/// command line's CSV (t,type,u1,u2,v1_pre,v2_pre,v2_post), numbers rounded to double, the type in
-/// UCS-4 as NumPy's '<U8'. 80 bytes; the module describes the same layout to NumPy.
-struct EventRow {
-  double t;
-  char32_t type[8];
-  double u1, u2, v1Pre, v2Pre, v2Post;
-};
-static_assert(sizeof(EventRow) == 80);
-
-/// A run's events as arrays (see Io::events). For a run in long double or binary128 the six
-/// numbers of each event are also kept as the decimal text the command line writes.
-struct EventTable {
-  std::vector<EventRow> rows;
-  std::vector<std::string> decimals;  ///< empty, or 6 per row: t,u1,u2,v1_pre,v2_pre,v2_post
-  /// At most this many rows are kept: the next event sets `full` and calls `whenFull` (which
-  /// stops the run) instead of growing the table without bound.
-  std::size_t maxRows = std::size_t(-1);
-  bool full = false;
-  std::function<void()> whenFull;
-  /// statistics only: the events are counted by the run's summary, kept nowhere (no bound on
-  /// their number, nothing in the output's events array)
-  bool discard = false;
-};
 
 /// A chain's events as the Python module hands them to NumPy without a copy: packed rows of t,
 /// the type in UCS-4 ('<U8'), then u1..uN, v1_pre..vN_pre and the stopped mass's vS_post, each
@@ -57,6 +28,14 @@ struct ChainEventTable {
   std::size_t count = 0;   ///< rows
   std::vector<char> rows;  ///< count x rowBytes()
   std::vector<std::string> decimals;
+  /// At most this many rows are kept: the next event sets `full` and calls `whenFull` (which
+  /// stops the run) instead of growing the table without bound.
+  std::size_t maxRows = std::size_t(-1);
+  bool full = false;
+  std::function<void()> whenFull;
+  /// statistics only: the events are counted by the run's summary, kept nowhere (no bound on
+  /// their number; the document's `events` null)
+  bool discard = false;
   /// the bytes of a row: t, 8 letters, 2N + 1 numbers
   std::size_t rowBytes() const { return sizeof(double) + 8 * sizeof(char32_t) + (2 * masses + 1) * sizeof(double); }
 };
@@ -70,21 +49,15 @@ struct Io {
   /// Progress of a long command: the fraction done (negative when not known) and one line
   /// that says where it is. May be called from any thread; optional.
   std::function<void(double fraction, const std::string& text)> progress;
-  /// When set, `simulate` puts its events here instead of into the text of its output (whose
-  /// events array stays empty).
-  EventTable* events = nullptr;
-  /// When set, `simulate` of a chain given by masses (its json form) puts its events here
-  /// instead of into its document (whose `events` is then null); `events->discard` still says
-  /// whether to keep them.
+  /// When set with `document`, `simulate` puts its events here instead of into its document
+  /// (whose `events` is then null); `chainEvents->discard`: nowhere.
   ChainEventTable* chainEvents = nullptr;
   /// When set, `map` and `merge` put the map here (the Python module: arrays without files);
   /// their files are then written only where --out names them.
   map::StoredMap* map = nullptr;
-  /// When set, `info`, `orbit` and `simulate` (with `events`) put their JSON document here as values,
-  /// not as text, and `simulate` the samples asked for (--sample-step, --sample-times) into
-  /// `samples`.
+  /// When set, `info`, `orbit` and `simulate` put their JSON document here as values, not as
+  /// text (`simulate`'s samples, asked for by --sample-step or --sample-times, in it as columns).
   JsonValue* document = nullptr;
-  std::vector<core::Sample>* samples = nullptr;
   /// When set, `family` and `modes` without --out put their files here, (name, bytes), instead
   /// of on disk, and draw no picture.
   std::vector<std::pair<std::string, std::string>>* files = nullptr;

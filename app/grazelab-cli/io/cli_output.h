@@ -9,7 +9,6 @@
 #include "io/cli_input.h"
 #include "io/cli_io.h"
 #include "io/json_value.h"
-#include "core/solver/simulate.h"
 #include "core/solver/trust.h"
 
 namespace grazelab::cli {
@@ -23,7 +22,11 @@ std::string jsonNumber(const S& value) {
 /// A string as JSON (quotes and backslashes escaped).
 std::string jsonQuoted(const std::string& text);
 
-/// `info`: the model with its derived quantities (k2, w1, w2, T1, T2, P, lambda*), as JSON.
+/// The note's model of a two-mass chain with its derived quantities (k2 and where it comes from,
+/// w1, w2, T1, T2, P, lambda*), and the precision asked for.
+template <typename S>
+JsonValue modelValue(const ModelInput<S>& model, const std::string& precision);
+/// `info`: {"model": modelValue}, as JSON.
 template <typename S>
 std::string infoJson(const ModelInput<S>& model);
 /// The same document as values.
@@ -45,51 +48,5 @@ JsonValue trustValue(const core::Trust& trust);
 /// the digits of the chain's precision.
 template <typename S>
 JsonValue massChainValue(const core::BasicMassChain<S>& chain, const S& period);
-
-/// The arithmetic of a run as its output reports it: asked for ("auto", "double", ...), used
-/// in the end, and each raise of --precision auto (one line: from where and why).
-struct PrecisionReport {
-  std::string requested;
-  std::string used;
-  std::vector<std::string> escalations;
-};
-
-/// Writes a run as it happens (docs/design.md "Command line"): json (one document, the events array
-/// streamed), jsonl (one record per line: the run, each event, the end), csv (one row per
-/// event) or summary (a few lines at the end). Numbers carry the digits of the run's precision.
-/// Every record is written whole, so an interrupted run leaves complete records.
-template <typename S>
-class RunWriter {
- public:
-  /// `precision` is what the run was asked for (the model's "precision" field). With a `table`
-  /// the events go there and the text's events array stays empty; with a `document` the whole
-  /// output goes there as values instead of text (both: the Python module).
-  RunWriter(const RunInput<S>& run, std::FILE* out, std::string precision,
-            EventTable* table = nullptr, JsonValue* document = nullptr,
-            std::vector<core::Sample>* samples = nullptr)
-      : m_run(run), m_out(out), m_precision(std::move(precision)), m_table(table),
-        m_document(document), m_samples(samples) {}
-
-  /// Everything known before the first event.
-  void begin(const core::BasicResult<S>& result);
-  /// Goes on after `written` events an earlier writer of the same output wrote (a run of
-  /// --precision auto raised to a higher precision): begin() is not called again.
-  void resumeAfter(std::int64_t written) { m_events = written; }
-  void event(const core::BasicEvent<S>& event);
-  /// Everything known at the end; `interrupted` when a signal ended the run.
-  void end(const core::BasicResult<S>& result, bool interrupted, const core::Trust& trust,
-           const PrecisionReport& precision);
-
- private:
-  void write(const std::string& text);
-
-  const RunInput<S>& m_run;
-  std::FILE* m_out;
-  std::string m_precision;
-  EventTable* m_table;
-  JsonValue* m_document;
-  std::vector<core::Sample>* m_samples;
-  std::int64_t m_events = 0;
-};
 
 }  // namespace grazelab::cli

@@ -11,6 +11,20 @@ namespace grazelab::cli {
 
 Parsed<std::shared_ptr<const PreparedMassChain>> PreparedMassChain::make(const OptionValues& options,
                                                                          std::stop_token stop) {
+  // the note's chain, written with the note's options or as --masses m1,m2 --frequencies 2:1:
+  // read in each precision by the note's own reader (its 1:2 design in closed form there, no
+  // design search; a ratio beyond double's range left to the precisions that hold it)
+  const bool notesOptions = !options.isSet("masses");
+  if (notesOptions || writesTheNotesChain(options)) {
+    const Parsed<ModelInput<double>> model = parseModel<double>(options);
+    if (!model.value && !model.precisionBound) return {std::nullopt, model.error};
+    // (an option not given reads as its default there too)
+    std::vector<GivenOption> own;
+    for (const char* name : {"masses", "springs", "gap", "frequencies", "design-branch", "m1", "m2", "k1", "k2", "branch"}) {
+      if (options.isSet(name)) own.push_back({name, options.value(name), {}, false});
+    }
+    return {std::shared_ptr<const PreparedMassChain>(new PreparedMassChain(std::move(own), MassChainInput{}, true)), {}};
+  }
   Parsed<MassChainInput> input = parseMassChain(options, std::move(stop));
   if (!input.value) return {std::nullopt, input.error};
   // the chain's options kept as text (a command line's options live in its parser, which goes)
@@ -18,12 +32,16 @@ Parsed<std::shared_ptr<const PreparedMassChain>> PreparedMassChain::make(const O
   for (const char* name : {"masses", "springs", "right-spring", "stop-mass", "gap", "frequencies", "design-branch"}) {
     if (options.isSet(name)) own.push_back({name, options.value(name), {}, false});
   }
-  return {std::shared_ptr<const PreparedMassChain>(new PreparedMassChain(std::move(own), std::move(*input.value))),
+  return {std::shared_ptr<const PreparedMassChain>(new PreparedMassChain(std::move(own), std::move(*input.value), false)),
           {}};
 }
 
-PreparedMassChain::PreparedMassChain(std::vector<GivenOption> given, MassChainInput input)
-    : m_given(given), m_options(std::move(given)), m_input(std::move(input)), m_notes(writesTheNotesChain(m_options)) {}
+PreparedMassChain::PreparedMassChain(std::vector<GivenOption> given, MassChainInput input, bool notesReader)
+    : m_given(given),
+      m_options(std::move(given)),
+      m_input(std::move(input)),
+      m_notes(notesReader),
+      m_notesReader(notesReader) {}
 
 template <typename S>
 PreparedMassChain::InPrecision<S>& PreparedMassChain::in() const {
@@ -36,6 +54,13 @@ template <typename S>
 const Parsed<core::BasicReadyChain<S>>& PreparedMassChain::ready() const {
   InPrecision<S>& slot = in<S>();
   std::call_once(slot.readyOnce, [&] {
+    if (m_notesReader) {
+      Parsed<ModelInput<S>> model = parseModel<S>(m_options);
+      if (model.value) slot.ready.value = core::readyChain(model.value->model);
+      slot.ready.error = model.error;
+      slot.ready.precisionBound = model.precisionBound;
+      return;
+    }
     Parsed<core::BasicMassChain<S>> numbers = massChainIn<S>(m_options, m_input);
     if (numbers.value) slot.ready.value = core::readyChain(*numbers.value);
     slot.ready.error = numbers.error;

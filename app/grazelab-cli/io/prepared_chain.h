@@ -29,7 +29,8 @@ class PreparedMassChain {
 
   /// The chain's own options (those given of the seven above), as text.
   const std::vector<GivenOption>& givenOptions() const { return m_given; }
-  /// It is the note's chain, written with --masses (writesTheNotesChain).
+  /// It is the note's chain (written with the note's options, or with --masses as
+  /// writesTheNotesChain says), read in each precision by the note's reader (parseModel).
   bool isTheNotesChain() const { return m_notes; }
 
   /// The chain in S, ready to run; or why its numbers cannot be read there (a design that
@@ -41,7 +42,7 @@ class PreparedMassChain {
   const core::ChainShadow<S>& shadow() const;
 
  private:
-  PreparedMassChain(std::vector<GivenOption> given, MassChainInput input);
+  PreparedMassChain(std::vector<GivenOption> given, MassChainInput input, bool notesReader);
 
   template <typename S>
   struct InPrecision {
@@ -56,6 +57,7 @@ class PreparedMassChain {
   OptionValues m_options;  ///< m_given, read as options
   MassChainInput m_input;  ///< the chain in double, and how its springs came when designed
   bool m_notes = false;
+  bool m_notesReader = false;  ///< ready<S>() reads the note's model (parseModel), not a chain
   mutable InPrecision<double> m_double;
   mutable InPrecision<long double> m_long;
   mutable InPrecision<core::Quad> m_quad;

@@ -217,6 +217,26 @@ TEST(ChainRun, ARunMeasuresItsOwnAccuracy) {
   EXPECT_LT(inQuad, 1e-6 * inDouble);
 }
 
+// The note's kernel takes the note's budget of march steps for a detuned flight's search: out of
+// it, the run ends search-budget where simulate does, and goes on to the contact with the default
+TEST(ChainRun, TheNotesKernelsSearchTakesItsStepBudget) {
+  const Model model{1.0, 0.5, 1.0, 1e-6, 1.0, std::nullopt};
+  const State initial{0.0, 0.999, 0.0, 0.0};
+  Request request;
+  request.initial = initial;
+  request.maxContacts = 1;
+  request.flightSearchSteps = 10;
+  const Result two = simulate(model, request);
+  ASSERT_EQ(two.stop, StopReason::SearchBudget);
+  const ReadyChain ready = readyChain(model);
+  ASSERT_TRUE(ready.notes && ready.notesModel);
+  const ChainRun budgeted = runChain(ready, chainStateOf(initial), 1, 0.0, {}, {}, {}, 10);
+  EXPECT_EQ(budgeted.stop, StopReason::SearchBudget);
+  EXPECT_EQ(budgeted.contacts, 0);
+  const ChainRun whole = runChain(ready, chainStateOf(initial), 1);
+  EXPECT_EQ(whole.contacts, 1) << toString(whole.stop);
+}
+
 TEST(ChainRun, TheNotesKernelSamplesTheNotesMotion) {
   // samples of a run by the note's kernel (through flights, a stick and its release) are the
   // states the note's simulator samples at those times, to rounding
