@@ -263,8 +263,9 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
              springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
              stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
              design_branch: _Optional[int] = None, glo_weights: _Optional[_Sequence[float]] = None) -> Result:
-    """One exact run (``grazelab-cli simulate``). Returns the JSON's fields (model, initial,
-    final, stop_reason, contacts, energy, accuracy, trust, precision, timing) with ``events`` a
+    """One exact run (``grazelab-cli simulate``). Returns the JSON's fields, one document for every
+    chain however it is given (chain, model for the note's chain, initial, final, stop_reason,
+    message, contacts, energy, accuracy, trust, precision) with ``events`` a
     structured array of the columns t, type, u1, u2, v1_pre, v2_pre, v2_post (the arrays the core
     filled, no copy; for N masses u1..uN, v1_pre..vN_pre and the stopped mass's v<s>_post, the
     command line's CSV columns) and ``notes`` the command line's notes. A run in long double or binary128

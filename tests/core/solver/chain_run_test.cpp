@@ -220,8 +220,9 @@ TEST(ChainRun, ARunMeasuresItsOwnAccuracy) {
 // The note's kernel takes the note's budget of march steps for a detuned flight's search: out of
 // it, the run ends search-budget where simulate does, and goes on to the contact with the default
 TEST(ChainRun, TheNotesKernelsSearchTakesItsStepBudget) {
-  const Model model{1.0, 0.5, 1.0, 1e-6, 1.0, std::nullopt};
-  const State initial{0.0, 0.999, 0.0, 0.0};
+  // (its first contact comes after 65 time units, about 8 slow periods)
+  const Model model{1.0, 0.5, 1.0, 0.37, 1.0, std::nullopt};
+  const State initial{0.5, 0.8, 0.0, 0.0};
   Request request;
   request.initial = initial;
   request.maxContacts = 1;
@@ -235,6 +236,8 @@ TEST(ChainRun, TheNotesKernelsSearchTakesItsStepBudget) {
   EXPECT_EQ(budgeted.contacts, 0);
   const ChainRun whole = runChain(ready, chainStateOf(initial), 1);
   EXPECT_EQ(whole.contacts, 1) << toString(whole.stop);
+  request.flightSearchSteps = defaultSearchSteps<double>();
+  EXPECT_EQ(whole.events.at(0).t, simulate(model, request).events.at(0).t);
 }
 
 TEST(ChainRun, TheNotesKernelSamplesTheNotesMotion) {
