@@ -116,7 +116,7 @@ struct ProgressMailbox {
 // Why a run stopped at `maxEvents` events held in memory.
 std::string tooManyEvents(std::size_t maxEvents) {
   return "the run made more than " + std::to_string(maxEvents) + " events (at least " +
-         std::to_string(maxEvents * 72 / 1'000'000) +
+         std::to_string(maxEvents * 80 / 1'000'000) +
          " MB in memory): ask for fewer contacts or a shorter t_end, or stream the run to a file "
          "with grazelab-cli simulate --format csv";
 }

@@ -311,7 +311,8 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         chain = Chain(masses=masses, springs=springs, right_spring=right_spring, stop_mass=stop_mass,
                       frequencies=frequencies, design_branch=design_branch, gap=gap)
         return chain._simulate(("precision", precision, "state", state, "glo", glo, "onepp", onepp, "perturb", perturb,
-                                "contacts", contacts, "t-end", t_end, "trust", trust, "glo-weights", glo_weights),
+                                "contacts", contacts, "t-end", t_end, "trust", trust, "glo-weights", glo_weights,
+                                "search-steps", search_steps),
                                events, samples, progress, contacts, t_end)
     if frequencies is not None or design_branch is not None or springs is not None or glo_weights is not None:
         raise ValueError("springs, frequencies, design_branch and glo_weights describe a chain given by masses")
@@ -391,11 +392,12 @@ class Chain:
                  perturb: _Optional[_Sequence[float]] = None, contacts: _Optional[int] = None,
                  t_end: _Optional[float] = None, trust: str = "auto", events: bool = True,
                  samples: _Union[float, _Sequence[float], None] = None,
-                 progress: _Optional[_Progress] = None) -> Result:
+                 progress: _Optional[_Progress] = None, search_steps: _Optional[int] = None) -> Result:
         """One exact run of this chain: the keywords and the result of ``simulate`` with
         ``masses`` (the same bits), the chain not read nor designed again."""
         return self._simulate(("precision", precision, "state", state, "glo-weights", glo_weights, "onepp", onepp,
-                               "perturb", perturb, "contacts", contacts, "t-end", t_end, "trust", trust),
+                               "perturb", perturb, "contacts", contacts, "t-end", t_end, "trust", trust,
+                               "search-steps", search_steps),
                               events, samples, progress, contacts, t_end)
 
     def _simulate(self, flat, events, samples, progress, contacts, t_end):
@@ -432,7 +434,7 @@ def _check_held_events(events, contacts):
     except (TypeError, ValueError):
         return None
     if events and count is not None and count > MAX_EVENTS:
-        raise ValueError(f"contacts: {count} events would take {count * 72 / 1e9:.1f} GB "
+        raise ValueError(f"contacts: {count} events would take {count * 80 / 1e9:.1f} GB "
                          f"in memory or more (at most grazelab.MAX_EVENTS = {MAX_EVENTS}); stream them "
                          f"to a file with grazelab-cli simulate --format csv")
     return count

@@ -219,7 +219,22 @@ if expect_ok simulate --glo 0 --perturb 0,0,0,-3e-9 --contacts 60 --precision do
   python3 -c "
 import json; d=json.load(open('$out'))
 assert d['stop_reason'] == 'undecided' and d['contacts']['total'] < 60, (d['stop_reason'], d['contacts'])
-assert 'precision auto raises' in d['message'], d['message']" || fail "undecided in a fixed precision"
+assert 'precision auto raises' in d['message'], d['message']
+assert d['trust']['verdict'] != 'ok' and 'cannot decide' in d['trust']['reason'], d['trust']" || fail "undecided in a fixed precision"
+fi
+# a raised run refused after a lower precision wrote events (the start past the stop in binary128
+# only) closes its json whole, undecided, with exit 2 and the reason; the note's kernel whose
+# springs are a 1:2 design's only to double's digits keeps an error estimate (the chain's)
+"$cli" simulate --masses 1,1,0.5 --springs 1,1,0.5 --contacts 3 \
+  --state 1,1.0000000000000002220446049250313080847263336181640625,1.0000000000000000000000001,0,0,0 >"$out" 2>"$err"
+[ "$?" -eq 2 ] && grep -q "past the stop" "$err" && python3 -c "
+import json; d=json.load(open('$out'))
+assert d['stop_reason'] == 'undecided' and 'refused' in d['message'] and len(d['events']) == 2, d" ||
+  fail "a raise refused after events were written: $(tail -c 300 "$out") $(cat "$err")"
+if expect_ok simulate --masses 1,0.3 --springs 1,0.096591329157701 --state 0,0,0,1 --contacts 5; then
+  python3 -c "
+import json; d=json.load(open('$out'))
+assert 'model' in d and d['trust']['verdict'] == 'ok', d['trust']" || fail "the note's kernel on a double-digit design keeps an estimate"
 fi
 # events written in long double before a raise to binary128 keep long double's error (event 1
 # here is 1.6e-12 T2 off the 50-digit reference): the estimate covers them
@@ -235,10 +250,12 @@ fi
 if expect_ok simulate --k2 1e-6 --state 0,0.999,0,0 --contacts 1 --search-steps 10; then
   python3 -c "
 import json; d=json.load(open('$out'))
-assert d['stop_reason'] == 'search-budget' and d['trust']['verdict'] != 'ok', d" \
+assert d['stop_reason'] == 'search-budget' and d['trust']['verdict'] != 'ok', d
+assert d['trust']['reason'].startswith('no contact'), d['trust']['reason']" \
     || fail "search budget"
 fi
 EXPECT_WORD=search-steps expect_invalid simulate --search-steps 0
+EXPECT_WORD="two-mass chain's detuned flight" expect_invalid simulate --masses 1,1,1 --springs 1,1,1 --state 0,0,0,0,0,1 --search-steps 5
 EXPECT_WORD="w1/w2" expect_invalid simulate --k1 0.5e-55 --k2 1 --t-end 1.62
 # springs designed for frequency ratios (issue 32): every design listed, each in the ratio by
 # the chain's own spectrum; the two-mass 1:2 request is the note's two branches; requests no

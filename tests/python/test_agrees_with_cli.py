@@ -448,6 +448,14 @@ def test_simulate_a_chain_of_n_masses(cli_json):
     two = gl.simulate(masses=[1, 0.5], springs=[1, gl.info().model.k2], state=[0.5, 0.9, 0.8, 0.6], contacts=20)
     np.testing.assert_allclose(two.events["t"], note.events["t"], rtol=1e-12)
     assert two.events.dtype.names == note.events.dtype.names  # one layout for every N
+    # one result type: the two writings of the note's chain give the same document, model included
+    assert without_timing(two) == without_timing(gl.simulate(k2=gl.info().model.k2, state=(0.5, 0.9, 0.8, 0.6),
+                                                             contacts=20))
+    # the note's kernel's step budget, however the detuned chain is written (Chain.simulate too)
+    detuned = dict(state=[0.5, 0.8, 0, 0], contacts=1, search_steps=10)
+    for budgeted in (gl.simulate(masses=[1, 0.5], springs=[1, 0.37], **detuned), gl.simulate(k2=0.37, **detuned),
+                     gl.Chain(masses=[1, 0.5], springs=[1, 0.37]).simulate(**detuned)):
+        assert budgeted.stop_reason == "search-budget" and budgeted.contacts.total == 0, budgeted.stop_reason
     with pytest.raises(ValueError, match="state u1"):
         gl.simulate(masses=[1, 1], springs=[1, 1])
     with pytest.raises(ValueError, match="not available for a chain"):

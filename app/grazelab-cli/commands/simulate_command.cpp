@@ -387,6 +387,7 @@ struct RunTrust {
     if (!notes) return trust;
     // (what the note's estimate reads of the run)
     core::BasicResult<S> result;
+    result.message = stopMessage(run.stop, std::is_same_v<S, core::Quad>);
     result.tFinal = run.tFinal;
     result.final = core::twoMassStateOf(run.final);
     result.stop = run.stop;
@@ -408,6 +409,7 @@ struct Written {
   core::EventType lastType = core::EventType::Impact;
   const char* precision = "";  ///< the precision that wrote them
   std::optional<bool> raisedAgrees;  ///< the raised run met the last of them again
+  bool differed = false;  ///< a raised run differed from the events a lower one wrote (any rung)
   double stateError = 0, timeError = 0;  ///< their error, as the precision that wrote them estimated it
 };
 
@@ -497,17 +499,42 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
   const OptionValues whole(options, chain.givenOptions(), {});
   // one rung of the ladder in S: the exit code when it ends the command, nothing to go up
   const auto rung = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
-    const Parsed<core::BasicReadyChain<S>>& prepared = chain.ready<S>();
-    if (!prepared.value) {
-      // a chain beyond this precision's reach (the note's: a ratio beyond its range, a fast phase
-      // that is rounding in it) is refused there, with the flag that helps; auto goes higher
-      if (prepared.precisionBound && !last && !written.begun) {
-        escalations.push_back(std::string("from ") + name + ": " + prepared.error.toStdString());
+    // a refusal here: one the precision causes (a chain or start beyond its reach: a ratio beyond
+    // its range, a fast phase that is rounding in it, an undecided return) goes up with auto; any
+    // other is the answer (exit 2, one line). After a lower precision wrote events (it ended
+    // undecided), a json or jsonl document is closed whole first, saying so.
+    const auto refuse = [&](const QString& why, bool precisionBound) -> std::optional<int> {
+      if (precisionBound && !last) {
+        escalations.push_back(std::string("from ") + name + ": " + why.toStdString());
         return std::nullopt;
       }
-      error = prepared.error;
+      error = why;
+      const bool lines = format == ChainFormat::JsonLines;
+      if (written.begun && !asValues && (format == ChainFormat::Json || lines)) {
+        std::vector<V> raised;
+        for (const std::string& line : escalations) raised.push_back(V::of(line));
+        const std::vector<V::Field> end{
+            {"stop_reason", V::of(std::string(core::toString(core::StopReason::Undecided)))},
+            {"message", V::of(std::string("the run ended undecided in a lower precision, and in ") + name +
+                              " it is refused: " + why.toStdString())},
+            {"precision", V::object({{"requested", V::of(precisionText.toStdString())},
+                                     {"used", V::of(written.precision)},
+                                     {"escalations", V::array(std::move(raised))}})}};
+        if (lines) {
+          std::fputs("{\"record\": \"end\", ", io.out);
+          writeFields(io.out, end, true);
+          std::fputs("}\n", io.out);
+        } else {
+          std::fputs(written.events == 0 ? "],\n" : "\n  ],\n", io.out);
+          writeFields(io.out, end, false);
+          std::fputs("\n}\n", io.out);
+        }
+        std::fflush(io.out);
+      }
       return kExitInvalidInput;
-    }
+    };
+    const Parsed<core::BasicReadyChain<S>>& prepared = chain.ready<S>();
+    if (!prepared.value) return refuse(prepared.error, prepared.precisionBound);
     const core::BasicReadyChain<S>& ready = *prepared.value;
     const core::BasicMassChain<S>& masses = ready.numbers;
     std::string description;
@@ -519,16 +546,18 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
       if (!notesOptions && (!noTwoMassStart(options, error) || !oneStartOf(options, 2, error))) return kExitInvalidInput;
       StartRefusal refusal;
       start = notesStart<S>(options, ready, refusal, description, notes);
-      if (!start && refusal.precisionBound && !last && !written.begun) {
-        escalations.push_back(std::string("from ") + name + ": " + refusal.error.toStdString());
-        return std::nullopt;
-      }
-      error = refusal.error;
+      if (!start) return refuse(refusal.error, refusal.precisionBound);
     } else {
       if (!noTwoMassStart(options, error) || !oneStartOf(options, masses.size(), error)) return kExitInvalidInput;
-      start = chainStart<S>(options, masses, error, &description);
+      if (searchSteps > 0) {
+        error = "--search-steps bounds the search of a two-mass chain's detuned flight (the note's kernel); this "
+                "chain's searches go 1000 slowest periods (give --t-end to search longer)";
+        return kExitInvalidInput;
+      }
+      QString why;
+      start = chainStart<S>(options, masses, why, &description);
+      if (!start) return refuse(why, false);
     }
-    if (!start) return kExitInvalidInput;
     const auto limit = timeLimit<S>(tEnd, error);
     if (!limit) return kExitInvalidInput;
     const ColumnNames& names = ColumnNames::of(masses.size(), masses.stopped());
@@ -575,7 +604,11 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
                                                               : std::nullopt;
         QString ignored;
         const auto upLimit = timeLimit<H>(tEnd, ignored);
-        if (upStart && upLimit) {
+        if (up.value && !up.value->notesModel) {
+          // the shadow precision reads these springs as no 1:2 design's (k2 a design's only to
+          // double's digits): the chain's own estimate, by the modal kernel one precision up
+          check->chain.emplace(shadowFor<S>(chain, *trustMode), *start, contacts, *limit, *trustMode, stop);
+        } else if (upStart && upLimit) {
           core::BasicRequest<H> request;
           request.initial = core::twoMassStateOf(upStart->state);
           request.maxContacts = contacts;
@@ -613,6 +646,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
           using std::abs;
           written.raisedAgrees = event.type == written.lastType &&
                                  abs(core::toDouble(event.t) - written.lastTime) <= 1e-9 * (1 + abs(written.lastTime));
+          if (!*written.raisedAgrees) written.differed = true;
         }
         return;
       }
@@ -664,6 +698,9 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
              << (*written.raisedAgrees ? "meets the last of them again (same type, time to 1e-9)"
                                        : "DIFFERS from the last of them: they are not to be trusted");
       }
+      if (written.differed && written.raisedAgrees != false) {
+        kept << "; an earlier raise DIFFERED from the events written before it: they are not to be trusted";
+      }
     }
     if (format == ChainFormat::Csv) {
       if (!escalations.empty()) {
@@ -692,8 +729,14 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
         }
         kept << " (their estimated error " << std::max(written.stateError, written.timeError) << ")";
       }
-      if (written.raisedAgrees == false) trust.verdict = core::Verdict::Unreliable;
+      if (written.differed) trust.verdict = core::Verdict::Unreliable;
       trust.reason = kept.str() + "; " + trust.reason;
+    }
+    if (run.stop == core::StopReason::Undecided && trust.verdict == core::Verdict::Ok) {
+      // a fixed precision that could not decide a contact: the estimate covers a run cut short
+      trust.verdict = core::Verdict::Degraded;
+      trust.reason = "the run ended at a contact this precision cannot decide (--precision auto goes higher); " +
+                     trust.reason;
     }
     if (format == ChainFormat::Summary) {
       const std::string used = std::string(name) + (precisionText == "auto" ? " (auto)" : "");

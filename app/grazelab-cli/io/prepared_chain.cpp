@@ -56,7 +56,13 @@ const Parsed<core::BasicReadyChain<S>>& PreparedMassChain::ready() const {
   std::call_once(slot.readyOnce, [&] {
     if (m_notesReader) {
       Parsed<ModelInput<S>> model = parseModel<S>(m_options);
-      if (model.value) slot.ready.value = core::readyChain(model.value->model);
+      if (model.value) {
+        // a design by its closed form; springs given (--k2) as any chain's springs are read
+        // (a 1:2 design's to rounding runs as that design), so that both writings are one chain
+        const core::BasicModel<S>& m = model.value->model;
+        slot.ready.value = m.design ? core::readyChain(m)
+                                    : core::readyChain(core::BasicMassChain<S>{{m.m1, m.m2}, {m.k1, m.k2}, S(0), 2, m.gap});
+      }
       slot.ready.error = model.error;
       slot.ready.precisionBound = model.precisionBound;
       return;
