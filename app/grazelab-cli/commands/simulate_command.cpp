@@ -425,6 +425,20 @@ void writeFields(std::FILE* out, const std::vector<V::Field>& fields, bool lines
   std::fwrite(text.data(), 1, text.size(), out);
 }
 
+// A document's end after its `events` events: the json's closing fields, or jsonl's end record
+void writeEnd(std::FILE* out, const std::vector<V::Field>& end, bool lines, long events) {
+  if (lines) {
+    std::fputs("{\"record\": \"end\", ", out);
+    writeFields(out, end, true);
+    std::fputs("}\n", out);
+  } else {
+    std::fputs(events == 0 ? "],\n" : "\n  ],\n", out);
+    writeFields(out, end, false);
+    std::fputs("\n}\n", out);
+  }
+  std::fflush(out);
+}
+
 // The run of a chain read once, its run options `options`; `notesOptions`: the chain was written
 // with the note's options (its starts then default to GLO_0.5 and take --glo)
 int runPrepared(const PreparedMassChain& chain, const OptionValues& options, const Io& io, std::stop_token stop,
@@ -520,16 +534,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
             {"precision", V::object({{"requested", V::of(precisionText.toStdString())},
                                      {"used", V::of(written.precision)},
                                      {"escalations", V::array(std::move(raised))}})}};
-        if (lines) {
-          std::fputs("{\"record\": \"end\", ", io.out);
-          writeFields(io.out, end, true);
-          std::fputs("}\n", io.out);
-        } else {
-          std::fputs(written.events == 0 ? "],\n" : "\n  ],\n", io.out);
-          writeFields(io.out, end, false);
-          std::fputs("\n}\n", io.out);
-        }
-        std::fflush(io.out);
+        writeEnd(io.out, end, lines, written.events);
       }
       return kExitInvalidInput;
     };
@@ -781,16 +786,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
       *io.document = V::object(std::move(fields));
       return 0;
     }
-    if (lines) {
-      std::fputs("{\"record\": \"end\", ", io.out);
-      writeFields(io.out, end, true);
-      std::fputs("}\n", io.out);
-    } else {
-      std::fputs(written.events == 0 ? "],\n" : "\n  ],\n", io.out);
-      writeFields(io.out, end, false);
-      std::fputs("\n}\n", io.out);
-    }
-    std::fflush(io.out);
+    writeEnd(io.out, end, lines, written.events);
     if (!stop.stop_requested()) return 0;
     error = QStringLiteral("the %1 events before it are written, and the document's end").arg(written.events);
     return kExitInterrupted;
