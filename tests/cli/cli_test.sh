@@ -131,7 +131,7 @@ import json, sys
 doc = json.load(open(sys.argv[1]))
 # one document for every chain: the chain, the note's model of it, the start, ...
 assert list(doc)[:4] == ["chain", "model", "initial", "events"], list(doc)
-for key in ("final", "stop_reason", "contacts", "energy", "accuracy", "trust", "precision"):
+for key in ("final", "stop_reason", "contacts", "energy", "accuracy", "trust", "precision", "timing"):
     assert key in doc, key
 assert doc["chain"]["masses"] == [1, 0.5] and doc["chain"]["stop_mass"] == 2, doc["chain"]
 T2 = doc["model"]["T2"]
@@ -568,8 +568,8 @@ records = [json.loads(line) for line in open('$out')]
 assert [r.pop('record') for r in records] == ['run'] + ['event'] * len(d['events']) + ['end'], records[:2]
 assert records[0] == {k: d[k] for k in ('chain', 'initial')}, records[0]
 assert records[1:-1] == d['events']
-end = {k: v for k, v in d.items() if k not in ('chain', 'initial', 'events')}
-assert records[-1] == end, (records[-1], end)" || fail "N masses streamed as jsonl"
+end = {k: v for k, v in d.items() if k not in ('chain', 'initial', 'events', 'timing')}
+assert records[-1].pop('timing')['seconds'] > 0 and records[-1] == end, (records[-1], end)" || fail "N masses streamed as jsonl"
     fi
     if expect_ok simulate $nm --format summary; then
       python3 -c "

@@ -12,8 +12,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <limits>
 #include <deque>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -47,8 +47,6 @@ using V = JsonValue;
 // every output streams the events (no bound but the run's own, or the Python module's table's);
 // an error estimate of --trust full holds its whole shadow, up to this many contacts
 constexpr long kMaxHeldContacts = 1'000'000;
-
-enum class ChainFormat { Json, JsonLines, Csv, Summary };
 
 // The names of a chain's columns, made once per document (an owned name is an allocation)
 struct ColumnNames {
@@ -167,7 +165,7 @@ std::optional<core::BasicChainStart<S>> notesStart(const OptionValues& options, 
   return core::BasicChainStart<S>{core::chainStateOf(made.start->state), {}};
 }
 
-// the most samples a json holds (as for two masses)
+// the most samples a json holds
 constexpr std::size_t kMaxChainSamples = 4'000'000;
 
 // --sample-step DT or --sample-times t1,... (json only), or nothing with `error` set
@@ -243,7 +241,7 @@ std::string csvLine(const core::BasicChainEvent<S>& event) {
   return line.append(",").append(core::formatScalar(event.vAfter)).append("\n");
 }
 
-// The summary of a run: what the json says but its events, as the two-mass summary lays it out
+// The summary of a run: what the json says but its events, a line for each
 template <typename S>
 std::string summaryText(const core::BasicReadyChain<S>& ready, const core::BasicChainStart<S>& start,
                         const core::BasicChainRun<S>& run, double seconds, const std::string& precision,
@@ -325,7 +323,7 @@ struct HeldSamples {
   bool truncated = false;
 };
 
-// the samples as columns t, u1..uN, v1..vN in double, as for two masses
+// the samples as columns t, u1..uN, v1..vN, in double
 V samplesValue(const ColumnNames& names, const HeldSamples& held) {
   const std::size_t n = names.u.size();
   std::vector<std::vector<V>> columns(2 * n + 1);
@@ -448,16 +446,16 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
     error = QStringLiteral("--format: '%1' is not json, jsonl, csv or summary").arg(formatText);
     return kExitInvalidInput;
   }
-  const ChainFormat format = formatText == "csv"       ? ChainFormat::Csv
-                             : formatText == "summary" ? ChainFormat::Summary
-                             : formatText == "jsonl"   ? ChainFormat::JsonLines
-                                                       : ChainFormat::Json;
+  const Format format = formatText == "csv"       ? Format::Csv
+                             : formatText == "summary" ? Format::Summary
+                             : formatText == "jsonl"   ? Format::JsonLines
+                                                       : Format::Json;
   const bool sampled = options.isSet("sample-step") || options.isSet("sample-times");
-  if ((format == ChainFormat::Csv || format == ChainFormat::Summary) && sampled) {
+  if ((format == Format::Csv || format == Format::Summary) && sampled) {
     error = "--sample-step and --sample-times are written in --format json and jsonl only";
     return kExitInvalidInput;
   }
-  if (format == ChainFormat::Csv && options.isSet("trust") && options.value("trust") != "off") {
+  if (format == Format::Csv && options.isSet("trust") && options.value("trust") != "off") {
     error = "--trust: --format csv writes the events alone; the error estimate is in --format summary or json";
     return kExitInvalidInput;
   }
@@ -523,8 +521,8 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
         return std::nullopt;
       }
       error = why;
-      const bool lines = format == ChainFormat::JsonLines;
-      if (written.begun && !asValues && (format == ChainFormat::Json || lines)) {
+      const bool lines = format == Format::JsonLines;
+      if (written.begun && !asValues && (format == Format::Json || lines)) {
         std::vector<V> raised;
         for (const std::string& line : escalations) raised.push_back(V::of(line));
         const std::vector<V::Field> end{
@@ -575,14 +573,14 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
       table.masses = std::size_t(masses.size());
       table.stopped = masses.stopped();
     }
-    const bool lines = format == ChainFormat::JsonLines;
-    const bool text = !asValues && (format == ChainFormat::Json || lines);
+    const bool lines = format == Format::JsonLines;
+    const bool text = !asValues && (format == Format::Json || lines);
     if (!written.begun) {
       // the head once the start is known to be good (bad input writes nothing), in the
       // precision that wrote it first (a raised run's document keeps it, as its text does)
       for (const std::string& note : notes) std::fprintf(io.messages, "grazelab-cli: note: %s\n", note.c_str());
       head = headFields(ready, description, names, start->state, precisionText);
-      if (!asValues && format == ChainFormat::Csv) {
+      if (!asValues && format == Format::Csv) {
         std::fputs(csvHeader(masses.size(), masses.stopped()).c_str(), io.out);
       } else if (text) {
         std::fputs(lines ? "{\"record\": \"run\", " : "{\n", io.out);
@@ -594,7 +592,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
     const long before = written.events;
     written.raisedAgrees.reset();
     std::optional<RunTrust<S>> check;
-    if (format != ChainFormat::Csv) {
+    if (format != Format::Csv) {
       check.emplace();
       if (!ready.notesModel) {
         check->chain.emplace(shadowFor<S>(chain, *trustMode), *start, contacts, *limit, *trustMode, stop);
@@ -644,7 +642,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
       if (check) check->observe(event);
       if (intoTable) appendRow(*io.chainEvents, event);
       if (intoTable && io.chainEvents->full) return;
-      if (asValues || format == ChainFormat::Summary) return;
+      if (asValues || format == Format::Summary) return;
       if (++seen <= written.events) {
         if (seen == written.events) {
           // the raised run at the last event the lower precision wrote: the same event?
@@ -655,7 +653,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
         }
         return;
       }
-      if (format == ChainFormat::Csv) {
+      if (format == Format::Csv) {
         std::fputs(csvLine(event).c_str(), io.out);
       } else if (lines) {
         std::string record = oneLine(eventValue(names, event));
@@ -675,7 +673,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
     std::fflush(io.out);
     const bool cancelled = run.stop == core::StopReason::Cancelled;
     if (cancelled && !text) {
-      if (format == ChainFormat::Csv) error = QStringLiteral("the %1 events before it are written").arg(written.events);
+      if (format == Format::Csv) error = QStringLiteral("the %1 events before it are written").arg(written.events);
       return kExitInterrupted;
     }
     if (!last && run.stop == core::StopReason::Undecided) {
@@ -694,7 +692,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
     // last of them again (same type, time to 1e-9)
     // (a stream, not string concatenation: GCC 12 warns falsely on that at -O2)
     std::ostringstream kept;
-    if (before > 0 && !asValues && format != ChainFormat::Summary) {
+    if (before > 0 && !asValues && format != Format::Summary) {
       if (!written.raisedAgrees) {
         kept << "the run ends before the last of the " << before
              << " events written before the raise: the events past its end are the lower precision's";
@@ -707,7 +705,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
         kept << "; an earlier raise DIFFERED from the events written before it: they are not to be trusted";
       }
     }
-    if (format == ChainFormat::Csv) {
+    if (format == Format::Csv) {
       if (!escalations.empty()) {
         std::fprintf(io.messages, "grazelab-cli: note: the run was raised to %s (undecided below it) after %ld rows; %s\n",
                      name, before,
@@ -743,7 +741,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
       trust.reason = "the run ended at a contact this precision cannot decide (--precision auto goes higher); " +
                      trust.reason;
     }
-    if (format == ChainFormat::Summary) {
+    if (format == Format::Summary) {
       const std::string used = std::string(name) + (precisionText == "auto" ? " (auto)" : "");
       std::fputs(summaryText(ready, *start, run, seconds, used, escalations, trust).c_str(), io.out);
       std::fflush(io.out);
@@ -775,6 +773,10 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
       // the start the raised run used, in its digits (the head holds the one read first)
       end.back().second.fields.emplace_back("initial_state_used", stateValue(names, S(0), start->state));
     }
+    // the run's own time, its shadow apart
+    end.emplace_back("timing", V::object({{"seconds", V::number(seconds)},
+                                          {"contacts_per_second",
+                                           V::number(seconds > 0 ? double(run.contacts) / seconds : 0.0)}}));
     if (sampled) {
       end.emplace_back("samples", samplesValue(names, held));
       end.emplace_back("samples_truncated", V::of(held.truncated));
