@@ -738,8 +738,9 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
     if (run.stop == core::StopReason::Undecided && trust.verdict == core::Verdict::Ok) {
       // a fixed precision that could not decide a contact: the estimate covers a run cut short
       trust.verdict = core::Verdict::Degraded;
-      trust.reason = "the run ended at a contact this precision cannot decide (--precision auto goes higher); " +
-                     trust.reason;
+      trust.reason = std::string("the run ended at a contact this precision cannot decide (") +
+                     (std::is_same_v<S, core::Quad> ? "binary128, the widest, cannot either" : "--precision auto goes higher") +
+                     "); " + trust.reason;
     }
     if (format == Format::Summary) {
       const std::string used = std::string(name) + (precisionText == "auto" ? " (auto)" : "");
