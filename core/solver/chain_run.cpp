@@ -251,8 +251,17 @@ template <typename S>
 void BasicChainSimulator<S>::record(EventType type, const BasicChainState<S>& at, const ChainVector<S>& vBefore,
                                     const S& when, const S& residual) {
   const int s = m_dynamics.stop;
-  if (m_sink) m_sink({when, type, at.u, vBefore, at.v[s]});
-  else m_run.events.push_back({when, type, at.u, vBefore, at.v[s]});
+  if (m_sink) {
+    // into the event reused from call to call: its vectors keep their storage (no allocation)
+    m_event.t = when;
+    m_event.type = type;
+    m_event.u = at.u;
+    m_event.vBefore = vBefore;
+    m_event.vAfter = at.v[s];
+    m_sink(m_event);
+  } else {
+    m_run.events.push_back({when, type, at.u, vBefore, at.v[s]});
+  }
   m_anyEvent = true;
   m_lastType = type;
   m_lastTime = when;

@@ -182,6 +182,7 @@ class BasicChainSimulator {
   BasicChainFlight<S> m_flight;
   BasicChainState<S> m_at;
   ChainVector<S> m_vBefore;
+  BasicChainEvent<S> m_event;  ///< what the sink is handed
   // the note's kernel (ReadyChain::notes): its chain, its scales, its stepper on that chain and
   // where it stands (scaled); unused by the modal kernel
   std::optional<TwoMassForm<S>> m_notes;
