@@ -477,21 +477,15 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
   const bool intoTable = asValues && io.chainEvents && !io.chainEvents->discard;
   long contacts = options.isSet("t-end") ? std::numeric_limits<long>::max() : 100;
   if (options.isSet("contacts")) {
-    bool ok = false;
-    contacts = options.value("contacts").toLong(&ok);
-    if (!ok || contacts < 0) {
-      error = QStringLiteral("--contacts: '%1' is not a whole number >= 0").arg(options.value("contacts"));
-      return kExitInvalidInput;
-    }
+    const auto count = countOption(options, "contacts", 0, error);
+    if (!count) return kExitInvalidInput;
+    contacts = long(*count);
   }
   std::int64_t searchSteps = 0;
   if (options.isSet("search-steps")) {
-    bool ok = false;
-    searchSteps = options.value("search-steps").toLongLong(&ok);
-    if (!ok || searchSteps < 1) {
-      error = QStringLiteral("--search-steps: '%1' is not a whole number >= 1").arg(options.value("search-steps"));
-      return kExitInvalidInput;
-    }
+    const auto steps = countOption(options, "search-steps", 1, error);
+    if (!steps) return kExitInvalidInput;
+    searchSteps = *steps;
   }
   if (*trustMode == core::TrustMode::Full && contacts > kMaxHeldContacts && !options.isSet("t-end")) {
     error = QStringLiteral("--trust full holds the shadow run's events: at most %1 contacts (auto shadows the first "

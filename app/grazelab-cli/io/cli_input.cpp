@@ -20,25 +20,6 @@ namespace {
 
 QString fromStd(const std::string& text) { return QString::fromStdString(text); }
 
-// --NAME as a whole number >= least, or the reason it is not one
-std::optional<std::int64_t> countOption(const OptionValues& options, const char* name,
-                                        std::int64_t least, QString& error) {
-  // a whole number given as a number (below 2^53: exact in double) is its count
-  if (const auto numbers = options.numbers(name);
-      numbers && numbers->size() == 1 && std::fabs(numbers->front()) < 0x1p53 &&
-      numbers->front() == std::trunc(numbers->front()) && numbers->front() >= double(least)) {
-    return static_cast<std::int64_t>(numbers->front());
-  }
-  bool ok = false;
-  const qlonglong value = options.value(name).toLongLong(&ok);
-  if (!ok || value < least) {
-    error = QStringLiteral("--%1: '%2' is not a count (a whole number >= %3)")
-                .arg(QString::fromUtf8(name), options.value(name))
-                .arg(least);
-    return std::nullopt;
-  }
-  return value;
-}
 
 // a number in precision S, or the reason it is not one ("is out of range ...")
 template <typename S>
@@ -164,6 +145,25 @@ const OptionSpec kOptions[] = {
   };
 
 }  // namespace
+
+std::optional<std::int64_t> countOption(const OptionValues& options, const char* name,
+                                        std::int64_t least, QString& error) {
+  // a whole number given as a number (below 2^53: exact in double) is its count
+  if (const auto numbers = options.numbers(name);
+      numbers && numbers->size() == 1 && std::fabs(numbers->front()) < 0x1p53 &&
+      numbers->front() == std::trunc(numbers->front()) && numbers->front() >= double(least)) {
+    return static_cast<std::int64_t>(numbers->front());
+  }
+  bool ok = false;
+  const qlonglong value = options.value(name).toLongLong(&ok);
+  if (!ok || value < least) {
+    error = QStringLiteral("--%1: '%2' is not a count (a whole number >= %3)")
+                .arg(QString::fromUtf8(name), options.value(name))
+                .arg(least);
+    return std::nullopt;
+  }
+  return value;
+}
 
 QString defaultOptionValue(std::string_view name) {
   for (const OptionSpec& option : kOptions) {

@@ -79,6 +79,11 @@ struct Parsed {
   bool precisionBound = false;
 };
 
+/// --NAME as a whole number >= least (given as a number: read as such), or nothing with the
+/// reason in `error`.
+std::optional<std::int64_t> countOption(const OptionValues& options, const char* name, std::int64_t least,
+                                        QString& error);
+
 template <typename S>
 Parsed<ModelInput<S>> parseModel(const OptionValues& options);
 /// The start options (--glo, --onepp, --state, --perturb) as a spec: GLO_0.5 when none is given.
