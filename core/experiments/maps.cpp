@@ -141,23 +141,20 @@ PointRun<S> runPoint(const BasicModel<S>& model, const BasicState<S>& start,
   request.stopAtUndecided = stopAtUndecided;
   std::optional<TrustMonitor<S>> monitor;
   if (estimateHorizon) {
-    BasicRequest<H> shadow;
-    shadow.initial = convertState<H>(start);
-    shadow.maxContacts = contacts;
     // a map's parameters are the numbers it was given (no decimal was rounded to form them)
-    monitor.emplace(convertModel<H>(model), shadow, TrustMode::Auto, stop,
-                    ExactParameters{true, true, true, true, true});
+    monitor.emplace(convertModel<H>(model), chainStateOf(convertState<H>(start)), long(contacts), H(0),
+                    TrustMode::Auto, stop, ExactParameters{true, true, true, true, true});
   }
   request.onEvent = [&run, &monitor](const BasicEvent<S>& event) {
     if (event.type == EventType::Impact && std::isnan(run.firstImpact)) {
       run.firstImpact = toDouble(event.t);
     }
-    if (monitor) monitor->observe(event);
+    if (monitor) monitor->observe(chainEventOf(event));
   };
   run.result = simulate(model, request, stop);
   if (monitor && run.result.stop != StopReason::InvalidInput &&
       run.result.stop != StopReason::Undecided) {
-    const Trust trust = monitor->finish(run.result);
+    const Trust trust = monitor->finish(chainTotalsOf(run.result));
     if (trust.verdict != Verdict::Unchecked) run.horizon = trust.horizon;
   }
   return run;

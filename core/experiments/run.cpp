@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <utility>
 
 #include "core/solver/budget.h"
@@ -27,6 +29,15 @@ class Stopwatch {
   std::chrono::steady_clock::time_point m_start;
 };
 
+// the run's bounds as its shadow takes them (no end time: 0)
+long shadowContacts(const Request& run) {
+  return long(std::min<std::int64_t>(run.maxContacts, std::numeric_limits<long>::max()));
+}
+template <typename H>
+H shadowEnd(const Request& run) {
+  return std::isfinite(run.tEnd) ? H(run.tEnd) : H(0);
+}
+
 // --precision auto's rule: the run again in S (long double, then binary128) from its start,
 // when double met a contact it cannot decide; with its own error estimate. Nothing when S
 // cannot decide either (and a higher precision is left), or on a stop.
@@ -36,14 +47,15 @@ std::optional<std::pair<Result, Trust>> runRaised(const Spec& spec, bool lastRes
   using H = ShadowScalar<S>;
   BasicRequest<S> raised = convertRequest<S>(spec.run);
   raised.stopAtUndecided = !lastResort;
-  const BasicRequest<H> shadow = convertRequest<H>(spec.run);
   // the parameters are doubles, exact as they stand
-  TrustMonitor<S> monitor(convertModel<H>(spec.model), shadow, TrustMode::Auto, stop,
+  TrustMonitor<S> monitor(convertModel<H>(spec.model), chainStateOf(convertState<H>(spec.run.initial)),
+                          shadowContacts(spec.run), shadowEnd<H>(spec.run), TrustMode::Auto, stop,
                           ExactParameters{true, true, true, true, true});
-  raised.onEvent = [&monitor](const BasicEvent<S>& event) { monitor.observe(event); };
+  raised.onEvent = [&monitor](const BasicEvent<S>& event) { monitor.observe(chainEventOf(event)); };
   const BasicResult<S> result = simulate(convertModel<S>(spec.model), raised, stop);
   if (result.stop == StopReason::Undecided || stop.stop_requested()) return std::nullopt;
-  Trust trust = monitor.finish(result);
+  Trust trust = monitor.finish(chainTotalsOf(result));
+  accountForUndecidedTouches(trust, result);
   return std::pair{toDoubleResult(result), std::move(trust)};
 }
 
@@ -232,9 +244,9 @@ Update run(const Spec& spec, std::stop_token stop, const Options& options,
            const std::function<void(const Update&)>& report) {
   if (!spec.chains.empty()) return runChains(spec, stop, options, report);
   // the error estimate: a long double shadow of the same run, in lockstep, while it is cheap
-  BasicRequest<long double> shadowRequest = convertRequest<long double>(spec.run);
-  TrustMonitor<double> monitor(convertModel<long double>(spec.model), shadowRequest,
-                               TrustMode::Auto, stop);
+  TrustMonitor<double> monitor(convertModel<long double>(spec.model),
+                               chainStateOf(convertState<long double>(spec.run.initial)), shadowContacts(spec.run),
+                               shadowEnd<long double>(spec.run), TrustMode::Auto, stop);
   // Up to this many contacts the shadow runs after the run is reported, on its events kept
   // meanwhile (~1.6 MB for 20 000); beyond, in lockstep, at no memory cost. The shadow took
   // 7/8 of a 20 000-contact run's time: a display no longer waits for it.
@@ -245,7 +257,7 @@ Update run(const Spec& spec, std::stop_token stop, const Options& options,
   primary.stopAtUndecided = true;  // then the run again in a higher precision (below)
   primary.onEvent = [&monitor, &spec, &events, trustAfter](const Event& event) {
     if (trustAfter) events.push_back(event);
-    else monitor.observe(event);
+    else monitor.observe(chainEventOf(event));
     if (spec.run.onEvent) spec.run.onEvent(event);
   };
   Simulator simulator(spec.model, primary);
@@ -294,7 +306,7 @@ Update run(const Spec& spec, std::stop_token stop, const Options& options,
     }
   }
   const bool estimate = !last.result && simulator.result().stop != StopReason::InvalidInput;
-  if (estimate && !trustAfter) last.trust = monitor.finish(simulator.result());
+  if (estimate && !trustAfter) last.trust = monitor.finish(chainTotalsOf(simulator.result()));
   if (!last.result) last.result = std::make_shared<const Result>(simulator.takeResult());
   if (estimate && trustAfter) {
     Update shown = last;
@@ -304,9 +316,9 @@ Update run(const Spec& spec, std::stop_token stop, const Options& options,
     // may wait for it)
     for (const Event& event : events) {
       if (stop.stop_requested()) break;
-      monitor.observe(event);
+      monitor.observe(chainEventOf(event));
     }
-    if (!stop.stop_requested()) last.trust = monitor.finish(*last.result);
+    if (!stop.stop_requested()) last.trust = monitor.finish(chainTotalsOf(*last.result));
   }
   if (spec.accuracy && last.result->stop != StopReason::InvalidInput && !stop.stop_requested()) {
     return sweepAccuracy(spec, std::move(last), stop, report);

@@ -185,20 +185,17 @@ const WorkPrecisionPoint* cheapestReaching(const std::vector<WorkPrecisionPoint>
 }
 
 Trust startTrust(const Task& task, std::stop_token stop) {
-  BasicRequest<long double> shadowRequest;
-  shadowRequest.initial = convertState<long double>(task.start);
-  shadowRequest.tEnd = task.tEnd;
-  shadowRequest.maxContacts = std::numeric_limits<std::int64_t>::max();
-  TrustMonitor<double> monitor(convertModel<long double>(task.model), shadowRequest,
-                               TrustMode::Full);
+  TrustMonitor<double> monitor(convertModel<long double>(task.model),
+                               chainStateOf(convertState<long double>(task.start)), std::numeric_limits<long>::max(),
+                               task.tEnd, TrustMode::Full);
   Request request;
   request.initial = task.start;
   request.tEnd = task.tEnd;
   request.maxContacts = std::numeric_limits<std::int64_t>::max();
   request.needs.events = false;
-  request.onEvent = [&monitor](const Event& event) { monitor.observe(event); };
+  request.onEvent = [&monitor](const Event& event) { monitor.observe(chainEventOf(event)); };
   const Result result = simulate(task.model, request, stop);
-  return monitor.finish(result);
+  return monitor.finish(chainTotalsOf(result));
 }
 
 Trust startTrust(const ChainTask& task, std::stop_token stop) {

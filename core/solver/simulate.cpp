@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace grazelab::core {
 namespace {
@@ -192,7 +194,34 @@ BasicResult<S> simulate(const BasicModel<S>& model, const BasicRequest<S>& reque
   return simulator.takeResult();
 }
 
+template <typename S>
+void accountForUndecidedTouches(Trust& trust, const BasicResult<S>& result) {
+  const Cost& cost = result.cost;
+  if (cost.undecidedTouches == 0) return;
+  const double hidden = std::sqrt(32 * toDouble(epsilon<S>()));
+  trust.stateError = std::max(trust.stateError, hidden);
+  trust.timeError = std::max(trust.timeError, hidden);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", hidden);
+  char time[32];
+  std::snprintf(time, sizeof time, "%.10g", cost.firstUndecidedTime);
+  std::string note = "contact " + std::to_string(cost.firstUndecidedContact) + " (t = " + time + ")";
+  if (cost.undecidedTouches > 1) {
+    note += " and " + std::to_string(cost.undecidedTouches - 1) + " more";
+  }
+  note += " touched the stop within rounding: " + std::string(toString(precisionOf<S>())) +
+          " cannot tell a graze from an impact there (error up to " + text +
+          " from there on" +
+          (std::is_same_v<S, Quad> ? std::string(")") : std::string("; --precision auto goes higher)"));
+  const double worst = std::max(trust.stateError, trust.timeError);
+  if (trust.verdict != Verdict::Unreliable) {
+    trust.verdict = worst > kHorizonTolerance ? Verdict::Unreliable : Verdict::Degraded;
+  }
+  trust.reason = note + "; " + trust.reason;
+}
+
 #define GRAZELAB_INSTANTIATE(S)                                                       \
+  template void accountForUndecidedTouches<S>(Trust&, const BasicResult<S>&);         \
   template class BasicSimulator<S>;                                                   \
   template BasicResult<S> simulate<S>(const BasicModel<S>&, const BasicRequest<S>&,   \
                                       std::stop_token);

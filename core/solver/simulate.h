@@ -11,6 +11,7 @@
 #include "core/solver/exact_stepper.h"
 #include "core/model/model.h"
 #include "core/solver/recorder.h"
+#include "core/solver/trust.h"
 
 namespace grazelab::core {
 
@@ -105,5 +106,36 @@ using Simulator = BasicSimulator<double>;
 template <typename S>
 BasicResult<S> simulate(const BasicModel<S>& model, const BasicRequest<S>& request,
                         std::stop_token stop = {});
+
+/// A two-mass run's event as the one run writes it (chain_run.h), for what reads the one run's
+/// events (the error estimate) while this run still has its own callers.
+template <typename S>
+BasicChainEvent<S> chainEventOf(const BasicEvent<S>& event) {
+  return {event.t, event.type, chainStateOf(event.after).u, chainStateOf(event.before).v, event.after.v2};
+}
+
+/// A two-mass run's totals (stop, end, final state, counts) as the one run's; no events.
+template <typename S>
+BasicChainRun<S> chainTotalsOf(const BasicResult<S>& result) {
+  BasicChainRun<S> run;
+  run.contacts = long(result.cost.contacts);
+  run.impacts = long(result.cost.impacts);
+  run.grazings = long(result.cost.grazings);
+  run.sticks = long(result.cost.sticks);
+  run.final = chainStateOf(result.final);
+  run.tFinal = result.tFinal;
+  // the one run's name for a search that decided nothing within its bounds
+  run.stop = result.stop == StopReason::SearchLimit ? StopReason::SearchBudget : result.stop;
+  return run;
+}
+
+/// Contacts that touched the stop within rounding (Cost::undecidedTouches) in the precision of
+/// the result: whether they graze or impact is not known, so the verdict is at best degraded,
+/// the reason names the first, and the error estimate is at least the size a crossing hidden
+/// in rounding could have (an impact speed of about sqrt(32 eps) of the velocity scale, and
+/// the same share of T2 in time). Applied after TrustMonitor::finish by the callers whose runs
+/// go on through such contacts (the one run stops at them instead).
+template <typename S>
+void accountForUndecidedTouches(Trust& trust, const BasicResult<S>& result);
 
 }  // namespace grazelab::core

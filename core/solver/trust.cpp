@@ -63,20 +63,22 @@ std::string_view toString(Verdict verdict) {
 }
 
 template <typename S>
-TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicRequest<H>& request,
-                              TrustMode mode, std::stop_token stop, ExactParameters exact)
+TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicChainState<H>& start, long maxContacts,
+                              std::type_identity_t<H> tEnd, TrustMode mode, std::stop_token stop,
+                              ExactParameters exact, std::int64_t searchSteps)
     : m_mode(mode), m_stop(std::move(stop)) {
   if (mode == TrustMode::Off) {
     m_active = false;
     return;
   }
   BasicModel<H> shadowModel = model;
-  BasicRequest<H> shadowRequest = request;
+  BasicState<H> x = twoMassStateOf(start);
+  H shadowEnd = tEnd;
   if constexpr (std::is_same_v<S, double>) {
     m_inputModel = model;
-    m_inputRequest = request;
-    m_inputRequest->needs = {};
-    m_inputRequest->onEvent = {};
+    m_inputStart = start;
+    m_maxContacts = maxContacts;
+    m_tEnd = tEnd;
   }
   if constexpr (std::is_same_v<S, H>) {
     // no wider type: the same precision on a chain 3 times as large, 5 times as heavy and
@@ -91,7 +93,6 @@ TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicRequest<H>&
     shadowModel.m2 *= 5;
     shadowModel.k1 *= 15;  // k / m, and w^2, 3 times larger: times by 1 / sqrt(3)
     shadowModel.k2 *= 15;
-    BasicState<H>& x = shadowRequest.initial;
     x = {x.u1 * m_lengthFactor, x.u2 * m_lengthFactor, x.v1 * speedFactor, x.v2 * speedFactor};
     // the shadow read the same decimal input in the same precision, so it shares its rounding;
     // a nudge of one rounding (never across the stop, never changing a sign) puts the input's
@@ -117,23 +118,33 @@ TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicRequest<H>&
     x.u2 = onStop ? shadowModel.gap : H(x.u2 - abs(x.u2) * stateEps);
     x.v1 -= x.v1 * stateEps;
     x.v2 += x.v2 * stateEps;
-    shadowRequest.tEnd = shadowRequest.tEnd / m_timeFactor;
+    shadowEnd = tEnd / m_timeFactor;
   }
-  shadowRequest.needs = Needs{};
-  shadowRequest.needs.events = false;
-  shadowRequest.onEvent = [this](const BasicEvent<H>& event) { m_pending.push_back(event); };
-  m_shadow = std::make_unique<BasicSimulator<H>>(shadowModel, shadowRequest);
-  if (!m_shadow->chain()) {
-    m_stopNote = "the shadow run could not start (" + m_shadow->result().message + ")";
-    m_shadow.reset();
+  std::vector<Problem> problems = validate(shadowModel);
+  for (Problem& problem : validateState(shadowModel, x, "initial")) problems.push_back(std::move(problem));
+  if (problems.empty()) {
+    TwoMassFormOrProblem<H> formed = makeTwoMassForm(shadowModel);
+    if (!formed.chain) problems.push_back({"model", formed.problem});
+  }
+  if (!problems.empty()) {
+    m_stopNote = "the shadow run could not start (" + describe(problems) + ")";
     m_active = false;
     return;
   }
-  m_omega = m_shadow->chain()->omegaSlow * m_timeFactor;  // in the primary's time
+  const BasicReadyChain<H> ready = readyChain(shadowModel);
+  m_shadowForm = ready.notes;
+  // each shadow event, as the two masses' states before and after it (held until compared)
+  const ChainEventSink<H> sink = [this](const BasicChainEvent<H>& event) {
+    const BasicState<H> after{event.u[0], event.u[1], event.vBefore[0], event.vAfter};
+    m_pending.push_back({event.t, event.type, {after.u1, after.u2, after.v1, event.vBefore[1]}, after});
+  };
+  m_shadow = std::make_unique<BasicChainSimulator<H>>(ready, chainStateOf(x), maxContacts, shadowEnd, sink,
+                                                      ChainSampling<H>{}, searchSteps);
+  m_omega = m_shadowForm->omegaSlow * m_timeFactor;  // in the primary's time
   m_period = twoPi<H>() / m_omega;
   using std::abs;
   m_scale[1] = abs(model.gap);
-  widenScales(request.initial);
+  widenScales(twoMassStateOf(start));
 }
 
 template <typename S>
@@ -220,7 +231,7 @@ void TrustMonitor<S>::compare(const H& t, double stateError, double timeError) {
 }
 
 template <typename S>
-void TrustMonitor<S>::observe(const BasicEvent<S>& event) {
+void TrustMonitor<S>::observe(const BasicChainEvent<S>& event) {
   ++m_observed;
   if (!shadowing()) return;
   if (m_observed % 64 == 0 && !withinBudget()) {
@@ -249,8 +260,8 @@ void TrustMonitor<S>::observe(const BasicEvent<S>& event) {
     m_active = false;
     return;
   }
-  const BasicState<H> before = convertState<H>(event.before);
-  const BasicState<H> after = convertState<H>(event.after);
+  const BasicState<H> after{H(event.u[0]), H(event.u[1]), H(event.vBefore[0]), H(event.vAfter)};
+  const BasicState<H> before{after.u1, after.u2, after.v1, H(event.vBefore[1])};
   widenScales(shadow->before);
   widenScales(shadow->after);
   using std::abs;
@@ -261,10 +272,10 @@ void TrustMonitor<S>::observe(const BasicEvent<S>& event) {
 }
 
 template <typename S>
-double TrustMonitor<S>::phaseRounding(const BasicResult<S>& primary) const {
+double TrustMonitor<S>::phaseRounding(const BasicChainRun<S>& primary) const {
   using std::abs;
-  const TwoMassForm<H>& chain = *m_shadow->chain();
-  const BasicState<H> x = convertState<H>(primary.final);
+  const TwoMassForm<H>& chain = *m_shadowForm;
+  const BasicState<H> x = convertState<H>(twoMassStateOf(primary.final));
   const H dt = H(epsilon<S>()) * (abs(H(primary.tFinal)) + m_period);
   const H w2 = m_omega * m_omega;
   const H stretch = x.u1 - x.u2;
@@ -275,16 +286,18 @@ double TrustMonitor<S>::phaseRounding(const BasicResult<S>& primary) const {
 }
 
 template <typename S>
-void TrustMonitor<S>::arbitrate(const BasicResult<S>& primary, Trust& trust) {
+void TrustMonitor<S>::arbitrate(const BasicChainRun<S>& primary, Trust& trust) {
   // binary128 costs about 20 times a double run: up to 2e4 contacts, a second at most
   constexpr std::int64_t kArbiterContacts = 20000;
-  if (!m_inputModel || !m_inputRequest || primary.cost.contacts > kArbiterContacts) return;
+  if (!m_inputModel || primary.contacts > kArbiterContacts) return;
   if (m_stop.stop_requested()) return;
-  BasicRequest<Quad> request = convertRequest<Quad>(*m_inputRequest);
-  const BasicResult<Quad> exact = simulate(convertModel<Quad>(*m_inputModel), request, m_stop);
-  if (exact.stop != primary.stop || exact.cost.contacts != primary.cost.contacts) return;  // confirmed
+  const BasicChainState<Quad> start{m_inputStart.u.template cast<Quad>(), m_inputStart.v.template cast<Quad>()};
+  const BasicChainRun<Quad> exact =
+      runChain(readyChain(convertModel<Quad>(*m_inputModel)), start, m_maxContacts, Quad(m_tEnd), m_stop);
+  if (exact.stop != primary.stop || exact.contacts != primary.contacts) return;  // confirmed
   using std::abs;
-  const double stateError = relativeStateError(convertState<H>(primary.final), convertState<H>(exact.final));
+  const double stateError = relativeStateError(convertState<H>(twoMassStateOf(primary.final)),
+                                               convertState<H>(twoMassStateOf(exact.final)));
   const double timeError = toDouble(Quad(abs(Quad(primary.tFinal) - exact.tFinal) / Quad(m_period)));
   const double worst = std::max(stateError, timeError);
   if (!(worst <= kHorizonTolerance)) return;  // the run itself left the path: the alarm holds
@@ -301,44 +314,19 @@ void TrustMonitor<S>::arbitrate(const BasicResult<S>& primary, Trust& trust) {
 }
 
 template <typename S>
-Trust TrustMonitor<S>::finish(const BasicResult<S>& primary) {
+Trust TrustMonitor<S>::finish(const BasicChainRun<S>& primary) {
   Trust trust = estimate(primary);
   if (trust.verdict == Verdict::Unreliable) arbitrate(primary, trust);
-  accountForUndecidedTouches(trust, primary);
   if (primary.stop == StopReason::SearchBudget) {
     // the run stopped undecided: whatever came before holds, what follows is not known
     if (trust.verdict != Verdict::Unreliable) trust.verdict = Verdict::Degraded;
-    trust.reason = primary.message + "; " + trust.reason;
+    trust.reason = "no contact was decided within the search's budget; " + trust.reason;
   }
   return trust;
 }
 
 template <typename S>
-void accountForUndecidedTouches(Trust& trust, const BasicResult<S>& result) {
-  const Cost& cost = result.cost;
-  if (cost.undecidedTouches == 0) return;
-  const double hidden = std::sqrt(32 * toDouble(epsilon<S>()));
-  trust.stateError = std::max(trust.stateError, hidden);
-  trust.timeError = std::max(trust.timeError, hidden);
-  char time[32];
-  std::snprintf(time, sizeof time, "%.10g", cost.firstUndecidedTime);
-  std::string note = "contact " + std::to_string(cost.firstUndecidedContact) + " (t = " + time + ")";
-  if (cost.undecidedTouches > 1) {
-    note += " and " + std::to_string(cost.undecidedTouches - 1) + " more";
-  }
-  note += " touched the stop within rounding: " + std::string(toString(precisionOf<S>())) +
-          " cannot tell a graze from an impact there (error up to " + scientific(hidden) +
-          " from there on" +
-          (std::is_same_v<S, Quad> ? std::string(")") : std::string("; --precision auto goes higher)"));
-  const double worst = std::max(trust.stateError, trust.timeError);
-  if (trust.verdict != Verdict::Unreliable) {
-    trust.verdict = worst > kHorizonTolerance ? Verdict::Unreliable : Verdict::Degraded;
-  }
-  trust.reason = note + "; " + trust.reason;
-}
-
-template <typename S>
-Trust TrustMonitor<S>::estimate(const BasicResult<S>& primary) {
+Trust TrustMonitor<S>::estimate(const BasicChainRun<S>& primary) {
   Trust trust;
   trust.shadowEvents = m_observed;
   if (m_mode == TrustMode::Off) {
@@ -359,7 +347,7 @@ Trust TrustMonitor<S>::estimate(const BasicResult<S>& primary) {
     // the shadow ends its own run (at most the rest of its last flight), then the final states
     // are compared
     while (!m_shadow->done()) m_shadow->advance(1, m_stop);
-    const BasicResult<H>& shadow = m_shadow->result();
+    const BasicChainRun<H>& shadow = m_shadow->run();
     if (shadow.stop == StopReason::Cancelled) {
       m_stopNote = "the shadow was interrupted";
     } else if (!m_pending.empty()) {
@@ -369,9 +357,10 @@ Trust TrustMonitor<S>::estimate(const BasicResult<S>& primary) {
       m_failure = "the shadow run stopped with " + std::string(toString(shadow.stop)) +
                   ", the run with " + std::string(toString(primary.stop));
     } else {
-      const BasicState<H> final = convertState<H>(primary.final);
-      widenScales(scaled(shadow.final, m_lengthFactor, m_timeFactor));
-      const double stateError = relativeStateError(final, scaled(shadow.final, m_lengthFactor, m_timeFactor));
+      const BasicState<H> final = convertState<H>(twoMassStateOf(primary.final));
+      const BasicState<H> shadowFinal = scaled(twoMassStateOf(shadow.final), m_lengthFactor, m_timeFactor);
+      widenScales(shadowFinal);
+      const double stateError = relativeStateError(final, shadowFinal);
       using std::abs;
       const double timeError =
           toDouble(H(abs(H(primary.tFinal) - shadow.tFinal * m_timeFactor) / m_period));
@@ -480,9 +469,6 @@ Trust TrustMonitor<S>::estimate(const BasicResult<S>& primary) {
   return trust;
 }
 
-template void accountForUndecidedTouches<double>(Trust&, const BasicResult<double>&);
-template void accountForUndecidedTouches<long double>(Trust&, const BasicResult<long double>&);
-template void accountForUndecidedTouches<Quad>(Trust&, const BasicResult<Quad>&);
 template class TrustMonitor<double>;
 template class TrustMonitor<long double>;
 template class TrustMonitor<Quad>;

@@ -6,11 +6,14 @@
 #include <deque>
 #include <memory>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
-#include "core/solver/simulate.h"
+#include "core/model/model.h"
+#include "core/solver/chain_run.h"
 
 namespace grazelab::core {
 
@@ -74,27 +77,30 @@ struct ExactParameters {
   bool m1 = false, m2 = false, k1 = false, k2 = false, gap = false;
 };
 
-/// Estimates the error of a run of precision S by running the same algorithm beside it on a
-/// shadow (ShadowOf), in lockstep event by event, so that it costs no memory however long the
-/// run. Feed it every event of the run (observe), then finish with the run's result.
-/// Holds its own shadow simulator: neither copied nor moved.
+/// Estimates the error of a run of the note's chain (its kernel: runChain on readyChain(model))
+/// in precision S by running the same algorithm beside it on a shadow (ShadowOf), in lockstep
+/// event by event, so that it costs no memory however long the run. Feed it every event of the
+/// run (observe), then finish with the run.
+/// Holds its own shadow run: neither copied nor moved.
 template <typename S>
 class TrustMonitor {
  public:
   using H = ShadowScalar<S>;
 
-  /// `model` and `request` describe the same run as the primary's, read in precision H from the
-  /// same input (so that the input's own rounding counts as error). Needs and onEvent of the
-  /// request are replaced. The shadow watches `stop` as the run does (an interrupt ends both).
-  TrustMonitor(const BasicModel<H>& model, const BasicRequest<H>& request, TrustMode mode,
-               std::stop_token stop = {}, ExactParameters exact = {});
+  /// `model` and `start` are the run's chain and start read in precision H from the same input
+  /// (so that the input's own rounding counts as error); `maxContacts`, `tEnd` (0: none) and
+  /// `searchSteps` are the run's (runChain's). The shadow watches `stop` as the run does (an
+  /// interrupt ends both).
+  TrustMonitor(const BasicModel<H>& model, const BasicChainState<H>& start, long maxContacts,
+               std::type_identity_t<H> tEnd, TrustMode mode, std::stop_token stop = {},
+               ExactParameters exact = {}, std::int64_t searchSteps = 0);
   TrustMonitor(const TrustMonitor&) = delete;
   TrustMonitor& operator=(const TrustMonitor&) = delete;
 
   /// The next event of the primary run.
-  void observe(const BasicEvent<S>& event);
+  void observe(const BasicChainEvent<S>& event);
   /// The estimate, once the primary run ended (or was interrupted).
-  Trust finish(const BasicResult<S>& primary);
+  Trust finish(const BasicChainRun<S>& primary);
 
  private:
   struct GrowthPoint {
@@ -102,11 +108,11 @@ class TrustMonitor {
     double error = 0;
   };
 
-  Trust estimate(const BasicResult<S>& primary);
+  Trust estimate(const BasicChainRun<S>& primary);
   /// A double run judged unreliable by its long double shadow: a binary128 run of the same input
   /// decides whether the run or its shadow left the path (a shadow's own rounding can take it
   /// through a near-tangent contact another way, a false alarm); short runs only.
-  void arbitrate(const BasicResult<S>& primary, Trust& trust);
+  void arbitrate(const BasicChainRun<S>& primary, Trust& trust);
   bool shadowing() const { return m_shadow != nullptr && m_active; }
   bool withinBudget();
   std::optional<BasicEvent<H>> nextShadowEvent();
@@ -114,16 +120,20 @@ class TrustMonitor {
   double relativeStateError(const BasicState<H>& primary, const BasicState<H>& shadow) const;
   void compare(const H& t, double stateError, double timeError);
   /// The state error of a phase off by eps times the run's length (relative to the scales).
-  double phaseRounding(const BasicResult<S>& primary) const;
+  double phaseRounding(const BasicChainRun<S>& primary) const;
   std::string shadowName() const;
 
   TrustMode m_mode;
   std::stop_token m_stop;
   H m_lengthFactor = 1;  ///< the shadow's lengths are this many times the primary's
   H m_timeFactor = 1;    ///< the shadow's times are the primary's divided by this
-  std::unique_ptr<BasicSimulator<H>> m_shadow;
-  std::optional<BasicModel<H>> m_inputModel;      ///< the input as the shadow read it (unscaled)
-  std::optional<BasicRequest<H>> m_inputRequest;  ///< for a binary128 arbiter
+  std::unique_ptr<BasicChainSimulator<H>> m_shadow;
+  std::optional<TwoMassForm<H>> m_shadowForm;  ///< the shadow's chain, as its kernel runs it
+  /// the input as the shadow read it (unscaled), for a binary128 arbiter
+  std::optional<BasicModel<H>> m_inputModel;
+  BasicChainState<H> m_inputStart;
+  long m_maxContacts = 0;
+  H m_tEnd = 0;
   std::deque<BasicEvent<H>> m_pending;  ///< shadow events not yet matched (at most a few)
   bool m_active = true;
   std::string m_stopNote;  ///< why the shadow stopped early, if it did
@@ -141,13 +151,5 @@ class TrustMonitor {
   bool m_crossed = false;
   std::vector<GrowthPoint> m_growth;  ///< the envelope at geometrically spaced times
 };
-
-/// Contacts that touched the stop within rounding (Cost::undecidedTouches) in the precision of
-/// the result: whether they graze or impact is not known, so the verdict is at best degraded,
-/// the reason names the first, and the error estimate is at least the size a crossing hidden
-/// in rounding could have (an impact speed of about sqrt(32 eps) of the velocity scale, and
-/// the same share of T2 in time). Applied by TrustMonitor::finish, and by callers without one.
-template <typename S>
-void accountForUndecidedTouches(Trust& trust, const BasicResult<S>& result);
 
 }  // namespace grazelab::core

@@ -370,30 +370,14 @@ struct RunTrust {
 
   void observe(const core::BasicChainEvent<S>& event) {
     if (chain) chain->observe(event);
-    if (!notes) return;
-    core::BasicEvent<S> two;
-    two.t = event.t;
-    two.type = event.type;
-    two.before = core::BasicState<S>{event.u[0], event.u[1], event.vBefore[0], event.vBefore[1]};
-    two.after = core::BasicState<S>{event.u[0], event.u[1], event.vBefore[0], event.vAfter};
-    notes->observe(two);
+    if (notes) notes->observe(event);
   }
   core::Trust finish(const core::BasicChainRun<S>& run) {
     if (chain) return chain->finish(run);
+    if (notes) return notes->finish(run);
     core::Trust trust;
     trust.reason = unavailable.empty() ? "not estimated (--trust off)" : unavailable;
-    if (!notes) return trust;
-    // (what the note's estimate reads of the run)
-    core::BasicResult<S> result;
-    result.message = stopMessage(run.stop, std::is_same_v<S, core::Quad>);
-    result.tFinal = run.tFinal;
-    result.final = core::twoMassStateOf(run.final);
-    result.stop = run.stop;
-    result.cost.contacts = run.contacts;
-    result.cost.impacts = run.impacts;
-    result.cost.grazings = run.grazings;
-    result.cost.sticks = run.sticks;
-    return notes->finish(result);
+    return trust;
   }
 };
 
@@ -606,13 +590,8 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
           // double's digits): the chain's own estimate, by the modal kernel one precision up
           check->chain.emplace(shadowFor<S>(chain, *trustMode), *start, contacts, *limit, *trustMode, stop);
         } else if (upStart && upLimit) {
-          core::BasicRequest<H> request;
-          request.initial = core::twoMassStateOf(upStart->state);
-          request.maxContacts = contacts;
-          if (*upLimit > 0) request.tEnd = *upLimit;
-          if (searchSteps > 0) request.flightSearchSteps = searchSteps;
-          check->notes.emplace(*up.value->notesModel, request, *trustMode, stop,
-                               exactParameters<H>(whole));
+          check->notes.emplace(*up.value->notesModel, upStart->state, contacts, *upLimit, *trustMode, stop,
+                               exactParameters<H>(whole), searchSteps);
         } else {
           check->unavailable = "no shadow run: " + (up.value ? refusal.error : up.error).toStdString();
         }

@@ -8,6 +8,7 @@
 
 #include "core/model/linear_modes.h"
 #include "core/orbits/special_orbits.h"
+#include "core/solver/simulate.h"
 #include "core/solver/trust.h"
 #include "support/cases.h"
 
@@ -16,21 +17,16 @@ namespace {
 
 struct Checked {
   Trust trust;
-  Result run;
+  ChainRun run;
 };
 
-Checked runWithTrust(const Model& model, const State& start, std::int64_t contacts,
-                     TrustMode mode) {
-  BasicRequest<long double> shadow;
-  shadow.initial = convertState<long double>(start);
-  shadow.maxContacts = contacts;
-  TrustMonitor<double> monitor(convertModel<long double>(model), shadow, mode);
-  Request request;
-  request.initial = start;
-  request.maxContacts = contacts;
-  request.onEvent = [&monitor](const Event& event) { monitor.observe(event); };
+// the one run of the note's chain with its estimate, made event by event
+Checked runWithTrust(const Model& model, const State& start, long contacts, TrustMode mode) {
+  TrustMonitor<double> monitor(convertModel<long double>(model), chainStateOf(convertState<long double>(start)),
+                               contacts, 0, mode);
   Checked checked;
-  checked.run = simulate(model, request);
+  checked.run = runChain(readyChain(model), chainStateOf(start), contacts, 0, {},
+                         [&monitor](const ChainEvent& event) { monitor.observe(event); });
   checked.trust = monitor.finish(checked.run);
   return checked;
 }
@@ -142,21 +138,14 @@ TEST(Trust, AnInterruptStopsTheShadowAndTheEstimateSaysSo) {
   const Model model = testing::resonantChain(0.5);
   const State start = testing::nearGrazingStart(model, 0.5, 0.05);
   std::stop_source source;
-  BasicRequest<long double> shadow;
-  shadow.initial = convertState<long double>(start);
-  shadow.maxContacts = 1000;
-  TrustMonitor<double> monitor(convertModel<long double>(model), shadow, TrustMode::Full,
-                               source.get_token());
-  Request request;
-  request.initial = start;
-  request.maxContacts = 1000;
-  std::int64_t seen = 0;
-  request.onEvent = [&](const Event& event) {
+  TrustMonitor<double> monitor(convertModel<long double>(model), chainStateOf(convertState<long double>(start)), 1000, 0,
+                               TrustMode::Full, source.get_token());
+  long seen = 0;
+  const ChainRun run = runChain(readyChain(model), chainStateOf(start), 1000, 0, {}, [&](const ChainEvent& event) {
     if (++seen == 10) source.request_stop();
     monitor.observe(event);
-  };
-  const Result run = simulate(model, request);
-  ASSERT_EQ(run.cost.contacts, 1000);  // the run itself did not watch this token
+  });
+  ASSERT_EQ(run.contacts, 1000);  // the run itself did not watch this token
   const Trust trust = monitor.finish(run);
   EXPECT_NE(trust.verdict, Verdict::Unreliable) << trust.reason;
   EXPECT_NE(trust.reason.find("interrupted at event 10"), std::string::npos) << trust.reason;
