@@ -15,7 +15,6 @@ namespace grazelab::core {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr std::int64_t kMaxAxisCount = std::int64_t(1) << 24;
 
 PointSummary noRun() {
@@ -24,66 +23,6 @@ PointSummary noRun() {
   point.firstImpactTime = point.horizon = kNaN;
   point.impacts = point.grazings = point.sticks = -1;
   return point;
-}
-
-// The summary of the run in S; false when it ended undecided and `raise` allows a higher
-// precision to decide it
-template <typename S>
-bool summarize(const ChainMapSpec& spec, const ChainState& start, double period, bool raise, std::stop_token stop,
-               PointSummary& point) {
-  const int s = spec.chain.stopped() - 1;
-  point = PointSummary{};
-  point.valid = true;
-  point.horizon = kNaN;
-  point.firstImpactTime = kNaN;
-  point.fftFirst = kNaN;
-  double sum = 0, low = kInfinity, high = -kInfinity;
-  long flights = 0;
-  // a flight from the stop: from an impact, a grazing or a release (or a start on the stop
-  // leaving it) to the next contact
-  bool fromStop = start.u[s] == spec.chain.gap && start.v[s] <= 0;
-  double leftAt = 0;
-  const BasicChainState<S> first{start.u.cast<S>(), start.v.cast<S>()};
-  // the map's chain is in double (a parameter axis moves it by double steps): a point raised
-  // to a higher precision runs that same chain there
-  const BasicMassChain<S> chain = chainCast<S>(spec.chain);
-  std::optional<ChainTrustCheck<S>> check;
-  if (spec.estimateHorizon) check.emplace(chain, first, long(spec.contacts), S(0), TrustMode::Auto, stop);
-  const ChainEventSink<S> sink = [&](const BasicChainEvent<S>& event) {
-    if (check) check->observe(event);
-    const double t = toDouble(event.t);
-    if (event.type == EventType::Impact && std::isnan(point.firstImpactTime)) point.firstImpactTime = t;
-    if (isContact(event.type) && fromStop && t > leftAt) {
-      const double length = t - leftAt;
-      if (std::isnan(point.fftFirst)) point.fftFirst = length;
-      sum += length / period;
-      low = std::min(low, length / period);
-      high = std::max(high, length / period);
-      ++flights;
-    }
-    fromStop = event.type != EventType::Stick;
-    leftAt = t;
-  };
-  const BasicChainRun<S> run = runChain(chain, first, long(spec.contacts), S(0), stop, sink);
-  if (run.stop == StopReason::Undecided) {
-    if (raise) return false;
-    // undecided in binary128 too: the map cannot say what the run does (no partial counts)
-    point = noRun();
-    return true;
-  }
-  // a flight from the stop that never ends: the resonant chain's flight stays below forever
-  if (run.stop == StopReason::NoFurtherContact && fromStop && std::isnan(point.fftFirst)) point.fftFirst = kInfinity;
-  point.impacts = run.impacts;
-  point.grazings = run.grazings;
-  point.sticks = run.sticks;
-  point.fftMin = flights > 0 ? low : kNaN;
-  point.fftMax = flights > 0 ? high : kNaN;
-  point.fftMean = flights > 0 ? sum / double(flights) : kNaN;
-  if (check && run.stop != StopReason::Cancelled) {
-    const Trust trust = check->finish(run);
-    if (trust.verdict != Verdict::Unchecked) point.horizon = trust.horizon;
-  }
-  return true;
 }
 
 }  // namespace
@@ -147,6 +86,7 @@ std::string checkChainMap(const ChainMapSpec& spec) {
 
 PointSummary chainMapPoint(const ChainMapSpec& spec, std::int64_t column, std::int64_t row, std::stop_token stop) {
   ChainState start = spec.start;
+  std::vector<bool> stillModes;  // a GLO start left unpushed: its modes of weight 0 exactly still
   if (spec.x.weight()) {
     std::vector<double> weights = spec.weights.empty() ? std::vector<double>(std::size_t(spec.chain.size()), 0.0)
                                                        : spec.weights;
@@ -159,6 +99,7 @@ PointSummary chainMapPoint(const ChainMapSpec& spec, std::int64_t column, std::i
     const ChainGloStart glo = chainGloStart(spec.chain, weights);
     if (glo.problem != GloStartProblem::None) return noRun();
     start = {glo.state.u + spec.push.u, glo.state.v + spec.push.v};
+    if (spec.push.u.isZero(0) && spec.push.v.isZero(0)) stillModes = glo.stillModes;
   } else {
     for (const auto& [axis, value] : {std::pair{&spec.x, spec.x.range.at(column)}, std::pair{&spec.y, spec.y.range.at(row)}}) {
       (axis->kind == ChainMapAxis::Kind::Velocity ? start.v : start.u)[axis->index - 1] = value;
@@ -167,10 +108,17 @@ PointSummary chainMapPoint(const ChainMapSpec& spec, std::int64_t column, std::i
   const int s = spec.chain.stopped() - 1;
   if (!(start.u[s] <= spec.chain.gap)) return noRun();
   const double period = chainMapPeriod(spec.chain);
+  // the map's chain is in double (a parameter axis moves it by double steps): a point raised to a
+  // higher precision runs that same chain there
   PointSummary point;
-  if (summarize<double>(spec, start, period, true, stop, point)) return point;
-  if (summarize<long double>(spec, start, period, true, stop, point)) return point;
-  summarize<Quad>(spec, start, period, false, stop, point);
+  const auto summarized = [&](auto zero, bool raise) {
+    using S = decltype(zero);
+    const BasicChainState<S> first{start.u.cast<S>(), start.v.cast<S>()};
+    return summarizeRun(readyChain(chainCast<S>(spec.chain)), BasicChainStart<S>(first, stillModes), spec.contacts,
+                        period, spec.estimateHorizon, raise, stop, point);
+  };
+  if (summarized(0.0, true) || summarized(0.0L, true)) return point;
+  summarized(Quad(0), false);
   return point;
 }
 

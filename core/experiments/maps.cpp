@@ -9,13 +9,15 @@
 
 #include "core/model/two_mass_form.h"
 #include "core/orbits/special_orbits.h"
-#include "core/solver/simulate.h"
+#include "core/solver/chain_run.h"
+#include "core/solver/chain_trust.h"
 #include "core/solver/trust.h"
 
 namespace grazelab::core {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr std::int64_t kMaxAxisCount = std::int64_t(1) << 24;
 // points handed to a thread at a time: small enough to balance cheap and costly regions of a map
 constexpr std::int64_t kPiece = 64;
@@ -117,49 +119,6 @@ std::optional<BasicState<S>> pointStart(const MapSpec& spec, const TwoMassForm<S
   return state;
 }
 
-template <typename S>
-struct PointRun {
-  BasicResult<S> result;
-  double firstImpact = kNaN;
-  double horizon = kNaN;
-};
-
-// one run of `contacts` contacts keeping only its flights from the stop, with the time of its
-// first impact and, when asked, its predictability horizon (a shadow run one precision up);
-// with `stopAtUndecided` it stops at a contact its precision cannot decide (StopReason::Undecided)
-template <typename S>
-PointRun<S> runPoint(const BasicModel<S>& model, const BasicState<S>& start,
-                     std::int64_t contacts, bool estimateHorizon, bool stopAtUndecided,
-                     std::stop_token stop) {
-  using H = ShadowScalar<S>;
-  PointRun<S> run;
-  BasicRequest<S> request;
-  request.initial = start;
-  request.maxContacts = contacts;
-  request.needs.events = false;
-  request.needs.freeFlights = true;
-  request.stopAtUndecided = stopAtUndecided;
-  std::optional<TrustMonitor<S>> monitor;
-  if (estimateHorizon) {
-    // a map's parameters are the numbers it was given (no decimal was rounded to form them)
-    monitor.emplace(convertModel<H>(model), chainStateOf(convertState<H>(start)), long(contacts), H(0),
-                    TrustMode::Auto, stop, ExactParameters{true, true, true, true, true});
-  }
-  request.onEvent = [&run, &monitor](const BasicEvent<S>& event) {
-    if (event.type == EventType::Impact && std::isnan(run.firstImpact)) {
-      run.firstImpact = toDouble(event.t);
-    }
-    if (monitor) monitor->observe(chainEventOf(event));
-  };
-  run.result = simulate(model, request, stop);
-  if (monitor && run.result.stop != StopReason::InvalidInput &&
-      run.result.stop != StopReason::Undecided) {
-    const Trust trust = monitor->finish(chainTotalsOf(run.result));
-    if (trust.verdict != Verdict::Unchecked) run.horizon = trust.horizon;
-  }
-  return run;
-}
-
 // T2 of the model as given (NaN when it cannot be formed)
 double basePeriod(const Model& given) {
   if (!validate(given).empty()) return kNaN;
@@ -173,42 +132,33 @@ PointSummary invalidPoint() {
   return {kNaN, kNaN, kNaN, kNaN, -1, -1, -1, kNaN, kNaN, false};
 }
 
-// the run's flights from the stop reduced to first, min, max, mean (min/max/mean over T2)
+// The start as the one run takes it: a pure mode's data (GLO_0 or GLO_1, a GLOM) left where it is
+// names its other mode still, so that its grazings are decided exactly (the modal kernel keeps
+// that mode at 0; the rounded state holds 1e-17 of it, a touch no precision can decide)
 template <typename S>
-void summarizeFlights(const BasicResult<S>& result, double period, bool startsOnStop,
-                      PointSummary& summary) {
-  const auto& flights = result.freeFlights;
-  if (flights.empty()) {
-    summary.fftFirst = summary.fftMin = summary.fftMax = summary.fftMean = kNaN;
-    // a resonant flight from the stop that never returns: its FFT is infinite, not unknown
-    const bool fromStop = startsOnStop || result.cost.contacts > 0;
-    if (result.stop == StopReason::NoFurtherContact && fromStop) {
-      summary.fftFirst = std::numeric_limits<double>::infinity();
-    }
-    return;
-  }
-  // the mean as the first flight plus the mean deviation from it: flights all of one length
-  // (a grazing orbit's T2) give exactly that length, not a sum's rounding of it
-  const double first = flights.front().duration;
-  double low = first;
-  double high = first;
-  double deviation = 0;
-  for (const FreeFlight& flight : flights) {
-    low = std::min(low, flight.duration);
-    high = std::max(high, flight.duration);
-    deviation += flight.duration - first;
-  }
-  summary.fftFirst = first;
-  summary.fftMin = low / period;
-  summary.fftMax = high / period;
-  summary.fftMean = (first + deviation / double(flights.size())) / period;
+BasicChainStart<S> pureModeStart(const MapSpec& spec, const PointValues& values, const BasicState<S>& start) {
+  using Kind = StartSpec<double>::Kind;
+  std::optional<double> lambda = values.of(MapVariable::Lambda);
+  if (!lambda && spec.start && spec.start->kind == Kind::Glo) lambda = spec.start->lambda;
+  std::optional<Mode> alone;  // the one mode that moves
+  if (lambda == 0.0) alone = Mode::Fast;
+  if (lambda == 1.0) alone = Mode::Slow;
+  if (spec.start && spec.start->kind == Kind::Glom) alone = spec.start->mode;
+  const std::optional<double> epsilon = values.of(MapVariable::Epsilon);
+  const bool pushed = epsilon ? *epsilon != 0 : spec.perturbation && !(*spec.perturbation == State{});
+  const bool moved = isStartCoordinate(spec.x.variable) || isStartCoordinate(spec.y.variable);
+  BasicChainStart<S> chainStart(chainStateOf(start));
+  // (the chain's modes fastest first)
+  if (alone && !pushed && !moved) chainStart.stillModes = {*alone == Mode::Slow, *alone == Mode::Fast};
+  return chainStart;
 }
 
-// The summary of one point computed in precision S. Returns false (and leaves `summary`
-// alone) when the run stopped at a contact S cannot decide and `stopAtUndecided` asked for that.
+// The summary of the point computed in precision S: the model and start formed in S, the one
+// run of that chain. Returns false (and leaves `summary` alone) when the run stopped at a contact
+// S cannot decide and `raise` asks for a higher precision.
 template <typename S>
-bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& values,
-                    bool stopAtUndecided, std::stop_token stop, PointSummary& summary) {
+bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& values, bool raise,
+                    std::stop_token stop, const BasicReadyChain<S>* shared, PointSummary& summary) {
   const BasicModel<S> model = convertModel<S>(given);
   const TwoMassFormOrProblem<S> formed = makeTwoMassForm(model);
   if (!formed.chain) {
@@ -220,42 +170,129 @@ bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& 
     // a 1IPP start refused in S may be one whose first return S cannot decide: ask one up
     const bool onePeriodic =
         spec.start && spec.start->kind == StartSpec<double>::Kind::OnePeriodic;
-    if (onePeriodic && stopAtUndecided) return false;
+    if (onePeriodic && raise) return false;
     summary = invalidPoint();
     return true;
   }
   const double period = toDouble(S(twoPi<S>() / formed.chain->omegaSlow));
+  return summarizeRun(shared ? *shared : readyChain(model), pureModeStart(spec, values, *start), spec.contacts,
+                      period, spec.estimateHorizon, raise, stop, summary);
+}
 
-  // beyond the contacts asked for, the run goes on until its first flight from the stop has
-  // ended (a start pressed on the stop sticks first): at most three contacts more, each try a
-  // whole run (so that its error estimate sees a finished run)
-  PointRun<S> run;
-  for (std::int64_t extra = 0; extra <= 3; ++extra) {
-    run = runPoint(model, *start, spec.contacts + extra, spec.estimateHorizon, stopAtUndecided,
-                   stop);
-    if (!run.result.freeFlights.empty() || run.result.stop != StopReason::ContactLimit) break;
+// The chain of a map whose axes leave the model alone (no mass-ratio, gap or detuning axis), made
+// ready once in each precision for all its points
+struct SharedChains {
+  BasicReadyChain<double> inDouble;
+  BasicReadyChain<long double> inLong;
+  BasicReadyChain<Quad> inQuad;
+};
+
+std::optional<SharedChains> sharedChains(const MapSpec& spec) {
+  for (const MapVariable variable : {MapVariable::MassRatio, MapVariable::Gap, MapVariable::Detuning}) {
+    if (spec.x.variable == variable || spec.y.variable == variable) return std::nullopt;
   }
-  if (run.result.stop == StopReason::Undecided) return false;
-  if (run.result.stop == StopReason::InvalidInput) {
-    summary = invalidPoint();
-    return true;
+  const std::optional<Model> model = pointModel(spec, PointValues{spec, spec.x.at(0), spec.y.at(0)});
+  if (!model || !makeTwoMassForm(convertModel<Quad>(*model)).chain) return std::nullopt;
+  return SharedChains{readyChain(*model), readyChain(convertModel<long double>(*model)),
+                      readyChain(convertModel<Quad>(*model))};
+}
+
+// mapPoint, with the map's chains made ready once when it has them
+PointSummary pointOf(const MapSpec& spec, std::int64_t column, std::int64_t row, std::stop_token stop,
+                     const SharedChains* shared) {
+  const PointValues values{spec, spec.x.at(column), spec.y.at(row)};
+  const std::optional<Model> model = pointModel(spec, values);
+  if (!model) return invalidPoint();
+  // precision auto: double, and the whole point again one precision up (model and start formed
+  // there) when a contact is a touch its precision cannot tell from a crossing
+  PointSummary summary;
+  if (summarizePoint<double>(spec, *model, values, true, stop, shared ? &shared->inDouble : nullptr, summary) ||
+      summarizePoint<long double>(spec, *model, values, true, stop, shared ? &shared->inLong : nullptr, summary)) {
+    return summary;
   }
-  const BasicResult<S>& result = run.result;
-  summary = PointSummary{};
-  summary.valid = true;
-  summarizeFlights(result, period, start->u2 == model.gap, summary);
-  summary.impacts = result.cost.impacts;
-  summary.grazings = result.cost.grazings;
-  summary.sticks = result.cost.sticks;
-  summary.firstImpactTime = run.firstImpact;
-  if (std::isnan(run.firstImpact) && result.stop == StopReason::NoFurtherContact) {
-    summary.firstImpactTime = std::numeric_limits<double>::infinity();
-  }
-  summary.horizon = run.horizon;
-  return true;
+  summarizePoint<Quad>(spec, *model, values, false, stop, shared ? &shared->inQuad : nullptr, summary);
+  return summary;
 }
 
 }  // namespace
+
+template <typename S>
+bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start, std::int64_t contacts,
+                  double period, bool estimateHorizon, bool raise, std::stop_token stop, PointSummary& summary) {
+  using H = ShadowScalar<S>;
+  const int s = chain.dynamics.stop;
+  const bool startsOnStop = start.state.u[s] == chain.numbers.gap;
+  const bool stillModes = std::find(start.stillModes.begin(), start.stillModes.end(), true) != start.stillModes.end();
+  // beyond the contacts asked for, the run goes on until its first flight from the stop has
+  // ended (a start pressed on the stop sticks first): at most three contacts more, each try a
+  // whole run (so that its error estimate sees a finished run)
+  for (std::int64_t extra = 0; extra <= 3; ++extra) {
+    const long asked = long(contacts + extra);
+    // the error estimate: the note's for a run by the note's kernel, the chain's otherwise; a
+    // map's parameters are the numbers it was given (no decimal was rounded to form them)
+    std::optional<TrustMonitor<S>> notes;
+    std::optional<ChainTrustCheck<S>> check;
+    if (estimateHorizon && chain.notes && !stillModes) {
+      notes.emplace(convertModel<H>(*chain.notesModel),
+                    BasicChainState<H>{start.state.u.template cast<H>(), start.state.v.template cast<H>()}, asked, H(0),
+                    TrustMode::Auto, stop, ExactParameters{true, true, true, true, true});
+    } else if (estimateHorizon) {
+      check.emplace(chain.numbers, start, asked, S(0), TrustMode::Auto, stop);
+    }
+    // a flight from the stop: from a contact or a release (or a start on the stop) to the next
+    // contact, as long as the kernel computed it
+    std::vector<double> flights;
+    bool fromStop = startsOnStop && start.state.v[s] <= 0;
+    double firstImpact = kNaN;
+    const ChainEventSink<S> sink = [&](const BasicChainEvent<S>& event) {
+      if (notes) notes->observe(event);
+      if (check) check->observe(event);
+      if (event.type == EventType::Impact && std::isnan(firstImpact)) firstImpact = toDouble(event.t);
+      if (isContact(event.type) && fromStop && event.flight > 0) flights.push_back(toDouble(event.flight));
+      fromStop = event.type != EventType::Stick;
+    };
+    const BasicChainRun<S> run = runChain(chain, start, asked, S(0), stop, sink);
+    if (run.stop == StopReason::ContactLimit && flights.empty() && extra < 3) continue;
+    if (run.stop == StopReason::Undecided) {
+      if (raise) return false;
+      // undecided in binary128 too: the map cannot say what the run does (no partial counts)
+      summary = invalidPoint();
+      return true;
+    }
+    summary = PointSummary{};
+    summary.valid = true;
+    summary.fftFirst = summary.fftMin = summary.fftMax = summary.fftMean = kNaN;
+    if (flights.empty()) {
+      // a resonant flight from the stop that never returns: its FFT is infinite, not unknown
+      if (run.stop == StopReason::NoFurtherContact && fromStop) summary.fftFirst = kInfinity;
+    } else {
+      // the mean as the first flight plus the mean deviation from it: flights all of one length
+      // (a grazing orbit's T2) give exactly that length, not a sum's rounding of it
+      const double first = flights.front();
+      double low = first, high = first, deviation = 0;
+      for (const double flight : flights) {
+        low = std::min(low, flight);
+        high = std::max(high, flight);
+        deviation += flight - first;
+      }
+      summary.fftFirst = first;
+      summary.fftMin = low / period;
+      summary.fftMax = high / period;
+      summary.fftMean = (first + deviation / double(flights.size())) / period;
+    }
+    summary.impacts = run.impacts;
+    summary.grazings = run.grazings;
+    summary.sticks = run.sticks;
+    summary.firstImpactTime = std::isnan(firstImpact) && run.stop == StopReason::NoFurtherContact ? kInfinity : firstImpact;
+    summary.horizon = kNaN;
+    if ((notes || check) && run.stop != StopReason::Cancelled) {
+      const Trust trust = notes ? notes->finish(run) : check->finish(run);
+      if (trust.verdict != Verdict::Unchecked) summary.horizon = trust.horizon;
+    }
+    return true;
+  }
+  return true;  // (not reached: the last try returns)
+}
 
 std::string_view toString(MapVariable variable) {
   for (const VariableName& entry : kVariableNames) {
@@ -367,16 +404,7 @@ ParallelFor serialFor() {
 
 PointSummary mapPoint(const MapSpec& spec, std::int64_t column, std::int64_t row,
                         std::stop_token stop) {
-  const PointValues values{spec, spec.x.at(column), spec.y.at(row)};
-  const std::optional<Model> model = pointModel(spec, values);
-  if (!model) return invalidPoint();
-  // precision auto: double, and the whole point again one precision up (model and start formed
-  // there) when a contact is a touch its precision cannot tell from a crossing
-  PointSummary summary;
-  if (summarizePoint<double>(spec, *model, values, true, stop, summary)) return summary;
-  if (summarizePoint<long double>(spec, *model, values, true, stop, summary)) return summary;
-  summarizePoint<Quad>(spec, *model, values, false, stop, summary);
-  return summary;
+  return pointOf(spec, column, row, stop, nullptr);
 }
 
 MapRows computeRows(std::int64_t columns, RowRange rows, const MapPoint& point, const PointSummary& unset,
@@ -417,14 +445,23 @@ MapRows computeRows(std::int64_t columns, RowRange rows, const MapPoint& point, 
 
 MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parallelFor,
                std::stop_token stop, const MapRowsProgress& progress) {
+  const std::optional<SharedChains> shared = sharedChains(spec);
   MapRows map = computeRows(
       spec.x.count, rows,
-      [&spec](std::int64_t column, std::int64_t row, std::stop_token pointStop) {
-        return mapPoint(spec, column, row, pointStop);
+      [&spec, &shared](std::int64_t column, std::int64_t row, std::stop_token pointStop) {
+        return pointOf(spec, column, row, pointStop, shared ? &*shared : nullptr);
       },
       invalidPoint(), parallelFor, stop, progress);
   map.period = basePeriod(spec.model);
   return map;
 }
+
+#define GRAZELAB_INSTANTIATE(S)                                                                               \
+  template bool summarizeRun<S>(const BasicReadyChain<S>&, const BasicChainStart<S>&, std::int64_t, double, bool, bool, \
+                                std::stop_token, PointSummary&);
+GRAZELAB_INSTANTIATE(double)
+GRAZELAB_INSTANTIATE(long double)
+GRAZELAB_INSTANTIATE(Quad)
+#undef GRAZELAB_INSTANTIATE
 
 }  // namespace grazelab::core

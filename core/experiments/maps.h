@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/model/model.h"
+#include "core/solver/chain_run.h"
 #include "core/orbits/starts.h"
 
 namespace grazelab::core {
@@ -146,6 +147,17 @@ using MapPoint = std::function<PointSummary(std::int64_t column, std::int64_t ro
 MapRows computeRows(std::int64_t columns, RowRange rows, const MapPoint& point, const PointSummary& unset,
                     const ParallelFor& parallelFor, std::stop_token stop = {},
                     const MapRowsProgress& progress = {});
+
+/// The summary of one run of a chain made ready (any chain; the note's by its kernel) from
+/// `start`: `contacts` contacts and, until its first flight from the stop has ended, up to three
+/// more (a start pressed on the stop sticks first); the free-flight times as the kernel computed
+/// them, over `period`; with `estimateHorizon`, the horizon of its error estimate (the note's,
+/// TrustMonitor, for a run by the note's kernel; the chain's, ChainTrustCheck, otherwise). In S.
+/// Returns false, leaving `summary` alone, when the run met a contact S cannot decide and `raise`
+/// asks for a higher precision to decide it; without `raise` such a run is no run (NaN, -1).
+template <typename S>
+bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start, std::int64_t contacts,
+                  double period, bool estimateHorizon, bool raise, std::stop_token stop, PointSummary& summary);
 
 /// Computes rows `rows` of the map. Precondition: checkMap(spec) is empty.
 MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parallelFor,

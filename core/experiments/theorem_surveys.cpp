@@ -6,7 +6,7 @@
 #include <random>
 
 #include "core/orbits/special_orbits.h"
-#include "core/solver/simulate.h"
+#include "core/solver/chain_run.h"
 
 namespace grazelab::core::experiments {
 
@@ -23,6 +23,34 @@ double gloHighestReach(double lambda) {
   return best;
 }
 
+namespace {
+
+// One flight from the stop: the contact that ends it (0-based) and its shortfall 1 - FFT / T2
+// (exact near T2, where FFT / T2 itself would round to 1).
+struct FlightFromStop {
+  long contact = 0;
+  double shortfall = 0;
+  double fraction() const { return 1.0 - shortfall; }
+};
+
+// The one run of the note's chain made ready, from `start`, handing each flight from the stop to
+// `flight` (from a contact or a release, or from a start on the stop, to the next contact).
+template <typename Flight>
+ChainRun runFlights(const ReadyChain& chain, const State& start, std::int64_t contacts, double T2,
+                    std::stop_token stop, const Flight& flight) {
+  bool fromStop = start.u2 == chain.numbers.gap && start.v2 <= 0;
+  long contact = 0;
+  return runChain(chain, chainStateOf(start), long(contacts), 0.0, stop, [&](const ChainEvent& event) {
+    if (isContact(event.type)) {
+      if (fromStop && event.flight > 0) flight(FlightFromStop{contact, event.shortfall / T2});
+      ++contact;
+    }
+    fromStop = event.type != EventType::Stick;
+  });
+}
+
+}  // namespace
+
 FlightSurvey surveyRandomStarts(const Model& model, int starts, std::int64_t contacts,
                                 std::uint64_t seed, int bins, double binWidth,
                                 std::stop_token stop) {
@@ -30,6 +58,7 @@ FlightSurvey surveyRandomStarts(const Model& model, int starts, std::int64_t con
   survey.counts.assign(std::size_t(std::max(1, bins)), 0);
   survey.binWidth = binWidth;
   const Modes modes = computeModes(model);
+  const ReadyChain chain = readyChain(model);
   std::mt19937_64 generator(seed);
   const double d = model.gap;
   const double speed = 1.5 * modes.omegaSlow * d;
@@ -38,27 +67,20 @@ FlightSurvey surveyRandomStarts(const Model& model, int starts, std::int64_t con
   std::uniform_real_distribution<double> velocity(-speed, speed);
   for (int start = 0; start < starts; ++start) {
     if (stop.stop_requested()) return survey;
-    Request request;
-    request.initial = {position(generator), below(generator), velocity(generator), velocity(generator)};
-    request.maxContacts = contacts;
-    request.needs.events = false;
-    request.needs.freeFlights = true;
-    const Result run = simulate(model, request, stop);
-    if (run.cost.contacts == 0) {
+    const State initial{position(generator), below(generator), velocity(generator), velocity(generator)};
+    const ChainRun run = runFlights(chain, initial, contacts, modes.T2, stop, [&](const FlightFromStop& flight) {
+      ++survey.flights;
+      survey.longest = std::max(survey.longest, flight.fraction());
+      const int bin = std::clamp(int(flight.fraction() / binWidth), 0, int(survey.counts.size()) - 1);
+      ++survey.counts[std::size_t(bin)];
+    });
+    if (run.contacts == 0) {
       ++survey.neverTouch;
-    } else if (run.cost.contacts >= contacts) {
+    } else if (run.contacts >= contacts) {
       ++survey.reachedLimit;
-      if (!survey.firstTouching) survey.firstTouching = request.initial;
+      if (!survey.firstTouching) survey.firstTouching = initial;
     } else {
       ++survey.other;
-    }
-    for (const FreeFlight& flight : run.freeFlights) {
-      // 1 - shortfall / T2: exact near T2, where FFT / T2 itself would round to 1
-      const double fraction = 1.0 - flight.shortfall / modes.T2;
-      ++survey.flights;
-      survey.longest = std::max(survey.longest, fraction);
-      const int bin = std::clamp(int(fraction / binWidth), 0, int(survey.counts.size()) - 1);
-      ++survey.counts[std::size_t(bin)];
     }
   }
   survey.complete = !stop.stop_requested();
@@ -67,35 +89,20 @@ FlightSurvey surveyRandomStarts(const Model& model, int starts, std::int64_t con
 
 std::optional<double> largestShortfall(const Model& model, const State& start,
                                        std::int64_t contacts, std::stop_token stop) {
-  Request request;
-  request.initial = start;
-  request.maxContacts = contacts;
-  request.needs.events = false;
-  request.needs.freeFlights = true;
-  const Result result = simulate(model, request, stop);
-  if (stop.stop_requested()) return std::nullopt;
   const double T2 = computeModes(model).T2;
   double shortfall = 0;
-  for (const FreeFlight& flight : result.freeFlights) shortfall = std::max(shortfall, flight.shortfall / T2);
+  runFlights(readyChain(model), start, contacts, T2, stop,
+             [&](const FlightFromStop& flight) { shortfall = std::max(shortfall, flight.shortfall); });
+  if (stop.stop_requested()) return std::nullopt;
   return shortfall;
 }
 
 std::vector<std::array<double, 2>> flightTimesOverT2(const Model& model, const State& start,
-                                                     std::int64_t contacts, double searchPeriods,
-                                                     std::stop_token stop) {
-  Request request;
-  request.initial = start;
-  request.maxContacts = contacts;
-  request.flightSearchPeriods = searchPeriods;
-  request.needs.events = false;
-  request.needs.freeFlights = true;
-  const Result result = simulate(model, request, stop);
+                                                     std::int64_t contacts, std::stop_token stop) {
   const double T2 = computeModes(model).T2;
   std::vector<std::array<double, 2>> flights;
-  flights.reserve(result.freeFlights.size());
-  for (const FreeFlight& flight : result.freeFlights) {
-    flights.push_back({double(flight.contactIndex), 1.0 - flight.shortfall / T2});
-  }
+  runFlights(readyChain(model), start, contacts, T2, stop,
+             [&](const FlightFromStop& flight) { flights.push_back({double(flight.contact), flight.fraction()}); });
   return flights;
 }
 

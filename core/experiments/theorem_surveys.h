@@ -46,11 +46,10 @@ std::optional<double> largestShortfall(const Model& model, const State& start,
                                        std::int64_t contacts, std::stop_token stop = {});
 
 /// The free-flight times of the run from `start`, each as (index of the contact that ends it,
-/// FFT / T2 of the run's own chain), a flight searched for at most `searchPeriods` slow periods
-/// (a detuned chain's can pass T2); what was computed when stopped.
+/// FFT / T2 of the run's own chain), a flight searched for at most kFlightSearchPeriods slow
+/// periods (a detuned chain's can pass T2); what was computed when stopped.
 std::vector<std::array<double, 2>> flightTimesOverT2(const Model& model, const State& start,
-                                                     std::int64_t contacts, double searchPeriods,
-                                                     std::stop_token stop = {});
+                                                     std::int64_t contacts, std::stop_token stop = {});
 
 /// The admissible orbits of the 1IPP family at `points` periods from just above `lowEnd` up to
 /// T2 (crowding towards T2, where the theorem looks), in increasing period; what was computed

@@ -209,6 +209,7 @@ BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, con
       m_tEnd(tEnd),
       m_searchSteps(searchSteps > 0 ? searchSteps : defaultSearchSteps<S>()),
       m_slowest(twoPi<S>() / m_dynamics.omega.minCoeff()),
+      m_period(m_dynamics.period > 0 ? m_dynamics.period : m_slowest),
       m_sink(std::move(sink)),
       m_sampling(std::move(sampling)),
       m_state(start.state),
@@ -249,7 +250,7 @@ bool BasicChainSimulator<S>::finish(StopReason reason, const BasicChainState<S>&
 
 template <typename S>
 void BasicChainSimulator<S>::record(EventType type, const BasicChainState<S>& at, const ChainVector<S>& vBefore,
-                                    const S& when, const S& residual) {
+                                    const S& when, const S& residual, const S& flight, const S& shortfall) {
   const int s = m_dynamics.stop;
   if (m_sink) {
     // into the event reused from call to call: its vectors keep their storage (no allocation)
@@ -258,9 +259,11 @@ void BasicChainSimulator<S>::record(EventType type, const BasicChainState<S>& at
     m_event.u = at.u;
     m_event.vBefore = vBefore;
     m_event.vAfter = at.v[s];
+    m_event.flight = flight;
+    m_event.shortfall = shortfall;
     m_sink(m_event);
   } else {
-    m_run.events.push_back({when, type, at.u, vBefore, at.v[s]});
+    m_run.events.push_back({when, type, at.u, vBefore, at.v[s], flight, shortfall});
   }
   m_anyEvent = true;
   m_lastType = type;
@@ -347,7 +350,7 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
         }
       }
       const BasicChainStuckPhase<S> phase = stuckPhase(chain, state);
-      const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * slowestPeriod(phase));
+      const S horizon = tEnd > 0 ? S(tEnd - t) : S(S(kFlightSearchPeriods) * slowestPeriod(phase));
       const BasicFirstZero<S> release = releaseOf(phase, horizon);
       if (m_stop.stop_requested()) return finish(StopReason::Cancelled, state, t);
       const bool past = tEnd > 0 && ((release.kind == ZeroKind::Budget && release.t >= horizon) || t + release.t > tEnd);
@@ -389,7 +392,7 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
         }
       }
     }
-    const S horizon = tEnd > 0 ? S(tEnd - t) : S(1000 * m_slowest);
+    const S horizon = tEnd > 0 ? S(tEnd - t) : S(S(kFlightSearchPeriods) * m_slowest);
     const BasicChainContact<S> contact = firstContact(dynamics, m_flight, horizon, 1'000'000, leaving);
     const std::optional<BasicLeaving<S>> flightLeaving = leaving;
     leaving.reset();
@@ -432,7 +435,7 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
         state.u[s] = dynamics.gap;
         state.v[s] = 0;
       }
-      record(EventType::Grazing, state, state.v, t, residual);
+      record(EventType::Grazing, state, state.v, t, residual, contact.t, S(m_period - contact.t));
       leaving = flightLeaving;
       m_flightKept = true;
       continue;
@@ -444,7 +447,7 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
     const S residual = abs(m_at.u[s] - dynamics.gap);
     m_at.u[s] = dynamics.gap;  // on the stop exactly: the next flight starts on it
     m_at.v[s] = -m_at.v[s];  // an impact: the one contact left (a touch is a periodic return, above)
-    record(EventType::Impact, m_at, m_vBefore, when, residual);
+    record(EventType::Impact, m_at, m_vBefore, when, residual, contact.t, S(m_period - contact.t));
     state = m_at;
     t = when;
   }
@@ -462,7 +465,7 @@ template <typename S>
 bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
   const S tauEnd = m_tEnd > 0 ? m_scale.toScaledTime(m_tEnd) : S(std::numeric_limits<double>::infinity());
   // without an end time the search goes 1000 slow periods, as the modal kernel's
-  const S horizon = m_tEnd > 0 ? S(std::numeric_limits<double>::infinity()) : S(twoPi<S>() * S(1000));
+  const S horizon = m_tEnd > 0 ? S(std::numeric_limits<double>::infinity()) : S(twoPi<S>() * S(kFlightSearchPeriods));
   const auto physical = [&](const BasicState<S>& scaled) { return chainStateOf(m_scale.toPhysical(scaled)); };
   // the motion of the stepper's last step, at physical time `from` + offset
   const auto motionFrom = [&](const S& from) {
@@ -490,7 +493,15 @@ bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
         m_at.u << after.u1, after.u2;
         m_at.v << after.v1, after.v2;
         m_vBefore << before.v1, before.v2;
-        record(step.type, m_at, m_vBefore, when, timesPowerOfTwo(step.residual, m_scale.exponent));
+        S flight = 0, shortfall = 0;
+        if (step.endsFlight) {
+          // T2 - FFT exact from the offset when the contact is anchored at the return
+          const FlightTime<S>& duration = step.flightDuration;
+          flight = m_scale.toPhysicalTime(duration.value());
+          shortfall = m_scale.toPhysicalTime(duration.periods == 1 ? S(-duration.offset)
+                                                                   : S(twoPi<S>() - duration.value()));
+        }
+        record(step.type, m_at, m_vBefore, when, timesPowerOfTwo(step.residual, m_scale.exponent), flight, shortfall);
         m_t = when;
         continue;
       }
@@ -551,7 +562,8 @@ ChainRun inDouble(const BasicChainRun<S>& from) {
   ChainRun run;
   run.events.reserve(from.events.size());
   for (const BasicChainEvent<S>& e : from.events) {
-    run.events.push_back({toDouble(e.t), e.type, vector(e.u), vector(e.vBefore), toDouble(e.vAfter)});
+    run.events.push_back({toDouble(e.t), e.type, vector(e.u), vector(e.vBefore), toDouble(e.vAfter),
+                          toDouble(e.flight), toDouble(e.shortfall)});
   }
   run.contacts = from.contacts;
   run.impacts = from.impacts;

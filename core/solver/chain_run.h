@@ -20,6 +20,10 @@
 
 namespace grazelab::core {
 
+/// How far a run searches one flight for its contact when it has no end time, in slowest periods
+/// (a flight of a chain not commensurate may never meet the stop again).
+inline constexpr double kFlightSearchPeriods = 1000;
+
 /// One contact of a chain of N masses with the stop.
 template <typename S>
 struct BasicChainEvent {
@@ -28,6 +32,14 @@ struct BasicChainEvent {
   ChainVector<S> u;                    ///< the displacements at the event (u_s = d)
   ChainVector<S> vBefore;              ///< the velocities before it
   S vAfter = 0;                        ///< the stopped mass's velocity after it
+  /// the free flight this event ends: its length [time] from the event before (or the start), as
+  /// the kernel computed it (not the difference of two rounded times), and how much shorter than
+  /// the chain's period it is (the common period T, or the slowest mode's when not commensurate;
+  /// exact where the note's kernel anchors the contact at the return after T, so that a flight
+  /// short of T by less than an ulp of T still shows it). 0 for an event that ends no flight (a
+  /// release, a stick, an impact at the instant of the event before).
+  S flight = {};
+  S shortfall = {};
 };
 using ChainEvent = BasicChainEvent<double>;
 
@@ -149,8 +161,9 @@ class BasicChainSimulator {
   /// ends the run there, for `reason`; true (advance's answer)
   bool finish(StopReason reason, const BasicChainState<S>& at, const S& when);
   /// `residual`: a contact's |u_s - d| as its flight reached it (before it is put on the stop)
+  /// `flight`: the length of the flight it ends (0: none), `shortfall` its T - length
   void record(EventType type, const BasicChainState<S>& at, const ChainVector<S>& vBefore, const S& when,
-              const S& residual = 0);
+              const S& residual = 0, const S& flight = 0, const S& shortfall = 0);
   /// advance() by the note's kernel
   bool advanceNotes(long pieceEnd);
   double sampleTime(std::size_t index) const;
@@ -163,6 +176,7 @@ class BasicChainSimulator {
   S m_tEnd;
   std::int64_t m_searchSteps;  ///< the note's kernel's, per flight
   S m_slowest;
+  S m_period;  ///< what a flight's shortfall is measured from: the common period, or m_slowest
   ChainEventSink<S> m_sink;
   ChainSampling<S> m_sampling;
   std::stop_token m_stop;

@@ -9,6 +9,7 @@
 #include "core/model/resonance.h"
 #include "core/orbits/starts.h"
 #include "core/experiments/theorem_surveys.h"
+#include "core/solver/chain_run.h"
 #include "ui/scenes/scenes.h"
 
 namespace grazelab::ui {
@@ -18,14 +19,14 @@ QString tr(const char* text) {
   return QCoreApplication::translate("grazelab::ui::DetunedScene", text);
 }
 
-// a detuned flight may be long: each is searched for at most this many slow periods
-constexpr double kSearchPeriods = 200;
+// a detuned flight may be long: each is searched for at most this many slow periods (the run's)
+constexpr double kSearchPeriods = core::kFlightSearchPeriods;
 
 std::vector<QPointF> flights(const core::Model& model, const core::State& start,
                              std::int64_t contacts, std::stop_token stop) {
   std::vector<QPointF> points;
   for (const auto& [index, fraction] :
-       core::experiments::flightTimesOverT2(model, start, contacts, kSearchPeriods, stop)) {
+       core::experiments::flightTimesOverT2(model, start, contacts, stop)) {
     points.emplace_back(index, fraction);
   }
   return points;

@@ -98,6 +98,7 @@ void expectTheNotesBits(const BasicModel<S>& model, const BasicReadyChain<S>& re
   request.initial = initial;
   request.maxContacts = contacts;
   request.stopAtUndecided = true;
+  request.needs.freeFlights = true;
   if (tEnd > 0) request.tEnd = tEnd;
   const BasicResult<S> two = simulate(model, request);
   BasicChainSimulator<S> simulator(ready, chainStateOf(initial), contacts, tEnd);
@@ -112,6 +113,19 @@ void expectTheNotesBits(const BasicModel<S>& model, const BasicReadyChain<S>& re
     ASSERT_TRUE(one.events[k].vBefore[0] == e.before.v1 && one.events[k].vBefore[1] == e.before.v2)
         << label << ", event " << k;
     ASSERT_TRUE(one.events[k].vAfter == e.after.v2) << label << ", event " << k;
+  }
+  // the flights from the stop the note's recorder keeps are the one run's, length and shortfall
+  // to the bit (a flight from the stop: after a contact or a release, or from a start on it)
+  std::vector<std::pair<double, double>> flights;
+  bool fromStop = initial.u2 == model.gap && initial.v2 <= 0;
+  for (const BasicChainEvent<S>& event : one.events) {
+    if (fromStop && event.flight > 0) flights.emplace_back(toDouble(event.flight), toDouble(event.shortfall));
+    fromStop = event.type != EventType::Stick;
+  }
+  ASSERT_EQ(flights.size(), two.freeFlights.size()) << label;
+  for (std::size_t k = 0; k < flights.size(); ++k) {
+    EXPECT_EQ(flights[k].first, two.freeFlights[k].duration) << label << ", flight " << k;
+    EXPECT_EQ(flights[k].second, two.freeFlights[k].shortfall) << label << ", flight " << k;
   }
   // a search that found no contact ends the one run at that flight's start (simulate: at the
   // search's end), as the modal kernel's does
@@ -215,6 +229,49 @@ TEST(ChainRun, ARunMeasuresItsOwnAccuracy) {
   // runs lands off it by rounding, and binary128's land far closer
   EXPECT_GT(inDouble, 0.0);
   EXPECT_LT(inQuad, 1e-6 * inDouble);
+}
+
+// Each contact carries the flight it ends, as the kernel computed it: the time since the event
+// before to rounding, its shortfall the period less it; and on a commensurate chain every flight
+// from the stop ends within the common period T (docs/model.md section 11), its shortfall >= 0.
+// Chains of 3 to 6 masses (the modal kernel), resonant and not, a wall, interior stops.
+TEST(ChainRun, EachContactCarriesTheFlightItEnds) {
+  std::mt19937 random(20261201);
+  const std::vector<MassChain> chains{MassChain{{1.0, 0.2, 0.05}, {}, 0, 0, 1.0},  // 3:2:1
+                                      MassChain{{1.0, 0.7, 1.3, 0.5}, {1.0, 0.8, 1.4, 0.6}, 0.3, 2, 1.0},
+                                      MassChain{{1.0, 1.0, 1.0, 1.0, 1.0}, {1, 1, 1, 1, 1}, 0, 3, 0.5},
+                                      MassChain{{0.4, 1.0, 0.8, 1.1, 0.6, 1.0}, {1.2, 1, 0.7, 1.3, 0.9, 1.1}, 0, 0, 1.0}};
+  long fromStop = 0;
+  for (MassChain chain : chains) {
+    if (chain.springs.empty()) {
+      chain.springs = *designedSpringsIn<double>(chain.masses, 1.0, 0.0, chooseDesign(chain.masses, 1.0, 0.0, {3, 2, 1}, 1));
+    }
+    const ReadyChain ready = readyChain(chain);
+    const double period = ready.dynamics.period > 0 ? ready.dynamics.period : twoPi<double>() / ready.dynamics.omega.minCoeff();
+    for (int trial = 0; trial < 4; ++trial) {
+      ChainState start = randomStart(chain, random);
+      start.u[chain.stopped() - 1] = std::min(start.u[chain.stopped() - 1], 0.9 * chain.gap);
+      const ChainRun run = runChain(ready, start, 200);
+      double before = 0;
+      bool onStop = false;
+      for (const ChainEvent& event : run.events) {
+        const std::string where = std::to_string(chain.size()) + " masses, t = " + std::to_string(event.t);
+        if (event.type == EventType::Impact || event.type == EventType::Grazing) {
+          EXPECT_NEAR(event.flight, event.t - before, 1e-12 * (1 + event.t)) << where;
+          EXPECT_EQ(event.shortfall, period - event.flight) << where;
+          if (onStop && ready.dynamics.period > 0) {
+            EXPECT_GE(event.shortfall, -1e-12 * period) << where;
+            ++fromStop;
+          }
+        } else {
+          EXPECT_EQ(event.flight, 0.0) << where;  // a stick or a release ends no flight
+        }
+        onStop = event.type != EventType::Stick;
+        before = event.t;
+      }
+    }
+  }
+  EXPECT_GT(fromStop, 200);
 }
 
 // The note's kernel takes the note's budget of march steps for a detuned flight's search: out of
