@@ -132,24 +132,22 @@ PointSummary invalidPoint() {
   return {kNaN, kNaN, kNaN, kNaN, -1, -1, -1, kNaN, kNaN, false};
 }
 
-// The start as the one run takes it: a pure mode's data (GLO_0 or GLO_1, a GLOM) left where it is
-// names its other mode still, so that its grazings are decided exactly (the modal kernel keeps
-// that mode at 0; the rounded state holds 1e-17 of it, a touch no precision can decide)
+// The start as the one run takes it: the fast mode's data alone (GLO_0, GLOM_1) left where it is
+// names the slow mode still, so that its touches at T1 = T2 / 2 are decided exactly (the modal
+// kernel keeps that mode at 0; the rounded state holds 1e-17 of it, a touch no precision decides).
+// The slow mode's (GLO_1) returns at T2, where the note's kernel anchors it exactly.
 template <typename S>
 BasicChainStart<S> pureModeStart(const MapSpec& spec, const PointValues& values, const BasicState<S>& start) {
   using Kind = StartSpec<double>::Kind;
   std::optional<double> lambda = values.of(MapVariable::Lambda);
   if (!lambda && spec.start && spec.start->kind == Kind::Glo) lambda = spec.start->lambda;
-  std::optional<Mode> alone;  // the one mode that moves
-  if (lambda == 0.0) alone = Mode::Fast;
-  if (lambda == 1.0) alone = Mode::Slow;
-  if (spec.start && spec.start->kind == Kind::Glom) alone = spec.start->mode;
+  const bool fastAlone =
+      lambda == 0.0 || (spec.start && spec.start->kind == Kind::Glom && spec.start->mode == Mode::Fast);
   const std::optional<double> epsilon = values.of(MapVariable::Epsilon);
   const bool pushed = epsilon ? *epsilon != 0 : spec.perturbation && !(*spec.perturbation == State{});
   const bool moved = isStartCoordinate(spec.x.variable) || isStartCoordinate(spec.y.variable);
   BasicChainStart<S> chainStart(chainStateOf(start));
-  // (the chain's modes fastest first)
-  if (alone && !pushed && !moved) chainStart.stillModes = {*alone == Mode::Slow, *alone == Mode::Fast};
+  if (fastAlone && !pushed && !moved) chainStart.stillModes = {false, true};  // (fastest first)
   return chainStart;
 }
 
@@ -175,8 +173,9 @@ bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& 
     return true;
   }
   const double period = toDouble(S(twoPi<S>() / formed.chain->omegaSlow));
-  return summarizeRun(shared ? *shared : readyChain(model), pureModeStart(spec, values, *start), spec.contacts,
-                      period, spec.estimateHorizon, raise, stop, summary);
+  const BasicChainStart<S> chainStart = pureModeStart(spec, values, *start);
+  if (shared) return summarizeRun(*shared, chainStart, spec.contacts, period, spec.estimateHorizon, raise, stop, summary);
+  return summarizeRun(readyChain(model), chainStart, spec.contacts, period, spec.estimateHorizon, raise, stop, summary);
 }
 
 // The chain of a map whose axes leave the model alone (no mass-ratio, gap or detuning axis), made
@@ -239,20 +238,34 @@ bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& sta
     } else if (estimateHorizon) {
       check.emplace(chain.numbers, start, asked, S(0), TrustMode::Auto, stop);
     }
-    // a flight from the stop: from a contact or a release (or a start on the stop) to the next
-    // contact, as long as the kernel computed it
-    std::vector<double> flights;
-    bool fromStop = startsOnStop && start.state.v[s] <= 0;
-    double firstImpact = kNaN;
-    const ChainEventSink<S> sink = [&](const BasicChainEvent<S>& event) {
-      if (notes) notes->observe(event);
-      if (check) check->observe(event);
-      if (event.type == EventType::Impact && std::isnan(firstImpact)) firstImpact = toDouble(event.t);
-      if (isContact(event.type) && fromStop && event.flight > 0) flights.push_back(toDouble(event.flight));
-      fromStop = event.type != EventType::Stick;
+    // what the run's events make of the point as they come (one pointer captured: the sink needs
+    // no allocation of its own)
+    struct Seen {
+      std::optional<TrustMonitor<S>>& notes;
+      std::optional<ChainTrustCheck<S>>& check;
+      // a flight from the stop: from a contact or a release (or a start on the stop) to the next
+      // contact, as long as the kernel computed it
+      bool fromStop;
+      double firstImpact = kNaN;
+      long flights = 0;
+      // the first flight, the shortest, the longest, and the sum of the others' excess over it
+      double first = 0, low = 0, high = 0, deviation = 0;
+    } seen{notes, check, startsOnStop && start.state.v[s] <= 0};
+    const ChainEventSink<S> sink = [at = &seen](const BasicChainEvent<S>& event) {
+      if (at->notes) at->notes->observe(event);
+      if (at->check) at->check->observe(event);
+      if (event.type == EventType::Impact && std::isnan(at->firstImpact)) at->firstImpact = toDouble(event.t);
+      if (isContact(event.type) && at->fromStop && event.flight > 0) {
+        const double flight = toDouble(event.flight);
+        if (at->flights++ == 0) at->first = at->low = at->high = flight;
+        at->low = std::min(at->low, flight);
+        at->high = std::max(at->high, flight);
+        at->deviation += flight - at->first;
+      }
+      at->fromStop = event.type != EventType::Stick;
     };
     const BasicChainRun<S> run = runChain(chain, start, asked, S(0), stop, sink);
-    if (run.stop == StopReason::ContactLimit && flights.empty() && extra < 3) continue;
+    if (run.stop == StopReason::ContactLimit && seen.flights == 0 && extra < 3) continue;
     if (run.stop == StopReason::Undecided) {
       if (raise) return false;
       // undecided in binary128 too: the map cannot say what the run does (no partial counts)
@@ -262,28 +275,22 @@ bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& sta
     summary = PointSummary{};
     summary.valid = true;
     summary.fftFirst = summary.fftMin = summary.fftMax = summary.fftMean = kNaN;
-    if (flights.empty()) {
+    if (seen.flights == 0) {
       // a resonant flight from the stop that never returns: its FFT is infinite, not unknown
-      if (run.stop == StopReason::NoFurtherContact && fromStop) summary.fftFirst = kInfinity;
+      if (run.stop == StopReason::NoFurtherContact && seen.fromStop) summary.fftFirst = kInfinity;
     } else {
       // the mean as the first flight plus the mean deviation from it: flights all of one length
       // (a grazing orbit's T2) give exactly that length, not a sum's rounding of it
-      const double first = flights.front();
-      double low = first, high = first, deviation = 0;
-      for (const double flight : flights) {
-        low = std::min(low, flight);
-        high = std::max(high, flight);
-        deviation += flight - first;
-      }
-      summary.fftFirst = first;
-      summary.fftMin = low / period;
-      summary.fftMax = high / period;
-      summary.fftMean = (first + deviation / double(flights.size())) / period;
+      summary.fftFirst = seen.first;
+      summary.fftMin = seen.low / period;
+      summary.fftMax = seen.high / period;
+      summary.fftMean = (seen.first + seen.deviation / double(seen.flights)) / period;
     }
     summary.impacts = run.impacts;
     summary.grazings = run.grazings;
     summary.sticks = run.sticks;
-    summary.firstImpactTime = std::isnan(firstImpact) && run.stop == StopReason::NoFurtherContact ? kInfinity : firstImpact;
+    summary.firstImpactTime =
+        std::isnan(seen.firstImpact) && run.stop == StopReason::NoFurtherContact ? kInfinity : seen.firstImpact;
     summary.horizon = kNaN;
     if ((notes || check) && run.stop != StopReason::Cancelled) {
       const Trust trust = notes ? notes->finish(run) : check->finish(run);

@@ -4,6 +4,7 @@
 // double or binary128: the model and start are read exactly (widening is exact), the result is
 // handed back in double.
 #include <chrono>
+#include <optional>
 #include <cmath>
 #include <type_traits>
 
@@ -107,7 +108,9 @@ ChainMethodRun runIn(const ChainTask& task, const WorkBudget& budget, std::stop_
   const auto started = std::chrono::steady_clock::now();
   const BasicMassChain<S> chain = chainCast<S>(task.chain);
   const BasicChainStart<S> start{{task.start.u.template cast<S>(), task.start.v.template cast<S>()}, task.stillModes};
-  BasicChainSimulator<S> simulator(task.prepared ? readyIn<S>(*task.prepared) : readyChain(chain), start,
+  std::optional<BasicReadyChain<S>> unprepared;
+  if (!task.prepared) unprepared = readyChain(chain);
+  BasicChainSimulator<S> simulator(task.prepared ? readyIn<S>(*task.prepared) : *unprepared, start,
                                    long(budget.maxSteps), S(task.tEnd));
   ChainMethodRun run;
   const bool overTime = advanceWithin(simulator, budget, stop, started);

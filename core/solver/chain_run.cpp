@@ -199,12 +199,13 @@ BasicReadyChain<S> readyChain(const BasicModel<S>& model) {
 }
 
 template <typename S>
-BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start,
-                                            long maxContacts, std::type_identity_t<S> tEnd,
-                                            ChainEventSink<std::type_identity_t<S>> sink,
-                                            ChainSampling<std::type_identity_t<S>> sampling, std::int64_t searchSteps)
-    : m_chain(chain.numbers),
-      m_dynamics(chain.dynamics),
+BasicChainSimulator<S>::BasicChainSimulator(std::optional<BasicReadyChain<S>> owned, const BasicReadyChain<S>* given,
+                                            const BasicChainStart<S>& start, long maxContacts, S tEnd,
+                                            ChainEventSink<S> sink, ChainSampling<S> sampling,
+                                            std::int64_t searchSteps)
+    : m_owned(std::move(owned)),
+      m_chain((given ? *given : *m_owned).numbers),
+      m_dynamics((given ? *given : *m_owned).dynamics),
       m_maxContacts(maxContacts),
       m_tEnd(tEnd),
       m_searchSteps(searchSteps > 0 ? searchSteps : defaultSearchSteps<S>()),
@@ -217,7 +218,7 @@ BasicChainSimulator<S>::BasicChainSimulator(const BasicReadyChain<S>& chain, con
       // a start naming still modes (GLOM_1 alone, say) takes the modal kernel, which keeps them
       // still; the note's kernel has only the rounded state, which holds 1e-17 of them again
       m_notes(std::find(start.stillModes.begin(), start.stillModes.end(), true) == start.stillModes.end()
-                  ? chain.notes
+                  ? (given ? *given : *m_owned).notes
                   : std::nullopt) {
   if (!m_notes) {
     m_run.energyInitial = chainEnergy(m_chain, start.state);

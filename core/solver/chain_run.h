@@ -127,13 +127,26 @@ S chainEnergy(const BasicMassChain<S>& chain, const BasicChainState<S>& state);
 template <typename S>
 class BasicChainSimulator {
  public:
-  /// As runChain's arguments (below); the chain is copied, `sink` and `sampling` are kept.
+  /// As runChain's arguments (below); `sink` and `sampling` are kept, and so is the chain: one
+  /// given by name is held by reference and must outlive the simulator (runs of one chain share
+  /// it; a map runs thousands), a temporary is kept here.
   /// `searchSteps`: the note's kernel's budget for one detuned flight's certified march, in steps
   /// (0: about a second's worth, defaultSearchSteps); running out ends the run SearchBudget. (The
   /// modal kernel's searches are bounded by 1000 slowest periods, or tEnd.)
   BasicChainSimulator(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start, long maxContacts,
                       std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
-                      ChainSampling<std::type_identity_t<S>> sampling = {}, std::int64_t searchSteps = 0);
+                      ChainSampling<std::type_identity_t<S>> sampling = {}, std::int64_t searchSteps = 0)
+      : BasicChainSimulator(std::nullopt, &chain, start, maxContacts, tEnd, std::move(sink), std::move(sampling),
+                            searchSteps) {}
+  BasicChainSimulator(BasicReadyChain<S>&& chain, const BasicChainStart<S>& start, long maxContacts,
+                      std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
+                      ChainSampling<std::type_identity_t<S>> sampling = {}, std::int64_t searchSteps = 0)
+      : BasicChainSimulator(std::move(chain), nullptr, start, maxContacts, tEnd, std::move(sink), std::move(sampling),
+                            searchSteps) {}
+  /// (a constant temporary would bind to the reference above and be gone before the run)
+  BasicChainSimulator(const BasicReadyChain<S>&& chain, const BasicChainStart<S>& start, long maxContacts,
+                      std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
+                      ChainSampling<std::type_identity_t<S>> sampling = {}, std::int64_t searchSteps = 0) = delete;
   /// The same, the chain made ready here.
   BasicChainSimulator(const BasicMassChain<S>& chain, const BasicChainStart<S>& start, long maxContacts,
                       std::type_identity_t<S> tEnd = 0, ChainEventSink<std::type_identity_t<S>> sink = {},
@@ -156,6 +169,10 @@ class BasicChainSimulator {
   const S& time() const { return m_t; }
 
  private:
+  /// the chain kept (`owned`) or the one given
+  BasicChainSimulator(std::optional<BasicReadyChain<S>> owned, const BasicReadyChain<S>* given,
+                      const BasicChainStart<S>& start, long maxContacts, S tEnd, ChainEventSink<S> sink,
+                      ChainSampling<S> sampling, std::int64_t searchSteps);
   /// the energy of a state of the run (the note's kernel: as the note's simulator measures it)
   S energyOf(const BasicChainState<S>& at) const;
   /// ends the run there, for `reason`; true (advance's answer)
@@ -170,8 +187,9 @@ class BasicChainSimulator {
   template <typename At>
   void samplePiece(const S& from, const S& until, bool withEnd, const At& at);
 
-  BasicMassChain<S> m_chain;
-  BasicChainDynamics<S> m_dynamics;
+  std::optional<BasicReadyChain<S>> m_owned;  ///< the chain, when handed over as a temporary
+  const BasicMassChain<S>& m_chain;           ///< the ready chain's numbers and dynamics
+  const BasicChainDynamics<S>& m_dynamics;
   long m_maxContacts;
   S m_tEnd;
   std::int64_t m_searchSteps;  ///< the note's kernel's, per flight

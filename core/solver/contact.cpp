@@ -49,7 +49,7 @@ struct MarchPoint {
 };
 
 template <typename S>
-Contact<S> nextContactDetuned(const Flight<S>& flight, const S& horizon, std::stop_token stop,
+Contact<S> nextContactDetuned(const Flight<S>& flight, const S& horizon, const std::stop_token& stop,
                               std::int64_t steps) {
   using std::abs;
   using std::max;
@@ -156,14 +156,14 @@ Contact<S> nextContactDetuned(const Flight<S>& flight, const S& horizon, std::st
 }  // namespace
 
 template <typename S>
-Contact<S> nextContact(const Flight<S>& flight, const S& horizon, std::stop_token stop,
+Contact<S> nextContact(const Flight<S>& flight, const S& horizon, const std::stop_token& stop,
                        std::int64_t steps) {
   return flight.chain().resonant ? nextContactResonant(flight)
-                                 : nextContactDetuned(flight, horizon, std::move(stop), steps);
+                                 : nextContactDetuned(flight, horizon, stop, steps);
 }
 
 #define GRAZELAB_INSTANTIATE(S) \
-  template Contact<S> nextContact<S>(const Flight<S>&, const S&, std::stop_token, std::int64_t);
+  template Contact<S> nextContact<S>(const Flight<S>&, const S&, const std::stop_token&, std::int64_t);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

@@ -57,7 +57,7 @@ struct Contact {
 /// anchored Taylor form with relative precision; it stops at `horizon` (scaled time), after
 /// `steps` steps (ContactKind::Budget: undecided, not "no contact") or when `stop` is requested.
 template <typename S>
-Contact<S> nextContact(const Flight<S>& flight, const S& horizon, std::stop_token stop = {},
+Contact<S> nextContact(const Flight<S>& flight, const S& horizon, const std::stop_token& stop = {},
                        std::int64_t steps = defaultSearchSteps<S>());
 
 /// The gap of a resonant flight as a quartic: with x = tan(theta / 2), theta = tau,

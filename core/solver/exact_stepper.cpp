@@ -35,7 +35,7 @@ ExactStepper<S>::ExactStepper(const TwoMassForm<S>& chain, const S& scaledGap)
 
 template <typename S>
 Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
-                                 const S& searchHorizon, std::stop_token stop,
+                                 const S& searchHorizon, const std::stop_token& stop,
                                  std::int64_t searchSteps, bool stopAtUndecided) {
   using std::min;
   Step<S> step;

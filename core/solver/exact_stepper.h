@@ -84,7 +84,7 @@ class ExactStepper {
   /// With `stopAtUndecided`, a contact whose class the precision cannot decide is not taken:
   /// the step is Kind::Undecided and the state stays as it was.
   Step<S> advance(IntegrationState<S>& state, const S& tauEnd, const S& searchHorizon,
-                  std::stop_token stop = {}, std::int64_t searchSteps = defaultSearchSteps<S>(),
+                  const std::stop_token& stop = {}, std::int64_t searchSteps = defaultSearchSteps<S>(),
                   bool stopAtUndecided = false);
 
   /// The state at absolute scaled time `tau` inside the motion of the last step.

@@ -131,14 +131,14 @@ TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicChainState<
     m_active = false;
     return;
   }
-  const BasicReadyChain<H> ready = readyChain(shadowModel);
+  BasicReadyChain<H> ready = readyChain(shadowModel);
   m_shadowForm = ready.notes;
   // each shadow event, as the two masses' states before and after it (held until compared)
   const ChainEventSink<H> sink = [this](const BasicChainEvent<H>& event) {
     const BasicState<H> after{event.u[0], event.u[1], event.vBefore[0], event.vAfter};
     m_pending.push_back({event.t, event.type, {after.u1, after.u2, after.v1, event.vBefore[1]}, after});
   };
-  m_shadow = std::make_unique<BasicChainSimulator<H>>(ready, chainStateOf(x), maxContacts, shadowEnd, sink,
+  m_shadow = std::make_unique<BasicChainSimulator<H>>(std::move(ready), chainStateOf(x), maxContacts, shadowEnd, sink,
                                                       ChainSampling<H>{}, searchSteps);
   m_omega = m_shadowForm->omegaSlow * m_timeFactor;  // in the primary's time
   m_period = twoPi<H>() / m_omega;

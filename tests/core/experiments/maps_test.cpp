@@ -72,7 +72,16 @@ TEST(MapsTest, noFirstFlightOnTheGrazingStartPlaneLastsLongerThanT2) {
   const MapSpec spec = grazingPlane(41, 37, 1);
   const MapRows map = computeMap(spec, {0, spec.y.count}, serialFor());
   int atT2 = 0, below = 0;
-  for (const PointSummary& p : map.points) {
+  for (std::size_t i = 0; i < map.points.size(); ++i) {
+    const PointSummary& p = map.points[i];
+    const double u1 = spec.x.at(std::int64_t(i) % spec.x.count), v1 = spec.y.at(std::int64_t(i) / spec.x.count);
+    if (u1 == -1.0 && v1 == 0.0) {
+      // GLOM_1 data (u1 = -d at rest): its top comes back within rounding of the stop at T1, a
+      // touch no precision decides: no run, said so (NaN, counts -1), as simulate says undecided
+      EXPECT_FALSE(p.valid);
+      EXPECT_EQ(p.impacts, -1);
+      continue;
+    }
     ASSERT_TRUE(p.valid);
     ASSERT_TRUE(std::isfinite(p.fftFirst));  // every start on H leaves and comes back
     EXPECT_LE(p.fftFirst, map.period);
