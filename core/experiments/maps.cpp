@@ -156,7 +156,8 @@ BasicChainStart<S> pureModeStart(const MapSpec& spec, const PointValues& values,
 // S cannot decide and `raise` asks for a higher precision.
 template <typename S>
 bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& values, bool raise,
-                    std::stop_token stop, const BasicReadyChain<S>* shared, PointSummary& summary) {
+                    std::stop_token stop, const BasicReadyChain<S>* shared,
+                    const BasicReadyChain<ShadowScalar<S>>* sharedShadow, PointSummary& summary) {
   const BasicModel<S> model = convertModel<S>(given);
   const TwoMassFormOrProblem<S> formed = makeTwoMassForm(model);
   if (!formed.chain) {
@@ -174,7 +175,10 @@ bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& 
   }
   const double period = toDouble(S(twoPi<S>() / formed.chain->omegaSlow));
   const BasicChainStart<S> chainStart = pureModeStart(spec, values, *start);
-  if (shared) return summarizeRun(*shared, chainStart, spec.contacts, period, spec.estimateHorizon, raise, stop, summary);
+  if (shared) {
+    return summarizeRun(*shared, chainStart, spec.contacts, period, spec.estimateHorizon, raise, stop, summary,
+                        sharedShadow);
+  }
   return summarizeRun(readyChain(model), chainStart, spec.contacts, period, spec.estimateHorizon, raise, stop, summary);
 }
 
@@ -205,11 +209,14 @@ PointSummary pointOf(const MapSpec& spec, std::int64_t column, std::int64_t row,
   // precision auto: double, and the whole point again one precision up (model and start formed
   // there) when a contact is a touch its precision cannot tell from a crossing
   PointSummary summary;
-  if (summarizePoint<double>(spec, *model, values, true, stop, shared ? &shared->inDouble : nullptr, summary) ||
-      summarizePoint<long double>(spec, *model, values, true, stop, shared ? &shared->inLong : nullptr, summary)) {
+  if (summarizePoint<double>(spec, *model, values, true, stop, shared ? &shared->inDouble : nullptr,
+                             shared ? &shared->inLong : nullptr, summary) ||
+      summarizePoint<long double>(spec, *model, values, true, stop, shared ? &shared->inLong : nullptr,
+                                  shared ? &shared->inQuad : nullptr, summary)) {
     return summary;
   }
-  summarizePoint<Quad>(spec, *model, values, false, stop, shared ? &shared->inQuad : nullptr, summary);
+  // (binary128's shadow is binary128 on a scaled chain: made for it)
+  summarizePoint<Quad>(spec, *model, values, false, stop, shared ? &shared->inQuad : nullptr, nullptr, summary);
   return summary;
 }
 
@@ -217,7 +224,8 @@ PointSummary pointOf(const MapSpec& spec, std::int64_t column, std::int64_t row,
 
 template <typename S>
 bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start, std::int64_t contacts,
-                  double period, bool estimateHorizon, bool raise, std::stop_token stop, PointSummary& summary) {
+                  double period, bool estimateHorizon, bool raise, std::stop_token stop, PointSummary& summary,
+                  const BasicReadyChain<ShadowScalar<S>>* shadowChain) {
   using H = ShadowScalar<S>;
   const int s = chain.dynamics.stop;
   const bool startsOnStop = start.state.u[s] == chain.numbers.gap;
@@ -234,7 +242,7 @@ bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& sta
     if (estimateHorizon && chain.notes && !stillModes) {
       notes.emplace(convertModel<H>(*chain.notesModel),
                     BasicChainState<H>{start.state.u.template cast<H>(), start.state.v.template cast<H>()}, asked, H(0),
-                    TrustMode::Auto, stop, ExactParameters{true, true, true, true, true});
+                    TrustMode::Auto, stop, ExactParameters{true, true, true, true, true}, 0, shadowChain);
     } else if (estimateHorizon) {
       check.emplace(chain.numbers, start, asked, S(0), TrustMode::Auto, stop);
     }
@@ -465,7 +473,7 @@ MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parall
 
 #define GRAZELAB_INSTANTIATE(S)                                                                               \
   template bool summarizeRun<S>(const BasicReadyChain<S>&, const BasicChainStart<S>&, std::int64_t, double, bool, bool, \
-                                std::stop_token, PointSummary&);
+                                std::stop_token, PointSummary&, const BasicReadyChain<ShadowScalar<S>>*);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

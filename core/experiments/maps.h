@@ -13,6 +13,7 @@
 
 #include "core/model/model.h"
 #include "core/solver/chain_run.h"
+#include "core/solver/trust.h"
 #include "core/orbits/starts.h"
 
 namespace grazelab::core {
@@ -155,9 +156,12 @@ MapRows computeRows(std::int64_t columns, RowRange rows, const MapPoint& point, 
 /// TrustMonitor, for a run by the note's kernel; the chain's, ChainTrustCheck, otherwise). In S.
 /// Returns false, leaving `summary` alone, when the run met a contact S cannot decide and `raise`
 /// asks for a higher precision to decide it; without `raise` such a run is no run (NaN, -1).
+/// `shadowChain`: the same chain made ready one precision up, when the caller has it (the note's
+/// estimate then runs it rather than making it ready again).
 template <typename S>
 bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start, std::int64_t contacts,
-                  double period, bool estimateHorizon, bool raise, std::stop_token stop, PointSummary& summary);
+                  double period, bool estimateHorizon, bool raise, std::stop_token stop, PointSummary& summary,
+                  const BasicReadyChain<ShadowScalar<S>>* shadowChain = nullptr);
 
 /// Computes rows `rows` of the map. Precondition: checkMap(spec) is empty.
 MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parallelFor,

@@ -37,6 +37,10 @@ template <typename H>
 H shadowEnd(const Request& run) {
   return std::isfinite(run.tEnd) ? H(run.tEnd) : H(0);
 }
+// a search budget the run was given (0: the shadow precision's own default, as the run's)
+std::int64_t shadowSteps(const Request& run) {
+  return run.flightSearchSteps != defaultSearchSteps<double>() ? run.flightSearchSteps : 0;
+}
 
 // --precision auto's rule: the run again in S (long double, then binary128) from its start,
 // when double met a contact it cannot decide; with its own error estimate. Nothing when S
@@ -50,7 +54,7 @@ std::optional<std::pair<Result, Trust>> runRaised(const Spec& spec, bool lastRes
   // the parameters are doubles, exact as they stand
   TrustMonitor<S> monitor(convertModel<H>(spec.model), chainStateOf(convertState<H>(spec.run.initial)),
                           shadowContacts(spec.run), shadowEnd<H>(spec.run), TrustMode::Auto, stop,
-                          ExactParameters{true, true, true, true, true});
+                          ExactParameters{true, true, true, true, true}, shadowSteps(spec.run));
   raised.onEvent = [&monitor](const BasicEvent<S>& event) { monitor.observe(chainEventOf(event)); };
   const BasicResult<S> result = simulate(convertModel<S>(spec.model), raised, stop);
   if (result.stop == StopReason::Undecided || stop.stop_requested()) return std::nullopt;
@@ -246,7 +250,8 @@ Update run(const Spec& spec, std::stop_token stop, const Options& options,
   // the error estimate: a long double shadow of the same run, in lockstep, while it is cheap
   TrustMonitor<double> monitor(convertModel<long double>(spec.model),
                                chainStateOf(convertState<long double>(spec.run.initial)), shadowContacts(spec.run),
-                               shadowEnd<long double>(spec.run), TrustMode::Auto, stop);
+                               shadowEnd<long double>(spec.run), TrustMode::Auto, stop, ExactParameters{},
+                               shadowSteps(spec.run));
   // Up to this many contacts the shadow runs after the run is reported, on its events kept
   // meanwhile (~1.6 MB for 20 000); beyond, in lockstep, at no memory cost. The shadow took
   // 7/8 of a 20 000-contact run's time: a display no longer waits for it.

@@ -3,7 +3,9 @@
 #include "core/experiments/theorem_surveys.h"
 
 #include <algorithm>
+#include <optional>
 #include <random>
+#include <vector>
 
 #include "core/orbits/special_orbits.h"
 #include "core/solver/chain_run.h"
@@ -33,20 +35,51 @@ struct FlightFromStop {
   double fraction() const { return 1.0 - shortfall; }
 };
 
-// The one run of the note's chain made ready, from `start`, handing each flight from the stop to
-// `flight` (from a contact or a release, or from a start on the stop, to the next contact).
-template <typename Flight>
-ChainRun runFlights(const ReadyChain& chain, const State& start, std::int64_t contacts, double T2,
-                    std::stop_token stop, const Flight& flight) {
-  bool fromStop = start.u2 == chain.numbers.gap && start.v2 <= 0;
-  long contact = 0;
-  return runChain(chain, chainStateOf(start), long(contacts), 0.0, stop, [&](const ChainEvent& event) {
-    if (isContact(event.type)) {
-      if (fromStop && event.flight > 0) flight(FlightFromStop{contact, event.shortfall / T2});
-      ++contact;
-    }
-    fromStop = event.type != EventType::Stick;
-  });
+// The flights from the stop of a run (from a contact or a release, or from a start on the stop,
+// to the next contact), its contacts and how it ended.
+struct Flights {
+  std::vector<FlightFromStop> list;
+  long contacts = 0;
+  StopReason stop = StopReason::ContactLimit;
+};
+
+template <typename S>
+Flights flightsIn(const BasicReadyChain<S>& chain, const State& start, std::int64_t contacts, double T2,
+                  std::stop_token stop) {
+  Flights flights;
+  bool fromStop = start.u2 == toDouble(chain.numbers.gap) && start.v2 <= 0;
+  const BasicChainState<S> first{chainStateOf(start).u.template cast<S>(), chainStateOf(start).v.template cast<S>()};
+  const BasicChainRun<S> run =
+      runChain(chain, first, long(contacts), S(0), stop, [&](const BasicChainEvent<S>& event) {
+        if (isContact(event.type) && fromStop && event.flight > 0) {
+          flights.list.push_back({flights.contacts, toDouble(event.shortfall) / T2});
+        }
+        if (isContact(event.type)) ++flights.contacts;
+        fromStop = event.type != EventType::Stick;
+      });
+  flights.stop = run.stop;
+  return flights;
+}
+
+// The note's chain made ready in each precision, the wider ones when first needed.
+struct ReadyChains {
+  const Model& model;
+  ReadyChain inDouble = readyChain(model);
+  std::optional<BasicReadyChain<long double>> inLong = {};
+  std::optional<BasicReadyChain<Quad>> inQuad = {};
+};
+
+// The run from `start` in double, and again from its start in long double, then binary128, when
+// a contact is one its precision cannot decide (simulate's --precision auto): the flights of the
+// run that decided, or of binary128's up to the contact it cannot decide either.
+Flights runFlights(ReadyChains& chains, const State& start, std::int64_t contacts, double T2, std::stop_token stop) {
+  Flights flights = flightsIn(chains.inDouble, start, contacts, T2, stop);
+  if (flights.stop != StopReason::Undecided) return flights;
+  if (!chains.inLong) chains.inLong = readyChain(convertModel<long double>(chains.model));
+  flights = flightsIn(*chains.inLong, start, contacts, T2, stop);
+  if (flights.stop != StopReason::Undecided) return flights;
+  if (!chains.inQuad) chains.inQuad = readyChain(convertModel<Quad>(chains.model));
+  return flightsIn(*chains.inQuad, start, contacts, T2, stop);
 }
 
 }  // namespace
@@ -58,7 +91,7 @@ FlightSurvey surveyRandomStarts(const Model& model, int starts, std::int64_t con
   survey.counts.assign(std::size_t(std::max(1, bins)), 0);
   survey.binWidth = binWidth;
   const Modes modes = computeModes(model);
-  const ReadyChain chain = readyChain(model);
+  ReadyChains chains{model};
   std::mt19937_64 generator(seed);
   const double d = model.gap;
   const double speed = 1.5 * modes.omegaSlow * d;
@@ -68,13 +101,14 @@ FlightSurvey surveyRandomStarts(const Model& model, int starts, std::int64_t con
   for (int start = 0; start < starts; ++start) {
     if (stop.stop_requested()) return survey;
     const State initial{position(generator), below(generator), velocity(generator), velocity(generator)};
-    const ChainRun run = runFlights(chain, initial, contacts, modes.T2, stop, [&](const FlightFromStop& flight) {
+    const Flights run = runFlights(chains, initial, contacts, modes.T2, stop);
+    for (const FlightFromStop& flight : run.list) {
       ++survey.flights;
       survey.longest = std::max(survey.longest, flight.fraction());
       const int bin = std::clamp(int(flight.fraction() / binWidth), 0, int(survey.counts.size()) - 1);
       ++survey.counts[std::size_t(bin)];
-    });
-    if (run.contacts == 0) {
+    }
+    if (run.contacts == 0 && run.stop != StopReason::Undecided) {
       ++survey.neverTouch;
     } else if (run.contacts >= contacts) {
       ++survey.reachedLimit;
@@ -89,20 +123,21 @@ FlightSurvey surveyRandomStarts(const Model& model, int starts, std::int64_t con
 
 std::optional<double> largestShortfall(const Model& model, const State& start,
                                        std::int64_t contacts, std::stop_token stop) {
-  const double T2 = computeModes(model).T2;
-  double shortfall = 0;
-  runFlights(readyChain(model), start, contacts, T2, stop,
-             [&](const FlightFromStop& flight) { shortfall = std::max(shortfall, flight.shortfall); });
+  ReadyChains chains{model};
+  const Flights run = runFlights(chains, start, contacts, computeModes(model).T2, stop);
   if (stop.stop_requested()) return std::nullopt;
+  double shortfall = 0;
+  for (const FlightFromStop& flight : run.list) shortfall = std::max(shortfall, flight.shortfall);
   return shortfall;
 }
 
 std::vector<std::array<double, 2>> flightTimesOverT2(const Model& model, const State& start,
                                                      std::int64_t contacts, std::stop_token stop) {
-  const double T2 = computeModes(model).T2;
+  ReadyChains chains{model};
+  const Flights run = runFlights(chains, start, contacts, computeModes(model).T2, stop);
   std::vector<std::array<double, 2>> flights;
-  runFlights(readyChain(model), start, contacts, T2, stop,
-             [&](const FlightFromStop& flight) { flights.push_back({double(flight.contact), flight.fraction()}); });
+  flights.reserve(run.list.size());
+  for (const FlightFromStop& flight : run.list) flights.push_back({double(flight.contact), flight.fraction()});
   return flights;
 }
 

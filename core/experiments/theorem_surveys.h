@@ -16,6 +16,9 @@
 /// The computations behind the explorer's theorem scenes, as plain functions of the chain: the
 /// scenes (ui/scenes/) only word and draw what these return, and a test or the command line can
 /// call them alike. Each takes a stop token and returns early, marked incomplete, when stopped.
+/// Their runs are the one run of the chain (core/solver/chain_run.h), raised from double to long
+/// double, then binary128, where a contact is one the precision cannot decide (as simulate's
+/// --precision auto): a run binary128 cannot decide either ends there.
 namespace grazelab::core::experiments {
 
 /// Lemma 2.1: the highest u2 / d of the linear orbit GLO(lambda) over a period,

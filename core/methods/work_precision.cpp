@@ -195,7 +195,9 @@ Trust startTrust(const Task& task, std::stop_token stop) {
   request.needs.events = false;
   request.onEvent = [&monitor](const Event& event) { monitor.observe(chainEventOf(event)); };
   const Result result = simulate(task.model, request, stop);
-  return monitor.finish(chainTotalsOf(result));
+  Trust trust = monitor.finish(chainTotalsOf(result));
+  accountForUndecidedTouches(trust, result);  // (this run goes on through them)
+  return trust;
 }
 
 Trust startTrust(const ChainTask& task, std::stop_token stop) {

@@ -36,8 +36,10 @@ struct BasicChainEvent {
   /// the kernel computed it (not the difference of two rounded times), and how much shorter than
   /// the chain's period it is (the common period T, or the slowest mode's when not commensurate;
   /// exact where the note's kernel anchors the contact at the return after T, so that a flight
-  /// short of T by less than an ulp of T still shows it). 0 for an event that ends no flight (a
-  /// release, a stick, an impact at the instant of the event before).
+  /// short of T by less than an ulp of T still shows it). 0 for an event that ends no flight: a
+  /// release, an impact at the instant of the event before, and the modal kernel's sticks (a
+  /// stick there follows the contact or start it holds, at its instant; the note's kernel's
+  /// stick at the end of a flight carries that flight).
   S flight = {};
   S shortfall = {};
 };

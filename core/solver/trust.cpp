@@ -65,7 +65,8 @@ std::string_view toString(Verdict verdict) {
 template <typename S>
 TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicChainState<H>& start, long maxContacts,
                               std::type_identity_t<H> tEnd, TrustMode mode, std::stop_token stop,
-                              ExactParameters exact, std::int64_t searchSteps)
+                              ExactParameters exact, std::int64_t searchSteps,
+                              const BasicReadyChain<H>* shadowChain)
     : m_mode(mode), m_stop(std::move(stop)) {
   if (mode == TrustMode::Off) {
     m_active = false;
@@ -131,15 +132,21 @@ TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicChainState<
     m_active = false;
     return;
   }
-  BasicReadyChain<H> ready = readyChain(shadowModel);
-  m_shadowForm = ready.notes;
+  // the caller's chain of this model, made ready once, where the shadow runs it as it stands (one
+  // precision up: no scaling, no nudge); else made ready here for this shadow alone
+  const bool given = shadowChain && !std::is_same_v<S, H> && shadowChain->notesModel == shadowModel;
+  std::optional<BasicReadyChain<H>> ready;
+  if (!given) ready = readyChain(shadowModel);
+  m_shadowForm = given ? shadowChain->notes : ready->notes;
   // each shadow event, as the two masses' states before and after it (held until compared)
   const ChainEventSink<H> sink = [this](const BasicChainEvent<H>& event) {
     const BasicState<H> after{event.u[0], event.u[1], event.vBefore[0], event.vAfter};
     m_pending.push_back({event.t, event.type, {after.u1, after.u2, after.v1, event.vBefore[1]}, after});
   };
-  m_shadow = std::make_unique<BasicChainSimulator<H>>(std::move(ready), chainStateOf(x), maxContacts, shadowEnd, sink,
-                                                      ChainSampling<H>{}, searchSteps);
+  m_shadow = given ? std::make_unique<BasicChainSimulator<H>>(*shadowChain, chainStateOf(x), maxContacts, shadowEnd,
+                                                              sink, ChainSampling<H>{}, searchSteps)
+                   : std::make_unique<BasicChainSimulator<H>>(std::move(*ready), chainStateOf(x), maxContacts,
+                                                              shadowEnd, sink, ChainSampling<H>{}, searchSteps);
   m_omega = m_shadowForm->omegaSlow * m_timeFactor;  // in the primary's time
   m_period = twoPi<H>() / m_omega;
   using std::abs;
@@ -231,6 +238,14 @@ void TrustMonitor<S>::compare(const H& t, double stateError, double timeError) {
 }
 
 template <typename S>
+void TrustMonitor<S>::shadowUndecided() {
+  m_active = false;
+  m_shadowUndecided = true;
+  m_stopNote = "the shadow cannot decide the contact after t = " +
+               formatScalar(H(m_shadow->run().tFinal * m_timeFactor)) + ": compared up to there";
+}
+
+template <typename S>
 void TrustMonitor<S>::observe(const BasicChainEvent<S>& event) {
   ++m_observed;
   if (!shadowing()) return;
@@ -245,6 +260,12 @@ void TrustMonitor<S>::observe(const BasicChainEvent<S>& event) {
     // interrupted: the estimate holds up to here, the shadow took no other path
     m_active = false;
     m_stopNote = "the shadow was interrupted at event " + std::to_string(m_observed);
+    return;
+  }
+  if (!shadow && m_shadow->run().stop == StopReason::Undecided) {
+    // a contact the shadow cannot decide (a touch within its rounding, which a run of the same
+    // precision going on through its touches met too): compared up to there, the rest unconfirmed
+    shadowUndecided();
     return;
   }
   if (!shadow) {
@@ -317,6 +338,8 @@ template <typename S>
 Trust TrustMonitor<S>::finish(const BasicChainRun<S>& primary) {
   Trust trust = estimate(primary);
   if (trust.verdict == Verdict::Unreliable) arbitrate(primary, trust);
+  // past a contact the shadow cannot decide, nothing is confirmed: at best degraded
+  if (m_shadowUndecided && trust.verdict == Verdict::Ok) trust.verdict = Verdict::Degraded;
   if (primary.stop == StopReason::SearchBudget) {
     // the run stopped undecided: whatever came before holds, what follows is not known
     if (trust.verdict != Verdict::Unreliable) trust.verdict = Verdict::Degraded;
@@ -350,6 +373,8 @@ Trust TrustMonitor<S>::estimate(const BasicChainRun<S>& primary) {
     const BasicChainRun<H>& shadow = m_shadow->run();
     if (shadow.stop == StopReason::Cancelled) {
       m_stopNote = "the shadow was interrupted";
+    } else if (shadow.stop == StopReason::Undecided && m_pending.empty()) {
+      shadowUndecided();
     } else if (!m_pending.empty()) {
       m_failure = "the shadow run has a contact the run has not (t = " +
                   formatScalar(H(m_pending.front().t * m_timeFactor)) + ")";

@@ -90,10 +90,13 @@ class TrustMonitor {
   /// `model` and `start` are the run's chain and start read in precision H from the same input
   /// (so that the input's own rounding counts as error); `maxContacts`, `tEnd` (0: none) and
   /// `searchSteps` are the run's (runChain's). The shadow watches `stop` as the run does (an
-  /// interrupt ends both).
+  /// interrupt ends both). `shadowChain`: `model` made ready already (readyChain), which the
+  /// shadow then runs instead of making it ready again (a map's thousands of shadows, each an
+  /// eigensolve otherwise); it must outlive the monitor.
   TrustMonitor(const BasicModel<H>& model, const BasicChainState<H>& start, long maxContacts,
                std::type_identity_t<H> tEnd, TrustMode mode, std::stop_token stop = {},
-               ExactParameters exact = {}, std::int64_t searchSteps = 0);
+               ExactParameters exact = {}, std::int64_t searchSteps = 0,
+               const BasicReadyChain<H>* shadowChain = nullptr);
   TrustMonitor(const TrustMonitor&) = delete;
   TrustMonitor& operator=(const TrustMonitor&) = delete;
 
@@ -114,6 +117,8 @@ class TrustMonitor {
   /// through a near-tangent contact another way, a false alarm); short runs only.
   void arbitrate(const BasicChainRun<S>& primary, Trust& trust);
   bool shadowing() const { return m_shadow != nullptr && m_active; }
+  /// the shadow ended at a contact it cannot decide: the comparison stops there, no path taken
+  void shadowUndecided();
   bool withinBudget();
   std::optional<BasicEvent<H>> nextShadowEvent();
   void widenScales(const BasicState<H>& state);
@@ -136,6 +141,7 @@ class TrustMonitor {
   H m_tEnd = 0;
   std::deque<BasicEvent<H>> m_pending;  ///< shadow events not yet matched (at most a few)
   bool m_active = true;
+  bool m_shadowUndecided = false;
   std::string m_stopNote;  ///< why the shadow stopped early, if it did
   std::string m_failure;   ///< a structural mismatch (another event type, an extra contact)
   std::int64_t m_observed = 0;
