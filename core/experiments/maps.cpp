@@ -132,22 +132,33 @@ PointSummary invalidPoint() {
   return {kNaN, kNaN, kNaN, kNaN, -1, -1, -1, kNaN, kNaN, false};
 }
 
-// The start as the one run takes it: the fast mode's data alone (GLO_0, GLOM_1) left where it is
-// names the slow mode still, so that its touches at T1 = T2 / 2 are decided exactly (the modal
-// kernel keeps that mode at 0; the rounded state holds 1e-17 of it, a touch no precision decides).
-// The slow mode's (GLO_1) returns at T2, where the note's kernel anchors it exactly.
+// The start as the one run takes it: a pure mode's data left where it is names the modes that are
+// exactly still in it (stillModesOf: GLO_0 and the fast GLOM, whose touches at T1 are then
+// decided), as simulate's starts do
 template <typename S>
-BasicChainStart<S> pureModeStart(const MapSpec& spec, const PointValues& values, const BasicState<S>& start) {
-  using Kind = StartSpec<double>::Kind;
-  std::optional<double> lambda = values.of(MapVariable::Lambda);
-  if (!lambda && spec.start && spec.start->kind == Kind::Glo) lambda = spec.start->lambda;
-  const bool fastAlone =
-      lambda == 0.0 || (spec.start && spec.start->kind == Kind::Glom && spec.start->mode == Mode::Fast);
+BasicChainStart<S> pointChainStart(const MapSpec& spec, const TwoMassForm<S>& chain, const PointValues& values,
+                                   const BasicState<S>& start) {
+  BasicChainStart<S> chainStart(chainStateOf(start));
   const std::optional<double> epsilon = values.of(MapVariable::Epsilon);
   const bool pushed = epsilon ? *epsilon != 0 : spec.perturbation && !(*spec.perturbation == State{});
   const bool moved = isStartCoordinate(spec.x.variable) || isStartCoordinate(spec.y.variable);
-  BasicChainStart<S> chainStart(chainStateOf(start));
-  if (fastAlone && !pushed && !moved) chainStart.stillModes = {false, true};  // (fastest first)
+  if (pushed || moved) return chainStart;
+  // the point's start as a spec: the axis's GLO_lambda, or the map's own start
+  using Kind = typename StartSpec<S>::Kind;
+  using GivenKind = StartSpec<double>::Kind;
+  StartSpec<S> point;
+  point.kind = Kind::Explicit;
+  if (const std::optional<double> lambda = values.of(MapVariable::Lambda)) {
+    point.kind = Kind::Glo;
+    point.lambda = S(*lambda);
+  } else if (spec.start && spec.start->kind == GivenKind::Glo) {
+    point.kind = Kind::Glo;
+    point.lambda = S(spec.start->lambda);
+  } else if (spec.start && spec.start->kind == GivenKind::Glom) {
+    point.kind = Kind::Glom;
+    point.mode = spec.start->mode;
+  }
+  chainStart.stillModes = stillModesOf(chain, point);
   return chainStart;
 }
 
@@ -174,7 +185,7 @@ bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& 
     return true;
   }
   const double period = toDouble(S(twoPi<S>() / formed.chain->omegaSlow));
-  const BasicChainStart<S> chainStart = pureModeStart(spec, values, *start);
+  const BasicChainStart<S> chainStart = pointChainStart(spec, *formed.chain, values, *start);
   if (shared) {
     return summarizeRun(*shared, chainStart, spec.contacts, period, spec.estimateHorizon, raise, stop, summary,
                         sharedShadow);

@@ -57,11 +57,21 @@ StartOrProblem<S> makeStart(const TwoMassForm<S>& chain, const StartSpec<S>& spe
     if (!start.notes.empty()) start.description += " [partly lost in rounding]";
     start.state = perturbed;
   }
+  if (!spec.perturbation || *spec.perturbation == BasicState<S>{}) start.stillModes = stillModesOf(chain, spec);
   return {start, {}};
 }
 
+template <typename S>
+std::vector<bool> stillModesOf(const TwoMassForm<S>& chain, const StartSpec<S>& spec) {
+  using Kind = typename StartSpec<S>::Kind;
+  const bool fastAlone = (spec.kind == Kind::Glo && spec.lambda == 0) || (spec.kind == Kind::Glom && spec.mode == Mode::Fast);
+  if (!fastAlone || !chain.resonant) return {};
+  return {false, true};
+}
+
 #define GRAZELAB_INSTANTIATE(S)                                                                \
-  template StartOrProblem<S> makeStart<S>(const TwoMassForm<S>&, const StartSpec<S>&);
+  template StartOrProblem<S> makeStart<S>(const TwoMassForm<S>&, const StartSpec<S>&);                \
+  template std::vector<bool> stillModesOf<S>(const TwoMassForm<S>&, const StartSpec<S>&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

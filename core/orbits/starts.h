@@ -38,7 +38,18 @@ struct Start {
   BasicState<S> state;
   std::string description;         ///< e.g. "GLO_lambda data, lambda = 0.5 (as such: ...)"
   std::vector<std::string> notes;  ///< things the user should know (a perturbation lost in rounding)
+  /// the chain's modes (fastest first) exactly still in it: stillModesOf (a run keeps them so)
+  std::vector<bool> stillModes = {};
 };
+
+/// The modes of the note's chain exactly still in the start `spec` makes, left where it is (no
+/// perturbation), fastest first as a chain's start names them: the slow one in the fast mode's data
+/// alone (GLO_0, the fast GLOM) on a resonant chain, whose touches at T1 = T2 / 2 the rounded state
+/// cannot decide (it holds 1e-17 of the slow mode), so that a run decides them exactly (the modal
+/// kernel keeps that mode at 0); none otherwise (the slow mode alone returns at T2, where the
+/// note's kernel anchors its return exactly).
+template <typename S>
+std::vector<bool> stillModesOf(const TwoMassForm<S>& chain, const StartSpec<S>& spec);
 
 /// Either a start, or the one line saying why not.
 template <typename S>

@@ -246,6 +246,30 @@ assert d['trust']['estimated_time_error'] >= 1e-12, d['trust']
 assert 'written before the raise' in d['trust']['reason'], d['trust']['reason']" \
     || fail "estimate of events written before a raise"
 fi
+# the fast mode's data alone (GLO_0), unpushed, names the slow mode still: its touches at T1 =
+# T2/2 are decided exactly in every precision (the rounded state alone holds 1e-17 of the slow
+# mode, a touch no precision decides), on both branches and other masses; the map's lambda = 0
+# point is the same run
+for chain in "" "--branch lower --m2 0.3 --m1 1.7 --gap 0.4"; do
+  for precision in double long quad; do
+    # shellcheck disable=SC2086
+    if expect_ok simulate --glo 0 --contacts 6 --precision $precision $chain; then
+      python3 -c "
+import json; d=json.load(open('$out'))
+T2 = float(d['model']['T2'])
+assert d['stop_reason'] == 'contact-limit' and d['contacts']['grazings'] == 6, d['contacts']
+for k, e in enumerate(d['events'], 1):
+    assert abs(float(e['t']) - k * T2 / 2) <= 1e-12 * T2, (k, e['t'])
+assert d['trust']['verdict'] == 'ok', d['trust']" || fail "GLO_0 grazes at T1 ($precision $chain)"
+    fi
+  done
+  # shellcheck disable=SC2086
+  if expect_ok map --x lambda:0:1:3 --y epsilon:0:0:1 --contacts 6 $chain --out "$work/glo0map/m"; then
+    python3 -c "
+import csv; rows = list(csv.DictReader(open('$work/glo0map/m.csv')))
+assert rows[0]['grazings'] == '6' and rows[0]['impacts'] == '0', rows[0]" || fail "the map's GLO_0 point ($chain)"
+  fi
+done
 # an exhausted search is its own stop, never 'no contact'
 if expect_ok simulate --k2 1e-6 --state 0,0.999,0,0 --contacts 1 --search-steps 10; then
   python3 -c "

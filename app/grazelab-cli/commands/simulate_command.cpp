@@ -8,6 +8,7 @@
 
 #include <QStringList>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -162,7 +163,7 @@ std::optional<core::BasicChainStart<S>> notesStart(const OptionValues& options, 
   description = std::move(made.start->description);
   // core's notes on the start are about rounding: the command line can raise the precision
   for (const std::string& note : made.start->notes) notes.push_back(note + " (try --precision quad)");
-  return core::BasicChainStart<S>{core::chainStateOf(made.start->state), {}};
+  return core::BasicChainStart<S>{core::chainStateOf(made.start->state), made.start->stillModes};
 }
 
 // the most samples a json holds
@@ -572,7 +573,9 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
     std::optional<RunTrust<S>> check;
     if (format != Format::Csv) {
       check.emplace();
-      if (!ready.notesModel) {
+      // a start naming still modes is run by the modal kernel (BasicChainStart): the chain's estimate
+      const bool still = std::find(start->stillModes.begin(), start->stillModes.end(), true) != start->stillModes.end();
+      if (!ready.notesModel || still) {
         check->chain.emplace(shadowFor<S>(chain, *trustMode), *start, contacts, *limit, *trustMode, stop);
       } else if (*trustMode != core::TrustMode::Off) {
         // the note's shadow: the same input read one precision up, run by the note's simulator
