@@ -593,8 +593,9 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
           // double's digits): the chain's own estimate, by the modal kernel one precision up
           check->chain.emplace(shadowFor<S>(chain, *trustMode), *start, contacts, *limit, *trustMode, stop);
         } else if (upStart && upLimit) {
+          // (the chain read one precision up is made ready once, and its shadow runs it)
           check->notes.emplace(*up.value->notesModel, upStart->state, contacts, *upLimit, *trustMode, stop,
-                               exactParameters<H>(whole), searchSteps);
+                               exactParameters<H>(whole), searchSteps, &*up.value);
         } else {
           check->unavailable = "no shadow run: " + (up.value ? refusal.error : up.error).toStdString();
         }
