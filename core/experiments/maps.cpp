@@ -240,7 +240,6 @@ bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& sta
   using H = ShadowScalar<S>;
   const int s = chain.dynamics.stop;
   const bool startsOnStop = start.state.u[s] == chain.numbers.gap;
-  const bool stillModes = std::find(start.stillModes.begin(), start.stillModes.end(), true) != start.stillModes.end();
   // beyond the contacts asked for, the run goes on until its first flight from the stop has
   // ended (a start pressed on the stop sticks first): at most three contacts more, each try a
   // whole run (so that its error estimate sees a finished run)
@@ -250,7 +249,7 @@ bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& sta
     // map's parameters are the numbers it was given (no decimal was rounded to form them)
     std::optional<TrustMonitor<S>> notes;
     std::optional<ChainTrustCheck<S>> check;
-    if (estimateHorizon && chain.notes && !stillModes) {
+    if (estimateHorizon && takesTheNotesKernel(chain, start)) {
       notes.emplace(convertModel<H>(*chain.notesModel),
                     BasicChainState<H>{start.state.u.template cast<H>(), start.state.v.template cast<H>()}, asked, H(0),
                     TrustMode::Auto, stop, ExactParameters{true, true, true, true, true}, 0, shadowChain);

@@ -215,11 +215,8 @@ BasicChainSimulator<S>::BasicChainSimulator(std::optional<BasicReadyChain<S>> ow
       m_sampling(std::move(sampling)),
       m_state(start.state),
       m_stillModes(start.stillModes),
-      // a start naming still modes (GLOM_1 alone, say) takes the modal kernel, which keeps them
-      // still; the note's kernel has only the rounded state, which holds 1e-17 of them again
-      m_notes(std::find(start.stillModes.begin(), start.stillModes.end(), true) == start.stillModes.end()
-                  ? (given ? *given : *m_owned).notes
-                  : std::nullopt) {
+      m_notes(takesTheNotesKernel(given ? *given : *m_owned, start) ? (given ? *given : *m_owned).notes
+                                                                     : std::nullopt) {
   if (!m_notes) {
     m_run.energyInitial = chainEnergy(m_chain, start.state);
     return;

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -102,6 +103,14 @@ struct BasicReadyChain {
   std::optional<BasicModel<S>> notesModel = {};
 };
 using ReadyChain = BasicReadyChain<double>;
+
+/// Whether a run of `chain` from `start` takes the note's kernel: the chain has its form, and the
+/// start names no mode as exactly still (such a start is the modal kernel's, which keeps them so;
+/// the note's kernel has only the rounded state, which holds 1e-17 of them again).
+template <typename S>
+bool takesTheNotesKernel(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start) {
+  return chain.notes && std::find(start.stillModes.begin(), start.stillModes.end(), true) == start.stillModes.end();
+}
 
 /// Which kernel a chain's runs take: the note's wherever it applies, or the modal one always (to
 /// compare the two on the note's chain).

@@ -573,9 +573,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
     std::optional<RunTrust<S>> check;
     if (format != Format::Csv) {
       check.emplace();
-      // a start naming still modes is run by the modal kernel (BasicChainStart): the chain's estimate
-      const bool still = std::find(start->stillModes.begin(), start->stillModes.end(), true) != start->stillModes.end();
-      if (!ready.notesModel || still) {
+      if (!takesTheNotesKernel(ready, *start)) {
         check->chain.emplace(shadowFor<S>(chain, *trustMode), *start, contacts, *limit, *trustMode, stop);
       } else if (*trustMode != core::TrustMode::Off) {
         // the note's shadow: the same input read one precision up, run by the note's simulator
