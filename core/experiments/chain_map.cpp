@@ -9,7 +9,7 @@
 
 #include "core/orbits/chain_glo.h"
 #include "core/solver/chain_run.h"
-#include "core/solver/chain_trust.h"
+#include "core/solver/trust.h"
 
 namespace grazelab::core {
 namespace {

@@ -44,7 +44,7 @@ struct ChainMapSpec {
   ChainMapAxis y;    ///< rows
   std::int64_t contacts = 1;  ///< contacts of each run
   /// each point's predictability horizon from a shadow run one precision up (TrustMode::Auto,
-  /// compared event by event as the run goes: ChainTrustCheck); costs about 2x
+  /// compared event by event as the run goes: TrustMonitor); costs about 2x
   bool estimateHorizon = false;
 };
 

@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "core/solver/budget.h"
-#include "core/solver/chain_trust.h"
+#include "core/solver/trust.h"
 
 namespace grazelab::core::experiments {
 namespace {
@@ -55,6 +55,29 @@ BasicChainState<S> stateIn(const ChainState& state) {
   return in;
 }
 
+// The series' chain in S: a designed chain's design root refined for S's numbers, as the command
+// line runs it (where that fails, double's design widened: in the ratio to double's rounding)
+template <typename S>
+BasicMassChain<S> chainIn(const ChainSeriesSpec& spec) {
+  BasicMassChain<S> chain = chainCast<S>(spec.chain);
+  if constexpr (!std::is_same_v<S, double>) {
+    if (spec.design) {
+      if (const auto springs = designedSpringsIn<S>(chain.masses, chain.springs.front(), chain.rightSpring, *spec.design)) {
+        chain.springs = *springs;
+      }
+    }
+  }
+  return chain;
+}
+
+// The series' start in S, with the modes its GLO weights leave exactly still
+template <typename S>
+BasicChainStart<S> startIn(const ChainSeriesSpec& spec) {
+  BasicChainStart<S> start = stateIn<S>(spec.start);
+  for (double weight : spec.gloWeights) start.stillModes.push_back(weight == 0);
+  return start;
+}
+
 // The run of `spec` in S with its grid, reported as it grows; nothing when S cannot decide a
 // contact and a higher precision is left (`lastResort` false: `undecidedAt` is then where), or
 // on a stop.
@@ -76,18 +99,8 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
                              toDouble(S(state.v[chosen])), std::move(u)});
     };
   }
-  BasicMassChain<S> chain = chainCast<S>(spec.chain);
-  if constexpr (!std::is_same_v<S, double>) {
-    // a designed chain raised: its design's root refined for these numbers, as the command line
-    // runs it (where that fails, double's design widened: in the ratio to double's rounding)
-    if (spec.design) {
-      if (const auto springs = designedSpringsIn<S>(chain.masses, chain.springs.front(), chain.rightSpring, *spec.design)) {
-        chain.springs = *springs;
-      }
-    }
-  }
-  BasicChainStart<S> start = stateIn<S>(spec.start);
-  for (double weight : spec.gloWeights) start.stillModes.push_back(weight == 0);
+  const BasicMassChain<S> chain = chainIn<S>(spec);
+  const BasicChainStart<S> start = startIn<S>(spec);
   if (spec.free) {
     // one closed-form flight over the grid, through the stop if it goes there
     const BasicChainDynamics<S> dynamics = chainDynamicsIn<S>(chain);
@@ -99,7 +112,8 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
     series.run.stop = StopReason::TimeLimit;
     return series;
   }
-  BasicChainSimulator<S> simulator(readyChain(chain), start, spec.contacts, S(0), {}, sampling);
+  const BasicReadyChain<S> ready = readyChain(chain);
+  BasicChainSimulator<S> simulator(ready, start, spec.contacts, S(0), {}, sampling);
   // pieces sized in contacts, adapted to the measured speed so that each costs about
   // chunkSeconds; the first small, to show something at once
   std::int64_t budget = 16;
@@ -123,7 +137,22 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
     undecidedAt = toDouble(simulator.run().tFinal);
     return std::nullopt;
   }
-  series.trust = chainTrust(chain, start, simulator.run(), spec.contacts, S(0), spec.trust, stop);
+  // the run's error estimate: the chain and start read one precision up (binary128's shadow
+  // scaled), compared event by event
+  using H = ShadowScalar<S>;
+  std::optional<BasicReadyChain<H>> widened;
+  ChainShadow<S> shadow;
+  if (spec.trust != TrustMode::Off) {
+    if constexpr (std::is_same_v<S, H>) {
+      shadow = chainShadow<S>(ready);
+    } else {
+      widened = readyChain(chainIn<H>(spec));
+      shadow = chainShadow<S>(*widened);
+    }
+  }
+  TrustMonitor<S> monitor(shadow, startIn<H>(spec), spec.contacts, H(0), spec.trust, stop);
+  for (const BasicChainEvent<S>& event : simulator.run().events) monitor.observe(event);
+  series.trust = monitor.finish(simulator.run());
   series.run = inDouble(simulator.takeRun());
   series.flights = flightsOf(spec, series.run);
   return series;

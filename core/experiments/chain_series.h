@@ -26,7 +26,7 @@ struct ChainSeriesSpec {
   double window = 0;  ///< [time] the grid's span from t = 0 (0: none)
   int gridPoints = 1500;  ///< over `window`: the grid's step is window / (gridPoints - 1)
   int phaseMass = 0;                  ///< 1-based; 0: the stopped mass
-  TrustMode trust = TrustMode::Auto;  ///< the run's error estimate (core/solver/chain_trust.h)
+  TrustMode trust = TrustMode::Auto;  ///< the run's error estimate (core/solver/trust.h)
   /// the linear motion alone, the stop ignored (a grazing linear orbit that passes the stop is
   /// drawn passing it): the grid only, no run (no events, no flights)
   bool free = false;

@@ -6,11 +6,11 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "core/model/two_mass_form.h"
 #include "core/orbits/special_orbits.h"
 #include "core/solver/chain_run.h"
-#include "core/solver/chain_trust.h"
 #include "core/solver/trust.h"
 
 namespace grazelab::core {
@@ -167,8 +167,8 @@ BasicChainStart<S> pointChainStart(const MapSpec& spec, const TwoMassForm<S>& ch
 // S cannot decide and `raise` asks for a higher precision.
 template <typename S>
 bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& values, bool raise,
-                    std::stop_token stop, const BasicReadyChain<S>* shared,
-                    const BasicReadyChain<ShadowScalar<S>>* sharedShadow, PointSummary& summary) {
+                    std::stop_token stop, const BasicReadyChain<S>* shared, const ChainShadow<S>* sharedShadow,
+                    PointSummary& summary) {
   const BasicModel<S> model = convertModel<S>(given);
   const TwoMassFormOrProblem<S> formed = makeTwoMassForm(model);
   if (!formed.chain) {
@@ -194,21 +194,33 @@ bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& 
 }
 
 // The chain of a map whose axes leave the model alone (no mass-ratio, gap or detuning axis), made
-// ready once in each precision for all its points
+// ready once in each precision for all its points, and its shadows (which point into it: it
+// stays where it was made)
 struct SharedChains {
+  explicit SharedChains(const Model& model)
+      : inDouble(readyChain(model)),
+        inLong(readyChain(convertModel<long double>(model))),
+        inQuad(readyChain(convertModel<Quad>(model))),
+        ofDouble(chainShadow<double>(inLong)),
+        ofLong(chainShadow<long double>(inQuad)),
+        ofQuad(chainShadow<Quad>(inQuad)) {}
+  SharedChains(const SharedChains&) = delete;
+  SharedChains& operator=(const SharedChains&) = delete;
   BasicReadyChain<double> inDouble;
   BasicReadyChain<long double> inLong;
   BasicReadyChain<Quad> inQuad;
+  ChainShadow<double> ofDouble;
+  ChainShadow<long double> ofLong;
+  ChainShadow<Quad> ofQuad;
 };
 
-std::optional<SharedChains> sharedChains(const MapSpec& spec) {
+std::unique_ptr<const SharedChains> sharedChains(const MapSpec& spec) {
   for (const MapVariable variable : {MapVariable::MassRatio, MapVariable::Gap, MapVariable::Detuning}) {
-    if (spec.x.variable == variable || spec.y.variable == variable) return std::nullopt;
+    if (spec.x.variable == variable || spec.y.variable == variable) return nullptr;
   }
   const std::optional<Model> model = pointModel(spec, PointValues{spec, spec.x.at(0), spec.y.at(0)});
-  if (!model || !makeTwoMassForm(convertModel<Quad>(*model)).chain) return std::nullopt;
-  return SharedChains{readyChain(*model), readyChain(convertModel<long double>(*model)),
-                      readyChain(convertModel<Quad>(*model))};
+  if (!model || !makeTwoMassForm(convertModel<Quad>(*model)).chain) return nullptr;
+  return std::make_unique<const SharedChains>(*model);
 }
 
 // mapPoint, with the map's chains made ready once when it has them
@@ -221,13 +233,13 @@ PointSummary pointOf(const MapSpec& spec, std::int64_t column, std::int64_t row,
   // there) when a contact is a touch its precision cannot tell from a crossing
   PointSummary summary;
   if (summarizePoint<double>(spec, *model, values, true, stop, shared ? &shared->inDouble : nullptr,
-                             shared ? &shared->inLong : nullptr, summary) ||
+                             shared ? &shared->ofDouble : nullptr, summary) ||
       summarizePoint<long double>(spec, *model, values, true, stop, shared ? &shared->inLong : nullptr,
-                                  shared ? &shared->inQuad : nullptr, summary)) {
+                                  shared ? &shared->ofLong : nullptr, summary)) {
     return summary;
   }
-  // (binary128's shadow is binary128 on a scaled chain: made for it)
-  summarizePoint<Quad>(spec, *model, values, false, stop, shared ? &shared->inQuad : nullptr, nullptr, summary);
+  summarizePoint<Quad>(spec, *model, values, false, stop, shared ? &shared->inQuad : nullptr,
+                       shared ? &shared->ofQuad : nullptr, summary);
   return summary;
 }
 
@@ -236,8 +248,14 @@ PointSummary pointOf(const MapSpec& spec, std::int64_t column, std::int64_t row,
 template <typename S>
 bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start, std::int64_t contacts,
                   double period, bool estimateHorizon, bool raise, std::stop_token stop, PointSummary& summary,
-                  const BasicReadyChain<ShadowScalar<S>>* shadowChain) {
+                  const ChainShadow<S>* shadow) {
   using H = ShadowScalar<S>;
+  // the shadow, made here when the caller has none
+  std::optional<BasicReadyChain<H>> widened;
+  std::optional<ChainShadow<S>> made;
+  if (estimateHorizon && !shadow) shadow = &made.emplace(widenedShadow(chain, widened));
+  const BasicChainStart<H> shadowStart{{start.state.u.template cast<H>(), start.state.v.template cast<H>()},
+                                       start.stillModes};
   const int s = chain.dynamics.stop;
   const bool startsOnStop = start.state.u[s] == chain.numbers.gap;
   // beyond the contacts asked for, the run goes on until its first flight from the stop has
@@ -245,22 +263,12 @@ bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& sta
   // whole run (so that its error estimate sees a finished run)
   for (std::int64_t extra = 0; extra <= 3; ++extra) {
     const long asked = long(contacts + extra);
-    // the error estimate: the note's for a run by the note's kernel, the chain's otherwise; a
-    // map's parameters are the numbers it was given (no decimal was rounded to form them)
-    std::optional<TrustMonitor<S>> notes;
-    std::optional<ChainTrustCheck<S>> check;
-    if (estimateHorizon && takesTheNotesKernel(chain, start)) {
-      notes.emplace(convertModel<H>(*chain.notesModel),
-                    BasicChainState<H>{start.state.u.template cast<H>(), start.state.v.template cast<H>()}, asked, H(0),
-                    TrustMode::Auto, stop, ExactParameters{true, true, true, true, true}, 0, shadowChain);
-    } else if (estimateHorizon) {
-      check.emplace(chain.numbers, start, asked, S(0), TrustMode::Auto, stop);
-    }
+    std::optional<TrustMonitor<S>> monitor;
+    if (estimateHorizon) monitor.emplace(*shadow, shadowStart, asked, H(0), TrustMode::Auto, stop);
     // what the run's events make of the point as they come (one pointer captured: the sink needs
     // no allocation of its own)
     struct Seen {
-      std::optional<TrustMonitor<S>>& notes;
-      std::optional<ChainTrustCheck<S>>& check;
+      std::optional<TrustMonitor<S>>& monitor;
       // a flight from the stop: from a contact or a release (or a start on the stop) to the next
       // contact, as long as the kernel computed it
       bool fromStop;
@@ -268,10 +276,9 @@ bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& sta
       long flights = 0;
       // the first flight, the shortest, the longest, and the sum of the others' excess over it
       double first = 0, low = 0, high = 0, deviation = 0;
-    } seen{notes, check, startsOnStop && start.state.v[s] <= 0};
+    } seen{monitor, startsOnStop && start.state.v[s] <= 0};
     const ChainEventSink<S> sink = [at = &seen](const BasicChainEvent<S>& event) {
-      if (at->notes) at->notes->observe(event);
-      if (at->check) at->check->observe(event);
+      if (at->monitor) at->monitor->observe(event);
       if (event.type == EventType::Impact && std::isnan(at->firstImpact)) at->firstImpact = toDouble(event.t);
       if (isContact(event.type) && at->fromStop && event.flight > 0) {
         const double flight = toDouble(event.flight);
@@ -310,8 +317,8 @@ bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& sta
     summary.firstImpactTime =
         std::isnan(seen.firstImpact) && run.stop == StopReason::NoFurtherContact ? kInfinity : seen.firstImpact;
     summary.horizon = kNaN;
-    if ((notes || check) && run.stop != StopReason::Cancelled) {
-      const Trust trust = notes ? notes->finish(run) : check->finish(run);
+    if (monitor && run.stop != StopReason::Cancelled) {
+      const Trust trust = monitor->finish(run);
       if (trust.verdict != Verdict::Unchecked) summary.horizon = trust.horizon;
     }
     return true;
@@ -470,11 +477,11 @@ MapRows computeRows(std::int64_t columns, RowRange rows, const MapPoint& point, 
 
 MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parallelFor,
                std::stop_token stop, const MapRowsProgress& progress) {
-  const std::optional<SharedChains> shared = sharedChains(spec);
+  const std::unique_ptr<const SharedChains> shared = sharedChains(spec);
   MapRows map = computeRows(
       spec.x.count, rows,
       [&spec, &shared](std::int64_t column, std::int64_t row, std::stop_token pointStop) {
-        return pointOf(spec, column, row, pointStop, shared ? &*shared : nullptr);
+        return pointOf(spec, column, row, pointStop, shared.get());
       },
       invalidPoint(), parallelFor, stop, progress);
   map.period = basePeriod(spec.model);
@@ -483,7 +490,7 @@ MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parall
 
 #define GRAZELAB_INSTANTIATE(S)                                                                               \
   template bool summarizeRun<S>(const BasicReadyChain<S>&, const BasicChainStart<S>&, std::int64_t, double, bool, bool, \
-                                std::stop_token, PointSummary&, const BasicReadyChain<ShadowScalar<S>>*);
+                                std::stop_token, PointSummary&, const ChainShadow<S>*);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

@@ -152,16 +152,15 @@ MapRows computeRows(std::int64_t columns, RowRange rows, const MapPoint& point, 
 /// The summary of one run of a chain made ready (any chain; the note's by its kernel) from
 /// `start`: `contacts` contacts and, until its first flight from the stop has ended, up to three
 /// more (a start pressed on the stop sticks first); the free-flight times as the kernel computed
-/// them, over `period`; with `estimateHorizon`, the horizon of its error estimate (the note's,
-/// TrustMonitor, for a run by the note's kernel; the chain's, ChainTrustCheck, otherwise). In S.
-/// Returns false, leaving `summary` alone, when the run met a contact S cannot decide and `raise`
-/// asks for a higher precision to decide it; without `raise` such a run is no run (NaN, -1).
-/// `shadowChain`: the same chain made ready one precision up, when the caller has it (the note's
-/// estimate then runs it rather than making it ready again).
+/// them, over `period`; with `estimateHorizon`, the horizon of its error estimate (TrustMonitor).
+/// In S. Returns false, leaving `summary` alone, when the run met a contact S cannot decide and
+/// `raise` asks for a higher precision to decide it; without `raise` such a run is no run (NaN,
+/// -1). `shadow`: the chain's shadow, when the caller made it once for many runs (else made here
+/// from the chain widened: a map's parameters are the numbers it was given, read exactly).
 template <typename S>
 bool summarizeRun(const BasicReadyChain<S>& chain, const BasicChainStart<S>& start, std::int64_t contacts,
                   double period, bool estimateHorizon, bool raise, std::stop_token stop, PointSummary& summary,
-                  const BasicReadyChain<ShadowScalar<S>>* shadowChain = nullptr);
+                  const ChainShadow<S>* shadow = nullptr);
 
 /// Computes rows `rows` of the map. Precondition: checkMap(spec) is empty.
 MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parallelFor,

@@ -52,9 +52,10 @@ std::optional<std::pair<Result, Trust>> runRaised(const Spec& spec, bool lastRes
   BasicRequest<S> raised = convertRequest<S>(spec.run);
   raised.stopAtUndecided = !lastResort;
   // the parameters are doubles, exact as they stand
-  TrustMonitor<S> monitor(convertModel<H>(spec.model), chainStateOf(convertState<H>(spec.run.initial)),
-                          shadowContacts(spec.run), shadowEnd<H>(spec.run), TrustMode::Auto, stop,
-                          ExactParameters{true, true, true, true, true}, shadowSteps(spec.run));
+  const BasicReadyChain<H> input = readyChain(convertModel<H>(spec.model));
+  const ChainShadow<S> shadow = chainShadow<S>(input);
+  TrustMonitor<S> monitor(shadow, chainStateOf(convertState<H>(spec.run.initial)), shadowContacts(spec.run),
+                          shadowEnd<H>(spec.run), TrustMode::Auto, stop, shadowSteps(spec.run));
   raised.onEvent = [&monitor](const BasicEvent<S>& event) { monitor.observe(chainEventOf(event)); };
   const BasicResult<S> result = simulate(convertModel<S>(spec.model), raised, stop);
   if (result.stop == StopReason::Undecided || stop.stop_requested()) return std::nullopt;
@@ -248,9 +249,10 @@ Update run(const Spec& spec, std::stop_token stop, const Options& options,
            const std::function<void(const Update&)>& report) {
   if (!spec.chains.empty()) return runChains(spec, stop, options, report);
   // the error estimate: a long double shadow of the same run, in lockstep, while it is cheap
-  TrustMonitor<double> monitor(convertModel<long double>(spec.model),
-                               chainStateOf(convertState<long double>(spec.run.initial)), shadowContacts(spec.run),
-                               shadowEnd<long double>(spec.run), TrustMode::Auto, stop, ExactParameters{},
+  const BasicReadyChain<long double> input = readyChain(convertModel<long double>(spec.model));
+  const ChainShadow<double> shadow = chainShadow<double>(input);
+  TrustMonitor<double> monitor(shadow, chainStateOf(convertState<long double>(spec.run.initial)),
+                               shadowContacts(spec.run), shadowEnd<long double>(spec.run), TrustMode::Auto, stop,
                                shadowSteps(spec.run));
   // Up to this many contacts the shadow runs after the run is reported, on its events kept
   // meanwhile (~1.6 MB for 20 000); beyond, in lockstep, at no memory cost. The shadow took

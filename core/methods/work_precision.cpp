@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "core/solver/chain_run.h"
-#include "core/solver/chain_trust.h"
+#include "core/solver/trust.h"
 #include "core/solver/simulate.h"
 
 namespace grazelab::core::methods {
@@ -185,9 +185,10 @@ const WorkPrecisionPoint* cheapestReaching(const std::vector<WorkPrecisionPoint>
 }
 
 Trust startTrust(const Task& task, std::stop_token stop) {
-  TrustMonitor<double> monitor(convertModel<long double>(task.model),
-                               chainStateOf(convertState<long double>(task.start)), std::numeric_limits<long>::max(),
-                               task.tEnd, TrustMode::Full);
+  const BasicReadyChain<long double> input = readyChain(convertModel<long double>(task.model));
+  const ChainShadow<double> shadow = chainShadow<double>(input);
+  TrustMonitor<double> monitor(shadow, chainStateOf(convertState<long double>(task.start)),
+                               std::numeric_limits<long>::max(), task.tEnd, TrustMode::Full);
   Request request;
   request.initial = task.start;
   request.tEnd = task.tEnd;
@@ -202,8 +203,14 @@ Trust startTrust(const Task& task, std::stop_token stop) {
 
 Trust startTrust(const ChainTask& task, std::stop_token stop) {
   const ChainStart start{task.start, task.stillModes};
-  const ChainRun run = runChain(task.chain, start, std::numeric_limits<long>::max(), task.tEnd, stop);
-  return chainTrust(task.chain, start, run, std::numeric_limits<long>::max(), task.tEnd, TrustMode::Full, stop);
+  const ReadyChain chain = readyChain(task.chain);
+  std::optional<BasicReadyChain<long double>> widened;
+  const ChainShadow<double> shadow = widenedShadow(chain, widened);
+  TrustMonitor<double> monitor(shadow, {{task.start.u.cast<long double>(), task.start.v.cast<long double>()}, task.stillModes},
+                               std::numeric_limits<long>::max(), task.tEnd, TrustMode::Full, stop);
+  const ChainRun run = runChain(chain, start, std::numeric_limits<long>::max(), task.tEnd, stop,
+                                [&monitor](const ChainEvent& event) { monitor.observe(event); });
+  return monitor.finish(run);
 }
 
 namespace {

@@ -19,14 +19,6 @@ std::string scientific(double value) {
   return text;
 }
 
-// a shadow state back in the primary's units
-template <typename H>
-BasicState<H> scaled(const BasicState<H>& state, const H& length, const H& time) {
-  if (length == 1 && time == 1) return state;
-  const H speed = length * time;
-  return {state.u1 / length, state.u2 / length, state.v1 / speed, state.v2 / speed};
-}
-
 }  // namespace
 
 std::string_view toString(TrustMode mode) {
@@ -63,95 +55,139 @@ std::string_view toString(Verdict verdict) {
 }
 
 template <typename S>
-TrustMonitor<S>::TrustMonitor(const BasicModel<H>& model, const BasicChainState<H>& start, long maxContacts,
-                              std::type_identity_t<H> tEnd, TrustMode mode, std::stop_token stop,
-                              ExactParameters exact, std::int64_t searchSteps,
-                              const BasicReadyChain<H>* shadowChain)
-    : m_mode(mode), m_stop(std::move(stop)) {
-  if (mode == TrustMode::Off) {
-    m_active = false;
-    return;
-  }
-  BasicModel<H> shadowModel = model;
-  BasicState<H> x = twoMassStateOf(start);
-  H shadowEnd = tEnd;
-  if constexpr (std::is_same_v<S, double>) {
-    m_inputModel = model;
-    m_inputStart = start;
-    m_maxContacts = maxContacts;
-    m_tEnd = tEnd;
-  }
+ChainShadow<S> chainShadow(const BasicReadyChain<ShadowScalar<S>>& input, ExactParameters exact) {
+  using H = ShadowScalar<S>;
+  ChainShadow<S> shadow;
+  shadow.input = &input;
+  shadow.exact = std::move(exact);
   if constexpr (std::is_same_v<S, H>) {
     // no wider type: the same precision on a chain 3 times as large, 5 times as heavy and
     // sqrt(3) times as fast rounds every length, speed and time differently, and the chain's
     // own constants too (the physics is scale-free)
     using std::sqrt;
-    m_lengthFactor = 3;
-    m_timeFactor = sqrt(H(3));
-    const H speedFactor = m_lengthFactor * m_timeFactor;
-    shadowModel.gap *= m_lengthFactor;
-    shadowModel.m1 *= 5;
-    shadowModel.m2 *= 5;
-    shadowModel.k1 *= 15;  // k / m, and w^2, 3 times larger: times by 1 / sqrt(3)
-    shadowModel.k2 *= 15;
-    x = {x.u1 * m_lengthFactor, x.u2 * m_lengthFactor, x.v1 * speedFactor, x.v2 * speedFactor};
-    // the shadow read the same decimal input in the same precision, so it shares its rounding;
-    // a nudge of one rounding (never across the stop, never changing a sign) puts the input's
-    // representation into the estimate, as a wider shadow does by reading it afresh: of the
-    // state, and of the chain (a mass ratio near 9/16 amplifies its rounding ~1e7 in the
-    // designed k2; m2/m1 is nudged down, toward the feasible side of the design)
-    using std::abs;
-    // a read is off by at most half an ulp, but a nudge that small is undone by the roundings
-    // that follow (x (1 + 2^-113) rounds back to x; k2 * 15 / 15 rounds back to k2): the shadow
-    // then had the run's own chain and missed its dominant error (a detuned chain amplifying
-    // k2/k1's rounding to 6e-16 T2 in 20 contacts, estimated 1e-18). Four ulps survive them.
-    // (the chain's parameters). The state keeps the half-ulp nudge: its rounding mostly stays,
-    // and a whole ulp off a periodic orbit (1IPP) drifted 1000 times further than the run did
+    shadow.length = 3;
+    shadow.time = sqrt(H(3));
+    // the shadow read the same decimal input in the same precision, so it shares its rounding; a
+    // nudge of one rounding puts the input's representation into the estimate, as a wider shadow
+    // does by reading it afresh (a mass ratio near 9/16 amplifies its rounding ~1e7 in the
+    // note's designed k2; m2/m1 is nudged down, toward the feasible side of the design). A read
+    // is off by at most half an ulp, but a nudge that small is undone by the roundings that
+    // follow (x (1 + 2^-113) rounds back to x; k2 * 15 / 15 rounds back to k2): the shadow then
+    // had the run's own chain and missed its dominant error (a detuned chain amplifying k2/k1's
+    // rounding to 6e-16 T2 in 20 contacts, estimated 1e-18). Four ulps survive them.
     const H eps = H(4) * epsilon<H>();
-    const H stateEps = epsilon<H>() / H(2);
-    const bool onStop = x.u2 == shadowModel.gap;
-    if (!exact.m1) shadowModel.m1 += shadowModel.m1 * eps;
-    if (!exact.m2) shadowModel.m2 -= shadowModel.m2 * eps;
-    if (!exact.k1) shadowModel.k1 += shadowModel.k1 * eps;
-    if (!exact.k2) shadowModel.k2 -= shadowModel.k2 * eps;
-    if (!exact.gap) shadowModel.gap += shadowModel.gap * eps;
-    x.u1 += abs(x.u1) * stateEps;
-    x.u2 = onStop ? shadowModel.gap : H(x.u2 - abs(x.u2) * stateEps);
-    x.v1 -= x.v1 * stateEps;
-    x.v2 += x.v2 * stateEps;
-    shadowEnd = tEnd / m_timeFactor;
+    const ExactParameters& read = shadow.exact;
+    // odd masses and springs (1-based) nudged up, even ones down; the right spring and gap up
+    const auto nudge = [&](H& value, const std::vector<bool>& exactly, std::size_t i) {
+      if (i < exactly.size() && !exactly[i]) value += (i % 2 == 0 ? value : H(-value)) * eps;
+    };
+    if (input.notesModel) {
+      // the note's chain scaled as its model, which keeps its 1:2 design exact (k2 designed
+      // again for the nudged masses)
+      BasicModel<H> model = *input.notesModel;
+      model.gap *= shadow.length;
+      model.m1 *= 5;
+      model.m2 *= 5;
+      model.k1 *= 15;  // k / m, and w^2, 3 times larger: times by 1 / sqrt(3)
+      model.k2 *= 15;
+      nudge(model.m1, read.masses, 0);
+      nudge(model.m2, read.masses, 1);
+      nudge(model.k1, read.springs, 0);
+      nudge(model.k2, read.springs, 1);
+      if (!read.gap) model.gap += model.gap * eps;
+      std::vector<Problem> problems = validate(model);
+      if (problems.empty() && !makeTwoMassForm(model).chain) problems.push_back({"model", "no two-mass form"});
+      if (!problems.empty()) {
+        shadow.problem = describe(problems);
+        return shadow;
+      }
+      shadow.scaledChain = readyChain(model);
+    } else {
+      BasicMassChain<H> chain = input.numbers;
+      for (std::size_t i = 0; i < chain.masses.size(); ++i) {
+        chain.masses[i] *= 5;
+        chain.springs[i] *= 15;
+        nudge(chain.masses[i], read.masses, i);
+        nudge(chain.springs[i], read.springs, i);
+      }
+      chain.rightSpring *= 15;
+      chain.gap *= shadow.length;
+      if (!read.rightSpring) chain.rightSpring += chain.rightSpring * eps;
+      if (!read.gap) chain.gap += chain.gap * eps;
+      shadow.scaledChain = readyChain(chain);
+    }
   }
-  std::vector<Problem> problems = validate(shadowModel);
-  for (Problem& problem : validateState(shadowModel, x, "initial")) problems.push_back(std::move(problem));
-  if (problems.empty()) {
-    TwoMassFormOrProblem<H> formed = makeTwoMassForm(shadowModel);
-    if (!formed.chain) problems.push_back({"model", formed.problem});
-  }
-  if (!problems.empty()) {
-    m_stopNote = "the shadow run could not start (" + describe(problems) + ")";
+  return shadow;
+}
+
+template <typename S>
+TrustMonitor<S>::TrustMonitor(const ChainShadow<S>& shadow, const BasicChainStart<H>& start, long maxContacts,
+                              std::type_identity_t<H> tEnd, TrustMode mode, std::stop_token stop,
+                              std::int64_t searchSteps)
+    : m_chain(&shadow),
+      m_mode(mode),
+      m_stop(std::move(stop)),
+      m_inputStart(start),
+      m_maxContacts(maxContacts),
+      m_tEnd(tEnd),
+      m_searchSteps(searchSteps) {
+  if (mode == TrustMode::Off) {
     m_active = false;
     return;
   }
-  // the caller's chain of this model, made ready once, where the shadow runs it as it stands (one
-  // precision up: no scaling, no nudge); else made ready here for this shadow alone
-  const bool given = shadowChain && !std::is_same_v<S, H> && shadowChain->notesModel == shadowModel;
-  std::optional<BasicReadyChain<H>> ready;
-  if (!given) ready = readyChain(shadowModel);
-  m_shadowForm = given ? shadowChain->notes : ready->notes;
-  // each shadow event, as the two masses' states before and after it (held until compared)
-  const ChainEventSink<H> sink = [this](const BasicChainEvent<H>& event) {
-    const BasicState<H> after{event.u[0], event.u[1], event.vBefore[0], event.vAfter};
-    m_pending.push_back({event.t, event.type, {after.u1, after.u2, after.v1, event.vBefore[1]}, after});
-  };
-  m_shadow = given ? std::make_unique<BasicChainSimulator<H>>(*shadowChain, chainStateOf(x), maxContacts, shadowEnd,
-                                                              sink, ChainSampling<H>{}, searchSteps)
-                   : std::make_unique<BasicChainSimulator<H>>(std::move(*ready), chainStateOf(x), maxContacts,
-                                                              shadowEnd, sink, ChainSampling<H>{}, searchSteps);
-  m_omega = m_shadowForm->omegaSlow * m_timeFactor;  // in the primary's time
+  if (!shadow.usable()) {
+    m_stopNote = "the shadow run could not start (" + (shadow.problem.empty() ? std::string("no shadow chain") : shadow.problem) + ")";
+    m_active = false;
+    return;
+  }
+  const BasicReadyChain<H>& ready = shadow.ready();
+  const Eigen::Index s = ready.dynamics.stop;
+  m_stopped = s;
+  BasicChainStart<H> x = start;
+  H shadowEnd = tEnd;
+  if constexpr (std::is_same_v<S, H>) {
+    const H speed = shadow.length * shadow.time;
+    x.state.u *= shadow.length;
+    x.state.v *= speed;
+    if (!shadow.exact.start) {
+      // the state keeps a half-ulp nudge (never across the stop, never changing a sign): its
+      // rounding mostly stays, and a whole ulp off a periodic orbit (1IPP) drifted 1000 times
+      // further than the run did
+      using std::abs;
+      const H stateEps = epsilon<H>() / H(2);
+      // (on the stop as read: a start there stays on the stop, the nudged one)
+      const bool onStop = x.state.u[s] == H(shadow.input->numbers.gap * shadow.length);
+      for (Eigen::Index i = 0; i < x.state.u.size(); ++i) {
+        H& u = x.state.u[i];
+        H& v = x.state.v[i];
+        if (i == s) {
+          u = onStop ? ready.numbers.gap : H(u - abs(u) * stateEps);
+          v += v * stateEps;
+        } else {
+          u += abs(u) * stateEps;
+          v -= v * stateEps;
+        }
+      }
+    }
+    shadowEnd = tEnd / shadow.time;
+  }
+  if (!x.state.u.allFinite() || !x.state.v.allFinite() || !(x.state.u[s] <= ready.numbers.gap)) {
+    m_stopNote = "the shadow run could not start (its start is not finite and below the stop)";
+    m_active = false;
+    return;
+  }
+  // each shadow event, held until compared
+  const ChainEventSink<H> sink = [this](const BasicChainEvent<H>& event) { m_pending.push_back(event); };
+  m_shadow = std::make_unique<BasicChainSimulator<H>>(ready, x, maxContacts, shadowEnd, sink, ChainSampling<H>{},
+                                                      searchSteps);
+  // the slowest angular frequency in the primary's time (the note's from its closed form)
+  m_omega = (ready.notes ? ready.notes->omegaSlow : H(ready.dynamics.omega.minCoeff())) * shadow.time;
   m_period = twoPi<H>() / m_omega;
   using std::abs;
-  m_scale[1] = abs(model.gap);
-  widenScales(twoMassStateOf(start));
+  m_scaleU = Vector::Zero(start.state.u.size());
+  m_scaleV = Vector::Zero(start.state.v.size());
+  m_scaleU[s] = abs(shadow.input->numbers.gap);
+  widenScales({start.state.u, start.state.v});
 }
 
 template <typename S>
@@ -166,55 +202,50 @@ std::string TrustMonitor<S>::shadowName() const {
 }
 
 template <typename S>
-void TrustMonitor<S>::widenScales(const BasicState<H>& state) {
-  using std::abs;
-  using std::max;
-  m_scale[0] = max(m_scale[0], abs(state.u1));
-  m_scale[1] = max(m_scale[1], abs(state.u2));
-  m_scale[2] = max(m_scale[2], abs(state.v1));
-  m_scale[3] = max(m_scale[3], abs(state.v2));
+typename TrustMonitor<S>::Point TrustMonitor<S>::fromShadow(const ChainVector<H>& u, const ChainVector<H>& v) const {
+  if (m_chain->length == 1 && m_chain->time == 1) return {u, v};
+  const H speed = m_chain->length * m_chain->time;
+  return {u / m_chain->length, v / speed};
 }
 
 template <typename S>
-double TrustMonitor<S>::relativeStateError(const BasicState<H>& primary,
-                                           const BasicState<H>& shadow) const {
+void TrustMonitor<S>::widenScales(const Point& state) {
+  m_scaleU = m_scaleU.cwiseMax(state.u.cwiseAbs());
+  m_scaleV = m_scaleV.cwiseMax(state.v.cwiseAbs());
+}
+
+template <typename S>
+double TrustMonitor<S>::relativeStateError(const Point& primary, const Point& shadow) const {
   using std::abs;
   using std::max;
   // each component against its own scale, floored at 1e-3 of its kind (positions, velocities)
   // so that a component that stays near zero does not turn rounding into a large error
-  const H positions = max(m_scale[0], m_scale[1]);
-  const H velocities = max(max(m_scale[2], m_scale[3]), H(m_omega * positions));
-  const H floors[4] = {positions, positions, velocities, velocities};
-  const H differences[4] = {abs(primary.u1 - shadow.u1), abs(primary.u2 - shadow.u2),
-                            abs(primary.v1 - shadow.v1), abs(primary.v2 - shadow.v2)};
+  const H positions = m_scaleU.maxCoeff();
+  const H velocities = max(H(m_scaleV.maxCoeff()), H(m_omega * positions));
   double worst = 0;
-  for (int i = 0; i < 4; ++i) {
-    const H scale = max(m_scale[i], H(floors[i] / H(1000)));
-    if (scale > 0) worst = std::max(worst, toDouble(H(differences[i] / scale)));
-  }
+  const auto against = [&](const Vector& a, const Vector& b, const Vector& scales, const H& floor) {
+    for (Eigen::Index i = 0; i < a.size(); ++i) {
+      const H scale = max(scales[i], H(floor / H(1000)));
+      if (scale > 0) worst = std::max(worst, toDouble(H(abs(a[i] - b[i]) / scale)));
+    }
+  };
+  against(primary.u, shadow.u, m_scaleU, positions);
+  against(primary.v, shadow.v, m_scaleV, velocities);
   return worst;
 }
 
 template <typename S>
-bool TrustMonitor<S>::withinBudget() {
-  if (m_mode == TrustMode::Full) return true;
-  // auto: the shadow covers a number of events fixed by the precisions alone, so that the same
-  // run always gets the same estimate (a wall-clock budget gave 9e7 one time and 4e8 the next):
-  // about twice the run's own cost, at most a second or so (a long double shadow costs about
-  // as much as the double run; binary128 about fifteen times a long double run)
-  constexpr std::int64_t kEvents = std::is_same_v<S, double> ? (1 << 18) : std::is_same_v<S, long double> ? (1 << 14) : (1 << 16);
-  return m_observed <= kEvents;
+bool TrustMonitor<S>::withinBudget() const {
+  return m_mode == TrustMode::Full || m_observed <= autoShadowEvents<S>();
 }
 
 template <typename S>
-std::optional<BasicEvent<typename TrustMonitor<S>::H>> TrustMonitor<S>::nextShadowEvent() {
+std::optional<BasicChainEvent<typename TrustMonitor<S>::H>> TrustMonitor<S>::nextShadowEvent() {
   while (m_pending.empty() && !m_shadow->done()) m_shadow->advance(1, m_stop);
   if (m_pending.empty()) return std::nullopt;
-  BasicEvent<H> event = m_pending.front();
+  BasicChainEvent<H> event = std::move(m_pending.front());
   m_pending.pop_front();
-  event.t *= m_timeFactor;
-  event.before = scaled(event.before, m_lengthFactor, m_timeFactor);
-  event.after = scaled(event.after, m_lengthFactor, m_timeFactor);
+  event.t *= m_chain->time;
   return event;
 }
 
@@ -242,7 +273,7 @@ void TrustMonitor<S>::shadowUndecided() {
   m_active = false;
   m_shadowUndecided = true;
   m_stopNote = "the shadow cannot decide the contact after t = " +
-               formatScalar(H(m_shadow->run().tFinal * m_timeFactor)) + ": compared up to there";
+               formatScalar(H(m_shadow->run().tFinal * m_chain->time)) + ": compared up to there";
 }
 
 template <typename S>
@@ -255,7 +286,7 @@ void TrustMonitor<S>::observe(const BasicChainEvent<S>& event) {
                  " events (--trust auto keeps it cheap)";
     return;
   }
-  const std::optional<BasicEvent<H>> shadow = nextShadowEvent();
+  const std::optional<BasicChainEvent<H>> shadow = nextShadowEvent();
   if (!shadow && m_stop.stop_requested()) {
     // interrupted: the estimate holds up to here, the shadow took no other path
     m_active = false;
@@ -281,65 +312,106 @@ void TrustMonitor<S>::observe(const BasicChainEvent<S>& event) {
     m_active = false;
     return;
   }
-  const BasicState<H> after{H(event.u[0]), H(event.u[1]), H(event.vBefore[0]), H(event.vAfter)};
-  const BasicState<H> before{after.u1, after.u2, after.v1, H(event.vBefore[1])};
-  widenScales(shadow->before);
-  widenScales(shadow->after);
+  // the states before and after the event (the stopped mass's velocity changes; a release or a
+  // stick's end changes nothing of them)
+  const Point before{event.u.template cast<H>(), event.vBefore.template cast<H>()};
+  Point after = before;
+  after.v[m_stopped] = H(event.vAfter);
+  Vector shadowVAfter = shadow->vBefore;
+  shadowVAfter[m_stopped] = shadow->vAfter;
+  const Point shadowBefore = fromShadow(shadow->u, shadow->vBefore);
+  const Point shadowAfter = fromShadow(shadow->u, shadowVAfter);
+  widenScales(shadowBefore);
+  widenScales(shadowAfter);
   using std::abs;
-  const double stateError = std::max(relativeStateError(before, shadow->before),
-                                     relativeStateError(after, shadow->after));
+  const double stateError = std::max(relativeStateError(before, shadowBefore),
+                                     relativeStateError(after, shadowAfter));
   const double timeError = toDouble(H(abs(H(event.t) - shadow->t) / m_period));
   compare(H(event.t), stateError, timeError);
+  ++m_compared;
 }
 
 template <typename S>
 double TrustMonitor<S>::phaseRounding(const BasicChainRun<S>& primary) const {
   using std::abs;
-  const TwoMassForm<H>& chain = *m_shadowForm;
-  const BasicState<H> x = convertState<H>(twoMassStateOf(primary.final));
+  const Point x{primary.final.u.template cast<H>(), primary.final.v.template cast<H>()};
   const H dt = H(epsilon<S>()) * (abs(H(primary.tFinal)) + m_period);
-  const H w2 = m_omega * m_omega;
-  const H stretch = x.u1 - x.u2;
-  const BasicState<H> moved = {x.u1 + abs(x.v1) * dt, x.u2 + abs(x.v2) * dt,
-                               x.v1 + abs(w2 * (chain.p * x.u1 + chain.q * stretch)) * dt,
-                               x.v2 + abs(w2 * chain.w * stretch) * dt};
+  // where the state moves in dt at its own speed and acceleration
+  Point moved{x.u + x.v.cwiseAbs() * dt, x.v};
+  const BasicReadyChain<H>& shadow = m_chain->ready();
+  if (shadow.notes) {
+    // the note's chain, its acceleration in the two-mass form
+    const TwoMassForm<H>& chain = *shadow.notes;
+    const H w2 = m_omega * m_omega;
+    const H stretch = x.u[0] - x.u[1];
+    moved.v[0] += abs(w2 * (chain.p * x.u[0] + chain.q * stretch)) * dt;
+    moved.v[1] += abs(w2 * chain.w * stretch) * dt;
+  } else {
+    const BasicMassChain<H>& chain = m_chain->input->numbers;
+    const Vector force = stiffnessMatrix(chain) * x.u;
+    for (Eigen::Index i = 0; i < x.v.size(); ++i) moved.v[i] += abs(force[i] / chain.masses[std::size_t(i)]) * dt;
+  }
   return relativeStateError(x, moved);
 }
 
 template <typename S>
 void TrustMonitor<S>::arbitrate(const BasicChainRun<S>& primary, Trust& trust) {
-  // binary128 costs about 20 times a double run: up to 2e4 contacts, a second at most
-  constexpr std::int64_t kArbiterContacts = 20000;
-  if (!m_inputModel || primary.contacts > kArbiterContacts) return;
-  if (m_stop.stop_requested()) return;
-  const BasicChainState<Quad> start{m_inputStart.u.template cast<Quad>(), m_inputStart.v.template cast<Quad>()};
-  const BasicChainRun<Quad> exact =
-      runChain(readyChain(convertModel<Quad>(*m_inputModel)), start, m_maxContacts, Quad(m_tEnd), m_stop);
-  if (exact.stop != primary.stop || exact.contacts != primary.contacts) return;  // confirmed
-  using std::abs;
-  const double stateError = relativeStateError(convertState<H>(twoMassStateOf(primary.final)),
-                                               convertState<H>(twoMassStateOf(exact.final)));
-  const double timeError = toDouble(Quad(abs(Quad(primary.tFinal) - exact.tFinal) / Quad(m_period)));
-  const double worst = std::max(stateError, timeError);
-  if (!(worst <= kHorizonTolerance)) return;  // the run itself left the path: the alarm holds
-  const double eps = toDouble(epsilon<S>());
-  trust.verdict = worst <= kOkTolerance ? Verdict::Ok : Verdict::Degraded;
-  trust.stateError = std::max(stateError, eps);
-  trust.timeError = std::max(timeError, eps * (toDouble(primary.tFinal) / toDouble(m_period) + 1));
-  trust.horizon = toDouble(primary.tFinal);
-  trust.horizonObserved = true;
-  trust.horizonMethod = "binary128 run of the same input, to the end";
-  trust.reason = "estimated error " + scientific(std::max(trust.stateError, trust.timeError)) +
-                 " (a binary128 run of the same input agrees with this run; the " + shadowName() +
-                 " took another path on its own rounding: a false alarm)";
+  if constexpr (!std::is_same_v<S, double>) {
+    return;  // (a long double run's shadow is binary128 already)
+  } else {
+    // binary128 costs about 20 times a double run: up to 2e4 contacts, a second at most
+    constexpr std::int64_t kArbiterContacts = 20000;
+    if (!m_chain->usable() || primary.contacts > kArbiterContacts) return;
+    if (m_stop.stop_requested()) return;
+    // the input as the shadow read it, in binary128 (the note's chain by its model: a design
+    // stays a design there)
+    const BasicReadyChain<H>& input = *m_chain->input;
+    const BasicReadyChain<Quad> chain = input.notesModel ? readyChain(convertModel<Quad>(*input.notesModel))
+                                                         : readyChain(chainCast<Quad>(input.numbers));
+    const BasicChainStart<Quad> start{{m_inputStart.state.u.template cast<Quad>(), m_inputStart.state.v.template cast<Quad>()},
+                                      m_inputStart.stillModes};
+    const BasicChainRun<Quad> exact = runChain(chain, start, m_maxContacts, Quad(m_tEnd), m_stop);
+    if (exact.stop != primary.stop || exact.contacts != primary.contacts) return;  // confirmed
+    using std::abs;
+    const double stateError =
+        relativeStateError({primary.final.u.template cast<H>(), primary.final.v.template cast<H>()},
+                           {exact.final.u.template cast<H>(), exact.final.v.template cast<H>()});
+    const double timeError = toDouble(Quad(abs(Quad(primary.tFinal) - exact.tFinal) / Quad(m_period)));
+    const double worst = std::max(stateError, timeError);
+    if (!(worst <= kHorizonTolerance)) return;  // the run itself left the path: the alarm holds
+    const double eps = toDouble(epsilon<S>());
+    trust.verdict = worst <= kOkTolerance ? Verdict::Ok : Verdict::Degraded;
+    trust.stateError = std::max(stateError, eps);
+    trust.timeError = std::max(timeError, eps * (toDouble(primary.tFinal) / toDouble(m_period) + 1));
+    trust.horizon = toDouble(primary.tFinal);
+    trust.horizonObserved = true;
+    trust.horizonMethod = "binary128 run of the same input, to the end";
+    trust.reason = "estimated error " + scientific(std::max(trust.stateError, trust.timeError)) +
+                   " (a binary128 run of the same input agrees with this run; the " + shadowName() +
+                   " took another path on its own rounding: a false alarm)";
+  }
 }
 
 template <typename S>
 Trust TrustMonitor<S>::finish(const BasicChainRun<S>& primary) {
   Trust trust = estimate(primary);
+  if (m_shadowUndecided) {
+    const BasicChainRun<H>& shadow = m_shadow->run();
+    const double undecidedAt = toDouble(H(shadow.tFinal * m_chain->time));
+    if (m_observed > shadow.contacts + shadow.releases && primary.stop != StopReason::Cancelled) {
+      // the run decided a contact its shadow cannot: nothing past it is confirmed (the binary128
+      // arbiter below may still confirm a double run)
+      trust.verdict = Verdict::Unreliable;
+      trust.horizon = std::min(trust.horizon, undecidedAt);
+      trust.horizonObserved = true;
+      trust.reason = "the " + shadowName() + " cannot decide the contact after t = " + formatScalar(undecidedAt) +
+                     ": the run past it is not confirmed";
+    } else if (trust.verdict == Verdict::Ok) {
+      // the run stopped there too: what came before is compared, and no more is claimed
+      trust.verdict = Verdict::Degraded;
+    }
+  }
   if (trust.verdict == Verdict::Unreliable) arbitrate(primary, trust);
-  // past a contact the shadow cannot decide, nothing is confirmed: at best degraded
-  if (m_shadowUndecided && trust.verdict == Verdict::Ok) trust.verdict = Verdict::Degraded;
   if (primary.stop == StopReason::SearchBudget) {
     // the run stopped undecided: whatever came before holds, what follows is not known
     if (trust.verdict != Verdict::Unreliable) trust.verdict = Verdict::Degraded;
@@ -351,7 +423,7 @@ Trust TrustMonitor<S>::finish(const BasicChainRun<S>& primary) {
 template <typename S>
 Trust TrustMonitor<S>::estimate(const BasicChainRun<S>& primary) {
   Trust trust;
-  trust.shadowEvents = m_observed;
+  trust.shadowEvents = m_compared;
   if (m_mode == TrustMode::Off) {
     trust.reason = "not estimated (--trust off)";
     return trust;
@@ -377,18 +449,18 @@ Trust TrustMonitor<S>::estimate(const BasicChainRun<S>& primary) {
       shadowUndecided();
     } else if (!m_pending.empty()) {
       m_failure = "the shadow run has a contact the run has not (t = " +
-                  formatScalar(H(m_pending.front().t * m_timeFactor)) + ")";
+                  formatScalar(H(m_pending.front().t * m_chain->time)) + ")";
     } else if (shadow.stop != primary.stop) {
       m_failure = "the shadow run stopped with " + std::string(toString(shadow.stop)) +
                   ", the run with " + std::string(toString(primary.stop));
     } else {
-      const BasicState<H> final = convertState<H>(twoMassStateOf(primary.final));
-      const BasicState<H> shadowFinal = scaled(twoMassStateOf(shadow.final), m_lengthFactor, m_timeFactor);
+      const Point final{primary.final.u.template cast<H>(), primary.final.v.template cast<H>()};
+      const Point shadowFinal = fromShadow(shadow.final.u, shadow.final.v);
       widenScales(shadowFinal);
       const double stateError = relativeStateError(final, shadowFinal);
       using std::abs;
       const double timeError =
-          toDouble(H(abs(H(primary.tFinal) - shadow.tFinal * m_timeFactor) / m_period));
+          toDouble(H(abs(H(primary.tFinal) - shadow.tFinal * m_chain->time) / m_period));
       compare(H(primary.tFinal), stateError, timeError);
     }
   }
@@ -436,7 +508,7 @@ Trust TrustMonitor<S>::estimate(const BasicChainRun<S>& primary) {
                     : now * std::pow(t / compared, power);
   };
   const std::string growth =
-      rate > 0 ? "exponential growth, FTLE " + scientific(rate * period) + " per T2"
+      rate > 0 ? "exponential growth, FTLE " + scientific(rate * period) + (m_chain->ready().notes ? " per T2" : " per slowest period")
                : "growth like t^" + scientific(power);
 
   double stateError = m_lastState;
@@ -494,6 +566,40 @@ Trust TrustMonitor<S>::estimate(const BasicChainRun<S>& primary) {
   return trust;
 }
 
+template <typename S>
+ChainShadow<S> widenedShadow(const BasicReadyChain<S>& chain, std::optional<BasicReadyChain<ShadowScalar<S>>>& widened) {
+  if constexpr (std::is_same_v<S, ShadowScalar<S>>) {
+    return chainShadow<S>(chain);
+  } else {
+    widened = widenedChain(chain);
+    return chainShadow<S>(*widened);
+  }
+}
+
+template <typename S>
+Trust trustOf(const BasicReadyChain<S>& chain, const std::type_identity_t<BasicChainStart<S>>& start,
+              const BasicChainRun<S>& run, long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode,
+              std::stop_token stop) {
+  using H = ShadowScalar<S>;
+  std::optional<BasicReadyChain<H>> widened;
+  const ChainShadow<S> shadow = mode == TrustMode::Off ? ChainShadow<S>{} : widenedShadow(chain, widened);
+  TrustMonitor<S> monitor(shadow, {{start.state.u.template cast<H>(), start.state.v.template cast<H>()}, start.stillModes},
+                          maxContacts, H(tEnd), mode, std::move(stop));
+  for (const BasicChainEvent<S>& event : run.events) monitor.observe(event);
+  return monitor.finish(run);
+}
+
+#define GRAZELAB_INSTANTIATE(S)                                                                               \
+  template ChainShadow<S> widenedShadow<S>(const BasicReadyChain<S>&, std::optional<BasicReadyChain<ShadowScalar<S>>>&); \
+  template Trust trustOf<S>(const BasicReadyChain<S>&, const BasicChainStart<S>&, const BasicChainRun<S>&, long, S,  \
+                            TrustMode, std::stop_token);
+GRAZELAB_INSTANTIATE(double)
+GRAZELAB_INSTANTIATE(long double)
+GRAZELAB_INSTANTIATE(Quad)
+#undef GRAZELAB_INSTANTIATE
+template ChainShadow<double> chainShadow<double>(const BasicReadyChain<long double>&, ExactParameters);
+template ChainShadow<long double> chainShadow<long double>(const BasicReadyChain<Quad>&, ExactParameters);
+template ChainShadow<Quad> chainShadow<Quad>(const BasicReadyChain<Quad>&, ExactParameters);
 template class TrustMonitor<double>;
 template class TrustMonitor<long double>;
 template class TrustMonitor<Quad>;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/model/model.h"
+#include "core/model/mass_chain.h"
 #include "core/solver/chain_run.h"
 
 namespace grazelab::core {
@@ -37,10 +38,12 @@ inline constexpr double kOkTolerance = 1e-9;
 /// How far a run can be trusted (issue 7, docs/design.md "Numerical contract").
 struct Trust {
   Verdict verdict = Verdict::Unchecked;
-  /// Estimated error of the final state: the largest over u1, u2, v1, v2 of the error relative
-  /// to that component's scale (its largest size at the events of the run).
+  /// Estimated error of the final state: the largest over the masses' displacements and
+  /// velocities of the error relative to that component's scale (its largest size at the events
+  /// of the run).
   double stateError = 0;
-  /// Estimated error of the worst contact time, in units of T2.
+  /// Estimated error of the worst contact time, in units of the slowest period (T2 for the
+  /// note's chain).
   double timeError = 0;
   /// The time up to which the run holds kHorizonTolerance [time]: observed when the shadow
   /// run saw the error pass it, else extrapolated conservatively from the error's growth (as
@@ -70,33 +73,91 @@ struct ShadowOf<Quad> {
 template <typename S>
 using ShadowScalar = typename ShadowOf<S>::type;
 
-/// Which parameters of the model were read exactly (a decimal like 0.5 is exact in binary,
-/// 0.1 is not). A shadow of the same precision nudges the others by one rounding, so that
-/// their representation counts as error (near m2/m1 = 9/16 the design amplifies it ~1e7).
+/// Which of a chain's numbers were read exactly (a decimal like 0.5 is exact in binary, 0.1 is
+/// not). A shadow of the same precision nudges the others by one rounding, so that their
+/// representation counts as error (near m2/m1 = 9/16 the note's design amplifies it ~1e7). A mass
+/// or spring not listed counts as exact; the start counts as rounded (a state read or computed in
+/// the run's precision) unless `start` says otherwise.
 struct ExactParameters {
-  bool m1 = false, m2 = false, k1 = false, k2 = false, gap = false;
+  std::vector<bool> masses, springs;  ///< per mass, per spring (k1 first)
+  bool rightSpring = true, gap = true;
+  bool start = false;
 };
 
-/// Estimates the error of a run of the note's chain (its kernel: runChain on readyChain(model))
-/// in precision S by running the same algorithm beside it on a shadow (ShadowOf), in lockstep
-/// event by event, so that it costs no memory however long the run. Feed it every event of the
-/// run (observe), then finish with the run.
+/// How many events a shadow compares under TrustMode::Auto: a number fixed by the precisions
+/// alone, so that the same run always gets the same estimate (a wall-clock budget gave 9e7 one
+/// time and 4e8 the next): about twice the run's own cost, at most a second or so (a long double
+/// shadow costs about as much as a double run; binary128 about fifteen times a long double run).
+template <typename S>
+constexpr std::int64_t autoShadowEvents() {
+  if constexpr (std::is_same_v<S, double>) return std::int64_t(1) << 18;
+  else if constexpr (std::is_same_v<S, long double>) return std::int64_t(1) << 14;
+  else return std::int64_t(1) << 16;
+}
+
+/// The shadow of a chain's runs in S, made once for every run of the chain: the chain as read
+/// one precision up from the same input (ShadowScalar), or, in binary128, that chain scaled 3x
+/// in length, 5x in mass and 1/sqrt(3) in time, its inexact numbers nudged by a rounding
+/// (ExactParameters): every rounding changes, the motion does not (the physics is scale-free).
+/// Copyable; the chain it was made from (`input`) must outlive it.
+template <typename S>
+struct ChainShadow {
+  using H = ShadowScalar<S>;
+  /// the chain read in H, as the run's input gives it (the binary128 arbiter reads it); none: no
+  /// shadow (TrustMode::Off, or `problem`)
+  const BasicReadyChain<H>* input = nullptr;
+  /// the scaled chain, in binary128 (the shadow runs `input` itself otherwise)
+  std::optional<BasicReadyChain<H>> scaledChain;
+  H length = 1;  ///< the shadow's lengths are the primary's times this
+  H time = 1;    ///< the shadow's times are the primary's divided by this
+  ExactParameters exact;
+  std::string problem;  ///< why there is no shadow, when `input` could not be scaled
+
+  bool usable() const { return input != nullptr && problem.empty(); }
+  const BasicReadyChain<H>& ready() const { return scaledChain ? *scaledChain : *input; }
+};
+
+/// The shadow of runs of `input` (the run's chain read in ShadowScalar<S>); `exact` says which of
+/// its numbers were read exactly (used by a binary128 shadow only).
+template <typename S>
+ChainShadow<S> chainShadow(const BasicReadyChain<ShadowScalar<S>>& input, ExactParameters exact = {});
+
+/// A chain's numbers widened one precision up and made ready: a shadow's input where none is
+/// read from text there (a map's parameters, an explorer's chain). The note's chain widens by its
+/// model, so that a design stays a design.
+template <typename S>
+BasicReadyChain<ShadowScalar<S>> widenedChain(const BasicReadyChain<S>& chain) {
+  using H = ShadowScalar<S>;
+  return chain.notesModel ? readyChain(convertModel<H>(*chain.notesModel)) : readyChain(chainCast<H>(chain.numbers));
+}
+
+/// The shadow of runs of a chain whose numbers are exact as they stand (a map's parameters, an
+/// explorer's chain): made from `chain` widened (kept in `widened`, which must outlive the
+/// shadow), or, in binary128, from `chain` itself (which must too).
+template <typename S>
+ChainShadow<S> widenedShadow(const BasicReadyChain<S>& chain, std::optional<BasicReadyChain<ShadowScalar<S>>>& widened);
+
+/// Estimates the error of a run of any chain in precision S (runChain, by the kernel the chain
+/// takes) by running the same algorithm beside it on its shadow (ChainShadow), in lockstep event
+/// by event, so that it costs no memory however long the run (docs/numerics.md). Each event's
+/// state is compared against the largest sizes each coordinate reached (floored at 1e-3 of the
+/// positions' and velocities' scales), its time against the slowest period; the horizon is where
+/// that error first passes kHorizonTolerance, observed, or extrapolated from its growth. A
+/// double run judged unreliable is arbitrated by a binary128 run of the same input. Feed it
+/// every event of the run (observe), then finish with the run.
 /// Holds its own shadow run: neither copied nor moved.
 template <typename S>
 class TrustMonitor {
  public:
   using H = ShadowScalar<S>;
 
-  /// `model` and `start` are the run's chain and start read in precision H from the same input
-  /// (so that the input's own rounding counts as error); `maxContacts`, `tEnd` (0: none) and
+  /// `start` is the run's start read in H from the same input (so that the input's own rounding
+  /// counts as error; a start known only in S, widened); `maxContacts`, `tEnd` (0: none) and
   /// `searchSteps` are the run's (runChain's). The shadow watches `stop` as the run does (an
-  /// interrupt ends both). `shadowChain`: `model` made ready already (readyChain), which the
-  /// shadow then runs instead of making it ready again (a map's thousands of shadows, each an
-  /// eigensolve otherwise); it must outlive the monitor.
-  TrustMonitor(const BasicModel<H>& model, const BasicChainState<H>& start, long maxContacts,
+  /// interrupt ends both). `shadow` must outlive the monitor.
+  TrustMonitor(const ChainShadow<S>& shadow, const BasicChainStart<H>& start, long maxContacts,
                std::type_identity_t<H> tEnd, TrustMode mode, std::stop_token stop = {},
-               ExactParameters exact = {}, std::int64_t searchSteps = 0,
-               const BasicReadyChain<H>* shadowChain = nullptr);
+               std::int64_t searchSteps = 0);
   TrustMonitor(const TrustMonitor&) = delete;
   TrustMonitor& operator=(const TrustMonitor&) = delete;
 
@@ -106,9 +167,14 @@ class TrustMonitor {
   Trust finish(const BasicChainRun<S>& primary);
 
  private:
+  using Vector = ChainVector<H>;
   struct GrowthPoint {
     double t = 0;
     double error = 0;
+  };
+  /// a state of the chain, in H, in the primary's units
+  struct Point {
+    Vector u, v;
   };
 
   Trust estimate(const BasicChainRun<S>& primary);
@@ -119,37 +185,39 @@ class TrustMonitor {
   bool shadowing() const { return m_shadow != nullptr && m_active; }
   /// the shadow ended at a contact it cannot decide: the comparison stops there, no path taken
   void shadowUndecided();
-  bool withinBudget();
-  std::optional<BasicEvent<H>> nextShadowEvent();
-  void widenScales(const BasicState<H>& state);
-  double relativeStateError(const BasicState<H>& primary, const BasicState<H>& shadow) const;
+  bool withinBudget() const;
+  std::optional<BasicChainEvent<H>> nextShadowEvent();
+  /// a shadow's state in the primary's units
+  Point fromShadow(const ChainVector<H>& u, const ChainVector<H>& v) const;
+  void widenScales(const Point& state);
+  double relativeStateError(const Point& primary, const Point& shadow) const;
   void compare(const H& t, double stateError, double timeError);
   /// The state error of a phase off by eps times the run's length (relative to the scales).
   double phaseRounding(const BasicChainRun<S>& primary) const;
   std::string shadowName() const;
 
+  const ChainShadow<S>* m_chain = nullptr;
   TrustMode m_mode;
   std::stop_token m_stop;
-  H m_lengthFactor = 1;  ///< the shadow's lengths are this many times the primary's
-  H m_timeFactor = 1;    ///< the shadow's times are the primary's divided by this
   std::unique_ptr<BasicChainSimulator<H>> m_shadow;
-  std::optional<TwoMassForm<H>> m_shadowForm;  ///< the shadow's chain, as its kernel runs it
-  /// the input as the shadow read it (unscaled), for a binary128 arbiter
-  std::optional<BasicModel<H>> m_inputModel;
-  BasicChainState<H> m_inputStart;
+  /// the start as the shadow read it (unscaled), for a binary128 arbiter
+  BasicChainStart<H> m_inputStart;
   long m_maxContacts = 0;
   H m_tEnd = 0;
-  std::deque<BasicEvent<H>> m_pending;  ///< shadow events not yet matched (at most a few)
+  std::int64_t m_searchSteps = 0;
+  std::deque<BasicChainEvent<H>> m_pending;  ///< shadow events not yet matched (at most a few)
   bool m_active = true;
   bool m_shadowUndecided = false;
   std::string m_stopNote;  ///< why the shadow stopped early, if it did
   std::string m_failure;   ///< a structural mismatch (another event type, an extra contact)
   std::int64_t m_observed = 0;
+  std::int64_t m_compared = 0;
 
-  H m_period = 0;            ///< T2 [time]
-  H m_scale[4] = {0, 0, 0, 0};  ///< largest |u1|, |u2|, |v1|, |v2| seen (u2 at least the gap)
-  H m_omega = 1;
-  double m_worstTime = 0;    ///< worst contact time error / T2
+  Eigen::Index m_stopped = 0;  ///< the stopped mass, 0-based
+  H m_period = 0;              ///< the slowest period [time]
+  H m_omega = 1;               ///< the slowest angular frequency [1/time]
+  Vector m_scaleU, m_scaleV;   ///< largest |u_i|, |v_i| seen (u_s at least the gap)
+  double m_worstTime = 0;    ///< worst contact time error / the slowest period
   double m_lastState = 0;    ///< state error at the last compared event
   double m_envelope = 0;     ///< max error so far (state and time)
   H m_lastCompared = 0;      ///< time of the last compared event
@@ -157,5 +225,12 @@ class TrustMonitor {
   bool m_crossed = false;
   std::vector<GrowthPoint> m_growth;  ///< the envelope at geometrically spaced times
 };
+
+/// The estimate of a run made already (its events kept), from `start`, its shadow the chain
+/// widened (widenedShadow): what a caller that did not watch the run as it went asks.
+template <typename S>
+Trust trustOf(const BasicReadyChain<S>& chain, const std::type_identity_t<BasicChainStart<S>>& start,
+              const BasicChainRun<S>& run, long maxContacts, std::type_identity_t<S> tEnd, TrustMode mode,
+              std::stop_token stop = {});
 
 }  // namespace grazelab::core

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "commands/simulate_command.h"
-#include "core/solver/chain_trust.h"
+#include "core/solver/trust.h"
 #include "core/solver/chain_run.h"
 #include "io/cli_input.h"
 #include "io/cli_io.h"
@@ -139,7 +139,7 @@ void BM_PrepareDesignedChain(benchmark::State& state) {
   for (auto _ : state) {
     const auto chain = grazelab::cli::PreparedMassChain::make(options);
     benchmark::DoNotOptimize(chain.value.value()->ready<double>().value->dynamics.period);
-    benchmark::DoNotOptimize(chain.value.value()->shadow<double>().slowest);
+    benchmark::DoNotOptimize(chain.value.value()->shadow<double>().usable());
   }
 }
 BENCHMARK(BM_PrepareDesignedChain)->Unit(benchmark::kMicrosecond);
@@ -154,7 +154,11 @@ void BM_PreparedChainCoreRun(benchmark::State& state) {
   for (auto _ : state) {
     const auto run = grazelab::core::runChain(ready, start, 10);
     if (mode != grazelab::core::TrustMode::Off) {
-      benchmark::DoNotOptimize(grazelab::core::chainTrust(chain.shadow<double>(), start, run, 10, 0, mode).stateError);
+      grazelab::core::TrustMonitor<double> monitor(chain.shadow<double>(),
+                                                   {{start.u.cast<long double>(), start.v.cast<long double>()}}, 10,
+                                                   0.0L, mode);
+      for (const auto& event : run.events) monitor.observe(event);
+      benchmark::DoNotOptimize(monitor.finish(run).stateError);
     }
     benchmark::DoNotOptimize(run.tFinal);
   }

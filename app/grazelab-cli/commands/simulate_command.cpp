@@ -30,7 +30,6 @@
 #include "core/orbits/chain_onepp.h"
 #include "core/orbits/starts.h"
 #include "core/solver/chain_run.h"
-#include "core/solver/chain_trust.h"
 #include "core/solver/simulate.h"
 #include "core/solver/trust.h"
 #include "exit_codes.h"
@@ -44,10 +43,6 @@ namespace grazelab::cli {
 namespace {
 
 using V = JsonValue;
-
-// every output streams the events (no bound but the run's own, or the Python module's table's);
-// an error estimate of --trust full holds its whole shadow, up to this many contacts
-constexpr long kMaxHeldContacts = 1'000'000;
 
 // The names of a chain's columns, made once per document (an owned name is an allocation)
 struct ColumnNames {
@@ -359,29 +354,6 @@ std::vector<V::Field> headFields(const core::BasicReadyChain<S>& ready, const st
   return head;
 }
 
-// The error estimate of a run, made event by event as the run goes: for a chain the note's kernel
-// runs, the note's own (TrustMonitor: the note's simulator one precision up on the input read
-// there, a doubtful double run arbitrated in binary128; Reference.TrustIsHonest holds it to an
-// independent 50-digit reference); for any other chain, the chain's (ChainTrustCheck)
-template <typename S>
-struct RunTrust {
-  std::optional<core::TrustMonitor<S>> notes;
-  std::optional<core::ChainTrustCheck<S>> chain;
-  std::string unavailable;  ///< why there is no estimate, when the shadow cannot be made
-
-  void observe(const core::BasicChainEvent<S>& event) {
-    if (chain) chain->observe(event);
-    if (notes) notes->observe(event);
-  }
-  core::Trust finish(const core::BasicChainRun<S>& run) {
-    if (chain) return chain->finish(run);
-    if (notes) return notes->finish(run);
-    core::Trust trust;
-    trust.reason = unavailable.empty() ? "not estimated (--trust off)" : unavailable;
-    return trust;
-  }
-};
-
 // What the output holds so far, across the rungs of --precision auto: a raised run starts again
 // from its start and writes only the events past those a lower precision wrote (they stay on the
 // output), comparing the last of them with its own
@@ -472,12 +444,6 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
     if (!steps) return kExitInvalidInput;
     searchSteps = *steps;
   }
-  if (*trustMode == core::TrustMode::Full && contacts > kMaxHeldContacts && !options.isSet("t-end")) {
-    error = QStringLiteral("--trust full holds the shadow run's events: at most %1 contacts (auto shadows the first "
-                           "ones and stays bounded)")
-                .arg(kMaxHeldContacts);
-    return kExitInvalidInput;
-  }
   const auto asked = samplingOf(options, error);
   if (!asked) return kExitInvalidInput;
   const QString tEnd = options.isSet("t-end") ? options.value("t-end") : QString();
@@ -486,8 +452,6 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
   std::vector<std::string> escalations;
   Written written;
   std::vector<V::Field> head;
-  // the chain's own options with the run's (the estimate reads which numbers' texts are exact)
-  const OptionValues whole(options, chain.givenOptions(), {});
   // one rung of the ladder in S: the exit code when it ends the command, nothing to go up
   const auto rung = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
     // a refusal here: one the precision causes (a chain or start beyond its reach: a ratio beyond
@@ -570,34 +534,32 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
     }
     const long before = written.events;
     written.raisedAgrees.reset();
-    std::optional<RunTrust<S>> check;
+    // the error estimate, event by event as the run goes (TrustMonitor: the same run of the
+    // chain read one precision up, binary128's scaled; a doubtful double run arbitrated in
+    // binary128; Reference.TrustIsHonest holds it to an independent 50-digit reference)
+    std::optional<core::TrustMonitor<S>> check;
     if (format != Format::Csv) {
-      check.emplace();
-      if (!takesTheNotesKernel(ready, *start)) {
-        check->chain.emplace(shadowFor<S>(chain, *trustMode), *start, contacts, *limit, *trustMode, stop);
-      } else if (*trustMode != core::TrustMode::Off) {
-        // the note's shadow: the same input read one precision up, run by the note's simulator
-        using H = core::ShadowScalar<S>;
-        const Parsed<core::BasicReadyChain<H>>& up = chain.ready<H>();
+      using H = core::ShadowScalar<S>;
+      const core::ChainShadow<S>& shadow = shadowFor<S>(chain, *trustMode);
+      // the start read one precision up from the same input, so that its rounding counts as
+      // error (the note's starts by the note's reader); a start not read there, widened
+      std::optional<core::BasicChainStart<H>> upStart;
+      if (shadow.usable()) {
+        const core::BasicReadyChain<H>& up = *shadow.input;
         StartRefusal refusal;
         std::string words;
         std::vector<std::string> quiet;
-        const auto upStart = up.value && up.value->notesModel ? notesStart<H>(options, *up.value, refusal, words, quiet)
-                                                              : std::nullopt;
-        QString ignored;
-        const auto upLimit = timeLimit<H>(tEnd, ignored);
-        if (up.value && !up.value->notesModel) {
-          // the shadow precision reads these springs as no 1:2 design's (k2 a design's only to
-          // double's digits): the chain's own estimate, by the modal kernel one precision up
-          check->chain.emplace(shadowFor<S>(chain, *trustMode), *start, contacts, *limit, *trustMode, stop);
-        } else if (upStart && upLimit) {
-          // (the chain read one precision up is made ready once, and its shadow runs it)
-          check->notes.emplace(*up.value->notesModel, upStart->state, contacts, *upLimit, *trustMode, stop,
-                               exactParameters<H>(whole), searchSteps, &*up.value);
-        } else {
-          check->unavailable = "no shadow run: " + (up.value ? refusal.error : up.error).toStdString();
-        }
+        QString why;
+        upStart = up.notesModel ? notesStart<H>(options, up, refusal, words, quiet)
+                                : chainStart<H>(options, up.numbers, why, nullptr);
       }
+      if (!upStart) {
+        upStart = core::BasicChainStart<H>{{start->state.u.template cast<H>(), start->state.v.template cast<H>()},
+                                           start->stillModes};
+      }
+      QString ignored;
+      const auto upLimit = timeLimit<H>(tEnd, ignored);
+      check.emplace(shadow, *upStart, contacts, upLimit ? *upLimit : H(*limit), *trustMode, stop, searchSteps);
     }
     if (stop.stop_requested() && !text) return kExitInterrupted;
     HeldSamples held;

@@ -240,7 +240,11 @@ core::ExactParameters exactParameters(const OptionValues& options) {
       return false;
     }
   };
-  return {exact("m1"), exact("m2"), exact("k1"), exact("k2"), exact("gap")};
+  core::ExactParameters read;
+  read.masses = {exact("m1"), exact("m2")};
+  read.springs = {exact("k1"), exact("k2")};
+  read.gap = exact("gap");
+  return read;
 }
 
 template <typename S>

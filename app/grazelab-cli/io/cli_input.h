@@ -44,8 +44,9 @@ std::optional<PrecisionOption> parsePrecisionOption(const OptionValues& options,
 /// --trust, checked ("auto" when absent).
 std::optional<core::TrustMode> parseTrustOption(const OptionValues& options, QString& error);
 
-/// Which model parameters the command line gives exactly in precision S (its decimal text is a
-/// number of S; parameters not given are exact defaults).
+/// Which of the note's chain's numbers the command line gives exactly in precision S (its
+/// decimal text is a number of S; parameters not given are exact defaults); its start counts as
+/// rounded.
 template <typename S>
 core::ExactParameters exactParameters(const OptionValues& options);
 

@@ -77,7 +77,17 @@ const Parsed<core::BasicReadyChain<S>>& PreparedMassChain::ready() const {
 template <typename S>
 const core::ChainShadow<S>& PreparedMassChain::shadow() const {
   InPrecision<S>& slot = in<S>();
-  std::call_once(slot.shadowOnce, [&] { slot.shadow = core::chainShadow(ready<S>().value->numbers); });
+  std::call_once(slot.shadowOnce, [&] {
+    // the chain read one precision up (binary128's own, scaled): the input's rounding counts
+    using H = core::ShadowScalar<S>;
+    const Parsed<core::BasicReadyChain<H>>& up = ready<H>();
+    if (!up.value) {
+      slot.shadow.problem = up.error.toStdString();
+      return;
+    }
+    // the note's numbers as read: those a decimal does not hold exactly are nudged in binary128
+    slot.shadow = core::chainShadow<S>(*up.value, m_notesReader ? exactParameters<H>(m_options) : core::ExactParameters{});
+  });
   return slot.shadow;
 }
 

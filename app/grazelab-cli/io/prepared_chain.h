@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/solver/chain_run.h"
-#include "core/solver/chain_trust.h"
+#include "core/solver/trust.h"
 #include "io/cli_input.h"
 #include "io/option_values.h"
 
@@ -37,7 +37,8 @@ class PreparedMassChain {
   /// cannot be refined for them).
   template <typename S>
   const Parsed<core::BasicReadyChain<S>>& ready() const;
-  /// The shadow of its runs in S (precondition: ready<S>() has a value).
+  /// The shadow of its runs in S: the chain read one precision up (in binary128, scaled); not
+  /// usable when it cannot be read there (its `problem` says why).
   template <typename S>
   const core::ChainShadow<S>& shadow() const;
 

@@ -18,7 +18,7 @@
 #include "core/model/resonance.h"
 #include "core/orbits/chain_glo.h"
 #include "core/solver/chain_run.h"
-#include "core/solver/chain_trust.h"
+#include "core/solver/trust.h"
 #include "parallel/tbb_parallel_for.h"
 #include "support/point_bits.h"
 
@@ -154,7 +154,7 @@ TEST(ChainMapTest, AResonantChainsFlightsFromTheStopLastAtMostItsPeriod) {
 }
 
 // with estimateHorizon each point's horizon is the trust estimate of the run it names, made
-// apart from the map by chainTrust on the run's whole event list (the map's is made online);
+// apart from the map by trustOf on the run's whole event list (the map's is made online);
 // without it, NaN
 TEST(ChainMapTest, HorizonIsTheRunsOwnTrustEstimate) {
   ChainMapSpec spec;
@@ -172,7 +172,7 @@ TEST(ChainMapTest, HorizonIsTheRunsOwnTrustEstimate) {
       start.u[2] = spec.x.range.at(column);
       start.v[2] = spec.y.range.at(row);
       const ChainRun run = runChain(spec.chain, start, 60);
-      const Trust trust = chainTrust(spec.chain, start, run, 60, 0.0, TrustMode::Auto);
+      const Trust trust = trustOf(readyChain(spec.chain), start, run, 60, 0.0, TrustMode::Auto);
       if (trust.verdict == Verdict::Unchecked) {
         EXPECT_TRUE(std::isnan(p.horizon)) << column << ", " << row;
         continue;

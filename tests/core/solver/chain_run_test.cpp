@@ -21,7 +21,7 @@
 #include "core/model/model.h"
 #include "core/orbits/chain_glo.h"
 #include "core/solver/chain_stick.h"
-#include "core/solver/chain_trust.h"
+#include "core/solver/trust.h"
 #include "core/solver/simulate.h"
 
 namespace grazelab::core {
@@ -883,7 +883,11 @@ TEST(ChainRun, AStreamedRunIsTheKeptRun) {
   const ChainState start{Eigen::Vector3d(1.4, 1.0, 1.3), Eigen::Vector3d(0.1, 0.0, -0.2)};
   const ChainRun kept = runChain(chain, start, 40);
   std::vector<ChainEvent> streamed;
-  ChainTrustCheck<double> check(chain, start, 40, 0.0, TrustMode::Full);
+  const ReadyChain ready = readyChain(chain);
+  std::optional<BasicReadyChain<long double>> widened;
+  const ChainShadow<double> shadow = widenedShadow(ready, widened);
+  TrustMonitor<double> check(shadow, {{start.u.cast<long double>(), start.v.cast<long double>()}}, 40, 0.0L,
+                             TrustMode::Full);
   const ChainRun run = runChain(chain, start, 40, 0.0, {}, [&](const ChainEvent& event) {
     streamed.push_back(event);
     check.observe(event);
@@ -905,7 +909,7 @@ TEST(ChainRun, AStreamedRunIsTheKeptRun) {
   EXPECT_EQ(run.releases, byType[int(EventType::Release)]);
   EXPECT_EQ(run.contacts, run.impacts + run.grazings + run.sticks);
   EXPECT_EQ(run.final.u, kept.final.u);
-  const Trust whole = chainTrust(chain, start, kept, 40, 0.0, TrustMode::Full);
+  const Trust whole = trustOf(ready, start, kept, 40, 0.0, TrustMode::Full);
   const Trust online = check.finish(run);
   EXPECT_EQ(online.verdict, whole.verdict);
   EXPECT_EQ(online.horizon, whole.horizon);
@@ -997,7 +1001,8 @@ template <typename S>
 void expectReadyRunsAsTheChain(const BasicMassChain<S>& chain, const std::vector<ChainState>& starts, long contacts,
                                const char* name) {
   const BasicReadyChain<S> ready = readyChain(chain);
-  const ChainShadow<S> shadow = chainShadow(chain);
+  std::optional<BasicReadyChain<ShadowScalar<S>>> widened;
+  const ChainShadow<S> shadow = widenedShadow(ready, widened);
   for (int pass = 0; pass < 2; ++pass) {
     for (const ChainState& given : starts) {
       const BasicChainState<S> start{given.u.cast<S>(), given.v.cast<S>()};
@@ -1011,8 +1016,12 @@ void expectReadyRunsAsTheChain(const BasicMassChain<S>& chain, const std::vector
             << name << " event " << k;
       }
       EXPECT_TRUE(once.final.u == shared.final.u && once.final.v == shared.final.v && once.stop == shared.stop) << name;
-      const Trust made = chainTrust(chain, start, once, contacts, S(0), TrustMode::Full);
-      const Trust kept = chainTrust(shadow, start, shared, contacts, S(0), TrustMode::Full);
+      const Trust made = trustOf(readyChain(chain), start, once, contacts, S(0), TrustMode::Full);
+      using H = ShadowScalar<S>;
+      TrustMonitor<S> monitor(shadow, {{start.u.template cast<H>(), start.v.template cast<H>()}}, contacts, H(0),
+                              TrustMode::Full);
+      for (const BasicChainEvent<S>& event : shared.events) monitor.observe(event);
+      const Trust kept = monitor.finish(shared);
       EXPECT_TRUE(made.verdict == kept.verdict && made.stateError == kept.stateError &&
                   made.timeError == kept.timeError && made.horizon == kept.horizon && made.reason == kept.reason)
           << name << ": " << made.reason << " against " << kept.reason;
