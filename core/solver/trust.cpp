@@ -359,9 +359,11 @@ void TrustMonitor<S>::arbitrate(const BasicChainRun<S>& primary, Trust& trust) {
   if constexpr (!std::is_same_v<S, double>) {
     return;  // (a long double run's shadow is binary128 already)
   } else {
-    // binary128 costs about 20 times a double run: up to 2e4 contacts, a second at most
+    // binary128 costs about 20 times a double run of the note's chain: up to 2e4 contacts, a
+    // second at most (the note's chain only: a chain of more masses, or a search over long
+    // flights, costs seconds for a hundred contacts there)
     constexpr std::int64_t kArbiterContacts = 20000;
-    if (!m_chain->usable() || primary.contacts > kArbiterContacts) return;
+    if (!m_chain->usable() || !m_chain->input->notes || primary.contacts > kArbiterContacts) return;
     if (m_stop.stop_requested()) return;
     // the input as the shadow read it, in binary128 (the note's chain by its model: a design
     // stays a design there)
