@@ -115,15 +115,20 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
   const BasicReadyChain<S> ready = readyChain(chain);
   BasicChainSimulator<S> simulator(ready, start, spec.contacts, S(0), {}, sampling);
   // pieces sized in contacts, adapted to the measured speed so that each costs about
-  // chunkSeconds; the first small, to show something at once
-  std::int64_t budget = 16;
+  // chunkSeconds; before the first report, which comes a third of chunkSeconds in, pieces of 1,
+  // 2, 4, ... contacts, to show something at once (a run of eight masses costs 1.6 ms a contact:
+  // a drag's run is stopped by the next value after a grace of 40 ms, and showed nothing)
+  std::int64_t budget = 1;
   auto sinceReport = std::chrono::steady_clock::now();
   double copySeconds = 0;
+  bool reported = false;
   while (!simulator.done()) {
     const auto began = std::chrono::steady_clock::now();
     if (simulator.advance(long(budget), stop) || stop.stop_requested()) break;
-    budget = nextChunkContacts(budget, std::max(secondsSince(began), 1e-6), chunkSeconds);
-    if (!progress || secondsSince(sinceReport) < std::max(chunkSeconds, 4 * copySeconds)) continue;
+    budget = reported ? nextChunkContacts(budget, std::max(secondsSince(began), 1e-6), chunkSeconds) : 2 * budget;
+    const double due = reported ? std::max(chunkSeconds, 4 * copySeconds) : chunkSeconds / 3;
+    if (!progress || secondsSince(sinceReport) < due) continue;
+    reported = true;
     const auto copying = std::chrono::steady_clock::now();
     ChainSeries sofar = series;
     sofar.run = inDouble(simulator.run());

@@ -92,13 +92,22 @@ void SimController::receive(const SimUpdate& update) {
     // estimate, a sweep) is not wanted: it stops.
     if (isWholeRun(update) && update.id > m_shownRunId) {
       m_shownRunId = update.id;
+      m_shownId = std::max(m_shownId, update.id);
       stopIfSuperseded(update.id);
+      SimUpdate shown = update;
+      shown.superseded = true;
+      emit updated(shown);
+    } else if (isRunsSoFar(update) && update.id > m_shownRunId && update.id >= m_shownId) {
+      // runs of N masses so far (each update carries them whole, not as a chunk): a drag over
+      // a scene whose runs outlast the grace shows each one's beginning, not nothing
+      m_shownId = update.id;
       SimUpdate shown = update;
       shown.superseded = true;
       emit updated(shown);
     }
     return;
   }
+  m_shownId = update.id;
   if (update.final && !update.trustPending) m_busy = false;
   if (update.runDone && !update.chunk) m_shownRunId = update.id;
   if (!update.chunk) {
@@ -115,6 +124,13 @@ void SimController::receive(const SimUpdate& update) {
   assembled.chunk.reset();
   assembled.result = m_run;
   emit updated(assembled);
+}
+
+bool isRunsSoFar(const SimUpdate& update) {
+  return !update.runDone && !update.scenePartial && !update.chains.empty() &&
+         std::none_of(update.chains.begin(), update.chains.end(), [](const auto& series) {
+           return series->run.stop == core::StopReason::Cancelled;
+         });
 }
 
 bool isWholeRun(const SimUpdate& update) {

@@ -25,7 +25,8 @@ struct SimMailbox;
 /// are dropped here, so the display only ever sees the newest request's results, with one
 /// exception that keeps a drag alive: a running job younger than the grace is not stopped at
 /// once but given the rest of the grace to finish, and its whole run is shown, marked
-/// superseded, while the newest request computes. Without it a drag whose every value costs
+/// superseded, while the newest request computes (runs of N masses, which report their runs
+/// whole so far, show them as they come too). Without it a drag whose every value costs
 /// more than the time between two values would show nothing until the mouse stops. Partial
 /// updates bring only what is new (SimUpdate::chunk): the controller keeps the run so far and
 /// appends each chunk to it, so a run of n contacts costs O(n) to hand over, not O(n^2).
@@ -77,6 +78,9 @@ class SimController : public QObject {
   /// the newest request whose whole run was handed on (superseded or not): an older one that
   /// ends later is never shown over it
   std::uint64_t m_shownRunId = 0;
+  /// the newest request any update was handed on for: an older job's runs so far are never
+  /// shown over it
+  std::uint64_t m_shownId = 0;
   int m_graceMs = kDefaultGraceMs;
   /// the run so far of request m_runId, grown by each partial update, dropped at the final.
   /// Views read its items in place (no copy of a run): it grows only into room it already
@@ -87,9 +91,12 @@ class SimController : public QObject {
   bool m_synchronous = false;
 };
 
-/// Whether the update carries a whole run, not stopped nor refused (all a superseded job may
-/// show): the two-mass run, or every run of N masses so far.
+/// Whether the update carries a whole run, not stopped nor refused (what a superseded job
+/// shows): the two-mass run, or every run of N masses so far.
 bool isWholeRun(const SimUpdate& update);
+/// Whether the update carries runs of N masses as far as they have gone, none stopped (what a
+/// superseded job shows too: each such update holds its runs whole so far, not a chunk).
+bool isRunsSoFar(const SimUpdate& update);
 
 /// Appends a partial update's chunk (new items and present totals) to the run so far.
 void appendChunk(core::Result& run, const core::Result& chunk);

@@ -459,6 +459,56 @@ class ExplorerTest : public QObject {
     disconnect(connection);
   }
 
+  // A drag over a scene of N masses whose runs outlast the grace: a superseded job's runs so far
+  // are shown as they come (marked superseded), never after a newer job's; the newest is shown
+  // last, not superseded. (They were dropped: the eight-mass scene drew no frame in a drag.)
+  void aDragShowsTheRunsSoFarOfSupersededChainJobs() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("eight-masses")));
+    QVERIFY(waitForLatestFinal(*m_window));
+    Params params = m_window->params();
+    const double first = -2e-4;
+    QList<SimUpdate> shown;  // every update handed to the window
+    bool firstRunning = false;
+    const auto connection = connect(m_window->controller(), &SimController::updated, this,
+                                    [&](const SimUpdate& update) {
+                                      shown.append(update);
+                                      if (update.request && update.request->params.perturbation == first &&
+                                          !update.runDone && !update.chains.empty()) {
+                                        firstRunning = true;
+                                      }
+                                    });
+    m_window->controller()->setGrace(60'000);
+    // the order is made, not timed: the next value comes once a part of the first run has come,
+    // and the first run (2000 contacts, seconds) goes on within its grace
+    params.perturbation = first;
+    params.horizon = 2000;
+    m_window->setParams(params);
+    QTRY_VERIFY_WITH_TIMEOUT(firstRunning, 20000);
+    const qsizetype before = shown.size();
+    params.perturbation = -3e-4;
+    params.horizon = 20;
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window, 120000));
+    bool supersededSoFar = false;
+    bool newerSeen = false;
+    for (qsizetype i = before; i < shown.size(); ++i) {
+      const SimUpdate& update = shown[i];
+      const bool older = update.request->params.perturbation == first;
+      if (older) {
+        QVERIFY(update.superseded);
+        QVERIFY(!newerSeen);  // never after the newer job's
+        if (!update.runDone) supersededSoFar = true;
+      } else {
+        newerSeen = true;
+      }
+    }
+    QVERIFY(supersededSoFar);
+    QVERIFY(!m_window->displayed()->superseded);
+    QCOMPARE(m_window->displayed()->request->params.perturbation, -3e-4);
+    m_window->controller()->setGrace(SimController::kDefaultGraceMs);
+    disconnect(connection);
+  }
+
   // A touch double cannot decide (GLOM1 pushed by 3e-9: the crossing at T1 rises ~1e-17 above
   // the stop) is decided again in a higher precision by the worker, as --precision auto does:
   // impacts, not grazings, and the views are told to start over.
