@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/solver/budget.h"
+#include "core/solver/two_mass_run.h"
 #include "core/model/two_mass_form.h"
 
 namespace grazelab::core::experiments {
@@ -37,6 +38,11 @@ template <typename H>
 H shadowEnd(const Request& run) {
   return std::isfinite(run.tEnd) ? H(run.tEnd) : H(0);
 }
+// the run's start read in the shadow's precision, with the modes it names still
+template <typename H>
+BasicChainStart<H> shadowStart(const Spec& spec) {
+  return {chainStateOf(convertState<H>(spec.run.initial)), spec.stillModes};
+}
 // a search budget the run was given (0: the shadow precision's own default, as the run's)
 std::int64_t shadowSteps(const Request& run) {
   return run.flightSearchSteps != defaultSearchSteps<double>() ? run.flightSearchSteps : 0;
@@ -50,17 +56,18 @@ std::optional<std::pair<Result, Trust>> runRaised(const Spec& spec, bool lastRes
                                                   std::stop_token stop) {
   using H = ShadowScalar<S>;
   BasicRequest<S> raised = convertRequest<S>(spec.run);
-  raised.stopAtUndecided = !lastResort;
   // the parameters are doubles, exact as they stand
   const BasicReadyChain<H> input = readyChain(convertModel<H>(spec.model));
   const ChainShadow<S> shadow = chainShadow<S>(input);
-  TrustMonitor<S> monitor(shadow, chainStateOf(convertState<H>(spec.run.initial)), shadowContacts(spec.run),
-                          shadowEnd<H>(spec.run), TrustMode::Auto, stop, shadowSteps(spec.run));
+  TrustMonitor<S> monitor(shadow, shadowStart<H>(spec), shadowContacts(spec.run), shadowEnd<H>(spec.run),
+                          TrustMode::Auto, stop, shadowSteps(spec.run));
   raised.onEvent = [&monitor](const BasicEvent<S>& event) { monitor.observe(chainEventOf(event)); };
-  const BasicResult<S> result = simulate(convertModel<S>(spec.model), raised, stop);
-  if (result.stop == StopReason::Undecided || stop.stop_requested()) return std::nullopt;
+  TwoMassRun<S> run(convertModel<S>(spec.model), raised, spec.stillModes);
+  run.advance(std::numeric_limits<std::int64_t>::max(), stop);
+  const BasicResult<S>& result = run.result();
+  // binary128 undecided too: its run as far as it could decide, shown as such
+  if ((result.stop == StopReason::Undecided && !lastResort) || stop.stop_requested()) return std::nullopt;
   Trust trust = monitor.finish(chainTotalsOf(result));
-  accountForUndecidedTouches(trust, result);
   return std::pair{toDoubleResult(result), std::move(trust)};
 }
 
@@ -251,9 +258,8 @@ Update run(const Spec& spec, std::stop_token stop, const Options& options,
   // the error estimate: a long double shadow of the same run, in lockstep, while it is cheap
   const BasicReadyChain<long double> input = readyChain(convertModel<long double>(spec.model));
   const ChainShadow<double> shadow = chainShadow<double>(input);
-  TrustMonitor<double> monitor(shadow, chainStateOf(convertState<long double>(spec.run.initial)),
-                               shadowContacts(spec.run), shadowEnd<long double>(spec.run), TrustMode::Auto, stop,
-                               shadowSteps(spec.run));
+  TrustMonitor<double> monitor(shadow, shadowStart<long double>(spec), shadowContacts(spec.run),
+                               shadowEnd<long double>(spec.run), TrustMode::Auto, stop, shadowSteps(spec.run));
   // Up to this many contacts the shadow runs after the run is reported, on its events kept
   // meanwhile (~1.6 MB for 20 000); beyond, in lockstep, at no memory cost. The shadow took
   // 7/8 of a 20 000-contact run's time: a display no longer waits for it.
@@ -261,23 +267,23 @@ Update run(const Spec& spec, std::stop_token stop, const Options& options,
   const bool trustAfter = spec.run.maxContacts <= kTrustAfterContacts && !spec.accuracy;
   std::vector<Event> events;
   Request primary = spec.run;
-  primary.stopAtUndecided = true;  // then the run again in a higher precision (below)
   primary.onEvent = [&monitor, &spec, &events, trustAfter](const Event& event) {
     if (trustAfter) events.push_back(event);
     else monitor.observe(chainEventOf(event));
     if (spec.run.onEvent) spec.run.onEvent(event);
   };
-  Simulator simulator(spec.model, primary);
+  // a contact double cannot decide ends it: then the run again in a higher precision (below)
+  TwoMassRun<double> primaryRun(spec.model, primary, spec.stillModes);
   // the chunk is sized in contacts and adapted to the measured speed, so that each report
   // costs about chunkSeconds; the first chunk is small to show something at once
   std::int64_t budget = 256;
   Stopwatch sinceReport;
   double copySeconds = 0;
   ResultCounts sent;
-  bool done = simulator.done();
+  bool done = primaryRun.done();
   while (!done) {
     const Stopwatch clock;
-    done = simulator.advance(budget, stop);
+    done = primaryRun.advance(budget, stop);
     const double seconds = std::max(clock.seconds(), 1e-6);
     if (done || stop.stop_requested()) break;
     budget = nextChunkContacts(budget, seconds, options.chunkSeconds);
@@ -287,9 +293,9 @@ Update run(const Spec& spec, std::stop_token stop, const Options& options,
     if (sinceReport.seconds() < std::max(options.chunkSeconds, 4 * copySeconds)) continue;
     const Stopwatch copying;
     Update partial;
-    partial.chunk = std::make_shared<const Result>(newSince(simulator.result(), sent));
-    sent = countsOf(simulator.result());
-    partial.progress = simulator.progress();
+    partial.chunk = std::make_shared<const Result>(newSince(primaryRun.result(), sent));
+    sent = countsOf(primaryRun.result());
+    partial.progress = primaryRun.progress();
     copySeconds = copying.seconds();
     report(partial);
     sinceReport.restart();
@@ -298,7 +304,7 @@ Update run(const Spec& spec, std::stop_token stop, const Options& options,
   last.progress = 1.0;
   last.final = true;
   last.runDone = true;
-  if (simulator.result().stop == StopReason::Undecided && !stop.stop_requested()) {
+  if (primaryRun.result().stop == StopReason::Undecided && !stop.stop_requested()) {
     // a contact double cannot tell a graze from an impact: long double, then binary128
     auto raised = runRaised<long double>(spec, false, stop);
     last.attempt = 1;
@@ -309,12 +315,12 @@ Update run(const Spec& spec, std::stop_token stop, const Options& options,
     if (raised) {
       last.result = std::make_shared<const Result>(std::move(raised->first));
       last.trust = std::move(raised->second);
-      last.precisionNote = simulator.result().message;
+      last.precisionNote = primaryRun.result().message;
     }
   }
-  const bool estimate = !last.result && simulator.result().stop != StopReason::InvalidInput;
-  if (estimate && !trustAfter) last.trust = monitor.finish(chainTotalsOf(simulator.result()));
-  if (!last.result) last.result = std::make_shared<const Result>(simulator.takeResult());
+  const bool estimate = !last.result && primaryRun.result().stop != StopReason::InvalidInput;
+  if (estimate && !trustAfter) last.trust = monitor.finish(chainTotalsOf(primaryRun.result()));
+  if (!last.result) last.result = std::make_shared<const Result>(primaryRun.takeResult());
   if (estimate && trustAfter) {
     Update shown = last;
     shown.trustPending = true;

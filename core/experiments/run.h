@@ -18,10 +18,11 @@
 #include "core/solver/simulate.h"
 #include "core/solver/trust.h"
 
-/// An experiment as data, and the one function that computes it: the run from its start (with
-/// its error estimate, raised to long double then binary128 when double meets a contact it
-/// cannot decide), then the work-precision sweep or the map it asks for. The explorer's worker
-/// calls only `run`; tests and benchmarks call the same function. Qt-free, like all of core.
+/// An experiment as data, and the one function that computes it: the run from its start (the
+/// one run of the chain, TwoMassRun, with its error estimate, raised to long double then
+/// binary128 when double meets a contact it cannot decide), then the work-precision sweep or the
+/// map it asks for. The explorer's worker calls only `run`; tests and benchmarks call the same
+/// function. Qt-free, like all of core.
 namespace grazelab::core::experiments {
 
 /// The work-precision sweep beside the run (the Accuracy scene): every setting on the same
@@ -72,6 +73,9 @@ struct MapCache {
 struct Spec {
   Model model;
   Request run;
+  /// the start's modes known to be exactly still (BasicChainStart: GLO_0 left unpushed names
+  /// the slow mode), kept so by the run
+  std::vector<bool> stillModes = {};
   std::optional<AccuracySweep> accuracy;
   std::optional<MapSpec> map;
   std::vector<ChainSeriesSpec> chains;

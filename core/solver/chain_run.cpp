@@ -3,9 +3,11 @@
 #include "core/solver/chain_run.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 #include <utility>
 
 #include "core/solver/chain_stick.h"
@@ -291,16 +293,57 @@ double BasicChainSimulator<S>::sampleTime(std::size_t index) const {
   return double(index) * m_sampling.spacing;
 }
 
+// where a flight that never meets the stop again is drawn to: the samples' end, or one slowest
+// period when they have none
+template <typename S>
+S BasicChainSimulator<S>::neverEnds(const S& from) const {
+  return std::isfinite(m_sampling.until) ? std::max(from, S(m_sampling.until)) : S(from + m_slowest);
+}
+
 // dense samples: the next one due, handed out over each piece of motion [from, until) (its end
 // too when the run ends there), `at(offset)` the piece's closed form
 template <typename S>
 template <typename At>
 void BasicChainSimulator<S>::samplePiece(const S& from, const S& until, bool withEnd, const At& at) {
   if (!m_sampling.wanted()) return;
-  for (double due = sampleTime(m_sampleIndex); S(due) < until || (withEnd && S(due) == until);
+  for (double due = sampleTime(m_sampleIndex);
+       (S(due) < until || (withEnd && S(due) == until)) && due <= m_sampling.until;
        due = sampleTime(++m_sampleIndex)) {
     if (m_stop.stop_requested()) return;
     if (S(due) >= from) m_sampling.sink(due, at(S(due) - from));
+  }
+}
+
+template <typename S>
+void BasicChainSimulator<S>::sampleStep(const S& from, const S& until, bool withEnd) {
+  if (!m_sampling.wanted()) return;
+  const auto motion = [this, from](const S& offset) {
+    return chainStateOf(m_scale.toPhysical(m_stepper->segmentAt(m_scale.toScaledTime(S(from + offset)))));
+  };
+  if (!m_sampling.times.empty()) return samplePiece(from, until, withEnd, motion);
+  // the grid: the step's motion a batch at a time (a flight by rotation, several times faster
+  // than a state at a time: the explorer's animation samples a whole run), from the first
+  // sample due at or after `from`
+  const double spacing = m_sampling.spacing;
+  const auto due = [&](double t) {
+    return (S(t) < until || (withEnd && S(t) == until)) && t <= m_sampling.until;
+  };
+  while (sampleTime(m_sampleIndex) < toDouble(from) && S(sampleTime(m_sampleIndex)) < from) {
+    // (a long piece, a stick held for many samples, jumped at once)
+    m_sampleIndex = std::max(m_sampleIndex + 1, std::size_t(std::max(0.0, std::floor(toDouble(from) / spacing))));
+  }
+  constexpr std::size_t kBatch = 64;
+  std::array<BasicState<S>, kBatch> states;
+  const S step = m_scale.toScaledTime(S(spacing));
+  while (due(sampleTime(m_sampleIndex))) {
+    if (m_stop.stop_requested()) return;
+    std::size_t count = 1;
+    while (count < kBatch && due(sampleTime(m_sampleIndex + count))) ++count;
+    m_stepper->segmentOnGrid(m_scale.toScaledTime(S(sampleTime(m_sampleIndex))), step, std::span(states.data(), count));
+    for (std::size_t k = 0; k < count; ++k) {
+      m_sampling.sink(sampleTime(m_sampleIndex), chainStateOf(m_scale.toPhysical(states[k])));
+      ++m_sampleIndex;
+    }
   }
 }
 
@@ -404,7 +447,7 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
       return finish(StopReason::TimeLimit, stateAt(dynamics, m_flight, tEnd - t), tEnd);
     }
     if (contact.kind == ChainContactKind::None) {
-      samplePiece(t, S(t + m_slowest), true, flightAt);  // linear forever: one slowest period drawn
+      samplePiece(t, neverEnds(t), true, flightAt);
       return finish(StopReason::NoFurtherContact, state, t);
     }
     if (contact.kind == ChainContactKind::Budget) {
@@ -465,12 +508,6 @@ bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
   // without an end time the search goes 1000 slow periods, as the modal kernel's
   const S horizon = m_tEnd > 0 ? S(std::numeric_limits<double>::infinity()) : S(twoPi<S>() * S(kFlightSearchPeriods));
   const auto physical = [&](const BasicState<S>& scaled) { return chainStateOf(m_scale.toPhysical(scaled)); };
-  // the motion of the stepper's last step, at physical time `from` + offset
-  const auto motionFrom = [&](const S& from) {
-    return [this, from](const S& offset) {
-      return chainStateOf(m_scale.toPhysical(m_stepper->segmentAt(m_scale.toScaledTime(S(from + offset)))));
-    };
-  };
   while (m_run.contacts < pieceEnd) {
     if (m_stop.stop_requested()) return finish(StopReason::Cancelled, physical(m_scaled.x), m_t);
     if (m_scaled.tau >= tauEnd) {
@@ -484,7 +521,7 @@ bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
     const S when = m_scale.toPhysicalTime(step.tau);
     switch (step.kind) {
       case Step<S>::Kind::Event: {
-        samplePiece(from, when, false, motionFrom(from));
+        sampleStep(from, when, false);
         // into the vectors reused from event to event (no allocation per contact)
         const BasicState<S> after = m_scale.toPhysical(step.after);
         const BasicState<S> before = m_scale.toPhysical(step.before);
@@ -507,16 +544,16 @@ bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
         // without an end time, a flight from the stop back on it in no time the search can tell:
         // undecided there, as the modal kernel's
         if (!(m_tEnd > 0)) return finish(StopReason::Undecided, m_anyEvent ? m_at : m_state, m_t);
-        samplePiece(from, m_tEnd, true, motionFrom(from));
+        sampleStep(from, m_tEnd, true);
         return finish(StopReason::TimeLimit, physical(step.before), m_tEnd);
       case Step<S>::Kind::NoFurtherContact:
-        samplePiece(from, S(from + m_slowest), true, motionFrom(from));  // one slowest period drawn
+        sampleStep(from, neverEnds(from), true);
         return finish(StopReason::NoFurtherContact, physical(step.before), m_t);
       case Step<S>::Kind::SearchLimit:
       case Step<S>::Kind::SearchBudget:
         // no contact decided as far as the search went (drawn that far): the run ends at the
         // flight's start, as the modal kernel's (simulate ends at the search's end)
-        samplePiece(from, when, true, motionFrom(from));
+        sampleStep(from, when, true);
         return finish(StopReason::SearchBudget, m_anyEvent ? m_at : m_state, m_t);  // the start's own numbers
       case Step<S>::Kind::Undecided:
         return finish(StopReason::Undecided, physical(m_scaled.x), m_t);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <stop_token>
 #include <type_traits>
@@ -70,14 +71,17 @@ template <typename S>
 using ChainEventSink = std::function<void(const BasicChainEvent<S>&)>;
 
 /// Dense samples of a run: the state every `spacing` from t = 0, or at the given `times`
-/// (ascending), handed to `sink` as the run passes them, up to its end (a flight that never
-/// meets the stop again: one of its slowest periods more); a sample at an event's time is the
-/// state just after it. Computed from the same closed forms as the events, nothing stored.
+/// (ascending), handed to `sink` as the run passes them, up to its end or `until`, whichever
+/// comes first (a flight that never meets the stop again: to `until`, or one of its slowest
+/// periods more when there is none); a sample at an event's time is the state just after it.
+/// Computed from the same closed forms as the events (the note's kernel's grid a batch at a
+/// time, by rotation), nothing stored.
 template <typename S>
 struct ChainSampling {
   double spacing = 0;
   std::vector<double> times;
   std::function<void(double t, const BasicChainState<S>& state)> sink;
+  double until = std::numeric_limits<double>::infinity();  ///< no sample after this time
 
   bool wanted() const { return sink && (spacing > 0 || !times.empty()); }
 };
@@ -197,6 +201,10 @@ class BasicChainSimulator {
   double sampleTime(std::size_t index) const;
   template <typename At>
   void samplePiece(const S& from, const S& until, bool withEnd, const At& at);
+  /// samplePiece over the note's kernel's last step, from `from` (its grid a batch at a time)
+  void sampleStep(const S& from, const S& until, bool withEnd);
+  /// where a flight from `from` that never meets the stop again is drawn to
+  S neverEnds(const S& from) const;
 
   std::optional<BasicReadyChain<S>> m_owned;  ///< the chain, when handed over as a temporary
   const BasicMassChain<S>& m_chain;           ///< the ready chain's numbers and dynamics

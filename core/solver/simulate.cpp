@@ -9,10 +9,9 @@
 #include <string>
 
 namespace grazelab::core {
-namespace {
 
 template <typename S>
-std::vector<Problem> validateRequest(const BasicRequest<S>& request) {
+std::vector<Problem> validate(const BasicRequest<S>& request) {
   std::vector<Problem> problems;
   auto add = [&](const char* field, const std::string& reason, const std::string& value) {
     problems.push_back({field, reason + " (got " + value + ")"});
@@ -45,7 +44,6 @@ std::vector<Problem> validateRequest(const BasicRequest<S>& request) {
   return problems;
 }
 
-}  // namespace
 
 template <typename S>
 BasicSimulator<S>::BasicSimulator(const BasicModel<S>& model, const BasicRequest<S>& request)
@@ -54,7 +52,7 @@ BasicSimulator<S>::BasicSimulator(const BasicModel<S>& model, const BasicRequest
   for (Problem& problem : validateState(model, request.initial, "initial")) {
     problems.push_back(std::move(problem));
   }
-  for (Problem& problem : validateRequest(request)) problems.push_back(std::move(problem));
+  for (Problem& problem : validate(request)) problems.push_back(std::move(problem));
   m_result.final = request.initial;
   if (problems.empty()) {
     TwoMassFormOrProblem<S> formed = makeTwoMassForm(model);
@@ -221,6 +219,7 @@ void accountForUndecidedTouches(Trust& trust, const BasicResult<S>& result) {
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                       \
+  template std::vector<Problem> validate<S>(const BasicRequest<S>&);                  \
   template void accountForUndecidedTouches<S>(Trust&, const BasicResult<S>&);         \
   template class BasicSimulator<S>;                                                   \
   template BasicResult<S> simulate<S>(const BasicModel<S>&, const BasicRequest<S>&,   \

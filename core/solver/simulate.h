@@ -39,6 +39,10 @@ struct BasicRequest {
 
 using Request = BasicRequest<double>;
 
+/// What is wrong with a request (bounds, the samples asked for); empty when it is usable.
+template <typename S>
+std::vector<Problem> validate(const BasicRequest<S>& request);
+
 /// The same request in another precision (the start widened exactly); no onEvent. A search
 /// budget left at its default becomes the default of the new precision (about a second's worth).
 template <typename To, typename From>

@@ -69,6 +69,7 @@ SceneJob gloStartJob(const Scene& scene, const Params& params, const DerivedMode
   for (const std::string& note : made.start->notes) job.notes.append(QString::fromStdString(note));
   const core::State start = core::gloData(derived.model, derived.modes, params.lambda);
   job.spec.run.initial = made.start->state;
+  job.spec.stillModes = made.start->stillModes;  // GLO_0 unpushed: the slow mode exactly still
   job.spec.run.maxContacts = std::int64_t(params.horizon);
   job.spec.run.needs = needsFor(scene.plots(), derived.modes, sampleWindow);
   job.reference = start;

@@ -596,7 +596,10 @@ void MainWindow::recompute() {
         chain.start = *clicked;
         chain.gloWeights.clear();
       }
-      if (job.spec.chains.empty() && clicked->u.size() == 2) job.spec.run.initial = core::twoMassStateOf(*clicked);
+      if (job.spec.chains.empty() && clicked->u.size() == 2) {
+        job.spec.run.initial = core::twoMassStateOf(*clicked);
+        job.spec.stillModes.clear();  // a state clicked on: nothing known still
+      }
     }
     return job;
   };
