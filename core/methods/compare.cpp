@@ -12,6 +12,7 @@
 #include "core/methods/scaled_run.h"
 #include "core/solver/chain_run.h"
 #include "core/solver/simulate.h"
+#include "core/solver/two_mass_run.h"
 
 namespace grazelab::core::methods {
 namespace {
@@ -170,7 +171,7 @@ Reference makeReference(const Task& task, const WorkBudget& budget, std::stop_to
   request.tEnd = Quad(task.tEnd) / timeFactor;
   request.maxContacts = budget.maxSteps;
   request.needs.events = true;
-  BasicSimulator<Quad> simulator(model, request);
+  TwoMassRun<Quad> simulator(model, request);
   while (!simulator.advance(4096, stop)) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

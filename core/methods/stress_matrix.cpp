@@ -12,6 +12,7 @@
 #include "core/orbits/special_orbits.h"
 #include "core/orbits/starts.h"
 #include "core/solver/simulate.h"
+#include "core/solver/two_mass_run.h"
 
 namespace grazelab::core::methods {
 namespace {
@@ -362,7 +363,7 @@ void runLong(const StressCase& row, const std::vector<MethodKind>& methods,
     request.initial = task.start;
     request.maxContacts = row.longRunContacts;
     request.needs.events = false;
-    Simulator simulator(task.model, request);
+    TwoMassRun<double> simulator(task.model, request);
     const auto started = std::chrono::steady_clock::now();
     auto previous = started;
     std::int64_t previousContacts = 0;
@@ -372,7 +373,7 @@ void runLong(const StressCase& row, const std::vector<MethodKind>& methods,
       const Result& result = simulator.result();
       const std::int64_t contacts = result.cost.contacts;
       if (marks) {
-        marks->push_back({contacts, simulator.scale().toPhysicalTime(simulator.state().tau),
+        marks->push_back({contacts, simulator.time(),
                           result.cost.maxRelEnergyDrift,
                           std::chrono::duration<double, std::nano>(now - previous).count() /
                               double(std::max<std::int64_t>(1, contacts - previousContacts))});

@@ -9,6 +9,7 @@
 
 #include "core/solver/chain_run.h"
 #include "core/solver/trust.h"
+#include "core/solver/two_mass_run.h"
 #include "core/solver/simulate.h"
 
 namespace grazelab::core::methods {
@@ -195,10 +196,9 @@ Trust startTrust(const Task& task, std::stop_token stop) {
   request.maxContacts = std::numeric_limits<std::int64_t>::max();
   request.needs.events = false;
   request.onEvent = [&monitor](const Event& event) { monitor.observe(chainEventOf(event)); };
-  const Result result = simulate(task.model, request, stop);
-  Trust trust = monitor.finish(chainTotalsOf(result));
-  accountForUndecidedTouches(trust, result);  // (this run goes on through them)
-  return trust;
+  TwoMassRun<double> run(task.model, request);
+  run.advance(std::numeric_limits<std::int64_t>::max(), stop);
+  return monitor.finish(chainTotalsOf(run.result()));
 }
 
 Trust startTrust(const ChainTask& task, std::stop_token stop) {

@@ -102,13 +102,8 @@ bool TwoMassRun<S>::advance(std::int64_t contactBudget, std::stop_token stop) {
   if (m_done) return true;
   const auto started = std::chrono::steady_clock::now();
   const long budget = long(std::clamp<std::int64_t>(contactBudget, 1, std::numeric_limits<long>::max()));
-  if (m_run->advance(budget, std::move(stop))) finish();
-  m_result.cost.wallSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  return m_done;
-}
-
-template <typename S>
-void TwoMassRun<S>::finish() {
+  const bool over = m_run->advance(budget, std::move(stop));
+  // the counts and the accuracy so far (a run in pieces reports them as it goes)
   const BasicChainRun<S>& run = m_run->run();
   Cost& cost = m_result.cost;
   cost.contacts = run.contacts;
@@ -117,6 +112,18 @@ void TwoMassRun<S>::finish() {
   cost.sticks = run.sticks;
   cost.maxRelEnergyDrift = run.maxEnergyDrift;
   cost.maxContactResidual = run.maxContactResidual;
+  if (over) finish();
+  cost.wallSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return m_done;
+}
+
+template <typename S>
+void TwoMassRun<S>::finish() {
+  const BasicChainRun<S>& run = m_run->run();
+  // the largest drift at the events and at the end
+  using std::abs;
+  const S finalDrift = run.energyInitial > 0 ? S(abs(run.energyFinal / run.energyInitial - 1)) : S(0);
+  m_result.cost.maxRelEnergyDrift = std::max(run.maxEnergyDrift, toDouble(finalDrift));
   m_result.stop = run.stop;
   m_result.tFinal = run.tFinal;
   m_result.final = twoMassStateOf(run.final);

@@ -39,6 +39,8 @@ class TwoMassRun {
   /// Fraction of the requested contacts or time done, in [0, 1].
   double progress() const;
   const BasicResult<S>& result() const { return m_result; }
+  /// Where the run stands [time] (the last event's time until it is over).
+  const S& time() const { return m_run ? m_run->time() : m_result.tFinal; }
   /// Hands over the result (the run is done with it).
   BasicResult<S> takeResult() { return std::move(m_result); }
 

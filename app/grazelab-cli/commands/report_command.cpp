@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/solver/chain_run.h"
+#include "core/solver/two_mass_run.h"
 #include "io/chain_start.h"
 #include "io/cli_input.h"
 #include "io/option_values.h"
@@ -165,7 +166,7 @@ std::optional<ReportProblem> twoMassProblem(const QCommandLineParser& parser, QS
     request.onEvent = [&times](const core::Event& e) {
       if (core::isContact(e.type)) times.push_back(e.t);
     };
-    core::simulate(task.model, request);
+    core::TwoMassRun<double>(task.model, request).advance(std::numeric_limits<std::int64_t>::max());
     return times;
   }, error);
   if (!tEnd) return std::nullopt;
