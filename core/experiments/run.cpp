@@ -86,7 +86,8 @@ Update sweepAccuracy(const Spec& spec, Update last, std::stop_token stop,
   // timed with the events only (every contact: the matching needs them all); the overlay's
   // run again with the samples, which would tilt the timing (the exact solver evaluates its
   // flight at each sample, a time stepper only keeps its own steps)
-  methods::Task task{spec.model, spec.run.initial, last.result->tFinal + period / 2, {}};
+  methods::Task task =
+      methods::prepared(methods::Task{spec.model, spec.run.initial, last.result->tFinal + period / 2, {}});
   task.needs.events = true;
   methods::Task overlayTask = task;
   overlayTask.needs.samples = spec.run.needs.samples;

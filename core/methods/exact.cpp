@@ -64,7 +64,7 @@ MethodRun runIn(const Task& task, const WorkBudget& budget, std::stop_token stop
   request.maxContacts = budget.maxSteps;
   request.needs = task.needs;
   // the one run of the chain (a contact S cannot decide ends it: the report says so)
-  TwoMassRun<S> simulator(convertModel<S>(task.model), request);
+  TwoMassRun<S> simulator(convertModel<S>(task.model), request, {}, task.prepared ? &readyIn<S>(*task.prepared) : nullptr);
   MethodRun run;
   const bool overTime = advanceWithin(simulator, budget, stop, started);
   const BasicResult<S>& result = simulator.result();

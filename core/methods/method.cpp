@@ -156,6 +156,16 @@ ChainTask prepared(ChainTask task) {
   return task;
 }
 
+Task prepared(Task task) {
+  if (!validate(task.model).empty() || !makeTwoMassForm(task.model).chain) return task;
+  const ReadyChain ready = readyChain(task.model);
+  const ChainVector<double>& omega = ready.dynamics.omega;
+  task.prepared = std::make_shared<const PreparedChain>(PreparedChain{
+      ready, readyChain(convertModel<long double>(task.model)), readyChain(convertModel<Quad>(task.model)),
+      omega.minCoeff(), omega.maxCoeff()});
+  return task;
+}
+
 MethodRun runMethod(const Task& task, const MethodSetting& setting, const WorkBudget& budget,
                     std::stop_token stop) {
   return runOn(task, setting, budget, std::move(stop));

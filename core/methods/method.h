@@ -83,13 +83,16 @@ std::string_view toString(RunStatus status);
 
 /// The same chain, start and horizon for every method: the note's chain, written with its own
 /// parameters (Task), or any chain of N masses (ChainTask).
+struct PreparedChain;
 struct Task {
   Model model;
   State start;
   double tEnd = 0;  ///< the horizon [time]
   Needs needs;      ///< what to keep (the events, samples for an overlay)
+  /// The chain made ready once (prepared()), as ChainTask's: the exact solver's timed runs do
+  /// not pay for its modes. Empty: each run makes what it needs.
+  std::shared_ptr<const PreparedChain> prepared = {};
 };
-struct PreparedChain;
 struct ChainTask {
   MassChain chain;
   ChainState start;
@@ -116,6 +119,7 @@ struct PreparedChain {
 /// The task with its chain made ready; a chain that is not usable is left as it is (its runs
 /// refuse it).
 ChainTask prepared(ChainTask task);
+Task prepared(Task task);
 
 /// What every method returns: its events with their states, final state and energy (the note's
 /// chain: the recorder's Result, with samples for an overlay; any chain: a ChainRun, events in

@@ -52,7 +52,7 @@ StressCase gloCase(std::string name, std::string description, const Model& model
     return result;
   }
   const double period = twoPi<double>() / chain.omegaSlow;
-  result.task = Task{model, start.start->state, kCasePeriods * period, {}};
+  result.task = prepared(Task{model, start.start->state, kCasePeriods * period, {}});
   return result;
 }
 
@@ -156,7 +156,7 @@ std::vector<StressCase> stressCases(bool quick) {
                            std::nullopt, {}, {}, {}, 0};
     const Model model = designed(0.5, Branch::Upper);
     const double period = twoPi<double>() / makeTwoMassForm(model).chain->omegaSlow;
-    sticking.task = Task{model, State{1.5, 1, 0, 0}, kCasePeriods * period, {}};
+    sticking.task = prepared(Task{model, State{1.5, 1, 0, 0}, kCasePeriods * period, {}});
     cases.push_back(sticking);
   }
   for (double kc : quick ? std::vector<double>{1e12} : std::vector<double>{1e2, 1e4, 1e6, 1e8, 1e10, 1e12}) {

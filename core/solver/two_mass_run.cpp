@@ -11,7 +11,8 @@
 namespace grazelab::core {
 
 template <typename S>
-TwoMassRun<S>::TwoMassRun(const BasicModel<S>& model, const BasicRequest<S>& request, std::vector<bool> stillModes)
+TwoMassRun<S>::TwoMassRun(const BasicModel<S>& model, const BasicRequest<S>& request, std::vector<bool> stillModes,
+                          const BasicReadyChain<S>* ready)
     : m_request(request) {
   std::vector<Problem> problems = validate(model);
   for (Problem& problem : validateState(model, request.initial, "initial")) problems.push_back(std::move(problem));
@@ -44,8 +45,13 @@ TwoMassRun<S>::TwoMassRun(const BasicModel<S>& model, const BasicRequest<S>& req
   const long contacts = long(std::min<std::int64_t>(request.maxContacts, std::numeric_limits<long>::max()));
   const S tEnd = isFinite(request.tEnd) ? request.tEnd : S(0);
   const std::int64_t steps = request.flightSearchSteps != defaultSearchSteps<S>() ? request.flightSearchSteps : 0;
-  m_run.emplace(readyChain(model), BasicChainStart<S>(chainStateOf(start), std::move(stillModes)), contacts, tEnd,
-                [this](const BasicChainEvent<S>& event) { take(event); }, std::move(sampling), steps);
+  const BasicChainStart<S> from(chainStateOf(start), std::move(stillModes));
+  const ChainEventSink<S> sink = [this](const BasicChainEvent<S>& event) { take(event); };
+  if (ready) {
+    m_run.emplace(*ready, from, contacts, tEnd, sink, std::move(sampling), steps);
+  } else {
+    m_run.emplace(readyChain(model), from, contacts, tEnd, sink, std::move(sampling), steps);
+  }
   if (m_run->done()) finish();
 }
 

@@ -27,8 +27,11 @@ template <typename S>
 class TwoMassRun {
  public:
   /// Validates the model and the request; an invalid one is done at once (StopReason::InvalidInput).
-  /// `stillModes`: the start's modes known to be exactly still (BasicChainStart).
-  TwoMassRun(const BasicModel<S>& model, const BasicRequest<S>& request, std::vector<bool> stillModes = {});
+  /// `stillModes`: the start's modes known to be exactly still (BasicChainStart). `ready`: the
+  /// model made ready already (readyChain(model)), which the run then holds by reference (a
+  /// timed run does not pay for the chain's modes); it must outlive the run.
+  TwoMassRun(const BasicModel<S>& model, const BasicRequest<S>& request, std::vector<bool> stillModes = {},
+             const BasicReadyChain<S>* ready = nullptr);
   TwoMassRun(const TwoMassRun&) = delete;
   TwoMassRun& operator=(const TwoMassRun&) = delete;
 

@@ -187,7 +187,7 @@ std::optional<ReportProblem> twoMassProblem(const QCommandLineParser& parser, QS
   input.start = V::array({V::number(s.u1), V::number(s.u2), V::number(s.v1), V::number(s.v2)});
   input.k1 = m.k1;
   input.tEnd = task.tEnd;
-  problem.task = std::move(task);
+  problem.task = core::methods::prepared(std::move(task));  // no timed run pays for the modes
   return problem;
 }
 
