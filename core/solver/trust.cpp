@@ -177,7 +177,17 @@ TrustMonitor<S>::TrustMonitor(const ChainShadow<S>& shadow, const BasicChainStar
     return;
   }
   // each shadow event, held until compared
-  const ChainEventSink<H> sink = [this](const BasicChainEvent<H>& event) { m_pending.push_back(event); };
+  const ChainEventSink<H> sink = [this](const BasicChainEvent<H>& event) {
+    if (m_pendingCount == m_pending.size()) {
+      // full: the ring laid out from its first slot, one slot more
+      std::rotate(m_pending.begin(), m_pending.begin() + std::ptrdiff_t(m_pendingFirst), m_pending.end());
+      m_pendingFirst = 0;
+      m_pending.push_back(event);
+    } else {
+      m_pending[(m_pendingFirst + m_pendingCount) % m_pending.size()] = event;
+    }
+    ++m_pendingCount;
+  };
   m_shadow = std::make_unique<BasicChainSimulator<H>>(ready, x, maxContacts, shadowEnd, sink, ChainSampling<H>{},
                                                       searchSteps);
   // the slowest angular frequency in the primary's time (the note's from its closed form)
@@ -202,10 +212,15 @@ std::string TrustMonitor<S>::shadowName() const {
 }
 
 template <typename S>
-typename TrustMonitor<S>::Point TrustMonitor<S>::fromShadow(const ChainVector<H>& u, const ChainVector<H>& v) const {
-  if (m_chain->length == 1 && m_chain->time == 1) return {u, v};
+void TrustMonitor<S>::fromShadow(Point& into, const ChainVector<H>& u, const ChainVector<H>& v) const {
+  if (m_chain->length == 1 && m_chain->time == 1) {
+    into.u = u;
+    into.v = v;
+    return;
+  }
   const H speed = m_chain->length * m_chain->time;
-  return {u / m_chain->length, v / speed};
+  into.u = u / m_chain->length;
+  into.v = v / speed;
 }
 
 template <typename S>
@@ -240,13 +255,15 @@ bool TrustMonitor<S>::withinBudget() const {
 }
 
 template <typename S>
-std::optional<BasicChainEvent<typename TrustMonitor<S>::H>> TrustMonitor<S>::nextShadowEvent() {
-  while (m_pending.empty() && !m_shadow->done()) m_shadow->advance(1, m_stop);
-  if (m_pending.empty()) return std::nullopt;
-  BasicChainEvent<H> event = std::move(m_pending.front());
-  m_pending.pop_front();
-  event.t *= m_chain->time;
-  return event;
+const BasicChainEvent<typename TrustMonitor<S>::H>* TrustMonitor<S>::nextShadowEvent() {
+  while (m_pendingCount == 0 && !m_shadow->done()) m_shadow->advance(1, m_stop);
+  return m_pendingCount > 0 ? &m_pending[m_pendingFirst] : nullptr;
+}
+
+template <typename S>
+void TrustMonitor<S>::popShadowEvent() {
+  m_pendingFirst = (m_pendingFirst + 1) % m_pending.size();
+  --m_pendingCount;
 }
 
 template <typename S>
@@ -286,7 +303,7 @@ void TrustMonitor<S>::observe(const BasicChainEvent<S>& event) {
                  " events (--trust auto keeps it cheap)";
     return;
   }
-  const std::optional<BasicChainEvent<H>> shadow = nextShadowEvent();
+  const BasicChainEvent<H>* shadow = nextShadowEvent();
   if (!shadow && m_stop.stop_requested()) {
     // interrupted: the estimate holds up to here, the shadow took no other path
     m_active = false;
@@ -313,20 +330,25 @@ void TrustMonitor<S>::observe(const BasicChainEvent<S>& event) {
     return;
   }
   // the states before and after the event (the stopped mass's velocity changes; a release or a
-  // stick's end changes nothing of them)
-  const Point before{event.u.template cast<H>(), event.vBefore.template cast<H>()};
-  Point after = before;
-  after.v[m_stopped] = H(event.vAfter);
-  Vector shadowVAfter = shadow->vBefore;
-  shadowVAfter[m_stopped] = shadow->vAfter;
-  const Point shadowBefore = fromShadow(shadow->u, shadow->vBefore);
-  const Point shadowAfter = fromShadow(shadow->u, shadowVAfter);
-  widenScales(shadowBefore);
-  widenScales(shadowAfter);
+  // stick's end changes nothing of them), in vectors reused from event to event
+  m_before.u = event.u.template cast<H>();
+  m_before.v = event.vBefore.template cast<H>();
+  m_after.u = m_before.u;
+  m_after.v = m_before.v;
+  m_after.v[m_stopped] = H(event.vAfter);
+  fromShadow(m_shadowBefore, shadow->u, shadow->vBefore);
+  m_shadowAfter.u = m_shadowBefore.u;
+  m_shadowAfter.v = m_shadowBefore.v;
+  m_shadowAfter.v[m_stopped] = m_chain->length == 1 && m_chain->time == 1
+                                   ? shadow->vAfter
+                                   : H(shadow->vAfter / (m_chain->length * m_chain->time));
+  widenScales(m_shadowBefore);
+  widenScales(m_shadowAfter);
   using std::abs;
-  const double stateError = std::max(relativeStateError(before, shadowBefore),
-                                     relativeStateError(after, shadowAfter));
-  const double timeError = toDouble(H(abs(H(event.t) - shadow->t) / m_period));
+  const double stateError = std::max(relativeStateError(m_before, m_shadowBefore),
+                                     relativeStateError(m_after, m_shadowAfter));
+  const double timeError = toDouble(H(abs(H(event.t) - H(shadow->t * m_chain->time)) / m_period));
+  popShadowEvent();
   compare(H(event.t), stateError, timeError);
   ++m_compared;
 }
@@ -447,17 +469,18 @@ Trust TrustMonitor<S>::estimate(const BasicChainRun<S>& primary) {
     const BasicChainRun<H>& shadow = m_shadow->run();
     if (shadow.stop == StopReason::Cancelled) {
       m_stopNote = "the shadow was interrupted";
-    } else if (shadow.stop == StopReason::Undecided && m_pending.empty()) {
+    } else if (shadow.stop == StopReason::Undecided && m_pendingCount == 0) {
       shadowUndecided();
-    } else if (!m_pending.empty()) {
+    } else if (m_pendingCount > 0) {
       m_failure = "the shadow run has a contact the run has not (t = " +
-                  formatScalar(H(m_pending.front().t * m_chain->time)) + ")";
+                  formatScalar(H(m_pending[m_pendingFirst].t * m_chain->time)) + ")";
     } else if (shadow.stop != primary.stop) {
       m_failure = "the shadow run stopped with " + std::string(toString(shadow.stop)) +
                   ", the run with " + std::string(toString(primary.stop));
     } else {
       const Point final{primary.final.u.template cast<H>(), primary.final.v.template cast<H>()};
-      const Point shadowFinal = fromShadow(shadow.final.u, shadow.final.v);
+      Point shadowFinal;
+      fromShadow(shadowFinal, shadow.final.u, shadow.final.v);
       widenScales(shadowFinal);
       const double stateError = relativeStateError(final, shadowFinal);
       using std::abs;

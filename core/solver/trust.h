@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
 #include <memory>
 #include <optional>
 #include <stop_token>
@@ -186,9 +185,12 @@ class TrustMonitor {
   /// the shadow ended at a contact it cannot decide: the comparison stops there, no path taken
   void shadowUndecided();
   bool withinBudget() const;
-  std::optional<BasicChainEvent<H>> nextShadowEvent();
-  /// a shadow's state in the primary's units
-  Point fromShadow(const ChainVector<H>& u, const ChainVector<H>& v) const;
+  /// the shadow's next event (its time still the shadow's), held until popShadowEvent; none
+  /// when the shadow has ended
+  const BasicChainEvent<H>* nextShadowEvent();
+  void popShadowEvent();
+  /// a shadow's state in the primary's units, into `into` (its storage reused)
+  void fromShadow(Point& into, const ChainVector<H>& u, const ChainVector<H>& v) const;
   void widenScales(const Point& state);
   double relativeStateError(const Point& primary, const Point& shadow) const;
   void compare(const H& t, double stateError, double timeError);
@@ -205,7 +207,11 @@ class TrustMonitor {
   long m_maxContacts = 0;
   H m_tEnd = 0;
   std::int64_t m_searchSteps = 0;
-  std::deque<BasicChainEvent<H>> m_pending;  ///< shadow events not yet matched (at most a few)
+  /// shadow events not yet matched (at most a few), a ring of slots reused from event to event:
+  /// no allocation per event
+  std::vector<BasicChainEvent<H>> m_pending;
+  std::size_t m_pendingFirst = 0, m_pendingCount = 0;
+  Point m_before, m_after, m_shadowBefore, m_shadowAfter;  ///< an event's states, compared
   bool m_active = true;
   bool m_shadowUndecided = false;
   std::string m_stopNote;  ///< why the shadow stopped early, if it did
