@@ -70,7 +70,7 @@ MethodRun runIn(const Task& task, const WorkBudget& budget, std::stop_token stop
   const BasicResult<S>& result = simulator.result();
   run.result = toDoubleResult(result);
   run.steps = result.cost.contacts;
-  run.maxEnergyDrift = result.cost.maxRelEnergyDrift;  // (the end's included)
+  run.maxEnergyDrift = result.cost.maxRelEnergyDrift;  // (at the events; at the end too once over)
   switch (result.stop) {
     case StopReason::TimeLimit:
     case StopReason::NoFurtherContact:

@@ -30,7 +30,8 @@ struct BasicRequest {
   /// Stop, with StopReason::Undecided and the state before that flight, at the first contact
   /// whose class (touch or crossing) the precision cannot decide: --precision auto then runs
   /// again in a higher one. Off: such a contact is taken as a touch and counted
-  /// (Cost::undecidedTouches), and the error estimate says so.
+  /// (Cost::undecidedTouches), and the error estimate says so. (The note's simulator only: the
+  /// one run, TwoMassRun's, always stops there.)
   bool stopAtUndecided = false;
   Needs needs;
   /// Called with every event as it happens, whatever `needs` keeps (streaming output).

@@ -190,8 +190,10 @@ TrustMonitor<S>::TrustMonitor(const ChainShadow<S>& shadow, const BasicChainStar
   };
   m_shadow = std::make_unique<BasicChainSimulator<H>>(ready, x, maxContacts, shadowEnd, sink, ChainSampling<H>{},
                                                       searchSteps);
-  // the slowest angular frequency in the primary's time (the note's from its closed form)
-  m_omega = (ready.notes ? ready.notes->omegaSlow : H(ready.dynamics.omega.minCoeff())) * shadow.time;
+  // the slowest and the fastest angular frequency in the primary's time (the shadow's chain runs
+  // `time` times as fast; the note's slowest from its closed form)
+  m_omega = (ready.notes ? ready.notes->omegaSlow : H(ready.dynamics.omega.minCoeff())) / shadow.time;
+  m_fastest = H(ready.dynamics.omega.maxCoeff()) / shadow.time;
   m_period = twoPi<H>() / m_omega;
   using std::abs;
   m_scaleU = Vector::Zero(start.state.u.size());
@@ -247,6 +249,16 @@ double TrustMonitor<S>::relativeStateError(const Point& primary, const Point& sh
   against(primary.u, shadow.u, m_scaleU, positions);
   against(primary.v, shadow.v, m_scaleV, velocities);
   return worst;
+}
+
+template <typename S>
+typename TrustMonitor<S>::H TrustMonitor<S>::fastestRate() const {
+  // over the scales: a state moves at most |v| <= velocities (over positions) and
+  // |a| <= w_max^2 positions (over velocities)
+  using std::max;
+  const H positions = max(H(m_scaleU.maxCoeff()), H(epsilon<H>()));
+  const H velocities = max(H(m_scaleV.maxCoeff()), H(m_omega * positions));
+  return max(H(velocities / positions), H(m_fastest * m_fastest * positions / velocities));
 }
 
 template <typename S>
@@ -345,9 +357,15 @@ void TrustMonitor<S>::observe(const BasicChainEvent<S>& event) {
   widenScales(m_shadowBefore);
   widenScales(m_shadowAfter);
   using std::abs;
-  const double stateError = std::max(relativeStateError(m_before, m_shadowBefore),
-                                     relativeStateError(m_after, m_shadowAfter));
-  const double timeError = toDouble(H(abs(H(event.t) - H(shadow->t * m_chain->time)) / m_period));
+  const H timeShift = abs(H(event.t) - H(shadow->t * m_chain->time));
+  double stateError = std::max(relativeStateError(m_before, m_shadowBefore), relativeStateError(m_after, m_shadowAfter));
+  if (!m_chain->ready().notes) {
+    // the state at a given time: also where the motion goes in the time the event is off by (a
+    // stiff light mass meets the stop thousands of times a period, u_s = d exactly at each, but
+    // at speed V an event dt late is V dt away at any given time)
+    stateError = std::max(stateError, toDouble(H(timeShift * fastestRate())));
+  }
+  const double timeError = toDouble(H(timeShift / m_period));
   popShadowEvent();
   compare(H(event.t), stateError, timeError);
   ++m_compared;
@@ -436,10 +454,13 @@ Trust TrustMonitor<S>::finish(const BasicChainRun<S>& primary) {
     }
   }
   if (trust.verdict == Verdict::Unreliable) arbitrate(primary, trust);
-  if (primary.stop == StopReason::SearchBudget) {
+  if (primary.stop == StopReason::SearchBudget || primary.stop == StopReason::Undecided) {
     // the run stopped undecided: whatever came before holds, what follows is not known
     if (trust.verdict != Verdict::Unreliable) trust.verdict = Verdict::Degraded;
-    trust.reason = "no contact was decided within the search's budget; " + trust.reason;
+    trust.reason = (primary.stop == StopReason::SearchBudget
+                        ? "no contact was decided within the search's budget; "
+                        : "the run ended at a contact its precision cannot decide; ") +
+                   trust.reason;
   }
   return trust;
 }
@@ -472,7 +493,7 @@ Trust TrustMonitor<S>::estimate(const BasicChainRun<S>& primary) {
     } else if (shadow.stop == StopReason::Undecided && m_pendingCount == 0) {
       shadowUndecided();
     } else if (m_pendingCount > 0) {
-      m_failure = "the shadow run has a contact the run has not (t = " +
+      m_failure = "the shadow run has an event the run has not (t = " +
                   formatScalar(H(m_pending[m_pendingFirst].t * m_chain->time)) + ")";
     } else if (shadow.stop != primary.stop) {
       m_failure = "the shadow run stopped with " + std::string(toString(shadow.stop)) +

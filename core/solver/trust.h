@@ -55,8 +55,9 @@ struct Trust {
 };
 
 /// The scalar of the shadow run: one precision up (double -> long double -> binary128); a
-/// binary128 run is shadowed by another binary128 run on the chain scaled 3x in length and
-/// 1/sqrt(3) in time, which changes every rounding (the physics is scale-free) but not the answer.
+/// binary128 run is shadowed by another binary128 run on the chain scaled 3x in length, 5x in
+/// mass and 1/sqrt(3) in time, which changes every rounding (the physics is scale-free) but not
+/// the answer.
 template <typename S>
 struct ShadowOf {
   using type = long double;
@@ -73,8 +74,8 @@ template <typename S>
 using ShadowScalar = typename ShadowOf<S>::type;
 
 /// Which of a chain's numbers were read exactly (a decimal like 0.5 is exact in binary, 0.1 is
-/// not). A shadow of the same precision nudges the others by one rounding, so that their
-/// representation counts as error (near m2/m1 = 9/16 the note's design amplifies it ~1e7). A mass
+/// not). A shadow of the same precision nudges the others by four ulps (the start by half an
+/// ulp), so that their representation counts as error (near m2/m1 = 9/16 the note's design amplifies it ~1e7). A mass
 /// or spring not listed counts as exact; the start counts as rounded (a state read or computed in
 /// the run's precision) unless `start` says otherwise.
 struct ExactParameters {
@@ -141,9 +142,11 @@ ChainShadow<S> widenedShadow(const BasicReadyChain<S>& chain, std::optional<Basi
 /// by event, so that it costs no memory however long the run (docs/numerics.md). Each event's
 /// state is compared against the largest sizes each coordinate reached (floored at 1e-3 of the
 /// positions' and velocities' scales), its time against the slowest period; the horizon is where
-/// that error first passes kHorizonTolerance, observed, or extrapolated from its growth. A
-/// double run judged unreliable is arbitrated by a binary128 run of the same input. Feed it
-/// every event of the run (observe), then finish with the run.
+/// that error first passes kHorizonTolerance, observed, or extrapolated from its growth. For a
+/// chain other than the note's, an event's state error is also where the motion goes in the time
+/// the event is off by (a stiff light mass). A double run of the note's chain judged unreliable
+/// is arbitrated by a binary128 run of the same input. Feed it every event of the run
+/// (observe), then finish with the run.
 /// Holds its own shadow run: neither copied nor moved.
 template <typename S>
 class TrustMonitor {
@@ -185,6 +188,8 @@ class TrustMonitor {
   /// the shadow ended at a contact it cannot decide: the comparison stops there, no path taken
   void shadowUndecided();
   bool withinBudget() const;
+  /// the fastest a state error can grow from a time error, per unit time, over the scales
+  H fastestRate() const;
   /// the shadow's next event (its time still the shadow's), held until popShadowEvent; none
   /// when the shadow has ended
   const BasicChainEvent<H>* nextShadowEvent();
@@ -222,6 +227,7 @@ class TrustMonitor {
   Eigen::Index m_stopped = 0;  ///< the stopped mass, 0-based
   H m_period = 0;              ///< the slowest period [time]
   H m_omega = 1;               ///< the slowest angular frequency [1/time]
+  H m_fastest = 1;             ///< the fastest angular frequency [1/time]
   Vector m_scaleU, m_scaleV;   ///< largest |u_i|, |v_i| seen (u_s at least the gap)
   double m_worstTime = 0;    ///< worst contact time error / the slowest period
   double m_lastState = 0;    ///< state error at the last compared event

@@ -50,7 +50,7 @@ void MainWindow::showStatus(const SimUpdate& update) {
       const core::Trust& trust = shown.trust;
       if (trust.verdict == core::Verdict::Unchecked) {
         // not asked for (the scene says why), or not yet there
-      } else if (trust.shadowEvents == 0) {
+      } else if (trust.shadowEvents == 0 && trust.verdict == core::Verdict::Ok && shown.run.contacts == 0) {
         // a run with no event gives its shadow nothing to compare ("ok ... until t = 0" said nothing)
         text += QStringLiteral(" · ") + tr("no error estimate (no contact to compare)");
       } else {

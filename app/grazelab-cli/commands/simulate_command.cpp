@@ -538,6 +538,7 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
     // chain read one precision up, binary128's scaled; a doubtful double run arbitrated in
     // binary128; Reference.TrustIsHonest holds it to an independent 50-digit reference)
     std::optional<core::TrustMonitor<S>> check;
+    std::string widenedStart;  ///< why the shadow's start is the run's own, when it is
     if (format != Format::Csv) {
       using H = core::ShadowScalar<S>;
       const core::ChainShadow<S>& shadow = shadowFor<S>(chain, *trustMode);
@@ -556,6 +557,10 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
       if (!upStart) {
         upStart = core::BasicChainStart<H>{{start->state.u.template cast<H>(), start->state.v.template cast<H>()},
                                            start->stillModes};
+        if (shadow.usable()) {
+          widenedStart = std::string("the shadow starts from the run's start widened (not read one precision up: its "
+                                     "rounding is not in the estimate)");
+        }
       }
       QString ignored;
       const auto upLimit = timeLimit<H>(tEnd, ignored);
@@ -672,13 +677,9 @@ int runPrepared(const PreparedMassChain& chain, const OptionValues& options, con
       if (written.differed) trust.verdict = core::Verdict::Unreliable;
       trust.reason = kept.str() + "; " + trust.reason;
     }
-    if (run.stop == core::StopReason::Undecided && trust.verdict == core::Verdict::Ok) {
-      // a fixed precision that could not decide a contact: the estimate covers a run cut short
-      trust.verdict = core::Verdict::Degraded;
-      trust.reason = std::string("the run ended at a contact this precision cannot decide (") +
-                     (std::is_same_v<S, core::Quad> ? "binary128, the widest, cannot either" : "--precision auto goes higher") +
-                     "); " + trust.reason;
-    }
+    // (a fixed precision that could not decide a contact: the estimate says the run ended there,
+    // at best degraded; the document's message says what a higher precision does)
+    if (!widenedStart.empty() && trust.verdict != core::Verdict::Unchecked) trust.reason += "; " + widenedStart;
     if (format == Format::Summary) {
       const std::string used = std::string(name) + (precisionText == "auto" ? " (auto)" : "");
       std::fputs(summaryText(ready, *start, run, seconds, used, escalations, trust).c_str(), io.out);

@@ -212,10 +212,28 @@ std::optional<PrecisionOption> parsePrecisionOption(const OptionValues& options,
   return PrecisionOption{precision};
 }
 
+namespace {
+
+// Whether a number's decimal text is a number of S (read with 400 bits, it equals its value read
+// in S); an empty text is a default, exact
+template <typename S>
+bool exactIn(const char* name, const QString& text) {
+  using Wide = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<400, boost::multiprecision::digit_base_2>>;
+  if (text.isEmpty()) return true;
+  QString error;
+  const auto value = toNumber<S>(name, text, error);
+  if (!value) return false;
+  try {
+    return Wide(text.toStdString()) == Wide(*value);
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace
+
 template <typename S>
 core::ExactParameters exactParameters(const OptionValues& options) {
-  // the decimal read with 400 bits: equal to the value read in S only when S holds it exactly
-  using Wide = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<400, boost::multiprecision::digit_base_2>>;
   // the text each number was written as: the two-mass options, or --masses m1,m2 and --springs
   // k1[,k2] for the same chain (k1 = 1 when not given, k2 designed when not given)
   const QStringList masses = options.value("masses").split(',');
@@ -228,22 +246,28 @@ core::ExactParameters exactParameters(const OptionValues& options) {
     if (field == "k2") return springs.value(1).trimmed();
     return options.value(name);
   };
-  auto exact = [&](const char* name) {
-    const QString text = textOf(name);
-    if (text.isEmpty()) return true;
-    QString error;
-    const auto value = toNumber<S>(name, text, error);
-    if (!value) return false;
-    try {
-      return Wide(text.toStdString()) == Wide(*value);
-    } catch (const std::exception&) {
-      return false;
-    }
-  };
+  auto exact = [&](const char* name) { return exactIn<S>(name, textOf(name)); };
   core::ExactParameters read;
   read.masses = {exact("m1"), exact("m2")};
   read.springs = {exact("k1"), exact("k2")};
   read.gap = exact("gap");
+  return read;
+}
+
+template <typename S>
+core::ExactParameters chainExactParameters(const OptionValues& options) {
+  core::ExactParameters read;
+  read.gap = exactIn<S>("gap", options.value("gap"));
+  // a design's springs are designed for the masses as they stand: nudging either would leave
+  // the design (its grazing orbits would graze no more); the gap alone then
+  if (options.isSet("frequencies")) return read;
+  for (const QString& mass : options.value("masses").split(',')) read.masses.push_back(exactIn<S>("masses", mass.trimmed()));
+  if (options.isSet("springs")) {
+    for (const QString& spring : options.value("springs").split(',')) {
+      read.springs.push_back(exactIn<S>("springs", spring.trimmed()));
+    }
+  }
+  read.rightSpring = exactIn<S>("right-spring", options.value("right-spring"));
   return read;
 }
 
@@ -709,6 +733,7 @@ Parsed<core::BasicMassChain<S>> massChainIn(const OptionValues& options, const M
 #define GRAZELAB_INSTANTIATE(S)                                                     \
   template Parsed<core::BasicMassChain<S>> massChainIn<S>(const OptionValues&, const MassChainInput&); \
   template core::ExactParameters exactParameters<S>(const OptionValues&);     \
+  template core::ExactParameters chainExactParameters<S>(const OptionValues&); \
   template Parsed<ModelInput<S>> parseModel<S>(const OptionValues&);          \
   template Parsed<core::StartSpec<S>> parseStartSpec<S>(const OptionValues&,  \
                                                         const core::BasicModel<S>&); \

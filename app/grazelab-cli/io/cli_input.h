@@ -49,6 +49,10 @@ std::optional<core::TrustMode> parseTrustOption(const OptionValues& options, QSt
 /// rounded.
 template <typename S>
 core::ExactParameters exactParameters(const OptionValues& options);
+/// The same for a chain of N masses (--masses, --springs, --right-spring, --gap); a designed
+/// chain's masses and springs count as exact (its design is for them as they stand).
+template <typename S>
+core::ExactParameters chainExactParameters(const OptionValues& options);
 
 /// The model as the command line describes it, in precision S, with its nondimensional chain.
 template <typename S>

@@ -85,8 +85,9 @@ const core::ChainShadow<S>& PreparedMassChain::shadow() const {
       slot.shadow.problem = up.error.toStdString();
       return;
     }
-    // the note's numbers as read: those a decimal does not hold exactly are nudged in binary128
-    slot.shadow = core::chainShadow<S>(*up.value, m_notesReader ? exactParameters<H>(m_options) : core::ExactParameters{});
+    // the numbers as read: those a decimal does not hold exactly are nudged in binary128
+    slot.shadow = core::chainShadow<S>(*up.value, m_notesReader ? exactParameters<H>(m_options)
+                                                                : chainExactParameters<H>(m_options));
   });
   return slot.shadow;
 }
