@@ -77,7 +77,6 @@ MethodRun runIn(const Task& task, const WorkBudget& budget, std::stop_token stop
       run.status = RunStatus::Completed;
       break;
     case StopReason::ContactLimit:
-    case StopReason::SearchLimit:
       run.status = RunStatus::Budget;
       run.reason = "contact budget (" + std::to_string(budget.maxSteps) + " contacts) spent";
       break;
@@ -143,7 +142,6 @@ ChainMethodRun runIn(const ChainTask& task, const WorkBudget& budget, std::stop_
       run.status = RunStatus::Cancelled;
       run.reason = "cancelled";
       break;
-    case StopReason::SearchLimit:  // (the two-mass engine's alone)
     case StopReason::InvalidInput:
       run.status = RunStatus::Refused;
       run.reason = std::string(toString(simulator.run().stop));

@@ -115,7 +115,7 @@ ScaledRun<T>::ScaledRun(const T& task, const WorkBudget& budget, std::stop_token
     m_v0 = Eigen::Vector2d(x0.v1, x0.v2);
     m_initialEnergy = scaledEnergy(c, x0);
     m_run.result.initialEnergy = physicalEnergy(c, task.start);
-    m_recorder.emplace(c, m_scale, x0, task.needs, nullptr, m_run.result);
+    m_recorder.emplace(c, m_scale, x0, task.needs, m_run.result);
     m_recorder->samplePoint(0.0, x0);
   } else {
     m_massChain = task.chain;

@@ -97,7 +97,7 @@ class ScaledRun {
   // the note's chain
   std::optional<TwoMassForm<double>> m_chain;
   Scale<double> m_scale;
-  std::optional<Recorder<double>> m_recorder;
+  std::optional<Recorder> m_recorder;
   // any chain
   MassChain m_massChain;
   double m_length = 1;  ///< L [length]

@@ -8,7 +8,7 @@
 
 #include "core/numbers/roots.h"
 #include "core/orbits/special_orbits.h"
-#include "core/solver/simulate.h"
+#include "core/solver/two_mass_run.h"
 
 namespace grazelab::core {
 
@@ -266,9 +266,13 @@ bool stabilityDecided(const PeriodicOrbit<S>& orbit) {
   return abs(orbit.checks.detMinus1) <= S(1e3) * defaultCloseTolerance<S>();
 }
 
+namespace {
+
+// evaluateOrbit on the chain made ready once (a Newton search evaluates one orbit per step)
 template <typename S>
-PeriodicOrbit<S> evaluateOrbit(const TwoMassForm<S>& chain, const BasicState<S>& start, int impacts,
-                               const S& closeTolerance) {
+PeriodicOrbit<S> evaluateOn(const BasicReadyChain<S>& ready, const BasicState<S>& start, int impacts,
+                            const S& closeTolerance) {
+  const TwoMassForm<S>& chain = *ready.notes;
   using std::abs;
   using std::sqrt;
   PeriodicOrbit<S> orbit;
@@ -282,22 +286,24 @@ PeriodicOrbit<S> evaluateOrbit(const TwoMassForm<S>& chain, const BasicState<S>&
     return orbit;
   };
   if (impacts < 1) return refuse(OrbitRefusal::BadStart, "an orbit needs at least one impact per period");
+  if (!isFinite(start.u1) || !isFinite(start.v1) || !isFinite(start.v2)) {
+    return refuse(OrbitRefusal::BadStart, "the start is not finite");
+  }
   if (!(start.u2 == chain.model.gap) || !(start.v2 <= 0)) {
     return refuse(OrbitRefusal::BadStart, "the start is not just after an impact (u2 = gap, v2 <= 0)");
   }
-  BasicRequest<S> request;
-  request.initial = start;
-  request.maxContacts = impacts;
-  request.needs.events = true;
-  request.stopAtUndecided = true;
-  const BasicResult<S> run = simulate(chain.model, request);
-  orbit.events = run.events;
+  // the one run of the chain, made ready from its form (no eigensolve per Newton step), its
+  // events streamed (no vectors kept per event)
+  orbit.events.reserve(std::size_t(impacts));
+  const BasicChainRun<S> run =
+      runChain(ready, BasicChainStart<S>(chainStateOf(start)), impacts, S(0), {},
+               [&orbit](const BasicChainEvent<S>& event) { orbit.events.push_back(twoMassEventOf(event)); });
   if (run.stop == StopReason::Undecided) {
     return refuse(OrbitRefusal::Undecided, "a contact of the path is too near tangent for this precision to decide "
                   "(try a higher precision)");
   }
-  if (std::int64_t(run.events.size()) != impacts) {
-    return refuse(OrbitRefusal::ContactCount, "the path made " + std::to_string(run.events.size()) + " contacts, not " +
+  if (std::int64_t(orbit.events.size()) != impacts) {
+    return refuse(OrbitRefusal::ContactCount, "the path made " + std::to_string(orbit.events.size()) + " contacts, not " +
                   std::to_string(impacts));
   }
   // the monodromy, flight by flight, with the clearance of every flight
@@ -307,7 +313,7 @@ PeriodicOrbit<S> evaluateOrbit(const TwoMassForm<S>& chain, const BasicState<S>&
   BasicState<S> leaving = start;
   orbit.minImpactSpeed = std::numeric_limits<S>::infinity();
   orbit.minClearance = std::numeric_limits<S>::infinity();
-  for (const BasicEvent<S>& event : run.events) {
+  for (const BasicEvent<S>& event : orbit.events) {
     if (event.type != EventType::Impact) {
       return refuse(OrbitRefusal::NotImpact, "the path has a " + std::string(toString(event.type)) + " at t = " +
                     formatScalar(event.t) + ", not only impacts");
@@ -324,7 +330,7 @@ PeriodicOrbit<S> evaluateOrbit(const TwoMassForm<S>& chain, const BasicState<S>&
   }
   orbit.period = previousTime;
   orbit.monodromy = monodromy;
-  const BasicState<S>& end = run.events.back().after;
+  const BasicState<S>& end = orbit.events.back().after;
   orbit.checks.periodicityResidual = relativeDistance(chain, start, end);
   // the reduced Jacobian at fixed energy: lift (du1, dv1) onto the energy level at the start,
   // carry it by M, project along the flow onto H at the end
@@ -380,13 +386,21 @@ PeriodicOrbit<S> evaluateOrbit(const TwoMassForm<S>& chain, const BasicState<S>&
   for (int j = 1; j < impacts; ++j) {
     if (impacts % j != 0) continue;
     // within what a computed orbit's closing allows in S (2e-9 in double, 2e-27 in binary128)
-    if (relativeDistance(chain, start, run.events[std::size_t(j - 1)].after) <= S(1e7) * epsilon<S>()) {
+    if (relativeDistance(chain, start, orbit.events[std::size_t(j - 1)].after) <= S(1e7) * epsilon<S>()) {
       return refuse(OrbitRefusal::Repeated, "the orbit is a " + std::to_string(j) + "-impact orbit repeated");
     }
   }
   if (!(orbit.minClearance > 0)) return refuse(OrbitRefusal::TouchesStop, "a flight touches or crosses the stop between impacts");
   orbit.admissible = true;
   return orbit;
+}
+
+}  // namespace
+
+template <typename S>
+PeriodicOrbit<S> evaluateOrbit(const TwoMassForm<S>& chain, const BasicState<S>& start, int impacts,
+                               const S& closeTolerance) {
+  return evaluateOn(readyChain(chain), start, impacts, closeTolerance);
 }
 
 template <typename S>
@@ -421,6 +435,7 @@ OrbitSearch<S> findOrbit(const TwoMassForm<S>& chain, const S& energy, const S& 
   constexpr int kPatience = 8;
   S bestResidual = std::numeric_limits<S>::infinity();
   int bestIteration = 0;
+  const BasicReadyChain<S> ready = readyChain(chain);
   std::optional<PeriodicOrbit<S>> closed;  // the last iterate that closed within the tolerance
   S closedCorrection = std::numeric_limits<S>::infinity();  // the Newton step from it
   const auto accept = [&search, &closedCorrection](PeriodicOrbit<S> orbit) {
@@ -465,7 +480,7 @@ OrbitSearch<S> findOrbit(const TwoMassForm<S>& chain, const S& energy, const S& 
                        "): give a guess nearer the orbit";
       return search;
     }
-    PeriodicOrbit<S> orbit = evaluateOrbit(chain, *start, impacts, std::numeric_limits<S>::infinity());
+    PeriodicOrbit<S> orbit = evaluateOn(ready, *start, impacts, std::numeric_limits<S>::infinity());
     if (orbit.events.size() != std::size_t(impacts) ||
         std::any_of(orbit.events.begin(), orbit.events.end(),
                     [](const BasicEvent<S>& e) { return e.type != EventType::Impact; })) {

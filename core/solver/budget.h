@@ -10,7 +10,7 @@ namespace grazelab::core {
 inline constexpr std::int64_t kMinChunkContacts = 16;
 inline constexpr std::int64_t kMaxChunkContacts = 50'000'000;
 
-/// The next chunk size for a run done in pieces (Simulator::advance) that should spend about
+/// The next chunk size for a run done in pieces (BasicChainSimulator::advance) that should spend about
 /// `targetSeconds` per piece: the last size scaled by target / measured, the change limited to
 /// a factor 1/4 ... 8 per step (one slow or fast chunk must not swing it), and kept within
 /// [kMinChunkContacts, kMaxChunkContacts]. `secondsTaken` below a microsecond counts as one.

@@ -176,6 +176,14 @@ std::optional<TwoMassForm<S>> notesFormOf(const BasicModel<S>& model) {
   return makeTwoMassForm(model).chain;
 }
 
+// the chain of the note's model: a design's k2 from the design itself (the model's may be a
+// rounding of it for display)
+template <typename S>
+BasicMassChain<S> notesChainOf(const BasicModel<S>& model) {
+  const S k2 = model.design ? S(designKappa(S(model.m2 / model.m1), *model.design) * model.k1) : model.k2;
+  return {{model.m1, model.m2}, {model.k1, k2}, S(0), 2, model.gap};
+}
+
 }  // namespace
 
 template <typename S>
@@ -192,12 +200,37 @@ BasicReadyChain<S> readyChain(const BasicMassChain<S>& chain, Kernel kernel) {
 
 template <typename S>
 BasicReadyChain<S> readyChain(const BasicModel<S>& model) {
-  // a design's k2 from the design itself (the model's may be a rounding of it for display)
-  const S k2 = model.design ? S(designKappa(S(model.m2 / model.m1), *model.design) * model.k1) : model.k2;
-  BasicMassChain<S> chain{{model.m1, model.m2}, {model.k1, k2}, S(0), 2, model.gap};
+  const BasicMassChain<S> chain = notesChainOf(model);
   BasicReadyChain<S> ready{chain, chainDynamicsIn<S>(chain), notesFormOf(model)};
   if (ready.notes) ready.notesModel = model;
   return ready;
+}
+
+template <typename S>
+BasicReadyChain<S> readyChain(const TwoMassForm<S>& form) {
+  using std::sqrt;
+  const BasicModel<S>& model = form.model;
+  BasicChainDynamics<S> dynamics;
+  dynamics.omega.resize(2);
+  dynamics.omega << form.ratio * form.omegaSlow, form.omegaSlow;
+  // the mode shapes (rho, 1), M-orthonormal: fastest first
+  dynamics.P.resize(2, 2);
+  const S rho[2] = {form.rhoFast, form.rhoSlow};
+  for (int j = 0; j < 2; ++j) {
+    const S norm = sqrt(model.m1 * rho[j] * rho[j] + model.m2);
+    dynamics.P(0, j) = rho[j] / norm;
+    dynamics.P(1, j) = 1 / norm;
+  }
+  dynamics.mass.resize(2);
+  dynamics.mass << model.m1, model.m2;
+  dynamics.stop = 1;
+  dynamics.gap = model.gap;
+  if (form.resonant) {
+    dynamics.omega0 = form.omegaSlow;
+    dynamics.period = twoPi<S>() / form.omegaSlow;
+    dynamics.harmonics = {2, 1};
+  }
+  return {notesChainOf(model), std::move(dynamics), form, model};
 }
 
 template <typename S>
@@ -516,7 +549,7 @@ bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
       samplePiece(m_t, m_tEnd, true, [&](const S&) { return end; });
       return finish(StopReason::TimeLimit, end, m_tEnd);
     }
-    const Step<S> step = m_stepper->advance(m_scaled, tauEnd, horizon, m_stop, m_searchSteps, true);
+    const Step<S> step = m_stepper->advance(m_scaled, tauEnd, horizon, m_stop, m_searchSteps);
     const S from = m_t;
     const S when = m_scale.toPhysicalTime(step.tau);
     switch (step.kind) {
@@ -621,6 +654,7 @@ ChainRun inDouble(const BasicChainRun<S>& from) {
                                         const ChainSampling<S>&, std::int64_t);                                     \
   template BasicReadyChain<S> readyChain<S>(const BasicMassChain<S>&, Kernel);                                      \
   template BasicReadyChain<S> readyChain<S>(const BasicModel<S>&);                                                     \
+  template BasicReadyChain<S> readyChain<S>(const TwoMassForm<S>&);                                                   \
   template class BasicChainSimulator<S>;                                                                                 \
   template S chainEnergy<S>(const BasicMassChain<S>&, const BasicChainState<S>&);                                         \
   template ChainRun inDouble<S>(const BasicChainRun<S>&);                                                                 \

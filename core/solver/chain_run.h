@@ -55,7 +55,7 @@ struct BasicChainRun {
   long impacts = 0, grazings = 0, sticks = 0, releases = 0;  ///< the events by type
   BasicChainState<S> final;                ///< the state at `tFinal`
   S tFinal = 0;
-  StopReason stop = StopReason::ContactLimit;  ///< never SearchLimit nor InvalidInput
+  StopReason stop = StopReason::ContactLimit;  ///< never InvalidInput
   S energyInitial = 0;
   S energyFinal = 0;
   /// the run's accuracy as it went: the largest |E / E0 - 1| over the states after its events
@@ -130,6 +130,12 @@ BasicReadyChain<S> readyChain(const BasicMassChain<S>& chain, Kernel kernel = Ke
 /// the note's kernel; the modal one when the model's ratios are beyond the range of S.
 template <typename S>
 BasicReadyChain<S> readyChain(const BasicModel<S>& model);
+/// The note's chain given by its form, ready for runs by the note's kernel (a start that names no
+/// still mode): its modes from the form's closed forms (w1 = ratio w2, shapes (rho, 1)),
+/// commensurate when resonant, with no eigensolve (a periodic orbit's check run makes one per
+/// Newton step). The same events, to the bit, as readyChain(form.model).
+template <typename S>
+BasicReadyChain<S> readyChain(const TwoMassForm<S>& form);
 
 /// The energy 1/2 v^T M v + 1/2 u^T K u of a chain's state.
 template <typename S>

@@ -26,8 +26,6 @@ std::string_view toString(StopReason reason) {
       return "time-limit";
     case StopReason::NoFurtherContact:
       return "no-further-contact";
-    case StopReason::SearchLimit:
-      return "search-limit";
     case StopReason::SearchBudget:
       return "search-budget";
     case StopReason::Undecided:

@@ -31,7 +31,6 @@ enum class StopReason {
   TimeLimit,         ///< tEnd reached
   NoFurtherContact,  ///< a resonant (commensurate) flight that stays below the stop for a whole
                      ///< period: linear forever
-  SearchLimit,       ///< two masses, detuned: no contact within the search horizon
   SearchBudget,      ///< no contact (or release) decided within the search's horizon and budget
                      ///< (a chain that is not resonant)
   Undecided,         ///< a contact the precision cannot decide: a top of the stopped mass within
@@ -40,9 +39,9 @@ enum class StopReason {
                      ///< back to 0 without being seen to change sign; the run ends at that
                      ///< flight's start (--precision auto goes on in a higher precision)
   Cancelled,         ///< the stop token was triggered
-  InvalidInput,      ///< two masses: the model or the initial state is unusable (see message)
+  InvalidInput,      ///< the model or the initial state is unusable (see message)
 };
-/// "contact-limit", "time-limit", "no-further-contact", "search-limit", "search-budget",
+/// "contact-limit", "time-limit", "no-further-contact", "search-budget",
 /// "undecided", "cancelled", "invalid-input".
 std::string_view toString(StopReason reason);
 

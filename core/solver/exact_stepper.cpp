@@ -36,7 +36,7 @@ ExactStepper<S>::ExactStepper(const TwoMassForm<S>& chain, const S& scaledGap)
 template <typename S>
 Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
                                  const S& searchHorizon, const std::stop_token& stop,
-                                 std::int64_t searchSteps, bool stopAtUndecided) {
+                                 std::int64_t searchSteps) {
   using std::min;
   Step<S> step;
   step.segmentStart = state.tau;
@@ -132,7 +132,7 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
   // from a touch in S: an impact of speed 1e-450 after a release needs binary128's exponents
   const bool undecided =
       contact.undecided || (contact.kind == ContactKind::Crossing && !(arrival.v2 > 0));
-  if (undecided && stopAtUndecided) {
+  if (undecided) {
     step.kind = Step<S>::Kind::Undecided;
     step.tau = state.tau + duration;
     step.before = step.after = x;
@@ -148,7 +148,6 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
   step.before = outcome.before;
   step.after = outcome.after;
   step.residual = contact.residual;
-  step.undecided = undecided;
   step.endsFlight = true;
   step.flightFromStop = flight.startsOnStop();
   step.flightDuration = contact.time;

@@ -51,8 +51,8 @@ struct Step {
     NoFurtherContact,  ///< resonant: the free motion never reaches the stop
     SearchLimit,       ///< detuned: no contact within the search horizon
     SearchBudget,      ///< detuned: the search ran out of steps before the horizon
-    Undecided,         ///< a contact its precision cannot decide, and the caller asked to stop
-                       ///< there: the state is left where the flight began, `tau` is the contact's
+    Undecided,         ///< a contact its precision cannot decide: the state is left where the
+                       ///< flight began, `tau` is the contact's
     Cancelled,         ///< the stop token ended a long search
   };
   Kind kind = Kind::Event;
@@ -62,7 +62,6 @@ struct Step {
   BasicState<S> before;     ///< scaled state just before (or at the end)
   BasicState<S> after;      ///< scaled state just after
   S residual = 0;           ///< |x2 - delta| at the found contact time (scaled)
-  bool undecided = false;   ///< a touch-or-crossing decision within rounding
   // for events that end a free flight
   bool endsFlight = false;
   bool flightFromStop = false;         ///< the flight started on the stop (its FFT is defined)
@@ -81,11 +80,10 @@ class ExactStepper {
 
   /// Advances `state` to the next event, or to `tauEnd` if it comes first. `searchHorizon`
   /// bounds a detuned flight's search (scaled time), `searchSteps` the steps of its march.
-  /// With `stopAtUndecided`, a contact whose class the precision cannot decide is not taken:
-  /// the step is Kind::Undecided and the state stays as it was.
+  /// A contact whose class (touch or crossing) the precision cannot decide is not taken: the
+  /// step is Kind::Undecided and the state stays as it was.
   Step<S> advance(IntegrationState<S>& state, const S& tauEnd, const S& searchHorizon,
-                  const std::stop_token& stop = {}, std::int64_t searchSteps = defaultSearchSteps<S>(),
-                  bool stopAtUndecided = false);
+                  const std::stop_token& stop = {}, std::int64_t searchSteps = defaultSearchSteps<S>());
 
   /// The state at absolute scaled time `tau` inside the motion of the last step.
   BasicState<S> segmentAt(const S& tau) const;

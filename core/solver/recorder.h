@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -76,15 +75,8 @@ struct Cost {
   std::int64_t impacts = 0;
   std::int64_t grazings = 0;
   std::int64_t sticks = 0;
-  std::int64_t undecidedTouches = 0;  ///< touch-or-crossing decisions within rounding
-  /// The first of them: its contact number (1-based; 0 when there is none) and time [time]
-  std::int64_t firstUndecidedContact = 0;
-  double firstUndecidedTime = 0;
   double wallSeconds = 0;          ///< time spent in the solver
   double maxRelEnergyDrift = 0;    ///< max |E - E0| / E0 over contact states
-  /// max relative energy error of one computed free flight, before its end state is restored
-  /// to the energy level of its start: the raw accuracy of the flight
-  double maxFlightEnergyError = 0;
   double maxContactResidual = 0;   ///< max |u2 - gap| at the found contact times [length]
 };
 
@@ -112,35 +104,30 @@ using Result = BasicResult<double>;
 template <typename S>
 Result toDoubleResult(const BasicResult<S>& from);
 
-/// Keeps what Needs asks for, in physical units, and the cost; hands every event to `onEvent`
-/// as it happens (streaming callers store nothing).
-template <typename S>
+/// A time-stepping method's run of the note's chain kept as the exact run's (BasicResult): what
+/// Needs asks for, in physical units, and the cost. Such a method has no motion between its steps
+/// to sample: its steps are its samples.
 class Recorder {
  public:
   /// `initial` is the scaled start state (its energy is the reference for the drift).
-  Recorder(const TwoMassForm<S>& chain, const Scale<S>& scale, const BasicState<S>& initial,
-           const Needs& needs, std::function<void(const BasicEvent<S>&)> onEvent,
-           BasicResult<S>& result);
+  Recorder(const TwoMassForm<double>& chain, const Scale<double>& scale, const State& initial, const Needs& needs,
+           Result& result);
 
   /// Records the event of a step (Kind::Event).
-  void record(const Step<S>& step);
-  /// Dense samples of the motion of `stepper`'s last step up to scaled time `tauEnd`.
-  void sampleUntil(const ExactStepper<S>& stepper, const S& segmentStart, const S& tauEnd);
-  /// A state of a time-stepping method's own solution at scaled time tau, kept when a sample is
-  /// due (such a method has no motion between its steps to sample: its steps are its output).
-  void samplePoint(const S& tau, const BasicState<S>& scaled);
+  void record(const Step<double>& step);
+  /// The method's state at scaled time tau, kept when a sample is due.
+  void samplePoint(double tau, const State& scaled);
   /// Stores the final state (scaled, converted here) at physical time t.
-  void finish(StopReason reason, const S& t, const BasicState<S>& scaled);
+  void finish(StopReason reason, double t, const State& scaled);
 
  private:
   void addSample(double t, const State& state);
 
-  const TwoMassForm<S>& m_chain;
-  Scale<S> m_scale;
+  const TwoMassForm<double>& m_chain;
+  Scale<double> m_scale;
   Needs m_needs;
-  std::function<void(const BasicEvent<S>&)> m_onEvent;
-  BasicResult<S>& m_result;
-  S m_initialScaledEnergy = 0;
+  Result& m_result;
+  double m_initialScaledEnergy = 0;
   double m_nextSampleTime = 0;
   std::int64_t m_nextSampleIndex = 0;
 };

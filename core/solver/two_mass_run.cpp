@@ -66,9 +66,9 @@ void TwoMassRun<S>::addSample(double t, const BasicState<S>& state) {
 
 template <typename S>
 void TwoMassRun<S>::take(const BasicChainEvent<S>& event) {
-  const BasicState<S> before{event.u[0], event.u[1], event.vBefore[0], event.vBefore[1]};
-  const BasicState<S> after{event.u[0], event.u[1], event.vBefore[0], event.vAfter};
-  const BasicEvent<S> twoMass{event.t, event.type, before, after};
+  const BasicEvent<S> twoMass = twoMassEventOf(event);
+  const BasicState<S>& before = twoMass.before;
+  const BasicState<S>& after = twoMass.after;
   const Needs& needs = m_request.needs;
   if (m_request.onEvent) m_request.onEvent(twoMass);
   const double t = toDouble(event.t);

@@ -19,10 +19,16 @@ namespace grazelab::core {
 /// dense samples with their contacts' corners, the cost), made by the one run of the chain
 /// (BasicChainSimulator: the note's kernel, or the modal one for a start that names modes
 /// exactly still), in pieces: the same events to the bit as every other run of the chain. A
-/// contact S cannot decide ends the run there, undecided, as every run of the chain does (the
-/// request's stopAtUndecided is not read). The dense grid starts at t = 0 (samples.tBegin
-/// drops the samples before it).
+/// contact S cannot decide ends the run there, undecided, as every run of the chain does. The
+/// dense grid starts at t = 0 (samples.tBegin drops the samples before it).
 /// Holds references to its own members: neither copied nor moved.
+/// One event of the one run of a two-mass chain with the states before and after it.
+template <typename S>
+BasicEvent<S> twoMassEventOf(const BasicChainEvent<S>& event) {
+  return {event.t, event.type, {event.u[0], event.u[1], event.vBefore[0], event.vBefore[1]},
+          {event.u[0], event.u[1], event.vBefore[0], event.vAfter}};
+}
+
 template <typename S>
 class TwoMassRun {
  public:

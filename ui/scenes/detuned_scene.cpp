@@ -118,7 +118,6 @@ Scene::Spec detunedScene() {
     job.spec.model = detuned;
     job.spec.run.initial = start;
     job.spec.run.maxContacts = std::int64_t(params.horizon);
-    job.spec.run.flightSearchPeriods = kSearchPeriods;
     job.spec.run.needs = needsFor(self.plots(), core::computeModes(detuned), 40 * resonantModes.T2);
     job.ok = true;
     return job;

@@ -73,7 +73,6 @@ QString stopInWords(core::StopReason stop) {
                 "periods (not commensurate: no period bounds the next one)");
     case core::StopReason::Cancelled:
       return tr("cancelled");
-    case core::StopReason::SearchLimit:    // (two masses only)
     case core::StopReason::InvalidInput: break;
   }
   return {};

@@ -14,6 +14,7 @@
 #include "core/solver/sticking.h"
 #include "support/cases.h"
 #include "support/physical_flight.h"
+#include "core/solver/two_mass_run.h"
 
 namespace grazelab::core {
 namespace {
@@ -99,12 +100,12 @@ TEST(Simulate, ChunkedRunEqualsOneShotRun) {
   const Model model = testing::resonantChain(0.5, 1.0, Branch::Lower);
   const Request request = nearGrazingRequest(model, 500);
   const Result whole = simulate(model, request);
-  Simulator simulator(model, request);
+  TwoMassRun<double> run(model, request);
   int chunks = 0;
-  while (!simulator.advance(7)) ++chunks;
+  while (!run.advance(7)) ++chunks;
   EXPECT_GT(chunks, 50);
-  EXPECT_EQ(simulator.result().events, whole.events);
-  EXPECT_EQ(simulator.progress(), 1.0);
+  EXPECT_EQ(run.result().events, whole.events);
+  EXPECT_EQ(run.progress(), 1.0);
 }
 
 TEST(Simulate, CancelFromAnotherThreadStopsPromptly) {
@@ -195,8 +196,8 @@ TEST(Simulate, MotionBelowTheStopEndsWithNoFurtherContact) {
   EXPECT_EQ(result.cost.contacts, 0);
   EXPECT_FALSE(result.message.empty());
   const Model detuned = testing::detunedChain();
-  request.flightSearchPeriods = 20;
-  EXPECT_EQ(simulate(detuned, request).stop, StopReason::SearchLimit);
+  request.flightSearchSteps = 20;
+  EXPECT_EQ(simulate(detuned, request).stop, StopReason::SearchBudget);
 }
 
 // A motion that never reaches the stop is still a motion: the plots draw its free orbit over

@@ -527,7 +527,6 @@ class ExplorerTest : public QObject {
     QVERIFY(last);
     QVERIFY2(last->attempt > 0, "not raised");
     QCOMPARE(last->result->cost.impacts, std::int64_t(20));
-    QCOMPARE(last->result->cost.undecidedTouches, std::int64_t(0));
     QVERIFY(last->trust);
     QVERIFY(QString::fromStdString(last->precisionNote).contains(QStringLiteral("contact 1")));
   }
