@@ -19,7 +19,7 @@ namespace grazelab::core::methods {
 /// section 8), so that none of them is judged on the units of its input, and hands its contacts
 /// here. One class for both tasks; T says how the run is kept:
 /// - Task, the note's chain: scaled as in section 7 (tau = w2 t, x = u / L, y = v / (w2 L)) and
-///   kept by the same Recorder as the exact solver (samples for the explorer's overlays);
+///   kept by a Recorder as the exact run's Result (samples for the explorer's overlays);
 /// - ChainTask, any chain: time in units of its slowest mode (tau = w_N t), lengths in units of
 ///   L as the note's chain chooses it (the power of 2 at or below the larger of the gap and the
 ///   start's size), kept as a ChainRun in the one event layout of every chain.

@@ -294,7 +294,7 @@ PeriodicOrbit<S> evaluateOn(const BasicReadyChain<S>& ready, const BasicState<S>
   }
   // the one run of the chain, made ready from its form (no eigensolve per Newton step), its
   // events streamed (no vectors kept per event)
-  orbit.events.reserve(std::size_t(impacts));
+  orbit.events.reserve(std::size_t(std::min(impacts, 1 << 16)));
   const BasicChainRun<S> run =
       runChain(ready, BasicChainStart<S>(chainStateOf(start)), impacts, S(0), {},
                [&orbit](const BasicChainEvent<S>& event) { orbit.events.push_back(twoMassEventOf(event)); });

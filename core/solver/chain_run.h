@@ -133,7 +133,10 @@ BasicReadyChain<S> readyChain(const BasicModel<S>& model);
 /// The note's chain given by its form, ready for runs by the note's kernel (a start that names no
 /// still mode): its modes from the form's closed forms (w1 = ratio w2, shapes (rho, 1)),
 /// commensurate when resonant, with no eigensolve (a periodic orbit's check run makes one per
-/// Newton step). The same events, to the bit, as readyChain(form.model).
+/// Newton step). The same events, to the bit, as readyChain(form.model) from a start that names
+/// no mode still; the same modes to rounding (a detuned form is never commensurate here, where
+/// readyChain(form.model) takes ratios within 1e-9 of commensurate as such: the modal kernel's
+/// runs, from a start naming a mode still, want readyChain(form.model)).
 template <typename S>
 BasicReadyChain<S> readyChain(const TwoMassForm<S>& form);
 

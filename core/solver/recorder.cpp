@@ -32,8 +32,8 @@ void Recorder::samplePoint(double tau, const State& scaled) {
   if (t < m_nextSampleTime || t > spec.tEnd) return;
   addSample(t, m_scale.toPhysical(scaled));
   // the next sample is due one spacing after this one (a coarse step skips the ones it jumps)
-  m_nextSampleIndex = std::int64_t(std::floor((t - spec.tBegin) / spec.spacing)) + 1;
-  m_nextSampleTime = spec.tBegin + double(m_nextSampleIndex) * spec.spacing;
+  m_nextSampleIndex = std::int64_t(std::floor(t / spec.spacing)) + 1;
+  m_nextSampleTime = double(m_nextSampleIndex) * spec.spacing;
 }
 
 void Recorder::record(const Step<double>& step) {
@@ -55,8 +55,7 @@ void Recorder::record(const Step<double>& step) {
     m_result.poincare.push_back({event.t, event.after.u1, event.after.v1, event.after.v2, step.type});
   }
   const SampleSpec& samples = m_needs.samples;
-  if (isContact(step.type) && samples.wanted() && samples.includeContacts && event.t >= samples.tBegin &&
-      event.t <= samples.tEnd) {
+  if (isContact(step.type) && samples.wanted() && samples.includeContacts && event.t <= samples.tEnd) {
     addSample(event.t, event.before);
     if (!(event.after == event.before)) addSample(event.t, event.after);
   }

@@ -15,12 +15,11 @@ namespace grazelab::core {
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-/// Dense output: states every `spacing` time units on [tBegin, tEnd], or at the given `times`,
-/// computed only when asked for. Contact states are added too (unless told not to), so that
+/// Dense output: states every `spacing` time units from t = 0 up to tEnd, or at the given
+/// `times`, computed only when asked for. Contact states are added too (unless told not to), so that
 /// traces keep their corners.
 struct SampleSpec {
   double spacing = 0;      ///< time between samples; 0 = no grid
-  double tBegin = 0;       ///< first sample time
   double tEnd = kInfinity; ///< last sample time (the run's end if earlier)
   /// Sample times, ascending, instead of the grid (the exact solver's runs; a time-stepping
   /// method has no motion between its steps to sample, and samples on the grid only).
@@ -31,7 +30,7 @@ struct SampleSpec {
   bool wanted() const { return spacing > 0 || !times.empty(); }
   /// The time of sample `index` (infinity past the last of `times`).
   double timeOf(std::int64_t index) const {
-    if (times.empty()) return tBegin + double(index) * spacing;
+    if (times.empty()) return double(index) * spacing;
     return std::size_t(index) < times.size() ? times[std::size_t(index)] : kInfinity;
   }
 };

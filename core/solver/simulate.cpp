@@ -34,9 +34,6 @@ std::vector<Problem> validate(const BasicRequest<S>& request) {
       break;
     }
   }
-  if (!std::isfinite(samples.tBegin) || samples.tBegin < 0) {
-    add("samples.tBegin", "must be >= 0 and finite", std::to_string(samples.tBegin));
-  }
   return problems;
 }
 

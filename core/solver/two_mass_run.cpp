@@ -39,7 +39,7 @@ TwoMassRun<S>::TwoMassRun(const BasicModel<S>& model, const BasicRequest<S>& req
     sampling.times = samples.times;
     sampling.until = samples.tEnd;
     sampling.sink = [this](double t, const BasicChainState<S>& state) {
-      if (t >= m_request.needs.samples.tBegin) addSample(t, twoMassStateOf(state));
+      addSample(t, twoMassStateOf(state));
     };
   }
   const long contacts = long(std::min<std::int64_t>(request.maxContacts, std::numeric_limits<long>::max()));
@@ -49,6 +49,8 @@ TwoMassRun<S>::TwoMassRun(const BasicModel<S>& model, const BasicRequest<S>& req
   const ChainEventSink<S> sink = [this](const BasicChainEvent<S>& event) { take(event); };
   if (ready) {
     m_run.emplace(*ready, from, contacts, tEnd, sink, std::move(sampling), steps);
+  } else if (std::find(from.stillModes.begin(), from.stillModes.end(), true) == from.stillModes.end()) {
+    m_run.emplace(readyChain(*m_form), from, contacts, tEnd, sink, std::move(sampling), steps);
   } else {
     m_run.emplace(readyChain(model), from, contacts, tEnd, sink, std::move(sampling), steps);
   }
@@ -84,7 +86,7 @@ void TwoMassRun<S>::take(const BasicChainEvent<S>& event) {
     }
     // the contact's corners in the samples: the states just before and after it
     const SampleSpec& samples = needs.samples;
-    if (samples.wanted() && samples.includeContacts && t >= samples.tBegin && t <= samples.tEnd) {
+    if (samples.wanted() && samples.includeContacts && t <= samples.tEnd) {
       addSample(t, before);
       if (!(after == before)) addSample(t, after);
     }

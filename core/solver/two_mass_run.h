@@ -14,14 +14,6 @@
 
 namespace grazelab::core {
 
-/// A run of the note's chain kept as its two-mass views draw it (BasicResult: the events with
-/// the states before and after, the Poincaré points on H, the free flights from the stop, the
-/// dense samples with their contacts' corners, the cost), made by the one run of the chain
-/// (BasicChainSimulator: the note's kernel, or the modal one for a start that names modes
-/// exactly still), in pieces: the same events to the bit as every other run of the chain. A
-/// contact S cannot decide ends the run there, undecided, as every run of the chain does. The
-/// dense grid starts at t = 0 (samples.tBegin drops the samples before it).
-/// Holds references to its own members: neither copied nor moved.
 /// One event of the one run of a two-mass chain with the states before and after it.
 template <typename S>
 BasicEvent<S> twoMassEventOf(const BasicChainEvent<S>& event) {
@@ -29,13 +21,23 @@ BasicEvent<S> twoMassEventOf(const BasicChainEvent<S>& event) {
           {event.u[0], event.u[1], event.vBefore[0], event.vAfter}};
 }
 
+/// A run of the note's chain kept as its two-mass views draw it (BasicResult: the events with
+/// the states before and after, the Poincaré points on H, the free flights from the stop, the
+/// dense samples with their contacts' corners, the cost), made by the one run of the chain
+/// (BasicChainSimulator: the note's kernel, or the modal one for a start that names modes
+/// exactly still), in pieces: the same events to the bit as every other run of the chain. A
+/// contact S cannot decide ends the run there, undecided, as every run of the chain does. The
+/// dense grid starts at t = 0.
+/// Holds references to its own members: neither copied nor moved.
 template <typename S>
 class TwoMassRun {
  public:
   /// Validates the model and the request; an invalid one is done at once (StopReason::InvalidInput).
   /// `stillModes`: the start's modes known to be exactly still (BasicChainStart). `ready`: the
   /// model made ready already (readyChain(model)), which the run then holds by reference (a
-  /// timed run does not pay for the chain's modes); it must outlive the run.
+  /// timed run does not pay for the chain's modes); it must outlive the run. Without it, the run
+  /// makes the chain ready from its form (readyChain(form): no eigensolve) unless a mode is
+  /// named still (the modal kernel's, from readyChain(model)).
   TwoMassRun(const BasicModel<S>& model, const BasicRequest<S>& request, std::vector<bool> stillModes = {},
              const BasicReadyChain<S>* ready = nullptr);
   TwoMassRun(const TwoMassRun&) = delete;

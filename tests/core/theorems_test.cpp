@@ -30,7 +30,7 @@ std::pair<double, int> largestFlightEnergyError(const Model& model, const State&
   double largest = 0;
   int flights = 0;
   for (int i = 0; i < contacts; ++i) {
-    const Step<double> step = stepper.advance(state, kInfinity, 2000 * M_PI);
+    const Step<double> step = stepper.advance(state, kInfinity, 1000 * twoPi<double>());
     if (step.kind != Step<double>::Kind::Event) break;
     if (!step.endsFlight) continue;
     largest = std::max(largest, step.flightEnergyError);

@@ -25,7 +25,6 @@ core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, dou
   if (dense) {
     // 48 samples per fast period draw a smooth curve at any zoom a screen can show
     needs.samples.spacing = modes.T1 / 48.0;
-    needs.samples.tBegin = 0;
     needs.samples.tEnd = sampleWindow;
     needs.samples.maxCount = 400'000;
   }

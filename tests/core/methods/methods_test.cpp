@@ -52,7 +52,7 @@ TEST(Methods, TheReferenceAgreesWithThePlainBinary128Run) {
   EXPECT_EQ(errors.matched, 20);
 }
 
-TEST(Methods, ExactThroughTheInterfaceIsTheSimulator) {
+TEST(Methods, ExactThroughTheInterfaceIsTheRun) {
   const Task task = defaultTask(20);
   Request request;
   request.initial = task.start;

@@ -168,7 +168,7 @@ TEST(Extremes, LambdaNearFourThirdsKeepsItsClass) {
 }
 
 TEST(Extremes, AnEndTimeSetsTheDetunedSearchHorizon) {
-  // class 9: no search-limit stop before an explicit end time
+  // class 9: no search-budget stop before an explicit end time
   const Model model{1.0, 0.5, 1.0, 0.45, 1.0, {}};
   Request request;
   request.initial = {0.01, 0.02, 0.0, 0.01};  // stays far below the stop

@@ -195,7 +195,13 @@ TEST(Simulate, MotionBelowTheStopEndsWithNoFurtherContact) {
   EXPECT_EQ(result.stop, StopReason::NoFurtherContact);
   EXPECT_EQ(result.cost.contacts, 0);
   EXPECT_FALSE(result.message.empty());
+  // detuned: no period bounds the search. Its horizon (kFlightSearchPeriods slow periods) and
+  // its step budget each end it search-budget, never no-further-contact, at the flight's start
   const Model detuned = testing::detunedChain();
+  const Result searched = simulate(detuned, request);
+  EXPECT_EQ(searched.stop, StopReason::SearchBudget) << searched.message;
+  EXPECT_EQ(searched.tFinal, 0.0);
+  EXPECT_EQ(searched.final, request.initial);
   request.flightSearchSteps = 20;
   EXPECT_EQ(simulate(detuned, request).stop, StopReason::SearchBudget);
 }
