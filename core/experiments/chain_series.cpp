@@ -142,6 +142,14 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
     undecidedAt = toDouble(simulator.run().tFinal);
     return std::nullopt;
   }
+  if (progress && spec.trust != TrustMode::Off) {
+    // the run whole, shown before its error estimate (the shadow run costs about as much again)
+    ChainSeries whole = series;
+    whole.run = inDouble(simulator.run());
+    whole.flights = flightsOf(spec, whole.run);
+    whole.trustPending = true;
+    progress(whole, 1.0);
+  }
   // the run's error estimate: the chain and start read one precision up (binary128's shadow
   // scaled), compared event by event
   using H = ShadowScalar<S>;

@@ -77,11 +77,15 @@ struct ChainSeries {
   Precision precision = Precision::Double;
   /// the time of the contact the precision below could not decide (raised runs only) [time]
   double undecidedAt = 0;
+  /// the run is whole and its error estimate is being made (`trust` Unchecked until then): the
+  /// report that shows the run before its estimate, which costs about as much again
+  bool trustPending = false;
 };
 
 /// What a series in progress hands on: the series so far (the run's events, flights and grid up
 /// to its last contact; its totals those of the run so far) and the fraction of the asked
-/// contacts made. A raised run starts again from t = 0 (its `precision` says so).
+/// contacts made; last, when an estimate is asked for, the whole run before it (trustPending). A
+/// raised run starts again from t = 0 (its `precision` says so).
 using ChainSeriesProgress = std::function<void(const ChainSeries& sofar, double progress)>;
 
 /// Runs `spec` in double, handing the series so far to `progress` about every `chunkSeconds` of

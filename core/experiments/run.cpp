@@ -212,6 +212,8 @@ Update runChains(const Spec& spec, std::stop_token stop, const Options& options,
       update.chains.push_back(std::make_shared<const ChainSeries>(sofar));
       update.progress = (double(i) + fraction) / count;
       update.attempt = precisionOf(*update.chains.front());
+      // the shown run whole, its error estimate to come
+      update.runDone = update.trustPending = i == 0 && sofar.trustPending;
       report(update);
     };
     done.push_back(std::make_shared<const ChainSeries>(chainSeries(spec.chains[i], stop, partial, options.chunkSeconds)));

@@ -635,11 +635,21 @@ void MainWindow::onUpdate(const SimUpdate& update) {
     return;
   }
   if (m_displayed && m_displayed->trustPending && update.id == m_displayed->id &&
-      update.result == m_displayed->result) {
-    // the same result again, now with its error estimate: only the status line changes
+      update.result == m_displayed->result && update.chains.size() == m_displayed->chains.size()) {
+    // the same result again, now with its error estimate: only the status line changes (of
+    // chains of N masses: the same runs, now with their estimates, the last one maybe final)
+    const bool becameFinal = update.final && !m_displayed->final;
     m_displayed->trust = update.trust;
     m_displayed->trustPending = update.trustPending;
+    m_displayed->chains = update.chains;
+    m_displayed->final = update.final;
+    m_displayed->progress = update.progress;
     showStatus(*m_displayed);
+    if (becameFinal) {
+      for (PlotView* plot : m_plots) plot->setGrowing(false);
+      setProgressVisible(m_displayed->superseded);
+      emit plotsUpdated(m_displayed->id, true);
+    }
     return;
   }
   m_pending = update;

@@ -61,7 +61,11 @@ void MainWindow::showStatus(const SimUpdate& update) {
                                                         ? QString()
                                                         : QStringLiteral("\n\n") +
                                                               QString::fromStdString(update.precisionNote)));
-    if (!update.final || update.superseded) text += tr(" · computing…");
+    if (update.trustPending && !update.superseded) {
+      text += tr(" · trust: estimating…");
+    } else if (!update.final || update.superseded) {
+      text += tr(" · computing…");
+    }
     if (!m_droppedNote.isEmpty()) text += QStringLiteral(" · ") + m_droppedNote;
     if (!m_problem.isEmpty()) text = tr("Not computed: %1 (showing the last valid result)").arg(m_problem);
     m_status->setMessage(text);

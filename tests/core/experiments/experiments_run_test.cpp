@@ -148,8 +148,8 @@ TEST(ExperimentRunTest, anExperimentOfChainsRunsThemInTurnTheShownOneFirstAndMak
     EXPECT_EQ(shown.trust.stateError, alone.trust.stateError);
     EXPECT_EQ(shown.grid.size(), alone.grid.size());
   }
-  // partial reports of the first run carry it alone; then it whole (runDone) before the second
-  // one's; the progress never goes back
+  // partial reports of the first run carry it alone; then it whole (runDone) before its error
+  // estimate (trust pending), then with it, then the second one's; the progress never goes back
   ASSERT_GE(reports.size(), 4u);
   std::size_t firstWhole = reports.size();
   double progress = 0;
@@ -160,14 +160,26 @@ TEST(ExperimentRunTest, anExperimentOfChainsRunsThemInTurnTheShownOneFirstAndMak
     progress = update.progress;
     if (update.runDone && firstWhole == reports.size()) firstWhole = r;
   }
-  ASSERT_LT(firstWhole, reports.size() - 1);
-  EXPECT_EQ(reports[firstWhole].chains.size(), 1u);
-  EXPECT_EQ(reports[firstWhole].chains.front()->run.contacts, 250);
-  EXPECT_EQ(reports[firstWhole + 1].chains.size(), 2u);
+  ASSERT_LT(firstWhole + 2, reports.size());
+  const Update& beforeEstimate = reports[firstWhole];
+  EXPECT_TRUE(beforeEstimate.trustPending && !beforeEstimate.final);
+  ASSERT_EQ(beforeEstimate.chains.size(), 1u);
+  EXPECT_EQ(beforeEstimate.chains.front()->run.contacts, 250);
+  EXPECT_EQ(beforeEstimate.chains.front()->run.events.size(), last.chains.front()->run.events.size());
+  EXPECT_EQ(beforeEstimate.chains.front()->trust.verdict, Verdict::Unchecked);
+  const Update& estimated = reports[firstWhole + 1];
+  EXPECT_TRUE(estimated.runDone && !estimated.trustPending);
+  ASSERT_EQ(estimated.chains.size(), 1u);
+  EXPECT_NE(estimated.chains.front()->trust.verdict, Verdict::Unchecked);
+  EXPECT_EQ(estimated.chains.front()->trust.stateError, last.chains.front()->trust.stateError);
+  EXPECT_EQ(reports[firstWhole + 2].chains.size(), 2u);
   for (std::size_t r = 0; r < firstWhole; ++r) {
     EXPECT_EQ(reports[r].chains.size(), 1u);
     EXPECT_LE(reports[r].chains.front()->run.contacts, 250);
+    EXPECT_FALSE(reports[r].trustPending);
   }
+  // the second run (its estimate off) has no report before an estimate
+  for (std::size_t r = firstWhole + 1; r < reports.size(); ++r) EXPECT_FALSE(reports[r].trustPending);
 }
 
 TEST(ExperimentRunTest, itsMapIsTheMapComputedWholeAndIsRemembered) {

@@ -313,6 +313,35 @@ class ExplorerTest : public QObject {
     QVERIFY(!m_window->statusText().contains(QStringLiteral("estimating")));
   }
 
+  // a scene of N masses hands on its run whole before its error estimate (the shadow run costs
+  // about as much again: the window shows the run and "trust: estimating…" when it gets there
+  // first); the estimate follows on the same run, which is drawn once as final
+  void aChainRunComesBeforeItsTrustEstimate() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("chain-1ipp")));
+    QVERIFY(waitForLatestFinal(*m_window));
+    QList<SimUpdate> whole;  // the updates with the shown run whole
+    connect(m_window->controller(), &SimController::updated, this,
+            [&](const SimUpdate& update) { if (update.runDone) whole.append(update); });
+    QSignalSpy drawn(m_window.get(), &MainWindow::plotsUpdated);
+    Params params = m_window->params();
+    params.chainPeriodFraction *= 0.99;
+    m_window->setParams(params);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY(whole.size() >= 2);
+    const SimUpdate& before = whole.front();
+    const SimUpdate& after = whole.back();
+    QVERIFY(before.trustPending && !before.final);
+    QVERIFY(before.chains.front()->trust.verdict == grazelab::core::Verdict::Unchecked);
+    QVERIFY(after.final && !after.trustPending);
+    QVERIFY(after.chains.front()->trust.verdict != grazelab::core::Verdict::Unchecked);
+    QCOMPARE(after.chains.front()->run.events.size(), before.chains.front()->run.events.size());
+    int finalDraws = 0;
+    for (const QList<QVariant>& call : drawn) finalDraws += call.at(1).toBool() ? 1 : 0;
+    QCOMPARE(finalDraws, 1);
+    QVERIFY2(m_window->statusText().contains(QStringLiteral("trust:")), qPrintable(m_window->statusText()));
+    QVERIFY(!m_window->statusText().contains(QStringLiteral("estimating")));
+  }
+
   // A scene switch makes, lays out and paints one view per turn of the event loop (all at once
   // stalled the window for 40-66 ms); the run is drawn once every view is up, the old views go,
   // and a file saved right after the switch still holds every view.
