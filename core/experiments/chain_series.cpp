@@ -166,6 +166,7 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
   TrustMonitor<S> monitor(shadow, startIn<H>(spec), spec.contacts, H(0), spec.trust, stop);
   for (const BasicChainEvent<S>& event : simulator.run().events) monitor.observe(event);
   series.trust = monitor.finish(simulator.run());
+  if (stop.stop_requested()) series.trust = {};  // an estimate cut short says nothing
   series.run = inDouble(simulator.takeRun());
   series.flights = flightsOf(spec, series.run);
   return series;

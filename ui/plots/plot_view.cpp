@@ -321,6 +321,17 @@ void PlotView::refreshNow() {
   refresh();
 }
 
+void PlotView::settle() {
+  if (!m_growing) return;
+  m_growing = false;
+  if (!m_followData) return;
+  const QRectF range = wantedRange();
+  if (range.left() != m_axisX->min() || range.right() != m_axisX->max() || range.top() != m_axisY->min() ||
+      range.bottom() != m_axisY->max()) {
+    refreshNow();
+  }
+}
+
 void PlotView::setStale(bool stale) {
   if (stale == m_stale) return;
   m_stale = stale;

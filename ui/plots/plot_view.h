@@ -85,6 +85,9 @@ class PlotView : public QChartView, public SceneView {
   /// that they (and the drawing of every point) change a few times over the run, not at every
   /// update; the final result is fitted tightly.
   void setGrowing(bool growing) { m_growing = growing; }
+  /// The data shown is now final: axes that had room to grow are fitted to it (redrawn only
+  /// when that moves them).
+  void settle();
   /// The axes measure unrelated things (a contact index against a flight time): neither
   /// axis's least span follows the other's scale.
   void setAxesIndependent(bool independent) { m_axesIndependent = independent; }

@@ -634,8 +634,11 @@ void MainWindow::onUpdate(const SimUpdate& update) {
     }
     return;
   }
+  // (not while views are made again, or a copy of the shown run waits to be drawn: it would
+  // come back over the estimate)
   if (m_displayed && m_displayed->trustPending && update.id == m_displayed->id &&
-      update.result == m_displayed->result && update.chains.size() == m_displayed->chains.size()) {
+      update.result == m_displayed->result && update.chains.size() == m_displayed->chains.size() &&
+      viewsBuilt() && !(m_pending && m_pending->id == update.id)) {
     // the same result again, now with its error estimate: only the status line changes (of
     // chains of N masses: the same runs, now with their estimates, the last one maybe final)
     const bool becameFinal = update.final && !m_displayed->final;
@@ -644,9 +647,12 @@ void MainWindow::onUpdate(const SimUpdate& update) {
     m_displayed->chains = update.chains;
     m_displayed->final = update.final;
     m_displayed->progress = update.progress;
+    m_displayed->attempt = update.attempt;
+    m_displayed->precisionNote = update.precisionNote;
     showStatus(*m_displayed);
     if (becameFinal) {
-      for (PlotView* plot : m_plots) plot->setGrowing(false);
+      // axes fitted to the run as final (a growing run's have room to widen)
+      for (PlotView* plot : m_plots) plot->settle();
       setProgressVisible(m_displayed->superseded);
       emit plotsUpdated(m_displayed->id, true);
     }
