@@ -142,13 +142,14 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
     undecidedAt = toDouble(simulator.run().tFinal);
     return std::nullopt;
   }
+  // the run whole in double, once: shown before its error estimate (the shadow run costs about
+  // as much again), then handed back with it
+  series.run = inDouble(simulator.run());
+  series.flights = flightsOf(spec, series.run);
   if (progress && spec.trust != TrustMode::Off) {
-    // the run whole, shown before its error estimate (the shadow run costs about as much again)
-    ChainSeries whole = series;
-    whole.run = inDouble(simulator.run());
-    whole.flights = flightsOf(spec, whole.run);
-    whole.trustPending = true;
-    progress(whole, 1.0);
+    series.trustPending = true;
+    progress(series, 1.0);
+    series.trustPending = false;
   }
   // the run's error estimate: the chain and start read one precision up (binary128's shadow
   // scaled), compared event by event
@@ -167,8 +168,6 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
   for (const BasicChainEvent<S>& event : simulator.run().events) monitor.observe(event);
   series.trust = monitor.finish(simulator.run());
   if (stop.stop_requested()) series.trust = {};  // an estimate cut short says nothing
-  series.run = inDouble(simulator.takeRun());
-  series.flights = flightsOf(spec, series.run);
   return series;
 }
 
