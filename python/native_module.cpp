@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// grazelab._native: one command line run in this process by the command line's own code
-// (runCommandLine), on a thread of its own with the GIL released. The calling thread wakes every
-// 100 ms: Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the
+// grazelab._native: the command line's commands run in this process by the command line's own
+// code (runCommandLine), on a thread of its own with the GIL released. The calling thread wakes
+// every 100 ms: Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the
 // command's latest progress goes to the caller's callback, both on the caller's thread.
-// grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy. Short
-// runs are called directly (simulate, simulate_chain), and a chain of N masses is prepared once
-// (prepare_chain: grazelab.Chain) for every run of it.
+// grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy.
+// `simulate` is the typed command (commands/simulation.h): its options by name, no command-line
+// text, its outcome handed over as values and its events as arrays; a chain of N masses is
+// prepared once (prepare_chain: grazelab.Chain) for every run of it.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -76,33 +77,6 @@ class MemoryStream {
   char* m_buffer = nullptr;
   std::size_t m_size = 0;
   std::FILE* m_file;
-};
-
-// The messages of the short runs made on the calling thread (no callback can run another command
-// meanwhile), one in-memory stream per thread, rewound for each run: opening and closing one
-// costs about a microsecond, a tenth of a 10-contact run.
-class ReusedMessages {
- public:
-  static ReusedMessages& ofThisThread() {
-    thread_local ReusedMessages messages;
-    return messages;
-  }
-  ReusedMessages(const ReusedMessages&) = delete;
-  ReusedMessages& operator=(const ReusedMessages&) = delete;
-  /// The stream, empty.
-  std::FILE* rewound() {
-    std::rewind(m_stream.file());
-    return m_stream.file();
-  }
-  /// What was written since rewound().
-  std::string written() {
-    std::fflush(m_stream.file());
-    return std::string(m_stream.buffer(), std::size_t(ftello(m_stream.file())));
-  }
-
- private:
-  ReusedMessages() = default;
-  MemoryStream m_stream;
 };
 
 // The latest progress of a running command, handed from its threads to the caller's.
@@ -279,21 +253,6 @@ py::array chainSampleArray(const grazelab::cli::JsonValue& columns, const py::dt
   return array;
 }
 
-// The notes among a command's messages: each line "grazelab-cli: note: TEXT" as TEXT.
-py::list notesOf(const std::string& messages) {
-  static constexpr std::string_view kNote = "grazelab-cli: note: ";
-  py::list notes;
-  std::size_t at = 0;
-  while (at < messages.size()) {
-    std::size_t end = messages.find('\n', at);
-    if (end == std::string::npos) end = messages.size();
-    const std::string_view line(messages.data() + at, end - at);
-    if (line.substr(0, kNote.size()) == kNote) notes.append(py::str(std::string(line.substr(kNote.size()))));
-    at = end + 1;
-  }
-  return notes;
-}
-
 // A command's document as Results; one that holds numbers wider than double (long double,
 // binary128) also has `decimal`: its numbers as text.
 py::object documentToPython(const grazelab::cli::JsonValue& document, const py::object& resultType,
@@ -308,10 +267,10 @@ py::object documentToPython(const grazelab::cli::JsonValue& document, const py::
 // A simulate's document as its Python result, the same for every chain however it was written:
 // its events, from `table`, as one structured array (None when discarded) and its samples (columns
 // in the document) as another, the rest as values (in a wider precision than double also the whole
-// document as text, under `decimal`), and `notes`, the command's notes among `messages`. Returns
-// (the result, the events' decimal text in long double or binary128, 2N + 2 a row, else None).
+// document as text, under `decimal`), and `notes`. Returns (the result, the events' decimal text in
+// long double or binary128, 2N + 2 a row, else None).
 py::tuple simulationResult(grazelab::cli::JsonValue& document, grazelab::cli::ChainEventTable&& table,
-                           const py::object& resultType, const std::string& messages) {
+                           const py::object& resultType, const std::vector<std::string>& notes) {
   const grazelab::cli::JsonValue* described = document.find("chain");
   const ChainDtypes& dtypes = chainDtypes(described->find("masses")->items.size(),
                                           std::size_t(described->find("stop_mass")->integer));
@@ -328,7 +287,7 @@ py::tuple simulationResult(grazelab::cli::JsonValue& document, grazelab::cli::Ch
   static PyObject* const eventsKey = PyUnicode_InternFromString("events");
   static PyObject* const notesKey = PyUnicode_InternFromString("notes");
   if (PyDict_SetItem(result.ptr(), eventsKey, events.ptr()) != 0 ||
-      PyDict_SetItem(result.ptr(), notesKey, notesOf(messages).ptr()) != 0) {
+      PyDict_SetItem(result.ptr(), notesKey, py::cast(notes).ptr()) != 0) {
     throw py::error_already_set();
   }
   if (sampleArray) result["samples"] = sampleArray;
@@ -336,11 +295,9 @@ py::tuple simulationResult(grazelab::cli::JsonValue& document, grazelab::cli::Ch
   return py::make_tuple(result, table.decimals.empty() ? py::object(py::none()) : py::cast(table.decimals));
 }
 
-// run(arguments, progress=None, events=False, max_events, discard_events=False, keep_map=False,
-//     result_type=None, keep_files=False)
-//   -> (code, output, messages, events, decimals, map, document, files)
-py::tuple run(const std::vector<std::string>& arguments, const py::object& progress,
-              bool eventsAsArrays, std::size_t maxEvents, bool discardEvents, bool keepMap,
+// run(arguments, progress=None, keep_map=False, result_type=None, keep_files=False)
+//   -> (code, output, messages, map, document, files)
+py::tuple run(const std::vector<std::string>& arguments, const py::object& progress, bool keepMap,
               const py::object& resultType, bool keepFiles) {
   QStringList commandLine{QStringLiteral("grazelab")};
   for (const std::string& argument : arguments) commandLine << QString::fromStdString(argument);
@@ -348,15 +305,10 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   MemoryStream output;
   MemoryStream messages;
   std::stop_source stop;
-  grazelab::cli::ChainEventTable table;
-  table.maxRows = maxEvents;
-  table.whenFull = [&stop] { stop.request_stop(); };
-  table.discard = discardEvents;
   ProgressMailbox mailbox;
   grazelab::cli::Io io;
   io.out = output.file();
   io.messages = messages.file();
-  if (eventsAsArrays || discardEvents) io.chainEvents = &table;
   grazelab::cli::map::StoredMap map;
   if (keepMap) io.map = &map;
   grazelab::cli::JsonValue document;
@@ -379,24 +331,13 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
   // the last progress (a command shorter than one wake-up reports its end too)
   if (!pythonError && code == 0) deliverProgress(mailbox, progress, pythonError);
   if (pythonError) throw std::move(*pythonError);
-  if (table.full) throw py::value_error(tooManyEvents(maxEvents));
   const std::string out = output.take();
   const std::string log = messages.take();
-  py::object events = py::none();
-  py::object decimals = py::none();
   py::object mapResult = py::none();
   if (keepMap && code == 0) mapResult = mapInMemory(std::move(map));
   py::object documentResult = py::none();
   if (!resultType.is_none() && code == 0) {
-    if (io.chainEvents && document.find("chain") && document.find("events")) {
-      // a simulate: its events and samples as arrays
-      const py::tuple simulated = simulationResult(document, std::move(table), resultType, log);
-      documentResult = simulated[0];
-      events = documentResult["events"];
-      decimals = simulated[1];
-    } else {
-      documentResult = documentToPython(document, resultType, document.holdsWideNumbers());
-    }
+    documentResult = documentToPython(document, resultType, document.holdsWideNumbers());
   }
   py::object filesResult = py::none();
   if (keepFiles && code == 0) {
@@ -404,8 +345,7 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
     for (const auto& [name, bytes] : files) named[py::str(name)] = py::bytes(bytes);
     filesResult = std::move(named);
   }
-  return py::make_tuple(code, py::bytes(out), py::str(log), events, decimals, mapResult,
-                        documentResult, filesResult);
+  return py::make_tuple(code, py::bytes(out), py::str(log), mapResult, documentResult, filesResult);
 }
 
 // An option's value as the direct call takes it: a str is its text; a float, an int exact in
@@ -447,13 +387,6 @@ bool readGiven(PyObject* value, grazelab::cli::GivenOption& option) {
   return true;
 }
 
-// simulate(options, result_type, events, max_events, discard_events)
-//   -> (result with its events and notes, decimals), or None when an option's value is not of a
-//      type read directly (then give the options as text)
-// `grazelab-cli simulate` on the calling thread, its options given by name as (name, value,
-// name, value, ...) with None for an option not given: no command-line text, no parser, no thread (a short
-// run, which the caller keeps short: nothing interrupts it), its document handed over as values,
-// not as text. The numbers are read as the command line reads their shortest decimal text.
 // Options given by name as (name, value, name, value, ...), None for an option not given; a
 // sequence only for the options in `sequences`. Nothing when a value is not of a type read
 // directly (then give the options as text).
@@ -484,42 +417,71 @@ std::optional<std::vector<grazelab::cli::GivenOption>> givenOptions(const py::se
   return named;
 }
 
-py::object simulateHere(const py::sequence& given, const py::object& resultType, bool eventsAsArrays,
-                        std::size_t maxEvents, bool discardEvents) {
-  auto named = givenOptions(given, {"state", "perturb"});
-  if (!named) return py::none();
-  const grazelab::cli::OptionValues options(std::move(*named));
-  ReusedMessages& messages = ReusedMessages::ofThisThread();  // (a short run on this thread)
-  grazelab::cli::ChainEventTable table;
-  table.maxRows = maxEvents;
-  table.discard = discardEvents || !eventsAsArrays;
-  grazelab::cli::Io io;
-  io.out = messages.rewound();  // (a run whose document is taken as values writes no output)
-  io.messages = io.out;
-  io.chainEvents = &table;
-  grazelab::cli::JsonValue document;
-  io.document = &document;
-  QString error;
-  int code = 0;
-  {
-    py::gil_scoped_release released;
-    code = grazelab::cli::runSimulate(options, io, std::stop_token{}, error);
-  }
-  if (code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
-  if (table.full) throw py::value_error(tooManyEvents(maxEvents));
-  if (code != 0) {
-    PyErr_SetString(PyExc_OSError, error.isEmpty() ? ("simulate failed (exit " + std::to_string(code) + ")").c_str()
-                                                   : error.simplified().toStdString().c_str());
-    throw py::error_already_set();
-  }
-  return simulationResult(document, std::move(table), resultType, messages.written());
-}
-
 // grazelab.Chain's native half: a chain of N masses read, checked and designed once, shared by
 // every run of it (cli::PreparedMassChain).
 struct ChainHandle {
   std::shared_ptr<const grazelab::cli::PreparedMassChain> chain;
 };
+
+// The typed simulate (cli::simulate) of `chain` with the run options `options`: (its result, the
+// events' decimal text in long double or binary128, else None). `direct`: on the calling thread
+// (a short run, which the caller keeps short: nothing interrupts it), else on a thread of its own
+// that Ctrl+C stops. ValueError for a request refused or a run past max_events events.
+py::tuple simulateTyped(const grazelab::cli::PreparedMassChain& chain, const grazelab::cli::OptionValues& options,
+                        bool notesStarts, const py::object& resultType, bool discardEvents, bool direct,
+                        std::size_t maxEvents) {
+  QString error;
+  std::optional<grazelab::cli::SimulateRequest> request =
+      grazelab::cli::readSimulateRequest(options, grazelab::cli::Format::Json, error);
+  if (!request) throw py::value_error(error.simplified().toStdString());
+  request->notesStarts = notesStarts;
+  std::stop_source stop;
+  grazelab::cli::ChainEventTable table;
+  table.discard = discardEvents;
+  table.maxRows = maxEvents;
+  table.whenFull = [&stop] { stop.request_stop(); };
+  grazelab::cli::EventTableSink sink(table);
+  grazelab::cli::SimulateOutcome outcome;
+  const auto work = [&](std::stop_token token) {
+    outcome = grazelab::cli::simulate(chain, *request, sink, std::move(token));
+    return 0;
+  };
+  if (direct) {
+    py::gil_scoped_release released;
+    work(stop.get_token());
+  } else {
+    std::optional<py::error_already_set> pythonError;
+    interruptibly(stop, work, {}, pythonError);
+    if (pythonError) throw std::move(*pythonError);
+  }
+  if (table.full) throw py::value_error(tooManyEvents(maxEvents));
+  if (outcome.status == grazelab::cli::SimulateStatus::Refused) {
+    throw py::value_error(QString::fromStdString(outcome.problem).simplified().toStdString());
+  }
+  grazelab::cli::JsonValue document = grazelab::cli::simulationDocument(outcome, *request);
+  return simulationResult(document, std::move(table), resultType, outcome.notes);
+}
+
+// simulate(options, result_type, events, max_events, discard_events, direct) -> (result with its
+// events and notes, decimals), or None when an option's value is not of a type read directly
+// (then give the options as text). A chain of the note's options or of --masses (read once for
+// the last 16 asked for) run with the options given by name as (name, value, name, value, ...),
+// None for an option not given: no command-line text, no parser, its outcome handed over as
+// values. The numbers are read as the command line reads their shortest decimal text.
+py::object simulateOptions(const py::sequence& given, const py::object& resultType, bool eventsAsArrays,
+                           std::size_t maxEvents, bool discardEvents, bool direct) {
+  auto named = givenOptions(given, {"state", "perturb", "sample-times"});
+  if (!named) return py::none();
+  const grazelab::cli::OptionValues options(std::move(*named));
+  grazelab::cli::Parsed<std::shared_ptr<const grazelab::cli::PreparedMassChain>> chain;
+  {
+    py::gil_scoped_release released;
+    chain = grazelab::cli::recentChain(options);
+  }
+  if (!chain.value) throw py::value_error(chain.error.simplified().toStdString());
+  return simulateTyped(**chain.value, options, !options.isSet("masses"), resultType,
+                       discardEvents || !eventsAsArrays, direct, maxEvents);
+}
 
 // prepare_chain(options) -> ChainHandle: the chain of `options` ((name, text, ...): masses,
 // springs, right-spring, stop-mass, gap, frequencies, design-branch), designed on a thread of
@@ -547,50 +509,15 @@ ChainHandle prepareChain(const py::sequence& given) {
 // simulate_chain(chain, options, result_type, discard_events, direct) -> (result, the events'
 // decimal text in long double or binary128, else None), or None when an option's value is not
 // of a type read directly (then give the options as text). The run of `grazelab-cli simulate
-// --masses ...` on the prepared chain, its document handed over as values and its events as an
-// array; the note's chain is run by the note's engine (the result of simulate with the two-mass
-// keywords). `direct`: on the calling thread (a short run of a commensurate chain, whose every
+// --masses ...` on the prepared chain (simulateTyped); the note's chain is run by the note's
+// kernel (the result of simulate with the two-mass keywords). `direct`: on the calling thread (a short run of a commensurate chain, whose every
 // flight is decided within a period), else on a thread of its own that Ctrl+C stops.
 py::object simulateChain(const ChainHandle& chain, const py::sequence& given, const py::object& resultType,
                          bool discardEvents, bool direct, std::size_t maxEvents) {
   auto named = givenOptions(given, {"state", "perturb", "glo-weights", "sample-times"});
   if (!named) return py::none();
   const grazelab::cli::OptionValues options(std::move(*named));
-  std::optional<MemoryStream> ownMessages;
-  std::FILE* const messages = direct ? ReusedMessages::ofThisThread().rewound() : ownMessages.emplace().file();
-  std::stop_source stop;
-  grazelab::cli::ChainEventTable table;
-  table.discard = discardEvents;
-  table.maxRows = maxEvents;
-  table.whenFull = [&stop] { stop.request_stop(); };
-  grazelab::cli::Io io;
-  io.out = messages;  // (a run whose document is taken as values writes no output)
-  io.messages = messages;
-  io.chainEvents = &table;
-  grazelab::cli::JsonValue document;
-  io.document = &document;
-  QString error;
-  const auto work = [&](std::stop_token stop) {
-    return grazelab::cli::runSimulate(*chain.chain, options, io, std::move(stop), error);
-  };
-  int code = 0;
-  if (direct) {
-    py::gil_scoped_release released;
-    code = work(stop.get_token());
-  } else {
-    std::optional<py::error_already_set> pythonError;
-    code = interruptibly(stop, work, {}, pythonError);
-    if (pythonError) throw std::move(*pythonError);
-  }
-  if (code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
-  if (table.full) throw py::value_error(tooManyEvents(maxEvents));
-  const std::string log = direct ? ReusedMessages::ofThisThread().written() : ownMessages->take();
-  if (code != 0) {
-    PyErr_SetString(PyExc_OSError, error.isEmpty() ? ("simulate failed (exit " + std::to_string(code) + ")").c_str()
-                                                   : error.simplified().toStdString().c_str());
-    throw py::error_already_set();
-  }
-  return simulationResult(document, std::move(table), resultType, log);
+  return simulateTyped(*chain.chain, options, false, resultType, discardEvents, direct, maxEvents);
 }
 
 // The chain as the documents write it (masses, springs designed, right spring, stop, gap, the
@@ -608,17 +535,13 @@ PYBIND11_MODULE(_native, module) {
   QCoreApplication::setApplicationName(QStringLiteral("grazelab-cli"));
   QCoreApplication::setApplicationVersion(QString::fromUtf8(grazelab::cli::kVersion));
   module.attr("version") = grazelab::cli::kVersion;
-  module.def("run", &run, py::arg("arguments"), py::arg("progress") = py::none(),
-             py::arg("events") = false, py::arg("max_events") = std::size_t(-1),
-             py::arg("discard_events") = false, py::arg("keep_map") = false,
+  module.def("run", &run, py::arg("arguments"), py::arg("progress") = py::none(), py::arg("keep_map") = false,
              py::arg("result_type") = py::none(), py::arg("keep_files") = false,
              "Runs one grazelab-cli command line (without the program's name) in this process. "
-             "Returns (exit code, output bytes, messages, events array or None, the events' "
-             "decimal text or None, map or None); raises ValueError when the run makes more "
-             "than max_events events. With discard_events a simulate keeps no event anywhere "
-             "(statistics only); with keep_map a map or merge hands back (its JSON document, "
-             "its points as a structured array) and writes files only where --out says; with "
-             "result_type a simulate's document comes back as values of that type, not text; "
+             "Returns (exit code, output bytes, messages, map or None, document or None, files or "
+             "None). With keep_map a map or merge hands back (its JSON document, its points as a "
+             "structured array) and writes files only where --out says; with result_type the "
+             "document of info, glo-set or orbit comes back as values of that type, not text; "
              "with keep_files family and modes without --out hand their files back as "
              "{name: bytes} and write none.");
   py::class_<ChainHandle>(module, "PreparedChain",
@@ -636,12 +559,12 @@ PYBIND11_MODULE(_native, module) {
              "grazelab-cli simulate --masses ... on a prepared chain, its run options as (name, value, ...): "
              "(the result: its document as values, with events and notes; the note's chain's events' decimal "
              "text or None), or None when a value is of a type not read directly (give the options as text).");
-  module.def("simulate", &simulateHere, py::arg("options"), py::arg("result_type"),
+  module.def("simulate", &simulateOptions, py::arg("options"), py::arg("result_type"),
              py::arg("events") = true, py::arg("max_events") = std::size_t(-1),
-             py::arg("discard_events") = false,
-             "grazelab-cli simulate on the calling thread, its options as (name, value, name, "
-             "value, ...) (a value str, float, int or a tuple of numbers; None: not given): (result with "
-             "its events and notes, the events' decimal text or None), or None when a value is "
-             "of another type (give the options as text). A short run only: nothing "
-             "interrupts it.");
+             py::arg("discard_events") = false, py::arg("direct") = false,
+             "grazelab-cli simulate's run, its options as (name, value, name, value, ...) (a value str, "
+             "float, int or a tuple of numbers; None: not given): (result with its events and notes, "
+             "the events' decimal text or None), or None when a value is of another type (give the "
+             "options as text). direct: on the calling thread (a short run: nothing interrupts it), "
+             "else on a thread of its own that Ctrl+C stops.");
 }

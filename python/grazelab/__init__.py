@@ -65,18 +65,16 @@ class GrazeLabWarning(UserWarning):
     """A result came back that its own error estimate does not trust (verdict unreliable)."""
 
 
-def _command(command, options, progress=None, events=False, positional=(), discard_events=False,
-             keep_map=False, document=False, keep_files=False):
-    """Runs one command with the options that are not None; returns (output text, messages,
-    events, decimals) or raises; with keep_map, (messages, map) for a map or merge held in
-    memory; with keep_files (family, modes), (messages, {name: bytes}) for files held in memory;
-    with document (info, orbit, simulate), the output is its document as Results, not text. A progress
-    callback hears (1.0, "done") when the command has ended well."""
+def _command(command, options, progress=None, positional=(), keep_map=False, document=False, keep_files=False):
+    """Runs one command with the options that are not None; returns (output text, messages) or
+    raises; with keep_map, (messages, map) for a map or merge held in memory; with keep_files
+    (family, modes), (messages, {name: bytes}) for files held in memory; with document (info,
+    glo-set, orbit), (its document as Results, messages). A progress callback hears (1.0, "done")
+    when the command has ended well."""
     given = {name: value for name, value in options.items() if value is not None}
     line = _convert.arguments(command, given) + [str(p) for p in positional]
-    code, output, messages, table, decimals, kept, values, files = _run(
-        line, progress, events, MAX_EVENTS, discard_events, keep_map, Result if document else None,
-        keep_files)
+    code, output, messages, kept, values, files = _run(line, progress, keep_map, Result if document else None,
+                                                       keep_files)
     lines = [text for text in messages.splitlines() if text.strip()]
     if code == 2:
         raise ValueError(_message(lines[-1] if lines else "invalid input"))
@@ -89,8 +87,8 @@ def _command(command, options, progress=None, events=False, positional=(), disca
     if keep_files:
         return lines, files
     if document:
-        return values, lines, table, decimals
-    return output.decode("utf-8"), lines, table, decimals
+        return values, lines
+    return output.decode("utf-8"), lines
 
 
 def _message(line):
@@ -101,11 +99,6 @@ def _message(line):
             line = line[len(prefix):]
             break
     return _convert.keywords_of_options(line)
-
-
-def _notes(lines):
-    prefix = "grazelab-cli: note: "
-    return [line[len(prefix):] for line in lines if line.startswith(prefix)]
 
 
 def help():  # noqa: A001 (Python's help() still works on the functions)
@@ -187,7 +180,7 @@ def info(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[flo
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
     elif frequencies is not None or design_branch is not None:
         raise ValueError("frequencies and design_branch design the springs of a chain given by masses")
-    result, _, _, _ = _command("info", options, document=True)
+    result, _ = _command("info", options, document=True)
     return result
 
 
@@ -218,7 +211,7 @@ def glo_set(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
     elif frequencies is not None or design_branch is not None or springs is not None:
         raise ValueError("springs, frequencies and design_branch describe a chain given by masses")
-    result, _, _, _ = _command("glo-set", options, document=True)
+    result, _ = _command("glo-set", options, document=True)
     return result
 
 
@@ -316,39 +309,31 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
                                events, samples, progress, contacts, t_end)
     if frequencies is not None or design_branch is not None or springs is not None or glo_weights is not None:
         raise ValueError("springs, frequencies, design_branch and glo_weights describe a chain given by masses")
-    if (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS and contacts <= MAX_EVENTS
-            and progress is None and k2 is None and t_end is None and samples is None):
-        # a short run of a designed chain: the same command called directly, its numbers handed
-        # over as numbers (None when one is of a type it does not take: then as text, below)
-        try:
-            answer = _simulate_here(("m1", m1, "m2", m2, "k1", k1, "gap", gap, "branch", branch,
-                                     "precision", precision, "glo", glo, "onepp", onepp, "state", state,
-                                     "perturb", perturb, "contacts", contacts, "search-steps", search_steps,
-                                     "trust", trust), Result, events, MAX_EVENTS, not events)
-        except ValueError as error:
-            raise ValueError(_message(str(error))) from None
-        if answer is not None:
-            result, decimals = answer
-            if decimals is None and result["trust"]["verdict"] != "unreliable":
-                return result  # (the common case, without another call)
-            return _simulated(result, decimals)
-    count = _check_held_events(events, contacts)
-    options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision, glo=glo,
-                   onepp=onepp, state=state, perturb=perturb, contacts=contacts, t_end=t_end,
-                   search_steps=search_steps, trust=trust)
-    if samples is not None:
-        grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
-        options["sample_times" if grid else "sample_step"] = samples
-    if (progress is None and k2 is None and t_end is None and samples is None and count is not None
-            and 0 <= count <= _DIRECT_CONTACTS):
-        # a short run whose values are of other types (NumPy, Fraction): called directly, as text
-        given = _convert.option_texts({n: v for n, v in options.items() if v is not None})
-        flat = tuple(part for pair in given for part in pair)
-        return _simulated(*_simulate_here(flat, Result, events, MAX_EVENTS, not events))
-    result, lines, table, decimals = _command("simulate", options, progress, events=events,
-                                              discard_events=not events, document=True)
-    result["events"] = table
-    result["notes"] = _notes(lines)
+    flat = ("m1", m1, "m2", m2, "k1", k1, "k2", k2, "gap", gap, "branch", branch, "precision", precision, "glo", glo,
+            "onepp", onepp, "state", state, "perturb", perturb, "contacts", contacts, "t-end", t_end,
+            "search-steps", search_steps, "trust", trust)
+    # a short run of a designed chain on the calling thread (its every flight decided within a
+    # period); anything longer on a thread of its own that Ctrl+C stops
+    direct = (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS and contacts <= MAX_EVENTS
+              and progress is None and k2 is None and t_end is None and samples is None)
+    if not direct:
+        _check_held_events(events, contacts)
+        if samples is not None:
+            grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
+            flat += ("sample-times" if grid else "sample-step", samples)
+    try:
+        answer = _simulate_here(flat, Result, events, MAX_EVENTS, not events, direct)
+        if answer is None:  # values of other types (NumPy, Fraction): as the command line's text
+            given = {name.replace("-", "_"): value for name, value in zip(flat[::2], flat[1::2]) if value is not None}
+            flat = tuple(part for pair in _convert.option_texts(given) for part in pair)
+            answer = _simulate_here(flat, Result, events, MAX_EVENTS, not events, direct)
+    except ValueError as error:
+        raise ValueError(_message(str(error))) from None
+    if progress is not None:
+        progress(1.0, "done")
+    result, decimals = answer
+    if decimals is None and result["trust"]["verdict"] != "unreliable":
+        return result  # (the common case, without another call)
     return _simulated(result, decimals)
 
 
@@ -479,7 +464,7 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
                               masses, springs, right_spring, stop_mass, frequencies, design_branch)
     if onepp is not None:
         options.update(onepp=True, period=onepp)
-    result, _, _, _ = _command("orbit", options, document=True)
+    result, _ = _command("orbit", options, document=True)
     result["multipliers"] = _convert.multipliers(result["multipliers"])
     return result
 
@@ -687,7 +672,7 @@ class _Files:
 def _directory_command(command, table_file, out, progress, options):
     with _Output(out, command) as target:
         folder = target.prefix
-        _, lines, _, _ = _command(command, dict(options, out=folder), progress)
+        _, lines = _command(command, dict(options, out=folder), progress)
         if not target.kept:  # the files' folder is deleted: the log does not name it
             lines = [line for line in lines if " wrote " not in line]
         result = Result(out=folder if target.kept else None,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "commands/simulate_command.h"
+#include "commands/simulation.h"
 #include "core/solver/trust.h"
 #include "core/solver/chain_run.h"
 #include "io/cli_input.h"
@@ -53,22 +54,26 @@ void BM_CoreRun(benchmark::State& state) {
 }
 BENCHMARK(BM_CoreRun);
 
-// the whole command with its document as values and its events in a table (what the module calls)
+// The typed command as the Python module calls it: the request read from the options, the run
+// with its events into a table, its document as values
+std::size_t typedRun(const grazelab::cli::PreparedMassChain& chain, const OptionValues& options, bool notesStarts) {
+  QString error;
+  auto request = grazelab::cli::readSimulateRequest(options, grazelab::cli::Format::Json, error);
+  request->notesStarts = notesStarts;
+  grazelab::cli::ChainEventTable table;
+  grazelab::cli::EventTableSink sink(table);
+  const grazelab::cli::SimulateOutcome outcome = grazelab::cli::simulate(chain, *request, sink);
+  return grazelab::cli::simulationDocument(outcome, *request).fields.size() + table.count;
+}
+
+// the whole command with its document as values and its events in a table (what the module
+// calls), the chain found among those read last
 void BM_SimulateToDocument(benchmark::State& state) {
   const OptionValues options = shortRun();
-  std::FILE* sink = std::fopen("/dev/null", "w");
   for (auto _ : state) {
-    grazelab::cli::ChainEventTable table;
-    grazelab::cli::JsonValue document;
-    grazelab::cli::Io io;
-    io.out = sink;
-    io.messages = sink;
-    io.chainEvents = &table;
-    io.document = &document;
-    QString error;
-    benchmark::DoNotOptimize(grazelab::cli::runSimulate(options, io, std::stop_token{}, error));
+    const auto chain = grazelab::cli::recentChain(options);
+    benchmark::DoNotOptimize(typedRun(**chain.value, options, true));
   }
-  std::fclose(sink);
 }
 BENCHMARK(BM_SimulateToDocument);
 
@@ -170,18 +175,7 @@ BENCHMARK(BM_PreparedChainCoreRun)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond
 void BM_PreparedChainSimulate(benchmark::State& state) {
   const auto& chain = preparedThreeMasses(true);
   const OptionValues options = threeMassRun(state.range(0) ? "auto" : "off");
-  std::FILE* sink = std::fopen("/dev/null", "w");
-  for (auto _ : state) {
-    grazelab::cli::ChainEventTable table;
-    grazelab::cli::JsonValue document;
-    grazelab::cli::Io io;
-    io.out = io.messages = sink;
-    io.chainEvents = &table;
-    io.document = &document;
-    QString error;
-    benchmark::DoNotOptimize(grazelab::cli::runSimulate(chain, options, io, {}, error));
-  }
-  std::fclose(sink);
+  for (auto _ : state) benchmark::DoNotOptimize(typedRun(chain, options, false));
 }
 BENCHMARK(BM_PreparedChainSimulate)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 

@@ -1,15 +1,13 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
-// `grazelab-cli simulate`: one exact run of any chain (core/solver/chain_run.h), however it is
-// written (--masses ..., or the note's --m1 --m2 --k1 --k2 --branch --gap), streamed as it happens
-// with its error estimate beside it, and --precision auto (the run again from its input one
-// precision up when the lower one ends undecided).
+// `grazelab-cli simulate`: its options read into the typed command's request
+// (commands/simulation.h), and its outcome written as it happens: json, jsonl, csv or a summary;
+// the same request and outcome for the Python module (events into a table, the document as values).
 #include "commands/simulate_command.h"
 
 #include <QStringList>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -24,16 +22,12 @@
 #include <string_view>
 #include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
-#include "core/orbits/chain_glo.h"
-#include "core/orbits/chain_onepp.h"
-#include "core/orbits/starts.h"
 #include "core/solver/chain_run.h"
-#include "core/solver/simulate.h"
 #include "core/solver/trust.h"
 #include "exit_codes.h"
-#include "io/chain_start.h"
 #include "io/cli_input.h"
 #include "io/cli_output.h"
 #include "io/json_value.h"
@@ -94,122 +88,6 @@ V eventValue(const ColumnNames& names, const core::BasicChainEvent<S>& event) {
   }
   fields.emplace_back(names.vPost, V::number(event.vAfter));
   return V::object(std::move(fields));
-}
-
-// `widest`: the run is in binary128, the last precision there is to raise it to
-std::string stopMessage(core::StopReason stop, bool widest) {
-  switch (stop) {
-    case core::StopReason::NoFurtherContact:
-      return "the frequencies are commensurate and the flight stays below the stop for a whole period: "
-             "linear forever";
-    case core::StopReason::Undecided:
-      return "a contact the precision cannot decide: the stopped mass's top comes within rounding of the stop "
-             "(a grazing, a slow impact and a miss all fit; the run ends at that flight's start), or it rests "
-             "there with no force either way (or, held there, its force comes back to zero without a change of "
-             "sign it can see)" +
-             std::string(widest ? ": binary128, the widest precision, cannot decide it either"
-                                : ": --precision auto raises the run until it is decided");
-    case core::StopReason::SearchBudget:
-      return "no contact (or release) was decided within the search's budget (1000 slowest periods; for a two-mass "
-             "chain's detuned flight, --search-steps): the frequencies are not commensurate (give --t-end, or more "
-             "--search-steps, to search longer)";
-    default: return "";
-  }
-}
-
-// A start refused: why, and whether the precision is the reason (a higher one may decide it)
-struct StartRefusal {
-  QString error;
-  bool precisionBound = false;
-};
-
-// The start of a chain the note's kernel runs, as the note's options give it (--glo lambda,
-// --onepp T, --state, --perturb; GLO_0.5 when none is given; --glo-weights 1 - lambda, lambda is
-// --glo lambda), from the note's closed forms in S; the words that describe it and the notes on
-// its rounding
-template <typename S>
-std::optional<core::BasicChainStart<S>> notesStart(const OptionValues& options, const core::BasicReadyChain<S>& ready,
-                                                   StartRefusal& refusal, std::string& description,
-                                                   std::vector<std::string>& notes) {
-  if (options.isSet("glo") && options.isSet("glo-weights")) {
-    refusal.error = "--glo and --glo-weights give the same start twice: give one";
-    return std::nullopt;
-  }
-  const auto twoMass = notesRunOptions(options, refusal.error);
-  if (!twoMass) return std::nullopt;
-  const Parsed<core::StartSpec<S>> spec = parseStartSpec<S>(*twoMass, *ready.notesModel);
-  if (!spec.value) {
-    refusal.error = spec.error;
-    return std::nullopt;
-  }
-  core::StartOrProblem<S> made = core::makeStart(*ready.notes, *spec.value);
-  if (!made.start) {
-    const bool onepp = spec.value->kind == core::StartSpec<S>::Kind::OnePeriodic;
-    refusal.error = QString::fromStdString((onepp ? "--onepp: " : "") + made.problem +
-                                           (made.undecided ? " (--precision auto goes higher)" : ""));
-    refusal.precisionBound = made.undecided;
-    return std::nullopt;
-  }
-  const auto problems = core::validateState(*ready.notesModel, made.start->state, "initial");
-  if (!problems.empty()) {
-    refusal.error = QString::fromStdString(core::describe(problems));
-    return std::nullopt;
-  }
-  description = std::move(made.start->description);
-  // core's notes on the start are about rounding: the command line can raise the precision
-  for (const std::string& note : made.start->notes) notes.push_back(note + " (try --precision quad)");
-  return core::BasicChainStart<S>{core::chainStateOf(made.start->state), made.start->stillModes};
-}
-
-// the most samples a json holds
-constexpr std::size_t kMaxChainSamples = 4'000'000;
-
-// --sample-step DT or --sample-times t1,... (json only), or nothing with `error` set
-std::optional<core::ChainSampling<double>> samplingOf(const OptionValues& options, QString& error) {
-  core::ChainSampling<double> sampling;
-  if (options.isSet("sample-step") && options.isSet("sample-times")) {
-    error = "--sample-step and --sample-times exclude each other";
-    return std::nullopt;
-  }
-  if (options.isSet("sample-step")) {
-    const core::ParsedScalar<double> step = core::parseScalar<double>(options.value("sample-step").toStdString());
-    if (!step.value || !(*step.value > 0) || !std::isfinite(*step.value)) {
-      error = QStringLiteral("--sample-step: '%1' is not a time > 0").arg(options.value("sample-step"));
-      return std::nullopt;
-    }
-    sampling.spacing = *step.value;
-  }
-  if (options.isSet("sample-times")) {
-    for (const QString& part : options.value("sample-times").split(',')) {
-      const core::ParsedScalar<double> t = core::parseScalar<double>(part.trimmed().toStdString());
-      if (!t.value || !(*t.value >= 0) || !std::isfinite(*t.value) ||
-          (!sampling.times.empty() && *t.value < sampling.times.back())) {
-        error = QStringLiteral("--sample-times: '%1' is not a list of times >= 0, ascending")
-                    .arg(options.value("sample-times"));
-        return std::nullopt;
-      }
-      sampling.times.push_back(*t.value);
-    }
-  }
-  return sampling;
-}
-// --t-end in S (0: none given), or nothing with `error` set
-template <typename S>
-std::optional<S> timeLimit(const QString& tEndText, QString& error) {
-  if (tEndText.isEmpty()) return S(0);
-  const core::ParsedScalar<S> parsed = core::parseScalar<S>(tEndText.toStdString());
-  if (!parsed.value || !(*parsed.value > 0) || !core::isFinite(*parsed.value)) {
-    error = QStringLiteral("--t-end: '%1' is not a positive finite time").arg(tEndText);
-    return std::nullopt;
-  }
-  return *parsed.value;
-}
-
-// the shadow chain an error estimate of `mode` runs (none made for Off, which runs none)
-template <typename S>
-const core::ChainShadow<S>& shadowFor(const PreparedMassChain& chain, core::TrustMode mode) {
-  static const core::ChainShadow<S> none;
-  return mode == core::TrustMode::Off ? none : chain.shadow<S>();
 }
 
 template <typename S>
@@ -313,18 +191,12 @@ void appendRow(ChainEventTable& table, const core::BasicChainEvent<S>& event) {
   put(offset, event.vAfter);
 }
 
-// The samples asked for, in double (the json's columns), as the run passes them
-struct HeldSamples {
-  std::vector<std::pair<double, core::ChainState>> samples;
-  bool truncated = false;
-};
-
 // the samples as columns t, u1..uN, v1..vN, in double
-V samplesValue(const ColumnNames& names, const HeldSamples& held) {
+V samplesValue(const ColumnNames& names, const std::vector<std::pair<double, core::ChainState>>& samples) {
   const std::size_t n = names.u.size();
   std::vector<std::vector<V>> columns(2 * n + 1);
-  for (std::vector<V>& column : columns) column.reserve(held.samples.size());
-  for (const auto& [t, state] : held.samples) {
+  for (std::vector<V>& column : columns) column.reserve(samples.size());
+  for (const auto& [t, state] : samples) {
     columns[0].push_back(V::number(t));
     for (std::size_t i = 0; i < n; ++i) {
       columns[1 + i].push_back(V::number(state.u[Eigen::Index(i)]));
@@ -338,35 +210,89 @@ V samplesValue(const ColumnNames& names, const HeldSamples& held) {
   return V::object(std::move(fields));
 }
 
+// The names of a run's chain's columns
+template <typename S>
+const ColumnNames& namesOf(const RunIn<S>& run) {
+  return ColumnNames::of(run.ready->numbers.size(), run.ready->numbers.stopped());
+}
+
 // The fields before the events: the chain, the note's model of it when the note's kernel runs it
 // (two masses stopped on the second, no wall, a 1:2 design or not commensurate: its frequencies,
 // periods, mode shapes, lambda*), and the start
-template <typename S>
-std::vector<V::Field> headFields(const core::BasicReadyChain<S>& ready, const std::string& description,
-                                 const ColumnNames& names, const core::BasicChainState<S>& start,
-                                 const QString& precision) {
-  std::vector<V::Field> head;
-  head.emplace_back("chain", massChainValue(ready.numbers, ready.dynamics.period));
-  if (ready.notesModel) {
-    head.emplace_back("model", modelValue(ModelInput<S>{*ready.notesModel, *ready.notes}, precision.toStdString()));
-  }
-  head.emplace_back("initial", V::object({{"description", V::of(description)}, {"state", stateValue(names, S(0), start)}}));
-  return head;
+std::vector<V::Field> headFields(const AnyRun& any, PrecisionChoice precision) {
+  return std::visit(
+      [&]<typename S>(const RunIn<S>& run) {
+        const core::BasicReadyChain<S>& ready = *run.ready;
+        std::vector<V::Field> head;
+        head.emplace_back("chain", massChainValue(ready.numbers, ready.dynamics.period));
+        if (ready.notesModel) {
+          head.emplace_back("model", modelValue(ModelInput<S>{*ready.notesModel, *ready.notes},
+                                                std::string(toString(precision))));
+        }
+        head.emplace_back("initial", V::object({{"description", V::of(run.description)},
+                                                {"state", stateValue(namesOf(run), S(0), run.start.state)}}));
+        return head;
+      },
+      any);
 }
 
-// What the output holds so far, across the rungs of --precision auto: a raised run starts again
-// from its start and writes only the events past those a lower precision wrote (they stay on the
-// output), comparing the last of them with its own
-struct Written {
-  bool begun = false;  ///< the head (json, jsonl) or header (csv) is out
-  long events = 0;
-  double lastTime = 0;
-  core::EventType lastType = core::EventType::Impact;
-  const char* precision = "";  ///< the precision that wrote them
-  std::optional<bool> raisedAgrees;  ///< the raised run met the last of them again
-  bool differed = false;  ///< a raised run differed from the events a lower one wrote (any rung)
-  double stateError = 0, timeError = 0;  ///< their error, as the precision that wrote them estimated it
-};
+// The fields after the events of a run that ended: its final state, why it stopped, its totals,
+// accuracy, error estimate, precision, time and samples
+std::vector<V::Field> endFields(const SimulateOutcome& outcome, const core::Trust& trust, PrecisionChoice precision,
+                                bool sampled) {
+  return std::visit(
+      [&]<typename S>(const RunIn<S>& ran) {
+        const ColumnNames& names = namesOf(ran);
+        const core::BasicChainRun<S>& run = ran.run;
+        using std::abs;
+        std::vector<V> raised;
+        for (const std::string& line : outcome.escalations) raised.push_back(V::of(line));
+        const std::string message = stopMessage(run.stop, std::is_same_v<S, core::Quad>);
+        // (fields added one by one: a braced list of pairs would copy every value)
+        std::vector<V::Field> end;
+        end.reserve(12);
+        end.emplace_back("final", stateValue(names, run.tFinal, run.final));
+        end.emplace_back("stop_reason", V::of(std::string(core::toString(run.stop))));
+        end.emplace_back("message", message.empty() ? V::null() : V::of(message));
+        end.emplace_back("contacts", V::object({{"total", V::of(std::int64_t(run.contacts))},
+                                                {"impacts", V::of(std::int64_t(run.impacts))},
+                                                {"grazings", V::of(std::int64_t(run.grazings))},
+                                                {"sticks", V::of(std::int64_t(run.sticks))},
+                                                {"releases", V::of(std::int64_t(run.releases))}}));
+        end.emplace_back("energy",
+                         V::object({{"initial", V::number(run.energyInitial)},
+                                    {"final", V::number(run.energyFinal)},
+                                    {"relative_drift", V::number(S(abs(run.energyFinal / run.energyInitial - 1)))},
+                                    {"max_rel_drift", V::number(run.maxEnergyDrift)}}));
+        end.emplace_back("accuracy", V::object({{"max_contact_residual", V::number(run.maxContactResidual)}}));
+        end.emplace_back("trust", trustValue(trust));
+        end.emplace_back("precision", V::object({{"requested", V::of(std::string(toString(precision)))},
+                                                 {"used", V::of(std::string(core::toString(outcome.precision)))},
+                                                 {"escalations", V::array(std::move(raised))}}));
+        if (!outcome.escalations.empty()) {
+          // the start the raised run used, in its digits (the head holds the one read first)
+          end.back().second.fields.emplace_back("initial_state_used", stateValue(names, S(0), ran.start.state));
+        }
+        // the run's own time, its shadow apart
+        end.emplace_back("timing",
+                         V::object({{"seconds", V::number(ran.seconds)},
+                                    {"contacts_per_second",
+                                     V::number(ran.seconds > 0 ? double(run.contacts) / ran.seconds : 0.0)}}));
+        if (sampled) {
+          end.emplace_back("samples", samplesValue(names, outcome.samples));
+          end.emplace_back("samples_truncated", V::of(outcome.samplesTruncated));
+        }
+        return end;
+      },
+      *outcome.last);
+}
+
+// The estimate says when it does not count the start's rounding
+void withWidenedStart(const SimulateOutcome& outcome, core::Trust& trust) {
+  if (!outcome.widenedStart.empty() && trust.verdict != core::Verdict::Unchecked) {
+    trust.reason += "; " + outcome.widenedStart;
+  }
+}
 
 // A document's fields on the output: json one per line (the events one per line between head and
 // end), jsonl one record per line ("run", each "event", "end"). Every record whole, so that an
@@ -394,392 +320,356 @@ void writeEnd(std::FILE* out, const std::vector<V::Field>& end, bool lines, long
   std::fflush(out);
 }
 
-// The run of a chain read once, its run options `options`; `notesOptions`: the chain was written
-// with the note's options (its starts then default to GLO_0.5 and take --glo)
-int runPrepared(const PreparedMassChain& chain, const OptionValues& options, const Io& io, std::stop_token stop,
-                QString& error, bool notesOptions) {
+// A run streamed as json, jsonl, csv or (at its end) a summary. A raised run starts again from
+// its start and writes only the events past those a lower precision wrote (they stay on the
+// output), comparing the last of them with its own.
+class StreamWriter final : public SimulateSink {
+ public:
+  StreamWriter(const Io& io, Format format, PrecisionChoice precision)
+      : m_io(io), m_format(format), m_precision(precision) {}
+
+  void begin(const AnyRun& run, const std::vector<std::string>& notes) override {
+    m_runBegins.push_back(m_events);
+    m_seen = 0;
+    m_raisedAgrees.reset();
+    std::visit(
+        [&]<typename S>(const RunIn<S>& began) {
+          m_runPrecision = core::toString(core::precisionOf<S>());
+          m_names = &namesOf(began);
+        },
+        run);
+    if (m_begun) return;
+    // the head once the start is known to be good (bad input writes nothing), in the precision
+    // that wrote it first (a raised run's document keeps it, as its text does)
+    m_begun = true;
+    for (const std::string& note : notes) std::fprintf(m_io.messages, "grazelab-cli: note: %s\n", note.c_str());
+    if (m_format == Format::Csv) {
+      std::visit([&](const auto& first) { std::fputs(csvHeader(first.ready->numbers.size(),
+                                                               first.ready->numbers.stopped()).c_str(), m_io.out); },
+                 run);
+    } else if (streamsText()) {
+      std::fputs(lines() ? "{\"record\": \"run\", " : "{\n", m_io.out);
+      writeFields(m_io.out, headFields(run, m_precision), lines());
+      std::fputs(lines() ? "}\n" : ",\n  \"events\": [", m_io.out);
+    }
+  }
+  void event(const core::BasicChainEvent<double>& event) override { write(event); }
+  void event(const core::BasicChainEvent<long double>& event) override { write(event); }
+  void event(const core::BasicChainEvent<core::Quad>& event) override { write(event); }
+
+  /// The run's output closed for `outcome`: its exit code, `error` the line that says why when
+  /// it is not 0.
+  int finish(const SimulateOutcome& outcome, bool sampled, const std::stop_token& stop, QString& error) {
+    const long before = m_runBegins.empty() ? 0 : m_runBegins.back();
+    if (outcome.status == SimulateStatus::Refused) {
+      error = QString::fromStdString(outcome.problem);
+      // after a lower precision wrote events (it ended undecided), a json or jsonl document is
+      // closed whole, saying so
+      if (m_begun && streamsText()) {
+        std::vector<V> raised;
+        for (const std::string& line : outcome.escalations) raised.push_back(V::of(line));
+        const std::vector<V::Field> end{
+            {"stop_reason", V::of(std::string(core::toString(core::StopReason::Undecided)))},
+            {"message", V::of("the run ended undecided in a lower precision, and in " +
+                              std::string(core::toString(outcome.precision)) + " it is refused: " + outcome.problem)},
+            {"precision", V::object({{"requested", V::of(std::string(toString(m_precision)))},
+                                     {"used", V::of(m_wroteIn)},
+                                     {"escalations", V::array(std::move(raised))}})}};
+        writeEnd(m_io.out, end, lines(), m_events);
+      }
+      return kExitInvalidInput;
+    }
+    std::fflush(m_io.out);
+    const core::StopReason stopped = std::visit([](const auto& ran) { return ran.run.stop; }, *outcome.last);
+    if (stopped == core::StopReason::Cancelled && !streamsText()) {
+      if (m_format == Format::Csv) error = QStringLiteral("the %1 events before it are written").arg(m_events);
+      return kExitInterrupted;
+    }
+    if (m_format == Format::Csv) {
+      if (!outcome.escalations.empty()) {
+        std::fprintf(m_io.messages,
+                     "grazelab-cli: note: the run was raised to %s (undecided below it) after %ld rows; %s\n",
+                     m_runPrecision.c_str(), before,
+                     before == 0            ? "every row is its own"
+                     : !m_raisedAgrees      ? "it ends before the last of them: the rows past its end are the lower precision's"
+                     : *m_raisedAgrees      ? "it meets the last of them again (same type, time to 1e-9)"
+                                            : "it DIFFERS from the last of them: the rows before the raise are not to be trusted");
+      }
+      return 0;
+    }
+    core::Trust trust = outcome.trust;
+    if (stop.stop_requested() && !streamsText()) return kExitInterrupted;
+    if (before > 0 && streamsText()) keepWrittenEvents(outcome, before, trust);
+    withWidenedStart(outcome, trust);
+    if (m_format == Format::Summary) {
+      const std::string used = std::string(core::toString(outcome.precision)) +
+                               (m_precision == PrecisionChoice::Auto ? " (auto)" : "");
+      std::visit([&](const auto& ran) {
+        std::fputs(summaryText(*ran.ready, ran.start, ran.run, ran.seconds, used, outcome.escalations, trust).c_str(),
+                   m_io.out);
+      }, *outcome.last);
+      std::fflush(m_io.out);
+      return 0;
+    }
+    writeEnd(m_io.out, endFields(outcome, trust, m_precision, sampled), lines(), m_events);
+    if (!stop.stop_requested()) return 0;
+    error = QStringLiteral("the %1 events before it are written, and the document's end").arg(m_events);
+    return kExitInterrupted;
+  }
+
+ private:
+  bool lines() const { return m_format == Format::JsonLines; }
+  bool streamsText() const { return m_format == Format::Json || m_format == Format::JsonLines; }
+
+  template <typename S>
+  void write(const core::BasicChainEvent<S>& event) {
+    if (m_format == Format::Summary) return;
+    if (++m_seen <= m_events) {
+      if (m_seen == m_events) {
+        // the raised run at the last event the lower precision wrote: the same event?
+        using std::abs;
+        m_raisedAgrees = event.type == m_lastType &&
+                         abs(core::toDouble(event.t) - m_lastTime) <= 1e-9 * (1 + abs(m_lastTime));
+        if (!*m_raisedAgrees) m_differed = true;
+      }
+      return;
+    }
+    if (m_format == Format::Csv) {
+      std::fputs(csvLine(event).c_str(), m_io.out);
+    } else if (lines()) {
+      std::string record = oneLine(eventValue(*m_names, event));
+      record.insert(1, "\"record\": \"event\", ");
+      std::fputs(record.append("\n").c_str(), m_io.out);
+    } else {
+      std::fputs((m_events == 0 ? "\n    " : ",\n    "), m_io.out);
+      std::fputs(oneLine(eventValue(*m_names, event)).c_str(), m_io.out);
+    }
+    ++m_events;
+    m_lastTime = core::toDouble(event.t);
+    m_lastType = event.type;
+    m_wroteIn = m_runPrecision;
+  }
+
+  // Events written before a raise stay on the output: the estimate says so, with their error
+  // (the final estimate is at least theirs), and whether the raised run met the last of them
+  // again (same type, time to 1e-9)
+  void keepWrittenEvents(const SimulateOutcome& outcome, long before, core::Trust& trust) const {
+    double stateError = 0, timeError = 0;  // of the events written, as the precision that wrote them estimated it
+    for (std::size_t i = 0; i < outcome.raised.size() && i + 1 < m_runBegins.size(); ++i) {
+      if (m_runBegins[i + 1] == m_runBegins[i]) continue;  // (wrote none)
+      stateError = std::max(stateError, outcome.raised[i].trust.stateError);
+      timeError = std::max(timeError, outcome.raised[i].trust.timeError);
+    }
+    // (a stream, not string concatenation: GCC 12 warns falsely on that at -O2)
+    std::ostringstream kept;
+    if (!m_raisedAgrees) {
+      kept << "the run ends before the last of the " << before
+           << " events written before the raise: the events past its end are the lower precision's";
+    } else {
+      kept << "events 1 to " << before << " were written before the raise, in a lower precision, and the raised run "
+           << (*m_raisedAgrees ? "meets the last of them again (same type, time to 1e-9)"
+                               : "DIFFERS from the last of them: they are not to be trusted");
+    }
+    if (m_differed && m_raisedAgrees != false) {
+      kept << "; an earlier raise DIFFERED from the events written before it: they are not to be trusted";
+    }
+    if (trust.verdict != core::Verdict::Unchecked) {
+      trust.stateError = std::max(trust.stateError, stateError);
+      trust.timeError = std::max(trust.timeError, timeError);
+      const double worst = std::max(trust.stateError, trust.timeError);
+      if (trust.verdict == core::Verdict::Ok && worst > core::kOkTolerance) {
+        trust.verdict = worst > core::kHorizonTolerance ? core::Verdict::Unreliable : core::Verdict::Degraded;
+      }
+      kept << " (their estimated error " << std::max(stateError, timeError) << ")";
+    }
+    if (m_differed) trust.verdict = core::Verdict::Unreliable;
+    trust.reason = kept.str() + "; " + trust.reason;
+  }
+
+  const Io& m_io;
+  Format m_format;
+  PrecisionChoice m_precision;
+  bool m_begun = false;  ///< the head (json, jsonl) or header (csv) is out
+  std::vector<long> m_runBegins;  ///< the events written when each run began
+  std::string m_runPrecision;  ///< the present run's precision
+  const ColumnNames* m_names = nullptr;  ///< the present run's chain's
+  long m_seen = 0;  ///< the present run's events so far
+  long m_events = 0;  ///< written
+  double m_lastTime = 0;
+  core::EventType m_lastType = core::EventType::Impact;
+  std::string m_wroteIn;  ///< the precision that wrote them
+  std::optional<bool> m_raisedAgrees;  ///< the raised run met the last of them again
+  bool m_differed = false;  ///< a raised run differed from the events a lower one wrote (any rung)
+};
+
+}  // namespace
+
+std::optional<SimulateRequest> readSimulateRequest(const OptionValues& options, Format format, QString& error) {
+  SimulateRequest request;
+  request.sampled = options.isSet("sample-step") || options.isSet("sample-times");
+  if ((format == Format::Csv || format == Format::Summary) && request.sampled) {
+    error = "--sample-step and --sample-times are written in --format json and jsonl only";
+    return std::nullopt;
+  }
+  if (format == Format::Csv && options.isSet("trust") && options.value("trust") != "off") {
+    error = "--trust: --format csv writes the events alone; the error estimate is in --format summary or json";
+    return std::nullopt;
+  }
+  const QString precision = options.isSet("precision") ? options.value("precision") : QStringLiteral("auto");
+  const std::optional<core::Precision> fixed = core::parsePrecision(precision.toStdString());
+  if (!fixed && precision != "auto") {
+    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
+    return std::nullopt;
+  }
+  request.precision = !fixed                               ? PrecisionChoice::Auto
+                      : *fixed == core::Precision::Double ? PrecisionChoice::Double
+                      : *fixed == core::Precision::Long   ? PrecisionChoice::Long
+                                                          : PrecisionChoice::Quad;
+  const auto trust = core::parseTrustMode((options.isSet("trust") ? options.value("trust") : QStringLiteral("auto"))
+                                              .toStdString());
+  if (!trust) {
+    error = QStringLiteral("--trust: '%1' is not off, auto or full").arg(options.value("trust"));
+    return std::nullopt;
+  }
+  // (csv writes no estimate: it runs none)
+  request.trust = format == Format::Csv ? core::TrustMode::Off : *trust;
+  request.contacts = options.isSet("t-end") ? std::numeric_limits<long>::max() : 100;
+  if (options.isSet("contacts")) {
+    const auto count = countOption(options, "contacts", 0, error);
+    if (!count) return std::nullopt;
+    request.contacts = long(*count);
+  }
+  if (options.isSet("search-steps")) {
+    const auto steps = countOption(options, "search-steps", 1, error);
+    if (!steps) return std::nullopt;
+    request.searchSteps = *steps;
+  }
+  if (options.isSet("sample-step") && options.isSet("sample-times")) {
+    error = "--sample-step and --sample-times exclude each other";
+    return std::nullopt;
+  }
+  if (options.isSet("sample-step")) {
+    const core::ParsedScalar<double> step = core::parseScalar<double>(options.value("sample-step").toStdString());
+    if (!step.value || !(*step.value > 0) || !std::isfinite(*step.value)) {
+      error = QStringLiteral("--sample-step: '%1' is not a time > 0").arg(options.value("sample-step"));
+      return std::nullopt;
+    }
+    request.sampleStep = *step.value;
+  }
+  if (options.isSet("sample-times")) {
+    for (const QString& part : options.value("sample-times").split(',')) {
+      const core::ParsedScalar<double> t = core::parseScalar<double>(part.trimmed().toStdString());
+      if (!t.value || !(*t.value >= 0) || !std::isfinite(*t.value) ||
+          (!request.sampleTimes.empty() && *t.value < request.sampleTimes.back())) {
+        error = QStringLiteral("--sample-times: '%1' is not a list of times >= 0, ascending")
+                    .arg(options.value("sample-times"));
+        return std::nullopt;
+      }
+      request.sampleTimes.push_back(*t.value);
+    }
+  }
+  if (options.isSet("t-end")) request.tEnd = options.value("t-end").toStdString();
+  const auto given = [&options](const char* name) -> std::optional<GivenNumbers> {
+    if (!options.isSet(name)) return std::nullopt;
+    GivenNumbers numbers;
+    if (const auto values = options.numbers(name)) {
+      numbers.numeric = true;
+      numbers.numbers.assign(values->begin(), values->end());
+    } else {
+      numbers.text = options.value(name).toStdString();
+    }
+    return numbers;
+  };
+  request.start = {given("state"), given("glo-weights"), given("onepp"), given("glo"), given("perturb")};
+  return request;
+}
+
+void EventTableSink::begin(const AnyRun& run, const std::vector<std::string>&) {
+  // refilled by a raised run (nothing of it was handed over)
+  m_table.count = 0;
+  m_table.rows.clear();
+  m_table.decimals.clear();
+  std::visit([&](const auto& began) {
+    m_table.masses = std::size_t(began.ready->numbers.size());
+    m_table.stopped = began.ready->numbers.stopped();
+  }, run);
+}
+void EventTableSink::event(const core::BasicChainEvent<double>& event) {
+  if (!m_table.discard) appendRow(m_table, event);
+}
+void EventTableSink::event(const core::BasicChainEvent<long double>& event) {
+  if (!m_table.discard) appendRow(m_table, event);
+}
+void EventTableSink::event(const core::BasicChainEvent<core::Quad>& event) {
+  if (!m_table.discard) appendRow(m_table, event);
+}
+
+JsonValue simulationDocument(const SimulateOutcome& outcome, const SimulateRequest& request) {
+  std::vector<V::Field> fields = headFields(outcome.head(), request.precision);
+  fields.emplace_back("events", V::null());
+  core::Trust trust = outcome.trust;
+  withWidenedStart(outcome, trust);
+  for (V::Field& field : endFields(outcome, trust, request.precision, request.sampled)) fields.push_back(std::move(field));
+  return V::object(std::move(fields));
+}
+
+Parsed<std::shared_ptr<const PreparedMassChain>> recentChain(const OptionValues& options, std::stop_token stop) {
+  // the chains read last, by their options' text: a script that runs one chain many times (the
+  // Python module's simulate) reads and readies it once (its modes: a binary128 eigensolve)
+  static std::mutex recentMutex;
+  static std::deque<std::pair<std::string, std::shared_ptr<const PreparedMassChain>>> recent;
+  // Each option as its length and its bytes (no two option sets read alike), numbers given as
+  // numbers by their bits: their text costs more than the run of a short request
+  std::string key;
+  for (const char* name : {"masses", "springs", "right-spring", "stop-mass", "gap", "frequencies", "design-branch", "m1",
+                           "m2", "k1", "k2", "branch"}) {
+    if (const auto numbers = options.numbers(name)) {
+      key.append("n").append(std::to_string(numbers->size())).append(":");
+      key.append(reinterpret_cast<const char*>(numbers->data()), numbers->size_bytes());
+    } else if (options.isSet(name)) {
+      const std::string text = options.value(name).toStdString();
+      key.append("t").append(std::to_string(text.size())).append(":").append(text);
+    } else {
+      key.append("-");
+    }
+  }
+  {
+    const std::lock_guard lock(recentMutex);
+    for (const auto& [text, made] : recent) {
+      if (text == key) return {made, {}};
+    }
+  }
+  auto made = PreparedMassChain::make(options, std::move(stop));
+  if (made.value) {
+    const std::lock_guard lock(recentMutex);
+    recent.emplace_back(key, *made.value);
+    if (recent.size() > 16) recent.pop_front();
+  }
+  return made;
+}
+
+int runSimulate(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
+  // the chain first: what is wrong with it is said before what is wrong with the run
+  const auto chain = recentChain(options, stop);
+  if (!chain.value) {
+    error = chain.error;
+    return chain.error.isEmpty() ? kExitInterrupted : kExitInvalidInput;  // (empty: the design was interrupted)
+  }
   const QString formatText = options.isSet("format") ? options.value("format") : QStringLiteral("json");
   if (!QStringList{"json", "jsonl", "csv", "summary"}.contains(formatText)) {
     error = QStringLiteral("--format: '%1' is not json, jsonl, csv or summary").arg(formatText);
     return kExitInvalidInput;
   }
   const Format format = formatText == "csv"       ? Format::Csv
-                             : formatText == "summary" ? Format::Summary
-                             : formatText == "jsonl"   ? Format::JsonLines
-                                                       : Format::Json;
-  const bool sampled = options.isSet("sample-step") || options.isSet("sample-times");
-  if ((format == Format::Csv || format == Format::Summary) && sampled) {
-    error = "--sample-step and --sample-times are written in --format json and jsonl only";
-    return kExitInvalidInput;
-  }
-  if (format == Format::Csv && options.isSet("trust") && options.value("trust") != "off") {
-    error = "--trust: --format csv writes the events alone; the error estimate is in --format summary or json";
-    return kExitInvalidInput;
-  }
-  const QString precisionText = options.isSet("precision") ? options.value("precision") : QStringLiteral("auto");
-  if (!QStringList{"auto", "double", "long", "quad"}.contains(precisionText)) {
-    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precisionText);
-    return kExitInvalidInput;
-  }
-  const auto trustMode = core::parseTrustMode(
-      (options.isSet("trust") ? options.value("trust") : QStringLiteral("auto"))
-          .toStdString());
-  if (!trustMode) {
-    error = QStringLiteral("--trust: '%1' is not off, auto or full").arg(options.value("trust"));
-    return kExitInvalidInput;
-  }
-  // the Python module: the document as values, the events into its table (held there, up to its
-  // bound) or, with events=False, nowhere
-  const bool asValues = io.document != nullptr;
-  const bool intoTable = asValues && io.chainEvents && !io.chainEvents->discard;
-  long contacts = options.isSet("t-end") ? std::numeric_limits<long>::max() : 100;
-  if (options.isSet("contacts")) {
-    const auto count = countOption(options, "contacts", 0, error);
-    if (!count) return kExitInvalidInput;
-    contacts = long(*count);
-  }
-  std::int64_t searchSteps = 0;
-  if (options.isSet("search-steps")) {
-    const auto steps = countOption(options, "search-steps", 1, error);
-    if (!steps) return kExitInvalidInput;
-    searchSteps = *steps;
-  }
-  const auto asked = samplingOf(options, error);
-  if (!asked) return kExitInvalidInput;
-  const QString tEnd = options.isSet("t-end") ? options.value("t-end") : QString();
-  // --precision auto: double, and the whole run again one precision up while it ends undecided
-  // (a touch or a release within the precision's rounding)
-  std::vector<std::string> escalations;
-  Written written;
-  std::vector<V::Field> head;
-  // one rung of the ladder in S: the exit code when it ends the command, nothing to go up
-  const auto rung = [&]<typename S>(const char* name, const char* next, bool last) -> std::optional<int> {
-    // a refusal here: one the precision causes (a chain or start beyond its reach: a ratio beyond
-    // its range, a fast phase that is rounding in it, an undecided return) goes up with auto; any
-    // other is the answer (exit 2, one line). After a lower precision wrote events (it ended
-    // undecided), a json or jsonl document is closed whole first, saying so.
-    const auto refuse = [&](const QString& why, bool precisionBound) -> std::optional<int> {
-      if (precisionBound && !last) {
-        escalations.push_back(std::string("from ") + name + ": " + why.toStdString());
-        return std::nullopt;
-      }
-      error = why;
-      const bool lines = format == Format::JsonLines;
-      if (written.begun && !asValues && (format == Format::Json || lines)) {
-        std::vector<V> raised;
-        for (const std::string& line : escalations) raised.push_back(V::of(line));
-        const std::vector<V::Field> end{
-            {"stop_reason", V::of(std::string(core::toString(core::StopReason::Undecided)))},
-            {"message", V::of(std::string("the run ended undecided in a lower precision, and in ") + name +
-                              " it is refused: " + why.toStdString())},
-            {"precision", V::object({{"requested", V::of(precisionText.toStdString())},
-                                     {"used", V::of(written.precision)},
-                                     {"escalations", V::array(std::move(raised))}})}};
-        writeEnd(io.out, end, lines, written.events);
-      }
-      return kExitInvalidInput;
-    };
-    const Parsed<core::BasicReadyChain<S>>& prepared = chain.ready<S>();
-    if (!prepared.value) return refuse(prepared.error, prepared.precisionBound);
-    const core::BasicReadyChain<S>& ready = *prepared.value;
-    const core::BasicMassChain<S>& masses = ready.numbers;
-    std::string description;
-    std::vector<std::string> notes;
-    std::optional<core::BasicChainStart<S>> start;
-    if (ready.notesModel) {
-      // the note's chain: the note's starts, from its closed forms (written with --masses, its
-      // start is a chain's: one of --state, --glo-weights, --onepp)
-      if (!notesOptions && (!noTwoMassStart(options, error) || !oneStartOf(options, 2, error))) return kExitInvalidInput;
-      StartRefusal refusal;
-      start = notesStart<S>(options, ready, refusal, description, notes);
-      if (!start) return refuse(refusal.error, refusal.precisionBound);
-    } else {
-      if (!noTwoMassStart(options, error) || !oneStartOf(options, masses.size(), error)) return kExitInvalidInput;
-      if (searchSteps > 0) {
-        error = "--search-steps bounds the search of a two-mass chain's detuned flight (the note's kernel); this "
-                "chain's searches go 1000 slowest periods (give --t-end to search longer)";
-        return kExitInvalidInput;
-      }
-      QString why;
-      start = chainStart<S>(options, masses, why, &description);
-      if (!start) return refuse(why, false);
-    }
-    const auto limit = timeLimit<S>(tEnd, error);
-    if (!limit) return kExitInvalidInput;
-    const ColumnNames& names = ColumnNames::of(masses.size(), masses.stopped());
-    // the Python module's table is refilled by a raised run (nothing of it was handed over)
-    if (io.chainEvents) {
-      ChainEventTable& table = *io.chainEvents;
-      table.count = 0;
-      table.rows.clear();
-      table.decimals.clear();
-      table.masses = std::size_t(masses.size());
-      table.stopped = masses.stopped();
-    }
-    const bool lines = format == Format::JsonLines;
-    const bool text = !asValues && (format == Format::Json || lines);
-    if (!written.begun) {
-      // the head once the start is known to be good (bad input writes nothing), in the
-      // precision that wrote it first (a raised run's document keeps it, as its text does)
-      for (const std::string& note : notes) std::fprintf(io.messages, "grazelab-cli: note: %s\n", note.c_str());
-      head = headFields(ready, description, names, start->state, precisionText);
-      if (!asValues && format == Format::Csv) {
-        std::fputs(csvHeader(masses.size(), masses.stopped()).c_str(), io.out);
-      } else if (text) {
-        std::fputs(lines ? "{\"record\": \"run\", " : "{\n", io.out);
-        writeFields(io.out, head, lines);
-        std::fputs(lines ? "}\n" : ",\n  \"events\": [", io.out);
-      }
-      written.begun = true;
-    }
-    const long before = written.events;
-    written.raisedAgrees.reset();
-    // the error estimate, event by event as the run goes (TrustMonitor: the same run of the
-    // chain read one precision up, binary128's scaled; a doubtful double run arbitrated in
-    // binary128; Reference.TrustIsHonest holds it to an independent 50-digit reference)
-    std::optional<core::TrustMonitor<S>> check;
-    std::string widenedStart;  ///< why the shadow's start is the run's own, when it is
-    if (format != Format::Csv) {
-      using H = core::ShadowScalar<S>;
-      const core::ChainShadow<S>& shadow = shadowFor<S>(chain, *trustMode);
-      // the start read one precision up from the same input, so that its rounding counts as
-      // error (the note's starts by the note's reader); a start not read there, widened
-      std::optional<core::BasicChainStart<H>> upStart;
-      if (shadow.usable()) {
-        const core::BasicReadyChain<H>& up = *shadow.input;
-        StartRefusal refusal;
-        std::string words;
-        std::vector<std::string> quiet;
-        QString why;
-        upStart = up.notesModel ? notesStart<H>(options, up, refusal, words, quiet)
-                                : chainStart<H>(options, up.numbers, why, nullptr);
-      }
-      if (!upStart) {
-        upStart = core::BasicChainStart<H>{{start->state.u.template cast<H>(), start->state.v.template cast<H>()},
-                                           start->stillModes};
-        if (shadow.usable()) {
-          widenedStart = std::string("the shadow starts from the run's start widened (not read one precision up: its "
-                                     "rounding is not in the estimate)");
-        }
-      }
-      QString ignored;
-      const auto upLimit = timeLimit<H>(tEnd, ignored);
-      check.emplace(shadow, *upStart, contacts, upLimit ? *upLimit : H(*limit), *trustMode, stop, searchSteps);
-    }
-    if (stop.stop_requested() && !text) return kExitInterrupted;
-    HeldSamples held;
-    core::ChainSampling<S> sampling{asked->spacing, asked->times, {}};
-    if (sampled) {
-      sampling.sink = [&held](double t, const core::BasicChainState<S>& state) {
-        if (held.samples.size() >= kMaxChainSamples) {
-          held.truncated = true;
-          return;
-        }
-        held.samples.emplace_back(t, core::ChainState{state.u.template cast<double>(), state.v.template cast<double>()});
-      };
-    }
-    const auto began = std::chrono::steady_clock::now();  // the run's own time, its shadow apart
-    long seen = 0;
-    const core::ChainEventSink<S> sink = [&](const core::BasicChainEvent<S>& event) {
-      if (check) check->observe(event);
-      if (intoTable) appendRow(*io.chainEvents, event);
-      if (intoTable && io.chainEvents->full) return;
-      if (asValues || format == Format::Summary) return;
-      if (++seen <= written.events) {
-        if (seen == written.events) {
-          // the raised run at the last event the lower precision wrote: the same event?
-          using std::abs;
-          written.raisedAgrees = event.type == written.lastType &&
-                                 abs(core::toDouble(event.t) - written.lastTime) <= 1e-9 * (1 + abs(written.lastTime));
-          if (!*written.raisedAgrees) written.differed = true;
-        }
-        return;
-      }
-      if (format == Format::Csv) {
-        std::fputs(csvLine(event).c_str(), io.out);
-      } else if (lines) {
-        std::string record = oneLine(eventValue(names, event));
-        record.insert(1, "\"record\": \"event\", ");
-        std::fputs(record.append("\n").c_str(), io.out);
-      } else {
-        std::fputs((written.events == 0 ? "\n    " : ",\n    "), io.out);
-        std::fputs(oneLine(eventValue(names, event)).c_str(), io.out);
-      }
-      ++written.events;
-      written.lastTime = core::toDouble(event.t);
-      written.lastType = event.type;
-      written.precision = name;
-    };
-    const core::BasicChainRun<S> run = core::runChain(ready, *start, contacts, *limit, stop, sink, sampling, searchSteps);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-    std::fflush(io.out);
-    const bool cancelled = run.stop == core::StopReason::Cancelled;
-    if (cancelled && !text) {
-      if (format == Format::Csv) error = QStringLiteral("the %1 events before it are written").arg(written.events);
-      return kExitInterrupted;
-    }
-    if (!last && run.stop == core::StopReason::Undecided) {
-      escalations.push_back(std::string("undecided in ") + name + " at t = " + core::formatScalar(core::toDouble(run.tFinal)) +
-                            ": the whole run again in " + next);
-      if (check && written.events > before) {
-        // the events this precision wrote stay on the output with its error: the final estimate
-        // is at least theirs
-        const core::Trust lower = check->finish(run);
-        written.stateError = std::max(written.stateError, lower.stateError);
-        written.timeError = std::max(written.timeError, lower.timeError);
-      }
-      return std::nullopt;
-    }
-    // events written before a raise stay on the output: say whether the raised run meets the
-    // last of them again (same type, time to 1e-9)
-    // (a stream, not string concatenation: GCC 12 warns falsely on that at -O2)
-    std::ostringstream kept;
-    if (before > 0 && !asValues && format != Format::Summary) {
-      if (!written.raisedAgrees) {
-        kept << "the run ends before the last of the " << before
-             << " events written before the raise: the events past its end are the lower precision's";
-      } else {
-        kept << "events 1 to " << before << " were written before the raise, in a lower precision, and the raised run "
-             << (*written.raisedAgrees ? "meets the last of them again (same type, time to 1e-9)"
-                                       : "DIFFERS from the last of them: they are not to be trusted");
-      }
-      if (written.differed && written.raisedAgrees != false) {
-        kept << "; an earlier raise DIFFERED from the events written before it: they are not to be trusted";
-      }
-    }
-    if (format == Format::Csv) {
-      if (!escalations.empty()) {
-        std::fprintf(io.messages, "grazelab-cli: note: the run was raised to %s (undecided below it) after %ld rows; %s\n",
-                     name, before,
-                     before == 0              ? "every row is its own"
-                     : !written.raisedAgrees  ? "it ends before the last of them: the rows past its end are the lower precision's"
-                     : *written.raisedAgrees  ? "it meets the last of them again (same type, time to 1e-9)"
-                                              : "it DIFFERS from the last of them: the rows before the raise are not to be trusted");
-      }
-      return 0;
-    }
-    // an interrupted json or jsonl still ends its document: the events so far, stop reason
-    // cancelled, no estimate
-    core::Trust trust;
-    trust.reason = "not estimated: the run was interrupted";
-    if (!cancelled) trust = check->finish(run);
-    if (stop.stop_requested() && !text) return kExitInterrupted;
-    if (!kept.str().empty()) {
-      if (trust.verdict != core::Verdict::Unchecked) {
-        trust.stateError = std::max(trust.stateError, written.stateError);
-        trust.timeError = std::max(trust.timeError, written.timeError);
-        const double worst = std::max(trust.stateError, trust.timeError);
-        if (trust.verdict == core::Verdict::Ok && worst > core::kOkTolerance) {
-          trust.verdict = worst > core::kHorizonTolerance ? core::Verdict::Unreliable : core::Verdict::Degraded;
-        }
-        kept << " (their estimated error " << std::max(written.stateError, written.timeError) << ")";
-      }
-      if (written.differed) trust.verdict = core::Verdict::Unreliable;
-      trust.reason = kept.str() + "; " + trust.reason;
-    }
-    // (a fixed precision that could not decide a contact: the estimate says the run ended there,
-    // at best degraded; the document's message says what a higher precision does)
-    if (!widenedStart.empty() && trust.verdict != core::Verdict::Unchecked) trust.reason += "; " + widenedStart;
-    if (format == Format::Summary) {
-      const std::string used = std::string(name) + (precisionText == "auto" ? " (auto)" : "");
-      std::fputs(summaryText(ready, *start, run, seconds, used, escalations, trust).c_str(), io.out);
-      std::fflush(io.out);
-      return 0;
-    }
-    using std::abs;
-    std::vector<V> raised;
-    for (const std::string& line : escalations) raised.push_back(V::of(line));
-    const std::string message = stopMessage(run.stop, std::is_same_v<S, core::Quad>);
-    std::vector<V::Field> end{
-        {"final", stateValue(names, run.tFinal, run.final)},
-        {"stop_reason", V::of(std::string(core::toString(run.stop)))},
-        {"message", message.empty() ? V::null() : V::of(message)},
-        {"contacts", V::object({{"total", V::of(std::int64_t(run.contacts))},
-                                {"impacts", V::of(std::int64_t(run.impacts))},
-                                {"grazings", V::of(std::int64_t(run.grazings))},
-                                {"sticks", V::of(std::int64_t(run.sticks))},
-                                {"releases", V::of(std::int64_t(run.releases))}})},
-        {"energy", V::object({{"initial", V::number(run.energyInitial)},
-                              {"final", V::number(run.energyFinal)},
-                              {"relative_drift", V::number(S(abs(run.energyFinal / run.energyInitial - 1)))},
-                              {"max_rel_drift", V::number(run.maxEnergyDrift)}})},
-        {"accuracy", V::object({{"max_contact_residual", V::number(run.maxContactResidual)}})},
-        {"trust", trustValue(trust)},
-        {"precision", V::object({{"requested", V::of(precisionText.toStdString())},
-                                 {"used", V::of(name)},
-                                 {"escalations", V::array(std::move(raised))}})}};
-    if (!escalations.empty()) {
-      // the start the raised run used, in its digits (the head holds the one read first)
-      end.back().second.fields.emplace_back("initial_state_used", stateValue(names, S(0), start->state));
-    }
-    // the run's own time, its shadow apart
-    end.emplace_back("timing", V::object({{"seconds", V::number(seconds)},
-                                          {"contacts_per_second",
-                                           V::number(seconds > 0 ? double(run.contacts) / seconds : 0.0)}}));
-    if (sampled) {
-      end.emplace_back("samples", samplesValue(names, held));
-      end.emplace_back("samples_truncated", V::of(held.truncated));
-    }
-    if (asValues) {
-      std::vector<V::Field> fields = std::move(head);
-      fields.emplace_back("events", V::null());
-      for (V::Field& field : end) fields.push_back(std::move(field));
-      *io.document = V::object(std::move(fields));
-      return 0;
-    }
-    writeEnd(io.out, end, lines, written.events);
-    if (!stop.stop_requested()) return 0;
-    error = QStringLiteral("the %1 events before it are written, and the document's end").arg(written.events);
-    return kExitInterrupted;
-  };
-  const bool automatic = precisionText == "auto";
-  if (automatic || precisionText == "double") {
-    if (const auto code = rung.operator()<double>("double", "long", !automatic)) return *code;
-  }
-  if (automatic || precisionText == "long") {
-    if (const auto code = rung.operator()<long double>("long", "quad", !automatic)) return *code;
-  }
-  return rung.operator()<core::Quad>("quad", "", true).value_or(kExitInvalidInput);
-}
-
-
-}  // namespace
-
-int runSimulate(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
-  // the chains read last, by their options' text: a script that runs one chain many times (the
-  // Python module's simulate) reads and readies it once (its modes: a binary128 eigensolve)
-  static std::mutex recentMutex;
-  static std::deque<std::pair<QString, std::shared_ptr<const PreparedMassChain>>> recent;
-  QString key;
-  for (const char* name : {"masses", "springs", "right-spring", "stop-mass", "gap", "frequencies", "design-branch", "m1",
-                           "m2", "k1", "k2", "branch"}) {
-    key.append(options.isSet(name) ? options.value(name) : QString()).append(QChar(';'));
-  }
-  std::shared_ptr<const PreparedMassChain> chain;
-  {
-    const std::lock_guard lock(recentMutex);
-    for (const auto& [text, made] : recent) {
-      if (text == key) chain = made;
-    }
-  }
-  if (!chain) {
-    auto made = PreparedMassChain::make(options, stop);
-    if (!made.value && made.error.isEmpty()) return kExitInterrupted;
-    if (!made.value) {
-      error = made.error;
-      return kExitInvalidInput;
-    }
-    chain = *made.value;
-    const std::lock_guard lock(recentMutex);
-    recent.emplace_back(key, chain);
-    if (recent.size() > 16) recent.pop_front();
-  }
-  return runPrepared(*chain, options, io, stop, error, !options.isSet("masses"));
-}
-
-int runSimulate(const PreparedMassChain& chain, const OptionValues& options, const Io& io, std::stop_token stop,
-                QString& error) {
-  return runPrepared(chain, options, io, std::move(stop), error, false);
+                        : formatText == "summary" ? Format::Summary
+                        : formatText == "jsonl"   ? Format::JsonLines
+                                                  : Format::Json;
+  std::optional<SimulateRequest> request = readSimulateRequest(options, format, error);
+  if (!request) return kExitInvalidInput;
+  request->notesStarts = !options.isSet("masses");
+  StreamWriter writer(io, format, request->precision);
+  const SimulateOutcome outcome = simulate(**chain.value, *request, writer, stop);
+  return writer.finish(outcome, request->sampled, stop, error);
 }
 
 }  // namespace grazelab::cli

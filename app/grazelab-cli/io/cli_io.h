@@ -21,7 +21,7 @@ namespace grazelab::cli {
 /// A chain's events as the Python module hands them to NumPy without a copy: packed rows of t,
 /// the type in UCS-4 ('<U8'), then u1..uN, v1_pre..vN_pre and the stopped mass's vS_post, each
 /// number rounded to double; in long double or binary128 also each number's decimal text, 2N + 2
-/// a row, as the command line writes them. (See Io::chainEvents.)
+/// a row, as the command line writes them. (See EventTableSink.)
 struct ChainEventTable {
   std::size_t masses = 0;  ///< N
   int stopped = 0;         ///< S, 1-based
@@ -42,21 +42,18 @@ struct ChainEventTable {
 
 /// Where a command writes. The command line: its output on stdout, its messages (notes,
 /// progress, the line that says what a command wrote) on stderr. The Python module: both into
-/// memory, a run's events straight into arrays, progress to the caller.
+/// memory, progress to the caller.
 struct Io {
   std::FILE* out = stdout;
   std::FILE* messages = stderr;
   /// Progress of a long command: the fraction done (negative when not known) and one line
   /// that says where it is. May be called from any thread; optional.
   std::function<void(double fraction, const std::string& text)> progress;
-  /// When set with `document`, `simulate` puts its events here instead of into its document
-  /// (whose `events` is then null); `chainEvents->discard`: nowhere.
-  ChainEventTable* chainEvents = nullptr;
   /// When set, `map` and `merge` put the map here (the Python module: arrays without files);
   /// their files are then written only where --out names them.
   map::StoredMap* map = nullptr;
-  /// When set, `info`, `orbit` and `simulate` put their JSON document here as values, not as
-  /// text (`simulate`'s samples, asked for by --sample-step or --sample-times, in it as columns).
+  /// When set, `info`, `glo-set` and `orbit` put their JSON document here as values, not as
+  /// text.
   JsonValue* document = nullptr;
   /// When set, `family` and `modes` without --out put their files here, (name, bytes), instead
   /// of on disk, and draw no picture.
