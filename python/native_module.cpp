@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // grazelab._native: the command line's commands run in this process by the command line's own
-// code (runCommandLine), on a thread of its own with the GIL released. The calling thread wakes
+// code (runCommand: by name, with their options by name), on a thread of its own with the GIL released. The calling thread wakes
 // every 100 ms: Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the
 // command's latest progress goes to the caller's callback, both on the caller's thread.
 // grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy.
@@ -295,12 +295,23 @@ py::tuple simulationResult(grazelab::cli::JsonValue& document, grazelab::cli::Ch
   return py::make_tuple(result, table.decimals.empty() ? py::object(py::none()) : py::cast(table.decimals));
 }
 
-// run(arguments, progress=None, keep_map=False, result_type=None, keep_files=False)
-//   -> (code, output, messages, map, document, files)
-py::tuple run(const std::vector<std::string>& arguments, const py::object& progress, bool keepMap,
-              const py::object& resultType, bool keepFiles) {
-  QStringList commandLine{QStringLiteral("grazelab")};
-  for (const std::string& argument : arguments) commandLine << QString::fromStdString(argument);
+// command(name, options, operands=(), progress=None, keep_map=False, result_type=None, keep_files=False)
+//   -> (code, output, messages, map, document, files, problem)
+// A command of the command line run by its name with its options given by name as (flag, text)
+// pairs, text None for a bare flag (--quick, --onepp of family and orbit): no command-line text,
+// the command line's rules (runCommand).
+py::tuple command(const std::string& name, const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                  const std::vector<std::string>& operandTexts, const py::object& progress, bool keepMap,
+                  const py::object& resultType, bool keepFiles) {
+  std::vector<grazelab::cli::GivenOption> named;
+  QStringList names;
+  for (const auto& [flag, text] : given) {
+    named.push_back({flag, text ? QString::fromStdString(*text) : QString(), {}, false});
+    names << QString::fromStdString(flag);
+  }
+  const grazelab::cli::OptionValues options(std::move(named));
+  QStringList operands;
+  for (const std::string& operand : operandTexts) operands << QString::fromStdString(operand);
 
   MemoryStream output;
   MemoryStream messages;
@@ -324,9 +335,14 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
     };
   }
 
+  std::string problem;
+  io.problem = &problem;
   std::optional<py::error_already_set> pythonError;
   const int code = interruptibly(
-      stop, [&](std::stop_token token) { return grazelab::cli::runCommandLine(commandLine, io, token); },
+      stop,
+      [&](std::stop_token token) {
+        return grazelab::cli::runCommand(QString::fromStdString(name), options, names, operands, io, token);
+      },
       [&] { return deliverProgress(mailbox, progress, pythonError); }, pythonError);
   // the last progress (a command shorter than one wake-up reports its end too)
   if (!pythonError && code == 0) deliverProgress(mailbox, progress, pythonError);
@@ -345,7 +361,7 @@ py::tuple run(const std::vector<std::string>& arguments, const py::object& progr
     for (const auto& [name, bytes] : files) named[py::str(name)] = py::bytes(bytes);
     filesResult = std::move(named);
   }
-  return py::make_tuple(code, py::bytes(out), py::str(log), mapResult, documentResult, filesResult);
+  return py::make_tuple(code, py::bytes(out), py::str(log), mapResult, documentResult, filesResult, problem);
 }
 
 // An option's value as the direct call takes it: a str is its text; a float, an int exact in
@@ -535,15 +551,17 @@ PYBIND11_MODULE(_native, module) {
   QCoreApplication::setApplicationName(QStringLiteral("grazelab-cli"));
   QCoreApplication::setApplicationVersion(QString::fromUtf8(grazelab::cli::kVersion));
   module.attr("version") = grazelab::cli::kVersion;
-  module.def("run", &run, py::arg("arguments"), py::arg("progress") = py::none(), py::arg("keep_map") = false,
-             py::arg("result_type") = py::none(), py::arg("keep_files") = false,
-             "Runs one grazelab-cli command line (without the program's name) in this process. "
-             "Returns (exit code, output bytes, messages, map or None, document or None, files or "
-             "None). With keep_map a map or merge hands back (its JSON document, its points as a "
-             "structured array) and writes files only where --out says; with result_type the "
-             "document of info, glo-set or orbit comes back as values of that type, not text; "
-             "with keep_files family and modes without --out hand their files back as "
-             "{name: bytes} and write none.");
+  module.def("command", &command, py::arg("name"), py::arg("options"), py::arg("operands") = std::vector<std::string>(),
+             py::arg("progress") = py::none(), py::arg("keep_map") = false, py::arg("result_type") = py::none(),
+             py::arg("keep_files") = false,
+             "Runs one grazelab-cli command in this process, its options as (flag, text) pairs (text None "
+             "for a bare flag) and merge's parts as operands: no command-line text. Returns (exit code, "
+             "output bytes, messages, map or None, document or None, files or None, the line that says "
+             "why it failed or ''). With keep_map a map or merge hands back (its JSON document, its points "
+             "as a structured array) and writes files only where --out says; with result_type the "
+             "document of info, glo-set or orbit comes back as values of that type, not text; with "
+             "keep_files family and modes without --out hand their files back as {name: bytes} and "
+             "write none.");
   py::class_<ChainHandle>(module, "PreparedChain",
                           "A chain of N masses read, checked and designed once (use grazelab.Chain).")
       .def("describe", &chainDescription, py::arg("result_type"),

@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
 """Measures the Python module (docs/python.md): the cost of one short simulate call over the
-core's own time, called directly and through the command line's text (alternated in one
-process), two simulate calls on two threads against the same two one after the other (best of
+core's own time, called directly and on a thread of its own that Ctrl+C stops (alternated in
+one process), two simulate calls on two threads against the same two one after the other (best of
 --repeats, alternated), and how long Ctrl+C takes to stop a long map. Run with Debian's Python:
     PYTHONPATH=build/python /usr/bin/python3 tools/bench-python.py
 """
@@ -68,15 +68,15 @@ def main():
     parser.add_argument("--contacts", type=int, default=400000)
     parser.add_argument("--repeats", type=int, default=5)
     args = parser.parse_args()
-    direct, text = [], []
+    direct, threaded_calls = [], []
     for _ in range(args.repeats):
         direct.append(per_call(5000))
-        # a progress callback sends the same call through the command line's text on a thread
-        text.append(per_call(1000, progress=lambda fraction, line: None))
+        # a progress callback sends the same call to a thread of its own
+        threaded_calls.append(per_call(1000, progress=lambda fraction, line: None))
     direct_us, core_us = min(direct)
-    text_us, _ = min(text)
-    print(f"simulate(contacts=10): {direct_us:.1f} us a call called directly, {text_us:.1f} us "
-          f"through the command line's text; the core's own {core_us:.1f} us: "
+    threaded_us, _ = min(threaded_calls)
+    print(f"simulate(contacts=10): {direct_us:.1f} us a call called directly, {threaded_us:.1f} us "
+          f"on a thread of its own; the core's own {core_us:.1f} us: "
           f"{direct_us - core_us:.1f} us over the core (best of {args.repeats})")
     one, two = [], []
     for _ in range(args.repeats):

@@ -31,7 +31,14 @@ namespace {
 
 int fail(const Io& io, const QString& message) {
   std::fprintf(io.messages, "grazelab-cli: %s\n", qPrintable(message.simplified()));
+  if (io.problem) *io.problem = message.simplified().toStdString();
   return kExitInvalidInput;
+}
+
+// A command that failed otherwise (a file not written): its line
+void failed(const Io& io, const QString& message) {
+  std::fprintf(io.messages, "grazelab-cli: %s\n", qPrintable(message));
+  if (io.problem) *io.problem = message.simplified().toStdString();
 }
 
 // The end of a command that writes files: one line for invalid input (exit 2), a note for an
@@ -41,7 +48,7 @@ int ended(const Io& io, int code, const QString& error) {
   if (code == kExitInterrupted) {
     std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
   } else if (code != 0) {
-    std::fprintf(io.messages, "grazelab-cli: %s\n", qPrintable(error));
+    failed(io, error);
   }
   return code;
 }
@@ -51,8 +58,8 @@ void write(const Io& io, const QByteArray& bytes) {
 }
 
 template <typename S>
-int info(const QCommandLineParser& parser, const Io& io) {
-  const auto model = parseModel<S>(parser);
+int info(const OptionValues& options, const Io& io) {
+  const auto model = parseModel<S>(options);
   if (!model.value) return fail(io, model.error);
   if (io.document) {
     *io.document = infoValue(*model.value);
@@ -63,15 +70,15 @@ int info(const QCommandLineParser& parser, const Io& io) {
 }
 
 // `info` of a chain of N masses, in double for now
-int massChainInfo(const QCommandLineParser& parser, const PrecisionOption& precision, const Io& io,
+int massChainInfo(const OptionValues& options, const PrecisionOption& precision, const Io& io,
                   std::stop_token stop) {
   if (precision.fixed && *precision.fixed != core::Precision::Double) {
     return fail(io, "--precision: a chain of N masses is computed in double for now (give double or auto)");
   }
-  if (!parser.isSet("masses")) {
+  if (!options.isSet("masses")) {
     return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
   }
-  const auto chain = parseMassChain(parser, stop);
+  const auto chain = parseMassChain(options, stop);
   if (!chain.value && chain.error.isEmpty()) {  // the design was stopped
     std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
     return kExitInterrupted;
@@ -81,8 +88,8 @@ int massChainInfo(const QCommandLineParser& parser, const PrecisionOption& preci
   return 0;
 }
 
-// What a command runs: the parsed line, its operands (merge's parts), where it writes.
-using Runner = std::function<int(const QCommandLineParser&, const QStringList&, const Io&, std::stop_token)>;
+// What a command runs: its options, its operands (merge's parts), where it writes.
+using Runner = std::function<int(const OptionValues&, const QStringList&, const Io&, std::stop_token)>;
 
 // One command: its name, every option it takes (any other is refused before it runs), and how
 // it runs.
@@ -99,50 +106,50 @@ const QStringList kStart = {"glo", "onepp", "state", "perturb"};
 const QStringList kMassChain = {"masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch"};
 
 // a command that writes files: invalid input, interrupt and failed writes as `ended` says
-Runner writesFiles(int (*command)(const QCommandLineParser&, const Io&, std::stop_token, QString&)) {
-  return [command](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+Runner writesFiles(int (*command)(const OptionValues&, const Io&, std::stop_token, QString&)) {
+  return [command](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
     QString error;
-    return ended(io, command(parser, io, stop, error), error);
+    return ended(io, command(options, io, stop, error), error);
   };
 }
 
-int runReportOrStability(bool report, const QCommandLineParser& parser, const Io& io, std::stop_token stop) {
+int runReportOrStability(bool report, const OptionValues& options, const Io& io, std::stop_token stop) {
   QString error;
-  const int code = report ? runReport(parser, io, stop, error) : runStability(parser, io, stop, error);
+  const int code = report ? runReport(options, io, stop, error) : runStability(options, io, stop, error);
   if (code == kExitInvalidInput) return fail(io, error);
   if (code == kExitInterrupted) std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
-  if (code != 0 && !error.isEmpty()) std::fprintf(io.messages, "grazelab-cli: %s\n", qPrintable(error));
+  if (code != 0 && !error.isEmpty()) failed(io, error);
   return stop.stop_requested() ? kExitInterrupted : code;
 }
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"info", kChain + kMassChain + QStringList{"precision"}, false,
-       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+       [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
-         const auto precision = parsePrecisionOption(parser, error);
+         const auto precision = parsePrecisionOption(options, error);
          if (!precision) return fail(io, error);
-         if (parser.isSet("masses") || parser.isSet("springs") || parser.isSet("right-spring") ||
-             parser.isSet("stop-mass") || parser.isSet("frequencies") || parser.isSet("design-branch")) {
-           return massChainInfo(parser, *precision, io, stop);
+         if (options.isSet("masses") || options.isSet("springs") || options.isSet("right-spring") ||
+             options.isSet("stop-mass") || options.isSet("frequencies") || options.isSet("design-branch")) {
+           return massChainInfo(options, *precision, io, stop);
          }
          switch (precision->fixed.value_or(core::Precision::Double)) {
-           case core::Precision::Double: return info<double>(parser, io);
-           case core::Precision::Long: return info<long double>(parser, io);
-           case core::Precision::Quad: return info<core::Quad>(parser, io);
+           case core::Precision::Double: return info<double>(options, io);
+           case core::Precision::Long: return info<long double>(options, io);
+           case core::Precision::Quad: return info<core::Quad>(options, io);
          }
          return fail(io, "--precision: unknown");
        },
        {}},
       {"simulate", kChain + kStart + kMassChain + QStringList{"glo-weights", "precision", "contacts", "t-end", "search-steps", "format", "trust", "sample-step", "sample-times"}, false,
-       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+       [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
-         if (!parser.isSet("masses") &&
-             (parser.isSet("glo-weights") ||
-              std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return parser.isSet(name); }))) {
+         if (!options.isSet("masses") &&
+             (options.isSet("glo-weights") ||
+              std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return options.isSet(name); }))) {
            return fail(io, "--springs, --right-spring, --stop-mass, --frequencies and --glo-weights describe a chain given by --masses");
          }
-         const int code = runSimulate(parser, io, stop, error);
+         const int code = runSimulate(options, io, stop, error);
          // a streamed run says what it wrote before the interrupt
          if (code == kExitInterrupted) {
            std::fprintf(io.messages, "grazelab-cli: interrupted: %s\n", error.isEmpty() ? "nothing written" : qPrintable(error));
@@ -153,48 +160,48 @@ const std::vector<Command>& commands() {
       {"report",
        kChain + kStart + kMassChain + QStringList{"glo-weights", "contacts", "t-end", "out", "methods", "quick"},
        false,
-       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
-         return runReportOrStability(true, parser, io, stop);
+       [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
+         return runReportOrStability(true, options, io, stop);
        },
        "the report runs every method, and every precision of the exact solver, itself"},
       {"stability", kMassChain + QStringList{"gap", "state", "onepp", "perturb", "glo-weights", "out", "methods", "quick"}, false,
-       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
-         return runReportOrStability(false, parser, io, stop);
+       [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
+         return runReportOrStability(false, options, io, stop);
        },
        "it runs its own list of cases (see matrix.md), or the cases of a chain given by --masses"},
       {"map", kChain + kStart + kMassChain + QStringList{"glo-weights", "precision", "contacts", "trust", "out", "x", "y", "threads", "shard", "picture"}, false,
        writesFiles(runMap), {}},
       {"merge", {"out"}, true,
-       [](const QCommandLineParser& parser, const QStringList& parts, const Io& io, std::stop_token stop) {
+       [](const OptionValues& options, const QStringList& parts, const Io& io, std::stop_token stop) {
          QString error;
-         return ended(io, runMerge(parser, parts, io, stop, error), error);
+         return ended(io, runMerge(options, parts, io, stop, error), error);
        },
        "the parts say what the map is"},
       {"family", kChain + kMassChain + QStringList{"precision", "onepp", "out", "count"}, false,
-       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+       [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
-         if (std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return parser.isSet(name); })) {
-           if (!parser.isSet("masses")) return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
-           if (!parser.isSet("onepp")) return fail(io, "family: name the family: --onepp (one impact per period)");
+         if (std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return options.isSet(name); })) {
+           if (!options.isSet("masses")) return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
+           if (!options.isSet("onepp")) return fail(io, "family: name the family: --onepp (one impact per period)");
            // the note's chain, however written, is the note's family (its engine, its files)
-           if (writesTheNotesChain(parser)) return ended(io, runFamily(parser, io, stop, error), error);
-           return ended(io, runChainFamily(parser, io, stop, error), error);
+           if (writesTheNotesChain(options)) return ended(io, runFamily(options, io, stop, error), error);
+           return ended(io, runChainFamily(options, io, stop, error), error);
          }
-         return ended(io, runFamily(parser, io, stop, error), error);
+         return ended(io, runFamily(options, io, stop, error), error);
        },
        {}},
       {"orbit", kChain + kMassChain + QStringList{"precision", "onepp", "format", "period", "impacts", "energy", "guess"}, false,
-       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+       [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
-         const int code = runOrbit(parser, io, stop, error);
+         const int code = runOrbit(options, io, stop, error);
          return code == kExitInvalidInput ? fail(io, error) : code;
        },
        {}},
       {"modes", kChain + kMassChain + QStringList{"precision", "out", "max-impacts", "energy-range"}, false, writesFiles(runModes), {}},
       {"glo-set", kChain + kMassChain + QStringList{"precision", "directions", "out"}, false,
-       [](const QCommandLineParser& parser, const QStringList&, const Io& io, std::stop_token stop) {
+       [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
-         const int code = runGloSet(parser, io, stop, error);
+         const int code = runGloSet(options, io, stop, error);
          if (code == kExitInterrupted) std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
          return code == kExitInvalidInput ? fail(io, error) : code;
        },
@@ -203,11 +210,11 @@ const std::vector<Command>& commands() {
   return table;
 }
 
-// The options set on the line that `command` does not take, with the commands that do take them.
-QString optionsRefused(const Command& command, const QCommandLineParser& parser) {
+// The options given that `command` does not take, with the commands that do take them.
+QString optionsRefused(const Command& command, const QStringList& given) {
   QStringList refused;
   QStringList owners;
-  for (const QString& name : parser.optionNames()) {
+  for (const QString& name : given) {
     if (name == "help" || name == "version" || command.options.contains(name) || refused.contains("--" + name)) continue;
     refused << "--" + name;
     for (const Command& other : commands()) {
@@ -220,6 +227,8 @@ QString optionsRefused(const Command& command, const QCommandLineParser& parser)
   if (!command.whyNot.isEmpty()) message += ": " + command.whyNot;
   return message;
 }
+
+const QString kCommandNames = "info, simulate, report, stability, map, merge, family, orbit or modes";
 
 }  // namespace
 
@@ -272,19 +281,22 @@ int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token
     return fail(io, repeated.join(", ") + " given more than once: give each option once");
   }
   const QStringList positional = parser.positionalArguments();
-  const QString names = "info, simulate, report, stability, map, merge, family, orbit or modes";
-  if (positional.isEmpty()) return fail(io, "expected one command: " + names + " (see --help)");
-  const auto command = std::find_if(commands().begin(), commands().end(),
-                                    [&](const Command& c) { return c.name == positional.first(); });
+  if (positional.isEmpty()) return fail(io, "expected one command: " + kCommandNames + " (see --help)");
+  return runCommand(positional.first(), parser, parser.optionNames(), positional.mid(1), io, stop);
+}
+
+int runCommand(const QString& name, const OptionValues& options, const QStringList& given, const QStringList& operands,
+               const Io& io, std::stop_token stop) {
+  const auto command = std::find_if(commands().begin(), commands().end(), [&](const Command& c) { return c.name == name; });
   if (command == commands().end()) {
-    return fail(io, QStringLiteral("unknown command '%1': use %2").arg(positional.first(), names));
+    return fail(io, QStringLiteral("unknown command '%1': use %2").arg(name, kCommandNames));
   }
-  if (positional.size() > 1 && !command->takesOperands) {
-    return fail(io, "expected one command: " + names + " (see --help)");
+  if (!operands.isEmpty() && !command->takesOperands) {
+    return fail(io, "expected one command: " + kCommandNames + " (see --help)");
   }
-  const QString refused = optionsRefused(*command, parser);
+  const QString refused = optionsRefused(*command, given);
   if (!refused.isEmpty()) return fail(io, refused);
-  return command->run(parser, positional.mid(1), io, stop);
+  return command->run(options, operands, io, stop);
 }
 
 }  // namespace grazelab::cli

@@ -36,7 +36,7 @@ import numpy as _np
 
 from . import _convert
 from ._convert import Result
-from ._native import run as _run
+from ._native import command as _run_command
 from ._native import prepare_chain as _prepare_chain
 from ._native import simulate as _simulate_here
 from ._native import simulate_chain as _simulate_chain
@@ -66,20 +66,19 @@ class GrazeLabWarning(UserWarning):
 
 
 def _command(command, options, progress=None, positional=(), keep_map=False, document=False, keep_files=False):
-    """Runs one command with the options that are not None; returns (output text, messages) or
-    raises; with keep_map, (messages, map) for a map or merge held in memory; with keep_files
-    (family, modes), (messages, {name: bytes}) for files held in memory; with document (info,
-    glo-set, orbit), (its document as Results, messages). A progress callback hears (1.0, "done")
-    when the command has ended well."""
-    given = {name: value for name, value in options.items() if value is not None}
-    line = _convert.arguments(command, given) + [str(p) for p in positional]
-    code, output, messages, kept, values, files = _run(line, progress, keep_map, Result if document else None,
-                                                       keep_files)
-    lines = [text for text in messages.splitlines() if text.strip()]
+    """Runs one command with the options that are not None, handed over by name (no command-line
+    text); returns (output text, messages) or raises; with keep_map, (messages, map) for a map or
+    merge held in memory; with keep_files (family, modes), (messages, {name: bytes}) for files held
+    in memory; with document (info, glo-set, orbit), (its document as Results, messages). A
+    progress callback hears (1.0, "done") when the command has ended well."""
+    given = _convert.option_texts({name: value for name, value in options.items() if value is not None})
+    code, output, messages, kept, values, files, problem = _run_command(
+        command, given, [str(p) for p in positional], progress, keep_map, Result if document else None, keep_files)
     if code == 2:
-        raise ValueError(_message(lines[-1] if lines else "invalid input"))
+        raise ValueError(_message(problem or "invalid input"))
     if code != 0:
-        raise OSError(_message(lines[-1] if lines else f"{command} failed (exit {code})"))
+        raise OSError(_message(problem or f"{command} failed (exit {code})"))
+    lines = [text for text in messages.splitlines() if text.strip()]
     if progress is not None:
         progress(1.0, "done")
     if keep_map:

@@ -102,19 +102,12 @@ def _text(name, value):
     raise TypeError(f"{name}: expected a number or text, got {type(value).__name__}")
 
 
-def arguments(command, options):
-    """The command line of `command` with `options` (snake_case keywords, values not None):
-    True is a bare flag (--quick, --onepp of family and orbit), False leaves it out; a vector
-    option's sequence is joined by ',' (':' for the axes and --energy-range, '/' for --shard);
-    a sequence where one value is expected is a TypeError."""
-    return [command] + ["--" + name if text is None else "--" + name + "=" + text
-                        for name, text in option_texts(options)]
-
-
 def option_texts(options):
     """`options` as (flag name without dashes, text) pairs, the text None for a bare flag: the
-    command line's words without the line (what arguments() joins, and what a direct call
-    hands the command)."""
+    command line's words without the line, as the module hands them to a command. True is a bare
+    flag (--quick, --onepp of family and orbit), False leaves it out; a vector option's sequence
+    is joined by ',' (':' for the axes and --energy-range, '/' for --shard); a sequence where one
+    value is expected is a TypeError."""
     texts = []
     for name, value in options.items():
         flag = name.replace("_", "-")

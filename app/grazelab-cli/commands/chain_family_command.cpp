@@ -2,7 +2,6 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "commands/chain_family_command.h"
 
-#include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QPainter>
@@ -39,28 +38,28 @@ V numbers(const Eigen::VectorXd& values) {
 
 }  // namespace
 
-int runChainFamily(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
-  if (parser.isSet("precision") && parser.value("precision") != "double" && parser.value("precision") != "auto") {
+int runChainFamily(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
+  if (options.isSet("precision") && options.value("precision") != "double" && options.value("precision") != "auto") {
     error = "--precision: the family of a chain of N masses is computed in double for now (give double or auto)";
     return kExitInvalidInput;
   }
   std::int64_t count = 2000;
-  if (parser.isSet("count")) {
+  if (options.isSet("count")) {
     bool ok = false;
-    count = parser.value("count").toLongLong(&ok);
+    count = options.value("count").toLongLong(&ok);
     if (!ok || count < 1 || count > 1'000'000) {
-      error = QStringLiteral("--count: '%1' is not a count from 1 to 1000000").arg(parser.value("count"));
+      error = QStringLiteral("--count: '%1' is not a count from 1 to 1000000").arg(options.value("count"));
       return kExitInvalidInput;
     }
   }
-  const auto chainInput = parseMassChain(parser, stop);
+  const auto chainInput = parseMassChain(options, stop);
   if (!chainInput.value && chainInput.error.isEmpty()) return kExitInterrupted;
   if (!chainInput.value) {
     error = chainInput.error;
     return kExitInvalidInput;
   }
   const core::MassChain& chain = chainInput.value->chain;
-  const auto output = openFileOutput(parser, io, "PREFIX.csv, PREFIX.npy, PREFIX.json, ...", "family", error);
+  const auto output = openFileOutput(options, io, "PREFIX.csv, PREFIX.npy, PREFIX.json, ...", "family", error);
   if (!output) return kExitInvalidInput;
   const QString& prefix = output->prefix;
 

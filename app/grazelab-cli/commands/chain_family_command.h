@@ -6,7 +6,8 @@
 
 #include <stop_token>
 
-class QCommandLineParser;
+#include "io/option_values.h"
+
 
 namespace grazelab::cli {
 
@@ -18,6 +19,6 @@ struct Io;
 /// weights and GLO data), and PREFIX.png/.svg (frequency against energy) when pictures are
 /// available. Exit 0; 2 on invalid input (`error`); 130 when `stop` ended it; 1 when a file
 /// could not be written.
-int runChainFamily(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error);
+int runChainFamily(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

@@ -3,7 +3,6 @@
 // `grazelab-cli family --onepp`: the one-impact-per-period family of the chain (issue 10).
 #include "commands/family_command.h"
 
-#include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
@@ -64,10 +63,10 @@ struct FamilyStability {
 };
 
 template <typename S>
-std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& parser,
+std::optional<FamilyStability<S>> familyStability(const OptionValues& options,
                                                   const std::vector<core::OnePeriodicOrbit<double>>& family,
                                                   const Io& io, std::stop_token stop, QString& error) {
-  const Parsed<ModelInput<S>> model = parseModel<S>(parser);
+  const Parsed<ModelInput<S>> model = parseModel<S>(options);
   if (!model.value) {
     error = model.error;
     return std::nullopt;
@@ -126,26 +125,26 @@ std::optional<FamilyStability<S>> familyStability(const QCommandLineParser& pars
 
 }  // namespace
 
-int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
-  if (!parser.isSet("onepp")) {
+int runFamily(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
+  if (!options.isSet("onepp")) {
     error = "family: name the family: --onepp (one impact per period)";
     return kExitInvalidInput;
   }
-  const QString precision = parser.value("precision");
+  const QString precision = options.value("precision");
   if (!QStringList{"auto", "double", "long", "quad"}.contains(precision)) {
     error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
     return kExitInvalidInput;
   }
   std::int64_t count = 2000;
-  if (parser.isSet("count")) {
+  if (options.isSet("count")) {
     bool ok = false;
-    count = parser.value("count").toLongLong(&ok);
+    count = options.value("count").toLongLong(&ok);
     if (!ok || count < 1 || count > 10'000'000) {
-      error = QStringLiteral("--count: '%1' is not a count from 1 to 10000000").arg(parser.value("count"));
+      error = QStringLiteral("--count: '%1' is not a count from 1 to 10000000").arg(options.value("count"));
       return kExitInvalidInput;
     }
   }
-  const Parsed<ModelInput<double>> model = parseModel<double>(parser);
+  const Parsed<ModelInput<double>> model = parseModel<double>(options);
   if (!model.value) {
     error = model.error;
     return kExitInvalidInput;
@@ -154,7 +153,7 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
     error = "family: the 1IPP family of Theorem 2.1 needs the 1:2 resonant chain (give no --k2)";
     return kExitInvalidInput;
   }
-  const auto output = openFileOutput(parser, io, "PREFIX.csv, PREFIX.npy, PREFIX.json, ...", "family", error);
+  const auto output = openFileOutput(options, io, "PREFIX.csv, PREFIX.npy, PREFIX.json, ...", "family", error);
   if (!output) return kExitInvalidInput;
   const QString& prefix = output->prefix;
 
@@ -173,9 +172,9 @@ int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token st
     bifurcations = std::move(stability->bifurcations);
     return true;
   };
-  const bool computed = precision == "long"   ? take(familyStability<long double>(parser, family, io, stop, error))
-                        : precision == "quad" ? take(familyStability<core::Quad>(parser, family, io, stop, error))
-                                              : take(familyStability<double>(parser, family, io, stop, error));
+  const bool computed = precision == "long"   ? take(familyStability<long double>(options, family, io, stop, error))
+                        : precision == "quad" ? take(familyStability<core::Quad>(options, family, io, stop, error))
+                                              : take(familyStability<double>(options, family, io, stop, error));
   if (stop.stop_requested()) return kExitInterrupted;
   if (!computed) return kExitInvalidInput;
 

@@ -7,8 +7,8 @@
 #include <stop_token>
 
 #include "io/cli_io.h"
+#include "io/option_values.h"
 
-class QCommandLineParser;
 
 namespace grazelab::cli {
 
@@ -16,6 +16,6 @@ namespace grazelab::cli {
 /// (PREFIX.csv: T,omega,V,u1,energy,admissible; PREFIX.npy: the same columns; PREFIX.json) and
 /// a frequency-energy picture (PREFIX.png, PREFIX.svg). Exit 2 with `error` on invalid input.
 /// Exit 130 (nothing written) when `stop` is requested.
-int runFamily(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error);
+int runFamily(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

@@ -81,36 +81,36 @@ std::optional<Shard> parseShard(const QString& text, QString& error) {
 // The axes of a map of the note's chain written with --masses that the two-mass map shares:
 // u1, u2, v1, v2, from --state (not the GLO weights w<j> nor --glo-weights; --glo and --onepp
 // are the two-mass options', refused for a chain given by --masses)
-bool onStateAxes(const QCommandLineParser& parser) {
+bool onStateAxes(const OptionValues& options) {
   const auto onState = [&](const char* axis) {
-    const QString name = parser.value(axis).section(':', 0, 0).trimmed();
+    const QString name = options.value(axis).section(':', 0, 0).trimmed();
     return QStringList{"u1", "u2", "v1", "v2"}.contains(name);
   };
-  return onState("x") && onState("y") && !parser.isSet("glo-weights") && !parser.isSet("glo") && !parser.isSet("onepp");
+  return onState("x") && onState("y") && !options.isSet("glo-weights") && !options.isSet("glo") && !options.isSet("onepp");
 }
 
-std::optional<core::MapSpec> parseSpec(const OptionValues& parser, QString& error) {
+std::optional<core::MapSpec> parseSpec(const OptionValues& options, QString& error) {
   core::MapSpec spec;
   for (const char* name : {"x", "y"}) {
-    if (!parser.isSet(name)) {
+    if (!options.isSet(name)) {
       error = QStringLiteral("--%1 NAME:from:to:count is required").arg(name);
       return std::nullopt;
     }
   }
-  const auto x = parseAxis("x", parser.value("x"), error);
+  const auto x = parseAxis("x", options.value("x"), error);
   if (!x) return std::nullopt;
-  const auto y = parseAxis("y", parser.value("y"), error);
+  const auto y = parseAxis("y", options.value("y"), error);
   if (!y) return std::nullopt;
   spec.x = *x;
   spec.y = *y;
-  const Parsed<ModelInput<double>> model = parseModel<double>(parser);
+  const Parsed<ModelInput<double>> model = parseModel<double>(options);
   if (!model.value) {
     error = model.error;
     return std::nullopt;
   }
   spec.model = model.value->model;
-  if (parser.isSet("glo") || parser.isSet("onepp") || parser.isSet("state") || parser.isSet("perturb")) {
-    Parsed<core::StartSpec<double>> start = parseStartSpec<double>(parser, spec.model);
+  if (options.isSet("glo") || options.isSet("onepp") || options.isSet("state") || options.isSet("perturb")) {
+    Parsed<core::StartSpec<double>> start = parseStartSpec<double>(options, spec.model);
     if (!start.value) {
       error = start.error;
       return std::nullopt;
@@ -118,18 +118,18 @@ std::optional<core::MapSpec> parseSpec(const OptionValues& parser, QString& erro
     spec.perturbation = start.value->perturbation;
     start.value->perturbation.reset();
     // --perturb alone: on the grazing-start plane
-    if (parser.isSet("glo") || parser.isSet("onepp") || parser.isSet("state")) spec.start = start.value;
+    if (options.isSet("glo") || options.isSet("onepp") || options.isSet("state")) spec.start = start.value;
   }
-  if (parser.isSet("contacts")) {
+  if (options.isSet("contacts")) {
     bool ok = false;
-    spec.contacts = parser.value("contacts").toLongLong(&ok);
+    spec.contacts = options.value("contacts").toLongLong(&ok);
     if (!ok || spec.contacts < 1) {
-      error = QStringLiteral("--contacts: '%1' is not a count >= 1").arg(parser.value("contacts"));
+      error = QStringLiteral("--contacts: '%1' is not a count >= 1").arg(options.value("contacts"));
       return std::nullopt;
     }
   }
-  if (parser.isSet("trust")) {
-    const QString trust = parser.value("trust");
+  if (options.isSet("trust")) {
+    const QString trust = options.value("trust");
     if (trust != "off" && trust != "auto") {
       error = QStringLiteral("--trust: '%1' is not off or auto (a map estimates each point's "
                              "horizon with auto)").arg(trust);
@@ -185,10 +185,10 @@ class ProgressLine {
 
 // Where a map's files go: under --out PREFIX, or nowhere when the caller takes the map in
 // memory (the Python module) and gave no --out. False, with `error`, for an unusable --out.
-bool filesPrefix(const QCommandLineParser& parser, const Io& io, std::optional<QString>& prefix,
+bool filesPrefix(const OptionValues& options, const Io& io, std::optional<QString>& prefix,
                  QString& error) {
-  if (io.map && !parser.isSet("out")) return true;
-  prefix = parseOutputPrefix(parser, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
+  if (io.map && !options.isSet("out")) return true;
+  prefix = parseOutputPrefix(options, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
   return prefix.has_value();
 }
 
@@ -208,8 +208,8 @@ void addMapOptions(QCommandLineParser& parser) {
   });
 }
 
-int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
-  if (parser.value("precision") != "auto" && parser.value("precision") != "double") {
+int runMap(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
+  if (options.value("precision") != "auto" && options.value("precision") != "double") {
     error = "--precision: a map runs in auto precision (double, each point raised to long double "
             "or binary128 where a contact needs it); use simulate for one run in long or quad";
     return kExitInvalidInput;
@@ -217,46 +217,46 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
   // a chain of N masses (--masses) or the two-mass chain; the note's chain written with --masses
   // over the axes u<i>, v<i> (from a --state, else the grazing-start plane, as for every chain)
   // is the note's map (its engine: the two-mass options' bits)
-  const bool notes = writesTheNotesChain(parser) && onStateAxes(parser);
-  const bool masses = parser.isSet("masses") && !notes;
+  const bool notes = writesTheNotesChain(options) && onStateAxes(options);
+  const bool masses = options.isSet("masses") && !notes;
   std::optional<core::MapSpec> spec;
   std::optional<core::ChainMapSpec> chainSpec;
   if (masses) {
     bool stopped = false;
-    chainSpec = parseChainMapSpec(parser, stop, error, stopped);
+    chainSpec = parseChainMapSpec(options, stop, error, stopped);
     if (stopped) return kExitInterrupted;
     if (!chainSpec) return kExitInvalidInput;
   } else if (notes) {
-    spec = parseSpec(parser, error);
+    spec = parseSpec(options, error);
     if (!spec) return kExitInvalidInput;
   } else {
     for (const char* name : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch", "glo-weights"}) {
-      if (parser.isSet(name)) {
+      if (options.isSet(name)) {
         error = "--springs, --right-spring, --stop-mass, --frequencies and --glo-weights describe a chain given by --masses";
         return kExitInvalidInput;
       }
     }
-    spec = parseSpec(parser, error);
+    spec = parseSpec(options, error);
     if (!spec) return kExitInvalidInput;
   }
   const std::int64_t xCount = masses ? chainSpec->x.range.count : spec->x.count;
   const std::int64_t yCount = masses ? chainSpec->y.range.count : spec->y.count;
   Shard shard;
-  if (parser.isSet("shard")) {
-    const auto parsed = parseShard(parser.value("shard"), error);
+  if (options.isSet("shard")) {
+    const auto parsed = parseShard(options.value("shard"), error);
     if (!parsed) return kExitInvalidInput;
     shard = *parsed;
   }
   int threads = parallel::defaultThreadCount();
-  if (parser.isSet("threads")) {
+  if (options.isSet("threads")) {
     bool ok = false;
-    threads = parser.value("threads").toInt(&ok);
+    threads = options.value("threads").toInt(&ok);
     if (!ok || threads < 1) {
-      error = QStringLiteral("--threads: '%1' is not a count >= 1").arg(parser.value("threads"));
+      error = QStringLiteral("--threads: '%1' is not a count >= 1").arg(options.value("threads"));
       return kExitInvalidInput;
     }
   }
-  const QString picture = parser.isSet("picture") ? parser.value("picture") : "fft_first";
+  const QString picture = options.isSet("picture") ? options.value("picture") : "fft_first";
   if (!core::parseQuantity(picture.toStdString())) {
     QStringList names;
     for (const auto& info : core::quantities()) names << QString::fromUtf8(info.name);
@@ -264,7 +264,7 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
     return kExitInvalidInput;
   }
   std::optional<QString> prefix;
-  if (!filesPrefix(parser, io, prefix, error)) return kExitInvalidInput;
+  if (!filesPrefix(options, io, prefix, error)) return kExitInvalidInput;
   const bool writesFiles = prefix.has_value();
 
   const core::RowRange rows = core::stripe(yCount, shard.k, shard.n);
@@ -298,7 +298,7 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
   stored.description.run = JsonValue::object(
       {{"seconds", JsonValue::number(seconds)},
        {"threads", JsonValue::of(std::int64_t(threads))},
-       {"shard", JsonValue::of((parser.isSet("shard") ? parser.value("shard") : QString("1/1")).toStdString())},
+       {"shard", JsonValue::of((options.isSet("shard") ? options.value("shard") : QString("1/1")).toStdString())},
        {"complete", JsonValue::of(true)}});
   stored.rows = rows;
   stored.columns = computed.columns;
@@ -332,14 +332,14 @@ int runMap(const QCommandLineParser& parser, const Io& io, std::stop_token stop,
   return kExitOk;
 }
 
-int runMerge(const QCommandLineParser& parser, const QStringList& parts, const Io& io,
+int runMerge(const OptionValues& options, const QStringList& parts, const Io& io,
              std::stop_token stop, QString& error) {
   if (parts.isEmpty()) {
     error = "merge: give the parts' prefixes after --out PREFIX";
     return kExitInvalidInput;
   }
   std::optional<QString> prefix;
-  if (!filesPrefix(parser, io, prefix, error)) return kExitInvalidInput;
+  if (!filesPrefix(options, io, prefix, error)) return kExitInvalidInput;
   const bool writesFiles = prefix.has_value();
   std::vector<map::StoredMap> stored;
   for (const QString& part : parts) {

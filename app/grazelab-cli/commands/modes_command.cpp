@@ -48,9 +48,9 @@ V endValue(const core::FamilyEnd<S>& end) {
 const char* const kColumns = "energy,period,omega,trace,stability,u1,v1,min_impact_speed,min_clearance";
 
 template <typename S>
-int modesIn(const QCommandLineParser& parser, const FileOutput& output, const QString& precision, int maxImpacts,
+int modesIn(const OptionValues& options, const FileOutput& output, const QString& precision, int maxImpacts,
             const Io& io, std::stop_token stop, QString& error) {
-  const Parsed<ModelInput<S>> model = parseModel<S>(parser);
+  const Parsed<ModelInput<S>> model = parseModel<S>(options);
   if (!model.value) {
     error = model.error;
     return kExitInvalidInput;
@@ -64,12 +64,12 @@ int modesIn(const QCommandLineParser& parser, const FileOutput& output, const QS
   const core::AtlasEnergyRange<S> range = core::defaultAtlasEnergyRange(chain);
   S low = range.low;
   S high = range.high;
-  if (parser.isSet("energy-range")) {
-    const QStringList parts = parser.value("energy-range").split(':');
+  if (options.isSet("energy-range")) {
+    const QStringList parts = options.value("energy-range").split(':');
     const auto a = parts.size() == 2 ? core::parseScalar<S>(parts[0].toStdString()) : core::ParsedScalar<S>{};
     const auto b = parts.size() == 2 ? core::parseScalar<S>(parts[1].toStdString()) : core::ParsedScalar<S>{};
     if (!a.value || !b.value || !(*a.value > 0) || !(*b.value > *a.value)) {
-      error = QStringLiteral("--energy-range: '%1' is not A:B with 0 < A < B").arg(parser.value("energy-range"));
+      error = QStringLiteral("--energy-range: '%1' is not A:B with 0 < A < B").arg(options.value("energy-range"));
       return kExitInvalidInput;
     }
     low = *a.value;
@@ -234,26 +234,26 @@ void addModesOptions(QCommandLineParser& parser) {
   });
 }
 
-int runModes(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
+int runModes(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
   int maxImpacts = core::kDefaultAtlasMaxImpacts;
-  if (parser.isSet("max-impacts")) {
+  if (options.isSet("max-impacts")) {
     bool ok = false;
-    maxImpacts = parser.value("max-impacts").toInt(&ok);
+    maxImpacts = options.value("max-impacts").toInt(&ok);
     if (!ok || maxImpacts < 1 || maxImpacts > 64) {
-      error = QStringLiteral("--max-impacts: '%1' is not a number from 1 to 64").arg(parser.value("max-impacts"));
+      error = QStringLiteral("--max-impacts: '%1' is not a number from 1 to 64").arg(options.value("max-impacts"));
       return kExitInvalidInput;
     }
   }
-  const QString precision = parser.value("precision");
+  const QString precision = options.value("precision");
   if (!QStringList{"auto", "double", "long", "quad"}.contains(precision)) {
     error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
     return kExitInvalidInput;
   }
-  const auto output = openFileOutput(parser, io, "PREFIX.json, PREFIX-family-N.csv, ...", "modes", error);
+  const auto output = openFileOutput(options, io, "PREFIX.json, PREFIX-family-N.csv, ...", "modes", error);
   if (!output) return kExitInvalidInput;
-  if (precision == "long") return modesIn<long double>(parser, *output, precision, maxImpacts, io, stop, error);
-  if (precision == "quad") return modesIn<core::Quad>(parser, *output, precision, maxImpacts, io, stop, error);
-  return modesIn<double>(parser, *output, "double", maxImpacts, io, stop, error);
+  if (precision == "long") return modesIn<long double>(options, *output, precision, maxImpacts, io, stop, error);
+  if (precision == "quad") return modesIn<core::Quad>(options, *output, precision, maxImpacts, io, stop, error);
+  return modesIn<double>(options, *output, "double", maxImpacts, io, stop, error);
 }
 
 }  // namespace grazelab::cli

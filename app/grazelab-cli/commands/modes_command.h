@@ -7,6 +7,7 @@
 #include <stop_token>
 
 #include "io/cli_io.h"
+#include "io/option_values.h"
 
 class QCommandLineParser;
 
@@ -19,6 +20,6 @@ void addModesOptions(QCommandLineParser& parser);
 /// PREFIX`: the atlas of the chain's periodic impacting families up to K impacts per period
 /// (PREFIX.json, one CSV and .npy per family, the frequency-energy picture PREFIX.png/.svg).
 /// Exit 2 with `error` on invalid input, 130 (nothing written) when `stop` is requested.
-int runModes(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error);
+int runModes(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

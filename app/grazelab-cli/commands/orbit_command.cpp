@@ -76,10 +76,10 @@ JsonValue orbitValue(const core::PeriodicOrbit<S>& orbit, const core::TwoMassFor
 
 // Reads --NAME as a number of S, or says why not.
 template <typename S>
-std::optional<S> scalarOption(const QCommandLineParser& parser, const char* name, QString& error) {
-  const core::ParsedScalar<S> parsed = core::parseScalar<S>(parser.value(name).toStdString());
+std::optional<S> scalarOption(const OptionValues& options, const char* name, QString& error) {
+  const core::ParsedScalar<S> parsed = core::parseScalar<S>(options.value(name).toStdString());
   if (!parsed.value) {
-    error = QStringLiteral("--%1: '%2' %3").arg(name, parser.value(name), QString::fromStdString(parsed.error));
+    error = QStringLiteral("--%1: '%2' %3").arg(name, options.value(name), QString::fromStdString(parsed.error));
   }
   return parsed.value;
 }
@@ -88,17 +88,17 @@ enum class Outcome { Found, Undecided, Refused };
 
 // The orbit in precision S: written to io.out when found; `error` says why not.
 template <typename S>
-Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, const Io& io, std::stop_token stop,
+Outcome orbitIn(const OptionValues& options, const std::string& precision, const Io& io, std::stop_token stop,
                 QString& error) {
-  const Parsed<ModelInput<S>> model = parseModel<S>(parser);
+  const Parsed<ModelInput<S>> model = parseModel<S>(options);
   if (!model.value) {
     error = model.error;
     return Outcome::Refused;
   }
   const core::TwoMassForm<S>& chain = model.value->chain;
   core::OrbitSearch<S> search;
-  if (parser.isSet("onepp")) {
-    const std::optional<S> T = scalarOption<S>(parser, "period", error);
+  if (options.isSet("onepp")) {
+    const std::optional<S> T = scalarOption<S>(options, "period", error);
     if (!T) return Outcome::Refused;
     search = core::onePeriodicOrbitStability(chain, *T);
     if (!search.orbit && search.refusal != core::OrbitRefusal::Undecided) {
@@ -115,26 +115,26 @@ Outcome orbitIn(const QCommandLineParser& parser, const std::string& precision, 
     }
   } else {
     bool ok = false;
-    const int impacts = parser.value("impacts").toInt(&ok);
+    const int impacts = options.value("impacts").toInt(&ok);
     if (!ok || impacts < 1 || impacts > 64) {
-      error = QStringLiteral("--impacts: '%1' is not a number of impacts from 1 to 64").arg(parser.value("impacts"));
+      error = QStringLiteral("--impacts: '%1' is not a number of impacts from 1 to 64").arg(options.value("impacts"));
       return Outcome::Refused;
     }
-    const std::optional<S> energy = scalarOption<S>(parser, "energy", error);
+    const std::optional<S> energy = scalarOption<S>(options, "energy", error);
     if (!energy) return Outcome::Refused;
     if (!(*energy > 0)) {
-      error = QStringLiteral("--energy: '%1' is not a positive energy").arg(parser.value("energy"));
+      error = QStringLiteral("--energy: '%1' is not a positive energy").arg(options.value("energy"));
       return Outcome::Refused;
     }
-    const QStringList guess = parser.value("guess").split(',');
+    const QStringList guess = options.value("guess").split(',');
     if (guess.size() != 2) {
-      error = QStringLiteral("--guess: '%1' is not two numbers u1,v1").arg(parser.value("guess"));
+      error = QStringLiteral("--guess: '%1' is not two numbers u1,v1").arg(options.value("guess"));
       return Outcome::Refused;
     }
     const core::ParsedScalar<S> u1 = core::parseScalar<S>(guess[0].trimmed().toStdString());
     const core::ParsedScalar<S> v1 = core::parseScalar<S>(guess[1].trimmed().toStdString());
     if (!u1.value || !v1.value) {
-      error = QStringLiteral("--guess: '%1' is not two numbers u1,v1").arg(parser.value("guess"));
+      error = QStringLiteral("--guess: '%1' is not two numbers u1,v1").arg(options.value("guess"));
       return Outcome::Refused;
     }
     search = core::findOrbit(chain, *energy, *u1.value, *v1.value, impacts, stop);
@@ -169,34 +169,34 @@ void addOrbitOptions(QCommandLineParser& parser) {
   });
 }
 
-int runOrbit(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
-  if (parser.isSet("format") && parser.value("format") != "json") {
+int runOrbit(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
+  if (options.isSet("format") && options.value("format") != "json") {
     error = "orbit: --format json is the only format";
     return kExitInvalidInput;
   }
-  const bool onePeriodic = parser.isSet("onepp");
-  if (onePeriodic == parser.isSet("impacts")) {
+  const bool onePeriodic = options.isSet("onepp");
+  if (onePeriodic == options.isSet("impacts")) {
     error = "orbit: give --onepp --period T, or --impacts K --energy E --guess U1,V1";
     return kExitInvalidInput;
   }
-  if (onePeriodic && (!parser.isSet("period") || parser.isSet("energy") || parser.isSet("guess"))) {
+  if (onePeriodic && (!options.isSet("period") || options.isSet("energy") || options.isSet("guess"))) {
     error = "orbit --onepp: give --period T (and no --energy or --guess)";
     return kExitInvalidInput;
   }
-  if (!onePeriodic && (!parser.isSet("energy") || !parser.isSet("guess") || parser.isSet("period"))) {
+  if (!onePeriodic && (!options.isSet("energy") || !options.isSet("guess") || options.isSet("period"))) {
     error = "orbit --impacts K: give --energy E and --guess U1,V1 (and no --period)";
     return kExitInvalidInput;
   }
-  const QString precision = parser.value("precision");
+  const QString precision = options.value("precision");
   Outcome outcome = Outcome::Refused;
-  if (precision == "double") outcome = orbitIn<double>(parser, "double", io, stop, error);
-  else if (precision == "long") outcome = orbitIn<long double>(parser, "long", io, stop, error);
-  else if (precision == "quad") outcome = orbitIn<core::Quad>(parser, "quad", io, stop, error);
+  if (precision == "double") outcome = orbitIn<double>(options, "double", io, stop, error);
+  else if (precision == "long") outcome = orbitIn<long double>(options, "long", io, stop, error);
+  else if (precision == "quad") outcome = orbitIn<core::Quad>(options, "quad", io, stop, error);
   else if (precision == "auto") {
     // double, and again in long double then binary128 when a contact is too near tangent
-    outcome = orbitIn<double>(parser, "double", io, stop, error);
-    if (outcome == Outcome::Undecided) outcome = orbitIn<long double>(parser, "long", io, stop, error);
-    if (outcome == Outcome::Undecided) outcome = orbitIn<core::Quad>(parser, "quad", io, stop, error);
+    outcome = orbitIn<double>(options, "double", io, stop, error);
+    if (outcome == Outcome::Undecided) outcome = orbitIn<long double>(options, "long", io, stop, error);
+    if (outcome == Outcome::Undecided) outcome = orbitIn<core::Quad>(options, "quad", io, stop, error);
   } else {
     error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
     return kExitInvalidInput;

@@ -8,6 +8,7 @@
 #include <stop_token>
 
 #include "io/cli_io.h"
+#include "io/option_values.h"
 
 class QCommandLineParser;
 
@@ -21,6 +22,6 @@ void addOrbitOptions(QCommandLineParser& parser);
 /// periodic impacting orbit with its exact stability (docs/model.md section 10), as a JSON
 /// object on stdout. Exit 2 with `error` (one line) on invalid input, when Newton does not
 /// converge or when the orbit is not admissible.
-int runOrbit(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error);
+int runOrbit(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

@@ -82,10 +82,10 @@ struct ReportProblem {
 /// run's first contacts (`contactTimes(count)`, at least `count` of them when it makes them);
 /// nothing with `error` set.
 template <typename ContactTimes>
-std::optional<double> reportHorizon(const QCommandLineParser& parser, ReportInput& input, const ContactTimes& contactTimes,
+std::optional<double> reportHorizon(const OptionValues& options, ReportInput& input, const ContactTimes& contactTimes,
                                     QString& error) {
-  if (parser.isSet("t-end")) {
-    const auto tEnd = core::parseScalar<double>(parser.value("t-end").trimmed().toStdString()).value;
+  if (options.isSet("t-end")) {
+    const auto tEnd = core::parseScalar<double>(options.value("t-end").trimmed().toStdString()).value;
     if (!tEnd || !(*tEnd > 0) || !std::isfinite(*tEnd)) {
       error = "--t-end must be a positive time for a report";
       return std::nullopt;
@@ -93,11 +93,11 @@ std::optional<double> reportHorizon(const QCommandLineParser& parser, ReportInpu
     input.horizonNote = QStringLiteral("t_end = %1 (given)").arg(*tEnd);
     return *tEnd;
   }
-  if (parser.isSet("contacts")) {
+  if (options.isSet("contacts")) {
     // the horizon ends halfway between the N-th and the next contact of the exact run, so
     // that no method is judged at a contact instant
     bool ok = false;
-    const qlonglong contacts = parser.value("contacts").trimmed().toLongLong(&ok);
+    const qlonglong contacts = options.value("contacts").trimmed().toLongLong(&ok);
     if (!ok || contacts < 1) {
       error = "--contacts must be at least 1 for a report";
       return std::nullopt;
@@ -136,8 +136,8 @@ JsonValue numbersValue(const Eigen::VectorXd& values) {
 
 // The note's chain (the two-mass options, or --masses m1,m2 of its shape): the default problem
 // unless told otherwise
-std::optional<ReportProblem> twoMassProblem(const QCommandLineParser& parser, QString& error) {
-  Parsed<RunInput<double>> run = parseRun<double>(parser);
+std::optional<ReportProblem> twoMassProblem(const OptionValues& options, QString& error) {
+  Parsed<RunInput<double>> run = parseRun<double>(options);
   if (!run.value) {
     error = run.error;
     return std::nullopt;
@@ -148,8 +148,8 @@ std::optional<ReportProblem> twoMassProblem(const QCommandLineParser& parser, QS
   task.model = run.value->model.model;
   task.start = run.value->request.initial;
   input.startDescription = QString::fromStdString(run.value->initialDescription);
-  const bool startGiven = parser.isSet("glo") || parser.isSet("onepp") || parser.isSet("state") ||
-                          parser.isSet("perturb");
+  const bool startGiven = options.isSet("glo") || options.isSet("onepp") || options.isSet("state") ||
+                          options.isSet("perturb");
   if (!startGiven) {
     task.start = task.start + kDefaultPush;
     input.startDescription += ", pushed by (0, 0, 0.05, -0.05) (the default problem)";
@@ -157,7 +157,7 @@ std::optional<ReportProblem> twoMassProblem(const QCommandLineParser& parser, QS
   const core::TwoMassForm<double>& chain = run.value->model.chain;
   input.period = core::twoPi<double>() / chain.omegaSlow;
   task.needs.events = true;
-  const auto tEnd = reportHorizon(parser, input, [&task](std::int64_t count) {
+  const auto tEnd = reportHorizon(options, input, [&task](std::int64_t count) {
     core::Request request;
     request.initial = task.start;
     request.maxContacts = count;
@@ -193,8 +193,7 @@ std::optional<ReportProblem> twoMassProblem(const QCommandLineParser& parser, QS
 
 // A chain of N masses (--masses of any other shape): its start must be given (--state,
 // --glo-weights or --onepp, and --perturb)
-std::optional<ReportProblem> chainProblem(const QCommandLineParser& parser, QString& error) {
-  const OptionValues options(parser);
+std::optional<ReportProblem> chainProblem(const OptionValues& options, QString& error) {
   if (!noTwoMassStart(options, error)) return std::nullopt;
   const Parsed<MassChainInput> parsed = parseMassChain(options);
   if (!parsed.value) {
@@ -213,7 +212,7 @@ std::optional<ReportProblem> chainProblem(const QCommandLineParser& parser, QStr
   input.startDescription = QString::fromStdString(description);
   const core::ChainModes modes = core::chainModes(task.chain);
   input.period = core::twoPi<double>() / modes.omega.minCoeff();
-  const auto tEnd = reportHorizon(parser, input, [&task](std::int64_t count) {
+  const auto tEnd = reportHorizon(options, input, [&task](std::int64_t count) {
     const core::ChainRun run = core::runChain(task.chain, {task.start, task.stillModes}, long(count));
     std::vector<double> times;
     for (const core::ChainEvent& e : run.events) {
@@ -249,13 +248,13 @@ std::optional<ReportProblem> chainProblem(const QCommandLineParser& parser, QStr
   return problem;
 }
 
-std::optional<ReportProblem> parseReportProblem(const QCommandLineParser& parser, QString& error) {
-  if (parser.isSet("t-end") && parser.isSet("contacts")) {
+std::optional<ReportProblem> parseReportProblem(const OptionValues& options, QString& error) {
+  if (options.isSet("t-end") && options.isSet("contacts")) {
     error = "give --t-end or --contacts, not both";
     return std::nullopt;
   }
-  if (parser.isSet("masses") && !hasTheNotesShape(OptionValues(parser))) return chainProblem(parser, error);
-  return twoMassProblem(parser, error);
+  if (options.isSet("masses") && !hasTheNotesShape(OptionValues(options))) return chainProblem(options, error);
+  return twoMassProblem(options, error);
 }
 
 // The errors are differences of runs handed back in double: below about one rounding of double
@@ -401,16 +400,16 @@ int reportOn(T& task, ReportInput& input, const std::vector<MethodKind>& methods
 
 }  // namespace
 
-int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
-  const auto methods = parseMethodsOption(parser, error);
+int runReport(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
+  const auto methods = parseMethodsOption(options, error);
   if (!methods) return kExitInvalidInput;
-  auto problem = parseReportProblem(parser, error);
+  auto problem = parseReportProblem(options, error);
   if (!problem) return kExitInvalidInput;
-  const auto directory = prepareOutputDirectory(parser, error);
+  const auto directory = prepareOutputDirectory(options, error);
   if (!directory) return kExitInvalidInput;
   return std::visit(
       [&](auto& task) {
-        return reportOn(task, problem->words, *methods, *directory, parser.isSet("quick"), io, stop, error);
+        return reportOn(task, problem->words, *methods, *directory, options.isSet("quick"), io, stop, error);
       },
       problem->task);
 }

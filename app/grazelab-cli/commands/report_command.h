@@ -8,6 +8,7 @@
 
 #include "io/cli_io.h"
 #include "exit_codes.h"
+#include "io/option_values.h"
 
 class QCommandLineParser;
 
@@ -19,10 +20,10 @@ void addReportOptions(QCommandLineParser& parser);
 /// `grazelab-cli report`: the work-precision report (issue 8). Writes DIR/results.csv,
 /// work_precision.svg/.png, convergence.svg/.png and report.md, each atomically; progress on
 /// stderr. On an invalid input: one line on stderr (`error`), exit 2, nothing written.
-int runReport(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error);
+int runReport(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
 
 /// `grazelab-cli stability`: the matrix of stiff and extreme cases. Writes DIR/matrix.csv and
 /// DIR/matrix.md atomically.
-int runStability(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error);
+int runStability(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
 
 }  // namespace grazelab::cli

@@ -2,7 +2,6 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "commands/report_support.h"
 
-#include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
 
@@ -26,10 +25,10 @@ QString humanSeconds(double seconds) {
 }
 
 std::optional<std::vector<core::methods::MethodKind>> parseMethodsOption(
-    const QCommandLineParser& parser, QString& error) {
+    const OptionValues& options, QString& error) {
   using core::methods::MethodKind;
   std::vector<MethodKind> methods;
-  if (!parser.isSet("methods")) {
+  if (!options.isSet("methods")) {
     methods.assign(std::begin(core::methods::kAllMethods), std::end(core::methods::kAllMethods));
     return methods;
   }
@@ -38,7 +37,7 @@ std::optional<std::vector<core::methods::MethodKind>> parseMethodsOption(
     known << QString::fromUtf8(core::methods::methodName(kind).data(),
                                qsizetype(core::methods::methodName(kind).size()));
   }
-  for (const QString& name : parser.value("methods").split(',', Qt::SkipEmptyParts)) {
+  for (const QString& name : options.value("methods").split(',', Qt::SkipEmptyParts)) {
     const auto kind = core::methods::parseMethod(name.trimmed().toStdString());
     if (!kind) {
       error = QStringLiteral("--methods: '%1' is not a method (one of %2)").arg(name, known.join(", "));
@@ -53,12 +52,12 @@ std::optional<std::vector<core::methods::MethodKind>> parseMethodsOption(
   return methods;
 }
 
-std::optional<QString> prepareOutputDirectory(const QCommandLineParser& parser, QString& error) {
-  if (!parser.isSet("out") || parser.value("out").isEmpty()) {
+std::optional<QString> prepareOutputDirectory(const OptionValues& options, QString& error) {
+  if (!options.isSet("out") || options.value("out").isEmpty()) {
     error = "--out DIR is required: the directory the files are written to";
     return std::nullopt;
   }
-  const QString path = parser.value("out");
+  const QString path = options.value("out");
   const QFileInfo info(path);
   if (info.exists() && !info.isDir()) {
     error = QStringLiteral("--out: '%1' exists and is not a directory").arg(path);

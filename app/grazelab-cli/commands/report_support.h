@@ -10,8 +10,8 @@
 
 #include "io/cli_io.h"
 #include "core/methods/method.h"
+#include "io/option_values.h"
 
-class QCommandLineParser;
 
 // What `report` and `stability` share: their options, number formats and file writing.
 namespace grazelab::cli {
@@ -23,10 +23,10 @@ QString humanSeconds(double seconds);
 
 /// --methods a,b,c (all when absent), checked against the method names.
 std::optional<std::vector<core::methods::MethodKind>> parseMethodsOption(
-    const QCommandLineParser& parser, QString& error);
+    const OptionValues& options, QString& error);
 
 /// --out DIR: created when missing; error when it cannot be.
-std::optional<QString> prepareOutputDirectory(const QCommandLineParser& parser, QString& error);
+std::optional<QString> prepareOutputDirectory(const OptionValues& options, QString& error);
 
 /// Writes bytes atomically; on failure, `error` says which file and why.
 bool writeAtomically(const QString& path, const QByteArray& bytes, QString& error);

@@ -2,7 +2,6 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // `grazelab-cli stability`: every method on stiff and extreme cases, each cell ending with a
 // verdict and a reason (issue 8).
-#include <QCommandLineParser>
 
 #include <chrono>
 #include <map>
@@ -46,9 +45,8 @@ QString settingText(const core::methods::MethodSetting& setting) {
 // The matrix of the chain given by --masses (its springs, wall, stop and gap) from its start
 // (--state, --glo-weights or --onepp, and --perturb): the chain and its stiff and extreme
 // variants. Nothing, with `error`, when the chain or its start is refused.
-std::optional<std::vector<core::methods::StressCase>> chainCases(const QCommandLineParser& parser, bool quick,
+std::optional<std::vector<core::methods::StressCase>> chainCases(const OptionValues& options, bool quick,
                                                                   std::stop_token stop, QString& error) {
-  const OptionValues options(parser);
   if (!noTwoMassStart(options, error)) return std::nullopt;
   const Parsed<MassChainInput> parsed = parseMassChain(options, stop);
   if (!parsed.value) {
@@ -67,26 +65,26 @@ std::optional<std::vector<core::methods::StressCase>> chainCases(const QCommandL
 
 }  // namespace
 
-int runStability(const QCommandLineParser& parser, const Io& io, std::stop_token stop, QString& error) {
+int runStability(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
   using namespace core::methods;
-  const auto methods = parseMethodsOption(parser, error);
+  const auto methods = parseMethodsOption(options, error);
   if (!methods) return kExitInvalidInput;
-  const auto directory = prepareOutputDirectory(parser, error);
+  const auto directory = prepareOutputDirectory(options, error);
   if (!directory) return kExitInvalidInput;
-  const bool quick = parser.isSet("quick");
+  const bool quick = options.isSet("quick");
   WorkBudget budget;
   budget.maxSeconds = quick ? 0.5 : 20;
   const auto started = std::chrono::steady_clock::now();
 
   std::vector<StressCase> cases;
-  if (parser.isSet("masses")) {
-    auto ofTheChain = chainCases(parser, quick, stop, error);
+  if (options.isSet("masses")) {
+    auto ofTheChain = chainCases(options, quick, stop, error);
     if (!ofTheChain) return stop.stop_requested() ? kExitInterrupted : kExitInvalidInput;
     cases = std::move(*ofTheChain);
   } else {
     for (const char* option : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch", "gap", "state", "onepp",
                                "perturb", "glo-weights"}) {
-      if (parser.isSet(option)) {
+      if (options.isSet(option)) {
         error = QStringLiteral("--%1 describes a chain given by --masses (without it, stability runs its own cases)").arg(option);
         return kExitInvalidInput;
       }

@@ -59,6 +59,11 @@ struct Io {
   /// of on disk, and draw no picture.
   std::vector<std::pair<std::string, std::string>>* files = nullptr;
 
+  /// When set, the line that says why a command failed (exit 2: invalid input; 1: a file not
+  /// written) is put here as well as on `messages` (the Python module raises it, reading
+  /// nothing back from the messages).
+  std::string* problem = nullptr;
+
   void reportProgress(double fraction, const std::string& text) const {
     if (progress) progress(fraction, text);
   }
