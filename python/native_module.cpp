@@ -489,10 +489,20 @@ py::object simulateOptions(const py::sequence& given, const py::object& resultTy
   auto named = givenOptions(given, {"state", "perturb", "sample-times"});
   if (!named) return py::none();
   const grazelab::cli::OptionValues options(std::move(*named));
+  // the chain read (a design may take seconds: on the run's thread unless the run is direct)
   grazelab::cli::Parsed<std::shared_ptr<const grazelab::cli::PreparedMassChain>> chain;
-  {
+  const auto read = [&](std::stop_token stop) {
+    chain = grazelab::cli::recentChain(options, std::move(stop));
+    return 0;
+  };
+  if (direct) {
     py::gil_scoped_release released;
-    chain = grazelab::cli::recentChain(options);
+    read({});
+  } else {
+    std::stop_source stop;
+    std::optional<py::error_already_set> pythonError;
+    interruptibly(stop, read, {}, pythonError);
+    if (pythonError) throw std::move(*pythonError);
   }
   if (!chain.value) throw py::value_error(chain.error.simplified().toStdString());
   return simulateTyped(**chain.value, options, !options.isSet("masses"), resultType,

@@ -228,7 +228,7 @@ QString optionsRefused(const Command& command, const QStringList& given) {
   return message;
 }
 
-const QString kCommandNames = "info, simulate, report, stability, map, merge, family, orbit or modes";
+const QString kCommandNames = "info, simulate, report, stability, map, merge, family, orbit, modes or glo-set";
 
 }  // namespace
 

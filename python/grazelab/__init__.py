@@ -313,7 +313,8 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
             "search-steps", search_steps, "trust", trust)
     # a short run of a designed chain on the calling thread (its every flight decided within a
     # period); anything longer on a thread of its own that Ctrl+C stops
-    direct = (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS and contacts <= MAX_EVENTS
+    direct = ((contacts is None or (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS
+                                     and contacts <= MAX_EVENTS))
               and progress is None and k2 is None and t_end is None and samples is None)
     if not direct:
         _check_held_events(events, contacts)
@@ -324,7 +325,7 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
         answer = _simulate_here(flat, Result, events, MAX_EVENTS, not events, direct)
         if answer is None:  # values of other types (NumPy, Fraction): as the command line's text
             given = {name.replace("-", "_"): value for name, value in zip(flat[::2], flat[1::2]) if value is not None}
-            flat = tuple(part for pair in _convert.option_texts(given) for part in pair)
+            flat = tuple(part for pair in _convert.option_texts(given, bare=()) for part in pair)
             answer = _simulate_here(flat, Result, events, MAX_EVENTS, not events, direct)
     except ValueError as error:
         raise ValueError(_message(str(error))) from None
@@ -399,12 +400,10 @@ class Chain:
             answer = _simulate_chain(self._prepared, flat, Result, not events, direct, MAX_EVENTS)
             if answer is None:  # values of other types (NumPy, Fraction): as the command line's text
                 given = {name.replace("-", "_"): value for name, value in zip(flat[::2], flat[1::2]) if value is not None}
-                flat = tuple(part for pair in _convert.option_texts(given) for part in pair)
+                flat = tuple(part for pair in _convert.option_texts(given, bare=()) for part in pair)
                 answer = _simulate_chain(self._prepared, flat, Result, not events, direct, MAX_EVENTS)
         except ValueError as error:
             raise ValueError(_message(str(error))) from None
-        except OSError as error:
-            raise OSError(_message(str(error))) from None
         if progress is not None:
             progress(1.0, "done")
         return _simulated(*answer)

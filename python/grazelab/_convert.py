@@ -16,6 +16,8 @@ import numpy as _np
 
 # the flags that take no value (given as True)
 _BARE = {"quick", "onepp"}
+# options that are flags only
+_FLAGS = {"quick"}
 # flags whose parts are joined by ':' (an axis NAME:from:to:count, an energy range A:B) or '/'
 _JOINED_BY = {"x": ":", "y": ":", "energy_range": ":", "shard": "/"}
 
@@ -102,20 +104,23 @@ def _text(name, value):
     raise TypeError(f"{name}: expected a number or text, got {type(value).__name__}")
 
 
-def option_texts(options):
+def option_texts(options, bare=_BARE):
     """`options` as (flag name without dashes, text) pairs, the text None for a bare flag: the
-    command line's words without the line, as the module hands them to a command. True is a bare
-    flag (--quick, --onepp of family and orbit), False leaves it out; a vector option's sequence
-    is joined by ',' (':' for the axes and --energy-range, '/' for --shard); a sequence where one
-    value is expected is a TypeError."""
+    command line's words without the line, as the module hands them to a command. For the
+    options in `bare` (--quick, --onepp of family and orbit) True is the bare flag and False
+    leaves it out (--quick takes nothing else: any other value is a TypeError); a vector option's
+    sequence is joined by ',' (':' for the axes and --energy-range, '/' for --shard); a sequence
+    where one value is expected, or a bool anywhere else, is a TypeError."""
     texts = []
     for name, value in options.items():
         flag = name.replace("_", "-")
         kind = type(value)
-        if kind is float or kind is str or (kind is int and name not in _BARE):
+        if name in _FLAGS and not isinstance(value, (bool, _np.bool_)):
+            raise TypeError(f"{name}: expected True or False, got {value!r}")
+        if kind is float or kind is str or (kind is int and name not in bare):
             texts.append((flag, _text(name, value)))
             continue
-        if name in _BARE and isinstance(value, bool):
+        if name in bare and isinstance(value, (bool, _np.bool_)):
             if value:
                 texts.append((flag, None))
             continue

@@ -67,8 +67,8 @@ def without_timing(document):
     (dict(glo=1.5, contacts=0), ["--glo", "1.5", "--contacts", "0"]),
 ])
 def test_simulate_document_is_the_cli_json_on_both_paths(cli_json, options, flags):
-    # a short run is computed on the calling thread with its options handed over by name, a run
-    # with progress on a thread through the command line's text: the same document, and the
+    # a short run is computed on the calling thread, a run with progress on a thread of its own,
+    # both with their options handed over by name: the same document, and the
     # command line's, field for field (floats where the JSON writes 1 for 1.0: equal numbers)
     expected = without_timing(cli_json("simulate", *flags))
     direct = gl.simulate(**options)

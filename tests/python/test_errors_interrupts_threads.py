@@ -62,6 +62,13 @@ def test_functions_have_python_signatures_and_refuse_what_is_not_theirs():
         gl.simulate(glo=[0.5])
     with pytest.raises(TypeError, match="expected a number"):
         gl.simulate(contacts=True, m2=True)
+    # simulate's onepp is a period, on every path; quick is a flag only
+    for call in (lambda: gl.simulate(onepp=True), lambda: gl.simulate(onepp=True, t_end=3),
+                 lambda: gl.Chain(masses=[1, 0.5], frequencies=[2, 1]).simulate(onepp=True)):
+        with pytest.raises(TypeError, match="onepp: expected a number"):
+            call()
+    with pytest.raises(TypeError, match="quick: expected True or False"):
+        gl.report(quick=0)
     # a bad value: ValueError in the module's words (keywords, not the command line's flags),
     # on the direct path and on the text path alike
     for call in (lambda: gl.simulate(glo=0.5, onepp=6), lambda: gl.simulate(glo=0.5, onepp=6, t_end=3)):

@@ -22,8 +22,9 @@ struct JsonValue;
 /// `grazelab-cli simulate`: an exact run of a chain (commands/simulation.h), given by --masses
 /// ... or by the note's options (--m1 --m2 --k1 --k2 --branch --gap: the two-mass chain they
 /// write), from its start, up to --contacts (default 100) or --t-end, streamed as json, jsonl, csv
-/// or a summary with its error estimate (docs/cli.md). Exit 0; 2 on invalid input (`error`,
-/// nothing on stdout); 130 when `stop` ended it (`error`: what was written).
+/// or a summary with its error estimate (docs/cli.md). Exit 0; 2 on invalid input (`error`;
+/// nothing on stdout, but for a json or jsonl document closed whole when the refusal came after
+/// a lower precision wrote events); 130 when `stop` ended it (`error`: what was written).
 int runSimulate(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
 
 /// The run options of `simulate` (--state, --glo-weights, --onepp, --glo, --perturb, --contacts,
