@@ -71,7 +71,9 @@ def _command(command, options, progress=None, positional=(), keep_map=False, doc
     merge held in memory; with keep_files (family, modes), (messages, {name: bytes}) for files held
     in memory; with document (info, glo-set, orbit), (its document as Results, messages). A
     progress callback hears (1.0, "done") when the command has ended well."""
-    given = _convert.option_texts({name: value for name, value in options.items() if value is not None})
+    # (--onepp names the family of family and orbit, a bare flag; elsewhere it is a period)
+    bare = ("quick", "onepp") if command in ("family", "orbit") else ("quick",)
+    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, bare)
     code, output, messages, kept, values, files, problem = _run_command(
         command, given, [str(p) for p in positional], progress, keep_map, Result if document else None, keep_files)
     if code == 2:
@@ -327,6 +329,8 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
             given = {name.replace("-", "_"): value for name, value in zip(flat[::2], flat[1::2]) if value is not None}
             flat = tuple(part for pair in _convert.option_texts(given, bare=()) for part in pair)
             answer = _simulate_here(flat, Result, events, MAX_EVENTS, not events, direct)
+            if answer is None:
+                raise TypeError("simulate: a keyword's value is of a type it does not read")
     except ValueError as error:
         raise ValueError(_message(str(error))) from None
     if progress is not None:
@@ -402,6 +406,8 @@ class Chain:
                 given = {name.replace("-", "_"): value for name, value in zip(flat[::2], flat[1::2]) if value is not None}
                 flat = tuple(part for pair in _convert.option_texts(given, bare=()) for part in pair)
                 answer = _simulate_chain(self._prepared, flat, Result, not events, direct, MAX_EVENTS)
+                if answer is None:
+                    raise TypeError("simulate: a keyword's value is of a type it does not read")
         except ValueError as error:
             raise ValueError(_message(str(error))) from None
         if progress is not None:

@@ -15,7 +15,7 @@ import re
 import numpy as _np
 
 # the flags that take no value (given as True)
-_BARE = {"quick", "onepp"}
+_BARE = {"quick", "onepp"}  # (--onepp is bare for family and orbit only)
 # options that are flags only
 _FLAGS = {"quick"}
 # flags whose parts are joined by ':' (an axis NAME:from:to:count, an energy range A:B) or '/'
@@ -84,7 +84,7 @@ def _text(name, value):
     if isinstance(value, (bool, _np.bool_)):
         raise TypeError(f"{name}: expected a number or text, got {value!r}")
     if isinstance(value, str):
-        return value
+        return str.__str__(value)  # (NumPy's str_, a str enum: the text itself, as a plain str)
     if isinstance(value, fractions.Fraction):
         # the exact ratio to 40 significant digits: beyond binary128's 34, read in any precision
         with decimal.localcontext() as context:

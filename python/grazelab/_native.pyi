@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
-"""The compiled part of the module (python/native_module.cpp): one command line run in
-process. Not for direct use: the functions of ``grazelab`` call it."""
+"""The compiled part of the module (python/native_module.cpp): the command line's commands run in
+process by name, ``simulate`` as the typed command. Not for direct use: the functions of
+``grazelab`` call it."""
 
 from typing import Callable, Dict, List, Optional, Tuple
 
@@ -9,14 +10,14 @@ import numpy as np
 
 version: str
 
-def run(arguments: List[str], progress: Optional[Callable[[Optional[float], str], None]] = ...,
-        events: bool = ..., max_events: int = ..., discard_events: bool = ...,
-        keep_map: bool = ..., result_type: Optional[type] = ..., keep_files: bool = ...
-        ) -> Tuple[int, bytes, str, Optional[np.ndarray], Optional[List[str]],
-                   Optional[Tuple[bytes, np.ndarray]], Optional[dict], Optional[Dict[str, bytes]]]: ...
+def command(name: str, options: List[Tuple[str, Optional[str]]], operands: List[str] = ...,
+            progress: Optional[Callable[[Optional[float], str], None]] = ...,
+            keep_map: bool = ..., result_type: Optional[type] = ..., keep_files: bool = ...
+            ) -> Tuple[int, bytes, str, Optional[Tuple[bytes, np.ndarray]], Optional[dict],
+                       Optional[Dict[str, bytes]], str]: ...
 
 def simulate(options: tuple, result_type: type, events: bool = ...,
-             max_events: int = ..., discard_events: bool = ...
+             max_events: int = ..., discard_events: bool = ..., direct: bool = ...
              ) -> Optional[Tuple[dict, Optional[List[str]]]]: ...
 
 class PreparedChain:

@@ -7,6 +7,7 @@ import signal
 import threading
 import time
 
+import numpy as np
 import pytest
 
 import grazelab as gl
@@ -69,6 +70,9 @@ def test_functions_have_python_signatures_and_refuse_what_is_not_theirs():
             call()
     with pytest.raises(TypeError, match="quick: expected True or False"):
         gl.report(quick=0)
+    # --onepp is a bare flag of family and orbit only: elsewhere a period
+    with pytest.raises(TypeError, match="onepp: expected a number"):
+        gl.map(x="u1:0:1:2", y="v1:0:1:2", onepp=True)
     # a bad value: ValueError in the module's words (keywords, not the command line's flags),
     # on the direct path and on the text path alike
     for call in (lambda: gl.simulate(glo=0.5, onepp=6), lambda: gl.simulate(glo=0.5, onepp=6, t_end=3)):
@@ -82,6 +86,19 @@ def test_functions_have_python_signatures_and_refuse_what_is_not_theirs():
     # the module's names only
     assert [name for name in dir(gl) if not name.startswith("_")] == sorted(
         set(gl.__all__) | {"map", "help"})
+
+
+def test_text_of_other_string_types_is_its_text():
+    # NumPy's str_ and a str enum read as the text they hold, on both simulate paths
+    import enum
+
+    class Precision(str, enum.Enum):
+        QUAD = "quad"
+
+    for precision in (np.str_("quad"), Precision.QUAD):
+        assert gl.simulate(precision=precision, contacts=2).precision.used == "quad"
+        chain = gl.Chain(masses=[1, 0.5], frequencies=[2, 1])
+        assert chain.simulate(precision=precision, glo_weights=[0.5, 0.5], contacts=2).precision.used == "quad"
 
 
 def test_numpy_scalars_zero_d_arrays_and_fractions_are_numbers(cli_json):
