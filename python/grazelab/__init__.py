@@ -320,19 +320,9 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
               and progress is None and k2 is None and t_end is None and samples is None)
     if not direct:
         _check_held_events(events, contacts)
-        if samples is not None:
-            grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
-            flat += ("sample-times" if grid else "sample-step", samples)
-    try:
-        answer = _simulate_here(flat, Result, events, MAX_EVENTS, not events, direct)
-        if answer is None:  # values of other types (NumPy, Fraction): as the command line's text
-            given = {name.replace("-", "_"): value for name, value in zip(flat[::2], flat[1::2]) if value is not None}
-            flat = tuple(part for pair in _convert.option_texts(given, bare=()) for part in pair)
-            answer = _simulate_here(flat, Result, events, MAX_EVENTS, not events, direct)
-            if answer is None:
-                raise TypeError("simulate: a keyword's value is of a type it does not read")
-    except ValueError as error:
-        raise ValueError(_message(str(error))) from None
+        flat = _with_samples(flat, samples)
+    answer = _run_simulate(lambda options: _simulate_here(options, Result, events, MAX_EVENTS, not events, direct),
+                           flat)
     if progress is not None:
         progress(1.0, "done")
     result, decimals = answer
@@ -392,27 +382,41 @@ class Chain:
     def _simulate(self, flat, events, samples, progress, contacts, t_end):
         """The run of the options `flat` (name, value, ...; None: not given, `contacts` and
         `t_end` among them) with `samples`."""
-        if samples is not None:
-            grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
-            flat += ("sample-times" if grid else "sample-step", samples)
+        flat = _with_samples(flat, samples)
         # a short run of a commensurate chain (every flight decided within a period) on the
         # calling thread; anything longer on a thread of its own that Ctrl+C stops
         direct = (progress is None and t_end is None and samples is None and self._commensurate
                   and (contacts is None or (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS)))
         _check_held_events(events, contacts)
-        try:
-            answer = _simulate_chain(self._prepared, flat, Result, not events, direct, MAX_EVENTS)
-            if answer is None:  # values of other types (NumPy, Fraction): as the command line's text
-                given = {name.replace("-", "_"): value for name, value in zip(flat[::2], flat[1::2]) if value is not None}
-                flat = tuple(part for pair in _convert.option_texts(given, bare=()) for part in pair)
-                answer = _simulate_chain(self._prepared, flat, Result, not events, direct, MAX_EVENTS)
-                if answer is None:
-                    raise TypeError("simulate: a keyword's value is of a type it does not read")
-        except ValueError as error:
-            raise ValueError(_message(str(error))) from None
+        answer = _run_simulate(
+            lambda options: _simulate_chain(self._prepared, options, Result, not events, direct, MAX_EVENTS), flat)
         if progress is not None:
             progress(1.0, "done")
         return _simulated(*answer)
+
+
+def _with_samples(flat, samples):
+    """The options (name, value, ...) with the samples asked for: a step, or the times."""
+    if samples is None:
+        return flat
+    grid = isinstance(samples, (list, tuple)) or (isinstance(samples, _np.ndarray) and samples.ndim > 0)
+    return flat + ("sample-times" if grid else "sample-step", samples)
+
+
+def _run_simulate(call, flat):
+    """call(options) with the options (name, value, ...) handed over as they are, or, when one
+    is of a type the native call does not read (NumPy scalars, Fraction), as the command line's
+    text; a refusal as ValueError in the module's words."""
+    try:
+        answer = call(flat)
+        if answer is None:
+            given = {name.replace("-", "_"): value for name, value in zip(flat[::2], flat[1::2]) if value is not None}
+            answer = call(tuple(part for pair in _convert.option_texts(given, bare=()) for part in pair))
+            if answer is None:
+                raise TypeError("simulate: a keyword's value is of a type it does not read")
+    except ValueError as error:
+        raise ValueError(_message(str(error))) from None
+    return answer
 
 
 def _check_held_events(events, contacts):
