@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/methods/runners.h"
+#include "core/numbers/vector_state.h"
 #include "core/methods/scaled_run.h"
 
 namespace grazelab::core::methods {
@@ -168,11 +169,13 @@ Task prepared(Task task) {
 
 MethodRun runMethod(const Task& task, const MethodSetting& setting, const WorkBudget& budget,
                     std::stop_token stop) {
+  clearUpperVectorState();  // timed: at the CPU's full speed, whatever ran before
   return runOn(task, setting, budget, std::move(stop));
 }
 
 ChainMethodRun runMethod(const ChainTask& task, const MethodSetting& setting,
                          const WorkBudget& budget, std::stop_token stop) {
+  clearUpperVectorState();  // timed: at the CPU's full speed, whatever ran before
   return runOn(task, setting, budget, std::move(stop));
 }
 

@@ -10,6 +10,7 @@
 #include <span>
 #include <utility>
 
+#include "core/numbers/vector_state.h"
 #include "core/solver/chain_stick.h"
 
 namespace grazelab::core {
@@ -400,6 +401,7 @@ bool BasicChainSimulator<S>::advance(long contactBudget, std::stop_token stop) {
   const long pieceEnd = m_maxContacts - m_run.contacts > contactBudget ? m_run.contacts + contactBudget : m_maxContacts;
   if (m_stepper) return advanceNotes(pieceEnd);
   while (m_run.contacts < pieceEnd) {
+    clearUpperVectorState();  // an event's sink may have run a library's AVX code
     if (m_stop.stop_requested()) return finish(StopReason::Cancelled, state, t);
     // m_flight goes on from `state` only into the flight right after its periodic touch
     const bool flightKept = std::exchange(m_flightKept, false);
@@ -542,6 +544,7 @@ bool BasicChainSimulator<S>::advanceNotes(long pieceEnd) {
   const S horizon = m_tEnd > 0 ? S(std::numeric_limits<double>::infinity()) : S(twoPi<S>() * S(kFlightSearchPeriods));
   const auto physical = [&](const BasicState<S>& scaled) { return chainStateOf(m_scale.toPhysical(scaled)); };
   while (m_run.contacts < pieceEnd) {
+    clearUpperVectorState();  // an event's sink may have run a library's AVX code
     if (m_stop.stop_requested()) return finish(StopReason::Cancelled, physical(m_scaled.x), m_t);
     if (m_scaled.tau >= tauEnd) {
       // an event at the end time: its state is the end's (and the sample due there)

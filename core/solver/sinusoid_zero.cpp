@@ -8,6 +8,8 @@
 #include <limits>
 #include <optional>
 
+#include "core/numbers/vector_state.h"
+
 namespace grazelab::core {
 namespace {
 
@@ -312,6 +314,7 @@ BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& sum, std::type_identity_t
   using std::max;
   using std::min;
   constexpr S kEps = epsilonOf<S>();
+  clearUpperVectorState();  // its SSE arithmetic at full speed, whoever called it
   thread_local typename Evaluator<S>::Vector amplitudes;
   const Evaluator<S> f(sum, period, amplitudes);
   const S end = period > 0 ? period : horizon;
