@@ -5,7 +5,9 @@
 namespace grazelab::core {
 
 void clearUpperVectorState() noexcept {
-#if defined(__x86_64__) && defined(__GNUC__)
+  // (a build for AVX encodes its own SSE arithmetic with VEX, which does not wait on the upper
+  // halves, and could hold 256-bit values in them here: nothing to do, and nothing to clear)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__AVX__)
   // vzeroupper is an invalid instruction without AVX (or with AVX the system does not save)
   static const bool hasAvx = [] {
     __builtin_cpu_init();

@@ -5,7 +5,8 @@
 namespace grazelab::core {
 
 /// Marks the upper halves of the CPU's AVX registers clean (vzeroupper), on an x86-64 CPU that
-/// has them; nothing elsewhere. Called where core's hot loops begin (each contact of a run, each
+/// has them, in a build for plain x86-64 by GCC or Clang; nothing elsewhere (a build for AVX
+/// does not need it). Called where core's hot loops begin (each contact of a run, each
 /// contact search, each method's run), because code it does not control may leave them dirty:
 /// core is compiled for plain x86-64 (SSE), and after a library's AVX code returns without
 /// vzeroupper every SSE instruction waits on those halves. Measured (docs/design.md, "Dirty
