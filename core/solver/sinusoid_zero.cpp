@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <vector>
 
 #include "core/numbers/vector_state.h"
 
@@ -93,6 +94,12 @@ struct Evaluator {
   // the plain sum's rounding bounds of f, f', f'' are linear in |t|: roundings[m] + |t| growth[m]
   // (sum_j w_j^m R_j (2 + 2 n_j) and sum_j w_j^(m+1) R_j), summed once here
   S roundings[4] = {0, 0, 0, 0}, growth[4] = {0, 0, 0, 0};
+  // sum_j w_j^m R_j, m = 0 .. 4: what an error in each mode's phase (a rotated evaluation's)
+  // moves f and its derivatives by
+  S powers[5] = {0, 0, 0, 0, 0};
+  // evaluated mode by mode at t itself (no harmonics, not periodic): each mode's cos and sin
+  // can then be kept and turned to a nearby time (rotated)
+  bool rotates = false;
 
   Evaluator(const BasicSinusoidSum<S>& f, const S& periodOfF, Vector& buffer)
       : sum(f), period(periodOfF), amplitude(buffer) {
@@ -116,15 +123,62 @@ struct Evaluator {
       for (int m = 0; m < 4; ++m, power *= w) {
         roundings[m] += power * (2 + 2 * n);
         growth[m] += power * w;
+        powers[m] += power;
       }
+      powers[4] += power;
     }
+    rotates = highest == 0 && !(period > 0);
   }
   struct Value {
     S f, df, error, dfError;
     S d2f = 0, d2fError = 0;
     S d3f = 0, d3fError = 0;
+    bool kept = false;  ///< each mode's cos and sin were kept (at(t, keep))
   };
-  Value at(const S& t) const {
+  // One mode's term and its first three derivatives from its cos and sin, added to `value`.
+  void addPlain(Value& value, Eigen::Index j, const S& c, const S& s) const {
+    const S w = sum.w[j], a = sum.a[j], b = sum.b[j];
+    value.f += a * c + b * s;
+    value.df += w * (b * c - a * s);
+    value.d2f -= w * w * (a * c + b * s);
+    value.d3f += w * w * w * (a * s - b * c);
+  }
+  // The plain sum's rounding bounds at t (each mode's cos and sin within an ulp or so, and the
+  // argument's rounding, |x| eps, moving a term by that times its derivative), plus a phase
+  // error of `phase` (relative, each mode's) and a time off by `shift`.
+  void plainErrors(Value& value, const S& t, const S& phase, const S& shift) const {
+    using std::abs;
+    constexpr S kEps = epsilonOf<S>();
+    const S at = abs(t);
+    value.error = 8 * kEps * (abs(sum.offset) + (roundings[0] + at * growth[0])) + phase * powers[0] + shift * powers[1];
+    value.dfError = 8 * kEps * (roundings[1] + at * growth[1]) + phase * powers[1] + shift * powers[2];
+    value.d2fError = 8 * kEps * (roundings[2] + at * growth[2]) + phase * powers[2] + shift * powers[3];
+    value.d3fError = 8 * kEps * (roundings[3] + at * growth[3]) + phase * powers[3] + shift * powers[4];
+  }
+  // f about t from each mode's cos and sin at a time nearby (`from`: n cosines, then n sines),
+  // each turned by the angle w_j delta (`turn`: cos w_j delta, then sin; `sign` -1 turns back):
+  // no sine or cosine evaluated. The turned values go to `to`. The phases carry `turns` roundings
+  // of a turn (6 eps each: the turn's own cos and sin, and the product's), and the time they are
+  // at is within `shift` of t.
+  Value rotated(const S* from, const S* turn, int sign, S* to, const S& t, int turns, const S& shift) const {
+    constexpr S kEps = epsilonOf<S>();
+    const Eigen::Index n = sum.a.size();
+    Value value{sum.offset, S(0), S(0), S(0)};
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const S cosTurn = turn[j], sinTurn = sign > 0 ? turn[n + j] : S(-turn[n + j]);
+      const S c = from[j] * cosTurn - from[n + j] * sinTurn;
+      const S s = from[n + j] * cosTurn + from[j] * sinTurn;
+      to[j] = c;
+      to[n + j] = s;
+      addPlain(value, j, c, s);
+    }
+    plainErrors(value, t, 6 * kEps * S(turns), shift);
+    value.kept = true;
+    return value;
+  }
+  /// f and its derivatives at t; with `keep` (2n numbers), where f is the plain sum at t itself
+  /// (rotates, away from the Taylor form near 0), each mode's cos then sin put there (kept).
+  Value at(const S& t, S* keep = nullptr) const {
     using std::abs;
     using std::cos;
     using std::sin;
@@ -159,10 +213,11 @@ struct Evaluator {
       // rounding (|x| eps) moves a term by that times its derivative
       const S termRoundings = 2 + 2 * n;
       if (k == 0) {
-        value.f += a * c + b * s;
-        value.df += w * (b * c - a * s);
-        value.d2f -= w * w * (a * c + b * s);
-        value.d3f += w * w * w * (a * s - b * c);
+        addPlain(value, j, c, s);
+        if (keep) {
+          keep[j] = c;
+          keep[sum.a.size() + j] = s;
+        }
         continue;  // its rounding bound after the loop
       }
       // f's first k Taylor coefficients at 0 are 0 exactly: f = sum a_j C_k + b_j S_k
@@ -179,10 +234,9 @@ struct Evaluator {
       d2Size += w * w * amplitude[j] * (termRoundings * scale.of[k2] + ax * scale.of[std::max(k2 - 1, 0)]);
     }
     if (k == 0) {
-      const S at = abs(tau);
-      size += roundings[0] + at * growth[0];
-      dSize += roundings[1] + at * growth[1];
-      d2Size += roundings[2] + at * growth[2];
+      plainErrors(value, tau, S(0), S(0));
+      value.kept = keep && rotates;
+      return value;
     }
     value.error = 8 * kEps * size;
     value.dfError = 8 * kEps * dSize;
@@ -190,6 +244,50 @@ struct Evaluator {
     value.d3fError = 8 * kEps * (roundings[3] + abs(tau) * growth[3]);
     return value;
   }
+};
+
+// Windows a piece's halvings make, depth by depth: each mode's phase at a window's middle is its
+// parent's turned by w_j times a fixed offset (a piece of width P: P/4 at depth 1, P/8 at 2, ...),
+// so that the cos and sin of those angles, made once per depth, replace each mode's sin and cos
+// (most of a long search's time). Kept per thread for the chain searched last (a run's flights
+// have the same frequencies and pieces).
+template <typename S>
+class Turns {
+ public:
+  static constexpr int kDepths = 48;  // deeper windows are evaluated directly
+  /// Ready for the frequencies `w` and pieces of width `piece`.
+  void prepare(const Eigen::Matrix<S, Eigen::Dynamic, 1>& w, const S& piece) {
+    if (m_piece == piece && m_w.size() == w.size() && m_w == w) return;
+    m_w = w;
+    m_piece = piece;
+    m_table.assign(std::size_t(kDepths) * 2 * std::size_t(w.size()), S(0));
+    m_made.assign(kDepths, false);
+  }
+  /// The offset of a window's middle from its parent's at `depth` (>= 1): P / 2^(depth + 1).
+  S offset(int depth) const { return timesPowerOfTwo(m_piece, -(depth + 1)); }
+  /// cos w_j offset, then sin w_j offset, for every mode.
+  const S* at(int depth) {
+    using std::cos;
+    using std::sin;
+    const std::size_t n = std::size_t(m_w.size());
+    S* turn = m_table.data() + std::size_t(depth) * 2 * n;
+    if (!m_made[std::size_t(depth)]) {
+      const S delta = offset(depth);
+      for (std::size_t j = 0; j < n; ++j) {
+        const S angle = m_w[Eigen::Index(j)] * delta;
+        turn[j] = cos(angle);
+        turn[n + j] = sin(angle);
+      }
+      m_made[std::size_t(depth)] = true;
+    }
+    return turn;
+  }
+
+ private:
+  Eigen::Matrix<S, Eigen::Dynamic, 1> m_w;
+  S m_piece = 0;
+  std::vector<S> m_table;
+  std::vector<bool> m_made;
 };
 
 template <typename S>
@@ -200,6 +298,21 @@ struct Search {
   long windows = 0;
   long maxWindows = 0;
   S resolution = 0;  // windows narrower than this are not halved again
+  // Turning phases (f.rotates): the turns by depth, a slot of 2n numbers per depth for the phases
+  // of the window being searched at that depth, and the width of the piece being searched (0:
+  // a piece of another width, the last one, evaluated directly)
+  Turns<S>* turns = nullptr;
+  S* slots = nullptr;
+  S piece = 0;
+  // A window's middle, with its modes' phases when kept (in its depth's slot): how many turns
+  // they carry and how far the time they are at may be from the middle.
+  struct Phases {
+    const S* phases = nullptr;
+    S middle = 0;
+    int turns = 0;
+    S shift = 0;
+  };
+  static constexpr int kMostTurns = 40;  // then evaluated directly again
   // where f came within rounding of 0 while rising, undecided until f is seen again resolvably
   // above 0 (a crossing there) or below it (a touch there: its top within rounding of 0)
   std::optional<S> pending;
@@ -249,15 +362,40 @@ struct Search {
     return value;
   }
 
+  // f at a window's middle at `depth`: turned from its parent's phases where it can, else
+  // evaluated (and its phases kept where they can be turned from)
+  Value middleValue(const S& middle, int depth, const Phases& parent, int side, Phases& mine) {
+    using std::abs;
+    constexpr S kEps = epsilonOf<S>();
+    S* slot = piece > 0 && depth < Turns<S>::kDepths ? slots + std::size_t(depth) * 2 * std::size_t(f.sum.a.size()) : nullptr;
+    mine = {nullptr, middle, 0, S(0)};
+    // (near t = 0 a sum that starts on 0 is evaluated in its Taylor form, which keeps no phases)
+    const bool plainThere = f.sum.startTerms == 0 || abs(middle) * f.fastest >= S(0.5);
+    if (slot && parent.phases && parent.turns < kMostTurns && plainThere) {
+      // the parent's middle turned by the depth's offset is within `gap` of this middle (the
+      // halving rounds each end and middle), and the parent's own phases were within its shift
+      const S offset = turns->offset(depth);
+      const S gap = abs(S(S(parent.middle - middle) + side * offset)) + 2 * kEps * offset;
+      mine = {slot, middle, parent.turns + 1, S(parent.shift + gap)};
+      return f.rotated(parent.phases, turns->at(depth), side, slot, middle, mine.turns, mine.shift);
+    }
+    const Value value = f.at(middle, slot);
+    if (value.kept) mine.phases = slot;
+    return value;
+  }
+
   // the first zero in (left, right], given f there; windows come from the left, one after the
-  // other, so `pending` always refers to a point left of this window
-  std::optional<Zero> first(const S& left, const S& right, S& fLeft, S& fRight) {
+  // other, so `pending` always refers to a point left of this window. `parent`: the window this
+  // one halves (its middle on the `side` -1 or 1 of the parent's)
+  std::optional<Zero> first(const S& left, const S& right, S& fLeft, S& fRight, int depth = 0,
+                            const Phases& parent = {}, int side = 0) {
     using std::abs;
     using std::min;
     if (++windows > maxWindows) return Zero{ZeroKind::Budget, left};
     const S h = right - left;
     const S middle = left + h / 2;
-    const Value m = f.at(middle);
+    Phases phases;
+    const Value m = middleValue(middle, depth, parent, side, phases);
     // Taylor about the middle to third order: f and its first two derivatives are known there,
     // only the third is bounded (by sum w_j^3 R_j)
     const S r = h / 2;
@@ -292,15 +430,20 @@ struct Search {
       }
       if (sign(known(left, fLeft), m.error) >= 0) return Zero{ZeroKind::Crossing, pending.value_or(left)};
       // from below 0 to above it: the one crossing of the window
-      return Zero{ZeroKind::Crossing, crossing(left, right, middle, m)};
+      // (Newton's iterate depends on its start: from f evaluated there, not turned, as every
+      // crossing is refined, so that the time found does not depend on how f got there)
+      return Zero{ZeroKind::Crossing, crossing(left, right, middle, phases.turns > 0 ? f.at(middle) : m)};
     }
     if (h <= resolution) {
       // f and f' both zero within rounding: a touch
       return Zero{ZeroKind::Touch, pending.value_or(middle)};
     }
-    S fMiddle = m.f;
-    if (auto found = first(left, middle, fLeft, fMiddle)) return found;
-    return first(middle, right, fMiddle, fRight);
+    // f at the middle, as the halves' end: a turned value is not (its bound is wider than a
+    // half's may be, evaluated afresh: the turns' reset, the Taylor form near 0), so evaluated
+    // again there if a half needs it
+    S fMiddle = phases.turns > 0 ? std::numeric_limits<S>::quiet_NaN() : m.f;
+    if (auto found = first(left, middle, fLeft, fMiddle, depth + 1, phases, -1)) return found;
+    return first(middle, right, fMiddle, fRight, depth + 1, phases, 1);
   }
 };
 
@@ -325,7 +468,7 @@ BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& sum, std::type_identity_t
     return {ZeroKind::Touch, S(0)};
   }
   const S fastest = twoPi<S>() / sum.w.maxCoeff();
-  Search<S> search{f, 0, maxWindows, S(0), std::nullopt};
+  Search<S> search{f, 0, maxWindows, S(0), nullptr, nullptr, S(0), std::nullopt};
   // the fastest mode's period over 2^(digits - 13) (2^40 in double): below that a window holds
   // f's zero and critical point within the precision's resolution of the time
   search.resolution = timesPowerOfTwo(S(max(end, fastest)), -(std::numeric_limits<S>::digits - 13));
@@ -397,8 +540,19 @@ BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& sum, std::type_identity_t
   };
   S left = t0;
   S fLeft = start.f;
+  // a long search mode by mode: the phases turned from window to window (Turns)
+  thread_local Turns<S> turns;
+  thread_local std::vector<S> slots;
+  if (f.rotates) {
+    turns.prepare(sum.w, piece);
+    slots.resize(std::size_t(Turns<S>::kDepths) * 2 * std::size_t(sum.a.size()));
+    search.turns = &turns;
+    search.slots = slots.data();
+  }
   while (left < searchEnd) {
     const S right = min(searchEnd, S(left + piece));
+    // (the last piece, shorter, is halved from its own width: evaluated directly)
+    search.piece = f.rotates && S(left + piece) <= searchEnd ? piece : S(0);
     S fRight = std::numeric_limits<S>::quiet_NaN();  // evaluated if needed
     if (auto found = search.first(left, right, fLeft, fRight)) return refined(*found);
     left = right;

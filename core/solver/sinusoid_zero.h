@@ -64,7 +64,10 @@ using FirstZero = BasicFirstZero<double>;
 /// closer than double resolves. When f(0) = 0 within rounding, f must leave 0 downward by its
 /// slope (or, at f'(0) = 0, its curvature): near t = 0 Taylor's bound rules out a zero; otherwise
 /// the answer is a Touch at 0. A periodic f (`period` > 0) is searched over one period; any other
-/// up to `horizon` or `maxWindows` windows.
+/// up to `horizon` or `maxWindows` windows, in pieces a fastest period wide. Where f is summed
+/// mode by mode (no harmonics), the halvings turn each mode's cos and sin from the window they
+/// halve instead of evaluating them, and the turns' roundings go into the bounds; a window's ends
+/// and a crossing are still evaluated (docs/model.md section 11).
 ///
 /// `leaving` (with startTerms = its order, 3 or 4) marks an f that starts where a held mass is
 /// released: f and its first order - 1 derivatives are 0 there and f leaves 0 by the next one,

@@ -2,8 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // Tests for core/solver/sinusoid_zero.cpp, the certified first zero of a sum of sinusoids: no zero
 // is missed that a dense scan in long double sees, on sums that come within a hair of 0 again and
-// again (a slow mode carrying the motion to the stop, fast ones on top), and a periodic sum whose
-// top passes 0 by a hair reaches it.
+// again (a slow mode carrying the motion to the stop, fast ones on top), a periodic sum whose
+// top passes 0 by a hair reaches it, and so does a long search whose windows turn their phases.
 #include "core/solver/sinusoid_zero.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +12,8 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
+#include <vector>
 
 namespace grazelab::core {
 namespace {
@@ -154,6 +156,72 @@ TEST(SinusoidZero, NoZeroIsMissedThatADenseScanSees) {
   }
   EXPECT_GT(scanned, 25);
   EXPECT_GT(nearGrazing, 10);  // (not only the flights from the stop)
+}
+
+// The tops of f (its local maxima) over (0, horizon), refined by Newton's method on f' (long
+// double), each as (t, f(t)).
+template <typename S>
+std::vector<std::pair<long double, long double>> topsOf(const BasicSinusoidSum<S>& f, long double horizon) {
+  const auto derivative = [&f](long double t, int order) {
+    long double value = 0;
+    for (Eigen::Index j = 0; j < f.a.size(); ++j) {
+      const long double w = static_cast<long double>(f.w[j]), x = w * t;
+      const long double a = static_cast<long double>(f.a[j]), b = static_cast<long double>(f.b[j]);
+      value += order == 1 ? w * (b * std::cos(x) - a * std::sin(x)) : -w * w * (a * std::cos(x) + b * std::sin(x));
+    }
+    return value;
+  };
+  std::vector<std::pair<long double, long double>> tops;
+  const long double step = 2 * std::numbers::pi_v<long double> / static_cast<long double>(f.w.maxCoeff()) / 64;
+  long double before = derivative(step, 1);
+  for (long double t = 2 * step; t < horizon; t += step) {
+    const long double now = derivative(t, 1);
+    if (before > 0 && now <= 0) {
+      long double top = t - step / 2;
+      for (int i = 0; i < 40; ++i) top -= derivative(top, 1) / derivative(top, 2);
+      if (std::abs(top - t) < 2 * step) tops.emplace_back(top, valueAt(f, top));
+    }
+    before = now;
+  }
+  return tops;
+}
+
+// Far into a long search (hundreds of pieces, windows halved some 15 times near a top), the
+// first top of f that passes 0, by 1e-9 of its size, is reached: the windows turned from their
+// parents' phases (every window of a chain with no common period but the middle of each piece)
+// clear nothing that holds a zero, and the crossing is found where f, evaluated, changes sign.
+TEST(SinusoidZero, TurnedPhasesReachATopThatPassesZeroByAHairFarAway) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int reached = 0;
+  for (int c = 0; c < 24; ++c) {
+    SinusoidSum f = nearGrazingSum<double>(2 + c % 8, 0.0, 0.02 + 0.3 * unit(random), false, random);
+    f.offset = 0;
+    const double horizon = 60 * 2 * std::numbers::pi / f.w.minCoeff();
+    const auto tops = topsOf(f, horizon);
+    // the highest top, in the search's second half, and clear of the next highest
+    std::vector<std::pair<long double, long double>> sorted = tops;
+    std::sort(sorted.begin(), sorted.end(), [](const auto& x, const auto& y) { return x.second > y.second; });
+    if (sorted.size() < 2 || sorted[0].first < horizon / 2 || sorted[0].second - sorted[1].second < 1e-6) continue;
+    const long double top = sorted[0].first, height = sorted[0].second;
+    f.offset = -static_cast<double>(height) + 1e-9 * static_cast<double>(height);  // passes 0 by a hair
+    const long double over = valueAt(f, top);
+    ASSERT_GT(over, 0.0L) << "case " << c;
+    const FirstZero zero = firstZero(f, 0.0, horizon);
+    ASSERT_EQ(zero.kind, ZeroKind::Crossing) << "case " << c << " top at " << static_cast<double>(top);
+    // the crossing just before that top: f rises through 0 within the width of its excursion
+    long double curvature = 0;
+    for (Eigen::Index j = 0; j < f.a.size(); ++j) {
+      const long double w = f.w[j], x = w * top;
+      curvature -= w * w * (f.a[j] * std::cos(x) + f.b[j] * std::sin(x));
+    }
+    const long double width = std::sqrt(2 * over / -curvature);
+    EXPECT_LT(zero.t, top) << "case " << c;
+    EXPECT_GT(zero.t, top - 1.5L * width) << "case " << c;
+    EXPECT_LT(std::abs(valueAt(f, zero.t)), 1e-12L * height) << "case " << c;
+    ++reached;
+  }
+  EXPECT_GE(reached, 12);
 }
 
 }  // namespace
