@@ -248,9 +248,10 @@ struct Evaluator {
 
 // Windows a piece's halvings make, depth by depth: each mode's phase at a window's middle is its
 // parent's turned by w_j times a fixed offset (a piece of width P: P/4 at depth 1, P/8 at 2, ...),
-// so that the cos and sin of those angles, made once per depth, replace each mode's sin and cos
-// (most of a long search's time). Kept per thread for the chain searched last (a run's flights
-// have the same frequencies and pieces).
+// and a piece's middle is the one before's turned by w_j P (depth -1), so that the cos and sin
+// of those angles, made once per depth, replace each mode's sin and cos (most of a long search's
+// time). Kept per thread for the chain searched last (a run's flights have the same frequencies
+// and pieces).
 template <typename S>
 class Turns {
  public:
@@ -260,25 +261,26 @@ class Turns {
     if (m_piece == piece && m_w.size() == w.size() && m_w == w) return;
     m_w = w;
     m_piece = piece;
-    m_table.assign(std::size_t(kDepths) * 2 * std::size_t(w.size()), S(0));
-    m_made.assign(kDepths, false);
+    m_table.assign(std::size_t(kDepths + 1) * 2 * std::size_t(w.size()), S(0));
+    m_made.assign(kDepths + 1, false);
   }
-  /// The offset of a window's middle from its parent's at `depth` (>= 1): P / 2^(depth + 1).
+  /// The offset of a window's middle from its parent's at `depth` (>= 1): P / 2^(depth + 1);
+  /// at depth -1, of a piece's middle from the one before's: P.
   S offset(int depth) const { return timesPowerOfTwo(m_piece, -(depth + 1)); }
   /// cos w_j offset, then sin w_j offset, for every mode.
   const S* at(int depth) {
     using std::cos;
     using std::sin;
     const std::size_t n = std::size_t(m_w.size());
-    S* turn = m_table.data() + std::size_t(depth) * 2 * n;
-    if (!m_made[std::size_t(depth)]) {
+    S* turn = m_table.data() + std::size_t(depth + 1) * 2 * n;
+    if (!m_made[std::size_t(depth + 1)]) {
       const S delta = offset(depth);
       for (std::size_t j = 0; j < n; ++j) {
         const S angle = m_w[Eigen::Index(j)] * delta;
         turn[j] = cos(angle);
         turn[n + j] = sin(angle);
       }
-      m_made[std::size_t(depth)] = true;
+      m_made[std::size_t(depth + 1)] = true;
     }
     return turn;
   }
@@ -313,6 +315,11 @@ struct Search {
     S shift = 0;
   };
   static constexpr int kMostTurns = 40;  // then evaluated directly again
+  // a piece's middle turned from the one before's at most this many times in a row (each
+  // piece's windows then turn from it, kMostTurns in all)
+  static constexpr int kMarchTurns = 16;
+  // the middle of the piece searched last, with its phases (in slot 0) when kept
+  Phases lastPiece;
   // where f came within rounding of 0 while rising, undecided until f is seen again resolvably
   // above 0 (a crossing there) or below it (a touch there: its top within rounding of 0)
   std::optional<S> pending;
@@ -364,20 +371,21 @@ struct Search {
 
   // f at a window's middle at `depth`: turned from its parent's phases where it can, else
   // evaluated (and its phases kept where they can be turned from)
-  Value middleValue(const S& middle, int depth, const Phases& parent, int side, Phases& mine) {
+  // (`turnAt`: the depth whose offset parts the two middles, -1 from one piece to the next)
+  Value middleValue(const S& middle, int depth, int turnAt, const Phases& parent, int side, Phases& mine) {
     using std::abs;
     constexpr S kEps = epsilonOf<S>();
     S* slot = piece > 0 && depth < Turns<S>::kDepths ? slots + std::size_t(depth) * 2 * std::size_t(f.sum.a.size()) : nullptr;
     mine = {nullptr, middle, 0, S(0)};
     // (near t = 0 a sum that starts on 0 is evaluated in its Taylor form, which keeps no phases)
     const bool plainThere = f.sum.startTerms == 0 || abs(middle) * f.fastest >= S(0.5);
-    if (slot && parent.phases && parent.turns < kMostTurns && plainThere) {
+    if (slot && parent.phases && parent.turns < (turnAt < 0 ? kMarchTurns : kMostTurns) && plainThere) {
       // the parent's middle turned by the depth's offset is within `gap` of this middle (the
       // halving rounds each end and middle), and the parent's own phases were within its shift
-      const S offset = turns->offset(depth);
+      const S offset = turns->offset(turnAt);
       const S gap = abs(S(S(parent.middle - middle) + side * offset)) + 2 * kEps * offset;
       mine = {slot, middle, parent.turns + 1, S(parent.shift + gap)};
-      return f.rotated(parent.phases, turns->at(depth), side, slot, middle, mine.turns, mine.shift);
+      return f.rotated(parent.phases, turns->at(turnAt), side, slot, middle, mine.turns, mine.shift);
     }
     const Value value = f.at(middle, slot);
     if (value.kept) mine.phases = slot;
@@ -395,7 +403,10 @@ struct Search {
     const S h = right - left;
     const S middle = left + h / 2;
     Phases phases;
-    const Value m = middleValue(middle, depth, parent, side, phases);
+    // a piece turns from the one before (its middle's phases in slot 0, overwritten in place)
+    const Value m = depth == 0 ? middleValue(middle, 0, -1, lastPiece, 1, phases)
+                               : middleValue(middle, depth, depth, parent, side, phases);
+    if (depth == 0) lastPiece = phases;
     // Taylor about the middle to third order: f and its first two derivatives are known there,
     // only the third is bounded (by sum w_j^3 R_j)
     const S r = h / 2;
@@ -468,7 +479,7 @@ BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& sum, std::type_identity_t
     return {ZeroKind::Touch, S(0)};
   }
   const S fastest = twoPi<S>() / sum.w.maxCoeff();
-  Search<S> search{f, 0, maxWindows, S(0), nullptr, nullptr, S(0), std::nullopt};
+  Search<S> search{f, 0, maxWindows, S(0), nullptr, nullptr, S(0), {}, std::nullopt};
   // the fastest mode's period over 2^(digits - 13) (2^40 in double): below that a window holds
   // f's zero and critical point within the precision's resolution of the time
   search.resolution = timesPowerOfTwo(S(max(end, fastest)), -(std::numeric_limits<S>::digits - 13));
