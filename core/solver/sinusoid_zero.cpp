@@ -150,10 +150,15 @@ struct Evaluator {
     using std::abs;
     constexpr S kEps = epsilonOf<S>();
     const S at = abs(t);
-    value.error = 8 * kEps * (abs(sum.offset) + (roundings[0] + at * growth[0])) + phase * powers[0] + shift * powers[1];
+    value.error = plainError(t) + phase * powers[0] + shift * powers[1];
     value.dfError = 8 * kEps * (roundings[1] + at * growth[1]) + phase * powers[1] + shift * powers[2];
     value.d2fError = 8 * kEps * (roundings[2] + at * growth[2]) + phase * powers[2] + shift * powers[3];
     value.d3fError = 8 * kEps * (roundings[3] + at * growth[3]) + phase * powers[3] + shift * powers[4];
+  }
+  // The plain sum's rounding bound of f at t.
+  S plainError(const S& t) const {
+    using std::abs;
+    return 8 * epsilonOf<S>() * (abs(sum.offset) + (roundings[0] + abs(t) * growth[0]));
   }
   // f about t from each mode's cos and sin at a time nearby (`from`: n cosines, then n sines),
   // each turned by the angle w_j delta (`turn`: cos w_j delta, then sin; `sign` -1 turns back):
@@ -380,8 +385,9 @@ struct Search {
     // (near t = 0 a sum that starts on 0 is evaluated in its Taylor form, which keeps no phases)
     const bool plainThere = f.sum.startTerms == 0 || abs(middle) * f.fastest >= S(0.5);
     if (slot && parent.phases && parent.turns < (turnAt < 0 ? kMarchTurns : kMostTurns) && plainThere) {
-      // the parent's middle turned by the depth's offset is within `gap` of this middle (the
-      // halving rounds each end and middle), and the parent's own phases were within its shift
+      // the parent's middle turned by the offset is within `gap` of this middle (the halving
+      // rounds each end and middle, the march each piece's ends), and the parent's own phases
+      // were within its shift
       const S offset = turns->offset(turnAt);
       const S gap = abs(S(S(parent.middle - middle) + side * offset)) + 2 * kEps * offset;
       mine = {slot, middle, parent.turns + 1, S(parent.shift + gap)};
@@ -407,6 +413,9 @@ struct Search {
     const Value m = depth == 0 ? middleValue(middle, 0, -1, lastPiece, 1, phases)
                                : middleValue(middle, depth, depth, parent, side, phases);
     if (depth == 0) lastPiece = phases;
+    // a window's ends are evaluated, never turned: judged by their own rounding bound where the
+    // middle's is widened by its turns
+    const auto endError = [&](const S& t) { return phases.turns > 0 ? f.plainError(t) : m.error; };
     // Taylor about the middle to third order: f and its first two derivatives are known there,
     // only the third is bounded (by sum w_j^3 R_j)
     const S r = h / 2;
@@ -427,10 +436,10 @@ struct Search {
         // falling: after a rise to within rounding of 0, a touch; from above 0 (never, for an f
         // that starts below it) the zero was crossed at the left
         if (pending) return Zero{ZeroKind::Touch, *pending};
-        if (sign(known(left, fLeft), m.error) > 0) return Zero{ZeroKind::Crossing, left};
+        if (sign(known(left, fLeft), endError(left)) > 0) return Zero{ZeroKind::Crossing, left};
         return std::nullopt;
       }
-      const int signRight = sign(known(right, fRight), m.error);
+      const int signRight = sign(known(right, fRight), endError(right));
       if (signRight < 0) {
         if (pending) return Zero{ZeroKind::Touch, *pending};
         return std::nullopt;
@@ -439,7 +448,7 @@ struct Search {
         if (!pending) pending = right;
         return std::nullopt;
       }
-      if (sign(known(left, fLeft), m.error) >= 0) return Zero{ZeroKind::Crossing, pending.value_or(left)};
+      if (sign(known(left, fLeft), endError(left)) >= 0) return Zero{ZeroKind::Crossing, pending.value_or(left)};
       // from below 0 to above it: the one crossing of the window
       // (Newton's iterate depends on its start: from f evaluated there, not turned, as every
       // crossing is refined, so that the time found does not depend on how f got there)

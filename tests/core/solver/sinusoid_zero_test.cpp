@@ -187,9 +187,10 @@ std::vector<std::pair<long double, long double>> topsOf(const BasicSinusoidSum<S
 }
 
 // Far into a long search (hundreds of pieces, windows halved some 15 times near a top), the
-// first top of f that passes 0, by 1e-9 of its size, is reached: the windows turned from their
-// parents' phases (every window of a chain with no common period but the middle of each piece)
-// clear nothing that holds a zero, and the crossing is found where f, evaluated, changes sign.
+// first top of f that passes 0, by 1e-9 of its size, is reached: the phases turned from window to
+// window and from piece to piece (a chain with no common period: sincos only every 17th piece's
+// middle, a window's ends and the refinements) clear nothing that holds a zero, and the crossing
+// is found where f, evaluated, changes sign.
 TEST(SinusoidZero, TurnedPhasesReachATopThatPassesZeroByAHairFarAway) {
   std::mt19937 random(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
