@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "core/methods/runners.h"
-#include "core/numbers/vector_state.h"
 #include "core/methods/scaled_run.h"
+#include "core/numbers/vector_state.h"
 
 namespace grazelab::core::methods {
 
