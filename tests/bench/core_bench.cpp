@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "core/model/two_mass_form.h"
@@ -200,39 +201,42 @@ void DesignSprings(benchmark::State& state) {
 }
 BENCHMARK(DesignSprings)->DenseRange(2, 6)->Unit(benchmark::kMillisecond);
 
-// Contacts of a chain of N masses (core/solver/chain_run.h), items = contacts: Arg(0) the
-// designed 3:2:1 chain of masses 1, 0.2, 0.05 (commensurate: one period searched a flight);
-// Arg(N > 0) a uniform chain of N masses (not commensurate: the search runs to the contact),
-// each from a start that reaches the stop, 2000 contacts.
-void ChainRunContacts(benchmark::State& state) {
+// The chains ChainRunContacts and ChainContactsReady run: Arg(0) the designed 3:2:1 chain of
+// masses 1, 0.2, 0.05 (commensurate: one period searched a flight); Arg(N > 0) a uniform chain
+// of N masses (not commensurate: the search runs to the contact); each with a start that reaches
+// the stop.
+std::pair<core::MassChain, core::ChainState> contactsBenchChain(std::int64_t arg) {
   core::MassChain chain;
-  if (state.range(0) == 0) {
+  if (arg == 0) {
     chain.masses = {1.0, 0.2, 0.05};
     chain.springs = core::designSprings(chain.masses, 1.0, {3, 2, 1}).designs.at(0).springs;
   } else {
-    chain.masses.assign(std::size_t(state.range(0)), 1.0);
-    chain.springs.assign(std::size_t(state.range(0)), 1.0);
+    chain.masses.assign(std::size_t(arg), 1.0);
+    chain.springs.assign(std::size_t(arg), 1.0);
   }
   const Eigen::Index n = chain.size();
   core::ChainState start{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
   for (Eigen::Index i = 0; i < n; ++i) start.v[i] = 0.3 * std::cos(double(i));
   start.v[n - 1] = 1.5 / std::sqrt(chain.masses.back());  // enough energy to reach the stop
+  return {chain, start};
+}
+
+// Contacts of a chain of N masses (core/solver/chain_run.h), the chain made ready in each run,
+// items = contacts, 2000 contacts.
+void ChainRunContacts(benchmark::State& state) {
+  const auto [chain, start] = contactsBenchChain(state.range(0));
   std::int64_t contacts = 0;
   for (auto _ : state) contacts += std::int64_t(core::runChain(chain, start, 2000).events.size());
   state.SetItemsProcessed(contacts);
 }
 BENCHMARK(ChainRunContacts)->Arg(0)->Arg(3)->Arg(10)->Arg(100)->Unit(benchmark::kMillisecond);
 
-// ChainRunContacts's uniform chains of N masses made ready once, outside the timing (their modes:
-// a binary128 eigensolve, half of ChainRunContacts/100's time): the contacts alone, items =
-// contacts, so that issue 50's rates (N = 100: 3e4 contacts/s) are read without the set-up.
+// The same chains made ready once, outside the timing (their modes: a binary128 eigensolve, half
+// of ChainRunContacts/100's time): the contacts alone, so that issue 50's rates (N = 100: 3e4
+// contacts/s) are read without the set-up.
 void ChainContactsReady(benchmark::State& state) {
-  const std::size_t n = std::size_t(state.range(0));
-  const core::MassChain chain{std::vector<double>(n, 1.0), std::vector<double>(n, 1.0), 0, 0, 1.0};
+  const auto [chain, start] = contactsBenchChain(state.range(0));
   const core::ReadyChain ready = core::readyChain(chain);
-  core::ChainState start{Eigen::VectorXd::Zero(Eigen::Index(n)), Eigen::VectorXd::Zero(Eigen::Index(n))};
-  for (std::size_t i = 0; i < n; ++i) start.v[Eigen::Index(i)] = 0.3 * std::cos(double(i));
-  start.v[Eigen::Index(n) - 1] = 1.5;  // enough energy to reach the stop
   std::int64_t contacts = 0;
   for (auto _ : state) contacts += std::int64_t(core::runChain(ready, start, 2000).events.size());
   state.SetItemsProcessed(contacts);
