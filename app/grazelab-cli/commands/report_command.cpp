@@ -116,7 +116,7 @@ std::optional<double> reportHorizon(const OptionValues& options, ReportInput& in
     return tEnd;
   }
   const double tEnd = kDefaultPeriods * input.period;
-  input.horizonNote = QStringLiteral("t_end = %1 (the default, 200 T2)").arg(tEnd, 0, 'g', 10);
+  input.horizonNote = QStringLiteral("t_end = %1 (the default)").arg(tEnd, 0, 'g', 10);
   return tEnd;
 }
 
@@ -226,7 +226,7 @@ std::optional<ReportProblem> chainProblem(const OptionValues& options, QString& 
   const Eigen::Map<const Eigen::VectorXd> masses(c.masses.data(), c.size());
   const Eigen::Map<const Eigen::VectorXd> springs(c.springs.data(), c.size());
   input.chainLine = QStringLiteral("%1 masses (%2), springs (%3)%4, stopped mass %5, gap d = %6; "
-                                   "w1 = %7 (its fastest mode)")
+                                   "w1 = %7 (its fastest mode), T2 its slowest period")
                         .arg(c.size())
                         .arg(listText(masses), listText(springs))
                         .arg(c.rightSpring > 0 ? QStringLiteral(", right wall spring %1").arg(numberText(c.rightSpring))
