@@ -6,7 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
+#include "core/experiments/map_chains.h"
 #include "core/orbits/chain_glo.h"
 #include "core/solver/chain_run.h"
 #include "core/solver/trust.h"
@@ -23,6 +25,12 @@ PointSummary noRun() {
   point.firstImpactTime = point.horizon = kNaN;
   point.impacts = point.grazings = point.sticks = -1;
   return point;
+}
+
+// chainMapPeriod of a chain's dynamics
+double periodOf(const ChainDynamics& dynamics) {
+  if (dynamics.period > 0) return dynamics.period;
+  return twoPi<double>() / dynamics.omega.minCoeff();
 }
 
 }  // namespace
@@ -55,11 +63,7 @@ int balancingWeight(const ChainMapSpec& spec) {
   return mode;
 }
 
-double chainMapPeriod(const MassChain& chain) {
-  const ChainDynamics dynamics = chainDynamics(chain);
-  if (dynamics.period > 0) return dynamics.period;
-  return twoPi<double>() / dynamics.omega.minCoeff();
-}
+double chainMapPeriod(const MassChain& chain) { return periodOf(chainDynamics(chain)); }
 
 std::string checkChainMap(const ChainMapSpec& spec) {
   const std::vector<Problem> problems = validate(spec.chain);
@@ -84,7 +88,10 @@ std::string checkChainMap(const ChainMapSpec& spec) {
   return {};
 }
 
-PointSummary chainMapPoint(const ChainMapSpec& spec, std::int64_t column, std::int64_t row, std::stop_token stop) {
+namespace {
+
+PointSummary pointOf(const ChainMapSpec& spec, const MapChains& chain, std::int64_t column, std::int64_t row,
+                     std::stop_token stop) {
   ChainState start = spec.start;
   std::vector<bool> stillModes;  // a GLO start left unpushed: its modes of weight 0 exactly still
   if (spec.x.weight()) {
@@ -96,7 +103,7 @@ PointSummary chainMapPoint(const ChainMapSpec& spec, std::int64_t column, std::i
     double others = 0;
     for (std::size_t j = 0; j < weights.size(); ++j) others += j == balancing ? 0.0 : weights[j];
     weights[balancing] = 1 - others;
-    const ChainGloStart glo = chainGloStart(spec.chain, weights);
+    const ChainGloStart glo = chainGloStartIn(chain.inDouble.dynamics, weights);
     if (glo.problem != GloStartProblem::None) return noRun();
     start = {glo.state.u + spec.push.u, glo.state.v + spec.push.v};
     if (spec.push.u.isZero(0) && spec.push.v.isZero(0)) stillModes = glo.stillModes;
@@ -107,30 +114,38 @@ PointSummary chainMapPoint(const ChainMapSpec& spec, std::int64_t column, std::i
   }
   const int s = spec.chain.stopped() - 1;
   if (!(start.u[s] <= spec.chain.gap)) return noRun();
-  const double period = chainMapPeriod(spec.chain);
   // the map's chain is in double (a parameter axis moves it by double steps): a point raised to a
   // higher precision runs that same chain there
+  const double period = periodOf(chain.inDouble.dynamics);
   PointSummary point;
   const auto summarized = [&](auto zero, bool raise) {
     using S = decltype(zero);
     const BasicChainState<S> first{start.u.cast<S>(), start.v.cast<S>()};
-    return summarizeRun(readyChain(chainCast<S>(spec.chain)), BasicChainStart<S>(first, stillModes), spec.contacts,
-                        period, spec.estimateHorizon, raise, stop, point);
+    return summarizeRun(chain.ready<S>(), BasicChainStart<S>(first, stillModes), spec.contacts, period,
+                        spec.estimateHorizon, raise, stop, point, chain.shadow<S>());
   };
   if (summarized(0.0, true) || summarized(0.0L, true)) return point;
   summarized(Quad(0), false);
   return point;
 }
 
+}  // namespace
+
+PointSummary chainMapPoint(const ChainMapSpec& spec, std::int64_t column, std::int64_t row, std::stop_token stop) {
+  const MapChains chain(spec.chain, spec.estimateHorizon);
+  return pointOf(spec, chain, column, row, std::move(stop));
+}
+
 MapRows computeChainMap(const ChainMapSpec& spec, RowRange rows, const ParallelFor& parallelFor,
                         std::stop_token stop, const MapRowsProgress& progress) {
+  const MapChains chain(spec.chain, spec.estimateHorizon);
   MapRows map = computeRows(
       spec.x.range.count, rows,
-      [&spec](std::int64_t column, std::int64_t row, std::stop_token pointStop) {
-        return chainMapPoint(spec, column, row, pointStop);
+      [&spec, &chain](std::int64_t column, std::int64_t row, std::stop_token pointStop) {
+        return pointOf(spec, chain, column, row, std::move(pointStop));
       },
       noRun(), parallelFor, stop, progress);
-  map.period = chainMapPeriod(spec.chain);
+  map.period = periodOf(chain.inDouble.dynamics);
   return map;
 }
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 
+#include "core/experiments/map_chains.h"
 #include "core/model/two_mass_form.h"
 #include "core/orbits/special_orbits.h"
 #include "core/solver/chain_run.h"
@@ -194,52 +195,32 @@ bool summarizePoint(const MapSpec& spec, const Model& given, const PointValues& 
 }
 
 // The chain of a map whose axes leave the model alone (no mass-ratio, gap or detuning axis), made
-// ready once in each precision for all its points, and its shadows (which point into it: it
-// stays where it was made)
-struct SharedChains {
-  explicit SharedChains(const Model& model)
-      : inDouble(readyChain(model)),
-        inLong(readyChain(convertModel<long double>(model))),
-        inQuad(readyChain(convertModel<Quad>(model))),
-        ofDouble(chainShadow<double>(inLong)),
-        ofLong(chainShadow<long double>(inQuad)),
-        ofQuad(chainShadow<Quad>(inQuad)) {}
-  SharedChains(const SharedChains&) = delete;
-  SharedChains& operator=(const SharedChains&) = delete;
-  BasicReadyChain<double> inDouble;
-  BasicReadyChain<long double> inLong;
-  BasicReadyChain<Quad> inQuad;
-  ChainShadow<double> ofDouble;
-  ChainShadow<long double> ofLong;
-  ChainShadow<Quad> ofQuad;
-};
-
-std::unique_ptr<const SharedChains> sharedChains(const MapSpec& spec) {
+// ready once in each precision for all its points, with its shadows
+std::unique_ptr<const MapChains> sharedChains(const MapSpec& spec) {
   for (const MapVariable variable : {MapVariable::MassRatio, MapVariable::Gap, MapVariable::Detuning}) {
     if (spec.x.variable == variable || spec.y.variable == variable) return nullptr;
   }
   const std::optional<Model> model = pointModel(spec, PointValues{spec, spec.x.at(0), spec.y.at(0)});
   if (!model || !makeTwoMassForm(convertModel<Quad>(*model)).chain) return nullptr;
-  return std::make_unique<const SharedChains>(*model);
+  return std::make_unique<const MapChains>(*model);
 }
 
 // mapPoint, with the map's chains made ready once when it has them
 PointSummary pointOf(const MapSpec& spec, std::int64_t column, std::int64_t row, std::stop_token stop,
-                     const SharedChains* shared) {
+                     const MapChains* shared) {
   const PointValues values{spec, spec.x.at(column), spec.y.at(row)};
   const std::optional<Model> model = pointModel(spec, values);
   if (!model) return invalidPoint();
   // precision auto: double, and the whole point again one precision up (model and start formed
   // there) when a contact is a touch its precision cannot tell from a crossing
   PointSummary summary;
-  if (summarizePoint<double>(spec, *model, values, true, stop, shared ? &shared->inDouble : nullptr,
-                             shared ? &shared->ofDouble : nullptr, summary) ||
-      summarizePoint<long double>(spec, *model, values, true, stop, shared ? &shared->inLong : nullptr,
-                                  shared ? &shared->ofLong : nullptr, summary)) {
-    return summary;
-  }
-  summarizePoint<Quad>(spec, *model, values, false, stop, shared ? &shared->inQuad : nullptr,
-                       shared ? &shared->ofQuad : nullptr, summary);
+  const auto summarized = [&](auto zero, bool raise) {
+    using S = decltype(zero);
+    return summarizePoint<S>(spec, *model, values, raise, stop, shared ? &shared->ready<S>() : nullptr,
+                             shared ? shared->shadow<S>() : nullptr, summary);
+  };
+  if (summarized(0.0, true) || summarized(0.0L, true)) return summary;
+  summarized(Quad(0), false);
   return summary;
 }
 
@@ -477,7 +458,7 @@ MapRows computeRows(std::int64_t columns, RowRange rows, const MapPoint& point, 
 
 MapRows computeMap(const MapSpec& spec, RowRange rows, const ParallelFor& parallelFor,
                std::stop_token stop, const MapRowsProgress& progress) {
-  const std::unique_ptr<const SharedChains> shared = sharedChains(spec);
+  const std::unique_ptr<const MapChains> shared = sharedChains(spec);
   MapRows map = computeRows(
       spec.x.count, rows,
       [&spec, &shared](std::int64_t column, std::int64_t row, std::stop_token pointStop) {

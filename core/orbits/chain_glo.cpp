@@ -14,12 +14,17 @@
 
 namespace grazelab::core {
 
+namespace {
+
+// GLO_lambda's data from the mode shapes P (fastest first), their nodes at the stopped mass s
+// (0-based) and the gap
 template <typename S>
-BasicChainGloStart<S> chainGloStartIn(const BasicMassChain<S>& chain, const std::vector<S>& weights) {
+BasicChainGloStart<S> gloStart(const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>& P,
+                               const std::vector<bool>& nodeAtStop, int s, const S& gap,
+                               const std::vector<S>& weights) {
   using std::abs;
   BasicChainGloStart<S> start;
-  const BasicChainModes<S> modes = chainModesIn<S>(chain);
-  const Eigen::Index n = modes.omega.size();
+  const Eigen::Index n = P.cols();
   if (Eigen::Index(weights.size()) != n) {
     start.problem = GloStartProblem::WrongCount;
     return start;
@@ -30,7 +35,7 @@ BasicChainGloStart<S> chainGloStartIn(const BasicMassChain<S>& chain, const std:
       start.problem = GloStartProblem::NotFinite;
       return start;
     }
-    if (modes.nodeAtStop[j] && weights[j] != 0) {
+    if (nodeAtStop[j] && weights[j] != 0) {
       start.problem = GloStartProblem::WeightOnNode;
       return start;
     }
@@ -40,23 +45,38 @@ BasicChainGloStart<S> chainGloStartIn(const BasicMassChain<S>& chain, const std:
     start.problem = GloStartProblem::NotAffine;
     return start;
   }
-  const int s = chain.stopped() - 1;
   start.state.u = ChainVector<S>::Zero(n);
   start.state.v = ChainVector<S>::Zero(n);
   start.stillModes.assign(std::size_t(n), false);
   for (Eigen::Index j = 0; j < n; ++j) {
     start.stillModes[std::size_t(j)] = weights[std::size_t(j)] == 0;
     if (weights[std::size_t(j)] == 0) continue;
-    start.state.u += weights[std::size_t(j)] * chain.gap / modes.P(s, j) * modes.P.col(j);
+    start.state.u += weights[std::size_t(j)] * gap / P(s, j) * P.col(j);
   }
-  start.state.u[s] = chain.gap;  // on the stop exactly: sum lambda_j d = d up to rounding
+  start.state.u[s] = gap;  // on the stop exactly: sum lambda_j d = d up to rounding
   return start;
 }
 
-template BasicChainGloStart<double> chainGloStartIn<double>(const BasicMassChain<double>&, const std::vector<double>&);
-template BasicChainGloStart<long double> chainGloStartIn<long double>(const BasicMassChain<long double>&,
-                                                                      const std::vector<long double>&);
-template BasicChainGloStart<Quad> chainGloStartIn<Quad>(const BasicMassChain<Quad>&, const std::vector<Quad>&);
+}  // namespace
+
+template <typename S>
+BasicChainGloStart<S> chainGloStartIn(const BasicMassChain<S>& chain, const std::vector<S>& weights) {
+  const BasicChainModes<S> modes = chainModesIn<S>(chain);
+  return gloStart<S>(modes.P, modes.nodeAtStop, chain.stopped() - 1, chain.gap, weights);
+}
+
+template <typename S>
+BasicChainGloStart<S> chainGloStartIn(const BasicChainDynamics<S>& dynamics, const std::vector<S>& weights) {
+  return gloStart<S>(dynamics.P, dynamics.nodeAtStop, dynamics.stop, dynamics.gap, weights);
+}
+
+#define GRAZELAB_INSTANTIATE_GLO_START(S)                                                              \
+  template BasicChainGloStart<S> chainGloStartIn<S>(const BasicMassChain<S>&, const std::vector<S>&); \
+  template BasicChainGloStart<S> chainGloStartIn<S>(const BasicChainDynamics<S>&, const std::vector<S>&);
+GRAZELAB_INSTANTIATE_GLO_START(double)
+GRAZELAB_INSTANTIATE_GLO_START(long double)
+GRAZELAB_INSTANTIATE_GLO_START(Quad)
+#undef GRAZELAB_INSTANTIATE_GLO_START
 
 GloGrazing gloGrazing(const std::vector<int>& harmonics, const std::vector<double>& weights) {
   // f(theta) = sum_j lambda_j cos(n_j theta) - 1, 2 pi periodic, f(0) = f'(0) = 0

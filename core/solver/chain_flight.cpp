@@ -16,6 +16,7 @@ BasicChainDynamics<S> chainDynamicsIn(const BasicMassChain<S>& chain) {
   const BasicChainModes<S> modes = chainModesIn<S>(chain);
   BasicChainDynamics<S> dynamics;
   dynamics.P = modes.P;
+  dynamics.nodeAtStop = modes.nodeAtStop;
   dynamics.omega = modes.omega;
   const Eigen::Index n = Eigen::Index(chain.masses.size());
   dynamics.mass.resize(n);

@@ -53,6 +53,7 @@ template <typename S>
 struct BasicChainDynamics {
   Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> P;  ///< M-orthonormal mode shapes, fastest first
   ChainVector<S> omega;  ///< w_j, fastest first (n_j w0 when commensurate)
+  std::vector<bool> nodeAtStop;  ///< mode j+1 does not move the stopped mass (BasicChainModes)
   ChainVector<S> mass;   ///< m_i
   int stop = 0;          ///< the stopped mass, 0-based
   S gap = 1;

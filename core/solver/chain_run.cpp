@@ -222,6 +222,7 @@ BasicReadyChain<S> readyChain(const TwoMassForm<S>& form) {
     dynamics.P(0, j) = rho[j] / norm;
     dynamics.P(1, j) = 1 / norm;
   }
+  dynamics.nodeAtStop = {false, false};  // P(1, j) = 1 / norm
   dynamics.mass.resize(2);
   dynamics.mass << model.m1, model.m2;
   dynamics.stop = 1;

@@ -159,7 +159,7 @@ class Ladder {
         return refuse("--search-steps bounds the search of a two-mass chain's detuned flight (the note's kernel); "
                       "this chain's searches go 1000 slowest periods (give --t-end to search longer)");
       }
-      auto start = chainStart<S>(m_options, ready.numbers, error, &ran.description);
+      auto start = chainStart<S>(m_options, ready.numbers, error, &ran.description, &ready.dynamics);
       if (!start) return refuse<S>(error, false, last);
       ran.start = std::move(*start);
     }
@@ -243,7 +243,7 @@ class Ladder {
       std::vector<std::string> quiet;
       QString why;
       read = chain.notesModel ? notesStart<H>(m_options, chain, refusal, words, quiet)
-                              : chainStart<H>(m_options, chain.numbers, why, nullptr);
+                              : chainStart<H>(m_options, chain.numbers, why, nullptr, &chain.dynamics);
     }
     if (read) return std::move(*read);
     if (up.usable()) {

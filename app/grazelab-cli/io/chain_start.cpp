@@ -88,7 +88,8 @@ bool noTwoMassStart(const OptionValues& options, QString& error) {
 
 template <typename S>
 std::optional<core::BasicChainStart<S>> chainStart(const OptionValues& options, const core::BasicMassChain<S>& chain,
-                                                   QString& error, std::string* description) {
+                                                   QString& error, std::string* description,
+                                                   const core::BasicChainDynamics<S>* ready) {
   const Eigen::Index n = chain.size();
   const int s = chain.stopped() - 1;
   if (!oneStartOf(options, n, error)) return std::nullopt;
@@ -110,7 +111,8 @@ std::optional<core::BasicChainStart<S>> chainStart(const OptionValues& options, 
   } else {
     const auto weights = numberList<S>(options, "glo-weights", n, "l1,...,lN", error);
     if (!weights) return std::nullopt;
-    const core::BasicChainGloStart<S> glo = core::chainGloStartIn<S>(chain, *weights);
+    const core::BasicChainGloStart<S> glo =
+        ready ? core::chainGloStartIn<S>(*ready, *weights) : core::chainGloStartIn<S>(chain, *weights);
     switch (glo.problem) {
       case core::GloStartProblem::None: break;
       case core::GloStartProblem::WrongCount:
@@ -156,14 +158,13 @@ std::optional<core::BasicChainStart<S>> chainStart(const OptionValues& options, 
   return start;
 }
 
-
-template std::optional<core::BasicChainStart<double>> chainStart(const OptionValues&, const core::BasicMassChain<double>&,
-                                                                 QString&, std::string*);
-template std::optional<core::BasicChainStart<long double>> chainStart(const OptionValues&,
-                                                                      const core::BasicMassChain<long double>&,
-                                                                      QString&, std::string*);
-template std::optional<core::BasicChainStart<core::Quad>> chainStart(const OptionValues&,
-                                                                     const core::BasicMassChain<core::Quad>&,
-                                                                     QString&, std::string*);
+#define GRAZELAB_INSTANTIATE(S)                                                                                  \
+  template std::optional<core::BasicChainStart<S>> chainStart(const OptionValues&, const core::BasicMassChain<S>&, \
+                                                              QString&, std::string*,                             \
+                                                              const core::BasicChainDynamics<S>*);
+GRAZELAB_INSTANTIATE(double)
+GRAZELAB_INSTANTIATE(long double)
+GRAZELAB_INSTANTIATE(core::Quad)
+#undef GRAZELAB_INSTANTIATE
 
 }  // namespace grazelab::cli

@@ -23,9 +23,11 @@ bool noTwoMassStart(const OptionValues& options, QString& error);
 /// --onepp T (the 1IPP orbit's data right after its impact), plus --perturb. --state, the weights,
 /// T and --perturb are read in S (0.1 is 0.1 to binary128's digits). `description`, when given,
 /// receives how the start was given, in words. A GLO start not pushed names its modes of weight 0
-/// as still. Nothing, with `error`, for a start refused.
+/// as still. Nothing, with `error`, for a start refused. `ready`, when given, is `chain` made
+/// ready: its modes serve the GLO start (not computed again: they cost more than a short run).
 template <typename S>
 std::optional<core::BasicChainStart<S>> chainStart(const OptionValues& options, const core::BasicMassChain<S>& chain,
-                                                   QString& error, std::string* description = nullptr);
+                                                   QString& error, std::string* description = nullptr,
+                                                   const core::BasicChainDynamics<S>* ready = nullptr);
 
 }  // namespace grazelab::cli

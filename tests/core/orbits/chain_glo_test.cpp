@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "core/model/chain_design.h"
@@ -130,6 +131,62 @@ TEST(ChainGlo, RunsFromGloDataGrazeInsideTheSetAndImpactOutside) {
   }
   EXPECT_EQ(chainGloStart(chain, {0.5, 0.5}).problem, GloStartProblem::WrongCount);
   EXPECT_EQ(chainGloStart(chain, {0.5, 0.5, 0.5}).problem, GloStartProblem::NotAffine);
+}
+
+// The start from a ready chain's dynamics (the modes made once, as the command line and Python
+// take it for every run of one chain) is the start from the chain's numbers, to the bit: chains
+// of 2 to 6 masses, stops inside and at the end, with and without a right wall, in double, long
+// double and binary128; a weight on a mode with a node at the stop is refused by both.
+template <typename S>
+void expectSameStarts(const MassChain& given, const std::vector<double>& weights) {
+  const BasicMassChain<S> chain = chainCast<S>(given);
+  const BasicReadyChain<S> ready = readyChain(chain);
+  std::vector<S> w(weights.begin(), weights.end());
+  const BasicChainGloStart<S> fromNumbers = chainGloStartIn<S>(chain, w);
+  const BasicChainGloStart<S> fromReady = chainGloStartIn<S>(ready.dynamics, w);
+  ASSERT_EQ(fromReady.problem, fromNumbers.problem);
+  EXPECT_EQ(fromReady.stillModes, fromNumbers.stillModes);
+  if (fromNumbers.problem != GloStartProblem::None) return;
+  for (Eigen::Index i = 0; i < chain.size(); ++i) {
+    EXPECT_TRUE(fromReady.state.u[i] == fromNumbers.state.u[i]) << chain.size() << " masses, u" << i + 1;
+    EXPECT_TRUE(fromReady.state.v[i] == fromNumbers.state.v[i]) << chain.size() << " masses, v" << i + 1;
+  }
+}
+
+TEST(ChainGlo, AReadyChainsModesGiveTheStartOfItsNumbersToTheBit) {
+  std::uint64_t seed = 12345;
+  const auto uniform = [&seed](double low, double high) {
+    seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    return low + (high - low) * double(seed >> 11) * 0x1p-53;
+  };
+  for (int n = 2; n <= 6; ++n) {
+    for (int stop : {n, (n + 1) / 2}) {
+      for (bool wall : {false, true}) {
+        MassChain chain;
+        for (int i = 0; i < n; ++i) {
+          chain.masses.push_back(uniform(0.2, 3));
+          chain.springs.push_back(uniform(0.5, 4));
+        }
+        chain.rightSpring = wall ? uniform(0.5, 4) : 0;
+        chain.stopMass = stop;
+        chain.gap = uniform(0.1, 2);
+        std::vector<double> weights(std::size_t(n), 0.0);
+        double sum = 0;
+        for (int j = 0; j + 1 < n; j += 2) sum += weights[std::size_t(j)] = uniform(-0.5, 0.8);
+        weights.back() = 1 - sum;  // some modes left still
+        expectSameStarts<double>(chain, weights);
+        expectSameStarts<long double>(chain, weights);
+        expectSameStarts<Quad>(chain, weights);
+      }
+    }
+  }
+  // a symmetric chain stopped in its middle: its antisymmetric modes have a node there
+  const MassChain symmetric{{1, 1, 1}, {1, 1, 1}, 1, 2, 1.0};
+  ASSERT_TRUE(readyChain(symmetric).dynamics.nodeAtStop[1]);
+  expectSameStarts<double>(symmetric, {0.2, 0.3, 0.5});
+  expectSameStarts<double>(symmetric, {0.4, 0.0, 0.6});
+  EXPECT_EQ(chainGloStartIn<double>(readyChain(symmetric).dynamics, {0.2, 0.3, 0.5}).problem,
+            GloStartProblem::WeightOnNode);
 }
 
 }  // namespace
