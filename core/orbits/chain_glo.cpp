@@ -25,7 +25,8 @@ BasicChainGloStart<S> gloStart(const Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dyn
   using std::abs;
   BasicChainGloStart<S> start;
   const Eigen::Index n = P.cols();
-  if (Eigen::Index(weights.size()) != n) {
+  // (dynamics made by hand without their nodes are refused, not read past their end)
+  if (Eigen::Index(weights.size()) != n || Eigen::Index(nodeAtStop.size()) != n) {
     start.problem = GloStartProblem::WrongCount;
     return start;
   }
