@@ -86,17 +86,12 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
                                     std::stop_token stop, const ChainSeriesProgress& progress,
                                     double chunkSeconds, double& undecidedAt) {
   ChainSeries series = frame;
-  const Eigen::Index s = spec.chain.stopped() - 1;
-  const Eigen::Index chosen = spec.phaseMass > 0 ? Eigen::Index(spec.phaseMass - 1) : s;
   ChainSampling<S> sampling;
   if (spec.window > 0 && spec.gridPoints > 1) {
     const int points = spec.free ? spec.gridPoints : std::max(spec.gridPoints, spec.maxGridPoints);
     for (int i = 0; i < points; ++i) sampling.times.push_back(spec.window * i / (spec.gridPoints - 1));
     sampling.sink = [&](double t, const BasicChainState<S>& state) {
-      std::vector<double> u(std::size_t(state.u.size()));
-      for (Eigen::Index i = 0; i < state.u.size(); ++i) u[std::size_t(i)] = toDouble(S(state.u[i]));
-      series.grid.push_back({t, u[std::size_t(s)], toDouble(S(state.v[s])), u[std::size_t(chosen)],
-                             toDouble(S(state.v[chosen])), std::move(u)});
+      series.grid.push(t, state.u, state.v);
     };
   }
   const BasicMassChain<S> chain = chainIn<S>(spec);
@@ -180,6 +175,7 @@ ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop, const
   frame.start = spec.start;
   frame.gloWeights = spec.gloWeights;
   frame.contactsAsked = spec.contacts;
+  frame.grid.masses = spec.chain.size();
   frame.modes = chainModes(spec.chain);
   frame.ratios = detectRatios(frame.modes.omega);
   if (frame.ratios.commensurate) frame.period = 2 * std::numbers::pi / frame.ratios.omega0;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/experiments/state_records.h"
 #include "core/model/chain_design.h"
 #include "core/numbers/scalar.h"
 #include "core/model/mass_chain.h"
@@ -17,15 +18,14 @@ namespace grazelab::core::experiments {
 
 /// A run of a chain of N masses as the explorer's N-mass scenes draw it (docs/explorer.md): the
 /// exact run (core/solver/chain_run.h), the chain's spectrum and common period, every free
-/// flight's length, and the stopped mass and one chosen mass on a time grid over the run's
-/// first `window` (or, with `maxGridPoints`, at that step over the whole run).
+/// flight's length, and every mass's state on a time grid over the run's first `window` (or, with
+/// `maxGridPoints`, at that step over the whole run).
 struct ChainSeriesSpec {
   MassChain chain;   ///< usable (validate(chain) empty)
   ChainState start;  ///< u_s <= d
   long contacts = 200;
   double window = 0;  ///< [time] the grid's span from t = 0 (0: none)
   int gridPoints = 1500;  ///< over `window`: the grid's step is window / (gridPoints - 1)
-  int phaseMass = 0;                  ///< 1-based; 0: the stopped mass
   TrustMode trust = TrustMode::Auto;  ///< the run's error estimate (core/solver/trust.h)
   /// the linear motion alone, the stop ignored (a grazing linear orbit that passes the stop is
   /// drawn passing it): the grid only, no run (no events, no flights)
@@ -51,14 +51,6 @@ struct ChainFlight {
   bool afterImpact = false;
 };
 
-/// A point of the grid: the stopped mass and the chosen one.
-struct ChainGridPoint {
-  double t = 0;
-  double us = 0, vs = 0;            ///< the stopped mass
-  double uChosen = 0, vChosen = 0;  ///< the chosen mass (ChainSeriesSpec::phaseMass)
-  std::vector<double> u;            ///< every mass's displacement (the animated chain)
-};
-
 struct ChainSeries {
   MassChain chain;
   ChainState start;
@@ -70,7 +62,7 @@ struct ChainSeries {
   double period =
       0;  ///< T = 2 pi / w0 when commensurate (every flight from the stop ends by it), else 0
   std::vector<ChainFlight> flights;
-  std::vector<ChainGridPoint> grid;
+  StateRecords grid;  ///< every mass's state on the grid (t, u1..uN, v1..vN)
   Trust trust;  ///< the run again one precision up, compared event by event (Unchecked: off)
   /// the precision the run was made in: double, or long double then binary128 when double met
   /// a contact it could not decide (--precision auto's rule); its numbers here rounded to double

@@ -266,10 +266,13 @@ void ChainView::startMotion(const core::MassChain& chain, double slowestPeriod, 
   m_contactTypes.clear();
 }
 
-void ChainView::widen(const std::vector<double>& u) {
-  for (std::size_t i = 0; i < u.size(); ++i) {
-    m_amplitude = std::max(m_amplitude, std::abs(u[i]));
-    if (i + 1 < u.size()) m_squeeze = std::max(m_squeeze, u[i] - u[i + 1]);
+void ChainView::widen(std::size_t from) {
+  const int n = m_motion.masses();
+  for (std::size_t k = from; k < m_motion.size(); ++k) {
+    for (int i = 0; i < n; ++i) {
+      m_amplitude = std::max(m_amplitude, std::abs(m_motion.u(k, i)));
+      if (i + 1 < n) m_squeeze = std::max(m_squeeze, m_motion.u(k, i) - m_motion.u(k, i + 1));
+    }
   }
 }
 
@@ -284,6 +287,7 @@ void ChainView::takeSamples(const SimUpdate& update) {
   m_series.reset();
   m_result = update.result;
   if (!m_result) {
+    m_motion = {};
     m_end = 0;
     return;
   }
@@ -293,10 +297,8 @@ void ChainView::takeSamples(const SimUpdate& update) {
     const double T2 = core::computeModes(model).T2;
     startMotion(core::massChainOf(model), T2, T2, tr("T₂"));
   }
-  for (std::size_t index = m_taken.samples; index < result.samples.size(); ++index) {
-    const core::State& state = result.samples[index].state;
-    widen({state.u1, state.u2});
-  }
+  m_motion = StateSpan(result.samples);
+  widen(m_taken.samples);
   m_taken.samples = result.samples.size();
   m_end = result.samples.empty() ? 0 : result.samples.back().t;
   // contacts within the samples' window; later ones wait for the samples that reach them
@@ -315,9 +317,10 @@ void ChainView::takeSeries(const std::shared_ptr<const core::experiments::ChainS
   m_result.reset();
   m_taken = {};
   m_series = series;
-  m_end = series->grid.empty() ? 0 : series->grid.back().t;
+  m_motion = StateSpan(series->grid);
+  m_end = m_motion.empty() ? 0 : m_motion.t(m_motion.size() - 1);
   startMotion(series->chain, 2 * std::numbers::pi / series->modes.omega.minCoeff(), series->period, tr("T"));
-  for (const core::experiments::ChainGridPoint& point : series->grid) widen(point.u);
+  widen(0);
   for (const core::ChainEvent& event : series->run.events) {
     if (event.t > m_end) break;
     if (!core::isContact(event.type)) continue;
@@ -337,29 +340,26 @@ void ChainView::setPresentation(bool on, int textPixels) {
 }
 
 std::vector<double> ChainView::displacementsAt(double t) const {
+  if (m_motion.empty()) return {};
   // the neighbours of t among the motion's times, and their displacements
-  const auto between = [t](const auto& points, const auto& timeOf, const auto& displacements) {
-    const auto after = std::lower_bound(points.begin(), points.end(), t,
-                                        [&](const auto& p, double time) { return timeOf(p) < time; });
-    if (after == points.begin()) return displacements(points.front());
-    if (after == points.end()) return displacements(points.back());
-    const std::vector<double> a = displacements(*(after - 1)), b = displacements(*after);
-    const double w = (t - timeOf(*(after - 1))) / (timeOf(*after) - timeOf(*(after - 1)));
-    std::vector<double> u(a.size());
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] = a[i] + w * (b[i] - a[i]);
-    return u;
-  };
-  if (m_series && !m_series->grid.empty()) {
-    return between(
-        m_series->grid, [](const core::experiments::ChainGridPoint& p) { return p.t; },
-        [](const core::experiments::ChainGridPoint& p) { return p.u; });
+  std::size_t low = 0, high = m_motion.size();  // the first record after t: in [low, high]
+  while (low < high) {
+    const std::size_t middle = low + (high - low) / 2;
+    if (m_motion.t(middle) < t) low = middle + 1;
+    else high = middle;
   }
-  if (m_result && !m_result->samples.empty()) {
-    return between(
-        m_result->samples, [](const core::Sample& p) { return p.t; },
-        [](const core::Sample& p) { return std::vector<double>{p.state.u1, p.state.u2}; });
+  const std::size_t after = low;
+  std::vector<double> u(std::size_t(m_motion.masses()));
+  for (int i = 0; i < m_motion.masses(); ++i) {
+    if (after == 0 || after == m_motion.size()) {
+      u[std::size_t(i)] = m_motion.u(after == 0 ? 0 : after - 1, i);
+      continue;
+    }
+    const double w = (t - m_motion.t(after - 1)) / (m_motion.t(after) - m_motion.t(after - 1));
+    const double a = m_motion.u(after - 1, i), b = m_motion.u(after, i);
+    u[std::size_t(i)] = a + w * (b - a);
   }
-  return {};
+  return u;
 }
 
 void ChainView::setTime(double t) {

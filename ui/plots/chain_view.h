@@ -13,6 +13,7 @@
 #include "core/experiments/chain_series.h"
 #include "core/model/mass_chain.h"
 #include "ui/compute/sim_types.h"
+#include "ui/plots/run_points.h"
 #include "ui/plots/scene_view.h"
 
 class QCheckBox;
@@ -69,7 +70,8 @@ class ChainView : public QWidget, public SceneView {
   void startMotion(const core::MassChain& chain, double slowestPeriod, double unit, const QString& unitName);
   void takeSamples(const SimUpdate& update);
   void takeSeries(const std::shared_ptr<const core::experiments::ChainSeries>& series);
-  void widen(const std::vector<double>& u);
+  /// the motion's scales grown by its records from `from` on
+  void widen(std::size_t from);
 
   Canvas* m_canvas = nullptr;
   QToolButton* m_play = nullptr;
@@ -79,6 +81,7 @@ class ChainView : public QWidget, public SceneView {
   // the motion: the two-mass run's samples, or an N-mass run's grid (one of them)
   std::shared_ptr<const core::Result> m_result;
   std::shared_ptr<const core::experiments::ChainSeries> m_series;
+  StateSpan m_motion;  ///< the records of the one held
   core::MassChain m_chain;  ///< the chain drawn
   std::vector<double> m_contactTimes;  ///< within the motion's span
   std::vector<core::EventType> m_contactTypes;

@@ -113,7 +113,7 @@ Scene::Spec chainOnePeriodicScene() {
            "grazes."),
         speed, QPointF(params.chainPeriodFraction, std::abs(orbit.V) / speedScale), QPointF(1, 0));
     // the slider's orbit over three of its periods, every mass on the grid
-    job.spec.chains = {{chain, orbit.postImpact, 3, 3 * T, 900, 0, core::TrustMode::Auto}};
+    job.spec.chains = {{chain, orbit.postImpact, 3, 3 * T, 900, core::TrustMode::Auto}};
     job.spec.chains.front().design = choice.design;
     QStringList weights;
     for (double w : limitWeights) weights.append(number(w, 4));
@@ -143,7 +143,8 @@ Scene::Spec chainOnePeriodicScene() {
           tr("The stopped mass over three periods of the orbit, from right after an impact: it meets "
              "the stop once a period, at t = T, 2T, 3T (dots: the exact run's contacts).");
       trace.curveName = tr("u%1 / d").arg(subscriptDigits(stopped));
-      for (const core::experiments::ChainGridPoint& point : series.grid) trace.curve.emplace_back(point.t / T, point.us / d);
+      const core::experiments::StateRecords& grid = series.grid;
+      for (std::size_t k = 0; k < grid.size(); ++k) trace.curve.emplace_back(grid.t(k) / T, grid.u(k, stopped - 1) / d);
       trace.timeUnit = T;  // the animation's time a line on it
       trace.referenceName = tr("stop");
       trace.reference = {QPointF(0, 1), QPointF(3, 1)};

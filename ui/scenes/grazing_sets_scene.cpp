@@ -165,7 +165,7 @@ Scene::Spec grazingSetsScene() {
     // the orbit itself over one period (unpushed: GLO(λ) as it is), every mass on the grid: the
     // linear motion, so that weights outside the set are seen to pass the stop
     const double period = 2 * std::numbers::pi / used.ratios.omega0;
-    core::experiments::ChainSeriesSpec free{chain, glo.state, 1, period, 900, 0, core::TrustMode::Off};
+    core::experiments::ChainSeriesSpec free{chain, glo.state, 1, period, 900, core::TrustMode::Off};
     free.free = true;
     job.spec.chains = {free};
     const core::ChainModes modes = core::chainModes(chain);
@@ -186,8 +186,9 @@ Scene::Spec grazingSetsScene() {
              "at or below it and touches it at t = 0 and T; weights outside the set pass it (the "
              "linear motion is drawn, as if the stop were not there).");
       trace.curveName = tr("u%1 / d").arg(subscriptDigits(stopped));
-      for (const core::experiments::ChainGridPoint& point : series.grid)
-        trace.curve.emplace_back(point.t / period, point.us / series.chain.gap);
+      const core::experiments::StateRecords& grid = series.grid;
+      for (std::size_t k = 0; k < grid.size(); ++k)
+        trace.curve.emplace_back(grid.t(k) / period, grid.u(k, stopped - 1) / series.chain.gap);
       trace.timeUnit = period;  // the animation's time a line on it
       trace.referenceName = tr("stop");
       trace.reference = {QPointF(0, 1), QPointF(1, 1)};

@@ -114,13 +114,13 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
       tr("The stopped mass's displacement over the gap d; the dashed line is the stop. Each "
          "dot is a contact.\nA long run shows its first four slowest periods; W shows all of it.");
   trace.curveName = tr("u%1 / d").arg(subscriptDigits(chain.stopped()));
-  for (const core::experiments::ChainGridPoint& point : series.grid) {
-    trace.curve.emplace_back(point.t / unit, point.us / chain.gap);
-  }
+  const core::experiments::StateRecords& grid = series.grid;
+  const int stopped = chain.stopped() - 1, chosen = given.shown() - 1;
+  for (std::size_t k = 0; k < grid.size(); ++k) trace.curve.emplace_back(grid.t(k) / unit, grid.u(k, stopped) / chain.gap);
   trace.timeUnit = unit;  // the animation's time a line on it
   // the grid spans `window`, or the whole run when W asks for it (ChainSeriesSpec::maxGridPoints,
   // set by the window); the axis says what of the run it shows
-  const double sampled = series.grid.empty() ? 0.0 : series.grid.back().t;
+  const double sampled = grid.lastTime();
   const bool whole = sampled > window * (1 + 1e-9);
   const double step = window / (kGridPoints - 1);
   const bool goesOn = series.run.tFinal > sampled + step;  // (a grid ends within a step of the run)
@@ -131,9 +131,7 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
   if (given.shown() != chain.stopped()) {
     trace.title = tr("Mass %1 (on the stop's side) and mass %2: u / d").arg(chain.stopped()).arg(given.shown());
     trace.otherName = tr("u%1 / d").arg(subscriptDigits(given.shown()));
-    for (const core::experiments::ChainGridPoint& point : series.grid) {
-      trace.other.emplace_back(point.t / unit, point.uChosen / chain.gap);
-    }
+    for (std::size_t k = 0; k < grid.size(); ++k) trace.other.emplace_back(grid.t(k) / unit, grid.u(k, chosen) / chain.gap);
   }
   trace.referenceName = tr("stop");
   trace.reference = {QPointF(0, 1), QPointF(sampled / unit, 1)};
@@ -169,9 +167,9 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
   phase.toolTip += tr("\nA long run shows its first four slowest periods; W shows all of it.");
   phase.curveName = tr("(u, v)");
   const double speed = chain.gap * series.modes.omega.maxCoeff();
-  for (const core::experiments::ChainGridPoint& point : series.grid) {
-    phase.curve.emplace_back(point.uChosen / chain.gap, point.vChosen / speed);
-    phase.curveTimes.push_back(point.t);  // the animation's time a ring on it
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    phase.curve.emplace_back(grid.u(k, chosen) / chain.gap, grid.v(k, chosen) / speed);
+    phase.curveTimes.push_back(grid.t(k));  // the animation's time a ring on it
   }
   if (shownIsStopped) {
     phase.referenceName = tr("stop");
@@ -290,10 +288,8 @@ Scene::Spec threeMassesScene() {
     // double: its own scene asks for none, and says so). The trace, the phase portrait and the
     // animation span four slowest periods: six drew twenty fast swings into a plot a third of a
     // projector wide, lines merging into a band in presentation's thick pen
-    core::experiments::ChainSeriesSpec run{chain,         start,
-                                                 long(params.horizon), 4 * slowest,
-                                                 kGridPoints,   given.shown(),
-                                                 contrast ? core::TrustMode::Auto : core::TrustMode::Off};
+    core::experiments::ChainSeriesSpec run{chain, start, long(params.horizon), 4 * slowest, kGridPoints,
+                                           contrast ? core::TrustMode::Auto : core::TrustMode::Off};
     if (params.perturbation == 0) run.gloWeights = given.weights;  // GLO itself: its still modes kept
     SceneJob job;
     run.design = choice.design;
@@ -303,7 +299,7 @@ Scene::Spec threeMassesScene() {
       // flights only: no error estimate, which would cost more than the rest of the scene
       core::MassChain detuned = chain;
       detuned.springs[1] *= 1.05;
-      job.spec.chains.push_back({detuned, start, long(params.horizon), 0, 0, 0, core::TrustMode::Off});
+      job.spec.chains.push_back({detuned, start, long(params.horizon), 0, 0, core::TrustMode::Off});
     }
     job.chainSummary = chainSummaryOf(chain, given, choice.designs, modes, ratios);
     job.chainDesigns = choice.designs;

@@ -26,7 +26,7 @@ TEST(ChainSeries, FlightsTileTheRunAndStayBelowThePeriod) {
   chain.springs = designSprings(chain.masses, 1.0, {3, 2, 1}).designs.at(0).springs;
   ChainState start = chainGloStart(chain, {0.5, 0.3, 0.2}).state;
   start.v[2] -= 0.05;
-  const ChainSeriesSpec spec{chain, start, 120, 20.0, 400, 1, TrustMode::Off};
+  const ChainSeriesSpec spec{chain, start, 120, 20.0, 400, TrustMode::Off};
   const ChainSeries series = chainSeries(spec);
   ASSERT_TRUE(series.ratios.commensurate);
   EXPECT_NEAR(series.period, 2 * std::numbers::pi / series.ratios.omega0, 1e-15 * series.period);
@@ -39,15 +39,31 @@ TEST(ChainSeries, FlightsTileTheRunAndStayBelowThePeriod) {
     EXPECT_LE(flight.duration, series.period) << "contact " << flight.contact;
   }
   EXPECT_NEAR(sum, series.run.events.back().t, 1e-9 * sum);
-  // the grid: 400 points over [0, 20], mass 1 chosen, every mass kept, at t = 0 the start
-  ASSERT_EQ(series.grid.size(), 400u);
-  EXPECT_EQ(series.grid.front().u.size(), 3u);
-  EXPECT_NEAR(series.grid.front().uChosen, start.u[0], 1e-14);  // (the flight's closed form at 0)
-  EXPECT_EQ(series.grid.front().us, chain.gap);
-  for (const ChainGridPoint& point : series.grid) {
-    EXPECT_LE(point.us, chain.gap * (1 + 1e-12));
-    EXPECT_EQ(point.us, point.u[2]);
-    EXPECT_EQ(point.uChosen, point.u[0]);
+  // the grid: 400 records of every mass's state over [0, 20], at t = 0 the start
+  const StateRecords& grid = series.grid;
+  ASSERT_EQ(grid.size(), 400u);
+  ASSERT_EQ(grid.masses, 3);
+  ASSERT_EQ(grid.values.size(), 400u * 7);
+  EXPECT_EQ(grid.t(0), 0.0);
+  EXPECT_EQ(grid.t(399), 20.0);
+  for (int i = 0; i < 3; ++i) {  // (the flight's closed form at 0)
+    EXPECT_NEAR(grid.u(0, i), start.u[i], 1e-14);
+    EXPECT_NEAR(grid.v(0, i), start.v[i], 1e-14);
+  }
+  EXPECT_EQ(grid.u(0, 2), chain.gap);
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    EXPECT_LE(grid.u(k, 2), chain.gap * (1 + 1e-12));
+    EXPECT_EQ(grid.displacements(k)[2], grid.u(k, 2));
+  }
+  // each record the run's state: the energy of the start, in flight and at the contacts
+  const double level = chainEnergy(chain, start);
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    ChainState at{Eigen::VectorXd(3), Eigen::VectorXd(3)};
+    for (int i = 0; i < 3; ++i) {
+      at.u[i] = grid.u(k, i);
+      at.v[i] = grid.v(k, i);
+    }
+    EXPECT_NEAR(chainEnergy(chain, at), level, 1e-12 * level) << "t = " << grid.t(k);
   }
   EXPECT_EQ(series.trust.verdict, Verdict::Unchecked);
 }
@@ -60,7 +76,7 @@ TEST(ChainSeries, AGloStartGivenByItsWeightsKeepsItsStillModes) {
   chain.masses = {1.0, 0.2, 0.05};
   chain.springs = designSprings(chain.masses, 1.0, {3, 2, 1}).designs.at(0).springs;
   const std::vector<double> weights = {0, 1, 0};
-  ChainSeriesSpec spec{chain, chainGloStart(chain, weights).state, 30, 0, 0, 0, TrustMode::Auto};
+  ChainSeriesSpec spec{chain, chainGloStart(chain, weights).state, 30, 0, 0, TrustMode::Auto};
   spec.gloWeights = weights;
   const ChainSeries series = chainSeries(spec);
   EXPECT_EQ(series.precision, Precision::Double);
@@ -83,7 +99,7 @@ TEST(ChainSeries, AWholeRunGridGoesOnAtTheWindowsStepToTheRunsEndOrItsCap) {
   chain.springs = designSprings(chain.masses, 1.0, {3, 2, 1}).designs.at(0).springs;
   ChainState start = chainGloStart(chain, {0.5, 0.3, 0.2}).state;
   start.v[2] -= 0.05;
-  ChainSeriesSpec spec{chain, start, 60, 20.0, 401, 0, TrustMode::Off};
+  ChainSeriesSpec spec{chain, start, 60, 20.0, 401, TrustMode::Off};
   const ChainSeries windowOnly = chainSeries(spec);
   spec.maxGridPoints = 1'000'000;
   const ChainSeries whole = chainSeries(spec);
@@ -92,14 +108,14 @@ TEST(ChainSeries, AWholeRunGridGoesOnAtTheWindowsStepToTheRunsEndOrItsCap) {
   // to the run's end at the window's step, the window's points the same bits
   ASSERT_EQ(windowOnly.grid.size(), 401u);
   EXPECT_EQ(whole.grid.size(), std::size_t(std::floor(whole.run.tFinal / step)) + 1);
-  EXPECT_LE(whole.grid.back().t, whole.run.tFinal);
-  EXPECT_GT(whole.grid.back().t, whole.run.tFinal - step);
-  for (std::size_t i = 0; i < windowOnly.grid.size(); ++i) {
-    EXPECT_EQ(whole.grid[i].t, windowOnly.grid[i].t);
-    EXPECT_EQ(whole.grid[i].u, windowOnly.grid[i].u);
-  }
+  const std::size_t last = whole.grid.size() - 1;
+  EXPECT_LE(whole.grid.t(last), whole.run.tFinal);
+  EXPECT_GT(whole.grid.t(last), whole.run.tFinal - step);
+  // (every record's numbers: t, u and v)
+  ASSERT_TRUE(std::equal(windowOnly.grid.values.begin(), windowOnly.grid.values.end(), whole.grid.values.begin()));
   // each point is the run's state then: u_s at the contacts' times is d, in between below it
-  for (const ChainGridPoint& point : whole.grid) EXPECT_LE(point.us, chain.gap * (1 + 1e-12));
+  const int s = chain.stopped() - 1;
+  for (std::size_t k = 0; k <= last; ++k) EXPECT_LE(whole.grid.u(k, s), chain.gap * (1 + 1e-12));
   // and the run itself is the same
   EXPECT_EQ(whole.run.tFinal, windowOnly.run.tFinal);
   // capped: that many points
@@ -116,7 +132,7 @@ TEST(ChainSeries, AChainWithNoCommonPeriodHasNoBound) {
   weights.back() = 1;
   ChainState start = chainGloStart(chain, weights).state;
   start.v[1] -= 1e-3;
-  const ChainSeries series = chainSeries({chain, start, 30, 0, 0, 0, TrustMode::Auto});
+  const ChainSeries series = chainSeries({chain, start, 30, 0, 0, TrustMode::Auto});
   EXPECT_FALSE(series.ratios.commensurate);
   EXPECT_EQ(series.period, 0);
   EXPECT_EQ(series.run.contacts, 30);
@@ -134,28 +150,29 @@ TEST(ChainSeries, ARunWithoutContactsStillDrawsItsMotionAndFreeIgnoresTheStop) {
   chain.springs = {1.0, 1.0, 1.0, 1.0};
   ChainState start = chainGloStart(chain, {0.25, 0.25, 0.25, 0.25}).state;
   start.v[3] -= 0.05;
-  const ChainSeriesSpec spec{chain, start, 5, 30.0, 300, 0, TrustMode::Off};
+  const ChainSeriesSpec spec{chain, start, 5, 30.0, 300, TrustMode::Off};
   const ChainSeries series = chainSeries(spec);
   ASSERT_EQ(series.run.stop, StopReason::SearchBudget);
   EXPECT_EQ(series.run.contacts, 0);
   ASSERT_EQ(series.grid.size(), 300u);
-  EXPECT_EQ(series.grid.back().t, 30.0);
-  for (const ChainGridPoint& point : series.grid) EXPECT_LT(point.us, chain.gap) << point.t;
+  EXPECT_EQ(series.grid.t(299), 30.0);
+  for (std::size_t k = 0; k < 300; ++k) EXPECT_LT(series.grid.u(k, chain.stopped() - 1), chain.gap) << series.grid.t(k);
 
   MassChain resonant;
   resonant.masses = {1.0, 0.2, 0.05};
   resonant.springs = designSprings(resonant.masses, 1.0, {3, 2, 1}).designs.at(0).springs;
   const ChainState outside = chainGloStart(resonant, {-0.4, 1.2, 0.2}).state;
-  ChainSeriesSpec free{resonant, outside, 1, 8.0, 400, 0, TrustMode::Off};
+  ChainSeriesSpec free{resonant, outside, 1, 8.0, 400, TrustMode::Off};
   free.free = true;
   const ChainSeries linear = chainSeries(free);
   EXPECT_TRUE(linear.run.events.empty());
   ASSERT_EQ(linear.grid.size(), 400u);
   double top = 0;
-  for (const ChainGridPoint& point : linear.grid) top = std::max(top, point.us);
+  const int s = resonant.stopped() - 1;
+  for (std::size_t k = 0; k < linear.grid.size(); ++k) top = std::max(top, linear.grid.u(k, s));
   EXPECT_GT(top, 1.2 * resonant.gap);  // through the stop, as the closed form has it
-  const ChainSeries stopped = chainSeries(ChainSeriesSpec{resonant, outside, 1, 8.0, 400, 0, TrustMode::Off});
-  for (const ChainGridPoint& point : stopped.grid) EXPECT_LE(point.us, resonant.gap * (1 + 1e-12));
+  const ChainSeries stopped = chainSeries(ChainSeriesSpec{resonant, outside, 1, 8.0, 400, TrustMode::Off});
+  for (std::size_t k = 0; k < stopped.grid.size(); ++k) EXPECT_LE(stopped.grid.u(k, s), resonant.gap * (1 + 1e-12));
 }
 
 // Every number of two runs, to the bit.
@@ -176,7 +193,7 @@ void expectSameRun(const ChainSeries& a, const ChainSeries& b) {
   EXPECT_EQ(a.run.stop, b.run.stop);
   EXPECT_EQ(a.run.energyFinal, b.run.energyFinal);
   ASSERT_EQ(a.grid.size(), b.grid.size());
-  for (std::size_t i = 0; i < a.grid.size(); ++i) ASSERT_EQ(a.grid[i].u, b.grid[i].u) << "grid point " << i;
+  ASSERT_EQ(a.grid.values, b.grid.values);
   ASSERT_EQ(a.flights.size(), b.flights.size());
   for (std::size_t i = 0; i < a.flights.size(); ++i) ASSERT_EQ(a.flights[i].duration, b.flights[i].duration);
   EXPECT_EQ(a.trust.verdict, b.trust.verdict);
@@ -195,7 +212,7 @@ std::vector<ChainSeriesSpec> streamedSpecs() {
   three.gap = 0.7;
   ChainState start = chainGloStart(three, {0.2, 0.5, 0.3}).state;
   start.v[2] -= 0.03;
-  specs.push_back({three, start, 300, 25.0, 300, 2, TrustMode::Auto});
+  specs.push_back({three, start, 300, 25.0, 300, TrustMode::Auto});
   MassChain four;
   four.masses = {1.0, 0.6, 1.4, 0.9};
   four.springs = {1.0, 2.0, 0.8, 1.1};
@@ -205,7 +222,7 @@ std::vector<ChainSeriesSpec> streamedSpecs() {
   ChainState moving{Eigen::VectorXd::Zero(4), Eigen::VectorXd::Zero(4)};
   moving.u << 0.0, 0.3, 0.0, -0.2;
   moving.v << 0.2, 0.8, -0.1, 0.0;
-  specs.push_back({four, moving, 400, 30.0, 500, 4, TrustMode::Auto});
+  specs.push_back({four, moving, 400, 30.0, 500, TrustMode::Auto});
   MassChain eight;
   eight.masses.assign(8, 1.0);
   eight.springs.assign(8, 1.0);
@@ -214,7 +231,7 @@ std::vector<ChainSeriesSpec> streamedSpecs() {
   slowest.back() = 1.0;
   ChainState top = chainGloStart(eight, slowest).state;
   top.v[4] -= 1e-4;
-  specs.push_back({eight, top, 100, 40.0, 600, 0, TrustMode::Off});
+  specs.push_back({eight, top, 100, 40.0, 600, TrustMode::Off});
   return specs;
 }
 
@@ -263,7 +280,7 @@ TEST(ChainSeries, AContactDoubleCannotDecideIsRunAgainInAHigherPrecision) {
   ChainState start{Eigen::Vector3d(std::nextafter(1.0, 2.0), 1.0, 1.0), Eigen::Vector3d::Zero()};
   const ChainRun inDoubleAlone = runChain(chain, start, 3);
   ASSERT_EQ(inDoubleAlone.stop, StopReason::Undecided);
-  const ChainSeriesSpec spec{chain, start, 3, 10.0, 200, 0, TrustMode::Auto};
+  const ChainSeriesSpec spec{chain, start, 3, 10.0, 200, TrustMode::Auto};
   const ChainSeries series = chainSeries(spec);
   ASSERT_NE(series.precision, Precision::Double);
   // said where the precision below ended, undecided
@@ -297,7 +314,7 @@ TEST(ChainSeries, ARaisedDesignedChainIsItsDesignRefinedInThatPrecision) {
   ASSERT_EQ(design.problem, DesignChoiceProblem::None);
   const MassChain chain{{1.0, 0.2, 0.05}, design.chosen().springs, 0, 0, 1.0};
   const ChainState start{Eigen::Vector3d(1.0, std::nextafter(1.0, 2.0), 1.0), Eigen::Vector3d::Zero()};
-  ChainSeriesSpec spec{chain, start, 4, 10.0, 50, 0, TrustMode::Off};
+  ChainSeriesSpec spec{chain, start, 4, 10.0, 50, TrustMode::Off};
   spec.design = design;
   const ChainSeries series = chainSeries(spec);
   ASSERT_NE(series.precision, Precision::Double);

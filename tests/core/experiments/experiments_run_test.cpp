@@ -128,7 +128,7 @@ TEST(ExperimentRunTest, anExperimentOfChainsRunsThemInTurnTheShownOneFirstAndMak
   MassChain other = chain;
   other.springs[1] *= 1.03;
   Spec spec;
-  spec.chains = {{chain, start, 250, 30.0, 400, 0, TrustMode::Auto}, {other, start, 250, 0, 0, 0, TrustMode::Off}};
+  spec.chains = {{chain, start, 250, 30.0, 400, TrustMode::Auto}, {other, start, 250, 0, 0, TrustMode::Off}};
   Options options;
   options.chunkSeconds = 1e-12;  // a report after every piece
   std::vector<Update> reports;

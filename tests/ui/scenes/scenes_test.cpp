@@ -323,7 +323,7 @@ class ScenesTest : public QObject {
     QCOMPARE(moving->displacementsAt(0)[2], series.chain.gap);
     int seen = 0;
     for (const auto& event : series.run.events) {
-      if (event.t > series.grid.back().t) break;
+      if (event.t > series.grid.lastTime()) break;
       QVERIFY(std::abs(moving->displacementsAt(event.t)[2] - series.chain.gap) < 0.01 * series.chain.gap);
       ++seen;
     }
@@ -400,7 +400,7 @@ class ScenesTest : public QObject {
       // and its trace beside the stopped mass's, on the same grid
       const CurveFigure& trace = figure(*m_window, PlotKind::ChainStopTrace);
       QCOMPARE(trace.other.size(), trace.curve.size());
-      QCOMPARE(trace.other.front().y(), shownSeries.grid.front().uChosen / shownSeries.chain.gap);
+      QCOMPARE(trace.other.front().y(), shownSeries.grid.u(0, 0) / shownSeries.chain.gap);
       QVERIFY2(trace.otherName.contains(QStringLiteral("u₁")), qPrintable(trace.otherName));
     }
     // the Poincaré points on H on the chosen pair (u2, v3): every contact's state there, the
@@ -638,7 +638,7 @@ class ScenesTest : public QObject {
     QVERIFY(moving);
     for (const auto& event : series.run.events) {
       QCOMPARE(event.u[4], 1.0);  // on the stop exactly at its contacts
-      if (event.t <= series.grid.back().t) QVERIFY(std::abs(moving->displacementsAt(event.t)[4] - 1) < 0.01);
+      if (event.t <= series.grid.lastTime()) QVERIFY(std::abs(moving->displacementsAt(event.t)[4] - 1) < 0.01);
     }
   }
 

@@ -432,7 +432,7 @@ class SecondTrialTest : public QObject {
     QTest::keyClick(m_window.get(), Qt::Key_W);
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     const auto whole = shownChainRun(*m_window);
-    QVERIFY(whole->grid.back().t > whole->run.tFinal - 4 * slowest);
+    QVERIFY(whole->grid.lastTime() > whole->run.tFinal - 4 * slowest);
     trace->refreshNow();
     QVERIFY2(span() >= whole->run.tFinal * 0.99, qPrintable(QString::number(span())));
     QCOMPARE(xTitle(), QStringLiteral("t / T"));
