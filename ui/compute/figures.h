@@ -12,7 +12,7 @@ namespace grazelab::ui {
 
 /// The kinds of view a scene can show.
 enum class PlotKind {
-  TraceU2,          ///< u2(t) with the stop line and the contacts
+  Trace,            ///< the stopped mass's u/d against t/T, the stop and the contacts, any chain
   PhaseU2V2,        ///< phase portrait (u2, v2)
   PhaseU1V1,        ///< phase portrait (u1, v1)
   Poincare,         ///< (u1, v1) at each contact, coloured by contact index
@@ -32,7 +32,6 @@ enum class PlotKind {
   Landscape,        ///< a map over the grazing-start plane, the run's section over it
   ModesAtlas,       ///< the periodic impacting families: 2 pi / T against log E, click an orbit
   Multipliers,      ///< the chosen orbit's multipliers against the unit circle
-  ChainStopTrace,   ///< N masses: the stopped mass's u_s/d against t/T, the stop and the contacts
   ChainPhase,       ///< N masses: the stopped mass's phase portrait
   ChainSection,     ///< N masses: the state at each contact (on H) on two chosen coordinates
   GrazingSet,       ///< N masses: the grazing set of two modes (top against lambda) or three (a region)
@@ -59,8 +58,6 @@ struct CurveFigure {
   std::vector<QPointF> reference;  ///< two points: a dashed line; one: a ringed point
   /// fixed axes [xMin, xMax] x [yMin, yMax], so that the marker's motion is seen (empty: fit)
   double xMin = 0, xMax = 0, yMin = 0, yMax = 0;
-  /// the x axis is time over this unit (a trace): the animated chain's time is a line there
-  double timeUnit = 0;
   /// the time of each curve point (a phase portrait along the run): the animated chain's time
   /// is a ring on the curve there (empty: no cursor)
   std::vector<double> curveTimes;

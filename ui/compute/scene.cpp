@@ -14,10 +14,10 @@ namespace grazelab::ui {
 
 core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, double sampleWindow) {
   core::Needs needs;
-  const bool dense = plots.contains(PlotKind::TraceU2) || plots.contains(PlotKind::PhaseU2V2) ||
+  const bool dense = plots.contains(PlotKind::Trace) || plots.contains(PlotKind::PhaseU2V2) ||
                      plots.contains(PlotKind::PhaseU1V1) || plots.contains(PlotKind::Chain);
   // contacts are marked on the u2(t) trace and flash in the animation, over the sample window
-  needs.events = plots.contains(PlotKind::TraceU2) || plots.contains(PlotKind::Chain);
+  needs.events = plots.contains(PlotKind::Trace) || plots.contains(PlotKind::Chain);
   needs.eventsUntil = sampleWindow;
   // the landscape draws the run's points on H over its map
   needs.poincare = plots.contains(PlotKind::Poincare) || plots.contains(PlotKind::Landscape);

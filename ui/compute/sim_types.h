@@ -29,6 +29,20 @@ using core::experiments::AccuracyPoint;
 using core::experiments::AccuracyProgress;
 using core::experiments::MapProgress;
 
+/// A view's title and tooltip as a scene words them for one job, over the view's own.
+struct ViewWords {
+  QString title;
+  QString toolTip;
+};
+
+/// The time unit a scene gives its run views for one job (the 1IPP orbit's own period), over
+/// the chain's period.
+struct TimeUnit {
+  double length = 0;  ///< [time]
+  QString name;       ///< on an axis: "T"
+  QString inWords;    ///< in a sentence: "the orbit's period T"
+};
+
 /// What a scene computes for its parameters: the experiment (core's description of the run and
 /// the sweep or map after it), the curves and surveys it computed itself, worded for its
 /// views, or why there is nothing to run.
@@ -46,6 +60,10 @@ struct SceneJob {
   std::optional<core::PeriodicOrbit<double>> orbit;
   /// slider ranges that depend on the chain (the admissible T/T2 of the 1IPP family)
   std::map<ParamKey, std::pair<double, double>> sliderRanges;
+  /// the scene's words for some of its views, over theirs (the run views' presentation)
+  std::map<PlotKind, ViewWords> viewWords;
+  /// the run views' time unit, when not the chain's period
+  std::optional<TimeUnit> timeUnit;
   /// the N-mass scenes: what the chain is (its springs, frequencies and their ratio, period) or
   /// why there is none (`chainRefused`), and how many designs its resonance has
   QString chainSummary;

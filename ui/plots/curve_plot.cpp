@@ -18,9 +18,8 @@ namespace grazelab::ui {
 CurvePlot::CurvePlot(PlotKind kind, QWidget* parent)
     : PlotView(QString(), QString(), QString(), parent), m_kind(kind) {
   // to the pixels: a chain's whole run (W) holds up to 100 000 points, which Qt Charts would
-  // stroke one by one at every redraw. A trace keeps each pixel column's least and greatest
-  // value (its tops on the stop); any other curve (folded families, portraits) its path
-  const Decimation along = kind == PlotKind::ChainStopTrace ? Decimation::Trace : Decimation::Path;
+  // stroke one by one at every redraw: a curve (folded families, portraits) keeps its path
+  const Decimation along = Decimation::Path;
   m_curve = addEntry(makeLine(QString(), colors::kTrace, 2.0), along);
   m_other = addEntry(makeLine(QString(), colors::kOverlay, 1.5), along);
   auto* dots = makeScatter(QString(), colors::kTrace, 5.5);
@@ -61,7 +60,6 @@ void CurvePlot::show(const SimUpdate& update) {
   setEmptyNote(figure.curve.empty() && figure.markers.empty() ? figure.whyEmpty : QString());
   setData(m_reference, point ? std::vector<QPointF>{} : figure.reference);
   setData(m_referencePoint, point ? figure.reference : std::vector<QPointF>{});
-  m_timeUnit = figure.timeUnit;
   const bool timed = !figure.dots && figure.curveTimes.size() == figure.curve.size() && !figure.curve.empty();
   m_curveTimes = timed ? figure.curveTimes : std::vector<double>{};
   m_timedCurve = timed ? figure.curve : std::vector<QPointF>{};
@@ -124,59 +122,36 @@ void CurvePlot::mouseReleaseEvent(QMouseEvent* event) {
 
 void CurvePlot::setTimeCursor(double t) {
   m_cursorTime = t;
-  if (m_timeUnit <= 0 && m_curveTimes.empty()) {
-    if (m_timeLine) m_timeLine->clear();
+  if (m_curveTimes.empty()) {
     if (m_timeRing) m_timeRing->clear();
     return;
   }
-  // not entries: they never count for the axes, the CSV or the decimation (as the two-mass
-  // trace's cursor); see-through, so that a contact under them shows
+  // not an entry: it never counts for the axes, the CSV or the decimation (as the trace's
+  // cursor); see-through, so that a contact under it shows
   QColor through = colors::kAccent;
   through.setAlpha(120);
-  if (m_timeUnit > 0) {
-    if (!m_timeLine) {
-      m_timeLine = makeLine(QString(), through, 2.0);
-      chart()->addSeries(m_timeLine);
-      for (QAbstractAxis* axis : chart()->axes()) m_timeLine->attachAxis(axis);
-      setInLegend(m_timeLine, false);
-      // from the axis' bottom to its top as they are once fitted (show() places it before the
-      // refresh that fits the axes)
-      if (auto* axis = qobject_cast<QValueAxis*>(chart()->axes(Qt::Vertical).value(0))) {
-        connect(axis, &QValueAxis::rangeChanged, this, [this] { setTimeCursor(m_cursorTime); });
-      }
-    }
-    const auto* y = qobject_cast<QValueAxis*>(chart()->axes(Qt::Vertical).value(0));
-    const double x = t / m_timeUnit;
-    if (y) m_timeLine->replace({QPointF(x, y->min()), QPointF(x, y->max())});
-  } else if (m_timeLine) {
-    m_timeLine->clear();
+  if (!m_timeRing) {
+    auto* ring = makeScatter(QString(), through, 14);
+    ring->setColor(Qt::transparent);
+    ring->setPen(QPen(colors::kAccent, 2.5));
+    useLightMarker(ring, QPen(colors::kAccent, 2.5));  // a ring: the curve shows through it
+    m_timeRing = ring;
+    chart()->addSeries(m_timeRing);
+    for (QAbstractAxis* axis : chart()->axes()) m_timeRing->attachAxis(axis);
+    setInLegend(m_timeRing, false);
   }
-  if (!m_curveTimes.empty()) {
-    if (!m_timeRing) {
-      auto* ring = makeScatter(QString(), through, 14);
-      ring->setColor(Qt::transparent);
-      ring->setPen(QPen(colors::kAccent, 2.5));
-      useLightMarker(ring, QPen(colors::kAccent, 2.5));  // a ring: the curve shows through it
-      m_timeRing = ring;
-      chart()->addSeries(m_timeRing);
-      for (QAbstractAxis* axis : chart()->axes()) m_timeRing->attachAxis(axis);
-      setInLegend(m_timeRing, false);
-    }
-    // the curve's point at t, between the two samples around it; none outside the curve's
-    // times (its last one included: the animation's end)
-    const auto after = std::upper_bound(m_curveTimes.begin(), m_curveTimes.end(), t);
-    if (t == m_curveTimes.back()) {
-      m_timeRing->replace({m_timedCurve.back()});
-    } else if (after == m_curveTimes.begin() || after == m_curveTimes.end()) {
-      m_timeRing->clear();
-    } else {
-      const std::size_t i = std::size_t(after - m_curveTimes.begin());
-      const double span = m_curveTimes[i] - m_curveTimes[i - 1];
-      const double share = span > 0 ? (t - m_curveTimes[i - 1]) / span : 0.0;
-      m_timeRing->replace({m_timedCurve[i - 1] + share * (m_timedCurve[i] - m_timedCurve[i - 1])});
-    }
-  } else if (m_timeRing) {
+  // the curve's point at t, between the two samples around it; none outside the curve's
+  // times (its last one included: the animation's end)
+  const auto after = std::upper_bound(m_curveTimes.begin(), m_curveTimes.end(), t);
+  if (t == m_curveTimes.back()) {
+    m_timeRing->replace({m_timedCurve.back()});
+  } else if (after == m_curveTimes.begin() || after == m_curveTimes.end()) {
     m_timeRing->clear();
+  } else {
+    const std::size_t i = std::size_t(after - m_curveTimes.begin());
+    const double span = m_curveTimes[i] - m_curveTimes[i - 1];
+    const double share = span > 0 ? (t - m_curveTimes[i - 1]) / span : 0.0;
+    m_timeRing->replace({m_timedCurve[i - 1] + share * (m_timedCurve[i] - m_timedCurve[i - 1])});
   }
 }
 

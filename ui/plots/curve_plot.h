@@ -47,10 +47,8 @@ class CurvePlot final : public PlotView {
   bool m_draggable = false;
   // the animated chain's time, and how the figure shown places it
   double m_cursorTime = 0;
-  double m_timeUnit = 0;
   std::vector<double> m_curveTimes;
   std::vector<QPointF> m_timedCurve;
-  QXYSeries* m_timeLine = nullptr;
   QXYSeries* m_timeRing = nullptr;
   bool m_dragging = false;
   QPointF m_ring;  ///< where the handle (ring or marker) is, in the data's coordinates

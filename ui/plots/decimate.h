@@ -49,13 +49,22 @@ class PointSpan {
                        reinterpret_cast<const std::byte*>(&record));
   }
 
+  /// The same points in other units: x times `xScale`, y times `yScale` (a run's t over its
+  /// period, u over the gap), read so, not copied.
+  PointSpan scaled(double xScale, double yScale) const {
+    PointSpan span = *this;
+    span.m_xScale *= xScale;
+    span.m_yScale *= yScale;
+    return span;
+  }
+
   QPointF operator[](std::size_t index) const {
     const std::byte* record = m_first + index * m_stride;
     double x = 0;
     double y = 0;
     std::memcpy(&x, record + m_x, sizeof x);
     std::memcpy(&y, record + m_y, sizeof y);
-    return {x, y};
+    return {x * m_xScale, y * m_yScale};
   }
   std::size_t size() const { return m_count; }
   bool empty() const { return m_count == 0; }
@@ -80,6 +89,8 @@ class PointSpan {
   std::size_t m_stride = sizeof(QPointF);
   std::size_t m_x = 0;
   std::size_t m_y = sizeof(qreal);
+  double m_xScale = 1;
+  double m_yScale = 1;
 };
 
 /// The visible data rectangle and the pixel size of the plot area it is drawn into.

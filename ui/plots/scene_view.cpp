@@ -32,7 +32,7 @@ bool RunProgress::startsOver(const SimUpdate& update) {
 
 SceneView* makeView(PlotKind kind, QWidget* parent) {
   switch (kind) {
-    case PlotKind::TraceU2: return new TracePlot(parent);
+    case PlotKind::Trace: return new TracePlot(parent);
     case PlotKind::PhaseU2V2: return new PhasePlot(PhasePlot::Mass::Two, parent);
     case PlotKind::PhaseU1V1: return new PhasePlot(PhasePlot::Mass::One, parent);
     case PlotKind::Poincare: return new PoincarePlot(parent);
@@ -45,7 +45,6 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::FlightHistogram:
     case PlotKind::DetunedFlights:
     case PlotKind::Flights:
-    case PlotKind::ChainStopTrace:
     case PlotKind::ChainPhase:
     case PlotKind::ChainSection:
     case PlotKind::GrazingSet: return new CurvePlot(kind, parent);

@@ -7,74 +7,119 @@
 #include <QScatterSeries>
 #include <QValueAxis>
 
-#include "core/model/linear_modes.h"
+#include "ui/widgets/param_specs.h"
+#include "ui/compute/time_text.h"
 #include "ui/plots/run_points.h"
 #include "ui/plots/plot_style.h"
 
 namespace grazelab::ui {
 
 TracePlot::TracePlot(QWidget* parent)
-    : PlotView(tr("Displacement of mass 2: u₂(t)"), tr("time t"), tr("u₂"), parent) {
-  m_trace = addEntry(makeLine(tr("u₂(t)"), colors::kTrace, 1.0), Decimation::Trace);
-  m_stop = addEntry(makeLine(tr("stop u₂ = d"), colors::kStop, 1.5, Qt::DashLine), Decimation::None);
+    : PlotView(tr("Displacement of mass 2: u₂ / d"), tr("t / T₂"), tr("u / d"), parent) {
+  m_trace = addEntry(makeLine(tr("u₂ / d"), colors::kTrace, 1.0), Decimation::Trace);
+  m_other = addEntry(makeLine(QString(), colors::kOverlay, 1.5), Decimation::Trace);
+  m_stop = addEntry(makeLine(tr("stop"), colors::kStop, 1.5, Qt::DashLine), Decimation::None);
   m_impacts = addEntry(makeScatter(tr("impacts"), colors::kImpact, 6), Decimation::Scatter, false);
   auto* touches = makeScatter(tr("grazings / sticks"), colors::kGrazing, 8);
   touches->setMarkerShape(QScatterSeries::MarkerShapeTriangle);
   useLightMarker(touches);
   m_grazings = addEntry(touches, Decimation::Scatter, false);
-  setToolTip(tr("Displacement u₂ of mass 2 against time. The dashed line is the stop u₂ = d; "
-                "dots mark the contacts (impacts: vermillion circles; grazing touches and sticks: orange triangles).\n"
-                "A long run shows three slow periods at the animation's time; W shows all of it.\n"
-                "Drag to zoom, Shift+drag or middle button to pan, wheel to zoom, R to reset."));
+}
+
+void TracePlot::nameFor(const ShownRun& run) {
+  const QString stopped = subscriptDigits(run.stopped + 1);
+  const QString trace = tr("u%1 / d").arg(stopped);
+  entries()[std::size_t(m_trace)].series->setName(trace);
+  const bool other = run.chosen != run.stopped;
+  entries()[std::size_t(m_other)].series->setName(other ? tr("u%1 / d").arg(subscriptDigits(run.chosen + 1)) : QString());
+  const QString title = other ? tr("Mass %1 (on the stop's side) and mass %2: u / d").arg(run.stopped + 1).arg(run.chosen + 1)
+                      : run.masses == 2 && run.stopped == 1 ? tr("Displacement of mass 2: u₂ / d")
+                                                            : tr("Mass %1 (on the stop's side): %2").arg(run.stopped + 1).arg(trace);
+  setTitles(title, tr("t / %1").arg(run.unitName()), tr("u / d"));
+  setToolTip(tr("The displacement of mass %1, which meets the stop, over the gap d, against time over %2; the "
+                "dashed line is the stop (u = d). Dots mark the contacts (impacts: vermillion circles; grazing "
+                "touches and sticks: orange triangles).%3\n"
+                "A long run shows a few periods at the animation's time; W shows all of it.\n"
+                "Drag to zoom, Shift+drag or middle button to pan, wheel to zoom, R to reset.")
+                 .arg(run.stopped + 1)
+                 .arg(run.unitInWords())
+                 .arg(other ? tr(" The other line is mass %1, the one 'phase of' names.").arg(run.chosen + 1) : QString()));
 }
 
 void TracePlot::show(const SimUpdate& update) {
-  const core::Result& result = *update.result;
-  const double gap = update.request->job.spec.model.gap;
-  const bool grown = !m_taken.startsOver(update);
+  std::optional<ShownRun> run = shownRun(update);
+  if (!run) return;
+  const bool grown = m_run && run->continues(*m_run);
   if (!grown) {
     startNewRun();
     setData(m_impacts, {});
     setData(m_grazings, {});
+    m_eventsTaken = 0;
+    nameFor(*run);
+    // the scene's words for this run, over the view's own (the 1IPP orbit's period)
+    const auto& words = update.request->job.viewWords;
+    if (const auto found = words.find(PlotKind::Trace); found != words.end()) {
+      setTitles(found->second.title, tr("t / %1").arg(run->unitName()), tr("u / d"));
+      setToolTip(found->second.toolTip);
+    }
   }
-  // the run's samples as they are, no copy (the view holds the run while it shows it)
-  const PointSpan drawn = samplePoints(result, SampleAxes::TimeU2);
-  m_taken.samples = drawn.size();
-  showInPlace(m_trace, drawn, update.result, grown);
-  const double tLast = drawn.empty() ? result.tFinal : drawn.back().x();
+  // the run's samples as they are, no copy (the view holds the run while it shows it), in the
+  // chain's units
+  const double toTime = 1 / run->period, toLength = 1 / run->gap;
+  const StateSpan& samples = run->samples;
+  showInPlace(m_trace,
+              samples.points(StateSpan::timeField(), samples.displacementField(run->stopped)).scaled(toTime, toLength),
+              run->owner, grown);
+  if (run->chosen != run->stopped) {
+    showInPlace(m_other,
+                samples.points(StateSpan::timeField(), samples.displacementField(run->chosen)).scaled(toTime, toLength),
+                run->owner, grown);
+  } else {
+    setData(m_other, {});
+  }
+  const double tLast = samples.empty() ? run->tFinal : samples.t(samples.size() - 1);
   // contacts within the trace's window; later ones wait for the samples that reach them
   std::vector<QPointF> impacts;
   std::vector<QPointF> others;
-  std::size_t next = m_taken.events;
-  for (; next < result.events.size() && result.events[next].t <= tLast; ++next) {
-    const core::Event& event = result.events[next];
-    if (event.type == core::EventType::Impact) impacts.emplace_back(event.t, gap);
-    else if (core::isContact(event.type)) others.emplace_back(event.t, gap);
+  std::size_t next = m_eventsTaken;
+  for (; next < run->eventCount() && run->eventTime(next) <= tLast; ++next) {
+    const core::EventType type = run->eventType(next);
+    if (type == core::EventType::Impact) impacts.emplace_back(run->eventTime(next) * toTime, 1.0);
+    else if (core::isContact(type)) others.emplace_back(run->eventTime(next) * toTime, 1.0);
   }
-  m_taken.events = next;
+  m_eventsTaken = next;
   appendData(m_impacts, impacts);
   appendData(m_grazings, others);
-  setData(m_stop, {QPointF(0, gap), QPointF(tLast, gap)});
-  m_gap = gap;
-  m_window = tLast;
-  m_T2 = core::computeModes(update.request->job.spec.model).T2;
-  m_tFinal = result.tFinal;
+  setData(m_stop, {QPointF(0, 1), QPointF(tLast * toTime, 1)});
+  m_window = tLast * toTime;
+  // (a grid that ends within a step of the run's end is all of it)
+  const double step = samples.size() > 1 ? samples.t(1) - samples.t(0) : 0.0;
+  m_tFinal = (run->tFinal > tLast + step ? run->tFinal : tLast) * toTime;
+  m_run = std::move(run);
   placeWindow();
   drawOverlay();
   scheduleRefresh();
 }
 
+std::vector<QPointF> TracePlot::contacts() const {
+  std::vector<QPointF> all = entries()[std::size_t(m_impacts)].points().toVector();
+  const std::vector<QPointF> others = entries()[std::size_t(m_grazings)].points().toVector();
+  all.insert(all.end(), others.begin(), others.end());
+  return all;
+}
+
 void TracePlot::placeWindow() {
   // the samples may cover only the run's first periods: the title says so when the run goes on
-  if (m_whole || m_runWindow.wholeFits(m_window, m_T2)) {
+  const QString axis = tr("t / %1").arg(m_run ? m_run->unitName() : tr("T₂"));
+  if (m_whole || m_runWindow.wholeFits(m_window, 1.0)) {
     setXWindow(std::nullopt);
-    setXTitle(runAxisTitle(tr("time t"), std::nullopt, m_window, m_tFinal));
+    setXTitle(runAxisTitle(axis, std::nullopt, m_window, m_tFinal));
     return;
   }
-  m_runWindow.follow(m_cursorTime, m_window, m_T2);
+  m_runWindow.follow(cursorOnAxis(), m_window, 1.0);
   const std::pair shown(m_runWindow.from(), m_runWindow.to());
   setXWindow(shown);
-  setXTitle(runAxisTitle(tr("time t"), shown, m_window, m_tFinal));
+  setXTitle(runAxisTitle(axis, shown, m_window, m_tFinal));
 }
 
 void TracePlot::setWholeRun(bool whole) {
@@ -83,9 +128,10 @@ void TracePlot::setWholeRun(bool whole) {
   scheduleRefresh();
 }
 
-void TracePlot::setTimeCursor(double t) {
-  m_cursorTime = t;
-  if (!m_whole && !m_runWindow.wholeFits(m_window, m_T2) && m_runWindow.follow(t, m_window, m_T2)) {
+void TracePlot::setTimeCursor(double time) {
+  m_cursorTime = time;
+  const double t = cursorOnAxis();
+  if (!m_whole && !m_runWindow.wholeFits(m_window, 1.0) && m_runWindow.follow(t, m_window, 1.0)) {
     placeWindow();
     scheduleRefresh();
   }
@@ -122,15 +168,17 @@ void TracePlot::drawOverlay() {
   if (m_overlayTrace < 0) return;
   std::vector<QPointF> trace;
   std::vector<QPointF> contacts;
-  if (m_overlayRun) {
+  if (m_overlayRun && m_run) {
+    // (the note's chain's methods: in the exact run's units)
+    const double toTime = 1 / m_run->period, toLength = 1 / m_run->gap;
     for (const core::Sample& sample : m_overlayRun->samples) {
-      if (sample.t > m_window) break;
-      trace.emplace_back(sample.t, sample.state.u2);
+      if (sample.t * toTime > m_window) break;
+      trace.emplace_back(sample.t * toTime, sample.state.u2 * toLength);
     }
     for (const core::Event& event : m_overlayRun->events) {
-      if (event.t > m_window) break;
+      if (event.t * toTime > m_window) break;
       // drawn a little above the stop, so that they sit beside the exact contacts
-      if (core::isContact(event.type)) contacts.emplace_back(event.t, m_gap * 1.03);
+      if (core::isContact(event.type)) contacts.emplace_back(event.t * toTime, 1.03);
     }
   }
   setData(m_overlayTrace, std::move(trace));

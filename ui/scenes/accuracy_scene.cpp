@@ -35,7 +35,7 @@ Scene::Spec accuracyScene() {
   scene.defaults.horizon = 50;
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::TraceU2, PlotKind::WorkPrecision};
+  scene.plots = {PlotKind::Trace, PlotKind::WorkPrecision};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token) {
     // the trace shows the whole comparison: it is what the overlay is drawn on

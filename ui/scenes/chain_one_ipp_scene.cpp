@@ -63,7 +63,7 @@ Scene::Spec chainOnePeriodicScene() {
   scene.massChain = true;
   scene.gloWeights = false;  // it starts on the 1IPP orbit
   scene.parameters = {ParamKey::Gap, ParamKey::ChainPeriod};
-  scene.plots = {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::ChainStopTrace,
+  scene.plots = {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::Trace,
                  PlotKind::Chain};
   scene.build = [](const Scene&, const Params& params, const DerivedModel&, std::stop_token stop) {
     SceneJob job;
@@ -130,29 +130,16 @@ Scene::Spec chainOnePeriodicScene() {
            "grazing limit's · ")
             .arg(number(params.chainPeriodFraction, 6), number(orbit.V, 6), number(orbit.energy, 6),
                  number(distance, 3));
-    job.presentRuns = [fraction = params.chainPeriodFraction, T, orbitInWords](
+    // the trace over the orbit's own period: it meets the stop at t = T, 2T, 3T
+    const int stopped = chain.stopped();
+    job.timeUnit = TimeUnit{T, tr("T"), tr("the orbit's period T")};
+    job.viewWords[PlotKind::Trace] = {
+        tr("The 1IPP orbit of T = %1 T*: u%2 / d").arg(number(params.chainPeriodFraction, 6), subscriptDigits(stopped)),
+        tr("The stopped mass over three periods of the orbit, from right after an impact: it meets "
+           "the stop once a period, at t = T, 2T, 3T (dots: the exact run's contacts).")};
+    job.presentRuns = [orbitInWords](
                           SceneJob& shown, const core::experiments::ChainRuns& runs) {
       const core::experiments::ChainSeries& series = *runs.front();
-      const double d = series.chain.gap;
-      const int stopped = series.chain.stopped();
-      CurveFigure trace;
-      trace.title = tr("The 1IPP orbit of T = %1 T*: u%2 / d").arg(number(fraction, 6), subscriptDigits(stopped));
-      trace.xTitle = tr("t / T");
-      trace.yTitle = tr("u / d");
-      trace.toolTip =
-          tr("The stopped mass over three periods of the orbit, from right after an impact: it meets "
-             "the stop once a period, at t = T, 2T, 3T (dots: the exact run's contacts).");
-      trace.curveName = tr("u%1 / d").arg(subscriptDigits(stopped));
-      const core::experiments::StateRecords& grid = series.grid;
-      for (std::size_t k = 0; k < grid.size(); ++k) trace.curve.emplace_back(grid.t(k) / T, grid.u(k, stopped - 1) / d);
-      trace.timeUnit = T;  // the animation's time a line on it
-      trace.referenceName = tr("stop");
-      trace.reference = {QPointF(0, 1), QPointF(3, 1)};
-      trace.markerName = tr("contacts");
-      for (const core::ChainEvent& event : series.run.events) {
-        if (core::isContact(event.type)) trace.markers.emplace_back(event.t / T, 1.0);
-      }
-      shown.figures[PlotKind::ChainStopTrace] = trace;
       shown.status = orbitInWords + chainStatusOf(series);
     };
     job.ok = true;

@@ -78,7 +78,7 @@ Scene::Spec detunedScene() {
   scene.parameters = {ParamKey::FrequencyRatio, ParamKey::Lambda,       ParamKey::M1,
                       ParamKey::M2,             ParamKey::Gap,          ParamKey::K1,
                       ParamKey::Perturbation,   ParamKey::Horizon};
-  scene.plots = {PlotKind::DetunedFlights, PlotKind::Flights, PlotKind::TraceU2};
+  scene.plots = {PlotKind::DetunedFlights, PlotKind::Flights, PlotKind::Trace};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token stop) {
     SceneJob job;
     const auto k2 = core::k2ForFrequencyRatio(params.m1, params.m2, params.k1,

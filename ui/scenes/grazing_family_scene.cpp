@@ -69,7 +69,7 @@ Scene::Spec grazingFamilyScene() {
   scene.defaults.horizon = 60;
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::TraceU2, PlotKind::Chain,      PlotKind::GrazingMaximum,
+  scene.plots = {PlotKind::Trace, PlotKind::Chain,      PlotKind::GrazingMaximum,
                  PlotKind::PhaseU2V2, PlotKind::FreeFlight, PlotKind::Poincare};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token) {

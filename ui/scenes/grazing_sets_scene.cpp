@@ -123,7 +123,7 @@ Scene::Spec grazingSetsScene() {
   scene.defaults.massChain.weights = {0.5, 0.5};
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap};
-  scene.plots = {PlotKind::GrazingSet, PlotKind::ChainStopTrace, PlotKind::Chain};
+  scene.plots = {PlotKind::GrazingSet, PlotKind::Trace, PlotKind::Chain};
   scene.build = [](const Scene&, const Params& params, const DerivedModel&, std::stop_token stop) {
     SceneJob job;
     const MassChainParams& given = params.massChain;
@@ -174,26 +174,14 @@ Scene::Spec grazingSetsScene() {
     QStringList written;
     for (double w : weights) written.append(number(w, 4));
     job.status = tr("GLO with weights (%1) %2").arg(written.join(QStringLiteral(", ")), verdictInWords(verdict));
-    job.presentRuns = [period](SceneJob& shown, const core::experiments::ChainRuns& runs) {
-      const core::experiments::ChainSeries& series = *runs.front();
-      const int stopped = series.chain.stopped();
-      CurveFigure trace;
-      trace.title = tr("GLO(λ) over one period: u%1 / d").arg(subscriptDigits(stopped));
-      trace.xTitle = tr("t / T");
-      trace.yTitle = tr("u / d");
-      trace.toolTip =
-          tr("The stopped mass of GLO(λ) over its period T, the stop dashed: a grazing orbit stays "
-             "at or below it and touches it at t = 0 and T; weights outside the set pass it (the "
-             "linear motion is drawn, as if the stop were not there).");
-      trace.curveName = tr("u%1 / d").arg(subscriptDigits(stopped));
-      const core::experiments::StateRecords& grid = series.grid;
-      for (std::size_t k = 0; k < grid.size(); ++k)
-        trace.curve.emplace_back(grid.t(k) / period, grid.u(k, stopped - 1) / series.chain.gap);
-      trace.timeUnit = period;  // the animation's time a line on it
-      trace.referenceName = tr("stop");
-      trace.reference = {QPointF(0, 1), QPointF(1, 1)};
-      shown.figures[PlotKind::ChainStopTrace] = trace;
-    };
+    // (the orbit's period: that of the modes it weighs, which a chain with no common period has too)
+    job.timeUnit = TimeUnit{period, tr("T"), tr("the orbit's period T")};
+    const int stopped = chain.stopped();
+    job.viewWords[PlotKind::Trace] = {
+        tr("GLO(λ) over one period: u%1 / d").arg(subscriptDigits(stopped)),
+        tr("The stopped mass of GLO(λ) over its period T, the stop dashed: a grazing orbit stays "
+           "at or below it and touches it at t = 0 and T; weights outside the set pass it (the "
+           "linear motion is drawn, as if the stop were not there).")};
     job.ok = true;
     return job;
   };

@@ -31,7 +31,7 @@ Scene::Spec nearGrazingScene() {
   scene.defaults.horizon = 10000;
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::Poincare, PlotKind::FreeFlight, PlotKind::TraceU2};
+  scene.plots = {PlotKind::Poincare, PlotKind::FreeFlight, PlotKind::Trace};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token) {
     // the trace is a glance at the first periods only; the section is the point of the scene

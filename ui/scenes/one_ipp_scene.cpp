@@ -81,7 +81,7 @@ Scene::Spec onePeriodicScene() {
   scene.parameters = {ParamKey::Period, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
   scene.plots = {PlotKind::OnePeriodicData, PlotKind::ImpactSpeed, PlotKind::FrequencyEnergy,
-                 PlotKind::TraceU2, PlotKind::Chain};
+                 PlotKind::Trace, PlotKind::Chain};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token stop) {
     SceneJob job;

@@ -72,7 +72,7 @@ Scene::Spec perturbationScene() {
   scene.defaults.horizon = 200;
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::FreeFlight, PlotKind::SpreadAgainstSize, PlotKind::TraceU2};
+  scene.plots = {PlotKind::FreeFlight, PlotKind::SpreadAgainstSize, PlotKind::Trace};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token stop) {
     SceneJob job = gloStartJob(self, params, derived, 40 * derived.modes.T2);

@@ -76,7 +76,7 @@ Scene::Spec randomStartsScene() {
   scene.defaults.horizon = 40;
   scene.parameters = {ParamKey::M1, ParamKey::M2, ParamKey::Gap, ParamKey::K1, ParamKey::K2,
                       ParamKey::Horizon};
-  scene.plots = {PlotKind::FlightHistogram, PlotKind::FreeFlight, PlotKind::TraceU2};
+  scene.plots = {PlotKind::FlightHistogram, PlotKind::FreeFlight, PlotKind::Trace};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token stop) {
     SceneJob job;

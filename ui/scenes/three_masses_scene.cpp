@@ -98,49 +98,18 @@ CurveFigure sectionFigure(const MassChainParams& given, const core::experiments:
 // The scene's figures and status of its runs so far: the run shown, then (when asked) the same
 // start on the detuned chain.
 void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs, const MassChainParams& given,
-                        bool contrast, double window, core::TrustMode trust, double slowest) {
+                        bool contrast, core::TrustMode trust, double slowest) {
   const core::experiments::ChainSeries& series = *runs.front();
   const core::MassChain& chain = series.chain;
   const bool resonant = series.period > 0;
   const double unit = resonant ? series.period : slowest;
   const QString unitName = resonant ? tr("T") : tr("slowest period");
 
-  // u_s(t) of the stopped mass over the first periods, the stop at 1, the contacts on it
-  CurveFigure trace;
-  trace.title = tr("Mass %1 (on the stop's side): u%2 / d").arg(chain.stopped()).arg(subscriptDigits(chain.stopped()));
-  trace.xTitle = tr("t / %1").arg(unitName);
-  trace.yTitle = tr("u / d");
-  trace.toolTip =
-      tr("The stopped mass's displacement over the gap d; the dashed line is the stop. Each "
-         "dot is a contact.\nA long run shows its first four slowest periods; W shows all of it.");
-  trace.curveName = tr("u%1 / d").arg(subscriptDigits(chain.stopped()));
-  const core::experiments::StateRecords& grid = series.grid;
-  const int stopped = chain.stopped() - 1, chosen = given.shown() - 1;
-  for (std::size_t k = 0; k < grid.size(); ++k) trace.curve.emplace_back(grid.t(k) / unit, grid.u(k, stopped) / chain.gap);
-  trace.timeUnit = unit;  // the animation's time a line on it
   // the grid spans `window`, or the whole run when W asks for it (ChainSeriesSpec::maxGridPoints,
-  // set by the window); the axis says what of the run it shows
+  // set by the window)
+  const core::experiments::StateRecords& grid = series.grid;
   const double sampled = grid.lastTime();
-  const bool whole = sampled > window * (1 + 1e-9);
-  const double step = window / (kGridPoints - 1);
-  const bool goesOn = series.run.tFinal > sampled + step;  // (a grid ends within a step of the run)
-  trace.xTitle = runAxisTitle(trace.xTitle,
-                              goesOn && !whole ? std::optional(std::pair(0.0, sampled / unit)) : std::nullopt,
-                              sampled / unit, (goesOn ? series.run.tFinal : sampled) / unit);
-  // the mass the panel's 'phase of' names, when it is another: its trace beside the stopped one
-  if (given.shown() != chain.stopped()) {
-    trace.title = tr("Mass %1 (on the stop's side) and mass %2: u / d").arg(chain.stopped()).arg(given.shown());
-    trace.otherName = tr("u%1 / d").arg(subscriptDigits(given.shown()));
-    for (std::size_t k = 0; k < grid.size(); ++k) trace.other.emplace_back(grid.t(k) / unit, grid.u(k, chosen) / chain.gap);
-  }
-  trace.referenceName = tr("stop");
-  trace.reference = {QPointF(0, 1), QPointF(sampled / unit, 1)};
-  trace.markerName = tr("contacts");
-  for (const core::ChainEvent& event : series.run.events) {
-    if (event.t > sampled) break;
-    if (core::isContact(event.type)) trace.markers.emplace_back(event.t / unit, 1.0);
-  }
-  job.figures[PlotKind::ChainStopTrace] = trace;
+  const int chosen = given.shown() - 1;
 
   job.figures[PlotKind::Flights] =
       flightFigure(resonant ? tr("Free flights from the stop / T (≤ 1)")
@@ -266,7 +235,7 @@ Scene::Spec threeMassesScene() {
   scene.defaults.massChain = MassChainParams{};
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::ChainStopTrace, PlotKind::Chain, PlotKind::Flights,
+  scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::Flights,
                  PlotKind::ChainPhase, PlotKind::ChainSection, PlotKind::DetunedFlights};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token stop) {
     const MassChainParams& given = params.massChain;
@@ -303,9 +272,9 @@ Scene::Spec threeMassesScene() {
     }
     job.chainSummary = chainSummaryOf(chain, given, choice.designs, modes, ratios);
     job.chainDesigns = choice.designs;
-    job.presentRuns = [given, contrast, window = run.window, trust = run.trust, slowest](
+    job.presentRuns = [given, contrast, trust = run.trust, slowest](
                           SceneJob& shown, const core::experiments::ChainRuns& runs) {
-      presentThreeMasses(shown, runs, given, contrast, window, trust, slowest);
+      presentThreeMasses(shown, runs, given, contrast, trust, slowest);
     };
     job.ok = true;
     return job;
@@ -337,7 +306,7 @@ Scene::Spec eightMassesScene() {
   scene.defaults.massChain.weights.back() = 1.0;  // the slowest mode alone
   scene.defaults.perturbation = -1e-4;
   scene.defaults.horizon = 100;
-  scene.plots = {PlotKind::ChainStopTrace, PlotKind::Chain, PlotKind::Flights,
+  scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::Flights,
                  PlotKind::ChainPhase, PlotKind::ChainSection};
   return scene;
 }

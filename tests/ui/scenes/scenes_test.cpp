@@ -25,6 +25,7 @@
 #include "ui/pictures/heat_map.h"
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/plot_view.h"
+#include "ui/plots/trace_plot.h"
 #include "ui/widgets/chain_editor.h"
 #include "ui/widgets/parameter_panel.h"
 
@@ -36,6 +37,14 @@ using grazelab::ui::testing::waitForLatestFinal;
 namespace {
 
 bool shows(const Scene& scene, PlotKind kind) { return scene.plots().contains(kind); }
+
+// The window's trace of the run (the one view of every chain's run).
+const TracePlot& tracePlot(const MainWindow& window) {
+  const auto plots = window.findChildren<TracePlot*>();
+  if (plots.size() != 1) qFatal("one trace expected, %d found", int(plots.size()));
+  plots.front()->refreshNow();
+  return *plots.front();
+}
 
 const CurveFigure& figure(const MainWindow& window, PlotKind kind) {
   return window.displayed()->request->job.figures.at(kind);
@@ -68,7 +77,7 @@ class ScenesTest : public QObject {
       QVERIFY2(shown.chains.size() == shown.request->job.spec.chains.size(), qPrintable(name));
       const auto& needs = shown.request->job.spec.run.needs;
       // (a scene of N masses runs no two-mass run: it asks it for nothing)
-      const bool dense = !scene.massChain() && (shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::PhaseU2V2) ||
+      const bool dense = !scene.massChain() && (shows(scene, PlotKind::Trace) || shows(scene, PlotKind::PhaseU2V2) ||
                                                 shows(scene, PlotKind::PhaseU1V1) || shows(scene, PlotKind::Chain));
       QVERIFY2((needs.samples.spacing > 0) == dense, qPrintable(name));
       QVERIFY2(needs.poincare == (shows(scene, PlotKind::Poincare) || shows(scene, PlotKind::Landscape)),
@@ -76,7 +85,7 @@ class ScenesTest : public QObject {
       QVERIFY2(m_window->displayed()->request->job.spec.map.has_value() == shows(scene, PlotKind::Landscape),
                qPrintable(name));
       QVERIFY2(needs.freeFlights == shows(scene, PlotKind::FreeFlight), qPrintable(name));
-      QVERIFY2(scene.massChain() || needs.events == (shows(scene, PlotKind::TraceU2) || shows(scene, PlotKind::Chain)),
+      QVERIFY2(scene.massChain() || needs.events == (shows(scene, PlotKind::Trace) || shows(scene, PlotKind::Chain)),
                qPrintable(name));
       QVERIFY2(bool(m_window->chainView()) == shows(scene, PlotKind::Chain), qPrintable(name));
       // every view it lists is on screen, each curve view with its figure
@@ -89,7 +98,7 @@ class ScenesTest : public QObject {
                            kind == PlotKind::FrequencyEnergy ||
                            kind == PlotKind::GrazingMaximum || kind == PlotKind::SpreadAgainstSize ||
                            kind == PlotKind::FlightHistogram || kind == PlotKind::DetunedFlights ||
-                           kind == PlotKind::Flights || kind == PlotKind::ChainStopTrace ||
+                           kind == PlotKind::Flights ||
                            kind == PlotKind::ChainPhase || kind == PlotKind::ChainSection ||
                            kind == PlotKind::GrazingSet;
         if (curve) QVERIFY2(m_window->displayed()->request->job.figures.count(kind), qPrintable(name));
@@ -312,7 +321,10 @@ class ScenesTest : public QObject {
     for (const QPointF& point : detunedFlights.markers) longest = std::max(longest, point.y());  // past 3 T
     QVERIFY2(longest > 1.01, qPrintable(QString::number(longest)));
     // the trace stays at or below the stop, and touches it at each contact
-    for (const QPointF& point : figure(*m_window, PlotKind::ChainStopTrace).curve) QVERIFY(point.y() <= 1.0 + 1e-12);
+    const PointSpan trace = tracePlot(*m_window).stoppedMass();
+    QVERIFY(trace.size() > 100);
+    for (std::size_t k = 0; k < trace.size(); ++k) QVERIFY(trace[k].y() <= 1.0 + 1e-12);
+    for (const QPointF& contact : tracePlot(*m_window).contacts()) QCOMPARE(contact.y(), 1.0);
     // the chain moving starts at the orbit's touch and has the stopped mass on the stop at each
     // contact (its grid interpolated: to 1 % of d)
     ChainView* moving = m_window->chainView();
@@ -398,10 +410,11 @@ class ScenesTest : public QObject {
       QCOMPARE(phase.markers.front().x(), shownSeries.run.events.front().u[0] / shownSeries.chain.gap);
       QVERIFY(std::abs(phase.curve.front().x() - shownSeries.start.u[0] / shownSeries.chain.gap) < 1e-12);
       // and its trace beside the stopped mass's, on the same grid
-      const CurveFigure& trace = figure(*m_window, PlotKind::ChainStopTrace);
-      QCOMPARE(trace.other.size(), trace.curve.size());
-      QCOMPARE(trace.other.front().y(), shownSeries.grid.u(0, 0) / shownSeries.chain.gap);
-      QVERIFY2(trace.otherName.contains(QStringLiteral("u₁")), qPrintable(trace.otherName));
+      const TracePlot& trace = tracePlot(*m_window);
+      QCOMPARE(trace.chosenMass().size(), trace.stoppedMass().size());
+      QCOMPARE(trace.chosenMass()[0].y(), shownSeries.grid.u(0, 0) / shownSeries.chain.gap);
+      QVERIFY2(trace.legendNames().contains(QStringLiteral("u₁ / d")), qPrintable(trace.legendNames().join(',')));
+      QVERIFY2(trace.title().contains(QStringLiteral("mass 1")), qPrintable(trace.title()));
     }
     // the Poincaré points on H on the chosen pair (u2, v3): every contact's state there, the
     // velocity the one before the contact, scaled as the phase portrait is
@@ -562,7 +575,9 @@ class ScenesTest : public QObject {
     QCOMPARE(region.reference.front(), QPointF(weights[1], weights[2]));
     // and the orbit drawn passes the stop (its linear motion, not a run held by the stop)
     double top = 0;
-    for (const QPointF& point : figure(*m_window, PlotKind::ChainStopTrace).curve) top = std::max(top, point.y());
+    const PointSpan orbit = tracePlot(*m_window).stoppedMass();
+    for (std::size_t k = 0; k < orbit.size(); ++k) top = std::max(top, orbit[k].y());
+    QVERIFY2(tracePlot(*m_window).title().contains(QStringLiteral("GLO")), qPrintable(tracePlot(*m_window).title()));
     QVERIFY2(top > 1.0 + 1e-3, qPrintable(QString::number(top)));
     QVERIFY2(m_window->displayed()->request->job.status.contains(QStringLiteral("crosses")),
              qPrintable(m_window->displayed()->request->job.status));
@@ -606,10 +621,12 @@ class ScenesTest : public QObject {
     QVERIFY2(std::abs(nearest.y() - data.reference[0].y()) < 1e-4,
              qPrintable(QStringLiteral("%1 against %2").arg(nearest.y()).arg(data.reference[0].y())));
     QVERIFY(speed.curve.back().y() < 1e-4);
-    for (const QPointF& contact : figure(*m_window, PlotKind::ChainStopTrace).markers) {
+    // (on the trace over the orbit's own period)
+    const std::vector<QPointF> contacts = tracePlot(*m_window).contacts();
+    for (const QPointF& contact : contacts) {
       QVERIFY2(std::abs(contact.x() - std::round(contact.x())) < 1e-9, qPrintable(QString::number(contact.x(), 'g', 17)));
     }
-    QCOMPARE(figure(*m_window, PlotKind::ChainStopTrace).markers.size(), std::size_t(3));
+    QCOMPARE(contacts.size(), std::size_t(3));
     // the weights are not this scene's: hidden
     const auto* firstWeight = m_window->parameterPanel()->chainEditor()->findChild<QLabel*>(QStringLiteral("chainFirstWeight"));
     QVERIFY(firstWeight && !firstWeight->isVisibleTo(m_window.get()));
@@ -685,12 +702,13 @@ class ScenesTest : public QObject {
     QCOMPARE(chain->time(), events[0].t);
     // at a contact the state shown is on the stop
     QVERIFY(std::abs(chain->displacementsAt(chain->time())[1] - m_window->params().gap) < 1e-3);
-    // the trace's cursor line stands at that time
+    // the trace's cursor line stands at that time (in slow periods T2, as its axis)
     PlotView* trace = m_window->plots().first();
+    const double T2 = grazelab::core::computeModes(m_window->displayed()->request->job.spec.model).T2;
     QXYSeries* cursor = nullptr;
     for (QAbstractSeries* series : trace->chart()->series()) {
       auto* xy = qobject_cast<QXYSeries*>(series);
-      if (xy && xy->count() == 2 && xy->at(0).x() == xy->at(1).x() && xy->at(0).x() == chain->time()) cursor = xy;
+      if (xy && xy->count() == 2 && xy->at(0).x() == xy->at(1).x() && xy->at(0).x() == chain->time() / T2) cursor = xy;
     }
     QVERIFY(cursor);
     // playing moves time forward, about at the rate asked (generous: a loaded machine)

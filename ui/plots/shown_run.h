@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <QString>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/solver/chain_run.h"
+#include "core/solver/events.h"
+#include "ui/compute/sim_types.h"
+#include "ui/plots/run_points.h"
+
+namespace grazelab::ui {
+
+/// The run an update shows, as the run views read it, whatever the chain: the note's chain's
+/// run (its samples and events) or the first series of an experiment of N masses (its grid and
+/// events), both read where they are. Drawn in the chain's own units: time over its period,
+/// displacements over the gap.
+struct ShownRun {
+  std::shared_ptr<const void> owner;  ///< keeps what `samples` and the events read alive
+  StateSpan samples;
+  int masses = 0;
+  int stopped = 0;  ///< 0-based
+  /// 0-based: the mass the panel's 'phase of' names (the stopped one unless another is asked)
+  int chosen = 0;
+  double gap = 1;
+  /// the time unit: the common period (T2 of the note's chain, T of a resonant one), or the
+  /// slowest period of a chain with none
+  enum class Unit { SlowPeriodT2, CommonPeriod, SlowestPeriod, Scenes };
+  TimeUnit scenes;  ///< Unit::Scenes: the scene's own (SceneJob::timeUnit)
+  Unit unit = Unit::SlowPeriodT2;
+  double period = 1;  ///< its length [time]
+  double tFinal = 0;   ///< where the run is (so far)
+  /// the run as computed: a raised run (attempt) or another request starts the views over
+  std::uint64_t id = 0;
+  int attempt = 0;
+
+  /// The unit's name on an axis ("T₂", "T", "slowest period") and in a sentence.
+  QString unitName() const;
+  QString unitInWords() const;
+  std::size_t eventCount() const;
+  double eventTime(std::size_t k) const;
+  core::EventType eventType(std::size_t k) const;
+  /// the same run as `before`, grown (not another one, nor a raised one from its start)
+  bool continues(const ShownRun& before) const {
+    return owner && before.owner && id == before.id && attempt == before.attempt &&
+           samples.size() >= before.samples.size() && eventCount() >= before.eventCount();
+  }
+
+  const std::vector<core::Event>* twoMassEvents = nullptr;
+  const std::vector<core::ChainEvent>* chainEvents = nullptr;
+};
+
+/// The run of `update`: its first series of N masses, or its run of the note's chain; none when
+/// it has neither (a scene's own computation so far).
+std::optional<ShownRun> shownRun(const SimUpdate& update);
+
+}  // namespace grazelab::ui
