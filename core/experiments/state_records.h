@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
+#include <cassert>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -18,7 +19,7 @@ struct StateRecords {
 
   std::size_t stride() const { return 1 + 2 * std::size_t(masses); }
   std::size_t size() const { return masses > 0 ? values.size() / stride() : 0; }
-  bool empty() const { return values.empty(); }
+  bool empty() const { return size() == 0; }
   double t(std::size_t k) const { return values[k * stride()]; }
   /// The last record's time; 0 when there is none.
   double lastTime() const { return empty() ? 0.0 : t(size() - 1); }
@@ -33,6 +34,7 @@ struct StateRecords {
   /// double once).
   template <typename Values>
   void push(double time, const Values& u, const Values& v) {
+    assert(masses > 0);
     values.push_back(time);
     for (int i = 0; i < masses; ++i) values.push_back(static_cast<double>(u[i]));
     for (int i = 0; i < masses; ++i) values.push_back(static_cast<double>(v[i]));

@@ -13,8 +13,8 @@ namespace grazelab::ui {
 /// The kinds of view a scene can show.
 enum class PlotKind {
   Trace,            ///< the stopped mass's u/d against t/T, the stop and the contacts, any chain
-  PhaseU2V2,        ///< phase portrait (u2, v2)
-  PhaseU1V1,        ///< phase portrait (u1, v1)
+  Phase,            ///< the phase portrait of the mass 'phase of' names (mass 2 of the note's chain)
+  PhaseU1V1,        ///< the phase portrait of mass 1
   Poincare,         ///< (u1, v1) at each contact, coloured by contact index
   FreeFlight,       ///< free-flight time against contact index, with the line FFT = T2
   WorkPrecision,    ///< every method's error against its run time, with an overlay picker
@@ -32,7 +32,6 @@ enum class PlotKind {
   Landscape,        ///< a map over the grazing-start plane, the run's section over it
   ModesAtlas,       ///< the periodic impacting families: 2 pi / T against log E, click an orbit
   Multipliers,      ///< the chosen orbit's multipliers against the unit circle
-  ChainPhase,       ///< N masses: the stopped mass's phase portrait
   ChainSection,     ///< N masses: the state at each contact (on H) on two chosen coordinates
   GrazingSet,       ///< N masses: the grazing set of two modes (top against lambda) or three (a region)
 };
@@ -49,18 +48,12 @@ struct CurveFigure {
   /// the curve's points are values at separate events (a flight per contact): drawn as dots,
   /// not joined by a line (joined spikes merge into a block on a projector)
   bool dots = false;
-  /// a second line beside the curve (another mass's trace, asked for), in another colour
-  QString otherName;
-  std::vector<QPointF> other;
   QString markerName;
   std::vector<QPointF> markers;
   QString referenceName;
   std::vector<QPointF> reference;  ///< two points: a dashed line; one: a ringed point
   /// fixed axes [xMin, xMax] x [yMin, yMax], so that the marker's motion is seen (empty: fit)
   double xMin = 0, xMax = 0, yMin = 0, yMax = 0;
-  /// the time of each curve point (a phase portrait along the run): the animated chain's time
-  /// is a ring on the curve there (empty: no cursor)
-  std::vector<double> curveTimes;
   /// the one-point reference (or else the one marker) is the panel's GLO weights on these modes
   /// (0-based, fastest first: x is the second's weight, y the third's, the first balancing):
   /// dragging it, or clicking, moves them (empty: nothing to drag)

@@ -14,7 +14,7 @@ namespace grazelab::ui {
 
 core::Needs needsFor(const QList<PlotKind>& plots, const core::Modes& modes, double sampleWindow) {
   core::Needs needs;
-  const bool dense = plots.contains(PlotKind::Trace) || plots.contains(PlotKind::PhaseU2V2) ||
+  const bool dense = plots.contains(PlotKind::Trace) || plots.contains(PlotKind::Phase) ||
                      plots.contains(PlotKind::PhaseU1V1) || plots.contains(PlotKind::Chain);
   // contacts are marked on the u2(t) trace and flash in the animation, over the sample window
   needs.events = plots.contains(PlotKind::Trace) || plots.contains(PlotKind::Chain);

@@ -64,6 +64,9 @@ struct SceneJob {
   std::map<PlotKind, ViewWords> viewWords;
   /// the run views' time unit, when not the chain's period
   std::optional<TimeUnit> timeUnit;
+  /// the mass whose portrait the run views draw beside the stopped one (1-based: the scene's
+  /// 'phase of'); 0: the stopped mass alone
+  int chosenMass = 0;
   /// the N-mass scenes: what the chain is (its springs, frequencies and their ratio, period) or
   /// why there is none (`chainRefused`), and how many designs its resonance has
   QString chainSummary;

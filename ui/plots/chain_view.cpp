@@ -350,12 +350,12 @@ std::vector<double> ChainView::displacementsAt(double t) const {
   }
   const std::size_t after = low;
   std::vector<double> u(std::size_t(m_motion.masses()));
+  if (after == 0 || after == m_motion.size()) {
+    for (int i = 0; i < m_motion.masses(); ++i) u[std::size_t(i)] = m_motion.u(after == 0 ? 0 : after - 1, i);
+    return u;
+  }
+  const double w = (t - m_motion.t(after - 1)) / (m_motion.t(after) - m_motion.t(after - 1));
   for (int i = 0; i < m_motion.masses(); ++i) {
-    if (after == 0 || after == m_motion.size()) {
-      u[std::size_t(i)] = m_motion.u(after == 0 ? 0 : after - 1, i);
-      continue;
-    }
-    const double w = (t - m_motion.t(after - 1)) / (m_motion.t(after) - m_motion.t(after - 1));
     const double a = m_motion.u(after - 1, i), b = m_motion.u(after, i);
     u[std::size_t(i)] = a + w * (b - a);
   }

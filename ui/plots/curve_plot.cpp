@@ -17,11 +17,8 @@ namespace grazelab::ui {
 
 CurvePlot::CurvePlot(PlotKind kind, QWidget* parent)
     : PlotView(QString(), QString(), QString(), parent), m_kind(kind) {
-  // to the pixels: a chain's whole run (W) holds up to 100 000 points, which Qt Charts would
-  // stroke one by one at every redraw: a curve (folded families, portraits) keeps its path
-  const Decimation along = Decimation::Path;
-  m_curve = addEntry(makeLine(QString(), colors::kTrace, 2.0), along);
-  m_other = addEntry(makeLine(QString(), colors::kOverlay, 1.5), along);
+  // to the pixels: a curve (folded families) keeps its path
+  m_curve = addEntry(makeLine(QString(), colors::kTrace, 2.0), Decimation::Path);
   auto* dots = makeScatter(QString(), colors::kTrace, 5.5);
   dots->setPen(Qt::NoPen);
   m_dots = addEntry(dots, Decimation::Scatter);
@@ -48,22 +45,16 @@ void CurvePlot::show(const SimUpdate& update) {
   const auto& list = entries();
   list[std::size_t(m_curve)].series->setName(figure.dots ? QString() : figure.curveName);
   list[std::size_t(m_dots)].series->setName(figure.dots ? figure.curveName : QString());
-  list[std::size_t(m_other)].series->setName(figure.other.empty() ? QString() : figure.otherName);
   list[std::size_t(m_marker)].series->setName(figure.markerName);
   const bool point = figure.reference.size() == 1;
   list[std::size_t(m_reference)].series->setName(point ? QString() : figure.referenceName);
   list[std::size_t(m_referencePoint)].series->setName(point ? figure.referenceName : QString());
   setData(m_curve, figure.dots ? std::vector<QPointF>{} : figure.curve);
   setData(m_dots, figure.dots ? figure.curve : std::vector<QPointF>{});
-  setData(m_other, figure.other);
   setData(m_marker, figure.markers);
   setEmptyNote(figure.curve.empty() && figure.markers.empty() ? figure.whyEmpty : QString());
   setData(m_reference, point ? std::vector<QPointF>{} : figure.reference);
   setData(m_referencePoint, point ? figure.reference : std::vector<QPointF>{});
-  const bool timed = !figure.dots && figure.curveTimes.size() == figure.curve.size() && !figure.curve.empty();
-  m_curveTimes = timed ? figure.curveTimes : std::vector<double>{};
-  m_timedCurve = timed ? figure.curve : std::vector<QPointF>{};
-  setTimeCursor(m_cursorTime);
   m_draggable = !figure.draggedModes.empty() && (point || figure.markers.size() == 1);
   if (m_draggable) m_ring = point ? figure.reference.front() : figure.markers.front();
   setMouseTracking(m_draggable);  // the hand over the ring
@@ -118,41 +109,6 @@ void CurvePlot::mouseReleaseEvent(QMouseEvent* event) {
     return;
   }
   PlotView::mouseReleaseEvent(event);
-}
-
-void CurvePlot::setTimeCursor(double t) {
-  m_cursorTime = t;
-  if (m_curveTimes.empty()) {
-    if (m_timeRing) m_timeRing->clear();
-    return;
-  }
-  // not an entry: it never counts for the axes, the CSV or the decimation (as the trace's
-  // cursor); see-through, so that a contact under it shows
-  QColor through = colors::kAccent;
-  through.setAlpha(120);
-  if (!m_timeRing) {
-    auto* ring = makeScatter(QString(), through, 14);
-    ring->setColor(Qt::transparent);
-    ring->setPen(QPen(colors::kAccent, 2.5));
-    useLightMarker(ring, QPen(colors::kAccent, 2.5));  // a ring: the curve shows through it
-    m_timeRing = ring;
-    chart()->addSeries(m_timeRing);
-    for (QAbstractAxis* axis : chart()->axes()) m_timeRing->attachAxis(axis);
-    setInLegend(m_timeRing, false);
-  }
-  // the curve's point at t, between the two samples around it; none outside the curve's
-  // times (its last one included: the animation's end)
-  const auto after = std::upper_bound(m_curveTimes.begin(), m_curveTimes.end(), t);
-  if (t == m_curveTimes.back()) {
-    m_timeRing->replace({m_timedCurve.back()});
-  } else if (after == m_curveTimes.begin() || after == m_curveTimes.end()) {
-    m_timeRing->clear();
-  } else {
-    const std::size_t i = std::size_t(after - m_curveTimes.begin());
-    const double span = m_curveTimes[i] - m_curveTimes[i - 1];
-    const double share = span > 0 ? (t - m_curveTimes[i - 1]) / span : 0.0;
-    m_timeRing->replace({m_timedCurve[i - 1] + share * (m_timedCurve[i] - m_timedCurve[i - 1])});
-  }
 }
 
 }  // namespace grazelab::ui

@@ -20,9 +20,6 @@ class CurvePlot final : public PlotView {
   PlotKind kind() const { return m_kind; }
   /// The figure shown has a handle to drag (CurveFigure::draggedModes).
   bool draggable() const { return m_draggable; }
-  /// Marks the animated chain's time: a line on a trace (CurveFigure::timeUnit), a ring on a
-  /// curve along the run (CurveFigure::curveTimes); nothing on other figures.
-  void setTimeCursor(double t) override;
 
  signals:
   /// The ring of a draggable figure (CurveFigure::draggedModes) was dragged to `value`, in the
@@ -40,16 +37,10 @@ class CurvePlot final : public PlotView {
   PlotKind m_kind;
   int m_dots = 0;  ///< the curve as dots (CurveFigure::dots)
   int m_curve = 0;
-  int m_other = 0;  ///< CurveFigure::other
   int m_reference = 0;       ///< a dashed line (two points)
   int m_referencePoint = 0;  ///< a ring (one point)
   int m_marker = 0;
   bool m_draggable = false;
-  // the animated chain's time, and how the figure shown places it
-  double m_cursorTime = 0;
-  std::vector<double> m_curveTimes;
-  std::vector<QPointF> m_timedCurve;
-  QXYSeries* m_timeRing = nullptr;
   bool m_dragging = false;
   QPointF m_ring;  ///< where the handle (ring or marker) is, in the data's coordinates
 };

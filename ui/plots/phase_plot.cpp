@@ -2,68 +2,98 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/phase_plot.h"
 
+#include <QChart>
 #include <QLineSeries>
 #include <QScatterSeries>
 #include <QValueAxis>
 
 #include <algorithm>
 
-#include "core/model/linear_modes.h"
-#include "ui/plots/run_points.h"
 #include "ui/plots/plot_style.h"
-
-#include <QChart>
-#include <QScatterSeries>
+#include "ui/widgets/param_specs.h"
 
 namespace grazelab::ui {
+namespace {
+
+// The first sample at or after time t.
+std::size_t firstAtOrAfter(const StateSpan& samples, std::size_t end, double t) {
+  std::size_t low = 0, high = end;
+  while (low < high) {
+    const std::size_t middle = low + (high - low) / 2;
+    if (samples.t(middle) < t) low = middle + 1;
+    else high = middle;
+  }
+  return low;
+}
+
+}  // namespace
 
 PhasePlot::PhasePlot(Mass mass, QWidget* parent)
-    : PlotView(mass == Mass::Two ? tr("Phase portrait of mass 2 (u₂, v₂)")
-                                 : tr("Phase portrait of mass 1 (u₁, v₁)"),
-               mass == Mass::Two ? tr("u₂") : tr("u₁"), mass == Mass::Two ? tr("v₂") : tr("v₁"),
-               parent),
+    : PlotView(mass == Mass::Chosen ? tr("Phase portrait of mass 2 (u₂, v₂)") : tr("Phase portrait of mass 1 (u₁, v₁)"),
+               mass == Mass::Chosen ? tr("u₂ / d") : tr("u₁ / d"),
+               mass == Mass::Chosen ? tr("v₂ / (d ω₁)") : tr("v₁ / (d ω₁)"), parent),
       m_mass(mass) {
-  m_path = addEntry(makeLine(tr("orbit"), colors::kTrace, 1.0), Decimation::Path);
-  m_recent = addEntry(makeLine(tr("orbit, %1 T₂").arg(RunWindow::kPeriods),
-                               colors::kTrace, 1.0),
+  m_path = addEntry(makeLine(tr("orbit"), colors::kTrace), Decimation::Path);
+  m_recent = addEntry(makeLine(tr("orbit, %1 periods").arg(RunWindow::kPeriods), colors::kTrace),
                       Decimation::Path);
   setInLegend(entries()[std::size_t(m_recent)].series, false);
-  if (mass == Mass::Two) {
-    m_stop = addEntry(makeLine(tr("stop u₂ = d"), colors::kStop, 1.5, Qt::DashLine),
-                      Decimation::None);
-  }
+  m_stop = addEntry(makeLine(QString(), colors::kStop, 1.5, Qt::DashLine), Decimation::None);
   m_start = addEntry(makeScatter(tr("start"), colors::kImpact, 8), Decimation::None);
-  setToolTip(mass == Mass::Two
-                 ? tr("Velocity v₂ of mass 2 against its displacement u₂. At the stop (dashed, "
-                      "u₂ = d) an impact flips v₂ to −v₂: the vertical jumps. Click on the stop "
-                      "line to start a run there: mass 2 leaves the stop at the clicked speed, "
-                      "mass 1 keeps its start position, on the same energy; edit any value to go back.")
-                 : tr("Velocity v₁ of mass 1 against its displacement u₁. Mass 1 never touches "
-                      "the stop; it feels the impacts through the spring k₂."));
+  auto* contacts = makeScatter(QString(), colors::kOverlay, 6);
+  contacts->setPen(Qt::NoPen);
+  m_contacts = addEntry(contacts, Decimation::Scatter);
+}
+
+void PhasePlot::nameFor(const ShownRun& run, int index) {
+  const QString mass = subscriptDigits(index + 1);
+  const bool stopped = index == run.stopped;
+  setTitles(tr("Phase portrait of mass %1 (u%2, v%2)").arg(index + 1).arg(mass), tr("u%1 / d").arg(mass),
+            tr("v%1 / (d ω₁)").arg(mass));
+  entries()[std::size_t(m_recent)].series->setName(tr("orbit, %1 %2").arg(RunWindow::kPeriods).arg(run.unit.name));
+  entries()[std::size_t(m_stop)].series->setName(stopped ? tr("stop u%1 = d").arg(mass) : QString());
+  entries()[std::size_t(m_contacts)].series->setName(stopped ? QString() : tr("at contacts"));
+  QString tip;
+  if (stopped) {
+    tip = tr("Velocity of mass %1 against its displacement, over d and d ω₁ (ω₁ the fastest frequency). At the "
+             "stop (dashed, u = d) an impact flips the velocity: the vertical jumps. Click on the stop line to "
+             "start a run there: mass %1 leaves the stop at the clicked speed, %2; edit any value to go back.")
+              .arg(index + 1)
+              .arg(run.twoMass ? tr("mass 1 keeps its start position, on the same energy")
+                               : tr("the others as at the start shown"));
+  } else if (m_mass == Mass::First && run.twoMass) {
+    tip = tr("Velocity v₁ of mass 1 against its displacement u₁, over d and d ω₁. Mass 1 never touches the "
+             "stop; it feels the impacts through the spring k₂ (the dots: its state at each contact).");
+  } else {
+    tip = tr("Mass %1's velocity against its displacement, over d and d ω₁ (the panel's 'phase of' chooses the "
+             "mass); the dots are its state at each contact of the stopped mass.")
+              .arg(index + 1);
+  }
+  setToolTip(tip + tr("\nA long run shows a few periods at the animation's time; W shows all of it."));
 }
 
 double PhasePlot::lastTime() const {
-  return m_samples == 0 ? 0 : m_run->samples[m_samples - 1].t;
+  return !m_run || m_samplesTaken == 0 ? 0 : m_run->samples.t(m_samplesTaken - 1);
 }
 
 std::optional<QPointF> PhasePlot::pointAt(double t) const {
-  if (m_samples == 0) return std::nullopt;
-  const auto first = m_run->samples.begin(), end = first + std::ptrdiff_t(m_samples);
-  const auto after = std::lower_bound(first, end, t, [](const core::Sample& s, double time) { return s.t < time; });
-  const auto point = [this](const core::State& x) {
-    return m_mass == Mass::Two ? QPointF(x.u2, x.v2) : QPointF(x.u1, x.v1);
+  if (!m_run || m_samplesTaken == 0) return std::nullopt;
+  const StateSpan& samples = m_run->samples;
+  const auto point = [&](std::size_t k) {
+    return QPointF(samples.value(k, samples.displacementField(m_index)) / m_run->gap,
+                   samples.value(k, samples.velocityField(m_index)) / m_run->speed);
   };
-  if (after == first) return point(first->state);
-  if (after == end) return point((end - 1)->state);
-  const core::Sample& a = *(after - 1);
-  const double w = (t - a.t) / (after->t - a.t);
-  return point(a.state) + w * (point(after->state) - point(a.state));
+  const std::size_t after = firstAtOrAfter(samples, m_samplesTaken, t);
+  if (after == 0) return point(0);
+  if (after == m_samplesTaken) return point(m_samplesTaken - 1);
+  const double w = (t - samples.t(after - 1)) / (samples.t(after) - samples.t(after - 1));
+  return point(after - 1) + w * (point(after) - point(after - 1));
 }
 
 void PhasePlot::setTimeCursor(double t) {
   m_cursorTime = t;
-  const double tLast = lastTime();
-  if (!m_whole && !m_runWindow.wholeFits(tLast, m_T2) && m_runWindow.follow(t, tLast, m_T2)) {
+  const double toPeriods = m_run ? 1 / m_run->unit.length : 1.0;
+  const double tLast = lastTime() * toPeriods;
+  if (!m_whole && !m_runWindow.wholeFits(tLast) && m_runWindow.follow(t * toPeriods, tLast)) {
     placeWindow();
     scheduleRefresh();
   }
@@ -83,49 +113,63 @@ void PhasePlot::setTimeCursor(double t) {
 }
 
 void PhasePlot::show(const SimUpdate& update) {
-  const core::Result& result = *update.result;
-  const bool grown = !m_taken.startsOver(update);
+  std::optional<ShownRun> run = shownRun(update);
+  if (!run) return;
+  const int index = m_mass == Mass::First ? 0 : run->chosen;
+  const bool grown = m_run && run->continues(*m_run) && index == m_index;
   if (!grown) {
     startNewRun();
     m_vLow = 0;
     m_vHigh = 0;
+    m_samplesTaken = 0;
+    m_eventsTaken = 0;
+    setData(m_contacts, {});
+    nameFor(*run, index);
   }
   // the run's samples as they are, no copy: only the new ones widen the velocity range
-  const PointSpan path = samplePoints(result, m_mass == Mass::Two ? SampleAxes::U2V2 : SampleAxes::U1V1);
-  for (std::size_t index = m_taken.samples; index < path.size(); ++index) {
-    m_vLow = std::min(m_vLow, path[index].y());
-    m_vHigh = std::max(m_vHigh, path[index].y());
+  const StateSpan& samples = run->samples;
+  const PointSpan path = samples.points(samples.displacementField(index), samples.velocityField(index))
+                             .scaled(1 / run->gap, 1 / run->speed);
+  for (std::size_t k = m_samplesTaken; k < path.size(); ++k) {
+    m_vLow = std::min(m_vLow, path[k].y());
+    m_vHigh = std::max(m_vHigh, path[k].y());
   }
-  m_taken.samples = path.size();
-  m_run = update.result;
-  m_samples = path.size();
-  showInPlace(m_path, path, update.result, grown);
-  const core::State& initial = update.request->job.spec.run.initial;
-  setData(m_start, {m_mass == Mass::Two ? QPointF(initial.u2, initial.v2)
-                                        : QPointF(initial.u1, initial.v1)});
-  if (m_stop >= 0) {
-    const double gap = update.request->job.spec.model.gap;
-    setData(m_stop, {QPointF(gap, m_vLow), QPointF(gap, m_vHigh)});
+  m_samplesTaken = path.size();
+  showInPlace(m_path, path, run->owner, grown);
+  setData(m_start, {QPointF(run->start.u[index] / run->gap, run->start.v[index] / run->speed)});
+  if (index == run->stopped) {
+    setData(m_stop, {QPointF(1, m_vLow), QPointF(1, m_vHigh)});
+  } else {
+    // its state at each contact within the samples' span (the velocity before the contact)
+    setData(m_stop, {});
+    const double tLast = run->drawnUntil();
+    std::vector<QPointF> marks;
+    std::size_t next = m_eventsTaken;
+    for (; next < run->eventCount() && run->eventTime(next) <= tLast; ++next) {
+      if (!core::isContact(run->eventType(next))) continue;
+      marks.emplace_back(run->eventU(next, index) / run->gap, run->eventVBefore(next, index) / run->speed);
+    }
+    m_eventsTaken = next;
+    appendData(m_contacts, marks);
   }
-  m_T2 = core::computeModes(update.request->job.spec.model).T2;
+  m_run = std::move(run);
+  m_index = index;
   placeWindow();
   scheduleRefresh();
 }
 
 void PhasePlot::placeWindow() {
-  const double tLast = lastTime();
-  const bool windowed = !m_whole && !m_runWindow.wholeFits(tLast, m_T2);
+  const double period = m_run ? m_run->unit.length : 1.0;
+  const double tLast = lastTime() * (1 / period);
+  const bool windowed = m_run && !m_whole && !m_runWindow.wholeFits(tLast);
   if (windowed) {
-    m_runWindow.follow(m_cursorTime, tLast, m_T2);
+    m_runWindow.follow(m_cursorTime * (1 / period), tLast);
     // the window's stretch of the same samples, in place
-    const auto first = m_run->samples.begin();
-    const auto last = first + std::ptrdiff_t(m_samples);
-    const auto byTime = [](const core::Sample& sample, double t) { return sample.t < t; };
-    const auto begin = std::lower_bound(first, last, m_runWindow.from(), byTime);
-    const auto end = std::upper_bound(begin, last, m_runWindow.to(),
-                                      [](double t, const core::Sample& sample) { return t < sample.t; });
+    const std::size_t begin = firstAtOrAfter(m_run->samples, m_samplesTaken, m_runWindow.from() * period);
+    std::size_t end = firstAtOrAfter(m_run->samples, m_samplesTaken, m_runWindow.to() * period);
+    while (end < m_samplesTaken && m_run->samples.t(end) <= m_runWindow.to() * period) ++end;
     const PointSpan whole = entries()[std::size_t(m_path)].points();
-    showInPlace(m_recent, whole.subspan(std::size_t(begin - first), std::size_t(end - begin)), m_run, false);
+    showInPlace(m_recent, whole.subspan(begin, end - begin), m_run->owner, false);
   } else if (m_windowed) {
     setData(m_recent, {});
   }

@@ -58,23 +58,6 @@ class StateSpan {
   int m_masses = 0;
 };
 
-/// Which coordinates of the samples.
-enum class SampleAxes { TimeU2, U2V2, U1V1 };
-
-inline PointSpan samplePoints(const core::Result& run, SampleAxes axes) {
-  const core::Sample probe;
-  const core::State& state = probe.state;
-  const auto offset = [&probe](const double& field) { return PointSpan::fieldOffset(probe, field); };
-  std::size_t x = 0;
-  std::size_t y = 0;
-  switch (axes) {
-    case SampleAxes::TimeU2: x = offset(probe.t); y = offset(state.u2); break;
-    case SampleAxes::U2V2: x = offset(state.u2); y = offset(state.v2); break;
-    case SampleAxes::U1V1: x = offset(state.u1); y = offset(state.v1); break;
-  }
-  return PointSpan::ofRecords(run.samples.data(), run.samples.size(), sizeof(core::Sample), x, y);
-}
-
 /// The points (u1, v1) on the section H, one per contact.
 inline PointSpan sectionPoints(const core::Result& run) {
   const core::PoincarePoint probe;

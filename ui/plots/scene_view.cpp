@@ -33,8 +33,8 @@ bool RunProgress::startsOver(const SimUpdate& update) {
 SceneView* makeView(PlotKind kind, QWidget* parent) {
   switch (kind) {
     case PlotKind::Trace: return new TracePlot(parent);
-    case PlotKind::PhaseU2V2: return new PhasePlot(PhasePlot::Mass::Two, parent);
-    case PlotKind::PhaseU1V1: return new PhasePlot(PhasePlot::Mass::One, parent);
+    case PlotKind::Phase: return new PhasePlot(PhasePlot::Mass::Chosen, parent);
+    case PlotKind::PhaseU1V1: return new PhasePlot(PhasePlot::Mass::First, parent);
     case PlotKind::Poincare: return new PoincarePlot(parent);
     case PlotKind::FreeFlight: return new FreeFlightPlot(parent);
     case PlotKind::OnePeriodicData:
@@ -45,7 +45,6 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::FlightHistogram:
     case PlotKind::DetunedFlights:
     case PlotKind::Flights:
-    case PlotKind::ChainPhase:
     case PlotKind::ChainSection:
     case PlotKind::GrazingSet: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);
@@ -57,8 +56,8 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
   return nullptr;
 }
 
-bool RunWindow::follow(double cursor, double tLast, double T2) {
-  const double width = kPeriods * T2;
+bool RunWindow::follow(double cursor, double tLast) {
+  const double width = kPeriods;
   const double last = std::max(0.0, tLast - width);  // the latest start the window can have
   if (m_to - m_from == width && m_from <= last) {
     // kept while the time is in its middle half, or beyond it on a side where the run ends

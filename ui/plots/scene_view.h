@@ -47,16 +47,16 @@ class SceneView {
   virtual void appendCsv(CsvTable& table) const { (void)table; }
 };
 
-/// The stretch of a long run that time-based views show: `periods` slow periods that hold the
-/// animation's time. It moves only when the time leaves its middle half, so that it stays still
+/// The stretch of a long run that time-based views show: kPeriods periods that hold the
+/// animation's time (every time here in periods, the views' unit). It moves only when the time leaves its middle half, so that it stays still
 /// while the animation plays through it (a plot redrawn every frame would flicker and cost).
 class RunWindow {
  public:
   static constexpr double kPeriods = 3;
-  /// Follows `cursor` within a run of `tLast` with slow period `T2`; true when it moved.
-  bool follow(double cursor, double tLast, double T2);
+  /// Follows `cursor` within a run of `tLast`; true when it moved.
+  bool follow(double cursor, double tLast);
   /// The whole run is short enough to be read whole: no window.
-  bool wholeFits(double tLast, double T2) const { return !(tLast > 1.5 * kPeriods * T2); }
+  bool wholeFits(double tLast) const { return !(tLast > 1.5 * kPeriods); }
   double from() const { return m_from; }
   double to() const { return m_to; }
 

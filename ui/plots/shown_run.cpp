@@ -10,29 +10,17 @@
 #include "core/model/linear_modes.h"
 
 namespace grazelab::ui {
-
 namespace {
+
 QString tr(const char* text) { return QCoreApplication::translate("grazelab::ui::ShownRun", text); }
+
 }  // namespace
 
-QString ShownRun::unitName() const {
-  switch (unit) {
-    case Unit::SlowPeriodT2: return tr("T₂");
-    case Unit::CommonPeriod: return tr("T");
-    case Unit::Scenes: return scenes.name;
-    case Unit::SlowestPeriod: break;
-  }
-  return tr("slowest period");
-}
-
-QString ShownRun::unitInWords() const {
-  switch (unit) {
-    case Unit::SlowPeriodT2: return tr("the slow period T₂");
-    case Unit::CommonPeriod: return tr("the chain's common period T");
-    case Unit::Scenes: return scenes.inWords;
-    case Unit::SlowestPeriod: break;
-  }
-  return tr("its slowest period (it has no common one)");
+double ShownRun::drawnUntil() const {
+  if (samples.empty()) return tFinal;
+  const double last = samples.t(samples.size() - 1);
+  const double step = samples.size() > 1 ? samples.t(1) - samples.t(0) : 0.0;
+  return tFinal <= last + step ? std::max(last, tFinal) : last;
 }
 
 std::size_t ShownRun::eventCount() const {
@@ -47,7 +35,18 @@ core::EventType ShownRun::eventType(std::size_t k) const {
   return twoMassEvents ? (*twoMassEvents)[k].type : (*chainEvents)[k].type;
 }
 
+double ShownRun::eventU(std::size_t k, int i) const {
+  if (twoMassEvents) return i == 0 ? (*twoMassEvents)[k].before.u1 : (*twoMassEvents)[k].before.u2;
+  return (*chainEvents)[k].u[i];
+}
+
+double ShownRun::eventVBefore(std::size_t k, int i) const {
+  if (twoMassEvents) return i == 0 ? (*twoMassEvents)[k].before.v1 : (*twoMassEvents)[k].before.v2;
+  return (*chainEvents)[k].vBefore[i];
+}
+
 std::optional<ShownRun> shownRun(const SimUpdate& update) {
+  const SceneJob& job = update.request->job;
   ShownRun run;
   run.id = update.id;
   run.attempt = update.attempt;
@@ -55,35 +54,34 @@ std::optional<ShownRun> shownRun(const SimUpdate& update) {
     const std::shared_ptr<const core::experiments::ChainSeries>& series = update.chains.front();
     run.owner = series;
     run.samples = StateSpan(series->grid);
-    run.masses = series->chain.size();
     run.stopped = series->chain.stopped() - 1;
-    run.chosen = std::clamp(update.request->params.massChain.shown(), 1, run.masses) - 1;
     run.gap = series->chain.gap;
-    const bool resonant = series->period > 0;
-    run.unit = resonant ? ShownRun::Unit::CommonPeriod : ShownRun::Unit::SlowestPeriod;
-    run.period = resonant ? series->period : 2 * std::numbers::pi / series->modes.omega.minCoeff();
+    run.unit = series->period > 0
+                   ? TimeUnit{series->period, tr("T"), tr("the chain's common period T")}
+                   : TimeUnit{2 * std::numbers::pi / series->modes.omega.minCoeff(), tr("slowest period"),
+                              tr("its slowest period (it has no common one)")};
+    run.speed = run.gap * series->modes.omega.maxCoeff();
+    run.start = series->start;
     run.tFinal = series->run.tFinal;
     run.chainEvents = &series->run.events;
   } else if (update.result) {
-    const core::Model& model = update.request->job.spec.model;
+    const core::Model& model = job.spec.model;
+    const core::Modes modes = core::computeModes(model);
     run.owner = update.result;
     run.samples = StateSpan(update.result->samples);
-    run.masses = 2;
     run.stopped = 1;
-    run.chosen = 1;
     run.gap = model.gap;
-    run.unit = ShownRun::Unit::SlowPeriodT2;
-    run.period = core::computeModes(model).T2;
+    run.unit = TimeUnit{modes.T2, tr("T₂"), tr("the slow period T₂")};
+    run.speed = run.gap * modes.omegaFast;
+    run.start = core::chainStateOf(job.spec.run.initial);
     run.tFinal = update.result->tFinal;
+    run.twoMass = true;
     run.twoMassEvents = &update.result->events;
   } else {
     return std::nullopt;
   }
-  if (const std::optional<TimeUnit>& given = update.request->job.timeUnit; given && given->length > 0) {
-    run.unit = ShownRun::Unit::Scenes;
-    run.scenes = *given;
-    run.period = given->length;
-  }
+  run.chosen = job.chosenMass >= 1 && job.chosenMass <= run.masses() ? job.chosenMass - 1 : run.stopped;
+  if (job.timeUnit && job.timeUnit->length > 0) run.unit = *job.timeUnit;
   return run;
 }
 

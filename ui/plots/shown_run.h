@@ -2,8 +2,6 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include <QString>
-
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -19,32 +17,36 @@ namespace grazelab::ui {
 /// The run an update shows, as the run views read it, whatever the chain: the note's chain's
 /// run (its samples and events) or the first series of an experiment of N masses (its grid and
 /// events), both read where they are. Drawn in the chain's own units: time over its period,
-/// displacements over the gap.
+/// displacements over the gap, velocities over the gap times the fastest frequency.
 struct ShownRun {
   std::shared_ptr<const void> owner;  ///< keeps what `samples` and the events read alive
   StateSpan samples;
-  int masses = 0;
   int stopped = 0;  ///< 0-based
-  /// 0-based: the mass the panel's 'phase of' names (the stopped one unless another is asked)
+  /// 0-based: the mass the scene's 'phase of' names (SceneJob::chosenMass; else the stopped one)
   int chosen = 0;
   double gap = 1;
-  /// the time unit: the common period (T2 of the note's chain, T of a resonant one), or the
-  /// slowest period of a chain with none
-  enum class Unit { SlowPeriodT2, CommonPeriod, SlowestPeriod, Scenes };
-  TimeUnit scenes;  ///< Unit::Scenes: the scene's own (SceneJob::timeUnit)
-  Unit unit = Unit::SlowPeriodT2;
-  double period = 1;  ///< its length [time]
-  double tFinal = 0;   ///< where the run is (so far)
+  /// the time unit: the common period (T₂ of the note's chain, T of a resonant one), the slowest
+  /// period of a chain with none, or the scene's own (SceneJob::timeUnit)
+  TimeUnit unit;
+  double speed = 1;        ///< the velocities' unit: d times the fastest frequency
+  core::ChainState start;  ///< where it started
+  double tFinal = 0;       ///< where the run is (so far)
   /// the run as computed: a raised run (attempt) or another request starts the views over
   std::uint64_t id = 0;
   int attempt = 0;
+  /// the note's chain's run (its own words in places: mass 1 keeps the energy on a click)
+  bool twoMass = false;
 
-  /// The unit's name on an axis ("T₂", "T", "slowest period") and in a sentence.
-  QString unitName() const;
-  QString unitInWords() const;
+  int masses() const { return samples.masses(); }
+  /// The time the views draw to: the samples' end, or the run's when they end within a step of
+  /// it (a grid has no sample at the last contact).
+  double drawnUntil() const;
   std::size_t eventCount() const;
   double eventTime(std::size_t k) const;
   core::EventType eventType(std::size_t k) const;
+  /// Mass i's displacement at event k and its velocity just before it (0-based i).
+  double eventU(std::size_t k, int i) const;
+  double eventVBefore(std::size_t k, int i) const;
   /// the same run as `before`, grown (not another one, nor a raised one from its start)
   bool continues(const ShownRun& before) const {
     return owner && before.owner && id == before.id && attempt == before.attempt &&

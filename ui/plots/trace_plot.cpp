@@ -16,7 +16,7 @@ namespace grazelab::ui {
 
 TracePlot::TracePlot(QWidget* parent)
     : PlotView(tr("Displacement of mass 2: u₂ / d"), tr("t / T₂"), tr("u / d"), parent) {
-  m_trace = addEntry(makeLine(tr("u₂ / d"), colors::kTrace, 1.0), Decimation::Trace);
+  m_trace = addEntry(makeLine(tr("u₂ / d"), colors::kTrace), Decimation::Trace);
   m_other = addEntry(makeLine(QString(), colors::kOverlay, 1.5), Decimation::Trace);
   m_stop = addEntry(makeLine(tr("stop"), colors::kStop, 1.5, Qt::DashLine), Decimation::None);
   m_impacts = addEntry(makeScatter(tr("impacts"), colors::kImpact, 6), Decimation::Scatter, false);
@@ -26,23 +26,28 @@ TracePlot::TracePlot(QWidget* parent)
   m_grazings = addEntry(touches, Decimation::Scatter, false);
 }
 
-void TracePlot::nameFor(const ShownRun& run) {
+void TracePlot::nameFor(const ShownRun& run, const ViewWords* words) {
   const QString stopped = subscriptDigits(run.stopped + 1);
   const QString trace = tr("u%1 / d").arg(stopped);
   entries()[std::size_t(m_trace)].series->setName(trace);
   const bool other = run.chosen != run.stopped;
   entries()[std::size_t(m_other)].series->setName(other ? tr("u%1 / d").arg(subscriptDigits(run.chosen + 1)) : QString());
   const QString title = other ? tr("Mass %1 (on the stop's side) and mass %2: u / d").arg(run.stopped + 1).arg(run.chosen + 1)
-                      : run.masses == 2 && run.stopped == 1 ? tr("Displacement of mass 2: u₂ / d")
-                                                            : tr("Mass %1 (on the stop's side): %2").arg(run.stopped + 1).arg(trace);
-  setTitles(title, tr("t / %1").arg(run.unitName()), tr("u / d"));
+                      : run.twoMass ? tr("Displacement of mass 2: u₂ / d")
+                                    : tr("Mass %1 (on the stop's side): %2").arg(run.stopped + 1).arg(trace);
+  // the scene's words for this run, over the view's own (the 1IPP orbit's period)
+  setTitles(words ? words->title : title, tr("t / %1").arg(run.unit.name), tr("u / d"));
+  if (words) {
+    setToolTip(words->toolTip);
+    return;
+  }
   setToolTip(tr("The displacement of mass %1, which meets the stop, over the gap d, against time over %2; the "
                 "dashed line is the stop (u = d). Dots mark the contacts (impacts: vermillion circles; grazing "
                 "touches and sticks: orange triangles).%3\n"
                 "A long run shows a few periods at the animation's time; W shows all of it.\n"
                 "Drag to zoom, Shift+drag or middle button to pan, wheel to zoom, R to reset.")
                  .arg(run.stopped + 1)
-                 .arg(run.unitInWords())
+                 .arg(run.unit.inWords)
                  .arg(other ? tr(" The other line is mass %1, the one 'phase of' names.").arg(run.chosen + 1) : QString()));
 }
 
@@ -55,17 +60,13 @@ void TracePlot::show(const SimUpdate& update) {
     setData(m_impacts, {});
     setData(m_grazings, {});
     m_eventsTaken = 0;
-    nameFor(*run);
-    // the scene's words for this run, over the view's own (the 1IPP orbit's period)
     const auto& words = update.request->job.viewWords;
-    if (const auto found = words.find(PlotKind::Trace); found != words.end()) {
-      setTitles(found->second.title, tr("t / %1").arg(run->unitName()), tr("u / d"));
-      setToolTip(found->second.toolTip);
-    }
+    const auto found = words.find(PlotKind::Trace);
+    nameFor(*run, found != words.end() ? &found->second : nullptr);
   }
   // the run's samples as they are, no copy (the view holds the run while it shows it), in the
   // chain's units
-  const double toTime = 1 / run->period, toLength = 1 / run->gap;
+  const double toTime = 1 / run->unit.length, toLength = 1 / run->gap;
   const StateSpan& samples = run->samples;
   showInPlace(m_trace,
               samples.points(StateSpan::timeField(), samples.displacementField(run->stopped)).scaled(toTime, toLength),
@@ -77,7 +78,7 @@ void TracePlot::show(const SimUpdate& update) {
   } else {
     setData(m_other, {});
   }
-  const double tLast = samples.empty() ? run->tFinal : samples.t(samples.size() - 1);
+  const double tLast = run->drawnUntil();
   // contacts within the trace's window; later ones wait for the samples that reach them
   std::vector<QPointF> impacts;
   std::vector<QPointF> others;
@@ -92,9 +93,7 @@ void TracePlot::show(const SimUpdate& update) {
   appendData(m_grazings, others);
   setData(m_stop, {QPointF(0, 1), QPointF(tLast * toTime, 1)});
   m_window = tLast * toTime;
-  // (a grid that ends within a step of the run's end is all of it)
-  const double step = samples.size() > 1 ? samples.t(1) - samples.t(0) : 0.0;
-  m_tFinal = (run->tFinal > tLast + step ? run->tFinal : tLast) * toTime;
+  m_tFinal = std::max(run->tFinal, tLast) * toTime;
   m_run = std::move(run);
   placeWindow();
   drawOverlay();
@@ -110,13 +109,13 @@ std::vector<QPointF> TracePlot::contacts() const {
 
 void TracePlot::placeWindow() {
   // the samples may cover only the run's first periods: the title says so when the run goes on
-  const QString axis = tr("t / %1").arg(m_run ? m_run->unitName() : tr("T₂"));
-  if (m_whole || m_runWindow.wholeFits(m_window, 1.0)) {
+  const QString axis = tr("t / %1").arg(m_run ? m_run->unit.name : tr("T₂"));
+  if (m_whole || m_runWindow.wholeFits(m_window)) {
     setXWindow(std::nullopt);
     setXTitle(runAxisTitle(axis, std::nullopt, m_window, m_tFinal));
     return;
   }
-  m_runWindow.follow(cursorOnAxis(), m_window, 1.0);
+  m_runWindow.follow(cursorOnAxis(), m_window);
   const std::pair shown(m_runWindow.from(), m_runWindow.to());
   setXWindow(shown);
   setXTitle(runAxisTitle(axis, shown, m_window, m_tFinal));
@@ -131,7 +130,7 @@ void TracePlot::setWholeRun(bool whole) {
 void TracePlot::setTimeCursor(double time) {
   m_cursorTime = time;
   const double t = cursorOnAxis();
-  if (!m_whole && !m_runWindow.wholeFits(m_window, 1.0) && m_runWindow.follow(t, m_window, 1.0)) {
+  if (!m_whole && !m_runWindow.wholeFits(m_window) && m_runWindow.follow(t, m_window)) {
     placeWindow();
     scheduleRefresh();
   }
@@ -145,7 +144,14 @@ void TracePlot::setTimeCursor(double time) {
     m_cursor->attachAxis(m_axisX);
     m_cursor->attachAxis(m_axisY);
     setInLegend(m_cursor, false);
+    // from the axis' bottom to its top as they are once fitted, zoomed or panned
+    connect(m_axisY, &QValueAxis::rangeChanged, this, [this] { placeCursor(); });
   }
+  placeCursor();
+}
+
+void TracePlot::placeCursor() {
+  const double t = cursorOnAxis();
   m_cursor->replace({QPointF(t, m_axisY->min()), QPointF(t, m_axisY->max())});
 }
 
@@ -170,7 +176,7 @@ void TracePlot::drawOverlay() {
   std::vector<QPointF> contacts;
   if (m_overlayRun && m_run) {
     // (the note's chain's methods: in the exact run's units)
-    const double toTime = 1 / m_run->period, toLength = 1 / m_run->gap;
+    const double toTime = 1 / m_run->unit.length, toLength = 1 / m_run->gap;
     for (const core::Sample& sample : m_overlayRun->samples) {
       if (sample.t * toTime > m_window) break;
       trace.emplace_back(sample.t * toTime, sample.state.u2 * toLength);

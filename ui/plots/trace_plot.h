@@ -38,9 +38,11 @@ class TracePlot final : public PlotView {
   void placeWindow();
 
   /// The titles and names of a run of this chain (its stopped and chosen masses).
-  void nameFor(const ShownRun& run);
+  void nameFor(const ShownRun& run, const ViewWords* words);
+  /// The cursor's line at the animation's time, across the y axis as it is.
+  void placeCursor();
   /// The animation's time in the axis' units.
-  double cursorOnAxis() const { return m_run ? m_cursorTime / m_run->period : m_cursorTime; }
+  double cursorOnAxis() const { return m_run ? m_cursorTime * (1 / m_run->unit.length) : m_cursorTime; }
 
   std::shared_ptr<const core::Result> m_overlayRun;
   std::optional<ShownRun> m_run;  ///< the run drawn

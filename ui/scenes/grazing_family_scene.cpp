@@ -70,7 +70,7 @@ Scene::Spec grazingFamilyScene() {
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2,           ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::Trace, PlotKind::Chain,      PlotKind::GrazingMaximum,
-                 PlotKind::PhaseU2V2, PlotKind::FreeFlight, PlotKind::Poincare};
+                 PlotKind::Phase, PlotKind::FreeFlight, PlotKind::Poincare};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token) {
     // dense output over the whole run for short runs, over the first 400 T2 for long ones

@@ -50,7 +50,7 @@ Scene::Spec landscapeScene() {
   scene.defaults.horizon = 200;
   scene.parameters = {ParamKey::Lambda, ParamKey::M1,           ParamKey::M2,     ParamKey::Gap,
                       ParamKey::K1,     ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::Landscape, PlotKind::Trace, PlotKind::PhaseU2V2};
+  scene.plots = {PlotKind::Landscape, PlotKind::Trace, PlotKind::Phase};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token) {
     SceneJob job = gloStartJob(self, params, derived, 30 * derived.modes.T2);

@@ -71,7 +71,7 @@ Scene::Spec modesScene() {
   scene.parameters = {ParamKey::Period, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
   scene.plots = {PlotKind::ModesAtlas, PlotKind::Multipliers, PlotKind::Trace,
-                 PlotKind::PhaseU2V2,  PlotKind::Poincare,    PlotKind::Chain};
+                 PlotKind::Phase,  PlotKind::Poincare,    PlotKind::Chain};
   scene.buildFromStart = [](const Scene& self, const Params& params, const DerivedModel& derived,
                             const std::optional<core::ChainState>& clickedChain, std::stop_token stop,
                             const ScenePartial& partial, SceneCache& cache) {

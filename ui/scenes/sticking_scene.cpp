@@ -31,7 +31,7 @@ Scene::Spec stickingScene() {
   scene.defaults.horizon = 12;
   scene.parameters = {ParamKey::Lambda, ParamKey::M1, ParamKey::M2, ParamKey::Gap,
                       ParamKey::K1,     ParamKey::K2, ParamKey::Horizon};
-  scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::PhaseU2V2, PlotKind::PhaseU1V1};
+  scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::Phase, PlotKind::PhaseU1V1};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel& derived,
                   std::stop_token) {
     SceneJob job;

@@ -105,55 +105,12 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
   const double unit = resonant ? series.period : slowest;
   const QString unitName = resonant ? tr("T") : tr("slowest period");
 
-  // the grid spans `window`, or the whole run when W asks for it (ChainSeriesSpec::maxGridPoints,
-  // set by the window)
-  const core::experiments::StateRecords& grid = series.grid;
-  const double sampled = grid.lastTime();
-  const int chosen = given.shown() - 1;
-
   job.figures[PlotKind::Flights] =
       flightFigure(resonant ? tr("Free flights from the stop / T (≤ 1)")
                             : tr("Free flights / slowest period (no common period: no bound)"),
                    series, unit, resonant, unitName);
 
-  // the shown mass (the stopped one by default): its phase portrait over the first periods,
-  // and its state at every contact (a Poincaré section on H, projected on its (u, v))
-  const int shown = given.shown();
-  const bool shownIsStopped = shown == chain.stopped();
-  CurveFigure phase;
-  phase.title = tr("Phase portrait of mass %1").arg(shown);
-  phase.xTitle = tr("u%1 / d").arg(subscriptDigits(shown));
-  phase.yTitle = tr("v%1 / (d ω₁)").arg(subscriptDigits(shown));
-  phase.toolTip = shownIsStopped
-                      ? tr("The stopped mass's velocity against its displacement; at u/d = 1 the "
-                           "impacts reverse the velocity. Click on the stop line to start a run "
-                           "there: the mass leaves the stop at the clicked speed, the others as at "
-                           "the start shown.")
-                      : tr("Mass %1's velocity against its displacement (the panel's 'phase of' "
-                           "chooses the mass); the dots are its state at each contact of the "
-                           "stopped mass.")
-                            .arg(shown);
-  phase.toolTip += tr("\nA long run shows its first four slowest periods; W shows all of it.");
-  phase.curveName = tr("(u, v)");
   const double speed = chain.gap * series.modes.omega.maxCoeff();
-  for (std::size_t k = 0; k < grid.size(); ++k) {
-    phase.curve.emplace_back(grid.u(k, chosen) / chain.gap, grid.v(k, chosen) / speed);
-    phase.curveTimes.push_back(grid.t(k));  // the animation's time a ring on it
-  }
-  if (shownIsStopped) {
-    phase.referenceName = tr("stop");
-    phase.reference = {QPointF(1, -1.5), QPointF(1, 1.5)};
-  } else {
-    phase.markerName = tr("at contacts");
-    const Eigen::Index i = Eigen::Index(shown - 1);
-    for (const core::ChainEvent& event : series.run.events) {
-      if (event.t > sampled) break;
-      if (core::isContact(event.type)) {
-        phase.markers.emplace_back(event.u[i] / chain.gap, event.vBefore[i] / speed);
-      }
-    }
-  }
-  job.figures[PlotKind::ChainPhase] = phase;
   job.figures[PlotKind::ChainSection] = sectionFigure(given, series, speed);
 
   // the contrast: the same start on the chain with k2 5 % stiffer (no common period)
@@ -236,7 +193,7 @@ Scene::Spec threeMassesScene() {
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::Flights,
-                 PlotKind::ChainPhase, PlotKind::ChainSection, PlotKind::DetunedFlights};
+                 PlotKind::Phase, PlotKind::ChainSection, PlotKind::DetunedFlights};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token stop) {
     const MassChainParams& given = params.massChain;
     const ChainChoice choice = chooseChain(given, params.gap, stop);
@@ -270,6 +227,7 @@ Scene::Spec threeMassesScene() {
       detuned.springs[1] *= 1.05;
       job.spec.chains.push_back({detuned, start, long(params.horizon), 0, 0, core::TrustMode::Off});
     }
+    job.chosenMass = given.shown();
     job.chainSummary = chainSummaryOf(chain, given, choice.designs, modes, ratios);
     job.chainDesigns = choice.designs;
     job.presentRuns = [given, contrast, trust = run.trust, slowest](
@@ -307,7 +265,7 @@ Scene::Spec eightMassesScene() {
   scene.defaults.perturbation = -1e-4;
   scene.defaults.horizon = 100;
   scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::Flights,
-                 PlotKind::ChainPhase, PlotKind::ChainSection};
+                 PlotKind::Phase, PlotKind::ChainSection};
   return scene;
 }
 

@@ -182,7 +182,7 @@ void ParameterPanel::setScene(const Scene& scene) {
   m_chainBox->setVisible(!m_massChainScene);
   m_massChainBox->setVisible(m_massChainScene);
   m_chainEditor->setWeightsShown(scene.gloWeights());
-  m_chainEditor->setShownMassOffered(scene.plots().contains(PlotKind::ChainPhase));
+  m_chainEditor->setShownMassOffered(scene.plots().contains(PlotKind::Phase));
   m_chainEditor->setSectionOffered(scene.plots().contains(PlotKind::ChainSection));
   if (SliderSpin* gap = m_controls.value(ParamKey::Gap)) {
     if (m_massChainScene) m_massChainLayout->addWidget(gap);

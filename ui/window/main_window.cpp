@@ -351,7 +351,7 @@ SceneView* MainWindow::addView(PlotKind kind) {
     auto* phase = qobject_cast<PhasePlot*>(plot);
     if (qobject_cast<PoincarePlot*>(plot) || (curve && curve->kind() == PlotKind::ChainSection)) {
       connect(plot, &PlotView::clickedAt, this, [this](QPointF value) { startFromSection(value); });
-    } else if ((phase && phase->mass() == PhasePlot::Mass::Two) || (curve && curve->kind() == PlotKind::ChainPhase)) {
+    } else if (phase && phase->mass() == PhasePlot::Mass::Chosen) {
       connect(plot, &PlotView::clickedAt, this,
               [this, plot, stopLineBand](QPointF value) { startFromStopLine(value, stopLineBand(plot)); });
     } else if (curve) {

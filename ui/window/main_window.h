@@ -145,12 +145,13 @@ class MainWindow : public QMainWindow {
   /// N masses: the point is on the section's two coordinates as plotted (u / d, v / (d ω₁)),
   /// the others as at the shown run's start (core::chainSectionStateAtEnergy).
   bool startFromSection(QPointF u1v1);
-  /// Starts a run from a click on the (u2, v2) portrait within `tolerance` of the stop line
-  /// u2 = d: mass 2 leaves the stop at speed |v2| (v2 <= 0), mass 1 keeps the position of the
-  /// run's start and takes the speed (in the same direction) that keeps the energy level.
-  /// False (and why, on the status line) off the line or when no such state exists. N masses:
-  /// the stopped mass's portrait as plotted, the others as at the shown run's start.
-  bool startFromStopLine(QPointF u2v2, double tolerance);
+  /// Starts a run from a click on the stopped mass's portrait, as plotted (u / d, v / (d ω₁),
+  /// `tolerance` in those units), within `tolerance` of the stop line u = d: the mass leaves the
+  /// stop at the clicked speed (v <= 0). Two masses: mass 1 keeps the position of the run's start
+  /// and takes the speed (in the same direction) that keeps the energy level; N masses: the others
+  /// as at the shown run's start. False (and why, on the status line) off the line or when no
+  /// such state exists.
+  bool startFromStopLine(QPointF scaled, double tolerance);
   /// Sets the GLO weights of an N-mass scene from a point of its grazing-set plot (dragged or
   /// clicked): x the second mode's weight, y the third's (three modes), the first balancing
   /// (CurveFigure::draggedModes), each rounded to 1e-3; a plot with nothing to drag changes nothing.

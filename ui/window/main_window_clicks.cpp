@@ -60,25 +60,26 @@ bool MainWindow::startFromSection(QPointF u1v1) {
   return true;
 }
 
-bool MainWindow::startFromStopLine(QPointF u2v2, double tolerance) {
+bool MainWindow::startFromStopLine(QPointF value, double tolerance) {
   if (!m_displayed) return false;
-  if (scene().massChain()) return startChainFromStopLine(u2v2, tolerance);
+  if (scene().massChain()) return startChainFromStopLine(value, tolerance);
+  // the portrait's units: u2 over d, v2 over d w1 (the fast frequency)
   const core::Model& model = m_displayed->request->job.spec.model;
-  if (!(std::abs(u2v2.x() - model.gap) <= tolerance)) {
+  if (!(std::abs(value.x() - 1) <= tolerance)) {
     m_status->setMessage(tr("Click within %1 pixels of the stop line u₂ = d (dashed) to start mass 2 "
                             "from the stop at that speed.")
                              .arg(kStopLineBand));
     return false;
   }
+  const double speed = value.y() * model.gap * core::computeModes(model).omegaFast;
   const core::State& shown = m_displayed->request->job.spec.run.initial;
   const double level = core::energy(model, shown);
-  const std::optional<core::State> start =
-      core::stopLineStateAtEnergy(model, level, shown.u1, u2v2.y(), shown.v1);
+  const std::optional<core::State> start = core::stopLineStateAtEnergy(model, level, shown.u1, speed, shown.v1);
   if (!start) {
     m_status->setMessage(tr("No state of this energy (E = %1) with mass 2 leaving the stop at "
                          "speed %2 and mass 1 at u₁ = %3: click nearer v₂ = 0.")
                           .arg(level, 0, 'g', 6)
-                          .arg(std::abs(u2v2.y()), 0, 'g', 4)
+                          .arg(std::abs(speed), 0, 'g', 4)
                           .arg(shown.u1, 0, 'g', 4));
     return false;
   }

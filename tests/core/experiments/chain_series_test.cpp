@@ -112,6 +112,7 @@ TEST(ChainSeries, AWholeRunGridGoesOnAtTheWindowsStepToTheRunsEndOrItsCap) {
   EXPECT_LE(whole.grid.t(last), whole.run.tFinal);
   EXPECT_GT(whole.grid.t(last), whole.run.tFinal - step);
   // (every record's numbers: t, u and v)
+  ASSERT_GE(whole.grid.values.size(), windowOnly.grid.values.size());
   ASSERT_TRUE(std::equal(windowOnly.grid.values.begin(), windowOnly.grid.values.end(), whole.grid.values.begin()));
   // each point is the run's state then: u_s at the contacts' times is d, in between below it
   const int s = chain.stopped() - 1;

@@ -99,12 +99,13 @@ class DecimateTest : public QObject {
       path.emplace_back(sample.state.u2, sample.state.v2);
     }
     const PixelFrame frame{0, 500, -1.1, 1.1, 640, 240};
-    const grazelab::ui::PointSpan inPlace = grazelab::ui::samplePoints(run, grazelab::ui::SampleAxes::TimeU2);
+    const grazelab::ui::StateSpan states(run.samples);
+    const grazelab::ui::PointSpan inPlace = states.points(states.timeField(), states.displacementField(1));
     QCOMPARE(inPlace.size(), trace.size());
     QCOMPARE(inPlace[777], trace[777]);
     QCOMPARE(decimateTrace(inPlace, frame), decimateTrace(trace, frame));
     const PixelFrame phase{-1.1, 1.1, -2.2, 2.2, 300, 300};
-    QCOMPARE(decimatePath(grazelab::ui::samplePoints(run, grazelab::ui::SampleAxes::U2V2), phase),
+    QCOMPARE(decimatePath(states.points(states.displacementField(1), states.velocityField(1)), phase),
              decimatePath(path, phase));
     // a stretch of them, as the phase portrait's window takes it
     QCOMPARE(inPlace.subspan(1000, 300).toVector(),

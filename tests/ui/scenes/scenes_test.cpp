@@ -24,6 +24,7 @@
 #include "ui/plots/curve_plot.h"
 #include "ui/pictures/heat_map.h"
 #include "ui/plots/landscape_view.h"
+#include "ui/plots/phase_plot.h"
 #include "ui/plots/plot_view.h"
 #include "ui/plots/trace_plot.h"
 #include "ui/widgets/chain_editor.h"
@@ -38,10 +39,21 @@ namespace {
 
 bool shows(const Scene& scene, PlotKind kind) { return scene.plots().contains(kind); }
 
+// The window's (first) portrait of the chosen mass.
+const PhasePlot& phasePlot(const MainWindow& window) {
+  for (PhasePlot* plot : window.findChildren<PhasePlot*>()) {
+    if (plot->mass() != PhasePlot::Mass::Chosen || !plot->isVisible()) continue;
+    plot->refreshNow();
+    return *plot;
+  }
+  qFatal("no portrait of the chosen mass");
+}
+
 // The window's trace of the run (the one view of every chain's run).
 const TracePlot& tracePlot(const MainWindow& window) {
-  const auto plots = window.findChildren<TracePlot*>();
-  if (plots.size() != 1) qFatal("one trace expected, %d found", int(plots.size()));
+  QList<TracePlot*> plots = window.findChildren<TracePlot*>();
+  plots.removeIf([](const TracePlot* plot) { return !plot->isVisible(); });
+  if (plots.size() != 1) qFatal("one trace shown expected, %d found", int(plots.size()));
   plots.front()->refreshNow();
   return *plots.front();
 }
@@ -77,7 +89,7 @@ class ScenesTest : public QObject {
       QVERIFY2(shown.chains.size() == shown.request->job.spec.chains.size(), qPrintable(name));
       const auto& needs = shown.request->job.spec.run.needs;
       // (a scene of N masses runs no two-mass run: it asks it for nothing)
-      const bool dense = !scene.massChain() && (shows(scene, PlotKind::Trace) || shows(scene, PlotKind::PhaseU2V2) ||
+      const bool dense = !scene.massChain() && (shows(scene, PlotKind::Trace) || shows(scene, PlotKind::Phase) ||
                                                 shows(scene, PlotKind::PhaseU1V1) || shows(scene, PlotKind::Chain));
       QVERIFY2((needs.samples.spacing > 0) == dense, qPrintable(name));
       QVERIFY2(needs.poincare == (shows(scene, PlotKind::Poincare) || shows(scene, PlotKind::Landscape)),
@@ -99,7 +111,7 @@ class ScenesTest : public QObject {
                            kind == PlotKind::GrazingMaximum || kind == PlotKind::SpreadAgainstSize ||
                            kind == PlotKind::FlightHistogram || kind == PlotKind::DetunedFlights ||
                            kind == PlotKind::Flights ||
-                           kind == PlotKind::ChainPhase || kind == PlotKind::ChainSection ||
+                           kind == PlotKind::ChainSection ||
                            kind == PlotKind::GrazingSet;
         if (curve) QVERIFY2(m_window->displayed()->request->job.figures.count(kind), qPrintable(name));
       }
@@ -402,13 +414,15 @@ class ScenesTest : public QObject {
     m_window->setParams(params);
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     {
-      const CurveFigure& phase = figure(*m_window, PlotKind::ChainPhase);
-      QVERIFY2(phase.title.contains(QStringLiteral("mass 1")), qPrintable(phase.title));
+      const PhasePlot& phase = phasePlot(*m_window);
+      QVERIFY2(phase.title().contains(QStringLiteral("mass 1")), qPrintable(phase.title()));
       QVERIFY(shownChainRun(*m_window));
       const auto& shownSeries = *shownChainRun(*m_window);
-      QVERIFY(!phase.markers.empty());
-      QCOMPARE(phase.markers.front().x(), shownSeries.run.events.front().u[0] / shownSeries.chain.gap);
-      QVERIFY(std::abs(phase.curve.front().x() - shownSeries.start.u[0] / shownSeries.chain.gap) < 1e-12);
+      QVERIFY(!phase.atContacts().empty());
+      QCOMPARE(phase.atContacts()[0].x(), shownSeries.run.events.front().u[0] / shownSeries.chain.gap);
+      const double speed = shownSeries.chain.gap * shownSeries.modes.omega.maxCoeff();
+      QCOMPARE(phase.atContacts()[0].y(), shownSeries.run.events.front().vBefore[0] / speed);
+      QVERIFY(std::abs(phase.path()[0].x() - shownSeries.start.u[0] / shownSeries.chain.gap) < 1e-12);
       // and its trace beside the stopped mass's, on the same grid
       const TracePlot& trace = tracePlot(*m_window);
       QCOMPARE(trace.chosenMass().size(), trace.stoppedMass().size());

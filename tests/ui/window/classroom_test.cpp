@@ -801,13 +801,15 @@ class ClassroomTest : public QObject {
     const grazelab::core::Model model = m_window->displayed()->request->job.spec.model;
     const grazelab::core::State shown = m_window->displayed()->request->job.spec.run.initial;
     const double level = grazelab::core::energy(model, shown);
+    // (the portrait's units: u2 / d, v2 / (d w1))
+    const double speedUnit = model.gap * grazelab::core::computeModes(model).omegaFast;
     // a speed the run itself reached at the stop: the largest |v2| of its path there
     double speed = 0;
     for (const QPointF& point : phase->entries().front().points().toVector()) {
-      if (std::abs(point.x() - model.gap) < 1e-9 * model.gap) speed = std::max(speed, std::abs(point.y()));
+      if (std::abs(point.x() - 1) < 1e-9) speed = std::max(speed, std::abs(point.y()));
     }
     QVERIFY(speed > 0);
-    const QPointF target(model.gap, -0.5 * speed);
+    const QPointF target(1, -0.5 * speed);
     // 12 px off: a hand on a projector's remote misses a thin line by that much
     const QPoint at = phase->chart()->mapToPosition(target).toPoint() + QPoint(-12, 0);
     QTest::mouseClick(phase->viewport(), Qt::LeftButton, {}, at);
@@ -817,16 +819,16 @@ class ClassroomTest : public QObject {
     QCOMPARE(start.u2, model.gap);
     QCOMPARE(start.u1, shown.u1);
     const double pixel = (axis(*phase, Qt::Vertical)->max() - axis(*phase, Qt::Vertical)->min()) / 100;
-    QVERIFY(std::abs(start.v2 - target.y()) < pixel);
+    QVERIFY(std::abs(start.v2 / speedUnit - target.y()) < pixel);
     QVERIFY(std::abs(grazelab::core::energy(model, start) - level) < 1e-12 * level);
     QVERIFY(m_window->displayed()->result->cost.contacts > 0);
     // the panel says that this start is not its own
     QVERIFY(m_window->parameterPanel()->clickedStartText().contains(QStringLiteral("clicked start")));
     // off the line, or a speed beyond the energy: refused with a reason, nothing recomputed
     const std::uint64_t before = m_window->displayed()->id;
-    QVERIFY(!m_window->startFromStopLine(QPointF(0.5 * model.gap, -0.5 * speed), 0.01 * model.gap));
+    QVERIFY(!m_window->startFromStopLine(QPointF(0.5, -0.5 * speed), 0.01));
     QVERIFY(m_window->statusText().contains(QStringLiteral("pixels of the stop line")));
-    QVERIFY(!m_window->startFromStopLine(QPointF(model.gap, -100 * speed), 0.01 * model.gap));
+    QVERIFY(!m_window->startFromStopLine(QPointF(1, -100 * speed), 0.01));
     QVERIFY(m_window->statusText().contains(QStringLiteral("No state of this energy")));
     QCOMPARE(m_window->displayed()->id, before);
     // an edit goes back to the panel's start, and the note goes

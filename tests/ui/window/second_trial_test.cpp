@@ -28,6 +28,7 @@
 #include "ui/compute/scene.h"
 #include "ui/plots/curve_plot.h"
 #include "ui/plots/landscape_view.h"
+#include "ui/plots/phase_plot.h"
 #include "ui/plots/plot_view.h"
 #include "ui/plots/trace_plot.h"
 #include "ui/widgets/chain_editor.h"
@@ -355,8 +356,14 @@ class SecondTrialTest : public QObject {
       return nullptr;
     };
     CurvePlot* section = plotOf(PlotKind::ChainSection);
-    CurvePlot* phase = plotOf(PlotKind::ChainPhase);
-    auto* trace = m_window->findChild<TracePlot*>();
+    const auto shownOf = [&](auto* none) {
+      for (auto* plot : m_window->findChildren<std::remove_pointer_t<decltype(none)>*>()) {
+        if (plot->isVisible()) return plot;
+      }
+      return none;
+    };
+    PhasePlot* phase = shownOf(static_cast<PhasePlot*>(nullptr));
+    TracePlot* trace = shownOf(static_cast<TracePlot*>(nullptr));
     QVERIFY(section && phase && trace);
     const grazelab::core::experiments::ChainSeriesSpec shown = m_window->displayed()->request->job.spec.chains.front();
     const grazelab::core::MassChain chain = shown.chain;
