@@ -45,6 +45,15 @@ std::vector<ChainFlight> flightsOf(const ChainSeriesSpec& spec, const ChainRun& 
   return flights;
 }
 
+// The state at each contact (its velocities just before it): the section H as records.
+StateRecords sectionOf(const ChainSeriesSpec& spec, const ChainRun& run) {
+  StateRecords section{spec.chain.size()};
+  for (const ChainEvent& event : run.events) {
+    if (isContact(event.type)) section.push(event.t, event.u, event.vBefore);
+  }
+  return section;
+}
+
 template <typename S>
 BasicChainState<S> stateIn(const ChainState& state) {
   BasicChainState<S> in{ChainVector<S>(state.u.size()), ChainVector<S>(state.v.size())};
@@ -128,6 +137,7 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
     ChainSeries sofar = series;
     sofar.run = inDouble(simulator.run());
     sofar.flights = flightsOf(spec, sofar.run);
+    sofar.section = sectionOf(spec, sofar.run);
     copySeconds = secondsSince(copying);
     progress(sofar, double(sofar.run.contacts) / double(std::max(1L, spec.contacts)));
     sinceReport = std::chrono::steady_clock::now();
@@ -141,6 +151,7 @@ std::optional<ChainSeries> seriesIn(const ChainSeriesSpec& spec, const ChainSeri
   // as much again), then handed back with it
   series.run = inDouble(simulator.run());
   series.flights = flightsOf(spec, series.run);
+  series.section = sectionOf(spec, series.run);
   if (progress && spec.trust != TrustMode::Off) {
     series.trustPending = true;
     progress(series, 1.0);
@@ -176,6 +187,7 @@ ChainSeries chainSeries(const ChainSeriesSpec& spec, std::stop_token stop, const
   frame.gloWeights = spec.gloWeights;
   frame.contactsAsked = spec.contacts;
   frame.grid.masses = spec.chain.size();
+  frame.section.masses = spec.chain.size();
   frame.modes = chainModes(spec.chain);
   frame.ratios = detectRatios(frame.modes.omega);
   if (frame.ratios.commensurate) frame.period = 2 * std::numbers::pi / frame.ratios.omega0;

@@ -63,6 +63,9 @@ struct ChainSeries {
       0;  ///< T = 2 pi / w0 when commensurate (every flight from the stop ends by it), else 0
   std::vector<ChainFlight> flights;
   StateRecords grid;  ///< every mass's state on the grid (t, u1..uN, v1..vN)
+  /// the state at each contact of the stopped mass, its velocities just before it: the points
+  /// of the section H (u_s = d)
+  StateRecords section;
   Trust trust;  ///< the run again one precision up, compared event by event (Unchecked: off)
   /// the precision the run was made in: double, or long double then binary128 when double met
   /// a contact it could not decide (--precision auto's rule); its numbers here rounded to double

@@ -15,7 +15,7 @@ enum class PlotKind {
   Trace,            ///< the stopped mass's u/d against t/T, the stop and the contacts, any chain
   Phase,            ///< the phase portrait of the mass 'phase of' names (mass 2 of the note's chain)
   PhaseU1V1,        ///< the phase portrait of mass 1
-  Poincare,         ///< (u1, v1) at each contact, coloured by contact index
+  Poincare,         ///< the state at each contact (on H) on two coordinates ((u1, v1); N: chosen), by contact index
   FreeFlight,       ///< free-flight time against contact index, with the line FFT = T2
   WorkPrecision,    ///< every method's error against its run time, with an overlay picker
   OnePeriodicData,  ///< the 1IPP impact data u1(T) against T/T2, with the GLO_lambda* value
@@ -32,7 +32,6 @@ enum class PlotKind {
   Landscape,        ///< a map over the grazing-start plane, the run's section over it
   ModesAtlas,       ///< the periodic impacting families: 2 pi / T against log E, click an orbit
   Multipliers,      ///< the chosen orbit's multipliers against the unit circle
-  ChainSection,     ///< N masses: the state at each contact (on H) on two chosen coordinates
   GrazingSet,       ///< N masses: the grazing set of two modes (top against lambda) or three (a region)
 };
 

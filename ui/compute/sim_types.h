@@ -67,6 +67,9 @@ struct SceneJob {
   /// the mass whose portrait the run views draw beside the stopped one (1-based: the scene's
   /// 'phase of'); 0: the stopped mass alone
   int chosenMass = 0;
+  /// the coordinates the section H is drawn on, 1-based in the state (u1..uN, v1..vN: the
+  /// scene's 'section on'); 0: mass 1's (u, v), or mass 2's when mass 1 is the stopped one
+  std::pair<int, int> sectionOn = {0, 0};
   /// the N-mass scenes: what the chain is (its springs, frequencies and their ratio, period) or
   /// why there is none (`chainRefused`), and how many designs its resonance has
   QString chainSummary;

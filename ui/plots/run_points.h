@@ -58,10 +58,10 @@ class StateSpan {
   int m_masses = 0;
 };
 
-/// The points (u1, v1) on the section H, one per contact.
-inline PointSpan sectionPoints(const core::Result& run) {
+/// The points (u1, v1) on the section H of the note's chain, one per contact.
+inline PointSpan sectionPoints(const std::vector<core::PoincarePoint>& poincare) {
   const core::PoincarePoint probe;
-  return PointSpan::ofRecords(run.poincare.data(), run.poincare.size(), sizeof(core::PoincarePoint),
+  return PointSpan::ofRecords(poincare.data(), poincare.size(), sizeof(core::PoincarePoint),
                               PointSpan::fieldOffset(probe, probe.u1),
                               PointSpan::fieldOffset(probe, probe.v1));
 }

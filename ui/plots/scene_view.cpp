@@ -45,7 +45,6 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::FlightHistogram:
     case PlotKind::DetunedFlights:
     case PlotKind::Flights:
-    case PlotKind::ChainSection:
     case PlotKind::GrazingSet: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);
     case PlotKind::WorkPrecision: return new AccuracyView(parent);

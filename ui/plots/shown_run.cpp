@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/model/linear_modes.h"
+#include "ui/widgets/param_specs.h"
 
 namespace grazelab::ui {
 namespace {
@@ -21,6 +22,23 @@ double ShownRun::drawnUntil() const {
   const double last = samples.t(samples.size() - 1);
   const double step = samples.size() > 1 ? samples.t(1) - samples.t(0) : 0.0;
   return tFinal <= last + step ? std::max(last, tFinal) : last;
+}
+
+PointSpan ShownRun::sectionPoints() const {
+  const double x = sectionX < masses() ? 1 / gap : 1 / speed, y = sectionY < masses() ? 1 / gap : 1 / speed;
+  if (twoMassSection) return grazelab::ui::sectionPoints(*twoMassSection).scaled(x, y);  // (u1, v1)
+  const auto field = [this](int c) {
+    return c < masses() ? chainSection.displacementField(c) : chainSection.velocityField(c - masses());
+  };
+  return chainSection.points(field(sectionX), field(sectionY)).scaled(x, y);
+}
+
+QString ShownRun::coordinateName(int c) const {
+  return c < masses() ? tr("u%1").arg(subscriptDigits(c + 1)) : tr("v%1").arg(subscriptDigits(c - masses() + 1));
+}
+
+QString ShownRun::coordinateAxis(int c) const {
+  return c < masses() ? tr("%1 / d").arg(coordinateName(c)) : tr("%1 / (d ω₁)").arg(coordinateName(c));
 }
 
 std::size_t ShownRun::eventCount() const {
@@ -63,7 +81,14 @@ std::optional<ShownRun> shownRun(const SimUpdate& update) {
     run.speed = run.gap * series->modes.omega.maxCoeff();
     run.start = series->start;
     run.tFinal = series->run.tFinal;
+    run.contactsAsked = series->contactsAsked;
     run.chainEvents = &series->run.events;
+    run.chainSection = StateSpan(series->section);
+    // the scene's pair, or mass 1's (u, v) (mass 2's when mass 1 is the stopped one)
+    const int n = series->chain.size(), fallback = run.stopped == 0 && n > 1 ? 1 : 0;
+    const auto inState = [n](int c) { return c >= 1 && c <= 2 * n; };
+    run.sectionX = inState(job.sectionOn.first) ? job.sectionOn.first - 1 : fallback;
+    run.sectionY = inState(job.sectionOn.second) ? job.sectionOn.second - 1 : n + fallback;
   } else if (update.result) {
     const core::Model& model = job.spec.model;
     const core::Modes modes = core::computeModes(model);
@@ -76,7 +101,11 @@ std::optional<ShownRun> shownRun(const SimUpdate& update) {
     run.start = core::chainStateOf(job.spec.run.initial);
     run.tFinal = update.result->tFinal;
     run.twoMass = true;
+    run.contactsAsked = job.spec.run.maxContacts;
     run.twoMassEvents = &update.result->events;
+    run.twoMassSection = &update.result->poincare;
+    run.sectionX = 0;
+    run.sectionY = 2;
   } else {
     return std::nullopt;
   }

@@ -36,8 +36,19 @@ struct ShownRun {
   int attempt = 0;
   /// the note's chain's run (its own words in places: mass 1 keeps the energy on a click)
   bool twoMass = false;
+  std::int64_t contactsAsked = 0;  ///< the contacts the run was asked for (0: no limit)
+  /// the coordinates its section H is drawn on, 0-based in the state (u1..uN, v1..vN): the
+  /// scene's choice (SceneJob::sectionOn), by default mass 1's (u, v) (mass 2's when mass 1 is
+  /// the stopped one); the note's chain's always (u1, v1)
+  int sectionX = 0, sectionY = 0;
 
   int masses() const { return samples.masses(); }
+  /// The points of the section H (the state at each contact, velocities before it) on
+  /// (sectionX, sectionY), in the views' units, read where the run keeps them.
+  PointSpan sectionPoints() const;
+  /// A coordinate's name ("u₃", "v₁") and its axis ("u₃ / d", "v₁ / (d ω₁)").
+  QString coordinateName(int c) const;
+  QString coordinateAxis(int c) const;
   /// The time the views draw to: the samples' end, or the run's when they end within a step of
   /// it (a grid has no sample at the last contact).
   double drawnUntil() const;
@@ -55,6 +66,8 @@ struct ShownRun {
 
   const std::vector<core::Event>* twoMassEvents = nullptr;
   const std::vector<core::ChainEvent>* chainEvents = nullptr;
+  const std::vector<core::PoincarePoint>* twoMassSection = nullptr;
+  StateSpan chainSection;
 };
 
 /// The run of `update`: its first series of N masses, or its run of the note's chain; none when

@@ -54,51 +54,10 @@ CurveFigure flightFigure(const QString& title, const core::experiments::ChainSer
   return figure;
 }
 
-// The state at each contact of the stopped mass (a Poincaré section on H, where u_s = d)
-// projected on the two coordinates the panel chose: displacements over d, velocities (before the
-// contact) over d w1, as the phase portrait scales them.
-CurveFigure sectionFigure(const MassChainParams& given, const core::experiments::ChainSeries& series,
-                          double speed) {
-  const core::MassChain& chain = series.chain;
-  const int n = chain.size();
-  const int x = given.sectionXResolved(), y = given.sectionYResolved();
-  // with subscripts, as the panel writes them (u₃, not u3)
-  const auto name = [n](int c) {
-    return c <= n ? tr("u%1").arg(subscriptDigits(c)) : tr("v%1").arg(subscriptDigits(c - n));
-  };
-  const auto scaled = [&](int c) { return c <= n ? tr("%1 / d").arg(name(c)) : tr("%1 / (d ω₁)").arg(name(c)); };
-  const auto value = [&](const core::ChainEvent& event, int c) {
-    return c <= n ? event.u[c - 1] / chain.gap : event.vBefore[c - n - 1] / speed;
-  };
-  CurveFigure figure;
-  figure.title = tr("Poincaré points on H: (%1, %2)").arg(name(x), name(y));
-  figure.xTitle = scaled(x);
-  figure.yTitle = scaled(y);
-  figure.toolTip =
-      tr("The chain's state at each contact of mass %1 with the stop (the section H: u%1 = d), on "
-         "the two coordinates chosen in the panel's 'section on' (velocities just before the "
-         "contact). A resonant chain's points lie on few curves; a chaotic run fills a region. "
-         "Click to start a run there: those two coordinates as clicked, the others as at the start "
-         "shown, mass %1 leaving the stop at the speed that keeps the energy.")
-          .arg(chain.stopped());
-  figure.curveName = tr("contacts");
-  figure.dots = true;
-  if (n == 1) {
-    // one mass: on H its place is the stop and its speed the energy's, a single point
-    figure.whyEmpty = tr("One mass: on H its place is the stop and its speed the energy's; no section to draw.");
-    return figure;
-  }
-  figure.whyEmpty = tr("No contact with the stop in this run: no point on H to draw.");
-  for (const core::ChainEvent& event : series.run.events) {
-    if (core::isContact(event.type)) figure.curve.emplace_back(value(event, x), value(event, y));
-  }
-  return figure;
-}
-
 // The scene's figures and status of its runs so far: the run shown, then (when asked) the same
 // start on the detuned chain.
-void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs, const MassChainParams& given,
-                        bool contrast, core::TrustMode trust, double slowest) {
+void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs, bool contrast,
+                        core::TrustMode trust, double slowest) {
   const core::experiments::ChainSeries& series = *runs.front();
   const core::MassChain& chain = series.chain;
   const bool resonant = series.period > 0;
@@ -110,8 +69,6 @@ void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs,
                             : tr("Free flights / slowest period (no common period: no bound)"),
                    series, unit, resonant, unitName);
 
-  const double speed = chain.gap * series.modes.omega.maxCoeff();
-  job.figures[PlotKind::ChainSection] = sectionFigure(given, series, speed);
 
   // the contrast: the same start on the chain with k2 5 % stiffer (no common period)
   if (contrast && runs.size() > 1) {
@@ -193,7 +150,7 @@ Scene::Spec threeMassesScene() {
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::Flights,
-                 PlotKind::Phase, PlotKind::ChainSection, PlotKind::DetunedFlights};
+                 PlotKind::Phase, PlotKind::Poincare, PlotKind::DetunedFlights};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token stop) {
     const MassChainParams& given = params.massChain;
     const ChainChoice choice = chooseChain(given, params.gap, stop);
@@ -228,11 +185,12 @@ Scene::Spec threeMassesScene() {
       job.spec.chains.push_back({detuned, start, long(params.horizon), 0, 0, core::TrustMode::Off});
     }
     job.chosenMass = given.shown();
+    job.sectionOn = {given.sectionXResolved(), given.sectionYResolved()};
     job.chainSummary = chainSummaryOf(chain, given, choice.designs, modes, ratios);
     job.chainDesigns = choice.designs;
-    job.presentRuns = [given, contrast, trust = run.trust, slowest](
+    job.presentRuns = [contrast, trust = run.trust, slowest](
                           SceneJob& shown, const core::experiments::ChainRuns& runs) {
-      presentThreeMasses(shown, runs, given, contrast, trust, slowest);
+      presentThreeMasses(shown, runs, contrast, trust, slowest);
     };
     job.ok = true;
     return job;
@@ -265,7 +223,7 @@ Scene::Spec eightMassesScene() {
   scene.defaults.perturbation = -1e-4;
   scene.defaults.horizon = 100;
   scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::Flights,
-                 PlotKind::Phase, PlotKind::ChainSection};
+                 PlotKind::Phase, PlotKind::Poincare};
   return scene;
 }
 

@@ -183,7 +183,7 @@ void ParameterPanel::setScene(const Scene& scene) {
   m_massChainBox->setVisible(m_massChainScene);
   m_chainEditor->setWeightsShown(scene.gloWeights());
   m_chainEditor->setShownMassOffered(scene.plots().contains(PlotKind::Phase));
-  m_chainEditor->setSectionOffered(scene.plots().contains(PlotKind::ChainSection));
+  m_chainEditor->setSectionOffered(scene.plots().contains(PlotKind::Poincare));
   if (SliderSpin* gap = m_controls.value(ParamKey::Gap)) {
     if (m_massChainScene) m_massChainLayout->addWidget(gap);
     else m_chainLayout->insertWidget(3, gap);  // after m1, m2, k1, as built

@@ -349,7 +349,7 @@ SceneView* MainWindow::addView(PlotKind kind) {
     };
     auto* curve = qobject_cast<CurvePlot*>(plot);
     auto* phase = qobject_cast<PhasePlot*>(plot);
-    if (qobject_cast<PoincarePlot*>(plot) || (curve && curve->kind() == PlotKind::ChainSection)) {
+    if (qobject_cast<PoincarePlot*>(plot)) {
       connect(plot, &PlotView::clickedAt, this, [this](QPointF value) { startFromSection(value); });
     } else if (phase && phase->mass() == PhasePlot::Mass::Chosen) {
       connect(plot, &PlotView::clickedAt, this,

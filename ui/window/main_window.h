@@ -139,12 +139,13 @@ class MainWindow : public QMainWindow {
   /// alone already (double-click).
   void toggleEnlarged(QWidget* view);
   QWidget* enlargedView() const { return m_enlarged; }
-  /// Starts a run from the point (u1, v1) of the section H: u2 = d and v2 <= 0 (leaving the
-  /// stop) on the energy level of the run shown. False (and why, on the status line) when no
-  /// state of that energy lies there. The next parameter edit goes back to the scene's start.
-  /// N masses: the point is on the section's two coordinates as plotted (u / d, v / (d ω₁)),
-  /// the others as at the shown run's start (core::chainSectionStateAtEnergy).
-  bool startFromSection(QPointF u1v1);
+  /// Starts a run from a point of the section H as plotted (u / d, v / (d ω₁)): two masses, the
+  /// point (u1, v1) with u2 = d and v2 <= 0 (leaving the stop) on the energy level of the run
+  /// shown; N masses, the point on the section's two coordinates, the others as at the shown
+  /// run's contact nearest it (core::chainSectionStateAtEnergy). False (and why, on the status
+  /// line) when no state of that energy lies there. The next parameter edit goes back to the
+  /// scene's start.
+  bool startFromSection(QPointF scaled);
   /// Starts a run from a click on the stopped mass's portrait, as plotted (u / d, v / (d ω₁),
   /// `tolerance` in those units), within `tolerance` of the stop line u = d: the mass leaves the
   /// stop at the clicked speed (v <= 0). Two masses: mass 1 keeps the position of the run's start

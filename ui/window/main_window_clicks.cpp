@@ -42,10 +42,12 @@ void MainWindow::setGloWeightsFrom(QPointF value) {
   setParams(next);
 }
 
-bool MainWindow::startFromSection(QPointF u1v1) {
+bool MainWindow::startFromSection(QPointF value) {
   if (!m_displayed) return false;
-  if (scene().massChain()) return startChainFromSection(u1v1);
+  if (scene().massChain()) return startChainFromSection(value);
+  // the section's units: u1 over d, v1 over d w1 (the fast frequency)
   const core::Model& model = m_displayed->request->job.spec.model;
+  const QPointF u1v1(value.x() * model.gap, value.y() * model.gap * core::computeModes(model).omegaFast);
   const double level = core::energy(model, m_displayed->request->job.spec.run.initial);
   const std::optional<core::State> start = core::sectionStateAtEnergy(model, level, u1v1.x(), u1v1.y());
   if (!start) {

@@ -66,6 +66,19 @@ TEST(ChainSeries, FlightsTileTheRunAndStayBelowThePeriod) {
     EXPECT_NEAR(chainEnergy(chain, at), level, 1e-12 * level) << "t = " << grid.t(k);
   }
   EXPECT_EQ(series.trust.verdict, Verdict::Unchecked);
+  // the section H: every contact's state, its velocities just before it, in order
+  ASSERT_EQ(series.section.size(), 120u);
+  std::size_t k = 0;
+  for (const ChainEvent& event : series.run.events) {
+    if (!isContact(event.type)) continue;
+    ASSERT_EQ(series.section.t(k), event.t);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(series.section.u(k, i), event.u[i]);
+      EXPECT_EQ(series.section.v(k, i), event.vBefore[i]);
+    }
+    EXPECT_EQ(series.section.u(k, 2), chain.gap);
+    ++k;
+  }
 }
 
 TEST(ChainSeries, AGloStartGivenByItsWeightsKeepsItsStillModes) {
@@ -195,6 +208,7 @@ void expectSameRun(const ChainSeries& a, const ChainSeries& b) {
   EXPECT_EQ(a.run.energyFinal, b.run.energyFinal);
   ASSERT_EQ(a.grid.size(), b.grid.size());
   ASSERT_EQ(a.grid.values, b.grid.values);
+  ASSERT_EQ(a.section.values, b.section.values);
   ASSERT_EQ(a.flights.size(), b.flights.size());
   for (std::size_t i = 0; i < a.flights.size(); ++i) ASSERT_EQ(a.flights[i].duration, b.flights[i].duration);
   EXPECT_EQ(a.trust.verdict, b.trust.verdict);
@@ -257,6 +271,9 @@ TEST(ChainSeries, InPiecesTheSameBitsAsAtOnceEachReportAPrefixOfTheRun) {
       const ChainSeries& sofar = reports[r];
       ASSERT_LE(sofar.run.events.size(), once.run.events.size());
       ASSERT_EQ(sofar.flights.size(), std::size_t(sofar.run.contacts));
+      // its section a prefix of the whole run's (each report's points stay where they were drawn)
+      ASSERT_EQ(sofar.section.size(), std::size_t(sofar.run.contacts));
+      ASSERT_TRUE(std::equal(sofar.section.values.begin(), sofar.section.values.end(), once.section.values.begin()));
       for (std::size_t i = 0; i < sofar.run.events.size(); ++i) {
         ASSERT_EQ(sofar.run.events[i].t, once.run.events[i].t) << "report " << r << ", event " << i;
         ASSERT_EQ(sofar.run.events[i].u, once.run.events[i].u) << "report " << r << ", event " << i;

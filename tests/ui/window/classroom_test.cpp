@@ -766,7 +766,8 @@ class ClassroomTest : public QObject {
     // middle of the level's ellipse (v1 = 0, the springs' least energy): well inside the level,
     // so that a click rounded to a pixel stays on it
     const QPointF reached = poincare->entries().front().points().toVector().at(3);
-    const double middle = model.k2 * model.gap / (model.k1 + model.k2);
+    // (as plotted: u1 / d, v1 / (d w1))
+    const double middle = model.k2 / (model.k1 + model.k2);
     const QPointF target = 0.5 * (reached + QPointF(middle, 0.0));
     const QPoint at = poincare->chart()->mapToPosition(target).toPoint();
     QTest::mouseClick(poincare->viewport(), Qt::LeftButton, {}, at);
@@ -776,11 +777,11 @@ class ClassroomTest : public QObject {
     QCOMPARE(start.u2, model.gap);
     QVERIFY(start.v2 <= 0);
     const double pixel = (axis(*poincare, Qt::Horizontal)->max() - axis(*poincare, Qt::Horizontal)->min()) / 100;
-    QVERIFY2(std::abs(start.u1 - target.x()) < pixel, qPrintable(m_window->statusText()));
+    QVERIFY2(std::abs(start.u1 / model.gap - target.x()) < pixel, qPrintable(m_window->statusText()));
     QVERIFY(std::abs(grazelab::core::energy(model, start) - level) < 1e-12 * level);
     // a point outside the energy level is refused with a reason, nothing recomputed
     const std::uint64_t before = m_window->displayed()->id;
-    QVERIFY(!m_window->startFromSection(QPointF(100 * model.gap, 0)));
+    QVERIFY(!m_window->startFromSection(QPointF(100, 0)));
     QVERIFY(m_window->statusText().contains(QStringLiteral("No state of this energy")));
     QCOMPARE(m_window->displayed()->id, before);
     // an edit goes back to the scene's own start

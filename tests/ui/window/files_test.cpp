@@ -323,7 +323,7 @@ class FilesTest : public QObject {
   void exportsOfAClickedRunReproduceIt() {
     const grazelab::core::Model model = m_window->displayed()->request->job.spec.model;
     const double middle = model.k2 * model.gap / (model.k1 + model.k2);  // inside every level
-    QVERIFY(m_window->startFromSection(QPointF(middle, 0.0)));
+    QVERIFY(m_window->startFromSection(QPointF(middle / model.gap, 0.0)));  // (as plotted: u1 / d)
     QVERIFY(waitForLatestFinal(*m_window));
     const grazelab::core::State clicked = m_window->displayed()->request->job.spec.run.initial;
     QVERIFY(m_window->displayed()->request->clickedStart.has_value());
