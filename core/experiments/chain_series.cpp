@@ -36,7 +36,7 @@ std::vector<ChainFlight> flightsOf(const ChainSeriesSpec& spec, const ChainRun& 
     }
     ++contact;
     if (event.type != EventType::Stick || event.t > from) {
-      flights.push_back({contact, event.t - from, fromStop, afterImpact});
+      flights.push_back({contact, event.t - from, event.shortfall, fromStop, afterImpact});
     }
     from = event.t;
     fromStop = true;

@@ -47,6 +47,9 @@ struct ChainSeriesSpec {
 struct ChainFlight {
   long contact = 0;       ///< the contact that ends it (1-based)
   double duration = 0;    ///< [time]
+  /// the chain's period (T, or the slowest mode's) less the flight's length, as the run computed
+  /// it: exact near the period, where duration / period would round to 1 (ChainEvent::shortfall)
+  double shortfall = 0;
   bool fromStop = false;  ///< it starts on the stop (after an impact, a grazing or a release)
   bool afterImpact = false;
 };

@@ -26,8 +26,8 @@ enum class PlotKind {
   FlightHistogram,  ///< Theorem 2.3: histogram of FFT/T2 over random starts, bound at 1
   DetunedFlights,   ///< detuned contrast: the same start on the chain detuned, its flights from
                     ///< the stop against contact index (two masses over T2, N over T)
-  Flights,          ///< a run's flights from the stop against contact index, over the period
-                    ///< that bounds them in resonance (two masses: T2; N: T, or the slowest)
+  ResonantFlights,  ///< the detuned scene's resonant companion: its flights over T2, computed
+                    ///< by the scene
   Chain,            ///< the chain moving, any number of masses (ChainView), the time cursor of the other views
   Landscape,        ///< a map over the grazing-start plane, the run's section over it
   ModesAtlas,       ///< the periodic impacting families: 2 pi / T against log E, click an orbit

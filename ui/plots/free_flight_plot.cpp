@@ -2,8 +2,6 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "ui/plots/free_flight_plot.h"
 
-#include "core/model/linear_modes.h"
-
 #include <QLineSeries>
 #include <QScatterSeries>
 
@@ -21,40 +19,64 @@ FreeFlightPlot::FreeFlightPlot(QWidget* parent)
   m_flights = addEntry(flights, Decimation::Scatter);
   m_period = addEntry(makeLine(tr("bound: T₂"), colors::kImpact, 1.5, Qt::DashLine), Decimation::None);
   setAxesIndependent(true);
-  setToolTip(tr("Free-flight time (FFT): the time from leaving the stop to the next contact, "
-                "against the index of that contact, in units of T₂, the slow period. Theorem 2.3: FFT ≤ T₂ "
-                "(dashed: FFT / T₂ = 1), with equality only on a grazing orbit."));
+}
+
+void FreeFlightPlot::nameFor(const ShownRun& run) {
+  const QString unit = run.unit.name;
+  entries()[std::size_t(m_period)].series->setName(run.flightsBounded ? tr("bound: %1").arg(unit) : QString());
+  if (run.twoMass) {
+    setTitles(tr("Free-flight time at each contact"), tr("contact index"), tr("flight time / T₂"));
+    setToolTip(tr("Free-flight time (FFT): the time from leaving the stop to the next contact, against the index "
+                  "of that contact, in units of T₂, the slow period. Theorem 2.3: FFT ≤ T₂ (dashed: FFT / T₂ = "
+                  "1), with equality only on a grazing orbit."));
+    return;
+  }
+  setTitles(run.flightsBounded ? tr("Free flights from the stop / %1 (≤ 1)").arg(unit)
+                               : tr("Free flights / %1 (no common period: no bound)").arg(unit),
+            tr("contact index"), tr("flight / %1").arg(unit));
+  setToolTip(tr("Each free flight from the stop (after an impact, a grazing or a release), over %1, against the "
+                "index of the contact that ends it. A resonant chain's free motion repeats after its common "
+                "period T, so no flight from the stop lasts longer (Theorem 2.3 for any N); a chain with no "
+                "common period has no such bound.")
+                 .arg(run.unit.inWords));
 }
 
 void FreeFlightPlot::show(const SimUpdate& update) {
-  const core::Result& result = *update.result;
-  if (m_taken.startsOver(update)) {
+  std::optional<ShownRun> run = shownRun(update);
+  if (!run) return;
+  if (!(m_run && run->continues(*m_run))) {
     startNewRun();
     setData(m_flights, {});
+    m_taken = 0;
+    nameFor(*run);
   }
-  // T2 of the run's own chain (the model travels with the request, not in the result)
-  const double T2 = core::computeModes(update.request->job.spec.model).T2;
+  const double period = run->unit.length;
   std::vector<QPointF> flights;
-  flights.reserve(result.freeFlights.size() - m_taken.freeFlights);
-  for (std::size_t index = m_taken.freeFlights; index < result.freeFlights.size(); ++index) {
-    const core::FreeFlight& flight = result.freeFlights[index];
-    // 1 - shortfall / T2: exact near T2, where FFT / T2 itself would round to 1
-    flights.emplace_back(double(flight.contactIndex), 1.0 - flight.shortfall / T2);
+  for (; m_taken < run->flightCount(); ++m_taken) {
+    const std::optional<ShownRun::Flight> flight = run->flightAt(m_taken);
+    if (!flight) continue;  // (not from the stop)
+    // 1 - shortfall / period: exact near the period, where FFT / period itself would round to 1
+    flights.emplace_back(double(flight->contact),
+                         run->unitIsPeriod ? 1.0 - flight->shortfall / period : flight->duration / period);
   }
-  m_taken.freeFlights = result.freeFlights.size();
   appendData(m_flights, flights);
   const std::vector<QPointF>& all = entries()[std::size_t(m_flights)].data;
   const double last = all.empty() ? 1.0 : std::max(1.0, all.back().x());
   // decided by the run's length, not the flights so far: a look that changed mid-run made Qt
   // Charts build every marker again (57 ms for 20 000 contacts)
-  const double flightsAsked = std::max(double(all.size()), double(update.request->job.spec.run.maxContacts));
+  const double flightsAsked = std::max(double(all.size()), double(run->contactsAsked));
   m_dense = flightsAsked > 2.0 * std::max(1, width());
   applyMarkers();
   // the whole run's contact range from its first update: an axis that grew as the run came
   // in moved every marker each time (25-50 ms a move for 20 000 contacts)
   clearExtraBounds();
-  includeInBounds(double(std::max<std::int64_t>(1, update.request->job.spec.run.maxContacts)), 1.0);
-  setData(m_period, {QPointF(0, 1.0), QPointF(last, 1.0)});
+  includeInBounds(double(std::max<std::int64_t>(1, run->contactsAsked)), 1.0);
+  setData(m_period, run->flightsBounded ? std::vector<QPointF>{QPointF(0, 1.0), QPointF(last, 1.0)}
+                                        : std::vector<QPointF>{});
+  setEmptyNote(all.empty() && (update.final || update.runDone)
+                   ? tr("No free flight from the stop in this run: nothing to draw.")
+                   : QString());
+  m_run = std::move(run);
   scheduleRefresh();
 }
 

@@ -44,7 +44,7 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::SpreadAgainstSize:
     case PlotKind::FlightHistogram:
     case PlotKind::DetunedFlights:
-    case PlotKind::Flights:
+    case PlotKind::ResonantFlights:
     case PlotKind::GrazingSet: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);
     case PlotKind::WorkPrecision: return new AccuracyView(parent);

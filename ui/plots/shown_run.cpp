@@ -41,6 +41,20 @@ QString ShownRun::coordinateAxis(int c) const {
   return c < masses() ? tr("%1 / d").arg(coordinateName(c)) : tr("%1 / (d ω₁)").arg(coordinateName(c));
 }
 
+std::size_t ShownRun::flightCount() const {
+  return twoMassFlights ? twoMassFlights->size() : chainFlights ? chainFlights->size() : 0;
+}
+
+std::optional<ShownRun::Flight> ShownRun::flightAt(std::size_t k) const {
+  if (twoMassFlights) {
+    const core::FreeFlight& flight = (*twoMassFlights)[k];
+    return Flight{flight.contactIndex, flight.duration, flight.shortfall};
+  }
+  const core::experiments::ChainFlight& flight = (*chainFlights)[k];
+  if (!flight.fromStop) return std::nullopt;
+  return Flight{flight.contact - 1, flight.duration, flight.shortfall};
+}
+
 std::size_t ShownRun::eventCount() const {
   return twoMassEvents ? twoMassEvents->size() : chainEvents ? chainEvents->size() : 0;
 }
@@ -84,6 +98,8 @@ std::optional<ShownRun> shownRun(const SimUpdate& update) {
     run.contactsAsked = series->contactsAsked;
     run.chainEvents = &series->run.events;
     run.chainSection = StateSpan(series->section);
+    run.chainFlights = &series->flights;
+    run.flightsBounded = series->period > 0;
     // the scene's pair, or mass 1's (u, v) (mass 2's when mass 1 is the stopped one)
     const int n = series->chain.size(), fallback = run.stopped == 0 && n > 1 ? 1 : 0;
     const auto inState = [n](int c) { return c >= 1 && c <= 2 * n; };
@@ -104,13 +120,19 @@ std::optional<ShownRun> shownRun(const SimUpdate& update) {
     run.contactsAsked = job.spec.run.maxContacts;
     run.twoMassEvents = &update.result->events;
     run.twoMassSection = &update.result->poincare;
+    run.twoMassFlights = &update.result->freeFlights;
+    run.flightsBounded = true;
     run.sectionX = 0;
     run.sectionY = 2;
   } else {
     return std::nullopt;
   }
   run.chosen = job.chosenMass >= 1 && job.chosenMass <= run.masses() ? job.chosenMass - 1 : run.stopped;
-  if (job.timeUnit && job.timeUnit->length > 0) run.unit = *job.timeUnit;
+  if (job.timeUnit && job.timeUnit->length > 0) {
+    run.unit = *job.timeUnit;
+    run.unitIsPeriod = false;
+    run.flightsBounded = false;
+  }
   return run;
 }
 

@@ -46,6 +46,21 @@ struct ShownRun {
   /// The points of the section H (the state at each contact, velocities before it) on
   /// (sectionX, sectionY), in the views' units, read where the run keeps them.
   PointSpan sectionPoints() const;
+  /// A free flight from the stop: the contact that ends it (0-based), its length [time], and
+  /// the chain's period (T₂, T or the slowest) less that length, exact near the period.
+  struct Flight {
+    std::int64_t contact = 0;
+    double duration = 0;
+    double shortfall = 0;
+  };
+  /// The run's flights so far (flightAt: none for one that does not start on the stop).
+  std::size_t flightCount() const;
+  std::optional<Flight> flightAt(std::size_t k) const;
+  /// Its flights from the stop are bounded by its period (the note's chain, a resonant one).
+  bool flightsBounded = false;
+  /// `unit` is the chain's period, which the flights' shortfalls are measured from (not a
+  /// scene's own unit)
+  bool unitIsPeriod = true;
   /// A coordinate's name ("u₃", "v₁") and its axis ("u₃ / d", "v₁ / (d ω₁)").
   QString coordinateName(int c) const;
   QString coordinateAxis(int c) const;
@@ -61,12 +76,15 @@ struct ShownRun {
   /// the same run as `before`, grown (not another one, nor a raised one from its start)
   bool continues(const ShownRun& before) const {
     return owner && before.owner && id == before.id && attempt == before.attempt &&
-           samples.size() >= before.samples.size() && eventCount() >= before.eventCount();
+           samples.size() >= before.samples.size() && eventCount() >= before.eventCount() &&
+           flightCount() >= before.flightCount();
   }
 
   const std::vector<core::Event>* twoMassEvents = nullptr;
   const std::vector<core::ChainEvent>* chainEvents = nullptr;
   const std::vector<core::PoincarePoint>* twoMassSection = nullptr;
+  const std::vector<core::FreeFlight>* twoMassFlights = nullptr;
+  const std::vector<core::experiments::ChainFlight>* chainFlights = nullptr;
   StateSpan chainSection;
 };
 

@@ -78,7 +78,7 @@ Scene::Spec detunedScene() {
   scene.parameters = {ParamKey::FrequencyRatio, ParamKey::Lambda,       ParamKey::M1,
                       ParamKey::M2,             ParamKey::Gap,          ParamKey::K1,
                       ParamKey::Perturbation,   ParamKey::Horizon};
-  scene.plots = {PlotKind::DetunedFlights, PlotKind::Flights, PlotKind::Trace};
+  scene.plots = {PlotKind::DetunedFlights, PlotKind::ResonantFlights, PlotKind::Trace};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token stop) {
     SceneJob job;
     const auto k2 = core::k2ForFrequencyRatio(params.m1, params.m2, params.k1,
@@ -112,7 +112,7 @@ Scene::Spec detunedScene() {
     job.figures[PlotKind::DetunedFlights] = flightFigure(
         tr("Detuned, ω₁/ω₂ = %1: flight time / T₂").arg(params.frequencyRatio, 0, 'g', 5),
         flights(detuned, start, contacts, stop), false, contacts);
-    job.figures[PlotKind::Flights] =
+    job.figures[PlotKind::ResonantFlights] =
         flightFigure(tr("In 1:2 resonance: flight time / T₂"), flights(*resonant, start, contacts, stop),
                      true, contacts);
     job.spec.model = detuned;

@@ -27,54 +27,43 @@ QString tr(const char* text) {
 
 constexpr int kGridPoints = 1500;  // over the window of four slowest periods
 
-CurveFigure flightFigure(const QString& title, const core::experiments::ChainSeries& series,
-                         double unit, bool bound, const QString& unitName) {
+// The detuned contrast's flights from the stop over the resonant chain's period T, against the
+// index (0-based) of the contact that ends each, with the resonant chain's bound 1.
+CurveFigure contrastFigure(const QString& title, const core::experiments::ChainSeries& series, double T) {
   CurveFigure figure;
   figure.title = title;
   figure.xTitle = tr("contact index");
-  figure.yTitle = tr("flight / %1").arg(unitName);  // (short: "flight time / slowest period" was cut)
+  figure.yTitle = tr("flight / T");
   figure.toolTip =
-      tr("Each free flight from the stop (after an impact, a grazing or a release), over the "
-         "chain's common period T. A resonant chain's free motion repeats after T, so no "
-         "flight from the stop lasts longer (Theorem 2.3 for any N); a chain with no common "
-         "period has no such bound.");
+      tr("The same start on the chain with k₂ 5 % stiffer: each free flight from the stop, over the "
+         "resonant chain's period T. The resonant chain's free motion repeats after T, so none of its "
+         "flights lasts longer (Theorem 2.3 for any N); detuned, no period bounds them.");
   figure.curveName = tr("flights");
   figure.dots = true;
   figure.whyEmpty = tr("No contact with the stop in this run: no flight from it to draw.");
   long last = 1;
   for (const core::experiments::ChainFlight& flight : series.flights) {
     if (!flight.fromStop) continue;
-    figure.curve.emplace_back(double(flight.contact), flight.duration / unit);
-    last = std::max(last, flight.contact);
+    figure.curve.emplace_back(double(flight.contact - 1), flight.duration / T);
+    last = std::max(last, flight.contact - 1);
   }
-  if (bound) {
-    figure.referenceName = tr("T");
-    figure.reference = {QPointF(0, 1), QPointF(double(last), 1)};
-  }
+  figure.referenceName = tr("T");
+  figure.reference = {QPointF(0, 1), QPointF(double(last), 1)};
   return figure;
 }
 
 // The scene's figures and status of its runs so far: the run shown, then (when asked) the same
 // start on the detuned chain.
 void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs, bool contrast,
-                        core::TrustMode trust, double slowest) {
+                        core::TrustMode trust) {
   const core::experiments::ChainSeries& series = *runs.front();
   const core::MassChain& chain = series.chain;
   const bool resonant = series.period > 0;
-  const double unit = resonant ? series.period : slowest;
-  const QString unitName = resonant ? tr("T") : tr("slowest period");
-
-  job.figures[PlotKind::Flights] =
-      flightFigure(resonant ? tr("Free flights from the stop / T (≤ 1)")
-                            : tr("Free flights / slowest period (no common period: no bound)"),
-                   series, unit, resonant, unitName);
-
 
   // the contrast: the same start on the chain with k2 5 % stiffer (no common period)
   if (contrast && runs.size() > 1) {
     const core::experiments::ChainSeries& detuned = *runs[1];
-    CurveFigure figure = flightFigure(tr("k₂ 5 % off: flights / the resonant T"), detuned,
-                                      series.period, true, tr("T"));
+    CurveFigure figure = contrastFigure(tr("k₂ 5 % off: flights / the resonant T"), detuned, series.period);
     // its flights past T last 10 to 200 T: the axis stops at 3 T, and they are drawn on its top
     // edge as their own dots, counted in the title (1 % off hid its two such flights above the
     // axis, and a class saw every flight below T)
@@ -149,7 +138,7 @@ Scene::Spec threeMassesScene() {
   scene.defaults.massChain = MassChainParams{};
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
-  scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::Flights,
+  scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::FreeFlight,
                  PlotKind::Phase, PlotKind::Poincare, PlotKind::DetunedFlights};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token stop) {
     const MassChainParams& given = params.massChain;
@@ -188,9 +177,9 @@ Scene::Spec threeMassesScene() {
     job.sectionOn = {given.sectionXResolved(), given.sectionYResolved()};
     job.chainSummary = chainSummaryOf(chain, given, choice.designs, modes, ratios);
     job.chainDesigns = choice.designs;
-    job.presentRuns = [contrast, trust = run.trust, slowest](
+    job.presentRuns = [contrast, trust = run.trust](
                           SceneJob& shown, const core::experiments::ChainRuns& runs) {
-      presentThreeMasses(shown, runs, contrast, trust, slowest);
+      presentThreeMasses(shown, runs, contrast, trust);
     };
     job.ok = true;
     return job;
@@ -222,7 +211,7 @@ Scene::Spec eightMassesScene() {
   scene.defaults.massChain.weights.back() = 1.0;  // the slowest mode alone
   scene.defaults.perturbation = -1e-4;
   scene.defaults.horizon = 100;
-  scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::Flights,
+  scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::FreeFlight,
                  PlotKind::Phase, PlotKind::Poincare};
   return scene;
 }

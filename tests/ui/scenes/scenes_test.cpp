@@ -25,6 +25,7 @@
 #include "ui/pictures/heat_map.h"
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/phase_plot.h"
+#include "ui/plots/free_flight_plot.h"
 #include "ui/plots/plot_view.h"
 #include "ui/plots/poincare_plot.h"
 #include "ui/plots/trace_plot.h"
@@ -39,6 +40,16 @@ using grazelab::ui::testing::waitForLatestFinal;
 namespace {
 
 bool shows(const Scene& scene, PlotKind kind) { return scene.plots().contains(kind); }
+
+// The window's flights from the stop.
+const FreeFlightPlot& flightPlot(const MainWindow& window) {
+  for (FreeFlightPlot* plot : window.findChildren<FreeFlightPlot*>()) {
+    if (!plot->isVisible()) continue;
+    plot->refreshNow();
+    return *plot;
+  }
+  qFatal("no flights shown");
+}
 
 // The window's (first) portrait of the chosen mass.
 const PhasePlot& phasePlot(const MainWindow& window) {
@@ -97,7 +108,7 @@ class ScenesTest : public QObject {
                qPrintable(name));
       QVERIFY2(m_window->displayed()->request->job.spec.map.has_value() == shows(scene, PlotKind::Landscape),
                qPrintable(name));
-      QVERIFY2(needs.freeFlights == shows(scene, PlotKind::FreeFlight), qPrintable(name));
+      QVERIFY2(needs.freeFlights == (!scene.massChain() && shows(scene, PlotKind::FreeFlight)), qPrintable(name));
       QVERIFY2(scene.massChain() || needs.events == (shows(scene, PlotKind::Trace) || shows(scene, PlotKind::Chain)),
                qPrintable(name));
       QVERIFY2(bool(m_window->chainView()) == shows(scene, PlotKind::Chain), qPrintable(name));
@@ -111,7 +122,7 @@ class ScenesTest : public QObject {
                            kind == PlotKind::FrequencyEnergy ||
                            kind == PlotKind::GrazingMaximum || kind == PlotKind::SpreadAgainstSize ||
                            kind == PlotKind::FlightHistogram || kind == PlotKind::DetunedFlights ||
-                           kind == PlotKind::Flights ||
+                           kind == PlotKind::ResonantFlights ||
                            kind == PlotKind::GrazingSet;
         if (curve) QVERIFY2(m_window->displayed()->request->job.figures.count(kind), qPrintable(name));
       }
@@ -291,7 +302,7 @@ class ScenesTest : public QObject {
     m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("detuned")));
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     const CurveFigure& detuned = figure(*m_window, PlotKind::DetunedFlights);
-    const CurveFigure& resonant = figure(*m_window, PlotKind::Flights);
+    const CurveFigure& resonant = figure(*m_window, PlotKind::ResonantFlights);
     QVERIFY(!detuned.curve.empty() && !resonant.curve.empty());
     const auto highest = [](const CurveFigure& f) {
       double top = 0;
@@ -324,7 +335,7 @@ class ScenesTest : public QObject {
     QVERIFY2(job->chainSummary.contains(QStringLiteral("3 : 2 : 1")), qPrintable(job->chainSummary));
     QVERIFY2(job->status.contains(QStringLiteral("200 contacts")), qPrintable(job->status));
     QCOMPARE(job->chainDesigns, 6);
-    const auto flights = figure(*m_window, PlotKind::Flights).curve;
+    const std::vector<QPointF> flights = flightPlot(*m_window).flights().toVector();
     QVERIFY(flights.size() > 150);
     for (const QPointF& point : flights) QVERIFY2(point.y() <= 1.0 + 1e-12, qPrintable(QString::number(point.y())));
     double longest = 0;
@@ -473,7 +484,9 @@ class ScenesTest : public QObject {
     job = &m_window->displayed()->request->job;
     QVERIFY2(job->ok, qPrintable(job->message));
     QVERIFY2(job->chainSummary.contains(QStringLiteral("4 : 3 : 2 : 1")), qPrintable(job->chainSummary));
-    for (const QPointF& point : figure(*m_window, PlotKind::Flights).curve) QVERIFY(point.y() <= 1.0 + 1e-12);
+    const std::vector<QPointF> bounded = flightPlot(*m_window).flights().toVector();
+    QVERIFY(bounded.size() > 10);
+    for (const QPointF& point : bounded) QVERIFY(point.y() <= 1.0 + 1e-12);
 
     // the whole chain is part of the parameters a session saves, and reads back the same
     QString error;
@@ -670,7 +683,9 @@ class ScenesTest : public QObject {
     QCOMPARE(series.chain.stopped(), 5);
     QCOMPARE(series.run.contacts, 100L);
     QVERIFY(!series.ratios.commensurate);
-    QVERIFY(figure(*m_window, PlotKind::Flights).reference.empty());
+    QVERIFY2(!flightPlot(*m_window).legendNames().join(',').contains(QStringLiteral("bound")),
+             qPrintable(flightPlot(*m_window).legendNames().join(',')));
+    QVERIFY(flightPlot(*m_window).title().contains(QStringLiteral("no bound")));
     QVERIFY(series.trust.verdict == grazelab::core::Verdict::Unchecked);
     QVERIFY2(job.status.contains(QStringLiteral("no error estimate")), qPrintable(job.status));
     ChainView* moving = m_window->chainView();
@@ -695,8 +710,9 @@ class ScenesTest : public QObject {
       const SimUpdate* shown = m_window->displayed();
       if (shown && shown->id == m_window->controller()->latestId() && !shown->final && !shown->chains.empty()) {
         partialContacts = shown->chains.front()->run.contacts;
-        const CurveFigure& flights = figure(*m_window, PlotKind::Flights);
-        QCOMPARE(qsizetype(flights.curve.size()), qsizetype(shown->chains.front()->flights.size()));
+        const auto& partial = shown->chains.front()->flights;
+        QCOMPARE(qsizetype(flightPlot(*m_window).flights().size()),
+                 qsizetype(std::count_if(partial.begin(), partial.end(), [](const auto& f) { return f.fromStop; })));
         QVERIFY2(m_window->statusText().contains(QStringLiteral("computing")), qPrintable(m_window->statusText()));
         break;
       }
