@@ -16,7 +16,7 @@ enum class PlotKind {
   Phase,            ///< the phase portrait of the mass 'phase of' names (mass 2 of the note's chain)
   PhaseU1V1,        ///< the phase portrait of mass 1
   Poincare,         ///< the state at each contact (on H) on two coordinates ((u1, v1); N: chosen), by contact index
-  FreeFlight,       ///< free-flight time against contact index, with the line FFT = T2
+  FreeFlight,       ///< each flight from the stop over the period against contact index, the bound 1
   WorkPrecision,    ///< every method's error against its run time, with an overlay picker
   OnePeriodicData,  ///< the 1IPP impact data u1(T) against T/T2, with the GLO_lambda* value
   ImpactSpeed,      ///< the 1IPP impact speed |V(T)| against T/T2, going to 0 at T2
@@ -24,8 +24,7 @@ enum class PlotKind {
   GrazingMaximum,   ///< Lemma 2.1: max u2/d of GLO(lambda) against lambda, = 1 on [0, 4/3]
   SpreadAgainstSize,  ///< Theorem 2.2: the spread of FFT/T2 against the push size (log-log)
   FlightHistogram,  ///< Theorem 2.3: histogram of FFT/T2 over random starts, bound at 1
-  DetunedFlights,   ///< detuned contrast: the same start on the chain detuned, its flights from
-                    ///< the stop against contact index (two masses over T2, N over T)
+  DetunedFlights,   ///< the detuned scene's chain: its flights over T2, computed by the scene
   ResonantFlights,  ///< the detuned scene's resonant companion: its flights over T2, computed
                     ///< by the scene
   Chain,            ///< the chain moving, any number of masses (ChainView), the time cursor of the other views
@@ -33,6 +32,8 @@ enum class PlotKind {
   ModesAtlas,       ///< the periodic impacting families: 2 pi / T against log E, click an orbit
   Multipliers,      ///< the chosen orbit's multipliers against the unit circle
   GrazingSet,       ///< N masses: the grazing set of two modes (top against lambda) or three (a region)
+  ContrastFlights,  ///< N masses: the experiment's second run (the start on the chain detuned), its
+                    ///< flights over the first run's period T, those past 3 T on the top edge
 };
 
 /// A curve a scene computes itself (no run needed), drawn by a CurvePlot: the curve, the

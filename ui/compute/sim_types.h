@@ -33,6 +33,7 @@ using core::experiments::MapProgress;
 struct ViewWords {
   QString title;
   QString toolTip;
+  QString whyEmpty = {};  ///< said in place of the view when the job gives it nothing to draw
 };
 
 /// The time unit a scene gives its run views for one job (the 1IPP orbit's own period), over
@@ -75,10 +76,7 @@ struct SceneJob {
   QString chainSummary;
   int chainDesigns = 0;
   bool chainRefused = false;
-  /// what the scene draws of its runs of N masses (spec.chains, as far as computed): its figures
-  /// and `status`. The worker calls it with each report, so that a run is drawn as it grows.
-  std::function<void(SceneJob& job, const core::experiments::ChainRuns& runs)> presentRuns;
-  /// the N-mass scenes' run in words for the status line (made by presentRuns)
+  /// the N-mass scenes' own words for the status line, before the run's (what the start is)
   QString status;
 };
 

@@ -65,13 +65,6 @@ void SimWorker::run(const SimRequest& described, std::stop_token stop, double ch
     static_cast<core::experiments::Update&>(sent) = update;
     sent.id = asked->id;
     sent.request = asked;
-    if (!update.chains.empty() && asked->job.presentRuns) {
-      // an N-mass scene draws its runs as they grow: its figures of this report's runs, here
-      // on the worker (the GUI thread only shows them)
-      auto drawn = std::make_shared<SimRequest>(*asked);
-      drawn->job.presentRuns(drawn->job, update.chains);
-      sent.request = std::move(drawn);
-    }
     return sent;
   };
   if (!asked->job.ok || stop.stop_requested()) {

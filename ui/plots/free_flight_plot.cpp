@@ -12,31 +12,41 @@
 namespace grazelab::ui {
 
 FreeFlightPlot::FreeFlightPlot(QWidget* parent)
-    : PlotView(tr("Free-flight time at each contact"), tr("contact index"), tr("flight time / T₂"), parent) {
+    : PlotView(tr("Free-flight time at each contact"), tr("contact index"), tr("flight time / T₂"),
+               parent) {
   auto* flights = makeScatter(tr("flights"), colors::kTrace, 5);
   flights->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
   useLightMarker(flights);
   m_flights = addEntry(flights, Decimation::Scatter);
-  m_period = addEntry(makeLine(tr("bound: T₂"), colors::kImpact, 1.5, Qt::DashLine), Decimation::None);
+  m_period =
+      addEntry(makeLine(tr("bound: T₂"), colors::kImpact, 1.5, Qt::DashLine), Decimation::None);
   setAxesIndependent(true);
 }
 
 void FreeFlightPlot::nameFor(const ShownRun& run) {
   const QString unit = run.unit.name;
-  entries()[std::size_t(m_period)].series->setName(run.flightsBounded ? tr("bound: %1").arg(unit) : QString());
+  entries()[std::size_t(m_period)].series->setName(run.flightsBounded ? tr("bound: %1").arg(unit)
+                                                                      : QString());
   if (run.twoMass) {
-    setTitles(tr("Free-flight time at each contact"), tr("contact index"), tr("flight time / T₂"));
-    setToolTip(tr("Free-flight time (FFT): the time from leaving the stop to the next contact, against the index "
-                  "of that contact, in units of T₂, the slow period. Theorem 2.3: FFT ≤ T₂ (dashed: FFT / T₂ = "
-                  "1), with equality only on a grazing orbit."));
+    setTitles(tr("Free-flight time at each contact"), tr("contact index"),
+              tr("flight time / %1").arg(unit));
+    setToolTip(
+        tr("Free-flight time (FFT): the time from leaving the stop to the next contact, against "
+           "the index "
+           "of that contact, in units of T₂, the slow period. Theorem 2.3: FFT ≤ T₂ (dashed: FFT / "
+           "T₂ = "
+           "1), with equality only on a grazing orbit."));
     return;
   }
   setTitles(run.flightsBounded ? tr("Free flights from the stop / %1 (≤ 1)").arg(unit)
                                : tr("Free flights / %1 (no common period: no bound)").arg(unit),
             tr("contact index"), tr("flight / %1").arg(unit));
-  setToolTip(tr("Each free flight from the stop (after an impact, a grazing or a release), over %1, against the "
-                "index of the contact that ends it. A resonant chain's free motion repeats after its common "
-                "period T, so no flight from the stop lasts longer (Theorem 2.3 for any N); a chain with no "
+  setToolTip(tr("Each free flight from the stop (after an impact, a grazing or a release), over "
+                "%1, against the "
+                "index of the contact that ends it. A resonant chain's free motion repeats after "
+                "its common "
+                "period T, so no flight from the stop lasts longer (Theorem 2.3 for any N); a "
+                "chain with no "
                 "common period has no such bound.")
                  .arg(run.unit.inWords));
 }
@@ -56,8 +66,9 @@ void FreeFlightPlot::show(const SimUpdate& update) {
     const std::optional<ShownRun::Flight> flight = run->flightAt(m_taken);
     if (!flight) continue;  // (not from the stop)
     // 1 - shortfall / period: exact near the period, where FFT / period itself would round to 1
-    flights.emplace_back(double(flight->contact),
-                         run->unitIsPeriod ? 1.0 - flight->shortfall / period : flight->duration / period);
+    flights.emplace_back(double(flight->contact), run->unitIsPeriod
+                                                      ? 1.0 - flight->shortfall / period
+                                                      : flight->duration / period);
   }
   appendData(m_flights, flights);
   const std::vector<QPointF>& all = entries()[std::size_t(m_flights)].data;
@@ -73,7 +84,7 @@ void FreeFlightPlot::show(const SimUpdate& update) {
   includeInBounds(double(std::max<std::int64_t>(1, run->contactsAsked)), 1.0);
   setData(m_period, run->flightsBounded ? std::vector<QPointF>{QPointF(0, 1.0), QPointF(last, 1.0)}
                                         : std::vector<QPointF>{});
-  setEmptyNote(all.empty() && (update.final || update.runDone)
+  setEmptyNote(all.empty() && run->whole
                    ? tr("No free flight from the stop in this run: nothing to draw.")
                    : QString());
   m_run = std::move(run);

@@ -15,13 +15,16 @@
 namespace grazelab::ui {
 namespace {
 
-// The first sample at or after time t.
-std::size_t firstAtOrAfter(const StateSpan& samples, std::size_t end, double t) {
+// The first of the first `end` samples at or after time t (`after`: the first after it).
+std::size_t firstAtOrAfter(const StateSpan& samples, std::size_t end, double t,
+                           bool after = false) {
   std::size_t low = 0, high = end;
   while (low < high) {
     const std::size_t middle = low + (high - low) / 2;
-    if (samples.t(middle) < t) low = middle + 1;
-    else high = middle;
+    if (samples.t(middle) < t || (after && samples.t(middle) == t))
+      low = middle + 1;
+    else
+      high = middle;
   }
   return low;
 }
@@ -29,7 +32,8 @@ std::size_t firstAtOrAfter(const StateSpan& samples, std::size_t end, double t) 
 }  // namespace
 
 PhasePlot::PhasePlot(Mass mass, QWidget* parent)
-    : PlotView(mass == Mass::Chosen ? tr("Phase portrait of mass 2 (u₂, v₂)") : tr("Phase portrait of mass 1 (u₁, v₁)"),
+    : PlotView(mass == Mass::Chosen ? tr("Phase portrait of mass 2 (u₂, v₂)")
+                                    : tr("Phase portrait of mass 1 (u₁, v₁)"),
                mass == Mass::Chosen ? tr("u₂ / d") : tr("u₁ / d"),
                mass == Mass::Chosen ? tr("v₂ / (d ω₁)") : tr("v₁ / (d ω₁)"), parent),
       m_mass(mass) {
@@ -47,28 +51,37 @@ PhasePlot::PhasePlot(Mass mass, QWidget* parent)
 void PhasePlot::nameFor(const ShownRun& run, int index) {
   const QString mass = subscriptDigits(index + 1);
   const bool stopped = index == run.stopped;
-  setTitles(tr("Phase portrait of mass %1 (u%2, v%2)").arg(index + 1).arg(mass), tr("u%1 / d").arg(mass),
-            tr("v%1 / (d ω₁)").arg(mass));
-  entries()[std::size_t(m_recent)].series->setName(tr("orbit, %1 %2").arg(RunWindow::kPeriods).arg(run.unit.name));
-  entries()[std::size_t(m_stop)].series->setName(stopped ? tr("stop u%1 = d").arg(mass) : QString());
+  setTitles(tr("Phase portrait of mass %1 (u%2, v%2)").arg(index + 1).arg(mass),
+            tr("u%1 / d").arg(mass), tr("v%1 / (d ω₁)").arg(mass));
+  entries()[std::size_t(m_recent)].series->setName(
+      tr("orbit, %1 %2").arg(RunWindow::kPeriods).arg(run.unit.name));
+  entries()[std::size_t(m_stop)].series->setName(stopped ? tr("stop u%1 = d").arg(mass)
+                                                         : QString());
   entries()[std::size_t(m_contacts)].series->setName(stopped ? QString() : tr("at contacts"));
   QString tip;
   if (stopped) {
-    tip = tr("Velocity of mass %1 against its displacement, over d and d ω₁ (ω₁ the fastest frequency). At the "
-             "stop (dashed, u = d) an impact flips the velocity: the vertical jumps. Click on the stop line to "
-             "start a run there: mass %1 leaves the stop at the clicked speed, %2; edit any value to go back.")
+    tip = tr("Velocity of mass %1 against its displacement, over d and d ω₁ (ω₁ the fastest "
+             "frequency). At the "
+             "stop (dashed, u = d) an impact flips the velocity: the vertical jumps. Click on the "
+             "stop line to "
+             "start a run there: mass %1 leaves the stop at the clicked speed, %2; edit any value "
+             "to go back.")
               .arg(index + 1)
               .arg(run.twoMass ? tr("mass 1 keeps its start position, on the same energy")
                                : tr("the others as at the start shown"));
   } else if (m_mass == Mass::First && run.twoMass) {
-    tip = tr("Velocity v₁ of mass 1 against its displacement u₁, over d and d ω₁. Mass 1 never touches the "
-             "stop; it feels the impacts through the spring k₂ (the dots: its state at each contact).");
+    tip = tr(
+        "Velocity v₁ of mass 1 against its displacement u₁, over d and d ω₁. Mass 1 never touches "
+        "the "
+        "stop; it feels the impacts through the spring k₂ (the dots: its state at each contact).");
   } else {
-    tip = tr("Mass %1's velocity against its displacement, over d and d ω₁ (the panel's 'phase of' chooses the "
+    tip = tr("Mass %1's velocity against its displacement, over d and d ω₁ (the panel's 'phase of' "
+             "chooses the "
              "mass); the dots are its state at each contact of the stopped mass.")
               .arg(index + 1);
   }
-  setToolTip(tip + tr("\nA long run shows a few periods at the animation's time; W shows all of it."));
+  setToolTip(tip +
+             tr("\nA long run shows a few periods at the animation's time; W shows all of it."));
 }
 
 double PhasePlot::lastTime() const {
@@ -108,8 +121,10 @@ void PhasePlot::setTimeCursor(double t) {
     setInLegend(dot, false);
     m_cursor = dot;
   }
-  if (const std::optional<QPointF> at = pointAt(t)) m_cursor->replace({*at});
-  else m_cursor->clear();
+  if (const std::optional<QPointF> at = pointAt(t))
+    m_cursor->replace({*at});
+  else
+    m_cursor->clear();
 }
 
 void PhasePlot::show(const SimUpdate& update) {
@@ -128,8 +143,9 @@ void PhasePlot::show(const SimUpdate& update) {
   }
   // the run's samples as they are, no copy: only the new ones widen the velocity range
   const StateSpan& samples = run->samples;
-  const PointSpan path = samples.points(samples.displacementField(index), samples.velocityField(index))
-                             .scaled(1 / run->gap, 1 / run->speed);
+  const PointSpan path =
+      samples.points(samples.displacementField(index), samples.velocityField(index))
+          .scaled(1 / run->gap, 1 / run->speed);
   for (std::size_t k = m_samplesTaken; k < path.size(); ++k) {
     m_vLow = std::min(m_vLow, path[k].y());
     m_vHigh = std::max(m_vHigh, path[k].y());
@@ -147,7 +163,8 @@ void PhasePlot::show(const SimUpdate& update) {
     std::size_t next = m_eventsTaken;
     for (; next < run->eventCount() && run->eventTime(next) <= tLast; ++next) {
       if (!core::isContact(run->eventType(next))) continue;
-      marks.emplace_back(run->eventU(next, index) / run->gap, run->eventVBefore(next, index) / run->speed);
+      marks.emplace_back(run->eventU(next, index) / run->gap,
+                         run->eventVBefore(next, index) / run->speed);
     }
     m_eventsTaken = next;
     appendData(m_contacts, marks);
@@ -165,9 +182,10 @@ void PhasePlot::placeWindow() {
   if (windowed) {
     m_runWindow.follow(m_cursorTime * (1 / period), tLast);
     // the window's stretch of the same samples, in place
-    const std::size_t begin = firstAtOrAfter(m_run->samples, m_samplesTaken, m_runWindow.from() * period);
-    std::size_t end = firstAtOrAfter(m_run->samples, m_samplesTaken, m_runWindow.to() * period);
-    while (end < m_samplesTaken && m_run->samples.t(end) <= m_runWindow.to() * period) ++end;
+    const std::size_t begin =
+        firstAtOrAfter(m_run->samples, m_samplesTaken, m_runWindow.from() * period);
+    const std::size_t end =
+        firstAtOrAfter(m_run->samples, m_samplesTaken, m_runWindow.to() * period, true);
     const PointSpan whole = entries()[std::size_t(m_path)].points();
     showInPlace(m_recent, whole.subspan(begin, end - begin), m_run->owner, false);
   } else if (m_windowed) {

@@ -36,21 +36,29 @@ void PoincarePlot::nameFor(const ShownRun& run) {
   const QString x = run.coordinateName(run.sectionX), y = run.coordinateName(run.sectionY);
   setTitles(tr("Poincaré points on H: (%1, %2)").arg(x, y), run.coordinateAxis(run.sectionX),
             run.coordinateAxis(run.sectionY));
-  const QString colours = tr("Colours run from early contacts (purple) to late ones (yellow); where many fall on "
-                             "one spot, the colour shown is one of them drawn at random, so every stretch of the "
-                             "run shows in proportion.");
+  const QString colours =
+      tr("Colours run from early contacts (purple) to late ones (yellow); where many fall on "
+         "one spot, the colour shown is one of them drawn at random, so every stretch of the "
+         "run shows in proportion.");
   if (run.twoMass) {
-    setToolTip(tr("Each dot is the state (u₁, v₁) of mass 1 at a contact of mass 2 with the stop (the section "
-                  "H: u₂ = d), over d and d ω₁. %1 The square marks the reference grazing orbit's data. Click a "
-                  "point of the plane to start a run there, on the same energy (mass 2 leaving the stop); edit "
+    setToolTip(tr("Each dot is the state (u₁, v₁) of mass 1 at a contact of mass 2 with the stop "
+                  "(the section "
+                  "H: u₂ = d), over d and d ω₁. %1 The square marks the reference grazing orbit's "
+                  "data. Click a "
+                  "point of the plane to start a run there, on the same energy (mass 2 leaving the "
+                  "stop); edit "
                   "any value to go back.")
                    .arg(colours));
     return;
   }
-  setToolTip(tr("The chain's state at each contact of mass %1 with the stop (the section H: u%2 = d), on the two "
-                "coordinates chosen in the panel's 'section on' (velocities just before the contact), over d and "
-                "d ω₁. A resonant chain's points lie on few curves; a chaotic run fills a region. %3 Click to "
-                "start a run there: those two coordinates as clicked, the others as at the nearest contact, mass "
+  setToolTip(tr("The chain's state at each contact of mass %1 with the stop (the section H: u%2 = "
+                "d), on the two "
+                "coordinates chosen in the panel's 'section on' (velocities just before the "
+                "contact), over d and "
+                "d ω₁. A resonant chain's points lie on few curves; a chaotic run fills a region. "
+                "%3 Click to "
+                "start a run there: those two coordinates as clicked, the others as at the nearest "
+                "contact, mass "
                 "%1 leaving the stop at the speed that keeps the energy.")
                  .arg(run.stopped + 1)
                  .arg(subscriptDigits(run.stopped + 1), colours));
@@ -75,7 +83,7 @@ void PoincarePlot::show(const SimUpdate& update) {
   // for (so that a point keeps its bin and the bins only grow); at the end over those made
   const std::int64_t asked = run->contactsAsked;
   const std::int64_t planned =
-      update.final || update.runDone || asked <= 0 || asked > std::int64_t(1) << 40 ? count : std::max(asked, count);
+      run->whole || asked <= 0 || asked > std::int64_t(1) << 40 ? count : std::max(asked, count);
   const std::int64_t per = std::max<std::int64_t>(1, (planned + kBins - 1) / kBins);
   bool grown = m_run && run->continues(*m_run) && run->sectionX == m_run->sectionX &&
                run->sectionY == m_run->sectionY && per == m_perBin;
@@ -85,9 +93,10 @@ void PoincarePlot::show(const SimUpdate& update) {
     nameFor(*run);
   }
   // one mass: on H its place is the stop and its speed the energy's, a single point
-  setEmptyNote(run->masses() == 1 ? tr("One mass: on H its place is the stop and its speed the energy's; no "
-                                       "section to draw.")
-               : count == 0 && (update.final || update.runDone)
+  setEmptyNote(run->masses() == 1
+                   ? tr("One mass: on H its place is the stop and its speed the energy's; no "
+                        "section to draw.")
+               : count == 0 && run->whole
                    ? tr("No contact with the stop in this run: no point on H to draw.")
                    : QString());
   // each bin is a stretch of contacts: the run's points as they are, no copy (the last bin
@@ -95,8 +104,10 @@ void PoincarePlot::show(const SimUpdate& update) {
   const auto& entryList = entries();
   for (int bin = 0; bin < kBins; ++bin) {
     const std::int64_t from = std::min<std::int64_t>(bin * per, count);
-    const std::int64_t to = bin == kBins - 1 ? count : std::min<std::int64_t>((bin + 1) * per, count);
-    showInPlace(m_bins[bin], points.subspan(std::size_t(from), std::size_t(to - from)), run->owner, grown);
+    const std::int64_t to =
+        bin == kBins - 1 ? count : std::min<std::int64_t>((bin + 1) * per, count);
+    showInPlace(m_bins[bin], points.subspan(std::size_t(from), std::size_t(to - from)), run->owner,
+                grown);
     const std::int64_t first = bin * per;
     const std::int64_t last = std::min(planned, first + per) - 1;
     const bool shown = to > from;

@@ -8,6 +8,7 @@
 
 #include "ui/plots/accuracy_view.h"
 #include "ui/plots/chain_view.h"
+#include "ui/plots/contrast_flights_plot.h"
 #include "ui/plots/curve_plot.h"
 #include "ui/plots/free_flight_plot.h"
 #include "ui/plots/landscape_view.h"
@@ -21,8 +22,7 @@ bool RunProgress::startsOver(const SimUpdate& update) {
   const core::Result& result = *update.result;
   const bool grown = runId == update.id && attempt == update.attempt &&
                      events <= result.events.size() &&
-                     poincare <= result.poincare.size() &&
-                     freeFlights <= result.freeFlights.size() && samples <= result.samples.size();
+                     samples <= result.samples.size();
   if (grown) return false;
   *this = RunProgress{};
   runId = update.id;
@@ -47,6 +47,7 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::ResonantFlights:
     case PlotKind::GrazingSet: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);
+    case PlotKind::ContrastFlights: return new ContrastFlightsPlot(parent);
     case PlotKind::WorkPrecision: return new AccuracyView(parent);
     case PlotKind::Landscape: return new LandscapeView(parent);
     case PlotKind::ModesAtlas: return new ModesPlot(parent);

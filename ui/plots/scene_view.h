@@ -71,8 +71,6 @@ struct RunProgress {
   std::uint64_t runId = 0;  ///< 0: nothing taken yet
   int attempt = 0;          ///< SimUpdate::attempt of the run taken
   std::size_t events = 0;
-  std::size_t poincare = 0;
-  std::size_t freeFlights = 0;
   std::size_t samples = 0;
   /// True, with every count back at zero, when `update` is not the run taken so far grown
   /// (another request, or fewer items than taken); the view then draws it from the start.

@@ -25,20 +25,24 @@ double ShownRun::drawnUntil() const {
 }
 
 PointSpan ShownRun::sectionPoints() const {
-  const double x = sectionX < masses() ? 1 / gap : 1 / speed, y = sectionY < masses() ? 1 / gap : 1 / speed;
+  const double x = sectionX < masses() ? 1 / gap : 1 / speed,
+               y = sectionY < masses() ? 1 / gap : 1 / speed;
   if (twoMassSection) return grazelab::ui::sectionPoints(*twoMassSection).scaled(x, y);  // (u1, v1)
   const auto field = [this](int c) {
-    return c < masses() ? chainSection.displacementField(c) : chainSection.velocityField(c - masses());
+    return c < masses() ? chainSection.displacementField(c)
+                        : chainSection.velocityField(c - masses());
   };
   return chainSection.points(field(sectionX), field(sectionY)).scaled(x, y);
 }
 
 QString ShownRun::coordinateName(int c) const {
-  return c < masses() ? tr("u%1").arg(subscriptDigits(c + 1)) : tr("v%1").arg(subscriptDigits(c - masses() + 1));
+  return c < masses() ? tr("u%1").arg(subscriptDigits(c + 1))
+                      : tr("v%1").arg(subscriptDigits(c - masses() + 1));
 }
 
 QString ShownRun::coordinateAxis(int c) const {
-  return c < masses() ? tr("%1 / d").arg(coordinateName(c)) : tr("%1 / (d ω₁)").arg(coordinateName(c));
+  return c < masses() ? tr("%1 / d").arg(coordinateName(c))
+                      : tr("%1 / (d ω₁)").arg(coordinateName(c));
 }
 
 std::size_t ShownRun::flightCount() const {
@@ -82,16 +86,18 @@ std::optional<ShownRun> shownRun(const SimUpdate& update) {
   ShownRun run;
   run.id = update.id;
   run.attempt = update.attempt;
+  run.whole = update.final || update.runDone || update.chains.size() > 1;
   if (!update.chains.empty()) {
     const std::shared_ptr<const core::experiments::ChainSeries>& series = update.chains.front();
     run.owner = series;
     run.samples = StateSpan(series->grid);
     run.stopped = series->chain.stopped() - 1;
     run.gap = series->chain.gap;
-    run.unit = series->period > 0
-                   ? TimeUnit{series->period, tr("T"), tr("the chain's common period T")}
-                   : TimeUnit{2 * std::numbers::pi / series->modes.omega.minCoeff(), tr("slowest period"),
-                              tr("its slowest period (it has no common one)")};
+    run.unit =
+        series->period > 0
+            ? TimeUnit{series->period, tr("T"), tr("the chain's common period T")}
+            : TimeUnit{2 * std::numbers::pi / series->modes.omega.minCoeff(), tr("slowest period"),
+                       tr("its slowest period (it has no common one)")};
     run.speed = run.gap * series->modes.omega.maxCoeff();
     run.start = series->start;
     run.tFinal = series->run.tFinal;
@@ -127,7 +133,8 @@ std::optional<ShownRun> shownRun(const SimUpdate& update) {
   } else {
     return std::nullopt;
   }
-  run.chosen = job.chosenMass >= 1 && job.chosenMass <= run.masses() ? job.chosenMass - 1 : run.stopped;
+  run.chosen =
+      job.chosenMass >= 1 && job.chosenMass <= run.masses() ? job.chosenMass - 1 : run.stopped;
   if (job.timeUnit && job.timeUnit->length > 0) {
     run.unit = *job.timeUnit;
     run.unitIsPeriod = false;

@@ -31,6 +31,8 @@ struct ShownRun {
   double speed = 1;        ///< the velocities' unit: d times the fastest frequency
   core::ChainState start;  ///< where it started
   double tFinal = 0;       ///< where the run is (so far)
+  /// the run is whole (its last report, or a later run of the same experiment is coming in)
+  bool whole = false;
   /// the run as computed: a raised run (attempt) or another request starts the views over
   std::uint64_t id = 0;
   int attempt = 0;

@@ -7,10 +7,10 @@
 #include <QScatterSeries>
 #include <QValueAxis>
 
-#include "ui/widgets/param_specs.h"
 #include "ui/compute/time_text.h"
-#include "ui/plots/run_points.h"
 #include "ui/plots/plot_style.h"
+#include "ui/plots/run_points.h"
+#include "ui/widgets/param_specs.h"
 
 namespace grazelab::ui {
 
@@ -31,24 +31,33 @@ void TracePlot::nameFor(const ShownRun& run, const ViewWords* words) {
   const QString trace = tr("u%1 / d").arg(stopped);
   entries()[std::size_t(m_trace)].series->setName(trace);
   const bool other = run.chosen != run.stopped;
-  entries()[std::size_t(m_other)].series->setName(other ? tr("u%1 / d").arg(subscriptDigits(run.chosen + 1)) : QString());
-  const QString title = other ? tr("Mass %1 (on the stop's side) and mass %2: u / d").arg(run.stopped + 1).arg(run.chosen + 1)
-                      : run.twoMass ? tr("Displacement of mass 2: u₂ / d")
-                                    : tr("Mass %1 (on the stop's side): %2").arg(run.stopped + 1).arg(trace);
+  entries()[std::size_t(m_other)].series->setName(
+      other ? tr("u%1 / d").arg(subscriptDigits(run.chosen + 1)) : QString());
+  const QString title =
+      other ? tr("Mass %1 (on the stop's side) and mass %2: u / d")
+                  .arg(run.stopped + 1)
+                  .arg(run.chosen + 1)
+      : run.twoMass ? tr("Displacement of mass 2: u₂ / d")
+                    : tr("Mass %1 (on the stop's side): %2").arg(run.stopped + 1).arg(trace);
   // the scene's words for this run, over the view's own (the 1IPP orbit's period)
   setTitles(words ? words->title : title, tr("t / %1").arg(run.unit.name), tr("u / d"));
   if (words) {
     setToolTip(words->toolTip);
     return;
   }
-  setToolTip(tr("The displacement of mass %1, which meets the stop, over the gap d, against time over %2; the "
-                "dashed line is the stop (u = d). Dots mark the contacts (impacts: vermillion circles; grazing "
-                "touches and sticks: orange triangles).%3\n"
-                "A long run shows a few periods at the animation's time; W shows all of it.\n"
-                "Drag to zoom, Shift+drag or middle button to pan, wheel to zoom, R to reset.")
-                 .arg(run.stopped + 1)
-                 .arg(run.unit.inWords)
-                 .arg(other ? tr(" The other line is mass %1, the one 'phase of' names.").arg(run.chosen + 1) : QString()));
+  setToolTip(
+      tr("The displacement of mass %1, which meets the stop, over the gap d, against time over %2; "
+         "the "
+         "dashed line is the stop (u = d). Dots mark the contacts (impacts: vermillion circles; "
+         "grazing "
+         "touches and sticks: orange triangles).%3\n"
+         "A long run shows a few periods at the animation's time; W shows all of it.\n"
+         "Drag to zoom, Shift+drag or middle button to pan, wheel to zoom, R to reset.")
+          .arg(run.stopped + 1)
+          .arg(run.unit.inWords)
+          .arg(other
+                   ? tr(" The other line is mass %1, the one 'phase of' names.").arg(run.chosen + 1)
+                   : QString()));
 }
 
 void TracePlot::show(const SimUpdate& update) {
@@ -69,11 +78,13 @@ void TracePlot::show(const SimUpdate& update) {
   const double toTime = 1 / run->unit.length, toLength = 1 / run->gap;
   const StateSpan& samples = run->samples;
   showInPlace(m_trace,
-              samples.points(StateSpan::timeField(), samples.displacementField(run->stopped)).scaled(toTime, toLength),
+              samples.points(StateSpan::timeField(), samples.displacementField(run->stopped))
+                  .scaled(toTime, toLength),
               run->owner, grown);
   if (run->chosen != run->stopped) {
     showInPlace(m_other,
-                samples.points(StateSpan::timeField(), samples.displacementField(run->chosen)).scaled(toTime, toLength),
+                samples.points(StateSpan::timeField(), samples.displacementField(run->chosen))
+                    .scaled(toTime, toLength),
                 run->owner, grown);
   } else {
     setData(m_other, {});
@@ -85,8 +96,10 @@ void TracePlot::show(const SimUpdate& update) {
   std::size_t next = m_eventsTaken;
   for (; next < run->eventCount() && run->eventTime(next) <= tLast; ++next) {
     const core::EventType type = run->eventType(next);
-    if (type == core::EventType::Impact) impacts.emplace_back(run->eventTime(next) * toTime, 1.0);
-    else if (core::isContact(type)) others.emplace_back(run->eventTime(next) * toTime, 1.0);
+    if (type == core::EventType::Impact)
+      impacts.emplace_back(run->eventTime(next) * toTime, 1.0);
+    else if (core::isContact(type))
+      others.emplace_back(run->eventTime(next) * toTime, 1.0);
   }
   m_eventsTaken = next;
   appendData(m_impacts, impacts);
@@ -159,7 +172,8 @@ void TracePlot::setOverlay(std::shared_ptr<const core::Result> run, const QStrin
   m_overlayRun = std::move(run);
   if (m_overlayRun && m_overlayTrace < 0) {
     // created on first use: scenes without an overlay keep their legend as it was
-    m_overlayTrace = addEntry(makeLine(name, colors::kOverlay, 1.5, Qt::DashLine), Decimation::Trace);
+    m_overlayTrace =
+        addEntry(makeLine(name, colors::kOverlay, 1.5, Qt::DashLine), Decimation::Trace);
     auto* crosses = makeScatter(tr("its contacts"), colors::kOverlay, 9);
     crosses->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
     useLightMarker(crosses);

@@ -125,9 +125,9 @@ Scene::Spec chainOnePeriodicScene() {
     double distance = 0;
     if (limit.problem == core::GloStartProblem::None)
       distance = (orbit.postImpact.u - limit.state.u).norm() / d;
-    const QString orbitInWords =
+    job.status =
         tr("1IPP orbit of T = %1 T*: impact speed V = %2, energy %3; its data are %4 d from the "
-           "grazing limit's · ")
+           "grazing limit's")
             .arg(number(params.chainPeriodFraction, 6), number(orbit.V, 6), number(orbit.energy, 6),
                  number(distance, 3));
     // the trace over the orbit's own period: it meets the stop at t = T, 2T, 3T
@@ -137,11 +137,6 @@ Scene::Spec chainOnePeriodicScene() {
         tr("The 1IPP orbit of T = %1 T*: u%2 / d").arg(number(params.chainPeriodFraction, 6), subscriptDigits(stopped)),
         tr("The stopped mass over three periods of the orbit, from right after an impact: it meets "
            "the stop once a period, at t = T, 2T, 3T (dots: the exact run's contacts).")};
-    job.presentRuns = [orbitInWords](
-                          SceneJob& shown, const core::experiments::ChainRuns& runs) {
-      const core::experiments::ChainSeries& series = *runs.front();
-      shown.status = orbitInWords + chainStatusOf(series);
-    };
     job.ok = true;
     return job;
   };

@@ -56,28 +56,6 @@ QString modesTable(const core::ChainModes& modes, const core::SpectrumRatios& ra
   return html + QStringLiteral("</table>");
 }
 
-QString stopInWords(core::StopReason stop) {
-  switch (stop) {
-    case core::StopReason::ContactLimit:
-      return tr("the contacts asked for");
-    case core::StopReason::TimeLimit:
-      return tr("its end time");
-    case core::StopReason::NoFurtherContact:
-      return tr("no further contact (the flight stays below the stop)");
-    case core::StopReason::Undecided:
-      return tr(
-          "undecided: a contact within the rounding of binary128 too (a top of the stopped mass "
-          "at the stop, or at rest there with no force either way)");
-    case core::StopReason::SearchBudget:
-      return tr("the contact search's budget: no contact decided within 1000 of the slowest "
-                "periods (not commensurate: no period bounds the next one)");
-    case core::StopReason::Cancelled:
-      return tr("cancelled");
-    case core::StopReason::InvalidInput: break;
-  }
-  return {};
-}
-
 }  // namespace
 
 ChainChoice chooseChain(const MassChainParams& given, double gap, std::stop_token stop) {
@@ -170,28 +148,6 @@ QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& give
   }
   if (!more.isEmpty()) text += QLatin1Char(' ') + more;
   return text + modesTable(modes, ratios, chain.stopped());
-}
-
-QString chainStatusOf(const core::experiments::ChainSeries& series) {
-  const core::ChainRun& run = series.run;
-  const auto counted = [](long n, const QString& one, const QString& many) {
-    return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
-  };
-  const double drift =
-      std::abs(run.energyFinal - run.energyInitial) / std::max(std::abs(run.energyInitial), 1e-300);
-  if (run.contacts == 0 && run.stop == core::StopReason::SearchBudget) {
-    // ("0 contacts until t = 0, ended by the search's budget" read as a run that never began)
-    return tr("%1: no contact of the stopped mass in its first 1000 slowest periods (a chain with no "
-              "common period: nothing bounds when it comes back; a search goes no further)")
-        .arg(counted(series.chain.size(), tr("mass"), tr("masses")));
-  }
-  return tr("%1: %2 (%3, %4, %5) until t = %6, ended by %7 · energy drift %8")
-      .arg(counted(series.chain.size(), tr("mass"), tr("masses")))
-      .arg(counted(run.contacts, tr("contact"), tr("contacts")),
-           counted(run.impacts, tr("impact"), tr("impacts")),
-           counted(run.grazings, tr("grazing"), tr("grazings")),
-           counted(run.sticks, tr("stick"), tr("sticks")))
-      .arg(number(run.tFinal, 6), stopInWords(run.stop), QString::number(drift, 'e', 1));
 }
 
 SceneJob refusedChainJob(const QString& why) {

@@ -35,9 +35,6 @@ QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& give
                        const core::ChainModes& modes, const core::SpectrumRatios& ratios,
                        const QString& more = {});
 
-/// The run in words for the status line: contacts by kind, its end and why, energy drift.
-QString chainStatusOf(const core::experiments::ChainSeries& series);
-
 /// A job refused with `why`, said in the status line and under the chain editor.
 SceneJob refusedChainJob(const QString& why);
 /// A job refused for its start (weights, a period) on a chain that is fine: the panel keeps the

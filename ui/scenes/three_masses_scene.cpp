@@ -27,94 +27,6 @@ QString tr(const char* text) {
 
 constexpr int kGridPoints = 1500;  // over the window of four slowest periods
 
-// The detuned contrast's flights from the stop over the resonant chain's period T, against the
-// index (0-based) of the contact that ends each, with the resonant chain's bound 1.
-CurveFigure contrastFigure(const QString& title, const core::experiments::ChainSeries& series, double T) {
-  CurveFigure figure;
-  figure.title = title;
-  figure.xTitle = tr("contact index");
-  figure.yTitle = tr("flight / T");
-  figure.toolTip =
-      tr("The same start on the chain with k₂ 5 % stiffer: each free flight from the stop, over the "
-         "resonant chain's period T. The resonant chain's free motion repeats after T, so none of its "
-         "flights lasts longer (Theorem 2.3 for any N); detuned, no period bounds them.");
-  figure.curveName = tr("flights");
-  figure.dots = true;
-  figure.whyEmpty = tr("No contact with the stop in this run: no flight from it to draw.");
-  long last = 1;
-  for (const core::experiments::ChainFlight& flight : series.flights) {
-    if (!flight.fromStop) continue;
-    figure.curve.emplace_back(double(flight.contact - 1), flight.duration / T);
-    last = std::max(last, flight.contact - 1);
-  }
-  figure.referenceName = tr("T");
-  figure.reference = {QPointF(0, 1), QPointF(double(last), 1)};
-  return figure;
-}
-
-// The scene's figures and status of its runs so far: the run shown, then (when asked) the same
-// start on the detuned chain.
-void presentThreeMasses(SceneJob& job, const core::experiments::ChainRuns& runs, bool contrast,
-                        core::TrustMode trust) {
-  const core::experiments::ChainSeries& series = *runs.front();
-  const core::MassChain& chain = series.chain;
-  const bool resonant = series.period > 0;
-
-  // the contrast: the same start on the chain with k2 5 % stiffer (no common period)
-  if (contrast && runs.size() > 1) {
-    const core::experiments::ChainSeries& detuned = *runs[1];
-    CurveFigure figure = contrastFigure(tr("k₂ 5 % off: flights / the resonant T"), detuned, series.period);
-    // its flights past T last 10 to 200 T: the axis stops at 3 T, and they are drawn on its top
-    // edge as their own dots, counted in the title (1 % off hid its two such flights above the
-    // axis, and a class saw every flight below T)
-    std::vector<QPointF> below;
-    for (const QPointF& point : figure.curve) {
-      if (point.y() > 3) {
-        figure.markers.emplace_back(point.x(), 3.0);
-      } else {
-        below.push_back(point);
-      }
-    }
-    if (!figure.markers.empty()) {
-      figure.curve = std::move(below);
-      figure.title = tr("k₂ 5 % off: flights / T (%1 past 3 T, on the top edge)").arg(figure.markers.size());
-      figure.markerName = tr("past 3 T");
-      double last = 1;
-      for (const QPointF& point : figure.curve) last = std::max(last, point.x());
-      for (const QPointF& point : figure.markers) last = std::max(last, point.x());
-      figure.xMin = 0;
-      figure.xMax = last * 1.02;
-      figure.yMin = 0;
-      figure.yMax = 3.1;
-    }
-    if (detuned.run.stop == core::StopReason::SearchBudget) {
-      // its last flight never came back within the search's 1000 slowest periods: say so,
-      // rather than let the chart end as if the run had
-      const std::size_t flights = figure.curve.size() + figure.markers.size();
-      figure.title = flights == 0   ? tr("k₂ 5 % off: no flight from the stop ends in 1000 slow periods")
-                     : flights == 1 ? tr("k₂ 5 % off: 1 flight, then none in 1000 slow periods")
-                                    : tr("k₂ 5 % off: %1 flights, then none in 1000 slow periods").arg(flights);
-    }
-    job.figures[PlotKind::DetunedFlights] = figure;
-  } else if (contrast) {
-    CurveFigure none;
-    none.title = chain.size() < 2 ? tr("Detuned contrast: needs two masses or more")
-                 : resonant       ? tr("k₂ 5 % off: computing…")
-                                  : tr("Detuned contrast: only for a resonant chain");
-    if (chain.size() < 2) none.whyEmpty = tr("The contrast detunes k₂, the spring between masses 1 and 2: a chain of one mass has none.");
-    else if (!resonant) none.whyEmpty = tr("The contrast detunes a resonant chain: this one has no common period to lose.");
-    none.xTitle = tr("contact index");
-    none.yTitle = tr("flight / T");
-    job.figures[PlotKind::DetunedFlights] = none;
-  }
-  job.status = chainStatusOf(series);
-  if (trust == core::TrustMode::Off) {
-    job.status += tr(
-        " · no error estimate here (its shadow run in long double would take seconds on a "
-        "chain with no common period: grazelab-cli simulate --masses … --trust auto gives it)");
-  }
-}
-
 }  // namespace
 
 Scene::Spec threeMassesScene() {
@@ -139,7 +51,7 @@ Scene::Spec threeMassesScene() {
   scene.massChain = true;
   scene.parameters = {ParamKey::Gap, ParamKey::Perturbation, ParamKey::Horizon};
   scene.plots = {PlotKind::Trace, PlotKind::Chain, PlotKind::FreeFlight,
-                 PlotKind::Phase, PlotKind::Poincare, PlotKind::DetunedFlights};
+                 PlotKind::Phase, PlotKind::Poincare, PlotKind::ContrastFlights};
   scene.build = [](const Scene& self, const Params& params, const DerivedModel&, std::stop_token stop) {
     const MassChainParams& given = params.massChain;
     const ChainChoice choice = chooseChain(given, params.gap, stop);
@@ -155,7 +67,7 @@ Scene::Spec threeMassesScene() {
     const core::ChainModes modes = core::chainModes(chain);
     const core::SpectrumRatios ratios = core::detectRatios(modes.omega);
     const double slowest = 2 * std::numbers::pi / modes.omega.minCoeff();
-    const bool contrast = self.plots().contains(PlotKind::DetunedFlights);
+    const bool contrast = self.plots().contains(PlotKind::ContrastFlights);
     // (the error estimate of a chain with no common period shadows long searches in long
     // double: its own scene asks for none, and says so). The trace, the phase portrait and the
     // animation span four slowest periods: six drew twenty fast swings into a plot a third of a
@@ -177,10 +89,18 @@ Scene::Spec threeMassesScene() {
     job.sectionOn = {given.sectionXResolved(), given.sectionYResolved()};
     job.chainSummary = chainSummaryOf(chain, given, choice.designs, modes, ratios);
     job.chainDesigns = choice.designs;
-    job.presentRuns = [contrast, trust = run.trust](
-                          SceneJob& shown, const core::experiments::ChainRuns& runs) {
-      presentThreeMasses(shown, runs, contrast, trust);
-    };
+    if (contrast) {
+      job.viewWords[PlotKind::ContrastFlights] = {
+          chain.size() < 2 ? tr("Detuned contrast: needs two masses or more")
+          : ratios.commensurate ? tr("k₂ 5 % off")
+                                : tr("Detuned contrast: only for a resonant chain"),
+          tr("The same start on the chain with k₂ 5 % stiffer: each free flight from the stop, over the "
+             "resonant chain's period T. The resonant chain's free motion repeats after T, so none of its "
+             "flights lasts longer (Theorem 2.3 for any N); detuned, no period bounds them."),
+          chain.size() < 2 ? tr("The contrast detunes k₂, the spring between masses 1 and 2: a chain of one "
+                                "mass has none.")
+                           : tr("The contrast detunes a resonant chain: this one has no common period to lose.")};
+    }
     job.ok = true;
     return job;
   };

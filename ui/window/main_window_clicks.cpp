@@ -15,6 +15,7 @@
 #include "ui/window/main_window.h"
 #include "ui/widgets/parameter_panel.h"
 #include "ui/plots/landscape_view.h"
+#include "ui/plots/shown_run.h"
 #include "ui/window/status_line.h"
 
 namespace grazelab::ui {
@@ -94,44 +95,45 @@ bool MainWindow::startChainFromSection(QPointF value) {
   if (chains.empty()) return false;
   const core::MassChain& chain = chains.front().chain;
   const core::ChainState& shown = chains.front().start;
-  const MassChainParams& given = m_displayed->request->params.massChain;
   const int n = chain.size();
   if (n == 1) {
     m_status->setMessage(tr("A chain of one mass has no section to start from: on H its place is the "
                             "stop and its speed is the energy's. Click the stop line of its portrait."));
     return false;
   }
-  // the plot's units: displacements over d, velocities over d w1 (the fastest frequency)
-  const double speed = chain.gap * core::chainModes(chain).omega.maxCoeff();
+  // the plot's pair and units (displacements over d, velocities over d w1, the fastest
+  // frequency), as the plot reads them
+  const std::optional<ShownRun> run = shownRun(*m_displayed);
+  if (!run) return false;
+  const double speed = run->speed;
   const auto unscaled = [&](int c, double plotted) { return plotted * (c < n ? chain.gap : speed); };
-  const int a = given.sectionXResolved() - 1, b = given.sectionYResolved() - 1;
+  const int a = run->sectionX, b = run->sectionY;
   const double level = core::chainEnergy(chain, shown);
   // the other coordinates as at the run's contact drawn nearest the click (on the energy level
   // and on H, as the click is): the start's own, far from the section's points, held more than
   // the energy almost everywhere (eight masses: every click was refused)
   core::ChainState base = shown;
-  if (!m_displayed->chains.empty()) {
-    const auto coordinate = [&](const core::ChainEvent& event, int c) {
-      return c < n ? event.u[c] / chain.gap : event.vBefore[c - n] / speed;
-    };
-    std::vector<const core::ChainEvent*> contacts;
-    for (const core::ChainEvent& event : m_displayed->chains.front()->run.events) {
-      if (core::isContact(event.type)) contacts.push_back(&event);
-    }
+  const PointSpan points = run->sectionPoints();
+  if (!points.empty()) {
     // distances in the plot's proportions: each coordinate over the points' spread
     double spreadX = 1e-300, spreadY = 1e-300;
-    for (const core::ChainEvent* event : contacts) {
-      spreadX = std::max(spreadX, std::abs(coordinate(*event, a) - coordinate(*contacts.front(), a)));
-      spreadY = std::max(spreadY, std::abs(coordinate(*event, b) - coordinate(*contacts.front(), b)));
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      spreadX = std::max(spreadX, std::abs(points[k].x() - points[0].x()));
+      spreadY = std::max(spreadY, std::abs(points[k].y() - points[0].y()));
     }
     double nearest = std::numeric_limits<double>::infinity();
-    for (const core::ChainEvent* event : contacts) {
-      const double distance = std::hypot((coordinate(*event, a) - value.x()) / spreadX,
-                                         (coordinate(*event, b) - value.y()) / spreadY);
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const double distance = std::hypot((points[k].x() - value.x()) / spreadX, (points[k].y() - value.y()) / spreadY);
       if (distance < nearest) {
         nearest = distance;
-        base = core::ChainState{event->u, event->vBefore};
+        at = k;
       }
+    }
+    const core::experiments::StateRecords& section = m_displayed->chains.front()->section;
+    for (int i = 0; i < n; ++i) {
+      base.u[i] = section.u(at, i);
+      base.v[i] = section.v(at, i);
     }
   }
   const core::ChainSectionStart start = core::chainSectionStateAtEnergy(
@@ -159,8 +161,8 @@ bool MainWindow::startChainFromStopLine(QPointF value, double tolerance) {
   const auto& chains = m_displayed->request->job.spec.chains;
   if (chains.empty()) return false;
   const core::MassChain& chain = chains.front().chain;
-  const MassChainParams& given = m_displayed->request->params.massChain;
-  if (given.shown() != chain.stopped()) {
+  const std::optional<ShownRun> run = shownRun(*m_displayed);
+  if (!run || run->chosen != run->stopped) {
     m_status->setMessage(tr("Starts are clicked on the stop line of mass %1's portrait: set 'phase "
                             "of' to %1, or click the Poincaré points.")
                              .arg(chain.stopped()));
@@ -173,8 +175,7 @@ bool MainWindow::startChainFromStopLine(QPointF value, double tolerance) {
                              .arg(chain.stopped()));
     return false;
   }
-  const double speed = chain.gap * core::chainModes(chain).omega.maxCoeff();
-  startFromClick(core::chainStopLineState(chain, chains.front().start, value.y() * speed));
+  startFromClick(core::chainStopLineState(chain, chains.front().start, value.y() * run->speed));
   return true;
 }
 

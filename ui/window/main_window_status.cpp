@@ -7,6 +7,7 @@
 #include <QPushButton>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/solver/trust.h"
 #include "ui/window/main_window.h"
@@ -19,6 +20,53 @@ namespace grazelab::ui {
 namespace {
 
 QString scientific(double value) { return QString::number(value, 'g', 3); }
+
+QString number(double value, int digits = 4) { return QString::number(value, 'g', digits); }
+
+QString stopInWords(core::StopReason stop) {
+  switch (stop) {
+    case core::StopReason::ContactLimit:
+      return MainWindow::tr("the contacts asked for");
+    case core::StopReason::TimeLimit:
+      return MainWindow::tr("its end time");
+    case core::StopReason::NoFurtherContact:
+      return MainWindow::tr("no further contact (the flight stays below the stop)");
+    case core::StopReason::Undecided:
+      return MainWindow::tr(
+          "undecided: a contact within the rounding of binary128 too (a top of the stopped mass "
+          "at the stop, or at rest there with no force either way)");
+    case core::StopReason::SearchBudget:
+      return MainWindow::tr("the contact search's budget: no contact decided within 1000 of the slowest "
+                            "periods (not commensurate: no period bounds the next one)");
+    case core::StopReason::Cancelled:
+      return MainWindow::tr("cancelled");
+    case core::StopReason::InvalidInput: break;
+  }
+  return {};
+}
+
+// A run of N masses in words for the status line: contacts by kind, its end and why, energy drift.
+QString chainStatusOf(const core::experiments::ChainSeries& series) {
+  const core::ChainRun& run = series.run;
+  const auto counted = [](long n, const QString& one, const QString& many) {
+    return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
+  };
+  const double drift =
+      std::abs(run.energyFinal - run.energyInitial) / std::max(std::abs(run.energyInitial), 1e-300);
+  if (run.contacts == 0 && run.stop == core::StopReason::SearchBudget) {
+    // ("0 contacts until t = 0, ended by the search's budget" read as a run that never began)
+    return MainWindow::tr("%1: no contact of the stopped mass in its first 1000 slowest periods (a chain with "
+                          "no common period: nothing bounds when it comes back; a search goes no further)")
+        .arg(counted(series.chain.size(), MainWindow::tr("mass"), MainWindow::tr("masses")));
+  }
+  return MainWindow::tr("%1: %2 (%3, %4, %5) until t = %6, ended by %7 · energy drift %8")
+      .arg(counted(series.chain.size(), MainWindow::tr("mass"), MainWindow::tr("masses")))
+      .arg(counted(run.contacts, MainWindow::tr("contact"), MainWindow::tr("contacts")),
+           counted(run.impacts, MainWindow::tr("impact"), MainWindow::tr("impacts")),
+           counted(run.grazings, MainWindow::tr("grazing"), MainWindow::tr("grazings")),
+           counted(run.sticks, MainWindow::tr("stick"), MainWindow::tr("sticks")))
+      .arg(number(run.tFinal, 6), stopInWords(run.stop), QString::number(drift, 'e', 1));
+}
 
 }  // namespace
 
@@ -38,11 +86,18 @@ void MainWindow::showProblem(const QString& message) {
 
 void MainWindow::showStatus(const SimUpdate& update) {
   if (scene().massChain()) {
-    // a chain of N masses: its own runs, told by its scene (no two-mass run is made)
+    // a chain of N masses: the scene's words, then its first run's (no two-mass run is made);
+    // the linear motion alone (a free series) has no run to tell
     const SceneJob& job = update.request->job;
     QString text = job.ok ? job.status : tr("Not computed: %1").arg(job.message);
-    if (job.ok && !update.chains.empty()) {
+    const bool free = job.spec.chains.empty() || job.spec.chains.front().free;
+    if (job.ok && !update.chains.empty() && !free) {
       const core::experiments::ChainSeries& shown = *update.chains.front();
+      text += (text.isEmpty() ? QString() : QStringLiteral(" · ")) + chainStatusOf(shown);
+      if (job.spec.chains.front().trust == core::TrustMode::Off) {
+        text += tr(" · no error estimate here (its shadow run in long double would take seconds on a "
+                   "chain with no common period: grazelab-cli simulate --masses … --trust auto gives it)");
+      }
       if (shown.precision != core::Precision::Double) {
         text += tr(" · run in %1 (double could not decide a contact)")
                     .arg(shown.precision == core::Precision::Long ? tr("long double") : tr("binary128"));

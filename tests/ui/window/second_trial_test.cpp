@@ -26,6 +26,7 @@
 
 #include "tests/ui/explorer_test_support.h"
 #include "ui/compute/scene.h"
+#include "ui/plots/contrast_flights_plot.h"
 #include "ui/plots/curve_plot.h"
 #include "ui/plots/landscape_view.h"
 #include "ui/plots/phase_plot.h"
@@ -332,14 +333,19 @@ class SecondTrialTest : public QObject {
     m_window->selectScene(sceneIndex(*m_window, QStringLiteral("three-masses")));
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     QVERIFY(m_window->scene().description().contains(QStringLiteral("past T")));
-    const CurveFigure& detuned = m_window->displayed()->request->job.figures.at(PlotKind::DetunedFlights);
-    std::vector<QPointF> points = detuned.curve;
-    points.insert(points.end(), detuned.markers.begin(), detuned.markers.end());
-    const double top = detuned.yMax > detuned.yMin ? detuned.yMax : 1e300;
+    auto* detuned = m_window->findChild<ContrastFlightsPlot*>();
+    QVERIFY(detuned);
+    detuned->refreshNow();
+    std::vector<QPointF> points = detuned->below().toVector();
+    const std::vector<QPointF> past = detuned->past().toVector();
+    points.insert(points.end(), past.begin(), past.end());
+    const double top = qobject_cast<QValueAxis*>(detuned->chart()->axes(Qt::Vertical).first())->max();
     const auto shownPastT = std::count_if(points.begin(), points.end(),
                                           [&](const QPointF& p) { return p.y() > 1.0 && p.y() <= top; });
     QVERIFY2(shownPastT >= 5, qPrintable(QStringLiteral("%1 flights past T on screen").arg(shownPastT)));
-    QVERIFY2(detuned.title.contains(QStringLiteral("past 3 T")), qPrintable(detuned.title));
+    QVERIFY2(!past.empty(), "no flight past 3 T");
+    for (const QPointF& point : past) QCOMPARE(point.y(), 3.0);  // on the top edge
+    QVERIFY2(detuned->title().contains(QStringLiteral("past 3 T")), qPrintable(detuned->title()));
   }
 
   // F1 says a click on the Poincaré points or on the stop line starts a run there, and W shows
@@ -550,9 +556,11 @@ class SecondTrialTest : public QObject {
     params.massChain = params.massChain.resized(1);
     m_window->setParams(params);
     QVERIFY(waitForLatestFinal(*m_window, 60000));
-    const Figures& figures = m_window->displayed()->request->job.figures;
-    QVERIFY2(!figures.at(PlotKind::DetunedFlights).title.contains(QStringLiteral("computing")),
-             qPrintable(figures.at(PlotKind::DetunedFlights).title));
+    auto* contrast = m_window->findChild<ContrastFlightsPlot*>();
+    QVERIFY(contrast);
+    QVERIFY2(!contrast->title().contains(QStringLiteral("computing")), qPrintable(contrast->title()));
+    const auto* why = contrast->findChild<QLabel*>(QStringLiteral("emptyNote"));
+    QVERIFY(why && why->text().contains(QStringLiteral("one mass")));
     QVERIFY(shownSection() && shownSection()->points().empty());
     const auto* note = shownSection()->findChild<QLabel*>(QStringLiteral("emptyNote"));
     QVERIFY(note && note->text().contains(QStringLiteral("One mass")));
