@@ -31,23 +31,18 @@ void FreeFlightPlot::nameFor(const ShownRun& run) {
     setTitles(tr("Free-flight time at each contact"), tr("contact index"),
               tr("flight time / %1").arg(unit));
     setToolTip(
-        tr("Free-flight time (FFT): the time from leaving the stop to the next contact, against "
-           "the index "
-           "of that contact, in units of T₂, the slow period. Theorem 2.3: FFT ≤ T₂ (dashed: FFT / "
-           "T₂ = "
-           "1), with equality only on a grazing orbit."));
+        tr("Free-flight time (FFT): the time from leaving the stop to the next contact, against the index of "
+           "that contact, in units of T₂, the slow period. Theorem 2.3: FFT ≤ T₂ (dashed: FFT / T₂ = 1), "
+           "with equality only on a grazing orbit."));
     return;
   }
   setTitles(run.flightsBounded ? tr("Free flights from the stop / %1 (≤ 1)").arg(unit)
                                : tr("Free flights / %1 (no common period: no bound)").arg(unit),
             tr("contact index"), tr("flight / %1").arg(unit));
-  setToolTip(tr("Each free flight from the stop (after an impact, a grazing or a release), over "
-                "%1, against the "
-                "index of the contact that ends it. A resonant chain's free motion repeats after "
-                "its common "
-                "period T, so no flight from the stop lasts longer (Theorem 2.3 for any N); a "
-                "chain with no "
-                "common period has no such bound.")
+  setToolTip(tr("Each free flight from the stop (after an impact, a grazing or a release), over %1, against "
+                "the index of the contact that ends it. A resonant chain's free motion repeats after its "
+                "common period T, so no flight from the stop lasts longer (Theorem 2.3 for any N); a chain "
+                "with no common period has no such bound.")
                  .arg(run.unit.inWords));
 }
 

@@ -60,24 +60,20 @@ void PhasePlot::nameFor(const ShownRun& run, int index) {
   entries()[std::size_t(m_contacts)].series->setName(stopped ? QString() : tr("at contacts"));
   QString tip;
   if (stopped) {
-    tip = tr("Velocity of mass %1 against its displacement, over d and d ω₁ (ω₁ the fastest "
-             "frequency). At the "
-             "stop (dashed, u = d) an impact flips the velocity: the vertical jumps. Click on the "
-             "stop line to "
-             "start a run there: mass %1 leaves the stop at the clicked speed, %2; edit any value "
-             "to go back.")
+    tip = tr("Velocity of mass %1 against its displacement, over d and d ω₁ (ω₁ the fastest frequency). At "
+             "the stop (dashed, u = d) an impact flips the velocity: the vertical jumps. Click on the stop "
+             "line to start a run there: mass %1 leaves the stop at the clicked speed, %2; edit any value to "
+             "go back.")
               .arg(index + 1)
               .arg(run.twoMass ? tr("mass 1 keeps its start position, on the same energy")
                                : tr("the others as at the start shown"));
   } else if (m_mass == Mass::First && run.twoMass) {
     tip = tr(
-        "Velocity v₁ of mass 1 against its displacement u₁, over d and d ω₁. Mass 1 never touches "
-        "the "
-        "stop; it feels the impacts through the spring k₂ (the dots: its state at each contact).");
+        "Velocity v₁ of mass 1 against its displacement u₁, over d and d ω₁. Mass 1 never touches the stop; "
+        "it feels the impacts through the spring k₂ (the dots: its state at each contact).");
   } else {
-    tip = tr("Mass %1's velocity against its displacement, over d and d ω₁ (the panel's 'phase of' "
-             "chooses the "
-             "mass); the dots are its state at each contact of the stopped mass.")
+    tip = tr("Mass %1's velocity against its displacement, over d and d ω₁ (the panel's 'phase of' chooses "
+             "the mass); the dots are its state at each contact of the stopped mass.")
               .arg(index + 1);
   }
   setToolTip(tip +

@@ -37,29 +37,21 @@ void PoincarePlot::nameFor(const ShownRun& run) {
   setTitles(tr("Poincaré points on H: (%1, %2)").arg(x, y), run.coordinateAxis(run.sectionX),
             run.coordinateAxis(run.sectionY));
   const QString colours =
-      tr("Colours run from early contacts (purple) to late ones (yellow); where many fall on "
-         "one spot, the colour shown is one of them drawn at random, so every stretch of the "
-         "run shows in proportion.");
+      tr("Colours run from early contacts (purple) to late ones (yellow); where many fall on one spot, the "
+         "colour shown is one of them drawn at random, so every stretch of the run shows in proportion.");
   if (run.twoMass) {
-    setToolTip(tr("Each dot is the state (u₁, v₁) of mass 1 at a contact of mass 2 with the stop "
-                  "(the section "
-                  "H: u₂ = d), over d and d ω₁. %1 The square marks the reference grazing orbit's "
-                  "data. Click a "
-                  "point of the plane to start a run there, on the same energy (mass 2 leaving the "
-                  "stop); edit "
-                  "any value to go back.")
+    setToolTip(tr("Each dot is the state (u₁, v₁) of mass 1 at a contact of mass 2 with the stop (the "
+                  "section H: u₂ = d), over d and d ω₁. %1 The square marks the reference grazing orbit's "
+                  "data. Click a point of the plane to start a run there, on the same energy (mass 2 leaving "
+                  "the stop); edit any value to go back.")
                    .arg(colours));
     return;
   }
-  setToolTip(tr("The chain's state at each contact of mass %1 with the stop (the section H: u%2 = "
-                "d), on the two "
-                "coordinates chosen in the panel's 'section on' (velocities just before the "
-                "contact), over d and "
-                "d ω₁. A resonant chain's points lie on few curves; a chaotic run fills a region. "
-                "%3 Click to "
-                "start a run there: those two coordinates as clicked, the others as at the nearest "
-                "contact, mass "
-                "%1 leaving the stop at the speed that keeps the energy.")
+  setToolTip(tr("The chain's state at each contact of mass %1 with the stop (the section H: u%2 = d), on the "
+                "two coordinates chosen in the panel's 'section on' (velocities just before the contact), "
+                "over d and d ω₁. A resonant chain's points lie on few curves; a chaotic run fills a region. "
+                "%3 Click to start a run there: those two coordinates as clicked, the others as at the "
+                "nearest contact, mass %1 leaving the stop at the speed that keeps the energy.")
                  .arg(run.stopped + 1)
                  .arg(subscriptDigits(run.stopped + 1), colours));
 }
@@ -94,8 +86,7 @@ void PoincarePlot::show(const SimUpdate& update) {
   }
   // one mass: on H its place is the stop and its speed the energy's, a single point
   setEmptyNote(run->masses() == 1
-                   ? tr("One mass: on H its place is the stop and its speed the energy's; no "
-                        "section to draw.")
+                   ? tr("One mass: on H its place is the stop and its speed the energy's; no section to draw.")
                : count == 0 && run->whole
                    ? tr("No contact with the stop in this run: no point on H to draw.")
                    : QString());

@@ -15,7 +15,7 @@
 namespace grazelab::ui {
 
 TracePlot::TracePlot(QWidget* parent)
-    : PlotView(tr("Displacement of mass 2: u₂ / d"), tr("t / T₂"), tr("u / d"), parent) {
+    : PlotView(tr("Displacement u₂ / d"), tr("t / T₂"), tr("u / d"), parent) {
   m_trace = addEntry(makeLine(tr("u₂ / d"), colors::kTrace), Decimation::Trace);
   m_other = addEntry(makeLine(QString(), colors::kOverlay, 1.5), Decimation::Trace);
   m_stop = addEntry(makeLine(tr("stop"), colors::kStop, 1.5, Qt::DashLine), Decimation::None);
@@ -34,11 +34,11 @@ void TracePlot::nameFor(const ShownRun& run, const ViewWords* words) {
   entries()[std::size_t(m_other)].series->setName(
       other ? tr("u%1 / d").arg(subscriptDigits(run.chosen + 1)) : QString());
   const QString title =
-      other ? tr("Mass %1 (on the stop's side) and mass %2: u / d")
+      other ? tr("Mass %1 at the stop and mass %2: u / d")
                   .arg(run.stopped + 1)
                   .arg(run.chosen + 1)
-      : run.twoMass ? tr("Displacement of mass 2: u₂ / d")
-                    : tr("Mass %1 (on the stop's side): %2").arg(run.stopped + 1).arg(trace);
+      : run.twoMass ? tr("Displacement u₂ / d")
+                    : tr("Mass %1 at the stop: %2").arg(run.stopped + 1).arg(trace);
   // the scene's words for this run, over the view's own (the 1IPP orbit's period)
   setTitles(words ? words->title : title, tr("t / %1").arg(run.unit.name), tr("u / d"));
   if (words) {
@@ -46,13 +46,10 @@ void TracePlot::nameFor(const ShownRun& run, const ViewWords* words) {
     return;
   }
   setToolTip(
-      tr("The displacement of mass %1, which meets the stop, over the gap d, against time over %2; "
-         "the "
-         "dashed line is the stop (u = d). Dots mark the contacts (impacts: vermillion circles; "
-         "grazing "
-         "touches and sticks: orange triangles).%3\n"
-         "A long run shows a few periods at the animation's time; W shows all of it.\n"
-         "Drag to zoom, Shift+drag or middle button to pan, wheel to zoom, R to reset.")
+      tr("The displacement of mass %1, which meets the stop, over the gap d, against time over %2; the "
+         "dashed line is the stop (u = d). Dots mark the contacts (impacts: vermillion circles; grazing "
+         "touches and sticks: orange triangles).%3\nA long run shows a few periods at the animation's time; "
+         "W shows all of it.\nDrag to zoom, Shift+drag or middle button to pan, wheel to zoom, R to reset.")
           .arg(run.stopped + 1)
           .arg(run.unit.inWords)
           .arg(other
