@@ -44,6 +44,15 @@ struct TimeUnit {
   QString inWords;    ///< in a sentence: "the orbit's period T"
 };
 
+/// What an N-mass scene says of its chain under the chain editor: what it is (its springs,
+/// frequencies and their ratio, period) or why there is none (`refused`), and how many designs
+/// its resonance has.
+struct ChainWords {
+  QString summary;
+  int designs = 0;
+  bool refused = false;
+};
+
 /// What a scene computes for its parameters: the experiment (core's description of the run and
 /// the sweep or map after it), the curves and surveys it computed itself, worded for its
 /// views, or why there is nothing to run.
@@ -71,11 +80,8 @@ struct SceneJob {
   /// the coordinates the section H is drawn on, 1-based in the state (u1..uN, v1..vN: the
   /// scene's 'section on'); 0: mass 1's (u, v), or mass 2's when mass 1 is the stopped one
   std::pair<int, int> sectionOn = {0, 0};
-  /// the N-mass scenes: what the chain is (its springs, frequencies and their ratio, period) or
-  /// why there is none (`chainRefused`), and how many designs its resonance has
-  QString chainSummary;
-  int chainDesigns = 0;
-  bool chainRefused = false;
+  /// the N-mass scenes: the chain editor's words (ChainWords)
+  ChainWords chain;
   /// the N-mass scenes' own words for the status line, before the run's (what the start is)
   QString status;
 };

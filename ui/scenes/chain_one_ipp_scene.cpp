@@ -117,11 +117,11 @@ Scene::Spec chainOnePeriodicScene() {
     job.spec.chains.front().design = choice.design;
     QStringList weights;
     for (double w : limitWeights) weights.append(number(w, 4));
-    job.chainSummary =
+    job.chain.summary =
         chainSummaryOf(chain, params.massChain, choice.designs, modes, ratios,
                        tr("As T → T* = %1 the 1IPP data tend to GLO with weights (%2) (fastest mode first).")
                            .arg(number(Tstar, 6), weights.join(QStringLiteral(", "))));
-    job.chainDesigns = choice.designs;
+    job.chain.designs = choice.designs;
     double distance = 0;
     if (limit.problem == core::GloStartProblem::None)
       distance = (orbit.postImpact.u - limit.state.u).norm() / d;

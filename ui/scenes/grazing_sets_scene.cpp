@@ -169,8 +169,8 @@ Scene::Spec grazingSetsScene() {
     free.free = true;
     job.spec.chains = {free};
     const core::ChainModes modes = core::chainModes(chain);
-    job.chainSummary = chainSummaryOf(chain, given, choice.designs, modes, core::detectRatios(modes.omega));
-    job.chainDesigns = choice.designs;
+    job.chain.summary = chainSummaryOf(chain, given, choice.designs, modes, core::detectRatios(modes.omega));
+    job.chain.designs = choice.designs;
     QStringList written;
     for (double w : weights) written.append(number(w, 4));
     job.status = tr("GLO with weights (%1) %2").arg(written.join(QStringLiteral(", ")), verdictInWords(verdict));

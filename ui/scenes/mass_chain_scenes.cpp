@@ -153,8 +153,8 @@ QString chainSummaryOf(const core::MassChain& chain, const MassChainParams& give
 SceneJob refusedChainJob(const QString& why) {
   SceneJob job;
   job.message = why;
-  job.chainSummary = why;
-  job.chainRefused = true;
+  job.chain.summary = why;
+  job.chain.refused = true;
   return job;
 }
 

@@ -87,8 +87,8 @@ Scene::Spec threeMassesScene() {
     }
     job.chosenMass = given.shown();
     job.sectionOn = {given.sectionXResolved(), given.sectionYResolved()};
-    job.chainSummary = chainSummaryOf(chain, given, choice.designs, modes, ratios);
-    job.chainDesigns = choice.designs;
+    job.chain.summary = chainSummaryOf(chain, given, choice.designs, modes, ratios);
+    job.chain.designs = choice.designs;
     if (contrast) {
       job.viewWords[PlotKind::ContrastFlights] = {
           chain.size() < 2 ? tr("Detuned contrast: needs two masses or more")

@@ -59,7 +59,7 @@ class ParameterPanel : public QWidget {
   SliderSpin* control(ParamKey key) const { return m_controls.value(key); }
   /// The N-mass scenes' chain editor (shown only for them).
   ChainEditor* chainEditor() const { return m_chainEditor; }
-  /// What the worker says the N-mass chain is (SceneJob::chainSummary).
+  /// What the worker says the N-mass chain is (SceneJob::chain).
   void setChainSummary(const QString& text, int designs, bool refused);
 
  signals:

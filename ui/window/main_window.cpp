@@ -629,8 +629,8 @@ void MainWindow::onUpdate(const SimUpdate& update) {
     showProblem(QString::fromStdString(update.result->message));
     // an N-mass chain that cannot be made says why where it is edited as well (a refused start
     // leaves the summary of the chain, which is fine)
-    if (scene().massChain() && update.request->sceneName == scene().name() && job.chainRefused) {
-      m_panel->setChainSummary(job.chainSummary, 0, true);
+    if (scene().massChain() && update.request->sceneName == scene().name() && job.chain.refused) {
+      m_panel->setChainSummary(job.chain.summary, 0, true);
     }
     return;
   }
@@ -693,7 +693,7 @@ void MainWindow::applyPending() {
   m_panel->setNotes(m_displayed->request->job.notes);
   if (scene().massChain()) {
     const SceneJob& job = m_displayed->request->job;
-    m_panel->setChainSummary(job.chainSummary, job.chainDesigns, job.chainRefused);
+    m_panel->setChainSummary(job.chain.summary, job.chain.designs, job.chain.refused);
   } else if (const SimRequest& shown = *m_displayed->request; shown.derived.ok) {
     m_readout->showModel(shown.derived, core::energy(shown.job.spec.model, shown.job.spec.run.initial));
   }

@@ -333,9 +333,9 @@ class ScenesTest : public QObject {
     QVERIFY2(m_window->problem().isEmpty(), qPrintable(m_window->problem()));
     const SceneJob* job = &m_window->displayed()->request->job;
     QVERIFY2(job->ok, qPrintable(job->message));
-    QVERIFY2(job->chainSummary.contains(QStringLiteral("3 : 2 : 1")), qPrintable(job->chainSummary));
+    QVERIFY2(job->chain.summary.contains(QStringLiteral("3 : 2 : 1")), qPrintable(job->chain.summary));
     QVERIFY2(m_window->statusText().contains(QStringLiteral("200 contacts")), qPrintable(m_window->statusText()));
-    QCOMPARE(job->chainDesigns, 6);
+    QCOMPARE(job->chain.designs, 6);
     const std::vector<QPointF> flights = flightPlot(*m_window).flights().toVector();
     QVERIFY(flights.size() > 150);
     for (const QPointF& point : flights) QVERIFY2(point.y() <= 1.0 + 1e-12, qPrintable(QString::number(point.y())));
@@ -505,7 +505,7 @@ class ScenesTest : public QObject {
     QVERIFY(waitForLatestFinal(*m_window, 60000));
     job = &m_window->displayed()->request->job;
     QVERIFY2(job->ok, qPrintable(job->message));
-    QVERIFY2(job->chainSummary.contains(QStringLiteral("4 : 3 : 2 : 1")), qPrintable(job->chainSummary));
+    QVERIFY2(job->chain.summary.contains(QStringLiteral("4 : 3 : 2 : 1")), qPrintable(job->chain.summary));
     const std::vector<QPointF> bounded = flightPlot(*m_window).flights().toVector();
     QVERIFY(bounded.size() > 10);
     for (const QPointF& point : bounded) QVERIFY(point.y() <= 1.0 + 1e-12);
