@@ -53,7 +53,7 @@ void FreeFlightPlot::show(const SimUpdate& update) {
     startNewRun();
     setData(m_flights, {});
     m_taken = 0;
-    nameFor(*run);
+    if (!m_run || !run->wordedAlike(*m_run)) nameFor(*run);
   }
   const double period = run->unit.length;
   std::vector<QPointF> flights;

@@ -37,8 +37,8 @@ PhasePlot::PhasePlot(Mass mass, QWidget* parent)
                mass == Mass::Chosen ? tr("u₂ / d") : tr("u₁ / d"),
                mass == Mass::Chosen ? tr("v₂ / (d ω₁)") : tr("v₁ / (d ω₁)"), parent),
       m_mass(mass) {
-  m_path = addEntry(makeLine(tr("orbit"), colors::kTrace), Decimation::Path);
-  m_recent = addEntry(makeLine(tr("orbit, %1 periods").arg(RunWindow::kPeriods), colors::kTrace),
+  m_path = addEntry(makeLine(tr("orbit"), colors::kTrace, 1.0), Decimation::Path);
+  m_recent = addEntry(makeLine(tr("orbit, %1 periods").arg(RunWindow::kPeriods), colors::kTrace, 1.0),
                       Decimation::Path);
   setInLegend(entries()[std::size_t(m_recent)].series, false);
   m_stop = addEntry(makeLine(QString(), colors::kStop, 1.5, Qt::DashLine), Decimation::None);
@@ -135,7 +135,7 @@ void PhasePlot::show(const SimUpdate& update) {
     m_samplesTaken = 0;
     m_eventsTaken = 0;
     setData(m_contacts, {});
-    nameFor(*run, index);
+    if (!m_run || !run->wordedAlike(*m_run) || index != m_index) nameFor(*run, index);
   }
   // the run's samples as they are, no copy: only the new ones widen the velocity range
   const StateSpan& samples = run->samples;

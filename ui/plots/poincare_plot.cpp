@@ -82,7 +82,7 @@ void PoincarePlot::show(const SimUpdate& update) {
   if (!grown) {
     m_perBin = per;
     startNewRun();
-    nameFor(*run);
+    if (!m_run || !run->wordedAlike(*m_run)) nameFor(*run);
   }
   // one mass: on H its place is the stop and its speed the energy's, a single point
   setEmptyNote(run->masses() == 1

@@ -75,6 +75,13 @@ struct ShownRun {
   /// Mass i's displacement at event k and its velocity just before it (0-based i).
   double eventU(std::size_t k, int i) const;
   double eventVBefore(std::size_t k, int i) const;
+  /// The views word this run as `other` (titles, names, tooltips): a new run of the same chain
+  /// keeps them, and a view that set them again would lay its chart out at every edit.
+  bool wordedAlike(const ShownRun& other) const {
+    return twoMass == other.twoMass && masses() == other.masses() && stopped == other.stopped &&
+           chosen == other.chosen && sectionX == other.sectionX && sectionY == other.sectionY &&
+           flightsBounded == other.flightsBounded && unit.name == other.unit.name && unit.inWords == other.unit.inWords;
+  }
   /// the same run as `before`, grown (not another one, nor a raised one from its start)
   bool continues(const ShownRun& before) const {
     return owner && before.owner && id == before.id && attempt == before.attempt &&

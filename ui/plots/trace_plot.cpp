@@ -16,7 +16,7 @@ namespace grazelab::ui {
 
 TracePlot::TracePlot(QWidget* parent)
     : PlotView(tr("Displacement u₂ / d"), tr("t / T₂"), tr("u / d"), parent) {
-  m_trace = addEntry(makeLine(tr("u₂ / d"), colors::kTrace), Decimation::Trace);
+  m_trace = addEntry(makeLine(tr("u₂ / d"), colors::kTrace, 1.0), Decimation::Trace);
   m_other = addEntry(makeLine(QString(), colors::kOverlay, 1.5), Decimation::Trace);
   m_stop = addEntry(makeLine(tr("stop"), colors::kStop, 1.5, Qt::DashLine), Decimation::None);
   m_impacts = addEntry(makeScatter(tr("impacts"), colors::kImpact, 6), Decimation::Scatter, false);
@@ -68,7 +68,10 @@ void TracePlot::show(const SimUpdate& update) {
     m_eventsTaken = 0;
     const auto& words = update.request->job.viewWords;
     const auto found = words.find(PlotKind::Trace);
-    nameFor(*run, found != words.end() ? &found->second : nullptr);
+    const ViewWords* given = found != words.end() ? &found->second : nullptr;
+    const QString title = given ? given->title : QString();
+    if (!m_run || !run->wordedAlike(*m_run) || title != m_wordsTitle) nameFor(*run, given);
+    m_wordsTitle = title;
   }
   // the run's samples as they are, no copy (the view holds the run while it shows it), in the
   // chain's units

@@ -46,6 +46,7 @@ class TracePlot final : public PlotView {
 
   std::shared_ptr<const core::Result> m_overlayRun;
   std::optional<ShownRun> m_run;  ///< the run drawn
+  QString m_wordsTitle;           ///< the scene's title it was named with (none: its own)
   double m_window = 0;  ///< the end of the drawn samples [period]
   double m_cursorTime = 0;  ///< [time]
   bool m_whole = false;
