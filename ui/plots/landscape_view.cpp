@@ -181,9 +181,10 @@ std::optional<QPointF> LandscapeView::valueAt(QPointF position) const {
                  y0 + (plot.bottom() - position.y()) / plot.height() * (y1 - y0));
 }
 
-QPointF LandscapeView::positionOf(QPointF value) const {
+QPointF LandscapeView::positionOf(QPointF value) const { return positionIn(plotRect(), value); }
+
+QPointF LandscapeView::positionIn(const QRectF& plot, QPointF value) const {
   if (!m_map) return {};
-  const QRectF plot = plotRect();
   const auto& spec = m_map->spec;
   const auto [x0, x1] = pictures::cellExtent(spec.x.from, spec.x.to, spec.x.count);
   const auto [y0, y1] = pictures::cellExtent(spec.y.from, spec.y.to, spec.y.count);
@@ -259,8 +260,8 @@ void LandscapeView::paintEvent(QPaintEvent*) {
   const double line = m_textPixels > 0 ? 3.0 : 2.0;
   if (!m_family.empty()) {
     QPainterPath family;
-    family.moveTo(positionOf(m_family.front()));
-    for (const QPointF& p : m_family) family.lineTo(positionOf(p));
+    family.moveTo(positionIn(plot, m_family.front()));
+    for (const QPointF& p : m_family) family.lineTo(positionIn(plot, p));
     painter.setPen(QPen(Qt::white, line + 2));
     painter.drawPath(family);
     painter.setPen(QPen(Qt::black, line, Qt::DashLine));
@@ -268,7 +269,7 @@ void LandscapeView::paintEvent(QPaintEvent*) {
     const QFontMetricsF metrics(font());
     QRectF taken;  // the first label's box: the second goes below its point if they would meet
     for (const auto& [value, name] : {std::pair{m_glom1, QStringLiteral("GLOM₁")}, std::pair{m_glom2, QStringLiteral("GLOM₂")}}) {
-      const QPointF at = positionOf(value);
+      const QPointF at = positionIn(plot, value);
       // a mode outside a zoomed region is not on the map: no label pinned to its edge
       if (!plot.contains(at)) continue;
       painter.setPen(QPen(Qt::black, 1.5));
@@ -286,9 +287,9 @@ void LandscapeView::paintEvent(QPaintEvent*) {
   }
   painter.setPen(Qt::NoPen);
   painter.setBrush(colors::kImpact);
-  for (const QPointF& p : m_section) painter.drawEllipse(positionOf(p), 2.0 + line / 2, 2.0 + line / 2);
+  for (const QPointF& p : m_section) painter.drawEllipse(positionIn(plot, p), 2.0 + line / 2, 2.0 + line / 2);
   if (m_start) {
-    const QPointF at = positionOf(*m_start);
+    const QPointF at = positionIn(plot, *m_start);
     painter.setPen(QPen(Qt::white, line + 2));
     painter.drawLine(at + QPointF(-8, 0), at + QPointF(8, 0));
     painter.drawLine(at + QPointF(0, -8), at + QPointF(0, 8));

@@ -70,6 +70,9 @@ class LandscapeView : public QWidget, public SceneView {
  private:
   QRectF mapArea() const;  ///< where the map, its axes and colour bar are painted
   QRectF plotRect() const;  ///< the cells' rectangle inside mapArea()
+  /// positionOf in the cells' rectangle `plot` (plotRect(): its margins come from the colour
+  /// bar's range, a pass over every cell; a paint takes it once, not once a point drawn)
+  QPointF positionIn(const QRectF& plot, QPointF value) const;
   pictures::HeatMapData heatMapDataOf(const MapProgress& map) const;  ///< the chosen quantity's cells
 
   QComboBox* m_quantityBox = nullptr;

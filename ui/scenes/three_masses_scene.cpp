@@ -1,22 +1,15 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include <QCoreApplication>
-#include <QStringList>
 
-#include <algorithm>
-#include <cmath>
 #include <numbers>
 
 #include "core/experiments/chain_series.h"
 #include "core/model/chain_design.h"
 #include "core/model/mass_chain.h"
-#include "core/model/model.h"
 #include "core/orbits/chain_glo.h"
-#include "ui/compute/time_text.h"
 #include "ui/scenes/mass_chain_scenes.h"
 #include "ui/scenes/scenes.h"
-#include "ui/widgets/chain_editor.h"
-#include "ui/widgets/param_specs.h"
 
 namespace grazelab::ui {
 namespace {
