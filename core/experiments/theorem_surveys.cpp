@@ -131,16 +131,6 @@ std::optional<double> largestShortfall(const Model& model, const State& start,
   return shortfall;
 }
 
-std::vector<std::array<double, 2>> flightTimesOverT2(const Model& model, const State& start,
-                                                     std::int64_t contacts, std::stop_token stop) {
-  ReadyChains chains{model};
-  const Flights run = runFlights(chains, start, contacts, computeModes(model).T2, stop);
-  std::vector<std::array<double, 2>> flights;
-  flights.reserve(run.list.size());
-  for (const FlightFromStop& flight : run.list) flights.push_back({double(flight.contact), flight.fraction()});
-  return flights;
-}
-
 std::vector<OnePeriodicOrbit<double>> onePeriodicFamilySamples(const Model& model, const Modes& modes,
                                                                double lowEnd, int points,
                                                                std::stop_token stop) {

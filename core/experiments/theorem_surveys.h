@@ -2,7 +2,6 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <stop_token>
@@ -47,12 +46,6 @@ FlightSurvey surveyRandomStarts(const Model& model, int starts, std::int64_t con
 /// run from `start` (0 when no flight ended, or all lasted T2 exactly); nothing when stopped.
 std::optional<double> largestShortfall(const Model& model, const State& start,
                                        std::int64_t contacts, std::stop_token stop = {});
-
-/// The free-flight times of the run from `start`, each as (index of the contact that ends it,
-/// FFT / T2 of the run's own chain), a flight searched for at most kFlightSearchPeriods slow
-/// periods (a detuned chain's can pass T2); what was computed when stopped.
-std::vector<std::array<double, 2>> flightTimesOverT2(const Model& model, const State& start,
-                                                     std::int64_t contacts, std::stop_token stop = {});
 
 /// The admissible orbits of the 1IPP family at `points` periods from just above `lowEnd` up to
 /// T2 (crowding towards T2, where the theorem looks), in increasing period; what was computed

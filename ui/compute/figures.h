@@ -24,16 +24,13 @@ enum class PlotKind {
   GrazingMaximum,   ///< Lemma 2.1: max u2/d of GLO(lambda) against lambda, = 1 on [0, 4/3]
   SpreadAgainstSize,  ///< Theorem 2.2: the spread of FFT/T2 against the push size (log-log)
   FlightHistogram,  ///< Theorem 2.3: histogram of FFT/T2 over random starts, bound at 1
-  DetunedFlights,   ///< the detuned scene's chain: its flights over T2, computed by the scene
-  ResonantFlights,  ///< the detuned scene's resonant companion: its flights over T2, computed
-                    ///< by the scene
   Chain,            ///< the chain moving, any number of masses (ChainView), the time cursor of the other views
   Landscape,        ///< a map over the grazing-start plane, the run's section over it
   ModesAtlas,       ///< the periodic impacting families: 2 pi / T against log E, click an orbit
   Multipliers,      ///< the chosen orbit's multipliers against the unit circle
   GrazingSet,       ///< N masses: the grazing set of two modes (top against lambda) or three (a region)
-  ContrastFlights,  ///< N masses: the experiment's second run (the start on the chain detuned), its
-                    ///< flights over the first run's period T, those past 3 T on the top edge
+  ContrastFlights,  ///< the experiment's second run (the start on the chain detuned), its flights
+                    ///< over the first run's period T, those past 3 T on the top edge
 };
 
 /// A curve a scene computes itself (no run needed), drawn by a CurvePlot: the curve, the

@@ -17,9 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
-#include "core/model/linear_modes.h"
 #include "ui/plots/plot_style.h"
 #include "ui/widgets/param_specs.h"
 
@@ -46,13 +44,13 @@ class ChainView::Canvas : public QWidget {
     painter.setRenderHint(QPainter::Antialiasing);
     const ChainView& view = *m_view;
     const std::vector<double> u = view.displacementsAt(view.m_time);
-    const core::MassChain& chain = view.m_chain;
-    const int n = chain.size();
-    if (u.empty() || int(u.size()) != n) {
+    if (u.empty()) {
       painter.drawText(rect().adjusted(8, 8, -8, -8), Qt::AlignCenter | Qt::TextWordWrap,
                        view.m_emptyNote.isEmpty() ? tr("no motion to show yet") : view.m_emptyNote);
       return;
     }
+    const core::MassChain& chain = view.m_run->chain;
+    const int n = chain.size();
     const int s = chain.stopped() - 1;
     // one length scale for displacements, gap and spacing: rest spacing R wide enough for the
     // largest displacement
@@ -173,13 +171,13 @@ class ChainView::Canvas : public QWidget {
                            .arg(subscriptDigits(overlap), subscriptDigits(overlap + 1)));
       painter.setPen(Qt::black);
     }
-    // the clock, in the run's period where it has one
+    // the clock, also in the unit of the other views' time axes
+    const TimeUnit& unit = view.m_run->unit;
     painter.drawText(rect().adjusted(8, 6, -8, -6), Qt::AlignLeft | Qt::AlignTop,
-                     view.m_unit > 0 ? tr("t = %1  (%2 %3)")
-                                           .arg(view.m_time, 0, 'f', 2)
-                                           .arg(view.m_time / view.m_unit, 0, 'f', 2)
-                                           .arg(view.m_unitName)
-                                     : tr("t = %1").arg(view.m_time, 0, 'f', 2));
+                     tr("t = %1  (%2 %3)")
+                         .arg(view.m_time, 0, 'f', 2)
+                         .arg(view.m_time / unit.length, 0, 'f', 2)
+                         .arg(unit.name));
   }
 
  private:
@@ -254,79 +252,51 @@ void ChainView::setEmptyNote(const QString& why) {
   m_canvas->update();
 }
 
-void ChainView::startMotion(const core::MassChain& chain, double slowestPeriod, double unit, const QString& unitName) {
-  m_chain = chain;
-  m_rate = slowestPeriod / 2;
-  m_nearContact = slowestPeriod / 40;
-  m_unit = unit;
-  m_unitName = unitName;
-  m_amplitude = chain.gap;
-  m_squeeze = 0;
-  m_contactTimes.clear();
-  m_contactTypes.clear();
-}
-
 void ChainView::widen(std::size_t from) {
-  const int n = m_motion.masses();
-  for (std::size_t k = from; k < m_motion.size(); ++k) {
+  const StateSpan& motion = m_run->samples;
+  const int n = motion.masses();
+  for (std::size_t k = from; k < motion.size(); ++k) {
     for (int i = 0; i < n; ++i) {
-      m_amplitude = std::max(m_amplitude, std::abs(m_motion.u(k, i)));
-      if (i + 1 < n) m_squeeze = std::max(m_squeeze, m_motion.u(k, i) - m_motion.u(k, i + 1));
+      m_amplitude = std::max(m_amplitude, std::abs(motion.u(k, i)));
+      if (i + 1 < n) m_squeeze = std::max(m_squeeze, motion.u(k, i) - motion.u(k, i + 1));
     }
   }
 }
 
+// Only what the run added since the last update when it is the same run grown; else from its
+// start (its scales and contacts anew).
 void ChainView::show(const SimUpdate& update) {
-  if (!update.chains.empty()) takeSeries(update.chains.front());
-  else takeSamples(update);
+  std::optional<ShownRun> run = shownRun(update);
+  const bool grown = run && m_run && run->continues(*m_run);
+  const std::size_t samplesTaken = grown ? m_run->samples.size() : 0;
+  if (!grown) {
+    m_eventsTaken = 0;
+    m_contactTimes.clear();
+    m_contactTypes.clear();
+    if (run) {
+      m_rate = run->slowestPeriod / 2;
+      m_nearContact = run->slowestPeriod / 40;
+      m_amplitude = run->gap;
+      m_squeeze = 0;
+    }
+  }
+  m_run = std::move(run);
+  m_end = 0;
+  if (m_run) {
+    const StateSpan& motion = m_run->samples;
+    widen(samplesTaken);
+    if (!motion.empty()) m_end = motion.t(motion.size() - 1);
+    // contacts within the samples' span; later ones wait for the samples that reach them
+    std::size_t next = m_eventsTaken;
+    for (; next < m_run->eventCount() && m_run->eventTime(next) <= m_end; ++next) {
+      const core::EventType type = m_run->eventType(next);
+      if (!core::isContact(type)) continue;
+      m_contactTimes.push_back(m_run->eventTime(next));
+      m_contactTypes.push_back(type);
+    }
+    m_eventsTaken = next;
+  }
   setTime(std::min(m_time, m_end));
-}
-
-// the two-mass run: only what it added since the last update
-void ChainView::takeSamples(const SimUpdate& update) {
-  m_series.reset();
-  m_result = update.result;
-  if (!m_result) {
-    m_motion = {};
-    m_end = 0;
-    return;
-  }
-  const core::Result& result = *m_result;
-  if (m_taken.startsOver(update)) {
-    const core::Model& model = update.request->job.spec.model;
-    const double T2 = core::computeModes(model).T2;
-    startMotion(core::massChainOf(model), T2, T2, tr("T₂"));
-  }
-  m_motion = StateSpan(result.samples);
-  widen(m_taken.samples);
-  m_taken.samples = result.samples.size();
-  m_end = result.samples.empty() ? 0 : result.samples.back().t;
-  // contacts within the samples' window; later ones wait for the samples that reach them
-  std::size_t next = m_taken.events;
-  for (; next < result.events.size() && result.events[next].t <= m_end; ++next) {
-    const core::Event& event = result.events[next];
-    if (!core::isContact(event.type)) continue;
-    m_contactTimes.push_back(event.t);
-    m_contactTypes.push_back(event.type);
-  }
-  m_taken.events = next;
-}
-
-// an N-mass run's grid: each report is the run so far, whole
-void ChainView::takeSeries(const std::shared_ptr<const core::experiments::ChainSeries>& series) {
-  m_result.reset();
-  m_taken = {};
-  m_series = series;
-  m_motion = StateSpan(series->grid);
-  m_end = m_motion.empty() ? 0 : m_motion.t(m_motion.size() - 1);
-  startMotion(series->chain, 2 * std::numbers::pi / series->modes.omega.minCoeff(), series->period, tr("T"));
-  widen(0);
-  for (const core::ChainEvent& event : series->run.events) {
-    if (event.t > m_end) break;
-    if (!core::isContact(event.type)) continue;
-    m_contactTimes.push_back(event.t);
-    m_contactTypes.push_back(event.type);
-  }
 }
 
 void ChainView::setPresentation(bool on, int textPixels) {
@@ -340,23 +310,24 @@ void ChainView::setPresentation(bool on, int textPixels) {
 }
 
 std::vector<double> ChainView::displacementsAt(double t) const {
-  if (m_motion.empty()) return {};
+  if (!m_run || m_run->samples.empty()) return {};
+  const StateSpan& motion = m_run->samples;
   // the neighbours of t among the motion's times, and their displacements
-  std::size_t low = 0, high = m_motion.size();  // the first record after t: in [low, high]
+  std::size_t low = 0, high = motion.size();  // the first record after t: in [low, high]
   while (low < high) {
     const std::size_t middle = low + (high - low) / 2;
-    if (m_motion.t(middle) < t) low = middle + 1;
+    if (motion.t(middle) < t) low = middle + 1;
     else high = middle;
   }
   const std::size_t after = low;
-  std::vector<double> u(std::size_t(m_motion.masses()));
-  if (after == 0 || after == m_motion.size()) {
-    for (int i = 0; i < m_motion.masses(); ++i) u[std::size_t(i)] = m_motion.u(after == 0 ? 0 : after - 1, i);
+  std::vector<double> u(std::size_t(motion.masses()));
+  if (after == 0 || after == motion.size()) {
+    for (int i = 0; i < motion.masses(); ++i) u[std::size_t(i)] = motion.u(after == 0 ? 0 : after - 1, i);
     return u;
   }
-  const double w = (t - m_motion.t(after - 1)) / (m_motion.t(after) - m_motion.t(after - 1));
-  for (int i = 0; i < m_motion.masses(); ++i) {
-    const double a = m_motion.u(after - 1, i), b = m_motion.u(after, i);
+  const double w = (t - motion.t(after - 1)) / (motion.t(after) - motion.t(after - 1));
+  for (int i = 0; i < motion.masses(); ++i) {
+    const double a = motion.u(after - 1, i), b = motion.u(after, i);
     u[std::size_t(i)] = a + w * (b - a);
   }
   return u;

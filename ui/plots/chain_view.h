@@ -7,14 +7,12 @@
 #include <QWidget>
 
 #include <cstdint>
-#include <memory>
+#include <optional>
 #include <vector>
 
-#include "core/experiments/chain_series.h"
-#include "core/model/mass_chain.h"
 #include "ui/compute/sim_types.h"
-#include "ui/plots/run_points.h"
 #include "ui/plots/scene_view.h"
+#include "ui/plots/shown_run.h"
 
 class QCheckBox;
 class QComboBox;
@@ -25,9 +23,8 @@ namespace grazelab::ui {
 
 /// A chain of any number of masses, moving: the wall, every spring and mass (sized by the cube
 /// root of its mass), the stop at d beside the stopped mass (a post it strikes with a tab), the
-/// right wall when there is one; displacements true to scale. Driven by the run's dense output
-/// (the two-mass run's samples, or the grid of an experiment's first chain run), linearly
-/// interpolated, and its contacts, which flash. Play / pause (Space), speed, slow motion near
+/// right wall when there is one; displacements true to scale. Driven by the run the other run
+/// views show (ShownRun: its samples, linearly interpolated, and its contacts, which flash). Play / pause (Space), speed, slow motion near
 /// contacts, step to the next or previous contact ([ and ]), and a time slider; the time it
 /// shows is the cursor of every time-based view (timeChanged).
 class ChainView : public QWidget, public SceneView {
@@ -66,10 +63,6 @@ class ChainView : public QWidget, public SceneView {
   class Canvas;
   void tick();
   double speedFactor() const;
-  /// the motion's scales and contacts, from the first update of a run on
-  void startMotion(const core::MassChain& chain, double slowestPeriod, double unit, const QString& unitName);
-  void takeSamples(const SimUpdate& update);
-  void takeSeries(const std::shared_ptr<const core::experiments::ChainSeries>& series);
   /// the motion's scales grown by its records from `from` on
   void widen(std::size_t from);
 
@@ -78,16 +71,12 @@ class ChainView : public QWidget, public SceneView {
   QComboBox* m_speed = nullptr;
   QCheckBox* m_slowNearContacts = nullptr;
   QSlider* m_slider = nullptr;
-  // the motion: the two-mass run's samples, or an N-mass run's grid (one of them)
-  std::shared_ptr<const core::Result> m_result;
-  std::shared_ptr<const core::experiments::ChainSeries> m_series;
-  StateSpan m_motion;  ///< the records of the one held
-  core::MassChain m_chain;  ///< the chain drawn
+  /// the run moving (none yet): the records of its motion are `m_run->samples`
+  std::optional<ShownRun> m_run;
+  std::size_t m_eventsTaken = 0;       ///< the run's events looked at for contacts
   std::vector<double> m_contactTimes;  ///< within the motion's span
   std::vector<core::EventType> m_contactTypes;
   QString m_emptyNote;  ///< why there is no motion (setEmptyNote)
-  QString m_unitName;   ///< the clock's unit ("T₂", "T"), empty when none
-  double m_unit = 0;    ///< its length [time]
   double m_time = 0;
   double m_end = 0;
   double m_rate = 1;
@@ -98,7 +87,6 @@ class ChainView : public QWidget, public SceneView {
   QElapsedTimer m_clock;
   bool m_presentation = false;
   std::int64_t m_framesPlayed = 0;
-  RunProgress m_taken;  ///< the two-mass run's samples and events already taken in
 };
 
 }  // namespace grazelab::ui

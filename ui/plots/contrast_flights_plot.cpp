@@ -33,13 +33,13 @@ void ContrastFlightsPlot::show(const SimUpdate& update) {
   const SceneJob& job = update.request->job;
   const auto found = job.viewWords.find(PlotKind::ContrastFlights);
   const ViewWords words = found != job.viewWords.end() ? found->second : ViewWords{};
-  setToolTip(words.toolTip);
-  setData(m_flights, {});
-  setData(m_past, {});
-  setData(m_bound, {});
-  setFixedRange(std::nullopt);
   if (job.spec.chains.size() < 2) {
     // no contrast for this chain: the scene says why
+    setToolTip(words.toolTip);
+    setData(m_flights, {});
+    setData(m_past, {});
+    setData(m_bound, {});
+    setFixedRange(std::nullopt);
     setTitles(words.title, tr("contact index"), tr("flight / T"));
     setEmptyNote(words.whyEmpty);
     scheduleRefresh();
@@ -47,10 +47,18 @@ void ContrastFlightsPlot::show(const SimUpdate& update) {
   }
   setEmptyNote(QString());
   if (update.chains.size() < 2 || update.chains.front()->period <= 0) {
-    setTitles(tr("%1: computing…").arg(words.title), tr("contact index"), tr("flight / T"));
+    // its run not yet there: the contrast drawn so far stays, faded, its title too (a title
+    // that said "computing" at each edit of a drag laid the chart out twice an edit)
+    const bool drawn = !entries()[std::size_t(m_flights)].data.empty() || !entries()[std::size_t(m_past)].data.empty();
+    if (drawn) {
+      setFaded(true);
+    } else {
+      setTitles(tr("%1: computing…").arg(words.title), tr("contact index"), tr("flight / T"));
+    }
     scheduleRefresh();
     return;
   }
+  setFaded(false);
   const core::experiments::ChainSeries& detuned = *update.chains[1];
   const double T = update.chains.front()->period;
   std::vector<QPointF> below, past;
@@ -62,9 +70,11 @@ void ContrastFlightsPlot::show(const SimUpdate& update) {
     last = std::max(last, point.x());
   }
   const std::size_t count = below.size() + past.size();
+  // the title changes only when what it says does (the count past 3 T is in the tooltip)
   QString title = tr("%1: flights / the resonant T").arg(words.title);
+  setFixedRange(std::nullopt);
   if (!past.empty()) {
-    title = tr("%1: flights / T (%2 past 3 T, on the top edge)").arg(words.title).arg(past.size());
+    title = tr("%1: flights / T (past 3 T: on the top edge)").arg(words.title);
     setFixedRange(QRectF(QPointF(0, 0), QPointF(last * 1.02, kCap + 0.1)));
   }
   if (detuned.run.stop == core::StopReason::SearchBudget) {
@@ -76,11 +86,20 @@ void ContrastFlightsPlot::show(const SimUpdate& update) {
                 ? tr("%1: 1 flight, then none in 1000 slow periods").arg(words.title)
                 : tr("%1: %2 flights, then none in 1000 slow periods").arg(words.title).arg(count);
   }
+  setToolTip(past.empty() ? words.toolTip
+                          : tr("%1\n\n%2 of its %3 flights last longer than 3 T: drawn on the top edge.")
+                                .arg(words.toolTip)
+                                .arg(past.size())
+                                .arg(count));
   setTitles(title, tr("contact index"), tr("flight / T"));
   setData(m_flights, std::move(below));
   setData(m_past, std::move(past));
   setData(m_bound, {QPointF(0, 1), QPointF(last, 1)});
   scheduleRefresh();
+}
+
+void ContrastFlightsPlot::setFaded(bool faded) {
+  for (int entry : {m_flights, m_past}) entries()[std::size_t(entry)].series->setOpacity(faded ? 0.3 : 1.0);
 }
 
 }  // namespace grazelab::ui

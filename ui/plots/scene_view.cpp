@@ -18,18 +18,6 @@
 
 namespace grazelab::ui {
 
-bool RunProgress::startsOver(const SimUpdate& update) {
-  const core::Result& result = *update.result;
-  const bool grown = runId == update.id && attempt == update.attempt &&
-                     events <= result.events.size() &&
-                     samples <= result.samples.size();
-  if (grown) return false;
-  *this = RunProgress{};
-  runId = update.id;
-  attempt = update.attempt;
-  return true;
-}
-
 SceneView* makeView(PlotKind kind, QWidget* parent) {
   switch (kind) {
     case PlotKind::Trace: return new TracePlot(parent);
@@ -43,8 +31,6 @@ SceneView* makeView(PlotKind kind, QWidget* parent) {
     case PlotKind::GrazingMaximum:
     case PlotKind::SpreadAgainstSize:
     case PlotKind::FlightHistogram:
-    case PlotKind::DetunedFlights:
-    case PlotKind::ResonantFlights:
     case PlotKind::GrazingSet: return new CurvePlot(kind, parent);
     case PlotKind::Chain: return new ChainView(parent);
     case PlotKind::ContrastFlights: return new ContrastFlightsPlot(parent);

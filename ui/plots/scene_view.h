@@ -65,18 +65,6 @@ class RunWindow {
   double m_to = 0;
 };
 
-/// Which items of a run a view has taken, so that the next update of the same run (same
-/// request id: the run grown) hands it only the items after them.
-struct RunProgress {
-  std::uint64_t runId = 0;  ///< 0: nothing taken yet
-  int attempt = 0;          ///< SimUpdate::attempt of the run taken
-  std::size_t events = 0;
-  std::size_t samples = 0;
-  /// True, with every count back at zero, when `update` is not the run taken so far grown
-  /// (another request, or fewer items than taken); the view then draws it from the start.
-  bool startsOver(const SimUpdate& update);
-};
-
 /// Creates the view for one kind (a chart, the work-precision view or the animated chain).
 SceneView* makeView(PlotKind kind, QWidget* parent = nullptr);
 

@@ -27,12 +27,12 @@ double ShownRun::drawnUntil() const {
 PointSpan ShownRun::sectionPoints() const {
   const double x = sectionX < masses() ? 1 / gap : 1 / speed,
                y = sectionY < masses() ? 1 / gap : 1 / speed;
-  if (twoMassSection) return grazelab::ui::sectionPoints(*twoMassSection).scaled(x, y);  // (u1, v1)
-  const auto field = [this](int c) {
-    return c < masses() ? chainSection.displacementField(c)
-                        : chainSection.velocityField(c - masses());
+  if (twoMassRun) return grazelab::ui::sectionPoints(twoMassRun->poincare).scaled(x, y);  // (u1, v1)
+  const StateSpan section(series->section);
+  const auto field = [&section, this](int c) {
+    return c < masses() ? section.displacementField(c) : section.velocityField(c - masses());
   };
-  return chainSection.points(field(sectionX), field(sectionY)).scaled(x, y);
+  return section.points(field(sectionX), field(sectionY)).scaled(x, y);
 }
 
 QString ShownRun::coordinateName(int c) const {
@@ -46,39 +46,39 @@ QString ShownRun::coordinateAxis(int c) const {
 }
 
 std::size_t ShownRun::flightCount() const {
-  return twoMassFlights ? twoMassFlights->size() : chainFlights ? chainFlights->size() : 0;
+  return twoMassRun ? twoMassRun->freeFlights.size() : series ? series->flights.size() : 0;
 }
 
 std::optional<ShownRun::Flight> ShownRun::flightAt(std::size_t k) const {
-  if (twoMassFlights) {
-    const core::FreeFlight& flight = (*twoMassFlights)[k];
+  if (twoMassRun) {
+    const core::FreeFlight& flight = twoMassRun->freeFlights[k];
     return Flight{flight.contactIndex, flight.duration, flight.shortfall};
   }
-  const core::experiments::ChainFlight& flight = (*chainFlights)[k];
+  const core::experiments::ChainFlight& flight = series->flights[k];
   if (!flight.fromStop) return std::nullopt;
   return Flight{flight.contact - 1, flight.duration, flight.shortfall};
 }
 
 std::size_t ShownRun::eventCount() const {
-  return twoMassEvents ? twoMassEvents->size() : chainEvents ? chainEvents->size() : 0;
+  return twoMassRun ? twoMassRun->events.size() : series ? series->run.events.size() : 0;
 }
 
 double ShownRun::eventTime(std::size_t k) const {
-  return twoMassEvents ? (*twoMassEvents)[k].t : (*chainEvents)[k].t;
+  return twoMassRun ? twoMassRun->events[k].t : series->run.events[k].t;
 }
 
 core::EventType ShownRun::eventType(std::size_t k) const {
-  return twoMassEvents ? (*twoMassEvents)[k].type : (*chainEvents)[k].type;
+  return twoMassRun ? twoMassRun->events[k].type : series->run.events[k].type;
 }
 
 double ShownRun::eventU(std::size_t k, int i) const {
-  if (twoMassEvents) return i == 0 ? (*twoMassEvents)[k].before.u1 : (*twoMassEvents)[k].before.u2;
-  return (*chainEvents)[k].u[i];
+  if (twoMassRun) return i == 0 ? twoMassRun->events[k].before.u1 : twoMassRun->events[k].before.u2;
+  return series->run.events[k].u[i];
 }
 
 double ShownRun::eventVBefore(std::size_t k, int i) const {
-  if (twoMassEvents) return i == 0 ? (*twoMassEvents)[k].before.v1 : (*twoMassEvents)[k].before.v2;
-  return (*chainEvents)[k].vBefore[i];
+  if (twoMassRun) return i == 0 ? twoMassRun->events[k].before.v1 : twoMassRun->events[k].before.v2;
+  return series->run.events[k].vBefore[i];
 }
 
 std::optional<ShownRun> shownRun(const SimUpdate& update) {
@@ -93,18 +93,16 @@ std::optional<ShownRun> shownRun(const SimUpdate& update) {
     run.samples = StateSpan(series->grid);
     run.stopped = series->chain.stopped() - 1;
     run.gap = series->chain.gap;
-    run.unit =
-        series->period > 0
-            ? TimeUnit{series->period, tr("T"), tr("the chain's common period T")}
-            : TimeUnit{2 * std::numbers::pi / series->modes.omega.minCoeff(), tr("slowest period"),
-                       tr("its slowest period (it has no common one)")};
+    run.slowestPeriod = 2 * std::numbers::pi / series->modes.omega.minCoeff();
+    run.unit = series->period > 0 ? TimeUnit{series->period, tr("T"), tr("the chain's common period T")}
+                                  : TimeUnit{run.slowestPeriod, tr("slowest period"),
+                                             tr("its slowest period (it has no common one)")};
     run.speed = run.gap * series->modes.omega.maxCoeff();
     run.start = series->start;
     run.tFinal = series->run.tFinal;
     run.contactsAsked = series->contactsAsked;
-    run.chainEvents = &series->run.events;
-    run.chainSection = StateSpan(series->section);
-    run.chainFlights = &series->flights;
+    run.series = series.get();
+    run.chain = series->chain;
     run.flightsBounded = series->period > 0;
     // the scene's pair, or mass 1's (u, v) (mass 2's when mass 1 is the stopped one)
     const int n = series->chain.size(), fallback = run.stopped == 0 && n > 1 ? 1 : 0;
@@ -124,9 +122,9 @@ std::optional<ShownRun> shownRun(const SimUpdate& update) {
     run.tFinal = update.result->tFinal;
     run.twoMass = true;
     run.contactsAsked = job.spec.run.maxContacts;
-    run.twoMassEvents = &update.result->events;
-    run.twoMassSection = &update.result->poincare;
-    run.twoMassFlights = &update.result->freeFlights;
+    run.twoMassRun = update.result.get();
+    run.chain = core::massChainOf(model);
+    run.slowestPeriod = modes.T2;
     run.flightsBounded = true;
     run.sectionX = 0;
     run.sectionY = 2;

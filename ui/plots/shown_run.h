@@ -7,6 +7,8 @@
 #include <optional>
 #include <vector>
 
+#include "core/experiments/chain_series.h"
+#include "core/model/mass_chain.h"
 #include "core/solver/chain_run.h"
 #include "core/solver/events.h"
 #include "ui/compute/sim_types.h"
@@ -89,12 +91,14 @@ struct ShownRun {
            flightCount() >= before.flightCount();
   }
 
-  const std::vector<core::Event>* twoMassEvents = nullptr;
-  const std::vector<core::ChainEvent>* chainEvents = nullptr;
-  const std::vector<core::PoincarePoint>* twoMassSection = nullptr;
-  const std::vector<core::FreeFlight>* twoMassFlights = nullptr;
-  const std::vector<core::experiments::ChainFlight>* chainFlights = nullptr;
-  StateSpan chainSection;
+  /// The chain moving (its masses, springs, stop and gap) and its slowest period [time].
+  core::MassChain chain;
+  double slowestPeriod = 0;
+
+  /// where the run is kept (one of the two, owned by `owner`): its events, section and flights
+  /// are read there
+  const core::Result* twoMassRun = nullptr;
+  const core::experiments::ChainSeries* series = nullptr;
 };
 
 /// The run of `update`: its first series of N masses, or its run of the note's chain; none when

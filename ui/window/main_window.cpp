@@ -29,6 +29,7 @@
 
 #include "core/model/two_mass_form.h"
 #include "core/model/model.h"
+#include "core/solver/chain_flight.h"
 #include "ui/compute/derived.h"
 #include "ui/widgets/parameter_panel.h"
 #include "ui/window/presentation_style.h"
@@ -695,7 +696,12 @@ void MainWindow::applyPending() {
     const SceneJob& job = m_displayed->request->job;
     m_panel->setChainSummary(job.chain.summary, job.chain.designs, job.chain.refused);
   } else if (const SimRequest& shown = *m_displayed->request; shown.derived.ok) {
-    m_readout->showModel(shown.derived, core::energy(shown.job.spec.model, shown.job.spec.run.initial));
+    // the energy of the run shown: the note's run, or the first chain's of an experiment of two
+    // masses (the detuned contrast: the panel's chain is its first)
+    const std::vector<core::experiments::ChainSeriesSpec>& chains = shown.job.spec.chains;
+    m_readout->showModel(shown.derived,
+                         chains.empty() ? core::energy(shown.job.spec.model, shown.job.spec.run.initial)
+                                        : core::energy(shown.derived.model, core::twoMassStateOf(chains.front().start)));
   }
   QElapsedTimer cost;
   cost.start();

@@ -165,7 +165,7 @@ QStringList MainWindow::csvHeader() const {
   QStringList header{sessionTitle(shown, scene().massChain()),
                      QStringLiteral("session: %1").arg(QString::fromUtf8(
                          QJsonDocument::fromJson(sessionToJson(shown)).toJson(QJsonDocument::Compact)))};
-  if (m_displayed && scene().massChain()) {
+  if (m_displayed && (scene().massChain() || !m_displayed->request->job.spec.chains.empty())) {
     if (!m_displayed->chains.empty()) {
       header.append(QStringLiteral("the run again: %1").arg(chainSimulateCommand(*m_displayed->chains.front())));
     }

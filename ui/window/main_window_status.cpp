@@ -85,9 +85,9 @@ void MainWindow::showProblem(const QString& message) {
 }
 
 void MainWindow::showStatus(const SimUpdate& update) {
-  if (scene().massChain()) {
-    // a chain of N masses: the scene's words, then its first run's (no two-mass run is made);
-    // the linear motion alone (a free series) has no run to tell
+  if (!update.request->job.spec.chains.empty() || scene().massChain()) {
+    // an experiment of chains: the scene's words, then its first run's (no two-mass run is
+    // made); the linear motion alone (a free series) has no run to tell
     const SceneJob& job = update.request->job;
     QString text = job.ok ? job.status : tr("Not computed: %1").arg(job.message);
     const bool free = job.spec.chains.empty() || job.spec.chains.front().free;

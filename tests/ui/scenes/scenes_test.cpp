@@ -95,22 +95,24 @@ class ScenesTest : public QObject {
       const Scene& scene = m_window->scene();
       const QString name = scene.name();
       QVERIFY2(m_window->problem().isEmpty(), qPrintable(name + ": " + m_window->problem()));
-      // an N-mass scene runs its chains and no two-mass run beside them; a two-mass scene no chain
+      // a scene runs chains (every N-mass scene, and the two-mass detuned contrast) or the note's
+      // run, never both, and nothing empty beside them
       const SimUpdate& shown = *m_window->displayed();
-      QVERIFY2(shown.request->job.spec.chains.empty() != scene.massChain(), qPrintable(name));
-      QVERIFY2(bool(shown.result) != scene.massChain(), qPrintable(name));
+      const bool chains = !shown.request->job.spec.chains.empty();
+      QVERIFY2(chains || !scene.massChain(), qPrintable(name));
+      QVERIFY2(bool(shown.result) != chains, qPrintable(name));
       QVERIFY2(shown.chains.size() == shown.request->job.spec.chains.size(), qPrintable(name));
       const auto& needs = shown.request->job.spec.run.needs;
-      // (a scene of N masses runs no two-mass run: it asks it for nothing)
-      const bool dense = !scene.massChain() && (shows(scene, PlotKind::Trace) || shows(scene, PlotKind::Phase) ||
-                                                shows(scene, PlotKind::PhaseU1V1) || shows(scene, PlotKind::Chain));
+      // (a scene of chains runs no two-mass run: it asks it for nothing)
+      const bool dense = !chains && (shows(scene, PlotKind::Trace) || shows(scene, PlotKind::Phase) ||
+                                     shows(scene, PlotKind::PhaseU1V1) || shows(scene, PlotKind::Chain));
       QVERIFY2((needs.samples.spacing > 0) == dense, qPrintable(name));
-      QVERIFY2(needs.poincare == (!scene.massChain() && (shows(scene, PlotKind::Poincare) || shows(scene, PlotKind::Landscape))),
+      QVERIFY2(needs.poincare == (!chains && (shows(scene, PlotKind::Poincare) || shows(scene, PlotKind::Landscape))),
                qPrintable(name));
       QVERIFY2(m_window->displayed()->request->job.spec.map.has_value() == shows(scene, PlotKind::Landscape),
                qPrintable(name));
-      QVERIFY2(needs.freeFlights == (!scene.massChain() && shows(scene, PlotKind::FreeFlight)), qPrintable(name));
-      QVERIFY2(scene.massChain() || needs.events == (shows(scene, PlotKind::Trace) || shows(scene, PlotKind::Chain)),
+      QVERIFY2(needs.freeFlights == (!chains && shows(scene, PlotKind::FreeFlight)), qPrintable(name));
+      QVERIFY2(chains || needs.events == (shows(scene, PlotKind::Trace) || shows(scene, PlotKind::Chain)),
                qPrintable(name));
       QVERIFY2(bool(m_window->chainView()) == shows(scene, PlotKind::Chain), qPrintable(name));
       // every view it lists is on screen, each curve view with its figure
@@ -122,9 +124,7 @@ class ScenesTest : public QObject {
         const bool curve = kind == PlotKind::OnePeriodicData || kind == PlotKind::ImpactSpeed ||
                            kind == PlotKind::FrequencyEnergy ||
                            kind == PlotKind::GrazingMaximum || kind == PlotKind::SpreadAgainstSize ||
-                           kind == PlotKind::FlightHistogram || kind == PlotKind::DetunedFlights ||
-                           kind == PlotKind::ResonantFlights ||
-                           kind == PlotKind::GrazingSet;
+                           kind == PlotKind::FlightHistogram || kind == PlotKind::GrazingSet;
         if (curve) QVERIFY2(m_window->displayed()->request->job.figures.count(kind), qPrintable(name));
       }
       QVERIFY2(!scene.description().isEmpty(), qPrintable(name));
@@ -298,23 +298,30 @@ class ScenesTest : public QObject {
     QVERIFY(has(grazelab::core::EventType::Impact));
   }
 
-  // off 1:2 the free-flight time passes T2; in resonance it never does
+  // off 1:2 the free-flight time passes T2; in resonance it never does: one experiment of two
+  // runs from the same start, read from the views that draw them
   void detunedFlightsPassT2AndResonantOnesDoNot() {
     m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("detuned")));
     QVERIFY(waitForLatestFinal(*m_window, 60000));
-    const CurveFigure& detuned = figure(*m_window, PlotKind::DetunedFlights);
-    const CurveFigure& resonant = figure(*m_window, PlotKind::ResonantFlights);
-    QVERIFY(!detuned.curve.empty() && !resonant.curve.empty());
-    const auto highest = [](const CurveFigure& f) {
-      double top = 0;
-      for (const QPointF& point : f.curve) top = std::max(top, point.y());
-      return top;
+    const std::vector<QPointF> resonant = flightPlot(*m_window).flights().toVector();
+    QVERIFY(resonant.size() > 100);
+    for (const QPointF& point : resonant) QVERIFY2(point.y() <= 1.0, qPrintable(QString::number(point.y())));
+    auto* contrast = m_window->findChild<ContrastFlightsPlot*>();
+    QVERIFY(contrast);
+    double longest = 0;
+    for (const QPointF& point : contrast->below().toVector()) longest = std::max(longest, point.y());
+    for (const QPointF& point : contrast->past().toVector()) longest = std::max(longest, point.y());
+    QVERIFY2(longest > 1.05, qPrintable(QString::number(longest)));
+    // the runs are the two chains: the 1:2 design, and k2 for the slider's ratio
+    const auto& chains = m_window->displayed()->chains;
+    QCOMPARE(chains.size(), std::size_t(2));
+    const auto ratio = [](const grazelab::core::experiments::ChainSeries& series) {
+      return series.modes.omega.maxCoeff() / series.modes.omega.minCoeff();
     };
-    QVERIFY(highest(detuned) > 1.05);
-    QVERIFY(highest(resonant) <= 1.0);
-    const auto& model = m_window->displayed()->request->job.spec.model;
-    const auto modes = grazelab::core::computeModes(model);
-    QVERIFY(std::abs(modes.omegaFast / modes.omegaSlow - m_window->params().frequencyRatio) < 1e-9);
+    QVERIFY(std::abs(ratio(*chains[0]) - 2) < 1e-12);
+    QVERIFY(std::abs(ratio(*chains[1]) - m_window->params().frequencyRatio) < 1e-9);
+    QCOMPARE(chains[0]->start.u, chains[1]->start.u);
+    QCOMPARE(chains[0]->start.v, chains[1]->start.v);
   }
 
   // a chain of N masses (issue 33): designed for 1:2:3 its frequencies are in the ratio and no
