@@ -5,8 +5,8 @@
 // every 100 ms: Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the
 // command's latest progress goes to the caller's callback, both on the caller's thread.
 // grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy.
-// `simulate` is the typed command (commands/simulation.h): its options by name, no command-line
-// text, its outcome handed over as values and its events as arrays; a chain of N masses is
+// `simulate` and `orbit` are typed commands (commands/simulation.h, commands/periodic_orbit.h): their
+// options by name, no command-line text, their outcomes handed over as values (and events as arrays); a chain of N masses is
 // prepared once (prepare_chain: grazelab.Chain) for every run of it.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "cli_run.h"
+#include "commands/orbit_command.h"
 #include "commands/simulate_command.h"
 #include "core/experiments/maps.h"
 #include "exit_codes.h"
@@ -433,6 +434,44 @@ std::optional<std::vector<grazelab::cli::GivenOption>> givenOptions(const py::se
   return named;
 }
 
+// orbit(options, result_type) -> its document as values: the typed orbit (commands/periodic_orbit.h)
+// of the options given by name as (flag, text) pairs (text None for the bare --onepp), on a thread
+// of its own that Ctrl+C stops; ValueError with the command line's line when there is none.
+py::object orbitCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                        const py::object& resultType) {
+  std::vector<grazelab::cli::GivenOption> named;
+  for (const auto& [flag, text] : given) {
+    named.push_back({flag, text ? QString::fromStdString(*text) : QString(), {}, false});
+  }
+  const grazelab::cli::OptionValues options(std::move(named));
+  QString error;
+  const std::optional<grazelab::cli::OrbitRequest> request = grazelab::cli::readOrbitRequest(options, error);
+  if (!request) throw py::value_error(error.simplified().toStdString());
+  grazelab::cli::OrbitOutcome outcome;
+  std::optional<QString> refused;  // the chain's refusal
+  std::stop_source stop;
+  std::optional<py::error_already_set> pythonError;
+  interruptibly(
+      stop,
+      [&](std::stop_token token) {
+        const auto chain = grazelab::cli::twoMassChainOf(options, token);
+        if (!chain.value) {
+          refused = chain.error;
+          return 0;
+        }
+        outcome = grazelab::cli::solveOrbit(**chain.value, *request, std::move(token));
+        return 0;
+      },
+      {}, pythonError);
+  if (pythonError) throw std::move(*pythonError);
+  if (refused) throw py::value_error(refused->simplified().toStdString());
+  if (outcome.status != grazelab::cli::OrbitStatus::Found) {
+    throw py::value_error(QString::fromStdString(outcome.problem).simplified().toStdString());
+  }
+  const grazelab::cli::JsonValue document = grazelab::cli::orbitDocument(outcome);
+  return documentToPython(document, resultType, document.holdsWideNumbers());
+}
+
 // grazelab.Chain's native half: a chain of N masses read, checked and designed once, shared by
 // every run of it (cli::PreparedMassChain).
 struct ChainHandle {
@@ -579,6 +618,10 @@ PYBIND11_MODULE(_native, module) {
       .def_property_readonly("period", [](const ChainHandle& chain) {
         return chain.chain->ready<double>().value->dynamics.period;
       }, "The common period of a commensurate chain, 0 otherwise.");
+  module.def("orbit", &orbitCommand, py::arg("options"), py::arg("result_type"),
+             "grazelab-cli orbit's typed command, its options as (flag, text) pairs (text None for the bare "
+             "--onepp): its document as values of result_type (in long double or binary128 also as text, "
+             "under 'decimal'). Raises ValueError with the command line's line when there is no orbit.");
   module.def("prepare_chain", &prepareChain, py::arg("options"),
              "A chain of N masses from its options as (name, text, ...): masses, springs, right-spring, "
              "stop-mass, gap, frequencies, design-branch. Raises ValueError when there is none.");

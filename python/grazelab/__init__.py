@@ -37,6 +37,7 @@ import numpy as _np
 from . import _convert
 from ._convert import Result
 from ._native import command as _run_command
+from ._native import orbit as _orbit
 from ._native import prepare_chain as _prepare_chain
 from ._native import simulate as _simulate_here
 from ._native import simulate_chain as _simulate_chain
@@ -472,7 +473,12 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
                               masses, springs, right_spring, stop_mass, frequencies, design_branch)
     if onepp is not None:
         options.update(onepp=True, period=onepp)
-    result, _ = _command("orbit", options, document=True)
+    # the typed command: its options by name, its document as values
+    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ("onepp",))
+    try:
+        result = _orbit(given, Result)
+    except ValueError as error:
+        raise ValueError(_message(str(error))) from None
     result["multipliers"] = _convert.multipliers(result["multipliers"])
     return result
 

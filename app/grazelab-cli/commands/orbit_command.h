@@ -5,8 +5,12 @@
 #include <QString>
 #include <QStringList>
 
+#include <memory>
+#include <optional>
 #include <stop_token>
 
+#include "commands/periodic_orbit.h"
+#include "io/cli_input.h"
 #include "io/cli_io.h"
 #include "io/option_values.h"
 
@@ -23,5 +27,14 @@ void addOrbitOptions(QCommandLineParser& parser);
 /// object on stdout. Exit 2 with `error` (one line) on invalid input, when Newton does not
 /// converge or when the orbit is not admissible.
 int runOrbit(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
+
+/// The options of `orbit` (--onepp --period, or --impacts --energy --guess; --precision) as a
+/// request; nothing, with `error` the line that says why.
+std::optional<OrbitRequest> readOrbitRequest(const OptionValues& options, QString& error);
+
+/// The chain of a two-mass command (orbit): a chain given by --masses of another shape is refused
+/// before it is designed; else the chain read, checked and designed once (recentChain). An
+/// interrupted design gives neither a chain nor an error.
+Parsed<std::shared_ptr<const PreparedMassChain>> twoMassChainOf(const OptionValues& options, std::stop_token stop = {});
 
 }  // namespace grazelab::cli

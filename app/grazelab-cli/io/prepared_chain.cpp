@@ -75,6 +75,13 @@ const Parsed<core::BasicReadyChain<S>>& PreparedMassChain::ready() const {
 }
 
 template <typename S>
+const Parsed<ModelInput<S>>& PreparedMassChain::twoMassForm() const {
+  InPrecision<S>& slot = in<S>();
+  std::call_once(slot.formOnce, [&] { slot.form = parseModel<S>(m_options); });
+  return slot.form;
+}
+
+template <typename S>
 const core::ChainShadow<S>& PreparedMassChain::shadow() const {
   InPrecision<S>& slot = in<S>();
   std::call_once(slot.shadowOnce, [&] {
@@ -94,6 +101,7 @@ const core::ChainShadow<S>& PreparedMassChain::shadow() const {
 
 #define GRAZELAB_INSTANTIATE(S)                                                               \
   template const Parsed<core::BasicReadyChain<S>>& PreparedMassChain::ready<S>() const; \
+  template const Parsed<ModelInput<S>>& PreparedMassChain::twoMassForm<S>() const;        \
   template const core::ChainShadow<S>& PreparedMassChain::shadow<S>() const;
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)

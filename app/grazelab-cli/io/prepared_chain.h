@@ -37,6 +37,10 @@ class PreparedMassChain {
   /// cannot be refined for them).
   template <typename S>
   const Parsed<core::BasicReadyChain<S>>& ready() const;
+  /// The chain as the note's two-mass form in S, as the two-mass commands read it (orbit:
+  /// parseModel); or why it has none (another shape, a ratio S cannot hold).
+  template <typename S>
+  const Parsed<ModelInput<S>>& twoMassForm() const;
   /// The shadow of its runs in S: the chain read one precision up (in binary128, scaled); not
   /// usable when it cannot be read there (its `problem` says why).
   template <typename S>
@@ -47,8 +51,9 @@ class PreparedMassChain {
 
   template <typename S>
   struct InPrecision {
-    std::once_flag readyOnce, shadowOnce;
+    std::once_flag readyOnce, shadowOnce, formOnce;
     Parsed<core::BasicReadyChain<S>> ready;
+    Parsed<ModelInput<S>> form;
     core::ChainShadow<S> shadow;
   };
   template <typename S>

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// `orbit`'s request -> outcome: one periodic impacting orbit, its multipliers, stability and
+// checks, in the precision that decides it.
+#include "commands/periodic_orbit.h"
+
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <type_traits>
+
+#include "core/orbits/onepp_family_points.h"
+#include "core/version.h"
+#include "io/prepared_chain.h"
+
+namespace grazelab::cli {
+namespace {
+
+// the closed form's data must be right to this (relative), or a higher precision is needed
+constexpr double kDataAccuracy = 1e-9;
+
+template <typename S>
+JsonValue stateValue(const core::BasicState<S>& x) {
+  return JsonValue::object({{"u1", JsonValue::number(x.u1)},
+                            {"u2", JsonValue::number(x.u2)},
+                            {"v1", JsonValue::number(x.v1)},
+                            {"v2", JsonValue::number(x.v2)}});
+}
+
+template <typename S>
+JsonValue orbitValue(const FoundOrbit<S>& found, core::Precision precision) {
+  using V = JsonValue;
+  const core::PeriodicOrbit<S>& orbit = found.orbit;
+  const core::TwoMassForm<S>& chain = found.chain;
+  const S T2 = core::twoPi<S>() / chain.omegaSlow;
+  std::vector<V> events;
+  for (const core::BasicEvent<S>& e : orbit.events) {
+    events.push_back(V::object({{"t", V::number(e.t)},
+                                {"type", V::of(std::string(core::toString(e.type)))},
+                                {"before", stateValue(e.before)},
+                                {"after", stateValue(e.after)}}));
+  }
+  const auto& mu = orbit.multipliers;
+  const std::string symmetry = core::orbitSymmetry(orbit, core::symmetryTolerance<S>());
+  const core::BasicModel<S>& m = chain.model;
+  return V::object(
+      {{"format", V::of("grazelab-orbit")},
+       {"precision", V::of(std::string(core::toString(precision)))},
+       {"model", V::object({{"m1", V::number(m.m1)},
+                            {"m2", V::number(m.m2)},
+                            {"k1", V::number(m.k1)},
+                            {"k2", V::number(S(chain.kappa * m.k1))},
+                            {"gap", V::number(m.gap)},
+                            {"T2", V::number(T2)}})},
+       {"period", V::number(orbit.period)},
+       {"T_over_T2", V::number(S(orbit.period / T2))},
+       {"energy", V::number(orbit.energy)},
+       {"impacts", V::of(std::int64_t(orbit.impacts))},
+       {"state", stateValue(orbit.state)},
+       {"events", V::array(std::move(events))},
+       {"trace", V::number(orbit.trace)},
+       {"trace_error", V::number(orbit.traceError)},
+       {"multipliers", V::array({V::array({V::number(mu[0][0]), V::number(mu[0][1])}),
+                                 V::array({V::number(mu[1][0]), V::number(mu[1][1])})})},
+       {"stability", V::of(std::string(core::toString(orbit.stability)))},
+       {"symmetry", symmetry.empty() ? V::null() : V::of(symmetry)},
+       {"checks", V::object({{"det_minus_1", V::number(orbit.checks.detMinus1)},
+                             {"trivial_pair", V::number(orbit.checks.trivialPair)},
+                             {"periodicity_residual", V::number(orbit.checks.periodicityResidual)}})},
+       {"min_impact_speed", V::number(orbit.minImpactSpeed)},
+       {"min_clearance", V::number(orbit.minClearance)},
+       {"admissible", V::of(true)},
+       {"reason", V::null()},
+       {"generator", V::of(std::string("grazelab-cli ") + kVersion)}});
+}
+
+// `text` as a number of S, or why not (named as the command line names its option).
+template <typename S>
+std::optional<S> numberIn(const std::string& text, const char* option, std::string& problem) {
+  const core::ParsedScalar<S> parsed = core::parseScalar<S>(text);
+  if (!parsed.value) problem = std::string("--") + option + ": '" + text + "' " + parsed.error;
+  return parsed.value;
+}
+
+template <typename S>
+core::Precision precisionOf() {
+  if constexpr (std::is_same_v<S, double>) return core::Precision::Double;
+  else if constexpr (std::is_same_v<S, long double>) return core::Precision::Long;
+  else return core::Precision::Quad;
+}
+
+// The orbit in precision S.
+template <typename S>
+OrbitOutcome orbitIn(const PreparedMassChain& prepared, const OrbitRequest& request, std::stop_token stop) {
+  OrbitOutcome outcome;
+  outcome.precision = precisionOf<S>();
+  const Parsed<ModelInput<S>>& model = prepared.twoMassForm<S>();
+  if (!model.value) {
+    outcome.problem = model.error.toStdString();
+    return outcome;
+  }
+  const core::TwoMassForm<S>& chain = model.value->chain;
+  core::OrbitSearch<S> search;
+  if (request.impacts == 0) {
+    const std::optional<S> T = numberIn<S>(request.period, "period", outcome.problem);
+    if (!T) return outcome;
+    search = core::onePeriodicOrbitStability(chain, *T);
+    if (!search.orbit && search.refusal != core::OrbitRefusal::Undecided) {
+      // say where the family is, to the resolution of a scan of 400 periods
+      const S T2 = core::twoPi<S>() / chain.omegaSlow;
+      std::string parts;
+      for (const auto& part : core::onePeriodicParts(chain, 400)) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%s[%.4f, %.4f]", parts.empty() ? "" : " and ",
+                      core::toDouble(S(part[0] / T2)), core::toDouble(S(part[1] / T2)));
+        parts += text;
+      }
+      if (!parts.empty()) search.problem += "; this chain's 1IPP orbits have T/T2 in about " + parts;
+    }
+  } else {
+    if (request.impacts < 1 || request.impacts > 64) {
+      outcome.problem = "--impacts: '" + std::to_string(request.impacts) + "' is not a number of impacts from 1 to 64";
+      return outcome;
+    }
+    const std::optional<S> energy = numberIn<S>(request.energy, "energy", outcome.problem);
+    if (!energy) return outcome;
+    if (!(*energy > 0)) {
+      outcome.problem = "--energy: '" + request.energy + "' is not a positive energy";
+      return outcome;
+    }
+    const core::ParsedScalar<S> u1 = core::parseScalar<S>(request.guess[0]);
+    const core::ParsedScalar<S> v1 = core::parseScalar<S>(request.guess[1]);
+    if (!u1.value || !v1.value) {
+      outcome.problem = "--guess: '" + request.guess[0] + "," + request.guess[1] + "' is not two numbers u1,v1";
+      return outcome;
+    }
+    search = core::findOrbit(chain, *energy, *u1.value, *v1.value, request.impacts, stop);
+  }
+  if (!search.orbit) {
+    outcome.problem = "orbit: " + search.problem;
+    if (search.refusal == core::OrbitRefusal::Undecided) outcome.status = OrbitStatus::Undecided;
+    return outcome;
+  }
+  if (core::toDouble(search.dataError) > kDataAccuracy) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "orbit --onepp: this near a multiple of T1 or T2 the closed form's data are right only to "
+                  "about %.1g (relative) in %s: use --precision quad (or auto)",
+                  core::toDouble(search.dataError), std::string(core::toString(outcome.precision)).c_str());
+    outcome.problem = text;
+    outcome.status = OrbitStatus::Undecided;
+    return outcome;
+  }
+  outcome.status = OrbitStatus::Found;
+  outcome.found = FoundOrbit<S>{chain, std::move(*search.orbit)};
+  return outcome;
+}
+
+}  // namespace
+
+OrbitOutcome solveOrbit(const PreparedMassChain& chain, const OrbitRequest& request, std::stop_token stop) {
+  switch (request.precision) {
+    case PrecisionChoice::Double: return orbitIn<double>(chain, request, stop);
+    case PrecisionChoice::Long: return orbitIn<long double>(chain, request, stop);
+    case PrecisionChoice::Quad: return orbitIn<core::Quad>(chain, request, stop);
+    case PrecisionChoice::Auto: break;
+  }
+  // double, and again in long double then binary128 when a contact is too near tangent
+  OrbitOutcome outcome = orbitIn<double>(chain, request, stop);
+  if (outcome.status == OrbitStatus::Undecided) outcome = orbitIn<long double>(chain, request, stop);
+  if (outcome.status == OrbitStatus::Undecided) outcome = orbitIn<core::Quad>(chain, request, stop);
+  return outcome;
+}
+
+JsonValue orbitDocument(const OrbitOutcome& outcome) {
+  return std::visit(
+      [&outcome](const auto& found) -> JsonValue {
+        if constexpr (std::is_same_v<std::decay_t<decltype(found)>, std::monostate>) {
+          return JsonValue::null();
+        } else {
+          return orbitValue(found, outcome.precision);
+        }
+      },
+      outcome.found);
+}
+
+}  // namespace grazelab::cli

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <array>
+#include <stop_token>
+#include <string>
+#include <variant>
+
+#include "commands/simulation.h"
+#include "core/model/two_mass_form.h"
+#include "core/orbits/periodic_orbit.h"
+#include "io/json_value.h"
+
+// `orbit` as a typed command, the one both faces call (as `simulate` is, commands/simulation.h):
+// the command line reads its options into an OrbitRequest and writes the outcome's document; the
+// Python module hands the same document over as values. No Qt: a refusal is a status and its
+// line, the orbit a struct in the precision that found it.
+namespace grazelab::cli {
+
+class PreparedMassChain;
+
+/// One periodic impacting orbit of a two-mass chain: the 1IPP orbit of period `period`
+/// (`impacts` 0), or the orbit of `impacts` impacts per period at energy `energy` that Newton
+/// finds from `guess` (u1, v1 just after an impact on H). Numbers as decimal text, read in the
+/// precision that runs (0.1 is 0.1 to binary128's digits).
+struct OrbitRequest {
+  std::string period;
+  int impacts = 0;
+  std::string energy;
+  std::array<std::string, 2> guess;
+  PrecisionChoice precision = PrecisionChoice::Auto;
+};
+
+enum class OrbitStatus {
+  Found,
+  Refused,    ///< bad input, or no admissible orbit: `problem` says why
+  Undecided,  ///< no precision asked for could decide it (`problem`: which would)
+};
+
+/// An orbit found in precision S, with the chain's form it was found on.
+template <typename S>
+struct FoundOrbit {
+  core::TwoMassForm<S> chain;
+  core::PeriodicOrbit<S> orbit;
+};
+
+struct OrbitOutcome {
+  OrbitStatus status = OrbitStatus::Refused;
+  std::string problem;  ///< why not found, one line
+  core::Precision precision = core::Precision::Double;  ///< the precision that answered (or tried last)
+  std::variant<std::monostate, FoundOrbit<double>, FoundOrbit<long double>, FoundOrbit<core::Quad>> found;
+};
+
+/// The orbit `request` asks for on `chain` (its two-mass form: a chain of other shape is
+/// refused), in the precision asked for; PrecisionChoice::Auto: double, then long double and
+/// binary128 while a contact too near tangent leaves it undecided. `stop` ends a Newton search.
+OrbitOutcome solveOrbit(const PreparedMassChain& chain, const OrbitRequest& request, std::stop_token stop = {});
+
+/// The document of an orbit found (OrbitStatus::Found): the model, period, energy, impacts, state,
+/// events, trace, multipliers, stability, symmetry and checks, every number to the digits of its
+/// precision.
+JsonValue orbitDocument(const OrbitOutcome& outcome);
+
+}  // namespace grazelab::cli
