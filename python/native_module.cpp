@@ -5,7 +5,8 @@
 // every 100 ms: Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the
 // command's latest progress goes to the caller's callback, both on the caller's thread.
 // grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy.
-// `simulate` and `orbit` are typed commands (commands/simulation.h, commands/periodic_orbit.h): their
+// `simulate`, `orbit` and `family` are typed commands (commands/simulation.h, periodic_orbit.h,
+// onepp_family.h): their
 // options by name, no command-line text, their outcomes handed over as values (and events as arrays); a chain of N masses is
 // prepared once (prepare_chain: grazelab.Chain) for every run of it.
 #include <pybind11/numpy.h>
@@ -13,6 +14,7 @@
 #include <pybind11/stl.h>
 
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QString>
 #include <QStringList>
 
@@ -37,6 +39,7 @@
 #include <vector>
 
 #include "cli_run.h"
+#include "commands/family_command.h"
 #include "commands/orbit_command.h"
 #include "commands/simulate_command.h"
 #include "core/experiments/maps.h"
@@ -472,6 +475,61 @@ py::object orbitCommand(const std::vector<std::pair<std::string, std::optional<s
   return documentToPython(document, resultType, document.holdsWideNumbers());
 }
 
+// family(options, result_type, progress) -> (its document as values, its table as a structured
+// array): the typed family (commands/onepp_family.h) of the options given by name as (flag, text)
+// pairs (text None for the bare --onepp), on a thread of its own that Ctrl+C stops, `progress`
+// hearing it on the calling thread; its files written only where --out names them (no picture).
+// The table's rows move into the array (no copy). ValueError with the command line's line when
+// there is no family, OSError when a file could not be written.
+py::tuple familyCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                        const py::object& resultType, const py::object& progress) {
+  std::vector<grazelab::cli::GivenOption> named;
+  for (const auto& [flag, text] : given) {
+    named.push_back({flag, text ? QString::fromStdString(*text) : QString(), {}, false});
+  }
+  const grazelab::cli::OptionValues options(std::move(named));
+  MemoryStream messages;
+  ProgressMailbox mailbox;
+  grazelab::cli::Io io;
+  io.messages = messages.file();
+  if (!progress.is_none()) {
+    io.progress = [&mailbox](double fraction, const std::string& text) {
+      std::lock_guard lock(mailbox.mutex);
+      mailbox.fresh = true;
+      mailbox.fraction = fraction;
+      mailbox.text = text;
+    };
+  }
+  QString error;
+  grazelab::cli::FamilyRun run;
+  std::stop_source stop;
+  std::optional<py::error_already_set> pythonError;
+  interruptibly(
+      stop,
+      [&](std::stop_token token) {
+        run = grazelab::cli::familyWithFiles(options, io, std::move(token), error, false);
+        return run.code;
+      },
+      [&] { return progress.is_none() || deliverProgress(mailbox, progress, pythonError); }, pythonError);
+  if (!pythonError && run.code == 0 && !progress.is_none()) deliverProgress(mailbox, progress, pythonError);
+  if (pythonError) throw std::move(*pythonError);
+  if (run.code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
+  if (run.code != 0) throw std::runtime_error(error.simplified().toStdString());
+  grazelab::cli::FamilyOutcome& outcome = run.outcome;
+  const std::optional<std::string> files =
+      options.isSet("out") ? std::optional(QFileInfo(options.value("out")).fileName().toStdString()) : std::nullopt;
+  const grazelab::cli::JsonValue document = grazelab::cli::familyDocument(outcome, files);
+  py::list fields;
+  for (const std::string& column : outcome.columns) fields.append(py::make_tuple(column, "<f8"));
+  const py::dtype dtype = py::dtype::from_args(fields);
+  const std::size_t rows = outcome.rows();
+  auto* table = new std::vector<double>(std::move(outcome.table));
+  py::capsule owner(table, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  const py::array array(dtype, {static_cast<py::ssize_t>(rows)}, {static_cast<py::ssize_t>(dtype.itemsize())},
+                        table->data(), owner);
+  return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()), array);
+}
+
 // grazelab.Chain's native half: a chain of N masses read, checked and designed once, shared by
 // every run of it (cli::PreparedMassChain).
 struct ChainHandle {
@@ -622,6 +680,10 @@ PYBIND11_MODULE(_native, module) {
              "grazelab-cli orbit's typed command, its options as (flag, text) pairs (text None for the bare "
              "--onepp): its document as values of result_type (in long double or binary128 also as text, "
              "under 'decimal'). Raises ValueError with the command line's line when there is no orbit.");
+  module.def("family", &familyCommand, py::arg("options"), py::arg("result_type"), py::arg("progress") = py::none(),
+             "grazelab-cli family --onepp's typed command, its options as (flag, text) pairs (text None for the bare "
+             "--onepp): (its document as values of result_type, its table as a structured array); its files "
+             "written only where --out names them, without pictures. ValueError when there is no family.");
   module.def("prepare_chain", &prepareChain, py::arg("options"),
              "A chain of N masses from its options as (name, text, ...): masses, springs, right-spring, "
              "stop-mass, gap, frequencies, design-branch. Raises ValueError when there is none.");

@@ -12,7 +12,6 @@
 #include <functional>
 #include <vector>
 
-#include "commands/chain_family_command.h"
 #include "commands/family_command.h"
 #include "commands/glo_set_command.h"
 #include "commands/map_command.h"
@@ -180,13 +179,11 @@ const std::vector<Command>& commands() {
       {"family", kChain + kMassChain + QStringList{"precision", "onepp", "out", "count"}, false,
        [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
-         if (std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return options.isSet(name); })) {
-           if (!options.isSet("masses")) return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
-           if (!options.isSet("onepp")) return fail(io, "family: name the family: --onepp (one impact per period)");
-           // the note's chain, however written, is the note's family (its engine, its files)
-           if (writesTheNotesChain(options)) return ended(io, runFamily(options, io, stop, error), error);
-           return ended(io, runChainFamily(options, io, stop, error), error);
+         if (std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return options.isSet(name); }) &&
+             !options.isSet("masses")) {
+           return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
          }
+         // (the note's chain, however written, is the note's family: its engine, its files)
          return ended(io, runFamily(options, io, stop, error), error);
        },
        {}},

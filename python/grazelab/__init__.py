@@ -37,6 +37,7 @@ import numpy as _np
 from . import _convert
 from ._convert import Result
 from ._native import command as _run_command
+from ._native import family as _family
 from ._native import orbit as _orbit
 from ._native import prepare_chain as _prepare_chain
 from ._native import simulate as _simulate_here
@@ -622,13 +623,19 @@ def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
     elif frequencies is not None or design_branch is not None or springs is not None:
         raise ValueError("springs, frequencies and design_branch describe a chain given by masses")
-    _, held = _command("family", dict(options, out=out), progress, keep_files=True)
-    files = _Files(out, "family", held)
-    # numbers are floats; in long or quad also as the exact text written, under ``decimal``
-    result = _convert.parse_json(files.read(".json").decode("utf-8"), exact_decimals=precision in ("long", "quad"))
-    result["table"] = _convert.table_from_bytes(files.read(".npy"), files.read(".csv"))
-    if out is None:
-        result.pop("files")
+    # the typed command: numbers are floats; in long or quad also as the exact text written, under
+    # ``decimal``; the table is the command's own rows (no file read back)
+    given = _convert.option_texts({name: value for name, value in dict(options, out=out).items() if value is not None},
+                                  ("onepp",))
+    try:
+        result, table = _family(given, Result, progress)
+    except ValueError as error:
+        raise ValueError(_message(str(error))) from None
+    except RuntimeError as error:
+        raise OSError(_message(str(error))) from None
+    if progress is not None:
+        progress(1.0, "done")
+    result["table"] = table
     return result
 
 

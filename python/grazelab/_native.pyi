@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
 """The compiled part of the module (python/native_module.cpp): the command line's commands run in
-process by name, ``simulate`` and ``orbit`` as typed commands. Not for direct use: the functions of
+process by name, ``simulate``, ``orbit`` and ``family`` as typed commands. Not for direct use: the functions of
 ``grazelab`` call it."""
 
 from typing import Callable, Dict, List, Optional, Tuple
@@ -19,6 +19,9 @@ def command(name: str, options: List[Tuple[str, Optional[str]]], operands: List[
 def simulate(options: tuple, result_type: type, events: bool = ...,
              max_events: int = ..., discard_events: bool = ..., direct: bool = ...
              ) -> Optional[Tuple[dict, Optional[List[str]]]]: ...
+
+def family(options: List[Tuple[str, Optional[str]]], result_type: type,
+           progress: Optional[Callable[[Optional[float], str], None]] = ...) -> Tuple[dict, np.ndarray]: ...
 
 def orbit(options: List[Tuple[str, Optional[str]]], result_type: type) -> dict: ...
 

@@ -94,6 +94,13 @@ PY
 # just below T1 (lower design) the orbit exists: it is found, not refused as "does not close"
 expect_ok orbit --onepp --m2 0.5 --branch lower --period 5.4408539528933835 || exit 1
 python3 -c "import json,sys; o=json.load(open(sys.argv[1])); assert o['admissible'] and abs(float(o['state']['v2']) + 0.0032648415408) < 1e-12, o['state']" "$out" || fail "1IPP orbit just below T1"
+# a gap beyond double's range is read by the precision that holds it (not refused by double's
+# reading of the chain first)
+expect_ok orbit --onepp --period 8 --precision quad --gap 1e-400 || exit 1
+python3 -c "import json,sys; from decimal import Decimal; o=json.load(open(sys.argv[1]), parse_float=Decimal)
+assert o['precision'] == 'quad' and abs(o['model']['gap'] / Decimal('1e-400') - 1) < Decimal('1e-30'), o['model']" "$out" \
+  || fail "a gap of 1e-400 in binary128"
+EXPECT_WORD="out of range" expect_invalid orbit --onepp --period 8 --precision double --gap 1e-400
 
 if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
 echo "orbit: all checks passed"

@@ -49,19 +49,21 @@ void newtonFindsTheClosedForm(const Options& chainOptions, double fractionOfT2) 
   ASSERT_EQ(byClosedForm.status, OrbitStatus::Found) << byClosedForm.problem;
   const core::PeriodicOrbit<double>& orbit = foundIn(byClosedForm).orbit;
 
+  // Newton from a guess 1e-4 off the orbit's point (u1 moved; v1 = 0 on a symmetric orbit)
   OrbitRequest newton;
   newton.impacts = 1;
   char text[64];
   std::snprintf(text, sizeof text, "%.17g", orbit.energy);
   newton.energy = text;
-  std::snprintf(text, sizeof text, "%.17g", orbit.state.u1);
+  std::snprintf(text, sizeof text, "%.17g", orbit.state.u1 * (1 + 1e-4));
   newton.guess[0] = text;
-  std::snprintf(text, sizeof text, "%.17g", orbit.state.v1);
+  std::snprintf(text, sizeof text, "%.17g", orbit.state.v1 + 1e-4 * std::abs(orbit.state.u1));
   newton.guess[1] = text;
   newton.precision = PrecisionChoice::Double;
   const OrbitOutcome byNewton = solveOrbit(*chain, newton);
   ASSERT_EQ(byNewton.status, OrbitStatus::Found) << byNewton.problem;
   const core::PeriodicOrbit<double>& found = foundIn(byNewton).orbit;
+  EXPECT_NEAR(found.state.u1, orbit.state.u1, 1e-9 * std::abs(orbit.state.u1));
   EXPECT_NEAR(found.period, orbit.period, 1e-10 * orbit.period);
   EXPECT_NEAR(found.trace, orbit.trace, 1e-8);
   EXPECT_EQ(found.stability, orbit.stability);

@@ -20,6 +20,8 @@ QString tr(const char* text) {
 
 // the trace spans four slow periods (as the N-mass scenes' do), on this many points
 constexpr int kGridPoints = 1500;
+// the contrast's contacts at most
+constexpr int kContrastContacts = 2000;
 
 }  // namespace
 
@@ -32,8 +34,8 @@ Scene::Spec detunedScene() {
   scene.alias = QStringLiteral("detuned");
   scene.title = tr("Detuned contrast: off 1:2 resonance");
   scene.text = tr("<b>Why the resonance matters.</b> The same start on two chains: one tuned "
-                  "to ω₁/ω₂ = 2 exactly (left, and its motion below), one with k₂ chosen for the "
-                  "ratio on the slider (right). <i>Look for:</i> in resonance every free-flight "
+                  "to ω₁/ω₂ = 2 exactly (left; its motion u₂(t) bottom right), one with k₂ chosen "
+                  "for the ratio on the slider (top right). <i>Look for:</i> in resonance every free-flight "
                   "time stays at or below T₂; detuned, the times scatter, pass T₂ and grow "
                   "without a bound as the ratio leaves 2. <i>Why:</i> only at ω₁ = 2 ω₂ does "
                   "every free motion repeat after T₂; the theorems need that.");
@@ -74,17 +76,20 @@ Scene::Spec detunedScene() {
     for (const std::string& note : made.start->notes) job.notes.append(QString::fromStdString(note));
     const core::ChainState start = core::chainStateOf(made.start->state);
     const double T2 = core::computeModes(*resonant).T2;
-    // at most 2000 contacts a chain: the pair is drawn whole; the contrast's flights alone (no
-    // error estimate, which would cost more than the rest of the scene)
-    const long contacts = long(std::min(params.horizon, 2000.0));
-    job.spec.chains = {{core::massChainOf(*resonant), start, contacts, 4 * T2, kGridPoints, core::TrustMode::Auto},
-                       {core::massChainOf(detuned), start, contacts, 0, 0, core::TrustMode::Off}};
+    // the contrast's flights alone, at most kContrastContacts of them (a detuned flight may be
+    // searched for 1000 slow periods), and no error estimate, which would cost more than the rest
+    // of the scene
+    const long contrast = long(std::min(params.horizon, double(kContrastContacts)));
+    job.spec.chains = {
+        {core::massChainOf(*resonant), start, long(params.horizon), 4 * T2, kGridPoints, core::TrustMode::Auto},
+        {core::massChainOf(detuned), start, contrast, 0, 0, core::TrustMode::Off}};
     job.viewWords[PlotKind::ContrastFlights] = {
         tr("Detuned, ω₁/ω₂ = %1").arg(params.frequencyRatio, 0, 'g', 5),
         tr("The same start on the chain with k₂ chosen for ω₁/ω₂ = %1: each free flight from the stop, over "
-           "the resonant chain's T₂. In 1:2 resonance no flight lasts longer (Theorem 2.3); detuned, the "
-           "times wander and can be far longer.")
-            .arg(params.frequencyRatio, 0, 'g', 5),
+           "the resonant chain's T₂ (its first %2 contacts at most). In 1:2 resonance no flight lasts longer "
+           "(Theorem 2.3); detuned, the times wander and can be far longer.")
+            .arg(params.frequencyRatio, 0, 'g', 5)
+            .arg(kContrastContacts),
         QString()};
     job.ok = true;
     return job;

@@ -29,7 +29,7 @@
 
 #include "core/model/two_mass_form.h"
 #include "core/model/model.h"
-#include "core/solver/chain_flight.h"
+#include "core/solver/chain_run.h"
 #include "ui/compute/derived.h"
 #include "ui/widgets/parameter_panel.h"
 #include "ui/window/presentation_style.h"
@@ -223,7 +223,8 @@ void MainWindow::buildMenus() {
       [this](bool whole) {
         for (SceneView* view : m_sceneViews) view->setWholeRun(whole);
         // a chain's grid spans what is shown: computed again over the whole run, or its start
-        if (scene().massChain()) recompute();
+        const bool chains = m_displayed && !m_displayed->request->job.spec.chains.empty();
+        if (scene().massChain() || chains) recompute();
       });
   m_wholeRunAction->setCheckable(true);
   add(view, tr("Play / &pause the motion"), {QKeySequence(Qt::Key_Space)},
@@ -697,11 +698,11 @@ void MainWindow::applyPending() {
     m_panel->setChainSummary(job.chain.summary, job.chain.designs, job.chain.refused);
   } else if (const SimRequest& shown = *m_displayed->request; shown.derived.ok) {
     // the energy of the run shown: the note's run, or the first chain's of an experiment of two
-    // masses (the detuned contrast: the panel's chain is its first)
+    // masses (the detuned contrast's 1:2 design, whatever the panel's design box says)
     const std::vector<core::experiments::ChainSeriesSpec>& chains = shown.job.spec.chains;
-    m_readout->showModel(shown.derived,
-                         chains.empty() ? core::energy(shown.job.spec.model, shown.job.spec.run.initial)
-                                        : core::energy(shown.derived.model, core::twoMassStateOf(chains.front().start)));
+    m_readout->showModel(shown.derived, chains.empty()
+                                            ? core::energy(shown.job.spec.model, shown.job.spec.run.initial)
+                                            : core::chainEnergy(chains.front().chain, chains.front().start));
   }
   QElapsedTimer cost;
   cost.start();

@@ -33,8 +33,9 @@ int runOrbit(const OptionValues& options, const Io& io, std::stop_token stop, QS
 std::optional<OrbitRequest> readOrbitRequest(const OptionValues& options, QString& error);
 
 /// The chain of a two-mass command (orbit): a chain given by --masses of another shape is refused
-/// before it is designed; else the chain read, checked and designed once (recentChain). An
-/// interrupted design gives neither a chain nor an error.
+/// before it is designed; else the chain read and checked once (recentChain), its two-mass form
+/// read once in each precision asked for. An interrupted design gives neither a chain nor an
+/// error.
 Parsed<std::shared_ptr<const PreparedMassChain>> twoMassChainOf(const OptionValues& options, std::stop_token stop = {});
 
 }  // namespace grazelab::cli

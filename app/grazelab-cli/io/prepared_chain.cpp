@@ -16,8 +16,11 @@ Parsed<std::shared_ptr<const PreparedMassChain>> PreparedMassChain::make(const O
   // design search; a ratio beyond double's range left to the precisions that hold it)
   const bool notesOptions = !options.isSet("masses");
   if (notesOptions || writesTheNotesChain(options)) {
+    // (a number beyond double's range, --gap 1e-400, is left to the precisions that hold it too)
     const Parsed<ModelInput<double>> model = parseModel<double>(options);
-    if (!model.value && !model.precisionBound) return {std::nullopt, model.error};
+    if (!model.value && !model.precisionBound && !parseModel<core::Quad>(options).value) {
+      return {std::nullopt, model.error};
+    }
     // (an option not given reads as its default there too)
     std::vector<GivenOption> own;
     for (const char* name : {"masses", "springs", "gap", "frequencies", "design-branch", "m1", "m2", "k1", "k2", "branch"}) {

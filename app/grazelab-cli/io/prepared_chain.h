@@ -33,6 +33,9 @@ class PreparedMassChain {
   /// writesTheNotesChain says), read in each precision by the note's reader (parseModel).
   bool isTheNotesChain() const { return m_notes; }
 
+  /// The chain as read in double, with the design its springs came from (a chain of N masses;
+  /// empty for the note's chain, which isTheNotesChain reads by the note's reader).
+  const MassChainInput& input() const { return m_input; }
   /// The chain in S, ready to run; or why its numbers cannot be read there (a design that
   /// cannot be refined for them).
   template <typename S>

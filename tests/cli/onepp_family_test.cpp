@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// The typed family (commands/onepp_family.h), as the command line and the Python module call it:
+// the note's chain gives the same table however it is written; every admissible row's class is
+// its trace's; a chain of N masses tends to its grazing limit (V -> 0, weights summing to 1); the
+// refusals come before any of it is computed; the document names its files only when written.
+#include <gtest/gtest.h>
+
+#include <QString>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numeric>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "commands/onepp_family.h"
+#include "commands/simulate_command.h"
+#include "core/orbits/periodic_orbit.h"
+#include "io/option_values.h"
+#include "io/prepared_chain.h"
+
+namespace grazelab::cli {
+namespace {
+
+using Options = std::vector<std::pair<QString, QString>>;
+
+std::shared_ptr<const PreparedMassChain> chainOf(const Options& options) {
+  auto made = PreparedMassChain::make(OptionValues(options));
+  EXPECT_TRUE(made.value) << made.error.toStdString();
+  return *made.value;
+}
+
+FamilyOutcome familyOf(const Options& options, std::int64_t count, PrecisionChoice precision = PrecisionChoice::Auto) {
+  FamilyRequest request;
+  request.count = count;
+  request.precision = precision;
+  return onePeriodicFamily(*chainOf(options), request);
+}
+
+double at(const FamilyOutcome& outcome, std::size_t row, const char* column) {
+  const auto found = std::find(outcome.columns.begin(), outcome.columns.end(), column);
+  return outcome.table[row * outcome.columns.size() + std::size_t(found - outcome.columns.begin())];
+}
+
+TEST(TypedFamily, TheNotesChainHoweverWrittenGivesOneTableWhoseClassesAreItsTraces) {
+  const FamilyOutcome byNotes = familyOf({{"m2", "0.125"}}, 300);
+  ASSERT_EQ(byNotes.status, FamilyStatus::Computed) << byNotes.problem;
+  ASSERT_TRUE(std::holds_alternative<NotesFamily>(byNotes.of));
+  const FamilyOutcome byMasses = familyOf({{"masses", "1,0.125"}, {"frequencies", "2:1"}}, 300);
+  ASSERT_EQ(byMasses.status, FamilyStatus::Computed) << byMasses.problem;
+  EXPECT_EQ(byNotes.columns, byMasses.columns);
+  ASSERT_EQ(byNotes.table.size(), byMasses.table.size());
+  for (std::size_t i = 0; i < byNotes.table.size(); ++i) {
+    const double a = byNotes.table[i], b = byMasses.table[i];
+    ASSERT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << i << ": " << a << " " << b;
+  }
+  std::int64_t admissible = 0;
+  for (std::size_t row = 0; row < byNotes.rows(); ++row) {
+    const double trace = at(byNotes, row, "trace"), code = at(byNotes, row, "stability");
+    if (at(byNotes, row, "admissible") == 0) {
+      EXPECT_TRUE(std::isnan(trace) && std::isnan(code)) << row;
+      continue;
+    }
+    ++admissible;
+    ASSERT_TRUE(std::isfinite(trace)) << row;
+    const auto stability = core::Stability(int(code));
+    const core::Stability expected = std::abs(trace) < 2 - 1e-9 ? core::Stability::Elliptic
+                                     : trace > 2 + 1e-9        ? core::Stability::Hyperbolic
+                                     : trace < -2 - 1e-9       ? core::Stability::FlipHyperbolic
+                                                               : stability;  // (parabolic within rounding)
+    EXPECT_EQ(stability, expected) << row << " tr " << trace;
+  }
+  EXPECT_EQ(admissible, byNotes.admissible);
+  EXPECT_GT(admissible, 100);
+  // the document: its rows, and the files only when written
+  const JsonValue unwritten = familyDocument(byNotes, std::nullopt);
+  EXPECT_EQ(unwritten.find("rows")->integer, std::int64_t(byNotes.rows()));
+  EXPECT_EQ(unwritten.find("files"), nullptr);
+  EXPECT_EQ(familyDocument(byNotes, "f").find("files")->find("csv")->text, "f.csv");
+}
+
+TEST(TypedFamily, AChainOfThreeMassesTendsToItsGrazingLimit) {
+  const FamilyOutcome outcome = familyOf({{"masses", "1,0.2,0.05"}, {"frequencies", "3:2:1"}}, 400);
+  ASSERT_EQ(outcome.status, FamilyStatus::Computed) << outcome.problem;
+  const auto& family = std::get<ChainFamily>(outcome.of);
+  EXPECT_EQ(outcome.columns.size(), 5u + 3u);
+  EXPECT_NEAR(std::accumulate(family.weights.begin(), family.weights.end(), 0.0), 1.0, 1e-12);
+  // the admissible rows nearest T_max have the smallest impact speeds
+  double lastV = 0, lastT = 0;
+  for (std::size_t row = 0; row < outcome.rows(); ++row) {
+    if (at(outcome, row, "admissible") == 0) continue;
+    lastV = at(outcome, row, "V");
+    lastT = at(outcome, row, "T");
+  }
+  ASSERT_GT(lastT, 0.99 * family.tMax);
+  EXPECT_LT(std::abs(lastV), 1e-2);
+  // the picture's points are the rows with data (none at a multiple of a mode's period)
+  std::size_t withData = 0;
+  for (std::size_t row = 0; row < outcome.rows(); ++row) withData += std::isfinite(at(outcome, row, "V")) ? 1 : 0;
+  EXPECT_EQ(outcome.points.size(), withData);
+}
+
+TEST(TypedFamily, RefusalsComeBeforeAnyOfItIsComputed) {
+  FamilyRequest request;
+  request.count = 0;
+  EXPECT_NE(familyRefusal(*chainOf({}), request)->find("not a count"), std::string::npos);
+  request.count = 10;
+  EXPECT_NE(familyRefusal(*chainOf({{"k2", "0.3"}}), request)->find("1:2 resonant chain"), std::string::npos);
+  request.precision = PrecisionChoice::Quad;
+  EXPECT_FALSE(familyRefusal(*chainOf({}), request));
+  const auto three = chainOf({{"masses", "1,0.2,0.05"}, {"frequencies", "3:2:1"}});
+  EXPECT_NE(familyRefusal(*three, request)->find("computed in double"), std::string::npos);
+  const FamilyOutcome refused = onePeriodicFamily(*three, request);
+  EXPECT_EQ(refused.status, FamilyStatus::Refused);
+  EXPECT_TRUE(refused.table.empty());
+}
+
+}  // namespace
+}  // namespace grazelab::cli
