@@ -5,8 +5,8 @@
 // every 100 ms: Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the
 // command's latest progress goes to the caller's callback, both on the caller's thread.
 // grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy.
-// `simulate`, `orbit` and `family` are typed commands (commands/simulation.h, periodic_orbit.h,
-// onepp_family.h): their
+// `simulate`, `orbit`, `family` and `modes` are typed commands (commands/simulation.h,
+// periodic_orbit.h, onepp_family.h, modes_atlas_command.h): their
 // options by name, no command-line text, their outcomes handed over as values (and events as arrays); a chain of N masses is
 // prepared once (prepare_chain: grazelab.Chain) for every run of it.
 #include <pybind11/numpy.h>
@@ -40,6 +40,7 @@
 
 #include "cli_run.h"
 #include "commands/family_command.h"
+#include "commands/modes_command.h"
 #include "commands/orbit_command.h"
 #include "commands/simulate_command.h"
 #include "core/experiments/maps.h"
@@ -299,14 +300,14 @@ py::tuple simulationResult(grazelab::cli::JsonValue& document, grazelab::cli::Ch
   return py::make_tuple(result, table.decimals.empty() ? py::object(py::none()) : py::cast(table.decimals));
 }
 
-// command(name, options, operands=(), progress=None, keep_map=False, result_type=None, keep_files=False)
-//   -> (code, output, messages, map, document, files, problem)
+// command(name, options, operands=(), progress=None, keep_map=False, result_type=None)
+//   -> (code, output, messages, map, document, problem)
 // A command of the command line run by its name with its options given by name as (flag, text)
 // pairs, text None for a bare flag (--quick, --onepp of family and orbit): no command-line text,
 // the command line's rules (runCommand).
 py::tuple command(const std::string& name, const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                   const std::vector<std::string>& operandTexts, const py::object& progress, bool keepMap,
-                  const py::object& resultType, bool keepFiles) {
+                  const py::object& resultType) {
   std::vector<grazelab::cli::GivenOption> named;
   QStringList names;
   for (const auto& [flag, text] : given) {
@@ -328,8 +329,6 @@ py::tuple command(const std::string& name, const std::vector<std::pair<std::stri
   if (keepMap) io.map = &map;
   grazelab::cli::JsonValue document;
   if (!resultType.is_none()) io.document = &document;
-  std::vector<std::pair<std::string, std::string>> files;
-  if (keepFiles) io.files = &files;
   if (!progress.is_none()) {
     io.progress = [&mailbox](double fraction, const std::string& text) {
       std::lock_guard lock(mailbox.mutex);
@@ -359,13 +358,7 @@ py::tuple command(const std::string& name, const std::vector<std::pair<std::stri
   if (!resultType.is_none() && code == 0) {
     documentResult = documentToPython(document, resultType, document.holdsWideNumbers());
   }
-  py::object filesResult = py::none();
-  if (keepFiles && code == 0) {
-    py::dict named;
-    for (const auto& [name, bytes] : files) named[py::str(name)] = py::bytes(bytes);
-    filesResult = std::move(named);
-  }
-  return py::make_tuple(code, py::bytes(out), py::str(log), mapResult, documentResult, filesResult, problem);
+  return py::make_tuple(code, py::bytes(out), py::str(log), mapResult, documentResult, problem);
 }
 
 // An option's value as the direct call takes it: a str is its text; a float, an int exact in
@@ -530,6 +523,61 @@ py::tuple familyCommand(const std::vector<std::pair<std::string, std::optional<s
   return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()), array);
 }
 
+// modes(options, result_type, progress) -> (its document as values, each family's table as a
+// structured array, in the document's order): the typed atlas (commands/modes_atlas_command.h)
+// of the options given by name as (flag, text) pairs, on a thread of its own that Ctrl+C stops;
+// its files written only where --out names them (no picture). ValueError with the command
+// line's line when there is none, RuntimeError when a file could not be written.
+py::tuple modesCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                       const py::object& resultType, const py::object& progress) {
+  std::vector<grazelab::cli::GivenOption> named;
+  for (const auto& [flag, text] : given) {
+    named.push_back({flag, text ? QString::fromStdString(*text) : QString(), {}, false});
+  }
+  const grazelab::cli::OptionValues options(std::move(named));
+  MemoryStream messages;
+  ProgressMailbox mailbox;
+  grazelab::cli::Io io;
+  io.messages = messages.file();
+  if (!progress.is_none()) {
+    io.progress = [&mailbox](double fraction, const std::string& text) {
+      std::lock_guard lock(mailbox.mutex);
+      mailbox.fresh = true;
+      mailbox.fraction = fraction;
+      mailbox.text = text;
+    };
+  }
+  QString error;
+  grazelab::cli::ModesRun run;
+  std::stop_source stop;
+  std::optional<py::error_already_set> pythonError;
+  interruptibly(
+      stop,
+      [&](std::stop_token token) {
+        run = grazelab::cli::modesWithFiles(options, io, std::move(token), error, false);
+        return run.code;
+      },
+      [&] { return progress.is_none() || deliverProgress(mailbox, progress, pythonError); }, pythonError);
+  if (!pythonError && run.code == 0 && !progress.is_none()) deliverProgress(mailbox, progress, pythonError);
+  if (pythonError) throw std::move(*pythonError);
+  if (run.code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
+  if (run.code != 0) throw std::runtime_error(error.simplified().toStdString());
+  const std::optional<std::string> base =
+      options.isSet("out") ? std::optional(QFileInfo(options.value("out")).fileName().toStdString()) : std::nullopt;
+  const grazelab::cli::JsonValue document = grazelab::cli::modesDocument(run.outcome, base);
+  py::list fields;
+  for (const std::string& column : grazelab::cli::kModesColumns) fields.append(py::make_tuple(column, "<f8"));
+  const py::dtype dtype = py::dtype::from_args(fields);
+  py::list tables;
+  for (std::size_t i = 0; i < grazelab::cli::modesFamilyCount(run.outcome); ++i) {
+    auto* table = new std::vector<double>(grazelab::cli::modesTable(run.outcome, i));
+    py::capsule owner(table, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+    const auto rows = static_cast<py::ssize_t>(table->size() / grazelab::cli::kModesColumns.size());
+    tables.append(py::array(dtype, {rows}, {static_cast<py::ssize_t>(dtype.itemsize())}, table->data(), owner));
+  }
+  return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()), tables);
+}
+
 // grazelab.Chain's native half: a chain of N masses read, checked and designed once, shared by
 // every run of it (cli::PreparedMassChain).
 struct ChainHandle {
@@ -660,15 +708,12 @@ PYBIND11_MODULE(_native, module) {
   module.attr("version") = grazelab::cli::kVersion;
   module.def("command", &command, py::arg("name"), py::arg("options"), py::arg("operands") = std::vector<std::string>(),
              py::arg("progress") = py::none(), py::arg("keep_map") = false, py::arg("result_type") = py::none(),
-             py::arg("keep_files") = false,
              "Runs one grazelab-cli command in this process, its options as (flag, text) pairs (text None "
              "for a bare flag) and merge's parts as operands: no command-line text. Returns (exit code, "
-             "output bytes, messages, map or None, document or None, files or None, the line that says "
-             "why it failed or ''). With keep_map a map or merge hands back (its JSON document, its points "
-             "as a structured array) and writes files only where --out says; with result_type the "
-             "document of info, glo-set or orbit comes back as values of that type, not text; with "
-             "keep_files family and modes without --out hand their files back as {name: bytes} and "
-             "write none.");
+             "output bytes, messages, map or None, document or None, the line that says why it failed or "
+             "''). With keep_map a map or merge hands back (its JSON document, its points as a structured "
+             "array) and writes files only where --out says; with result_type the document of info or "
+             "glo-set comes back as values of that type, not text.");
   py::class_<ChainHandle>(module, "PreparedChain",
                           "A chain of N masses read, checked and designed once (use grazelab.Chain).")
       .def("describe", &chainDescription, py::arg("result_type"),
@@ -684,6 +729,10 @@ PYBIND11_MODULE(_native, module) {
              "grazelab-cli family --onepp's typed command, its options as (flag, text) pairs (text None for the bare "
              "--onepp): (its document as values of result_type, its table as a structured array); its files "
              "written only where --out names them, without pictures. ValueError when there is no family.");
+  module.def("modes", &modesCommand, py::arg("options"), py::arg("result_type"), py::arg("progress") = py::none(),
+             "grazelab-cli modes's typed command, its options as (flag, text) pairs: (its document as values of "
+             "result_type, each family's table as a structured array); its files written only where --out names "
+             "them, without pictures. ValueError when there is no atlas.");
   module.def("prepare_chain", &prepareChain, py::arg("options"),
              "A chain of N masses from its options as (name, text, ...): masses, springs, right-spring, "
              "stop-mass, gap, frequencies, design-branch. Raises ValueError when there is none.");

@@ -38,6 +38,7 @@ from . import _convert
 from ._convert import Result
 from ._native import command as _run_command
 from ._native import family as _family
+from ._native import modes as _modes
 from ._native import orbit as _orbit
 from ._native import prepare_chain as _prepare_chain
 from ._native import simulate as _simulate_here
@@ -67,17 +68,14 @@ class GrazeLabWarning(UserWarning):
     """A result came back that its own error estimate does not trust (verdict unreliable)."""
 
 
-def _command(command, options, progress=None, positional=(), keep_map=False, document=False, keep_files=False):
+def _command(command, options, progress=None, positional=(), keep_map=False, document=False):
     """Runs one command with the options that are not None, handed over by name (no command-line
     text); returns (output text, messages) or raises; with keep_map, (messages, map) for a map or
-    merge held in memory; with keep_files (family, modes), (messages, {name: bytes}) for files held
-    in memory; with document (info, glo-set, orbit), (its document as Results, messages). A
+    merge held in memory; with document (info, glo-set), (its document as Results, messages). A
     progress callback hears (1.0, "done") when the command has ended well."""
-    # (--onepp names the family of family and orbit, a bare flag; elsewhere it is a period)
-    bare = ("quick", "onepp") if command in ("family", "orbit") else ("quick",)
-    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, bare)
-    code, output, messages, kept, values, files, problem = _run_command(
-        command, given, [str(p) for p in positional], progress, keep_map, Result if document else None, keep_files)
+    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ("quick",))
+    code, output, messages, kept, values, problem = _run_command(
+        command, given, [str(p) for p in positional], progress, keep_map, Result if document else None)
     if code == 2:
         raise ValueError(_message(problem or "invalid input"))
     if code != 0:
@@ -87,8 +85,6 @@ def _command(command, options, progress=None, positional=(), keep_map=False, doc
         progress(1.0, "done")
     if keep_map:
         return lines, kept
-    if keep_files:
-        return lines, files
     if document:
         return values, lines
     return output.decode("utf-8"), lines
@@ -661,33 +657,19 @@ def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
     options = _chain_keywords(dict(precision=precision, max_impacts=max_impacts, energy_range=energy_range),
                               dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch),
                               masses, springs, right_spring, stop_mass, frequencies, design_branch)
-    _, held = _command("modes", dict(options, out=out), progress, keep_files=True)
-    files = _Files(out, "modes", held)
-    result = _convert.parse_json(files.read(".json").decode("utf-8"), exact_decimals=precision in ("long", "quad"))
-    for entry in result["families"]:
-        stem = entry["file"][:-len(".csv")]  # PREFIX-family-N, named from the prefix's base
-        suffix = stem[len(_os.path.basename(files.prefix)):]
-        entry["table"] = _convert.table_from_bytes(files.read(suffix + ".npy"), files.read(suffix + ".csv"))
-        if out is None:
-            entry.pop("file")
+    # the typed command: its document as values, each family's rows as an array (no file read back)
+    given = _convert.option_texts({name: value for name, value in dict(options, out=out).items() if value is not None})
+    try:
+        result, tables = _modes(given, Result, progress)
+    except ValueError as error:
+        raise ValueError(_message(str(error))) from None
+    except RuntimeError as error:
+        raise OSError(_message(str(error))) from None
+    if progress is not None:
+        progress(1.0, "done")
+    for entry, table in zip(result["families"], tables):
+        entry["table"] = table
     return result
-
-
-class _Files:
-    """The files of a family or modes: in memory (no `out`: the command handed them over) or
-    on disk under `out`, read by their suffix after the prefix."""
-
-    def __init__(self, out, name, memory):
-        self.prefix = name if out is None else _os.fspath(out)
-        self.memory = memory or {}
-
-    def read(self, suffix):
-        path = self.prefix + suffix
-        kept = self.memory.get(path)
-        if kept is not None:
-            return kept
-        with open(path, "rb") as handle:
-            return handle.read()
 
 
 def _directory_command(command, table_file, out, progress, options):

@@ -5,7 +5,6 @@
 import csv
 import decimal
 import fractions
-import io
 import json
 import math
 import numbers
@@ -158,20 +157,6 @@ def parse_json(text, exact_decimals=False):
     if exact_decimals:
         result["decimal"] = _results(json.loads(text, parse_float=str, parse_int=str))
     return result
-
-
-def table_from_bytes(npy, csv_bytes):
-    """A table the command line handed over as the bytes of PREFIX.npy (float64, rows x columns)
-    and PREFIX.csv (its header names the columns): a NumPy structured array with the CSV's
-    column names, a view of the .npy bytes (no copy)."""
-    names = next(csv.reader(io.StringIO(csv_bytes.split(b"\n", 1)[0].decode("utf-8"))))
-    stream = io.BytesIO(npy)
-    _np.lib.format.read_magic(stream)  # the command line writes version 1.0
-    shape, fortran, dtype = _np.lib.format.read_array_header_1_0(stream)
-    if fortran or len(shape) != 2 or shape[1] != len(names) or dtype != _np.dtype("<f8"):
-        raise RuntimeError(f"a table of shape {shape} ({dtype}) does not match the columns {names}")
-    data = _np.frombuffer(npy, dtype="<f8", offset=stream.tell(), count=shape[0] * shape[1])
-    return data.view(_np.dtype([(name, "<f8") for name in names]))
 
 
 def csv_table(path):

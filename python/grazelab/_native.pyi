@@ -1,10 +1,10 @@
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
 """The compiled part of the module (python/native_module.cpp): the command line's commands run in
-process by name, ``simulate``, ``orbit`` and ``family`` as typed commands. Not for direct use: the functions of
+process by name, ``simulate``, ``orbit``, ``family`` and ``modes`` as typed commands. Not for direct use: the functions of
 ``grazelab`` call it."""
 
-from typing import Callable, Dict, List, Optional, Tuple
+from typing import Callable, List, Optional, Tuple
 
 import numpy as np
 
@@ -12,9 +12,8 @@ version: str
 
 def command(name: str, options: List[Tuple[str, Optional[str]]], operands: List[str] = ...,
             progress: Optional[Callable[[Optional[float], str], None]] = ...,
-            keep_map: bool = ..., result_type: Optional[type] = ..., keep_files: bool = ...
-            ) -> Tuple[int, bytes, str, Optional[Tuple[bytes, np.ndarray]], Optional[dict],
-                       Optional[Dict[str, bytes]], str]: ...
+            keep_map: bool = ..., result_type: Optional[type] = ...
+            ) -> Tuple[int, bytes, str, Optional[Tuple[bytes, np.ndarray]], Optional[dict], str]: ...
 
 def simulate(options: tuple, result_type: type, events: bool = ...,
              max_events: int = ..., discard_events: bool = ..., direct: bool = ...
@@ -22,6 +21,9 @@ def simulate(options: tuple, result_type: type, events: bool = ...,
 
 def family(options: List[Tuple[str, Optional[str]]], result_type: type,
            progress: Optional[Callable[[Optional[float], str], None]] = ...) -> Tuple[dict, np.ndarray]: ...
+
+def modes(options: List[Tuple[str, Optional[str]]], result_type: type,
+          progress: Optional[Callable[[Optional[float], str], None]] = ...) -> Tuple[dict, List[np.ndarray]]: ...
 
 def orbit(options: List[Tuple[str, Optional[str]]], result_type: type) -> dict: ...
 

@@ -45,19 +45,18 @@ QByteArray csvOf(const FamilyOutcome& outcome) {
 }
 
 // PREFIX.csv, .npy, .json and, where pictures are drawn, .png and .svg
-int writeFamily(const FamilyOutcome& outcome, const FileOutput& output, const Io& io, QString& error) {
-  const QString& prefix = output.prefix;
+int writeFamily(const FamilyOutcome& outcome, const QString& prefix, const Io& io, QString& error) {
   NpyArray array;
   array.rows = std::int64_t(outcome.rows());
   array.columns = std::int64_t(outcome.columns.size());
   array.reals = outcome.table;
   const JsonValue document = familyDocument(outcome, QFileInfo(prefix).fileName().toStdString());
   const QByteArray json = QByteArray::fromStdString(fieldPerLine(document, "  ", "") + "\n");
-  if (!output.save(prefix + ".csv", csvOf(outcome), error) || !output.save(prefix + ".npy", encodeNpy(array), error) ||
-      !output.save(prefix + ".json", json, error)) {
+  if (!saveAtomically(prefix + ".csv", csvOf(outcome), error) || !saveAtomically(prefix + ".npy", encodeNpy(array), error) ||
+      !saveAtomically(prefix + ".json", json, error)) {
     return 1;
   }
-  if (picturesAvailable() && !output.inMemory() && outcome.admissible > 0) {
+  if (picturesAvailable() && outcome.admissible > 0) {
     const QString title = QString::fromStdString(outcome.title);
     std::vector<pictures::FrequencyEnergyPoint> points;
     points.reserve(outcome.points.size());
@@ -129,10 +128,10 @@ FamilyRun familyWithFiles(const OptionValues& options, const Io& io, std::stop_t
     return run;
   }
   // where the files go, refused before any of the family is computed
-  std::optional<FileOutput> output;
-  if (filesRequired || options.isSet("out") || io.files) {
-    output = openFileOutput(options, io, "PREFIX.csv, PREFIX.npy, PREFIX.json, ...", "family", error);
-    if (!output) return run;
+  std::optional<QString> prefix;
+  if (filesRequired || options.isSet("out")) {
+    prefix = parseOutputPrefix(options, "PREFIX.csv, PREFIX.npy, PREFIX.json, ...", "family", error);
+    if (!prefix) return run;
   }
   run.outcome = onePeriodicFamily(**chain.value, *request, io.progress, stop);
   if (run.outcome.status == FamilyStatus::Interrupted || stop.stop_requested()) {
@@ -143,7 +142,7 @@ FamilyRun familyWithFiles(const OptionValues& options, const Io& io, std::stop_t
     error = QString::fromStdString(run.outcome.problem);
     return run;
   }
-  run.code = output ? writeFamily(run.outcome, *output, io, error) : kExitOk;
+  run.code = prefix ? writeFamily(run.outcome, *prefix, io, error) : kExitOk;
   return run;
 }
 

@@ -4,8 +4,10 @@
 
 #include <QString>
 
+#include <optional>
 #include <stop_token>
 
+#include "commands/modes_atlas_command.h"
 #include "io/cli_io.h"
 #include "io/option_values.h"
 
@@ -21,5 +23,19 @@ void addModesOptions(QCommandLineParser& parser);
 /// (PREFIX.json, one CSV and .npy per family, the frequency-energy picture PREFIX.png/.svg).
 /// Exit 2 with `error` on invalid input, 130 (nothing written) when `stop` is requested.
 int runModes(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
+
+/// The options of `modes` (--max-impacts, --energy-range, --precision) as a request; nothing,
+/// with `error` the line that says why.
+std::optional<ModesRequest> readModesRequest(const OptionValues& options, QString& error);
+
+/// The atlas of the options' chain, its files written where --out names them (`filesRequired`:
+/// the command line refuses a run without --out; the Python module writes files only when
+/// asked). `code` is the command's exit code; `outcome` the atlas when computed.
+struct ModesRun {
+  int code = 0;
+  ModesOutcome outcome;
+};
+ModesRun modesWithFiles(const OptionValues& options, const Io& io, std::stop_token stop, QString& error,
+                        bool filesRequired);
 
 }  // namespace grazelab::cli

@@ -55,10 +55,6 @@ struct Io {
   /// When set, `info`, `glo-set` and `orbit` put their JSON document here as values, not as
   /// text.
   JsonValue* document = nullptr;
-  /// When set, `family` and `modes` without --out put their files here, (name, bytes), instead
-  /// of on disk, and draw no picture.
-  std::vector<std::pair<std::string, std::string>>* files = nullptr;
-
   /// When set, the line that says why a command failed (exit 2: invalid input; 1: a file not
   /// written) is put here as well as on `messages` (the Python module raises it, reading
   /// nothing back from the messages).

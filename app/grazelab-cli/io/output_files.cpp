@@ -15,20 +15,6 @@
 
 namespace grazelab::cli {
 
-bool FileOutput::save(const QString& path, const QByteArray& bytes, QString& error) const {
-  if (!memory) return saveAtomically(path, bytes, error);
-  memory->emplace_back(path.toStdString(), bytes.toStdString());
-  return true;
-}
-
-std::optional<FileOutput> openFileOutput(const OptionValues& parser, const Io& io,
-                                         const char* files, const char* name, QString& error) {
-  if (io.files && !parser.isSet("out")) return FileOutput{QString::fromUtf8(name), io.files};
-  const auto prefix = parseOutputPrefix(parser, files, name, error);
-  if (!prefix) return std::nullopt;
-  return FileOutput{*prefix, nullptr};
-}
-
 std::optional<QString> parseOutputPrefix(const OptionValues& parser, const char* files,
                                          const char* example, QString& error) {
   if (!parser.isSet("out")) {

@@ -20,22 +20,6 @@ namespace grazelab::cli {
 
 struct Io;
 
-/// Where a command that writes PREFIX.* files puts them: on disk under --out PREFIX, or, for a
-/// caller that takes them in memory (Io::files, the Python module) and gave no --out, into that
-/// list under the bare PREFIX `name` (no file anywhere).
-struct FileOutput {
-  QString prefix;
-  std::vector<std::pair<std::string, std::string>>* memory = nullptr;
-
-  bool inMemory() const { return memory != nullptr; }
-  /// Writes `path` whole (QSaveFile), or keeps it in memory; false with the reason.
-  bool save(const QString& path, const QByteArray& bytes, QString& error) const;
-};
-
-/// The output of a command writing PREFIX.* files: --out (see parseOutputPrefix) or memory.
-std::optional<FileOutput> openFileOutput(const OptionValues& parser, const Io& io,
-                                         const char* files, const char* name, QString& error);
-
 /// --out PREFIX of a command that writes PREFIX.* files (`files` names them in the message for a
 /// missing --out; `example` ends the suggested prefix): not a folder, and in a folder that exists
 /// or can be made (it is made when the first file is written: a refusal leaves none behind).

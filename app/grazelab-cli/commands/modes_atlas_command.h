@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "commands/simulation.h"
+#include "core/model/two_mass_form.h"
+#include "core/orbits/modes_atlas.h"
+#include "io/json_value.h"
+
+// `modes` as a typed command (as `simulate`, `orbit` and `family` are): the atlas of a two-mass
+// chain's periodic impacting families, which the command line writes as files (PREFIX.json, one
+// CSV and .npy per family, a picture) and the Python module hands over as values and arrays,
+// reading no file back. No Qt.
+namespace grazelab::cli {
+
+class PreparedMassChain;
+
+struct ModesRequest {
+  int maxImpacts = core::kDefaultAtlasMaxImpacts;  ///< 1 to 64
+  /// the energies followed, A and B as decimal text read in the precision that runs; none: the
+  /// default range (1/100 to 10000 times the grazing end's energy)
+  std::optional<std::array<std::string, 2>> energyRange;
+  PrecisionChoice precision = PrecisionChoice::Auto;  ///< auto: double
+};
+
+enum class ModesStatus {
+  Computed,
+  Refused,      ///< `problem` says why
+  Interrupted,  ///< `stop` was requested: nothing computed
+};
+
+/// The atlas in precision S with the chain's form it was computed on and the energy range.
+template <typename S>
+struct AtlasIn {
+  core::TwoMassForm<S> chain;
+  core::ModesAtlas<S> atlas;
+  S low = 0, high = 0;
+};
+
+struct ModesOutcome {
+  ModesStatus status = ModesStatus::Refused;
+  std::string problem;
+  core::Precision precision = core::Precision::Double;
+  int maxImpacts = 0;
+  std::variant<std::monostate, AtlasIn<double>, AtlasIn<long double>, AtlasIn<core::Quad>> atlas;
+};
+
+/// The atlas `request` asks for on `chain` (its 1:2 two-mass form: a chain of another shape or
+/// off the design is refused). `progress` hears each family followed (from this thread).
+ModesOutcome modesAtlas(const PreparedMassChain& chain, const ModesRequest& request,
+                        const std::function<void(double, const std::string&)>& progress = {},
+                        std::stop_token stop = {});
+
+/// The columns of a family's table: energy, period, omega, trace, stability (0..3), u1, v1,
+/// min_impact_speed, min_clearance (NaN: no flight turns back below the stop).
+extern const std::vector<std::string> kModesColumns;
+
+/// The rows of family `index` (in the atlas's order), row-major over kModesColumns, in double.
+std::vector<double> modesTable(const ModesOutcome& outcome, std::size_t index);
+std::size_t modesFamilyCount(const ModesOutcome& outcome);
+
+/// The atlas's JSON document; with `base` (the files' prefix, its file name) each family names
+/// its CSV file (BASE-family-N.csv).
+JsonValue modesDocument(const ModesOutcome& outcome, const std::optional<std::string>& base);
+
+}  // namespace grazelab::cli
