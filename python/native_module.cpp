@@ -430,16 +430,75 @@ std::optional<std::vector<grazelab::cli::GivenOption>> givenOptions(const py::se
   return named;
 }
 
+// Options given by name as (flag, text) pairs, text None for a bare flag (--onepp).
+grazelab::cli::OptionValues textOptions(const std::vector<std::pair<std::string, std::optional<std::string>>>& given) {
+  std::vector<grazelab::cli::GivenOption> named;
+  for (const auto& [flag, text] : given) {
+    named.push_back({flag, text ? QString::fromStdString(*text) : QString(), {}, false});
+  }
+  return grazelab::cli::OptionValues(std::move(named));
+}
+
+// A typed command that writes its files where --out says (family, modes: `work` is its
+// ...WithFiles), run on a thread of its own that Ctrl+C stops, its progress heard on the calling
+// thread; ValueError (invalid input) or RuntimeError (a file not written) with its line.
+template <typename Run>
+Run filesCommand(const grazelab::cli::OptionValues& options, const py::object& progress,
+                 Run (*work)(const grazelab::cli::OptionValues&, const grazelab::cli::Io&, std::stop_token, QString&,
+                             bool)) {
+  MemoryStream messages;
+  ProgressMailbox mailbox;
+  grazelab::cli::Io io;
+  io.messages = messages.file();
+  if (!progress.is_none()) {
+    io.progress = [&mailbox](double fraction, const std::string& text) {
+      std::lock_guard lock(mailbox.mutex);
+      mailbox.fresh = true;
+      mailbox.fraction = fraction;
+      mailbox.text = text;
+    };
+  }
+  QString error;
+  Run run;
+  std::stop_source stop;
+  std::optional<py::error_already_set> pythonError;
+  interruptibly(
+      stop,
+      [&](std::stop_token token) {
+        run = work(options, io, std::move(token), error, false);
+        return run.code;
+      },
+      [&] { return progress.is_none() || deliverProgress(mailbox, progress, pythonError); }, pythonError);
+  if (!pythonError && run.code == 0 && !progress.is_none()) deliverProgress(mailbox, progress, pythonError);
+  if (pythonError) throw std::move(*pythonError);
+  if (run.code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
+  if (run.code != 0) throw std::runtime_error(error.simplified().toStdString());
+  return run;
+}
+
+// The file name of --out (the files' base), when given.
+std::optional<std::string> outBase(const grazelab::cli::OptionValues& options) {
+  if (!options.isSet("out")) return std::nullopt;
+  return QFileInfo(options.value("out")).fileName().toStdString();
+}
+
+// A table of double columns, row-major, as a structured array that owns it (no copy).
+py::array tableArray(std::vector<double>&& rows, const std::vector<std::string>& columns) {
+  py::list fields;
+  for (const std::string& column : columns) fields.append(py::make_tuple(column, "<f8"));
+  const py::dtype dtype = py::dtype::from_args(fields);
+  auto* table = new std::vector<double>(std::move(rows));
+  py::capsule owner(table, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  const auto count = static_cast<py::ssize_t>(columns.empty() ? 0 : table->size() / columns.size());
+  return py::array(dtype, {count}, {static_cast<py::ssize_t>(dtype.itemsize())}, table->data(), owner);
+}
+
 // orbit(options, result_type) -> its document as values: the typed orbit (commands/periodic_orbit.h)
 // of the options given by name as (flag, text) pairs (text None for the bare --onepp), on a thread
 // of its own that Ctrl+C stops; ValueError with the command line's line when there is none.
 py::object orbitCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                         const py::object& resultType) {
-  std::vector<grazelab::cli::GivenOption> named;
-  for (const auto& [flag, text] : given) {
-    named.push_back({flag, text ? QString::fromStdString(*text) : QString(), {}, false});
-  }
-  const grazelab::cli::OptionValues options(std::move(named));
+  const grazelab::cli::OptionValues options = textOptions(given);
   QString error;
   const std::optional<grazelab::cli::OrbitRequest> request = grazelab::cli::readOrbitRequest(options, error);
   if (!request) throw py::value_error(error.simplified().toStdString());
@@ -476,51 +535,11 @@ py::object orbitCommand(const std::vector<std::pair<std::string, std::optional<s
 // there is no family, OSError when a file could not be written.
 py::tuple familyCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                         const py::object& resultType, const py::object& progress) {
-  std::vector<grazelab::cli::GivenOption> named;
-  for (const auto& [flag, text] : given) {
-    named.push_back({flag, text ? QString::fromStdString(*text) : QString(), {}, false});
-  }
-  const grazelab::cli::OptionValues options(std::move(named));
-  MemoryStream messages;
-  ProgressMailbox mailbox;
-  grazelab::cli::Io io;
-  io.messages = messages.file();
-  if (!progress.is_none()) {
-    io.progress = [&mailbox](double fraction, const std::string& text) {
-      std::lock_guard lock(mailbox.mutex);
-      mailbox.fresh = true;
-      mailbox.fraction = fraction;
-      mailbox.text = text;
-    };
-  }
-  QString error;
-  grazelab::cli::FamilyRun run;
-  std::stop_source stop;
-  std::optional<py::error_already_set> pythonError;
-  interruptibly(
-      stop,
-      [&](std::stop_token token) {
-        run = grazelab::cli::familyWithFiles(options, io, std::move(token), error, false);
-        return run.code;
-      },
-      [&] { return progress.is_none() || deliverProgress(mailbox, progress, pythonError); }, pythonError);
-  if (!pythonError && run.code == 0 && !progress.is_none()) deliverProgress(mailbox, progress, pythonError);
-  if (pythonError) throw std::move(*pythonError);
-  if (run.code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
-  if (run.code != 0) throw std::runtime_error(error.simplified().toStdString());
-  grazelab::cli::FamilyOutcome& outcome = run.outcome;
-  const std::optional<std::string> files =
-      options.isSet("out") ? std::optional(QFileInfo(options.value("out")).fileName().toStdString()) : std::nullopt;
-  const grazelab::cli::JsonValue document = grazelab::cli::familyDocument(outcome, files);
-  py::list fields;
-  for (const std::string& column : outcome.columns) fields.append(py::make_tuple(column, "<f8"));
-  const py::dtype dtype = py::dtype::from_args(fields);
-  const std::size_t rows = outcome.rows();
-  auto* table = new std::vector<double>(std::move(outcome.table));
-  py::capsule owner(table, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-  const py::array array(dtype, {static_cast<py::ssize_t>(rows)}, {static_cast<py::ssize_t>(dtype.itemsize())},
-                        table->data(), owner);
-  return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()), array);
+  const grazelab::cli::OptionValues options = textOptions(given);
+  grazelab::cli::FamilyRun run = filesCommand(options, progress, &grazelab::cli::familyWithFiles);
+  const grazelab::cli::JsonValue document = grazelab::cli::familyDocument(run.outcome, outBase(options));
+  return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()),
+                        tableArray(std::move(run.outcome.table), run.outcome.columns));
 }
 
 // modes(options, result_type, progress) -> (its document as values, each family's table as a
@@ -530,50 +549,12 @@ py::tuple familyCommand(const std::vector<std::pair<std::string, std::optional<s
 // line's line when there is none, RuntimeError when a file could not be written.
 py::tuple modesCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                        const py::object& resultType, const py::object& progress) {
-  std::vector<grazelab::cli::GivenOption> named;
-  for (const auto& [flag, text] : given) {
-    named.push_back({flag, text ? QString::fromStdString(*text) : QString(), {}, false});
-  }
-  const grazelab::cli::OptionValues options(std::move(named));
-  MemoryStream messages;
-  ProgressMailbox mailbox;
-  grazelab::cli::Io io;
-  io.messages = messages.file();
-  if (!progress.is_none()) {
-    io.progress = [&mailbox](double fraction, const std::string& text) {
-      std::lock_guard lock(mailbox.mutex);
-      mailbox.fresh = true;
-      mailbox.fraction = fraction;
-      mailbox.text = text;
-    };
-  }
-  QString error;
-  grazelab::cli::ModesRun run;
-  std::stop_source stop;
-  std::optional<py::error_already_set> pythonError;
-  interruptibly(
-      stop,
-      [&](std::stop_token token) {
-        run = grazelab::cli::modesWithFiles(options, io, std::move(token), error, false);
-        return run.code;
-      },
-      [&] { return progress.is_none() || deliverProgress(mailbox, progress, pythonError); }, pythonError);
-  if (!pythonError && run.code == 0 && !progress.is_none()) deliverProgress(mailbox, progress, pythonError);
-  if (pythonError) throw std::move(*pythonError);
-  if (run.code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
-  if (run.code != 0) throw std::runtime_error(error.simplified().toStdString());
-  const std::optional<std::string> base =
-      options.isSet("out") ? std::optional(QFileInfo(options.value("out")).fileName().toStdString()) : std::nullopt;
-  const grazelab::cli::JsonValue document = grazelab::cli::modesDocument(run.outcome, base);
-  py::list fields;
-  for (const std::string& column : grazelab::cli::kModesColumns) fields.append(py::make_tuple(column, "<f8"));
-  const py::dtype dtype = py::dtype::from_args(fields);
+  const grazelab::cli::OptionValues options = textOptions(given);
+  const grazelab::cli::ModesRun run = filesCommand(options, progress, &grazelab::cli::modesWithFiles);
+  const grazelab::cli::JsonValue document = grazelab::cli::modesDocument(run.outcome, outBase(options));
   py::list tables;
   for (std::size_t i = 0; i < grazelab::cli::modesFamilyCount(run.outcome); ++i) {
-    auto* table = new std::vector<double>(grazelab::cli::modesTable(run.outcome, i));
-    py::capsule owner(table, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-    const auto rows = static_cast<py::ssize_t>(table->size() / grazelab::cli::kModesColumns.size());
-    tables.append(py::array(dtype, {rows}, {static_cast<py::ssize_t>(dtype.itemsize())}, table->data(), owner));
+    tables.append(tableArray(grazelab::cli::modesTable(run.outcome, i), grazelab::cli::kModesColumns));
   }
   return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()), tables);
 }

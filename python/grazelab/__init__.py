@@ -619,18 +619,8 @@ def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
     elif frequencies is not None or design_branch is not None or springs is not None:
         raise ValueError("springs, frequencies and design_branch describe a chain given by masses")
-    # the typed command: numbers are floats; in long or quad also as the exact text written, under
-    # ``decimal``; the table is the command's own rows (no file read back)
-    given = _convert.option_texts({name: value for name, value in dict(options, out=out).items() if value is not None},
-                                  ("onepp",))
-    try:
-        result, table = _family(given, Result, progress)
-    except ValueError as error:
-        raise ValueError(_message(str(error))) from None
-    except RuntimeError as error:
-        raise OSError(_message(str(error))) from None
-    if progress is not None:
-        progress(1.0, "done")
+    # numbers are floats; in long or quad also as the exact text written, under ``decimal``
+    result, table = _files_command(_family, dict(options, out=out), progress, ("onepp",))
     result["table"] = table
     return result
 
@@ -657,19 +647,27 @@ def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
     options = _chain_keywords(dict(precision=precision, max_impacts=max_impacts, energy_range=energy_range),
                               dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch),
                               masses, springs, right_spring, stop_mass, frequencies, design_branch)
-    # the typed command: its document as values, each family's rows as an array (no file read back)
-    given = _convert.option_texts({name: value for name, value in dict(options, out=out).items() if value is not None})
+    result, tables = _files_command(_modes, dict(options, out=out), progress)
+    for entry, table in zip(result["families"], tables):
+        entry["table"] = table
+    return result
+
+
+def _files_command(call, options, progress, bare=()):
+    """A typed command that writes its files only where ``out`` says (family, modes): call(its
+    options as (flag, text) pairs, Result, progress) -> (its document as Results, its tables),
+    the tables the command's own rows (no file read back); a refusal as ValueError, a file not
+    written as OSError, in the module's words."""
+    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, bare)
     try:
-        result, tables = _modes(given, Result, progress)
+        answer = call(given, Result, progress)
     except ValueError as error:
         raise ValueError(_message(str(error))) from None
     except RuntimeError as error:
         raise OSError(_message(str(error))) from None
     if progress is not None:
         progress(1.0, "done")
-    for entry, table in zip(result["families"], tables):
-        entry["table"] = table
-    return result
+    return answer
 
 
 def _directory_command(command, table_file, out, progress, options):

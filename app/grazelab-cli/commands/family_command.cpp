@@ -86,16 +86,9 @@ int writeFamily(const FamilyOutcome& outcome, const QString& prefix, const Io& i
 
 std::optional<FamilyRequest> readFamilyRequest(const OptionValues& options, QString& error) {
   FamilyRequest request;
-  const QString precision = options.isSet("precision") ? options.value("precision") : QStringLiteral("auto");
-  const std::optional<core::Precision> fixed = core::parsePrecision(precision.toStdString());
-  if (!fixed && precision != "auto") {
-    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
-    return std::nullopt;
-  }
-  request.precision = !fixed                               ? PrecisionChoice::Auto
-                      : *fixed == core::Precision::Double ? PrecisionChoice::Double
-                      : *fixed == core::Precision::Long   ? PrecisionChoice::Long
-                                                          : PrecisionChoice::Quad;
+  const std::optional<PrecisionChoice> precision = readPrecisionChoice(options, error);
+  if (!precision) return std::nullopt;
+  request.precision = *precision;
   if (options.isSet("count")) {
     bool ok = false;
     request.count = options.value("count").toLongLong(&ok);

@@ -34,17 +34,10 @@ V endValue(const core::FamilyEnd<S>& end) {
 }
 
 template <typename S>
-core::Precision precisionOf() {
-  if constexpr (std::is_same_v<S, double>) return core::Precision::Double;
-  else if constexpr (std::is_same_v<S, long double>) return core::Precision::Long;
-  else return core::Precision::Quad;
-}
-
-template <typename S>
 ModesOutcome modesIn(const PreparedMassChain& prepared, const ModesRequest& request,
                      const std::function<void(double, const std::string&)>& progress, std::stop_token stop) {
   ModesOutcome outcome;
-  outcome.precision = precisionOf<S>();
+  outcome.precision = core::precisionOf<S>();
   outcome.maxImpacts = request.maxImpacts;
   const Parsed<ModelInput<S>>& model = prepared.twoMassForm<S>();
   if (!model.value) {

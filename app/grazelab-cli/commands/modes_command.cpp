@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include "commands/orbit_command.h"
+#include "commands/simulate_command.h"
 #include "core/orbits/periodic_orbit.h"
 #include "exit_codes.h"
 #include "io/cli_input.h"
@@ -144,16 +145,9 @@ std::optional<ModesRequest> readModesRequest(const OptionValues& options, QStrin
       return std::nullopt;
     }
   }
-  const QString precision = options.isSet("precision") ? options.value("precision") : QStringLiteral("auto");
-  const std::optional<core::Precision> fixed = core::parsePrecision(precision.toStdString());
-  if (!fixed && precision != "auto") {
-    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
-    return std::nullopt;
-  }
-  request.precision = !fixed                               ? PrecisionChoice::Auto
-                      : *fixed == core::Precision::Double ? PrecisionChoice::Double
-                      : *fixed == core::Precision::Long   ? PrecisionChoice::Long
-                                                          : PrecisionChoice::Quad;
+  const std::optional<PrecisionChoice> precision = readPrecisionChoice(options, error);
+  if (!precision) return std::nullopt;
+  request.precision = *precision;
   if (options.isSet("energy-range")) {
     const QStringList parts = options.value("energy-range").split(':');
     if (parts.size() != 2) {

@@ -44,16 +44,9 @@ std::optional<OrbitRequest> readOrbitRequest(const OptionValues& options, QStrin
     return std::nullopt;
   }
   OrbitRequest request;
-  const QString precision = options.value("precision");
-  const std::optional<core::Precision> fixed = core::parsePrecision(precision.toStdString());
-  if (!fixed && precision != "auto") {
-    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
-    return std::nullopt;
-  }
-  request.precision = !fixed                               ? PrecisionChoice::Auto
-                      : *fixed == core::Precision::Double ? PrecisionChoice::Double
-                      : *fixed == core::Precision::Long   ? PrecisionChoice::Long
-                                                          : PrecisionChoice::Quad;
+  const std::optional<PrecisionChoice> precision = readPrecisionChoice(options, error);
+  if (!precision) return std::nullopt;
+  request.precision = *precision;
   if (onePeriodic) {
     request.period = options.value("period").toStdString();
     return request;

@@ -9,6 +9,7 @@
 #include <string>
 #include <type_traits>
 
+#include "commands/orbit_json.h"
 #include "core/orbits/onepp_family_points.h"
 #include "core/version.h"
 #include "io/prepared_chain.h"
@@ -20,14 +21,6 @@ namespace {
 constexpr double kDataAccuracy = 1e-9;
 
 template <typename S>
-JsonValue stateValue(const core::BasicState<S>& x) {
-  return JsonValue::object({{"u1", JsonValue::number(x.u1)},
-                            {"u2", JsonValue::number(x.u2)},
-                            {"v1", JsonValue::number(x.v1)},
-                            {"v2", JsonValue::number(x.v2)}});
-}
-
-template <typename S>
 JsonValue orbitValue(const FoundOrbit<S>& found, core::Precision precision) {
   using V = JsonValue;
   const core::PeriodicOrbit<S>& orbit = found.orbit;
@@ -37,8 +30,8 @@ JsonValue orbitValue(const FoundOrbit<S>& found, core::Precision precision) {
   for (const core::BasicEvent<S>& e : orbit.events) {
     events.push_back(V::object({{"t", V::number(e.t)},
                                 {"type", V::of(std::string(core::toString(e.type)))},
-                                {"before", stateValue(e.before)},
-                                {"after", stateValue(e.after)}}));
+                                {"before", orbitStateValue(e.before)},
+                                {"after", orbitStateValue(e.after)}}));
   }
   const auto& mu = orbit.multipliers;
   const std::string symmetry = core::orbitSymmetry(orbit, core::symmetryTolerance<S>());
@@ -56,7 +49,7 @@ JsonValue orbitValue(const FoundOrbit<S>& found, core::Precision precision) {
        {"T_over_T2", V::number(S(orbit.period / T2))},
        {"energy", V::number(orbit.energy)},
        {"impacts", V::of(std::int64_t(orbit.impacts))},
-       {"state", stateValue(orbit.state)},
+       {"state", orbitStateValue(orbit.state)},
        {"events", V::array(std::move(events))},
        {"trace", V::number(orbit.trace)},
        {"trace_error", V::number(orbit.traceError)},
@@ -82,18 +75,11 @@ std::optional<S> numberIn(const std::string& text, const char* option, std::stri
   return parsed.value;
 }
 
-template <typename S>
-core::Precision precisionOf() {
-  if constexpr (std::is_same_v<S, double>) return core::Precision::Double;
-  else if constexpr (std::is_same_v<S, long double>) return core::Precision::Long;
-  else return core::Precision::Quad;
-}
-
 // The orbit in precision S.
 template <typename S>
 OrbitOutcome orbitIn(const PreparedMassChain& prepared, const OrbitRequest& request, std::stop_token stop) {
   OrbitOutcome outcome;
-  outcome.precision = precisionOf<S>();
+  outcome.precision = core::precisionOf<S>();
   const Parsed<ModelInput<S>>& model = prepared.twoMassForm<S>();
   if (!model.value) {
     outcome.problem = model.error.toStdString();

@@ -504,6 +504,18 @@ class StreamWriter final : public SimulateSink {
 
 }  // namespace
 
+std::optional<PrecisionChoice> readPrecisionChoice(const OptionValues& options, QString& error) {
+  const std::optional<PrecisionOption> option = parsePrecisionOption(options, error);
+  if (!option) return std::nullopt;
+  if (!option->fixed) return PrecisionChoice::Auto;
+  switch (*option->fixed) {
+    case core::Precision::Double: return PrecisionChoice::Double;
+    case core::Precision::Long: return PrecisionChoice::Long;
+    case core::Precision::Quad: break;
+  }
+  return PrecisionChoice::Quad;
+}
+
 std::optional<SimulateRequest> readSimulateRequest(const OptionValues& options, Format format, QString& error) {
   SimulateRequest request;
   request.sampled = options.isSet("sample-step") || options.isSet("sample-times");
@@ -515,16 +527,9 @@ std::optional<SimulateRequest> readSimulateRequest(const OptionValues& options, 
     error = "--trust: --format csv writes the events alone; the error estimate is in --format summary or json";
     return std::nullopt;
   }
-  const QString precision = options.isSet("precision") ? options.value("precision") : QStringLiteral("auto");
-  const std::optional<core::Precision> fixed = core::parsePrecision(precision.toStdString());
-  if (!fixed && precision != "auto") {
-    error = QStringLiteral("--precision: '%1' is not auto, double, long or quad").arg(precision);
-    return std::nullopt;
-  }
-  request.precision = !fixed                               ? PrecisionChoice::Auto
-                      : *fixed == core::Precision::Double ? PrecisionChoice::Double
-                      : *fixed == core::Precision::Long   ? PrecisionChoice::Long
-                                                          : PrecisionChoice::Quad;
+  const std::optional<PrecisionChoice> precision = readPrecisionChoice(options, error);
+  if (!precision) return std::nullopt;
+  request.precision = *precision;
   const auto trust = core::parseTrustMode((options.isSet("trust") ? options.value("trust") : QStringLiteral("auto"))
                                               .toStdString());
   if (!trust) {

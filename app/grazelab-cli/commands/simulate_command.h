@@ -27,6 +27,9 @@ struct JsonValue;
 /// a lower precision wrote events); 130 when `stop` ended it (`error`: what was written).
 int runSimulate(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
 
+/// --precision as a choice (auto when absent); nothing, with `error` the line that says why.
+std::optional<PrecisionChoice> readPrecisionChoice(const OptionValues& options, QString& error);
+
 /// The run options of `simulate` (--state, --glo-weights, --onepp, --glo, --perturb, --contacts,
 /// --t-end, --search-steps, --precision, --trust, --sample-step, --sample-times) as a request,
 /// for output in `format` (csv runs no estimate, writes no samples); nothing, with `error` the
