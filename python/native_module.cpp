@@ -90,6 +90,25 @@ struct ProgressMailbox {
   bool fresh = false;
   double fraction = -1;
   std::string text;
+
+  /// What a command's Io::progress calls (from any thread): the latest replaces the one before.
+  std::function<void(double, const std::string&)> post() {
+    return [this](double at, const std::string& line) {
+      std::lock_guard lock(mutex);
+      fresh = true;
+      fraction = at;
+      text = line;
+    };
+  }
+};
+
+// A typed command's refusal (invalid input: Python's ValueError) and a file it could not write
+// (OSError), told apart from any exception a progress callback raised, which goes through as it is.
+struct Refused : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+struct NotWritten : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 // Why a run stopped at `maxEvents` events held in memory.
@@ -300,21 +319,26 @@ py::tuple simulationResult(grazelab::cli::JsonValue& document, grazelab::cli::Ch
   return py::make_tuple(result, table.decimals.empty() ? py::object(py::none()) : py::cast(table.decimals));
 }
 
+// Options given by name as (flag, text) pairs, text None for a bare flag (--onepp).
+grazelab::cli::OptionValues textOptions(const std::vector<std::pair<std::string, std::optional<std::string>>>& given) {
+  std::vector<grazelab::cli::GivenOption> named;
+  for (const auto& [flag, text] : given) {
+    named.push_back({flag, text ? QString::fromStdString(*text) : QString(), {}, false});
+  }
+  return grazelab::cli::OptionValues(std::move(named));
+}
+
 // command(name, options, operands=(), progress=None, keep_map=False, result_type=None)
 //   -> (code, output, messages, map, document, problem)
 // A command of the command line run by its name with its options given by name as (flag, text)
-// pairs, text None for a bare flag (--quick, --onepp of family and orbit): no command-line text,
+// pairs, text None for a bare flag (--quick): no command-line text,
 // the command line's rules (runCommand).
 py::tuple command(const std::string& name, const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                   const std::vector<std::string>& operandTexts, const py::object& progress, bool keepMap,
                   const py::object& resultType) {
-  std::vector<grazelab::cli::GivenOption> named;
   QStringList names;
-  for (const auto& [flag, text] : given) {
-    named.push_back({flag, text ? QString::fromStdString(*text) : QString(), {}, false});
-    names << QString::fromStdString(flag);
-  }
-  const grazelab::cli::OptionValues options(std::move(named));
+  for (const auto& named : given) names << QString::fromStdString(named.first);
+  const grazelab::cli::OptionValues options = textOptions(given);
   QStringList operands;
   for (const std::string& operand : operandTexts) operands << QString::fromStdString(operand);
 
@@ -329,14 +353,7 @@ py::tuple command(const std::string& name, const std::vector<std::pair<std::stri
   if (keepMap) io.map = &map;
   grazelab::cli::JsonValue document;
   if (!resultType.is_none()) io.document = &document;
-  if (!progress.is_none()) {
-    io.progress = [&mailbox](double fraction, const std::string& text) {
-      std::lock_guard lock(mailbox.mutex);
-      mailbox.fresh = true;
-      mailbox.fraction = fraction;
-      mailbox.text = text;
-    };
-  }
+  if (!progress.is_none()) io.progress = mailbox.post();
 
   std::string problem;
   io.problem = &problem;
@@ -430,18 +447,9 @@ std::optional<std::vector<grazelab::cli::GivenOption>> givenOptions(const py::se
   return named;
 }
 
-// Options given by name as (flag, text) pairs, text None for a bare flag (--onepp).
-grazelab::cli::OptionValues textOptions(const std::vector<std::pair<std::string, std::optional<std::string>>>& given) {
-  std::vector<grazelab::cli::GivenOption> named;
-  for (const auto& [flag, text] : given) {
-    named.push_back({flag, text ? QString::fromStdString(*text) : QString(), {}, false});
-  }
-  return grazelab::cli::OptionValues(std::move(named));
-}
-
 // A typed command that writes its files where --out says (family, modes: `work` is its
 // ...WithFiles), run on a thread of its own that Ctrl+C stops, its progress heard on the calling
-// thread; ValueError (invalid input) or RuntimeError (a file not written) with its line.
+// thread; Refused (invalid input) or NotWritten (a file not written) with its line.
 template <typename Run>
 Run filesCommand(const grazelab::cli::OptionValues& options, const py::object& progress,
                  Run (*work)(const grazelab::cli::OptionValues&, const grazelab::cli::Io&, std::stop_token, QString&,
@@ -450,14 +458,7 @@ Run filesCommand(const grazelab::cli::OptionValues& options, const py::object& p
   ProgressMailbox mailbox;
   grazelab::cli::Io io;
   io.messages = messages.file();
-  if (!progress.is_none()) {
-    io.progress = [&mailbox](double fraction, const std::string& text) {
-      std::lock_guard lock(mailbox.mutex);
-      mailbox.fresh = true;
-      mailbox.fraction = fraction;
-      mailbox.text = text;
-    };
-  }
+  if (!progress.is_none()) io.progress = mailbox.post();
   QString error;
   Run run;
   std::stop_source stop;
@@ -471,8 +472,8 @@ Run filesCommand(const grazelab::cli::OptionValues& options, const py::object& p
       [&] { return progress.is_none() || deliverProgress(mailbox, progress, pythonError); }, pythonError);
   if (!pythonError && run.code == 0 && !progress.is_none()) deliverProgress(mailbox, progress, pythonError);
   if (pythonError) throw std::move(*pythonError);
-  if (run.code == grazelab::cli::kExitInvalidInput) throw py::value_error(error.simplified().toStdString());
-  if (run.code != 0) throw std::runtime_error(error.simplified().toStdString());
+  if (run.code == grazelab::cli::kExitInvalidInput) throw Refused(error.simplified().toStdString());
+  if (run.code != 0) throw NotWritten(error.simplified().toStdString());
   return run;
 }
 
@@ -495,13 +496,13 @@ py::array tableArray(std::vector<double>&& rows, const std::vector<std::string>&
 
 // orbit(options, result_type) -> its document as values: the typed orbit (commands/periodic_orbit.h)
 // of the options given by name as (flag, text) pairs (text None for the bare --onepp), on a thread
-// of its own that Ctrl+C stops; ValueError with the command line's line when there is none.
+// of its own that Ctrl+C stops; Refused (a ValueError) with the command line's line when there is none.
 py::object orbitCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                         const py::object& resultType) {
   const grazelab::cli::OptionValues options = textOptions(given);
   QString error;
   const std::optional<grazelab::cli::OrbitRequest> request = grazelab::cli::readOrbitRequest(options, error);
-  if (!request) throw py::value_error(error.simplified().toStdString());
+  if (!request) throw Refused(error.simplified().toStdString());
   grazelab::cli::OrbitOutcome outcome;
   std::optional<QString> refused;  // the chain's refusal
   std::stop_source stop;
@@ -519,9 +520,9 @@ py::object orbitCommand(const std::vector<std::pair<std::string, std::optional<s
       },
       {}, pythonError);
   if (pythonError) throw std::move(*pythonError);
-  if (refused) throw py::value_error(refused->simplified().toStdString());
+  if (refused) throw Refused(refused->simplified().toStdString());
   if (outcome.status != grazelab::cli::OrbitStatus::Found) {
-    throw py::value_error(QString::fromStdString(outcome.problem).simplified().toStdString());
+    throw Refused(QString::fromStdString(outcome.problem).simplified().toStdString());
   }
   const grazelab::cli::JsonValue document = grazelab::cli::orbitDocument(outcome);
   return documentToPython(document, resultType, document.holdsWideNumbers());
@@ -531,8 +532,8 @@ py::object orbitCommand(const std::vector<std::pair<std::string, std::optional<s
 // array): the typed family (commands/onepp_family.h) of the options given by name as (flag, text)
 // pairs (text None for the bare --onepp), on a thread of its own that Ctrl+C stops, `progress`
 // hearing it on the calling thread; its files written only where --out names them (no picture).
-// The table's rows move into the array (no copy). ValueError with the command line's line when
-// there is no family, OSError when a file could not be written.
+// The table's rows move into the array (no copy). Refused (a ValueError) with the command line's
+// line when there is no family, NotWritten (an OSError) when a file could not be written.
 py::tuple familyCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                         const py::object& resultType, const py::object& progress) {
   const grazelab::cli::OptionValues options = textOptions(given);
@@ -545,8 +546,8 @@ py::tuple familyCommand(const std::vector<std::pair<std::string, std::optional<s
 // modes(options, result_type, progress) -> (its document as values, each family's table as a
 // structured array, in the document's order): the typed atlas (commands/modes_atlas_command.h)
 // of the options given by name as (flag, text) pairs, on a thread of its own that Ctrl+C stops;
-// its files written only where --out names them (no picture). ValueError with the command
-// line's line when there is none, RuntimeError when a file could not be written.
+// its files written only where --out names them (no picture). Refused (a ValueError) with the
+// command line's line when there is none, NotWritten (an OSError) when a file could not be written.
 py::tuple modesCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                        const py::object& resultType, const py::object& progress) {
   const grazelab::cli::OptionValues options = textOptions(given);
@@ -687,6 +688,8 @@ PYBIND11_MODULE(_native, module) {
   QCoreApplication::setApplicationName(QStringLiteral("grazelab-cli"));
   QCoreApplication::setApplicationVersion(QString::fromUtf8(grazelab::cli::kVersion));
   module.attr("version") = grazelab::cli::kVersion;
+  py::register_exception<Refused>(module, "Refused", PyExc_ValueError);
+  py::register_exception<NotWritten>(module, "NotWritten", PyExc_OSError);
   module.def("command", &command, py::arg("name"), py::arg("options"), py::arg("operands") = std::vector<std::string>(),
              py::arg("progress") = py::none(), py::arg("keep_map") = false, py::arg("result_type") = py::none(),
              "Runs one grazelab-cli command in this process, its options as (flag, text) pairs (text None "

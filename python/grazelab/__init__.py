@@ -38,6 +38,8 @@ from . import _convert
 from ._convert import Result
 from ._native import command as _run_command
 from ._native import family as _family
+from ._native import NotWritten as _NotWritten
+from ._native import Refused as _Refused
 from ._native import modes as _modes
 from ._native import orbit as _orbit
 from ._native import prepare_chain as _prepare_chain
@@ -474,7 +476,7 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
     given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ("onepp",))
     try:
         result = _orbit(given, Result)
-    except ValueError as error:
+    except _Refused as error:
         raise ValueError(_message(str(error))) from None
     result["multipliers"] = _convert.multipliers(result["multipliers"])
     return result
@@ -597,8 +599,8 @@ def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
            frequencies: _Optional[_Sequence[int]] = None, design_branch: _Optional[int] = None) -> Result:
     """The 1IPP family (``grazelab-cli family --onepp``). Returns the JSON's fields with
     ``table``: a structured array with the CSV's columns (T, omega, V, u1, energy, admissible,
-    trace, stability; admissible 1.0/0.0, stability 0..3, NaN where not admissible), the
-    command line's .npy viewed without a copy.
+    trace, stability; admissible 1.0/0.0, stability 0..3, NaN where not admissible): the
+    command's own rows, without a copy.
 
     With ``masses`` (a chain of N masses, in double): periods in (0, T_max), T_max the common
     period (or the slowest mode's), the columns T, omega, V, energy, admissible, u1 ... uN, and
@@ -661,9 +663,9 @@ def _files_command(call, options, progress, bare=()):
     given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, bare)
     try:
         answer = call(given, Result, progress)
-    except ValueError as error:
+    except _Refused as error:  # (what a progress callback raises goes through as it is)
         raise ValueError(_message(str(error))) from None
-    except RuntimeError as error:
+    except _NotWritten as error:
         raise OSError(_message(str(error))) from None
     if progress is not None:
         progress(1.0, "done")

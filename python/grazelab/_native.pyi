@@ -10,6 +10,12 @@ import numpy as np
 
 version: str
 
+class Refused(ValueError):
+    """A typed command's refusal (its one line)."""
+
+class NotWritten(OSError):
+    """A file a typed command could not write (its one line)."""
+
 def command(name: str, options: List[Tuple[str, Optional[str]]], operands: List[str] = ...,
             progress: Optional[Callable[[Optional[float], str], None]] = ...,
             keep_map: bool = ..., result_type: Optional[type] = ...

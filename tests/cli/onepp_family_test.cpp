@@ -104,7 +104,17 @@ TEST(TypedFamily, AChainOfThreeMassesTendsToItsGrazingLimit) {
 }
 
 TEST(TypedFamily, RefusalsComeBeforeAnyOfItIsComputed) {
+  // what the request alone decides, before a chain is read or designed
   FamilyRequest request;
+  request.count = 0;
+  EXPECT_NE(familyRequestRefusal(request, true)->find("from 1 to 10000000"), std::string::npos);
+  request.count = 2'000'000;
+  EXPECT_FALSE(familyRequestRefusal(request, true));
+  EXPECT_NE(familyRequestRefusal(request, false)->find("from 1 to 1000000"), std::string::npos);
+  request.count = 10;
+  request.precision = PrecisionChoice::Long;
+  EXPECT_EQ(*familyRequestRefusal(request, false), kFamilyOfNMassesInDouble);
+  request.precision = PrecisionChoice::Auto;
   request.count = 0;
   EXPECT_NE(familyRefusal(*chainOf({}), request)->find("not a count"), std::string::npos);
   request.count = 10;

@@ -235,8 +235,8 @@ def test_map_writes_no_file_unless_asked(tmp_path, monkeypatch):
 
 
 def test_family_and_modes_write_no_file_unless_asked(tmp_path, monkeypatch):
-    # their files are handed over in memory: the tables are views of those bytes, and nothing
-    # is written, not even to a temporary folder; with out, the same tables from the files
+    # their outcomes are handed over: the tables are the commands' own rows, and nothing is
+    # written, not even to a temporary folder; with out, the same tables and the files
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("TMPDIR", str(tmp_path))
     tempfile.tempdir = None

@@ -174,6 +174,22 @@ def test_progress_reaches_the_caller_and_can_stop_the_computation():
     assert "points" in seen[0][1]
 
 
+@pytest.mark.parametrize("raised", [RuntimeError("enough"), ValueError("mine")])
+@pytest.mark.parametrize("call", [
+    lambda progress: gl.family(count=400, progress=progress),
+    lambda progress: gl.modes(max_impacts=2, progress=progress),
+])
+def test_a_progress_callbacks_own_exception_goes_through_family_and_modes(call, raised):
+    # the typed commands' refusals are their own types: what the caller's callback raised is
+    # neither renamed (a RuntimeError as OSError) nor reworded
+    def progress(fraction, text):
+        raise raised
+
+    with pytest.raises(type(raised)) as caught:
+        call(progress)
+    assert type(caught.value) is type(raised) and str(caught.value) == str(raised)
+
+
 @pytest.mark.parametrize("call", [
     lambda progress: gl.family(count=400, progress=progress),
     lambda progress: gl.modes(max_impacts=2, progress=progress),

@@ -7,42 +7,20 @@
 #include <QFileInfo>
 #include <QPainter>
 
-#include <cmath>
 #include <string>
 #include <vector>
 
 #include "commands/simulate_command.h"
-#include "core/orbits/periodic_orbit.h"
 #include "exit_codes.h"
 #include "io/cli_output.h"
 #include "io/npy.h"
 #include "io/output_files.h"
+#include "io/table_csv.h"
 #include "io/prepared_chain.h"
 #include "ui/pictures/family_picture.h"
 
 namespace grazelab::cli {
 namespace {
-
-QByteArray number(double value) { return QByteArray::number(value, 'g', 17); }
-
-// The table as CSV: an empty cell for no value (NaN), the stability class in words
-QByteArray csvOf(const FamilyOutcome& outcome) {
-  const std::size_t columns = outcome.columns.size();
-  QByteArray csv;
-  for (std::size_t c = 0; c < columns; ++c) csv += (c ? "," : "") + QByteArray::fromStdString(outcome.columns[c]);
-  csv += "\n";
-  for (std::size_t row = 0; row < outcome.rows(); ++row) {
-    for (std::size_t c = 0; c < columns; ++c) {
-      const double value = outcome.table[row * columns + c];
-      if (c) csv += ",";
-      if (std::isnan(value)) continue;
-      csv += outcome.columns[c] == "stability" ? QByteArray(core::toString(core::Stability(int(value))).data())
-                                                : number(value);
-    }
-    csv += "\n";
-  }
-  return csv;
-}
 
 // PREFIX.csv, .npy, .json and, where pictures are drawn, .png and .svg
 int writeFamily(const FamilyOutcome& outcome, const QString& prefix, const Io& io, QString& error) {
@@ -52,17 +30,18 @@ int writeFamily(const FamilyOutcome& outcome, const QString& prefix, const Io& i
   array.reals = outcome.table;
   const JsonValue document = familyDocument(outcome, QFileInfo(prefix).fileName().toStdString());
   const QByteArray json = QByteArray::fromStdString(fieldPerLine(document, "  ", "") + "\n");
-  if (!saveAtomically(prefix + ".csv", csvOf(outcome), error) || !saveAtomically(prefix + ".npy", encodeNpy(array), error) ||
+  if (!saveAtomically(prefix + ".csv", tableCsv(outcome.columns, outcome.table), error) || !saveAtomically(prefix + ".npy", encodeNpy(array), error) ||
       !saveAtomically(prefix + ".json", json, error)) {
     return 1;
   }
-  if (picturesAvailable() && outcome.admissible > 0) {
+  const bool chain = std::holds_alternative<ChainFamily>(outcome.of);
+  // (a chain of N masses with no admissible orbit has no curve to draw)
+  if (picturesAvailable() && (!chain || outcome.admissible > 0)) {
     const QString title = QString::fromStdString(outcome.title);
     std::vector<pictures::FrequencyEnergyPoint> points;
     points.reserve(outcome.points.size());
     for (const FamilyPoint& p : outcome.points) points.push_back({p.energy, p.omega, p.admissible});
     const pictures::FrequencyEnergyPoint end{outcome.end.energy, outcome.end.omega, outcome.end.admissible};
-    const bool chain = std::holds_alternative<ChainFamily>(outcome.of);
     const QSize size(1100, 760);
     const bool drawn = savePngAndSvg(
         prefix, size, title, "GrazeLabFamily", QByteArray::fromStdString(chain ? json.toStdString() : oneLine(document)),
@@ -85,15 +64,22 @@ int writeFamily(const FamilyOutcome& outcome, const QString& prefix, const Io& i
 }  // namespace
 
 std::optional<FamilyRequest> readFamilyRequest(const OptionValues& options, QString& error) {
+  // the note's chain, however written, is the note's family; its limits are not N masses'
+  const bool notes = !options.isSet("masses") || writesTheNotesChain(options);
   FamilyRequest request;
+  const QString precisionText = options.value("precision");
+  if (!notes && precisionText != "double" && precisionText != "auto") {
+    error = kFamilyOfNMassesInDouble;
+    return std::nullopt;
+  }
   const std::optional<PrecisionChoice> precision = readPrecisionChoice(options, error);
   if (!precision) return std::nullopt;
   request.precision = *precision;
   if (options.isSet("count")) {
     bool ok = false;
     request.count = options.value("count").toLongLong(&ok);
-    if (!ok) {
-      error = QStringLiteral("--count: '%1' is not a whole number of periods").arg(options.value("count"));
+    if (!ok || request.count < 1 || request.count > familyMaxCount(notes)) {
+      error = QStringLiteral("--count: '%1' is not a count from 1 to %2").arg(options.value("count")).arg(familyMaxCount(notes));
       return std::nullopt;
     }
   }

@@ -53,11 +53,13 @@ ModesOutcome modesIn(const PreparedMassChain& prepared, const ModesRequest& requ
   S low = range.low;
   S high = range.high;
   if (request.energyRange) {
-    const auto a = core::parseScalar<S>((*request.energyRange)[0]);
-    const auto b = core::parseScalar<S>((*request.energyRange)[1]);
+    const std::string& text = *request.energyRange;
+    const std::size_t colon = text.find(':');
+    const bool two = colon != std::string::npos && text.find(':', colon + 1) == std::string::npos;
+    const auto a = two ? core::parseScalar<S>(text.substr(0, colon)) : core::ParsedScalar<S>{};
+    const auto b = two ? core::parseScalar<S>(text.substr(colon + 1)) : core::ParsedScalar<S>{};
     if (!a.value || !b.value || !(*a.value > 0) || !(*b.value > *a.value)) {
-      outcome.problem = "--energy-range: '" + (*request.energyRange)[0] + ":" + (*request.energyRange)[1] +
-                        "' is not A:B with 0 < A < B";
+      outcome.problem = "--energy-range: '" + text + "' is not A:B with 0 < A < B";
       return outcome;
     }
     low = *a.value;

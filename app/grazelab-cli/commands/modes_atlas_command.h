@@ -2,7 +2,6 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include <array>
 #include <functional>
 #include <optional>
 #include <stop_token>
@@ -25,9 +24,9 @@ class PreparedMassChain;
 
 struct ModesRequest {
   int maxImpacts = core::kDefaultAtlasMaxImpacts;  ///< 1 to 64
-  /// the energies followed, A and B as decimal text read in the precision that runs; none: the
+  /// the energies followed, "A:B" as decimal text read in the precision that runs; none: the
   /// default range (1/100 to 10000 times the grazing end's energy)
-  std::optional<std::array<std::string, 2>> energyRange;
+  std::optional<std::string> energyRange;
   PrecisionChoice precision = PrecisionChoice::Auto;  ///< auto: double
 };
 

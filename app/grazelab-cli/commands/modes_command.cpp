@@ -14,9 +14,9 @@
 #include "commands/simulate_command.h"
 #include "core/orbits/periodic_orbit.h"
 #include "exit_codes.h"
-#include "io/cli_input.h"
 #include "io/npy.h"
 #include "io/output_files.h"
+#include "io/table_csv.h"
 #include "io/prepared_chain.h"
 
 #include <QPainter>
@@ -25,25 +25,6 @@
 
 namespace grazelab::cli {
 namespace {
-
-QByteArray cell(double value) { return std::isfinite(value) ? QByteArray::number(value, 'g', 17) : QByteArray(); }
-
-// A family's table as CSV: an empty cell for no value, the stability class in words
-QByteArray csvOf(const std::vector<double>& table) {
-  const std::size_t columns = kModesColumns.size();
-  QByteArray csv;
-  for (std::size_t c = 0; c < columns; ++c) csv += (c ? "," : "") + QByteArray::fromStdString(kModesColumns[c]);
-  csv += "\n";
-  for (std::size_t at = 0; at < table.size(); at += columns) {
-    for (std::size_t c = 0; c < columns; ++c) {
-      if (c) csv += ",";
-      csv += kModesColumns[c] == "stability" ? QByteArray(core::toString(core::Stability(int(table[at + c]))).data())
-                                             : cell(table[at + c]);
-    }
-    csv += "\n";
-  }
-  return csv;
-}
 
 // The picture's curves (log10 E, 2 pi / T) and marks: the bifurcations and the ends
 template <typename S>
@@ -95,7 +76,7 @@ int writeModes(const ModesOutcome& outcome, const QString& prefix, const Io& io,
     array.rows = std::int64_t(table.size() / kModesColumns.size());
     array.columns = std::int64_t(kModesColumns.size());
     array.reals = table;
-    files.emplace_back(prefix + QStringLiteral("-family-%1.csv").arg(id), csvOf(table));
+    files.emplace_back(prefix + QStringLiteral("-family-%1.csv").arg(id), tableCsv(kModesColumns, table));
     files.emplace_back(prefix + QStringLiteral("-family-%1.npy").arg(id), encodeNpy(array));
   }
   files.emplace_back(prefix + ".json", QByteArray::fromStdString(fieldPerLine(json, "  ", "") + "\n"));
@@ -148,14 +129,7 @@ std::optional<ModesRequest> readModesRequest(const OptionValues& options, QStrin
   const std::optional<PrecisionChoice> precision = readPrecisionChoice(options, error);
   if (!precision) return std::nullopt;
   request.precision = *precision;
-  if (options.isSet("energy-range")) {
-    const QStringList parts = options.value("energy-range").split(':');
-    if (parts.size() != 2) {
-      error = QStringLiteral("--energy-range: '%1' is not A:B with 0 < A < B").arg(options.value("energy-range"));
-      return std::nullopt;
-    }
-    request.energyRange = {parts[0].toStdString(), parts[1].toStdString()};
-  }
+  if (options.isSet("energy-range")) request.energyRange = options.value("energy-range").toStdString();
   return request;
 }
 

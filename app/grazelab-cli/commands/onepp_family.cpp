@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
-#include <type_traits>
 
 #include "commands/orbit_json.h"
 #include "core/orbits/chain_glo.h"
@@ -301,19 +300,22 @@ V chainDocument(const FamilyOutcome& outcome, const ChainFamily& family, const s
 
 }  // namespace
 
+std::int64_t familyMaxCount(bool notesChain) { return notesChain ? 10'000'000 : 1'000'000; }
+
+std::optional<std::string> familyRequestRefusal(const FamilyRequest& request, bool notesChain) {
+  if (!notesChain && request.precision != PrecisionChoice::Auto && request.precision != PrecisionChoice::Double) {
+    return kFamilyOfNMassesInDouble;
+  }
+  if (request.count < 1 || request.count > familyMaxCount(notesChain)) {
+    return "--count: '" + std::to_string(request.count) + "' is not a count from 1 to " +
+           std::to_string(familyMaxCount(notesChain));
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> familyRefusal(const PreparedMassChain& chain, const FamilyRequest& request) {
-  if (!chain.isTheNotesChain()) {
-    if (request.precision != PrecisionChoice::Auto && request.precision != PrecisionChoice::Double) {
-      return "--precision: the family of a chain of N masses is computed in double for now (give double or auto)";
-    }
-    if (request.count < 1 || request.count > 1'000'000) {
-      return "--count: '" + std::to_string(request.count) + "' is not a count from 1 to 1000000";
-    }
-    return std::nullopt;
-  }
-  if (request.count < 1 || request.count > 10'000'000) {
-    return "--count: '" + std::to_string(request.count) + "' is not a count from 1 to 10000000";
-  }
+  if (std::optional<std::string> refusal = familyRequestRefusal(request, chain.isTheNotesChain())) return refusal;
+  if (!chain.isTheNotesChain()) return std::nullopt;
   const Parsed<ModelInput<double>>& model = chain.twoMassForm<double>();
   if (!model.value) return model.error.toStdString();
   if (!model.value->chain.resonant) {

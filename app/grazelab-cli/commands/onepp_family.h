@@ -77,9 +77,18 @@ struct FamilyOutcome {
   std::size_t rows() const { return columns.empty() ? 0 : table.size() / columns.size(); }
 };
 
-/// Why `chain` has no family to compute for `request` (a count out of range, a precision a chain
-/// of N masses is not computed in, a two-mass chain off the 1:2 design...), before any of it is
-/// computed; none when it has one.
+/// The most periods a family is computed at: 10 000 000 for the note's chain, 1 000 000 for N masses.
+std::int64_t familyMaxCount(bool notesChain);
+/// Why a chain of N masses' family is refused in long double or binary128.
+inline constexpr const char* kFamilyOfNMassesInDouble =
+    "--precision: the family of a chain of N masses is computed in double for now (give double or auto)";
+
+/// Why `request` is refused whatever the chain's numbers (a count out of range, a precision a
+/// chain of N masses is not computed in): before the chain is read or designed. `notesChain`: the
+/// note's chain, however written.
+std::optional<std::string> familyRequestRefusal(const FamilyRequest& request, bool notesChain);
+/// Why `chain` has no family to compute for `request` (familyRequestRefusal, or a two-mass chain
+/// off the 1:2 design), before any of it is computed; none when it has one.
 std::optional<std::string> familyRefusal(const PreparedMassChain& chain, const FamilyRequest& request);
 
 /// The 1IPP family of `chain`: the note's chain (its 1:2 design) by Theorem 2.1's closed form with

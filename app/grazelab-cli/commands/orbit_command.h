@@ -32,7 +32,7 @@ int runOrbit(const OptionValues& options, const Io& io, std::stop_token stop, QS
 /// request; nothing, with `error` the line that says why.
 std::optional<OrbitRequest> readOrbitRequest(const OptionValues& options, QString& error);
 
-/// The chain of a two-mass command (orbit): a chain given by --masses of another shape is refused
+/// The chain of a two-mass command (orbit, modes): a chain given by --masses of another shape is refused
 /// before it is designed; else the chain read and checked once (recentChain), its two-mass form
 /// read once in each precision asked for. An interrupted design gives neither a chain nor an
 /// error.
