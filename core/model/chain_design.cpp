@@ -9,6 +9,8 @@
 #include <cmath>
 #include <complex>
 #include <cstdint>
+#include <deque>
+#include <mutex>
 #include <numeric>
 #include <optional>
 #include <random>
@@ -458,9 +460,45 @@ std::optional<std::vector<Quad>> refinedSprings(const std::vector<Quad>& masses,
   return springs;
 }
 
+namespace {
+
+// The designs of the chains designed last, by their numbers: a design is a function of them
+// alone, and an explorer's slider that moves the gap or the start (the chain's masses kept)
+// would otherwise follow the same N! paths again at every step (3 masses: ~3 ms of a 30 ms
+// frame). Stopped searches are not kept.
+struct DesignKey {
+  std::vector<double> masses;
+  double k1;
+  double rightSpring;
+  std::vector<int> harmonics;
+  bool operator==(const DesignKey&) const = default;
+};
+
+ChainDesigns recentDesigns(const std::vector<double>& masses, double k1, double rightSpring,
+                           const std::vector<int>& harmonics, std::stop_token stop) {
+  static std::mutex mutex;
+  static std::deque<std::pair<DesignKey, ChainDesigns>> recent;  // the latest last
+  constexpr std::size_t kKept = 8;
+  DesignKey key{masses, k1, rightSpring, harmonics};
+  {
+    const std::lock_guard lock(mutex);
+    const auto found = std::find_if(recent.begin(), recent.end(), [&key](const auto& kept) { return kept.first == key; });
+    if (found != recent.end()) return found->second;
+  }
+  ChainDesigns designs = designSprings(masses, k1, rightSpring, harmonics, std::move(stop));
+  if (designs.outcome != DesignOutcome::Stopped) {
+    const std::lock_guard lock(mutex);
+    recent.emplace_back(std::move(key), designs);
+    if (recent.size() > kKept) recent.pop_front();
+  }
+  return designs;
+}
+
+}  // namespace
+
 DesignChoice chooseDesign(const std::vector<double>& masses, double k1, double rightSpring,
                           const std::vector<int>& harmonics, int number, std::stop_token stop) {
-  DesignChoice choice{harmonics, designSprings(masses, k1, rightSpring, harmonics, std::move(stop)), number,
+  DesignChoice choice{harmonics, recentDesigns(masses, k1, rightSpring, harmonics, std::move(stop)), number,
                       DesignChoiceProblem::None};
   switch (choice.designs.outcome) {
     case DesignOutcome::Designed:

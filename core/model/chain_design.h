@@ -106,7 +106,8 @@ struct DesignChoice {
 
 /// The designs of a chain of these masses, k_1 and right wall (0: none) for the ratios
 /// `harmonics`, and design `number` (1-based) taken (designSprings; the problem when there is none
-/// or fewer than `number`).
+/// or fewer than `number`). The designs of the last 8 chains asked for are kept (thread-safe):
+/// asking again for the same numbers returns them without searching.
 DesignChoice chooseDesign(const std::vector<double>& masses, double k1, double rightSpring,
                           const std::vector<int>& harmonics, int number, std::stop_token stop = {});
 

@@ -269,6 +269,9 @@ void PlotView::setPresentation(bool on, int textPixels) {
 
 void PlotView::setData(int index, std::vector<QPointF> data) {
   Entry& entry = m_entries[std::size_t(index)];
+  // the same points again (a mark a view sets at each update of a run): nothing to redraw
+  const auto same = [](const QPointF& a, const QPointF& b) { return a.x() == b.x() && a.y() == b.y(); };
+  if (!entry.owner && std::equal(entry.data.begin(), entry.data.end(), data.begin(), data.end(), same)) return;
   entry.data = std::move(data);
   entry.inPlace = {};
   entry.owner.reset();
@@ -649,29 +652,26 @@ void PlotView::refresh() {
     const bool replaced = entry.replaced;
     entry.replaced = false;
     const PointSpan points = entry.points();
-    switch (entry.decimation) {
-      case Decimation::None: {
-        QList<QPointF> all;
-        all.reserve(qsizetype(points.size()));
-        for (std::size_t index = 0; index < points.size(); ++index) all.append(points[index]);
-        entry.series->replace(all);
-        break;
-      }
-      case Decimation::Trace:
-        entry.series->replace(entry.reduced->update(points, frame, replaced));
-        break;
-      case Decimation::Path: {
-        // 2-pixel cells: Qt Charts strokes a hover shape for every line point, so each point
-        // costs; a 1.2 px antialiased line looks the same
-        PixelFrame coarse = frame;
-        coarse.width = std::max(1, frame.width / 2);
-        coarse.height = std::max(1, frame.height / 2);
-        entry.series->replace(entry.reduced->update(points, coarse, replaced));
-        break;
-      }
-      case Decimation::Scatter:
-        entry.series->replace(entry.reduced->update(points, markerCells(entry.series), replaced));
-        break;
+    // the cells its points are reduced to
+    PixelFrame cells = frame;
+    if (entry.decimation == Decimation::Path) {
+      // 2-pixel cells: Qt Charts strokes a hover shape for every line point, so each point
+      // costs; a 1.2 px antialiased line looks the same
+      cells.width = std::max(1, frame.width / 2);
+      cells.height = std::max(1, frame.height / 2);
+    } else if (entry.decimation == Decimation::Scatter) {
+      cells = markerCells(entry.series);
+    }
+    if (!replaced && entry.drawnFrame == cells && entry.drawnCount == points.size()) continue;
+    entry.drawnFrame = cells;
+    entry.drawnCount = points.size();
+    if (entry.decimation == Decimation::None) {
+      QList<QPointF> all;
+      all.reserve(qsizetype(points.size()));
+      for (std::size_t index = 0; index < points.size(); ++index) all.append(points[index]);
+      entry.series->replace(all);
+    } else {
+      entry.series->replace(entry.reduced->update(points, cells, replaced));
     }
     if (entry.reduced && entry.reduced->startedOver() && !points.empty()) scratch = true;
   }

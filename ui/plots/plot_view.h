@@ -68,6 +68,10 @@ class PlotView : public QChartView, public SceneView {
     /// what has been drawn of `data`, kept while points are only appended
     std::shared_ptr<IncrementalDecimation> reduced;
     bool replaced = true;  ///< `data` were set anew since the last refresh (not appended to)
+    /// what the series was last given: of how many points, on which frame (a refresh that
+    /// would give it the same skips it: Qt Charts lays a series out again on every replace)
+    std::size_t drawnCount = 0;
+    std::optional<PixelFrame> drawnFrame;
     /// the finite points' extent, over the first `boundsCounted` points
     Extent bounds;
     std::size_t boundsCounted = 0;

@@ -720,7 +720,9 @@ void MainWindow::applyPending() {
   for (PlotView* plot : m_plots) {
     viewClock.start();
     plot->setStale(stale);
-    plot->setGrowing(!m_displayed->final);
+    // a whole run is fitted tightly at once, even while a sweep, a map or a contrast's run
+    // goes on after it: fitted loosely first, its axes moved twice for every edit
+    plot->setGrowing(!m_displayed->final && !m_displayed->runDone);
     plot->refreshNow();
     m_viewCosts[plot] += viewClock.nsecsElapsed() * 1e-6;
   }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stop_token>
 
 #include "core/model/mass_chain.h"
 #include "core/model/model.h"
@@ -291,6 +292,30 @@ TEST(ChainDesign, RefusesBadRequests) {
   const ChainDesigns plain = designSprings({1.0, 0.5}, 1.0, {2, 1});
   ASSERT_EQ(doubled.designs.size(), plain.designs.size());
   EXPECT_EQ(doubled.designs[0].omega0, plain.designs[0].omega0);
+}
+
+// chooseDesign keeps the designs it made: asked again it gives the same bits as a fresh search;
+// a search that was stopped is not kept (asked again, the chain is designed)
+TEST(ChainDesign, ChosenDesignsAreKeptButAStoppedSearchIsNot) {
+  const std::vector<double> masses{1.0, 0.31, 0.07};  // (masses no other test asks for)
+  std::stop_source stopped;
+  stopped.request_stop();
+  EXPECT_EQ(chooseDesign(masses, 1.0, 0.0, {3, 2, 1}, 1, stopped.get_token()).problem, DesignChoiceProblem::Stopped);
+  const DesignChoice first = chooseDesign(masses, 1.0, 0.0, {3, 2, 1}, 1);
+  ASSERT_EQ(first.problem, DesignChoiceProblem::None);
+  const ChainDesigns fresh = designSprings(masses, 1.0, 0.0, {3, 2, 1});
+  const DesignChoice again = chooseDesign(masses, 1.0, 0.0, {3, 2, 1}, 2);
+  ASSERT_EQ(fresh.designs.size(), first.designs.designs.size());
+  ASSERT_EQ(again.designs.designs.size(), first.designs.designs.size());
+  for (std::size_t i = 0; i < fresh.designs.size(); ++i) {
+    EXPECT_EQ(again.designs.designs[i].springs, fresh.designs[i].springs) << "design " << i + 1;
+    EXPECT_EQ(first.designs.designs[i].springs, fresh.designs[i].springs) << "design " << i + 1;
+  }
+  EXPECT_EQ(again.number, 2);
+  // another k1 is another chain: its springs scale with it
+  const DesignChoice stiffer = chooseDesign(masses, 2.0, 0.0, {3, 2, 1}, 1);
+  ASSERT_EQ(stiffer.problem, DesignChoiceProblem::None);
+  EXPECT_NEAR(stiffer.chosen().springs[1], 2 * first.chosen().springs[1], 1e-13 * first.chosen().springs[1]);
 }
 
 }  // namespace
