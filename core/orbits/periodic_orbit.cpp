@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "core/numbers/roots.h"
@@ -537,6 +538,37 @@ OrbitSearch<S> findOrbit(const TwoMassForm<S>& chain, const S& energy, const S& 
   return search;
 }
 
+namespace {
+
+// How the closed form's data lose digits near a multiple of T1 or T2: cot(w_j T / 2) is
+// conditioned like (w_j T / 2) / sin(w_j T / 2) in T (at least 1)
+template <typename S>
+S closedFormConditioning(const TwoMassForm<S>& chain, const S& T) {
+  using std::abs;
+  using std::sin;
+  S conditioning = 1;
+  for (const S& w : {S(chain.ratio * chain.omegaSlow), chain.omegaSlow}) {
+    const S half = w * T / S(2);
+    conditioning = std::max(conditioning, S(abs(half / sin(half))));
+  }
+  return conditioning;
+}
+
+// How far the path from the closed form's data may be from closing by rounding alone. The data
+// are off by O(eps) of the state's scale (the digits cot(w1 T / 2) loses near T1 sit in V, itself
+// ~ T1 - T), and one return carries that error by DP - I, whose entries reach the orbit's
+// amplification: near T1 the saltation's 2 a2 / v2 makes it about 2/3 of the conditioning. So
+// closeTolerance's bound, without its cap (the data are an orbit: no "too far to be one" here),
+// and with the conditioning in case the path's own amplification understates it.
+template <typename S>
+S closedFormClosingBound(const TwoMassForm<S>& chain, const PeriodicOrbit<S>& orbit, const S& T) {
+  using std::abs;
+  return defaultCloseTolerance<S>() * S(8 * std::max(1, orbit.impacts)) *
+         std::max({S(1), S(abs(orbit.trace)), orbit.amplification, closedFormConditioning(chain, T)});
+}
+
+}  // namespace
+
 template <typename S>
 OrbitSearch<S> onePeriodicOrbitStability(const TwoMassForm<S>& chain, const S& T) {
   OrbitSearch<S> search;
@@ -554,6 +586,21 @@ OrbitSearch<S> onePeriodicOrbitStability(const TwoMassForm<S>& chain, const S& T
     using std::abs;
     if (polished.orbit && abs(polished.orbit->period - T) <= S(1e-6) * T && stabilityDecided(*polished.orbit)) {
       orbit = std::move(*polished.orbit);
+    } else if (const S bound = closedFormClosingBound(chain, orbit, T); orbit.checks.periodicityResidual <= bound) {
+      // the exact data are an orbit: a path that misses closing by no more than the rounding
+      // amplified this near a multiple of T1 (the impact speed V ~ T1 - T, the return map's
+      // 2 a2 / V) is not an open path, but an orbit S cannot decide
+      char text[192];
+      std::snprintf(text, sizeof text,
+                    ": its path misses closing by %.1e (relative), within the %.1e that the rounding, "
+                    "amplified %.1e times this near a multiple of T1, allows",
+                    toDouble(orbit.checks.periodicityResidual), toDouble(bound), toDouble(orbit.amplification));
+      search.refusal = OrbitRefusal::Undecided;
+      search.problem = "the 1IPP orbit of period " + formatScalar(T) + " cannot be decided in " +
+                       std::string(toString(precisionOf<S>())) + text +
+                       (precisionOf<S>() == Precision::Quad ? " (binary128 is the highest precision there is)"
+                                                            : " (try a higher precision)");
+      return search;
     }
   }
   if (!orbit.admissible) {
@@ -565,14 +612,7 @@ OrbitSearch<S> onePeriodicOrbitStability(const TwoMassForm<S>& chain, const S& T
     // the closed form's own data: cot(w_j T / 2) loses digits like (w_j T / 2) / sin(w_j T / 2)
     // near a multiple of T_j (near T2 the impact speed, a 1e-11 fraction of w2 d just below T2,
     // is off by 1e-5 of itself in double)
-    using std::abs;
-    using std::sin;
-    S conditioning = 1;
-    for (const S& w : {S(chain.ratio * chain.omegaSlow), chain.omegaSlow}) {
-      const S half = w * T / S(2);
-      conditioning = std::max(conditioning, S(abs(half / sin(half))));
-    }
-    search.dataError = S(8) * epsilon<S>() * conditioning;
+    search.dataError = S(8) * epsilon<S>() * closedFormConditioning(chain, T);
   } else {
     search.dataError = closeTolerance(orbit);  // polished: an orbit of its own period to its closing
   }

@@ -71,7 +71,8 @@ struct OrbitChecks {
 enum class OrbitRefusal {
   None,          ///< admissible
   BadStart,      ///< no impact asked for, or the start is not just after an impact
-  Undecided,     ///< a contact of the path cannot be decided in this precision
+  Undecided,     ///< a contact of the path cannot be decided in this precision, or (1IPP) the
+                 ///< path misses closing only by the rounding amplified near a multiple of T1
   ContactCount,  ///< the path made another number of contacts than asked
   NotImpact,     ///< a contact of the path is a grazing or a stick, not an impact
   NotClosed,     ///< the path does not come back to its start
@@ -176,6 +177,10 @@ OrbitSearch<S> findOrbit(const TwoMassForm<S>& chain, const S& energy, const S& 
                          int impacts, std::stop_token stop = {});
 
 /// The 1IPP orbit of period T (closed-form data, docs/model.md section 5) with its stability.
+/// Near a multiple of T1 the impact speed V ~ T1 - T tends to 0 and the return map amplifies
+/// the rounding like T1 / (T1 - T): a path from the data that misses closing by no more than
+/// that (8 x 512 eps times the largest of |tr|, the amplification and the closed form's
+/// conditioning), and that Newton cannot polish, is OrbitRefusal::Undecided, not NotClosed.
 template <typename S>
 OrbitSearch<S> onePeriodicOrbitStability(const TwoMassForm<S>& chain, const S& T);
 

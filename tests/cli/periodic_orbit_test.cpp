@@ -97,6 +97,33 @@ TEST(TypedOrbit, AutoRaisesWhereTheClosedFormLosesItsDigitsAndAFixedPrecisionSay
   EXPECT_EQ(orbitDocument(raised).find("precision")->text, std::string(core::toString(raised.precision)));
 }
 
+TEST(TypedOrbit, NearT1AnOrbitNoPrecisionDecidesIsUndecidedNotRefusedAsOpen) {
+  // 1.3e-10 below T1 = T2 / 2 of the note's chain, where the family's lower part ends on GLOM1:
+  // the impact speed is 4e-10 and the return map amplifies the rounding 2e10 times; no precision
+  // decides the orbit, and none says that its path does not close
+  const auto chain = chainOf({});
+  OrbitRequest request;
+  request.period = "4.44288293802508";
+  for (PrecisionChoice precision :
+       {PrecisionChoice::Double, PrecisionChoice::Long, PrecisionChoice::Quad, PrecisionChoice::Auto}) {
+    request.precision = precision;
+    const OrbitOutcome outcome = solveOrbit(*chain, request);
+    EXPECT_EQ(outcome.status, OrbitStatus::Undecided) << outcome.problem;
+    EXPECT_EQ(outcome.problem.find("does not close"), std::string::npos) << outcome.problem;
+    EXPECT_TRUE(std::holds_alternative<std::monostate>(outcome.found));
+  }
+  // 1e-7 below T1 auto no longer stops at long double's "does not close": found or undecided
+  request.period = "4.442882838158366247";
+  request.precision = PrecisionChoice::Auto;
+  const OrbitOutcome below = solveOrbit(*chain, request);
+  EXPECT_NE(below.status, OrbitStatus::Refused) << below.problem;
+  // 1e-7 above T1 the data leave into the stop (V > 0): refused, decided
+  request.period = "4.442883038158366247";
+  const OrbitOutcome above = solveOrbit(*chain, request);
+  EXPECT_EQ(above.status, OrbitStatus::Refused);
+  EXPECT_NE(above.problem.find(">= 0"), std::string::npos) << above.problem;
+}
+
 TEST(TypedOrbit, RefusalsAreLinesAndAnotherShapeIsNotDesigned) {
   // three masses: refused on their shape (a design of them would take a while first)
   const auto three = twoMassChainOf(OptionValues(Options{{"masses", "1,0.2,0.05"}, {"frequencies", "3:2:1"}}));

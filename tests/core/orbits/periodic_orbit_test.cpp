@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <optional>
+#include <string>
+#include <type_traits>
 
 #include "core/model/two_mass_form.h"
 #include "core/orbits/special_orbits.h"
@@ -181,6 +183,39 @@ TEST(PeriodicOrbitTest, aPathThatIsNotTheOrbitIsRefusedWithItsReason) {
   EXPECT_NE(open.reason.find("does not close"), std::string::npos) << open.reason;
   // no state of that energy there
   EXPECT_FALSE(findOrbit(chain, orbit.energy, 50.0, 0.0, 1).orbit);
+}
+
+TEST(PeriodicOrbitTest, nearT1APathThatMissesClosingByTheAmplifiedRoundingIsUndecidedNotOpen) {
+  // the lower part of the 1IPP family ends at T1 = T2 / 2 on GLOM1's data: the impact speed V
+  // falls like T1 - T, and the return map amplifies the rounding like 2 a2 / V (2e10 at the
+  // note's period 4.44288293802508, 1.3e-10 below T1, where binary128's path misses closing by
+  // 9e-25): undecided there, never "does not close"; a 50-digit evaluation closes it to 1e-52
+  const TwoMassForm<Quad> exact = resonantChain<Quad>();
+  const OrbitSearch<Quad> near = onePeriodicOrbitStability(exact, parseScalar<Quad>("4.44288293802508").value.value());
+  EXPECT_FALSE(near.orbit);
+  EXPECT_EQ(near.refusal, OrbitRefusal::Undecided) << near.problem;
+  EXPECT_EQ(near.problem.find("does not close"), std::string::npos) << near.problem;
+  EXPECT_NE(near.problem.find("cannot be decided in quad"), std::string::npos) << near.problem;
+  // 1e-9 and 1e-7 below T1 in each precision: found, or undecided; never refused as open
+  const auto foundOrUndecided = [](const auto& chain, const auto& below) {
+    using Scalar = std::decay_t<decltype(below)>;
+    const Scalar T1 = twoPi<Scalar>() / (chain.ratio * chain.omegaSlow);
+    const auto search = onePeriodicOrbitStability(chain, Scalar(T1 - below));
+    if (!search.orbit) EXPECT_EQ(search.refusal, OrbitRefusal::Undecided) << search.problem;
+    else EXPECT_LT(search.orbit->checks.periodicityResidual, Scalar(1e-6));
+  };
+  for (double below : {1e-9, 1e-7}) {
+    foundOrUndecided(resonantChain<double>(), below);
+    foundOrUndecided(resonantChain<long double>(), (long double)below);
+    foundOrUndecided(exact, Quad(below));
+  }
+  // above T1, V > 0: refused, and decided so in every precision
+  const Quad T1 = twoPi<Quad>() / (exact.ratio * exact.omegaSlow);
+  const OrbitSearch<Quad> above = onePeriodicOrbitStability(exact, Quad(T1 + Quad(1e-9)));
+  EXPECT_FALSE(above.orbit);
+  EXPECT_NE(above.refusal, OrbitRefusal::Undecided);
+  EXPECT_NE(above.problem.find(">= 0"), std::string::npos) << above.problem;
+  // (a start really off an orbit still does not close: aPathThatIsNotTheOrbitIsRefusedWithItsReason)
 }
 
 }  // namespace
