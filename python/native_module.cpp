@@ -43,6 +43,7 @@
 #include "commands/modes_command.h"
 #include "commands/orbit_command.h"
 #include "commands/simulate_command.h"
+#include "commands/simulation_document.h"
 #include "core/experiments/maps.h"
 #include "exit_codes.h"
 #include "io/cli_io.h"
@@ -261,17 +262,20 @@ py::array chainEventArray(grazelab::cli::ChainEventTable&& table, const py::dtyp
                    rows->data(), owner);
 }
 
-// A chain's samples, an object of columns in the dtype's order, as one structured array
-py::array chainSampleArray(const grazelab::cli::JsonValue& columns, const py::dtype& dtype) {
-  const std::size_t count = columns.fields.empty() ? 0 : columns.fields.front().second.items.size();
-  py::array array(dtype, py::array::ShapeContainer{static_cast<py::ssize_t>(count)});
+// A chain's samples (t, u1..uN, v1..vN in double) as one structured array of the dtype's columns
+py::array chainSampleArray(const std::vector<std::pair<double, grazelab::core::ChainState>>& samples,
+                           const py::dtype& dtype) {
+  py::array array(dtype, py::array::ShapeContainer{static_cast<py::ssize_t>(samples.size())});
   auto* data = static_cast<char*>(array.mutable_data());
   const std::size_t itemsize = std::size_t(dtype.itemsize());
-  for (std::size_t c = 0; c < columns.fields.size(); ++c) {
-    const std::vector<grazelab::cli::JsonValue>& column = columns.fields[c].second.items;
-    for (std::size_t k = 0; k < count; ++k) {
-      const double value = column[k].toDouble();
-      std::memcpy(data + k * itemsize + c * sizeof(double), &value, sizeof value);
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const auto& [t, state] = samples[k];
+    char* row = data + k * itemsize;
+    std::memcpy(row, &t, sizeof t);
+    const Eigen::Index n = state.u.size();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      std::memcpy(row + std::size_t(1 + i) * sizeof(double), &state.u[i], sizeof(double));
+      std::memcpy(row + std::size_t(1 + n + i) * sizeof(double), &state.v[i], sizeof(double));
     }
   }
   return array;
@@ -288,34 +292,42 @@ py::object documentToPython(const grazelab::cli::JsonValue& document, const py::
   return result;
 }
 
-// A simulate's document as its Python result, the same for every chain however it was written:
-// its events, from `table`, as one structured array (None when discarded) and its samples (columns
-// in the document) as another, the rest as values (in a wider precision than double also the whole
-// document as text, under `decimal`), and `notes`. Returns (the result, the events' decimal text in
-// long double or binary128, 2N + 2 a row, else None).
-py::tuple simulationResult(grazelab::cli::JsonValue& document, grazelab::cli::ChainEventTable&& table,
-                           const py::object& resultType, const std::vector<std::string>& notes) {
-  const grazelab::cli::JsonValue* described = document.find("chain");
-  const ChainDtypes& dtypes = chainDtypes(described->find("masses")->items.size(),
-                                          std::size_t(described->find("stop_mass")->integer));
+// A simulate's outcome as its Python result, the same for every chain however it was written:
+// its document's values (commands/simulation_document.h) made Python objects as they are made in
+// double; in a wider precision the document as JsonValue, whose numbers keep their text, under
+// `decimal` too; its events, from `table`, as one structured array (None when discarded), its
+// samples as another, and `notes`. Returns (the result, the events' decimal text in long double or
+// binary128, 2N + 2 a row, else None).
+py::tuple simulationResult(const grazelab::cli::SimulateOutcome& outcome, const grazelab::cli::SimulateRequest& request,
+                           grazelab::cli::ChainEventTable&& table, const py::object& resultType) {
+  // (the samples apart: an array, not a document's columns)
+  grazelab::cli::SimulateRequest unsampled = request;
+  unsampled.sampled = false;
+  py::object result;
+  if (outcome.precision == grazelab::core::Precision::Double) {
+    const grazelab::python::PyValue::ObjectType objects(resultType);
+    result = grazelab::cli::simulationDocument<grazelab::python::PyValue>(outcome, unsampled).take();
+  } else {
+    grazelab::cli::JsonValue document = grazelab::cli::simulationDocument<grazelab::cli::JsonValue>(outcome, unsampled);
+    result = grazelab::python::toPython(document, resultType);  // (its events, None, in their place)
+    document.remove("events");  // (the result's are an array; `decimal` has none)
+    result["decimal"] = grazelab::python::toPython(document, resultType, true);
+  }
+  const std::size_t masses = table.masses, stopped = std::size_t(table.stopped);
+  const ChainDtypes& dtypes = chainDtypes(masses, stopped);
   const py::object events =
       table.discard ? py::object(py::none()) : py::object(chainEventArray(std::move(table), dtypes.events));
-  const grazelab::cli::JsonValue* samples = document.find("samples");
-  const py::object sampleArray = samples ? py::object(chainSampleArray(*samples, dtypes.samples)) : py::object();
-  document.remove("events");
-  document.remove("samples");
-  const py::object decimal = document.holdsWideNumbers() ? grazelab::python::toPython(document, resultType, true)
-                                                         : py::object();
-  py::object result = grazelab::python::toPython(document, resultType);
   // (names made once: a short run's call is a few microseconds)
   static PyObject* const eventsKey = PyUnicode_InternFromString("events");
   static PyObject* const notesKey = PyUnicode_InternFromString("notes");
   if (PyDict_SetItem(result.ptr(), eventsKey, events.ptr()) != 0 ||
-      PyDict_SetItem(result.ptr(), notesKey, py::cast(notes).ptr()) != 0) {
+      PyDict_SetItem(result.ptr(), notesKey, py::cast(outcome.notes).ptr()) != 0) {
     throw py::error_already_set();
   }
-  if (sampleArray) result["samples"] = sampleArray;
-  if (decimal) result["decimal"] = decimal;
+  if (request.sampled) {
+    result["samples"] = chainSampleArray(outcome.samples, dtypes.samples);
+    result["samples_truncated"] = py::bool_(outcome.samplesTruncated);
+  }
   return py::make_tuple(result, table.decimals.empty() ? py::object(py::none()) : py::cast(table.decimals));
 }
 
@@ -601,8 +613,7 @@ py::tuple simulateTyped(const grazelab::cli::PreparedMassChain& chain, const gra
   if (outcome.status == grazelab::cli::SimulateStatus::Refused) {
     throw py::value_error(QString::fromStdString(outcome.problem).simplified().toStdString());
   }
-  grazelab::cli::JsonValue document = grazelab::cli::simulationDocument(outcome, *request);
-  return simulationResult(document, std::move(table), resultType, outcome.notes);
+  return simulationResult(outcome, *request, std::move(table), resultType);
 }
 
 // simulate(options, result_type, events, max_events, discard_events, direct) -> (result with its

@@ -51,7 +51,68 @@ py::object owned(PyObject* made) {
   return py::reinterpret_steal<py::object>(made);
 }
 
+// A new instance of `type` (the C API directly: a document is ~70 objects, and a short run costs
+// a few microseconds): the type's tp_new, as calling the type would, without the call's own work
+py::object newObject(PyTypeObject* type) {
+  static PyObject* const noArguments = PyTuple_New(0);  // (kept to the process's end)
+  return owned(type->tp_new(type, noArguments, nullptr));
+}
+
+// the type PyValue makes objects of (PyValue::ObjectType; the GIL guards it)
+PyTypeObject* objectTypeNow = &PyDict_Type;
+
 }  // namespace
+
+PyValue::PyValue(PyObject* made) : m_object(owned(made)) {}
+
+PyValue::ObjectType::ObjectType(const py::handle& type) : m_before(objectTypeNow) {
+  objectTypeNow = reinterpret_cast<PyTypeObject*>(type.ptr());
+}
+PyValue::ObjectType::~ObjectType() { objectTypeNow = m_before; }
+
+PyValue PyValue::null() {
+  PyValue value;
+  value.m_object = py::none();
+  return value;
+}
+PyValue PyValue::of(bool value) { return PyValue(PyBool_FromLong(value ? 1 : 0)); }
+PyValue PyValue::of(std::int64_t value) { return PyValue(PyLong_FromLongLong(value)); }
+PyValue PyValue::of(const std::string& text) {
+  return PyValue(PyUnicode_FromStringAndSize(text.data(), static_cast<Py_ssize_t>(text.size())));
+}
+PyValue PyValue::of(const char* text) { return PyValue(PyUnicode_FromString(text)); }
+
+PyValue PyValue::array(std::vector<PyValue> items) {
+  PyValue list(PyList_New(static_cast<Py_ssize_t>(items.size())));
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    PyList_SET_ITEM(list.m_object.ptr(), static_cast<Py_ssize_t>(i), items[i].m_object.release().ptr());
+  }
+  return list;
+}
+PyValue PyValue::array(std::initializer_list<Item> items) {
+  PyValue list(PyList_New(static_cast<Py_ssize_t>(items.size())));
+  Py_ssize_t i = 0;
+  for (const Item& item : items) PyList_SET_ITEM(list.m_object.ptr(), i++, item.value->m_object.release().ptr());
+  return list;
+}
+
+PyValue PyValue::object(std::vector<Field> fields) {
+  PyValue object;
+  object.m_object = newObject(objectTypeNow);
+  for (Field& field : fields) object.set(field.first, std::move(field.second));
+  return object;
+}
+PyValue PyValue::object(std::initializer_list<Member> members) {
+  PyValue object;
+  object.m_object = newObject(objectTypeNow);
+  for (const Member& member : members) object.set(member.key, std::move(*member.value));
+  return object;
+}
+
+void PyValue::set(const cli::JsonKey& key, PyValue value) {
+  const py::object name = owned(keyObject(key));
+  if (PyDict_SetItem(m_object.ptr(), name.ptr(), value.m_object.ptr()) != 0) throw py::error_already_set();
+}
 
 py::object toPython(const cli::JsonValue& value, const py::handle& objectType, bool numbersAsText) {
   using Kind = cli::JsonValue::Kind;
@@ -73,12 +134,8 @@ py::object toPython(const cli::JsonValue& value, const py::handle& objectType, b
       return items;
     }
     case Kind::Object: {
-      // the C API directly (a document is ~70 objects, and a short run costs a few microseconds):
-      // the type's tp_new, as calling the type would, without the call's own work (objectType
-      // is a dict subclass that defines neither __new__ nor __init__)
-      auto* type = reinterpret_cast<PyTypeObject*>(objectType.ptr());
-      static PyObject* const noArguments = PyTuple_New(0);  // (kept to the process's end)
-      const py::object object = owned(type->tp_new(type, noArguments, nullptr));
+      // (objectType is a dict subclass that defines neither __new__ nor __init__)
+      const py::object object = newObject(reinterpret_cast<PyTypeObject*>(objectType.ptr()));
       for (const auto& [key, field] : value.fields) {
         const py::object item = toPython(field, objectType, numbersAsText);
         const py::object name = owned(keyObject(key));

@@ -4,6 +4,13 @@
 
 #include <pybind11/pybind11.h>
 
+#include <cstdint>
+#include <initializer_list>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/numbers/scalar.h"
 #include "io/json_value.h"
 
 namespace grazelab::python {
@@ -13,5 +20,62 @@ namespace grazelab::python {
 /// their decimal text instead, in the run's precision (what `decimal` holds for long and quad).
 pybind11::object toPython(const cli::JsonValue& value, const pybind11::handle& objectType,
                           bool numbersAsText = false);
+
+/// A document's value made a Python object as the document is built: the value type V of the
+/// documents written once for every face (io/document_values.h, commands/simulation_document.h),
+/// with JsonValue's factories. Numbers are floats (a value wider than double rounded: a document
+/// in long double or binary128 goes through JsonValue, which keeps their text), counts ints, names
+/// strs made once, objects instances of the type ObjectType names. Made with the GIL held.
+class PyValue {
+ public:
+  using Field = std::pair<cli::JsonKey, PyValue>;
+  /// {name, value} in a braced list (moved from, like JsonMember)
+  struct Member {
+    Member(cli::JsonKey name, PyValue&& v) : key(std::move(name)), value(&v) {}
+    cli::JsonKey key;
+    PyValue* value;
+  };
+  struct Item {
+    Item(PyValue&& v) : value(&v) {}  // NOLINT(google-explicit-constructor)
+    PyValue* value;
+  };
+  /// While it lives, objects are made as instances of `type` (a dict subclass that defines
+  /// neither __new__ nor __init__: grazelab.Result), else plain dicts.
+  class ObjectType {
+   public:
+    explicit ObjectType(const pybind11::handle& type);
+    ~ObjectType();
+    ObjectType(const ObjectType&) = delete;
+    ObjectType& operator=(const ObjectType&) = delete;
+
+   private:
+    PyTypeObject* m_before;
+  };
+
+  static PyValue null();
+  static PyValue of(bool value);
+  static PyValue of(std::int64_t value);
+  static PyValue of(const std::string& text);
+  static PyValue of(const char* text);
+  template <typename S>
+  static PyValue number(const S& value) {
+    if (!core::isFinite(value)) return null();
+    return PyValue(PyFloat_FromDouble(core::toDouble(value)));
+  }
+  static PyValue array(std::vector<PyValue> items);
+  static PyValue array(std::initializer_list<Item> items);
+  static PyValue object(std::vector<Field> fields);
+  static PyValue object(std::initializer_list<Member> members);
+  /// Sets an object's field (replaced where it is, else added at the end).
+  void set(const cli::JsonKey& key, PyValue value);
+
+  /// The object made.
+  pybind11::object take() && { return std::move(m_object); }
+
+ private:
+  explicit PyValue(PyObject* made);  // a new reference; the Python error it set when null
+  PyValue() = default;
+  pybind11::object m_object;
+};
 
 }  // namespace grazelab::python

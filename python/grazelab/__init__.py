@@ -318,7 +318,18 @@ def simulate(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional
     direct = ((contacts is None or (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS
                                      and contacts <= MAX_EVENTS))
               and progress is None and k2 is None and t_end is None and samples is None)
-    if not direct:
+    if direct:
+        # (the common short call without the text path's frames: it costs about the run itself)
+        try:
+            answer = _simulate_here(flat, Result, events, MAX_EVENTS, not events, True)
+        except ValueError as error:
+            raise ValueError(_message(str(error))) from None
+        if answer is not None:
+            result, decimals = answer
+            if decimals is None and result["trust"]["verdict"] != "unreliable":
+                return result
+            return _simulated(result, decimals)
+    else:
         _check_held_events(events, contacts)
         flat = _with_samples(flat, samples)
     answer = _run_simulate(lambda options: _simulate_here(options, Result, events, MAX_EVENTS, not events, direct),
@@ -388,8 +399,16 @@ class Chain:
         direct = (progress is None and t_end is None and samples is None and self._commensurate
                   and (contacts is None or (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS)))
         _check_held_events(events, contacts)
-        answer = _run_simulate(
-            lambda options: _simulate_chain(self._prepared, options, Result, not events, direct, MAX_EVENTS), flat)
+        answer = None
+        if direct:
+            # (the common short call without the text path's frames)
+            try:
+                answer = _simulate_chain(self._prepared, flat, Result, not events, True, MAX_EVENTS)
+            except ValueError as error:
+                raise ValueError(_message(str(error))) from None
+        if answer is None:
+            answer = _run_simulate(
+                lambda options: _simulate_chain(self._prepared, options, Result, not events, direct, MAX_EVENTS), flat)
         if progress is not None:
             progress(1.0, "done")
         return _simulated(*answer)
@@ -422,10 +441,13 @@ def _run_simulate(call, flat):
 def _check_held_events(events, contacts):
     """The number of contacts asked for (None when not given or not a number: the command line
     says what is wrong with it); ValueError when the events kept would pass MAX_EVENTS."""
-    try:
-        count = int(_convert._text("contacts", contacts)) if contacts is not None else None
-    except (TypeError, ValueError):
-        return None
+    if contacts is None or type(contacts) is int:
+        count = contacts  # (the common case, without the text)
+    else:
+        try:
+            count = int(_convert._text("contacts", contacts))
+        except (TypeError, ValueError):
+            return None
     if events and count is not None and count > MAX_EVENTS:
         raise ValueError(f"contacts: {count} events would take {count * 80 / 1e9:.1f} GB "
                          f"in memory or more (at most grazelab.MAX_EVENTS = {MAX_EVENTS}); stream them "

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "commands/simulate_command.h"
+#include "commands/simulation_document.h"
 #include "commands/simulation.h"
 #include "core/solver/trust.h"
 #include "core/solver/chain_run.h"
@@ -63,7 +64,7 @@ std::size_t typedRun(const grazelab::cli::PreparedMassChain& chain, const Option
   grazelab::cli::ChainEventTable table;
   grazelab::cli::EventTableSink sink(table);
   const grazelab::cli::SimulateOutcome outcome = grazelab::cli::simulate(chain, *request, sink);
-  return grazelab::cli::simulationDocument(outcome, *request).fields.size() + table.count;
+  return grazelab::cli::simulationDocument<grazelab::cli::JsonValue>(outcome, *request).fields.size() + table.count;
 }
 
 // the whole command with its document as values and its events in a table (what the module

@@ -70,10 +70,15 @@ def test_simulate_document_is_the_cli_json_on_both_paths(cli_json, options, flag
     # a short run is computed on the calling thread, a run with progress on a thread of its own,
     # both with their options handed over by name: the same document, and the
     # command line's, field for field (floats where the JSON writes 1 for 1.0: equal numbers)
-    expected = without_timing(cli_json("simulate", *flags))
+    document = cli_json("simulate", *flags)
+    expected = without_timing(document)
     direct = gl.simulate(**options)
     threaded = gl.simulate(**options, progress=lambda fraction, text: None)
     assert without_timing(direct) == expected
+    # one layout for both faces, in any precision: the JSON's fields in its order, then the
+    # module's own (notes, decimal, ...)
+    assert list(direct)[:len(document)] == list(document)
+    assert list(threaded)[:len(document)] == list(document)
     assert without_timing(threaded) == expected
     np.testing.assert_array_equal(direct.events, threaded.events)
     assert direct.notes == threaded.notes

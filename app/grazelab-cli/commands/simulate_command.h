@@ -17,7 +17,6 @@
 
 namespace grazelab::cli {
 
-struct JsonValue;
 
 /// `grazelab-cli simulate`: an exact run of a chain (commands/simulation.h), given by --masses
 /// ... or by the note's options (--m1 --m2 --k1 --k2 --branch --gap: the two-mass chain they
@@ -53,9 +52,5 @@ class EventTableSink final : public SimulateSink {
  private:
   ChainEventTable& m_table;
 };
-
-/// The json document of a run that ended (SimulateStatus::Ran) as values, its `events` null:
-/// what the Python module hands over.
-JsonValue simulationDocument(const SimulateOutcome& outcome, const SimulateRequest& request);
 
 }  // namespace grazelab::cli

@@ -8,6 +8,7 @@
 
 #include "core/model/linear_modes.h"
 #include "core/orbits/special_orbits.h"
+#include "io/document_values.h"
 #include "io/json_value.h"
 
 namespace grazelab::cli {
@@ -23,43 +24,8 @@ std::string jsonQuoted(const std::string& text) {
 
 template <typename S>
 JsonValue modelValue(const ModelInput<S>& input, const std::string& precision) {
-  const core::BasicModel<S>& model = input.model;
-  const core::TwoMassForm<S>& chain = input.chain;
-  const S omegaFast = chain.ratio * chain.omegaSlow;
-  // M-normalised mode shapes: columns (rho_j, 1) / (sqrt(m1) sqrt(rho_j^2 + beta))
-  using std::sqrt;
-  S p[2][2];
-  const S rho[2] = {chain.rhoFast, chain.rhoSlow};
-  for (int j = 0; j < 2; ++j) {
-    const S scale = S(1) / (sqrt(model.m1) * sqrt(rho[j] * rho[j] + chain.beta));
-    p[0][j] = rho[j] * scale;
-    p[1][j] = scale;
-  }
-  const std::string source =
-      model.design ? "1:2 design, " + std::string(core::toString(*model.design)) + " branch"
-                   : std::string("given");
-  using V = JsonValue;
-  return V::object(
-      {{"m1", V::number(model.m1)},
-       {"m2", V::number(model.m2)},
-       {"k1", V::number(model.k1)},
-       {"k2", V::number(model.k2)},
-       {"gap", V::number(model.gap)},
-       {"k2_source", V::of(source)},
-       {"mass_ratio", V::number(chain.beta)},
-       {"omega1", V::number(omegaFast)},
-       {"omega2", V::number(chain.omegaSlow)},
-       {"T1", V::number(S(core::twoPi<S>() / omegaFast))},
-       {"T2", V::number(S(core::twoPi<S>() / chain.omegaSlow))},
-       {"resonant", V::of(chain.resonant)},
-       {"detuning", V::number(chain.detuning)},
-       {"mode_labelling", V::of("mode 1 is the fast mode, mode 2 the slow one (omega1 = 2 omega2)")},
-       {"P", V::array({V::array({V::number(p[0][0]), V::number(p[0][1])}),
-                       V::array({V::number(p[1][0]), V::number(p[1][1])})})},
-       {"precision", V::of(precision)},
-       {"lambda_star", chain.resonant ? V::number(core::lambdaStar(chain)) : V::null()}});
+  return values::model<JsonValue>(input, precision);
 }
-
 
 void emitDocument(const Io& io, JsonValue document) {
   if (io.document) {
@@ -70,17 +36,7 @@ void emitDocument(const Io& io, JsonValue document) {
   std::fwrite(text.data(), 1, text.size(), io.out);
 }
 
-JsonValue trustValue(const core::Trust& trust) {
-  const bool estimated = trust.verdict != core::Verdict::Unchecked;
-  auto estimate = [&](double value) { return estimated ? JsonValue::number(value) : JsonValue::null(); };
-  return JsonValue::object(
-      {{"estimated_state_error", estimate(trust.stateError)},
-       {"estimated_time_error", estimate(trust.timeError)},
-       {"horizon", estimate(trust.horizon)},
-       {"horizon_method", estimated ? JsonValue::of(trust.horizonMethod) : JsonValue::null()},
-       {"verdict", JsonValue::of(std::string(core::toString(trust.verdict)))},
-       {"reason", JsonValue::of(trust.reason)}});
-}
+JsonValue trustValue(const core::Trust& trust) { return values::trust<JsonValue>(trust); }
 
 template <typename S>
 JsonValue infoValue(const ModelInput<S>& model) {
@@ -89,18 +45,7 @@ JsonValue infoValue(const ModelInput<S>& model) {
 
 template <typename S>
 JsonValue massChainValue(const core::BasicMassChain<S>& chain, const S& period) {
-  using V = JsonValue;
-  const auto numbers = [](const std::vector<S>& values) {
-    std::vector<V> items;
-    for (const S& value : values) items.push_back(V::number(value));
-    return V::array(std::move(items));
-  };
-  return V::object({{"masses", numbers(chain.masses)},
-                    {"springs", numbers(chain.springs)},
-                    {"right_spring", chain.rightSpring > 0 ? V::number(chain.rightSpring) : V::null()},
-                    {"stop_mass", V::of(std::int64_t(chain.stopped()))},
-                    {"gap", V::number(chain.gap)},
-                    {"period", period > 0 ? V::number(period) : V::null()}});
+  return values::massChain<JsonValue>(chain, period);
 }
 template JsonValue massChainValue<double>(const core::BasicMassChain<double>&, const double&);
 template JsonValue massChainValue<long double>(const core::BasicMassChain<long double>&, const long double&);
