@@ -304,17 +304,23 @@ py::tuple simulationResult(const grazelab::cli::SimulateOutcome& outcome, const 
   grazelab::cli::SimulateRequest unsampled = request;
   unsampled.sampled = false;
   py::object result;
+  const ChainDtypes& dtypes = chainDtypes(table.masses, std::size_t(table.stopped));
   if (outcome.precision == grazelab::core::Precision::Double) {
     const grazelab::python::PyValue::ObjectType objects(resultType);
     result = grazelab::cli::simulationDocument<grazelab::python::PyValue>(outcome, unsampled).take();
+    if (request.sampled) {
+      result["samples"] = chainSampleArray(outcome.samples, dtypes.samples);
+      result["samples_truncated"] = py::bool_(outcome.samplesTruncated);
+    }
   } else {
-    grazelab::cli::JsonValue document = grazelab::cli::simulationDocument<grazelab::cli::JsonValue>(outcome, unsampled);
+    grazelab::cli::JsonValue document = grazelab::cli::simulationDocument<grazelab::cli::JsonValue>(outcome, request);
+    if (request.sampled) document.set("samples", grazelab::cli::JsonValue::null());  // (an array, below)
     result = grazelab::python::toPython(document, resultType);  // (its events, None, in their place)
-    document.remove("events");  // (the result's are an array; `decimal` has none)
+    if (request.sampled) result["samples"] = chainSampleArray(outcome.samples, dtypes.samples);
+    document.remove("events");  // (the result's are an array; `decimal` has neither)
+    document.remove("samples");
     result["decimal"] = grazelab::python::toPython(document, resultType, true);
   }
-  const std::size_t masses = table.masses, stopped = std::size_t(table.stopped);
-  const ChainDtypes& dtypes = chainDtypes(masses, stopped);
   const py::object events =
       table.discard ? py::object(py::none()) : py::object(chainEventArray(std::move(table), dtypes.events));
   // (names made once: a short run's call is a few microseconds)
@@ -323,10 +329,6 @@ py::tuple simulationResult(const grazelab::cli::SimulateOutcome& outcome, const 
   if (PyDict_SetItem(result.ptr(), eventsKey, events.ptr()) != 0 ||
       PyDict_SetItem(result.ptr(), notesKey, py::cast(outcome.notes).ptr()) != 0) {
     throw py::error_already_set();
-  }
-  if (request.sampled) {
-    result["samples"] = chainSampleArray(outcome.samples, dtypes.samples);
-    result["samples_truncated"] = py::bool_(outcome.samplesTruncated);
   }
   return py::make_tuple(result, table.decimals.empty() ? py::object(py::none()) : py::cast(table.decimals));
 }

@@ -58,8 +58,9 @@ py::object newObject(PyTypeObject* type) {
   return owned(type->tp_new(type, noArguments, nullptr));
 }
 
-// the type PyValue makes objects of (PyValue::ObjectType; the GIL guards it)
-PyTypeObject* objectTypeNow = &PyDict_Type;
+// the type PyValue makes objects of (PyValue::ObjectType), per thread: a finalizer run while a
+// document is built may hand the GIL to another thread's call
+thread_local PyTypeObject* objectTypeNow = &PyDict_Type;
 
 }  // namespace
 

@@ -577,3 +577,16 @@ def test_the_1ipp_family_of_n_masses(cli, tmp_path):
     np.testing.assert_allclose(run.events["t"], [k * last["T"] for k in (1, 2, 3)], rtol=1e-9)
     with pytest.raises(ValueError, match="no admissible 1IPP orbit"):
         gl.simulate(**chain, onepp=1.0)
+
+
+@pytest.mark.parametrize("precision", ["double", "quad"])
+def test_a_sampled_result_keeps_the_json_order(cli_json, precision):
+    # the samples an array where the JSON has its columns, in the JSON's place, in any precision
+    document = cli_json("simulate", "--glo", "0.5", "--perturb=0,0,0,-0.05", "--contacts", "3",
+                        "--sample-step", "1", "--precision", precision)
+    run = gl.simulate(glo=0.5, perturb=(0, 0, 0, -0.05), contacts=3, samples=1.0, precision=precision)
+    assert list(run)[:len(document)] == list(document)
+    assert list(run.samples["t"]) == document["samples"]["t"]
+    assert run.samples_truncated is document["samples_truncated"]
+    if precision == "quad":
+        assert "samples" not in run.decimal and "samples_truncated" in run.decimal

@@ -589,6 +589,7 @@ void PlotView::refresh() {
       for (Entry& entry : m_entries) {
         if (entry.series->count() > 0 && !qobject_cast<QScatterSeries*>(entry.series)) {
           entry.series->replace(QList<QPointF>());
+          entry.drawnFrame.reset();  // (given again below, even on the frame it had)
         }
       }
       setRangeWithTicks(m_axisX, range.left(), range.right(), chart()->plotArea().width());
@@ -647,6 +648,7 @@ void PlotView::refresh() {
       // hidden (its data still set the axes): nothing drawn, decimated afresh when shown
       if (entry.series->count() > 0) entry.series->clear();
       entry.replaced = true;
+      entry.drawnFrame.reset();
       continue;
     }
     const bool replaced = entry.replaced;

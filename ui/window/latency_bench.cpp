@@ -142,6 +142,7 @@ double percentile(std::vector<double> values, double fraction) {
 // push the scene shows, else its first (a hidden slider's change computes, but nobody sees it)
 QSlider* dragSlider(MainWindow& window) {
   const QList<ParamKey> keys = window.scene().parameters();
+  if (keys.isEmpty()) return window.parameterPanel()->control(ParamKey::Gap)->slider();
   ParamKey key = keys.front();
   for (ParamKey preferred : {ParamKey::Perturbation, ParamKey::ChainPeriod, ParamKey::Period, ParamKey::Lambda}) {
     if (keys.contains(preferred)) key = preferred;

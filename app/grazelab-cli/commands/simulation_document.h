@@ -4,7 +4,7 @@
 
 // The document of `simulate` (its head, before the events, and its end), written once for any
 // value type V (io/document_values.h): JsonValue, which the command line streams as text, or the
-// Python module's objects (python/py_value.h).
+// Python module's objects (PyValue, python/value_to_python.h).
 
 #include <cmath>
 #include <cstdint>

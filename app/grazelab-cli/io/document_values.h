@@ -4,7 +4,7 @@
 
 // The parts every document shares (the note's model, a chain, an error estimate), written once
 // for any value type V: JsonValue, which the command line writes as text (io/json_value.h), or
-// the Python module's objects, made as the document is built (python/py_value.h), so that the two
+// the Python module's objects, made as the document is built (PyValue, python/value_to_python.h), so that the two
 // faces cannot differ. V has JsonValue's factories: null, of, number, array and object (a braced
 // list of {name, value} or a vector of fields).
 
