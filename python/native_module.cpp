@@ -5,8 +5,8 @@
 // every 100 ms: Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the
 // command's latest progress goes to the caller's callback, both on the caller's thread.
 // grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy.
-// `simulate`, `orbit`, `family` and `modes` are typed commands (commands/simulation.h,
-// periodic_orbit.h, onepp_family.h, modes_atlas_command.h): their
+// `simulate`, `orbit`, `family`, `modes` and `glo-set` are typed commands (commands/simulation.h,
+// periodic_orbit.h, onepp_family.h, modes_atlas_command.h, grazing_set.h): their
 // options by name, no command-line text, their outcomes handed over as values (and events as arrays); a chain of N masses is
 // prepared once (prepare_chain: grazelab.Chain) for every run of it.
 #include <pybind11/numpy.h>
@@ -40,6 +40,7 @@
 
 #include "cli_run.h"
 #include "commands/family_command.h"
+#include "commands/glo_set_command.h"
 #include "commands/modes_command.h"
 #include "commands/orbit_command.h"
 #include "commands/simulate_command.h"
@@ -542,6 +543,37 @@ py::object orbitCommand(const std::vector<std::pair<std::string, std::optional<s
   return documentToPython(document, resultType, document.holdsWideNumbers());
 }
 
+// glo_set(options, result_type) -> its document as values: the typed glo-set
+// (commands/grazing_set.h) of the options given by name as (flag, text) pairs, on a thread of its
+// own that Ctrl+C stops. Refused (a ValueError) with the command line's line when there is none.
+py::object gloSetCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                         const py::object& resultType) {
+  const grazelab::cli::OptionValues options = textOptions(given);
+  QString error;
+  const std::optional<grazelab::cli::GloSetRequest> request = grazelab::cli::readGloSetRequest(options, error);
+  if (!request) throw Refused(error.simplified().toStdString());
+  grazelab::cli::GloSetOutcome outcome;
+  std::optional<QString> refused;  // the chain's refusal
+  std::stop_source stop;
+  std::optional<py::error_already_set> pythonError;
+  interruptibly(
+      stop,
+      [&](std::stop_token token) {
+        const auto chain = grazelab::cli::gloSetChainOf(options, token);
+        if (!chain.value) {
+          refused = chain.error;
+          return 0;
+        }
+        outcome = grazelab::cli::grazingSet(*chain.value, *request, std::move(token));
+        return 0;
+      },
+      {}, pythonError);
+  if (pythonError) throw std::move(*pythonError);
+  if (refused) throw Refused(refused->simplified().toStdString());
+  if (outcome.status != grazelab::cli::GloSetStatus::Computed) throw Refused(outcome.problem);
+  return documentToPython(grazelab::cli::gloSetDocument(outcome), resultType, false);
+}
+
 // family(options, result_type, progress) -> (its document as values, its table as a structured
 // array): the typed family (commands/onepp_family.h) of the options given by name as (flag, text)
 // pairs (text None for the bare --onepp), on a thread of its own that Ctrl+C stops, `progress`
@@ -722,6 +754,9 @@ PYBIND11_MODULE(_native, module) {
              "grazelab-cli orbit's typed command, its options as (flag, text) pairs (text None for the bare "
              "--onepp): its document as values of result_type (in long double or binary128 also as text, "
              "under 'decimal'). Raises ValueError with the command line's line when there is no orbit.");
+  module.def("glo_set", &gloSetCommand, py::arg("options"), py::arg("result_type"),
+             "grazelab-cli glo-set's typed command, its options as (flag, text) pairs: its document as values "
+             "of result_type. Raises ValueError with the command line's line when the chain has none.");
   module.def("family", &familyCommand, py::arg("options"), py::arg("result_type"), py::arg("progress") = py::none(),
              "grazelab-cli family --onepp's typed command, its options as (flag, text) pairs (text None for the bare "
              "--onepp): (its document as values of result_type, its table as a structured array); its files "

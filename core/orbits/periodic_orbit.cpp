@@ -242,6 +242,7 @@ std::string_view toString(Stability stability) {
     case Stability::Hyperbolic: return "hyperbolic";
     case Stability::FlipHyperbolic: return "flip-hyperbolic";
     case Stability::Parabolic: return "parabolic";
+    case Stability::Undecided: return "undecided";
   }
   return "elliptic";
 }
@@ -265,6 +266,14 @@ template <typename S>
 bool stabilityDecided(const PeriodicOrbit<S>& orbit) {
   using std::abs;
   return abs(orbit.checks.detMinus1) <= S(1e3) * defaultCloseTolerance<S>();
+}
+
+template <typename S>
+Stability decidedStability(const PeriodicOrbit<S>& orbit) {
+  using std::abs;
+  if (orbit.stability == Stability::Parabolic) return Stability::Parabolic;
+  const S error = std::max(orbit.traceError, S(abs(orbit.checks.detMinus1)));
+  return abs(abs(orbit.trace) - S(2)) > error ? orbit.stability : Stability::Undecided;
 }
 
 namespace {
@@ -540,6 +549,13 @@ OrbitSearch<S> findOrbit(const TwoMassForm<S>& chain, const S& energy, const S& 
 
 namespace {
 
+// what to try when S cannot decide
+template <typename S>
+const char* highestPrecisionHint() {
+  return precisionOf<S>() == Precision::Quad ? " (binary128 is the highest precision there is)"
+                                             : " (try a higher precision)";
+}
+
 // How the closed form's data lose digits near a multiple of T1 or T2: cot(w_j T / 2) is
 // conditioned like (w_j T / 2) / sin(w_j T / 2) in T (at least 1)
 template <typename S>
@@ -584,22 +600,30 @@ OrbitSearch<S> onePeriodicOrbitStability(const TwoMassForm<S>& chain, const S& T
     // polished by Newton at their energy (the orbit itself is well conditioned there)
     OrbitSearch<S> polished = findOrbit(chain, orbit.energy, data.postImpact.u1, data.postImpact.v1, 1);
     using std::abs;
-    if (polished.orbit && abs(polished.orbit->period - T) <= S(1e-6) * T && stabilityDecided(*polished.orbit)) {
+    // det DP = 1 within what the trace's own error allows (near T1 binary128's amplified rounding
+    // exceeds stabilityDecided's fixed 5e5 ulps where long double's does not)
+    const auto detDecided = [](const PeriodicOrbit<S>& found) {
+      return abs(found.checks.detMinus1) <= std::max(S(1e3) * defaultCloseTolerance<S>(), found.traceError);
+    };
+    if (polished.orbit && abs(polished.orbit->period - T) <= S(1e-6) * T && detDecided(*polished.orbit)) {
       orbit = std::move(*polished.orbit);
     } else if (const S bound = closedFormClosingBound(chain, orbit, T); orbit.checks.periodicityResidual <= bound) {
       // the exact data are an orbit: a path that misses closing by no more than the rounding
       // amplified this near a multiple of T1 (the impact speed V ~ T1 - T, the return map's
       // 2 a2 / V) is not an open path, but an orbit S cannot decide
-      char text[192];
+      const S conditioning = closedFormConditioning(chain, T);
+      const S factor = std::max({S(abs(orbit.trace)), orbit.amplification, conditioning});
+      const char* cause = factor == conditioning ? "the closed form's conditioning near a multiple of T1 or T2"
+                          : factor == orbit.amplification ? "the return map's amplification"
+                                                          : "the trace";
+      char text[256];
       std::snprintf(text, sizeof text,
-                    ": its path misses closing by %.1e (relative), within the %.1e that the rounding, "
-                    "amplified %.1e times this near a multiple of T1, allows",
-                    toDouble(orbit.checks.periodicityResidual), toDouble(bound), toDouble(orbit.amplification));
+                    ": its path misses closing by %.1e (relative), within the %.1e that the rounding allows, "
+                    "amplified %.1e times by %s",
+                    toDouble(orbit.checks.periodicityResidual), toDouble(bound), toDouble(factor), cause);
       search.refusal = OrbitRefusal::Undecided;
       search.problem = "the 1IPP orbit of period " + formatScalar(T) + " cannot be decided in " +
-                       std::string(toString(precisionOf<S>())) + text +
-                       (precisionOf<S>() == Precision::Quad ? " (binary128 is the highest precision there is)"
-                                                            : " (try a higher precision)");
+                       std::string(toString(precisionOf<S>())) + text + highestPrecisionHint<S>();
       return search;
     }
   }
@@ -653,6 +677,7 @@ std::string orbitSymmetry(const PeriodicOrbit<S>& orbit, const S& tolerance) {
   template S defaultCloseTolerance<S>();                                                           \
   template S closeTolerance<S>(const PeriodicOrbit<S>&);                                          \
   template bool stabilityDecided<S>(const PeriodicOrbit<S>&);                                     \
+  template Stability decidedStability<S>(const PeriodicOrbit<S>&);                                \
   template S locatedTraceError<S>(const TwoMassForm<S>&, const PeriodicOrbit<S>&);                           \
   template PeriodicOrbit<S> evaluateOrbit<S>(const TwoMassForm<S>&, const BasicState<S>&, int,           \
                                              const S&);                                            \

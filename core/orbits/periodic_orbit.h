@@ -55,8 +55,10 @@ enum class Stability {
   Hyperbolic,      ///< tr > 2: real multipliers mu > 1 > 1/mu, unstable
   FlipHyperbolic,  ///< tr < -2: real negative multipliers, unstable (past a flip)
   Parabolic,       ///< |tr| = 2 within rounding: at a fold, branch point or flip
+  Undecided,       ///< |tr| within its error of 2 (or -2): this precision cannot tell the class
+                   ///< (said by decidedStability only; an orbit's own `stability` takes a side)
 };
-/// "elliptic", "hyperbolic", "flip-hyperbolic", "parabolic".
+/// "elliptic", "hyperbolic", "flip-hyperbolic", "parabolic", "undecided".
 std::string_view toString(Stability stability);
 
 /// How far a computed orbit is from the identities it must satisfy (free accuracy checks).
@@ -141,6 +143,15 @@ S closeTolerance(const PeriodicOrbit<S>& orbit);
 /// first). Tables of families keep only such orbits.
 template <typename S>
 bool stabilityDecided(const PeriodicOrbit<S>& orbit);
+
+/// The class as the faces report it: the orbit's `stability` where S decides it, else Undecided.
+/// S decides it when the trace is farther from 2 and from -2 than its error (the larger of
+/// `traceError` and |det DP^k - 1|), or the class is Parabolic (|tr| = 2 within the rounding the
+/// checks show: on the boundary, no side claimed). Near a multiple of T1 in long double the trace
+/// can be -2.24 with an error of 0.41: flip-hyperbolic or elliptic, S cannot say (the trace and
+/// its error say how near the boundary it is; a higher precision may decide).
+template <typename S>
+Stability decidedStability(const PeriodicOrbit<S>& orbit);
 
 /// The result of a search: the orbit, or the one line saying why none was found.
 template <typename S>

@@ -38,6 +38,7 @@ from . import _convert
 from ._convert import Result
 from ._native import command as _run_command
 from ._native import family as _family
+from ._native import glo_set as _glo_set
 from ._native import NotWritten as _NotWritten
 from ._native import Refused as _Refused
 from ._native import modes as _modes
@@ -73,7 +74,7 @@ class GrazeLabWarning(UserWarning):
 def _command(command, options, progress=None, positional=(), keep_map=False, document=False):
     """Runs one command with the options that are not None, handed over by name (no command-line
     text); returns (output text, messages) or raises; with keep_map, (messages, map) for a map or
-    merge held in memory; with document (info, glo-set), (its document as Results, messages). A
+    merge held in memory; with document (info), (its document as Results, messages). A
     progress callback hears (1.0, "done") when the command has ended well."""
     given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ("quick",))
     code, output, messages, kept, values, problem = _run_command(
@@ -212,8 +213,12 @@ def glo_set(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
     elif frequencies is not None or design_branch is not None or springs is not None:
         raise ValueError("springs, frequencies and design_branch describe a chain given by masses")
-    result, _ = _command("glo-set", options, document=True)
-    return result
+    # the typed command: its options by name, its document as values
+    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ())
+    try:
+        return _glo_set(given, Result)
+    except _Refused as error:
+        raise ValueError(_message(str(error))) from None
 
 
 def _mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, design_branch, two_mass):
@@ -621,7 +626,7 @@ def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
            frequencies: _Optional[_Sequence[int]] = None, design_branch: _Optional[int] = None) -> Result:
     """The 1IPP family (``grazelab-cli family --onepp``). Returns the JSON's fields with
     ``table``: a structured array with the CSV's columns (T, omega, V, u1, energy, admissible,
-    trace, stability; admissible 1.0/0.0, stability 0..3, NaN where not admissible): the
+    trace, stability; admissible 1.0/0.0, stability 0..4 (4: undecided in this precision), NaN where not admissible): the
     command's own rows, without a copy.
 
     With ``masses`` (a chain of N masses, in double): periods in (0, T_max), T_max the common

@@ -56,7 +56,6 @@ for f in flips:
     assert abs(born['period'] - 2 * f['T']) < 1e-3 * f['T'], (born, f)
     assert abs(born['energy'] - f['energy']) < 1e-2 * f['energy'], (born, f)
 PY
-PY
 if [ -e "$work/f/family.svg" ]; then
   # its description holds "V < 0": Qt 6.4 wrote it unescaped, and no reader could open the file
   python3 - "$work/f/family.svg" <<'PY' || fail "family.svg is not well-formed or lacks its table's description"

@@ -90,6 +90,11 @@ assert o['precision'] == 'quad', o['precision']
 # the impact speed of the orbit of period T = 8.8857658763 (tools/reference/periodic_ref.py onepp, 50 digits)
 v2 = Decimal(o['state']['v2'])
 assert abs(v2 / Decimal('-5.5774980105873267e-12') - 1) < Decimal('1e-9'), v2
+# its trace, 2 - 4.2e-22 (the reference's), is nearer 2 than binary128's error bound on it: the
+# class is said undecided, with the trace and its error, not taken as elliptic or hyperbolic
+trace, error = Decimal(o['trace']), Decimal(o['trace_error'])
+assert o['stability'] == 'undecided' and abs(trace - 2) <= error, (o['stability'], trace, error)
+assert abs(trace - Decimal('1.99999999999999999999958')) <= error, trace
 PY
 # just below T1 (lower design) the orbit exists: it is found, not refused as "does not close"
 expect_ok orbit --onepp --m2 0.5 --branch lower --period 5.4408539528933835 || exit 1

@@ -124,6 +124,27 @@ TEST(TypedOrbit, NearT1AnOrbitNoPrecisionDecidesIsUndecidedNotRefusedAsOpen) {
   EXPECT_NE(above.problem.find(">= 0"), std::string::npos) << above.problem;
 }
 
+TEST(TypedOrbit, AClassTheTracesErrorCannotDecideIsSaidUndecidedAndAutoRaisesPastIt) {
+  // m2 = 0.3, 1e-8 below T1 = 3.815845380119236: long double's orbit has trace -2.2417 with an
+  // error of 0.41 (flip-hyperbolic or elliptic); binary128's -2.242050 +- 7e-16
+  const auto chain = chainOf({{"m2", "0.3"}});
+  OrbitRequest request;
+  request.period = "3.815845370119236";
+  request.precision = PrecisionChoice::Long;
+  const OrbitOutcome inLong = solveOrbit(*chain, request);
+  ASSERT_EQ(inLong.status, OrbitStatus::Found) << inLong.problem;
+  const auto& longOrbit = std::get<FoundOrbit<long double>>(inLong.found).orbit;
+  EXPECT_EQ(core::decidedStability(longOrbit), core::Stability::Undecided);
+  EXPECT_EQ(orbitDocument(inLong).find("stability")->text, "undecided");
+  request.precision = PrecisionChoice::Auto;
+  const OrbitOutcome raised = solveOrbit(*chain, request);
+  ASSERT_EQ(raised.status, OrbitStatus::Found) << raised.problem;
+  ASSERT_TRUE(std::holds_alternative<FoundOrbit<core::Quad>>(raised.found));
+  const auto& orbit = std::get<FoundOrbit<core::Quad>>(raised.found).orbit;
+  EXPECT_EQ(core::decidedStability(orbit), core::Stability::FlipHyperbolic);
+  EXPECT_LT(core::toDouble(orbit.traceError), 1e-12);
+}
+
 TEST(TypedOrbit, RefusalsAreLinesAndAnotherShapeIsNotDesigned) {
   // three masses: refused on their shape (a design of them would take a while first)
   const auto three = twoMassChainOf(OptionValues(Options{{"masses", "1,0.2,0.05"}, {"frequencies", "3:2:1"}}));

@@ -53,7 +53,7 @@ std::optional<FamilyStability> familyStability(const core::TwoMassForm<S>& chain
     const core::OrbitSearch<S> found = p.admissible ? core::onePeriodicOrbitStability(chain, S(p.T))
                                                     : core::OrbitSearch<S>{};
     result.traces.push_back(found.orbit ? double(found.orbit->trace) : kNaN);
-    result.codes.push_back(found.orbit ? double(int(found.orbit->stability)) : kNaN);
+    result.codes.push_back(found.orbit ? double(int(core::decidedStability(*found.orbit))) : kNaN);
   }
   const S T2 = core::twoPi<S>() / chain.omegaSlow;
   report(0.9, "bifurcations of the family");
@@ -79,7 +79,7 @@ std::optional<FamilyStability> familyStability(const core::TwoMassForm<S>& chain
                                               {"energy", V::number(o.energy)},
                                               {"period", V::number(o.period)},
                                               {"trace", V::number(o.trace)},
-                                              {"stability", V::of(std::string(core::toString(o.stability)))},
+                                              {"stability", V::of(std::string(core::toString(core::decidedStability(o))))},
                                               {"symmetry", symmetry.empty() ? V::null() : V::of(symmetry)},
                                               {"state", orbitStateValue(o.state)}}));
       } else {

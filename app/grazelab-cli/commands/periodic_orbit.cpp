@@ -55,7 +55,7 @@ JsonValue orbitValue(const FoundOrbit<S>& found, core::Precision precision) {
        {"trace_error", V::number(orbit.traceError)},
        {"multipliers", V::array({V::array({V::number(mu[0][0]), V::number(mu[0][1])}),
                                  V::array({V::number(mu[1][0]), V::number(mu[1][1])})})},
-       {"stability", V::of(std::string(core::toString(orbit.stability)))},
+       {"stability", V::of(std::string(core::toString(core::decidedStability(orbit))))},
        {"symmetry", symmetry.empty() ? V::null() : V::of(symmetry)},
        {"checks", V::object({{"det_minus_1", V::number(orbit.checks.detMinus1)},
                              {"trivial_pair", V::number(orbit.checks.trivialPair)},
@@ -151,10 +151,20 @@ OrbitOutcome solveOrbit(const PreparedMassChain& chain, const OrbitRequest& requ
     case PrecisionChoice::Quad: return orbitIn<core::Quad>(chain, request, stop);
     case PrecisionChoice::Auto: break;
   }
-  // double, and again in long double then binary128 when a contact is too near tangent
+  // double, and again in long double then binary128 when a contact is too near tangent or the
+  // orbit's class is not decided (binary128's answer is kept either way: its class then says so)
+  const auto raise = [](const OrbitOutcome& outcome) {
+    if (outcome.status == OrbitStatus::Undecided) return true;
+    return std::visit(
+        [](const auto& found) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(found)>, std::monostate>) return false;
+          else return core::decidedStability(found.orbit) == core::Stability::Undecided;
+        },
+        outcome.found);
+  };
   OrbitOutcome outcome = orbitIn<double>(chain, request, stop);
-  if (outcome.status == OrbitStatus::Undecided) outcome = orbitIn<long double>(chain, request, stop);
-  if (outcome.status == OrbitStatus::Undecided) outcome = orbitIn<core::Quad>(chain, request, stop);
+  if (raise(outcome)) outcome = orbitIn<long double>(chain, request, stop);
+  if (raise(outcome)) outcome = orbitIn<core::Quad>(chain, request, stop);
   return outcome;
 }
 

@@ -218,5 +218,65 @@ TEST(PeriodicOrbitTest, nearT1APathThatMissesClosingByTheAmplifiedRoundingIsUnde
   // (a start really off an orbit still does not close: aPathThatIsNotTheOrbitIsRefusedWithItsReason)
 }
 
+TEST(PeriodicOrbitTest, nearT1AClassIsTheTracesWhereItsErrorDecidesAndUndecidedWhereNotBinary128Confirms) {
+  // below T1 the impact speed V ~ T1 - T falls and the return map amplifies the rounding like
+  // 1 / V: long double's trace of the orbit 1e-8 below T1 of m2 = 0.3 is -2.2417 with an error
+  // of 0.41, which cannot tell flip-hyperbolic from elliptic. Every precision's trace is within
+  // its error of binary128's; its class, where that error decides it, is binary128's, and
+  // Undecided where it does not, never a side taken. Both branches, a scaled chain.
+  struct Chain {
+    double m1, m2, k1, gap;
+    Branch branch;
+  };
+  int decided = 0;
+  int undecided = 0;
+  for (const Chain& c : {Chain{1, 0.3, 1, 1, Branch::Upper}, Chain{1, 0.3, 1, 1, Branch::Lower},
+                         Chain{1, 0.5, 1, 1, Branch::Upper}, Chain{4, 0.8, 9, 0.05, Branch::Upper}}) {
+    const auto form = [&c](auto unit) {
+      using S = decltype(unit);
+      return *makeTwoMassForm(*designedModel<S>(S(c.m1), S(c.m2), S(c.k1), S(c.gap), c.branch)).chain;
+    };
+    const TwoMassForm<Quad> exact = form(Quad(0));
+    const Quad exactT1 = twoPi<Quad>() / (exact.ratio * exact.omegaSlow);
+    for (double below : {1e-4, 1e-6, 1e-8, 1e-10}) {
+      const double fraction = below * toDouble(exactT1);  // below T1, relative
+      const OrbitSearch<Quad> reference = onePeriodicOrbitStability(exact, Quad(exactT1 * (1 - Quad(fraction))));
+      if (!reference.orbit) continue;
+      ASSERT_NE(decidedStability(*reference.orbit), Stability::Undecided) << c.m2 << " " << below;
+      const auto check = [&](auto unit) {
+        using S = decltype(unit);
+        const TwoMassForm<S> chain = form(unit);
+        const S T1 = twoPi<S>() / (chain.ratio * chain.omegaSlow);
+        const OrbitSearch<S> search = onePeriodicOrbitStability(chain, S(T1 * (1 - S(fraction))));
+        if (!search.orbit) {  // its path's closing cannot be decided here: said, not a class
+          EXPECT_EQ(search.refusal, OrbitRefusal::Undecided) << search.problem;
+          return;
+        }
+        const PeriodicOrbit<S>& orbit = *search.orbit;
+        EXPECT_LE(std::abs(toDouble(orbit.trace) - toDouble(reference.orbit->trace)), toDouble(orbit.traceError))
+            << c.m2 << " " << below;
+        const Stability stability = decidedStability(orbit);
+        if (stability == Stability::Undecided) {
+          ++undecided;
+        } else {
+          ++decided;
+          EXPECT_EQ(stability, reference.orbit->stability) << c.m2 << " " << below << " " << toDouble(orbit.trace);
+        }
+      };
+      check(double(0));
+      check((long double)0);
+    }
+  }
+  // both verdicts met: the sweep reaches where double and long double decide and where they cannot
+  EXPECT_GT(decided, 0);
+  EXPECT_GT(undecided, 0);
+  // the case found: m2 = 0.3, 1e-8 below T1: long double gives the orbit, its class undecided
+  const TwoMassForm<long double> light = resonantChain<long double>(0.3);
+  const long double T1 = twoPi<long double>() / (light.ratio * light.omegaSlow);
+  const OrbitSearch<long double> near = onePeriodicOrbitStability(light, T1 - 1e-8L);
+  ASSERT_TRUE(near.orbit) << near.problem;
+  EXPECT_EQ(decidedStability(*near.orbit), Stability::Undecided) << toDouble(near.orbit->trace);
+}
+
 }  // namespace
 }  // namespace grazelab::core
