@@ -5,8 +5,8 @@
 // every 100 ms: Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the
 // command's latest progress goes to the caller's callback, both on the caller's thread.
 // grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy.
-// `simulate`, `orbit`, `family`, `modes` and `glo-set` are typed commands (commands/simulation.h,
-// periodic_orbit.h, onepp_family.h, modes_atlas_command.h, grazing_set.h): their
+// `simulate`, `orbit`, `family`, `modes`, `glo-set` and `info` are typed commands (commands/simulation.h,
+// periodic_orbit.h, onepp_family.h, modes_atlas_command.h, grazing_set.h, chain_info.h): their
 // options by name, no command-line text, their outcomes handed over as values (and events as arrays); a chain of N masses is
 // prepared once (prepare_chain: grazelab.Chain) for every run of it.
 #include <pybind11/numpy.h>
@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "cli_run.h"
+#include "commands/chain_info.h"
 #include "commands/family_command.h"
 #include "commands/glo_set_command.h"
 #include "commands/modes_command.h"
@@ -343,14 +344,13 @@ grazelab::cli::OptionValues textOptions(const std::vector<std::pair<std::string,
   return grazelab::cli::OptionValues(std::move(named));
 }
 
-// command(name, options, operands=(), progress=None, keep_map=False, result_type=None)
-//   -> (code, output, messages, map, document, problem)
+// command(name, options, operands=(), progress=None, keep_map=False)
+//   -> (code, output, messages, map, problem)
 // A command of the command line run by its name with its options given by name as (flag, text)
 // pairs, text None for a bare flag (--quick): no command-line text,
 // the command line's rules (runCommand).
 py::tuple command(const std::string& name, const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
-                  const std::vector<std::string>& operandTexts, const py::object& progress, bool keepMap,
-                  const py::object& resultType) {
+                  const std::vector<std::string>& operandTexts, const py::object& progress, bool keepMap) {
   QStringList names;
   for (const auto& named : given) names << QString::fromStdString(named.first);
   const grazelab::cli::OptionValues options = textOptions(given);
@@ -366,8 +366,6 @@ py::tuple command(const std::string& name, const std::vector<std::pair<std::stri
   io.messages = messages.file();
   grazelab::cli::map::StoredMap map;
   if (keepMap) io.map = &map;
-  grazelab::cli::JsonValue document;
-  if (!resultType.is_none()) io.document = &document;
   if (!progress.is_none()) io.progress = mailbox.post();
 
   std::string problem;
@@ -386,11 +384,7 @@ py::tuple command(const std::string& name, const std::vector<std::pair<std::stri
   const std::string log = messages.take();
   py::object mapResult = py::none();
   if (keepMap && code == 0) mapResult = mapInMemory(std::move(map));
-  py::object documentResult = py::none();
-  if (!resultType.is_none() && code == 0) {
-    documentResult = documentToPython(document, resultType, document.holdsWideNumbers());
-  }
-  return py::make_tuple(code, py::bytes(out), py::str(log), mapResult, documentResult, problem);
+  return py::make_tuple(code, py::bytes(out), py::str(log), mapResult, problem);
 }
 
 // An option's value as the direct call takes it: a str is its text; a float, an int exact in
@@ -541,6 +535,30 @@ py::object orbitCommand(const std::vector<std::pair<std::string, std::optional<s
   }
   const grazelab::cli::JsonValue document = grazelab::cli::orbitDocument(outcome);
   return documentToPython(document, resultType, document.holdsWideNumbers());
+}
+
+// info(options, result_type) -> its document as values: the typed info (commands/chain_info.h)
+// of the options given by name as (flag, text) pairs, on a thread of its own that Ctrl+C stops (a
+// design of the springs may take a while). Refused (a ValueError) with the command line's line.
+py::object infoCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                       const py::object& resultType) {
+  const grazelab::cli::OptionValues options = textOptions(given);
+  QString error;
+  const std::optional<grazelab::cli::InfoRequest> request = grazelab::cli::readInfoRequest(options, error);
+  if (!request) throw Refused(error.simplified().toStdString());
+  grazelab::cli::InfoOutcome outcome;
+  std::stop_source stop;
+  std::optional<py::error_already_set> pythonError;
+  interruptibly(
+      stop,
+      [&](std::stop_token token) {
+        outcome = grazelab::cli::describeChain(options, *request, std::move(token));
+        return 0;
+      },
+      {}, pythonError);
+  if (pythonError) throw std::move(*pythonError);
+  if (outcome.status != grazelab::cli::InfoStatus::Described) throw Refused(outcome.problem);
+  return documentToPython(outcome.document, resultType, outcome.document.holdsWideNumbers());
 }
 
 // glo_set(options, result_type) -> its document as values: the typed glo-set
@@ -736,13 +754,12 @@ PYBIND11_MODULE(_native, module) {
   py::register_exception<Refused>(module, "Refused", PyExc_ValueError);
   py::register_exception<NotWritten>(module, "NotWritten", PyExc_OSError);
   module.def("command", &command, py::arg("name"), py::arg("options"), py::arg("operands") = std::vector<std::string>(),
-             py::arg("progress") = py::none(), py::arg("keep_map") = false, py::arg("result_type") = py::none(),
+             py::arg("progress") = py::none(), py::arg("keep_map") = false,
              "Runs one grazelab-cli command in this process, its options as (flag, text) pairs (text None "
              "for a bare flag) and merge's parts as operands: no command-line text. Returns (exit code, "
-             "output bytes, messages, map or None, document or None, the line that says why it failed or "
-             "''). With keep_map a map or merge hands back (its JSON document, its points as a structured "
-             "array) and writes files only where --out says; with result_type the document of info or "
-             "glo-set comes back as values of that type, not text.");
+             "output bytes, messages, map or None, the line that says why it failed or ''). With keep_map a "
+             "map or merge hands back (its JSON document, its points as a structured array) and writes files "
+             "only where --out says.");
   py::class_<ChainHandle>(module, "PreparedChain",
                           "A chain of N masses read, checked and designed once (use grazelab.Chain).")
       .def("describe", &chainDescription, py::arg("result_type"),
@@ -754,6 +771,10 @@ PYBIND11_MODULE(_native, module) {
              "grazelab-cli orbit's typed command, its options as (flag, text) pairs (text None for the bare "
              "--onepp): its document as values of result_type (in long double or binary128 also as text, "
              "under 'decimal'). Raises ValueError with the command line's line when there is no orbit.");
+  module.def("info", &infoCommand, py::arg("options"), py::arg("result_type"),
+             "grazelab-cli info's typed command, its options as (flag, text) pairs: its document as values of "
+             "result_type (in long double or binary128 also as text, under 'decimal'). Raises ValueError with "
+             "the command line's line when there is no chain.");
   module.def("glo_set", &gloSetCommand, py::arg("options"), py::arg("result_type"),
              "grazelab-cli glo-set's typed command, its options as (flag, text) pairs: its document as values "
              "of result_type. Raises ValueError with the command line's line when the chain has none.");

@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+#include "commands/chain_info.h"
 #include "commands/family_command.h"
 #include "commands/glo_set_command.h"
 #include "commands/map_command.h"
@@ -56,34 +57,18 @@ void write(const Io& io, const QByteArray& bytes) {
   std::fwrite(bytes.constData(), 1, bytes.size(), io.out);
 }
 
-template <typename S>
-int info(const OptionValues& options, const Io& io) {
-  const auto model = parseModel<S>(options);
-  if (!model.value) return fail(io, model.error);
-  if (io.document) {
-    *io.document = infoValue(*model.value);
-    return 0;
-  }
-  write(io, QByteArray::fromStdString(infoJson(*model.value)));
-  return 0;
-}
-
-// `info` of a chain of N masses, in double for now
-int massChainInfo(const OptionValues& options, const PrecisionOption& precision, const Io& io,
-                  std::stop_token stop) {
-  if (precision.fixed && *precision.fixed != core::Precision::Double) {
-    return fail(io, "--precision: a chain of N masses is computed in double for now (give double or auto)");
-  }
-  if (!options.isSet("masses")) {
-    return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
-  }
-  const auto chain = parseMassChain(options, stop);
-  if (!chain.value && chain.error.isEmpty()) {  // the design was stopped
+// `info`: the typed command (commands/chain_info.h), its document or its line
+int info(const OptionValues& options, const Io& io, std::stop_token stop) {
+  QString error;
+  const std::optional<InfoRequest> request = readInfoRequest(options, error);
+  if (!request) return fail(io, error);
+  const InfoOutcome outcome = describeChain(options, *request, stop);
+  if (outcome.status == InfoStatus::Interrupted) {
     std::fprintf(io.messages, "grazelab-cli: interrupted: nothing written\n");
     return kExitInterrupted;
   }
-  if (!chain.value) return fail(io, chain.error);
-  emitDocument(io, massChainInfoValue(chain.value->chain, chain.value->design));
+  if (outcome.status == InfoStatus::Refused) return fail(io, QString::fromStdString(outcome.problem));
+  write(io, QByteArray::fromStdString(infoText(outcome)));
   return 0;
 }
 
@@ -125,19 +110,7 @@ const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"info", kChain + kMassChain + QStringList{"precision"}, false,
        [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
-         QString error;
-         const auto precision = parsePrecisionOption(options, error);
-         if (!precision) return fail(io, error);
-         if (options.isSet("masses") || options.isSet("springs") || options.isSet("right-spring") ||
-             options.isSet("stop-mass") || options.isSet("frequencies") || options.isSet("design-branch")) {
-           return massChainInfo(options, *precision, io, stop);
-         }
-         switch (precision->fixed.value_or(core::Precision::Double)) {
-           case core::Precision::Double: return info<double>(options, io);
-           case core::Precision::Long: return info<long double>(options, io);
-           case core::Precision::Quad: return info<core::Quad>(options, io);
-         }
-         return fail(io, "--precision: unknown");
+         return info(options, io, stop);
        },
        {}},
       {"simulate", kChain + kStart + kMassChain + QStringList{"glo-weights", "precision", "contacts", "t-end", "search-steps", "format", "trust", "sample-step", "sample-times"}, false,

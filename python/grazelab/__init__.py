@@ -39,6 +39,7 @@ from ._convert import Result
 from ._native import command as _run_command
 from ._native import family as _family
 from ._native import glo_set as _glo_set
+from ._native import info as _info
 from ._native import NotWritten as _NotWritten
 from ._native import Refused as _Refused
 from ._native import modes as _modes
@@ -71,14 +72,13 @@ class GrazeLabWarning(UserWarning):
     """A result came back that its own error estimate does not trust (verdict unreliable)."""
 
 
-def _command(command, options, progress=None, positional=(), keep_map=False, document=False):
+def _command(command, options, progress=None, positional=(), keep_map=False):
     """Runs one command with the options that are not None, handed over by name (no command-line
     text); returns (output text, messages) or raises; with keep_map, (messages, map) for a map or
-    merge held in memory; with document (info), (its document as Results, messages). A
-    progress callback hears (1.0, "done") when the command has ended well."""
+    merge held in memory. A progress callback hears (1.0, "done") when the command has ended well."""
     given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ("quick",))
-    code, output, messages, kept, values, problem = _run_command(
-        command, given, [str(p) for p in positional], progress, keep_map, Result if document else None)
+    code, output, messages, kept, problem = _run_command(
+        command, given, [str(p) for p in positional], progress, keep_map)
     if code == 2:
         raise ValueError(_message(problem or "invalid input"))
     if code != 0:
@@ -88,8 +88,6 @@ def _command(command, options, progress=None, positional=(), keep_map=False, doc
         progress(1.0, "done")
     if keep_map:
         return lines, kept
-    if document:
-        return values, lines
     return output.decode("utf-8"), lines
 
 
@@ -182,8 +180,12 @@ def info(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[flo
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
     elif frequencies is not None or design_branch is not None:
         raise ValueError("frequencies and design_branch design the springs of a chain given by masses")
-    result, _ = _command("info", options, document=True)
-    return result
+    # the typed command: its options by name, its document as values
+    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ())
+    try:
+        return _info(given, Result)
+    except _Refused as error:
+        raise ValueError(_message(str(error))) from None
 
 
 @_documented

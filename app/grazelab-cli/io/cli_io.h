@@ -52,9 +52,6 @@ struct Io {
   /// When set, `map` and `merge` put the map here (the Python module: arrays without files);
   /// their files are then written only where --out names them.
   map::StoredMap* map = nullptr;
-  /// When set, `info`, `glo-set` and `orbit` put their JSON document here as values, not as
-  /// text.
-  JsonValue* document = nullptr;
   /// When set, the line that says why a command failed (exit 2: invalid input; 1: a file not
   /// written) is put here as well as on `messages` (the Python module raises it, reading
   /// nothing back from the messages).

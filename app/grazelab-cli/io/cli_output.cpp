@@ -28,10 +28,6 @@ JsonValue modelValue(const ModelInput<S>& input, const std::string& precision) {
 }
 
 void emitDocument(const Io& io, JsonValue document) {
-  if (io.document) {
-    *io.document = std::move(document);
-    return;
-  }
   const std::string text = fieldPerLine(document, "  ", "") + "\n";
   std::fwrite(text.data(), 1, text.size(), io.out);
 }
@@ -116,17 +112,9 @@ JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<c
        {"precision", V::of("double")}});
 }
 
-template <typename S>
-std::string infoJson(const ModelInput<S>& model) {
-  return "{\n  \"model\": " + fieldPerLine(infoValue(model).fields[0].second, "    ", "  ") + "\n}\n";
-}
-
 template JsonValue infoValue<double>(const ModelInput<double>&);
 template JsonValue infoValue<long double>(const ModelInput<long double>&);
 template JsonValue infoValue<core::Quad>(const ModelInput<core::Quad>&);
-template std::string infoJson<double>(const ModelInput<double>&);
-template std::string infoJson<long double>(const ModelInput<long double>&);
-template std::string infoJson<core::Quad>(const ModelInput<core::Quad>&);
 template JsonValue modelValue<double>(const ModelInput<double>&, const std::string&);
 template JsonValue modelValue<long double>(const ModelInput<long double>&, const std::string&);
 template JsonValue modelValue<core::Quad>(const ModelInput<core::Quad>&, const std::string&);

@@ -26,10 +26,7 @@ std::string jsonQuoted(const std::string& text);
 /// w1, w2, T1, T2, P, lambda*), and the precision asked for.
 template <typename S>
 JsonValue modelValue(const ModelInput<S>& model, const std::string& precision);
-/// `info`: {"model": modelValue}, as JSON.
-template <typename S>
-std::string infoJson(const ModelInput<S>& model);
-/// The same document as values.
+/// `info` of the note's chain: {"model": modelValue}.
 template <typename S>
 JsonValue infoValue(const ModelInput<S>& model);
 
@@ -37,8 +34,7 @@ JsonValue infoValue(const ModelInput<S>& model);
 /// a node at the stop, its harmonic number) and the frequencies' ratios, in double; for a
 /// designed chain also its `design`: the ratios asked, the design used and every design found.
 JsonValue massChainInfoValue(const core::MassChain& chain, const std::optional<core::DesignChoice>& design = std::nullopt);
-/// A command's one JSON document: handed over as values (Io::document, the Python module) or
-/// written to stdout, one field per line.
+/// A command's one JSON document, written to stdout one field per line.
 void emitDocument(const Io& io, JsonValue document);
 /// A run's error estimate: estimated_state_error, estimated_time_error, horizon, horizon_method
 /// (null when not estimated), verdict, reason.
