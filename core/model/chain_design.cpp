@@ -465,7 +465,8 @@ namespace {
 // The designs of the chains designed last, by their numbers: a design is a function of them
 // alone, and an explorer's slider that moves the gap or the start (the chain's masses kept)
 // would otherwise follow the same N! paths again at every step (3 masses: ~3 ms of a 30 ms
-// frame). Stopped searches are not kept.
+// frame). Only searches are kept: not a stopped one, nor a request refused before any search
+// (it costs nothing to refuse again, and would push a design out).
 struct DesignKey {
   std::vector<double> masses;
   double k1;
@@ -486,7 +487,7 @@ ChainDesigns recentDesigns(const std::vector<double>& masses, double k1, double 
     if (found != recent.end()) return found->second;
   }
   ChainDesigns designs = designSprings(masses, k1, rightSpring, harmonics, std::move(stop));
-  if (designs.outcome != DesignOutcome::Stopped) {
+  if (designs.outcome != DesignOutcome::Stopped && designs.outcome != DesignOutcome::BadRequest) {
     const std::lock_guard lock(mutex);
     recent.emplace_back(std::move(key), designs);
     if (recent.size() > kKept) recent.pop_front();

@@ -91,6 +91,17 @@ def _command(command, options, progress=None, positional=(), keep_map=False):
     return output.decode("utf-8"), lines
 
 
+def _typed(call, options, bare=()):
+    """A typed command of the module (info, glo_set, orbit): its options that are not None by
+    name (those in ``bare`` as bare flags), its document as Results; its refusal a ValueError in
+    the module's words."""
+    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, bare)
+    try:
+        return call(given, Result)
+    except _Refused as error:
+        raise ValueError(_message(str(error))) from None
+
+
 def _message(line):
     """The command line's one-line message in the module's words: its prefix dropped and each
     option named by its keyword (``--glo-weights`` -> ``glo_weights``)."""
@@ -180,12 +191,7 @@ def info(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[flo
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
     elif frequencies is not None or design_branch is not None:
         raise ValueError("frequencies and design_branch design the springs of a chain given by masses")
-    # the typed command: its options by name, its document as values
-    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ())
-    try:
-        return _info(given, Result)
-    except _Refused as error:
-        raise ValueError(_message(str(error))) from None
+    return _typed(_info, options)
 
 
 @_documented
@@ -215,12 +221,7 @@ def glo_set(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[
                                              design_branch, dict(m1=m1, m2=m2, k1=k1, k2=k2, branch=branch)))
     elif frequencies is not None or design_branch is not None or springs is not None:
         raise ValueError("springs, frequencies and design_branch describe a chain given by masses")
-    # the typed command: its options by name, its document as values
-    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ())
-    try:
-        return _glo_set(given, Result)
-    except _Refused as error:
-        raise ValueError(_message(str(error))) from None
+    return _typed(_glo_set, options)
 
 
 def _mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, design_branch, two_mass):
@@ -501,12 +502,7 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
                               masses, springs, right_spring, stop_mass, frequencies, design_branch)
     if onepp is not None:
         options.update(onepp=True, period=onepp)
-    # the typed command: its options by name, its document as values
-    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ("onepp",))
-    try:
-        result = _orbit(given, Result)
-    except _Refused as error:
-        raise ValueError(_message(str(error))) from None
+    result = _typed(_orbit, options, ("onepp",))
     result["multipliers"] = _convert.multipliers(result["multipliers"])
     return result
 

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
 """The compiled part of the module (python/native_module.cpp): the command line's commands run in
-process by name, ``simulate``, ``orbit``, ``family`` and ``modes`` as typed commands. Not for direct use: the functions of
+process by name, ``simulate``, ``orbit``, ``family``, ``modes``, ``glo_set`` and ``info`` as typed commands. Not for direct use: the functions of
 ``grazelab`` call it."""
 
 from typing import Callable, List, Optional, Tuple
@@ -18,8 +18,8 @@ class NotWritten(OSError):
 
 def command(name: str, options: List[Tuple[str, Optional[str]]], operands: List[str] = ...,
             progress: Optional[Callable[[Optional[float], str], None]] = ...,
-            keep_map: bool = ..., result_type: Optional[type] = ...
-            ) -> Tuple[int, bytes, str, Optional[Tuple[bytes, np.ndarray]], Optional[dict], str]: ...
+            keep_map: bool = ...
+            ) -> Tuple[int, bytes, str, Optional[Tuple[bytes, np.ndarray]], str]: ...
 
 def simulate(options: tuple, result_type: type, events: bool = ...,
              max_events: int = ..., discard_events: bool = ..., direct: bool = ...
@@ -32,6 +32,10 @@ def modes(options: List[Tuple[str, Optional[str]]], result_type: type,
           progress: Optional[Callable[[Optional[float], str], None]] = ...) -> Tuple[dict, List[np.ndarray]]: ...
 
 def orbit(options: List[Tuple[str, Optional[str]]], result_type: type) -> dict: ...
+
+def glo_set(options: List[Tuple[str, Optional[str]]], result_type: type) -> dict: ...
+
+def info(options: List[Tuple[str, Optional[str]]], result_type: type) -> dict: ...
 
 class PreparedChain:
     """A chain of N masses read, checked and designed once (use grazelab.Chain)."""

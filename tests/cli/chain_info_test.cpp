@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "commands/chain_info.h"
+#include "core/numbers/scalar.h"
 #include "io/option_values.h"
 
 namespace grazelab::cli {
@@ -48,6 +49,12 @@ TEST(TypedInfo, TheNotesChainHasItsClosedFormsToEachPrecisionsDigitsAndScales) {
     EXPECT_NEAR(numberOf(outcome, "lambda_star"), 8.0L / 9, ulps) << precision;
     EXPECT_NEAR(numberOf(outcome, "T1"), T2 / 2, ulps * T2) << precision;
   }
+  // binary128's digits, read as binary128: 2 pi sqrt(2) to its rounding
+  const InfoOutcome quad = infoOf({{"precision", "quad"}});
+  const auto quadT2 = core::parseScalar<core::Quad>(quad.document.find("model")->find("T2")->numberText());
+  ASSERT_TRUE(quadT2.value);
+  const core::Quad exactT2 = core::twoPi<core::Quad>() * sqrt(core::Quad(2));
+  EXPECT_LT(core::toDouble(abs(*quadT2.value / exactT2 - 1)), 1e-33);
   // masses and springs scaled by 4 and 9: periods by sqrt(4 / 9); lambda* unchanged
   const InfoOutcome scaled = infoOf({{"m1", "4"}, {"m2", "2"}, {"k1", "9"}});
   ASSERT_EQ(scaled.status, InfoStatus::Described) << scaled.problem;

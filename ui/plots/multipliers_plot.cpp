@@ -39,7 +39,7 @@ void MultipliersPlot::show(const SimUpdate& update) {
   if (orbit) {
     for (const auto& mu : orbit->multipliers) points.emplace_back(mu[0], mu[1]);
     entries()[std::size_t(m_multipliers)].series->setName(
-        tr("μ, 1/μ: tr = %1, %2").arg(orbit->trace, 0, 'g', 4).arg(QString::fromUtf8(core::toString(orbit->stability).data())));
+        tr("μ, 1/μ: tr = %1, %2").arg(orbit->trace, 0, 'g', 4).arg(QString::fromUtf8(core::toString(core::decidedStability(*orbit)).data())));
   }
   m_reach = 1.15;
   for (const QPointF& mu : points) m_reach = std::max(m_reach, 1.1 * std::hypot(mu.x(), mu.y()));

@@ -123,7 +123,7 @@ Scene::Spec modesScene() {
                          .arg(orbit.period, 0, 'g', 6)
                          .arg(orbit.period / T2, 0, 'g', 5)
                          .arg(orbit.energy, 0, 'g', 5)
-                         .arg(QString::fromUtf8(core::toString(orbit.stability).data()))
+                         .arg(QString::fromUtf8(core::toString(core::decidedStability(orbit)).data()))
                          .arg(symmetry.empty() ? QString() : tr(", symmetric (type %1)").arg(QString::fromStdString(symmetry))));
     job.spec.run.initial = orbit.state;
     job.spec.run.maxContacts = std::int64_t(params.horizon);

@@ -123,14 +123,14 @@ int runGloSet(const OptionValues& options, const Io& io, std::stop_token stop, Q
     error = chain.error;
     return chain.error.isEmpty() ? kExitInterrupted : kExitInvalidInput;  // (empty: the design was interrupted)
   }
-  if (options.isSet("out") && core::grazingModes(*chain.value).modes.size() < 2) {
-    error = "--out: one mode moves the stopped mass: its grazing set is a point, with no picture to draw";
-    return kExitInvalidInput;
-  }
   const GloSetOutcome outcome = grazingSet(*chain.value, *request, stop);
   if (outcome.status == GloSetStatus::Interrupted) return kExitInterrupted;
   if (outcome.status == GloSetStatus::Refused) {
     error = QString::fromStdString(outcome.problem);
+    return kExitInvalidInput;
+  }
+  if (options.isSet("out") && outcome.modes.size() < 2) {
+    error = "--out: one mode moves the stopped mass: its grazing set is a point, with no picture to draw";
     return kExitInvalidInput;
   }
   const JsonValue document = gloSetDocument(outcome);

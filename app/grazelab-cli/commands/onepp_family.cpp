@@ -240,7 +240,8 @@ V notesDocument(const FamilyOutcome& outcome, const NotesFamily& notes, const st
       {"trace", V::of("tr DP of the return map at fixed energy (exact: flow and saltation matrices), in "
                       "the stability precision; empty (NaN in the .npy) where the orbit is not admissible")},
       {"stability", V::of("elliptic (|tr| < 2), hyperbolic (tr > 2), flip-hyperbolic (tr < -2), parabolic "
-                          "(|tr| = 2 within rounding); in the .npy 0, 1, 2, 3 (NaN: not admissible)")},
+                          "(|tr| = 2 within rounding), undecided (|tr| within its error bound of 2 in this precision, "
+                          "and not parabolic); in the .npy 0, 1, 2, 3, 4 (NaN: not admissible)")},
       {"bifurcations", notes.bifurcations},
       {"rows", V::of(std::int64_t(outcome.rows()))},
       {"periods", V::of(std::string("T2 k / (count + 1) for k = 1 ... ").append(std::to_string(outcome.count)) +
@@ -254,7 +255,7 @@ V notesDocument(const FamilyOutcome& outcome, const NotesFamily& notes, const st
   if (files) {
     fields.emplace_back("files", V::object({{"csv", V::of(*files + ".csv")},
                                             {"npy", V::of(*files + ".npy (float64, rows x 8 columns in the CSV's "
-                                                                   "order, admissible as 1.0 / 0.0, stability as 0..3)")}}));
+                                                                   "order, admissible as 1.0 / 0.0, stability as 0..4)")}}));
   }
   fields.emplace_back("admissible", V::of("1 when V < 0 and the free flight from the data first returns to the stop "
                                           "at T (exact contact search), else 0"));

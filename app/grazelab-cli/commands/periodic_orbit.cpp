@@ -153,8 +153,7 @@ OrbitOutcome solveOrbit(const PreparedMassChain& chain, const OrbitRequest& requ
   }
   // double, and again in long double then binary128 when a contact is too near tangent or the
   // orbit's class is not decided (binary128's answer is kept either way: its class then says so)
-  const auto raise = [](const OrbitOutcome& outcome) {
-    if (outcome.status == OrbitStatus::Undecided) return true;
+  const auto classUndecided = [](const OrbitOutcome& outcome) {
     return std::visit(
         [](const auto& found) {
           if constexpr (std::is_same_v<std::decay_t<decltype(found)>, std::monostate>) return false;
@@ -162,9 +161,19 @@ OrbitOutcome solveOrbit(const PreparedMassChain& chain, const OrbitRequest& requ
         },
         outcome.found);
   };
+  // raised for its class alone, an orbit found is kept when the higher precision finds none
+  // (Newton may stall there, next to the nearly singular DP - I of a class on the boundary)
+  const auto raised = [](OrbitOutcome outcome, OrbitOutcome higher) {
+    if (outcome.status == OrbitStatus::Found && higher.status != OrbitStatus::Found) return outcome;
+    return higher;
+  };
   OrbitOutcome outcome = orbitIn<double>(chain, request, stop);
-  if (raise(outcome)) outcome = orbitIn<long double>(chain, request, stop);
-  if (raise(outcome)) outcome = orbitIn<core::Quad>(chain, request, stop);
+  if (outcome.status == OrbitStatus::Undecided || classUndecided(outcome)) {
+    outcome = raised(std::move(outcome), orbitIn<long double>(chain, request, stop));
+  }
+  if (outcome.status == OrbitStatus::Undecided || classUndecided(outcome)) {
+    outcome = raised(std::move(outcome), orbitIn<core::Quad>(chain, request, stop));
+  }
   return outcome;
 }
 

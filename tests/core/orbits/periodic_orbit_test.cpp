@@ -239,7 +239,7 @@ TEST(PeriodicOrbitTest, nearT1AClassIsTheTracesWhereItsErrorDecidesAndUndecidedW
     const TwoMassForm<Quad> exact = form(Quad(0));
     const Quad exactT1 = twoPi<Quad>() / (exact.ratio * exact.omegaSlow);
     for (double below : {1e-4, 1e-6, 1e-8, 1e-10}) {
-      const double fraction = below * toDouble(exactT1);  // below T1, relative
+      const double fraction = below / toDouble(exactT1);  // `below` T1 (in time), relative
       const OrbitSearch<Quad> reference = onePeriodicOrbitStability(exact, Quad(exactT1 * (1 - Quad(fraction))));
       if (!reference.orbit) continue;
       ASSERT_NE(decidedStability(*reference.orbit), Stability::Undecided) << c.m2 << " " << below;
