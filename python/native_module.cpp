@@ -503,93 +503,96 @@ py::array tableArray(std::vector<double>&& rows, const std::vector<std::string>&
   return py::array(dtype, {count}, {static_cast<py::ssize_t>(dtype.itemsize())}, table->data(), owner);
 }
 
+// The document of a typed command (orbit, info, glo-set) as values of `resultType`: `work` reads
+// its chain and runs it on a thread of its own that Ctrl+C stops, and gives its document, or
+// nothing with `refusal` (the command line's line). What Python raised goes through; a refusal is
+// Refused (a ValueError).
+using TypedWork = std::function<std::optional<grazelab::cli::JsonValue>(std::stop_token, std::string& refusal)>;
+py::object typedDocument(const TypedWork& work, const py::object& resultType) {
+  std::optional<grazelab::cli::JsonValue> document;
+  std::string refusal;
+  std::stop_source stop;
+  std::optional<py::error_already_set> pythonError;
+  interruptibly(
+      stop,
+      [&](std::stop_token token) {
+        document = work(std::move(token), refusal);
+        return 0;
+      },
+      {}, pythonError);
+  if (pythonError) throw std::move(*pythonError);
+  if (!document) throw Refused(QString::fromStdString(refusal).simplified().toStdString());
+  return documentToPython(*document, resultType, document->holdsWideNumbers());
+}
+
 // orbit(options, result_type) -> its document as values: the typed orbit (commands/periodic_orbit.h)
-// of the options given by name as (flag, text) pairs (text None for the bare --onepp), on a thread
-// of its own that Ctrl+C stops; Refused (a ValueError) with the command line's line when there is none.
+// of the options given by name as (flag, text) pairs (text None for the bare --onepp).
 py::object orbitCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                         const py::object& resultType) {
   const grazelab::cli::OptionValues options = textOptions(given);
   QString error;
   const std::optional<grazelab::cli::OrbitRequest> request = grazelab::cli::readOrbitRequest(options, error);
   if (!request) throw Refused(error.simplified().toStdString());
-  grazelab::cli::OrbitOutcome outcome;
-  std::optional<QString> refused;  // the chain's refusal
-  std::stop_source stop;
-  std::optional<py::error_already_set> pythonError;
-  interruptibly(
-      stop,
-      [&](std::stop_token token) {
+  return typedDocument(
+      [&](std::stop_token token, std::string& refusal) -> std::optional<grazelab::cli::JsonValue> {
         const auto chain = grazelab::cli::twoMassChainOf(options, token);
         if (!chain.value) {
-          refused = chain.error;
-          return 0;
+          refusal = chain.error.toStdString();
+          return std::nullopt;
         }
-        outcome = grazelab::cli::solveOrbit(**chain.value, *request, std::move(token));
-        return 0;
+        const grazelab::cli::OrbitOutcome outcome = grazelab::cli::solveOrbit(**chain.value, *request, std::move(token));
+        if (outcome.status != grazelab::cli::OrbitStatus::Found) {
+          refusal = outcome.problem;
+          return std::nullopt;
+        }
+        return grazelab::cli::orbitDocument(outcome);
       },
-      {}, pythonError);
-  if (pythonError) throw std::move(*pythonError);
-  if (refused) throw Refused(refused->simplified().toStdString());
-  if (outcome.status != grazelab::cli::OrbitStatus::Found) {
-    throw Refused(QString::fromStdString(outcome.problem).simplified().toStdString());
-  }
-  const grazelab::cli::JsonValue document = grazelab::cli::orbitDocument(outcome);
-  return documentToPython(document, resultType, document.holdsWideNumbers());
+      resultType);
 }
 
 // info(options, result_type) -> its document as values: the typed info (commands/chain_info.h)
-// of the options given by name as (flag, text) pairs, on a thread of its own that Ctrl+C stops (a
-// design of the springs may take a while). Refused (a ValueError) with the command line's line.
+// of the options given by name as (flag, text) pairs (a design of the springs may take a while).
 py::object infoCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                        const py::object& resultType) {
   const grazelab::cli::OptionValues options = textOptions(given);
   QString error;
   const std::optional<grazelab::cli::InfoRequest> request = grazelab::cli::readInfoRequest(options, error);
   if (!request) throw Refused(error.simplified().toStdString());
-  grazelab::cli::InfoOutcome outcome;
-  std::stop_source stop;
-  std::optional<py::error_already_set> pythonError;
-  interruptibly(
-      stop,
-      [&](std::stop_token token) {
-        outcome = grazelab::cli::describeChain(options, *request, std::move(token));
-        return 0;
+  return typedDocument(
+      [&](std::stop_token token, std::string& refusal) -> std::optional<grazelab::cli::JsonValue> {
+        grazelab::cli::InfoOutcome outcome = grazelab::cli::describeChain(options, *request, std::move(token));
+        if (outcome.status != grazelab::cli::InfoStatus::Described) {
+          refusal = outcome.problem;
+          return std::nullopt;
+        }
+        return std::move(outcome.document);
       },
-      {}, pythonError);
-  if (pythonError) throw std::move(*pythonError);
-  if (outcome.status != grazelab::cli::InfoStatus::Described) throw Refused(outcome.problem);
-  return documentToPython(outcome.document, resultType, outcome.document.holdsWideNumbers());
+      resultType);
 }
 
 // glo_set(options, result_type) -> its document as values: the typed glo-set
-// (commands/grazing_set.h) of the options given by name as (flag, text) pairs, on a thread of its
-// own that Ctrl+C stops. Refused (a ValueError) with the command line's line when there is none.
+// (commands/grazing_set.h) of the options given by name as (flag, text) pairs.
 py::object gloSetCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                          const py::object& resultType) {
   const grazelab::cli::OptionValues options = textOptions(given);
   QString error;
   const std::optional<grazelab::cli::GloSetRequest> request = grazelab::cli::readGloSetRequest(options, error);
   if (!request) throw Refused(error.simplified().toStdString());
-  grazelab::cli::GloSetOutcome outcome;
-  std::optional<QString> refused;  // the chain's refusal
-  std::stop_source stop;
-  std::optional<py::error_already_set> pythonError;
-  interruptibly(
-      stop,
-      [&](std::stop_token token) {
+  return typedDocument(
+      [&](std::stop_token token, std::string& refusal) -> std::optional<grazelab::cli::JsonValue> {
         const auto chain = grazelab::cli::gloSetChainOf(options, token);
         if (!chain.value) {
-          refused = chain.error;
-          return 0;
+          refusal = chain.error.toStdString();
+          return std::nullopt;
         }
-        outcome = grazelab::cli::grazingSet(*chain.value, *request, std::move(token));
-        return 0;
+        const grazelab::cli::GloSetOutcome outcome = grazelab::cli::grazingSet(*chain.value, *request, std::move(token));
+        if (outcome.status != grazelab::cli::GloSetStatus::Computed) {
+          refusal = outcome.problem;
+          return std::nullopt;
+        }
+        return grazelab::cli::gloSetDocument(outcome);
       },
-      {}, pythonError);
-  if (pythonError) throw std::move(*pythonError);
-  if (refused) throw Refused(refused->simplified().toStdString());
-  if (outcome.status != grazelab::cli::GloSetStatus::Computed) throw Refused(outcome.problem);
-  return documentToPython(grazelab::cli::gloSetDocument(outcome), resultType, false);
+      resultType);
 }
 
 // family(options, result_type, progress) -> (its document as values, its table as a structured
