@@ -208,7 +208,7 @@ PeriodicOrbit<S> approachInEnergy(const TwoMassForm<S>& chain, const Units<S>& u
     const bool near = abs(found.orbit->state.u1 - inside.state.u1) < S(0.05) * units.position &&
                       abs(found.orbit->state.v1 - inside.state.v1) < S(0.05) * units.speed &&
                       abs(found.orbit->period - inside.period) < S(1e-3) * inside.period;
-    return near && stabilityDecided(*found.orbit) ? std::move(found.orbit) : std::nullopt;
+    return near && determinantChecked(*found.orbit) ? std::move(found.orbit) : std::nullopt;
   };
   if (onFamily(outside)) return inside;  // the family goes on there: nothing to refine
   // the bracket in the energies asked for (an orbit's own energy differs from its target by
@@ -295,7 +295,7 @@ ContinuedFamily<S> continueFamily(const TwoMassForm<S>& chain, const PeriodicOrb
   // a corrected orbit was evaluated with no closing tolerance: a row must be admissible in
   // every other way, closed as an orbit of its amplification can be, its stability decided
   const auto admissible = [&](const PeriodicOrbit<S>& orbit) {
-    return orbit.admissible && orbit.checks.periodicityResidual <= closeTolerance(orbit) && stabilityDecided(orbit);
+    return orbit.admissible && orbit.checks.periodicityResidual <= closeTolerance(orbit) && determinantChecked(orbit);
   };
   for (int step = 0; step < options.maxSteps; ++step) {
     if (stop.stop_requested()) return finish(PointKind::Stopped, last);

@@ -263,7 +263,7 @@ S closeTolerance(const PeriodicOrbit<S>& orbit) {
 }
 
 template <typename S>
-bool stabilityDecided(const PeriodicOrbit<S>& orbit) {
+bool determinantChecked(const PeriodicOrbit<S>& orbit) {
   using std::abs;
   return abs(orbit.checks.detMinus1) <= S(1e3) * defaultCloseTolerance<S>();
 }
@@ -601,11 +601,11 @@ OrbitSearch<S> onePeriodicOrbitStability(const TwoMassForm<S>& chain, const S& T
     OrbitSearch<S> polished = findOrbit(chain, orbit.energy, data.postImpact.u1, data.postImpact.v1, 1);
     using std::abs;
     // det DP = 1 within what the trace's own error allows (near T1 binary128's amplified rounding
-    // exceeds stabilityDecided's fixed 5e5 ulps where long double's does not)
-    const auto detDecided = [](const PeriodicOrbit<S>& found) {
+    // exceeds determinantChecked's fixed 5e5 ulps where long double's does not)
+    const auto determinantPasses = [](const PeriodicOrbit<S>& found) {
       return abs(found.checks.detMinus1) <= std::max(S(1e3) * defaultCloseTolerance<S>(), found.traceError);
     };
-    if (polished.orbit && abs(polished.orbit->period - T) <= S(1e-6) * T && detDecided(*polished.orbit)) {
+    if (polished.orbit && abs(polished.orbit->period - T) <= S(1e-6) * T && determinantPasses(*polished.orbit)) {
       orbit = std::move(*polished.orbit);
     } else if (const S bound = closedFormClosingBound(chain, orbit, T); orbit.checks.periodicityResidual <= bound) {
       // the exact data are an orbit: a path that misses closing by no more than the rounding
@@ -676,7 +676,7 @@ std::string orbitSymmetry(const PeriodicOrbit<S>& orbit, const S& tolerance) {
                                                         const S&);                                 \
   template S defaultCloseTolerance<S>();                                                           \
   template S closeTolerance<S>(const PeriodicOrbit<S>&);                                          \
-  template bool stabilityDecided<S>(const PeriodicOrbit<S>&);                                     \
+  template bool determinantChecked<S>(const PeriodicOrbit<S>&);                                   \
   template Stability decidedStability<S>(const PeriodicOrbit<S>&);                                \
   template S locatedTraceError<S>(const TwoMassForm<S>&, const PeriodicOrbit<S>&);                           \
   template PeriodicOrbit<S> evaluateOrbit<S>(const TwoMassForm<S>&, const BasicState<S>&, int,           \

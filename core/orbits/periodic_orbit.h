@@ -138,11 +138,12 @@ S defaultCloseTolerance();
 template <typename S>
 S closeTolerance(const PeriodicOrbit<S>& orbit);
 
-/// Whether S decides the orbit's stability: det DP = 1 within 1e3 times the default closing
-/// tolerance (next to a grazing or a multiple of T1 the amplification of the rounding spoils it
-/// first). Tables of families keep only such orbits.
+/// Whether the orbit's return map passes its determinant check: det DP = 1 within 1e3 times the
+/// default closing tolerance (next to a grazing or a multiple of T1 the amplification of the
+/// rounding spoils it first). Tables of families keep only such orbits. (Whether the trace's
+/// error decides the class is decidedStability's question, below.)
 template <typename S>
-bool stabilityDecided(const PeriodicOrbit<S>& orbit);
+bool determinantChecked(const PeriodicOrbit<S>& orbit);
 
 /// The class as the faces report it: the orbit's `stability` where S decides it, else Undecided.
 /// S decides it when the trace is farther from 2 and from -2 than its error (the larger of
