@@ -42,9 +42,11 @@
 #include "commands/chain_info.h"
 #include "commands/family_command.h"
 #include "commands/glo_set_command.h"
+#include "commands/map_command.h"
 #include "commands/modes_command.h"
 #include "commands/orbit_command.h"
 #include "commands/simulate_command.h"
+#include "commands/stability_command.h"
 #include "commands/simulation_document.h"
 #include "core/experiments/maps.h"
 #include "exit_codes.h"
@@ -140,11 +142,10 @@ std::size_t offsetOf(grazelab::core::Quantity quantity) {
   return 0;
 }
 
-// A map in memory: (its JSON document, its points as one structured array with a field per
-// quantity, row-major), the points owned by the array (no copy).
-py::tuple mapInMemory(grazelab::cli::map::StoredMap&& map) {
+// A map's points as one structured array with a field per quantity, row-major, owned by the
+// array (no copy).
+py::array mapPoints(std::vector<grazelab::core::PointSummary>&& mapPoints) {
   using grazelab::core::PointSummary;
-  const std::string document = grazelab::cli::indented(grazelab::cli::map::mapDocument(map));
   py::list names, formats, offsets;
   for (const grazelab::core::QuantityInfo& info : grazelab::core::quantities()) {
     names.append(std::string(info.name));
@@ -157,11 +158,10 @@ py::tuple mapInMemory(grazelab::cli::map::StoredMap&& map) {
   description["offsets"] = offsets;
   description["itemsize"] = sizeof(PointSummary);
   const py::dtype dtype = py::dtype::from_args(description);
-  auto* points = new std::vector<PointSummary>(std::move(map.points));
+  auto* points = new std::vector<PointSummary>(std::move(mapPoints));
   py::capsule owner(points, [](void* p) { delete static_cast<std::vector<PointSummary>*>(p); });
-  const py::array array(dtype, {static_cast<py::ssize_t>(points->size())},
-                        {static_cast<py::ssize_t>(sizeof(PointSummary))}, points->data(), owner);
-  return py::make_tuple(py::bytes(document), array);
+  return py::array(dtype, {static_cast<py::ssize_t>(points->size())},
+                   {static_cast<py::ssize_t>(sizeof(PointSummary))}, points->data(), owner);
 }
 
 // Hands the latest progress, if any arrived since the last call, to the caller's callback (with
@@ -344,18 +344,15 @@ grazelab::cli::OptionValues textOptions(const std::vector<std::pair<std::string,
   return grazelab::cli::OptionValues(std::move(named));
 }
 
-// command(name, options, operands=(), progress=None, keep_map=False)
-//   -> (code, output, messages, map, problem)
+// command(name, options, progress=None) -> (code, output, messages, problem)
 // A command of the command line run by its name with its options given by name as (flag, text)
 // pairs, text None for a bare flag (--quick): no command-line text,
 // the command line's rules (runCommand).
 py::tuple command(const std::string& name, const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
-                  const std::vector<std::string>& operandTexts, const py::object& progress, bool keepMap) {
+                  const py::object& progress) {
   QStringList names;
   for (const auto& named : given) names << QString::fromStdString(named.first);
   const grazelab::cli::OptionValues options = textOptions(given);
-  QStringList operands;
-  for (const std::string& operand : operandTexts) operands << QString::fromStdString(operand);
 
   MemoryStream output;
   MemoryStream messages;
@@ -364,8 +361,6 @@ py::tuple command(const std::string& name, const std::vector<std::pair<std::stri
   grazelab::cli::Io io;
   io.out = output.file();
   io.messages = messages.file();
-  grazelab::cli::map::StoredMap map;
-  if (keepMap) io.map = &map;
   if (!progress.is_none()) io.progress = mailbox.post();
 
   std::string problem;
@@ -374,7 +369,7 @@ py::tuple command(const std::string& name, const std::vector<std::pair<std::stri
   const int code = interruptibly(
       stop,
       [&](std::stop_token token) {
-        return grazelab::cli::runCommand(QString::fromStdString(name), options, names, operands, io, token);
+        return grazelab::cli::runCommand(QString::fromStdString(name), options, names, {}, io, token);
       },
       [&] { return deliverProgress(mailbox, progress, pythonError); }, pythonError);
   // the last progress (a command shorter than one wake-up reports its end too)
@@ -382,9 +377,7 @@ py::tuple command(const std::string& name, const std::vector<std::pair<std::stri
   if (pythonError) throw std::move(*pythonError);
   const std::string out = output.take();
   const std::string log = messages.take();
-  py::object mapResult = py::none();
-  if (keepMap && code == 0) mapResult = mapInMemory(std::move(map));
-  return py::make_tuple(code, py::bytes(out), py::str(log), mapResult, problem);
+  return py::make_tuple(code, py::bytes(out), py::str(log), problem);
 }
 
 // An option's value as the direct call takes it: a str is its text; a float, an int exact in
@@ -456,13 +449,14 @@ std::optional<std::vector<grazelab::cli::GivenOption>> givenOptions(const py::se
   return named;
 }
 
-// A typed command that writes its files where --out says (family, modes: `work` is its
-// ...WithFiles), run on a thread of its own that Ctrl+C stops, its progress heard on the calling
-// thread; Refused (invalid input) or NotWritten (a file not written) with its line.
-template <typename Run>
-Run filesCommand(const grazelab::cli::OptionValues& options, const py::object& progress,
-                 Run (*work)(const grazelab::cli::OptionValues&, const grazelab::cli::Io&, std::stop_token, QString&,
-                             bool)) {
+// A typed command that writes its files where --out says (family, modes, map, stability: `work`
+// is its ...WithFiles), run on a thread of its own that Ctrl+C stops, its progress heard on the
+// calling thread, its messages put in `log` when given; Refused (invalid input) or NotWritten (a
+// file not written) with its line.
+template <typename Work>
+auto filesCommand(const grazelab::cli::OptionValues& options, const py::object& progress, Work work,
+                  std::string* log = nullptr) {
+  using Run = decltype(work(options, grazelab::cli::Io{}, std::stop_token{}, std::declval<QString&>(), false));
   MemoryStream messages;
   ProgressMailbox mailbox;
   grazelab::cli::Io io;
@@ -483,6 +477,7 @@ Run filesCommand(const grazelab::cli::OptionValues& options, const py::object& p
   if (pythonError) throw std::move(*pythonError);
   if (run.code == grazelab::cli::kExitInvalidInput) throw Refused(error.simplified().toStdString());
   if (run.code != 0) throw NotWritten(error.simplified().toStdString());
+  if (log) *log = messages.take();
   return run;
 }
 
@@ -627,6 +622,53 @@ py::tuple modesCommand(const std::vector<std::pair<std::string, std::optional<st
   return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()), tables);
 }
 
+// A map or merge computed: (its document as values of `resultType`, with `files` when written,
+// its points as one structured array).
+py::tuple mapResult(grazelab::cli::MapRun&& run, const py::object& resultType) {
+  grazelab::cli::map::StoredMap& map = run.outcome.map;
+  const grazelab::cli::JsonValue document =
+      grazelab::cli::map::mapDocument(map, run.files ? std::move(*run.files) : grazelab::cli::JsonValue::null());
+  return py::make_tuple(grazelab::python::toPython(document, resultType), mapPoints(std::move(map.points)));
+}
+
+// map(options, result_type, progress) -> (its document as values, its points as a structured
+// array): the typed map (commands/parameter_map.h) of the options given by name as (flag, text)
+// pairs, on threads that Ctrl+C stops; its files written only where --out names them (no picture).
+py::tuple mapCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                     const py::object& resultType, const py::object& progress) {
+  const grazelab::cli::OptionValues options = textOptions(given);
+  return mapResult(filesCommand(options, progress, &grazelab::cli::mapWithFiles), resultType);
+}
+
+// merge(parts, out, result_type) -> as map: the stripes of one map (their prefixes) joined, written
+// under `out` when given.
+py::tuple mergeCommand(const std::vector<std::string>& partTexts, const std::optional<std::string>& out,
+                       const py::object& resultType) {
+  QStringList parts;
+  for (const std::string& part : partTexts) parts << QString::fromStdString(part);
+  std::vector<std::pair<std::string, std::optional<std::string>>> given;
+  if (out) given.emplace_back("out", *out);
+  const grazelab::cli::OptionValues options = textOptions(given);
+  const auto merge = [&parts](const grazelab::cli::OptionValues& values, const grazelab::cli::Io& io,
+                              std::stop_token stop, QString& error, bool filesRequired) {
+    return grazelab::cli::mergeWithFiles(values, parts, io, std::move(stop), error, filesRequired);
+  };
+  return mapResult(filesCommand(options, py::none(), merge), resultType);
+}
+
+// stability(options, progress) -> (matrix.csv's text, matrix.md's text, the messages): the typed
+// stability matrix (commands/stability_matrix.h) of the options given by name as (flag, text)
+// pairs (text None for the bare --quick), on a thread of its own that Ctrl+C stops; its files
+// written only where --out names them.
+py::tuple stabilityCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                           const py::object& progress) {
+  const grazelab::cli::OptionValues options = textOptions(given);
+  std::string log;
+  const grazelab::cli::StabilityRun run = filesCommand(options, progress, &grazelab::cli::stabilityWithFiles, &log);
+  return py::make_tuple(py::bytes(grazelab::cli::stabilityCsv(run.outcome).toStdString()),
+                        grazelab::cli::stabilityMarkdown(run.request, run.outcome).toStdString(), log);
+}
+
 // grazelab.Chain's native half: a chain of N masses read, checked and designed once, shared by
 // every run of it (cli::PreparedMassChain).
 struct ChainHandle {
@@ -756,13 +798,10 @@ PYBIND11_MODULE(_native, module) {
   module.attr("version") = grazelab::cli::kVersion;
   py::register_exception<Refused>(module, "Refused", PyExc_ValueError);
   py::register_exception<NotWritten>(module, "NotWritten", PyExc_OSError);
-  module.def("command", &command, py::arg("name"), py::arg("options"), py::arg("operands") = std::vector<std::string>(),
-             py::arg("progress") = py::none(), py::arg("keep_map") = false,
+  module.def("command", &command, py::arg("name"), py::arg("options"), py::arg("progress") = py::none(),
              "Runs one grazelab-cli command in this process, its options as (flag, text) pairs (text None "
-             "for a bare flag) and merge's parts as operands: no command-line text. Returns (exit code, "
-             "output bytes, messages, map or None, the line that says why it failed or ''). With keep_map a "
-             "map or merge hands back (its JSON document, its points as a structured array) and writes files "
-             "only where --out says.");
+             "for a bare flag): no command-line text. Returns (exit code, output bytes, messages, the line "
+             "that says why it failed or '').");
   py::class_<ChainHandle>(module, "PreparedChain",
                           "A chain of N masses read, checked and designed once (use grazelab.Chain).")
       .def("describe", &chainDescription, py::arg("result_type"),
@@ -789,6 +828,17 @@ PYBIND11_MODULE(_native, module) {
              "grazelab-cli modes's typed command, its options as (flag, text) pairs: (its document as values of "
              "result_type, each family's table as a structured array); its files written only where --out names "
              "them, without pictures. ValueError when there is no atlas.");
+  module.def("map", &mapCommand, py::arg("options"), py::arg("result_type"), py::arg("progress") = py::none(),
+             "grazelab-cli map's typed command, its options as (flag, text) pairs: (its document as values of "
+             "result_type, its points as a structured array, a field per quantity, row-major); its files "
+             "written only where --out names them, without a picture. ValueError when there is no map.");
+  module.def("merge", &mergeCommand, py::arg("parts"), py::arg("out"), py::arg("result_type"),
+             "grazelab-cli merge in process: the stripes of one map (their prefixes) joined, as map returns a "
+             "map; written under out when it is not None. ValueError when the parts are not one map's stripes.");
+  module.def("stability", &stabilityCommand, py::arg("options"), py::arg("progress") = py::none(),
+             "grazelab-cli stability's typed command, its options as (flag, text) pairs (text None for the bare "
+             "--quick): (matrix.csv's bytes, matrix.md's text, the messages); its files written only where --out "
+             "names them. ValueError when there is no matrix.");
   module.def("prepare_chain", &prepareChain, py::arg("options"),
              "A chain of N masses from its options as (name, text, ...): masses, springs, right-spring, "
              "stop-mass, gap, frequencies, design-branch. Raises ValueError when there is none.");

@@ -19,6 +19,7 @@
 #include "commands/modes_command.h"
 #include "commands/orbit_command.h"
 #include "commands/report_command.h"
+#include "commands/stability_command.h"
 #include "commands/simulate_command.h"
 #include "core/solver/trust.h"
 #include "exit_codes.h"

@@ -40,6 +40,8 @@ from ._native import command as _run_command
 from ._native import family as _family
 from ._native import glo_set as _glo_set
 from ._native import info as _info
+from ._native import map as _map
+from ._native import merge as _merge
 from ._native import NotWritten as _NotWritten
 from ._native import Refused as _Refused
 from ._native import modes as _modes
@@ -47,6 +49,7 @@ from ._native import orbit as _orbit
 from ._native import prepare_chain as _prepare_chain
 from ._native import simulate as _simulate_here
 from ._native import simulate_chain as _simulate_chain
+from ._native import stability as _stability
 from ._native import version as __version__
 
 # map and help are left out of a star import: they would hide Python's own
@@ -72,13 +75,12 @@ class GrazeLabWarning(UserWarning):
     """A result came back that its own error estimate does not trust (verdict unreliable)."""
 
 
-def _command(command, options, progress=None, positional=(), keep_map=False):
+def _command(command, options, progress=None):
     """Runs one command with the options that are not None, handed over by name (no command-line
-    text); returns (output text, messages) or raises; with keep_map, (messages, map) for a map or
-    merge held in memory. A progress callback hears (1.0, "done") when the command has ended well."""
+    text); returns (output text, messages) or raises. A progress callback hears (1.0, "done") when
+    the command has ended well."""
     given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ("quick",))
-    code, output, messages, kept, problem = _run_command(
-        command, given, [str(p) for p in positional], progress, keep_map)
+    code, output, messages, problem = _run_command(command, given, progress)
     if code == 2:
         raise ValueError(_message(problem or "invalid input"))
     if code != 0:
@@ -86,8 +88,6 @@ def _command(command, options, progress=None, positional=(), keep_map=False):
     lines = [text for text in messages.splitlines() if text.strip()]
     if progress is not None:
         progress(1.0, "done")
-    if keep_map:
-        return lines, kept
     return output.decode("utf-8"), lines
 
 
@@ -526,15 +526,10 @@ class _Output:
             _shutil.rmtree(self.folder, ignore_errors=True)
 
 
-def _map_result(kept, out):
-    """A map the command handed over in memory: its JSON document and its points (one
-    structured array, a field per quantity), each quantity a 2-D view of them, no copy. With
-    ``out`` the document names the files written there, as the file PREFIX.json does."""
-    document, points = kept
-    result = _convert.parse_json(document.decode("utf-8"))
-    if out is not None:
-        with open(out + ".json", encoding="utf-8") as handle:
-            result["run"]["files"] = _convert.parse_json(handle.read())["run"]["files"]
+def _map_result(result, points):
+    """A map handed over in memory: its document (with ``files`` when written, as the file
+    PREFIX.json has it) and its points (one structured array, a field per quantity), each
+    quantity a 2-D view of them, no copy."""
     shape = tuple(result["run"]["shape"])
     result["arrays"] = {name: points[name].reshape(shape) for name in points.dtype.names}
     # the columns' and rows' coordinates, as the spec says: numpy.linspace(from, to, count)
@@ -600,8 +595,7 @@ def map(*, x: _Union[str, _Sequence], y: _Union[str, _Sequence], m1: float = 1.0
                        threads=threads, shard=shard, picture=picture, springs=springs, right_spring=right_spring,
                        stop_mass=stop_mass, design_branch=design_branch, glo_weights=glo_weights)
     out = None if out is None else _os.fspath(out)
-    _, kept = _command("map", dict(options, out=out), progress, keep_map=True)
-    return _map_result(kept, out)
+    return _map_result(*_files_command(_map, dict(options, out=out), progress))
 
 
 def merge(parts, *, out=None):
@@ -610,9 +604,13 @@ def merge(parts, *, out=None):
     if isinstance(parts, (str, _os.PathLike)):
         parts = [parts]
     out = None if out is None else _os.fspath(out)
-    _, kept = _command("merge", {"out": out}, positional=[_os.fspath(p) for p in parts],
-                       keep_map=True)
-    return _map_result(kept, out)
+    try:
+        document, points = _merge([_os.fspath(p) for p in parts], out, Result)
+    except _Refused as error:
+        raise ValueError(_message(str(error))) from None
+    except _NotWritten as error:
+        raise OSError(_message(str(error))) from None
+    return _map_result(document, points)
 
 
 @_documented
@@ -681,7 +679,7 @@ def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
 
 
 def _files_command(call, options, progress, bare=()):
-    """A typed command that writes its files only where ``out`` says (family, modes): call(its
+    """A typed command that writes its files only where ``out`` says (family, modes, map): call(its
     options as (flag, text) pairs, Result, progress) -> (its document as Results, its tables),
     the tables the command's own rows (no file read back); a refusal as ValueError, a file not
     written as OSError, in the module's words."""
@@ -745,14 +743,35 @@ def report(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
 
 
 def stability(*, methods: _Union[str, _Sequence[str], None] = None, quick: bool = False, out=None,
-              progress: _Optional[_Progress] = None) -> Result:
-    """Every method on stiff and extreme cases (``grazelab-cli stability``). Returns ``table``
-    (matrix.csv as a structured array), ``markdown`` (matrix.md) and ``log``.
+              progress: _Optional[_Progress] = None, masses: _Optional[_Sequence[float]] = None,
+              springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
+              stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
+              design_branch: _Optional[int] = None, gap: _Optional[float] = None,
+              state: _Optional[_Sequence[float]] = None, onepp: _Optional[float] = None,
+              perturb: _Optional[_Sequence[float]] = None,
+              glo_weights: _Optional[_Sequence[float]] = None) -> Result:
+    """Every method on stiff and extreme cases (``grazelab-cli stability``): its own cases, or
+    those of a chain of N masses. Returns ``table`` (matrix.csv's rows as a structured array),
+    ``markdown`` (matrix.md) and ``log``; with ``out=DIR`` the files are written there too.
 
     Keywords:
     methods: the methods to run, a list or "a,b" (default all).
     quick: fewer settings and runs.
-    out: the directory to write into (created if missing).
+    out: the directory to write into (created if missing); without it no file is written.
     progress: ``progress(fraction, text)``, called on the calling thread.
+    masses, springs, right_spring, stop_mass, frequencies, design_branch, gap: a chain of N masses,
+        as in ``simulate``: the matrix of that chain and its stiff and extreme variants, from the
+        start ``state`` (2N numbers), ``glo_weights`` or ``onepp``, with ``perturb``.
 """
-    return _directory_command("stability", "matrix.csv", out, progress, dict(methods=methods, quick=quick))
+    options = dict(methods=methods, quick=quick, gap=gap, state=state, onepp=onepp, perturb=perturb,
+                   glo_weights=glo_weights, springs=springs, right_spring=right_spring, stop_mass=stop_mass,
+                   design_branch=design_branch)
+    if masses is not None:
+        options.update(_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, design_branch, {}))
+    elif frequencies is not None:
+        options["frequencies"] = frequencies
+    csv, markdown, log = _files_command(lambda given, _result, heard: _stability(given, heard),
+                                        dict(options, out=None if out is None else _os.fspath(out)),
+                                        progress, ("quick",))
+    return Result(out=None if out is None else _os.fspath(out), table=_convert.csv_text_table(csv.decode("utf-8")),
+                  markdown=markdown, log=[_message(line) for line in log.splitlines() if line.strip()])

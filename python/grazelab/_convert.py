@@ -3,6 +3,7 @@
 """Keyword arguments to the command line's flags, and its output to Python and NumPy."""
 
 import csv
+import io
 import decimal
 import fractions
 import json
@@ -160,10 +161,15 @@ def parse_json(text, exact_decimals=False):
 
 
 def csv_table(path):
-    """A CSV the command line wrote (report, stability) as a structured array: a column of
-    numbers as float64 (empty cells NaN), any other as text."""
+    """A CSV the command line wrote (report) as a structured array: see csv_text_table."""
     with open(path, newline="") as handle:
-        rows = list(csv.reader(handle))
+        return csv_text_table(handle.read())
+
+
+def csv_text_table(text):
+    """A CSV's text (report, stability) as a structured array: a column of numbers as float64
+    (empty cells NaN), any other as text."""
+    rows = list(csv.reader(io.StringIO(text, newline="")))
     names, body = rows[0], rows[1:]
     columns = []
     for index, name in enumerate(names):

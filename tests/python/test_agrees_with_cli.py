@@ -2,6 +2,7 @@
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
 """Every command's result from Python equals the command line's, bit for bit."""
 
+import csv
 import json
 import math
 import os
@@ -590,3 +591,36 @@ def test_a_sampled_result_keeps_the_json_order(cli_json, precision):
     assert run.samples_truncated is document["samples_truncated"]
     if precision == "quad":
         assert "samples" not in run.decimal and "samples_truncated" in run.decimal
+
+
+def test_stability_of_a_chain_is_the_cli_matrix(cli, tmp_path, monkeypatch):
+    # three masses stopped on the last: the typed matrix in memory, no file, and the command
+    # line's matrix.csv cell for cell (but for the timings)
+    chain = dict(masses=[1, 0.3, 0.6], springs=[1, 0.7, 1.3], stop_mass=3, gap=0.4,
+                 state=[0.1, 0, 0, 0, 0.2, -0.3])
+    monkeypatch.chdir(tmp_path)
+    result = gl.stability(quick=True, methods="exact,moreau-jean", **chain)
+    assert list(tmp_path.iterdir()) == [] and result.out is None
+    assert result.markdown.startswith("# GrazeLab stability matrix")
+    done = cli("stability", "--quick", "--methods", "exact,moreau-jean", "--masses", "1,0.3,0.6",
+               "--springs", "1,0.7,1.3", "--stop-mass", "3", "--gap", "0.4", "--state", "0.1,0,0,0,0.2,-0.3",
+               "--out", str(tmp_path / "m"))
+    assert done.returncode == 0, done.stderr
+    with open(tmp_path / "m" / "matrix.csv", newline="") as handle:
+        expected = list(csv.DictReader(handle))
+    assert len(result.table) == len(expected) == 12  # six cases, two methods
+    for row, line in zip(result.table, expected):
+        assert (row["case"], row["method"]) == (line["case"], line["method"])
+        if "budget" in (row["verdict"], line["verdict"]):  # a cell's budget is wall time
+            continue
+        assert row["verdict"] == line["verdict"], line
+        assert repr(float(row["state_error"])) == repr(float(line["state_error"] or "nan")), line
+        assert row["reason"] == line["reason"]
+    given = {row["method"]: row for row in result.table if row["case"] == "given"}
+    assert given["exact"]["verdict"] == "ok" and given["exact"]["state_error"] < 1e-9
+    # with out, the files, named in the log
+    kept = gl.stability(quick=True, methods="exact", out=tmp_path / "kept", **chain)
+    assert (tmp_path / "kept" / "matrix.csv").exists() and (tmp_path / "kept" / "matrix.md").exists()
+    assert any("matrix.csv" in line for line in kept.log)
+    with pytest.raises(ValueError, match="given by masses"):
+        gl.stability(quick=True, springs=[1, 2])

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "commands/parameter_map.h"
 #include "io/chain_map_input.h"
 #include "io/cli_input.h"
 #include "io/map_files.h"
@@ -163,31 +164,28 @@ std::optional<core::MapSpec> parseSpec(const OptionValues& options, QString& err
 // to the caller's progress
 class ProgressLine {
  public:
-  ProgressLine(std::int64_t total, const Io& io) : m_total(total), m_io(io) {}
-  void operator()(std::int64_t done) {
+  explicit ProgressLine(const Io& io) : m_io(io) {}
+  void operator()(std::int64_t done, std::int64_t total) {
     if (m_io.progress) {
-      m_io.progress(double(done) / double(m_total),
-                    std::to_string(done) + " of " + std::to_string(m_total) + " points");
+      m_io.progress(double(done) / double(total), std::to_string(done) + " of " + std::to_string(total) + " points");
     }
     const std::int64_t now = Clock::now().time_since_epoch().count();
     std::int64_t last = m_last.load();
     const std::int64_t every = std::chrono::duration_cast<Clock::duration>(std::chrono::seconds(2)).count();
     if (now - last < every || !m_last.compare_exchange_strong(last, now)) return;
     std::fprintf(m_io.messages, "grazelab-cli: map: %lld of %lld points (%.0f %%)\n", (long long)done,
-                 (long long)m_total, 100.0 * double(done) / double(m_total));
+                 (long long)total, 100.0 * double(done) / double(total));
   }
 
  private:
-  std::int64_t m_total;
   const Io& m_io;
   std::atomic<std::int64_t> m_last = Clock::now().time_since_epoch().count();
 };
 
 // Where a map's files go: under --out PREFIX, or nowhere when the caller takes the map in
 // memory (the Python module) and gave no --out. False, with `error`, for an unusable --out.
-bool filesPrefix(const OptionValues& options, const Io& io, std::optional<QString>& prefix,
-                 QString& error) {
-  if (io.map && !options.isSet("out")) return true;
+bool filesPrefix(const OptionValues& options, bool filesRequired, std::optional<QString>& prefix, QString& error) {
+  if (!filesRequired && !options.isSet("out")) return true;
   prefix = parseOutputPrefix(options, "PREFIX.json, PREFIX-QUANTITY.npy, ...", "map", error);
   return prefix.has_value();
 }
@@ -208,167 +206,182 @@ void addMapOptions(QCommandLineParser& parser) {
   });
 }
 
-int runMap(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
+std::optional<MapRequest> readMapRequest(const OptionValues& options, std::stop_token stop, QString& error,
+                                         bool& stopped) {
+  stopped = false;
   if (options.value("precision") != "auto" && options.value("precision") != "double") {
     error = "--precision: a map runs in auto precision (double, each point raised to long double "
             "or binary128 where a contact needs it); use simulate for one run in long or quad";
-    return kExitInvalidInput;
+    return std::nullopt;
   }
   // a chain of N masses (--masses) or the two-mass chain; the note's chain written with --masses
   // over the axes u<i>, v<i> (from a --state, else the grazing-start plane, as for every chain)
   // is the note's map (its engine: the two-mass options' bits)
   const bool notes = writesTheNotesChain(options) && onStateAxes(options);
   const bool masses = options.isSet("masses") && !notes;
-  std::optional<core::MapSpec> spec;
-  std::optional<core::ChainMapSpec> chainSpec;
+  MapRequest request;
   if (masses) {
-    bool stopped = false;
-    chainSpec = parseChainMapSpec(options, stop, error, stopped);
-    if (stopped) return kExitInterrupted;
-    if (!chainSpec) return kExitInvalidInput;
-  } else if (notes) {
-    spec = parseSpec(options, error);
-    if (!spec) return kExitInvalidInput;
+    std::optional<core::ChainMapSpec> spec = parseChainMapSpec(options, stop, error, stopped);
+    if (!spec) return std::nullopt;
+    request.spec = std::move(*spec);
   } else {
-    for (const char* name : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch", "glo-weights"}) {
-      if (options.isSet(name)) {
-        error = "--springs, --right-spring, --stop-mass, --frequencies and --glo-weights describe a chain given by --masses";
-        return kExitInvalidInput;
+    if (!notes) {
+      for (const char* name : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch", "glo-weights"}) {
+        if (options.isSet(name)) {
+          error = "--springs, --right-spring, --stop-mass, --frequencies and --glo-weights describe a chain given by --masses";
+          return std::nullopt;
+        }
       }
     }
-    spec = parseSpec(options, error);
-    if (!spec) return kExitInvalidInput;
+    std::optional<core::MapSpec> spec = parseSpec(options, error);
+    if (!spec) return std::nullopt;
+    request.spec = std::move(*spec);
   }
-  const std::int64_t xCount = masses ? chainSpec->x.range.count : spec->x.count;
-  const std::int64_t yCount = masses ? chainSpec->y.range.count : spec->y.count;
-  Shard shard;
   if (options.isSet("shard")) {
-    const auto parsed = parseShard(options.value("shard"), error);
-    if (!parsed) return kExitInvalidInput;
-    shard = *parsed;
+    const auto shard = parseShard(options.value("shard"), error);
+    if (!shard) return std::nullopt;
+    request.stripe = shard->k;
+    request.stripes = shard->n;
   }
-  int threads = parallel::defaultThreadCount();
+  request.threads = parallel::defaultThreadCount();
   if (options.isSet("threads")) {
     bool ok = false;
-    threads = options.value("threads").toInt(&ok);
-    if (!ok || threads < 1) {
+    request.threads = options.value("threads").toInt(&ok);
+    if (!ok || request.threads < 1) {
       error = QStringLiteral("--threads: '%1' is not a count >= 1").arg(options.value("threads"));
-      return kExitInvalidInput;
+      return std::nullopt;
     }
   }
-  const QString picture = options.isSet("picture") ? options.value("picture") : "fft_first";
-  if (!core::parseQuantity(picture.toStdString())) {
+  if (options.isSet("picture")) request.picture = options.value("picture").toStdString();
+  if (!core::parseQuantity(request.picture)) {
     QStringList names;
     for (const auto& info : core::quantities()) names << QString::fromUtf8(info.name);
-    error = QStringLiteral("--picture: '%1' is not a quantity; use one of %2").arg(picture, names.join(", "));
-    return kExitInvalidInput;
+    error = QStringLiteral("--picture: '%1' is not a quantity; use one of %2")
+                .arg(QString::fromStdString(request.picture), names.join(", "));
+    return std::nullopt;
   }
-  std::optional<QString> prefix;
-  if (!filesPrefix(options, io, prefix, error)) return kExitInvalidInput;
-  const bool writesFiles = prefix.has_value();
-
-  const core::RowRange rows = core::stripe(yCount, shard.k, shard.n);
-  const std::int64_t points = (rows.rowEnd - rows.rowBegin) * xCount;
+  const core::RowRange rows = request.rows();
+  const std::int64_t points = (rows.rowEnd - rows.rowBegin) * request.columns();
   // a summary is 80 bytes: beyond 2^27 points (10.7 GB) a process should take a stripe
   constexpr std::int64_t kMaxPointsInMemory = std::int64_t(1) << 27;
   if (points > kMaxPointsInMemory) {
     error = QStringLiteral("%1 points (%2 GB in memory) in one process: split the rows with "
                            "--shard K/N and join the stripes with merge")
                 .arg(points).arg(double(points) * 80 / 1e9, 0, 'f', 1);
-    return kExitInvalidInput;
+    return std::nullopt;
   }
-  const bool whole = rows.rowBegin == 0 && rows.rowEnd == yCount;
-  const bool drawsPicture = writesFiles && whole && picturesAvailable();
+  return request;
+}
+
+MapRun mapWithFiles(const OptionValues& options, const Io& io, std::stop_token stop, QString& error,
+                    bool filesRequired) {
+  MapRun run;
+  bool stopped = false;
+  const std::optional<MapRequest> request = readMapRequest(options, stop, error, stopped);
+  if (!request) {
+    run.code = stopped ? kExitInterrupted : kExitInvalidInput;
+    return run;
+  }
+  std::optional<QString> prefix;
+  if (!filesPrefix(options, filesRequired, prefix, error)) {
+    run.code = kExitInvalidInput;
+    return run;
+  }
+  const core::RowRange rows = request->rows();
+  const bool whole = rows.rowBegin == 0 && rows.rowEnd == request->totalRows();
+  const bool drawsPicture = prefix && whole && picturesAvailable();
   // the fonts load while the points are computed (the picture needs them afterwards)
   std::thread fontThread;
   if (drawsPicture) fontThread = std::thread(map::prepareFonts);
-  ProgressLine progress(points, io);
-  const auto started = Clock::now();
-  const auto onProgress = [&progress](std::int64_t done) { progress(done); };
-  const core::MapRows computed =
-      masses ? core::computeChainMap(*chainSpec, rows, parallel::tbbParallelFor(threads), stop, onProgress)
-             : core::computeMap(*spec, rows, parallel::tbbParallelFor(threads), stop, onProgress);
-  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  ProgressLine progress(io);
+  run.outcome = parameterMap(*request, stop, std::ref(progress));
   if (fontThread.joinable()) fontThread.join();
-  if (!computed.complete) return kExitInterrupted;
-
-  map::StoredMap stored;
-  stored.description.spec = masses ? chainSpecJson(*chainSpec, computed.period, picture)
-                                   : map::specJson(*spec, computed.period, picture);
-  stored.description.run = JsonValue::object(
-      {{"seconds", JsonValue::number(seconds)},
-       {"threads", JsonValue::of(std::int64_t(threads))},
-       {"shard", JsonValue::of((options.isSet("shard") ? options.value("shard") : QString("1/1")).toStdString())},
-       {"complete", JsonValue::of(true)}});
-  stored.rows = rows;
-  stored.columns = computed.columns;
-  stored.totalRows = yCount;
-  stored.points = computed.points;
+  if (run.outcome.status == MapStatus::Interrupted) {
+    run.code = kExitInterrupted;
+    return run;
+  }
+  if (!prefix) return run;
+  const map::StoredMap& stored = run.outcome.map;
   // the picture (fonts, painting, PNG and SVG encoding: more than the arrays) is drawn on a
   // thread of its own while the arrays are written, so that on two cores the files add no wall
   // time (QPainter draws on images in any thread; the two write different files)
-  if (!writesFiles) {
-    *io.map = std::move(stored);
-    return kExitOk;
-  }
   bool pictureWritten = true;
   QString pictureError;
   std::thread pictureThread;
   if (drawsPicture) {
-    pictureThread = std::thread(
-        [&] { pictureWritten = map::writeMapPicture(*prefix, stored, pictureError); });
+    pictureThread = std::thread([&] { pictureWritten = map::writeMapPicture(*prefix, stored, pictureError); });
   }
-  const bool filesWritten = map::writeMapFiles(*prefix, stored, error);
+  run.files = map::writeMapFiles(*prefix, stored, error);
   if (pictureThread.joinable()) pictureThread.join();
-  if (!filesWritten) return 1;
-  if (!pictureWritten) {
-    error = pictureError;
-    return 1;
+  if (!run.files || !pictureWritten) {
+    if (run.files) error = pictureError;
+    run.code = 1;
+    return run;
   }
+  const std::int64_t points = std::int64_t(stored.points.size());
+  const double seconds = run.outcome.seconds;
   std::fprintf(io.messages, "grazelab-cli: map: %lld points in %.3f s on %d thread%s (%.0f runs/s): %s.json\n",
-               (long long)points, seconds, threads, threads == 1 ? "" : "s",
+               (long long)points, seconds, request->threads, request->threads == 1 ? "" : "s",
                seconds > 0 ? double(points) / seconds : 0.0, qPrintable(*prefix));
-  if (io.map) *io.map = std::move(stored);
-  return kExitOk;
+  return run;
 }
 
-int runMerge(const OptionValues& options, const QStringList& parts, const Io& io,
-             std::stop_token stop, QString& error) {
+int runMap(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
+  return mapWithFiles(options, io, std::move(stop), error, true).code;
+}
+
+MapRun mergeWithFiles(const OptionValues& options, const QStringList& parts, const Io& io, std::stop_token stop,
+                      QString& error, bool filesRequired) {
+  MapRun run;
+  run.code = kExitInvalidInput;
   if (parts.isEmpty()) {
     error = "merge: give the parts' prefixes after --out PREFIX";
-    return kExitInvalidInput;
+    return run;
   }
   std::optional<QString> prefix;
-  if (!filesPrefix(options, io, prefix, error)) return kExitInvalidInput;
-  const bool writesFiles = prefix.has_value();
+  if (!filesPrefix(options, filesRequired, prefix, error)) return run;
   std::vector<map::StoredMap> stored;
   for (const QString& part : parts) {
-    if (stop.stop_requested()) return kExitInterrupted;
+    if (stop.stop_requested()) {
+      run.code = kExitInterrupted;
+      return run;
+    }
     QString reason;
     auto read = map::readMapFiles(part, reason);
     if (!read) {
       error = "merge: " + reason;
-      return kExitInvalidInput;
+      return run;
     }
     stored.push_back(std::move(*read));
   }
   auto whole = map::mergeStripes(std::move(stored), error);
   if (!whole) {
     error = "merge: " + error;
-    return kExitInvalidInput;
+    return run;
   }
-  if (stop.stop_requested()) return kExitInterrupted;
-  if (!writesFiles) {
-    *io.map = std::move(*whole);
-    return kExitOk;
+  if (stop.stop_requested()) {
+    run.code = kExitInterrupted;
+    return run;
   }
-  if (!map::writeMapFiles(*prefix, *whole, error)) return 1;
-  if (picturesAvailable() && !map::writeMapPicture(*prefix, *whole, error)) return 1;
+  run.code = kExitOk;
+  run.outcome.status = MapStatus::Computed;
+  run.outcome.map = std::move(*whole);
+  if (!prefix) return run;
+  const map::StoredMap& merged = run.outcome.map;
+  run.files = map::writeMapFiles(*prefix, merged, error);
+  if (!run.files || (picturesAvailable() && !map::writeMapPicture(*prefix, merged, error))) {
+    run.code = 1;
+    return run;
+  }
   std::fprintf(io.messages, "grazelab-cli: merge: %lld parts, %lld x %lld points: %s.json\n",
-               (long long)parts.size(), (long long)whole->totalRows, (long long)whole->columns,
+               (long long)parts.size(), (long long)merged.totalRows, (long long)merged.columns,
                qPrintable(*prefix));
-  if (io.map) *io.map = std::move(*whole);
-  return kExitOk;
+  return run;
+}
+
+int runMerge(const OptionValues& options, const QStringList& parts, const Io& io, std::stop_token stop,
+             QString& error) {
+  return mergeWithFiles(options, parts, io, std::move(stop), error, true).code;
 }
 
 }  // namespace grazelab::cli

@@ -22,8 +22,4 @@ void addReportOptions(QCommandLineParser& parser);
 /// stderr. On an invalid input: one line on stderr (`error`), exit 2, nothing written.
 int runReport(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
 
-/// `grazelab-cli stability`: the matrix of stiff and extreme cases. Writes DIR/matrix.csv and
-/// DIR/matrix.md atomically.
-int runStability(const OptionValues& options, const Io& io, std::stop_token stop, QString& error);
-
 }  // namespace grazelab::cli

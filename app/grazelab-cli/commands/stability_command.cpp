@@ -3,7 +3,8 @@
 // `grazelab-cli stability`: every method on stiff and extreme cases, each cell ending with a
 // verdict and a reason (issue 8).
 
-#include <chrono>
+#include "commands/stability_command.h"
+
 #include <map>
 
 #include "core/methods/stress_matrix.h"
@@ -11,13 +12,15 @@
 #include "io/chain_start.h"
 #include "io/cli_input.h"
 #include "io/option_values.h"
-#include "commands/report_command.h"
 #include "commands/report_support.h"
 
 namespace grazelab::cli {
 namespace {
 
+using core::methods::CaseHorizon;
 using core::methods::CellVerdict;
+using core::methods::LongRunMark;
+using core::methods::StressCase;
 using core::methods::MethodKind;
 using core::methods::StressCell;
 
@@ -65,52 +68,38 @@ std::optional<std::vector<core::methods::StressCase>> chainCases(const OptionVal
 
 }  // namespace
 
-int runStability(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
-  using namespace core::methods;
-  const auto methods = parseMethodsOption(options, error);
-  if (!methods) return kExitInvalidInput;
-  const auto directory = prepareOutputDirectory(options, error);
-  if (!directory) return kExitInvalidInput;
-  const bool quick = options.isSet("quick");
-  WorkBudget budget;
-  budget.maxSeconds = quick ? 0.5 : 20;
-  const auto started = std::chrono::steady_clock::now();
-
-  std::vector<StressCase> cases;
+std::optional<StabilityRequest> readStabilityRequest(const OptionValues& options, std::stop_token stop,
+                                                     QString& error, bool& stopped) {
+  stopped = false;
+  StabilityRequest request;
+  auto methods = parseMethodsOption(options, error);
+  if (!methods) return std::nullopt;
+  request.methods = std::move(*methods);
+  request.quick = options.isSet("quick");
   if (options.isSet("masses")) {
-    auto ofTheChain = chainCases(options, quick, stop, error);
-    if (!ofTheChain) return stop.stop_requested() ? kExitInterrupted : kExitInvalidInput;
-    cases = std::move(*ofTheChain);
-  } else {
-    for (const char* option : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch", "gap", "state", "onepp",
-                               "perturb", "glo-weights"}) {
-      if (options.isSet(option)) {
-        error = QStringLiteral("--%1 describes a chain given by --masses (without it, stability runs its own cases)").arg(option);
-        return kExitInvalidInput;
-      }
+    auto ofTheChain = chainCases(options, request.quick, stop, error);
+    if (!ofTheChain) {
+      stopped = stop.stop_requested();
+      return std::nullopt;
     }
-    cases = stressCases(quick);
+    request.cases = std::move(*ofTheChain);
+    return request;
   }
-  std::vector<StressCell> cells;
-  std::vector<LongRunMark> marks;
-  std::map<std::string, CaseHorizon> horizons;
-  int index = 0;
-  for (const StressCase& row : cases) {
-    ++index;
-    progress(io, "stability", QStringLiteral("[%1/%2] %3").arg(index).arg(cases.size())
-                              .arg(QString::fromStdString(row.name)),
-             double(index - 1) / double(cases.size()));
-    horizons[row.name] = runStressCase(
-        row, *methods, budget, [&cells](const StressCell& cell) { cells.push_back(cell); },
-        &marks, stop);
-    if (stop.stop_requested()) return kExitInterrupted;
+  for (const char* option : {"springs", "right-spring", "stop-mass", "frequencies", "design-branch", "gap", "state", "onepp",
+                             "perturb", "glo-weights"}) {
+    if (options.isSet(option)) {
+      error = QStringLiteral("--%1 describes a chain given by --masses (without it, stability runs its own cases)").arg(option);
+      return std::nullopt;
+    }
   }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  request.cases = core::methods::stressCases(request.quick);
+  return request;
+}
 
+QByteArray stabilityCsv(const StabilityOutcome& outcome) {
   QByteArray csv = "case,method,seconds,state_error,contact_time_error,missed_contacts,"
                    "energy_drift,verdict,reason\n";
-  for (const StressCell& c : cells) {
+  for (const StressCell& c : outcome.cells) {
     csv += QStringLiteral("%1,%2,%3,%4,%5,%6,%7,%8,%9\n")
                .arg(QString::fromStdString(c.caseName), name(c.method), scientific(c.seconds, 4),
                     scientific(c.errors.state), scientific(c.errors.contactTime))
@@ -119,7 +108,12 @@ int runStability(const OptionValues& options, const Io& io, std::stop_token stop
                     csvField(QString::fromStdString(c.reason)))
                .toUtf8();
   }
+  return csv;
+}
 
+QString stabilityMarkdown(const StabilityRequest& request, const StabilityOutcome& outcome) {
+  using namespace core::methods;
+  const std::vector<MethodKind>& methods = request.methods;
   QString md = "# GrazeLab stability matrix\n\n";
   md += QStringLiteral("Written by %1%2 in %3. Each case runs %4 slowest periods T2, or up to the "
                        "predictability horizon of its start when that comes first (the long run "
@@ -131,19 +125,19 @@ int runStability(const OptionValues& options, const Io& io, std::stop_token stop
                        "most 1e-3 (for the exact solver: 1e-9, or 10 times its own error estimate when that is "
                        "larger) and no contact is missed or "
                        "invented; budget: %5 s per cell.\n\n")
-            .arg(versionString(), quick ? " with --quick (a subset)" : "", humanSeconds(seconds))
+            .arg(versionString(), request.quick ? " with --quick (a subset)" : "", humanSeconds(outcome.seconds))
             .arg(kCasePeriods)
-            .arg(budget.maxSeconds);
+            .arg(request.budgetSeconds());
   md += "| case |";
-  for (MethodKind kind : *methods) md += " " + name(kind) + " |";
+  for (MethodKind kind : methods) md += " " + name(kind) + " |";
   md += "\n|---|";
-  for (std::size_t i = 0; i < methods->size(); ++i) md += "---|";
+  for (std::size_t i = 0; i < methods.size(); ++i) md += "---|";
   md += "\n";
   std::map<std::pair<std::string, MethodKind>, const StressCell*> byCell;
-  for (const StressCell& c : cells) byCell[{c.caseName, c.method}] = &c;
-  for (const StressCase& row : cases) {
+  for (const StressCell& c : outcome.cells) byCell[{c.caseName, c.method}] = &c;
+  for (const StressCase& row : request.cases) {
     md += "| " + QString::fromStdString(row.name) + " |";
-    for (MethodKind kind : *methods) {
+    for (MethodKind kind : methods) {
       const auto found = byCell.find({row.name, kind});
       const QString v = found == byCell.end() ? "—" : verdictText(found->second->verdict);
       md += " " + (v == "ok" ? v : "**" + v + "**") + " |";
@@ -151,11 +145,12 @@ int runStability(const OptionValues& options, const Io& io, std::stop_token stop
     md += "\n";
   }
   md += "\n## Cases\n\n";
-  for (const StressCase& row : cases) {
+  for (const StressCase& row : request.cases) {
     md += "- `" + QString::fromStdString(row.name) + "`: " +
           QString::fromStdString(row.description);
-    const CaseHorizon& h = horizons[row.name];
-    if (h.shortened) {
+    const auto horizon = outcome.horizons.find(row.name);
+    if (horizon != outcome.horizons.end() && horizon->second.shortened) {
+      const CaseHorizon& h = horizon->second;
       md += QStringLiteral(" — compared up to t = %1 (%2 T2), before the predictability horizon "
                            "t = %3 of its start, where the exact double run's error reaches 1e-6 "
                            "(a long-double shadow of the whole run, as `simulate --trust full`; "
@@ -168,15 +163,15 @@ int runStability(const OptionValues& options, const Io& io, std::stop_token stop
     md += "\n";
   }
   md += "\n## Why a cell is not ok\n\n";
-  for (const StressCell& c : cells) {
+  for (const StressCell& c : outcome.cells) {
     if (c.verdict == CellVerdict::Ok) continue;
     md += QStringLiteral("- %1 / %2 (%3): %4 — %5\n")
               .arg(QString::fromStdString(c.caseName), name(c.method), settingText(c.setting),
                    verdictText(c.verdict), QString::fromStdString(c.reason));
   }
-  if (!marks.empty()) {
+  if (!outcome.marks.empty()) {
     md += "\n## The long exact run\n\n| contacts | t | energy drift (max so far) | ns per contact (this stretch) |\n|---|---|---|---|\n";
-    for (const LongRunMark& mark : marks) {
+    for (const LongRunMark& mark : outcome.marks) {
       md += QStringLiteral("| %1 | %2 | %3 | %4 |\n")
                 .arg(mark.contacts)
                 .arg(mark.t, 0, 'g', 6)
@@ -184,14 +179,49 @@ int runStability(const OptionValues& options, const Io& io, std::stop_token stop
                 .arg(mark.nanosecondsPerContact, 0, 'f', 0);
     }
   }
-  const QString dir = *directory;
-  if (!writeAtomically(dir + "/matrix.csv", csv, error) ||
-      !writeAtomically(dir + "/matrix.md", md.toUtf8(), error)) {
-    return 1;
+  return md;
+}
+
+StabilityRun stabilityWithFiles(const OptionValues& options, const Io& io, std::stop_token stop, QString& error,
+                                bool filesRequired) {
+  StabilityRun run;
+  bool stopped = false;
+  std::optional<StabilityRequest> request = readStabilityRequest(options, stop, error, stopped);
+  if (!request) {
+    run.code = stopped ? kExitInterrupted : kExitInvalidInput;
+    return run;
+  }
+  run.request = std::move(*request);
+  std::optional<QString> directory;
+  if (filesRequired || options.isSet("out")) {
+    directory = prepareOutputDirectory(options, error);
+    if (!directory) {
+      run.code = kExitInvalidInput;
+      return run;
+    }
+  }
+  run.outcome = stabilityMatrix(run.request, stop, [&io](std::size_t index, std::size_t count, const std::string& name) {
+    progress(io, "stability", QStringLiteral("[%1/%2] %3").arg(index + 1).arg(count).arg(QString::fromStdString(name)),
+             double(index) / double(count));
+  });
+  if (run.outcome.status == StabilityStatus::Interrupted) {
+    run.code = kExitInterrupted;
+    return run;
+  }
+  if (!directory) return run;
+  const QString& dir = *directory;
+  if (!writeAtomically(dir + "/matrix.csv", stabilityCsv(run.outcome), error) ||
+      !writeAtomically(dir + "/matrix.md", stabilityMarkdown(run.request, run.outcome).toUtf8(), error)) {
+    run.code = 1;
+    return run;
   }
   progress(io, "stability", QStringLiteral("wrote %1/{matrix.csv, matrix.md} in %2")
-                            .arg(dir, humanSeconds(seconds)));
-  return kExitOk;
+                            .arg(dir, humanSeconds(run.outcome.seconds)));
+  return run;
+}
+
+int runStability(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
+  return stabilityWithFiles(options, io, std::move(stop), error, true).code;
 }
 
 }  // namespace grazelab::cli

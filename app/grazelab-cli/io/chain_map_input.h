@@ -19,8 +19,4 @@ namespace grazelab::cli {
 std::optional<core::ChainMapSpec> parseChainMapSpec(const OptionValues& options, std::stop_token stop,
                                                     QString& error, bool& stopped);
 
-/// The spec object of an N-mass map: the two-mass map's fields (map::specJson), the chain and
-/// its period instead of the model, the axes by name (u3, v1, w2), the start.
-JsonValue chainSpecJson(const core::ChainMapSpec& spec, double period, const QString& pictureQuantity);
-
 }  // namespace grazelab::cli

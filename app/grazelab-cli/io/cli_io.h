@@ -10,14 +10,6 @@
 
 namespace grazelab::cli {
 
-namespace map {
-struct StoredMap;
-}
-struct JsonValue;
-}  // namespace grazelab::cli
-
-namespace grazelab::cli {
-
 /// A chain's events as the Python module hands them to NumPy without a copy: packed rows of t,
 /// the type in UCS-4 ('<U8'), then u1..uN, v1_pre..vN_pre and the stopped mass's vS_post, each
 /// number rounded to double; in long double or binary128 also each number's decimal text, 2N + 2
@@ -49,9 +41,6 @@ struct Io {
   /// Progress of a long command: the fraction done (negative when not known) and one line
   /// that says where it is. May be called from any thread; optional.
   std::function<void(double fraction, const std::string& text)> progress;
-  /// When set, `map` and `merge` put the map here (the Python module: arrays without files);
-  /// their files are then written only where --out names them.
-  map::StoredMap* map = nullptr;
   /// When set, the line that says why a command failed (exit 2: invalid input; 1: a file not
   /// written) is put here as well as on `messages` (the Python module raises it, reading
   /// nothing back from the messages).

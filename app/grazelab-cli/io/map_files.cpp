@@ -2,7 +2,6 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "io/map_files.h"
 
-#include <QCoreApplication>
 #include <QFile>
 
 #include <algorithm>
@@ -19,41 +18,6 @@ using core::PointSummary;
 using core::Quantity;
 
 using V = JsonValue;
-
-V stateArray(const core::State& s) {
-  return V::array({V::number(s.u1), V::number(s.u2), V::number(s.v1), V::number(s.v2)});
-}
-
-V axisJson(const core::MapAxis& axis) {
-  return V::object({{"variable", V::of(std::string(core::toString(axis.variable)))},
-                    {"from", V::number(axis.from)},
-                    {"to", V::number(axis.to)},
-                    {"count", V::of(std::int64_t(axis.count))},
-                    {"values", V::of("numpy.linspace(from, to, count)")}});
-}
-
-V startJson(const core::MapSpec& spec) {
-  using Kind = core::StartSpec<double>::Kind;
-  V start;
-  if (!spec.start) {
-    start = V::object({{"kind", V::of("grazing-start plane")}, {"u2", V::of("gap")}, {"v2", V::of(std::int64_t(0))},
-                       {"note", V::of("u1 and v1 are 0 where no axis sets them")}});
-  } else {
-    switch (spec.start->kind) {
-      case Kind::Glo: start = V::object({{"kind", V::of("glo")}, {"lambda", V::number(spec.start->lambda)}}); break;
-      case Kind::Glom: start = V::object({{"kind", V::of("glom")}, {"mode", V::of(std::int64_t(spec.start->mode))}}); break;
-      case Kind::OnePeriodic: start = V::object({{"kind", V::of("onepp")}, {"T", V::number(spec.start->period)}}); break;
-      case Kind::Explicit: start = V::object({{"kind", V::of("state")}, {"state", stateArray(spec.start->state)}}); break;
-    }
-  }
-  const bool epsilonAxis = spec.x.variable == core::MapVariable::Epsilon ||
-                           spec.y.variable == core::MapVariable::Epsilon;
-  if (spec.perturbation && !epsilonAxis) start.set("perturbation", stateArray(*spec.perturbation));
-  if (epsilonAxis) {
-    start.set("epsilon_direction", stateArray(spec.perturbation.value_or(core::State{0, 0, 0, -1})));
-  }
-  return start;
-}
 
 QString quantityFile(const QString& prefix, std::string_view name) {
   return prefix + "-" + QString::fromUtf8(name) + ".npy";
@@ -117,73 +81,14 @@ QByteArray csvText(const StoredMap& map) {
 
 }  // namespace
 
-std::string axisVariable(const V& spec, const char* which) {
-  const V* axis = spec.find(which);
-  const V* variable = axis ? axis->find("variable") : nullptr;
-  return variable ? variable->text : std::string();
-}
-
-core::MapAxis axisOf(const V& spec, const char* which) {
-  core::MapAxis result;
-  const V* axis = spec.find(which);
-  if (!axis) return result;
-  result.variable = core::parseMapVariable(axisVariable(spec, which)).value_or(core::MapVariable::U1);
-  const auto number = [axis](const char* name) {
-    const V* value = axis->find(name);
-    return value ? value->toDouble() : 0.0;
-  };
-  result.from = number("from");
-  result.to = number("to");
-  result.count = std::int64_t(number("count"));
-  return result;
-}
-
-V specJson(const core::MapSpec& spec, double period, const QString& pictureQuantity) {
-  const core::Model& m = spec.model;
-  V model = V::object({{"m1", V::number(m.m1)}, {"m2", V::number(m.m2)}, {"k1", V::number(m.k1)},
-                       {"gap", V::number(m.gap)}, {"T2", V::number(period)}});
-  if (m.design) {
-    model.set("branch", V::of(std::string(core::toString(*m.design))));
-    model.set("k2", V::of("1:2 design of the branch (follows m2/m1)"));
-  } else {
-    model.set("k2", V::number(m.k2));
-  }
-  std::vector<V::Field> quantities;
-  for (const core::QuantityInfo& info : core::quantities()) {
-    quantities.emplace_back(JsonKey::owned(std::string(info.name)),
-                            V::object({{"unit", V::of(std::string(info.unit))},
-                                       {"dtype", V::of(info.integer ? "int64" : "float64")},
-                                       {"meaning", V::of(std::string(info.meaning))}}));
-  }
-  return V::object(
-      {{"format", V::of("grazelab-map")},
-       {"generator", V::of(std::string("grazelab-cli ").append(QCoreApplication::applicationVersion().toStdString()))},
-       {"layout", V::of("PREFIX-QUANTITY.npy: row index = y index, column index = x index")},
-       {"x", axisJson(spec.x)},
-       {"y", axisJson(spec.y)},
-       {"model", std::move(model)},
-       {"start", startJson(spec)},
-       {"contacts", V::of(std::int64_t(spec.contacts))},
-       {"contacts_note", V::of("each run makes this many contacts, and more (at most 3) if its first "
-                               "flight from the stop has not ended by then")},
-       {"horizon", V::of(spec.estimateHorizon ? "estimated per point (--trust auto)"
-                                              : "not estimated (--trust off): NaN; give --trust auto")},
-       {"missing_values", V::of("NaN: not defined at that point (no such flight or impact in the "
-                                "run, or the model or start is unusable there); inf: the run proved "
-                                "it never comes (a resonant flight that never returns); the counts "
-                                "are -1 where the model or start is unusable (no run)")},
-       {"picture", V::of(pictureQuantity.toStdString())},
-       {"quantities", V::object(std::move(quantities))}});
-}
-
-bool writeMapFiles(const QString& prefix, const StoredMap& map, QString& error) {
+std::optional<V> writeMapFiles(const QString& prefix, const StoredMap& map, QString& error) {
   const std::int64_t rows = map.rows.rowEnd - map.rows.rowBegin;
   // a map written over another: its description goes first and comes back last, so that a
   // write that fails half-way leaves no JSON describing a mixture of old and new arrays
   for (const QString& stale : {prefix + ".json", prefix + ".csv"}) {
     if (QFile::exists(stale) && !QFile::remove(stale)) {
       error = QStringLiteral("cannot replace %1").arg(stale);
-      return false;
+      return std::nullopt;
     }
   }
   std::vector<V::Field> files;
@@ -205,25 +110,17 @@ bool writeMapFiles(const QString& prefix, const StoredMap& map, QString& error) 
       }
     }
     const QString path = quantityFile(prefix, info.name);
-    if (!saveAtomically(path, encodeNpy(array), error)) return false;
+    if (!saveAtomically(path, encodeNpy(array), error)) return std::nullopt;
     files.emplace_back(JsonKey::owned(std::string(info.name)), V::of(quantityFile(baseName(prefix), info.name).toStdString()));
   }
   if (rows * map.columns <= kCsvMaxPoints) {
-    if (!saveAtomically(prefix + ".csv", csvText(map), error)) return false;
+    if (!saveAtomically(prefix + ".csv", csvText(map), error)) return std::nullopt;
     files.emplace_back("csv", V::of((baseName(prefix) + ".csv").toStdString()));
   }
-  const std::string document = indented(mapDocument(map, V::object(std::move(files))));
-  return saveAtomically(prefix + ".json", QByteArray::fromStdString(document), error);
-}
-
-V mapDocument(const StoredMap& map, V files) {
-  V run = map.description.run;
-  run.set("rows", V::array({V::of(std::int64_t(map.rows.rowBegin)), V::of(std::int64_t(map.rows.rowEnd))}));
-  run.set("total_rows", V::of(std::int64_t(map.totalRows)));
-  run.set("shape", V::array({V::of(std::int64_t(map.rows.rowEnd - map.rows.rowBegin)), V::of(std::int64_t(map.columns))}));
-  if (files.kind == V::Kind::Object) run.set("files", std::move(files));
-  V spec = map.description.spec;
-  return V::object({{"spec", std::move(spec)}, {"run", std::move(run)}});
+  V names = V::object(std::move(files));
+  const std::string document = indented(mapDocument(map, names));
+  if (!saveAtomically(prefix + ".json", QByteArray::fromStdString(document), error)) return std::nullopt;
+  return names;
 }
 
 std::optional<StoredMap> readMapFiles(const QString& prefix, QString& error) {

@@ -6,8 +6,8 @@
 
 #include <optional>
 
-#include "core/experiments/maps.h"
 #include "io/json_value.h"
+#include "io/map_document.h"
 
 namespace grazelab::cli::map {
 
@@ -18,33 +18,10 @@ namespace grazelab::cli::map {
 /// Grids up to this many points also get a CSV file.
 inline constexpr std::int64_t kCsvMaxPoints = 100'000;
 
-/// What was run: `spec` is the map's identity (equal for every shard of one map); `run` how
-/// (threads, seconds, which rows).
-struct MapDescription {
-  JsonValue spec;
-  JsonValue run;
-};
-
-/// The spec object of a map: format, version, axes (with their values), model (with T2),
-/// start, contacts, the trust setting, the picture's quantity and the quantities' units.
-JsonValue specJson(const core::MapSpec& spec, double period, const QString& pictureQuantity);
-
-/// A map as its files hold it: a stripe (rows of totalRows) or the whole map.
-struct StoredMap {
-  MapDescription description;
-  core::RowRange rows;
-  std::int64_t columns = 0;
-  std::int64_t totalRows = 0;
-  std::vector<core::PointSummary> points;  ///< row-major, rows.rowEnd - rows.rowBegin rows
-};
-
-/// The JSON document of a map: its spec and its run (rows, total_rows, shape), with `files`
-/// (names relative to the document) when it has files.
-JsonValue mapDocument(const StoredMap& map, JsonValue files = JsonValue::null());
-
-/// Writes every file of `map` under `prefix`. Returns false with a reason; no file is left
-/// half-written (those already complete stay).
-bool writeMapFiles(const QString& prefix, const StoredMap& map, QString& error);
+/// Writes every file of `map` under `prefix` and returns their names (the document's `files`:
+/// quantity -> PREFIX-QUANTITY.npy, csv, relative to the JSON's folder); nothing, with a reason,
+/// when one could not be written (no file is left half-written; those already complete stay).
+std::optional<JsonValue> writeMapFiles(const QString& prefix, const StoredMap& map, QString& error);
 
 /// Reads what writeMapFiles wrote under `prefix`.
 std::optional<StoredMap> readMapFiles(const QString& prefix, QString& error);
@@ -52,11 +29,5 @@ std::optional<StoredMap> readMapFiles(const QString& prefix, QString& error);
 /// Joins the stripes of one map into the whole map; refuses stripes of different maps, gaps and
 /// overlaps. The result's description is the parts' spec, with run.seconds the sum.
 std::optional<StoredMap> mergeStripes(std::vector<StoredMap> parts, QString& error);
-
-/// An axis as the spec object describes it.
-core::MapAxis axisOf(const JsonValue& spec, const char* which);
-
-/// The name of the variable of axis `which` ("x", "y") as the spec gives it ("u1", "w2", ...).
-std::string axisVariable(const JsonValue& spec, const char* which);
 
 }  // namespace grazelab::cli::map
