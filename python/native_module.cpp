@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: MIT
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // grazelab._native: the command line's commands run in this process by the command line's own
-// code (runCommand: by name, with their options by name), on a thread of its own with the GIL released. The calling thread wakes
-// every 100 ms: Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the
-// command's latest progress goes to the caller's callback, both on the caller's thread.
-// grazelab/__init__.py turns keyword arguments into the flags and the output into NumPy.
-// `simulate`, `orbit`, `family`, `modes`, `glo-set` and `info` are typed commands (commands/simulation.h,
-// periodic_orbit.h, onepp_family.h, modes_atlas_command.h, grazing_set.h, chain_info.h): their
-// options by name, no command-line text, their outcomes handed over as values (and events as arrays); a chain of N masses is
-// prepared once (prepare_chain: grazelab.Chain) for every run of it.
+// code, on a thread of their own with the GIL released. The calling thread wakes every 100 ms:
+// Ctrl+C (PyErr_CheckSignals) stops the command through its stop token, and the command's latest
+// progress goes to the caller's callback, both on the caller's thread. grazelab/__init__.py turns
+// keyword arguments into the options and the outcomes into NumPy. Every command is a typed one
+// (commands/simulation.h, periodic_orbit.h, onepp_family.h, modes_atlas_command.h, grazing_set.h,
+// chain_info.h, parameter_map.h, stability_matrix.h, work_precision_report.h): its options by name,
+// read by the command line's own readers, no command-line text, its outcome handed over as values
+// (tables and events as arrays); a chain of N masses is prepared once (prepare_chain:
+// grazelab.Chain) for every run of it.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -45,6 +46,7 @@
 #include "commands/map_command.h"
 #include "commands/modes_command.h"
 #include "commands/orbit_command.h"
+#include "commands/report_command.h"
 #include "commands/simulate_command.h"
 #include "commands/stability_command.h"
 #include "commands/simulation_document.h"
@@ -344,42 +346,6 @@ grazelab::cli::OptionValues textOptions(const std::vector<std::pair<std::string,
   return grazelab::cli::OptionValues(std::move(named));
 }
 
-// command(name, options, progress=None) -> (code, output, messages, problem)
-// A command of the command line run by its name with its options given by name as (flag, text)
-// pairs, text None for a bare flag (--quick): no command-line text,
-// the command line's rules (runCommand).
-py::tuple command(const std::string& name, const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
-                  const py::object& progress) {
-  QStringList names;
-  for (const auto& named : given) names << QString::fromStdString(named.first);
-  const grazelab::cli::OptionValues options = textOptions(given);
-
-  MemoryStream output;
-  MemoryStream messages;
-  std::stop_source stop;
-  ProgressMailbox mailbox;
-  grazelab::cli::Io io;
-  io.out = output.file();
-  io.messages = messages.file();
-  if (!progress.is_none()) io.progress = mailbox.post();
-
-  std::string problem;
-  io.problem = &problem;
-  std::optional<py::error_already_set> pythonError;
-  const int code = interruptibly(
-      stop,
-      [&](std::stop_token token) {
-        return grazelab::cli::runCommand(QString::fromStdString(name), options, names, {}, io, token);
-      },
-      [&] { return deliverProgress(mailbox, progress, pythonError); }, pythonError);
-  // the last progress (a command shorter than one wake-up reports its end too)
-  if (!pythonError && code == 0) deliverProgress(mailbox, progress, pythonError);
-  if (pythonError) throw std::move(*pythonError);
-  const std::string out = output.take();
-  const std::string log = messages.take();
-  return py::make_tuple(code, py::bytes(out), py::str(log), problem);
-}
-
 // An option's value as the direct call takes it: a str is its text; a float, an int exact in
 // double or a tuple/list of them are numbers. False for any other type (the caller then writes
 // the options as text: NumPy scalars, Fractions, ...).
@@ -656,6 +622,18 @@ py::tuple mergeCommand(const std::vector<std::string>& partTexts, const std::opt
   return mapResult(filesCommand(options, py::none(), merge), resultType);
 }
 
+// report(options, progress) -> (results.csv's text, report.md's text, the messages): the typed
+// work-precision report (commands/work_precision_report.h) of the options given by name as
+// (flag, text) pairs (text None for the bare --quick), on a thread of its own that Ctrl+C stops;
+// its files written only where --out names them (no picture).
+py::tuple reportCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                        const py::object& progress) {
+  const grazelab::cli::OptionValues options = textOptions(given);
+  std::string log;
+  const grazelab::cli::ReportRun run = filesCommand(options, progress, &grazelab::cli::reportWithFiles, &log);
+  return py::make_tuple(py::bytes(run.csv.toStdString()), run.markdown.toStdString(), log);
+}
+
 // stability(options, progress) -> (matrix.csv's text, matrix.md's text, the messages): the typed
 // stability matrix (commands/stability_matrix.h) of the options given by name as (flag, text)
 // pairs (text None for the bare --quick), on a thread of its own that Ctrl+C stops; its files
@@ -798,10 +776,6 @@ PYBIND11_MODULE(_native, module) {
   module.attr("version") = grazelab::cli::kVersion;
   py::register_exception<Refused>(module, "Refused", PyExc_ValueError);
   py::register_exception<NotWritten>(module, "NotWritten", PyExc_OSError);
-  module.def("command", &command, py::arg("name"), py::arg("options"), py::arg("progress") = py::none(),
-             "Runs one grazelab-cli command in this process, its options as (flag, text) pairs (text None "
-             "for a bare flag): no command-line text. Returns (exit code, output bytes, messages, the line "
-             "that says why it failed or '').");
   py::class_<ChainHandle>(module, "PreparedChain",
                           "A chain of N masses read, checked and designed once (use grazelab.Chain).")
       .def("describe", &chainDescription, py::arg("result_type"),
@@ -835,6 +809,10 @@ PYBIND11_MODULE(_native, module) {
   module.def("merge", &mergeCommand, py::arg("parts"), py::arg("out"), py::arg("result_type"),
              "grazelab-cli merge in process: the stripes of one map (their prefixes) joined, as map returns a "
              "map; written under out when it is not None. ValueError when the parts are not one map's stripes.");
+  module.def("report", &reportCommand, py::arg("options"), py::arg("progress") = py::none(),
+             "grazelab-cli report's typed command, its options as (flag, text) pairs (text None for the bare "
+             "--quick): (results.csv's bytes, report.md's text, the messages); its files written only where --out "
+             "names them, without pictures. ValueError when there is no report.");
   module.def("stability", &stabilityCommand, py::arg("options"), py::arg("progress") = py::none(),
              "grazelab-cli stability's typed command, its options as (flag, text) pairs (text None for the bare "
              "--quick): (matrix.csv's bytes, matrix.md's text, the messages); its files written only where --out "

@@ -32,14 +32,12 @@ namespace {
 
 int fail(const Io& io, const QString& message) {
   std::fprintf(io.messages, "grazelab-cli: %s\n", qPrintable(message.simplified()));
-  if (io.problem) *io.problem = message.simplified().toStdString();
   return kExitInvalidInput;
 }
 
 // A command that failed otherwise (a file not written): its line
 void failed(const Io& io, const QString& message) {
   std::fprintf(io.messages, "grazelab-cli: %s\n", qPrintable(message));
-  if (io.problem) *io.problem = message.simplified().toStdString();
 }
 
 // The end of a command that writes files: one line for invalid input (exit 2), a note for an

@@ -24,8 +24,6 @@ the core computes, so threads run computations at once. Long calls take ``progre
 """
 
 import os as _os
-import shutil as _shutil
-import tempfile as _tempfile
 import warnings as _warnings
 from typing import Callable as _Callable
 from typing import Optional as _Optional
@@ -36,7 +34,6 @@ import numpy as _np
 
 from . import _convert
 from ._convert import Result
-from ._native import command as _run_command
 from ._native import family as _family
 from ._native import glo_set as _glo_set
 from ._native import info as _info
@@ -47,6 +44,7 @@ from ._native import Refused as _Refused
 from ._native import modes as _modes
 from ._native import orbit as _orbit
 from ._native import prepare_chain as _prepare_chain
+from ._native import report as _report
 from ._native import simulate as _simulate_here
 from ._native import simulate_chain as _simulate_chain
 from ._native import stability as _stability
@@ -73,22 +71,6 @@ _DIRECT_CONTACTS = 1000
 
 class GrazeLabWarning(UserWarning):
     """A result came back that its own error estimate does not trust (verdict unreliable)."""
-
-
-def _command(command, options, progress=None):
-    """Runs one command with the options that are not None, handed over by name (no command-line
-    text); returns (output text, messages) or raises. A progress callback hears (1.0, "done") when
-    the command has ended well."""
-    given = _convert.option_texts({name: value for name, value in options.items() if value is not None}, ("quick",))
-    code, output, messages, problem = _run_command(command, given, progress)
-    if code == 2:
-        raise ValueError(_message(problem or "invalid input"))
-    if code != 0:
-        raise OSError(_message(problem or f"{command} failed (exit {code})"))
-    lines = [text for text in messages.splitlines() if text.strip()]
-    if progress is not None:
-        progress(1.0, "done")
-    return output.decode("utf-8"), lines
 
 
 def _typed(call, options, bare=()):
@@ -507,25 +489,6 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
     return result
 
 
-class _Output:
-    """Where a command that writes files writes: `out` (kept) or a temporary folder."""
-
-    def __init__(self, out, name):
-        self.kept = out is not None
-        if self.kept:
-            self.prefix = _os.fspath(out)
-        else:
-            self.folder = _tempfile.mkdtemp(prefix="grazelab-")
-            self.prefix = _os.path.join(self.folder, name)
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        if not self.kept:
-            _shutil.rmtree(self.folder, ignore_errors=True)
-
-
 def _map_result(result, points):
     """A map handed over in memory: its document (with ``files`` when written, as the file
     PREFIX.json has it) and its points (one structured array, a field per quantity), each
@@ -695,23 +658,6 @@ def _files_command(call, options, progress, bare=()):
     return answer
 
 
-def _directory_command(command, table_file, out, progress, options):
-    with _Output(out, command) as target:
-        folder = target.prefix
-        _, lines = _command(command, dict(options, out=folder), progress)
-        if not target.kept:  # the files' folder is deleted: the log does not name it
-            lines = [line for line in lines if " wrote " not in line]
-        result = Result(out=folder if target.kept else None,
-                        table=_convert.csv_table(_os.path.join(folder, table_file)),
-                        log=[_message(line) for line in lines])
-        markdown = _os.path.join(folder, table_file.rsplit(".", 1)[0] + ".md")
-        if not _os.path.exists(markdown):
-            markdown = _os.path.join(folder, "report.md")
-        with open(markdown) as handle:
-            result["markdown"] = handle.read()
-        return result
-
-
 @_documented
 def report(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
            gap: float = 1.0, branch: _Optional[str] = None, glo: _Optional[float] = None, onepp: _Optional[float] = None,
@@ -721,11 +667,11 @@ def report(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
            progress: _Optional[_Progress] = None, masses: _Optional[_Sequence[float]] = None,
            springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
            stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
-           design_branch: _Optional[int] = None) -> Result:
+           design_branch: _Optional[int] = None, glo_weights: _Optional[_Sequence[float]] = None) -> Result:
     """Every comparison method against the exact solver, error against run time
-    (``grazelab-cli report``). Returns ``table`` (results.csv as a structured array),
-    ``markdown`` (report.md) and ``log``; with ``out=DIR`` the files stay there (the module
-    draws no pictures: use grazelab-cli for them).
+    (``grazelab-cli report``). Returns ``table`` (results.csv's rows as a structured array),
+    ``markdown`` (report.md) and ``log``; with ``out=DIR`` the files are written there too (the
+    module draws no pictures: use grazelab-cli for them); without it no file is written.
 
     Keywords:
 {chain}{start}    contacts, t_end: the run's length (default: 200 slow periods).
@@ -734,12 +680,13 @@ def report(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
     quick: fewer settings and runs (seconds instead of minutes).
     out: the directory to write into (created if missing).
     progress: ``progress(fraction, text)``, called on the calling thread.
+    glo_weights: a chain of N masses' start on GLO_lambda, lambda these weights (fastest mode first).
 {two_mass_chain}"""
     options = _chain_keywords(dict(glo=glo, onepp=onepp, state=state, perturb=perturb, contacts=contacts,
-                                   t_end=t_end, methods=methods, quick=quick),
+                                   t_end=t_end, methods=methods, quick=quick, glo_weights=glo_weights),
                               dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch),
                               masses, springs, right_spring, stop_mass, frequencies, design_branch)
-    return _directory_command("report", "results.csv", out, progress, options)
+    return _table_command(_report, options, out, progress)
 
 
 def stability(*, methods: _Union[str, _Sequence[str], None] = None, quick: bool = False, out=None,
@@ -770,8 +717,15 @@ def stability(*, methods: _Union[str, _Sequence[str], None] = None, quick: bool 
         options.update(_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, design_branch, {}))
     elif frequencies is not None:
         options["frequencies"] = frequencies
-    csv, markdown, log = _files_command(lambda given, _result, heard: _stability(given, heard),
-                                        dict(options, out=None if out is None else _os.fspath(out)),
-                                        progress, ("quick",))
-    return Result(out=None if out is None else _os.fspath(out), table=_convert.csv_text_table(csv.decode("utf-8")),
-                  markdown=markdown, log=[_message(line) for line in log.splitlines() if line.strip()])
+    return _table_command(_stability, options, out, progress)
+
+
+def _table_command(call, options, out, progress):
+    """A typed command whose outcome is a CSV table and a Markdown text (report, stability):
+    call(its options as (flag, text) pairs, progress) -> (the CSV's bytes, the text, the
+    messages), its files written only where ``out`` says."""
+    out = None if out is None else _os.fspath(out)
+    csv, markdown, log = _files_command(lambda given, _result, heard: call(given, heard),
+                                        dict(options, out=out), progress, ("quick",))
+    return Result(out=out, table=_convert.csv_text_table(csv.decode("utf-8")), markdown=markdown,
+                  log=[_message(line) for line in log.splitlines() if line.strip()])

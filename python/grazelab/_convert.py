@@ -160,12 +160,6 @@ def parse_json(text, exact_decimals=False):
     return result
 
 
-def csv_table(path):
-    """A CSV the command line wrote (report) as a structured array: see csv_text_table."""
-    with open(path, newline="") as handle:
-        return csv_text_table(handle.read())
-
-
 def csv_text_table(text):
     """A CSV's text (report, stability) as a structured array: a column of numbers as float64
     (empty cells NaN), any other as text."""

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
 """The compiled part of the module (python/native_module.cpp): the command line's commands run in
-process by name, ``simulate``, ``orbit``, ``family``, ``modes``, ``map``, ``merge``, ``stability``, ``glo_set`` and ``info`` as typed commands. Not for direct use: the functions of
+process as typed commands (``simulate``, ``orbit``, ``family``, ``modes``, ``map``, ``merge``, ``report``, ``stability``, ``glo_set``, ``info``). Not for direct use: the functions of
 ``grazelab`` call it."""
 
 from typing import Callable, List, Optional, Tuple
@@ -15,10 +15,6 @@ class Refused(ValueError):
 
 class NotWritten(OSError):
     """A file a typed command could not write (its one line)."""
-
-def command(name: str, options: List[Tuple[str, Optional[str]]],
-            progress: Optional[Callable[[Optional[float], str], None]] = ...
-            ) -> Tuple[int, bytes, str, str]: ...
 
 def simulate(options: tuple, result_type: type, events: bool = ...,
              max_events: int = ..., discard_events: bool = ..., direct: bool = ...
@@ -34,6 +30,9 @@ def map(options: List[Tuple[str, Optional[str]]], result_type: type,
         progress: Optional[Callable[[Optional[float], str], None]] = ...) -> Tuple[dict, np.ndarray]: ...
 
 def merge(parts: List[str], out: Optional[str], result_type: type) -> Tuple[dict, np.ndarray]: ...
+
+def report(options: List[Tuple[str, Optional[str]]],
+           progress: Optional[Callable[[Optional[float], str], None]] = ...) -> Tuple[bytes, str, str]: ...
 
 def stability(options: List[Tuple[str, Optional[str]]],
               progress: Optional[Callable[[Optional[float], str], None]] = ...) -> Tuple[bytes, str, str]: ...

@@ -32,11 +32,11 @@ std::optional<StabilityRequest> requestOf(const Options& options, QString& error
 }
 
 TEST(TypedStability, AChainsMatrixHasACellPerCaseAndMethodAndTheExactSolverHoldsOnItsStart) {
-  // three masses stopped on the last, a start that leaves the stop
+  // three masses stopped on the last, a start that leaves the stop (and comes back to it)
   QString error;
   const auto request = requestOf({{"quick", ""}, {"methods", "exact,moreau-jean"}, {"masses", "1,0.3,0.6"},
                                   {"springs", "1,0.7,1.3"}, {"stop-mass", "3"}, {"gap", "0.4"},
-                                  {"state", "0.1,0,0,0,0.2,-0.3"}}, error);
+                                  {"state", "0.1,0,0.4,0,0.2,-0.3"}}, error);
   ASSERT_TRUE(request) << error.toStdString();
   ASSERT_EQ(request->methods, (std::vector<MethodKind>{MethodKind::Exact, MethodKind::MoreauJean}));
   ASSERT_GE(request->cases.size(), 2u);
@@ -51,8 +51,12 @@ TEST(TypedStability, AChainsMatrixHasACellPerCaseAndMethodAndTheExactSolverHolds
     // a cell not ok says why
     EXPECT_EQ(outcome.cells[i].verdict == CellVerdict::Ok, outcome.cells[i].reason.empty()) << i;
   }
-  EXPECT_EQ(outcome.cells[0].verdict, CellVerdict::Ok);  // the exact solver on the chain as given
-  EXPECT_LT(outcome.cells[0].errors.state, 1e-9);
+  // the exact solver on the chain as given: every contact, within its own error estimate; the
+  // fixed-step scheme misses some
+  EXPECT_EQ(outcome.cells[0].verdict, CellVerdict::Ok);
+  EXPECT_LT(outcome.cells[0].errors.state, 1e-6);
+  EXPECT_EQ(outcome.cells[0].errors.missed, 0);
+  EXPECT_GT(outcome.cells[1].errors.missed, 0);
   // the table: a header and a line per cell; the text: a row per case
   const QByteArray csv = stabilityCsv(outcome);
   EXPECT_EQ(csv.count('\n'), qsizetype(outcome.cells.size()) + 1);

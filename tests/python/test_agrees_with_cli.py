@@ -357,6 +357,31 @@ def test_report_quick_table_matches_its_csv(tmp_path):
     assert "work" in result.markdown.lower() or "method" in result.markdown.lower()
 
 
+def test_report_of_a_chain_is_the_cli_table_without_a_file(cli, tmp_path, monkeypatch):
+    # three masses stopped on the last: the typed report in memory, and the command line's
+    # results.csv row for row (but for the timings)
+    chain = dict(masses=[1, 0.3, 0.6], springs=[1, 0.7, 1.3], stop_mass=3, gap=0.4,
+                 state=[0.1, 0, 0.4, 0, 0.2, -0.3], contacts=12)
+    monkeypatch.chdir(tmp_path)
+    result = gl.report(quick=True, methods="exact,moreau-jean", **chain)
+    assert list(tmp_path.iterdir()) == [] and result.out is None
+    done = cli("report", "--quick", "--methods", "exact,moreau-jean", "--masses", "1,0.3,0.6",
+               "--springs", "1,0.7,1.3", "--stop-mass", "3", "--gap", "0.4", "--state", "0.1,0,0.4,0,0.2,-0.3",
+               "--contacts", "12", "--out", str(tmp_path / "r"))
+    assert done.returncode == 0, done.stderr
+    with open(tmp_path / "r" / "results.csv", newline="") as handle:
+        expected = list(csv.DictReader(handle))
+    assert len(result.table) == len(expected) > 2
+    for row, line in zip(result.table, expected):
+        for column in ("method", "parameter", "status", "reason"):
+            assert row[column] == line[column], (column, line)
+        for column in ("value", "state_error", "contact_time_error", "missed_contacts", "extra_contacts"):
+            assert repr(float(row[column])) == repr(float(line[column] or "nan")), (column, line)
+    exact = [row for row in result.table if row["method"] == "exact"]
+    assert exact and all(row["state_error"] < 1e-9 and row["missed_contacts"] == 0 for row in exact)
+    assert result.markdown.startswith("# ") and "moreau-jean" in result.markdown
+
+
 def test_events_are_a_view_of_the_core_table_not_a_copy():
     run = gl.simulate(contacts=20)
     events = run.events
@@ -597,13 +622,13 @@ def test_stability_of_a_chain_is_the_cli_matrix(cli, tmp_path, monkeypatch):
     # three masses stopped on the last: the typed matrix in memory, no file, and the command
     # line's matrix.csv cell for cell (but for the timings)
     chain = dict(masses=[1, 0.3, 0.6], springs=[1, 0.7, 1.3], stop_mass=3, gap=0.4,
-                 state=[0.1, 0, 0, 0, 0.2, -0.3])
+                 state=[0.1, 0, 0.4, 0, 0.2, -0.3])
     monkeypatch.chdir(tmp_path)
     result = gl.stability(quick=True, methods="exact,moreau-jean", **chain)
     assert list(tmp_path.iterdir()) == [] and result.out is None
     assert result.markdown.startswith("# GrazeLab stability matrix")
     done = cli("stability", "--quick", "--methods", "exact,moreau-jean", "--masses", "1,0.3,0.6",
-               "--springs", "1,0.7,1.3", "--stop-mass", "3", "--gap", "0.4", "--state", "0.1,0,0,0,0.2,-0.3",
+               "--springs", "1,0.7,1.3", "--stop-mass", "3", "--gap", "0.4", "--state", "0.1,0,0.4,0,0.2,-0.3",
                "--out", str(tmp_path / "m"))
     assert done.returncode == 0, done.stderr
     with open(tmp_path / "m" / "matrix.csv", newline="") as handle:
@@ -617,7 +642,8 @@ def test_stability_of_a_chain_is_the_cli_matrix(cli, tmp_path, monkeypatch):
         assert repr(float(row["state_error"])) == repr(float(line["state_error"] or "nan")), line
         assert row["reason"] == line["reason"]
     given = {row["method"]: row for row in result.table if row["case"] == "given"}
-    assert given["exact"]["verdict"] == "ok" and given["exact"]["state_error"] < 1e-9
+    assert given["exact"]["verdict"] == "ok" and given["exact"]["state_error"] < 1e-6
+    assert given["exact"]["missed_contacts"] == 0 < given["moreau-jean"]["missed_contacts"]
     # with out, the files, named in the log
     kept = gl.stability(quick=True, methods="exact", out=tmp_path / "kept", **chain)
     assert (tmp_path / "kept" / "matrix.csv").exists() and (tmp_path / "kept" / "matrix.md").exists()

@@ -325,93 +325,86 @@ void addReportOptions(QCommandLineParser& parser) {
   });
 }
 
-namespace {
-
-// The report's runs on its task, then its files
-template <typename T>
-int reportOn(T& task, ReportInput& input, const std::vector<MethodKind>& methods, const QString& dir, bool quick,
-             const Io& io, std::stop_token stop, QString& error) {
-  using namespace core::methods;
-  const TimingPolicy timing = quick ? TimingPolicy{2, 0.5, 0.05, 1000} : TimingPolicy{5, 3.0, 0.2, 1000};
-  WorkBudget budget;
-  budget.maxSteps = 1'000'000'000;
-  budget.maxSeconds = quick ? 5 : 60;
-
-  progress(io, "report", QStringLiteral("estimating the predictability horizon of the start"));
-  const ComparisonEnd end = comparisonEnd(task, stop);
-  if (stop.stop_requested()) return kExitInterrupted;
-  if (end.shortened) {
+ReportRun reportWithFiles(const OptionValues& options, const Io& io, std::stop_token stop, QString& error,
+                          bool filesRequired) {
+  ReportRun run;
+  run.code = kExitInvalidInput;
+  const auto methods = parseMethodsOption(options, error);
+  if (!methods) return run;
+  auto problem = parseReportProblem(options, error);
+  if (!problem) return run;
+  std::optional<QString> directory;
+  if (filesRequired || options.isSet("out")) {
+    directory = prepareOutputDirectory(options, error);
+    if (!directory) return run;
+  }
+  ReportInput& input = problem->words;
+  ReportRequest request;
+  request.task = std::move(problem->task);
+  request.methods = *methods;
+  request.quick = options.isSet("quick");
+  request.period = input.period;
+  request.k1 = input.k1;
+  ReportProgress heard;
+  heard.horizon = [&io] { progress(io, "report", QStringLiteral("estimating the predictability horizon of the start")); };
+  heard.reference = [&io, &input](double tEnd) {
+    progress(io, "report", QStringLiteral("binary128 reference to t = %1 (%2 T2)")
+                               .arg(tEnd, 0, 'g', 6).arg(tEnd / input.period, 0, 'g', 4));
+  };
+  heard.point = [&io](std::size_t done, std::size_t total, const WorkPrecisionPoint& point) {
+    const QString stateError = scientific(point.errors.state, 2);
+    progress(io, "report", QStringLiteral("[%1/%2] %3 %4: %5, state error %6%7")
+                               .arg(done).arg(total)
+                               .arg(name(point.setting.kind), parameterText(point.setting), humanSeconds(point.secondsMin))
+                               .arg(stateError.isEmpty() ? "—" : stateError)
+                               .arg(point.status == core::methods::RunStatus::Completed
+                                        ? QString()
+                                        : " (" + QString::fromStdString(point.reason) + ")"),
+             double(done) / double(total));
+  };
+  run.outcome = workPrecisionReport(request, stop, heard);
+  const ReportOutcome& outcome = run.outcome;
+  if (outcome.status == ReportStatus::Interrupted) {
+    run.code = kExitInterrupted;
+    return run;
+  }
+  if (outcome.status == ReportStatus::NoReference) {
+    error = QString::fromStdString(outcome.problem);
+    return run;
+  }
+  if (outcome.end.shortened) {
     input.horizonNote += QStringLiteral("; moved to t = %1, an eighth of T2 before the "
                                         "predictability horizon of the start (%2)")
-                             .arg(end.tEnd, 0, 'g', 10)
-                             .arg(end.horizon, 0, 'g', 6);
-    task.tEnd = end.tEnd;
-    input.tEnd = end.tEnd;
+                             .arg(outcome.end.tEnd, 0, 'g', 10)
+                             .arg(outcome.end.horizon, 0, 'g', 6);
   }
-  progress(io, "report", QStringLiteral("binary128 reference to t = %1 (%2 T2)")
-                         .arg(task.tEnd, 0, 'g', 6).arg(task.tEnd / input.period, 0, 'g', 4));
-  const auto reference = makeReference(task, budget, stop);
-  if (stop.stop_requested()) return kExitInterrupted;
-  if (reference.run.status != RunStatus::Completed) {
-    error = "no trustworthy reference for this problem: " + QString::fromStdString(reference.run.reason);
-    return kExitInvalidInput;
-  }
-  input.referenceContacts = reference.run.steps;
-  input.referenceSeconds = reference.seconds;
-
-  std::vector<std::pair<MethodKind, MethodSetting>> plan;
-  for (MethodKind kind : methods) {
-    for (const MethodSetting& setting : reportSettings(kind, input.period, input.k1, quick)) {
-      plan.push_back({kind, setting});
-    }
-  }
-  std::map<MethodKind, std::vector<WorkPrecisionPoint>> byMethod;
-  std::vector<WorkPrecisionPoint> all;
-  int done = 0;
-  for (const auto& [kind, setting] : plan) {
-    WorkPrecisionPoint point = measurePoint(task, reference, setting, budget, timing, stop);
-    if (stop.stop_requested()) return kExitInterrupted;
-    ++done;
-    progress(io, "report", QStringLiteral("[%1/%2] %3 %4: %5, state error %6%7")
-                           .arg(done).arg(plan.size())
-                           .arg(name(kind), parameterText(setting), humanSeconds(point.secondsMin))
-                           .arg(scientific(point.errors.state, 2).isEmpty() ? "—" : scientific(point.errors.state, 2))
-                           .arg(point.status == RunStatus::Completed ? QString()
-                                                                     : " (" + QString::fromStdString(point.reason) + ")"),
-             double(done) / double(plan.size()));
-    byMethod[kind].push_back(point);
-    all.push_back(point);
-  }
-
-  const QByteArray csv = resultsCsv(all, comparisonResolution(task.tEnd, reference.period));
-  const QByteArray md = reportMarkdown(input, end, methods, byMethod, timing, quick);
-  if (!writeAtomically(dir + "/results.csv", csv, error)) return 1;
+  input.tEnd = outcome.tEnd;
+  input.referenceContacts = outcome.referenceContacts;
+  input.referenceSeconds = outcome.referenceSeconds;
+  PointsByMethod byMethod;
+  for (const WorkPrecisionPoint& point : outcome.points) byMethod[point.setting.kind].push_back(point);
+  run.csv = resultsCsv(outcome.points, comparisonResolution(outcome.tEnd, outcome.referencePeriod));
+  run.markdown = reportMarkdown(input, outcome.end, *methods, byMethod, request.timing(), request.quick);
+  run.code = kExitOk;
+  if (!directory) return run;
+  const QString& dir = *directory;
+  run.code = 1;
+  if (!writeAtomically(dir + "/results.csv", run.csv, error)) return run;
   QString pictures;
   if (picturesAvailable()) {
-    if (!writePictures(dir, input, methods, byMethod, error)) return 1;
+    if (!writePictures(dir, input, *methods, byMethod, error)) return run;
     pictures = "work_precision.svg/.png, convergence.svg/.png, ";
   } else {
     progress(io, "report", "no pictures: the Python module draws none");
   }
-  if (!writeAtomically(dir + "/report.md", md, error)) return 1;
+  if (!writeAtomically(dir + "/report.md", run.markdown, error)) return run;
   progress(io, "report", QStringLiteral("wrote %1/{results.csv, %2report.md}").arg(dir, pictures));
-  return kExitOk;
+  run.code = kExitOk;
+  return run;
 }
 
-}  // namespace
-
 int runReport(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
-  const auto methods = parseMethodsOption(options, error);
-  if (!methods) return kExitInvalidInput;
-  auto problem = parseReportProblem(options, error);
-  if (!problem) return kExitInvalidInput;
-  const auto directory = prepareOutputDirectory(options, error);
-  if (!directory) return kExitInvalidInput;
-  return std::visit(
-      [&](auto& task) {
-        return reportOn(task, problem->words, *methods, *directory, options.isSet("quick"), io, stop, error);
-      },
-      problem->task);
+  return reportWithFiles(options, io, std::move(stop), error, true).code;
 }
 
 }  // namespace grazelab::cli

@@ -33,18 +33,14 @@ struct ChainEventTable {
 };
 
 /// Where a command writes. The command line: its output on stdout, its messages (notes,
-/// progress, the line that says what a command wrote) on stderr. The Python module: both into
-/// memory, progress to the caller.
+/// progress, the line that says what a command wrote) on stderr. The Python module: its messages
+/// into memory, progress to the caller (a typed command's outcome and refusal come back as values).
 struct Io {
   std::FILE* out = stdout;
   std::FILE* messages = stderr;
   /// Progress of a long command: the fraction done (negative when not known) and one line
   /// that says where it is. May be called from any thread; optional.
   std::function<void(double fraction, const std::string& text)> progress;
-  /// When set, the line that says why a command failed (exit 2: invalid input; 1: a file not
-  /// written) is put here as well as on `messages` (the Python module raises it, reading
-  /// nothing back from the messages).
-  std::string* problem = nullptr;
 
   void reportProgress(double fraction, const std::string& text) const {
     if (progress) progress(fraction, text);
