@@ -54,7 +54,7 @@
 #include "exit_codes.h"
 #include "io/cli_io.h"
 #include "io/cli_output.h"
-#include "io/map_files.h"
+#include "io/map_document.h"
 #include "io/option_values.h"
 #include "io/prepared_chain.h"
 #include "value_to_python.h"

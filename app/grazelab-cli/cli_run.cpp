@@ -199,6 +199,22 @@ QString optionsRefused(const Command& command, const QStringList& given) {
 
 const QString kCommandNames = "info, simulate, report, stability, map, merge, family, orbit, modes or glo-set";
 
+// Runs the command `name` with the parsed command line's `options`, `given` the names of the
+// options given (any the command does not take is refused) and `operands` merge's parts.
+int runCommand(const QString& name, const OptionValues& options, const QStringList& given, const QStringList& operands,
+               const Io& io, std::stop_token stop) {
+  const auto command = std::find_if(commands().begin(), commands().end(), [&](const Command& c) { return c.name == name; });
+  if (command == commands().end()) {
+    return fail(io, QStringLiteral("unknown command '%1': use %2").arg(name, kCommandNames));
+  }
+  if (!operands.isEmpty() && !command->takesOperands) {
+    return fail(io, "expected one command: " + kCommandNames + " (see --help)");
+  }
+  const QString refused = optionsRefused(*command, given);
+  if (!refused.isEmpty()) return fail(io, refused);
+  return command->run(options, operands, io, stop);
+}
+
 }  // namespace
 
 int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token stop) {
@@ -252,20 +268,6 @@ int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token
   const QStringList positional = parser.positionalArguments();
   if (positional.isEmpty()) return fail(io, "expected one command: " + kCommandNames + " (see --help)");
   return runCommand(positional.first(), parser, parser.optionNames(), positional.mid(1), io, stop);
-}
-
-int runCommand(const QString& name, const OptionValues& options, const QStringList& given, const QStringList& operands,
-               const Io& io, std::stop_token stop) {
-  const auto command = std::find_if(commands().begin(), commands().end(), [&](const Command& c) { return c.name == name; });
-  if (command == commands().end()) {
-    return fail(io, QStringLiteral("unknown command '%1': use %2").arg(name, kCommandNames));
-  }
-  if (!operands.isEmpty() && !command->takesOperands) {
-    return fail(io, "expected one command: " + kCommandNames + " (see --help)");
-  }
-  const QString refused = optionsRefused(*command, given);
-  if (!refused.isEmpty()) return fail(io, refused);
-  return command->run(options, operands, io, stop);
 }
 
 }  // namespace grazelab::cli

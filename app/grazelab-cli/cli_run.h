@@ -8,7 +8,6 @@
 
 #include "core/version.h"
 #include "io/cli_io.h"
-#include "io/option_values.h"
 
 namespace grazelab::cli {
 
@@ -23,12 +22,5 @@ inline constexpr const char* kVersion = grazelab::kVersion;
 /// files' "generator" field), once, before any command runs. Several may run at once on
 /// different threads.
 int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token stop);
-
-/// Runs the command `name` with `options` (a parsed command line's, or options given by name:
-/// the Python module's, no command-line text), `given` the names of the options given (any the
-/// command does not take is refused, as on the command line) and `operands` merge's parts: the
-/// command line's rules and exit codes, without its parser.
-int runCommand(const QString& name, const OptionValues& options, const QStringList& given, const QStringList& operands,
-               const Io& io, std::stop_token stop);
 
 }  // namespace grazelab::cli

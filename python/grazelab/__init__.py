@@ -711,12 +711,17 @@ def stability(*, methods: _Union[str, _Sequence[str], None] = None, quick: bool 
         start ``state`` (2N numbers), ``glo_weights`` or ``onepp``, with ``perturb``.
 """
     options = dict(methods=methods, quick=quick, gap=gap, state=state, onepp=onepp, perturb=perturb,
-                   glo_weights=glo_weights, springs=springs, right_spring=right_spring, stop_mass=stop_mass,
-                   design_branch=design_branch)
+                   glo_weights=glo_weights)
     if masses is not None:
         options.update(_mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, design_branch, {}))
-    elif frequencies is not None:
-        options["frequencies"] = frequencies
+    else:
+        given = [name for name, value in dict(springs=springs, right_spring=right_spring, stop_mass=stop_mass,
+                                              frequencies=frequencies, design_branch=design_branch, gap=gap,
+                                              state=state, onepp=onepp, perturb=perturb,
+                                              glo_weights=glo_weights).items() if value is not None]
+        if given:
+            raise ValueError(f"{', '.join(given)} describe{'s' if len(given) == 1 else ''} a chain given by masses "
+                             f"(without it, stability runs its own cases)")
     return _table_command(_stability, options, out, progress)
 
 

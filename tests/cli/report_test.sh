@@ -19,6 +19,9 @@ EXPECT_WORD=rk4 expect_invalid report --quick --out "$dir/x" --methods exact,rk4
 EXPECT_WORD=format expect_invalid report --quick --out "$dir/x" --format csv
 EXPECT_WORD=m2 expect_invalid report --quick --out "$dir/x" --m2 -1
 EXPECT_WORD=both expect_invalid report --quick --out "$dir/x" --t-end 10 --contacts 5
+EXPECT_WORD=glo-weights expect_invalid report --quick --out "$dir/x" --glo-weights 0.5,0.5
+EXPECT_WORD=state expect_invalid stability --quick --masses 1,0.5 --springs 1,1 --state 1,2 --out "$dir/st"
+[ -e "$dir/st" ] && fail "a stability refused for its chain made its directory"
 EXPECT_WORD=stability expect_invalid stability --quick --out "$dir/x" --m2 0.3
 EXPECT_WORD=report expect_invalid simulate --out "$dir/x"
 [ -e "$dir/x/results.csv" ] && fail "an invalid report wrote files"

@@ -347,6 +347,8 @@ def test_two_mass_commands_refuse_other_chains_in_words():
         gl.modes(masses=[1, 0.5], springs=[1, 0.5], stop_mass=1)
     with pytest.raises(ValueError, match="given by masses"):
         gl.report(springs=[1, 0.5], quick=True)
+    with pytest.raises(ValueError, match="glo_weights describes a chain given by masses"):
+        gl.report(glo_weights=[0.5, 0.5], quick=True)
 
 
 def test_report_quick_table_matches_its_csv(tmp_path):
@@ -363,7 +365,12 @@ def test_report_of_a_chain_is_the_cli_table_without_a_file(cli, tmp_path, monkey
     chain = dict(masses=[1, 0.3, 0.6], springs=[1, 0.7, 1.3], stop_mass=3, gap=0.4,
                  state=[0.1, 0, 0.4, 0, 0.2, -0.3], contacts=12)
     monkeypatch.chdir(tmp_path)
-    result = gl.report(quick=True, methods="exact,moreau-jean", **chain)
+    monkeypatch.setenv("TMPDIR", str(tmp_path))
+    tempfile.tempdir = None
+    try:  # no file anywhere: not in the working directory, not in a temporary folder
+        result = gl.report(quick=True, methods="exact,moreau-jean", **chain)
+    finally:
+        tempfile.tempdir = None
     assert list(tmp_path.iterdir()) == [] and result.out is None
     done = cli("report", "--quick", "--methods", "exact,moreau-jean", "--masses", "1,0.3,0.6",
                "--springs", "1,0.7,1.3", "--stop-mass", "3", "--gap", "0.4", "--state", "0.1,0,0.4,0,0.2,-0.3",
@@ -624,7 +631,12 @@ def test_stability_of_a_chain_is_the_cli_matrix(cli, tmp_path, monkeypatch):
     chain = dict(masses=[1, 0.3, 0.6], springs=[1, 0.7, 1.3], stop_mass=3, gap=0.4,
                  state=[0.1, 0, 0.4, 0, 0.2, -0.3])
     monkeypatch.chdir(tmp_path)
-    result = gl.stability(quick=True, methods="exact,moreau-jean", **chain)
+    monkeypatch.setenv("TMPDIR", str(tmp_path))
+    tempfile.tempdir = None
+    try:  # no file anywhere: not in the working directory, not in a temporary folder
+        result = gl.stability(quick=True, methods="exact,moreau-jean", **chain)
+    finally:
+        tempfile.tempdir = None
     assert list(tmp_path.iterdir()) == [] and result.out is None
     assert result.markdown.startswith("# GrazeLab stability matrix")
     done = cli("stability", "--quick", "--methods", "exact,moreau-jean", "--masses", "1,0.3,0.6",
@@ -648,5 +660,6 @@ def test_stability_of_a_chain_is_the_cli_matrix(cli, tmp_path, monkeypatch):
     kept = gl.stability(quick=True, methods="exact", out=tmp_path / "kept", **chain)
     assert (tmp_path / "kept" / "matrix.csv").exists() and (tmp_path / "kept" / "matrix.md").exists()
     assert any("matrix.csv" in line for line in kept.log)
-    with pytest.raises(ValueError, match="given by masses"):
-        gl.stability(quick=True, springs=[1, 2])
+    for chain_only in (dict(springs=[1, 2]), dict(frequencies=[2, 1]), dict(state=[0, 1, 0, 0])):
+        with pytest.raises(ValueError, match="given by masses"):
+            gl.stability(quick=True, **chain_only)

@@ -137,6 +137,10 @@ JsonValue numbersValue(const Eigen::VectorXd& values) {
 // The note's chain (the two-mass options, or --masses m1,m2 of its shape): the default problem
 // unless told otherwise
 std::optional<ReportProblem> twoMassProblem(const OptionValues& options, QString& error) {
+  if (options.isSet("glo-weights")) {
+    error = "--glo-weights describes a chain given by --masses (the two-mass chain starts with --glo)";
+    return std::nullopt;
+  }
   Parsed<RunInput<double>> run = parseRun<double>(options);
   if (!run.value) {
     error = run.error;
@@ -386,6 +390,7 @@ ReportRun reportWithFiles(const OptionValues& options, const Io& io, std::stop_t
   run.csv = resultsCsv(outcome.points, comparisonResolution(outcome.tEnd, outcome.referencePeriod));
   run.markdown = reportMarkdown(input, outcome.end, *methods, byMethod, request.timing(), request.quick);
   run.code = kExitOk;
+  if (!picturesAvailable()) progress(io, "report", "no pictures: the Python module draws none");
   if (!directory) return run;
   const QString& dir = *directory;
   run.code = 1;
@@ -394,8 +399,6 @@ ReportRun reportWithFiles(const OptionValues& options, const Io& io, std::stop_t
   if (picturesAvailable()) {
     if (!writePictures(dir, input, *methods, byMethod, error)) return run;
     pictures = "work_precision.svg/.png, convergence.svg/.png, ";
-  } else {
-    progress(io, "report", "no pictures: the Python module draws none");
   }
   if (!writeAtomically(dir + "/report.md", run.markdown, error)) return run;
   progress(io, "report", QStringLiteral("wrote %1/{results.csv, %2report.md}").arg(dir, pictures));

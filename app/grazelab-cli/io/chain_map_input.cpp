@@ -8,9 +8,6 @@
 #include <string>
 
 #include "io/cli_input.h"
-#include "io/cli_output.h"
-#include "io/json_value.h"
-#include "io/map_files.h"
 
 namespace grazelab::cli {
 

@@ -8,7 +8,6 @@
 #include <stop_token>
 
 #include "core/experiments/chain_map.h"
-#include "io/json_value.h"
 #include "io/option_values.h"
 
 namespace grazelab::cli {
