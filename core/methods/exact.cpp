@@ -81,8 +81,11 @@ MethodRun runIn(const Task& task, const WorkBudget& budget, std::stop_token stop
       run.reason = "contact budget (" + std::to_string(budget.maxSteps) + " contacts) spent";
       break;
     case StopReason::SearchBudget:
-    case StopReason::Undecided:
       run.status = RunStatus::Budget;
+      run.reason = result.message;
+      break;
+    case StopReason::Undecided:
+      run.status = RunStatus::Undecided;
       run.reason = result.message;
       break;
     case StopReason::Cancelled:
@@ -135,7 +138,7 @@ ChainMethodRun runIn(const ChainTask& task, const WorkBudget& budget, std::stop_
       run.reason = "the contact search ran out of its budget before deciding";
       break;
     case StopReason::Undecided:
-      run.status = RunStatus::Budget;
+      run.status = RunStatus::Undecided;
       run.reason = "a contact undecided in " + std::string(toString(precisionOf<S>()));
       break;
     case StopReason::Cancelled:

@@ -64,6 +64,8 @@ std::string_view toString(RunStatus status) {
       return "completed";
     case RunStatus::Budget:
       return "budget";
+    case RunStatus::Undecided:
+      return "undecided";
     case RunStatus::Failed:
       return "failed";
     case RunStatus::Refused:

@@ -75,6 +75,7 @@ struct WorkBudget {
 enum class RunStatus {
   Completed,  ///< reached the end time
   Budget,     ///< ran out of steps or seconds first
+  Undecided,  ///< met a contact its precision cannot decide (the exact solver stops there, never guesses)
   Failed,     ///< the method broke down (a non-finite state, a solver error, chattering)
   Refused,    ///< the method cannot take this input (and said why before running)
   Cancelled,  ///< the stop token was triggered

@@ -97,6 +97,8 @@ std::string_view toString(CellVerdict verdict) {
       return "refused";
     case CellVerdict::Budget:
       return "budget";
+    case CellVerdict::Undecided:
+      return "undecided";
     case CellVerdict::Failed:
       return "failed";
   }
@@ -310,6 +312,8 @@ CellVerdict verdictOf(RunStatus status) {
       return CellVerdict::Ok;
     case RunStatus::Budget:
       return CellVerdict::Budget;
+    case RunStatus::Undecided:
+      return CellVerdict::Undecided;
     case RunStatus::Refused:
       return CellVerdict::Refused;
     case RunStatus::Failed:

@@ -31,7 +31,14 @@ struct StressCase {
 };
 
 /// The verdict of one cell.
-enum class CellVerdict { Ok, Inaccurate, Refused, Budget, Failed };
+enum class CellVerdict {
+  Ok,
+  Inaccurate,
+  Refused,
+  Budget,
+  Undecided,  ///< the method met a contact its precision cannot decide: no error to judge
+  Failed,
+};
 std::string_view toString(CellVerdict verdict);
 
 /// A finished cell.

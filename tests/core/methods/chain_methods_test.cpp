@@ -6,6 +6,7 @@
 // included; the exact method is the chain engine; the errors count what a method misses.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -183,6 +184,32 @@ TEST(ChainMethods, AGlomOfAFastModeIsDecidedByTheExactColumnTheHorizonAndTheMatr
     ++decided;
   }
   EXPECT_EQ(decided, 2);  // quick: the chain given and one scaled copy
+}
+
+TEST(ChainMethods, AContactDoubleCannotDecideIsUndecidedNotABudgetAndBinary128DecidesIt) {
+  // three masses, the stopped one pushed 1e-15 off its grazing start: the exact solver in
+  // double meets a contact it cannot decide and stops there, said as such (the cell's verdict
+  // too), not as a budget spent; in binary128 the same run completes
+  MassChain chain;
+  chain.masses = {1.0, 0.3, 0.6};
+  chain.springs = {1.0, 0.7, 1.3};
+  chain.gap = 0.4;
+  const ChainStart start(stateOf({0.1, 0, 0.4}, {0, 0.2, -0.3}));
+  const std::vector<StressCase> cases = chainStressCases(chain, start, {}, true);
+  const auto push = std::find_if(cases.begin(), cases.end(), [](const StressCase& row) { return row.name == "push-1e-15"; });
+  ASSERT_NE(push, cases.end());
+  ASSERT_TRUE(push->task) << push->problem;
+  const ChainTask& task = std::get<ChainTask>(*push->task);
+  const ChainMethodRun inDouble = runMethod(task, {MethodKind::Exact, 0, Precision::Double});
+  ASSERT_EQ(inDouble.status, RunStatus::Undecided) << inDouble.reason;
+  EXPECT_NE(inDouble.reason.find("undecided in double"), std::string::npos) << inDouble.reason;
+  const ChainMethodRun inQuad = runMethod(task, {MethodKind::Exact, 0, Precision::Quad});
+  EXPECT_EQ(inQuad.status, RunStatus::Completed) << inQuad.reason;
+  std::vector<StressCell> cells;
+  runStressCase(*push, {MethodKind::Exact}, {}, [&cells](const StressCell& cell) { cells.push_back(cell); }, nullptr);
+  ASSERT_EQ(cells.size(), 1u);
+  EXPECT_EQ(cells[0].verdict, CellVerdict::Undecided) << cells[0].reason;
+  EXPECT_EQ(toString(cells[0].verdict), "undecided");
 }
 
 TEST(ChainMethods, APreparedTaskRunsTheSameBits) {
