@@ -158,6 +158,28 @@ def test_ctrl_c_stops_a_long_simulation():
     timer.join()
 
 
+def test_ctrl_c_stops_a_report_and_a_stability_matrix_within_a_second(tmp_path):
+    # each takes a minute or more in full; stopped, nothing is written where out names
+    for call in (lambda: gl.report(out=tmp_path / "r"), lambda: gl.stability(out=tmp_path / "s")):
+        timer = _interrupt_after(0.5)
+        started = time.monotonic()
+        with pytest.raises(KeyboardInterrupt):
+            call()
+        stopped = time.monotonic() - started - 0.5
+        timer.join()
+        assert stopped < 1.0, f"stopped {stopped:.2f} s after Ctrl+C"
+    assert not any(path.is_file() for path in tmp_path.rglob("*"))
+
+
+def test_progress_of_report_and_stability_reaches_the_caller_in_order():
+    for call in (gl.report, gl.stability):
+        seen = []
+        call(quick=True, methods="exact", progress=lambda fraction, text: seen.append((fraction, text)))
+        fractions = [fraction for fraction, _ in seen if fraction is not None and fraction >= 0]
+        assert len(seen) >= 3 and seen[-1] == (1.0, "done")
+        assert fractions == sorted(fractions) and all(0 <= f <= 1 for f in fractions)
+
+
 def test_progress_reaches_the_caller_and_can_stop_the_computation():
     seen = []
 
