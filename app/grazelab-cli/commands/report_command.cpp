@@ -275,7 +275,9 @@ Resolution comparisonResolution(double tEnd, double period) {
   return {eps, period > 0 ? eps * std::max(1.0, tEnd / period) : eps};
 }
 
-QByteArray resultsCsv(std::vector<WorkPrecisionPoint> points, const Resolution& resolution) {
+// The points with every error below `resolution` raised to it, the row's reason saying so: what
+// the table, the pictures and report.md all show (none claims an accuracy the comparison cannot see)
+std::vector<WorkPrecisionPoint> resolved(std::vector<WorkPrecisionPoint> points, const Resolution& resolution) {
   for (WorkPrecisionPoint& p : points) {
     core::methods::Errors& e = p.errors;
     const bool below = (e.state < resolution.state) || (e.contactTime < resolution.contactTime) ||
@@ -290,6 +292,10 @@ QByteArray resultsCsv(std::vector<WorkPrecisionPoint> points, const Resolution& 
                              " T2 in contact times) are written as that bound";
     p.reason = p.reason.empty() ? note : p.reason + "; " + note;
   }
+  return points;
+}
+
+QByteArray resultsCsv(const std::vector<WorkPrecisionPoint>& points) {
   QByteArray csv =
       "method,parameter,value,seconds_min,seconds_median,runs,state_error,contact_time_error,"
       "impact_speed_error,missed_contacts,extra_contacts,energy_drift,status,reason\n";
@@ -385,9 +391,11 @@ ReportRun reportWithFiles(const OptionValues& options, const Io& io, std::stop_t
   input.tEnd = outcome.tEnd;
   input.referenceContacts = outcome.referenceContacts;
   input.referenceSeconds = outcome.referenceSeconds;
+  const std::vector<WorkPrecisionPoint> points =
+      resolved(outcome.points, comparisonResolution(outcome.tEnd, outcome.referencePeriod));
   PointsByMethod byMethod;
-  for (const WorkPrecisionPoint& point : outcome.points) byMethod[point.setting.kind].push_back(point);
-  run.csv = resultsCsv(outcome.points, comparisonResolution(outcome.tEnd, outcome.referencePeriod));
+  for (const WorkPrecisionPoint& point : points) byMethod[point.setting.kind].push_back(point);
+  run.csv = resultsCsv(points);
   run.markdown = reportMarkdown(input, outcome.end, *methods, byMethod, request.timing(), request.quick);
   run.code = kExitOk;
   if (!picturesAvailable()) progress(io, "report", "no pictures: the Python module draws none");
