@@ -172,11 +172,13 @@ def test_ctrl_c_stops_a_report_and_a_stability_matrix_within_a_second(tmp_path):
 
 
 def test_progress_of_report_and_stability_reaches_the_caller_in_order():
+    # the calling thread hears the latest line at each wake-up (every 100 ms) and the last one at
+    # the end: a short call may hear only that one, then (1.0, "done")
     for call in (gl.report, gl.stability):
         seen = []
         call(quick=True, methods="exact", progress=lambda fraction, text: seen.append((fraction, text)))
         fractions = [fraction for fraction, _ in seen if fraction is not None and fraction >= 0]
-        assert len(seen) >= 3 and seen[-1] == (1.0, "done")
+        assert len(seen) >= 2 and seen[-1] == (1.0, "done") and seen[-2][1] != "done"
         assert fractions == sorted(fractions) and all(0 <= f <= 1 for f in fractions)
 
 
