@@ -217,17 +217,24 @@ def test_map_shards_merge_to_the_whole_map(tmp_path):
         np.testing.assert_array_equal(merged.arrays[quantity], array, err_msg=quantity)
 
 
-def test_map_writes_no_file_unless_asked(tmp_path, monkeypatch):
-    # no file anywhere: not in the temporary folder, not in the working directory; the arrays
-    # are views of the points the command computed (one buffer, no copy per quantity)
+def _writing_nowhere(tmp_path, monkeypatch, call):
+    """call()'s result, run with the working directory and TMPDIR in the empty `tmp_path`,
+    asserting it wrote no file anywhere: not there, not in a temporary folder."""
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("TMPDIR", str(tmp_path))
     tempfile.tempdir = None
     try:
-        result = gl.map(x="u1:-1:1:5", y="v1:-1:1:4", contacts=3)
+        result = call()
     finally:
         tempfile.tempdir = None
     assert list(tmp_path.iterdir()) == []
+    return result
+
+
+def test_map_writes_no_file_unless_asked(tmp_path, monkeypatch):
+    # no file anywhere; the arrays are views of the points the command computed (one buffer, no
+    # copy per quantity)
+    result = _writing_nowhere(tmp_path, monkeypatch, lambda: gl.map(x="u1:-1:1:5", y="v1:-1:1:4", contacts=3))
     assert "files" not in result.run
     first = result.arrays["fft_first"]
     assert first.shape == (4, 5) and not first.flags.owndata
@@ -364,14 +371,9 @@ def test_report_of_a_chain_is_the_cli_table_without_a_file(cli, tmp_path, monkey
     # results.csv row for row (but for the timings)
     chain = dict(masses=[1, 0.3, 0.6], springs=[1, 0.7, 1.3], stop_mass=3, gap=0.4,
                  state=[0.1, 0, 0.4, 0, 0.2, -0.3], contacts=12)
-    monkeypatch.chdir(tmp_path)
-    monkeypatch.setenv("TMPDIR", str(tmp_path))
-    tempfile.tempdir = None
-    try:  # no file anywhere: not in the working directory, not in a temporary folder
-        result = gl.report(quick=True, methods="exact,moreau-jean", **chain)
-    finally:
-        tempfile.tempdir = None
-    assert list(tmp_path.iterdir()) == [] and result.out is None
+    result = _writing_nowhere(tmp_path, monkeypatch,
+                              lambda: gl.report(quick=True, methods="exact,moreau-jean", **chain))
+    assert result.out is None
     done = cli("report", "--quick", "--methods", "exact,moreau-jean", "--masses", "1,0.3,0.6",
                "--springs", "1,0.7,1.3", "--stop-mass", "3", "--gap", "0.4", "--state", "0.1,0,0.4,0,0.2,-0.3",
                "--contacts", "12", "--out", str(tmp_path / "r"))
@@ -630,14 +632,9 @@ def test_stability_of_a_chain_is_the_cli_matrix(cli, tmp_path, monkeypatch):
     # line's matrix.csv cell for cell (but for the timings)
     chain = dict(masses=[1, 0.3, 0.6], springs=[1, 0.7, 1.3], stop_mass=3, gap=0.4,
                  state=[0.1, 0, 0.4, 0, 0.2, -0.3])
-    monkeypatch.chdir(tmp_path)
-    monkeypatch.setenv("TMPDIR", str(tmp_path))
-    tempfile.tempdir = None
-    try:  # no file anywhere: not in the working directory, not in a temporary folder
-        result = gl.stability(quick=True, methods="exact,moreau-jean", **chain)
-    finally:
-        tempfile.tempdir = None
-    assert list(tmp_path.iterdir()) == [] and result.out is None
+    result = _writing_nowhere(tmp_path, monkeypatch,
+                              lambda: gl.stability(quick=True, methods="exact,moreau-jean", **chain))
+    assert result.out is None
     assert result.markdown.startswith("# GrazeLab stability matrix")
     done = cli("stability", "--quick", "--methods", "exact,moreau-jean", "--masses", "1,0.3,0.6",
                "--springs", "1,0.7,1.3", "--stop-mass", "3", "--gap", "0.4", "--state", "0.1,0,0.4,0,0.2,-0.3",
