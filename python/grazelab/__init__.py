@@ -471,7 +471,11 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
     ``energy`` found by Newton from ``guess``. Raises ValueError when Newton does not converge
     or the orbit is not admissible (the command line's message). In long or quad precision the
     numbers are also under ``decimal`` as exact text. ``multipliers`` is a NumPy complex array
-    (the JSON's [re, im] pairs).
+    (the JSON's [re, im] pairs). The 1IPP orbit of any other chain (N masses, a right wall, a
+    stop on any mass) comes from its 2N x 2N monodromy: ``multipliers`` then holds its 2N - 2
+    nontrivial multipliers by angle, with ``multiplier_errors``, ``on_circle`` and ``krein`` (the
+    Krein signature, +1, -1 or 0) as NumPy arrays beside them, and ``stability`` one of
+    elliptic, hyperbolic, flip-hyperbolic, complex-quadruplet and undecided.
 
     Keywords:
 {chain}{precision}    onepp: the period T of the one-impact-per-period orbit [time] (as in ``simulate``).
@@ -486,6 +490,9 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
         options.update(onepp=True, period=onepp)
     result = _typed(_orbit, options, ("onepp",))
     result["multipliers"] = _convert.multipliers(result["multipliers"])
+    if "krein" in result:  # a chain of N masses: each multiplier's error bar, circle flag, signature
+        for name, dtype in (("multiplier_errors", float), ("on_circle", bool), ("krein", _np.int64)):
+            result[name] = _np.array(result[name], dtype=dtype)
     return result
 
 

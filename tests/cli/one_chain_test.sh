@@ -123,9 +123,24 @@ EXPECT_WORD="not available for a chain" expect_invalid simulate --masses 1,0.5 -
 EXPECT_WORD="sum to 1" expect_invalid simulate --masses 1,0.5 --frequencies 2:1 --glo-weights 0.5,0.6
 
 # chains the two-mass commands do not compute yet: one line, exit 2, before any design search
-EXPECT_WORD="two-mass chain stopped on mass 2" expect_invalid orbit --onepp --period 7 --masses 1,0.2,0.05 --frequencies 3:2:1
 EXPECT_WORD="two-mass chain stopped on mass 2" expect_invalid modes --masses 1,0.5 --springs 1,0.5 --stop-mass 1 --out "$work/x/m"
-EXPECT_WORD="two-mass chain stopped on mass 2" expect_invalid orbit --onepp --period 7 --masses 1,0.5 --springs 1,0.5 --right-spring 0.2
+EXPECT_WORD="two-mass chain stopped on mass 2" expect_invalid orbit --impacts 2 --energy 1 --guess 0,0 --masses 1,0.2,0.05 --frequencies 3:2:1
+# the 1IPP orbit of any chain, by its 2N x 2N monodromy (docs/model.md section 12)
+expect_ok orbit --onepp --period 7 --masses 1,0.2,0.05 --frequencies 3:2:1 || exit 1
+python3 - "$out" <<'PY' || fail "the 1IPP orbit of three masses"
+import json, sys
+o = json.load(open(sys.argv[1]))
+assert o['format'] == 'grazelab-orbit' and o['period'] == 7 and o['impacts'] == 1, o
+assert len(o['multipliers']) == 4 and len(o['krein']) == 4 and len(o['multiplier_errors']) == 4
+assert o['stability'] == 'elliptic' and all(o['on_circle']), o
+assert sorted(o['krein']) == [-1, -1, 1, 1], o['krein']  # conjugates of opposite signatures
+assert o['checks']['symplectic'] < 1e-14 and o['checks']['trivial_pair'] < 1e-13, o['checks']
+assert o['state']['u'][2] == 1 and o['state']['v'][2] < 0
+PY
+expect_ok orbit --onepp --period 3 --masses 1,0.5 --springs 1,0.5 --right-spring 0.2 || exit 1
+python3 -c "import json,sys; o=json.load(open(sys.argv[1])); assert len(o['multipliers']) == 2 and o['chain']['right_spring'] == 0.2, o" "$out" \
+  || fail "the 1IPP orbit of two masses with a right wall"
+EXPECT_WORD="no 1IPP orbit of period 1" expect_invalid orbit --onepp --period 1 --masses 1,0.2,0.05 --frequencies 3:2:1
 # report computes any chain (tests/cli/report_test.sh): a chain of N masses names its start
 EXPECT_WORD="one of them" expect_invalid report --quick --masses 1,1,1 --springs 1,1,1 --out "$work/x/r"
 # the chain's own refusals, as for info and simulate

@@ -347,9 +347,23 @@ def test_orbit_and_modes_take_the_chain_as_masses(two_mass, chain):
     assert a == b
 
 
+def test_the_orbit_of_three_masses_is_the_cli_json(cli_json):
+    # the 1IPP orbit of any chain with its 2N - 2 multipliers, error bars, circle flags and
+    # Krein signatures as NumPy arrays, the same numbers as the command line's
+    result = gl.orbit(onepp=7.0, masses=[1, 0.2, 0.05], frequencies=(3, 2, 1))
+    expected = cli_json("orbit", "--onepp", "--period", "7", "--masses", "1,0.2,0.05", "--frequencies", "3:2:1")
+    assert result.multipliers.dtype == complex and result.multipliers.shape == (4,)
+    assert [[m.real, m.imag] for m in result.pop("multipliers")] == expected.pop("multipliers")
+    for name, dtype in (("multiplier_errors", float), ("on_circle", bool), ("krein", np.int64)):
+        assert result[name].dtype == dtype
+        assert result.pop(name).tolist() == expected.pop(name)
+    assert result == expected
+    assert result.stability == "elliptic"
+
+
 def test_two_mass_commands_refuse_other_chains_in_words():
     with pytest.raises(ValueError, match="two-mass chain stopped on mass 2"):
-        gl.orbit(onepp=7.0, masses=[1, 0.2, 0.05], frequencies=(3, 2, 1))
+        gl.orbit(impacts=2, energy=1.0, guess=(0, 0), masses=[1, 0.2, 0.05], frequencies=(3, 2, 1))
     with pytest.raises(ValueError, match="two-mass chain stopped on mass 2"):
         gl.modes(masses=[1, 0.5], springs=[1, 0.5], stop_mass=1)
     with pytest.raises(ValueError, match="given by masses"):

@@ -73,10 +73,15 @@ Parsed<std::shared_ptr<const PreparedMassChain>> twoMassChainOf(const OptionValu
   return recentChain(options, std::move(stop));
 }
 
+Parsed<std::shared_ptr<const PreparedMassChain>> orbitChainOf(const OptionValues& options, const OrbitRequest& request,
+                                                              std::stop_token stop) {
+  return request.impacts == 0 ? recentChain(options, std::move(stop)) : twoMassChainOf(options, std::move(stop));
+}
+
 int runOrbit(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
   const std::optional<OrbitRequest> request = readOrbitRequest(options, error);
   if (!request) return kExitInvalidInput;
-  const auto chain = twoMassChainOf(options, stop);
+  const auto chain = orbitChainOf(options, *request, stop);
   if (!chain.value) {
     error = chain.error;
     return chain.error.isEmpty() ? kExitInterrupted : kExitInvalidInput;  // (empty: the design was interrupted)

@@ -12,6 +12,8 @@
 #include "commands/orbit_json.h"
 #include "core/orbits/onepp_family_points.h"
 #include "core/version.h"
+#include "io/chain_start.h"
+#include "io/document_values.h"
 #include "io/prepared_chain.h"
 
 namespace grazelab::cli {
@@ -75,6 +77,105 @@ std::optional<S> numberIn(const std::string& text, const char* option, std::stri
   return parsed.value;
 }
 
+template <typename S>
+JsonValue numbersValue(const core::ChainVector<S>& x) {
+  std::vector<JsonValue> items;
+  for (Eigen::Index i = 0; i < x.size(); ++i) items.push_back(JsonValue::number(x[i]));
+  return JsonValue::array(std::move(items));
+}
+
+template <typename S>
+JsonValue chainOrbitValue(const FoundChainOrbit<S>& found, core::Precision precision) {
+  using V = JsonValue;
+  const core::BasicChainPeriodicOrbit<S>& orbit = found.orbit;
+  const core::ChainMonodromy<S>& monodromy = orbit.monodromy;
+  std::vector<V> events;
+  for (const core::BasicChainEvent<S>& e : orbit.events) {
+    events.push_back(V::object({{"t", V::number(e.t)},
+                                {"type", V::of(std::string(core::toString(e.type)))},
+                                {"u", numbersValue(e.u)},
+                                {"v_before", numbersValue(e.vBefore)},
+                                {"v_after", V::number(e.vAfter)}}));
+  }
+  std::vector<V> multipliers, errors, onCircle, krein;
+  for (const core::ChainMultiplier<S>& m : monodromy.multipliers) {
+    multipliers.push_back(V::array({V::number(m.re), V::number(m.im)}));
+    errors.push_back(V::number(m.error));
+    onCircle.push_back(V::of(m.onCircle));
+    krein.push_back(V::of(std::int64_t(m.krein)));
+  }
+  return V::object({{"format", V::of("grazelab-orbit")},
+                    {"precision", V::of(std::string(core::toString(precision)))},
+                    {"chain", values::massChain<V>(found.chain, found.commonPeriod)},
+                    {"period", V::number(orbit.period)},
+                    {"energy", V::number(orbit.energy)},
+                    {"impacts", V::of(std::int64_t(orbit.impacts))},
+                    {"state", V::object({{"u", numbersValue(orbit.state.u)}, {"v", numbersValue(orbit.state.v)}})},
+                    {"events", V::array(std::move(events))},
+                    {"multipliers", V::array(std::move(multipliers))},
+                    {"multiplier_errors", V::array(std::move(errors))},
+                    {"on_circle", V::array(std::move(onCircle))},
+                    {"krein", V::array(std::move(krein))},
+                    {"stability", V::of(std::string(core::toString(monodromy.stability)))},
+                    {"checks", V::object({{"symplectic", V::number(monodromy.symplecticDefect)},
+                                          {"trivial_pair", V::number(monodromy.trivialPairDefect)},
+                                          {"det_minus_1", V::number(monodromy.detDefect)},
+                                          {"periodicity_residual", V::number(orbit.periodicityResidual)},
+                                          {"rounding", V::number(monodromy.rounding)}})},
+                    {"admissible", V::of(true)},
+                    {"reason", V::null()},
+                    {"generator", V::of(std::string("grazelab-cli ") + kVersion)}});
+}
+
+// why an orbit's path is not a periodic orbit, in words
+const char* orbitRefusalWords(core::OrbitRefusal refusal) {
+  switch (refusal) {
+    case core::OrbitRefusal::None: return "admissible";
+    case core::OrbitRefusal::BadStart: return "its start is not just after an impact";
+    case core::OrbitRefusal::Undecided: return "a contact of its path cannot be decided in this precision";
+    case core::OrbitRefusal::ContactCount: return "its path makes another number of contacts";
+    case core::OrbitRefusal::NotImpact: return "a contact of its path is a grazing or a stick";
+    case core::OrbitRefusal::NotClosed: return "its path does not close to its rounding";
+    case core::OrbitRefusal::Repeated: return "it is a shorter orbit repeated";
+    case core::OrbitRefusal::TouchesStop: return "a flight touches the stop";
+  }
+  return "unknown";
+}
+
+// The 1IPP orbit of period request.period of any chain, in precision S, by its 2N x 2N monodromy.
+template <typename S>
+OrbitOutcome chainOrbitIn(const PreparedMassChain& prepared, const OrbitRequest& request) {
+  OrbitOutcome outcome;
+  outcome.precision = core::precisionOf<S>();
+  if (request.impacts != 0) {
+    outcome.problem = "orbit --impacts: orbits of several impacts are found by Newton on the note's two-mass chain "
+                      "only so far; --onepp --period T gives the 1IPP orbit of any chain";
+    return outcome;
+  }
+  const Parsed<core::BasicReadyChain<S>>& ready = prepared.ready<S>();
+  if (!ready.value) {
+    outcome.problem = ready.error.toStdString();
+    return outcome;
+  }
+  const std::optional<S> T = numberIn<S>(request.period, "period", outcome.problem);
+  if (!T) return outcome;
+  core::ChainOnePeriodicStability<S> found = core::chainOnePeriodicStability(*ready.value, *T);
+  if (found.onePeriodic != core::OnePeriodicRefusal::None) {
+    outcome.problem = "orbit: no 1IPP orbit of period " + request.period + ": " + onePeriodicRefusalWords(found.onePeriodic);
+    if (found.onePeriodic == core::OnePeriodicRefusal::NotDecided) outcome.status = OrbitStatus::Undecided;
+    return outcome;
+  }
+  if (!found.orbit.admissible()) {
+    outcome.problem = "orbit: the 1IPP data of period " + request.period + " are no orbit in " +
+                      std::string(core::toString(outcome.precision)) + ": " + orbitRefusalWords(found.orbit.refusal);
+    if (found.orbit.refusal == core::OrbitRefusal::Undecided) outcome.status = OrbitStatus::Undecided;
+    return outcome;
+  }
+  outcome.status = OrbitStatus::Found;
+  outcome.found = FoundChainOrbit<S>{ready.value->numbers, ready.value->dynamics.period, std::move(found.orbit)};
+  return outcome;
+}
+
 // The orbit in precision S.
 template <typename S>
 OrbitOutcome orbitIn(const PreparedMassChain& prepared, const OrbitRequest& request, std::stop_token stop) {
@@ -82,8 +183,13 @@ OrbitOutcome orbitIn(const PreparedMassChain& prepared, const OrbitRequest& requ
   outcome.precision = core::precisionOf<S>();
   const Parsed<ModelInput<S>>& model = prepared.twoMassForm<S>();
   if (!model.value) {
-    outcome.problem = model.error.toStdString();
-    return outcome;
+    // not the note's shape: the 1IPP orbit of any chain (the note's chain whose ratio S cannot
+    // hold is refused as before)
+    if (prepared.isTheNotesChain()) {
+      outcome.problem = model.error.toStdString();
+      return outcome;
+    }
+    return chainOrbitIn<S>(prepared, request);
   }
   const core::TwoMassForm<S>& chain = model.value->chain;
   core::OrbitSearch<S> search;
@@ -156,7 +262,10 @@ OrbitOutcome solveOrbit(const PreparedMassChain& chain, const OrbitRequest& requ
   const auto classUndecided = [](const OrbitOutcome& outcome) {
     return std::visit(
         [](const auto& found) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(found)>, std::monostate>) return false;
+          using Found = std::decay_t<decltype(found)>;
+          if constexpr (std::is_same_v<Found, std::monostate>) return false;
+          else if constexpr (requires { found.commonPeriod; })
+            return found.orbit.monodromy.stability == core::ChainStability::Undecided;
           else return core::decidedStability(found.orbit) == core::Stability::Undecided;
         },
         outcome.found);
@@ -180,8 +289,11 @@ OrbitOutcome solveOrbit(const PreparedMassChain& chain, const OrbitRequest& requ
 JsonValue orbitDocument(const OrbitOutcome& outcome) {
   return std::visit(
       [&outcome](const auto& found) -> JsonValue {
-        if constexpr (std::is_same_v<std::decay_t<decltype(found)>, std::monostate>) {
+        using Found = std::decay_t<decltype(found)>;
+        if constexpr (std::is_same_v<Found, std::monostate>) {
           return JsonValue::null();
+        } else if constexpr (requires { found.commonPeriod; }) {
+          return chainOrbitValue(found, outcome.precision);
         } else {
           return orbitValue(found, outcome.precision);
         }

@@ -8,7 +8,9 @@
 #include <variant>
 
 #include "commands/simulation.h"
+#include "core/model/mass_chain.h"
 #include "core/model/two_mass_form.h"
+#include "core/orbits/chain_monodromy.h"
 #include "core/orbits/periodic_orbit.h"
 #include "io/json_value.h"
 
@@ -20,9 +22,9 @@ namespace grazelab::cli {
 
 class PreparedMassChain;
 
-/// One periodic impacting orbit of a two-mass chain: the 1IPP orbit of period `period`
-/// (`impacts` 0), or the orbit of `impacts` impacts per period at energy `energy` that Newton
-/// finds from `guess` (u1, v1 just after an impact on H). Numbers as decimal text, read in the
+/// One periodic impacting orbit: the 1IPP orbit of period `period` (`impacts` 0) of any chain,
+/// or the orbit of `impacts` impacts per period at energy `energy` that Newton finds from `guess`
+/// (u1, v1 just after an impact on H) of a two-mass chain. Numbers as decimal text, read in the
 /// precision that runs (0.1 is 0.1 to binary128's digits).
 struct OrbitRequest {
   std::string period;
@@ -45,21 +47,35 @@ struct FoundOrbit {
   core::PeriodicOrbit<S> orbit;
 };
 
+/// A 1IPP orbit of a chain of N masses (or of two masses not in the note's shape) found in
+/// precision S, with the chain and its common period (0: not commensurate).
+template <typename S>
+struct FoundChainOrbit {
+  core::BasicMassChain<S> chain;
+  S commonPeriod = 0;
+  core::BasicChainPeriodicOrbit<S> orbit;
+};
+
 struct OrbitOutcome {
   OrbitStatus status = OrbitStatus::Refused;
   std::string problem;  ///< why not found, one line
   core::Precision precision = core::Precision::Double;  ///< the precision that answered (or tried last)
-  std::variant<std::monostate, FoundOrbit<double>, FoundOrbit<long double>, FoundOrbit<core::Quad>> found;
+  std::variant<std::monostate, FoundOrbit<double>, FoundOrbit<long double>, FoundOrbit<core::Quad>,
+               FoundChainOrbit<double>, FoundChainOrbit<long double>, FoundChainOrbit<core::Quad>>
+      found;
 };
 
-/// The orbit `request` asks for on `chain` (its two-mass form: a chain of other shape is
-/// refused), in the precision asked for; PrecisionChoice::Auto: double, then long double and
-/// binary128 while a contact too near tangent leaves it undecided. `stop` ends a Newton search.
+/// The orbit `request` asks for on `chain`: on the note's two-mass form where the chain has it
+/// (the orbits Newton finds need it: another shape is refused for them), the 1IPP orbit of any
+/// other chain by its 2N x 2N monodromy (core/orbits/chain_monodromy.h); in the precision asked
+/// for; PrecisionChoice::Auto: double, then long double and binary128 while a contact too near
+/// tangent or the class leaves it undecided. `stop` ends a Newton search.
 OrbitOutcome solveOrbit(const PreparedMassChain& chain, const OrbitRequest& request, std::stop_token stop = {});
 
 /// The document of an orbit found (OrbitStatus::Found): the model, period, energy, impacts, state,
 /// events, trace, multipliers, stability, symmetry and checks, every number to the digits of its
-/// precision.
+/// precision; for a chain of N masses the chain, period, energy, state, events, the 2N - 2
+/// multipliers with their error bars, circle flags and Krein signatures, stability and checks.
 JsonValue orbitDocument(const OrbitOutcome& outcome);
 
 }  // namespace grazelab::cli

@@ -54,21 +54,20 @@ std::optional<std::vector<S>> numberList(const OptionValues& options, const char
   return values;
 }
 
-// why a period has no admissible 1IPP orbit, in words
-const char* refusalWords(core::OnePeriodicRefusal refusal) {
+}  // namespace
+
+const char* onePeriodicRefusalWords(core::OnePeriodicRefusal refusal) {
   switch (refusal) {
     case core::OnePeriodicRefusal::None: return "admissible";
     case core::OnePeriodicRefusal::BadPeriod: return "the period is not positive and finite";
     case core::OnePeriodicRefusal::MultipleOfPeriod: return "the period is a multiple of a mode's period: no data";
     case core::OnePeriodicRefusal::LeavesIntoStop: return "its data leave into the stop (V >= 0)";
-    case core::OnePeriodicRefusal::NotDecided: return "its return at T cannot be decided in double (V too small)";
+    case core::OnePeriodicRefusal::NotDecided: return "its return at T cannot be decided in this precision (V too small)";
     case core::OnePeriodicRefusal::NeverReturns: return "the flight from its data never returns to the stop";
     case core::OnePeriodicRefusal::ReturnsEarly: return "the flight from its data meets the stop before T";
   }
   return "unknown";
 }
-
-}  // namespace
 
 bool oneStartOf(const OptionValues& options, Eigen::Index n, QString& error) {
   if (int(options.isSet("state")) + int(options.isSet("glo-weights")) + int(options.isSet("onepp")) == 1) return true;
@@ -99,7 +98,7 @@ std::optional<core::BasicChainStart<S>> chainStart(const OptionValues& options, 
     const core::BasicChainOnePeriodicOrbit<S> orbit = core::chainOnePeriodicOrbitIn<S>(chain, T.value.value_or(S(-1)));
     if (!orbit.admissible()) {
       error = QStringLiteral("--onepp %1: no admissible 1IPP orbit of that period: %2")
-                  .arg(options.value("onepp"), refusalWords(orbit.refusal));
+                  .arg(options.value("onepp"), onePeriodicRefusalWords(orbit.refusal));
       return std::nullopt;
     }
     start.state = orbit.postImpact;

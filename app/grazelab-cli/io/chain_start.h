@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "core/orbits/special_orbits.h"
 #include "core/solver/chain_flight.h"
 #include "io/option_values.h"
 
@@ -16,6 +17,8 @@ namespace grazelab::cli {
 /// Exactly one start of a chain of n masses given (--state, --glo-weights, --onepp), or false
 /// with `error` set.
 bool oneStartOf(const OptionValues& options, Eigen::Index n, QString& error);
+/// Why a period has no admissible 1IPP orbit (the data's refusal), in words.
+const char* onePeriodicRefusalWords(core::OnePeriodicRefusal refusal);
 /// --glo is the two-mass chain's: a chain of N masses has --glo-weights; false with `error` set.
 bool noTwoMassStart(const OptionValues& options, QString& error);
 
