@@ -434,7 +434,7 @@ ChainOnePeriodicStability<S> chainOnePeriodicStability(const BasicReadyChain<S>&
   using std::cos;
   using std::sin;
   ChainOnePeriodicStability<S> out;
-  const BasicChainOnePeriodicOrbit<S> data = chainOnePeriodicOrbitIn<S>(chain.numbers, T);
+  const BasicChainOnePeriodicOrbit<S> data = chainOnePeriodicOrbitIn<S>(chain.numbers, chain.dynamics, T);
   out.onePeriodic = data.refusal;
   if (!data.admissible()) return out;
   out.orbit = evaluateChainOrbit(chain, data.postImpact, 1, infinity<S>());

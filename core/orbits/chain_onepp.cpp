@@ -14,20 +14,26 @@ namespace grazelab::core {
 
 template <typename S>
 BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& chain, std::type_identity_t<S> T) {
+  if (!(T > 0) || !isFinite(T)) return {};
+  return chainOnePeriodicOrbitIn<S>(chain, chainDynamicsIn<S>(chain), T);
+}
+
+template <typename S>
+BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& chain,
+                                                      const BasicChainDynamics<S>& dynamics,
+                                                      std::type_identity_t<S> T) {
   using std::abs;
   using std::cos;
   using std::sin;
   BasicChainOnePeriodicOrbit<S> orbit;
   if (!(T > 0) || !isFinite(T)) return orbit;
-  const BasicChainDynamics<S> dynamics = chainDynamicsIn<S>(chain);
-  const BasicChainModes<S> modes = chainModesIn<S>(chain);
   const Eigen::Index n = dynamics.omega.size();
   const int s = dynamics.stop;
   const S ms = chain.masses[std::size_t(s)];
   // g(T) = sum_j a_.j Phi_j(T), a_kj = m_s P[k][j] P[s][j]; a mode with a node at the stop adds 0
   ChainVector<S> g = ChainVector<S>::Zero(n);
   for (Eigen::Index j = 0; j < n; ++j) {
-    if (modes.nodeAtStop[std::size_t(j)]) continue;
+    if (dynamics.nodeAtStop[std::size_t(j)]) continue;
     const S half = dynamics.omega[j] * T / 2;
     const S sine = sin(half);
     // within a few roundings of a multiple of the mode's period: no data there
@@ -75,6 +81,12 @@ BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& c
   return orbit;
 }
 
+template BasicChainOnePeriodicOrbit<double> chainOnePeriodicOrbitIn<double>(const BasicMassChain<double>&,
+                                                                            const BasicChainDynamics<double>&, double);
+template BasicChainOnePeriodicOrbit<long double> chainOnePeriodicOrbitIn<long double>(
+    const BasicMassChain<long double>&, const BasicChainDynamics<long double>&, long double);
+template BasicChainOnePeriodicOrbit<Quad> chainOnePeriodicOrbitIn<Quad>(const BasicMassChain<Quad>&,
+                                                                        const BasicChainDynamics<Quad>&, Quad);
 template BasicChainOnePeriodicOrbit<double> chainOnePeriodicOrbitIn<double>(const BasicMassChain<double>&, double);
 template BasicChainOnePeriodicOrbit<long double> chainOnePeriodicOrbitIn<long double>(const BasicMassChain<long double>&,
                                                                                       long double);

@@ -18,6 +18,8 @@
 #include "core/model/chain_design.h"
 #include "core/model/mass_chain.h"
 #include "core/solver/chain_run.h"
+#include "core/orbits/chain_monodromy.h"
+#include "core/orbits/chain_onepp.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/periodic_orbit.h"
 #include "core/orbits/starts.h"
@@ -328,6 +330,27 @@ void ModesAtlas(benchmark::State& state) {
   }
 }
 BENCHMARK(ModesAtlas)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond);
+
+// Periodic orbits of N masses (issue 49): the 1IPP family of a 10-mass chain over 1000 periods,
+// each admissible row with its exact 20 x 20 monodromy, multipliers, Krein signatures and class
+// (the budget: under 1 s); items = rows.
+void ChainOnePeriodicFamilyWithMultipliers(benchmark::State& state) {
+  const core::MassChain chain{{1, 0.9, 0.8, 0.7, 0.6, 0.5, 0.6, 0.7, 0.8, 0.9},
+                              {1, 1.1, 0.9, 1.2, 1, 0.8, 1.3, 1, 0.9, 1.1}, 0, 0, 1};
+  const core::ReadyChain ready = core::readyChain(chain);
+  const double end = core::chainOnePeriodicEnd(chain);
+  std::int64_t rows = 0;
+  for (auto _ : state) {
+    for (int k = 1; k <= 1000; ++k) {
+      const double T = end * k / 1001.0;
+      const core::ChainOnePeriodicOrbit data = core::chainOnePeriodicOrbitIn<double>(chain, ready.dynamics, T);
+      if (data.admissible()) benchmark::DoNotOptimize(core::chainOnePeriodicStability(ready, T).orbit.monodromy.stability);
+      ++rows;
+    }
+  }
+  state.SetItemsProcessed(rows);
+}
+BENCHMARK(ChainOnePeriodicFamilyWithMultipliers)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace grazelab

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <string>
 #include <memory>
 #include <numeric>
 #include <utility>
@@ -18,6 +20,7 @@
 
 #include "commands/onepp_family.h"
 #include "commands/simulate_command.h"
+#include "core/orbits/chain_monodromy.h"
 #include "core/orbits/periodic_orbit.h"
 #include "io/option_values.h"
 #include "io/prepared_chain.h"
@@ -40,7 +43,7 @@ FamilyOutcome familyOf(const Options& options, std::int64_t count, PrecisionChoi
   return onePeriodicFamily(*chainOf(options), request);
 }
 
-double at(const FamilyOutcome& outcome, std::size_t row, const char* column) {
+double at(const FamilyOutcome& outcome, std::size_t row, const std::string& column) {
   const auto found = std::find(outcome.columns.begin(), outcome.columns.end(), column);
   return outcome.table[row * outcome.columns.size() + std::size_t(found - outcome.columns.begin())];
 }
@@ -86,7 +89,37 @@ TEST(TypedFamily, AChainOfThreeMassesTendsToItsGrazingLimit) {
   const FamilyOutcome outcome = familyOf({{"masses", "1,0.2,0.05"}, {"frequencies", "3:2:1"}}, 400);
   ASSERT_EQ(outcome.status, FamilyStatus::Computed) << outcome.problem;
   const auto& family = std::get<ChainFamily>(outcome.of);
-  EXPECT_EQ(outcome.columns.size(), 5u + 3u);
+  // T, omega, V, energy, admissible, u1..u3, the class, and re, im, Krein of 2N - 2 = 4 multipliers
+  EXPECT_EQ(outcome.columns.size(), 5u + 3u + 1u + 3u * 4u);
+  // each admissible row's class and multipliers (its exact monodromy): an elliptic row's on the
+  // circle, a hyperbolic one's product of reciprocals 1; the family's end (3:2:1, near grazing)
+  // has both kinds
+  int elliptic = 0, other = 0;
+  for (std::size_t row = 0; row < outcome.rows(); ++row) {
+    if (at(outcome, row, "admissible") == 0) {
+      EXPECT_TRUE(std::isnan(at(outcome, row, "class")));
+      continue;
+    }
+    const auto cls = core::ChainStability(int(at(outcome, row, "class")));
+    std::complex<double> product = 1;
+    double farthest = 0;
+    for (int k = 1; k <= 4; ++k) {
+      const std::complex<double> mu(at(outcome, row, "mu" + std::to_string(k) + "_re"),
+                                    at(outcome, row, "mu" + std::to_string(k) + "_im"));
+      product *= mu;
+      farthest = std::max(farthest, std::abs(std::abs(mu) - 1));
+    }
+    EXPECT_NEAR(std::abs(product - 1.0), 0.0, 1e-8) << "T " << at(outcome, row, "T");
+    if (cls == core::ChainStability::Elliptic) {
+      EXPECT_LT(farthest, 1e-8);
+      ++elliptic;
+    } else if (cls != core::ChainStability::Undecided) {
+      EXPECT_GT(farthest, 1e-10);
+      ++other;
+    }
+  }
+  EXPECT_GT(elliptic, 0);
+  EXPECT_GT(other, 0);
   EXPECT_NEAR(std::accumulate(family.weights.begin(), family.weights.end(), 0.0), 1.0, 1e-12);
   // the admissible rows nearest T_max have the smallest impact speeds
   double lastV = 0, lastT = 0;

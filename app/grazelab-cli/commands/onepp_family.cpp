@@ -8,9 +8,11 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "commands/orbit_json.h"
 #include "core/orbits/chain_glo.h"
+#include "core/orbits/chain_monodromy.h"
 #include "core/orbits/chain_onepp.h"
 #include "core/orbits/onepp_family.h"
 #include "core/orbits/onepp_family_points.h"
@@ -193,10 +195,20 @@ FamilyOutcome chainFamily(const PreparedMassChain& prepared, const FamilyRequest
     described.gloEnergy = core::chainEnergy(chain, glo.state);
   }
   const Eigen::Index n = chain.size();
+  const Eigen::Index pairs = 2 * n - 2;  // the nontrivial multipliers
   outcome.columns = {"T", "omega", "V", "energy", "admissible"};
   for (Eigen::Index i = 0; i < n; ++i) outcome.columns.push_back("u" + std::to_string(i + 1));
+  outcome.columns.push_back("class");
+  for (Eigen::Index k = 1; k <= pairs; ++k) {
+    for (const char* part : {"_re", "_im", "_krein"}) outcome.columns.push_back("mu" + std::to_string(k) + part);
+  }
   outcome.table.reserve(rows.size() * outcome.columns.size());
+  const Parsed<core::ReadyChain>& ready = prepared.ready<double>();
   for (const core::ChainFamilyRow& row : rows) {
+    if (stop.stop_requested()) {
+      outcome.status = FamilyStatus::Interrupted;
+      return outcome;
+    }
     const core::ChainOnePeriodicOrbit& orbit = row.orbit;
     const bool hasData = orbit.refusal != core::OnePeriodicRefusal::MultipleOfPeriod &&
                          orbit.refusal != core::OnePeriodicRefusal::BadPeriod;
@@ -206,6 +218,20 @@ FamilyOutcome chainFamily(const PreparedMassChain& prepared, const FamilyRequest
       outcome.table.push_back(value);
     }
     for (Eigen::Index i = 0; i < n; ++i) outcome.table.push_back(hasData ? orbit.postImpact.u[i] : kNaN);
+    // the exact stability of an admissible row (its monodromy, core/orbits/chain_monodromy.h)
+    std::optional<core::ChainOnePeriodicStability<double>> stability;
+    if (orbit.admissible() && ready.value) stability = core::chainOnePeriodicStability(*ready.value, row.T);
+    const bool stable = stability && stability->orbit.admissible();
+    outcome.table.push_back(stable ? double(int(stability->orbit.monodromy.stability)) : kNaN);
+    for (Eigen::Index k = 0; k < pairs; ++k) {
+      const core::ChainMultiplier<double>* mu =
+          stable && std::size_t(k) < stability->orbit.monodromy.multipliers.size()
+              ? &stability->orbit.monodromy.multipliers[std::size_t(k)]
+              : nullptr;
+      outcome.table.push_back(mu ? mu->re : kNaN);
+      outcome.table.push_back(mu ? mu->im : kNaN);
+      outcome.table.push_back(mu ? double(mu->krein) : kNaN);
+    }
     outcome.admissible += orbit.admissible() ? 1 : 0;
     if (hasData) outcome.points.push_back({orbit.energy, omega, orbit.admissible()});
   }
@@ -288,7 +314,12 @@ V chainDocument(const FamilyOutcome& outcome, const ChainFamily& family, const s
       {"post_impact_state", V::of("u = V g(T) (u_s = gap), v = V e_s")},
       {"admissible", V::of("1 when V < 0 and the free flight from the data first returns to the stop at T "
                            "(certified contact search), else 0; V, energy and u empty (NaN in the .npy) at a "
-                           "multiple of a mode's period")}};
+                           "multiple of a mode's period")},
+      {"class", V::of("an admissible row's class from its exact 2N x 2N monodromy (in the .npy 0 elliptic, 1 "
+                          "hyperbolic, 2 flip-hyperbolic, 3 complex-quadruplet, 4 undecided; in the CSV those "
+                          "words); muK_re, muK_im its 2N - 2 "
+                          "nontrivial multipliers by angle, muK_krein their Krein signatures (+1, -1, 0); "
+                          "empty on the other rows (docs/model.md section 12)")}};
   if (files) {
     fields.emplace_back("files", V::object({{"csv", V::of(*files + ".csv")},
                                             {"npy", V::of(*files + ".npy (float64, rows x " +

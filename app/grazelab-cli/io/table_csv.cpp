@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/orbits/chain_monodromy.h"
 #include "core/orbits/periodic_orbit.h"
 
 namespace grazelab::cli {
@@ -17,8 +18,14 @@ QByteArray tableCsv(const std::vector<std::string>& columns, const std::vector<d
       const double value = table[at + c];
       if (c) csv += ",";
       if (!std::isfinite(value)) continue;
-      csv += columns[c] == "stability" ? QByteArray(core::toString(core::Stability(int(value))).data())
-                                       : QByteArray::number(value, 'g', 17);
+      // the classes as words: a two-mass family's trace's, a chain's multipliers'
+      if (columns[c] == "stability") {
+        csv += QByteArray(core::toString(core::Stability(int(value))).data());
+      } else if (columns[c] == "class") {
+        csv += QByteArray(core::toString(core::ChainStability(int(value))).data());
+      } else {
+        csv += QByteArray::number(value, 'g', 17);
+      }
     }
     csv += "\n";
   }
