@@ -377,9 +377,10 @@ ChainMonodromy<S> chainMonodromy(const BasicChainDynamics<S>& dynamics, const Ba
   return out;
 }
 
+// The path of evaluateChainOrbit without its monodromy (a 1IPP orbit's comes from its closed form).
 template <typename S>
-BasicChainPeriodicOrbit<S> evaluateChainOrbit(const BasicReadyChain<S>& chain, const BasicChainState<S>& start,
-                                              int impacts, const std::type_identity_t<S>& closeTolerance) {
+BasicChainPeriodicOrbit<S> evaluateChainPath(const BasicReadyChain<S>& chain, const BasicChainState<S>& start,
+                                             int impacts, const std::type_identity_t<S>& closeTolerance) {
   BasicChainPeriodicOrbit<S> orbit;
   orbit.state = start;
   orbit.impacts = impacts;
@@ -409,7 +410,6 @@ BasicChainPeriodicOrbit<S> evaluateChainOrbit(const BasicReadyChain<S>& chain, c
   const StateScale<S> scale(chain.dynamics);
   const ChainVector<S> x0 = scale.scaled(stacked<S>(start.u, start.v));
   orbit.periodicityResidual = (scale.scaled(stacked<S>(run.final.u, run.final.v)) - x0).norm();
-  orbit.monodromy = chainMonodromy(chain.dynamics, start, legsOf(chain.dynamics, orbit.events));
   if (!(orbit.periodicityResidual <= closeTolerance)) {
     orbit.refusal = OrbitRefusal::NotClosed;
     return orbit;
@@ -428,18 +428,22 @@ BasicChainPeriodicOrbit<S> evaluateChainOrbit(const BasicReadyChain<S>& chain, c
 }
 
 template <typename S>
-ChainOnePeriodicStability<S> chainOnePeriodicStability(const BasicReadyChain<S>& chain,
-                                                       const std::type_identity_t<S>& T) {
+BasicChainPeriodicOrbit<S> evaluateChainOrbit(const BasicReadyChain<S>& chain, const BasicChainState<S>& start,
+                                              int impacts, const std::type_identity_t<S>& closeTolerance) {
+  BasicChainPeriodicOrbit<S> orbit = evaluateChainPath(chain, start, impacts, closeTolerance);
+  if (orbit.refusal == OrbitRefusal::None || orbit.refusal == OrbitRefusal::NotClosed ||
+      orbit.refusal == OrbitRefusal::Repeated) {
+    orbit.monodromy = chainMonodromy(chain.dynamics, start, legsOf(chain.dynamics, orbit.events));
+  }
+  return orbit;
+}
+
+template <typename S>
+ChainMonodromy<S> chainOnePeriodicMonodromy(const BasicReadyChain<S>& chain, const BasicChainState<S>& postImpact,
+                                            const std::type_identity_t<S>& T) {
   using std::abs;
   using std::cos;
   using std::sin;
-  ChainOnePeriodicStability<S> out;
-  const BasicChainOnePeriodicOrbit<S> data = chainOnePeriodicOrbitIn<S>(chain.numbers, chain.dynamics, T);
-  out.onePeriodic = data.refusal;
-  if (!data.admissible()) return out;
-  out.orbit = evaluateChainOrbit(chain, data.postImpact, 1, infinity<S>());
-  if (!out.orbit.admissible()) return out;
-  out.orbit.period = T;  // (the path's impact at T to its rounding)
   // the one leg from the closed form: sigma = 2 m_s sum_j w_j P[s][j]^2 cot(w_j T / 2), each term's
   // error from its argument's rounding (d cot x = -dx / sin^2 x) and its own
   const BasicChainDynamics<S>& dynamics = chain.dynamics;
@@ -464,7 +468,21 @@ ChainOnePeriodicStability<S> chainOnePeriodicStability(const BasicReadyChain<S>&
   leg.flight = T;
   leg.sigma = 2 * dynamics.mass[s] * sum;
   leg.sigmaError = 8 * std::numeric_limits<S>::epsilon() * terms / abs(sum);
-  out.orbit.monodromy = chainMonodromy(dynamics, out.orbit.state, {leg});
+  return chainMonodromy(dynamics, postImpact, {leg});
+}
+
+template <typename S>
+ChainOnePeriodicStability<S> chainOnePeriodicStability(const BasicReadyChain<S>& chain,
+                                                       const std::type_identity_t<S>& T) {
+  using std::abs;
+  ChainOnePeriodicStability<S> out;
+  const BasicChainOnePeriodicOrbit<S> data = chainOnePeriodicOrbitIn<S>(chain.numbers, chain.dynamics, T);
+  out.onePeriodic = data.refusal;
+  if (!data.admissible()) return out;
+  out.orbit = evaluateChainPath(chain, data.postImpact, 1, infinity<S>());
+  if (!out.orbit.admissible()) return out;
+  out.orbit.period = T;  // (the path's impact at T to its rounding)
+  out.orbit.monodromy = chainOnePeriodicMonodromy(chain, data.postImpact, T);
   // closed to the rounding of its path times how much the return map amplifies it
   S amplification = 1;
   for (const ChainMultiplier<S>& m : out.orbit.monodromy.multipliers) {
@@ -486,6 +504,8 @@ ChainOnePeriodicStability<S> chainOnePeriodicStability(const BasicReadyChain<S>&
                                                   const std::vector<BasicChainEvent<S>>&);                         \
   template BasicChainPeriodicOrbit<S> evaluateChainOrbit<S>(const BasicReadyChain<S>&, const BasicChainState<S>&,  \
                                                             int, const S&);                                        \
+  template ChainMonodromy<S> chainOnePeriodicMonodromy<S>(const BasicReadyChain<S>&, const BasicChainState<S>&,    \
+                                                          const S&);                                               \
   template ChainOnePeriodicStability<S> chainOnePeriodicStability<S>(const BasicReadyChain<S>&, const S&);
 GRAZELAB_CHAIN_MONODROMY(double)
 GRAZELAB_CHAIN_MONODROMY(long double)

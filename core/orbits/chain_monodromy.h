@@ -129,6 +129,12 @@ template <typename S>
 BasicChainPeriodicOrbit<S> evaluateChainOrbit(const BasicReadyChain<S>& chain, const BasicChainState<S>& start,
                                               int impacts, const std::type_identity_t<S>& closeTolerance);
 
+/// The monodromy of the 1IPP orbit of period T whose state after its impact is `postImpact` (its
+/// closed-form data), from the closed form's sigma (below); the path is not run.
+template <typename S>
+ChainMonodromy<S> chainOnePeriodicMonodromy(const BasicReadyChain<S>& chain, const BasicChainState<S>& postImpact,
+                                            const std::type_identity_t<S>& T);
+
 /// The 1IPP orbit of period T of any chain (its closed-form data, chainOnePeriodicOrbitIn) with
 /// its exact stability; `refusal` says why there is none (the data's refusal is in `onePeriodic`).
 /// The monodromy's one leg is the flight T and the closed form's sigma = 2 m_s sum_j w_j P[s][j]^2

@@ -21,7 +21,7 @@ BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& c
 template <typename S>
 BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& chain,
                                                       const BasicChainDynamics<S>& dynamics,
-                                                      std::type_identity_t<S> T) {
+                                                      std::type_identity_t<S> T, bool checkReturn) {
   using std::abs;
   using std::cos;
   using std::sin;
@@ -54,6 +54,10 @@ BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& c
     orbit.refusal = OnePeriodicRefusal::LeavesIntoStop;
     return orbit;
   }
+  if (!checkReturn) {
+    orbit.refusal = OnePeriodicRefusal::None;
+    return orbit;
+  }
   // the flight from the data must meet the stop first at T: searched a little beyond it, not as
   // a periodic flight (T is the orbit's period, not the chain's)
   BasicChainDynamics<S> open = dynamics;
@@ -82,11 +86,12 @@ BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& c
 }
 
 template BasicChainOnePeriodicOrbit<double> chainOnePeriodicOrbitIn<double>(const BasicMassChain<double>&,
-                                                                            const BasicChainDynamics<double>&, double);
+                                                                            const BasicChainDynamics<double>&, double,
+                                                                            bool);
 template BasicChainOnePeriodicOrbit<long double> chainOnePeriodicOrbitIn<long double>(
-    const BasicMassChain<long double>&, const BasicChainDynamics<long double>&, long double);
+    const BasicMassChain<long double>&, const BasicChainDynamics<long double>&, long double, bool);
 template BasicChainOnePeriodicOrbit<Quad> chainOnePeriodicOrbitIn<Quad>(const BasicMassChain<Quad>&,
-                                                                        const BasicChainDynamics<Quad>&, Quad);
+                                                                        const BasicChainDynamics<Quad>&, Quad, bool);
 template BasicChainOnePeriodicOrbit<double> chainOnePeriodicOrbitIn<double>(const BasicMassChain<double>&, double);
 template BasicChainOnePeriodicOrbit<long double> chainOnePeriodicOrbitIn<long double>(const BasicMassChain<long double>&,
                                                                                       long double);

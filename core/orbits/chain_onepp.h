@@ -31,11 +31,12 @@ using ChainOnePeriodicOrbit = BasicChainOnePeriodicOrbit<double>;
 /// that checks them, computed in S from the chain's numbers in S.
 template <typename S>
 BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& chain, std::type_identity_t<S> T);
-/// The same from the chain's dynamics made once (a family's rows, a ready chain's orbits).
+/// The same from the chain's dynamics made once (a family's rows, a ready chain's orbits);
+/// without `checkReturn` the data alone (admissible when V < 0, the flight not searched).
 template <typename S>
 BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& chain,
                                                       const BasicChainDynamics<S>& dynamics,
-                                                      std::type_identity_t<S> T);
+                                                      std::type_identity_t<S> T, bool checkReturn = true);
 inline ChainOnePeriodicOrbit chainOnePeriodicOrbit(const MassChain& chain, double T) {
   return chainOnePeriodicOrbitIn<double>(chain, T);
 }

@@ -204,6 +204,7 @@ FamilyOutcome chainFamily(const PreparedMassChain& prepared, const FamilyRequest
   }
   outcome.table.reserve(rows.size() * outcome.columns.size());
   const Parsed<core::ReadyChain>& ready = prepared.ready<double>();
+  std::vector<core::CensusRow<double>> censuses;
   for (const core::ChainFamilyRow& row : rows) {
     if (stop.stop_requested()) {
       outcome.status = FamilyStatus::Interrupted;
@@ -223,6 +224,7 @@ FamilyOutcome chainFamily(const PreparedMassChain& prepared, const FamilyRequest
     if (orbit.admissible() && ready.value) stability = core::chainOnePeriodicStability(*ready.value, row.T);
     const bool stable = stability && stability->orbit.admissible();
     outcome.table.push_back(stable ? double(int(stability->orbit.monodromy.stability)) : kNaN);
+    censuses.push_back({row.T, stable ? std::optional(core::censusOf(stability->orbit.monodromy)) : std::nullopt});
     for (Eigen::Index k = 0; k < pairs; ++k) {
       const core::ChainMultiplier<double>* mu =
           stable && std::size_t(k) < stability->orbit.monodromy.multipliers.size()
@@ -234,6 +236,11 @@ FamilyOutcome chainFamily(const PreparedMassChain& prepared, const FamilyRequest
     }
     outcome.admissible += orbit.admissible() ? 1 : 0;
     if (hasData) outcome.points.push_back({orbit.energy, omega, orbit.admissible()});
+  }
+  if (ready.value) described.bifurcations = core::chainOnePeriodicBifurcations(*ready.value, censuses, stop);
+  if (stop.stop_requested()) {
+    outcome.status = FamilyStatus::Interrupted;
+    return outcome;
   }
   outcome.end = {described.gloEnergy, 2 * std::numbers::pi / end, true};
   outcome.title = "1IPP family of " + std::to_string(n) + " masses: frequency against energy";
@@ -289,6 +296,20 @@ V notesDocument(const FamilyOutcome& outcome, const NotesFamily& notes, const st
   return V::object(std::move(fields));
 }
 
+// where the family's stability changes: kind, period with its error, energy, and whether
+// multipliers leave the unit circle there as T grows
+V bifurcationsValue(const std::vector<core::ChainBifurcation<double>>& bifurcations) {
+  std::vector<V> items;
+  for (const core::ChainBifurcation<double>& b : bifurcations) {
+    items.push_back(V::object({{"kind", V::of(std::string(core::toString(b.kind)))},
+                               {"T", V::number(b.T)},
+                               {"T_error", V::number(b.periodError)},
+                               {"energy", V::number(b.energy)},
+                               {"leaves_the_circle", V::of(b.leaves)}}));
+  }
+  return V::array(std::move(items));
+}
+
 V chainDocument(const FamilyOutcome& outcome, const ChainFamily& family, const std::optional<std::string>& files) {
   std::vector<V> columns;
   for (const std::string& column : outcome.columns) columns.push_back(V::of(column));
@@ -306,6 +327,7 @@ V chainDocument(const FamilyOutcome& outcome, const ChainFamily& family, const s
                   {"meaning", V::of("as T -> T_max the post-impact data tend to GLO_lambda with these weights "
                                     "(fastest mode first; Theorem 2.1 for any N: lambda_j = a_sj w_j^-2 / sum "
                                     "a_si w_i^-2 over the modes whose period divides T_max), V -> 0")}})},
+      {"bifurcations", bifurcationsValue(family.bifurcations)},
       {"columns", V::array(std::move(columns))},
       {"rows", V::of(std::int64_t(outcome.rows()))},
       {"admissible_rows", V::of(outcome.admissible)},

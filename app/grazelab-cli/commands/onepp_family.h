@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands/simulation.h"
+#include "core/orbits/chain_bifurcations.h"
 #include "io/json_value.h"
 
 // `family --onepp` as a typed command (as `simulate` and `orbit` are): the one-impact-per-period
@@ -60,6 +61,8 @@ struct ChainFamily {
   std::vector<double> weights;
   std::optional<std::vector<double>> gloU;  ///< none when the weights give no GLO start
   double gloEnergy = 0;
+  /// where its stability changes between its rows, located (core/orbits/chain_bifurcations.h)
+  std::vector<core::ChainBifurcation<double>> bifurcations;
 };
 
 struct FamilyOutcome {

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <optional>
+#include <stop_token>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "core/orbits/chain_monodromy.h"
+
+/// Where the 1IPP family of a chain of N masses changes stability (docs/model.md section 12):
+/// between two of its periods whose multipliers sit differently (so many on the unit circle, so
+/// many real and positive, real and negative, complex off it), the change located by bisection
+/// in T and named by what moved.
+namespace grazelab::core {
+
+/// How an orbit's 2N - 2 multipliers sit.
+struct MultiplierCensus {
+  int onCircle = 0;
+  int positive = 0;  ///< real, positive, off the circle
+  int negative = 0;  ///< real, negative, off the circle
+  int complex = 0;   ///< off the circle and the real axis (quadruplets: four at a time)
+  bool decided = true;  ///< false where the class is undecided (a collision within the bars)
+  bool operator==(const MultiplierCensus& other) const {
+    return onCircle == other.onCircle && positive == other.positive && negative == other.negative &&
+           complex == other.complex;
+  }
+};
+template <typename S>
+MultiplierCensus censusOf(const ChainMonodromy<S>& monodromy);
+
+enum class ChainBifurcationKind {
+  PeriodDoubling,  ///< a real negative pair leaves (or joins) the circle at -1
+  Fold,            ///< a real positive pair leaves (or joins) it at +1: a fold or branch point
+  KreinCollision,  ///< two pairs of opposite Krein signatures meet on the circle and leave it as
+                   ///< a complex quadruplet (Hamiltonian-Hopf), or a quadruplet comes back to it
+  Other,           ///< several of these at once within the bisection's resolution
+};
+/// "period-doubling", "fold", "krein-collision", "other".
+std::string_view toString(ChainBifurcationKind kind);
+
+template <typename S>
+struct ChainBifurcation {
+  ChainBifurcationKind kind = ChainBifurcationKind::Other;
+  S T = 0;
+  S periodError = 0;  ///< half the last bracket [T-, T+] whose ends were both decided
+  S energy = 0;       ///< the orbit's at T
+  bool leaves = true;  ///< multipliers leave the circle as T grows (false: they come back to it)
+};
+
+/// The changes of the number of multipliers on the unit circle between consecutive `periods`
+/// (increasing) whose orbits are both admissible and decided, each located by bisection in T
+/// until its bracket is 1e-12 of T wide (or 8 ulps in a precision with fewer digits) or its middle
+/// is undecided, and named by how the rest of the census moved (a bracket with an inadmissible
+/// orbit inside is an end of the family's part, not a bifurcation: none reported). Multipliers
+/// that move among themselves off the circle (a quadruplet meeting the real axis as two real
+/// pairs) change no stability and are not reported. Two changes between the same two periods that
+/// undo each other are not seen: the rows must be dense enough for them.
+template <typename S>
+std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain,
+                                                              const std::vector<S>& periods,
+                                                              std::stop_token stop = {});
+
+/// A period of the family with its census (none: no admissible orbit there), as a table that
+/// computed them has them.
+template <typename S>
+struct CensusRow {
+  S T = 0;
+  std::optional<MultiplierCensus> census;
+};
+/// The same from rows whose censuses are known (only the bisections are computed).
+template <typename S>
+std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain,
+                                                              const std::vector<CensusRow<S>>& rows,
+                                                              std::stop_token stop = {});
+
+}  // namespace grazelab::core

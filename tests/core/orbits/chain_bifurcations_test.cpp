@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for core/orbits/chain_bifurcations.cpp: where the 1IPP family of N masses changes
+// stability. Two masses: its period doublings are the note's flips (the two-mass trace's -2,
+// located independently) to 1e-9 of T. Three masses: a Krein collision happens where two
+// multipliers of opposite signatures meet on the circle, the family leaves it as a quadruplet,
+// and double and binary128 put it at the same period.
+#include "core/orbits/chain_bifurcations.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <vector>
+
+#include "core/model/model.h"
+#include "core/model/two_mass_form.h"
+#include "core/orbits/chain_onepp.h"
+#include "core/orbits/onepp_family_points.h"
+
+namespace grazelab::core {
+namespace {
+
+template <typename S>
+std::vector<S> grid(const S& end, int count) {
+  std::vector<S> periods;
+  for (int k = 1; k < count; ++k) periods.push_back(end * S(k) / S(count));
+  return periods;
+}
+
+TEST(ChainBifurcations, TwoMassPeriodDoublingsAreTheNotesFlips) {
+  int matched = 0;
+  for (const double m2 : {0.3, 0.5}) {
+    const auto model = designedModel<double>(1.0, m2, 1.0, 1.0, Branch::Upper);
+    ASSERT_TRUE(model);
+    const TwoMassForm<double> form = *makeTwoMassForm(*model).chain;
+    const double T2 = twoPi<double>() / form.omegaSlow;
+    std::vector<double> flips;
+    for (const auto& b : onePeriodicBifurcations(form, 400)) {
+      if (b.kind == PointKind::PeriodDoubling && b.checked) flips.push_back(b.T);
+    }
+    const ReadyChain ready = readyChain(massChainOf(*model), Kernel::Modal);
+    const auto found = chainOnePeriodicBifurcations(ready, grid(T2, 400));
+    std::vector<double> doublings;
+    for (const ChainBifurcation<double>& b : found) {
+      EXPECT_NE(b.kind, ChainBifurcationKind::KreinCollision) << "two masses have one pair: no quadruplet";
+      if (b.kind == ChainBifurcationKind::PeriodDoubling) doublings.push_back(b.T);
+    }
+    ASSERT_FALSE(flips.empty());
+    ASSERT_EQ(doublings.size(), flips.size()) << "m2 " << m2;
+    for (std::size_t i = 0; i < flips.size(); ++i) {
+      EXPECT_NEAR(doublings[i], flips[i], 1e-9 * flips[i]) << "m2 " << m2;
+      ++matched;
+    }
+  }
+  EXPECT_GT(matched, 1);
+}
+
+// the two multipliers nearest each other on the circle's upper half, at period T
+std::vector<ChainMultiplier<double>> nearestPairAbove(const ReadyChain& chain, double T) {
+  const auto found = chainOnePeriodicStability(chain, T);
+  std::vector<ChainMultiplier<double>> upper;
+  for (const auto& m : found.orbit.monodromy.multipliers) {
+    if (m.im > 0) upper.push_back(m);
+  }
+  std::vector<ChainMultiplier<double>> best;
+  double apart = INFINITY;
+  for (std::size_t i = 0; i < upper.size(); ++i) {
+    for (std::size_t j = i + 1; j < upper.size(); ++j) {
+      const double d = std::abs(std::complex<double>(upper[i].re - upper[j].re, upper[i].im - upper[j].im));
+      if (d < apart) {
+        apart = d;
+        best = {upper[i], upper[j]};
+      }
+    }
+  }
+  return best;
+}
+
+TEST(ChainBifurcations, AKreinCollisionOfThreeMassesMeetsOppositeSignatures) {
+  const MassChain chain{{0.6865, 1.9630, 0.8236}, {0.8423, 1.0745, 0.7486}, 0, 2, 1.0};
+  const ReadyChain ready = readyChain(chain);
+  const double end = chainOnePeriodicEnd(chain);
+  const auto found = chainOnePeriodicBifurcations(ready, grid(end, 300));
+  const BasicReadyChain<Quad> quad = readyChain(chainCast<Quad>(chain));
+  int collisions = 0;
+  for (const ChainBifurcation<double>& b : found) {
+    EXPECT_LT(b.periodError, 1e-9 * b.T);
+    if (b.kind != ChainBifurcationKind::KreinCollision) continue;
+    // on the side where both pairs are on the circle, the two that meet have opposite signatures
+    const double side = b.leaves ? -1 : 1;
+    const auto pair = nearestPairAbove(ready, b.T + side * 1e-4 * b.T);
+    ASSERT_EQ(pair.size(), 2u);
+    EXPECT_TRUE(pair[0].onCircle && pair[1].onCircle);
+    EXPECT_EQ(pair[0].krein, -pair[1].krein) << "T* " << b.T;
+    EXPECT_NE(pair[0].krein, 0);
+    // on the other side, a quadruplet
+    EXPECT_GT(censusOf(chainOnePeriodicStability(ready, b.T - side * 1e-4 * b.T).orbit.monodromy).complex, 0);
+    // binary128 puts it at the same period (bisected in its own precision around it)
+    const Quad width = Quad(1e-6) * Quad(b.T);
+    const auto exact = chainOnePeriodicBifurcations(quad, std::vector<Quad>{Quad(b.T) - width, Quad(b.T) + width});
+    ASSERT_EQ(exact.size(), 1u);
+    EXPECT_NEAR(double(exact[0].T), b.T, 1e-9 * b.T);
+    EXPECT_EQ(exact[0].kind, ChainBifurcationKind::KreinCollision);
+    ++collisions;
+  }
+  EXPECT_GT(collisions, 0);
+}
+
+}  // namespace
+}  // namespace grazelab::core
