@@ -23,8 +23,9 @@ std::optional<MultiplierCensus> censusAt(const BasicReadyChain<S>& chain, const 
   return censusOf(found.orbit.monodromy);
 }
 
-// the same from the closed form alone, the orbit's path not run: what a bisection between two
-// admissible orbits asks at each step (the point found is checked in full)
+// the same from the closed form alone (V < 0; the flight is not searched, the path not run): what
+// a bisection between two admissible orbits asks at each step. The point found is checked in
+// full; a change inside a stretch where the flight meets the stop early is dropped with it.
 template <typename S>
 std::optional<MultiplierCensus> closedFormCensusAt(const BasicReadyChain<S>& chain, const S& T) {
   const BasicChainOnePeriodicOrbit<S> data = chainOnePeriodicOrbitIn<S>(chain.numbers, chain.dynamics, T, false);
@@ -53,7 +54,7 @@ template <typename S>
 void locate(const BasicReadyChain<S>& chain, S a, MultiplierCensus ca, S b, MultiplierCensus cb,
             std::vector<ChainBifurcation<S>>& out, const std::stop_token& stop, int depth = 0) {
   using std::abs;
-  // to 1e-12 of T (the 1e-9 with room), or 8 ulps in a precision that has fewer digits
+  // to 1e-12 of T (the 1e-9 with room; 8 ulps of double are below it)
   const S resolution = std::max<S>(8 * std::numeric_limits<S>::epsilon(), S(1e-12));
   S energy = 0;
   while (b - a > resolution * abs(b) && !stop.stop_requested()) {
@@ -61,10 +62,13 @@ void locate(const BasicReadyChain<S>& chain, S a, MultiplierCensus ca, S b, Mult
     const std::optional<MultiplierCensus> cm = closedFormCensusAt(chain, middle);
     if (!cm) return;  // the family's part ends in between
     if (!cm->decided) break;
+    // (an end moved takes the middle's census: the change is named from the last bracket)
     if (cm->onCircle == ca.onCircle) {
       a = middle;
+      ca = *cm;
     } else if (cm->onCircle == cb.onCircle) {
       b = middle;
+      cb = *cm;
     } else {
       // a third census: two changes in between, each on its side
       if (depth < 16) {

@@ -52,9 +52,11 @@ struct ChainBifurcation {
 
 /// The changes of the number of multipliers on the unit circle between consecutive `periods`
 /// (increasing) whose orbits are both admissible and decided, each located by bisection in T
-/// until its bracket is 1e-12 of T wide (or 8 ulps in a precision with fewer digits) or its middle
-/// is undecided, and named by how the rest of the census moved (a bracket with an inadmissible
-/// orbit inside is an end of the family's part, not a bifurcation: none reported). Multipliers
+/// until its bracket is 1e-12 of T wide or its middle is undecided, and named by how the rest of
+/// the census moved across the last bracket. The bisection asks the closed-form data and
+/// monodromy alone (V < 0, the flight not searched); the point found is checked in full (its
+/// flight searched, its path run) and dropped when it is not admissible: a change inside a
+/// stretch where the flight meets the stop early, or where V >= 0, is not reported. Multipliers
 /// that move among themselves off the circle (a quadruplet meeting the real axis as two real
 /// pairs) change no stability and are not reported. Two changes between the same two periods that
 /// undo each other are not seen: the rows must be dense enough for them.

@@ -116,7 +116,8 @@ struct BasicChainPeriodicOrbit {
   S energy = 0;
   std::vector<BasicChainEvent<S>> events;  ///< the contacts over one period
   ChainMonodromy<S> monodromy;
-  S periodicityResidual = 0;  ///< |x_k - x_0| in the scaled units of the state
+  /// |x_k - x_0| over max(1, |x_0|), in the scaled units of the state
+  S periodicityResidual = 0;
   OrbitRefusal refusal = OrbitRefusal::None;
   bool admissible() const { return refusal == OrbitRefusal::None; }
 };
@@ -124,7 +125,8 @@ using ChainPeriodicOrbit = BasicChainPeriodicOrbit<double>;
 
 /// The orbit through `start` closed after `impacts` contacts: the exact run's path and its
 /// monodromy (chainMonodromy of legsOf its impacts). Admissible when the path's contacts are `impacts` impacts (no grazing, stick or
-/// undecided contact), it closes to `closeTolerance` (scaled), and it is no shorter orbit repeated.
+/// undecided contact), it closes to `closeTolerance` (relative, as periodicityResidual), and it is
+/// no shorter orbit repeated.
 template <typename S>
 BasicChainPeriodicOrbit<S> evaluateChainOrbit(const BasicReadyChain<S>& chain, const BasicChainState<S>& start,
                                               int impacts, const std::type_identity_t<S>& closeTolerance);

@@ -78,8 +78,11 @@ BasicChainOnePeriodicOrbit<S> chainOnePeriodicOrbitIn(const BasicMassChain<S>& c
       orbit.refusal = OnePeriodicRefusal::NotDecided;
       break;
     case ChainContactKind::None:
-    case ChainContactKind::Budget:
       orbit.refusal = OnePeriodicRefusal::NeverReturns;
+      break;
+    case ChainContactKind::Budget:
+      // not searched to T: it may come back there or not (never said "never returns")
+      orbit.refusal = OnePeriodicRefusal::SearchBudget;
       break;
   }
   return orbit;
@@ -130,11 +133,19 @@ std::vector<ChainFamilyRow> chainOnePeriodicFamily(const MassChain& chain, std::
   for (std::int64_t k = 1; k <= count; ++k) periods.push_back(end * double(k) / double(count + 1));
   for (int k = 8; k <= 30; ++k) periods.push_back(end * (1 - std::ldexp(1.0, -k)));
   std::sort(periods.begin(), periods.end());
+  const ChainDynamics dynamics = chainDynamics(chain);  // (made once: each row's data from it)
   std::vector<ChainFamilyRow> rows;
   rows.reserve(periods.size());
+  int outOfBudget = 0;
   for (double T : periods) {
     if (stop.stop_requested()) break;
-    rows.push_back({T, chainOnePeriodicOrbit(chain, T)});
+    rows.push_back({T, chainOnePeriodicOrbitIn<double>(chain, dynamics, T)});
+    // a chain whose first rows' searches all ran out of windows is one no row can be searched
+    // for (each costs the whole budget, a family of them minutes): stop there
+    const OnePeriodicRefusal refusal = rows.back().orbit.refusal;
+    if (refusal == OnePeriodicRefusal::SearchBudget) ++outOfBudget;
+    if (refusal == OnePeriodicRefusal::None || refusal == OnePeriodicRefusal::NotDecided) outOfBudget = -1000000;
+    if (outOfBudget >= kFamilySearchBudgetRows) break;
   }
   return rows;
 }

@@ -57,6 +57,11 @@ struct ChainFamilyRow {
   double T = 0;
   ChainOnePeriodicOrbit orbit;
 };
+/// A family in which kFamilySearchBudgetRows rows ran out of the search budget
+/// (OnePeriodicRefusal::SearchBudget) before any row was admissible or undecided stops there: the
+/// flights of such a chain (a stiff one, its fast modes turning millions of times a period) cannot
+/// be searched.
+constexpr int kFamilySearchBudgetRows = 8;
 std::vector<ChainFamilyRow> chainOnePeriodicFamily(const MassChain& chain, std::int64_t count,
                                                    std::stop_token stop = {});
 

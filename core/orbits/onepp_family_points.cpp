@@ -170,6 +170,7 @@ class Scanner {
     switch (beyond.refusal) {
       case OnePeriodicRefusal::None:  // data admissible beyond, but their orbit does not close in S
       case OnePeriodicRefusal::NotDecided:
+      case OnePeriodicRefusal::SearchBudget:
       case OnePeriodicRefusal::MultipleOfPeriod:
       case OnePeriodicRefusal::BadPeriod:
         // where the part really ends is not known in S (a higher precision moves this point)

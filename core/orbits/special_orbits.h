@@ -50,6 +50,8 @@ enum class OnePeriodicRefusal {
   NotDecided,        ///< the flight's return cannot be decided in this precision
   NeverReturns,      ///< the flight from the data never comes back to the stop
   ReturnsEarly,      ///< the flight touches or crosses the stop before T
+  SearchBudget,      ///< the certified search for the flight's return ran out of its windows
+                     ///< before T (a stiff chain's fast modes): undecided, not a refusal of the flight
 };
 
 /// One-impact-per-period (1IPP) orbit of period T (docs/model.md section 5): the one type of a

@@ -136,6 +136,37 @@ TEST(TypedFamily, AChainOfThreeMassesTendsToItsGrazingLimit) {
   EXPECT_EQ(outcome.points.size(), withData);
 }
 
+TEST(TypedFamily, AChainOfThreeMassesLocatesWhereItsStabilityChanges) {
+  // (a chain whose 1IPP family has period doublings, folds and Krein collisions)
+  const FamilyOutcome outcome = familyOf(
+      {{"masses", "0.6865,1.9630,0.8236"}, {"springs", "0.8423,1.0745,0.7486"}, {"stop-mass", "2"}}, 300);
+  ASSERT_EQ(outcome.status, FamilyStatus::Computed) << outcome.problem;
+  const auto& family = std::get<ChainFamily>(outcome.of);
+  int kinds[4] = {};
+  double last = 0;
+  for (const core::ChainBifurcation<double>& b : family.bifurcations) {
+    ++kinds[int(b.kind)];
+    EXPECT_GT(b.T, last) << "in increasing T";
+    EXPECT_LT(b.periodError, 1e-11 * b.T);
+    last = b.T;
+    // the class of the rows on either side differs: the change is between them
+    double before = NAN, after = NAN;
+    for (std::size_t row = 0; row < outcome.rows(); ++row) {
+      const double cls = at(outcome, row, "class");
+      if (std::isnan(cls)) continue;
+      if (at(outcome, row, "T") < b.T) before = cls;
+      if (at(outcome, row, "T") > b.T && std::isnan(after)) after = cls;
+    }
+    EXPECT_FALSE(std::isnan(before) || std::isnan(after)) << "T " << b.T;
+  }
+  EXPECT_GT(kinds[int(core::ChainBifurcationKind::PeriodDoubling)], 0);
+  EXPECT_GT(kinds[int(core::ChainBifurcationKind::Fold)], 0);
+  EXPECT_GT(kinds[int(core::ChainBifurcationKind::KreinCollision)], 0);
+  // and the document lists them
+  const JsonValue document = familyDocument(outcome, std::nullopt);
+  EXPECT_EQ(document.find("bifurcations")->items.size(), family.bifurcations.size());
+}
+
 TEST(TypedFamily, RefusalsComeBeforeAnyOfItIsComputed) {
   // what the request alone decides, before a chain is read or designed
   FamilyRequest request;

@@ -182,6 +182,17 @@ FamilyOutcome chainFamily(const PreparedMassChain& prepared, const FamilyRequest
     return outcome;
   }
   const core::ChainDynamics dynamics = core::chainDynamics(chain);
+  if (!rows.empty() && rows.back().orbit.refusal == core::OnePeriodicRefusal::SearchBudget) {
+    // (the family stopped after its first rows: none of them could be searched)
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "family --onepp: the returns of this chain's flights cannot be searched within the budget "
+                  "(its fastest mode turns %.2g times per slowest period; %d rows ran out of it before any was "
+                  "admissible): no family",
+                  dynamics.omega.maxCoeff() / dynamics.omega.minCoeff(), core::kFamilySearchBudgetRows);
+    outcome.problem = text;
+    return outcome;
+  }
   const double end = core::chainOnePeriodicEnd(chain);
   // the grazing limit of Theorem 2.1: the GLO the data tend to as T -> T_max
   ChainFamily described;
@@ -341,7 +352,8 @@ V chainDocument(const FamilyOutcome& outcome, const ChainFamily& family, const s
                           "hyperbolic, 2 flip-hyperbolic, 3 complex-quadruplet, 4 undecided; in the CSV those "
                           "words); muK_re, muK_im its 2N - 2 "
                           "nontrivial multipliers by angle, muK_krein their Krein signatures (+1, -1, 0); "
-                          "empty on the other rows (docs/model.md section 12)")}};
+                          "empty on the other rows, and on an admissible row whose path does not close to its "
+                          "rounding (docs/model.md section 12)")}};
   if (files) {
     fields.emplace_back("files", V::object({{"csv", V::of(*files + ".csv")},
                                             {"npy", V::of(*files + ".npy (float64, rows x " +

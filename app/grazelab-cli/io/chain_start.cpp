@@ -65,6 +65,8 @@ const char* onePeriodicRefusalWords(core::OnePeriodicRefusal refusal) {
     case core::OnePeriodicRefusal::NotDecided: return "its return at T cannot be decided in this precision (V too small)";
     case core::OnePeriodicRefusal::NeverReturns: return "the flight from its data never returns to the stop";
     case core::OnePeriodicRefusal::ReturnsEarly: return "the flight from its data meets the stop before T";
+    case core::OnePeriodicRefusal::SearchBudget:
+      return "the search for its flight's return ran out of its windows before T (a stiff chain's fast modes)";
   }
   return "unknown";
 }

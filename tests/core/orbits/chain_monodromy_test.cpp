@@ -242,6 +242,39 @@ TEST(ChainMonodromy, SymplecticPairedAndWithinItsBarsOfBinary128) {
   EXPECT_GT(quadruplets, 0) << "chains of three masses and more leave the circle as quadruplets too";
 }
 
+// Two algorithms that must agree: the monodromy built from the run's own path (legsOf: sigma
+// from each impact's state) and from the closed form's sigma, each within the other's bars,
+// away from multiples of a mode's period (where the path's sigma loses its digits).
+TEST(ChainMonodromy, ThePathsMonodromyIsTheClosedFormsWithinItsBars) {
+  std::mt19937 rng(31);
+  int compared = 0;
+  for (int c = 0; c < 8; ++c) {
+    const MassChain chain = randomChain(rng, 2 + c % 5);
+    const ReadyChain ready = readyChain(chain);
+    for (const ChainOnePeriodicStability<double>& found : orbitsOf(chain, 9)) {
+      const ChainPeriodicOrbit path = evaluateChainOrbit(ready, found.orbit.state, 1, 1e-9);
+      ASSERT_TRUE(path.admissible());
+      const auto& closed = found.orbit.monodromy.multipliers;
+      const auto& walked = path.monodromy.multipliers;
+      ASSERT_EQ(walked.size(), closed.size());
+      for (const ChainMultiplier<double>& m : closed) {
+        double nearest = INFINITY;
+        double bars = 0;
+        for (const ChainMultiplier<double>& w : walked) {
+          if (std::abs(valueOf(w) - valueOf(m)) < nearest) {
+            nearest = std::abs(valueOf(w) - valueOf(m));
+            bars = w.error + m.error;
+          }
+        }
+        EXPECT_LE(nearest, bars) << "T " << found.orbit.period;
+      }
+      EXPECT_LT(path.periodicityResidual, 1e-12);
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 15);
+}
+
 // A complex quadruplet (impossible for two masses): lambda, conj(lambda), 1/lambda and
 // 1/conj(lambda), all off the circle and off the real axis, and the class says so.
 TEST(ChainMonodromy, AQuadrupletIsReportedAsSuch) {

@@ -104,3 +104,26 @@ TEST(ChainOnePeriodic, RefusesPeriodsWithoutAnOrbit) {
 
 }  // namespace
 }  // namespace grazelab::core
+
+namespace grazelab::core {
+namespace {
+
+// Springs 1e25 apart: the certified search for a flight's return runs out of its windows long
+// before T. That is undecided (SearchBudget), never "the flight never returns"; and a family
+// of such a chain stops once 8 rows ran out of it before any was admissible.
+TEST(ChainOnePeriodic, AReturnTheSearchCannotReachIsOutOfBudgetNotNeverReturns) {
+  const MassChain stiff{{1, 1e-25, 1}, {1e25, 1, 1}, 0, 0, 1.0};
+  const std::vector<ChainFamilyRow> rows = chainOnePeriodicFamily(stiff, 2000);
+  ASSERT_FALSE(rows.empty());
+  EXPECT_LT(rows.size(), 2023u) << "it stops once 8 rows ran out of the budget before any was admissible";
+  int outOfBudget = 0;
+  for (const ChainFamilyRow& row : rows) {
+    EXPECT_NE(row.orbit.refusal, OnePeriodicRefusal::NeverReturns) << "T " << row.T;
+    outOfBudget += row.orbit.refusal == OnePeriodicRefusal::SearchBudget;
+  }
+  EXPECT_EQ(outOfBudget, kFamilySearchBudgetRows);
+  EXPECT_EQ(rows.back().orbit.refusal, OnePeriodicRefusal::SearchBudget);
+}
+
+}  // namespace
+}  // namespace grazelab::core
