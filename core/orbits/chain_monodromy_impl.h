@@ -373,9 +373,12 @@ ChainMonodromy<S> chainMonodromy(const BasicChainDynamics<S>& dynamics, const Ba
     out.multipliers.push_back(m);
   }
   out.detDefect = abs(determinant - std::complex<S>(1, 0));
+  // by angle to 1e-9 of a radian, then modulus: lambda and 1 / conj(lambda) of a quadruplet lie on
+  // one ray, their computed angles apart by rounding only, and keep one order however scaled
   std::sort(out.multipliers.begin(), out.multipliers.end(), [](const ChainMultiplier<S>& x, const ChainMultiplier<S>& y) {
-    const S ax = angleOf(x);
-    const S ay = angleOf(y);
+    using std::llround;
+    const long long ax = llround(toDouble(angleOf(x)) * 1e9);
+    const long long ay = llround(toDouble(angleOf(y)) * 1e9);
     return ax != ay ? ax < ay : modulusOf(x) < modulusOf(y);
   });
   out.stability = classify(out.multipliers);

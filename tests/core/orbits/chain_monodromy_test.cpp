@@ -275,6 +275,39 @@ TEST(ChainMonodromy, ThePathsMonodromyIsTheClosedFormsWithinItsBars) {
   EXPECT_GT(compared, 15);
 }
 
+// Scale invariance (docs/model.md section 7): masses and springs times 1e6 (the same
+// frequencies) and the gap times 1e-6 leave the multipliers, their class and signatures as they are.
+TEST(ChainMonodromy, ScaledChainsHaveTheSameMultipliers) {
+  std::mt19937 rng(77);
+  int compared = 0;
+  for (int c = 0; c < 6; ++c) {
+    const MassChain chain = randomChain(rng, 3 + c % 3);
+    MassChain scaled = chain;
+    for (double& m : scaled.masses) m *= 1e6;
+    for (double& k : scaled.springs) k *= 1e6;
+    scaled.rightSpring *= 1e6;
+    scaled.gap *= 1e-6;
+    const ReadyChain ready = readyChain(scaled);
+    for (const ChainOnePeriodicStability<double>& found : orbitsOf(chain, 9)) {
+      const auto other = chainOnePeriodicStability(ready, found.orbit.period);
+      ASSERT_TRUE(other.orbit.admissible()) << "T " << found.orbit.period;
+      const auto& a = found.orbit.monodromy;
+      const auto& b = other.orbit.monodromy;
+      ASSERT_EQ(a.multipliers.size(), b.multipliers.size());
+      EXPECT_EQ(a.stability, b.stability);
+      for (std::size_t i = 0; i < a.multipliers.size(); ++i) {
+        EXPECT_NEAR(std::abs(valueOf(a.multipliers[i]) - valueOf(b.multipliers[i])), 0.0,
+                    a.multipliers[i].error + b.multipliers[i].error)
+            << "T " << found.orbit.period << ": " << a.multipliers[i].re << " " << a.multipliers[i].im << " against "
+            << b.multipliers[i].re << " " << b.multipliers[i].im;
+        EXPECT_EQ(a.multipliers[i].krein, b.multipliers[i].krein);
+      }
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 10);
+}
+
 // A complex quadruplet (impossible for two masses): lambda, conj(lambda), 1/lambda and
 // 1/conj(lambda), all off the circle and off the real axis, and the class says so.
 TEST(ChainMonodromy, AQuadrupletIsReportedAsSuch) {
