@@ -496,7 +496,7 @@ py::object orbitCommand(const std::vector<std::pair<std::string, std::optional<s
   if (!request) throw Refused(error.simplified().toStdString());
   return typedDocument(
       [&](std::stop_token token, std::string& refusal) -> std::optional<grazelab::cli::JsonValue> {
-        const auto chain = grazelab::cli::orbitChainOf(options, *request, token);
+        const auto chain = grazelab::cli::orbitChainOf(options, token);
         if (!chain.value) {
           refusal = chain.error.toStdString();
           return std::nullopt;

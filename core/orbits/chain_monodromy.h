@@ -23,6 +23,39 @@ namespace grazelab::core {
 template <typename S>
 using ChainMatrix = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
 
+/// The units the checks and error bars are in: lengths over the gap, velocities over the slowest
+/// moving mode's frequency times the gap (a chain's matrices are then of order one whatever its
+/// units, as in docs/model.md section 7).
+template <typename S>
+struct ChainStateScale {
+  S length = 1;
+  S speed = 1;
+
+  explicit ChainStateScale(const BasicChainDynamics<S>& dynamics) : length(dynamics.gap) {
+    S slowest = 0;
+    for (Eigen::Index j = 0; j < dynamics.omega.size(); ++j) {
+      if (dynamics.omega[j] > 0 && (slowest == 0 || dynamics.omega[j] < slowest)) slowest = dynamics.omega[j];
+    }
+    speed = (slowest > 0 ? slowest : S(1)) * length;
+  }
+  // D x: the state in these units
+  ChainVector<S> scaled(const ChainVector<S>& x) const {
+    const Eigen::Index n = x.size() / 2;
+    ChainVector<S> out(x.size());
+    out.head(n) = x.head(n) / length;
+    out.tail(n) = x.tail(n) / speed;
+    return out;
+  }
+  // D A D^-1: a matrix on the state in these units
+  ChainMatrix<S> scaled(const ChainMatrix<S>& a) const {
+    const Eigen::Index n = a.rows() / 2;
+    ChainMatrix<S> out = a;
+    out.topRightCorner(n, n) *= speed / length;
+    out.bottomLeftCorner(n, n) *= length / speed;
+    return out;
+  }
+};
+
 /// The flow matrix of a free flight of duration `tau` on x = (u, v) (2N, physical units):
 /// x(tau) = Phi x(0), from the chain's modes (a mode of frequency 0 moves linearly in time).
 template <typename S>
@@ -98,6 +131,11 @@ template <typename S>
 std::vector<MonodromyLeg<S>> legsOf(const BasicChainDynamics<S>& dynamics,
                                     const std::vector<BasicChainEvent<S>>& events);
 
+/// The product S_k Phi(tau_k) ... S_1 Phi(tau_1) along `legs` alone (2N x 2N, physical units): what
+/// Newton's Jacobian needs, without the multipliers.
+template <typename S>
+ChainMatrix<S> chainMonodromyMatrix(const BasicChainDynamics<S>& dynamics, const std::vector<MonodromyLeg<S>>& legs);
+
 /// The monodromy of the periodic path that starts at `start` (just after an impact of the stopped
 /// mass) and goes along `legs` back to it. Each multiplier's error bar is the rounding of the
 /// product times the eigenvalue's condition number, plus how far it moves over each sigma's
@@ -131,6 +169,12 @@ template <typename S>
 BasicChainPeriodicOrbit<S> evaluateChainOrbit(const BasicReadyChain<S>& chain, const BasicChainState<S>& start,
                                               int impacts, const std::type_identity_t<S>& closeTolerance);
 
+/// The path of evaluateChainOrbit without its monodromy: its events, period, energy, residual and
+/// refusal.
+template <typename S>
+BasicChainPeriodicOrbit<S> evaluateChainPath(const BasicReadyChain<S>& chain, const BasicChainState<S>& start,
+                                             int impacts, const std::type_identity_t<S>& closeTolerance);
+
 /// The monodromy of the 1IPP orbit of period T whose state after its impact is `postImpact` (its
 /// closed-form data), from the closed form's sigma (below); the path is not run.
 template <typename S>
@@ -145,7 +189,11 @@ ChainMonodromy<S> chainOnePeriodicMonodromy(const BasicReadyChain<S>& chain, con
 template <typename S>
 struct ChainOnePeriodicStability {
   OnePeriodicRefusal onePeriodic = OnePeriodicRefusal::BadPeriod;
-  BasicChainPeriodicOrbit<S> orbit;
+  BasicChainPeriodicOrbit<S> orbit = [] {  // (no data: no start, no orbit admissible)
+    BasicChainPeriodicOrbit<S> none;
+    none.refusal = OrbitRefusal::BadStart;
+    return none;
+  }();
 };
 template <typename S>
 ChainOnePeriodicStability<S> chainOnePeriodicStability(const BasicReadyChain<S>& chain,

@@ -22,39 +22,6 @@ namespace grazelab::core {
 
 namespace monodromy_detail {
 
-// The units the checks and error bars are in: lengths over the gap, velocities over the slowest
-// moving mode's frequency times the gap (a chain's matrices are then of order one whatever its
-// units, as in docs/model.md section 7).
-template <typename S>
-struct StateScale {
-  S length = 1;
-  S speed = 1;
-
-  explicit StateScale(const BasicChainDynamics<S>& dynamics) : length(dynamics.gap) {
-    S slowest = 0;
-    for (Eigen::Index j = 0; j < dynamics.omega.size(); ++j) {
-      if (dynamics.omega[j] > 0 && (slowest == 0 || dynamics.omega[j] < slowest)) slowest = dynamics.omega[j];
-    }
-    speed = (slowest > 0 ? slowest : S(1)) * length;
-  }
-  // D x: the state in these units
-  ChainVector<S> scaled(const ChainVector<S>& x) const {
-    const Eigen::Index n = x.size() / 2;
-    ChainVector<S> out(x.size());
-    out.head(n) = x.head(n) / length;
-    out.tail(n) = x.tail(n) / speed;
-    return out;
-  }
-  // D A D^-1: a matrix on the state in these units
-  ChainMatrix<S> scaled(const ChainMatrix<S>& a) const {
-    const Eigen::Index n = a.rows() / 2;
-    ChainMatrix<S> out = a;
-    out.topRightCorner(n, n) *= speed / length;
-    out.bottomLeftCorner(n, n) *= length / speed;
-    return out;
-  }
-};
-
 template <typename S>
 ChainVector<S> stacked(const ChainVector<S>& u, const ChainVector<S>& v) {
   ChainVector<S> x(u.size() + v.size());
@@ -154,7 +121,7 @@ using ComplexMatrix = Eigen::Matrix<std::complex<S>, Eigen::Dynamic, Eigen::Dyna
 // (scaled): sign Im(u^H p) in physical u and p = M v; 0 when the form is within `error` of 0
 // (relative to |u| |p|: an eigenvector at a collision, where the form vanishes).
 template <typename S>
-int kreinSignature(const ComplexVector<S>& lifted, const BasicChainDynamics<S>& dynamics, const StateScale<S>& scale,
+int kreinSignature(const ComplexVector<S>& lifted, const BasicChainDynamics<S>& dynamics, const ChainStateScale<S>& scale,
                    const S& error) {
   using std::abs;
   using std::sqrt;
@@ -180,7 +147,7 @@ int kreinSignature(const ComplexVector<S>& lifted, const BasicChainDynamics<S>& 
 // twice that, summed over the legs.
 template <typename S, typename Moved>
 std::vector<S> sigmaMoves(const std::vector<MonodromyLeg<S>>& legs, const ComplexVector<S>& values, Moved movedBy,
-                          const ChainMatrix<S>& phi, const StateScale<S>& scale) {
+                          const ChainMatrix<S>& phi, const ChainStateScale<S>& scale) {
   using std::abs;
   using std::sqrt;
   const auto eigenvalues = [](const ChainMatrix<S>& m) -> ComplexVector<S> {
@@ -281,13 +248,27 @@ std::vector<MonodromyLeg<S>> legsOf(const BasicChainDynamics<S>& dynamics,
 }
 
 template <typename S>
+ChainMatrix<S> chainMonodromyMatrix(const BasicChainDynamics<S>& dynamics, const std::vector<MonodromyLeg<S>>& legs) {
+  const Eigen::Index n = dynamics.mass.size();
+  const Eigen::Index s = dynamics.stop;
+  ChainMatrix<S> m = ChainMatrix<S>::Identity(2 * n, 2 * n);
+  for (const MonodromyLeg<S>& leg : legs) {
+    m = chainFlowMatrix(dynamics, leg.flight) * m;
+    // the saltation's rows: u_s -> -u_s, v_s -> sigma u_s - v_s
+    m.row(n + s) = leg.sigma * m.row(s) - m.row(n + s);
+    m.row(s) *= -1;
+  }
+  return m;
+}
+
+template <typename S>
 ChainMonodromy<S> chainMonodromy(const BasicChainDynamics<S>& dynamics, const BasicChainState<S>& start,
                                  const std::vector<MonodromyLeg<S>>& legs) {
   using std::abs;
   using std::sqrt;
   const Eigen::Index n = start.u.size();
   const Eigen::Index s = dynamics.stop;
-  const StateScale<S> scale(dynamics);
+  const ChainStateScale<S> scale(dynamics);
   const S eps = std::numeric_limits<S>::epsilon();
   ChainMonodromy<S> out;
   // the product, and each leg's factors for the product again with its sigma moved
@@ -385,7 +366,6 @@ ChainMonodromy<S> chainMonodromy(const BasicChainDynamics<S>& dynamics, const Ba
   return out;
 }
 
-// The path of evaluateChainOrbit without its monodromy (a 1IPP orbit's comes from its closed form).
 template <typename S>
 BasicChainPeriodicOrbit<S> evaluateChainPath(const BasicReadyChain<S>& chain, const BasicChainState<S>& start,
                                              int impacts, const std::type_identity_t<S>& closeTolerance) {
@@ -415,7 +395,7 @@ BasicChainPeriodicOrbit<S> evaluateChainPath(const BasicReadyChain<S>& chain, co
       return orbit;
     }
   }
-  const StateScale<S> scale(chain.dynamics);
+  const ChainStateScale<S> scale(chain.dynamics);
   const ChainVector<S> x0 = scale.scaled(stacked<S>(start.u, start.v));
   // relative to the state's size (at least the gap's and the slowest frequency's scale)
   orbit.periodicityResidual =
@@ -511,6 +491,9 @@ ChainOnePeriodicStability<S> chainOnePeriodicStability(const BasicReadyChain<S>&
                                                   const ChainVector<S>&);                                          \
   template ChainMonodromy<S> chainMonodromy<S>(const BasicChainDynamics<S>&, const BasicChainState<S>&,            \
                                                const std::vector<MonodromyLeg<S>>&);                               \
+  template ChainMatrix<S> chainMonodromyMatrix<S>(const BasicChainDynamics<S>&, const std::vector<MonodromyLeg<S>>&); \
+  template BasicChainPeriodicOrbit<S> evaluateChainPath<S>(const BasicReadyChain<S>&, const BasicChainState<S>&,   \
+                                                           int, const S&);                                         \
   template std::vector<MonodromyLeg<S>> legsOf<S>(const BasicChainDynamics<S>&,                                    \
                                                   const std::vector<BasicChainEvent<S>>&);                         \
   template BasicChainPeriodicOrbit<S> evaluateChainOrbit<S>(const BasicReadyChain<S>&, const BasicChainState<S>&,  \

@@ -462,17 +462,18 @@ def _simulated(result, decimals):
 def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[float] = None,
           gap: float = 1.0, branch: _Optional[str] = None, precision: str = "auto",
           onepp: _Optional[float] = None, impacts: _Optional[int] = None, energy: _Optional[float] = None,
-          guess: _Optional[_Sequence[float]] = None, masses: _Optional[_Sequence[float]] = None,
+          period: _Optional[float] = None, guess: _Optional[_Sequence[float]] = None,
+          masses: _Optional[_Sequence[float]] = None,
           springs: _Optional[_Sequence[float]] = None, right_spring: _Optional[float] = None,
           stop_mass: _Optional[int] = None, frequencies: _Optional[_Sequence[int]] = None,
           design_branch: _Optional[int] = None) -> Result:
     """One periodic impacting orbit with its exact multipliers (``grazelab-cli orbit``): the
     1IPP orbit of period ``onepp``, or the orbit with ``impacts`` impacts per period at energy
-    ``energy`` found by Newton from ``guess``. Raises ValueError when Newton does not converge
+    ``energy`` (or of period ``period``) found by Newton from ``guess``. Raises ValueError when Newton does not converge
     or the orbit is not admissible (the command line's message). In long or quad precision the
     numbers are also under ``decimal`` as exact text. ``multipliers`` is a NumPy complex array
-    (the JSON's [re, im] pairs). The 1IPP orbit of any other chain (N masses, a right wall, a
-    stop on any mass) comes from its 2N x 2N monodromy: ``multipliers`` then holds its 2N - 2
+    (the JSON's [re, im] pairs). The orbits of any other chain (N masses, a right wall, a
+    stop on any mass), and those at a fixed ``period``, come from its 2N x 2N monodromy: ``multipliers`` then holds its 2N - 2
     nontrivial multipliers by angle, with ``multiplier_errors``, ``on_circle`` and ``krein`` (the
     Krein signature, +1, -1 or 0) as NumPy arrays beside them, and ``stability`` one of
     elliptic, hyperbolic, flip-hyperbolic, complex-quadruplet and undecided.
@@ -481,12 +482,18 @@ def orbit(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
 {chain}{precision}    onepp: the period T of the one-impact-per-period orbit [time] (as in ``simulate``).
     impacts: impacts per period K of the orbit sought.
     energy: its energy E [energy].
-    guess: (u1, v1), a guess of the orbit's point just after an impact on H.
+    period: or its period T [time] (with ``impacts``).
+    guess: a guess of the orbit's point just after an impact on H: u then v of every mass but
+        the stopped one ((u1, v1) for two masses), and with ``period`` the stopped mass's
+        speed v_s < 0 last.
 {two_mass_chain}"""
-    options = _chain_keywords(dict(precision=precision, impacts=impacts, energy=energy, guess=guess),
+    options = _chain_keywords(dict(precision=precision, impacts=impacts, energy=energy, period=period,
+                                   guess=guess),
                               dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch),
                               masses, springs, right_spring, stop_mass, frequencies, design_branch)
     if onepp is not None:
+        if period is not None:
+            raise ValueError("orbit: give onepp (the 1IPP orbit's period) or period (with impacts), not both")
         options.update(onepp=True, period=onepp)
     result = _typed(_orbit, options, ("onepp",))
     result["multipliers"] = _convert.multipliers(result["multipliers"])

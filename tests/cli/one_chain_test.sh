@@ -124,7 +124,44 @@ EXPECT_WORD="sum to 1" expect_invalid simulate --masses 1,0.5 --frequencies 2:1 
 
 # chains the two-mass commands do not compute yet: one line, exit 2, before any design search
 EXPECT_WORD="two-mass chain stopped on mass 2" expect_invalid modes --masses 1,0.5 --springs 1,0.5 --stop-mass 1 --out "$work/x/m"
-EXPECT_WORD="two-mass chain stopped on mass 2" expect_invalid orbit --impacts 2 --energy 1 --guess 0,0 --masses 1,0.2,0.05 --frequencies 3:2:1
+# kIPP orbits of any chain by Newton on the return map (core/orbits/chain_kipp.h): the guess is u
+# then v of every mass but the stopped one (and v_s last at a fixed period)
+EXPECT_WORD="give 4 numbers" expect_invalid orbit --impacts 2 --energy 1 --guess 0,0 --masses 1,0.2,0.05 --frequencies 3:2:1
+EXPECT_WORD="give 5 numbers" expect_invalid orbit --impacts 1 --period 7 --guess 0.1,0.3,0,0 --masses 1,0.2,0.05 --frequencies 3:2:1
+EXPECT_WORD="below 0" expect_invalid orbit --impacts 1 --period 7 --guess 0.1,0.3,0,0,0.4 --masses 1,0.2,0.05 --frequencies 3:2:1
+# a 2IPP orbit of three masses stopped on the middle one, born at a period doubling of the 1IPP
+# family (T* = 5.3118): symmetric (v1 = v3 = 0 at its impacts), hyperbolic
+three="--masses 0.6865,1.963,0.8236 --springs 0.8423,1.0745,0.7486 --stop-mass 2"
+expect_ok orbit --impacts 2 --energy 23.412611915561559 --guess 1.28,-6.54,0.01,-0.01 $three || exit 1
+python3 - "$out" <<'PY' || fail "the 2IPP orbit of three masses"
+import json, sys
+o = json.load(open(sys.argv[1]))
+assert o['impacts'] == 2 and len(o['events']) == 2 and all(e['type'] == 'impact' for e in o['events']), o
+assert abs(o['period'] - 10.623624493363227) < 1e-9 and abs(o['energy'] - 23.412611915561559) < 1e-12, o
+a, b = (e['u'] for e in o['events'])
+assert max(abs(x - y) for x, y in zip(a, b)) > 0.1, (a, b)  # two impacts, not one orbit twice
+assert o['stability'] == 'hyperbolic' and len(o['multipliers']) == 4, o
+mu = [complex(re, im) for re, im in o['multipliers']]
+real = sorted(z.real for z in mu if z.imag == 0)
+assert len(real) == 2 and abs(real[0] * real[1] - 1) < 1e-8, mu  # mu and 1/mu
+assert o['checks']['symplectic'] < 1e-13 and o['checks']['periodicity_residual'] < 1e-12, o['checks']
+PY
+# the 1IPP orbit by Newton, at its energy and at its period, is the closed form's
+expect_ok orbit --onepp --period 7 --masses 1,0.2,0.05 --frequencies 3:2:1 || exit 1
+cp "$out" "$work/onepp.json"
+expect_ok orbit --impacts 1 --energy 0.06997844762300173 --guess 0.13,0.3,0.01,0.01 --masses 1,0.2,0.05 --frequencies 3:2:1 || exit 1
+cp "$out" "$work/byenergy.json"
+expect_ok orbit --impacts 1 --period 7 --guess 0.13,0.3,0.01,0.01,-0.4 --masses 1,0.2,0.05 --frequencies 3:2:1 || exit 1
+python3 - "$work/onepp.json" "$work/byenergy.json" "$out" <<'PY' || fail "the 1IPP orbit by Newton"
+import json, sys
+exact, *found = (json.load(open(f)) for f in sys.argv[1:])
+for o in found:
+    assert abs(o['period'] - 7) < 1e-12 and abs(o['energy'] - exact['energy']) < 1e-14, o
+    for key in ('u', 'v'):
+        assert max(abs(x - y) for x, y in zip(o['state'][key], exact['state'][key])) < 1e-12, o['state']
+    for (re, im), (re0, im0), bar in zip(o['multipliers'], exact['multipliers'], o['multiplier_errors']):
+        assert abs(complex(re, im) - complex(re0, im0)) < 1e-10 + bar, o['multipliers']
+PY
 # the 1IPP orbit of any chain, by its 2N x 2N monodromy (docs/model.md section 12)
 expect_ok orbit --onepp --period 7 --masses 1,0.2,0.05 --frequencies 3:2:1 || exit 1
 python3 - "$out" <<'PY' || fail "the 1IPP orbit of three masses"

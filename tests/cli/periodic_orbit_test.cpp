@@ -56,9 +56,9 @@ void newtonFindsTheClosedForm(const Options& chainOptions, double fractionOfT2) 
   std::snprintf(text, sizeof text, "%.17g", orbit.energy);
   newton.energy = text;
   std::snprintf(text, sizeof text, "%.17g", orbit.state.u1 * (1 + 1e-4));
-  newton.guess[0] = text;
+  newton.guess.push_back(text);
   std::snprintf(text, sizeof text, "%.17g", orbit.state.v1 + 1e-4 * std::abs(orbit.state.u1));
-  newton.guess[1] = text;
+  newton.guess.push_back(text);
   newton.precision = PrecisionChoice::Double;
   const OrbitOutcome byNewton = solveOrbit(*chain, newton);
   ASSERT_EQ(byNewton.status, OrbitStatus::Found) << byNewton.problem;

@@ -361,9 +361,26 @@ def test_the_orbit_of_three_masses_is_the_cli_json(cli_json):
     assert result.stability == "elliptic"
 
 
-def test_two_mass_commands_refuse_other_chains_in_words():
-    with pytest.raises(ValueError, match="two-mass chain stopped on mass 2"):
+def test_a_newton_orbit_of_three_masses_is_the_cli_json(cli_json):
+    chain = dict(masses=[0.6865, 1.963, 0.8236], springs=[0.8423, 1.0745, 0.7486], stop_mass=2)
+    result = gl.orbit(impacts=2, energy=23.412611915561559, guess=(1.28, -6.54, 0.01, -0.01), **chain)
+    expected = cli_json("orbit", "--impacts", "2", "--energy", "23.412611915561559", "--guess=1.28,-6.54,0.01,-0.01",
+                        "--masses", "0.6865,1.963,0.8236", "--springs", "0.8423,1.0745,0.7486", "--stop-mass", "2")
+    assert [[m.real, m.imag] for m in result.pop("multipliers")] == expected.pop("multipliers")
+    for name in ("multiplier_errors", "on_circle", "krein"):
+        assert result.pop(name).tolist() == expected.pop(name)
+    assert result == expected
+    assert result.impacts == 2 and result.stability == "hyperbolic"
+    at_period = gl.orbit(impacts=1, period=7, guess=(0.13, 0.3, 0.01, 0.01, -0.4), masses=[1, 0.2, 0.05],
+                         frequencies=(3, 2, 1))
+    assert abs(at_period.period - 7) < 1e-12
+    with pytest.raises(ValueError, match="give 4 numbers"):
         gl.orbit(impacts=2, energy=1.0, guess=(0, 0), masses=[1, 0.2, 0.05], frequencies=(3, 2, 1))
+    with pytest.raises(ValueError, match="not both"):
+        gl.orbit(onepp=7, period=7, masses=[1, 0.2, 0.05], frequencies=(3, 2, 1))
+
+
+def test_two_mass_commands_refuse_other_chains_in_words():
     with pytest.raises(ValueError, match="two-mass chain stopped on mass 2"):
         gl.modes(masses=[1, 0.5], springs=[1, 0.5], stop_mass=1)
     with pytest.raises(ValueError, match="given by masses"):

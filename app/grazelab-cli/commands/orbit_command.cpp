@@ -21,7 +21,10 @@ void addOrbitOptions(QCommandLineParser& parser) {
       {"period", "orbit --onepp: the period T of the 1IPP orbit.", "T"},
       {"impacts", "orbit: impacts per period K of the orbit sought.", "K"},
       {"energy", "orbit: the energy E of the orbit sought.", "E"},
-      {"guess", "orbit: a guess of the orbit's point just after an impact on H.", "u1,v1"},
+      {"guess",
+       "orbit --impacts: a guess of the orbit's point just after an impact on H: u then v of every mass but the "
+       "stopped one (two masses: u1,v1), and at a fixed --period the stopped mass's v_s < 0 last.",
+       "U,V"},
   });
 }
 
@@ -32,15 +35,15 @@ std::optional<OrbitRequest> readOrbitRequest(const OptionValues& options, QStrin
   }
   const bool onePeriodic = options.isSet("onepp");
   if (onePeriodic == options.isSet("impacts")) {
-    error = "orbit: give --onepp --period T, or --impacts K --energy E --guess U1,V1";
+    error = "orbit: give --onepp --period T, or --impacts K --energy E (or --period T) --guess U,V";
     return std::nullopt;
   }
   if (onePeriodic && (!options.isSet("period") || options.isSet("energy") || options.isSet("guess"))) {
     error = "orbit --onepp: give --period T (and no --energy or --guess)";
     return std::nullopt;
   }
-  if (!onePeriodic && (!options.isSet("energy") || !options.isSet("guess") || options.isSet("period"))) {
-    error = "orbit --impacts K: give --energy E and --guess U1,V1 (and no --period)";
+  if (!onePeriodic && (options.isSet("energy") == options.isSet("period") || !options.isSet("guess"))) {
+    error = "orbit --impacts K: give --guess U,V and one of --energy E (a fixed energy) or --period T (a fixed period)";
     return std::nullopt;
   }
   OrbitRequest request;
@@ -58,12 +61,8 @@ std::optional<OrbitRequest> readOrbitRequest(const OptionValues& options, QStrin
     return std::nullopt;
   }
   request.energy = options.value("energy").toStdString();
-  const QStringList guess = options.value("guess").split(',');
-  if (guess.size() != 2) {
-    error = QStringLiteral("--guess: '%1' is not two numbers u1,v1").arg(options.value("guess"));
-    return std::nullopt;
-  }
-  request.guess = {guess[0].trimmed().toStdString(), guess[1].trimmed().toStdString()};
+  request.period = options.value("period").toStdString();
+  for (const QString& number : options.value("guess").split(',')) request.guess.push_back(number.trimmed().toStdString());
   return request;
 }
 
@@ -73,15 +72,14 @@ Parsed<std::shared_ptr<const PreparedMassChain>> twoMassChainOf(const OptionValu
   return recentChain(options, std::move(stop));
 }
 
-Parsed<std::shared_ptr<const PreparedMassChain>> orbitChainOf(const OptionValues& options, const OrbitRequest& request,
-                                                              std::stop_token stop) {
-  return request.impacts == 0 ? recentChain(options, std::move(stop)) : twoMassChainOf(options, std::move(stop));
+Parsed<std::shared_ptr<const PreparedMassChain>> orbitChainOf(const OptionValues& options, std::stop_token stop) {
+  return recentChain(options, std::move(stop));
 }
 
 int runOrbit(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {
   const std::optional<OrbitRequest> request = readOrbitRequest(options, error);
   if (!request) return kExitInvalidInput;
-  const auto chain = orbitChainOf(options, *request, stop);
+  const auto chain = orbitChainOf(options, stop);
   if (!chain.value) {
     error = chain.error;
     return chain.error.isEmpty() ? kExitInterrupted : kExitInvalidInput;  // (empty: the design was interrupted)

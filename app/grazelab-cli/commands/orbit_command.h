@@ -37,9 +37,7 @@ std::optional<OrbitRequest> readOrbitRequest(const OptionValues& options, QStrin
 /// read once in each precision asked for. An interrupted design gives neither a chain nor an
 /// error.
 Parsed<std::shared_ptr<const PreparedMassChain>> twoMassChainOf(const OptionValues& options, std::stop_token stop = {});
-/// The chain of `orbit`: any chain for a 1IPP orbit (--onepp), a two-mass one (twoMassChainOf)
-/// for an orbit Newton finds (--impacts).
-Parsed<std::shared_ptr<const PreparedMassChain>> orbitChainOf(const OptionValues& options, const OrbitRequest& request,
-                                                              std::stop_token stop = {});
+/// The chain of `orbit`: any chain, read and checked once (recentChain).
+Parsed<std::shared_ptr<const PreparedMassChain>> orbitChainOf(const OptionValues& options, std::stop_token stop = {});
 
 }  // namespace grazelab::cli

@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "commands/orbit_json.h"
+#include "core/orbits/chain_kipp.h"
 #include "core/orbits/onepp_family_points.h"
 #include "core/version.h"
 #include "io/chain_start.h"
@@ -142,21 +143,75 @@ const char* orbitRefusalWords(core::OrbitRefusal refusal) {
   return "unknown";
 }
 
-// The 1IPP orbit of period request.period of any chain, in precision S, by its 2N x 2N monodromy.
+// The kIPP orbit Newton finds on the return map of any chain (core/orbits/chain_kipp.h) from the
+// request's guess, at its fixed energy or period, in precision S.
 template <typename S>
-OrbitOutcome chainOrbitIn(const PreparedMassChain& prepared, const OrbitRequest& request) {
+OrbitOutcome chainNewtonIn(const core::BasicReadyChain<S>& ready, const OrbitRequest& request, std::stop_token stop) {
   OrbitOutcome outcome;
   outcome.precision = core::precisionOf<S>();
-  if (request.impacts != 0) {
-    outcome.problem = "orbit --impacts: orbits of several impacts are found by Newton on the note's two-mass chain "
-                      "only so far; --onepp --period T gives the 1IPP orbit of any chain";
+  const bool atPeriod = request.energy.empty();
+  const core::ChainOrbitConstraint fixed = atPeriod ? core::ChainOrbitConstraint::Period : core::ChainOrbitConstraint::Energy;
+  const std::optional<S> value = numberIn<S>(atPeriod ? request.period : request.energy, atPeriod ? "period" : "energy",
+                                             outcome.problem);
+  if (!value) return outcome;
+  if (!(*value > 0)) {
+    outcome.problem = std::string(atPeriod ? "--period: '" + request.period + "' is not a positive period"
+                                           : "--energy: '" + request.energy + "' is not a positive energy");
     return outcome;
   }
+  // the guess: u then v of every mass but the stopped one, and at a fixed period v_s last
+  const Eigen::Index n = ready.dynamics.mass.size();
+  const Eigen::Index s = ready.dynamics.stop;
+  const std::size_t expected = std::size_t(2 * n - 2 + (atPeriod ? 1 : 0));
+  if (request.guess.size() != expected) {
+    outcome.problem = "--guess: give " + std::to_string(expected) + " numbers: u then v of every mass but the stopped one (mass " +
+                      std::to_string(s + 1) + ")" + (atPeriod ? ", then its speed v_s < 0 just after the impact" : "");
+    return outcome;
+  }
+  core::BasicChainState<S> guess{core::ChainVector<S>::Zero(n), core::ChainVector<S>::Zero(n)};
+  guess.u[s] = ready.dynamics.gap;
+  std::size_t next = 0;
+  for (core::ChainVector<S>* part : {&guess.u, &guess.v}) {
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (j == s) continue;
+      const std::optional<S> x = numberIn<S>(request.guess[next++], "guess", outcome.problem);
+      if (!x) return outcome;
+      (*part)[j] = *x;
+    }
+  }
+  if (atPeriod) {
+    const std::optional<S> vs = numberIn<S>(request.guess[next], "guess", outcome.problem);
+    if (!vs) return outcome;
+    if (!(*vs < 0)) {
+      outcome.problem = "--guess: the stopped mass's speed just after the impact must be below 0, not " + request.guess[next];
+      return outcome;
+    }
+    guess.v[s] = *vs;
+  }
+  core::ChainOrbitSearch<S> search = core::findChainOrbit(ready, guess, request.impacts, fixed, *value, std::move(stop));
+  if (!search.orbit) {
+    outcome.problem = "orbit: " + std::string(core::toString(search.problem));
+    if (search.refusal != core::OrbitRefusal::None) outcome.problem += std::string(": ") + orbitRefusalWords(search.refusal);
+    if (search.refusal == core::OrbitRefusal::Undecided) outcome.status = OrbitStatus::Undecided;
+    return outcome;
+  }
+  outcome.status = OrbitStatus::Found;
+  outcome.found = FoundChainOrbit<S>{ready.numbers, ready.dynamics.period, std::move(*search.orbit)};
+  return outcome;
+}
+
+// The orbit of any chain in precision S: the 1IPP orbit of period request.period by its 2N x 2N
+// monodromy, or a kIPP orbit by Newton.
+template <typename S>
+OrbitOutcome chainOrbitIn(const PreparedMassChain& prepared, const OrbitRequest& request, std::stop_token stop) {
+  OrbitOutcome outcome;
+  outcome.precision = core::precisionOf<S>();
   const Parsed<core::BasicReadyChain<S>>& ready = prepared.ready<S>();
   if (!ready.value) {
     outcome.problem = ready.error.toStdString();
     return outcome;
   }
+  if (request.impacts != 0) return chainNewtonIn<S>(*ready.value, request, std::move(stop));
   const std::optional<S> T = numberIn<S>(request.period, "period", outcome.problem);
   if (!T) return outcome;
   core::ChainOnePeriodicStability<S> found = core::chainOnePeriodicStability(*ready.value, *T);
@@ -189,8 +244,10 @@ OrbitOutcome orbitIn(const PreparedMassChain& prepared, const OrbitRequest& requ
       outcome.problem = model.error.toStdString();
       return outcome;
     }
-    return chainOrbitIn<S>(prepared, request);
+    return chainOrbitIn<S>(prepared, request, std::move(stop));
   }
+  // a kIPP orbit at a fixed period: Newton on the return map of any chain, this one as two masses
+  if (request.impacts != 0 && request.energy.empty()) return chainOrbitIn<S>(prepared, request, std::move(stop));
   const core::TwoMassForm<S>& chain = model.value->chain;
   core::OrbitSearch<S> search;
   if (request.impacts == 0) {
@@ -220,10 +277,13 @@ OrbitOutcome orbitIn(const PreparedMassChain& prepared, const OrbitRequest& requ
       outcome.problem = "--energy: '" + request.energy + "' is not a positive energy";
       return outcome;
     }
-    const core::ParsedScalar<S> u1 = core::parseScalar<S>(request.guess[0]);
-    const core::ParsedScalar<S> v1 = core::parseScalar<S>(request.guess[1]);
+    const bool two = request.guess.size() == 2;
+    const core::ParsedScalar<S> u1 = core::parseScalar<S>(two ? request.guess[0] : std::string());
+    const core::ParsedScalar<S> v1 = core::parseScalar<S>(two ? request.guess[1] : std::string());
     if (!u1.value || !v1.value) {
-      outcome.problem = "--guess: '" + request.guess[0] + "," + request.guess[1] + "' is not two numbers u1,v1";
+      std::string given;
+      for (const std::string& x : request.guess) given += (given.empty() ? "" : ",") + x;
+      outcome.problem = "--guess: '" + given + "' is not two numbers u1,v1";
       return outcome;
     }
     search = core::findOrbit(chain, *energy, *u1.value, *v1.value, request.impacts, stop);

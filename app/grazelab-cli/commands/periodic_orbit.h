@@ -2,10 +2,10 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
-#include <array>
 #include <stop_token>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "commands/simulation.h"
 #include "core/model/mass_chain.h"
@@ -22,15 +22,17 @@ namespace grazelab::cli {
 
 class PreparedMassChain;
 
-/// One periodic impacting orbit: the 1IPP orbit of period `period` (`impacts` 0) of any chain,
-/// or the orbit of `impacts` impacts per period at energy `energy` that Newton finds from `guess`
-/// (u1, v1 just after an impact on H) of a two-mass chain. Numbers as decimal text, read in the
-/// precision that runs (0.1 is 0.1 to binary128's digits).
+/// One periodic impacting orbit of any chain: the 1IPP orbit of period `period` (`impacts` 0), or
+/// the orbit of `impacts` impacts per period at energy `energy` (or, `energy` empty, of period
+/// `period`) that Newton finds from `guess`: the point just after an impact on H, u then v of
+/// every mass but the stopped one (two masses: u1, v1), and at a fixed period the stopped mass's
+/// v_s last. Numbers as decimal text, read in the precision that runs (0.1 is 0.1 to binary128's
+/// digits).
 struct OrbitRequest {
   std::string period;
   int impacts = 0;
   std::string energy;
-  std::array<std::string, 2> guess;
+  std::vector<std::string> guess;
   PrecisionChoice precision = PrecisionChoice::Auto;
 };
 
@@ -66,9 +68,9 @@ struct OrbitOutcome {
 };
 
 /// The orbit `request` asks for on `chain`: on the note's two-mass form where the chain has it
-/// (the orbits Newton finds need it: another shape is refused for them), the 1IPP orbit of any
-/// other chain by its 2N x 2N monodromy (core/orbits/chain_monodromy.h); in the precision asked
-/// for; PrecisionChoice::Auto: double, then long double and binary128 while a contact too near
+/// (a kIPP orbit at a fixed energy by the note's Newton), else by the 2N x 2N monodromy
+/// (core/orbits/chain_monodromy.h) and Newton on the return map of N masses
+/// (core/orbits/chain_kipp.h); in the precision asked for; PrecisionChoice::Auto: double, then long double and binary128 while a contact too near
 /// tangent or the class leaves it undecided. `stop` ends a Newton search.
 OrbitOutcome solveOrbit(const PreparedMassChain& chain, const OrbitRequest& request, std::stop_token stop = {});
 
