@@ -47,6 +47,9 @@ struct ChainBifurcation {
   S T = 0;
   S periodError = 0;  ///< half the last bracket [T-, T+] whose ends were both decided
   S energy = 0;       ///< the orbit's at T
+  /// how far the energy at the change may be: half its spread over the last bracket, plus the
+  /// closed form's rounding there (its data's conditioning near a multiple of a mode's period)
+  S energyError = 0;
   bool leaves = true;  ///< multipliers leave the circle as T grows (false: they come back to it)
 };
 
@@ -59,20 +62,25 @@ struct ChainBifurcation {
 /// stretch where the flight meets the stop early, or where V >= 0, is not reported. Multipliers
 /// that move among themselves off the circle (a quadruplet meeting the real axis as two real
 /// pairs) change no stability and are not reported. Two changes between the same two periods that
-/// undo each other are not seen: the rows must be dense enough for them.
+/// undo each other are looked for where the multipliers could hide them: where, at either row, a
+/// multiplier is nearer a change of the census (its conjugate, on the circle; another of the
+/// opposite Krein signature; the circle, off it; +-1, real) than four times the most any moved
+/// between the rows, the interval is halved (to 1e-9 of T, at most 256 orbits between two rows),
+/// and each half with a census of its own located as above.
 template <typename S>
 std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain,
                                                               const std::vector<S>& periods,
                                                               std::stop_token stop = {});
 
-/// A period of the family with its census (none: no admissible orbit there), as a table that
-/// computed them has them.
+/// A period of the family with its census (none: no admissible orbit there) and its multipliers,
+/// as a table that computed them has them.
 template <typename S>
 struct CensusRow {
   S T = 0;
   std::optional<MultiplierCensus> census;
+  std::vector<ChainMultiplier<S>> multipliers;  ///< (empty: not known; the row is not refined)
 };
-/// The same from rows whose censuses are known (only the bisections are computed).
+/// The same from rows whose censuses are known (only the bisections and refinements are computed).
 template <typename S>
 std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain,
                                                               const std::vector<CensusRow<S>>& rows,

@@ -165,6 +165,11 @@ TEST(TypedFamily, AChainOfThreeMassesLocatesWhereItsStabilityChanges) {
   // and the document lists them
   const JsonValue document = familyDocument(outcome, std::nullopt);
   EXPECT_EQ(document.find("bifurcations")->items.size(), family.bifurcations.size());
+  for (const JsonValue& point : document.find("bifurcations")->items) {
+    const double energy = point.find("energy")->value, error = point.find("energy_error")->value;
+    EXPECT_GT(error, 0.0);
+    EXPECT_LT(error, 1e-9 * energy);
+  }
 }
 
 TEST(TypedFamily, RefusalsComeBeforeAnyOfItIsComputed) {

@@ -235,7 +235,8 @@ FamilyOutcome chainFamily(const PreparedMassChain& prepared, const FamilyRequest
     if (orbit.admissible() && ready.value) stability = core::chainOnePeriodicStability(*ready.value, row.T);
     const bool stable = stability && stability->orbit.admissible();
     outcome.table.push_back(stable ? double(int(stability->orbit.monodromy.stability)) : kNaN);
-    censuses.push_back({row.T, stable ? std::optional(core::censusOf(stability->orbit.monodromy)) : std::nullopt});
+    censuses.push_back({row.T, stable ? std::optional(core::censusOf(stability->orbit.monodromy)) : std::nullopt,
+                        stable ? stability->orbit.monodromy.multipliers : std::vector<core::ChainMultiplier<double>>{}});
     for (Eigen::Index k = 0; k < pairs; ++k) {
       const core::ChainMultiplier<double>* mu =
           stable && std::size_t(k) < stability->orbit.monodromy.multipliers.size()
@@ -316,6 +317,7 @@ V bifurcationsValue(const std::vector<core::ChainBifurcation<double>>& bifurcati
                                {"T", V::number(b.T)},
                                {"T_error", V::number(b.periodError)},
                                {"energy", V::number(b.energy)},
+                               {"energy_error", V::number(b.energyError)},
                                {"leaves_the_circle", V::of(b.leaves)}}));
   }
   return V::array(std::move(items));
