@@ -327,15 +327,22 @@ def flip_direction(ch, x0, values, vectors):
     return [c / top for c in z]
 
 
+def call(argv):
+    """subprocess.run, waiting (up to a minute) while the command line is being relinked."""
+    for attempt in range(30):
+        try:
+            return subprocess.run(argv, capture_output=True, text=True, timeout=300)
+        except OSError:  # missing, not yet executable, or busy
+            if attempt == 29:
+                raise
+            time.sleep(2)
+
+
 def run_orbit(cli, ch, k, energy, guess, precision):
     """(argv, parsed JSON or None, stderr)."""
     argv = [cli, "orbit", "--impacts", str(k), "--energy", energy, "--guess", ",".join(guess)] + ch.cli_args() + [
         "--precision", precision]
-    for attempt in range(20):
-        if os.path.exists(cli):
-            break
-        time.sleep(3)  # being relinked
-    ran = subprocess.run(argv, capture_output=True, text=True, timeout=120)
+    ran = call(argv)
     if ran.returncode != 0:
         return argv, None, ran.stderr.strip()
     return argv, json.loads(ran.stdout, parse_float=mpmath.mpf), ""
@@ -601,8 +608,7 @@ def main():
             slow = slowest_period(ch.M, ch.K)
             periods = [round(float(slow * rng.uniform(0.03, 0.99)), 6) for _ in range(args.periods)]
             prefix = os.path.join(tmp, f"family{c}")
-            ran = subprocess.run([args.cli, "family", "--onepp"] + ch.cli_args() + ["--count", "300", "--out", prefix],
-                                 capture_output=True, text=True, timeout=300)
+            ran = call([args.cli, "family", "--onepp"] + ch.cli_args() + ["--count", "300", "--out", prefix])
             bifurcations = []
             if ran.returncode != 0:
                 problems.append(f"family --onepp {ch.describe()} --count 300: exit {ran.returncode}: {ran.stderr.strip()}")
