@@ -119,13 +119,13 @@ bool holdsAPole(const BasicChainDynamics<S>& dynamics, const S& a, const S& b) {
 
 template <typename S>
 void between(const BasicReadyChain<S>& chain, const CensusRow<S>& a, const CensusRow<S>& b,
-             std::vector<ChainBifurcation<S>>& out, const std::stop_token& stop, int& budget);
+             ChainBifurcations<S>& out, const std::stop_token& stop, int& budget);
 
 // The changes between rows a and b, both admissible and decided, whose counts on the circle
 // differ: bisection on the count; each half it leaves behind (of one count with its end) is
 // looked at for a pair hidden in it (`between`).
 template <typename S>
-void locate(const BasicReadyChain<S>& chain, CensusRow<S> a, CensusRow<S> b, std::vector<ChainBifurcation<S>>& out,
+void locate(const BasicReadyChain<S>& chain, CensusRow<S> a, CensusRow<S> b, ChainBifurcations<S>& out,
             const std::stop_token& stop, int& budget) {
   using std::abs;
   // to 1e-12 of T (the 1e-9 with room; 8 ulps of double are below it)
@@ -136,11 +136,14 @@ void locate(const BasicReadyChain<S>& chain, CensusRow<S> a, CensusRow<S> b, std
     if (!middle.census) return;  // the family's part ends in between
     if (!middle.census->decided) break;
     // (an end moved takes the middle's census: the change is named from the last bracket)
+    // (the halves within 1e-6 of T of the change are left: there the change's own pair, ever
+    // nearer it, would keep them halving to the end of the budget)
+    const bool wide = b.T - a.T > S(2e-6) * abs(b.T);
     if (middle.census->onCircle == a.census->onCircle) {
-      between(chain, a, middle, out, stop, budget);
+      if (wide) between(chain, a, middle, out, stop, budget);
       a = middle;
     } else if (middle.census->onCircle == b.census->onCircle) {
-      between(chain, middle, b, out, stop, budget);
+      if (wide) between(chain, middle, b, out, stop, budget);
       b = middle;
     } else {
       // a third census: changes on both sides
@@ -168,7 +171,7 @@ void locate(const BasicReadyChain<S>& chain, CensusRow<S> a, CensusRow<S> b, std
   }
   point.energyError = abs(energyAt(b.T) - energyAt(a.T)) / 2 +
                       8 * std::numeric_limits<S>::epsilon() * conditioning * abs(energy);
-  out.push_back(point);
+  out.changes.push_back(point);
 }
 
 // The changes between rows a and b (both admissible and decided): located where their counts on
@@ -177,19 +180,26 @@ void locate(const BasicReadyChain<S>& chain, CensusRow<S> a, CensusRow<S> b, std
 // that stays within rounding of a change over a long stretch would otherwise halve it to the end)
 template <typename S>
 void between(const BasicReadyChain<S>& chain, const CensusRow<S>& a, const CensusRow<S>& b,
-             std::vector<ChainBifurcation<S>>& out, const std::stop_token& stop, int& budget) {
+             ChainBifurcations<S>& out, const std::stop_token& stop, int& budget) {
   using std::abs;
   if (a.census->onCircle != b.census->onCircle) {
     locate(chain, a, b, out, stop, budget);
     return;
   }
-  if (budget <= 0 || stop.stop_requested() || b.T - a.T <= S(1e-9) * abs(b.T)) return;
+  if (stop.stop_requested() || b.T - a.T <= S(1e-9) * abs(b.T)) return;
   if (!mayHideAPair(a, b) && !holdsAPole(chain.dynamics, a.T, b.T)) return;
+  if (budget <= 0) {
+    out.unsearched.push_back({a.T, b.T});
+    return;
+  }
   // the middle, or where it is undecided (a collision within its bars) or has no orbit (next to a
   // pole of sigma the data may leave into the stop for a stretch) a point aside
   CensusRow<S> middle;
   for (const S& at : {S(0.5), S(0.375), S(0.625), S(0.25), S(0.75)}) {
-    if (budget-- <= 0) return;
+    if (budget-- <= 0) {
+      out.unsearched.push_back({a.T, b.T});
+      return;
+    }
     middle = closedFormRowAt(chain, S(a.T + at * (b.T - a.T)));
     if (middle.census && middle.census->decided) break;
   }
@@ -233,10 +243,9 @@ std::string_view toString(ChainBifurcationKind kind) {
 }
 
 template <typename S>
-std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain,
-                                                              const std::vector<CensusRow<S>>& rows,
-                                                              std::stop_token stop) {
-  std::vector<ChainBifurcation<S>> out;
+ChainBifurcations<S> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain, const std::vector<CensusRow<S>>& rows,
+                                                  std::stop_token stop) {
+  ChainBifurcations<S> out;
   const CensusRow<S>* before = nullptr;
   for (const CensusRow<S>& row : rows) {
     if (stop.stop_requested()) break;
@@ -251,13 +260,14 @@ std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations(const BasicReadyCh
     before = here && here->decided ? &row : nullptr;
   }
   // (a change found in a half the bisection left behind comes after the one it went on to)
-  std::sort(out.begin(), out.end(), [](const ChainBifurcation<S>& x, const ChainBifurcation<S>& y) { return x.T < y.T; });
+  std::sort(out.changes.begin(), out.changes.end(),
+            [](const ChainBifurcation<S>& x, const ChainBifurcation<S>& y) { return x.T < y.T; });
   return out;
 }
 
 template <typename S>
-std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain,
-                                                              const std::vector<S>& periods, std::stop_token stop) {
+ChainBifurcations<S> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain, const std::vector<S>& periods,
+                                                  std::stop_token stop) {
   std::vector<CensusRow<S>> rows;
   for (const S& T : periods) {
     if (stop.stop_requested()) break;
@@ -266,12 +276,12 @@ std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations(const BasicReadyCh
   return chainOnePeriodicBifurcations(chain, rows, stop);
 }
 
-#define GRAZELAB_CHAIN_BIFURCATIONS(S)                                                             \
-  template MultiplierCensus censusOf<S>(const ChainMonodromy<S>&);                                 \
-  template std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations<S>(const BasicReadyChain<S>&, \
-                                                                            const std::vector<S>&, std::stop_token); \
-  template std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations<S>(                       \
-      const BasicReadyChain<S>&, const std::vector<CensusRow<S>>&, std::stop_token);
+#define GRAZELAB_CHAIN_BIFURCATIONS(S)                                                                          \
+  template MultiplierCensus censusOf<S>(const ChainMonodromy<S>&);                                              \
+  template ChainBifurcations<S> chainOnePeriodicBifurcations<S>(const BasicReadyChain<S>&, const std::vector<S>&, \
+                                                                std::stop_token);                               \
+  template ChainBifurcations<S> chainOnePeriodicBifurcations<S>(const BasicReadyChain<S>&,                      \
+                                                                const std::vector<CensusRow<S>>&, std::stop_token);
 GRAZELAB_CHAIN_BIFURCATIONS(double)
 GRAZELAB_CHAIN_BIFURCATIONS(long double)
 GRAZELAB_CHAIN_BIFURCATIONS(Quad)

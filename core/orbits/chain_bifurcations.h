@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
+#include <array>
 #include <optional>
 #include <stop_token>
 #include <string_view>
@@ -53,6 +54,15 @@ struct ChainBifurcation {
   bool leaves = true;  ///< multipliers leave the circle as T grows (false: they come back to it)
 };
 
+/// What a search of a family's stability changes found.
+template <typename S>
+struct ChainBifurcations {
+  std::vector<ChainBifurcation<S>> changes;  ///< in increasing T
+  /// the stretches [T-, T+] between two rows where the search for a hidden pair of changes ran out
+  /// of its budget before it could rule one out (denser rows would look again there)
+  std::vector<std::array<S, 2>> unsearched;
+};
+
 /// The changes of the number of multipliers on the unit circle between consecutive `periods`
 /// (increasing) whose orbits are both admissible and decided, each located by bisection in T
 /// until its bracket is 1e-12 of T wide or its middle is undecided, and named by how the rest of
@@ -64,13 +74,14 @@ struct ChainBifurcation {
 /// pairs) change no stability and are not reported. Two changes between the same two periods that
 /// undo each other are looked for where the multipliers could hide them: where, at either row, a
 /// multiplier is nearer a change of the census (its conjugate, on the circle; another of the
-/// opposite Krein signature; the circle, off it; +-1, real) than four times the most any moved
-/// between the rows, the interval is halved (to 1e-9 of T, at most 256 orbits between two rows),
-/// and each half with a census of its own located as above.
+/// opposite Krein signature; the circle, off it; +-1, real) than four times what it and the one
+/// it would meet moved between the rows, where two of opposite signatures swapped places, or
+/// where a pole of sigma lies between them, the interval is halved (to 1e-9 of T, at most 256
+/// halvings between two rows, beside the bisections' own steps), and each half with a census of
+/// its own located as above; where the halvings run out, the stretch is said `unsearched`.
 template <typename S>
-std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain,
-                                                              const std::vector<S>& periods,
-                                                              std::stop_token stop = {});
+ChainBifurcations<S> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain, const std::vector<S>& periods,
+                                                  std::stop_token stop = {});
 
 /// A period of the family with its census (none: no admissible orbit there) and its multipliers,
 /// as a table that computed them has them.
@@ -78,12 +89,11 @@ template <typename S>
 struct CensusRow {
   S T = 0;
   std::optional<MultiplierCensus> census;
-  std::vector<ChainMultiplier<S>> multipliers;  ///< (empty: not known; the row is not refined)
+  std::vector<ChainMultiplier<S>> multipliers;  ///< (empty: not known; only a pole of sigma refines it)
 };
 /// The same from rows whose censuses are known (only the bisections and refinements are computed).
 template <typename S>
-std::vector<ChainBifurcation<S>> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain,
-                                                              const std::vector<CensusRow<S>>& rows,
-                                                              std::stop_token stop = {});
+ChainBifurcations<S> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chain, const std::vector<CensusRow<S>>& rows,
+                                                  std::stop_token stop = {});
 
 }  // namespace grazelab::core

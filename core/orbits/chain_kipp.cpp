@@ -17,12 +17,18 @@ namespace grazelab::core {
 std::string_view toString(ChainOrbitProblem problem) {
   switch (problem) {
     case ChainOrbitProblem::None: return "found";
-    case ChainOrbitProblem::NoStateAtGuess: return "the guess has no state of this energy on H (the other masses hold more)";
+    case ChainOrbitProblem::NoImpacts: return "no impact asked for";
+    case ChainOrbitProblem::NoStateAtGuess:
+      return "the guess has no state just after an impact on H (the other masses hold more than the energy, or "
+             "its v_s is not below 0)";
+    case ChainOrbitProblem::GuessOffSequence:
+      return "the guess's own path makes another sequence of contacts: give a guess nearer the orbit";
     case ChainOrbitProblem::LeftEnergyLevel: return "Newton left the energy level: give a guess nearer the orbit";
     case ChainOrbitProblem::LeftImpactSequence:
       return "Newton left the orbits of this many impacts: give a guess nearer the orbit";
     case ChainOrbitProblem::Singular:
-      return "the return map's Jacobian is singular here (a multiplier at 1: a fold or branch point)";
+      return "the return map's Jacobian is singular here (a multiplier at 1: a fold or branch point; at a fixed "
+             "period also where the family's period does not change with its energy: try a fixed energy)";
     case ChainOrbitProblem::NotConverging: return "Newton does not converge from this guess";
     case ChainOrbitProblem::Stalled:
       return "Newton stalled: the path closes to its rounding with a large step still to go (a bifurcation is near)";
@@ -118,20 +124,38 @@ struct Unknowns {
     return g;
   }
 
-  // how big a step dz is: lengths over the gap, speeds over the scale's speed, the energy relative
-  S stepSize(const ChainVector<S>& dz, const ChainVector<S>& z) const {
+  // the unit of each unknown: the gap for lengths, the scale's speed for speeds, the energy itself
+  ChainVector<S> units(const ChainVector<S>& z) const {
     using std::abs;
     const ChainStateScale<S> scale(chain.dynamics);
     const Eigen::Index n = chain.dynamics.mass.size();
-    S largest = 0;
-    for (std::size_t i = 0; i < section.size(); ++i) {
-      const S unit = section[i] < n ? scale.length : scale.speed;
-      largest = std::max<S>(largest, abs(dz[Eigen::Index(i)]) / unit);
-    }
-    if (fixed == ChainOrbitConstraint::Period) {
-      largest = std::max<S>(largest, abs(dz[size() - 1]) / std::max<S>(abs(z[size() - 1]), S(1e-300)));
+    ChainVector<S> out(size());
+    for (std::size_t i = 0; i < section.size(); ++i) out[Eigen::Index(i)] = section[i] < n ? scale.length : scale.speed;
+    if (fixed == ChainOrbitConstraint::Period) out[size() - 1] = std::max<S>(abs(z[size() - 1]), S(1e-300));
+    return out;
+  }
+
+  // the inverse Jacobian's amplification of a scaled residual (the section's coordinates in their
+  // units, the period relative to the one asked for) into a scaled step: |D J^-1 R^-1|, infinity norm
+  S inverseSize(const ChainMatrix<S>& inverse, const ChainVector<S>& z) const {
+    ChainVector<S> residualUnits = units(z);
+    if (fixed == ChainOrbitConstraint::Period) residualUnits[size() - 1] = value;
+    const ChainVector<S> unknownUnits = units(z);
+    S largest = 0;  // (by loops: GCC 12 sees Eigen's rowwise sum of long doubles as uninitialized)
+    for (Eigen::Index i = 0; i < inverse.rows(); ++i) {
+      S row = 0;
+      for (Eigen::Index j = 0; j < inverse.cols(); ++j) {
+        using std::abs;
+        row += abs(inverse(i, j)) * residualUnits[j] / unknownUnits[i];
+      }
+      largest = std::max(largest, row);
     }
     return largest;
+  }
+
+  // how big a step dz is: lengths over the gap, speeds over the scale's speed, the energy relative
+  S stepSize(const ChainVector<S>& dz, const ChainVector<S>& z) const {
+    return size() == 0 ? S(0) : S(dz.cwiseQuotient(units(z)).cwiseAbs().maxCoeff());
   }
 };
 
@@ -177,6 +201,10 @@ ChainOrbitSearch<S> findChainOrbit(const BasicReadyChain<S>& chain, const BasicC
   const Eigen::Index n = dynamics.mass.size();
   const Eigen::Index s = dynamics.stop;
   const Unknowns<S> unknowns{chain, sectionIndices(n, s), fixed, value};
+  if (impacts < 1) {
+    search.problem = ChainOrbitProblem::NoImpacts;
+    return search;
+  }
   if (fixed == ChainOrbitConstraint::Period && !(guess.v[s] <= 0)) {
     search.problem = ChainOrbitProblem::NoStateAtGuess;
     return search;
@@ -189,15 +217,20 @@ ChainOrbitSearch<S> findChainOrbit(const BasicReadyChain<S>& chain, const BasicC
   int bestIteration = 0;
   std::optional<BasicChainState<S>> closed;  // the last iterate that closed within the tolerance
   S closedResidual = std::numeric_limits<S>::infinity();
+  S closedStep = 0;  // the step that led to it (how far it may be, where its own step is not known)
+  // how far the closed iterate may be along the return map's softest direction: the tolerance
+  // times |(DP^k - I)^-1| in scaled units (next to a period doubling of the shorter orbit, 1e4
+  // times the rounding: double cannot tell that orbit run twice from a k-impact one there)
+  S closedSpread = 0;
   S tolerance = chainCloseTolerance<S>(impacts, S(1));
   const auto accept = [&]() {
-    search.correction = closedResidual == 0 ? S(0) : search.correction;
+    if (closedResidual == 0) search.correction = 0;  // closed exactly
     if (search.correction > sqrt(tolerance)) {
       search.problem = ChainOrbitProblem::Stalled;
       return search;
     }
     BasicChainPeriodicOrbit<S> orbit = evaluateChainOrbit(chain, *closed, impacts, tolerance);
-    if (orbit.admissible() && isRepeated(dynamics, orbit, std::max<S>(tolerance, 8 * search.correction))) {
+    if (orbit.admissible() && isRepeated(dynamics, orbit, std::max({tolerance, S(8 * search.correction), closedSpread}))) {
       orbit.refusal = OrbitRefusal::Repeated;
     }
     if (!orbit.admissible()) {
@@ -243,7 +276,8 @@ ChainOrbitSearch<S> findChainOrbit(const BasicReadyChain<S>& chain, const BasicC
     if (!sequenceHeld && path.refusal != OrbitRefusal::Repeated && backtrack()) continue;
     if (!sequenceHeld) {
       search.problem = path.refusal == OrbitRefusal::Repeated ? ChainOrbitProblem::NotAdmissible
-                                                               : ChainOrbitProblem::LeftImpactSequence;
+                       : iteration == 0                       ? ChainOrbitProblem::GuessOffSequence
+                                                              : ChainOrbitProblem::LeftImpactSequence;
       search.refusal = path.refusal;
       return search;
     }
@@ -261,6 +295,7 @@ ChainOrbitSearch<S> findChainOrbit(const BasicReadyChain<S>& chain, const BasicC
     if (closes) {
       closed = *start;
       closedResidual = residual;
+      closedStep = search.correction;
       if (residual == 0) return accept();
       search.correction = std::numeric_limits<S>::infinity();  // until its step is known
     }
@@ -298,18 +333,23 @@ ChainOrbitSearch<S> findChainOrbit(const BasicReadyChain<S>& chain, const BasicC
     // the rounding of the path grows by how much the return map amplifies it (scaled units)
     const ChainStateScale<S> scale(dynamics);
     tolerance = chainCloseTolerance<S>(impacts, S(scale.scaled(dp).cwiseAbs().maxCoeff()));
-    if (size == 0) {  // one mass: the energy is the orbit
+    if (size == 0) {  // one mass: the energy is the orbit, nothing is left to solve
       closed = *start;
+      search.correction = 0;
       return accept();
     }
     const Eigen::FullPivLU<ChainMatrix<S>> lu(jacobian);
     if (!lu.isInvertible() || !isFinite(S(jacobian.cwiseAbs().maxCoeff()))) {
-      if (closed) return accept();
+      if (closed) {  // (singular at an orbit that closes: a degenerate one, known to its last step)
+        search.correction = closedStep;
+        return accept();
+      }
       search.problem = ChainOrbitProblem::Singular;
       return search;
     }
     step = lu.solve(f);
     search.correction = unknowns.stepSize(step, z);
+    if (closes) closedSpread = tolerance * unknowns.inverseSize(lu.inverse(), z);
     from = z;
     fromResidual = residual;
     z -= step;

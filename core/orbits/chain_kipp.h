@@ -21,10 +21,13 @@ enum class ChainOrbitConstraint { Energy, Period };
 /// Why a search gave no orbit.
 enum class ChainOrbitProblem {
   None,                ///< found
+  NoImpacts,           ///< k < 1
   NoStateAtGuess,      ///< the guess holds more energy than asked (no v_s), or v_s > 0 at a fixed period
+  GuessOffSequence,    ///< the guess's own path makes another sequence of contacts (`refusal` says which)
   LeftEnergyLevel,     ///< a Newton step left the states of the energy asked for
   LeftImpactSequence,  ///< an iterate's path made another sequence of contacts (`refusal` says which)
-  Singular,            ///< the Jacobian is singular (a fold, branch point or flip: a multiplier at 1)
+  Singular,            ///< the Jacobian is singular: a multiplier at 1 (a fold or branch point), or at a
+                       ///< fixed period a family whose period does not change with its energy
   NotConverging,       ///< the residual stopped falling
   Stalled,             ///< closed to the rounding, yet with a step far larger still to go
   NotAdmissible,       ///< the orbit found is not admissible (`refusal` says why)

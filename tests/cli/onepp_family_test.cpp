@@ -144,7 +144,7 @@ TEST(TypedFamily, AChainOfThreeMassesLocatesWhereItsStabilityChanges) {
   const auto& family = std::get<ChainFamily>(outcome.of);
   int kinds[4] = {};
   double last = 0;
-  for (const core::ChainBifurcation<double>& b : family.bifurcations) {
+  for (const core::ChainBifurcation<double>& b : family.bifurcations.changes) {
     ++kinds[int(b.kind)];
     EXPECT_GT(b.T, last) << "in increasing T";
     EXPECT_LT(b.periodError, 1e-11 * b.T);
@@ -164,7 +164,8 @@ TEST(TypedFamily, AChainOfThreeMassesLocatesWhereItsStabilityChanges) {
   EXPECT_GT(kinds[int(core::ChainBifurcationKind::KreinCollision)], 0);
   // and the document lists them
   const JsonValue document = familyDocument(outcome, std::nullopt);
-  EXPECT_EQ(document.find("bifurcations")->items.size(), family.bifurcations.size());
+  EXPECT_EQ(document.find("bifurcations")->items.size(), family.bifurcations.changes.size());
+  EXPECT_EQ(document.find("unsearched")->items.size(), family.bifurcations.unsearched.size());
   for (const JsonValue& point : document.find("bifurcations")->items) {
     const double energy = point.find("energy")->value, error = point.find("energy_error")->value;
     EXPECT_GT(error, 0.0);

@@ -38,11 +38,11 @@ the same (unless printed "undecided"); the Krein signature of each multiplier on
 the real axis the same where printed nonzero. Exit 0 when all hold and at least 6 2IPP orbits
 were checked, 1 otherwise.
 
-Measured on 2 cores while another build ran: the defaults (8 chains, 16 period doublings, about
-1200 runs of the command line, most of the time) take 140 s and check 38 orbits, 32 of them 2IPP;
-`--all-seeds` 210 s.
+Measured on 2 cores while another build ran (load average 2 to 4.5): the defaults (7 chains, 14
+period doublings, about 1100 runs of the command line, most of the time) take 105 to 160 s and
+check 29 orbits, 24 of them 2IPP; `--chains 8` 140 to 210 s; `--all-seeds` about 1.5 times longer.
 
-    python3 chain_kipp_check.py --cli build/app/grazelab-cli/grazelab-cli [--chains 8] [--seed S]
+    python3 chain_kipp_check.py --cli build/app/grazelab-cli/grazelab-cli [--chains 7] [--seed S]
 """
 import argparse
 import json
@@ -581,7 +581,7 @@ def newton_from_onepp(cli, ch, tally, problems, periods, rng):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cli", required=True)
-    parser.add_argument("--chains", type=int, default=8)
+    parser.add_argument("--chains", type=int, default=7)
     parser.add_argument("--periods", type=int, default=2, help="random periods per chain for the 1IPP Newton")
     parser.add_argument("--seeds", type=int, default=30, help="amounts along the flip eigenvector")
     parser.add_argument("--all-seeds", action="store_true",

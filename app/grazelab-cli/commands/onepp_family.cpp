@@ -310,9 +310,9 @@ V notesDocument(const FamilyOutcome& outcome, const NotesFamily& notes, const st
 
 // where the family's stability changes: kind, period with its error, energy, and whether
 // multipliers leave the unit circle there as T grows
-V bifurcationsValue(const std::vector<core::ChainBifurcation<double>>& bifurcations) {
+V bifurcationsValue(const core::ChainBifurcations<double>& bifurcations) {
   std::vector<V> items;
-  for (const core::ChainBifurcation<double>& b : bifurcations) {
+  for (const core::ChainBifurcation<double>& b : bifurcations.changes) {
     items.push_back(V::object({{"kind", V::of(std::string(core::toString(b.kind)))},
                                {"T", V::number(b.T)},
                                {"T_error", V::number(b.periodError)},
@@ -341,6 +341,14 @@ V chainDocument(const FamilyOutcome& outcome, const ChainFamily& family, const s
                                     "(fastest mode first; Theorem 2.1 for any N: lambda_j = a_sj w_j^-2 / sum "
                                     "a_si w_i^-2 over the modes whose period divides T_max), V -> 0")}})},
       {"bifurcations", bifurcationsValue(family.bifurcations)},
+      // where the search for a pair of changes hidden between two rows ran out of its budget
+      {"unsearched", [&family] {
+         std::vector<V> stretches;
+         for (const auto& [from, to] : family.bifurcations.unsearched) {
+           stretches.push_back(V::array({V::number(from), V::number(to)}));
+         }
+         return V::array(std::move(stretches));
+       }()},
       {"columns", V::array(std::move(columns))},
       {"rows", V::of(std::int64_t(outcome.rows()))},
       {"admissible_rows", V::of(outcome.admissible)},

@@ -62,7 +62,7 @@ struct ChainFamily {
   std::optional<std::vector<double>> gloU;  ///< none when the weights give no GLO start
   double gloEnergy = 0;
   /// where its stability changes between its rows, located (core/orbits/chain_bifurcations.h)
-  std::vector<core::ChainBifurcation<double>> bifurcations;
+  core::ChainBifurcations<double> bifurcations;
 };
 
 struct FamilyOutcome {

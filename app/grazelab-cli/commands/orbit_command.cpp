@@ -18,7 +18,8 @@ namespace grazelab::cli {
 
 void addOrbitOptions(QCommandLineParser& parser) {
   parser.addOptions({
-      {"period", "orbit --onepp: the period T of the 1IPP orbit.", "T"},
+      {"period", "orbit --onepp: the period T of the 1IPP orbit; orbit --impacts: the period of the orbit sought.",
+       "T"},
       {"impacts", "orbit: impacts per period K of the orbit sought.", "K"},
       {"energy", "orbit: the energy E of the orbit sought.", "E"},
       {"guess",
@@ -62,6 +63,7 @@ std::optional<OrbitRequest> readOrbitRequest(const OptionValues& options, QStrin
   }
   request.energy = options.value("energy").toStdString();
   request.period = options.value("period").toStdString();
+  request.fixed = options.isSet("period") ? core::ChainOrbitConstraint::Period : core::ChainOrbitConstraint::Energy;
   for (const QString& number : options.value("guess").split(',')) request.guess.push_back(number.trimmed().toStdString());
   return request;
 }

@@ -149,8 +149,8 @@ template <typename S>
 OrbitOutcome chainNewtonIn(const core::BasicReadyChain<S>& ready, const OrbitRequest& request, std::stop_token stop) {
   OrbitOutcome outcome;
   outcome.precision = core::precisionOf<S>();
-  const bool atPeriod = request.energy.empty();
-  const core::ChainOrbitConstraint fixed = atPeriod ? core::ChainOrbitConstraint::Period : core::ChainOrbitConstraint::Energy;
+  const core::ChainOrbitConstraint fixed = request.fixed;
+  const bool atPeriod = fixed == core::ChainOrbitConstraint::Period;
   const std::optional<S> value = numberIn<S>(atPeriod ? request.period : request.energy, atPeriod ? "period" : "energy",
                                              outcome.problem);
   if (!value) return outcome;
@@ -163,7 +163,10 @@ OrbitOutcome chainNewtonIn(const core::BasicReadyChain<S>& ready, const OrbitReq
   const Eigen::Index n = ready.dynamics.mass.size();
   const Eigen::Index s = ready.dynamics.stop;
   const std::size_t expected = std::size_t(2 * n - 2 + (atPeriod ? 1 : 0));
-  if (request.guess.size() != expected) {
+  // (one mass at a fixed energy: nothing to guess, --guess "")
+  const std::vector<std::string> given =
+      request.guess.size() == 1 && request.guess[0].empty() ? std::vector<std::string>{} : request.guess;
+  if (given.size() != expected) {
     outcome.problem = "--guess: give " + std::to_string(expected) + " numbers: u then v of every mass but the stopped one (mass " +
                       std::to_string(s + 1) + ")" + (atPeriod ? ", then its speed v_s < 0 just after the impact" : "");
     return outcome;
@@ -174,16 +177,16 @@ OrbitOutcome chainNewtonIn(const core::BasicReadyChain<S>& ready, const OrbitReq
   for (core::ChainVector<S>* part : {&guess.u, &guess.v}) {
     for (Eigen::Index j = 0; j < n; ++j) {
       if (j == s) continue;
-      const std::optional<S> x = numberIn<S>(request.guess[next++], "guess", outcome.problem);
+      const std::optional<S> x = numberIn<S>(given[next++], "guess", outcome.problem);
       if (!x) return outcome;
       (*part)[j] = *x;
     }
   }
   if (atPeriod) {
-    const std::optional<S> vs = numberIn<S>(request.guess[next], "guess", outcome.problem);
+    const std::optional<S> vs = numberIn<S>(given[next], "guess", outcome.problem);
     if (!vs) return outcome;
     if (!(*vs < 0)) {
-      outcome.problem = "--guess: the stopped mass's speed just after the impact must be below 0, not " + request.guess[next];
+      outcome.problem = "--guess: the stopped mass's speed just after the impact must be below 0, not " + given[next];
       return outcome;
     }
     guess.v[s] = *vs;
@@ -247,7 +250,9 @@ OrbitOutcome orbitIn(const PreparedMassChain& prepared, const OrbitRequest& requ
     return chainOrbitIn<S>(prepared, request, std::move(stop));
   }
   // a kIPP orbit at a fixed period: Newton on the return map of any chain, this one as two masses
-  if (request.impacts != 0 && request.energy.empty()) return chainOrbitIn<S>(prepared, request, std::move(stop));
+  if (request.impacts != 0 && request.fixed == core::ChainOrbitConstraint::Period) {
+    return chainOrbitIn<S>(prepared, request, std::move(stop));
+  }
   const core::TwoMassForm<S>& chain = model.value->chain;
   core::OrbitSearch<S> search;
   if (request.impacts == 0) {

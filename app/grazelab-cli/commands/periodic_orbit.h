@@ -10,6 +10,7 @@
 #include "commands/simulation.h"
 #include "core/model/mass_chain.h"
 #include "core/model/two_mass_form.h"
+#include "core/orbits/chain_kipp.h"
 #include "core/orbits/chain_monodromy.h"
 #include "core/orbits/periodic_orbit.h"
 #include "io/json_value.h"
@@ -32,6 +33,8 @@ struct OrbitRequest {
   std::string period;
   int impacts = 0;
   std::string energy;
+  /// what an orbit of `impacts` keeps fixed: `energy`, or `period`
+  core::ChainOrbitConstraint fixed = core::ChainOrbitConstraint::Energy;
   std::vector<std::string> guess;
   PrecisionChoice precision = PrecisionChoice::Auto;
 };
@@ -49,8 +52,9 @@ struct FoundOrbit {
   core::PeriodicOrbit<S> orbit;
 };
 
-/// A 1IPP orbit of a chain of N masses (or of two masses not in the note's shape) found in
-/// precision S, with the chain and its common period (0: not commensurate).
+/// An orbit found by the 2N x 2N monodromy (a 1IPP orbit or a kIPP orbit by Newton, of N masses, of
+/// two masses not in the note's shape, or of the note's chain at a fixed period) in precision S,
+/// with the chain and its common period (0: not commensurate).
 template <typename S>
 struct FoundChainOrbit {
   core::BasicMassChain<S> chain;

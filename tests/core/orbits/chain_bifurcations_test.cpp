@@ -44,7 +44,7 @@ TEST(ChainBifurcations, TwoMassPeriodDoublingsAreTheNotesFlips) {
       if (b.kind == PointKind::PeriodDoubling && b.checked) flips.push_back(b.T);
     }
     const ReadyChain ready = readyChain(massChainOf(*model), Kernel::Modal);
-    const auto found = chainOnePeriodicBifurcations(ready, grid(T2, 400));
+    const auto found = chainOnePeriodicBifurcations(ready, grid(T2, 400)).changes;
     std::vector<double> doublings;
     for (const ChainBifurcation<double>& b : found) {
       EXPECT_NE(b.kind, ChainBifurcationKind::KreinCollision) << "two masses have one pair: no quadruplet";
@@ -85,7 +85,7 @@ TEST(ChainBifurcations, AKreinCollisionOfThreeMassesMeetsOppositeSignatures) {
   const MassChain chain{{0.6865, 1.9630, 0.8236}, {0.8423, 1.0745, 0.7486}, 0, 2, 1.0};
   const ReadyChain ready = readyChain(chain);
   const double end = chainOnePeriodicEnd(chain);
-  const auto found = chainOnePeriodicBifurcations(ready, grid(end, 300));
+  const auto found = chainOnePeriodicBifurcations(ready, grid(end, 300)).changes;
   const BasicReadyChain<Quad> quad = readyChain(chainCast<Quad>(chain));
   int collisions = 0;
   for (const ChainBifurcation<double>& b : found) {
@@ -104,7 +104,8 @@ TEST(ChainBifurcations, AKreinCollisionOfThreeMassesMeetsOppositeSignatures) {
     EXPECT_GT(censusOf(chainOnePeriodicStability(ready, b.T - side * 1e-4 * b.T).orbit.monodromy).complex, 0);
     // binary128 puts it at the same period (bisected in its own precision around it)
     const Quad width = Quad(1e-6) * Quad(b.T);
-    const auto exact = chainOnePeriodicBifurcations(quad, std::vector<Quad>{Quad(b.T) - width, Quad(b.T) + width});
+    const auto exact =
+        chainOnePeriodicBifurcations(quad, std::vector<Quad>{Quad(b.T) - width, Quad(b.T) + width}).changes;
     ASSERT_EQ(exact.size(), 1u);
     EXPECT_NEAR(double(exact[0].T), b.T, 1e-9 * b.T);
     // the energy within its bar of binary128's
@@ -150,13 +151,15 @@ TEST(ChainBifurcations, ACoarseFamilyMissesNoChangeADenseOneFinds) {
     chain.stopMass = int(rng() % unsigned(chain.masses.size())) + 1;
     chains.push_back(chain);
   }
-  int compared = 0, refined = 0;
+  int compared = 0, refined = 0, unsearched = 0;
   for (const MassChain& chain : chains) {
     const ReadyChain ready = readyChain(chain);
     const double end = chainOnePeriodicEnd(chain);
-    const auto dense = chainOnePeriodicBifurcations(ready, grid(end, 3000));
+    const auto dense = chainOnePeriodicBifurcations(ready, grid(end, 3000)).changes;
     const std::vector<double> rows = grid(end, 200);
-    const auto coarse = chainOnePeriodicBifurcations(ready, rows);
+    const ChainBifurcations<double> search = chainOnePeriodicBifurcations(ready, rows);
+    const auto& coarse = search.changes;
+    unsearched += int(search.unsearched.size());
     for (const ChainBifurcation<double>& b : dense) {
       // the coarse rows around it, both admissible and decided (else nothing is claimed there)
       const auto above = std::upper_bound(rows.begin(), rows.end(), b.T);
@@ -178,7 +181,7 @@ TEST(ChainBifurcations, ACoarseFamilyMissesNoChangeADenseOneFinds) {
       // row just before it, where the family's part begins)
       std::vector<double> local;
       for (int k = 0; k < 400; ++k) local.push_back(c.T * (1 + 2e-3 * (k - 199.5) / 200));  // (no row on it)
-      const auto fine = chainOnePeriodicBifurcations(ready, local);
+      const auto fine = chainOnePeriodicBifurcations(ready, local).changes;
       EXPECT_TRUE(std::any_of(fine.begin(), fine.end(), [&](const ChainBifurcation<double>& b) {
         return c.kind == b.kind && std::abs(c.T - b.T) <= 1e-9 * b.T;
       })) << toString(c.kind) << " at T = " << c.T << " " << describe(chain, fine, c.T);
@@ -186,6 +189,7 @@ TEST(ChainBifurcations, ACoarseFamilyMissesNoChangeADenseOneFinds) {
   }
   EXPECT_GT(compared, 10);
   EXPECT_GT(refined, 0) << "no pair hid between two coarse rows: the test shows nothing";
+  EXPECT_EQ(unsearched, 0) << "the search ran out of its budget (so a pair may hide there, said)";
 }
 
 }  // namespace

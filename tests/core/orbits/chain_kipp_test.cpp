@@ -177,7 +177,7 @@ TEST(ChainKipp, AtAPeriodDoublingTheTwoImpactBranchGrowsLikeTheSquareRoot) {
   std::vector<double> periods;
   for (int k = 1; k < 300; ++k) periods.push_back(end * k / 300);
   int doublings = 0, branches = 0;
-  for (const ChainBifurcation<double>& b : chainOnePeriodicBifurcations(ready, periods)) {
+  for (const ChainBifurcation<double>& b : chainOnePeriodicBifurcations(ready, periods).changes) {
     if (b.kind != ChainBifurcationKind::PeriodDoubling) continue;
     ++doublings;
     for (const double side : {-1.0, 1.0}) {
