@@ -56,37 +56,13 @@ import time
 
 import mpmath
 
+# the chain's numbers as the command line reads them, its matrices and its slowest period: the
+# 1IPP check's own (it sets 50 digits too)
+from chain_orbit_check import exact, matrices, slowest_period
+
 mpmath.mp.dps = 50
 
 TINY = mpmath.mpf(10) ** -30
-
-
-def exact(x):
-    """The number the command line reads from x's decimal text (repr), to 50 digits."""
-    return mpmath.mpf(repr(x))
-
-
-def matrices(masses, springs, right_spring):
-    n = len(masses)
-    M = mpmath.diag([exact(m) for m in masses])
-    K = mpmath.zeros(n, n)
-    for i in range(n):
-        K[i, i] += exact(springs[i])
-        if i > 0:
-            K[i - 1, i - 1] += exact(springs[i])
-            K[i - 1, i] = K[i, i - 1] = -exact(springs[i])
-    K[n - 1, n - 1] += exact(right_spring)
-    return M, K
-
-
-def slowest_period(M, K):
-    n = M.rows
-    a = mpmath.matrix(n, n)
-    for i in range(n):
-        for j in range(n):
-            a[i, j] = K[i, j] / mpmath.sqrt(M[i, i] * M[j, j])
-    values, _ = mpmath.eigsy(a)
-    return 2 * mpmath.pi / mpmath.sqrt(min(values))
 
 
 class Failed(Exception):
@@ -508,21 +484,30 @@ def refuse(tally, part, message):
     tally.refused[key] = tally.refused.get(key, 0) + 1
 
 
+def onepp_at(ch, T, problems):
+    """The reference 1IPP orbit of period T as (x0, E read as the command line reads its text,
+    that text, multipliers, eigenvectors); None when there is none (a reference failure noted)."""
+    try:
+        one = reference_onepp(ch, T)
+    except Failed as e:
+        problems.append(f"{ch.describe()}: reference: {e}")
+        return None
+    if one is None:
+        return None
+    x0, E, values, vectors = one
+    energy_text = repr(float(E))
+    return x0, exact(float(E)), energy_text, values, vectors
+
+
 def doubled_orbits(cli, ch, tally, problems, bifurcations, amounts, all_seeds):
     """2IPP orbits near the 1IPP family's period doublings."""
     for T_star in bifurcations:
         for factor in ("-4e-5", "-1e-5", "1e-5", "4e-5"):
             T = float(T_star * (1 + float(factor)))
-            try:
-                one = reference_onepp(ch, T)
-            except Failed as e:
-                problems.append(f"{ch.describe()}: reference: {e}")
-                continue
+            one = onepp_at(ch, T, problems)
             if one is None:
                 continue
-            x0, E, values, vectors = one
-            energy_text = repr(float(E))
-            E = exact(float(E))
+            x0, E, energy_text, values, vectors = one
             direction = flip_direction(ch, x0, values, vectors)
             z0 = ch.section(x0)
             for a in amounts:
@@ -548,16 +533,10 @@ def doubled_orbits(cli, ch, tally, problems, bifurcations, amounts, all_seeds):
 def newton_from_onepp(cli, ch, tally, problems, periods, rng):
     """1IPP orbits found again by Newton from 1e-3 off; --impacts 2 from there prints no repeated orbit."""
     for T in periods:
-        try:
-            one = reference_onepp(ch, T)
-        except Failed as e:
-            problems.append(f"{ch.describe()}: reference: {e}")
-            continue
+        one = onepp_at(ch, T, problems)
         if one is None:
             continue
-        x0, E, _, _ = one
-        energy_text = repr(float(E))
-        E = exact(float(E))
+        x0, E, energy_text, _, _ = one
         z0 = ch.section(x0)
         guess = [repr(float(z0[j] + mpmath.mpf("1e-3") * rng.uniform(-1, 1) * ch.zscale[j])) for j in range(len(z0))]
         argv, orbit, message = run_orbit(cli, ch, 1, energy_text, guess, "double")
