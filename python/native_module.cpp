@@ -303,7 +303,8 @@ py::object documentToPython(const grazelab::cli::JsonValue& document, const py::
 // samples as another, and `notes`. Returns (the result, the events' decimal text in long double or
 // binary128, 2N + 2 a row, else None).
 py::tuple simulationResult(const grazelab::cli::SimulateOutcome& outcome, const grazelab::cli::SimulateRequest& request,
-                           grazelab::cli::ChainEventTable&& table, const py::object& resultType) {
+                           grazelab::cli::ChainEventTable&& table, const py::object& resultType,
+                           std::weak_ptr<const void> chain) {
   // (the samples apart: an array, not a document's columns)
   grazelab::cli::SimulateRequest unsampled = request;
   unsampled.sampled = false;
@@ -311,6 +312,8 @@ py::tuple simulationResult(const grazelab::cli::SimulateOutcome& outcome, const 
   const ChainDtypes& dtypes = chainDtypes(table.masses, std::size_t(table.stopped));
   if (outcome.precision == grazelab::core::Precision::Double) {
     const grazelab::python::PyValue::ObjectType objects(resultType);
+    // (the chain's own sections made once for it: they are the same in every run of it)
+    const grazelab::python::PyValue::ChainScope sections(std::move(chain));
     result = grazelab::cli::simulationDocument<grazelab::python::PyValue>(outcome, unsampled).take();
     if (request.sampled) {
       result["samples"] = chainSampleArray(outcome.samples, dtypes.samples);
@@ -657,7 +660,8 @@ struct ChainHandle {
 // events' decimal text in long double or binary128, else None). `direct`: on the calling thread
 // (a short run, which the caller keeps short: nothing interrupts it), else on a thread of its own
 // that Ctrl+C stops. ValueError for a request refused or a run past max_events events.
-py::tuple simulateTyped(const grazelab::cli::PreparedMassChain& chain, const grazelab::cli::OptionValues& options,
+py::tuple simulateTyped(const std::shared_ptr<const grazelab::cli::PreparedMassChain>& chain,
+                        const grazelab::cli::OptionValues& options,
                         bool notesStarts, const py::object& resultType, bool discardEvents, bool direct,
                         std::size_t maxEvents) {
   QString error;
@@ -673,7 +677,7 @@ py::tuple simulateTyped(const grazelab::cli::PreparedMassChain& chain, const gra
   grazelab::cli::EventTableSink sink(table);
   grazelab::cli::SimulateOutcome outcome;
   const auto work = [&](std::stop_token token) {
-    outcome = grazelab::cli::simulate(chain, *request, sink, std::move(token));
+    outcome = grazelab::cli::simulate(*chain, *request, sink, std::move(token));
     return 0;
   };
   if (direct) {
@@ -688,7 +692,7 @@ py::tuple simulateTyped(const grazelab::cli::PreparedMassChain& chain, const gra
   if (outcome.status == grazelab::cli::SimulateStatus::Refused) {
     throw py::value_error(QString::fromStdString(outcome.problem).simplified().toStdString());
   }
-  return simulationResult(outcome, *request, std::move(table), resultType);
+  return simulationResult(outcome, *request, std::move(table), resultType, chain);
 }
 
 // simulate(options, result_type, events, max_events, discard_events, direct) -> (result with its
@@ -718,7 +722,7 @@ py::object simulateOptions(const py::sequence& given, const py::object& resultTy
     if (pythonError) throw std::move(*pythonError);
   }
   if (!chain.value) throw py::value_error(chain.error.simplified().toStdString());
-  return simulateTyped(**chain.value, options, !options.isSet("masses"), resultType,
+  return simulateTyped(*chain.value, options, !options.isSet("masses"), resultType,
                        discardEvents || !eventsAsArrays, direct, maxEvents);
 }
 
@@ -756,7 +760,7 @@ py::object simulateChain(const ChainHandle& chain, const py::sequence& given, co
   auto named = givenOptions(given, {"state", "perturb", "glo-weights", "sample-times"});
   if (!named) return py::none();
   const grazelab::cli::OptionValues options(std::move(*named));
-  return simulateTyped(*chain.chain, options, false, resultType, discardEvents, direct, maxEvents);
+  return simulateTyped(chain.chain, options, false, resultType, discardEvents, direct, maxEvents);
 }
 
 // The chain as the documents write it (masses, springs designed, right spring, stop, gap, the

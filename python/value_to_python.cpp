@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #include "value_to_python.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -62,7 +63,97 @@ py::object newObject(PyTypeObject* type) {
 // document is built may hand the GIL to another thread's call
 thread_local PyTypeObject* objectTypeNow = &PyDict_Type;
 
+// A new copy of `value` whose dicts (of their own type) and lists are new, their numbers and
+// strings shared (they cannot change): a dict is cloned whole by PyDict_Update into an empty one
+py::object copied(PyObject* value) {
+  if (PyDict_Check(value)) {
+    const py::object copy = newObject(Py_TYPE(value));
+    if (PyDict_Update(copy.ptr(), value) != 0) throw py::error_already_set();
+    Py_ssize_t at = 0;
+    PyObject* key = nullptr;
+    PyObject* item = nullptr;
+    while (PyDict_Next(value, &at, &key, &item)) {
+      if (!PyDict_Check(item) && !PyList_Check(item)) continue;
+      const py::object inner = copied(item);
+      if (PyDict_SetItem(copy.ptr(), key, inner.ptr()) != 0) throw py::error_already_set();  // (in place)
+    }
+    return copy;
+  }
+  if (PyList_Check(value)) {
+    const Py_ssize_t size = PyList_GET_SIZE(value);
+    const py::object copy = owned(PyList_New(size));
+    for (Py_ssize_t i = 0; i < size; ++i) PyList_SET_ITEM(copy.ptr(), i, copied(PyList_GET_ITEM(value, i)).release().ptr());
+    return copy;
+  }
+  return py::reinterpret_borrow<py::object>(value);
+}
+
+// The sections kept for chains (PyValue::chainSection), the GIL their guard, never freed (as the
+// names above). A chain is told by its owner (a weak pointer: an entry of a chain gone is never
+// taken for another chain, whose owner differs even at the same address), its precision by the
+// address of its ready chain in that owner, a section by the address of its name's literal (the
+// same name written twice at two addresses is at worst made again).
+struct KeptSection {
+  std::weak_ptr<const void> chain;
+  const char* name = nullptr;
+  const void* ready = nullptr;
+  std::string variant;
+  PyObject* section = nullptr;  // (a reference of the table's)
+};
+constexpr std::size_t kKeptSections = 64;
+std::vector<KeptSection>& keptSections() {
+  static auto* const kept = new std::vector<KeptSection>();
+  return *kept;
+}
+std::size_t nextReplaced = 0;
+
+thread_local const PyValue::ChainScope* chainScopeNow = nullptr;
+
+bool sameOwner(const std::weak_ptr<const void>& a, const std::weak_ptr<const void>& b) {
+  return !a.owner_before(b) && !b.owner_before(a);
+}
+
 }  // namespace
+
+PyValue::ChainScope::ChainScope(std::weak_ptr<const void> chain) : m_chain(std::move(chain)), m_before(chainScopeNow) {
+  chainScopeNow = this;
+}
+PyValue::ChainScope::~ChainScope() { chainScopeNow = m_before; }
+
+PyObject* PyValue::keptSection(const char* name, const void* ready, const std::string& variant) {
+  if (!chainScopeNow) return nullptr;
+  for (const KeptSection& kept : keptSections()) {
+    // (the objects' type too: a copy is of the type its section was made in)
+    if (kept.name == name && kept.ready == ready && sameOwner(kept.chain, chainScopeNow->m_chain) &&
+        !kept.chain.expired() && kept.variant == variant && Py_TYPE(kept.section) == objectTypeNow) {
+      // (held while copied: the copy's allocations may run a finalizer that changes the table)
+      const py::object held = py::reinterpret_borrow<py::object>(kept.section);
+      return copied(held.ptr()).release().ptr();
+    }
+  }
+  return nullptr;
+}
+
+void PyValue::keepSection(const char* name, const void* ready, const std::string& variant, PyObject* section) {
+  if (!chainScopeNow || chainScopeNow->m_chain.expired()) return;
+  KeptSection entry{chainScopeNow->m_chain, name, ready, variant, copied(section).release().ptr()};
+  // (the table looked at after the copy, whose allocations may run Python code that changes it)
+  std::vector<KeptSection>& kept = keptSections();
+  // in the place of the same section kept already, or of an entry of a chain gone, else at the
+  // end, else in turn
+  auto place = std::find_if(kept.begin(), kept.end(), [&](const KeptSection& old) {
+    return old.chain.expired() || (old.name == name && old.ready == ready && old.variant == variant &&
+                                    sameOwner(old.chain, entry.chain));
+  });
+  if (place == kept.end() && kept.size() < kKeptSections) {
+    kept.push_back(std::move(entry));
+    return;
+  }
+  if (place == kept.end()) place = kept.begin() + std::ptrdiff_t(nextReplaced++ % kKeptSections);
+  // (the old section released once the table holds the new one: its finalizers may run)
+  std::swap(*place, entry);
+  Py_DECREF(entry.section);
+}
 
 PyValue::PyValue(PyObject* made) : m_object(owned(made)) {}
 

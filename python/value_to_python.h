@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,6 +53,33 @@ class PyValue {
     PyTypeObject* m_before;
   };
 
+  /// While it lives, the sections of a run's document that are its chain's own
+  /// (cli::values::chainSection: the chain, the note's model) are kept for `chain` (the prepared
+  /// chain the run is of, alive while the scope is), on this thread: made once, then copied.
+  class ChainScope {
+   public:
+    explicit ChainScope(std::weak_ptr<const void> chain);
+    ~ChainScope();
+    ChainScope(const ChainScope&) = delete;
+    ChainScope& operator=(const ChainScope&) = delete;
+
+   private:
+    std::weak_ptr<const void> m_chain;
+    const ChainScope* m_before;
+    friend class PyValue;
+  };
+
+  /// The section `name` of the scope's chain in its precision `ready`, in `variant`: a copy of the
+  /// one kept (its dicts and lists new: a result's sections are its own to change), else `make()`
+  /// (kept as a copy when a ChainScope lives).
+  template <typename Make>
+  static PyValue chainSection(const char* name, const void* ready, const std::string& variant, Make& make) {
+    if (PyObject* copy = keptSection(name, ready, variant)) return PyValue(copy);
+    PyValue made = make();
+    keepSection(name, ready, variant, made.m_object.ptr());
+    return made;
+  }
+
   static PyValue null();
   static PyValue of(bool value);
   static PyValue of(std::int64_t value);
@@ -74,6 +102,10 @@ class PyValue {
 
  private:
   explicit PyValue(PyObject* made);  // a new reference; the Python error it set when null
+  // a new copy of the section kept for the scope's chain, else null
+  static PyObject* keptSection(const char* name, const void* ready, const std::string& variant);
+  // keeps a copy of `section` for the scope's chain (none without a scope)
+  static void keepSection(const char* name, const void* ready, const std::string& variant, PyObject* section);
   PyValue() = default;
   pybind11::object m_object;
 };

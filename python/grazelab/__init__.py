@@ -383,22 +383,25 @@ class Chain:
     def _simulate(self, flat, events, samples, progress, contacts, t_end):
         """The run of the options `flat` (name, value, ...; None: not given, `contacts` and
         `t_end` among them) with `samples`."""
-        flat = _with_samples(flat, samples)
         # a short run of a commensurate chain (every flight decided within a period) on the
         # calling thread; anything longer on a thread of its own that Ctrl+C stops
         direct = (progress is None and t_end is None and samples is None and self._commensurate
                   and (contacts is None or (type(contacts) is int and 0 <= contacts <= _DIRECT_CONTACTS)))
-        _check_held_events(events, contacts)
-        answer = None
-        if direct:
-            # (the common short call without the text path's frames)
+        if direct and events and (contacts is None or contacts <= MAX_EVENTS):
+            # (the common short call without the other path's frames: it costs about the run itself)
             try:
-                answer = _simulate_chain(self._prepared, flat, Result, not events, True, MAX_EVENTS)
+                answer = _simulate_chain(self._prepared, flat, Result, False, True, MAX_EVENTS)
             except ValueError as error:
                 raise ValueError(_message(str(error))) from None
-        if answer is None:
-            answer = _run_simulate(
-                lambda options: _simulate_chain(self._prepared, options, Result, not events, direct, MAX_EVENTS), flat)
+            if answer is not None:
+                result, decimals = answer
+                if decimals is None and result["trust"]["verdict"] != "unreliable":
+                    return result
+                return _simulated(result, decimals)
+        flat = _with_samples(flat, samples)
+        _check_held_events(events, contacts)
+        answer = _run_simulate(
+            lambda options: _simulate_chain(self._prepared, options, Result, not events, direct, MAX_EVENTS), flat)
         if progress is not None:
             progress(1.0, "done")
         return _simulated(*answer)

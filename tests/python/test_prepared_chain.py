@@ -3,6 +3,7 @@
 """grazelab.Chain: a chain of N masses read and designed once, run many times, with the same
 bits as simulate(masses=...) and as the command line."""
 
+import copy
 import os
 import signal
 import threading
@@ -148,3 +149,39 @@ def test_the_notes_chain_written_as_masses_is_run_by_the_notes_engine(two_mass, 
                 assert run[key] == note[key], key
             if precision == "quad":
                 assert (run.events_decimal["t"] == note.events_decimal["t"]).all()
+
+
+def test_a_chains_sections_are_each_runs_own_and_follow_the_chain():
+    """The chain and the note's model are made once per chain and copied into each run's result:
+    a result changed by its script leaves the next one whole, and each chain gets its own."""
+    note = dict(glo=0.5, perturb=(0, 0, 0, -0.05), contacts=3, trust="off")
+    first = gl.simulate(m2=0.3, **note)
+    reference = {key: copy.deepcopy(dict(first[key])) for key in ("chain", "model")}
+    first.model["m2"] = -1.0
+    first.model["P"][0][0] = 99.0
+    first.chain["masses"].append(7.0)
+    second = gl.simulate(m2=0.3, **note)
+    assert second.model["m2"] == 0.3 and second.model["P"][0][0] != 99.0
+    assert len(second.chain["masses"]) == 2
+    # a copy changed, inside too, leaves the next whole: nothing of one result is another's
+    second.model["P"][1].append(5.0)
+    second.chain["springs"][0] = 0.0
+    second_again = gl.simulate(m2=0.3, **note)
+    assert dict(second_again.model) == reference["model"] and dict(second_again.chain) == reference["chain"]
+    for key, inner in (("model", "P"), ("chain", "masses"), ("chain", "springs")):
+        assert second_again[key][inner] is not second[key][inner]
+    assert second_again.model["P"][1] is not second.model["P"][1]
+    assert type(second.model) is type(first) and type(second.chain) is type(first)
+    # another chain, and the same chain at another precision asked for, have their own
+    other = gl.simulate(m2=0.45, **note)
+    assert other.model["m2"] == 0.45 and other.chain["masses"] == [1.0, 0.45]
+    assert gl.simulate(m2=0.3, precision="double", **note).model["precision"] == "double"
+    assert gl.simulate(m2=0.3, **note).model["precision"] == "auto"
+    # a prepared chain's chain section likewise, and chains made again after others were freed
+    for masses in ([1, 0.2, 0.05], [1, 0.3, 0.05], [1, 0.2, 0.05]):
+        chain = gl.Chain(masses=masses, frequencies=[3, 2, 1])
+        run = chain.simulate(glo_weights=(0.2, 0.3, 0.5), contacts=2, trust="off")
+        assert run.chain["masses"] == [float(m) for m in masses]
+        run.chain["masses"][0] = -5.0
+        assert chain.simulate(glo_weights=(0.2, 0.3, 0.5), contacts=2, trust="off").chain["masses"][0] == 1.0
+        del chain

@@ -94,10 +94,14 @@ std::vector<typename V::Field> headFields(const AnyRun& any, PrecisionChoice pre
       [&]<typename S>(const RunIn<S>& run) {
         const core::BasicReadyChain<S>& ready = *run.ready;
         std::vector<typename V::Field> head;
-        head.emplace_back("chain", values::massChain<V>(ready.numbers, ready.dynamics.period));
+        const std::string precisionName(toString(precision));
+        head.emplace_back("chain", values::chainSection<V>("chain", &ready, std::string(), [&] {
+                            return values::massChain<V>(ready.numbers, ready.dynamics.period);
+                          }));
         if (ready.notesModel) {
-          head.emplace_back("model", values::model<V>(ModelInput<S>{*ready.notesModel, *ready.notes},
-                                                   std::string(toString(precision))));
+          head.emplace_back("model", values::chainSection<V>("model", &ready, precisionName, [&] {
+                              return values::model<V>(ModelInput<S>{*ready.notesModel, *ready.notes}, precisionName);
+                            }));
         }
         head.emplace_back("initial", V::object({{"description", V::of(run.description)},
                                                 {"state", stateValue<V>(namesOf(run), S(0), run.start.state)}}));

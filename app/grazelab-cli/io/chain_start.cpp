@@ -146,8 +146,8 @@ std::optional<core::BasicChainStart<S>> chainStart(const OptionValues& options, 
                              ", right after its impact"
                    : options.isSet("state") ? std::string("the state given")
                                             : "GLO_lambda at its touch, weights " +
-                                                  options.value("glo-weights").toStdString();
-    if (options.isSet("perturb")) *description += ", pushed by " + options.value("perturb").toStdString();
+                                                  options.text("glo-weights");
+    if (options.isSet("perturb")) *description += ", pushed by " + options.text("perturb");
   }
   if (start.state.u[s] > chain.gap) {
     error = QStringLiteral("the start has u%1 = %2 past the stop (gap %3)")

@@ -21,6 +21,19 @@
 
 namespace grazelab::cli::values {
 
+/// A section of a run's document that is the same in every run of its chain (the chain, the
+/// note's model): `make()`, unless V keeps such sections (V::chainSection: the Python module's
+/// objects, made once per chain and then copied, a tenth of the cost), by the section's `name`,
+/// the chain in its precision (`ready`) and the `variant` asked for (the precision's name).
+template <typename V, typename Make>
+V chainSection(const char* name, const void* ready, const std::string& variant, Make&& make) {
+  if constexpr (requires { V::chainSection(name, ready, variant, make); }) {
+    return V::chainSection(name, ready, variant, make);
+  } else {
+    return make();
+  }
+}
+
 /// The note's model of a two-mass chain with its derived quantities (k2 and where it comes from,
 /// w1, w2, T1, T2, P, lambda*), and the precision asked for.
 template <typename V, typename S>

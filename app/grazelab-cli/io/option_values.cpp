@@ -9,17 +9,45 @@
 
 namespace grazelab::cli {
 
+namespace {
+
+// numbers given as numbers as their text: their shortest decimal texts joined by ','
+std::string joinedNumbers(const GivenOption& option) {
+  std::string joined;
+  joined.reserve(option.numbers.size() * 8);
+  for (std::size_t i = 0; i < option.numbers.size(); ++i) {
+    if (i > 0) joined += ',';
+    joined += shortestText(option.numbers[i]);
+  }
+  return joined;
+}
+
+}  // namespace
+
 OptionValues::OptionValues(const QCommandLineParser& parser) : m_parser(&parser) {}
 
 OptionValues::OptionValues(std::vector<std::pair<QString, QString>> given) {
   m_given.reserve(given.size());
   for (auto& [name, text] : given) m_given.push_back({name.toStdString(), std::move(text), {}, false});
+  markGivenNames();
 }
 
-OptionValues::OptionValues(std::vector<GivenOption> given) : m_given(std::move(given)) {}
+OptionValues::OptionValues(std::vector<GivenOption> given) : m_given(std::move(given)) { markGivenNames(); }
 
 OptionValues::OptionValues(const OptionValues& base, std::vector<GivenOption> given, std::vector<std::string> dropped)
-    : m_base(&base), m_given(std::move(given)), m_dropped(std::move(dropped)) {}
+    : m_base(&base), m_given(std::move(given)), m_dropped(std::move(dropped)) {
+  markGivenNames();
+}
+
+std::uint64_t OptionValues::nameBit(std::string_view name) {
+  const unsigned first = name.empty() ? 0U : static_cast<unsigned char>(name.front());
+  const unsigned last = name.empty() ? 0U : static_cast<unsigned char>(name.back());
+  return std::uint64_t(1) << ((name.size() * 7 + first * 3 + last) & 63U);
+}
+
+void OptionValues::markGivenNames() {
+  for (const GivenOption& option : m_given) m_givenNames |= nameBit(option.name);
+}
 
 bool OptionValues::dropped(std::string_view name) const {
   for (const std::string& gone : m_dropped) {
@@ -29,6 +57,7 @@ bool OptionValues::dropped(std::string_view name) const {
 }
 
 const GivenOption* OptionValues::given(std::string_view name) const {
+  if ((m_givenNames & nameBit(name)) == 0) return nullptr;
   for (const GivenOption& option : m_given) {
     if (option.name == name) return &option;
   }
@@ -52,12 +81,13 @@ QString OptionValues::value(std::string_view name) const {
   if (!option && m_base && !dropped(name)) return m_base->value(name);
   if (!option) return defaultOptionValue(name);
   if (!option->numeric) return option->text;
-  std::string joined;
-  for (std::size_t i = 0; i < option->numbers.size(); ++i) {
-    if (i > 0) joined += ',';
-    joined += shortestText(option->numbers[i]);
-  }
-  return QString::fromStdString(joined);
+  return QString::fromStdString(joinedNumbers(*option));
+}
+
+std::string OptionValues::text(std::string_view name) const {
+  const GivenOption* option = m_parser ? nullptr : given(name);
+  if (!option || !option->numeric) return value(name).toStdString();
+  return joinedNumbers(*option);
 }
 
 QString OptionValues::value(const QString& name) const {

@@ -6,6 +6,7 @@
 
 #include <boost/container/small_vector.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -50,11 +51,18 @@ class OptionValues {
   QString value(const char* name) const { return value(std::string_view(name)); }
   QString value(std::string_view name) const;
   QString value(const QString& name) const;
+  /// value() as UTF-8, without a QString on the way for numbers given as numbers (a start's
+  /// description in a short run from Python).
+  std::string text(std::string_view name) const;
   /// The numbers of an option given as numbers; none when it was given as text or not at all.
   std::optional<std::span<const double>> numbers(std::string_view name) const;
 
  private:
   const GivenOption* given(std::string_view name) const;
+  /// the bits of the names in `m_given` (nameBit): a name whose bit is not among them was not
+  /// given, told without a search (most names asked for are not: options at their defaults)
+  static std::uint64_t nameBit(std::string_view name);
+  void markGivenNames();
 
   bool dropped(std::string_view name) const;
 
@@ -62,6 +70,7 @@ class OptionValues {
   const OptionValues* m_base = nullptr;
   std::vector<GivenOption> m_given;
   std::vector<std::string> m_dropped;
+  std::uint64_t m_givenNames = 0;
 };
 
 /// The default text of an option of `info` and `simulate` (empty when it has none).
