@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+#pragma once
+
+#include <stop_token>
+#include <string_view>
+#include <vector>
+
+#include "core/orbits/chain_kipp.h"
+
+/// A family of kIPP orbits of any chain followed in energy by pseudo-arclength continuation on the
+/// exact return map (docs/model.md section 12): the unknowns are the section's 2N - 2 coordinates
+/// and the energy, in scaled units (lengths over the gap, speeds over the scale's speed, the
+/// energy over the first orbit's), the family is F = P^k(x) - x = 0 with the exact Jacobian
+/// [DP^k g - I | dP^k/dE]; a predictor along the tangent (the Jacobian's null vector), a Newton
+/// corrector on the family and the arclength, a step that grows while the corrector converges
+/// fast and halves when it fails. A fold in energy is passed like any other point.
+namespace grazelab::core {
+
+/// Why a continued family ends.
+enum class ChainFamilyEnd {
+  EnergyLimit,  ///< the energy left the range asked for
+  StepLimit,    ///< the most orbits asked for were taken
+  /// the next orbit is not an admissible k-impact one at the smallest step: an impact fades, a
+  /// flight touches the stop, a contact cannot be decided, or the orbit becomes a shorter one run
+  /// twice (`refusal` says which, as far as the path shows it)
+  Inadmissible,
+  NotConverging,  ///< the corrector fails at the smallest step without the path saying why
+  Stopped,        ///< a stop was requested
+};
+/// "energy-limit", "step-limit", "inadmissible", "not-converging", "stopped".
+std::string_view toString(ChainFamilyEnd end);
+
+template <typename S>
+struct ChainContinuationOptions {
+  S energyLow = 0;   ///< the family is followed while its energy stays in
+  S energyHigh = 0;  ///< [energyLow, energyHigh]
+  int maxOrbits = 2000;
+  /// steps along the arclength in scaled units: the first, the largest, and the smallest tried
+  /// before the family is said to end
+  double firstStep = 1e-3;
+  double maxStep = 0.05;
+  double minStep = 1e-9;
+};
+
+template <typename S>
+struct ContinuedChainFamily {
+  int impacts = 0;
+  /// the orbits in the order followed, the first the one started from; each admissible, with its
+  /// monodromy, multipliers and class
+  std::vector<BasicChainPeriodicOrbit<S>> orbits;
+  ChainFamilyEnd end = ChainFamilyEnd::NotConverging;
+  OrbitRefusal refusal = OrbitRefusal::None;  ///< an Inadmissible end: what the path showed
+};
+
+/// Follows the family of the admissible orbit `start` with its energy first moving the way of
+/// `direction` (+1 up, -1 down), until it ends.
+template <typename S>
+ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, const BasicChainPeriodicOrbit<S>& start,
+                                            int direction, const ChainContinuationOptions<S>& options,
+                                            std::stop_token stop = {});
+
+}  // namespace grazelab::core

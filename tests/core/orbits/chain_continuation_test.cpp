@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for core/orbits/chain_continuation.cpp: pseudo-arclength continuation of kIPP families of
+// any chain. The 1IPP family it follows from one orbit is, row by row, the closed form's at the
+// row's period (random chains of 2 to 6 masses, walls or not, any stopped mass: an independent
+// algorithm); a 2IPP family born at a period doubling of three masses is, row by row, the orbit
+// Newton finds at that row's energy (two algorithms), and goes back to the doubling.
+#include "core/orbits/chain_continuation.h"
+
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "core/orbits/chain_bifurcations.h"
+#include "core/orbits/chain_onepp.h"
+
+namespace grazelab::core {
+namespace {
+
+MassChain randomChain(std::mt19937& rng, int n) {
+  std::uniform_real_distribution<double> logUniform(-0.5, 0.5);
+  MassChain chain;
+  for (int i = 0; i < n; ++i) {
+    chain.masses.push_back(std::pow(10.0, logUniform(rng)));
+    chain.springs.push_back(std::pow(10.0, logUniform(rng)));
+  }
+  chain.rightSpring = rng() % 2 ? std::pow(10.0, logUniform(rng)) : 0.0;
+  chain.stopMass = int(rng() % unsigned(n)) + 1;
+  chain.gap = 0.5 + double(rng() % 1000) / 1000.0;
+  return chain;
+}
+
+// the largest difference of two states in the scaled units of the chain
+double stateDistance(const ChainDynamics& dynamics, const ChainState& a, const ChainState& b) {
+  const ChainStateScale<double> scale(dynamics);
+  ChainVector<double> x(2 * a.u.size()), y(2 * a.u.size());
+  x << a.u, a.v;
+  y << b.u, b.v;
+  return (scale.scaled(x) - scale.scaled(y)).cwiseAbs().maxCoeff();
+}
+
+TEST(ChainContinuation, TheOneImpactFamilyFollowedIsTheClosedFormsOfRandomChains) {
+  std::mt19937 rng(20261203);
+  int rows = 0, families = 0;
+  for (int trial = 0; trial < 10; ++trial) {
+    const MassChain chain = randomChain(rng, 2 + trial % 5);
+    const ReadyChain ready = readyChain(chain);
+    const double end = chainOnePeriodicEnd(chain);
+    ChainOnePeriodicStability<double> first;
+    for (int k = 5; k < 20 && !first.orbit.admissible(); ++k) first = chainOnePeriodicStability(ready, end * k / 20);
+    if (!first.orbit.admissible()) continue;
+    for (const int direction : {-1, 1}) {
+      ChainContinuationOptions<double> options;
+      options.energyLow = first.orbit.energy / 20;
+      options.energyHigh = first.orbit.energy * 20;
+      options.maxOrbits = 120;
+      const ContinuedChainFamily<double> family = continueChainFamily(ready, first.orbit, direction, options);
+      ++families;
+      EXPECT_GE(family.orbits.size(), 5u) << "trial " << trial << " ends " << toString(family.end);
+      for (const ChainPeriodicOrbit& orbit : family.orbits) {
+        const ChainOnePeriodicStability<double> exact = chainOnePeriodicStability(ready, orbit.period);
+        ASSERT_TRUE(exact.orbit.admissible()) << "trial " << trial << " T " << orbit.period;
+        EXPECT_LT(stateDistance(ready.dynamics, orbit.state, exact.orbit.state), 1e-8)
+            << "trial " << trial << " T " << orbit.period;
+        EXPECT_NEAR(orbit.energy, exact.orbit.energy, 1e-9 * exact.orbit.energy);
+        EXPECT_EQ(orbit.events.size(), 1u);
+        ++rows;
+      }
+      // the first step's way
+      if (family.orbits.size() > 1) {
+        EXPECT_GT(direction * (family.orbits[1].energy - family.orbits[0].energy), 0);
+      }
+    }
+  }
+  EXPECT_GE(families, 12);
+  EXPECT_GE(rows, 300);
+}
+
+ChainVector<double> flipDirection(const ChainMatrix<double>& m) {
+  const Eigen::EigenSolver<ChainMatrix<double>> solver(m);
+  Eigen::Index best = 0;
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    if (std::abs(solver.eigenvalues()[i] + 1.0) < std::abs(solver.eigenvalues()[best] + 1.0)) best = i;
+  }
+  return solver.eigenvectors().col(best).real().normalized();
+}
+
+TEST(ChainContinuation, ATwoImpactFamilyIsNewtonsOrbitAtEachOfItsEnergies) {
+  const MassChain chain{{0.6865, 1.9630, 0.8236}, {0.8423, 1.0745, 0.7486}, 0, 2, 1.0};
+  const ReadyChain ready = readyChain(chain);
+  const ChainStateScale<double> scale(ready.dynamics);
+  const double end = chainOnePeriodicEnd(chain);
+  std::vector<double> periods;
+  for (int k = 1; k < 300; ++k) periods.push_back(end * k / 300);
+  int followed = 0;
+  for (const ChainBifurcation<double>& b : chainOnePeriodicBifurcations(ready, periods).changes) {
+    if (b.kind != ChainBifurcationKind::PeriodDoubling) continue;
+    // the 2IPP orbit next to the doubling, from Newton seeded along the flip's eigenvector
+    std::optional<ChainPeriodicOrbit> seed;
+    for (const double side : {-1.0, 1.0}) {
+      const double T = b.T * (1 + side * 1e-4);
+      const ChainOnePeriodicStability<double> one = chainOnePeriodicStability(ready, T);
+      if (!one.orbit.admissible()) continue;
+      const ChainVector<double> push = flipDirection(one.orbit.monodromy.matrix);
+      for (int k = 1; k <= 20 && !seed; ++k) {
+        ChainState guess = one.orbit.state;
+        guess.u += 0.01 * k * scale.length * push.head(3);
+        guess.v += 0.01 * k * scale.speed * push.tail(3);
+        guess.u[ready.dynamics.stop] = chain.gap;
+        const ChainOrbitSearch<double> two = findChainOrbit(ready, guess, 2, ChainOrbitConstraint::Energy, one.orbit.energy);
+        if (two.orbit && std::abs(two.orbit->period - 2 * T) < 1e-2 * T) seed = two.orbit;
+      }
+    }
+    if (!seed) continue;
+    for (const int direction : {-1, 1}) {
+      ChainContinuationOptions<double> options;
+      options.energyLow = seed->energy / 4;
+      options.energyHigh = seed->energy * 4;
+      options.maxOrbits = 40;
+      const ContinuedChainFamily<double> family = continueChainFamily(ready, *seed, direction, options);
+      EXPECT_GE(family.orbits.size(), 3u) << "T* " << b.T << " ends " << toString(family.end);
+      for (const ChainPeriodicOrbit& orbit : family.orbits) {
+        ASSERT_EQ(orbit.events.size(), 2u);
+        const ChainOrbitSearch<double> newton =
+            findChainOrbit(ready, orbit.state, 2, ChainOrbitConstraint::Energy, orbit.energy);
+        ASSERT_TRUE(newton.orbit) << toString(newton.problem) << " at E " << orbit.energy;
+        EXPECT_LT(stateDistance(ready.dynamics, orbit.state, newton.orbit->state), 1e-8) << "E " << orbit.energy;
+        EXPECT_NEAR(orbit.period, newton.orbit->period, 1e-9 * orbit.period);
+      }
+      ++followed;
+    }
+  }
+  EXPECT_GE(followed, 2);
+}
+
+}  // namespace
+}  // namespace grazelab::core
