@@ -62,17 +62,7 @@ bool nearAChange(const std::vector<ChainMultiplier<S>>& at, const std::vector<S>
 // a fast one far from any change does not refine where a slow one sits near -1.
 template <typename S>
 bool mayHideAPair(const CensusRow<S>& a, const CensusRow<S>& b) {
-  using std::abs;
-  if (a.multipliers.empty() || a.multipliers.size() != b.multipliers.size()) return false;
-  std::vector<S> moved;
-  for (std::size_t i = 0; i < a.multipliers.size(); ++i) {
-    const ChainMultiplier<S>& x = a.multipliers[i];
-    const ChainMultiplier<S>& y = b.multipliers[i];
-    // two of opposite signatures that swapped places: they met in between (and may have left)
-    if (x.krein != 0 && y.krein != 0 && x.krein != y.krein) return true;
-    moved.push_back(abs(std::complex<S>(x.re - y.re, x.im - y.im)));
-  }
-  return nearAChange(a.multipliers, moved) || nearAChange(b.multipliers, moved);
+  return core::mayHideAPair(a.multipliers, b.multipliers);
 }
 
 // the same from the closed form alone (V < 0; the flight is not searched, the path not run): what
@@ -88,16 +78,8 @@ CensusRow<S> closedFormRowAt(const BasicReadyChain<S>& chain, const S& T) {
 
 template <typename S>
 ChainBifurcation<S> named(const MultiplierCensus& below, const MultiplierCensus& above) {
-  const int negative = above.negative - below.negative;
-  const int positive = above.positive - below.positive;
-  const int complex = above.complex - below.complex;
   ChainBifurcation<S> point;
-  const int moved = (negative != 0) + (positive != 0) + (complex != 0);
-  if (moved == 1) {
-    point.kind = negative != 0 ? ChainBifurcationKind::PeriodDoubling
-                 : positive != 0 ? ChainBifurcationKind::Fold
-                                 : ChainBifurcationKind::KreinCollision;
-  }
+  point.kind = changeKind(below, above);
   point.leaves = above.onCircle < below.onCircle;
   return point;
 }
@@ -232,6 +214,31 @@ MultiplierCensus censusOf(const ChainMonodromy<S>& monodromy) {
   return census;
 }
 
+template <typename S>
+bool mayHideAPair(const std::vector<ChainMultiplier<S>>& a, const std::vector<ChainMultiplier<S>>& b) {
+  using std::abs;
+  if (a.empty() || a.size() != b.size()) return false;
+  std::vector<S> moved;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const ChainMultiplier<S>& x = a[i];
+    const ChainMultiplier<S>& y = b[i];
+    // two of opposite signatures that swapped places: they met in between (and may have left)
+    if (x.krein != 0 && y.krein != 0 && x.krein != y.krein) return true;
+    moved.push_back(abs(std::complex<S>(x.re - y.re, x.im - y.im)));
+  }
+  return nearAChange(a, moved) || nearAChange(b, moved);
+}
+
+ChainBifurcationKind changeKind(const MultiplierCensus& before, const MultiplierCensus& after) {
+  const int negative = after.negative - before.negative;
+  const int positive = after.positive - before.positive;
+  const int complex = after.complex - before.complex;
+  if ((negative != 0) + (positive != 0) + (complex != 0) != 1) return ChainBifurcationKind::Other;
+  return negative != 0 ? ChainBifurcationKind::PeriodDoubling
+         : positive != 0 ? ChainBifurcationKind::Fold
+                         : ChainBifurcationKind::KreinCollision;
+}
+
 std::string_view toString(ChainBifurcationKind kind) {
   switch (kind) {
     case ChainBifurcationKind::PeriodDoubling: return "period-doubling";
@@ -278,6 +285,7 @@ ChainBifurcations<S> chainOnePeriodicBifurcations(const BasicReadyChain<S>& chai
 
 #define GRAZELAB_CHAIN_BIFURCATIONS(S)                                                                          \
   template MultiplierCensus censusOf<S>(const ChainMonodromy<S>&);                                              \
+  template bool mayHideAPair<S>(const std::vector<ChainMultiplier<S>>&, const std::vector<ChainMultiplier<S>>&); \
   template ChainBifurcations<S> chainOnePeriodicBifurcations<S>(const BasicReadyChain<S>&, const std::vector<S>&, \
                                                                 std::stop_token);                               \
   template ChainBifurcations<S> chainOnePeriodicBifurcations<S>(const BasicReadyChain<S>&,                      \

@@ -41,6 +41,17 @@ enum class ChainBifurcationKind {
 };
 /// "period-doubling", "fold", "krein-collision", "other".
 std::string_view toString(ChainBifurcationKind kind);
+/// Whether two changes of stability that undo each other could hide between two orbits of one
+/// family whose multipliers (by angle, as ChainMonodromy orders them) are `a` and `b`: two of
+/// opposite Krein signatures swapped places, or a multiplier at either end is nearer a change of
+/// the census (its conjugate or one of the other signature, on the circle; the circle, off it
+/// and complex; +-1, real) than four times what it and the one it would meet moved in between.
+template <typename S>
+bool mayHideAPair(const std::vector<ChainMultiplier<S>>& a, const std::vector<ChainMultiplier<S>>& b);
+
+/// What changed from the census `before` to `after` (another number on the circle): the kind of
+/// the change, by which of the real negative, real positive and complex counts moved.
+ChainBifurcationKind changeKind(const MultiplierCensus& before, const MultiplierCensus& after);
 
 template <typename S>
 struct ChainBifurcation {

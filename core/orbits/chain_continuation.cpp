@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "core/numbers/eigen_quad.h"
@@ -94,6 +95,163 @@ S largestRowSum(const ChainMatrix<S>& a) {
   return largest;
 }
 
+// The family's orbit on the hyperplane through `predicted` normal to `normal` (scaled unknowns):
+// Newton on [F; normal . (y - predicted)] from the predictor, the first iterate that closes within
+// its tolerance polished while Newton still halves its residual (a row is then as exact as S
+// allows), with how far it may be along the map's softest direction: the tolerance times the
+// bordered Jacobian's inverse (next to a period doubling the orbit is known only so far from the
+// shorter one run twice). A step longer than `longest` leaves the family: none then.
+template <typename S>
+struct Corrected {
+  std::optional<FamilyAt<S>> accepted;
+  ChainVector<S> y;  // its unknowns
+  S spread = 0;
+  int corrections = 0;
+  OrbitRefusal refusal = OrbitRefusal::None;  // none accepted: the refusal the path met, if any
+};
+
+template <typename S>
+Corrected<S> correctOnto(const Unknowns<S>& unknowns, const ChainVector<S>& unit, const ChainVector<S>& predicted,
+                         const ChainVector<S>& normal, const S& longest, const BasicChainState<S>& like, int impacts,
+                         const S& tolerance) {
+  constexpr int kCorrections = 12;
+  const Eigen::Index m = predicted.size();
+  Corrected<S> out;
+  ChainVector<S> y = predicted;
+  S acceptedResidual = 0;
+  for (; out.corrections < kCorrections; ++out.corrections) {
+    FamilyAt<S> at = familyAt(unknowns, unit, y, like, impacts, tolerance);
+    if (!at.held) {
+      out.refusal = at.path.refusal;
+      break;
+    }
+    const S residual = at.path.periodicityResidual;
+    if (out.accepted && !(residual < acceptedResidual / 2)) break;
+    ChainMatrix<S> bordered(m, m);
+    bordered.topRows(m - 1) = at.jacobian;
+    bordered.row(m - 1) = normal.transpose();
+    ChainVector<S> g(m);
+    g.head(m - 1) = at.residual;
+    g[m - 1] = normal.dot(y - predicted);
+    const Eigen::FullPivLU<ChainMatrix<S>> lu(bordered);
+    const bool invertible = lu.isInvertible();
+    if (residual <= at.tolerance) {
+      out.spread = invertible ? S(at.tolerance * largestRowSum(ChainMatrix<S>(lu.inverse()))) : S(1);
+      acceptedResidual = residual;
+      out.y = y;
+      out.accepted = std::move(at);
+      if (residual == 0) break;
+    }
+    if (!invertible) break;
+    const ChainVector<S> dy = lu.solve(g);
+    if (!isFinite(S(dy.cwiseAbs().maxCoeff())) || dy.norm() > longest) break;  // (leaving the family)
+    y -= dy;
+  }
+  if (out.accepted) out.refusal = OrbitRefusal::None;
+  return out;
+}
+
+// The change of stability between the family's orbits `a` and `b` (scaled unknowns wa and wb,
+// their censuses decided and another number on the circle), by bisection along the chord: each
+// middle corrected onto the family on the hyperplane normal to the chord, and kept on the side
+// whose number on the circle it has, until the bracket is at the rounding the orbits close to or
+// a middle is not admissible or undecided.
+template <typename S>
+ChainFamilyChange<S> locateChange(const BasicReadyChain<S>& chain, const Unknowns<S>& unknowns, const ChainVector<S>& unit,
+                                  const ChainVector<S>& wa, const ChainVector<S>& wb, BasicChainPeriodicOrbit<S> a,
+                                  BasicChainPeriodicOrbit<S> b, int impacts, const S& tolerance, std::stop_token stop) {
+  using std::abs;
+  const ChainVector<S> chord = wb - wa;
+  const S length = chord.norm();
+  const ChainVector<S> normal = chord / length;
+  MultiplierCensus below = censusOf(a.monodromy);
+  MultiplierCensus above = censusOf(b.monodromy);
+  S from = 0;
+  S to = 1;
+  const S resolution = std::max<S>(S(16) * tolerance, S(4) * std::numeric_limits<S>::epsilon());
+  for (int halving = 0; halving < 80 && (to - from) * length > resolution && !stop.stop_requested(); ++halving) {
+    const S middle = (from + to) / 2;
+    const Corrected<S> corrected =
+        correctOnto<S>(unknowns, unit, ChainVector<S>(wa + middle * chord), normal, length, a.state, impacts, tolerance);
+    if (!corrected.accepted) break;
+    BasicChainPeriodicOrbit<S> orbit = evaluateChainOrbit(chain, *corrected.accepted->start, impacts,
+                                                          corrected.accepted->tolerance);
+    if (!orbit.admissible()) break;
+    const MultiplierCensus census = censusOf(orbit.monodromy);
+    if (!census.decided) break;
+    if (census.onCircle == below.onCircle) {
+      from = middle;
+      a = std::move(orbit);
+      below = census;
+    } else {
+      to = middle;
+      b = std::move(orbit);
+      above = census;
+    }
+  }
+  ChainFamilyChange<S> change;
+  change.kind = changeKind(below, above);
+  change.leaves = above.onCircle < below.onCircle;
+  change.energy = (a.energy + b.energy) / 2;
+  change.energyError = abs(b.energy - a.energy) / 2;
+  change.period = (a.period + b.period) / 2;
+  change.periodError = abs(b.period - a.period) / 2;
+  change.state = a.state;
+  return change;
+}
+
+// A point of the family: its orbit and its scaled unknowns.
+template <typename S>
+struct FamilyPoint {
+  BasicChainPeriodicOrbit<S> orbit;
+  ChainVector<S> w;
+};
+
+// The changes of stability between the family's points a and b (in one unit), in order: located
+// where their numbers on the circle differ; else, where a pair of changes that undo each other
+// could hide (mayHideAPair), looked for in the halves, each middle corrected onto the family on
+// the hyperplane normal to the chord, while `budget` lasts (then the stretch is counted
+// unsearched) and the chord is longer than 1e-9.
+template <typename S>
+void searchBetween(const BasicReadyChain<S>& chain, const Unknowns<S>& unknowns, const ChainVector<S>& unit,
+                   const FamilyPoint<S>& a, const FamilyPoint<S>& b, int impacts, const S& tolerance,
+                   const std::stop_token& stop, int& budget, ContinuedChainFamily<S>& family) {
+  const MultiplierCensus below = censusOf(a.orbit.monodromy);
+  const MultiplierCensus above = censusOf(b.orbit.monodromy);
+  if (!below.decided || !above.decided || stop.stop_requested()) return;
+  if (below.onCircle != above.onCircle) {
+    ChainFamilyChange<S> change = locateChange(chain, unknowns, unit, a.w, b.w, a.orbit, b.orbit, impacts, tolerance, stop);
+    change.after = family.orbits.size() - 1;
+    family.changes.push_back(std::move(change));
+    return;
+  }
+  const ChainVector<S> chord = b.w - a.w;
+  if (chord.norm() <= S(1e-9) || !mayHideAPair(a.orbit.monodromy.multipliers, b.orbit.monodromy.multipliers)) return;
+  std::optional<FamilyPoint<S>> middle;
+  // the middle, or a point aside where it has no orbit or an undecided one
+  for (const S& at : {S(0.5), S(0.375), S(0.625)}) {
+    if (budget-- <= 0) {
+      ++family.unsearched;
+      return;
+    }
+    const Corrected<S> corrected = correctOnto<S>(unknowns, unit, ChainVector<S>(a.w + at * chord),
+                                                  ChainVector<S>(chord.normalized()), chord.norm(), a.orbit.state,
+                                                  impacts, tolerance);
+    if (!corrected.accepted) continue;
+    BasicChainPeriodicOrbit<S> orbit =
+        evaluateChainOrbit(chain, *corrected.accepted->start, impacts, corrected.accepted->tolerance);
+    if (!orbit.admissible() || !censusOf(orbit.monodromy).decided) continue;
+    middle = FamilyPoint<S>{std::move(orbit), corrected.y};
+    break;
+  }
+  if (!middle) return;
+  searchBetween(chain, unknowns, unit, a, *middle, impacts, tolerance, stop, budget, family);
+  searchBetween(chain, unknowns, unit, *middle, b, impacts, tolerance, stop, budget, family);
+}
+
+// the orbits the search for a hidden pair may compute between two consecutive orbits
+constexpr int kPairSearchBudget = 256;
+
 }  // namespace
 
 template <typename S>
@@ -126,52 +284,19 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
   S tolerance = here.tolerance;
   double h = options.firstStep;
   OrbitRefusal refusal = OrbitRefusal::None;  // the last refusal a failed step met
-  constexpr int kCorrections = 12;
   while (int(family.orbits.size()) < options.maxOrbits) {
     if (stop.stop_requested()) {
       family.end = ChainFamilyEnd::Stopped;
       return family;
     }
     // the predictor along the tangent, then Newton on the family and the arclength's hyperplane
-    const ChainVector<S> predicted = w + S(h) * t;
-    ChainVector<S> y = predicted;
-    // the first iterate that closes within its tolerance, polished while Newton still halves its
-    // residual (a row is then as exact as S allows), and how far it may be along the map's softest
-    // direction: the tolerance times the bordered Jacobian's inverse (next to a period doubling
-    // the orbit is known only so far from the shorter one run twice)
-    std::optional<FamilyAt<S>> accepted;
-    ChainVector<S> acceptedY;
-    S acceptedResidual = 0;
-    S spread = 0;
-    int corrections = 0;
-    for (; corrections < kCorrections; ++corrections) {
-      FamilyAt<S> at = familyAt(unknowns, unit, y, family.orbits.back().state, k, tolerance);
-      if (!at.held) {
-        refusal = at.path.refusal;
-        break;
-      }
-      const S residual = at.path.periodicityResidual;
-      if (accepted && !(residual < acceptedResidual / 2)) break;
-      ChainMatrix<S> bordered(m, m);
-      bordered.topRows(m - 1) = at.jacobian;
-      bordered.row(m - 1) = t.transpose();
-      ChainVector<S> g(m);
-      g.head(m - 1) = at.residual;
-      g[m - 1] = t.dot(y - predicted);
-      const Eigen::FullPivLU<ChainMatrix<S>> lu(bordered);
-      const bool invertible = lu.isInvertible();
-      if (residual <= at.tolerance) {
-        spread = invertible ? S(at.tolerance * largestRowSum(ChainMatrix<S>(lu.inverse()))) : S(1);
-        acceptedResidual = residual;
-        acceptedY = y;
-        accepted = std::move(at);
-        if (residual == 0) break;
-      }
-      if (!invertible) break;
-      const ChainVector<S> dy = lu.solve(g);
-      if (!isFinite(S(dy.cwiseAbs().maxCoeff())) || dy.norm() > S(2 * h)) break;  // (leaving the family)
-      y -= dy;
-    }
+    const Corrected<S> corrected = correctOnto<S>(unknowns, unit, ChainVector<S>(w + S(h) * t), t, S(2 * h),
+                                                  family.orbits.back().state, k, tolerance);
+    if (!corrected.accepted) refusal = corrected.refusal;
+    const std::optional<FamilyAt<S>>& accepted = corrected.accepted;
+    const ChainVector<S>& acceptedY = corrected.y;
+    const S spread = corrected.spread;
+    const int corrections = corrected.corrections;
     // the orbit there: admissible, no shorter one run twice, and the family's tangent turned by
     // less than a quarter of a right angle (a larger turn is a jump onto another family)
     std::optional<BasicChainPeriodicOrbit<S>> orbit;
@@ -205,6 +330,10 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
       family.end = ChainFamilyEnd::EnergyLimit;
       return family;
     }
+    // the changes of stability since the last orbit, located (in the units both are in)
+    int budget = kPairSearchBudget;
+    searchBetween(chain, unknowns, unit, FamilyPoint<S>{family.orbits.back(), w}, FamilyPoint<S>{*orbit, acceptedY}, k,
+                  accepted->tolerance, stop, budget, family);
     // the energy's unit moves to the new orbit's energy: w, the tangent (renormalised) with it
     const S ratio = abs(orbit->energy) / unit[m - 1];
     w = acceptedY;

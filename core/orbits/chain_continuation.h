@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/orbits/chain_bifurcations.h"
 #include "core/orbits/chain_kipp.h"
 
 /// A family of kIPP orbits of any chain followed in energy by pseudo-arclength continuation on the
@@ -43,12 +44,34 @@ struct ChainContinuationOptions {
   double minStep = 1e-9;
 };
 
+/// Where a continued family changes stability: between two of its orbits whose multipliers sit
+/// differently on the unit circle (both decided), located by bisection along the chord between
+/// them (each point corrected onto the family) to the resolution of S, and named by how the rest
+/// of the census moved across the last bracket. Between two orbits of one census the halves are
+/// searched where two changes that undo each other could hide (mayHideAPair), as along the 1IPP
+/// family.
+template <typename S>
+struct ChainFamilyChange {
+  ChainBifurcationKind kind = ChainBifurcationKind::Other;
+  bool leaves = true;      ///< multipliers leave the circle the way the family is followed
+  std::size_t after = 0;   ///< between orbits[after] and orbits[after + 1]
+  S energy = 0;            ///< the middle of the last bracket, and half its spread
+  S energyError = 0;
+  S period = 0;
+  S periodError = 0;
+  BasicChainState<S> state;  ///< the bracket's orbit on the side the family comes from
+};
+
 template <typename S>
 struct ContinuedChainFamily {
   int impacts = 0;
   /// the orbits in the order followed, the first the one started from; each admissible, with its
   /// monodromy, multipliers and class
   std::vector<BasicChainPeriodicOrbit<S>> orbits;
+  std::vector<ChainFamilyChange<S>> changes;  ///< in the order followed
+  /// the stretches between two consecutive orbits where the search for two changes that undo each
+  /// other ran out of its budget (256 orbits) before it could rule them out
+  int unsearched = 0;
   ChainFamilyEnd end = ChainFamilyEnd::NotConverging;
   OrbitRefusal refusal = OrbitRefusal::None;  ///< an Inadmissible end: what the path showed
 };

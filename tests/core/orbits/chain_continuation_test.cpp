@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -77,6 +78,64 @@ TEST(ChainContinuation, TheOneImpactFamilyFollowedIsTheClosedFormsOfRandomChains
   }
   EXPECT_GE(families, 12);
   EXPECT_GE(rows, 300);
+}
+
+TEST(ChainContinuation, AFamilysStabilityChangesAreTheClosedFormsNoneMissedNoneInvented) {
+  // the changes located along continued 1IPP families (bisection along the chord, each middle
+  // corrected onto the family; halves searched where two changes could hide between two orbits)
+  // against the closed form's bisection in T over the same periods (its own hidden-pair search):
+  // the same kind at the same period, none invented, none missed
+  std::mt19937 rng(20261203);
+  int found = 0;
+  for (int trial = 0; trial < 10; ++trial) {
+    const MassChain chain = randomChain(rng, 2 + trial % 5);
+    const ReadyChain ready = readyChain(chain);
+    const double end = chainOnePeriodicEnd(chain);
+    ChainOnePeriodicStability<double> first;
+    for (int k = 5; k < 20 && !first.orbit.admissible(); ++k) first = chainOnePeriodicStability(ready, end * k / 20);
+    if (!first.orbit.admissible()) continue;
+    for (const int direction : {-1, 1}) {
+      ChainContinuationOptions<double> options;
+      options.energyLow = first.orbit.energy / 20;
+      options.energyHigh = first.orbit.energy * 20;
+      options.maxOrbits = 120;
+      const ContinuedChainFamily<double> family = continueChainFamily(ready, first.orbit, direction, options);
+      EXPECT_EQ(family.unsearched, 0);
+      double low = family.orbits.front().period, high = low;
+      for (const ChainPeriodicOrbit& orbit : family.orbits) {
+        low = std::min(low, orbit.period);
+        high = std::max(high, orbit.period);
+      }
+      std::vector<double> periods;
+      for (int i = 0; i <= 3000; ++i) periods.push_back(low + (high - low) * i / 3000);
+      const ChainBifurcations<double> closed = chainOnePeriodicBifurcations(ready, periods);
+      for (const ChainFamilyChange<double>& change : family.changes) {
+        ASSERT_LT(change.after + 1, family.orbits.size());
+        const double a = family.orbits[change.after].period, b = family.orbits[change.after + 1].period;
+        EXPECT_GE(change.period, std::min(a, b) - change.periodError);
+        EXPECT_LE(change.period, std::max(a, b) + change.periodError);
+        EXPECT_LT(change.periodError, 1e-9 * change.period);
+        const ChainBifurcation<double>* nearest = nullptr;
+        for (const ChainBifurcation<double>& other : closed.changes) {
+          if (!nearest || std::abs(other.T - change.period) < std::abs(nearest->T - change.period)) nearest = &other;
+        }
+        ASSERT_NE(nearest, nullptr) << "trial " << trial << ": a change the closed form does not have";
+        EXPECT_LT(std::abs(nearest->T - change.period), 1e-9 * change.period) << "trial " << trial;
+        EXPECT_EQ(nearest->kind, change.kind) << "trial " << trial << " T " << change.period;
+        EXPECT_NEAR(nearest->energy, change.energy, 1e-8 * change.energy + change.energyError + nearest->energyError);
+        ++found;
+      }
+      for (const ChainBifurcation<double>& other : closed.changes) {
+        int matches = 0;
+        for (const ChainFamilyChange<double>& change : family.changes) {
+          matches += std::abs(other.T - change.period) < 1e-9 * other.T && other.kind == change.kind;
+        }
+        EXPECT_EQ(matches, 1) << "trial " << trial << ": the closed form's " << toString(other.kind) << " at T "
+                              << other.T;
+      }
+    }
+  }
+  EXPECT_GE(found, 30);
 }
 
 ChainVector<double> flipDirection(const ChainMatrix<double>& m) {
