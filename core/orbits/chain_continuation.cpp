@@ -351,10 +351,62 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
   return family;
 }
 
+template <typename S>
+ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const ChainFamilyChange<S>& doubling,
+                                     int parentImpacts, std::stop_token stop) {
+  using std::abs;
+  const BasicChainDynamics<S>& dynamics = chain.dynamics;
+  const Eigen::Index n = dynamics.mass.size();
+  const ChainStateScale<S> scale(dynamics);
+  ChainOrbitSearch<S> none;
+  none.problem = ChainOrbitProblem::NotConverging;
+  for (const S& offset : {S(1e-5), S(1e-4), S(1e-3), S(1e-6)}) {
+    for (const int side : {-1, 1}) {
+      if (stop.stop_requested()) {
+        none.problem = ChainOrbitProblem::Stopped;
+        return none;
+      }
+      const S energy = doubling.energy * (1 + side * offset);
+      const ChainOrbitSearch<S> parent =
+          findChainOrbit(chain, doubling.state, parentImpacts, ChainOrbitConstraint::Energy, energy, stop);
+      if (!parent.orbit) continue;
+      // the eigenvector of the multiplier nearest -1: inverse iteration on M + I, in the scaled units
+      const ChainMatrix<S> shifted =
+          scale.scaled(parent.orbit->monodromy.matrix) + ChainMatrix<S>::Identity(2 * n, 2 * n);
+      const Eigen::FullPivLU<ChainMatrix<S>> lu(shifted);
+      ChainVector<S> v = ChainVector<S>::Ones(2 * n);
+      for (int iteration = 0; iteration < 6; ++iteration) {
+        v = lu.solve(v);
+        const S size = v.norm();
+        if (!(size > 0) || !isFinite(size)) break;
+        v /= size;
+      }
+      if (!isFinite(S(v.cwiseAbs().maxCoeff()))) continue;
+      // pushed along it by growing amounts either way (the branch lies ~ sqrt(offset) away)
+      for (const S& push : {S(1e-3), S(3e-3), S(1e-2), S(3e-2), S(1e-1)}) {
+        for (const int way : {1, -1}) {
+          BasicChainState<S> guess = parent.orbit->state;
+          guess.u += (way * push * scale.length) * v.head(n);
+          guess.v += (way * push * scale.speed) * v.tail(n);
+          guess.u[dynamics.stop] = dynamics.gap;
+          ChainOrbitSearch<S> found =
+              findChainOrbit(chain, guess, 2 * parentImpacts, ChainOrbitConstraint::Energy, energy, stop);
+          if (found.orbit && abs(found.orbit->period - 2 * parent.orbit->period) <= S(0.01) * parent.orbit->period) {
+            return found;
+          }
+        }
+      }
+    }
+  }
+  return none;
+}
+
 #define GRAZELAB_INSTANTIATE(S)                                                                        \
   template ContinuedChainFamily<S> continueChainFamily<S>(const BasicReadyChain<S>&,                   \
                                                           const BasicChainPeriodicOrbit<S>&, int,      \
-                                                          const ChainContinuationOptions<S>&, std::stop_token);
+                                                          const ChainContinuationOptions<S>&, std::stop_token); \
+  template ChainOrbitSearch<S> branchAtDoubling<S>(const BasicReadyChain<S>&, const ChainFamilyChange<S>&, int,     \
+                                                   std::stop_token);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

@@ -76,6 +76,16 @@ struct ContinuedChainFamily {
   OrbitRefusal refusal = OrbitRefusal::None;  ///< an Inadmissible end: what the path showed
 };
 
+/// The orbit of twice as many impacts born at the period doubling `doubling` of a family of
+/// `parentImpacts`-impact orbits: the parent orbit at energies a little to either side of the
+/// doubling (relative offsets 1e-6 to 1e-3, by Newton from the doubling's state) pushed along the
+/// eigenvector of its multiplier nearest -1 (by inverse iteration on M + I), then Newton at that
+/// energy; the first orbit found whose period is within 1% of twice the parent's and that is not
+/// the parent run twice. Its problem when none is found (the branch's side may be too narrow).
+template <typename S>
+ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const ChainFamilyChange<S>& doubling,
+                                     int parentImpacts, std::stop_token stop = {});
+
 /// Follows the family of the admissible orbit `start` with its energy first moving the way of
 /// `direction` (+1 up, -1 down), until it ends.
 template <typename S>

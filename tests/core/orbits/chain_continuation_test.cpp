@@ -195,5 +195,54 @@ TEST(ChainContinuation, ATwoImpactFamilyIsNewtonsOrbitAtEachOfItsEnergies) {
   EXPECT_GE(followed, 2);
 }
 
+TEST(ChainContinuation, AtEachDoublingOfAFamilyABranchOfTwiceTheImpactsIsBornAndPassesThroughIt) {
+  // the 1IPP family of three masses continued through its doublings; at each, the branch of 2IPP
+  // orbits (branchAtDoubling, seeded 1e-5 of the energy away), followed both ways: one way it
+  // passes through the doubled orbit (a pitchfork of P^2: the branch's two halves are one family,
+  // each the other shifted by an impact), ten times nearer the doubling's energy than its seed, at
+  // twice its period
+  const MassChain chain{{0.6865, 1.9630, 0.8236}, {0.8423, 1.0745, 0.7486}, 0, 2, 1.0};
+  const ReadyChain ready = readyChain(chain);
+  const double end = chainOnePeriodicEnd(chain);
+  ChainOnePeriodicStability<double> first;
+  for (int k = 9; k < 20 && !first.orbit.admissible(); ++k) first = chainOnePeriodicStability(ready, end * k / 20);
+  ASSERT_TRUE(first.orbit.admissible());
+  int doublings = 0, branches = 0, through = 0;
+  for (const int direction : {-1, 1}) {
+    ChainContinuationOptions<double> options;
+    options.energyLow = first.orbit.energy / 30;
+    options.energyHigh = first.orbit.energy * 30;
+    options.maxOrbits = 300;
+    const ContinuedChainFamily<double> family = continueChainFamily(ready, first.orbit, direction, options);
+    for (const ChainFamilyChange<double>& change : family.changes) {
+      if (change.kind != ChainBifurcationKind::PeriodDoubling) continue;
+      ++doublings;
+      const ChainOrbitSearch<double> branch = branchAtDoubling(ready, change, 1);
+      if (!branch.orbit) continue;
+      ++branches;
+      EXPECT_EQ(branch.orbit->events.size(), 2u);
+      EXPECT_NEAR(branch.orbit->period, 2 * change.period, 1e-2 * change.period);
+      bool back = false;
+      for (const int way : {-1, 1}) {
+        ChainContinuationOptions<double> along;
+        along.energyLow = change.energy / 30;
+        along.energyHigh = change.energy * 30;
+        along.maxOrbits = 200;
+        const ContinuedChainFamily<double> born = continueChainFamily(ready, *branch.orbit, way, along);
+        EXPECT_NE(born.end, ChainFamilyEnd::NotConverging);
+        for (const ChainPeriodicOrbit& orbit : born.orbits) {
+          EXPECT_EQ(orbit.events.size(), 2u);
+          back = back || (std::abs(orbit.period - 2 * change.period) < 1e-6 * change.period &&
+                          std::abs(orbit.energy - change.energy) < 1e-6 * change.energy);
+        }
+      }
+      through += back;
+    }
+  }
+  EXPECT_GE(doublings, 2);
+  EXPECT_GE(branches, doublings - 1);
+  EXPECT_EQ(through, branches);
+}
+
 }  // namespace
 }  // namespace grazelab::core
