@@ -147,57 +147,10 @@ Corrected<S> correctOnto(const Unknowns<S>& unknowns, const ChainVector<S>& unit
     if (!isFinite(S(dy.cwiseAbs().maxCoeff())) || dy.norm() > longest) break;  // (leaving the family)
     y -= dy;
   }
+  // (a point farther from the predictor than `longest` is on another family)
+  if (out.accepted && (out.y - predicted).norm() > longest) out.accepted.reset();
   if (out.accepted) out.refusal = OrbitRefusal::None;
   return out;
-}
-
-// The change of stability between the family's orbits `a` and `b` (scaled unknowns wa and wb,
-// their censuses decided and another number on the circle), by bisection along the chord: each
-// middle corrected onto the family on the hyperplane normal to the chord, and kept on the side
-// whose number on the circle it has, until the bracket is at the rounding the orbits close to or
-// a middle is not admissible or undecided.
-template <typename S>
-ChainFamilyChange<S> locateChange(const BasicReadyChain<S>& chain, const Unknowns<S>& unknowns, const ChainVector<S>& unit,
-                                  const ChainVector<S>& wa, const ChainVector<S>& wb, BasicChainPeriodicOrbit<S> a,
-                                  BasicChainPeriodicOrbit<S> b, int impacts, const S& tolerance, std::stop_token stop) {
-  using std::abs;
-  const ChainVector<S> chord = wb - wa;
-  const S length = chord.norm();
-  const ChainVector<S> normal = chord / length;
-  MultiplierCensus below = censusOf(a.monodromy);
-  MultiplierCensus above = censusOf(b.monodromy);
-  S from = 0;
-  S to = 1;
-  const S resolution = std::max<S>(S(16) * tolerance, S(4) * std::numeric_limits<S>::epsilon());
-  for (int halving = 0; halving < 80 && (to - from) * length > resolution && !stop.stop_requested(); ++halving) {
-    const S middle = (from + to) / 2;
-    const Corrected<S> corrected =
-        correctOnto<S>(unknowns, unit, ChainVector<S>(wa + middle * chord), normal, length, a.state, impacts, tolerance);
-    if (!corrected.accepted) break;
-    BasicChainPeriodicOrbit<S> orbit = evaluateChainOrbit(chain, *corrected.accepted->start, impacts,
-                                                          corrected.accepted->tolerance);
-    if (!orbit.admissible()) break;
-    const MultiplierCensus census = censusOf(orbit.monodromy);
-    if (!census.decided) break;
-    if (census.onCircle == below.onCircle) {
-      from = middle;
-      a = std::move(orbit);
-      below = census;
-    } else {
-      to = middle;
-      b = std::move(orbit);
-      above = census;
-    }
-  }
-  ChainFamilyChange<S> change;
-  change.kind = changeKind(below, above);
-  change.leaves = above.onCircle < below.onCircle;
-  change.energy = (a.energy + b.energy) / 2;
-  change.energyError = abs(b.energy - a.energy) / 2;
-  change.period = (a.period + b.period) / 2;
-  change.periodError = abs(b.period - a.period) / 2;
-  change.state = a.state;
-  return change;
 }
 
 // A point of the family: its orbit and its scaled unknowns.
@@ -207,46 +160,76 @@ struct FamilyPoint {
   ChainVector<S> w;
 };
 
-// The changes of stability between the family's points a and b (in one unit), in order: located
-// where their numbers on the circle differ; else, where a pair of changes that undo each other
-// could hide (mayHideAPair), looked for in the halves, each middle corrected onto the family on
-// the hyperplane normal to the chord, while `budget` lasts (then the stretch is counted
-// unsearched) and the chord is longer than 1e-9.
+// The family's point halfway (or, where that has no orbit or an undecided one, 3/8 or 5/8 of the
+// way) from a to b: the predictor on the chord corrected onto the family on the hyperplane normal
+// to it, no farther from the chord than a quarter of it (farther is another family); none when no
+// such point is admissible and decided. Counts each point computed from `budget`.
 template <typename S>
-void searchBetween(const BasicReadyChain<S>& chain, const Unknowns<S>& unknowns, const ChainVector<S>& unit,
-                   const FamilyPoint<S>& a, const FamilyPoint<S>& b, int impacts, const S& tolerance,
-                   const std::stop_token& stop, int& budget, ContinuedChainFamily<S>& family) {
-  const MultiplierCensus below = censusOf(a.orbit.monodromy);
-  const MultiplierCensus above = censusOf(b.orbit.monodromy);
-  if (!below.decided || !above.decided || stop.stop_requested()) return;
-  if (below.onCircle != above.onCircle) {
-    ChainFamilyChange<S> change = locateChange(chain, unknowns, unit, a.w, b.w, a.orbit, b.orbit, impacts, tolerance, stop);
-    change.after = family.orbits.size() - 1;
-    family.changes.push_back(std::move(change));
-    return;
-  }
+std::optional<FamilyPoint<S>> middleOf(const BasicReadyChain<S>& chain, const Unknowns<S>& unknowns,
+                                       const ChainVector<S>& unit, const FamilyPoint<S>& a, const FamilyPoint<S>& b,
+                                       int impacts, const S& tolerance, int* budget) {
   const ChainVector<S> chord = b.w - a.w;
-  if (chord.norm() <= S(1e-9) || !mayHideAPair(a.orbit.monodromy.multipliers, b.orbit.monodromy.multipliers)) return;
-  std::optional<FamilyPoint<S>> middle;
-  // the middle, or a point aside where it has no orbit or an undecided one
+  const S length = chord.norm();
   for (const S& at : {S(0.5), S(0.375), S(0.625)}) {
-    if (budget-- <= 0) {
-      ++family.unsearched;
-      return;
-    }
+    if (budget && (*budget)-- <= 0) return std::nullopt;
     const Corrected<S> corrected = correctOnto<S>(unknowns, unit, ChainVector<S>(a.w + at * chord),
-                                                  ChainVector<S>(chord.normalized()), chord.norm(), a.orbit.state,
+                                                  ChainVector<S>(chord / length), S(length / 4), a.orbit.state,
                                                   impacts, tolerance);
     if (!corrected.accepted) continue;
     BasicChainPeriodicOrbit<S> orbit =
         evaluateChainOrbit(chain, *corrected.accepted->start, impacts, corrected.accepted->tolerance);
     if (!orbit.admissible() || !censusOf(orbit.monodromy).decided) continue;
-    middle = FamilyPoint<S>{std::move(orbit), corrected.y};
-    break;
+    return FamilyPoint<S>{std::move(orbit), corrected.y};
   }
-  if (!middle) return;
-  searchBetween(chain, unknowns, unit, a, *middle, impacts, tolerance, stop, budget, family);
-  searchBetween(chain, unknowns, unit, *middle, b, impacts, tolerance, stop, budget, family);
+  return std::nullopt;
+}
+
+// The changes of stability between the family's points a and b (in one unit, their censuses
+// decided), in order. Where their numbers on the circle differ, the bracket is halved down to the
+// rounding the orbits close to (16 times the tolerance), each half with a census of its own
+// searched in turn, so that two changes in one bracket (a middle whose number differs from both
+// ends) are both found; the change is named by how the census moved across the last bracket,
+// which a middle that cannot be computed leaves wider (its error says so). Where their numbers
+// are the same but two changes that undo each other could hide in between (mayHideAPair), the
+// halves are searched while `budget` lasts (then it is left below 0: the stretch unsearched).
+template <typename S>
+void searchBetween(const BasicReadyChain<S>& chain, const Unknowns<S>& unknowns, const ChainVector<S>& unit,
+                   const FamilyPoint<S>& a, const FamilyPoint<S>& b, int impacts, const S& tolerance,
+                   const std::stop_token& stop, int& budget, ContinuedChainFamily<S>& family) {
+  using std::abs;
+  const MultiplierCensus below = censusOf(a.orbit.monodromy);
+  const MultiplierCensus above = censusOf(b.orbit.monodromy);
+  if (!below.decided || !above.decided || stop.stop_requested()) return;
+  const bool differ = below.onCircle != above.onCircle;
+  const S length = (b.w - a.w).norm();
+  const S resolution = std::max<S>(S(16) * tolerance, S(4) * std::numeric_limits<S>::epsilon());
+  std::optional<FamilyPoint<S>> middle;
+  if (differ && length > resolution) {
+    middle = middleOf(chain, unknowns, unit, a, b, impacts, tolerance, static_cast<int*>(nullptr));
+  } else if (!differ && length > S(1e-9) && mayHideAPair(a.orbit.monodromy.multipliers, b.orbit.monodromy.multipliers)) {
+    if (budget <= 0) {
+      budget = -1;
+      return;
+    }
+    middle = middleOf(chain, unknowns, unit, a, b, impacts, tolerance, &budget);
+    if (budget < 0) return;
+  }
+  if (middle) {
+    searchBetween(chain, unknowns, unit, a, *middle, impacts, tolerance, stop, budget, family);
+    searchBetween(chain, unknowns, unit, *middle, b, impacts, tolerance, stop, budget, family);
+    return;
+  }
+  if (!differ) return;
+  ChainFamilyChange<S> change;
+  change.kind = changeKind(below, above);
+  change.leaves = above.onCircle < below.onCircle;
+  change.after = family.orbits.size() - 1;
+  change.energy = (a.orbit.energy + b.orbit.energy) / 2;
+  change.energyError = abs(b.orbit.energy - a.orbit.energy) / 2;
+  change.period = (a.orbit.period + b.orbit.period) / 2;
+  change.periodError = abs(b.orbit.period - a.orbit.period) / 2;
+  change.state = a.orbit.state;
+  family.changes.push_back(std::move(change));
 }
 
 // the orbits the search for a hidden pair may compute between two consecutive orbits
@@ -271,13 +254,13 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
   // in energy is relative: families span decades of it)
   ChainVector<S> unit = unknowns.units(unknowns.of(start.state));
   ChainVector<S> w = unknowns.of(start.state).cwiseQuotient(unit);
-  family.orbits.push_back(start);
   FamilyAt<S> here = familyAt(unknowns, unit, w, start.state, k, chainCloseTolerance<S>(k, S(1)));
   if (!start.admissible() || !here.held) {
     family.end = ChainFamilyEnd::Inadmissible;
     family.refusal = start.admissible() ? here.path.refusal : start.refusal;
     return family;
   }
+  family.orbits.push_back(start);
   ChainVector<S> way = ChainVector<S>::Zero(m);
   way[m - 1] = direction >= 0 ? 1 : -1;
   ChainVector<S> t = tangentOf(here.jacobian, way);
@@ -311,6 +294,8 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
         if (next.dot(t) >= S(0.92)) {
           orbit = std::move(found);
           turned = next;
+        } else {
+          refusal = OrbitRefusal::None;  // (turned too far: no path refused, a branch point or another family)
         }
       } else {
         refusal = found.refusal;
@@ -334,6 +319,7 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
     int budget = kPairSearchBudget;
     searchBetween(chain, unknowns, unit, FamilyPoint<S>{family.orbits.back(), w}, FamilyPoint<S>{*orbit, acceptedY}, k,
                   accepted->tolerance, stop, budget, family);
+    if (budget < 0) ++family.unsearched;
     // the energy's unit moves to the new orbit's energy: w, the tangent (renormalised) with it
     const S ratio = abs(orbit->energy) / unit[m - 1];
     w = acceptedY;
@@ -350,6 +336,19 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
   family.end = ChainFamilyEnd::StepLimit;
   return family;
 }
+
+namespace {
+
+// The largest difference of two states in the scaled units
+template <typename S>
+S scaledDistance(const ChainStateScale<S>& scale, const BasicChainState<S>& a, const BasicChainState<S>& b) {
+  const Eigen::Index n = a.u.size();
+  ChainVector<S> x(2 * n);
+  x << a.u - b.u, a.v - b.v;
+  return scale.scaled(x).cwiseAbs().maxCoeff();
+}
+
+}  // namespace
 
 template <typename S>
 ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const ChainFamilyChange<S>& doubling,
@@ -391,7 +390,9 @@ ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const Chai
           guess.u[dynamics.stop] = dynamics.gap;
           ChainOrbitSearch<S> found =
               findChainOrbit(chain, guess, 2 * parentImpacts, ChainOrbitConstraint::Energy, energy, stop);
-          if (found.orbit && abs(found.orbit->period - 2 * parent.orbit->period) <= S(0.01) * parent.orbit->period) {
+          // (the branch's orbit, near the parent: not another orbit of twice the impacts)
+          if (found.orbit && abs(found.orbit->period - 2 * parent.orbit->period) <= S(0.01) * parent.orbit->period &&
+              scaledDistance(scale, found.orbit->state, parent.orbit->state) <= 3 * push) {
             return found;
           }
         }

@@ -26,7 +26,9 @@ enum class ChainFamilyEnd {
   /// flight touches the stop, a contact cannot be decided, or the orbit becomes a shorter one run
   /// twice (`refusal` says which, as far as the path shows it)
   Inadmissible,
-  NotConverging,  ///< the corrector fails at the smallest step without the path saying why
+  /// the corrector fails at the smallest step without the path saying why, or the tangent turns
+  /// by more than 23 degrees at every step down to it (a branch point, or a jump onto another family)
+  NotConverging,
   Stopped,        ///< a stop was requested
 };
 /// "energy-limit", "step-limit", "inadmissible", "not-converging", "stopped".
@@ -47,9 +49,10 @@ struct ChainContinuationOptions {
 /// Where a continued family changes stability: between two of its orbits whose multipliers sit
 /// differently on the unit circle (both decided), located by bisection along the chord between
 /// them (each point corrected onto the family) to the resolution of S, and named by how the rest
-/// of the census moved across the last bracket. Between two orbits of one census the halves are
-/// searched where two changes that undo each other could hide (mayHideAPair), as along the 1IPP
-/// family.
+/// of the census moved across the last bracket (two changes in one bracket are both found).
+/// Between two orbits of one census the halves are searched where two changes that undo each other
+/// could hide (mayHideAPair), as along the 1IPP family (its refinement near the poles of sigma, a
+/// closed-form quantity of 1IPP orbits, has no counterpart here).
 template <typename S>
 struct ChainFamilyChange {
   ChainBifurcationKind kind = ChainBifurcationKind::Other;
@@ -69,8 +72,9 @@ struct ContinuedChainFamily {
   /// monodromy, multipliers and class
   std::vector<BasicChainPeriodicOrbit<S>> orbits;
   std::vector<ChainFamilyChange<S>> changes;  ///< in the order followed
-  /// the stretches between two consecutive orbits where the search for two changes that undo each
-  /// other ran out of its budget (256 orbits) before it could rule them out
+  /// the pairs of consecutive orbits between which the search for two changes that undo each other
+  /// ran out of its budget (256 orbits, beside the bisections of the changes found) before it could
+  /// rule them out
   int unsearched = 0;
   ChainFamilyEnd end = ChainFamilyEnd::NotConverging;
   OrbitRefusal refusal = OrbitRefusal::None;  ///< an Inadmissible end: what the path showed
@@ -80,8 +84,9 @@ struct ContinuedChainFamily {
 /// `parentImpacts`-impact orbits: the parent orbit at energies a little to either side of the
 /// doubling (relative offsets 1e-6 to 1e-3, by Newton from the doubling's state) pushed along the
 /// eigenvector of its multiplier nearest -1 (by inverse iteration on M + I), then Newton at that
-/// energy; the first orbit found whose period is within 1% of twice the parent's and that is not
-/// the parent run twice. Its problem when none is found (the branch's side may be too narrow).
+/// energy; the first orbit found whose period is within 1% of twice the parent's, within three
+/// pushes of the parent (scaled) and not the parent run twice. Its problem when none is found
+/// (the branch's side may be too narrow).
 template <typename S>
 ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const ChainFamilyChange<S>& doubling,
                                      int parentImpacts, std::stop_token stop = {});

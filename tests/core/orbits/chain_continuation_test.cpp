@@ -3,8 +3,9 @@
 // Tests for core/orbits/chain_continuation.cpp: pseudo-arclength continuation of kIPP families of
 // any chain. The 1IPP family it follows from one orbit is, row by row, the closed form's at the
 // row's period (random chains of 2 to 6 masses, walls or not, any stopped mass: an independent
-// algorithm); a 2IPP family born at a period doubling of three masses is, row by row, the orbit
-// Newton finds at that row's energy (two algorithms), and goes back to the doubling.
+// algorithm), and its stability changes are the closed form's; a 2IPP family born at a period
+// doubling of three masses is, row by row, the orbit Newton reaches at that row's energy from the
+// row before (two algorithms); the branch born at each doubling passes through the doubled orbit.
 #include "core/orbits/chain_continuation.h"
 
 #include <Eigen/Eigenvalues>
@@ -45,7 +46,7 @@ double stateDistance(const ChainDynamics& dynamics, const ChainState& a, const C
 
 TEST(ChainContinuation, TheOneImpactFamilyFollowedIsTheClosedFormsOfRandomChains) {
   std::mt19937 rng(20261203);
-  int rows = 0, families = 0;
+  int rows = 0, families = 0, folds = 0;
   for (int trial = 0; trial < 10; ++trial) {
     const MassChain chain = randomChain(rng, 2 + trial % 5);
     const ReadyChain ready = readyChain(chain);
@@ -70,6 +71,15 @@ TEST(ChainContinuation, TheOneImpactFamilyFollowedIsTheClosedFormsOfRandomChains
         EXPECT_EQ(orbit.events.size(), 1u);
         ++rows;
       }
+      // a fold in energy passed: the energy turns back along the family
+      for (std::size_t i = 2; i < family.orbits.size(); ++i) {
+        const double before = family.orbits[i - 1].energy - family.orbits[i - 2].energy;
+        const double after = family.orbits[i].energy - family.orbits[i - 1].energy;
+        if (before * after < 0) {
+          ++folds;
+          break;
+        }
+      }
       // the first step's way
       if (family.orbits.size() > 1) {
         EXPECT_GT(direction * (family.orbits[1].energy - family.orbits[0].energy), 0);
@@ -77,6 +87,7 @@ TEST(ChainContinuation, TheOneImpactFamilyFollowedIsTheClosedFormsOfRandomChains
     }
   }
   EXPECT_GE(families, 12);
+  EXPECT_GE(folds, 2);
   EXPECT_GE(rows, 300);
 }
 
@@ -122,6 +133,8 @@ TEST(ChainContinuation, AFamilysStabilityChangesAreTheClosedFormsNoneMissedNoneI
         ASSERT_NE(nearest, nullptr) << "trial " << trial << ": a change the closed form does not have";
         EXPECT_LT(std::abs(nearest->T - change.period), 1e-9 * change.period) << "trial " << trial;
         EXPECT_EQ(nearest->kind, change.kind) << "trial " << trial << " T " << change.period;
+        // leaving the circle as the family is followed is leaving it as T grows where T grows
+        EXPECT_EQ(nearest->leaves, change.leaves == (b > a)) << "trial " << trial << " T " << change.period;
         EXPECT_NEAR(nearest->energy, change.energy, 1e-8 * change.energy + change.energyError + nearest->energyError);
         ++found;
       }
@@ -181,13 +194,29 @@ TEST(ChainContinuation, ATwoImpactFamilyIsNewtonsOrbitAtEachOfItsEnergies) {
       options.maxOrbits = 40;
       const ContinuedChainFamily<double> family = continueChainFamily(ready, *seed, direction, options);
       EXPECT_GE(family.orbits.size(), 3u) << "T* " << b.T << " ends " << toString(family.end);
-      for (const ChainPeriodicOrbit& orbit : family.orbits) {
+      // each orbit is the one Newton comes back to at its energy from a guess pushed 1e-5 off it
+      // (scaled), and the next one lies within two of the largest steps of it (no jump onto
+      // another family). (Newton from the orbit before may reach the branch's other half: next to
+      // the doubling both halves have orbits of nearly one energy.)
+      std::mt19937 rng(7);
+      std::uniform_real_distribution<double> unitPush(-1e-5, 1e-5);
+      for (std::size_t i = 0; i < family.orbits.size(); ++i) {
+        const ChainPeriodicOrbit& orbit = family.orbits[i];
         ASSERT_EQ(orbit.events.size(), 2u);
-        const ChainOrbitSearch<double> newton =
-            findChainOrbit(ready, orbit.state, 2, ChainOrbitConstraint::Energy, orbit.energy);
+        ChainState guess = orbit.state;
+        for (Eigen::Index j = 0; j < 3; ++j) {
+          if (j == ready.dynamics.stop) continue;
+          guess.u[j] += unitPush(rng) * scale.length;
+          guess.v[j] += unitPush(rng) * scale.speed;
+        }
+        const ChainOrbitSearch<double> newton = findChainOrbit(ready, guess, 2, ChainOrbitConstraint::Energy, orbit.energy);
         ASSERT_TRUE(newton.orbit) << toString(newton.problem) << " at E " << orbit.energy;
         EXPECT_LT(stateDistance(ready.dynamics, orbit.state, newton.orbit->state), 1e-8) << "E " << orbit.energy;
         EXPECT_NEAR(orbit.period, newton.orbit->period, 1e-9 * orbit.period);
+        if (i > 0) {
+          EXPECT_LT(stateDistance(ready.dynamics, orbit.state, family.orbits[i - 1].state), 2 * options.maxStep);
+          EXPECT_LT(std::abs(std::log(orbit.energy / family.orbits[i - 1].energy)), 2 * options.maxStep);
+        }
       }
       ++followed;
     }
@@ -240,7 +269,7 @@ TEST(ChainContinuation, AtEachDoublingOfAFamilyABranchOfTwiceTheImpactsIsBornAnd
     }
   }
   EXPECT_GE(doublings, 2);
-  EXPECT_GE(branches, doublings - 1);
+  EXPECT_EQ(branches, doublings);
   EXPECT_EQ(through, branches);
 }
 
