@@ -151,6 +151,42 @@ TEST(ChainContinuation, AFamilysStabilityChangesAreTheClosedFormsNoneMissedNoneI
   EXPECT_GE(found, 30);
 }
 
+// the same as stateDistance in any precision
+template <typename S>
+S distanceIn(const BasicChainDynamics<S>& dynamics, const BasicChainState<S>& a, const BasicChainState<S>& b) {
+  const ChainStateScale<S> scale(dynamics);
+  ChainVector<S> x(2 * a.u.size());
+  x << a.u - b.u, a.v - b.v;
+  return scale.scaled(x).cwiseAbs().maxCoeff();
+}
+
+template <typename S>
+void expectTheClosedFormsFamilyIn(const MassChain& chain, int orbits, const S& within) {
+  const BasicReadyChain<S> ready = readyChain(chainCast<S>(chain));
+  const double end = chainOnePeriodicEnd(chain);
+  ChainOnePeriodicStability<S> first;
+  for (int k = 9; k < 20 && !first.orbit.admissible(); ++k) first = chainOnePeriodicStability(ready, S(end * k / 20));
+  ASSERT_TRUE(first.orbit.admissible());
+  ChainContinuationOptions<S> options;
+  options.energyLow = first.orbit.energy / 10;
+  options.energyHigh = first.orbit.energy * 10;
+  options.maxOrbits = orbits;
+  const ContinuedChainFamily<S> family = continueChainFamily(ready, first.orbit, 1, options);
+  EXPECT_EQ(int(family.orbits.size()), orbits) << toString(family.end);
+  for (const BasicChainPeriodicOrbit<S>& orbit : family.orbits) {
+    const ChainOnePeriodicStability<S> exact = chainOnePeriodicStability(ready, orbit.period);
+    ASSERT_TRUE(exact.orbit.admissible());
+    EXPECT_LT(distanceIn(ready.dynamics, orbit.state, exact.orbit.state), within) << double(orbit.period);
+  }
+}
+
+TEST(ChainContinuation, LongDoubleAndBinaryOneTwentyEightFollowTheClosedFormToTheirDigits) {
+  // in S the family's orbits are the closed form's in S to S's digits, not double's
+  const MassChain chain{{1.0, 0.4, 0.2}, {1.0, 0.7, 0.3}, 0.5, 2, 1.0};
+  expectTheClosedFormsFamilyIn<long double>(chain, 20, 1e-14L);
+  expectTheClosedFormsFamilyIn<Quad>(chain, 4, Quad(1e-28));
+}
+
 ChainVector<double> flipDirection(const ChainMatrix<double>& m) {
   const Eigen::EigenSolver<ChainMatrix<double>> solver(m);
   Eigen::Index best = 0;
