@@ -8,7 +8,6 @@
 // row before (two algorithms); the branch born at each doubling passes through the doubled orbit.
 #include "core/orbits/chain_continuation.h"
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,30 +17,22 @@
 
 #include "core/orbits/chain_bifurcations.h"
 #include "core/orbits/chain_onepp.h"
+#include "support/random_chains.h"
 
 namespace grazelab::core {
 namespace {
 
-MassChain randomChain(std::mt19937& rng, int n) {
-  std::uniform_real_distribution<double> logUniform(-0.5, 0.5);
-  MassChain chain;
-  for (int i = 0; i < n; ++i) {
-    chain.masses.push_back(std::pow(10.0, logUniform(rng)));
-    chain.springs.push_back(std::pow(10.0, logUniform(rng)));
-  }
-  chain.rightSpring = rng() % 2 ? std::pow(10.0, logUniform(rng)) : 0.0;
-  chain.stopMass = int(rng() % unsigned(n)) + 1;
-  chain.gap = 0.5 + double(rng() % 1000) / 1000.0;
-  return chain;
-}
+using test_chains::flipDirection;
+using test_chains::randomChain;
+using test_chains::stateDistance;
 
-// the largest difference of two states in the scaled units of the chain
-double stateDistance(const ChainDynamics& dynamics, const ChainState& a, const ChainState& b) {
-  const ChainStateScale<double> scale(dynamics);
-  ChainVector<double> x(2 * a.u.size()), y(2 * a.u.size());
-  x << a.u, a.v;
-  y << b.u, b.v;
-  return (scale.scaled(x) - scale.scaled(y)).cwiseAbs().maxCoeff();
+// The first admissible 1IPP orbit of `ready` at k/20 of its slowest period T_max, k from `from`
+// up, with its stability (none admissible: its refusal)
+template <typename S>
+ChainOnePeriodicStability<S> firstOnePeriodic(const BasicReadyChain<S>& ready, double tMax, int from) {
+  ChainOnePeriodicStability<S> first;
+  for (int k = from; k < 20 && !first.orbit.admissible(); ++k) first = chainOnePeriodicStability(ready, S(tMax * k / 20));
+  return first;
 }
 
 TEST(ChainContinuation, TheOneImpactFamilyFollowedIsTheClosedFormsOfRandomChains) {
@@ -51,8 +42,7 @@ TEST(ChainContinuation, TheOneImpactFamilyFollowedIsTheClosedFormsOfRandomChains
     const MassChain chain = randomChain(rng, 2 + trial % 5);
     const ReadyChain ready = readyChain(chain);
     const double end = chainOnePeriodicEnd(chain);
-    ChainOnePeriodicStability<double> first;
-    for (int k = 5; k < 20 && !first.orbit.admissible(); ++k) first = chainOnePeriodicStability(ready, end * k / 20);
+    const ChainOnePeriodicStability<double> first = firstOnePeriodic(ready, end, 5);
     if (!first.orbit.admissible()) continue;
     for (const int direction : {-1, 1}) {
       ChainContinuationOptions<double> options;
@@ -102,8 +92,7 @@ TEST(ChainContinuation, AFamilysStabilityChangesAreTheClosedFormsNoneMissedNoneI
     const MassChain chain = randomChain(rng, 2 + trial % 5);
     const ReadyChain ready = readyChain(chain);
     const double end = chainOnePeriodicEnd(chain);
-    ChainOnePeriodicStability<double> first;
-    for (int k = 5; k < 20 && !first.orbit.admissible(); ++k) first = chainOnePeriodicStability(ready, end * k / 20);
+    const ChainOnePeriodicStability<double> first = firstOnePeriodic(ready, end, 5);
     if (!first.orbit.admissible()) continue;
     for (const int direction : {-1, 1}) {
       ChainContinuationOptions<double> options;
@@ -151,21 +140,11 @@ TEST(ChainContinuation, AFamilysStabilityChangesAreTheClosedFormsNoneMissedNoneI
   EXPECT_GE(found, 30);
 }
 
-// the same as stateDistance in any precision
-template <typename S>
-S distanceIn(const BasicChainDynamics<S>& dynamics, const BasicChainState<S>& a, const BasicChainState<S>& b) {
-  const ChainStateScale<S> scale(dynamics);
-  ChainVector<S> x(2 * a.u.size());
-  x << a.u - b.u, a.v - b.v;
-  return scale.scaled(x).cwiseAbs().maxCoeff();
-}
-
 template <typename S>
 void expectTheClosedFormsFamilyIn(const MassChain& chain, int orbits, const S& within) {
   const BasicReadyChain<S> ready = readyChain(chainCast<S>(chain));
   const double end = chainOnePeriodicEnd(chain);
-  ChainOnePeriodicStability<S> first;
-  for (int k = 9; k < 20 && !first.orbit.admissible(); ++k) first = chainOnePeriodicStability(ready, S(end * k / 20));
+  const ChainOnePeriodicStability<S> first = firstOnePeriodic(ready, end, 9);
   ASSERT_TRUE(first.orbit.admissible());
   ChainContinuationOptions<S> options;
   options.energyLow = first.orbit.energy / 10;
@@ -176,7 +155,7 @@ void expectTheClosedFormsFamilyIn(const MassChain& chain, int orbits, const S& w
   for (const BasicChainPeriodicOrbit<S>& orbit : family.orbits) {
     const ChainOnePeriodicStability<S> exact = chainOnePeriodicStability(ready, orbit.period);
     ASSERT_TRUE(exact.orbit.admissible());
-    EXPECT_LT(distanceIn(ready.dynamics, orbit.state, exact.orbit.state), within) << double(orbit.period);
+    EXPECT_LT(stateDistance(ready.dynamics, orbit.state, exact.orbit.state), within) << double(orbit.period);
   }
 }
 
@@ -185,15 +164,6 @@ TEST(ChainContinuation, LongDoubleAndBinaryOneTwentyEightFollowTheClosedFormToTh
   const MassChain chain{{1.0, 0.4, 0.2}, {1.0, 0.7, 0.3}, 0.5, 2, 1.0};
   expectTheClosedFormsFamilyIn<long double>(chain, 20, 1e-14L);
   expectTheClosedFormsFamilyIn<Quad>(chain, 4, Quad(1e-28));
-}
-
-ChainVector<double> flipDirection(const ChainMatrix<double>& m) {
-  const Eigen::EigenSolver<ChainMatrix<double>> solver(m);
-  Eigen::Index best = 0;
-  for (Eigen::Index i = 0; i < m.rows(); ++i) {
-    if (std::abs(solver.eigenvalues()[i] + 1.0) < std::abs(solver.eigenvalues()[best] + 1.0)) best = i;
-  }
-  return solver.eigenvectors().col(best).real().normalized();
 }
 
 TEST(ChainContinuation, ATwoImpactFamilyIsNewtonsOrbitAtEachOfItsEnergies) {
@@ -269,8 +239,7 @@ TEST(ChainContinuation, AtEachDoublingOfAFamilyABranchOfTwiceTheImpactsIsBornAnd
   const MassChain chain{{0.6865, 1.9630, 0.8236}, {0.8423, 1.0745, 0.7486}, 0, 2, 1.0};
   const ReadyChain ready = readyChain(chain);
   const double end = chainOnePeriodicEnd(chain);
-  ChainOnePeriodicStability<double> first;
-  for (int k = 9; k < 20 && !first.orbit.admissible(); ++k) first = chainOnePeriodicStability(ready, end * k / 20);
+  const ChainOnePeriodicStability<double> first = firstOnePeriodic(ready, end, 9);
   ASSERT_TRUE(first.orbit.admissible());
   int doublings = 0, branches = 0, through = 0;
   for (const int direction : {-1, 1}) {

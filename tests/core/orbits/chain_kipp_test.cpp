@@ -9,7 +9,6 @@
 // binary128 it closes to 1e-30.
 #include "core/orbits/chain_kipp.h"
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,35 +21,17 @@
 #include "core/orbits/chain_bifurcations.h"
 #include "core/orbits/chain_onepp.h"
 #include "core/orbits/periodic_orbit.h"
+#include "support/random_chains.h"
 
 namespace grazelab::core {
 namespace {
 
-MassChain randomChain(std::mt19937& rng, int n) {
-  std::uniform_real_distribution<double> logUniform(-0.5, 0.5);
-  MassChain chain;
-  for (int i = 0; i < n; ++i) {
-    chain.masses.push_back(std::pow(10.0, logUniform(rng)));
-    chain.springs.push_back(std::pow(10.0, logUniform(rng)));
-  }
-  chain.rightSpring = rng() % 2 ? std::pow(10.0, logUniform(rng)) : 0.0;
-  chain.stopMass = int(rng() % unsigned(n)) + 1;
-  chain.gap = 0.5 + double(rng() % 1000) / 1000.0;
-  return chain;
-}
+using test_chains::flipDirection;
+using test_chains::randomChain;
+using test_chains::stateDistance;
 
 TwoMassForm<double> resonantChain(double m2 = 0.5, Branch branch = Branch::Upper) {
   return *makeTwoMassForm(*designedModel(1.0, m2, 1.0, 1.0, branch)).chain;
-}
-
-// the largest difference of two states in the scaled units of the chain
-template <typename S>
-S stateDistance(const BasicChainDynamics<S>& dynamics, const BasicChainState<S>& a, const BasicChainState<S>& b) {
-  const ChainStateScale<S> scale(dynamics);
-  ChainVector<S> x(2 * a.u.size()), y(2 * a.u.size());
-  x << a.u, a.v;
-  y << b.u, b.v;
-  return (scale.scaled(x) - scale.scaled(y)).cwiseAbs().maxCoeff();
 }
 
 // the state moved off the orbit by `by` (scaled) in every coordinate but the stopped mass's
@@ -154,16 +135,6 @@ TEST(ChainKipp, BinaryOneTwentyEightClosesToItsRounding) {
   ASSERT_TRUE(found.orbit) << toString(found.problem);
   EXPECT_LT(double(stateDistance(ready.dynamics, found.orbit->state, exact.orbit.state)), 1e-28);
   EXPECT_LT(double(found.orbit->periodicityResidual), 1e-30);
-}
-
-// The eigenvector of the monodromy's multiplier nearest -1 (real at a period doubling).
-ChainVector<double> flipDirection(const ChainMatrix<double>& m) {
-  const Eigen::EigenSolver<ChainMatrix<double>> solver(m);
-  Eigen::Index best = 0;
-  for (Eigen::Index i = 0; i < m.rows(); ++i) {
-    if (std::abs(solver.eigenvalues()[i] + 1.0) < std::abs(solver.eigenvalues()[best] + 1.0)) best = i;
-  }
-  return solver.eigenvectors().col(best).real().normalized();
 }
 
 TEST(ChainKipp, AtAPeriodDoublingTheTwoImpactBranchGrowsLikeTheSquareRoot) {

@@ -20,26 +20,14 @@
 #include "core/model/model.h"
 #include "core/model/two_mass_form.h"
 #include "core/orbits/chain_onepp.h"
+#include "support/random_chains.h"
 
 namespace grazelab::core {
 namespace {
 
-std::complex<double> valueOf(const ChainMultiplier<double>& m) { return {m.re, m.im}; }
+using test_chains::randomChain;
 
-// A random chain of n masses (masses and springs from 0.3 to 3), a right wall or not, the stop
-// on any mass.
-MassChain randomChain(std::mt19937& rng, int n) {
-  std::uniform_real_distribution<double> logUniform(-0.5, 0.5);
-  MassChain chain;
-  for (int i = 0; i < n; ++i) {
-    chain.masses.push_back(std::pow(10.0, logUniform(rng)));
-    chain.springs.push_back(std::pow(10.0, logUniform(rng)));
-  }
-  chain.rightSpring = rng() % 2 ? std::pow(10.0, logUniform(rng)) : 0.0;
-  chain.stopMass = int(rng() % unsigned(n)) + 1;
-  chain.gap = 0.5 + double(rng() % 1000) / 1000.0;
-  return chain;
-}
+std::complex<double> valueOf(const ChainMultiplier<double>& m) { return {m.re, m.im}; }
 
 // the admissible 1IPP orbits of `chain` over `count` periods across its slowest period
 std::vector<ChainOnePeriodicStability<double>> orbitsOf(const MassChain& chain, int count) {
