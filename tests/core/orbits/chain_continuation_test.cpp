@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -35,44 +36,58 @@ ChainOnePeriodicStability<S> firstOnePeriodic(const BasicReadyChain<S>& ready, d
   return first;
 }
 
+// The 1IPP families of 10 random chains of 2 to 6 masses, each followed both ways (120 orbits at
+// most, energies within 20 times the first's) from its first admissible closed-form orbit.
+struct FollowedFamily {
+  int trial = 0;
+  std::shared_ptr<const ReadyChain> ready;
+  ContinuedChainFamily<double> family;
+};
+const std::vector<FollowedFamily>& randomOnePeriodicFamilies() {
+  static const std::vector<FollowedFamily> families = [] {
+    std::vector<FollowedFamily> out;
+    std::mt19937 rng(20261203);
+    for (int trial = 0; trial < 10; ++trial) {
+      const MassChain chain = randomChain(rng, 2 + trial % 5);
+      auto ready = std::make_shared<const ReadyChain>(readyChain(chain));
+      const ChainOnePeriodicStability<double> first = firstOnePeriodic(*ready, chainOnePeriodicEnd(chain), 5);
+      if (!first.orbit.admissible()) continue;
+      for (const int direction : {-1, 1}) {
+        ChainContinuationOptions<double> options;
+        options.energyLow = first.orbit.energy / 20;
+        options.energyHigh = first.orbit.energy * 20;
+        options.maxOrbits = 120;
+        out.push_back({trial, ready, continueChainFamily(*ready, first.orbit, direction, options)});
+        EXPECT_GT(direction * (out.back().family.orbits.at(1).energy - first.orbit.energy), 0) << "the first step's way";
+      }
+    }
+    return out;
+  }();
+  return families;
+}
+
 TEST(ChainContinuation, TheOneImpactFamilyFollowedIsTheClosedFormsOfRandomChains) {
-  std::mt19937 rng(20261203);
   int rows = 0, families = 0, folds = 0;
-  for (int trial = 0; trial < 10; ++trial) {
-    const MassChain chain = randomChain(rng, 2 + trial % 5);
-    const ReadyChain ready = readyChain(chain);
-    const double end = chainOnePeriodicEnd(chain);
-    const ChainOnePeriodicStability<double> first = firstOnePeriodic(ready, end, 5);
-    if (!first.orbit.admissible()) continue;
-    for (const int direction : {-1, 1}) {
-      ChainContinuationOptions<double> options;
-      options.energyLow = first.orbit.energy / 20;
-      options.energyHigh = first.orbit.energy * 20;
-      options.maxOrbits = 120;
-      const ContinuedChainFamily<double> family = continueChainFamily(ready, first.orbit, direction, options);
-      ++families;
-      EXPECT_GE(family.orbits.size(), 5u) << "trial " << trial << " ends " << toString(family.end);
-      for (const ChainPeriodicOrbit& orbit : family.orbits) {
-        const ChainOnePeriodicStability<double> exact = chainOnePeriodicStability(ready, orbit.period);
-        ASSERT_TRUE(exact.orbit.admissible()) << "trial " << trial << " T " << orbit.period;
-        EXPECT_LT(stateDistance(ready.dynamics, orbit.state, exact.orbit.state), 1e-8)
-            << "trial " << trial << " T " << orbit.period;
-        EXPECT_NEAR(orbit.energy, exact.orbit.energy, 1e-9 * exact.orbit.energy);
-        EXPECT_EQ(orbit.events.size(), 1u);
-        ++rows;
-      }
-      // a fold in energy passed: the energy turns back along the family
-      for (std::size_t i = 2; i < family.orbits.size(); ++i) {
-        const double before = family.orbits[i - 1].energy - family.orbits[i - 2].energy;
-        const double after = family.orbits[i].energy - family.orbits[i - 1].energy;
-        if (before * after < 0) {
-          ++folds;
-          break;
-        }
-      }
-      // the first step's way
-      if (family.orbits.size() > 1) {
-        EXPECT_GT(direction * (family.orbits[1].energy - family.orbits[0].energy), 0);
+  for (const auto& [trial, readyChain, family] : randomOnePeriodicFamilies()) {
+    const ReadyChain& ready = *readyChain;
+    ++families;
+    EXPECT_GE(family.orbits.size(), 5u) << "trial " << trial << " ends " << toString(family.end);
+    for (const ChainPeriodicOrbit& orbit : family.orbits) {
+      const ChainOnePeriodicStability<double> exact = chainOnePeriodicStability(ready, orbit.period);
+      ASSERT_TRUE(exact.orbit.admissible()) << "trial " << trial << " T " << orbit.period;
+      EXPECT_LT(stateDistance(ready.dynamics, orbit.state, exact.orbit.state), 1e-8)
+          << "trial " << trial << " T " << orbit.period;
+      EXPECT_NEAR(orbit.energy, exact.orbit.energy, 1e-9 * exact.orbit.energy);
+      EXPECT_EQ(orbit.events.size(), 1u);
+      ++rows;
+    }
+    // a fold in energy passed: the energy turns back along the family
+    for (std::size_t i = 2; i < family.orbits.size(); ++i) {
+      const double before = family.orbits[i - 1].energy - family.orbits[i - 2].energy;
+      const double after = family.orbits[i].energy - family.orbits[i - 1].energy;
+      if (before * after < 0) {
+        ++folds;
+        break;
       }
     }
   }
@@ -86,55 +101,43 @@ TEST(ChainContinuation, AFamilysStabilityChangesAreTheClosedFormsNoneMissedNoneI
   // corrected onto the family; halves searched where two changes could hide between two orbits)
   // against the closed form's bisection in T over the same periods (its own hidden-pair search):
   // the same kind at the same period, none invented, none missed
-  std::mt19937 rng(20261203);
   int found = 0;
-  for (int trial = 0; trial < 10; ++trial) {
-    const MassChain chain = randomChain(rng, 2 + trial % 5);
-    const ReadyChain ready = readyChain(chain);
-    const double end = chainOnePeriodicEnd(chain);
-    const ChainOnePeriodicStability<double> first = firstOnePeriodic(ready, end, 5);
-    if (!first.orbit.admissible()) continue;
-    for (const int direction : {-1, 1}) {
-      ChainContinuationOptions<double> options;
-      options.energyLow = first.orbit.energy / 20;
-      options.energyHigh = first.orbit.energy * 20;
-      options.maxOrbits = 120;
-      const ContinuedChainFamily<double> family = continueChainFamily(ready, first.orbit, direction, options);
-      EXPECT_EQ(family.unsearched, 0);
-      double low = family.orbits.front().period, high = low;
-      for (const ChainPeriodicOrbit& orbit : family.orbits) {
-        low = std::min(low, orbit.period);
-        high = std::max(high, orbit.period);
-      }
-      std::vector<double> periods;
-      for (int i = 0; i <= 3000; ++i) periods.push_back(low + (high - low) * i / 3000);
-      const ChainBifurcations<double> closed = chainOnePeriodicBifurcations(ready, periods);
-      for (const ChainFamilyChange<double>& change : family.changes) {
-        ASSERT_LT(change.after + 1, family.orbits.size());
-        const double a = family.orbits[change.after].period, b = family.orbits[change.after + 1].period;
-        EXPECT_GE(change.period, std::min(a, b) - change.periodError);
-        EXPECT_LE(change.period, std::max(a, b) + change.periodError);
-        EXPECT_LT(change.periodError, 1e-9 * change.period);
-        const ChainBifurcation<double>* nearest = nullptr;
-        for (const ChainBifurcation<double>& other : closed.changes) {
-          if (!nearest || std::abs(other.T - change.period) < std::abs(nearest->T - change.period)) nearest = &other;
-        }
-        ASSERT_NE(nearest, nullptr) << "trial " << trial << ": a change the closed form does not have";
-        EXPECT_LT(std::abs(nearest->T - change.period), 1e-9 * change.period) << "trial " << trial;
-        EXPECT_EQ(nearest->kind, change.kind) << "trial " << trial << " T " << change.period;
-        // leaving the circle as the family is followed is leaving it as T grows where T grows
-        EXPECT_EQ(nearest->leaves, change.leaves == (b > a)) << "trial " << trial << " T " << change.period;
-        EXPECT_NEAR(nearest->energy, change.energy, 1e-8 * change.energy + change.energyError + nearest->energyError);
-        ++found;
-      }
+  for (const auto& [trial, readyChain, family] : randomOnePeriodicFamilies()) {
+    const ReadyChain& ready = *readyChain;
+    EXPECT_EQ(family.unsearched, 0);
+    double low = family.orbits.front().period, high = low;
+    for (const ChainPeriodicOrbit& orbit : family.orbits) {
+      low = std::min(low, orbit.period);
+      high = std::max(high, orbit.period);
+    }
+    std::vector<double> periods;
+    for (int i = 0; i <= 3000; ++i) periods.push_back(low + (high - low) * i / 3000);
+    const ChainBifurcations<double> closed = chainOnePeriodicBifurcations(ready, periods);
+    for (const ChainFamilyChange<double>& change : family.changes) {
+      ASSERT_LT(change.after + 1, family.orbits.size());
+      const double a = family.orbits[change.after].period, b = family.orbits[change.after + 1].period;
+      EXPECT_GE(change.period, std::min(a, b) - change.periodError);
+      EXPECT_LE(change.period, std::max(a, b) + change.periodError);
+      EXPECT_LT(change.periodError, 1e-9 * change.period);
+      const ChainBifurcation<double>* nearest = nullptr;
       for (const ChainBifurcation<double>& other : closed.changes) {
-        int matches = 0;
-        for (const ChainFamilyChange<double>& change : family.changes) {
-          matches += std::abs(other.T - change.period) < 1e-9 * other.T && other.kind == change.kind;
-        }
-        EXPECT_EQ(matches, 1) << "trial " << trial << ": the closed form's " << toString(other.kind) << " at T "
-                              << other.T;
+        if (!nearest || std::abs(other.T - change.period) < std::abs(nearest->T - change.period)) nearest = &other;
       }
+      ASSERT_NE(nearest, nullptr) << "trial " << trial << ": a change the closed form does not have";
+      EXPECT_LT(std::abs(nearest->T - change.period), 1e-9 * change.period) << "trial " << trial;
+      EXPECT_EQ(nearest->kind, change.kind) << "trial " << trial << " T " << change.period;
+      // leaving the circle as the family is followed is leaving it as T grows where T grows
+      EXPECT_EQ(nearest->leaves, change.leaves == (b > a)) << "trial " << trial << " T " << change.period;
+      EXPECT_NEAR(nearest->energy, change.energy, 1e-8 * change.energy + change.energyError + nearest->energyError);
+      ++found;
+    }
+    for (const ChainBifurcation<double>& other : closed.changes) {
+      int matches = 0;
+      for (const ChainFamilyChange<double>& change : family.changes) {
+        matches += std::abs(other.T - change.period) < 1e-9 * other.T && other.kind == change.kind;
+      }
+      EXPECT_EQ(matches, 1) << "trial " << trial << ": the closed form's " << toString(other.kind) << " at T "
+                            << other.T;
     }
   }
   EXPECT_GE(found, 30);
