@@ -242,7 +242,6 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
                                             int direction, const ChainContinuationOptions<S>& options,
                                             std::stop_token stop) {
   using std::abs;
-  using std::sqrt;
   ContinuedChainFamily<S> family;
   family.impacts = start.impacts;
   const int k = start.impacts;
