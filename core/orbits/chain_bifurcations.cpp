@@ -110,8 +110,8 @@ template <typename S>
 void locate(const BasicReadyChain<S>& chain, CensusRow<S> a, CensusRow<S> b, ChainBifurcations<S>& out,
             const std::stop_token& stop, int& budget) {
   using std::abs;
-  // to 1e-12 of T (the 1e-9 with room; 8 ulps of double are below it)
-  const S resolution = std::max<S>(8 * std::numeric_limits<S>::epsilon(), S(1e-12));
+  // to 8 ulps of T, or where the middle is undecided (the census then cannot say more)
+  const S resolution = 8 * std::numeric_limits<S>::epsilon();
   S energy = 0;
   while (b.T - a.T > resolution * abs(b.T) && !stop.stop_requested()) {
     const CensusRow<S> middle = closedFormRowAt(chain, S((a.T + b.T) / 2));

@@ -76,7 +76,7 @@ struct ChainBifurcations {
 
 /// The changes of the number of multipliers on the unit circle between consecutive `periods`
 /// (increasing) whose orbits are both admissible and decided, each located by bisection in T
-/// until its bracket is 1e-12 of T wide or its middle is undecided, and named by how the rest of
+/// until its bracket is 8 ulps of T wide or its middle is undecided, and named by how the rest of
 /// the census moved across the last bracket. The bisection asks the closed-form data and
 /// monodromy alone (V < 0, the flight not searched); the point found is checked in full (its
 /// flight searched, its path run) and dropped when it is not admissible: a change inside a

@@ -19,8 +19,13 @@ std::string_view toString(ChainFamilyEnd end) {
   switch (end) {
     case ChainFamilyEnd::EnergyLimit: return "energy-limit";
     case ChainFamilyEnd::StepLimit: return "step-limit";
-    case ChainFamilyEnd::Inadmissible: return "inadmissible";
+    case ChainFamilyEnd::GrazingOrbit: return "grazing-orbit";
+    case ChainFamilyEnd::ImpactFades: return "impact-fades";
+    case ChainFamilyEnd::InteriorGrazing: return "interior-grazing";
+    case ChainFamilyEnd::MeetsDoubling: return "meets-doubling";
+    case ChainFamilyEnd::Undecided: return "undecided";
     case ChainFamilyEnd::NotConverging: return "not-converging";
+    case ChainFamilyEnd::StartNotAdmissible: return "start-not-admissible";
     case ChainFamilyEnd::Stopped: return "stopped";
   }
   return "unknown";
@@ -107,6 +112,7 @@ struct Corrected {
   ChainVector<S> y;  // its unknowns
   S spread = 0;
   int corrections = 0;
+  int toClose = 0;  // the Newton steps before the first iterate that closed (polishing not counted)
   OrbitRefusal refusal = OrbitRefusal::None;  // none accepted: the refusal the path met, if any
 };
 
@@ -137,6 +143,7 @@ Corrected<S> correctOnto(const Unknowns<S>& unknowns, const ChainVector<S>& unit
     const bool invertible = lu.isInvertible();
     if (residual <= at.tolerance) {
       out.spread = invertible ? S(at.tolerance * largestRowSum(ChainMatrix<S>(lu.inverse()))) : S(1);
+      if (!out.accepted) out.toClose = out.corrections;
       acceptedResidual = residual;
       out.y = y;
       out.accepted = std::move(at);
@@ -232,8 +239,97 @@ void searchBetween(const BasicReadyChain<S>& chain, const Unknowns<S>& unknowns,
   family.changes.push_back(std::move(change));
 }
 
+// The slowest and the fastest of an orbit's impacts (the stopped mass's speed before each), over
+// the scale's speed.
+template <typename S>
+std::pair<S, S> impactSpeeds(const BasicChainDynamics<S>& dynamics, const BasicChainPeriodicOrbit<S>& orbit) {
+  using std::abs;
+  const ChainStateScale<S> scale(dynamics);
+  S slowest = std::numeric_limits<S>::infinity(), fastest = 0;
+  for (const BasicChainEvent<S>& event : orbit.events) {
+    const S speed = abs(event.vBefore[dynamics.stop]) / scale.speed;
+    slowest = std::min(slowest, speed);
+    fastest = std::max(fastest, speed);
+  }
+  return {slowest, fastest};
+}
+
+// An impact slower than this (over the scale's speed) whose family's steps stall is approaching
+// the end where it fades.
+constexpr double kSlowImpact = 0.05;
+
+// How a family ends after `last`, where no step gave an orbit: its impacts' speeds (over the
+// scale's speed) going to 0, all of them or one; else the path from the predictor `beyond` (a few
+// smallest steps on) making a contact the last orbit has not (a grazing, a stick, or an impact
+// at another time: a flight touched the stop); else what the failed steps' paths showed.
+template <typename S>
+ChainFamilyEnd endAt(const Unknowns<S>& unknowns, const ChainVector<S>& unit, const ChainVector<S>& beyond,
+                     const BasicChainPeriodicOrbit<S>& last, OrbitRefusal refusal, const S& tolerance) {
+  using std::abs;
+  const auto [slowest, fastest] = impactSpeeds(unknowns.chain.dynamics, last);
+  if (fastest < S(kSlowImpact)) return ChainFamilyEnd::GrazingOrbit;
+  if (slowest < S(kSlowImpact)) return ChainFamilyEnd::ImpactFades;
+  if (refusal == OrbitRefusal::Repeated) return ChainFamilyEnd::MeetsDoubling;
+  const std::optional<BasicChainState<S>> start = unknowns.state(beyond.cwiseProduct(unit), last.state);
+  if (start) {
+    const BasicChainPeriodicOrbit<S> path = evaluateChainPath(unknowns.chain, *start, last.impacts, tolerance);
+    if (path.refusal == OrbitRefusal::Undecided) return ChainFamilyEnd::Undecided;
+    for (const BasicChainEvent<S>& event : path.events) {
+      bool known = event.type == EventType::Impact;
+      if (known) {
+        known = false;
+        for (const BasicChainEvent<S>& impact : last.events) {
+          known = known || abs(event.t - impact.t) <= S(1e-6) * last.period;
+        }
+      }
+      if (!known) return ChainFamilyEnd::InteriorGrazing;
+    }
+  }
+  if (refusal == OrbitRefusal::TouchesStop || refusal == OrbitRefusal::NotImpact) {
+    return ChainFamilyEnd::InteriorGrazing;
+  }
+  if (refusal == OrbitRefusal::Undecided) return ChainFamilyEnd::Undecided;
+  return ChainFamilyEnd::NotConverging;
+}
+
 // the orbits the search for a hidden pair may compute between two consecutive orbits
 constexpr int kPairSearchBudget = 256;
+
+// A family whose slowest impact falls below kSlowImpact while its arclength steps stall nears an
+// end where that impact fades: the steps shrink with its speed (the impact's saltation grows as
+// its inverse), so that they would reach it only after thousands of orbits. It is approached at
+// fixed periods instead: each next orbit by Newton at the period halfway from the last one to
+// where the secant of the last two orbits' slowest speeds puts 0, while that speed keeps falling
+// (to 1e-9 of the scale's speed at most; Newton stops converging before that near a linear orbit,
+// whose neighbours of one period form a continuum), the changes of stability between them
+// searched as along the family.
+template <typename S>
+void approachFadingImpact(const BasicReadyChain<S>& chain, const Unknowns<S>& unknowns, const ChainVector<S>& unit,
+                          int impacts, const std::stop_token& stop, ContinuedChainFamily<S>& family) {
+  const BasicChainDynamics<S>& dynamics = chain.dynamics;
+  for (int step = 0; step < 60 && family.orbits.size() >= 2 && !stop.stop_requested(); ++step) {
+    const BasicChainPeriodicOrbit<S>& before = family.orbits[family.orbits.size() - 2];
+    const BasicChainPeriodicOrbit<S>& last = family.orbits.back();
+    const S va = impactSpeeds(dynamics, before).first;
+    const S vb = impactSpeeds(dynamics, last).first;
+    if (!(vb < va) || vb < S(1e-9)) break;
+    const S zero = last.period + (last.period - before.period) * vb / (va - vb);
+    const ChainOrbitSearch<S> found = findChainOrbit(chain, last.state, impacts, ChainOrbitConstraint::Period,
+                                                     S((last.period + zero) / 2), stop);
+    if (!found.orbit || !found.orbit->admissible() ||
+        isRepeated(dynamics, *found.orbit, std::max(chainCloseTolerance<S>(impacts, S(1)), found.correction)) ||
+        !(impactSpeeds(dynamics, *found.orbit).first < vb)) {
+      break;
+    }
+    const ChainVector<S> wLast = unknowns.of(last.state).cwiseQuotient(unit);
+    const ChainVector<S> wFound = unknowns.of(found.orbit->state).cwiseQuotient(unit);
+    int budget = kPairSearchBudget;
+    searchBetween(chain, unknowns, unit, FamilyPoint<S>{last, wLast}, FamilyPoint<S>{*found.orbit, wFound}, impacts,
+                  chainCloseTolerance<S>(impacts, S(1)), stop, budget, family);
+    if (budget < 0) ++family.unsearched;
+    family.orbits.push_back(*found.orbit);
+  }
+}
 
 }  // namespace
 
@@ -255,7 +351,7 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
   ChainVector<S> w = unknowns.of(start.state).cwiseQuotient(unit);
   FamilyAt<S> here = familyAt(unknowns, unit, w, start.state, k, chainCloseTolerance<S>(k, S(1)));
   if (!start.admissible() || !here.held) {
-    family.end = ChainFamilyEnd::Inadmissible;
+    family.end = ChainFamilyEnd::StartNotAdmissible;
     family.refusal = start.admissible() ? here.path.refusal : start.refusal;
     return family;
   }
@@ -278,7 +374,7 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
     const std::optional<FamilyAt<S>>& accepted = corrected.accepted;
     const ChainVector<S>& acceptedY = corrected.y;
     const S spread = corrected.spread;
-    const int corrections = corrected.corrections;
+    const int toClose = corrected.toClose;
     // the orbit there: admissible, no shorter one run twice, and the family's tangent turned by
     // less than a quarter of a right angle (a larger turn is a jump onto another family)
     std::optional<BasicChainPeriodicOrbit<S>> orbit;
@@ -286,6 +382,11 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
     if (accepted) {
       BasicChainPeriodicOrbit<S> found = evaluateChainOrbit(chain, *accepted->start, k, accepted->tolerance);
       if (found.admissible() && isRepeated(dynamics, found, std::max(accepted->tolerance, spread))) {
+        found.refusal = OrbitRefusal::Repeated;
+      }
+      // (a step across the doubled orbit of a period doubling, onto the family's other half)
+      const ChainVector<S> shift = halfPeriodShift(dynamics, found);
+      if (found.admissible() && shift.size() > 0 && shift.dot(halfPeriodShift(dynamics, family.orbits.back())) < 0) {
         found.refusal = OrbitRefusal::Repeated;
       }
       if (found.admissible()) {
@@ -303,9 +404,8 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
     if (!orbit) {
       h /= 2;
       if (h < options.minStep) {
-        const bool said = refusal != OrbitRefusal::None && refusal != OrbitRefusal::NotClosed;
-        family.end = said ? ChainFamilyEnd::Inadmissible : ChainFamilyEnd::NotConverging;
-        family.refusal = said ? refusal : OrbitRefusal::None;
+        family.end = endAt(unknowns, unit, ChainVector<S>(w + S(4 * h) * t), family.orbits.back(), refusal, tolerance);
+        family.refusal = refusal;
         return family;
       }
       continue;
@@ -330,7 +430,16 @@ ContinuedChainFamily<S> continueChainFamily(const BasicReadyChain<S>& chain, con
     tolerance = accepted->tolerance;
     family.orbits.push_back(std::move(*orbit));
     refusal = OrbitRefusal::None;
-    h = corrections <= 3 ? std::min(2 * h, options.maxStep) : corrections >= 7 ? h / 2 : h;
+    // an impact fading where the steps stall: approached at fixed periods, and the family ends
+    // there (its last orbit says how near: the speed it was approached to)
+    if (impactSpeeds(dynamics, family.orbits.back()).first < S(kSlowImpact) && h < options.firstStep) {
+      approachFadingImpact(chain, unknowns, unit, k, stop, family);
+      const bool allSlow = impactSpeeds(dynamics, family.orbits.back()).second < S(kSlowImpact);
+      family.end = allSlow ? ChainFamilyEnd::GrazingOrbit : ChainFamilyEnd::ImpactFades;
+      return family;
+    }
+    // (a step that closes within two Newton steps is short for the family's curvature)
+    h = toClose <= 2 ? std::min(2 * h, options.maxStep) : toClose >= 5 ? h / 2 : h;
   }
   family.end = ChainFamilyEnd::StepLimit;
   return family;
@@ -351,7 +460,8 @@ S scaledDistance(const ChainStateScale<S>& scale, const BasicChainState<S>& a, c
 
 template <typename S>
 ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const ChainFamilyChange<S>& doubling,
-                                     int parentImpacts, std::stop_token stop) {
+                                     int parentImpacts, std::stop_token stop,
+                                     const std::function<bool(const BasicChainPeriodicOrbit<S>&)>& accept) {
   using std::abs;
   const BasicChainDynamics<S>& dynamics = chain.dynamics;
   const Eigen::Index n = dynamics.mass.size();
@@ -391,7 +501,8 @@ ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const Chai
               findChainOrbit(chain, guess, 2 * parentImpacts, ChainOrbitConstraint::Energy, energy, stop);
           // (the branch's orbit, near the parent: not another orbit of twice the impacts)
           if (found.orbit && abs(found.orbit->period - 2 * parent.orbit->period) <= S(0.01) * parent.orbit->period &&
-              scaledDistance(scale, found.orbit->state, parent.orbit->state) <= 3 * push) {
+              scaledDistance(scale, found.orbit->state, parent.orbit->state) <= 3 * push &&
+              (!accept || accept(*found.orbit))) {
             return found;
           }
         }
@@ -406,7 +517,8 @@ ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const Chai
                                                           const BasicChainPeriodicOrbit<S>&, int,      \
                                                           const ChainContinuationOptions<S>&, std::stop_token); \
   template ChainOrbitSearch<S> branchAtDoubling<S>(const BasicReadyChain<S>&, const ChainFamilyChange<S>&, int,     \
-                                                   std::stop_token);
+                                                   std::stop_token,                                              \
+                                                   const std::function<bool(const BasicChainPeriodicOrbit<S>&)>&);
 GRAZELAB_INSTANTIATE(double)
 GRAZELAB_INSTANTIATE(long double)
 GRAZELAB_INSTANTIATE(Quad)

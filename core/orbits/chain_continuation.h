@@ -2,6 +2,7 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 #pragma once
 
+#include <functional>
 #include <stop_token>
 #include <string_view>
 #include <vector>
@@ -18,20 +19,34 @@
 /// fast and halves when it fails. A fold in energy is passed like any other point.
 namespace grazelab::core {
 
-/// Why a continued family ends.
+/// Why a continued family ends. Where no step down to the smallest one gives an orbit, the end
+/// is named from the last orbit and the path just beyond it (the predictor a few smallest steps
+/// on): the speeds of its impacts against the scale's speed, and the contacts beyond. Where an
+/// impact slows below 5% of the scale's speed while the steps shrink (its saltation grows as the
+/// inverse of its speed), the family is approached at fixed periods towards the period where the
+/// speed's secant puts 0, as far as Newton converges, and ends there: its last orbit's slowest
+/// impact speed says how near the end it is.
 enum class ChainFamilyEnd {
-  EnergyLimit,  ///< the energy left the range asked for
-  StepLimit,    ///< the most orbits asked for were taken
-  /// the next orbit is not an admissible k-impact one at the smallest step: an impact fades, a
-  /// flight touches the stop, a contact cannot be decided, or the orbit becomes a shorter one run
-  /// twice (`refusal` says which, as far as the path shows it)
-  Inadmissible,
-  /// the corrector fails at the smallest step without the path saying why, or the tangent turns
-  /// by more than 23 degrees at every step down to it (a branch point, or a jump onto another family)
+  EnergyLimit,      ///< the energy left the range asked for
+  StepLimit,        ///< the most orbits asked for were taken
+  /// every impact's speed tends to 0 (each below 5% of the scale's speed at the last orbit): the
+  /// family tends to a linear orbit that grazes the stop (a 1IPP family at T_max: its GLO)
+  GrazingOrbit,
+  ImpactFades,      ///< one impact's speed tends to 0, not all
+  InteriorGrazing,  ///< a flight touches the stop between impacts: the path beyond makes a new contact
+  /// the orbit becomes one of half the impacts run twice: the family meets a period doubling of
+  /// that family
+  MeetsDoubling,
+  Undecided,        ///< a contact of the path beyond cannot be decided in this precision
+  /// the corrector fails at the smallest step with none of the above in sight, or the tangent
+  /// turns by more than 23 degrees at every step down to it (a branch point, or a jump onto
+  /// another family)
   NotConverging,
-  Stopped,        ///< a stop was requested
+  StartNotAdmissible,  ///< the orbit given to start from is not an admissible one (`refusal` says why)
+  Stopped,             ///< a stop was requested
 };
-/// "energy-limit", "step-limit", "inadmissible", "not-converging", "stopped".
+/// "energy-limit", "step-limit", "grazing-orbit", "impact-fades", "interior-grazing",
+/// "meets-doubling", "undecided", "not-converging", "start-not-admissible", "stopped".
 std::string_view toString(ChainFamilyEnd end);
 
 template <typename S>
@@ -77,7 +92,8 @@ struct ContinuedChainFamily {
   /// rule them out
   int unsearched = 0;
   ChainFamilyEnd end = ChainFamilyEnd::NotConverging;
-  OrbitRefusal refusal = OrbitRefusal::None;  ///< an Inadmissible end: what the path showed
+  /// what the path showed at the last step that failed (None: the corrector failed or turned)
+  OrbitRefusal refusal = OrbitRefusal::None;
 };
 
 /// The orbit of twice as many impacts born at the period doubling `doubling` of a family of
@@ -85,11 +101,14 @@ struct ContinuedChainFamily {
 /// doubling (relative offsets 1e-6 to 1e-3, by Newton from the doubling's state) pushed along the
 /// eigenvector of its multiplier nearest -1 (by inverse iteration on M + I), then Newton at that
 /// energy; the first orbit found whose period is within 1% of twice the parent's, within three
-/// pushes of the parent (scaled) and not the parent run twice. Its problem when none is found
-/// (the branch's side may be too narrow).
+/// pushes of the parent (scaled), not the parent run twice, and accepted by `accept` when given
+/// (the atlas follows it back to see it meet this doubling: next to two close doublings the
+/// other's branch passes near the parent too). Its problem when none is found (the branch's side
+/// may be too narrow).
 template <typename S>
-ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const ChainFamilyChange<S>& doubling,
-                                     int parentImpacts, std::stop_token stop = {});
+ChainOrbitSearch<S> branchAtDoubling(
+    const BasicReadyChain<S>& chain, const ChainFamilyChange<S>& doubling, int parentImpacts, std::stop_token stop = {},
+    const std::function<bool(const BasicChainPeriodicOrbit<S>&)>& accept = {});
 
 /// Follows the family of the admissible orbit `start` with its energy first moving the way of
 /// `direction` (+1 up, -1 down), until it ends.

@@ -166,6 +166,23 @@ bool isRepeated(const BasicChainDynamics<S>& dynamics, const BasicChainPeriodicO
   return false;
 }
 
+// For an orbit of an even number k of impacts: its state after k/2 impacts less its start, in
+// the scaled units. The two halves of a family born at a period doubling are each other's orbits
+// seen from their middle impact, so that this difference changes sign where the family passes
+// through the doubled orbit (none for an odd k: empty).
+template <typename S>
+ChainVector<S> halfPeriodShift(const BasicChainDynamics<S>& dynamics, const BasicChainPeriodicOrbit<S>& orbit) {
+  const std::size_t k = orbit.events.size();
+  if (k < 2 || k % 2 != 0) return {};
+  const ChainStateScale<S> scale(dynamics);
+  const BasicChainEvent<S>& middle = orbit.events[k / 2 - 1];
+  const Eigen::Index n = middle.u.size();
+  ChainVector<S> x(2 * n);
+  x << middle.u - orbit.state.u, middle.vBefore - orbit.state.v;
+  x[n + dynamics.stop] = middle.vAfter - orbit.state.v[dynamics.stop];
+  return scale.scaled(x);
+}
+
 // The return map at a path that held its impact sequence: the residual on the section and its
 // Jacobian in the unknowns, and the period's gradient.
 template <typename S>

@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: MIT
+// SPDX-FileCopyrightText: 2026 GrazeLab developers
+// Tests for core/orbits/chain_atlas.cpp, the atlas of any chain's nonsmooth modes. On two-mass
+// chains of both design branches it is the two-mass atlas (an independent code: the note's 2 x 2
+// traces and its own continuation): the same families, the same period doublings, the same
+// ends. On random chains of three and four masses every family is made of admissible orbits of
+// its impacts, every doubling is switched at or said why not, and a family born there starts
+// next to it with twice its period. A chain scaled in mass and in length has the same atlas, its
+// energies scaled.
+#include "core/orbits/chain_atlas.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/model/two_mass_form.h"
+#include "core/orbits/modes_atlas.h"
+#include "core/orbits/periodic_orbit.h"
+#include "core/orbits/special_orbits.h"
+#include "support/random_chains.h"
+
+namespace grazelab::core {
+namespace {
+
+using test_chains::randomChain;
+
+template <typename S>
+std::vector<const ChainAtlasFamily<S>*> familiesOf(const ChainAtlas<S>& atlas, int impacts) {
+  std::vector<const ChainAtlasFamily<S>*> out;
+  for (const ChainAtlasFamily<S>& family : atlas.families) {
+    if (family.path.impacts == impacts) out.push_back(&family);
+  }
+  return out;
+}
+
+TEST(ChainAtlas, OnTwoMassChainsItIsTheTwoMassAtlas) {
+  int doublings = 0, born = 0;
+  for (const double m2 : {0.1, 0.3, 0.4, 0.5, 0.55}) {
+    for (const Branch branch : {Branch::Upper, Branch::Lower}) {
+      const std::string name =
+          "m2 " + std::to_string(m2) + (branch == Branch::Upper ? " upper" : " lower");
+      const TwoMassForm<double> form =
+          *makeTwoMassForm(*designedModel(1.0, m2, 1.0, 1.0, branch)).chain;
+      const AtlasEnergyRange<double> range = defaultAtlasEnergyRange(form);
+      const ModesAtlas<double> two = computeModesAtlas(form, 2, range.low, range.high);
+      const ReadyChain ready = readyChain(form.model);
+      ChainAtlasOptions<double> options;
+      options.maxImpacts = 2;
+      options.energyLow = range.low;
+      options.energyHigh = range.high;
+      const ChainAtlas<double> atlas = computeChainAtlas(ready, options);
+      ASSERT_TRUE(atlas.complete);
+      // every flip of the two-mass atlas's 1IPP parts is a doubling of the chain atlas's, at
+      // the same energy, and the other way round
+      std::vector<double> flips, changes;
+      for (const ModeFamily<double>& family : two.families) {
+        if (family.impacts != 1) continue;
+        for (const FamilyBifurcation<double>& b : family.bifurcations) {
+          if (b.kind == PointKind::PeriodDoubling) flips.push_back(b.energy);
+        }
+      }
+      for (const ChainAtlasFamily<double>* family : familiesOf(atlas, 1)) {
+        for (const ChainFamilyChange<double>& change : family->path.changes) {
+          EXPECT_EQ(change.kind, ChainBifurcationKind::PeriodDoubling)
+              << name << ": two masses change only so";
+          changes.push_back(change.energy);
+          EXPECT_LT(change.energyError, 1e-10 * change.energy) << name;
+        }
+      }
+      ASSERT_EQ(flips.size(), changes.size()) << name;
+      std::sort(flips.begin(), flips.end());
+      std::sort(changes.begin(), changes.end());
+      for (std::size_t i = 0; i < flips.size(); ++i) {
+        EXPECT_NEAR(changes[i], flips[i], 1e-10 * flips[i]) << name;
+        ++doublings;
+      }
+      // a 2IPP family born at each of them, as the two-mass atlas has, ending as it does
+      for (const ModeFamily<double>& family : two.families) {
+        if (family.impacts != 2) continue;
+        const ChainAtlasFamily<double>* same = nullptr;
+        for (const ChainAtlasFamily<double>* other : familiesOf(atlas, 2)) {
+          const ChainFamilyChange<double>& at = atlas.families[std::size_t(other->parent)]
+                                                    .path.changes[std::size_t(other->parentChange)];
+          if (std::abs(at.energy - family.bornEnergy) < 1e-9 * family.bornEnergy) same = other;
+        }
+        ASSERT_NE(same, nullptr) << name << ": the family born at E " << family.bornEnergy;
+        ++born;
+        // each of its orbits admissible by the two-mass code's own evaluator
+        double lowest = same->path.orbits.front().energy, highest = lowest;
+        for (const ChainPeriodicOrbit& orbit : same->path.orbits) {
+          const BasicState<double> state{orbit.state.u[0], orbit.state.u[1], orbit.state.v[0],
+                                         orbit.state.v[1]};
+          EXPECT_EQ(evaluateOrbit(form, state, 2, 1e-9).refusal, OrbitRefusal::None)
+              << name << " E " << orbit.energy;
+          lowest = std::min(lowest, orbit.energy);
+          highest = std::max(highest, orbit.energy);
+        }
+        const double last = same->path.orbits.back().energy;
+        if (family.end.kind == PointKind::EnergyLimit) {
+          EXPECT_EQ(same->lastEnd.kind, ChainFamilyEnd::EnergyLimit) << name;
+        } else if (family.end.kind == PointKind::InteriorGrazing) {
+          // the same end, or one beyond it: the two-mass continuation names an end where its
+          // steps stall next to a flight's maximum nearing the stop, which may be short of a
+          // grazing orbit (m2 = 0.1, lower: its end at E 4.27975, the family admissible on to
+          // 4.2841, where the impact speeds and the clearance tend to 0 together)
+          if (same->lastEnd.kind == ChainFamilyEnd::InteriorGrazing) {
+            EXPECT_NEAR(last, family.end.energy, 1e-7 * family.end.energy) << name;
+          } else {
+            EXPECT_EQ(same->lastEnd.kind, ChainFamilyEnd::GrazingOrbit) << name;
+            EXPECT_LE(lowest, family.end.energy) << name;
+            EXPECT_GE(highest, family.end.energy) << name;
+          }
+        } else if (family.end.kind == PointKind::PeriodDoubling) {
+          EXPECT_EQ(same->lastEnd.kind, ChainFamilyEnd::MeetsDoubling) << name;
+          EXPECT_NEAR(last, family.end.energy, 1e-3 * family.end.energy) << name;
+        }
+      }
+      EXPECT_EQ(familiesOf(atlas, 2).size(),
+                std::size_t(std::count_if(two.families.begin(), two.families.end(),
+                                          [](const auto& f) { return f.impacts == 2; })))
+          << name;
+    }
+  }
+  EXPECT_GE(doublings, 10);
+  EXPECT_GE(born, 10);
+}
+
+TEST(ChainAtlas, OnChainsOfThreeAndFourMassesEveryFamilyIsAdmissibleAndEveryDoublingSwitched) {
+  std::mt19937 rng(20261206);
+  int families = 0, bornHere = 0, doublings = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    const MassChain chain = randomChain(rng, 3 + trial % 2);
+    const ReadyChain ready = readyChain(chain);
+    const ChainAtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
+    ChainAtlasOptions<double> options;
+    options.maxImpacts = 2;
+    options.energyLow = range.low;
+    options.energyHigh = range.high;
+    options.maxOrbitsPerFamily = 600;
+    const ChainAtlas<double> atlas = computeChainAtlas(ready, options);
+    ASSERT_TRUE(atlas.complete);
+    for (const ChainAtlasFamily<double>& family : atlas.families) {
+      ++families;
+      const int k = family.path.impacts;
+      for (const ChainPeriodicOrbit& orbit : family.path.orbits) {
+        ASSERT_TRUE(orbit.admissible()) << "trial " << trial;
+        EXPECT_EQ(orbit.events.size(), std::size_t(k));
+        EXPECT_GE(orbit.energy, range.low);
+        EXPECT_LE(orbit.energy, range.high);
+      }
+      std::size_t branches = 0;
+      for (const ChainFamilyChange<double>& change : family.path.changes) {
+        ASSERT_LT(change.after + 1, family.path.orbits.size());
+        branches += change.kind == ChainBifurcationKind::PeriodDoubling;
+      }
+      ASSERT_EQ(family.branches.size(), branches)
+          << "trial " << trial << ": one outcome per doubling";
+      for (const ChainAtlasBranch& branch : family.branches) {
+        ++doublings;
+        const ChainFamilyChange<double>& at = family.path.changes[branch.change];
+        EXPECT_EQ(at.kind, ChainBifurcationKind::PeriodDoubling);
+        if (2 * k > options.maxImpacts) {
+          EXPECT_EQ(branch.outcome, ChainBranchOutcome::BeyondImpacts);
+          continue;
+        }
+        EXPECT_NE(branch.outcome, ChainBranchOutcome::BeyondImpacts);
+        if (branch.outcome == ChainBranchOutcome::NotFound) continue;
+        ASSERT_GE(branch.family, 0);
+        const ChainAtlasFamily<double>& child = atlas.families[std::size_t(branch.family)];
+        EXPECT_EQ(child.path.impacts, 2 * k);
+        if (branch.outcome != ChainBranchOutcome::Born) continue;
+        ++bornHere;
+        EXPECT_EQ(child.parent, family.id);
+        const ChainPeriodicOrbit& first = child.path.orbits.front();
+        EXPECT_NEAR(first.period, 2 * at.period, 1e-2 * at.period) << "trial " << trial;
+        EXPECT_NEAR(first.energy, at.energy, 2e-3 * at.energy) << "trial " << trial;
+      }
+    }
+  }
+  EXPECT_GE(families, 8);
+  EXPECT_GE(doublings, 3);
+  EXPECT_GE(bornHere, 2);
+}
+
+TEST(ChainAtlas, AChainScaledInMassAndLengthHasTheSameAtlasItsEnergiesScaled) {
+  // masses and springs times a (the frequencies unchanged), the gap times g: every orbit is the
+  // same motion in units of g, its energy a g^2 times
+  std::mt19937 rng(11);
+  const MassChain chain = randomChain(rng, 3);
+  MassChain scaled = chain;
+  const double a = 7.5, g = 0.03;
+  for (double& m : scaled.masses) m *= a;
+  for (double& k : scaled.springs) k *= a;
+  scaled.rightSpring *= a;
+  scaled.gap *= g;
+  const ReadyChain one = readyChain(chain), other = readyChain(scaled);
+  ChainAtlasOptions<double> options;
+  options.maxImpacts = 2;
+  const ChainAtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(one);
+  options.energyLow = range.low;
+  options.energyHigh = range.high;
+  const ChainAtlas<double> first = computeChainAtlas(one, options);
+  options.energyLow *= a * g * g;
+  options.energyHigh *= a * g * g;
+  const ChainAtlas<double> second = computeChainAtlas(other, options);
+  ASSERT_EQ(first.families.size(), second.families.size());
+  for (std::size_t f = 0; f < first.families.size(); ++f) {
+    const auto& x = first.families[f].path;
+    const auto& y = second.families[f].path;
+    EXPECT_EQ(x.impacts, y.impacts);
+    ASSERT_EQ(x.changes.size(), y.changes.size()) << "family " << f;
+    for (std::size_t c = 0; c < x.changes.size(); ++c) {
+      EXPECT_EQ(x.changes[c].kind, y.changes[c].kind);
+      EXPECT_NEAR(y.changes[c].energy, a * g * g * x.changes[c].energy, 1e-9 * y.changes[c].energy);
+      EXPECT_NEAR(y.changes[c].period, x.changes[c].period, 1e-9 * x.changes[c].period);
+    }
+    EXPECT_EQ(first.families[f].lastEnd.kind, second.families[f].lastEnd.kind);
+  }
+}
+
+}  // namespace
+}  // namespace grazelab::core
