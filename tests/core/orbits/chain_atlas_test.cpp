@@ -224,3 +224,56 @@ TEST(ChainAtlas, AChainScaledInMassAndLengthHasTheSameAtlasItsEnergiesScaled) {
 
 }  // namespace
 }  // namespace grazelab::core
+
+namespace grazelab::core {
+namespace {
+
+TEST(ChainAtlas, TheOnePeriodicPartsInLongDoubleAreThoseOfDoubleToItsBars) {
+  // a chain of three masses, the atlas to K = 1 in double and in long double (each with its own
+  // chain in S): the same parts, the same changes of the same kinds, their energies within the
+  // double's bars (the long double's no wider)
+  std::mt19937 rng(5);
+  const MassChain chain = randomChain(rng, 3);
+  const ReadyChain ready = readyChain(chain);
+  const BasicReadyChain<long double> readyLong = readyChain(chainCast<long double>(chain));
+  const ChainAtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
+  ChainAtlasOptions<double> options;
+  options.maxImpacts = 1;
+  options.energyLow = range.low;
+  options.energyHigh = range.high;
+  ChainAtlasOptions<long double> optionsLong;
+  optionsLong.maxImpacts = 1;
+  optionsLong.energyLow = range.low;
+  optionsLong.energyHigh = range.high;
+  const ChainAtlas<double> inDouble = computeChainAtlas(ready, options);
+  const ChainAtlas<long double> inLong = computeChainAtlas(readyLong, optionsLong);
+  ASSERT_EQ(inDouble.families.size(), inLong.families.size());
+  int changes = 0;
+  for (std::size_t f = 0; f < inDouble.families.size(); ++f) {
+    const auto& x = inDouble.families[f];
+    const auto& y = inLong.families[f];
+    // the same ends, but where double cannot decide the path beyond (`undecided`), which long
+    // double may name
+    ASSERT_TRUE(x.firstEnd && y.firstEnd);
+    for (const auto& [a, b] : {std::pair{x.lastEnd.kind, y.lastEnd.kind},
+                               std::pair{x.firstEnd->kind, y.firstEnd->kind}}) {
+      if (a != ChainFamilyEnd::Undecided) {
+        EXPECT_EQ(a, b) << "part " << f;
+      }
+    }
+    ASSERT_EQ(x.path.changes.size(), y.path.changes.size()) << "part " << f;
+    for (std::size_t c = 0; c < x.path.changes.size(); ++c) {
+      EXPECT_EQ(x.path.changes[c].kind, y.path.changes[c].kind);
+      EXPECT_NEAR(double(y.path.changes[c].energy), x.path.changes[c].energy,
+                  x.path.changes[c].energyError + 1e-13 * x.path.changes[c].energy);
+      EXPECT_NEAR(double(y.path.changes[c].period), x.path.changes[c].period,
+                  x.path.changes[c].periodError + 1e-13 * x.path.changes[c].period);
+      EXPECT_LE(double(y.path.changes[c].periodError), x.path.changes[c].periodError);
+      ++changes;
+    }
+  }
+  EXPECT_GE(changes, 1);
+}
+
+}  // namespace
+}  // namespace grazelab::core
