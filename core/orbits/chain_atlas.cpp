@@ -48,14 +48,17 @@ ChainAtlasEnd endOf(ChainFamilyEnd kind, OrbitRefusal refusal) {
   return ChainAtlasEnd{kind, refusal, -1, -1};
 }
 
-// Whether a family's end is an orbit becoming the shorter one run twice near the doubling
-// `change` of a family of half its impacts (the same energy to 1e-3).
+// Whether a family's end is an orbit becoming the shorter one run twice at the doubling `change`
+// of a family of half its impacts: its energy and its period (twice the doubling's) the same to
+// 1e-5 (the end lies within the smallest step of the doubled orbit, where both move as the square
+// of the distance; two doublings 0.6% apart in energy are told apart).
 template <typename S>
 bool comesBackTo(const ChainAtlasEnd& end, const BasicChainPeriodicOrbit<S>& last,
                  const ChainFamilyChange<S>& change) {
   using std::abs;
   return end.kind == ChainFamilyEnd::MeetsDoubling &&
-         abs(last.energy - change.energy) <= S(1e-3) * abs(change.energy);
+         abs(last.energy - change.energy) <= S(1e-5) * abs(change.energy) &&
+         abs(last.period - 2 * change.period) <= S(2e-5) * change.period;
 }
 
 // T_max: the common period of a commensurate chain, else its slowest mode's period
@@ -139,13 +142,13 @@ class OnePeriodicParts {
     const BasicChainOnePeriodicOrbit<S> beyond = data(out);
     ChainAtlasEnd end;
     const ChainStateScale<S> scale(chain_.dynamics);
-    if (abs(data(inside).V) < S(0.05) * scale.speed) {
+    if (beyond.admissible()) {  // (admissible, out of the range)
+      end.kind = ChainFamilyEnd::EnergyLimit;
+    } else if (abs(data(inside).V) < S(0.05) * scale.speed) {
       // the impact fades (V through 0, near a common period T* of some modes): the orbit
       // becomes the GLO the closed form tends to there (Theorem 2.1 for N masses), whatever
       // the path just beyond it does
       end.kind = ChainFamilyEnd::GrazingOrbit;
-    } else if (beyond.admissible()) {  // (admissible, out of the range)
-      end.kind = ChainFamilyEnd::EnergyLimit;
     } else {
       switch (beyond.refusal) {
         case OnePeriodicRefusal::MultipleOfPeriod:
@@ -274,7 +277,8 @@ ChainAtlas<S> computeChainAtlas(const BasicReadyChain<S>& chain,
       // a family of twice the impacts that came back to this doubling
       for (ChainAtlasFamily<S>& other : atlas.families) {
         if (other.path.impacts != 2 * k || other.path.orbits.empty()) continue;
-        if (comesBackTo(other.lastEnd, other.path.orbits.back(), doubling)) {
+        if (other.lastEnd.family < 0 &&
+            comesBackTo(other.lastEnd, other.path.orbits.back(), doubling)) {
           other.lastEnd.family = int(f);
           other.lastEnd.change = int(c);
         } else if (other.firstEnd &&
