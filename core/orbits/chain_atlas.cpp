@@ -29,7 +29,7 @@ std::string_view toString(ChainBranchOutcome outcome) {
 }
 
 template <typename S>
-ChainAtlasEnergyRange<S> defaultChainAtlasEnergyRange(const BasicReadyChain<S>& chain) {
+AtlasEnergyRange<S> defaultChainAtlasEnergyRange(const BasicReadyChain<S>& chain) {
   // (a range, not a result: its ends in double)
   const MassChain numbers = chainCast<double>(chain.numbers);
   const double tMax = chainOnePeriodicEnd(numbers);
@@ -334,7 +334,7 @@ ChainAtlas<S> computeChainAtlas(const BasicReadyChain<S>& chain,
 }
 
 #define GRAZELAB_INSTANTIATE(S)                                                                 \
-  template ChainAtlasEnergyRange<S> defaultChainAtlasEnergyRange<S>(const BasicReadyChain<S>&); \
+  template AtlasEnergyRange<S> defaultChainAtlasEnergyRange<S>(const BasicReadyChain<S>&); \
   template ChainAtlas<S> computeChainAtlas<S>(                                                  \
       const BasicReadyChain<S>&, const ChainAtlasOptions<S>&, std::stop_token,                  \
       const std::function<void(const ChainAtlasFamily<S>&)>&);

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/orbits/atlas_energy_range.h"
 #include "core/orbits/chain_continuation.h"
 
 /// The atlas of a chain's nonsmooth modes up to K impacts per period, for any chain
@@ -91,12 +92,7 @@ struct ChainAtlasOptions {
 /// GLO the 1IPP family tends to at its grazing end (T -> T_max), as for the two-mass atlas; the
 /// closed form's energy at T_max / 2 where that GLO cannot be made.
 template <typename S>
-struct ChainAtlasEnergyRange {
-  S low = 0;
-  S high = 0;
-};
-template <typename S>
-ChainAtlasEnergyRange<S> defaultChainAtlasEnergyRange(const BasicReadyChain<S>& chain);
+AtlasEnergyRange<S> defaultChainAtlasEnergyRange(const BasicReadyChain<S>& chain);
 
 /// Computes the atlas; `familyDone` hears each family as it is finished.
 template <typename S>

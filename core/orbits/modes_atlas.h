@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/orbits/atlas_energy_range.h"
 #include "core/orbits/family_continuation.h"
 
 /// The atlas of the chain's nonlinear normal modes up to K impacts per period (docs/model.md
@@ -59,11 +60,6 @@ struct ModesAtlas {
 /// The energies over which the atlas follows families unless told otherwise, for the command
 /// line and the explorer alike: 1/100 to 10000 times the energy of the 1IPP family's grazing end
 /// (GLO_lambda*), where the families are born and end.
-template <typename S>
-struct AtlasEnergyRange {
-  S low = 0;
-  S high = 0;
-};
 template <typename S>
 AtlasEnergyRange<S> defaultAtlasEnergyRange(const TwoMassForm<S>& chain);
 

@@ -366,7 +366,7 @@ void ChainAtlasThreeMasses(benchmark::State& state) {
                       ? core::designSprings(chain.masses, 1.0, std::vector<int>{3, 2, 1}).designs.at(0).springs
                       : std::vector<double>{1, 1.3, 0.8};
   const core::ReadyChain ready = core::readyChain(chain);
-  const core::ChainAtlasEnergyRange<double> range = core::defaultChainAtlasEnergyRange(ready);
+  const core::AtlasEnergyRange<double> range = core::defaultChainAtlasEnergyRange(ready);
   core::ChainAtlasOptions<double> options;
   options.maxImpacts = int(state.range(0));
   options.energyLow = range.low;

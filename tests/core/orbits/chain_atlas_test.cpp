@@ -135,7 +135,7 @@ TEST(ChainAtlas, OnChainsOfThreeAndFourMassesEveryFamilyIsAdmissibleAndEveryDoub
   for (int trial = 0; trial < 8; ++trial) {
     const MassChain chain = randomChain(rng, 3 + trial % 2);
     const ReadyChain ready = readyChain(chain);
-    const ChainAtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
+    const AtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
     ChainAtlasOptions<double> options;
     options.maxImpacts = 2;
     options.energyLow = range.low;
@@ -200,7 +200,7 @@ TEST(ChainAtlas, AChainScaledInMassAndLengthHasTheSameAtlasItsEnergiesScaled) {
   const ReadyChain one = readyChain(chain), other = readyChain(scaled);
   ChainAtlasOptions<double> options;
   options.maxImpacts = 2;
-  const ChainAtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(one);
+  const AtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(one);
   options.energyLow = range.low;
   options.energyHigh = range.high;
   const ChainAtlas<double> first = computeChainAtlas(one, options);
@@ -241,7 +241,7 @@ TEST(ChainAtlas, TheOnePeriodicPartsInLongDoubleAreThoseOfDoubleToItsBars) {
   const MassChain chain = randomChain(rng, 3);
   const ReadyChain ready = readyChain(chain);
   const BasicReadyChain<long double> readyLong = readyChain(chainCast<long double>(chain));
-  const ChainAtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
+  const AtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
   ChainAtlasOptions<double> options;
   options.maxImpacts = 1;
   options.energyLow = range.low;
