@@ -586,7 +586,7 @@ py::tuple modesCommand(const std::vector<std::pair<std::string, std::optional<st
   const grazelab::cli::JsonValue document = grazelab::cli::modesDocument(run.outcome, outBase(options));
   py::list tables;
   for (std::size_t i = 0; i < grazelab::cli::modesFamilyCount(run.outcome); ++i) {
-    tables.append(tableArray(grazelab::cli::modesTable(run.outcome, i), grazelab::cli::kModesColumns));
+    tables.append(tableArray(grazelab::cli::modesTable(run.outcome, i), grazelab::cli::modesColumns(run.outcome)));
   }
   return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()), tables);
 }

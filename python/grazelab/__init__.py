@@ -640,7 +640,10 @@ def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
           design_branch: _Optional[int] = None) -> Result:
     """The atlas of the chain's periodic impacting families (``grazelab-cli modes``). Returns
     the JSON's fields; each family of ``families`` has ``table``, its rows as a structured
-    array with the CSV's columns.
+    array with the CSV's columns. The note's 1:2 chain takes its two-mass atlas; any other chain
+    (``masses``: N masses, a wall, another stop; or two masses off the design) the atlas of any
+    chain: ``chain`` in place of ``model``, and columns energy, period, omega, class, min_impact_speed,
+    u1..uN, v1..vN and muK_re, muK_im, muK_krein for the 2N - 2 nontrivial multipliers.
 
     Keywords:
 {chain}{precision}    max_impacts: the most impacts per period of the families followed (default 4).
@@ -648,7 +651,10 @@ def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
         1/100 to 10000 times the grazing end's energy).
     out: a prefix: the command line's files are kept there (without pictures).
     progress: ``progress(fraction, text)``, called on the calling thread.
-{two_mass_chain}"""
+    masses, springs, right_spring, stop_mass, frequencies, design_branch: the chain as in ``info``
+        (any chain; ``frequencies=(2, 1)`` with two masses is the note's 1:2 design, the same bits
+        as the two-mass keywords).
+"""
     options = _chain_keywords(dict(precision=precision, max_impacts=max_impacts, energy_range=energy_range),
                               dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch),
                               masses, springs, right_spring, stop_mass, frequencies, design_branch)

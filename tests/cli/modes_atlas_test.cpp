@@ -2,8 +2,8 @@
 // SPDX-FileCopyrightText: 2026 GrazeLab developers
 // The typed atlas (commands/modes_atlas_command.h), as the command line and the Python module
 // call it: its tables are its document's families row for row, every flip with a family born
-// there names a family of twice the impacts, double and long double place the flips alike, and
-// the refusals are lines.
+// there names a family of twice the impacts, double and long double place the flips alike, the
+// refusals are lines, and every other chain, of any N, takes the atlas of any chain.
 #include <gtest/gtest.h>
 
 #include <QString>
@@ -11,11 +11,14 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <stop_token>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "commands/modes_atlas_command.h"
 #include "commands/orbit_command.h"
+#include "commands/simulate_command.h"
 #include "io/option_values.h"
 #include "io/prepared_chain.h"
 
@@ -93,7 +96,6 @@ TEST(TypedModes, DoubleAndLongDoublePlaceTheFlipsAlike) {
 }
 
 TEST(TypedModes, RefusalsAreLines) {
-  EXPECT_NE(atlasOf({{"k2", "0.3"}}, PrecisionChoice::Double).problem.find("1:2 resonant chain"), std::string::npos);
   const auto chain = twoMassChainOf(OptionValues(Options{}));
   ASSERT_TRUE(chain.value);
   ModesRequest request;
@@ -104,6 +106,102 @@ TEST(TypedModes, RefusalsAreLines) {
   const ModesOutcome refused = modesAtlas(**chain.value, request);
   EXPECT_EQ(refused.status, ModesStatus::Refused);
   EXPECT_EQ(modesFamilyCount(refused), 0u);
+}
+
+ModesOutcome chainAtlasOf(const Options& options, int maxImpacts, std::stop_token stop = {}) {
+  const auto chain = recentChain(OptionValues(options));
+  EXPECT_TRUE(chain.value) << chain.error.toStdString();
+  ModesRequest request;
+  request.maxImpacts = maxImpacts;
+  return modesAtlas(**chain.value, request, {}, stop);
+}
+
+// Every chain that is not the note's 1:2 two-mass chain takes the atlas of any chain: its document
+// names the chain (not the note's model), each table is its family's rows over the columns of N
+// masses, the first and last rows are the orbits the ends name, every multiplier's Krein signature
+// is +-1 on the circle off the real axis and 0 off it, an elliptic row has every multiplier on the
+// circle, and each family born at a doubling names that doubling, whose branch names it back.
+TEST(TypedModes, AnyOtherChainTakesTheAtlasOfAnyChain) {
+  const std::vector<std::pair<Options, int>> chains = {
+      {{{"masses", "1,0.7,0.4"}, {"frequencies", "3:2:1"}}, 3},
+      {{{"masses", "1,0.7,0.4"}, {"springs", "1,1.3,0.8"}, {"stop-mass", "2"}}, 3},
+      {{{"m2", "0.4"}, {"k2", "0.37"}}, 2},  // two masses off the 1:2 design
+      {{{"masses", "1,0.5"}, {"springs", "1,0.5"}, {"stop-mass", "1"}}, 2},
+  };
+  for (const auto& [options, n] : chains) {
+    SCOPED_TRACE(n);
+    const ModesOutcome outcome = chainAtlasOf(options, 2);
+    ASSERT_EQ(outcome.status, ModesStatus::Computed) << outcome.problem;
+    const JsonValue document = modesDocument(outcome, "x");
+    EXPECT_EQ(document.find("model"), nullptr);
+    ASSERT_NE(document.find("chain"), nullptr);
+    const std::vector<std::string> columns = modesColumns(outcome);
+    const std::size_t width = columns.size();
+    ASSERT_EQ(width, std::size_t(5 + 2 * n + 3 * (2 * n - 2)));
+    EXPECT_EQ(columns[5], "u1");
+    EXPECT_EQ(columns.back(), "mu" + std::to_string(2 * n - 2) + "_krein");
+    const auto& families = document.find("families")->items;
+    ASSERT_EQ(families.size(), modesFamilyCount(outcome));
+    ASSERT_FALSE(families.empty());
+    const double low = document.find("energy_range")->items[0].toDouble();
+    const double high = document.find("energy_range")->items[1].toDouble();
+    for (std::size_t i = 0; i < families.size(); ++i) {
+      const JsonValue& family = families[i];
+      EXPECT_EQ(family.find("file")->text, "x-family-" + std::to_string(family.find("id")->integer) + ".csv");
+      const std::vector<double> table = modesTable(outcome, i);
+      const std::size_t rows = std::size_t(family.find("rows")->integer);
+      ASSERT_EQ(table.size(), rows * width);
+      ASSERT_GT(rows, 0u);
+      for (std::size_t at = 0; at < table.size(); at += width) {
+        EXPECT_GE(table[at], low * (1 - 1e-9));
+        EXPECT_LE(table[at], high * (1 + 1e-9));
+        EXPECT_DOUBLE_EQ(table[at + 2], 2 * std::numbers::pi / table[at + 1]);
+        const int cls = int(table[at + 3]);
+        ASSERT_GE(cls, 0);
+        ASSERT_LE(cls, 4);
+        EXPECT_GT(table[at + 4], 0);  // every impact of an admissible orbit has a speed
+        for (int k = 0; k < 2 * n - 2; ++k) {
+          const std::size_t mu = at + 5 + 2 * n + 3 * k;
+          const double modulus = std::hypot(table[mu], table[mu + 1]);
+          const double krein = table[mu + 2];
+          if (krein != 0) {
+            EXPECT_NEAR(modulus, 1, 1e-6);
+          }
+          if (std::abs(modulus - 1) > 1e-6 || std::abs(table[mu + 1]) < 1e-12) {
+            EXPECT_EQ(krein, 0);
+          }
+          if (cls == int(core::ChainStability::Elliptic)) {
+            EXPECT_NEAR(modulus, 1, 1e-6);
+          }
+        }
+      }
+      // the ends are the first and last rows
+      EXPECT_EQ(family.find("end")->find("orbit")->find("energy")->toDouble(), table[(rows - 1) * width]);
+      if (family.find("start")->kind != JsonValue::Kind::Null) {
+        EXPECT_EQ(family.find("start")->find("orbit")->find("energy")->toDouble(), table[0]);
+      }
+      const JsonValue* born = family.find("born_at");
+      if (born->find("kind")->text != "period-doubling") continue;
+      const JsonValue* parent = nullptr;
+      for (const JsonValue& other : families) {
+        if (other.find("id")->integer == born->find("family")->integer) parent = &other;
+      }
+      ASSERT_NE(parent, nullptr);
+      EXPECT_EQ(family.find("impacts")->integer, 2 * parent->find("impacts")->integer);
+      const JsonValue& doubling = parent->find("bifurcations")->items.at(std::size_t(born->find("bifurcation")->integer));
+      EXPECT_EQ(doubling.find("kind")->text, "period-doubling");
+      EXPECT_EQ(doubling.find("branch")->text, "born");
+      EXPECT_EQ(doubling.find("family")->integer, family.find("id")->integer);
+    }
+  }
+}
+
+TEST(TypedModes, AChainsAtlasStopsWhenAsked) {
+  std::stop_source source;
+  source.request_stop();
+  const ModesOutcome outcome = chainAtlasOf({{"masses", "1,0.7,0.4"}, {"frequencies", "3:2:1"}}, 2, source.get_token());
+  EXPECT_EQ(outcome.status, ModesStatus::Interrupted);
+  EXPECT_EQ(modesFamilyCount(outcome), 0u);
 }
 
 }  // namespace

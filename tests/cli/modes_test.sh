@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
-# `modes` (issue 22): the atlas's files and their agreement, the families born at flips, and
-# refusals. Usage: modes_test.sh GRAZELAB_CLI
+# `modes` (issue 22): the atlas's files and their agreement, the families born at flips, the
+# atlas of any other chain (issue 49), and refusals. Usage: modes_test.sh GRAZELAB_CLI
 set -uo pipefail
 cli="$1"
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -67,9 +67,40 @@ PY
 expect_ok modes --energy-range 0.01:0.1 --out "$work/r/none" || exit 1
 python3 -c "import json,sys; assert json.load(open(sys.argv[1]))['families'] == []" "$work/r/none.json" || fail "an empty range"
 
+# any chain but the note's 1:2 one takes the atlas of any chain: three masses stopped on the last,
+# and two masses off the design; their files are the document's families, row for row
+for chain in "--masses 1,0.7,0.4 --frequencies 3:2:1 --max-impacts 2" "--k2 0.6 --max-impacts 2"; do
+  rm -rf "$work/c"
+  # shellcheck disable=SC2086
+  expect_ok modes $chain --out "$work/c/atlas" || exit 1
+  python3 - "$work/c" <<'PY' || fail "modes $chain"
+import array, ast, csv, json, pathlib, sys
+d = pathlib.Path(sys.argv[1])
+meta = json.load(open(d / 'atlas.json'))
+assert meta['format'] == 'grazelab-modes' and 'model' not in meta, meta.keys()
+n = len(meta['chain']['masses'])
+columns = meta['about']['columns'].split(',')
+assert len(columns) == 5 + 2 * n + 3 * (2 * n - 2), columns
+assert meta['families'] and any(f['born_at']['kind'] == 'period-doubling' for f in meta['families'])
+for f in meta['families']:
+    rows = list(csv.reader(open(d / f['file'])))
+    assert rows[0] == columns and len(rows) - 1 == f['rows'] > 0
+    raw = (d / f['file'].replace('.csv', '.npy')).read_bytes()  # (.npy 1.0: its header, then float64)
+    size = int.from_bytes(raw[8:10], 'little')
+    assert ast.literal_eval(raw[10:10 + size].decode())['shape'] == (f['rows'], len(columns))
+    table = array.array('d', raw[10 + size:])
+    assert table[-len(columns)] == f['end']['orbit']['energy'] == float(rows[-1][0])
+    assert {r[3] for r in rows[1:]} <= {'elliptic', 'hyperbolic', 'flip-hyperbolic', 'complex-quadruplet', 'undecided'}
+    for b in f['bifurcations']:
+        assert b['kind'] in ('period-doubling', 'fold', 'krein-collision', 'other')
+        if b['kind'] == 'period-doubling':
+            assert b['branch'] in ('born', 'reached', 'not-found', 'beyond-impacts')
+PY
+  [ ! -e "$work/c/atlas.svg" ] || [ -e "$work/c/atlas.png" ] || fail "modes $chain picture"
+done
+
 EXPECT_WORD="--max-impacts" expect_invalid modes --max-impacts 0 --out "$work/bad/m"
 EXPECT_WORD="--energy-range" expect_invalid modes --energy-range 2:1 --out "$work/bad/m"
-EXPECT_WORD="resonant" expect_invalid modes --k2 0.6 --out "$work/bad/m"
 EXPECT_WORD="--out" expect_invalid modes
 EXPECT_WORD="does not apply" expect_invalid modes --contacts 3 --out "$work/bad/m"
 [ ! -e "$work/bad" ] || [ -z "$(ls -A "$work/bad")" ] || fail "a refused atlas wrote files"
@@ -82,6 +113,15 @@ took_ms=$(( ($(date +%s%N) - start) / 1000000 ))
 [ "$code" -eq 130 ] || fail "interrupted modes exited $code, not 130"
 [ "$took_ms" -lt 2000 ] || fail "modes --precision quad took $took_ms ms to stop (1000 of them before the signal)"
 [ ! -e "$work/int/m.json" ] || fail "an interrupted atlas wrote its files"
+# and the atlas of three masses likewise
+start=$(date +%s%N)
+timeout --preserve-status -s INT 1 "$cli" modes --masses 1,0.7,0.4 --frequencies 3:2:1 --precision quad \
+  --out "$work/int/c" 2>"$err"
+code=$?
+took_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+[ "$code" -eq 130 ] || fail "interrupted modes of three masses exited $code, not 130"
+[ "$took_ms" -lt 2000 ] || fail "modes of three masses in quad took $took_ms ms to stop"
+[ ! -e "$work/int/c.json" ] || fail "an interrupted atlas of three masses wrote its files"
 
 if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
 echo "modes: all checks passed"

@@ -335,11 +335,7 @@ def test_orbit_and_modes_take_the_chain_as_masses(two_mass, chain):
     a, b = gl.orbit(onepp=period, **two_mass), gl.orbit(onepp=period, **chain)
     assert bits(a.pop("multipliers").view(float)).tolist() == bits(b.pop("multipliers").view(float)).tolist()
     assert a == b
-    if "k2" in two_mass:  # the atlas starts from the 1IPP family of a resonant chain: both refused
-        for keywords in (two_mass, chain):
-            with pytest.raises(ValueError, match="1:2 resonant chain"):
-                gl.modes(max_impacts=1, **keywords)
-        return
+    # (off the 1:2 design both take the atlas of any chain)
     a, b = gl.modes(max_impacts=1, **two_mass), gl.modes(max_impacts=1, **chain)
     assert len(a.families) == len(b.families) > 0
     for x, y in zip(a.families, b.families):
@@ -380,9 +376,26 @@ def test_a_newton_orbit_of_three_masses_is_the_cli_json(cli_json):
         gl.orbit(onepp=7, period=7, masses=[1, 0.2, 0.05], frequencies=(3, 2, 1))
 
 
+def test_the_modes_of_three_masses_are_the_cli_files(cli, tmp_path):
+    # the atlas of any chain: each family's table the CLI's CSV, its multipliers as columns
+    chain = dict(masses=[1, 0.7, 0.4], frequencies=(3, 2, 1))
+    result = gl.modes(max_impacts=2, **chain)
+    done = cli("modes", "--max-impacts", "2", "--masses", "1,0.7,0.4", "--frequencies", "3:2:1", "--out",
+               str(tmp_path / "m"))
+    assert done.returncode == 0, done.stderr
+    assert "model" not in result and result.chain.masses == [1, 0.7, 0.4]
+    assert len(result.families) == len(list(tmp_path.glob("m-family-*.csv"))) > 2
+    for family in result.families:
+        table = family.table
+        assert table.dtype.names[-1] == "mu4_krein" and len(table) == family.rows
+        written = np.load(tmp_path / f"m-family-{family.id}.npy")
+        assert written.tobytes() == table.view((float, len(table.dtype.names))).tobytes()
+        assert set(np.unique(table["mu1_krein"])) <= {-1.0, 0.0, 1.0}
+    born = [f for f in result.families if f.born_at.kind == "period-doubling"]
+    assert born and all(f.impacts == 2 for f in born)
+
+
 def test_two_mass_commands_refuse_other_chains_in_words():
-    with pytest.raises(ValueError, match="two-mass chain stopped on mass 2"):
-        gl.modes(masses=[1, 0.5], springs=[1, 0.5], stop_mass=1)
     with pytest.raises(ValueError, match="given by masses"):
         gl.report(springs=[1, 0.5], quick=True)
     with pytest.raises(ValueError, match="glo_weights describes a chain given by masses"):

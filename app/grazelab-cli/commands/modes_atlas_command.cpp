@@ -7,6 +7,7 @@
 #include <numbers>
 #include <type_traits>
 
+#include "commands/chain_modes_document.h"
 #include "commands/orbit_json.h"
 #include "core/orbits/special_orbits.h"
 #include "core/version.h"
@@ -33,37 +34,36 @@ V endValue(const core::FamilyEnd<S>& end) {
   return V::object(std::move(fields));
 }
 
+// --energy-range's "A:B" read in S, or why not; none: not given
 template <typename S>
-ModesOutcome modesIn(const PreparedMassChain& prepared, const ModesRequest& request,
-                     const std::function<void(double, const std::string&)>& progress, std::stop_token stop) {
+std::optional<std::pair<S, S>> energyRangeOf(const ModesRequest& request, std::string& problem) {
+  if (!request.energyRange) return std::nullopt;
+  const std::string& text = *request.energyRange;
+  const std::size_t colon = text.find(':');
+  const bool two = colon != std::string::npos && text.find(':', colon + 1) == std::string::npos;
+  const auto a = two ? core::parseScalar<S>(text.substr(0, colon)) : core::ParsedScalar<S>{};
+  const auto b = two ? core::parseScalar<S>(text.substr(colon + 1)) : core::ParsedScalar<S>{};
+  if (!a.value || !b.value || !(*a.value > 0) || !(*b.value > *a.value)) {
+    problem = "--energy-range: '" + text + "' is not A:B with 0 < A < B";
+    return std::nullopt;
+  }
+  return std::pair(*a.value, *b.value);
+}
+
+// the note's 1:2 chain: the two-mass atlas, its results unchanged
+template <typename S>
+ModesOutcome twoMassModes(const core::TwoMassForm<S>& chain, const ModesRequest& request,
+                          const std::function<void(double, const std::string&)>& progress, std::stop_token stop) {
   ModesOutcome outcome;
   outcome.precision = core::precisionOf<S>();
   outcome.maxImpacts = request.maxImpacts;
-  const Parsed<ModelInput<S>>& model = prepared.twoMassForm<S>();
-  if (!model.value) {
-    outcome.problem = model.error.toStdString();
-    return outcome;
-  }
-  const core::TwoMassForm<S>& chain = model.value->chain;
-  if (!chain.resonant) {
-    outcome.problem = "modes: the atlas starts from the 1IPP family of the 1:2 resonant chain (give no --k2)";
-    return outcome;
-  }
   const core::AtlasEnergyRange<S> range = core::defaultAtlasEnergyRange(chain);
   S low = range.low;
   S high = range.high;
   if (request.energyRange) {
-    const std::string& text = *request.energyRange;
-    const std::size_t colon = text.find(':');
-    const bool two = colon != std::string::npos && text.find(':', colon + 1) == std::string::npos;
-    const auto a = two ? core::parseScalar<S>(text.substr(0, colon)) : core::ParsedScalar<S>{};
-    const auto b = two ? core::parseScalar<S>(text.substr(colon + 1)) : core::ParsedScalar<S>{};
-    if (!a.value || !b.value || !(*a.value > 0) || !(*b.value > *a.value)) {
-      outcome.problem = "--energy-range: '" + text + "' is not A:B with 0 < A < B";
-      return outcome;
-    }
-    low = *a.value;
-    high = *b.value;
+    const std::optional<std::pair<S, S>> given = energyRangeOf<S>(request, outcome.problem);
+    if (!given) return outcome;
+    std::tie(low, high) = *given;
   }
   int familiesDone = 0;
   core::ModesAtlas<S> atlas = core::computeModesAtlas<S>(
@@ -80,6 +80,63 @@ ModesOutcome modesIn(const PreparedMassChain& prepared, const ModesRequest& requ
   outcome.atlas = AtlasIn<S>{chain, std::move(atlas), low, high};
   outcome.status = ModesStatus::Computed;
   return outcome;
+}
+
+// any other chain, of any N: the atlas of any chain
+template <typename S>
+ModesOutcome chainModes(const core::BasicReadyChain<S>& ready, const ModesRequest& request,
+                        const std::function<void(double, const std::string&)>& progress, std::stop_token stop) {
+  ModesOutcome outcome;
+  outcome.precision = core::precisionOf<S>();
+  outcome.maxImpacts = request.maxImpacts;
+  core::ChainAtlasOptions<S> options;
+  options.maxImpacts = request.maxImpacts;
+  const core::AtlasEnergyRange<S> range = core::defaultChainAtlasEnergyRange(ready);
+  options.energyLow = range.low;
+  options.energyHigh = range.high;
+  if (request.energyRange) {
+    const std::optional<std::pair<S, S>> given = energyRangeOf<S>(request, outcome.problem);
+    if (!given) return outcome;
+    std::tie(options.energyLow, options.energyHigh) = *given;
+  }
+  if (!(options.energyHigh > options.energyLow)) {
+    outcome.problem = "modes: this chain's 1IPP family has no orbit to measure the default energy range by: "
+                      "give --energy-range A:B";
+    return outcome;
+  }
+  int familiesDone = 0;
+  core::ChainAtlas<S> atlas =
+      core::computeChainAtlas<S>(ready, options, stop, [&](const core::ChainAtlasFamily<S>& family) {
+        if (progress) {
+          progress(-1, "family " + std::to_string(++familiesDone) + " followed (" +
+                           std::to_string(family.path.impacts) + " impacts per period)");
+        }
+      });
+  if (stop.stop_requested() || !atlas.complete) {
+    outcome.status = ModesStatus::Interrupted;
+    return outcome;
+  }
+  outcome.atlas = ChainAtlasIn<S>{ready.numbers, ready.dynamics.period, std::move(atlas), options.energyLow,
+                                  options.energyHigh};
+  outcome.status = ModesStatus::Computed;
+  return outcome;
+}
+
+template <typename S>
+ModesOutcome modesIn(const PreparedMassChain& prepared, const ModesRequest& request,
+                     const std::function<void(double, const std::string&)>& progress, std::stop_token stop) {
+  const Parsed<core::BasicReadyChain<S>>& ready = prepared.ready<S>();
+  if (!ready.value) {
+    ModesOutcome outcome;
+    outcome.problem = ready.error.toStdString();
+    return outcome;
+  }
+  // the note's form (two masses, the second stopped, no wall) in 1:2 resonance
+  if (ready.value->notes && ready.value->notes->resonant) {
+    const Parsed<ModelInput<S>>& model = prepared.twoMassForm<S>();
+    if (model.value && model.value->chain.resonant) return twoMassModes(model.value->chain, request, progress, stop);
+  }
+  return chainModes(*ready.value, request, progress, stop);
 }
 
 template <typename S>
@@ -198,6 +255,14 @@ ModesOutcome modesAtlas(const PreparedMassChain& chain, const ModesRequest& requ
   return modesIn<double>(chain, request, progress, stop);
 }
 
+namespace {
+// whether an outcome's atlas is that of a chain of N masses (not the two-mass atlas)
+template <typename>
+constexpr bool kOfAChain = false;
+template <typename S>
+constexpr bool kOfAChain<ChainAtlasIn<S>> = true;
+}  // namespace
+
 std::size_t modesFamilyCount(const ModesOutcome& outcome) {
   return std::visit(
       [](const auto& in) -> std::size_t {
@@ -207,10 +272,21 @@ std::size_t modesFamilyCount(const ModesOutcome& outcome) {
       outcome.atlas);
 }
 
+std::vector<std::string> modesColumns(const ModesOutcome& outcome) {
+  return std::visit(
+      [](const auto& in) -> std::vector<std::string> {
+        if constexpr (std::is_same_v<std::decay_t<decltype(in)>, std::monostate>) return {};
+        else if constexpr (kOfAChain<std::decay_t<decltype(in)>>) return chainModesColumns(in.chain.size());
+        else return kModesColumns;
+      },
+      outcome.atlas);
+}
+
 std::vector<double> modesTable(const ModesOutcome& outcome, std::size_t index) {
   return std::visit(
       [index](const auto& in) -> std::vector<double> {
         if constexpr (std::is_same_v<std::decay_t<decltype(in)>, std::monostate>) return {};
+        else if constexpr (kOfAChain<std::decay_t<decltype(in)>>) return chainModesTable(in, index);
         else return tableOf(in.atlas.families[index]);
       },
       outcome.atlas);
@@ -220,6 +296,7 @@ JsonValue modesDocument(const ModesOutcome& outcome, const std::optional<std::st
   return std::visit(
       [&](const auto& in) -> JsonValue {
         if constexpr (std::is_same_v<std::decay_t<decltype(in)>, std::monostate>) return JsonValue::null();
+        else if constexpr (kOfAChain<std::decay_t<decltype(in)>>) return chainModesDocument(in, outcome, base);
         else return documentOf(in, outcome, base);
       },
       outcome.atlas);

@@ -11,13 +11,15 @@
 
 #include "commands/simulation.h"
 #include "core/model/two_mass_form.h"
+#include "core/orbits/chain_atlas.h"
 #include "core/orbits/modes_atlas.h"
 #include "io/json_value.h"
 
-// `modes` as a typed command (as `simulate`, `orbit` and `family` are): the atlas of a two-mass
-// chain's periodic impacting families, which the command line writes as files (PREFIX.json, one
-// CSV and .npy per family, a picture) and the Python module hands over as values and arrays,
-// reading no file back. No Qt.
+// `modes` as a typed command (as `simulate`, `orbit` and `family` are): the atlas of a chain's
+// periodic impacting families, which the command line writes as files (PREFIX.json, one CSV and
+// .npy per family, a picture) and the Python module hands over as values and arrays, reading no
+// file back. The note's 1:2 chain keeps its two-mass atlas (core/orbits/modes_atlas.h); every
+// other chain, of any N, takes the atlas of any chain (core/orbits/chain_atlas.h). No Qt.
 namespace grazelab::cli {
 
 class PreparedMassChain;
@@ -44,25 +46,41 @@ struct AtlasIn {
   S low = 0, high = 0;
 };
 
+/// The atlas of a chain of N masses in precision S, with the chain and the energy range.
+template <typename S>
+struct ChainAtlasIn {
+  core::BasicMassChain<S> chain;
+  S commonPeriod = 0;  ///< 0: the frequencies are not commensurate
+  core::ChainAtlas<S> atlas;
+  S low = 0, high = 0;
+};
+
 struct ModesOutcome {
   ModesStatus status = ModesStatus::Refused;
   std::string problem;
   core::Precision precision = core::Precision::Double;
   int maxImpacts = 0;
-  std::variant<std::monostate, AtlasIn<double>, AtlasIn<long double>, AtlasIn<core::Quad>> atlas;
+  std::variant<std::monostate, AtlasIn<double>, AtlasIn<long double>, AtlasIn<core::Quad>, ChainAtlasIn<double>,
+               ChainAtlasIn<long double>, ChainAtlasIn<core::Quad>>
+      atlas;
 };
 
-/// The atlas `request` asks for on `chain` (its 1:2 two-mass form: a chain of another shape or
-/// off the design is refused). `progress` hears each family followed (from this thread).
+/// The atlas `request` asks for on `chain`: the two-mass atlas for a two-mass chain in 1:2
+/// resonance stopped on its second mass (the note's form), the atlas of any chain otherwise.
+/// `progress` hears each family followed (from this thread).
 ModesOutcome modesAtlas(const PreparedMassChain& chain, const ModesRequest& request,
                         const std::function<void(double, const std::string&)>& progress = {},
                         std::stop_token stop = {});
 
-/// The columns of a family's table: energy, period, omega, trace, stability (0..3), u1, v1,
-/// min_impact_speed, min_clearance (NaN: no flight turns back below the stop).
+/// The columns of a two-mass atlas's family table: energy, period, omega, trace, stability (0..3),
+/// u1, v1, min_impact_speed, min_clearance (NaN: no flight turns back below the stop).
 extern const std::vector<std::string> kModesColumns;
+/// The columns of `outcome`'s family tables: kModesColumns for the two-mass atlas; for a chain of
+/// N masses energy, period, omega, class (0..4), min_impact_speed, u1..uN, v1..vN and, for each
+/// of the 2N - 2 nontrivial multipliers, muK_re, muK_im, muK_krein.
+std::vector<std::string> modesColumns(const ModesOutcome& outcome);
 
-/// The rows of family `index` (in the atlas's order), row-major over kModesColumns, in double.
+/// The rows of family `index` (in the atlas's order), row-major over modesColumns, in double.
 std::vector<double> modesTable(const ModesOutcome& outcome, std::size_t index);
 std::size_t modesFamilyCount(const ModesOutcome& outcome);
 

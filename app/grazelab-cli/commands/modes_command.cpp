@@ -64,19 +64,64 @@ void pictureOf(const AtlasIn<S>& in, std::vector<pictures::ModesPictureFamily>& 
   }
 }
 
+// the same for a chain of N masses: stable where every multiplier is on the circle; marks at the
+// changes of stability and at the ends that are the family's own (not a range or a budget)
+template <typename S>
+void pictureOf(const ChainAtlasIn<S>& in, std::vector<pictures::ModesPictureFamily>& curves,
+               std::vector<pictures::ModesPictureMark>& marks) {
+  const auto at = [](const S& energy, const S& period) {
+    return QPointF(std::log10(double(energy)), 2 * M_PI / double(period));
+  };
+  for (const core::ChainAtlasFamily<S>& family : in.atlas.families) {
+    const std::vector<core::BasicChainPeriodicOrbit<S>>& orbits = family.path.orbits;
+    pictures::ModesPictureFamily curve;
+    curve.impacts = family.path.impacts;
+    for (const core::BasicChainPeriodicOrbit<S>& o : orbits) {
+      curve.points.push_back(at(o.energy, o.period));
+      curve.stable.push_back(o.monodromy.stability == core::ChainStability::Elliptic);
+    }
+    for (std::size_t i = 0; i < family.path.changes.size(); ++i) {
+      const core::ChainFamilyChange<S>& change = family.path.changes[i];
+      QString label = change.kind == core::ChainBifurcationKind::PeriodDoubling
+                          ? QStringLiteral("flip")
+                          : QString::fromUtf8(core::toString(change.kind).data());
+      for (const core::ChainAtlasBranch& branch : family.branches) {
+        if (branch.change == i && branch.outcome == core::ChainBranchOutcome::NotFound) {
+          label = QStringLiteral("flip, no family found");
+        }
+      }
+      marks.push_back({at(change.energy, change.period), label});
+    }
+    if (orbits.empty()) continue;
+    const std::pair<const core::ChainAtlasEnd*, const core::BasicChainPeriodicOrbit<S>*> ends[] = {
+        {family.firstEnd ? &*family.firstEnd : nullptr, &orbits.front()}, {&family.lastEnd, &orbits.back()}};
+    for (const auto& [end, orbit] : ends) {
+      if (!end) continue;
+      const core::ChainFamilyEnd kind = end->kind;
+      if (kind == core::ChainFamilyEnd::EnergyLimit || kind == core::ChainFamilyEnd::StepLimit ||
+          kind == core::ChainFamilyEnd::MeetsDoubling || kind == core::ChainFamilyEnd::Stopped) {
+        continue;  // not an end of the family itself (a doubling is marked as a flip)
+      }
+      marks.push_back({at(orbit->energy, orbit->period), QString::fromUtf8(core::toString(kind).data())});
+    }
+    curves.push_back(std::move(curve));
+  }
+}
+
 // PREFIX.json, PREFIX-family-N.csv and .npy, and where pictures are drawn PREFIX.png and .svg
 int writeModes(const ModesOutcome& outcome, const QString& prefix, const Io& io, QString& error) {
   const JsonValue json = modesDocument(outcome, QFileInfo(prefix).fileName().toStdString());
   std::vector<std::pair<QString, QByteArray>> files;
   const std::size_t count = modesFamilyCount(outcome);
+  const std::vector<std::string> columns = modesColumns(outcome);
   for (std::size_t i = 0; i < count; ++i) {
     const std::vector<double> table = modesTable(outcome, i);
     const std::int64_t id = json.find("families")->items[i].find("id")->integer;
     NpyArray array;
-    array.rows = std::int64_t(table.size() / kModesColumns.size());
-    array.columns = std::int64_t(kModesColumns.size());
+    array.rows = std::int64_t(table.size() / columns.size());
+    array.columns = std::int64_t(columns.size());
     array.reals = table;
-    files.emplace_back(prefix + QStringLiteral("-family-%1.csv").arg(id), tableCsv(kModesColumns, table));
+    files.emplace_back(prefix + QStringLiteral("-family-%1.csv").arg(id), tableCsv(columns, table));
     files.emplace_back(prefix + QStringLiteral("-family-%1.npy").arg(id), encodeNpy(array));
   }
   files.emplace_back(prefix + ".json", QByteArray::fromStdString(fieldPerLine(json, "  ", "") + "\n"));
@@ -92,9 +137,13 @@ int writeModes(const ModesOutcome& outcome, const QString& prefix, const Io& io,
         },
         outcome.atlas);
     const JsonValue* model = json.find("model");
-    const QString title = QStringLiteral("Nonlinear modes: frequency against energy (m2/m1 = %1, up to %2 impacts)")
-                              .arg(model->find("m2")->toDouble() / model->find("m1")->toDouble(), 0, 'g', 4)
-                              .arg(outcome.maxImpacts);
+    const QString title =
+        model ? QStringLiteral("Nonlinear modes: frequency against energy (m2/m1 = %1, up to %2 impacts)")
+                    .arg(model->find("m2")->toDouble() / model->find("m1")->toDouble(), 0, 'g', 4)
+                    .arg(outcome.maxImpacts)
+              : QStringLiteral("Nonlinear modes of %1 masses: frequency against energy (up to %2 impacts)")
+                    .arg(json.find("chain")->find("masses")->items.size())
+                    .arg(outcome.maxImpacts);
     const QSize size(1100, 760);
     const bool drawn = savePngAndSvg(
         prefix, size, title, "GrazeLabModes", QByteArray::fromStdString(oneLine(json)),
@@ -144,7 +193,7 @@ ModesRun modesWithFiles(const OptionValues& options, const Io& io, std::stop_tok
     prefix = parseOutputPrefix(options, "PREFIX.json, PREFIX-family-N.csv, ...", "modes", error);
     if (!prefix) return run;
   }
-  const auto chain = twoMassChainOf(options, stop);
+  const auto chain = recentChain(options, stop);
   if (!chain.value) {
     error = chain.error;
     if (chain.error.isEmpty()) run.code = kExitInterrupted;  // (the design was interrupted)
