@@ -591,6 +591,20 @@ py::tuple modesCommand(const std::vector<std::pair<std::string, std::optional<st
   return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()), tables);
 }
 
+// family(options with --impacts, result_type, progress): the family of a kIPP orbit followed both
+// ways, as an atlas of one family (commands/modes_atlas_command.h impactsFamily): as `modes`.
+py::tuple impactsFamilyCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                               const py::object& resultType, const py::object& progress) {
+  const grazelab::cli::OptionValues options = textOptions(given);
+  const grazelab::cli::ModesRun run = filesCommand(options, progress, &grazelab::cli::impactsFamilyWithFiles);
+  const grazelab::cli::JsonValue document = grazelab::cli::modesDocument(run.outcome, outBase(options));
+  py::list tables;
+  for (std::size_t i = 0; i < grazelab::cli::modesFamilyCount(run.outcome); ++i) {
+    tables.append(tableArray(grazelab::cli::modesTable(run.outcome, i), grazelab::cli::modesColumns(run.outcome)));
+  }
+  return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()), tables);
+}
+
 // A map or merge computed: (its document as values of `resultType`, with `files` when written,
 // its points as one structured array).
 py::tuple mapResult(grazelab::cli::MapRun&& run, const py::object& resultType) {
@@ -806,6 +820,11 @@ PYBIND11_MODULE(_native, module) {
              "grazelab-cli modes's typed command, its options as (flag, text) pairs: (its document as values of "
              "result_type, each family's table as a structured array); its files written only where --out names "
              "them, without pictures. ValueError when there is no atlas.");
+  module.def("impacts_family", &impactsFamilyCommand, py::arg("options"), py::arg("result_type"),
+             py::arg("progress") = py::none(),
+             "grazelab-cli family --impacts's typed command, its options as (flag, text) pairs: (its document as "
+             "values of result_type, as modes's with one family, and that family's table). ValueError when no "
+             "orbit is found from the guess.");
   module.def("map", &mapCommand, py::arg("options"), py::arg("result_type"), py::arg("progress") = py::none(),
              "grazelab-cli map's typed command, its options as (flag, text) pairs: (its document as values of "
              "result_type, its points as a structured array, a field per quantity, row-major); its files "

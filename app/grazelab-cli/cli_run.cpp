@@ -148,13 +148,16 @@ const std::vector<Command>& commands() {
          return ended(io, runMerge(options, parts, io, stop, error), error);
        },
        "the parts say what the map is"},
-      {"family", kChain + kMassChain + QStringList{"precision", "onepp", "out", "count"}, false,
+      {"family", kChain + kMassChain + QStringList{"precision", "onepp", "out", "count", "impacts", "energy", "period",
+                                                   "guess", "energy-range"}, false,
        [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
          if (std::any_of(kMassChain.begin(), kMassChain.end(), [&](const QString& name) { return options.isSet(name); }) &&
              !options.isSet("masses")) {
            return fail(io, "--springs, --right-spring, --stop-mass and --frequencies describe a chain given by --masses");
          }
+         // a kIPP family from an orbit, of any chain, written as an atlas of one family
+         if (options.isSet("impacts")) return ended(io, impactsFamilyWithFiles(options, io, stop, error, true).code, error);
          // (the note's chain, however written, is the note's family: its engine, its files)
          return ended(io, runFamily(options, io, stop, error), error);
        },

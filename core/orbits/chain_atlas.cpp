@@ -11,7 +11,15 @@
 namespace grazelab::core {
 
 std::string_view toString(ChainBirth birth) {
-  return birth == ChainBirth::OnePeriodic ? "one-periodic" : "period-doubling";
+  switch (birth) {
+    case ChainBirth::OnePeriodic:
+      return "one-periodic";
+    case ChainBirth::PeriodDoubling:
+      return "period-doubling";
+    case ChainBirth::GivenOrbit:
+      return "given-orbit";
+  }
+  return "unknown";
 }
 
 std::string_view toString(ChainBranchOutcome outcome) {
@@ -333,7 +341,42 @@ ChainAtlas<S> computeChainAtlas(const BasicReadyChain<S>& chain,
   return atlas;
 }
 
+template <typename S>
+ChainAtlasFamily<S> followChainFamily(const BasicReadyChain<S>& chain, const BasicChainPeriodicOrbit<S>& start,
+                                      const ChainContinuationOptions<S>& options, std::stop_token stop) {
+  ChainAtlasFamily<S> family;
+  family.birth = ChainBirth::GivenOrbit;
+  const ContinuedChainFamily<S> down = continueChainFamily(chain, start, -1, options, stop);
+  if (stop.stop_requested()) return family;
+  ContinuedChainFamily<S> up = continueChainFamily(chain, start, 1, options, stop);
+  // down reversed (its first orbit is `start`, which `up` begins with too), then up
+  ContinuedChainFamily<S>& path = family.path;
+  path.impacts = start.impacts;
+  path.orbits.assign(down.orbits.rbegin(), down.orbits.rend());
+  const std::size_t shift = path.orbits.empty() ? 0 : path.orbits.size() - 1;
+  if (!path.orbits.empty() && !up.orbits.empty()) path.orbits.pop_back();
+  for (auto change = down.changes.rbegin(); change != down.changes.rend(); ++change) {
+    ChainFamilyChange<S> reversed = *change;
+    reversed.after = shift - 1 - change->after;  // (between down[after] and down[after + 1])
+    reversed.leaves = !change->leaves;
+    path.changes.push_back(reversed);
+  }
+  for (BasicChainPeriodicOrbit<S>& orbit : up.orbits) path.orbits.push_back(std::move(orbit));
+  for (ChainFamilyChange<S> change : up.changes) {
+    change.after += shift;
+    path.changes.push_back(change);
+  }
+  path.unsearched = down.unsearched + up.unsearched;
+  path.end = up.end;
+  path.refusal = up.refusal;
+  family.firstEnd = endOf<S>(down.end, down.refusal);
+  family.lastEnd = endOf<S>(up.end, up.refusal);
+  return family;
+}
+
 #define GRAZELAB_INSTANTIATE(S)                                                                 \
+  template ChainAtlasFamily<S> followChainFamily<S>(const BasicReadyChain<S>&, const BasicChainPeriodicOrbit<S>&, \
+                                                    const ChainContinuationOptions<S>&, std::stop_token); \
   template AtlasEnergyRange<S> defaultChainAtlasEnergyRange<S>(const BasicReadyChain<S>&); \
   template ChainAtlas<S> computeChainAtlas<S>(                                                  \
       const BasicReadyChain<S>&, const ChainAtlasOptions<S>&, std::stop_token,                  \

@@ -24,8 +24,9 @@ namespace grazelab::core {
 enum class ChainBirth {
   OnePeriodic,     ///< a part of the 1IPP family, seeded by its closed form
   PeriodDoubling,  ///< born at a period doubling of family `parent`
+  GivenOrbit,      ///< followed both ways from an orbit given (followChainFamily)
 };
-/// "one-periodic", "period-doubling".
+/// "one-periodic", "period-doubling", "given-orbit".
 std::string_view toString(ChainBirth birth);
 
 /// One end of a family of the atlas, as its continuation met it.
@@ -99,5 +100,13 @@ template <typename S>
 ChainAtlas<S> computeChainAtlas(
     const BasicReadyChain<S>& chain, const ChainAtlasOptions<S>& options, std::stop_token stop = {},
     const std::function<void(const ChainAtlasFamily<S>&)>& familyDone = {});
+
+/// The family of the admissible orbit `start` followed both ways in energy until it ends: `path`
+/// from the end met going down in energy (`firstEnd`), through `start`, to the end met going up
+/// (`lastEnd`), its changes in that order (a change met going down is reversed: `leaves` the way
+/// the path runs). No branch is switched at (the atlas does that).
+template <typename S>
+ChainAtlasFamily<S> followChainFamily(const BasicReadyChain<S>& chain, const BasicChainPeriodicOrbit<S>& start,
+                                      const ChainContinuationOptions<S>& options, std::stop_token stop = {});
 
 }  // namespace grazelab::core

@@ -36,6 +36,7 @@ from . import _convert
 from ._convert import Result
 from ._native import family as _family
 from ._native import glo_set as _glo_set
+from ._native import impacts_family as _impacts_family
 from ._native import info as _info
 from ._native import map as _map
 from ._native import merge as _merge
@@ -599,8 +600,17 @@ def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
            count: int = 2000, out=None, progress: _Optional[_Progress] = None,
            masses: _Optional[_Sequence[float]] = None, springs: _Optional[_Sequence[float]] = None,
            right_spring: _Optional[float] = None, stop_mass: _Optional[int] = None,
-           frequencies: _Optional[_Sequence[int]] = None, design_branch: _Optional[int] = None) -> Result:
-    """The 1IPP family (``grazelab-cli family --onepp``). Returns the JSON's fields with
+           frequencies: _Optional[_Sequence[int]] = None, design_branch: _Optional[int] = None,
+           impacts: _Optional[int] = None, energy: _Optional[float] = None, period: _Optional[float] = None,
+           guess: _Optional[_Sequence[float]] = None,
+           energy_range: _Union[str, _Sequence[float], None] = None) -> Result:
+    """The 1IPP family (``grazelab-cli family --onepp``), or with ``impacts`` the family of the
+    kIPP orbit found from ``guess`` at ``energy`` (or ``period``), as ``orbit`` finds it, followed
+    both ways in energy to its ends (``grazelab-cli family --impacts``): then the result is
+    ``modes``'s for an atlas of that one family (``families[0]`` with its ``table``: energy,
+    period, omega, class, min_impact_speed, u1..uN, v1..vN, muK_re, muK_im, muK_krein), ``count``
+    the most orbits followed each way and ``energy_range`` (A, B) the energies followed (default
+    1e-4 to 1e4 times the orbit's). Returns the JSON's fields with
     ``table``: a structured array with the CSV's columns (T, omega, V, u1, energy, admissible,
     trace, stability; admissible 1.0/0.0, stability 0..4 (4: undecided in this precision), NaN where not admissible): the
     command's own rows, without a copy.
@@ -616,6 +626,17 @@ def family(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[f
     masses, springs, right_spring, stop_mass, frequencies, design_branch: a chain of N masses, as
         in ``info``.
 """
+    if impacts is not None:
+        options = _chain_keywords(dict(precision=precision, impacts=impacts, energy=energy, period=period,
+                                       guess=guess, energy_range=energy_range, count=count),
+                                  dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch),
+                                  masses, springs, right_spring, stop_mass, frequencies, design_branch)
+        result, tables = _files_command(_impacts_family, dict(options, out=out), progress)
+        for entry, table in zip(result["families"], tables):
+            entry["table"] = table
+        return result
+    if energy is not None or period is not None or guess is not None or energy_range is not None:
+        raise ValueError("energy, period, guess and energy_range describe the family of impacts=K orbits")
     options = dict(m1=m1, m2=m2, k1=k1, k2=k2, gap=gap, branch=branch, precision=precision,
                    count=count, onepp=True)
     if masses is not None:

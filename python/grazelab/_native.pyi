@@ -26,6 +26,9 @@ def family(options: List[Tuple[str, Optional[str]]], result_type: type,
 def modes(options: List[Tuple[str, Optional[str]]], result_type: type,
           progress: Optional[Callable[[Optional[float], str], None]] = ...) -> Tuple[dict, List[np.ndarray]]: ...
 
+def impacts_family(options: List[Tuple[str, Optional[str]]], result_type: type,
+                   progress: Optional[Callable[[Optional[float], str], None]] = ...) -> Tuple[dict, List[np.ndarray]]: ...
+
 def map(options: List[Tuple[str, Optional[str]]], result_type: type,
         progress: Optional[Callable[[Optional[float], str], None]] = ...) -> Tuple[dict, np.ndarray]: ...
 

@@ -99,6 +99,33 @@ PY
   [ ! -e "$work/c/atlas.svg" ] || [ -e "$work/c/atlas.png" ] || fail "modes $chain picture"
 done
 
+# family --impacts: the family of an orbit found from a guess, followed both ways, written as an
+# atlas of that one family; the orbit it starts from lies on it
+three="--masses 0.6865,1.963,0.8236 --springs 0.8423,1.0745,0.7486 --stop-mass 2"
+# shellcheck disable=SC2086
+expect_ok family --impacts 2 --energy 23.412611915561559 --guess=1.28,-6.54,0.01,-0.01 $three --count 300 \
+  --out "$work/f/fam" || exit 1
+python3 - "$work/f" <<'PY' || fail "family --impacts"
+import csv, json, pathlib, sys
+d = pathlib.Path(sys.argv[1])
+meta = json.load(open(d / 'fam.json'))
+[f] = meta['families']
+assert f['born_at']['kind'] == 'given-orbit' and f['impacts'] == 2 and f['start'] is not None
+rows = list(csv.reader(open(d / f['file'])))
+assert len(rows) - 1 == f['rows'] <= 2 * 300
+assert any(abs(float(r[0]) - 23.412611915561559) < 1e-9 for r in rows[1:]), "the start is a row"
+assert (d / 'fam.png').exists() or not (d / 'fam.svg').exists()
+PY
+# shellcheck disable=SC2086
+EXPECT_WORD="--guess" expect_invalid family --impacts 2 --energy 23.4 $three --out "$work/bad/f"
+# shellcheck disable=SC2086
+EXPECT_WORD="no --onepp" expect_invalid family --onepp --impacts 2 --energy 23.4 --guess=1,1,0,0 $three --out "$work/bad/f"
+# shellcheck disable=SC2086
+EXPECT_WORD="no orbit to follow" expect_invalid family --impacts 2 --energy 23.4 --guess=50,50,0,0 $three --out "$work/bad/f"
+# shellcheck disable=SC2086
+EXPECT_WORD="outside" expect_invalid family --impacts 2 --energy 23.412611915561559 --guess=1.28,-6.54,0.01,-0.01 $three \
+  --energy-range 1:2 --out "$work/bad/f"
+
 EXPECT_WORD="--max-impacts" expect_invalid modes --max-impacts 0 --out "$work/bad/m"
 EXPECT_WORD="--energy-range" expect_invalid modes --energy-range 2:1 --out "$work/bad/m"
 EXPECT_WORD="--out" expect_invalid modes

@@ -122,8 +122,9 @@ EXPECT_WORD="one of them" expect_invalid simulate --masses 1,0.5 --frequencies 2
 EXPECT_WORD="not available for a chain" expect_invalid simulate --masses 1,0.5 --frequencies 2:1 --glo 0.5
 EXPECT_WORD="sum to 1" expect_invalid simulate --masses 1,0.5 --frequencies 2:1 --glo-weights 0.5,0.6
 
-# chains the two-mass commands do not compute yet: one line, exit 2, before any design search
-EXPECT_WORD="two-mass chain stopped on mass 2" expect_invalid modes --masses 1,0.5 --springs 1,0.5 --stop-mass 1 --out "$work/x/m"
+# a chain off the note's form takes the atlas of any chain: two masses stopped on the first
+expect_ok modes --masses 1,0.5 --springs 1,0.5 --stop-mass 1 --max-impacts 1 --out "$work/ok/m" || exit 1
+grep -q '"stop_mass": 1' "$work/ok/m.json" || fail "modes of a chain stopped on mass 1"
 # kIPP orbits of any chain by Newton on the return map (core/orbits/chain_kipp.h): the guess is u
 # then v of every mass but the stopped one (and v_s last at a fixed period)
 EXPECT_WORD="give 4 numbers" expect_invalid orbit --impacts 2 --energy 1 --guess 0,0 --masses 1,0.2,0.05 --frequencies 3:2:1

@@ -77,7 +77,7 @@ EXPECT_WORD="no admissible 1IPP orbit" expect_invalid orbit --onepp --period 9.5
 # a period between the family's parts: where the parts are is said
 EXPECT_WORD="T/T2 in about" expect_invalid orbit --onepp --period 5
 EXPECT_WORD="does not apply" expect_invalid orbit --onepp --period 6 --contacts 3
-EXPECT_WORD="only to 'orbit'" expect_invalid simulate --energy 2
+EXPECT_WORD="only to 'family', 'orbit'" expect_invalid simulate --energy 2
 # near T2 the closed form loses digits like 1 / (T2 - T): double refuses to print data it cannot
 # give to 1e-9, auto goes to binary128, whose impact speed is the exact orbit's (issue 29, item 8)
 EXPECT_WORD="--precision quad" expect_invalid orbit --onepp --period 8.8857658763 --precision double

@@ -395,6 +395,22 @@ def test_the_modes_of_three_masses_are_the_cli_files(cli, tmp_path):
     assert born and all(f.impacts == 2 for f in born)
 
 
+def test_a_family_of_impacts_is_the_cli_files(cli, tmp_path):
+    # family(impacts=K): the orbit's family followed both ways, the same rows as the CLI's
+    chain = dict(masses=[0.6865, 1.963, 0.8236], springs=[0.8423, 1.0745, 0.7486], stop_mass=2)
+    result = gl.family(impacts=2, energy=23.412611915561559, guess=(1.28, -6.54, 0.01, -0.01), count=200, **chain)
+    done = cli("family", "--impacts", "2", "--energy", "23.412611915561559", "--guess=1.28,-6.54,0.01,-0.01",
+               "--masses", "0.6865,1.963,0.8236", "--springs", "0.8423,1.0745,0.7486", "--stop-mass", "2",
+               "--count", "200", "--out", str(tmp_path / "f"))
+    assert done.returncode == 0, done.stderr
+    [family] = result.families
+    assert family.born_at.kind == "given-orbit" and family.impacts == 2
+    written = np.load(tmp_path / "f-family-0.npy")
+    assert written.tobytes() == family.table.view((float, len(family.table.dtype.names))).tobytes()
+    with pytest.raises(ValueError, match="describe the family of impacts"):
+        gl.family(guess=(1, 2), **chain)
+
+
 def test_two_mass_commands_refuse_other_chains_in_words():
     with pytest.raises(ValueError, match="given by masses"):
         gl.report(springs=[1, 0.5], quick=True)

@@ -202,7 +202,8 @@ void addMapOptions(QCommandLineParser& parser) {
       {"shard", "map: compute stripe K of N of the rows only (K from 1 to N); join the "
                 "stripes with merge.", "K/N"},
       {"picture", "map: the quantity drawn in PREFIX.png/.svg (default fft_first).", "QUANTITY"},
-      {"count", "family: periods T in (0, T2) (default 2000).", "N"},
+      {"count", "family --onepp: periods T in (0, T2) (default 2000); family --impacts: the most orbits "
+                "followed each way (default 2000).", "N"},
   });
 }
 

@@ -99,11 +99,6 @@ ModesOutcome chainModes(const core::BasicReadyChain<S>& ready, const ModesReques
     if (!given) return outcome;
     std::tie(options.energyLow, options.energyHigh) = *given;
   }
-  if (!(options.energyHigh > options.energyLow)) {
-    outcome.problem = "modes: this chain's 1IPP family has no orbit to measure the default energy range by: "
-                      "give --energy-range A:B";
-    return outcome;
-  }
   int familiesDone = 0;
   core::ChainAtlas<S> atlas =
       core::computeChainAtlas<S>(ready, options, stop, [&](const core::ChainAtlasFamily<S>& family) {
@@ -137,6 +132,57 @@ ModesOutcome modesIn(const PreparedMassChain& prepared, const ModesRequest& requ
     if (model.value && model.value->chain.resonant) return twoMassModes(model.value->chain, request, progress, stop);
   }
   return chainModes(*ready.value, request, progress, stop);
+}
+
+template <typename S>
+ModesOutcome impactsFamilyIn(const PreparedMassChain& prepared, const ImpactsFamilyRequest& request,
+                             std::stop_token stop) {
+  ModesOutcome outcome;
+  outcome.precision = core::precisionOf<S>();
+  outcome.maxImpacts = request.start.impacts;
+  const Parsed<core::BasicReadyChain<S>>& ready = prepared.ready<S>();
+  if (!ready.value) {
+    outcome.problem = ready.error.toStdString();
+    return outcome;
+  }
+  OrbitOutcome found = chainOrbitByNewton<S>(*ready.value, request.start, stop);
+  if (stop.stop_requested()) {
+    outcome.status = ModesStatus::Interrupted;
+    return outcome;
+  }
+  if (found.status != OrbitStatus::Found) {
+    outcome.problem = "family: no orbit to follow: " + found.problem;
+    return outcome;
+  }
+  const core::BasicChainPeriodicOrbit<S>& start = std::get<FoundChainOrbit<S>>(found.found).orbit;
+  core::ChainContinuationOptions<S> options;
+  options.maxOrbits = request.maxOrbits;
+  options.energyLow = start.energy / 10000;
+  options.energyHigh = start.energy * 10000;
+  if (request.energyRange) {
+    ModesRequest range;
+    range.energyRange = request.energyRange;
+    const std::optional<std::pair<S, S>> given = energyRangeOf<S>(range, outcome.problem);
+    if (!given) return outcome;
+    std::tie(options.energyLow, options.energyHigh) = *given;
+    if (!(start.energy >= options.energyLow && start.energy <= options.energyHigh)) {
+      outcome.problem = "--energy-range: the orbit found lies outside it (energy " +
+                        core::formatScalar(start.energy) + ")";
+      return outcome;
+    }
+  }
+  core::ChainAtlasFamily<S> family = core::followChainFamily(*ready.value, start, options, stop);
+  if (stop.stop_requested()) {
+    outcome.status = ModesStatus::Interrupted;
+    return outcome;
+  }
+  core::ChainAtlas<S> atlas;
+  atlas.families.push_back(std::move(family));
+  atlas.complete = true;
+  outcome.atlas = ChainAtlasIn<S>{ready.value->numbers, ready.value->dynamics.period, std::move(atlas),
+                                  options.energyLow, options.energyHigh};
+  outcome.status = ModesStatus::Computed;
+  return outcome;
 }
 
 template <typename S>
@@ -262,6 +308,22 @@ constexpr bool kOfAChain = false;
 template <typename S>
 constexpr bool kOfAChain<ChainAtlasIn<S>> = true;
 }  // namespace
+
+ModesOutcome impactsFamily(const PreparedMassChain& chain, const ImpactsFamilyRequest& request,
+                           std::stop_token stop) {
+  if (request.maxOrbits < 2 || request.maxOrbits > 1000000) {
+    ModesOutcome outcome;
+    outcome.problem = "--count: '" + std::to_string(request.maxOrbits) + "' is not a count of orbits from 2 to 1000000";
+    return outcome;
+  }
+  switch (request.start.precision) {
+    case PrecisionChoice::Long: return impactsFamilyIn<long double>(chain, request, stop);
+    case PrecisionChoice::Quad: return impactsFamilyIn<core::Quad>(chain, request, stop);
+    case PrecisionChoice::Auto:
+    case PrecisionChoice::Double: break;
+  }
+  return impactsFamilyIn<double>(chain, request, stop);
+}
 
 std::size_t modesFamilyCount(const ModesOutcome& outcome) {
   return std::visit(

@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "commands/periodic_orbit.h"
 #include "commands/simulation.h"
 #include "core/model/two_mass_form.h"
 #include "core/orbits/chain_atlas.h"
@@ -71,6 +72,19 @@ struct ModesOutcome {
 ModesOutcome modesAtlas(const PreparedMassChain& chain, const ModesRequest& request,
                         const std::function<void(double, const std::string&)>& progress = {},
                         std::stop_token stop = {});
+
+/// `family --impacts K`: the family of the kIPP orbit Newton finds from `start` (its impacts,
+/// guess, fixed energy or period, precision) on the return map of any chain, followed both ways in
+/// energy to its ends (core::followChainFamily), given as an atlas of that one family (born_at
+/// given-orbit, no branch switched at).
+struct ImpactsFamilyRequest {
+  OrbitRequest start;
+  /// "A:B" as for ModesRequest; none: 1e-4 to 1e4 times the energy of the orbit found
+  std::optional<std::string> energyRange;
+  int maxOrbits = 2000;  ///< the most orbits followed each way
+};
+ModesOutcome impactsFamily(const PreparedMassChain& chain, const ImpactsFamilyRequest& request,
+                           std::stop_token stop = {});
 
 /// The columns of a two-mass atlas's family table: energy, period, omega, trace, stability (0..3),
 /// u1, v1, min_impact_speed, min_clearance (NaN: no flight turns back below the stop).

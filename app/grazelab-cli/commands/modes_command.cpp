@@ -8,6 +8,7 @@
 #include <QFileInfo>
 
 #include <cmath>
+#include <string_view>
 #include <type_traits>
 
 #include "commands/orbit_command.h"
@@ -108,8 +109,10 @@ void pictureOf(const ChainAtlasIn<S>& in, std::vector<pictures::ModesPictureFami
   }
 }
 
-// PREFIX.json, PREFIX-family-N.csv and .npy, and where pictures are drawn PREFIX.png and .svg
-int writeModes(const ModesOutcome& outcome, const QString& prefix, const Io& io, QString& error) {
+// PREFIX.json, PREFIX-family-N.csv and .npy, and where pictures are drawn PREFIX.png and .svg;
+// `command` names what wrote them: modes (an atlas) or family (one family from an orbit)
+int writeModes(const ModesOutcome& outcome, const QString& prefix, const char* command, const Io& io,
+               QString& error) {
   const JsonValue json = modesDocument(outcome, QFileInfo(prefix).fileName().toStdString());
   std::vector<std::pair<QString, QByteArray>> files;
   const std::size_t count = modesFamilyCount(outcome);
@@ -137,8 +140,12 @@ int writeModes(const ModesOutcome& outcome, const QString& prefix, const Io& io,
         },
         outcome.atlas);
     const JsonValue* model = json.find("model");
+    const bool oneFamily = std::string_view(command) == "family";
     const QString title =
-        model ? QStringLiteral("Nonlinear modes: frequency against energy (m2/m1 = %1, up to %2 impacts)")
+        oneFamily ? QStringLiteral("A family of %1-impact orbits of %2 masses: frequency against energy")
+                        .arg(outcome.maxImpacts)
+                        .arg(json.find("chain")->find("masses")->items.size())
+        : model ? QStringLiteral("Nonlinear modes: frequency against energy (m2/m1 = %1, up to %2 impacts)")
                     .arg(model->find("m2")->toDouble() / model->find("m1")->toDouble(), 0, 'g', 4)
                     .arg(outcome.maxImpacts)
               : QStringLiteral("Nonlinear modes of %1 masses: frequency against energy (up to %2 impacts)")
@@ -151,7 +158,12 @@ int writeModes(const ModesOutcome& outcome, const QString& prefix, const Io& io,
         error);
     if (!drawn) return 1;
   }
-  std::fprintf(io.messages, "grazelab-cli: modes: %lld families: %s.json\n", (long long)count, qPrintable(prefix));
+  if (std::string_view(command) == "family") {
+    std::fprintf(io.messages, "grazelab-cli: family: %lld orbits: %s.json\n",
+                 (long long)json.find("families")->items.front().find("rows")->integer, qPrintable(prefix));
+  } else {
+    std::fprintf(io.messages, "grazelab-cli: modes: %lld families: %s.json\n", (long long)count, qPrintable(prefix));
+  }
   return kExitOk;
 }
 
@@ -160,8 +172,8 @@ int writeModes(const ModesOutcome& outcome, const QString& prefix, const Io& io,
 void addModesOptions(QCommandLineParser& parser) {
   parser.addOptions({
       {"max-impacts", "modes: the most impacts per period of the families followed (default 4).", "K"},
-      {"energy-range", "modes: follow families with energies in [A, B] (default: 1/100 to 10000 "
-                       "times the grazing end's energy).", "A:B"},
+      {"energy-range", "modes, family --impacts: follow families with energies in [A, B] (default: 1/100 to "
+                       "10000 times the grazing end's energy; family: 1e-4 to 1e4 times the orbit's).", "A:B"},
   });
 }
 
@@ -208,7 +220,53 @@ ModesRun modesWithFiles(const OptionValues& options, const Io& io, std::stop_tok
     error = QString::fromStdString(run.outcome.problem);
     return run;
   }
-  run.code = prefix ? writeModes(run.outcome, *prefix, io, error) : kExitOk;
+  run.code = prefix ? writeModes(run.outcome, *prefix, "modes", io, error) : kExitOk;
+  return run;
+}
+
+ModesRun impactsFamilyWithFiles(const OptionValues& options, const Io& io, std::stop_token stop, QString& error,
+                                bool filesRequired) {
+  ModesRun run;
+  run.code = kExitInvalidInput;
+  if (options.isSet("onepp") || options.isSet("energy") == options.isSet("period") || !options.isSet("guess")) {
+    error = "family --impacts K: give --guess U,V and one of --energy E or --period T (the orbit the family is "
+            "followed from), and no --onepp";
+    return run;
+  }
+  const std::optional<OrbitRequest> start = readOrbitRequest(options, error);
+  if (!start) return run;
+  ImpactsFamilyRequest request;
+  request.start = *start;
+  if (options.isSet("energy-range")) request.energyRange = options.value("energy-range").toStdString();
+  if (options.isSet("count")) {
+    bool ok = false;
+    request.maxOrbits = options.value("count").toInt(&ok);
+    if (!ok || request.maxOrbits < 2 || request.maxOrbits > 1000000) {
+      error = QStringLiteral("--count: '%1' is not a count of orbits from 2 to 1000000").arg(options.value("count"));
+      return run;
+    }
+  }
+  std::optional<QString> prefix;
+  if (filesRequired || options.isSet("out")) {
+    prefix = parseOutputPrefix(options, "PREFIX.json, PREFIX-family-0.csv, ...", "family", error);
+    if (!prefix) return run;
+  }
+  const auto chain = recentChain(options, stop);
+  if (!chain.value) {
+    error = chain.error;
+    if (chain.error.isEmpty()) run.code = kExitInterrupted;
+    return run;
+  }
+  run.outcome = impactsFamily(**chain.value, request, stop);
+  if (run.outcome.status == ModesStatus::Interrupted || stop.stop_requested()) {
+    run.code = kExitInterrupted;
+    return run;
+  }
+  if (run.outcome.status != ModesStatus::Computed) {
+    error = QString::fromStdString(run.outcome.problem);
+    return run;
+  }
+  run.code = prefix ? writeModes(run.outcome, *prefix, "family", io, error) : kExitOk;
   return run;
 }
 

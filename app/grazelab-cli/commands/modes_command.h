@@ -38,4 +38,11 @@ struct ModesRun {
 ModesRun modesWithFiles(const OptionValues& options, const Io& io, std::stop_token stop, QString& error,
                         bool filesRequired);
 
+/// `grazelab-cli family --impacts K (--energy E | --period T) --guess U,V [--energy-range A:B]
+/// [--count N] --out PREFIX`: the family of the kIPP orbit found from the guess, followed both
+/// ways (commands/modes_atlas_command.h, impactsFamily), written as an atlas of one family (as
+/// `modes` writes: PREFIX.json, PREFIX-family-0.csv and .npy, the picture).
+ModesRun impactsFamilyWithFiles(const OptionValues& options, const Io& io, std::stop_token stop, QString& error,
+                                bool filesRequired);
+
 }  // namespace grazelab::cli

@@ -20,10 +20,10 @@ void addOrbitOptions(QCommandLineParser& parser) {
   parser.addOptions({
       {"period", "orbit --onepp: the period T of the 1IPP orbit; orbit --impacts: the period of the orbit sought.",
        "T"},
-      {"impacts", "orbit: impacts per period K of the orbit sought.", "K"},
-      {"energy", "orbit: the energy E of the orbit sought.", "E"},
+      {"impacts", "orbit, family: impacts per period K of the orbit sought (family: followed from).", "K"},
+      {"energy", "orbit, family --impacts: the energy E of the orbit sought.", "E"},
       {"guess",
-       "orbit --impacts: a guess of the orbit's point just after an impact on H: u then v of every mass but the "
+       "orbit --impacts, family --impacts: a guess of the orbit's point just after an impact on H: u then v of every mass but the "
        "stopped one (two masses: u1,v1), and at a fixed --period the stopped mass's v_s < 0 last.",
        "U,V"},
   });

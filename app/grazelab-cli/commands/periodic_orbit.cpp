@@ -143,10 +143,11 @@ const char* orbitRefusalWords(core::OrbitRefusal refusal) {
   return "unknown";
 }
 
-// The kIPP orbit Newton finds on the return map of any chain (core/orbits/chain_kipp.h) from the
-// request's guess, at its fixed energy or period, in precision S.
+}  // namespace
+
 template <typename S>
-OrbitOutcome chainNewtonIn(const core::BasicReadyChain<S>& ready, const OrbitRequest& request, std::stop_token stop) {
+OrbitOutcome chainOrbitByNewton(const core::BasicReadyChain<S>& ready, const OrbitRequest& request,
+                                std::stop_token stop) {
   OrbitOutcome outcome;
   outcome.precision = core::precisionOf<S>();
   const core::ChainOrbitConstraint fixed = request.fixed;
@@ -203,6 +204,14 @@ OrbitOutcome chainNewtonIn(const core::BasicReadyChain<S>& ready, const OrbitReq
   return outcome;
 }
 
+template OrbitOutcome chainOrbitByNewton(const core::BasicReadyChain<double>&, const OrbitRequest&, std::stop_token);
+template OrbitOutcome chainOrbitByNewton(const core::BasicReadyChain<long double>&, const OrbitRequest&,
+                                         std::stop_token);
+template OrbitOutcome chainOrbitByNewton(const core::BasicReadyChain<core::Quad>&, const OrbitRequest&,
+                                         std::stop_token);
+
+namespace {
+
 // The orbit of any chain in precision S: the 1IPP orbit of period request.period by its 2N x 2N
 // monodromy, or a kIPP orbit by Newton.
 template <typename S>
@@ -214,7 +223,7 @@ OrbitOutcome chainOrbitIn(const PreparedMassChain& prepared, const OrbitRequest&
     outcome.problem = ready.error.toStdString();
     return outcome;
   }
-  if (request.impacts != 0) return chainNewtonIn<S>(*ready.value, request, std::move(stop));
+  if (request.impacts != 0) return chainOrbitByNewton<S>(*ready.value, request, std::move(stop));
   const std::optional<S> T = numberIn<S>(request.period, "period", outcome.problem);
   if (!T) return outcome;
   core::ChainOnePeriodicStability<S> found = core::chainOnePeriodicStability(*ready.value, *T);

@@ -78,6 +78,12 @@ struct OrbitOutcome {
 /// tangent or the class leaves it undecided. `stop` ends a Newton search.
 OrbitOutcome solveOrbit(const PreparedMassChain& chain, const OrbitRequest& request, std::stop_token stop = {});
 
+/// The kIPP orbit (request.impacts) Newton finds on the return map of any chain
+/// (core/orbits/chain_kipp.h) from the request's guess, at its fixed energy or period, in S.
+template <typename S>
+OrbitOutcome chainOrbitByNewton(const core::BasicReadyChain<S>& chain, const OrbitRequest& request,
+                                std::stop_token stop = {});
+
 /// The document of an orbit found (OrbitStatus::Found): the model, period, energy, impacts, state,
 /// events, trace, multipliers, stability, symmetry and checks, every number to the digits of its
 /// precision; for a chain of N masses the chain, period, energy, state, events, the 2N - 2

@@ -280,5 +280,93 @@ TEST(ChainAtlas, TheOnePeriodicPartsInLongDoubleAreThoseOfDoubleToItsBars) {
   EXPECT_GE(changes, 1);
 }
 
+// A family followed both ways from one of its own orbits (followChainFamily, `family --impacts`)
+// is the atlas's family: from an orbit a third of the way along a family born at a doubling, the
+// path runs down to one end and up to the other, passes through the start, meets the atlas's
+// stability changes beyond the start at the same energies (two bisections on two paths), each
+// between the two orbits it names, and reaches the atlas's far end.
+TEST(ChainAtlas, AFamilyFollowedBothWaysFromOneOfItsOrbitsIsTheAtlassFamily) {
+  std::mt19937 rng(20261206);
+  int followed = 0, changesMet = 0;
+  for (int trial = 0; trial < 8 && followed < 4; ++trial) {
+    const MassChain chain = randomChain(rng, 3 + trial % 2);
+    const ReadyChain ready = readyChain(chain);
+    const AtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
+    ChainAtlasOptions<double> options;
+    options.maxImpacts = 2;
+    options.energyLow = range.low;
+    options.energyHigh = range.high;
+    options.maxOrbitsPerFamily = 600;
+    const ChainAtlas<double> atlas = computeChainAtlas(ready, options);
+    ASSERT_TRUE(atlas.complete);
+    for (const ChainAtlasFamily<double>& family : atlas.families) {
+      const std::vector<ChainPeriodicOrbit>& orbits = family.path.orbits;
+      if (family.birth != ChainBirth::PeriodDoubling || orbits.size() < 12) continue;
+      const std::size_t at = orbits.size() / 3;
+      ChainContinuationOptions<double> continuation;
+      continuation.energyLow = range.low;
+      continuation.energyHigh = range.high;
+      continuation.maxOrbits = 600;
+      const ChainAtlasFamily<double> both = followChainFamily(ready, orbits[at], continuation);
+      SCOPED_TRACE("trial " + std::to_string(trial) + ", family " + std::to_string(family.id));
+      ++followed;
+      EXPECT_EQ(both.birth, ChainBirth::GivenOrbit);
+      ASSERT_TRUE(both.firstEnd);
+      const std::vector<ChainPeriodicOrbit>& path = both.path.orbits;
+      ASSERT_GE(path.size(), 3u);
+      // the start is on the path, and the path goes down in energy before it, up after it
+      const auto start = std::find_if(path.begin(), path.end(), [&](const ChainPeriodicOrbit& o) {
+        return o.energy == orbits[at].energy && o.period == orbits[at].period;
+      });
+      ASSERT_NE(start, path.end());
+      // it leaves the start downwards first, upwards after (a fold may turn it later)
+      if (start != path.begin()) {
+        EXPECT_LT((start - 1)->energy, orbits[at].energy);
+      }
+      if (start + 1 != path.end()) {
+        EXPECT_GT((start + 1)->energy, orbits[at].energy);
+      }
+      // each change between the two orbits it names: in energy, or at a fold (the energy's
+      // turning point, beyond both) in period; to the orbits' own closing (1e-9: a fold's bracket
+      // collapses to its bisection's rounding, 5e-12 beside its neighbour once)
+      for (const ChainFamilyChange<double>& change : both.path.changes) {
+        ASSERT_LT(change.after + 1, path.size());
+        const bool fold = change.kind == ChainBifurcationKind::Fold;
+        const double a = fold ? path[change.after].period : path[change.after].energy;
+        const double b = fold ? path[change.after + 1].period : path[change.after + 1].energy;
+        const double x = fold ? change.period : change.energy;
+        const double error = (fold ? change.periodError : change.energyError) + 1e-9 * x;
+        EXPECT_GE(x + error, std::min(a, b)) << toString(change.kind);
+        EXPECT_LE(x - error, std::max(a, b)) << toString(change.kind);
+      }
+      // the atlas's changes beyond the start are met again, where the atlas met them
+      for (const ChainFamilyChange<double>& change : family.path.changes) {
+        if (change.after < at) continue;
+        const auto same = std::find_if(both.path.changes.begin(), both.path.changes.end(),
+                                       [&](const ChainFamilyChange<double>& c) {
+                                         return c.kind == change.kind &&
+                                                std::abs(c.energy - change.energy) < 1e-9 * change.energy;
+                                       });
+        EXPECT_NE(same, both.path.changes.end()) << "a change at E = " << change.energy;
+        ++changesMet;
+      }
+      // the far end: the atlas's last orbit, and its kind, on whichever side the family went on
+      // (an end where an impact fades is the last orbit Newton reached on its way, not a point
+      // located: its energy to 1e-4, 1.2e-5 met)
+      const bool wentUp = family.path.orbits.back().energy > orbits[at].energy;
+      const ChainPeriodicOrbit& far = wentUp ? path.back() : path.front();
+      const ChainAtlasEnd& farEnd = wentUp ? both.lastEnd : *both.firstEnd;
+      if (family.lastEnd.kind != ChainFamilyEnd::StepLimit) {
+        EXPECT_EQ(farEnd.kind, family.lastEnd.kind);
+        const bool fades = farEnd.kind == ChainFamilyEnd::ImpactFades || farEnd.kind == ChainFamilyEnd::GrazingOrbit;
+        EXPECT_NEAR(far.energy, family.path.orbits.back().energy, (fades ? 1e-4 : 1e-6) * far.energy)
+            << toString(farEnd.kind);
+      }
+    }
+  }
+  EXPECT_GE(followed, 2);
+  EXPECT_GE(changesMet, 1);
+}
+
 }  // namespace
 }  // namespace grazelab::core
