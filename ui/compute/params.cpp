@@ -20,7 +20,8 @@ namespace {
 constexpr std::array kAllKeys = {ParamKey::Lambda, ParamKey::M1,           ParamKey::M2,
                                  ParamKey::Gap,    ParamKey::K1,           ParamKey::K2,
                                  ParamKey::Perturbation, ParamKey::Horizon, ParamKey::Period,
-                                 ParamKey::FrequencyRatio, ParamKey::ChainPeriod};
+                                 ParamKey::FrequencyRatio, ParamKey::ChainPeriod, ParamKey::ModeFamily,
+                                 ParamKey::ModeEnergy};
 constexpr std::array kAllDirections = {PerturbDirection::V2, PerturbDirection::U2,
                                        PerturbDirection::U1, PerturbDirection::V1};
 
@@ -178,6 +179,8 @@ double Params::value(ParamKey key) const {
     case ParamKey::Period: return periodFraction;
     case ParamKey::FrequencyRatio: return frequencyRatio;
     case ParamKey::ChainPeriod: return chainPeriodFraction;
+    case ParamKey::ModeFamily: return modeFamily;
+    case ParamKey::ModeEnergy: return modeEnergy;
   }
   return 0;
 }
@@ -195,6 +198,8 @@ void Params::setValue(ParamKey key, double value) {
     case ParamKey::Period: periodFraction = value; break;
     case ParamKey::FrequencyRatio: frequencyRatio = value; break;
     case ParamKey::ChainPeriod: chainPeriodFraction = value; break;
+    case ParamKey::ModeFamily: modeFamily = value; break;
+    case ParamKey::ModeEnergy: modeEnergy = value; break;
   }
 }
 
@@ -211,6 +216,8 @@ QString jsonKey(ParamKey key) {
     case ParamKey::Period: return QStringLiteral("periodOverT2");
     case ParamKey::FrequencyRatio: return QStringLiteral("frequencyRatio");
     case ParamKey::ChainPeriod: return QStringLiteral("chainPeriodOverT");
+    case ParamKey::ModeFamily: return QStringLiteral("modeFamily");
+    case ParamKey::ModeEnergy: return QStringLiteral("modeEnergy");
   }
   return {};
 }

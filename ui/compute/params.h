@@ -25,6 +25,8 @@ enum class ParamKey {
   Period,        ///< T / T2 for the one-impact-per-period orbit
   FrequencyRatio,  ///< w_fast / w_slow of a detuned chain (the detuned-contrast scene)
   ChainPeriod,     ///< T / T* of an N-mass chain's 1IPP orbit (T* its common period)
+  ModeFamily,      ///< the family of an atlas of modes followed (its index in the atlas)
+  ModeEnergy,      ///< where along that family's energies (0 its lowest, 1 its highest, log scale)
 };
 
 /// Which component of the start state the perturbation moves.
@@ -79,6 +81,8 @@ struct Params {
   double periodFraction = 0.9;  ///< T / T2 of the 1IPP orbit
   double frequencyRatio = 2.05; ///< w_fast / w_slow of the detuned chain
   double chainPeriodFraction = 0.9;  ///< T / T* of the N-mass 1IPP orbit
+  double modeFamily = 0;    ///< the atlas's family followed (a whole number)
+  double modeEnergy = 0.5;  ///< the position along its energies, 0 to 1
   bool resonantDesign = true;   ///< k2 from the 1:2 design (core::resonantK2)
   /// The landscape's region of the grazing-start plane, u1 in units of the gap d and v1 in
   /// units of d w2 (so that it frames the grazing family whatever the chain)

@@ -101,7 +101,7 @@ std::vector<std::unique_ptr<Scene>> makeScenes() {
       grazingFamilyScene, onePeriodicScene, perturbationScene, randomStartsScene,
       stickingScene,      detunedScene,     nearGrazingScene,  landscapeScene,
       accuracyScene,      modesScene,       threeMassesScene, grazingSetsScene,
-      chainOnePeriodicScene, eightMassesScene,
+      chainOnePeriodicScene, eightMassesScene, chainModesScene,
   };
   std::vector<std::unique_ptr<Scene>> scenes;
   for (auto make : table) scenes.push_back(std::make_unique<Scene>(make()));

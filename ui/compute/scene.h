@@ -12,6 +12,8 @@
 #include <stop_token>
 #include <vector>
 
+#include "core/orbits/chain_atlas.h"
+#include "core/orbits/modes_atlas.h"
 #include "core/orbits/starts.h"
 #include "core/solver/simulate.h"
 #include "ui/compute/derived.h"
@@ -22,13 +24,18 @@
 namespace grazelab::ui {
 
 /// What scenes keep from one computation to the next, owned by the window and handed to each
-/// computation it asks the worker for: the last atlas of modes, which depends on the chain only
-/// (moving T/T2, the run's length or a click gets it again at once). The lock: a test may
-/// compute on a thread of its own while the worker computes.
+/// computation it asks the worker for: the last atlas of modes of two masses and of N, which
+/// depend on the chain only (moving a slider along it, the run's length or a click gets it again
+/// at once), with their figures. The lock: a test may compute on a thread of its own while the
+/// worker computes.
 struct SceneCache {
   std::mutex mutex;
   std::optional<core::Model> atlasModel;
   std::shared_ptr<const core::ModesAtlas<double>> atlas;
+  std::shared_ptr<const AtlasFigure> atlasFigure;
+  std::optional<core::MassChain> chainAtlasChain;
+  std::shared_ptr<const core::ChainAtlas<double>> chainAtlas;
+  std::shared_ptr<const AtlasFigure> chainAtlasFigure;
 };
 
 /// A named preset: which parameters are exposed, which views are shown, and so what is

@@ -16,8 +16,7 @@
 
 #include "core/experiments/run.h"
 #include "core/solver/chain_flight.h"
-#include "core/orbits/modes_atlas.h"
-#include "core/orbits/periodic_orbit.h"
+#include "ui/compute/atlas_figure.h"
 #include "ui/compute/derived.h"
 #include "ui/compute/figures.h"
 #include "ui/compute/params.h"
@@ -64,10 +63,10 @@ struct SceneJob {
   std::optional<core::State> reference;  ///< a state on H worth marking (e.g. GLO_lambda* data)
   QString referenceLabel;
   Figures figures;  ///< curves the scene computed itself (one per CurvePlot it shows)
-  /// the atlas of the chain's periodic impacting families (the Nonlinear modes scene)
-  std::shared_ptr<const core::ModesAtlas<double>> modes;
-  /// the periodic orbit the run follows, with its multipliers (the Nonlinear modes scene)
-  std::optional<core::PeriodicOrbit<double>> orbit;
+  /// the atlas of the chain's periodic impacting families (the modes scenes), as drawn
+  std::shared_ptr<const AtlasFigure> atlas;
+  /// the periodic orbit the run follows, with its multipliers (the modes scenes)
+  std::optional<ShownOrbit> orbit;
   /// slider ranges that depend on the chain (the admissible T/T2 of the 1IPP family)
   std::map<ParamKey, std::pair<double, double>> sliderRanges;
   /// the scene's words for some of its views, over theirs (the run views' presentation)

@@ -70,6 +70,13 @@ ModesPlot::ModesPlot(QWidget* parent)
   orphans->setPen(QPen(colors::kReference, 2));
   useLightMarker(orphans, QPen(colors::kReference, 2));
   m_orphanFlips = addEntry(orphans, Decimation::None);
+  // three masses or more: where multipliers of opposite Krein signature collide and leave the circle
+  auto* krein = makeScatter(tr("Krein collision"), colors::kReference, 12);
+  krein->setMarkerShape(QScatterSeries::MarkerShapeTriangle);
+  krein->setColor(Qt::transparent);
+  krein->setPen(QPen(colors::kReference, 2));
+  useLightMarker(krein, QPen(colors::kReference, 2));
+  m_krein = addEntry(krein, Decimation::None);
   auto* ends = makeScatter(tr("grazing end"), colors::kReference, 9);
   useLightMarker(ends);
   m_ends = addEntry(ends, Decimation::None);
@@ -81,8 +88,10 @@ ModesPlot::ModesPlot(QWidget* parent)
                 "as its frequency 2π/T against its energy (log scale): one dot per computed orbit, "
                 "coloured by k, its impacts per period, filled where it is stable, a ring where it is "
                 "not. Squares are flips, where a family with twice the impacts is born (filled: the "
-                "search found no family there, see grazelab-cli modes for why); black dots "
-                "are grazing ends; the large ring is the orbit shown in the other views.\n"
+                "search found no family there, see grazelab-cli modes for why); triangles (three "
+                "masses or more) are Krein collisions, where two multiplier pairs of opposite "
+                "signature meet on the unit circle and leave it; black dots are grazing ends; the "
+                "large ring is the orbit shown in the other views.\n"
                 "Click a family to follow that orbit in the other views."));
   connect(this, &PlotView::clickedAt, this, &ModesPlot::choose);
 }
@@ -91,54 +100,37 @@ void ModesPlot::appendCsv(CsvTable& table) const {
   const QString plot = title();
   table.describe(plot, tr("energy E"), tr("frequency 2π/T"), tr("T/T₂"));
   if (!m_atlas) return;
+  const double slow = m_atlas->slowPeriod;
   const auto add = [&](const QString& series, double energy, double period) {
-    table.add(plot, series, energy, 2 * M_PI / period, m_T2 > 0 ? std::optional(period / m_T2) : std::nullopt);
+    table.add(plot, series, energy, 2 * M_PI / period, slow > 0 ? std::optional(period / slow) : std::nullopt);
   };
-  for (const core::ModeFamily<double>& family : m_atlas->families) {
+  for (std::size_t f = 0; f < m_atlas->families.size(); ++f) {
+    const AtlasFigure::Family& family = m_atlas->families[f];
     const QString name = tr("family %1 (%2 impacts per period)").arg(family.id).arg(family.impacts);
-    for (const core::FamilyOrbit<double>& orbit : family.orbits) {
-      const bool stable = orbit.stability == core::Stability::Elliptic;
-      add(name + (stable ? tr(", stable") : tr(", unstable")), orbit.energy, orbit.period);
+    for (const AtlasFigure::Orbit& orbit : family.orbits) {
+      add(name + (orbit.stable ? tr(", stable") : tr(", unstable")), orbit.energy, orbit.period);
     }
-    for (const core::FamilyBifurcation<double>& b : family.bifurcations) {
-      QString kind = QString::fromUtf8(core::toString(b.kind).data());
-      if (b.kind == core::PointKind::PeriodDoubling && b.born < 0 && !b.birthProblem.empty()) {
-        kind = tr("flip, no family found");
-      }
-      add(name + QStringLiteral(": ") + kind, b.energy, b.T);
-    }
-    for (const core::FamilyEnd<double>* end : {&family.startEnd, &family.end}) {
-      if (end->period > 0) {
-        add(name + tr(": end (%1)").arg(QString::fromUtf8(core::toString(end->kind).data())), end->energy, end->period);
-      }
+    for (const AtlasFigure::Mark& mark : m_atlas->marks) {
+      if (mark.family == int(f)) add(name + QStringLiteral(": ") + mark.label, mark.energy, mark.period);
     }
   }
 }
 
 void ModesPlot::show(const SimUpdate& update) {
   const SceneJob& job = update.request->job;
-  if (!job.modes) return;
-  if (job.modes != m_atlas) {
-    m_atlas = job.modes;
-    m_T2 = update.request->derived.modes.T2;
+  if (!job.atlas) return;
+  if (job.atlas != m_atlas) {
+    m_atlas = job.atlas;
     std::vector<QPointF> dots[4][2];
-    std::vector<QPointF> flips;
-    std::vector<QPointF> orphanFlips;
-    std::vector<QPointF> ends;
-    for (const core::ModeFamily<double>& family : m_atlas->families) {
+    std::vector<QPointF> marks[5];
+    for (const AtlasFigure::Family& family : m_atlas->families) {
       const int cls = impactClass(family.impacts);
-      for (const core::FamilyOrbit<double>& orbit : family.orbits) {
-        const bool stable = orbit.stability == core::Stability::Elliptic;
-        dots[cls][stable ? 0 : 1].push_back(picturePoint(orbit.energy, orbit.period));
+      for (const AtlasFigure::Orbit& orbit : family.orbits) {
+        dots[cls][orbit.stable ? 0 : 1].push_back(picturePoint(orbit.energy, orbit.period));
       }
-      for (const auto& b : family.bifurcations) {
-        if (b.kind != core::PointKind::PeriodDoubling) continue;
-        // birthProblem is empty where no search was made (beyond the impacts shown)
-        (b.born < 0 && !b.birthProblem.empty() ? orphanFlips : flips).push_back(picturePoint(b.energy, b.T));
-      }
-      for (const core::FamilyEnd<double>* end : {&family.end, &family.startEnd}) {
-        if (end->kind == core::PointKind::GrazingOrbit && end->period > 0) ends.push_back(picturePoint(end->energy, end->period));
-      }
+    }
+    for (const AtlasFigure::Mark& mark : m_atlas->marks) {
+      marks[int(mark.kind)].push_back(picturePoint(mark.energy, mark.period));  // (Other: not drawn)
     }
     const auto& list = entries();
     for (int cls = 0; cls < 4; ++cls) {
@@ -150,10 +142,13 @@ void ModesPlot::show(const SimUpdate& update) {
         setData(m_dots[cls][stable], std::move(dots[cls][stable]));
       }
     }
-    setInLegend(list[std::size_t(m_orphanFlips)].series, !orphanFlips.empty());
-    setData(m_flips, std::move(flips));
-    setData(m_orphanFlips, std::move(orphanFlips));
-    setData(m_ends, std::move(ends));
+    const auto markEntry = [&](AtlasFigure::MarkKind kind) -> std::vector<QPointF>& { return marks[int(kind)]; };
+    setInLegend(list[std::size_t(m_orphanFlips)].series, !markEntry(AtlasFigure::MarkKind::OrphanFlip).empty());
+    setInLegend(list[std::size_t(m_krein)].series, !markEntry(AtlasFigure::MarkKind::KreinCollision).empty());
+    setData(m_flips, std::move(markEntry(AtlasFigure::MarkKind::Flip)));
+    setData(m_orphanFlips, std::move(markEntry(AtlasFigure::MarkKind::OrphanFlip)));
+    setData(m_krein, std::move(markEntry(AtlasFigure::MarkKind::KreinCollision)));
+    setData(m_ends, std::move(markEntry(AtlasFigure::MarkKind::GrazingEnd)));
     startNewRun();
   }
   std::vector<QPointF> chosen;
@@ -166,19 +161,24 @@ void ModesPlot::choose(QPointF value) {
   if (!m_atlas) return;
   const QPointF clicked = chart()->mapToPosition(value);
   double best = kChoiceRadius;
-  const core::FamilyOrbit<double>* found = nullptr;
-  for (const core::ModeFamily<double>& family : m_atlas->families) {
-    for (const core::FamilyOrbit<double>& orbit : family.orbits) {
-      const QPointF at = chart()->mapToPosition(picturePoint(orbit.energy, orbit.period));
+  int family = -1, orbit = -1;
+  for (std::size_t f = 0; f < m_atlas->families.size(); ++f) {
+    const std::vector<AtlasFigure::Orbit>& orbits = m_atlas->families[f].orbits;
+    for (std::size_t i = 0; i < orbits.size(); ++i) {
+      const QPointF at = chart()->mapToPosition(picturePoint(orbits[i].energy, orbits[i].period));
       const double distance = std::hypot(at.x() - clicked.x(), at.y() - clicked.y());
       if (distance < best) {
         best = distance;
-        found = &orbit;
+        family = int(f);
+        orbit = int(i);
       }
     }
   }
-  if (found) emit orbitChosen(found->state);
-  else emit missed();
+  if (family >= 0) {
+    emit orbitChosen(family, orbit, m_atlas->families[std::size_t(family)].orbits[std::size_t(orbit)].state);
+  } else {
+    emit missed();
+  }
 }
 
 }  // namespace grazelab::ui

@@ -4,15 +4,16 @@
 
 #include <memory>
 
-#include "core/orbits/modes_atlas.h"
+#include "ui/compute/atlas_figure.h"
 #include "ui/plots/plot_view.h"
 
 namespace grazelab::ui {
 
 /// The frequency-energy picture of the chain's periodic impacting families (the atlas the
-/// scene computed): each orbit a dot at (log10 E, 2 pi / T), filled where it is stable and a
-/// ring where it is not, coloured by its impacts per period; flips and ends marked; the orbit
-/// the run follows ringed. A click on a family chooses its nearest orbit.
+/// scene computed, of two masses or of N): each orbit a dot at (log10 E, 2 pi / T), filled where
+/// it is stable and a ring where it is not, coloured by its impacts per period; flips, Krein
+/// collisions and ends marked; the orbit the run follows ringed. A click on a family chooses its
+/// nearest orbit.
 class ModesPlot final : public PlotView {
   Q_OBJECT
 
@@ -27,20 +28,21 @@ class ModesPlot final : public PlotView {
   static constexpr double kChoiceRadius = 24;
 
  signals:
-  /// An orbit of the atlas was clicked: its state just after an impact.
-  void orbitChosen(const grazelab::core::State& start);
+  /// An orbit of the atlas was clicked: its family (the index in the atlas's families), its
+  /// index in that family, and its state just after an impact.
+  void orbitChosen(int family, int orbit, const grazelab::core::ChainState& start);
   /// A click fell on no family.
   void missed();
 
  private:
   void choose(QPointF value);
 
-  std::shared_ptr<const core::ModesAtlas<double>> m_atlas;
-  double m_T2 = 0;  ///< the chain's slow period, for T/T2 in a CSV export
+  std::shared_ptr<const AtlasFigure> m_atlas;
   int m_dots[4][2] = {};  ///< per class of impacts (1, 2, 4, more) and stable / unstable
   int m_unstableKey = 0;  ///< a legend entry only: what a ring means
   int m_flips = 0;
   int m_orphanFlips = 0;
+  int m_krein = 0;
   int m_ends = 0;
   int m_chosen = 0;
 };

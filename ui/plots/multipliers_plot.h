@@ -11,8 +11,9 @@
 namespace grazelab::ui {
 
 /// The multipliers of the orbit the run follows (the eigenvalues of its return map at fixed
-/// energy) against the unit circle: on it the orbit is stable, off it (a real pair mu, 1/mu)
-/// unstable; a pair meeting at -1 is a flip.
+/// energy) against the unit circle: on it the orbit is stable, off it unstable; a pair meeting
+/// at -1 is a flip. Of three masses or more, those on the circle are coloured by their Krein
+/// signature: two of opposite signature that meet can leave the circle (a Krein collision).
 class MultipliersPlot final : public PlotView {
   Q_OBJECT
 
@@ -29,6 +30,8 @@ class MultipliersPlot final : public PlotView {
   std::optional<QRectF> m_fitted;  ///< the range last set  ///< the half-width that holds the circle and the multipliers
   int m_circle = 0;
   int m_multipliers = 0;
+  int m_kreinPlus = 0;
+  int m_kreinMinus = 0;
 };
 
 }  // namespace grazelab::ui

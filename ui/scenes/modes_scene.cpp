@@ -20,14 +20,15 @@ QString tr(const char* text) {
   return QCoreApplication::translate("grazelab::ui::ModesScene", text);
 }
 
-// The chain's atlas, over the command line's default energies and impacts: the one kept in
-// `cache` when it is this chain's, else computed (each family shown as it is finished) and kept.
-std::shared_ptr<const core::ModesAtlas<double>> atlasOf(const core::TwoMassForm<double>& chain, const DerivedModel& derived,
-                                                        std::stop_token stop, const ScenePartial& partial,
-                                                        SceneCache& cache) {
+// The chain's atlas and its figure, over the command line's default energies and impacts: the
+// ones kept in `cache` when they are this chain's, else computed (each family shown as it is
+// finished) and kept; none when stopped.
+std::pair<std::shared_ptr<const core::ModesAtlas<double>>, std::shared_ptr<const AtlasFigure>> atlasOf(
+    const core::TwoMassForm<double>& chain, const DerivedModel& derived, std::stop_token stop,
+    const ScenePartial& partial, SceneCache& cache) {
   {
     const std::lock_guard lock(cache.mutex);
-    if (cache.atlasModel == derived.model) return cache.atlas;
+    if (cache.atlasModel == derived.model) return {cache.atlas, cache.atlasFigure};
   }
   core::ModesAtlas<double> sofar;
   const auto familyDone = [&](const core::ModeFamily<double>& family) {
@@ -35,17 +36,19 @@ std::shared_ptr<const core::ModesAtlas<double>> atlasOf(const core::TwoMassForm<
     if (!partial) return;
     SceneJob job;
     job.spec.model = derived.model;
-    job.modes = std::make_shared<const core::ModesAtlas<double>>(sofar);
+    job.atlas = std::make_shared<const AtlasFigure>(atlasFigureOf(sofar, derived.modes.T2));
     partial(job, 0.0);
   };
   const core::AtlasEnergyRange<double> energies = core::defaultAtlasEnergyRange(chain);
   auto atlas = std::make_shared<const core::ModesAtlas<double>>(core::computeModesAtlas<double>(
       chain, core::kDefaultAtlasMaxImpacts, energies.low, energies.high, stop, familyDone));
-  if (!atlas->complete) return nullptr;
+  if (!atlas->complete) return {};
+  auto figure = std::make_shared<const AtlasFigure>(atlasFigureOf(*atlas, derived.modes.T2));
   const std::lock_guard lock(cache.mutex);
   cache.atlasModel = derived.model;
   cache.atlas = atlas;
-  return atlas;
+  cache.atlasFigure = figure;
+  return {atlas, figure};
 }
 
 }  // namespace
@@ -91,18 +94,19 @@ Scene::Spec modesScene() {
     const double T2 = derived.modes.T2;
     const double lowFraction = core::onePeriodicLowerEnd(derived.model, derived.modes) / T2;
     job.sliderRanges[ParamKey::Period] = {std::ceil(lowFraction * 1000 + 1e-9) / 1000, 0.999};
-    job.modes = atlasOf(chain, derived, stop, partial, cache);
-    if (!job.modes) return job;  // stopped
+    const auto [atlas, figure] = atlasOf(chain, derived, stop, partial, cache);
+    if (!atlas) return job;  // stopped
+    job.atlas = figure;
+    std::optional<core::PeriodicOrbit<double>> shown;
     // the orbit followed: the one clicked on the atlas, or the 1IPP orbit of the slider's period
     const std::optional<core::State> clicked =
         clickedChain && clickedChain->u.size() == 2 ? std::optional(core::twoMassStateOf(*clickedChain)) : std::nullopt;
     if (clicked) {
       // an orbit of the atlas, with its family's impacts per period (closing to 1e-9: the
       // atlas's states close to ~1e-14)
-      const std::optional<int> impacts = core::impactsOfAtlasOrbit(*job.modes, *clicked);
-      if (impacts) job.orbit = core::evaluateOrbit(chain, *clicked, *impacts, 1e-9);
-      if (!job.orbit || !job.orbit->admissible) {
-        job.orbit.reset();
+      const std::optional<int> impacts = core::impactsOfAtlasOrbit(*atlas, *clicked);
+      if (impacts) shown = core::evaluateOrbit(chain, *clicked, *impacts, 1e-9);
+      if (!shown || !shown->admissible) {
         job.message = tr("the start chosen is not an orbit of the atlas: click a dot of the modes picture");
         return job;
       }
@@ -114,9 +118,10 @@ Scene::Spec modesScene() {
                           .arg(QString::fromStdString(found.problem));
         return job;
       }
-      job.orbit = found.orbit;
+      shown = found.orbit;
     }
-    const core::PeriodicOrbit<double>& orbit = *job.orbit;
+    const core::PeriodicOrbit<double>& orbit = *shown;
+    job.orbit = shownOrbitOf(orbit);
     const std::string symmetry = core::orbitSymmetry(orbit, core::symmetryTolerance<double>());
     job.notes.append(tr("The orbit shown: %1 per period T = %2 (%3 T₂), energy %4, %5%6")
                          .arg(orbit.impacts == 1 ? tr("1 impact") : tr("%1 impacts").arg(orbit.impacts))

@@ -21,6 +21,7 @@ Scene::Spec threeMassesScene();     // a chain of N masses: 1:2:3 and what carri
 Scene::Spec grazingSetsScene();     // Lemma 2.1 for other resonances: grazing sets of 2 and 3 modes
 Scene::Spec chainOnePeriodicScene();  // Theorem 2.1 for N masses: 1IPP orbits near their grazing limit
 Scene::Spec eightMassesScene();     // a string of eight masses, the stop inside it: exact touches
+Scene::Spec chainModesScene();      // nonlinear modes of three masses: Krein collisions
 
 /// The landscape's map for these parameters: the grazing-start plane over the region of
 /// params.mapRegion (u1 in units of d, v1 in units of d w2), 256 x 256 runs of 10 contacts.

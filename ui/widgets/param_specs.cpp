@@ -61,6 +61,17 @@ ParamSpec paramSpec(ParamKey key) {
                  "chain's common period. As T → T* from below the orbit tends to a grazing linear "
                  "orbit whose weights the theorem gives (Theorem 2.1 for N masses)."),
               0.3, 0.999, 0.01, 0.999999, 6, false, {}};
+    case ParamKey::ModeFamily:
+      return {key, tr("family"),
+              tr("Which family of the atlas to follow (its number, as the modes picture's CSV names "
+                 "it). A click on the picture chooses the family and the orbit clicked."),
+              0, 20, 0, 200, 0, false, {}};
+    case ParamKey::ModeEnergy:
+      return {key, tr("energy along it"),
+              tr("Where along the family's energies the orbit shown lies: 0 at its lowest energy, 1 at "
+                 "its highest (log scale). Drag it to watch the multipliers move on the unit circle: "
+                 "two of opposite Krein signature that meet and leave it are a Krein collision."),
+              0, 1, 0, 1, 3, false, {}};
     case ParamKey::FrequencyRatio:
       return {key, tr("ω₁ / ω₂"),
               tr("Ratio of the fast to the slow frequency of the detuned chain (k₂ is chosen to "

@@ -105,6 +105,8 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   addControl(startLayout, ParamKey::Lambda);
   addControl(startLayout, ParamKey::Period);
   addControl(startLayout, ParamKey::ChainPeriod);
+  addControl(startLayout, ParamKey::ModeFamily);
+  addControl(startLayout, ParamKey::ModeEnergy);
   addControl(startLayout, ParamKey::Perturbation);
   auto* directionRow = new QHBoxLayout;
   m_directionLabel = new QLabel(tr("direction"), start);
@@ -194,7 +196,8 @@ void ParameterPanel::setScene(const Scene& scene) {
   m_directionLabel->setVisible(perturb && !m_massChainScene);
   // a box with nothing the scene exposes is not shown empty (the random starts pick their own)
   m_startBox->setVisible(perturb || m_sceneKeys.contains(ParamKey::Lambda) ||
-                         m_sceneKeys.contains(ParamKey::Period) || m_sceneKeys.contains(ParamKey::ChainPeriod));
+                         m_sceneKeys.contains(ParamKey::Period) || m_sceneKeys.contains(ParamKey::ChainPeriod) ||
+                         m_sceneKeys.contains(ParamKey::ModeFamily));
   m_runBox->setVisible(m_sceneKeys.contains(ParamKey::Horizon));
   updateFeasibility();
 }

@@ -331,8 +331,20 @@ SceneView* MainWindow::addView(PlotKind kind) {
     connect(landscape, &LandscapeView::backRequested, this, [this] { mapRegionBack(); });
   }
   if (auto* modes = dynamic_cast<ModesPlot*>(view)) {
-    connect(modes, &ModesPlot::orbitChosen, this,
-            [this](const core::State& start) { startFromClick(core::chainStateOf(start)); });
+    connect(modes, &ModesPlot::orbitChosen, this, [this](int family, int orbit, const core::ChainState& start) {
+      // a scene that follows a family along an energy slider: the click moves both to that orbit
+      // (the slider then goes on along the family); any other follows the start clicked
+      const std::shared_ptr<const AtlasFigure> atlas = m_displayed ? m_displayed->request->job.atlas : nullptr;
+      if (!scene().parameters().contains(ParamKey::ModeFamily) || !atlas || family >= int(atlas->families.size())) {
+        startFromClick(start);
+        return;
+      }
+      const AtlasFigure::Family& chosen = atlas->families[std::size_t(family)];
+      Params moved = params();
+      moved.modeFamily = family;
+      moved.modeEnergy = energyPosition(chosen, chosen.orbits[std::size_t(orbit)].energy);
+      setParams(moved);
+    });
     connect(modes, &ModesPlot::missed, this, [this] {
       m_status->setMessage(tr("Click within %1 pixels of a family's dots to follow that orbit.")
                                .arg(ModesPlot::kChoiceRadius));

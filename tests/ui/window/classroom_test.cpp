@@ -642,13 +642,13 @@ class ClassroomTest : public QObject {
     const auto first = m_window->displayed()->request;  // held: a click replaces what is shown
     const SceneJob& job = first->job;
     QVERIFY(job.ok);
-    QVERIFY(job.modes && job.modes->families.size() >= 4);
+    QVERIFY(job.atlas && job.atlas->families.size() >= 4);
     QVERIFY(job.orbit && job.orbit->impacts == 1);
     {
       // its CSV holds the atlas: every orbit of every family, named, with T/T2 (issue 30)
       const QStringList rows = m_window->plottedDataCsv().split(QLatin1Char('\n'));
       std::size_t orbits = 0;
-      for (const auto& family : job.modes->families) orbits += family.orbits.size();
+      for (const auto& family : job.atlas->families) orbits += family.orbits.size();
       const double T2 = first->derived.modes.T2;
       qsizetype atlasRows = 0;
       for (const QString& row : rows) {
@@ -665,8 +665,8 @@ class ClassroomTest : public QObject {
     QVERIFY(modes && multipliers);
     QCOMPARE(multipliers->entries()[1].points().size(), std::size_t(2));
     // a 2-impact orbit in the middle of its family, where the picture has it
-    const grazelab::core::ModeFamily<double>* two = nullptr;
-    for (const auto& family : job.modes->families) {
+    const AtlasFigure::Family* two = nullptr;
+    for (const auto& family : job.atlas->families) {
       if (family.impacts == 2 && !two) two = &family;
     }
     QVERIFY(two && two->orbits.size() > 10);
@@ -678,7 +678,7 @@ class ClassroomTest : public QObject {
     // families may share those pixels)
     double nearestDistance = 1e9;
     double nearestEnergy = 0;
-    for (const auto& family : job.modes->families) {
+    for (const auto& family : job.atlas->families) {
       for (const auto& orbit : family.orbits) {
         const QPointF p = modes->chart()->mapToPosition(QPointF(std::log10(orbit.energy), 2 * std::numbers::pi / orbit.period));
         const double d = std::hypot(p.x() - at.x(), p.y() - at.y());
@@ -706,7 +706,7 @@ class ClassroomTest : public QObject {
       for (int j = 1; j < 20; ++j) {
         const QPointF candidate(area.left() + area.width() * i / 20, area.top() + area.height() * j / 20);
         double nearest = 1e9;
-        for (const auto& family : job.modes->families) {
+        for (const auto& family : job.atlas->families) {
           for (const auto& orbit : family.orbits) {
             const QPointF p = modes->chart()->mapToPosition(QPointF(std::log10(orbit.energy), 2 * std::numbers::pi / orbit.period));
             nearest = std::min(nearest, std::hypot(p.x() - candidate.x(), p.y() - candidate.y()));
@@ -719,6 +719,82 @@ class ClassroomTest : public QObject {
     QTest::mouseClick(modes->viewport(), Qt::LeftButton, {}, empty);
     QTRY_VERIFY(m_window->statusText().contains(QStringLiteral("pixels of a family")));
     QCOMPARE(m_window->displayed()->id, before);
+  }
+
+  // Modes of three masses (issue 49): the atlas of a 3:2:1 chain with its Krein collisions
+  // marked; the energy slider moves the orbit along its family: between a collision pair its
+  // four multipliers are a complex quadruplet (no signature), just past either end they are back
+  // on the circle as two pairs of opposite signature; the run is that orbit (its impacts a period
+  // apart); a click on a dot of the picture moves the family and the slider to that orbit
+  void theModesOfThreeMassesShowKreinCollisionsAlongTheEnergySlider() {
+    m_window->selectScene(findScene(m_window->scenes(), QStringLiteral("modes-three")));
+    QVERIFY(waitForLatestFinal(*m_window));
+    const auto first = m_window->displayed()->request;
+    QVERIFY(first->job.ok);
+    const AtlasFigure& atlas = *first->job.atlas;
+    QVERIFY(atlas.families.size() >= 4);
+    // the family with two Krein collisions, and their energies
+    int family = -1;
+    std::vector<double> collisions;
+    for (std::size_t f = 0; f < atlas.families.size() && family < 0; ++f) {
+      collisions.clear();
+      for (const AtlasFigure::Mark& mark : atlas.marks) {
+        if (mark.family == int(f) && mark.kind == AtlasFigure::MarkKind::KreinCollision) collisions.push_back(mark.energy);
+      }
+      if (collisions.size() == 2) family = int(f);
+    }
+    QVERIFY(family >= 0);
+    std::sort(collisions.begin(), collisions.end());
+    const AtlasFigure::Family& chosen = atlas.families[std::size_t(family)];
+    const auto orbitAt = [&](double energy) {
+      Params params = m_window->params();
+      params.modeFamily = family;
+      params.modeEnergy = energyPosition(chosen, energy);
+      m_window->setParams(params);
+      [[maybe_unused]] const bool done = waitForLatestFinal(*m_window);
+      return m_window->displayed()->request->job.orbit;
+    };
+    const std::optional<ShownOrbit> between = orbitAt(std::sqrt(collisions[0] * collisions[1]));
+    QVERIFY(between && between->multipliers.size() == 4);
+    QCOMPARE(between->stability, QStringLiteral("complex-quadruplet"));
+    for (int krein : between->krein) QCOMPARE(krein, 0);
+    for (const double outside : {collisions[0] * 0.98, collisions[1] * 1.02}) {
+      const std::optional<ShownOrbit> on = orbitAt(outside);
+      QVERIFY(on && on->multipliers.size() == 4);
+      QCOMPARE(on->stability, QStringLiteral("elliptic"));
+      int plus = 0, minus = 0;
+      for (std::size_t i = 0; i < 4; ++i) {
+        QVERIFY(std::abs(std::abs(on->multipliers[i]) - 1) < 1e-6);
+        plus += on->krein[i] > 0 ? 1 : 0;
+        minus += on->krein[i] < 0 ? 1 : 0;
+      }
+      QCOMPARE(plus, 2);
+      QCOMPARE(minus, 2);
+      // the run is the orbit: its impacts a period apart
+      const auto& events = m_window->displayed()->chains.front()->run.events;
+      QVERIFY(events.size() >= 2);
+      QVERIFY(std::abs(events[1].t - events[0].t - on->period) < 1e-8 * on->period);
+    }
+    // a click on a dot of another family follows it, and the sliders move to it
+    PlotView* modes = plotTitled(*m_window, QStringLiteral("Modes"));
+    QVERIFY(modes);
+    const int other = family == 0 ? 1 : 0;
+    const AtlasFigure::Orbit& target = atlas.families[std::size_t(other)].orbits[atlas.families[std::size_t(other)].orbits.size() / 2];
+    QTRY_VERIFY(modes->drawnPointCount() > 0);
+    const QPoint at = modes->chart()->mapToPosition(QPointF(std::log10(target.energy), 2 * std::numbers::pi / target.period)).toPoint();
+    double nearest = 1e9;
+    int nearestFamily = -1;
+    for (std::size_t f = 0; f < atlas.families.size(); ++f) {
+      for (const AtlasFigure::Orbit& orbit : atlas.families[f].orbits) {
+        const QPointF p = modes->chart()->mapToPosition(QPointF(std::log10(orbit.energy), 2 * std::numbers::pi / orbit.period));
+        const double d = std::hypot(p.x() - at.x(), p.y() - at.y());
+        if (d < nearest) nearest = d, nearestFamily = int(f);
+      }
+    }
+    QTest::mouseClick(modes->viewport(), Qt::LeftButton, {}, at);
+    QTRY_COMPARE(int(m_window->params().modeFamily), nearestFamily);
+    QVERIFY(waitForLatestFinal(*m_window));
+    QVERIFY(m_window->displayed()->request->job.orbit);
   }
 
   // the atlas is computed in the worker and shown family by family: partial updates carry
@@ -742,15 +818,15 @@ class ClassroomTest : public QObject {
     std::optional<SimUpdate> last;
     SimWorker::run(request, {}, 0.030, [&](const SimUpdate& update) {
       if (update.scenePartial) {
-        QVERIFY(update.request->job.modes);
+        QVERIFY(update.request->job.atlas);
         QVERIFY(update.result && update.result->events.empty());
-        partials.push_back(update.request->job.modes->families.size());
+        partials.push_back(update.request->job.atlas->families.size());
       } else if (update.final && !update.trustPending) {
         last = update;
       }
     });
     QVERIFY(last && last->request->job.ok);
-    const std::size_t families = last->request->job.modes->families.size();
+    const std::size_t families = last->request->job.atlas->families.size();
     QCOMPARE(partials.size(), families);
     for (std::size_t i = 0; i < partials.size(); ++i) QCOMPARE(partials[i], i + 1);
   }
