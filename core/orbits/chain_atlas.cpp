@@ -100,20 +100,41 @@ class OnePeriodicParts {
       periods.push_back(tMax_ * S(k) / S(options_.onePeriodicRows + 1));
     for (int k = 8; k <= 30; ++k) periods.push_back(tMax_ * (1 - S(std::ldexp(1.0, -k))));
     std::sort(periods.begin(), periods.end());
+    // which scan periods are in a part; those the closed form cannot decide counted, and the
+    // scan given up where its first periods all run out of the contact search's budget (the
+    // flights of a chain too stiff to search: as family --onepp, chainOnePeriodicFamily)
+    std::vector<char> inside(periods.size(), 0);
+    int outOfBudget = 0;
+    bool anyDecided = false;
+    for (std::size_t k = 0; k < periods.size() && !stop_.stop_requested(); ++k) {
+      const BasicChainOnePeriodicOrbit<S> orbit = data(periods[k]);
+      const bool undecided = orbit.refusal == OnePeriodicRefusal::NotDecided ||
+                             orbit.refusal == OnePeriodicRefusal::SearchBudget;
+      undecidedPeriods_ += undecided ? 1 : 0;
+      outOfBudget += orbit.refusal == OnePeriodicRefusal::SearchBudget ? 1 : 0;
+      anyDecided = anyDecided || orbit.admissible() || orbit.refusal == OnePeriodicRefusal::NotDecided;
+      if (!anyDecided && outOfBudget >= kFamilySearchBudgetRows) {
+        searchBudgetExhausted_ = true;
+        return {};
+      }
+      inside[k] = orbit.admissible() && inRange(orbit.energy);
+    }
     std::vector<ChainAtlasFamily<S>> out;
     std::size_t i = 0;
     while (i < periods.size() && !stop_.stop_requested()) {
-      if (!inPart(periods[i])) {
+      if (!inside[i]) {
         ++i;
         continue;
       }
       std::size_t j = i;
-      while (j + 1 < periods.size() && inPart(periods[j + 1])) ++j;
+      while (j + 1 < periods.size() && inside[j + 1]) ++j;
       out.push_back(part(periods, i, j));
       i = j + 1;
     }
     return out;
   }
+  int undecidedPeriods() const { return undecidedPeriods_; }
+  bool searchBudgetExhausted() const { return searchBudgetExhausted_; }
 
  private:
   BasicChainOnePeriodicOrbit<S> data(const S& T) const {
@@ -240,6 +261,8 @@ class OnePeriodicParts {
   const ChainAtlasOptions<S>& options_;
   std::stop_token stop_;
   S tMax_;
+  int undecidedPeriods_ = 0;
+  bool searchBudgetExhausted_ = false;
 };
 
 }  // namespace
@@ -261,9 +284,16 @@ ChainAtlas<S> computeChainAtlas(const BasicReadyChain<S>& chain,
 
   // the 1IPP family's parts in the range, from its closed form
   if (options.maxImpacts >= 1) {
-    for (ChainAtlasFamily<S>& part : OnePeriodicParts<S>(chain, options, stop).parts()) {
+    OnePeriodicParts<S> scan(chain, options, stop);
+    for (ChainAtlasFamily<S>& part : scan.parts()) {
       if (stop.stop_requested()) return atlas;
       if (part.path.orbits.size() >= 2) finish(std::move(part));
+    }
+    atlas.undecidedPeriods = scan.undecidedPeriods();
+    if (scan.searchBudgetExhausted()) {
+      atlas.searchBudgetExhausted = true;
+      atlas.complete = true;
+      return atlas;
     }
     if (stop.stop_requested()) return atlas;
   }

@@ -76,6 +76,13 @@ template <typename S>
 struct ChainAtlas {
   std::vector<ChainAtlasFamily<S>> families;
   bool complete = false;  ///< false when stopped
+  /// the 1IPP scan's periods whose closed form this precision could not decide (a contact too
+  /// near tangent, or the contact search's budget run out): parts of the family may be missing
+  /// or cut short there
+  int undecidedPeriods = 0;
+  /// the scan was given up: its first kFamilySearchBudgetRows periods all ran out of the contact
+  /// search's budget before any was decided (flights too stiff to search); no family
+  bool searchBudgetExhausted = false;
 };
 
 template <typename S>

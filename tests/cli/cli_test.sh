@@ -68,7 +68,7 @@ takes = {
                             "springs", "right-spring", "stop-mass", "frequencies", "design-branch", "glo-weights"],
     "merge": ["out"],
     "family": model + ["onepp", "out", "count", "masses", "springs", "right-spring", "stop-mass",
-                       "frequencies", "design-branch"],
+                       "frequencies", "design-branch", "impacts", "energy", "period", "guess", "energy-range"],
     "orbit": model + ["onepp", "format", "period", "impacts", "energy", "guess", "masses", "springs",
                       "right-spring", "stop-mass", "frequencies", "design-branch"],
     "modes": model + ["out", "max-impacts", "energy-range", "masses", "springs", "right-spring",

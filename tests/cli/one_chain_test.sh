@@ -186,6 +186,9 @@ EXPECT_WORD="no 1IPP orbit of period 1" expect_invalid orbit --onepp --period 1 
 # in one line after its first rows, where it took 40 s of computing 2023 rows "never returning"
 EXPECT_WORD="cannot be searched within the budget" expect_invalid family --onepp --masses 1,1e-25,1 \
   --springs 1e25,1,1 --count 2000 --out "$work/x/stiff"
+# and its atlas likewise, where it once wrote "0 families" after 13 s
+EXPECT_WORD="cannot be searched within the budget" expect_invalid modes --masses 1,1e-25,1 \
+  --springs 1e25,1,1 --out "$work/x/stiffmodes"
 # report computes any chain (tests/cli/report_test.sh): a chain of N masses names its start
 EXPECT_WORD="one of them" expect_invalid report --quick --masses 1,1,1 --springs 1,1,1 --out "$work/x/r"
 # the chain's own refusals, as for info and simulate

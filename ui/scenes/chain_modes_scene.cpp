@@ -110,6 +110,10 @@ Scene::Spec chainModesScene() {
     const auto [atlas, figure] = atlasOf(chain, stop, partial, cache);
     if (!atlas) return job;  // stopped
     job.atlas = figure;
+    if (atlas->searchBudgetExhausted) {
+      return refusedChainJob(tr("The returns of this chain's flights cannot be searched within the budget "
+                                "(its modes are too far apart): no atlas. Bring the masses or springs nearer"));
+    }
     if (figure->families.empty()) {
       return refusedStartJob(tr("This chain has no admissible periodic orbit with impacts in the atlas's "
                                 "energies: change the masses or the resonance"));
@@ -132,6 +136,11 @@ Scene::Spec chainModesScene() {
                      .arg(i + 1)
                      .arg(family.orbits.size())
                      .arg(number(orbit.energy), number(orbit.period), job.orbit->stability);
+    if (atlas->undecidedPeriods > 0) {
+      job.status += tr(" · %1 periods of the 1IPP family undecided in double: parts may be missing "
+                       "(grazelab-cli modes --precision long decides more)")
+                        .arg(atlas->undecidedPeriods);
+    }
     const int stopped = chain.stopped();
     job.timeUnit = TimeUnit{orbit.period, tr("T"), tr("the orbit's period T")};
     job.viewWords[PlotKind::Trace] = {

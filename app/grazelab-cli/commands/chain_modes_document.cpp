@@ -143,8 +143,13 @@ JsonValue chainModesDocument(const ChainAtlasIn<S>& in, const ModesOutcome& outc
       {"max_impacts", V::of(std::int64_t(outcome.maxImpacts))},
       {"energy_range", V::array({V::number(in.low), V::number(in.high)})},
       {"families", V::array(std::move(families))},
+      {"undecided_periods", V::of(std::int64_t(in.atlas.undecidedPeriods))},
       {"about", V::object({
         {"columns", V::of(columns)},
+        {"undecided_periods", V::of("how many of the 423 periods the 1IPP family's closed form was looked at "
+                              "this precision could not decide (a contact too near tangent, or the contact "
+                              "search's budget run out): where not 0, parts of the 1IPP family, and the families "
+                              "born on them, may be missing or cut short (a wider --precision decides more)")},
         {"class", V::of("the orbit's class from its exact 2N x 2N monodromy: elliptic (every nontrivial "
                   "multiplier on the unit circle: linearly stable), hyperbolic, flip-hyperbolic, "
                   "complex-quadruplet (a Krein collision's outcome), undecided (a multiplier within its error "

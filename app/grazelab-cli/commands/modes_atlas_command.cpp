@@ -4,11 +4,13 @@
 #include "commands/modes_atlas_command.h"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <type_traits>
 
 #include "commands/chain_modes_document.h"
 #include "commands/orbit_json.h"
+#include "core/orbits/chain_onepp.h"
 #include "core/orbits/special_orbits.h"
 #include "core/version.h"
 #include "io/prepared_chain.h"
@@ -109,6 +111,17 @@ ModesOutcome chainModes(const core::BasicReadyChain<S>& ready, const ModesReques
       });
   if (stop.stop_requested() || !atlas.complete) {
     outcome.status = ModesStatus::Interrupted;
+    return outcome;
+  }
+  if (atlas.searchBudgetExhausted) {
+    const auto& omega = ready.dynamics.omega;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "modes: the returns of this chain's flights cannot be searched within the budget (its fastest "
+                  "mode turns %.2g times per slowest period; the first %d periods of the 1IPP family ran out of "
+                  "it): no atlas",
+                  double(omega.maxCoeff() / omega.minCoeff()), core::kFamilySearchBudgetRows);
+    outcome.problem = text;
     return outcome;
   }
   outcome.atlas = ChainAtlasIn<S>{ready.numbers, ready.dynamics.period, std::move(atlas), options.energyLow,

@@ -164,6 +164,13 @@ int writeModes(const ModesOutcome& outcome, const QString& prefix, const char* c
   } else {
     std::fprintf(io.messages, "grazelab-cli: modes: %lld families: %s.json\n", (long long)count, qPrintable(prefix));
   }
+  // (said, not only written: an atlas with parts undecided is not the whole atlas)
+  if (const JsonValue* undecided = json.find("undecided_periods"); undecided && undecided->integer > 0) {
+    std::fprintf(io.messages,
+                 "grazelab-cli: modes: %lld periods of the 1IPP family undecided in %s: parts may be missing "
+                 "(a wider --precision decides more)\n",
+                 (long long)undecided->integer, core::toString(outcome.precision).data());
+  }
   return kExitOk;
 }
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/model/two_mass_form.h"
+#include "core/orbits/chain_onepp.h"
 #include "core/orbits/modes_atlas.h"
 #include "core/orbits/periodic_orbit.h"
 #include "core/orbits/special_orbits.h"
@@ -366,6 +367,35 @@ TEST(ChainAtlas, AFamilyFollowedBothWaysFromOneOfItsOrbitsIsTheAtlassFamily) {
   }
   EXPECT_GE(followed, 2);
   EXPECT_GE(changesMet, 1);
+}
+
+// A chain whose modes are 1e25 apart cannot have its flights searched within the contact
+// search's budget: the atlas says so (searchBudgetExhausted, no family) after its first periods,
+// where it once scanned all 423 of them for 13 s and handed back an empty atlas as if the chain
+// had no mode with impacts.
+TEST(ChainAtlas, AChainTooStiffToSearchIsSaidSoNotGivenAnEmptyAtlas) {
+  MassChain chain;
+  chain.masses = {1, 1e-25, 1};
+  chain.springs = {1e25, 1, 1};
+  const ReadyChain ready = readyChain(chain);
+  const AtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
+  ChainAtlasOptions<double> options;
+  options.energyLow = range.low;
+  options.energyHigh = range.high;
+  const ChainAtlas<double> atlas = computeChainAtlas(ready, options);
+  EXPECT_TRUE(atlas.complete);
+  EXPECT_TRUE(atlas.searchBudgetExhausted);
+  EXPECT_TRUE(atlas.families.empty());
+  EXPECT_GE(atlas.undecidedPeriods, kFamilySearchBudgetRows);
+  // and a chain it can search says nothing of the kind
+  std::mt19937 rng(5);
+  const ReadyChain fine = readyChain(randomChain(rng, 3));
+  const AtlasEnergyRange<double> fineRange = defaultChainAtlasEnergyRange(fine);
+  options.energyLow = fineRange.low;
+  options.energyHigh = fineRange.high;
+  const ChainAtlas<double> searched = computeChainAtlas(fine, options);
+  EXPECT_FALSE(searched.searchBudgetExhausted);
+  EXPECT_FALSE(searched.families.empty());
 }
 
 }  // namespace

@@ -56,18 +56,18 @@ class HeadlessTest : public QObject {
   // ids --scene takes, with the titles as the menu shows them
   void listsScenesOnePerLine() {
     const QStringList lines = listScenes();
-    QCOMPARE(lines.size(), qsizetype(14));  // the note's ten, then the four of N masses
+    QCOMPARE(lines.size(), qsizetype(15));  // the note's ten, then the five of N masses
     QVERIFY2(lines.first().startsWith(QStringLiteral("grazing ")), qPrintable(lines.first()));
     QVERIFY(lines.first().contains(QStringLiteral("Ctrl+1")));
     QVERIFY(lines[8].contains(QStringLiteral("Accuracy: methods against the exact solver")));
     QVERIFY2(lines[9].startsWith(QStringLiteral("modes ")) && lines[9].contains(QStringLiteral("Ctrl+M")),
              qPrintable(lines[9]));
-    QVERIFY2(lines.last().startsWith(QStringLiteral("eight-masses ")) && lines.last().contains(QStringLiteral("Alt+4")),
+    QVERIFY2(lines.last().startsWith(QStringLiteral("modes-three ")) && lines.last().contains(QStringLiteral("Alt+5")),
              qPrintable(lines.last()));
     const QStringList ids = listSceneIds();
     for (const char* id : {"grazing", "1ipp", "perturbations", "random-starts", "sticking",
                            "detuned", "near-grazing", "landscape", "accuracy", "modes",
-                           "three-masses", "grazing-sets", "chain-1ipp", "eight-masses"}) {
+                           "three-masses", "grazing-sets", "chain-1ipp", "eight-masses", "modes-three"}) {
       QVERIFY2(ids.contains(QString::fromLatin1(id)), id);
     }
   }
