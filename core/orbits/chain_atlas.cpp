@@ -104,13 +104,14 @@ class OnePeriodicParts {
     // scan given up where its first periods all run out of the contact search's budget (the
     // flights of a chain too stiff to search: as family --onepp, chainOnePeriodicFamily)
     std::vector<char> inside(periods.size(), 0);
-    int outOfBudget = 0;
+    int outOfBudget = 0, trailing = 0;
     bool anyDecided = false;
     for (std::size_t k = 0; k < periods.size() && !stop_.stop_requested(); ++k) {
       const BasicChainOnePeriodicOrbit<S> orbit = data(periods[k]);
       const bool undecided = orbit.refusal == OnePeriodicRefusal::NotDecided ||
                              orbit.refusal == OnePeriodicRefusal::SearchBudget;
       undecidedPeriods_ += undecided ? 1 : 0;
+      trailing = undecided ? trailing + 1 : 0;
       outOfBudget += orbit.refusal == OnePeriodicRefusal::SearchBudget ? 1 : 0;
       anyDecided = anyDecided || orbit.admissible() || orbit.refusal == OnePeriodicRefusal::NotDecided;
       if (!anyDecided && outOfBudget >= kFamilySearchBudgetRows) {
@@ -119,6 +120,10 @@ class OnePeriodicParts {
       }
       inside[k] = orbit.admissible() && inRange(orbit.energy);
     }
+    // (the undecided run that reaches T_max is the family's approach to its grazing orbit, too
+    // near tangent for S as V -> 0: the part before it ends there, named by its V; nothing is
+    // missing in it)
+    undecidedPeriods_ -= trailing;
     std::vector<ChainAtlasFamily<S>> out;
     std::size_t i = 0;
     while (i < periods.size() && !stop_.stop_requested()) {
@@ -168,10 +173,23 @@ class OnePeriodicParts {
       const S middle = (inside + out) / 2;
       (inPart(middle) ? inside : out) = middle;
     }
-    const BasicChainOnePeriodicOrbit<S> beyond = data(out);
+    // the first row beyond that is decided and not in the part: 1e-13 of T past the end the
+    // closed form is often too near tangent to decide (a flight returning to the stop as it
+    // grazes it), and next to a grazing end undecided rows and admissible ones in the range
+    // alternate at the rounding's scale (in long double at T* - 1e-10 T*, the bisection stopping
+    // between two of them). So the distance grows fourfold, up to the scan's neighbour.
+    BasicChainOnePeriodicOrbit<S> beyond = data(out);
+    const auto unclear = [this](const BasicChainOnePeriodicOrbit<S>& orbit) {
+      return orbit.refusal == OnePeriodicRefusal::NotDecided || orbit.refusal == OnePeriodicRefusal::SearchBudget ||
+             (orbit.admissible() && inRange(orbit.energy));
+    };
+    for (S step = out - inside; unclear(beyond) && abs(4 * step) < abs(*outside - inside);) {
+      step *= 4;
+      beyond = data(inside + step);
+    }
     ChainAtlasEnd end;
     const ChainStateScale<S> scale(chain_.dynamics);
-    if (beyond.admissible()) {  // (admissible, out of the range)
+    if (beyond.admissible() && !inRange(beyond.energy)) {
       end.kind = ChainFamilyEnd::EnergyLimit;
     } else if (abs(data(inside).V) < S(0.05) * scale.speed) {
       // the impact fades (V through 0, near a common period T* of some modes): the orbit
@@ -193,6 +211,7 @@ class OnePeriodicParts {
           break;
         case OnePeriodicRefusal::NotDecided:
         case OnePeriodicRefusal::SearchBudget:
+        case OnePeriodicRefusal::None:  // (admissible in the range up to the scan's neighbour)
           end.kind = ChainFamilyEnd::Undecided;
           end.refusal = OrbitRefusal::Undecided;
           break;

@@ -78,10 +78,11 @@ struct ChainAtlas {
   bool complete = false;  ///< false when stopped
   /// the 1IPP scan's periods whose closed form this precision could not decide (a contact too
   /// near tangent, or the contact search's budget run out): parts of the family may be missing
-  /// or cut short there
+  /// or cut short there. Not counted: the undecided periods that run on to T_max, where the
+  /// family tends to its grazing orbit (V -> 0) and the last part ends on it
   int undecidedPeriods = 0;
-  /// the scan was given up: its first kFamilySearchBudgetRows periods all ran out of the contact
-  /// search's budget before any was decided (flights too stiff to search); no family
+  /// the scan was given up: kFamilySearchBudgetRows of its periods ran out of the contact search's
+  /// budget before any was decided (flights too stiff to search); no family
   bool searchBudgetExhausted = false;
 };
 

@@ -682,6 +682,10 @@ def modes(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[fl
     result, tables = _files_command(_modes, dict(options, out=out), progress)
     for entry, table in zip(result["families"], tables):
         entry["table"] = table
+    if result.get("undecided_periods"):
+        _warnings.warn(f"modes: {result['undecided_periods']} periods of the 1IPP family undecided in "
+                       f"{result['precision']}: parts may be missing (a wider precision decides more)",
+                       GrazeLabWarning, stacklevel=2)
     return result
 
 

@@ -119,6 +119,8 @@ PY
 # shellcheck disable=SC2086
 EXPECT_WORD="--guess" expect_invalid family --impacts 2 --energy 23.4 $three --out "$work/bad/f"
 # shellcheck disable=SC2086
+EXPECT_WORD="belongs to family --impacts" expect_invalid family --onepp --energy-range 1:2 $three --out "$work/bad/f"
+# shellcheck disable=SC2086
 EXPECT_WORD="no --onepp" expect_invalid family --onepp --impacts 2 --energy 23.4 --guess=1,1,0,0 $three --out "$work/bad/f"
 # shellcheck disable=SC2086
 EXPECT_WORD="no orbit to follow" expect_invalid family --impacts 2 --energy 23.4 --guess=50,50,0,0 $three --out "$work/bad/f"

@@ -118,7 +118,15 @@ void ModesPlot::appendCsv(CsvTable& table) const {
 
 void ModesPlot::show(const SimUpdate& update) {
   const SceneJob& job = update.request->job;
-  if (!job.atlas) return;
+  if (!job.atlas && !m_atlas) return;
+  if (!job.atlas) {
+    // a chain refused before its atlas: the last chain's picture does not stay up as if it were this one's
+    m_atlas.reset();
+    for (int i = 0; i < int(entries().size()); ++i) setData(i, {});
+    startNewRun();
+    scheduleRefresh();
+    return;
+  }
   if (job.atlas != m_atlas) {
     m_atlas = job.atlas;
     std::vector<QPointF> dots[4][2];

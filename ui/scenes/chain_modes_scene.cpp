@@ -111,16 +111,24 @@ Scene::Spec chainModesScene() {
     if (!atlas) return job;  // stopped
     job.atlas = figure;
     if (atlas->searchBudgetExhausted) {
-      return refusedChainJob(tr("The returns of this chain's flights cannot be searched within the budget "
-                                "(its modes are too far apart): no atlas. Bring the masses or springs nearer"));
+      SceneJob refused = refusedChainJob(tr("The returns of this chain's flights cannot be searched within the "
+                                            "budget (its modes are too far apart): no atlas. Bring the masses or "
+                                            "springs nearer"));
+      refused.atlas = figure;  // (empty: the last chain's picture is not left standing)
+      return refused;
     }
     if (figure->families.empty()) {
-      return refusedStartJob(tr("This chain has no admissible periodic orbit with impacts in the atlas's "
-                                "energies: change the masses or the resonance"));
+      SceneJob refused = refusedStartJob(tr("This chain has no admissible periodic orbit with impacts in the "
+                                            "atlas's energies: change the masses or the resonance"));
+      refused.atlas = figure;
+      return refused;
     }
     const int last = int(figure->families.size()) - 1;
     job.sliderRanges[ParamKey::ModeFamily] = {0, double(std::max(last, 1))};
     const int f = std::clamp(int(std::lround(params.modeFamily)), 0, last);
+    if (figure->families[std::size_t(f)].orbits.empty()) {  // (the atlas keeps none such: said, not indexed)
+      return refusedStartJob(tr("Family %1 has no orbit: choose another").arg(f));
+    }
     const std::size_t i = orbitNearestEnergy(figure->families[std::size_t(f)], params.modeEnergy);
     const core::ChainPeriodicOrbit& orbit = atlas->families[std::size_t(f)].path.orbits[i];
     job.orbit = shownOrbitOf(orbit);

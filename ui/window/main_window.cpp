@@ -335,7 +335,8 @@ SceneView* MainWindow::addView(PlotKind kind) {
       // a scene that follows a family along an energy slider: the click moves both to that orbit
       // (the slider then goes on along the family); any other follows the start clicked
       const std::shared_ptr<const AtlasFigure> atlas = m_displayed ? m_displayed->request->job.atlas : nullptr;
-      if (!scene().parameters().contains(ParamKey::ModeFamily) || !atlas || family >= int(atlas->families.size())) {
+      if (!scene().parameters().contains(ParamKey::ModeFamily) || !atlas || family >= int(atlas->families.size()) ||
+          orbit >= int(atlas->families[std::size_t(family)].orbits.size())) {
         startFromClick(start);
         return;
       }

@@ -143,11 +143,11 @@ JsonValue chainModesDocument(const ChainAtlasIn<S>& in, const ModesOutcome& outc
       {"max_impacts", V::of(std::int64_t(outcome.maxImpacts))},
       {"energy_range", V::array({V::number(in.low), V::number(in.high)})},
       {"families", V::array(std::move(families))},
-      {"undecided_periods", V::of(std::int64_t(in.atlas.undecidedPeriods))},
+      {"undecided_periods", in.oneFamily ? V::null() : V::of(std::int64_t(in.atlas.undecidedPeriods))},
       {"about", V::object({
         {"columns", V::of(columns)},
         {"undecided_periods", V::of("how many of the 423 periods the 1IPP family's closed form was looked at "
-                              "this precision could not decide (a contact too near tangent, or the contact "
+                              "(null: family --impacts, which looks at none) this precision could not decide (a contact too near tangent, or the contact "
                               "search's budget run out): where not 0, parts of the 1IPP family, and the families "
                               "born on them, may be missing or cut short (a wider --precision decides more)")},
         {"class", V::of("the orbit's class from its exact 2N x 2N monodromy: elliptic (every nontrivial "
@@ -160,9 +160,10 @@ JsonValue chainModesDocument(const ChainAtlasIn<S>& in, const ModesOutcome& outc
         {"min_impact_speed", V::of("the slowest impact's |v_s| before it [length/time]")},
         {"born_at", V::of("one-periodic: a part of the 1IPP family, from its closed form (rows in increasing "
                     "period); period-doubling: born at bifurcation `bifurcation` of family `family` and "
-                    "followed away from it")},
-        {"start", V::of("a 1IPP part's end of shorter period (null for a family born at a doubling: it starts "
-                  "there)")},
+                    "followed away from it; given-orbit: followed both ways from the orbit found from "
+                    "the guess (family --impacts)")},
+        {"start", V::of("a 1IPP part's end of shorter period; a given orbit's family: the end met going down "
+                  "in energy (null for a family born at a doubling: it starts there)")},
         {"end", V::of("grazing-orbit (every impact speed tends to 0: a linear orbit grazing the stop), "
                 "impact-fades (one impact's speed tends to 0), interior-grazing (a flight touches the stop), "
                 "meets-doubling (the orbit becomes one of half the impacts run twice: bifurcation "

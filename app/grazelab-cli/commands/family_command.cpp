@@ -91,8 +91,15 @@ FamilyRun familyWithFiles(const OptionValues& options, const Io& io, std::stop_t
   FamilyRun run;
   run.code = kExitInvalidInput;
   if (!options.isSet("onepp")) {
-    error = "family: name the family: --onepp (one impact per period)";
+    error = "family: name the family: --onepp (one impact per period), or --impacts K from an orbit";
     return run;
+  }
+  for (const char* other : {"energy", "period", "guess", "energy-range"}) {
+    if (options.isSet(other)) {
+      error = QStringLiteral("family --onepp: --%1 belongs to family --impacts K (the family of an orbit found "
+                             "from a guess)").arg(QLatin1String(other));
+      return run;
+    }
   }
   const std::optional<FamilyRequest> request = readFamilyRequest(options, error);
   if (!request) return run;

@@ -118,8 +118,8 @@ ModesOutcome chainModes(const core::BasicReadyChain<S>& ready, const ModesReques
     char text[320];
     std::snprintf(text, sizeof text,
                   "modes: the returns of this chain's flights cannot be searched within the budget (its fastest "
-                  "mode turns %.2g times per slowest period; the first %d periods of the 1IPP family ran out of "
-                  "it): no atlas",
+                  "mode turns %.2g times per slowest period; %d periods of the 1IPP family ran out of it before "
+                  "any was decided): no atlas",
                   double(omega.maxCoeff() / omega.minCoeff()), core::kFamilySearchBudgetRows);
     outcome.problem = text;
     return outcome;
@@ -189,11 +189,16 @@ ModesOutcome impactsFamilyIn(const PreparedMassChain& prepared, const ImpactsFam
     outcome.status = ModesStatus::Interrupted;
     return outcome;
   }
+  if (family.path.orbits.empty()) {  // (Newton's orbit, evaluated again, not admissible)
+    outcome.problem = "family: the orbit found cannot be followed: " +
+                      std::string(core::toString(family.lastEnd.kind));
+    return outcome;
+  }
   core::ChainAtlas<S> atlas;
   atlas.families.push_back(std::move(family));
   atlas.complete = true;
   outcome.atlas = ChainAtlasIn<S>{ready.value->numbers, ready.value->dynamics.period, std::move(atlas),
-                                  options.energyLow, options.energyHigh};
+                                  options.energyLow, options.energyHigh, true};
   outcome.status = ModesStatus::Computed;
   return outcome;
 }

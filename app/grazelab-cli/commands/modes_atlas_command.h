@@ -54,6 +54,7 @@ struct ChainAtlasIn {
   S commonPeriod = 0;  ///< 0: the frequencies are not commensurate
   core::ChainAtlas<S> atlas;
   S low = 0, high = 0;
+  bool oneFamily = false;  ///< `family --impacts`: one family followed from an orbit, no 1IPP scan
 };
 
 struct ModesOutcome {

@@ -8,7 +8,6 @@
 #include <QFileInfo>
 
 #include <cmath>
-#include <string_view>
 #include <type_traits>
 
 #include "commands/orbit_command.h"
@@ -109,10 +108,11 @@ void pictureOf(const ChainAtlasIn<S>& in, std::vector<pictures::ModesPictureFami
   }
 }
 
-// PREFIX.json, PREFIX-family-N.csv and .npy, and where pictures are drawn PREFIX.png and .svg;
-// `command` names what wrote them: modes (an atlas) or family (one family from an orbit)
-int writeModes(const ModesOutcome& outcome, const QString& prefix, const char* command, const Io& io,
-               QString& error) {
+// What the files are of: `modes`'s atlas, or `family --impacts`'s one family from an orbit.
+enum class Written { Atlas, OneFamily };
+
+// PREFIX.json, PREFIX-family-N.csv and .npy, and where pictures are drawn PREFIX.png and .svg
+int writeModes(const ModesOutcome& outcome, const QString& prefix, Written written, const Io& io, QString& error) {
   const JsonValue json = modesDocument(outcome, QFileInfo(prefix).fileName().toStdString());
   std::vector<std::pair<QString, QByteArray>> files;
   const std::size_t count = modesFamilyCount(outcome);
@@ -140,7 +140,7 @@ int writeModes(const ModesOutcome& outcome, const QString& prefix, const char* c
         },
         outcome.atlas);
     const JsonValue* model = json.find("model");
-    const bool oneFamily = std::string_view(command) == "family";
+    const bool oneFamily = written == Written::OneFamily;
     const QString title =
         oneFamily ? QStringLiteral("A family of %1-impact orbits of %2 masses: frequency against energy")
                         .arg(outcome.maxImpacts)
@@ -158,7 +158,7 @@ int writeModes(const ModesOutcome& outcome, const QString& prefix, const char* c
         error);
     if (!drawn) return 1;
   }
-  if (std::string_view(command) == "family") {
+  if (written == Written::OneFamily) {
     std::fprintf(io.messages, "grazelab-cli: family: %lld orbits: %s.json\n",
                  (long long)json.find("families")->items.front().find("rows")->integer, qPrintable(prefix));
   } else {
@@ -227,7 +227,7 @@ ModesRun modesWithFiles(const OptionValues& options, const Io& io, std::stop_tok
     error = QString::fromStdString(run.outcome.problem);
     return run;
   }
-  run.code = prefix ? writeModes(run.outcome, *prefix, "modes", io, error) : kExitOk;
+  run.code = prefix ? writeModes(run.outcome, *prefix, Written::Atlas, io, error) : kExitOk;
   return run;
 }
 
@@ -273,7 +273,7 @@ ModesRun impactsFamilyWithFiles(const OptionValues& options, const Io& io, std::
     error = QString::fromStdString(run.outcome.problem);
     return run;
   }
-  run.code = prefix ? writeModes(run.outcome, *prefix, "family", io, error) : kExitOk;
+  run.code = prefix ? writeModes(run.outcome, *prefix, Written::OneFamily, io, error) : kExitOk;
   return run;
 }
 
