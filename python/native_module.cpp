@@ -574,15 +574,10 @@ py::tuple familyCommand(const std::vector<std::pair<std::string, std::optional<s
                         tableArray(std::move(run.outcome.table), run.outcome.columns));
 }
 
-// modes(options, result_type, progress) -> (its document as values, each family's table as a
-// structured array, in the document's order): the typed atlas (commands/modes_atlas_command.h)
-// of the options given by name as (flag, text) pairs, on a thread of its own that Ctrl+C stops;
-// its files written only where --out names them (no picture). Refused (a ValueError) with the
-// command line's line when there is none, NotWritten (an OSError) when a file could not be written.
-py::tuple modesCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
-                       const py::object& resultType, const py::object& progress) {
-  const grazelab::cli::OptionValues options = textOptions(given);
-  const grazelab::cli::ModesRun run = filesCommand(options, progress, &grazelab::cli::modesWithFiles);
+// An atlas computed (`modes`, `family --impacts`): (its document as values of `resultType`, each
+// family's table as a structured array, in the document's order).
+py::tuple atlasTuple(const grazelab::cli::ModesRun& run, const grazelab::cli::OptionValues& options,
+                     const py::object& resultType) {
   const grazelab::cli::JsonValue document = grazelab::cli::modesDocument(run.outcome, outBase(options));
   py::list tables;
   for (std::size_t i = 0; i < grazelab::cli::modesFamilyCount(run.outcome); ++i) {
@@ -591,18 +586,23 @@ py::tuple modesCommand(const std::vector<std::pair<std::string, std::optional<st
   return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()), tables);
 }
 
+// modes(options, result_type, progress) -> (its document as values, each family's table as a
+// structured array, in the document's order): the typed atlas (commands/modes_atlas_command.h)
+// of the options given by name as (flag, text) pairs, on a thread of its own that Ctrl+C stops;
+// its files written only where --out names them (no picture). Refused (a ValueError) with the
+// command line's line when there is none, NotWritten (an OSError) when a file could not be written.
+py::tuple modesCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                       const py::object& resultType, const py::object& progress) {
+  const grazelab::cli::OptionValues options = textOptions(given);
+  return atlasTuple(filesCommand(options, progress, &grazelab::cli::modesWithFiles), options, resultType);
+}
+
 // family(options with --impacts, result_type, progress): the family of a kIPP orbit followed both
 // ways, as an atlas of one family (commands/modes_atlas_command.h impactsFamily): as `modes`.
 py::tuple impactsFamilyCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
                                const py::object& resultType, const py::object& progress) {
   const grazelab::cli::OptionValues options = textOptions(given);
-  const grazelab::cli::ModesRun run = filesCommand(options, progress, &grazelab::cli::impactsFamilyWithFiles);
-  const grazelab::cli::JsonValue document = grazelab::cli::modesDocument(run.outcome, outBase(options));
-  py::list tables;
-  for (std::size_t i = 0; i < grazelab::cli::modesFamilyCount(run.outcome); ++i) {
-    tables.append(tableArray(grazelab::cli::modesTable(run.outcome, i), grazelab::cli::modesColumns(run.outcome)));
-  }
-  return py::make_tuple(documentToPython(document, resultType, document.holdsWideNumbers()), tables);
+  return atlasTuple(filesCommand(options, progress, &grazelab::cli::impactsFamilyWithFiles), options, resultType);
 }
 
 // A map or merge computed: (its document as values of `resultType`, with `files` when written,

@@ -87,13 +87,21 @@ AtlasFigure atlasFigureOf(const core::ChainAtlas<double>& atlas, double slowPeri
   return figure;
 }
 
+namespace {
+
+// the family's lowest and highest energies (its orbits: at least one)
+std::pair<double, double> energySpan(const AtlasFigure::Family& family) {
+  const auto [low, high] = std::minmax_element(
+      family.orbits.begin(), family.orbits.end(),
+      [](const AtlasFigure::Orbit& a, const AtlasFigure::Orbit& b) { return a.energy < b.energy; });
+  return {low->energy, high->energy};
+}
+
+}  // namespace
+
 std::size_t orbitNearestEnergy(const AtlasFigure::Family& family, double position) {
   if (family.orbits.empty()) return 0;
-  double low = family.orbits.front().energy, high = low;
-  for (const AtlasFigure::Orbit& orbit : family.orbits) {
-    low = std::min(low, orbit.energy);
-    high = std::max(high, orbit.energy);
-  }
+  const auto [low, high] = energySpan(family);
   const double wanted = std::log(low) + std::clamp(position, 0.0, 1.0) * (std::log(high) - std::log(low));
   std::size_t best = 0;
   for (std::size_t i = 1; i < family.orbits.size(); ++i) {
@@ -106,11 +114,7 @@ std::size_t orbitNearestEnergy(const AtlasFigure::Family& family, double positio
 
 double energyPosition(const AtlasFigure::Family& family, double energy) {
   if (family.orbits.empty()) return 0;
-  double low = family.orbits.front().energy, high = low;
-  for (const AtlasFigure::Orbit& orbit : family.orbits) {
-    low = std::min(low, orbit.energy);
-    high = std::max(high, orbit.energy);
-  }
+  const auto [low, high] = energySpan(family);
   return high > low ? (std::log(energy) - std::log(low)) / (std::log(high) - std::log(low)) : 0.0;
 }
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "commands/orbit_json.h"
 #include "core/version.h"
 #include "io/document_values.h"
 
@@ -15,13 +16,6 @@ namespace grazelab::cli {
 namespace {
 
 using V = JsonValue;
-
-template <typename S>
-V numbersValue(const core::ChainVector<S>& x) {
-  std::vector<V> items;
-  for (Eigen::Index i = 0; i < x.size(); ++i) items.push_back(V::number(x[i]));
-  return V::array(std::move(items));
-}
 
 template <typename S>
 V orbitPoint(const core::BasicChainPeriodicOrbit<S>& orbit) {

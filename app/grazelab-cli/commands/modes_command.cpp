@@ -8,6 +8,7 @@
 #include <QFileInfo>
 
 #include <cmath>
+#include <functional>
 #include <type_traits>
 
 #include "commands/orbit_command.h"
@@ -201,15 +202,20 @@ std::optional<ModesRequest> readModesRequest(const OptionValues& options, QStrin
   return request;
 }
 
-ModesRun modesWithFiles(const OptionValues& options, const Io& io, std::stop_token stop, QString& error,
-                        bool filesRequired) {
+namespace {
+
+// The part `modes` and `family --impacts` share once their request is read: where the files go
+// (refused before anything is computed), the chain, the outcome of `compute` on it, the files.
+ModesRun computedWithFiles(const OptionValues& options, const Io& io, std::stop_token stop, QString& error,
+                           bool filesRequired, Written written,
+                           const std::function<ModesOutcome(const PreparedMassChain&)>& compute) {
   ModesRun run;
   run.code = kExitInvalidInput;
-  const std::optional<ModesRequest> request = readModesRequest(options, error);
-  if (!request) return run;
   std::optional<QString> prefix;
   if (filesRequired || options.isSet("out")) {
-    prefix = parseOutputPrefix(options, "PREFIX.json, PREFIX-family-N.csv, ...", "modes", error);
+    const bool atlas = written == Written::Atlas;
+    prefix = parseOutputPrefix(options, atlas ? "PREFIX.json, PREFIX-family-N.csv, ..." : "PREFIX.json, PREFIX-family-0.csv, ...",
+                               atlas ? "modes" : "family", error);
     if (!prefix) return run;
   }
   const auto chain = recentChain(options, stop);
@@ -218,7 +224,7 @@ ModesRun modesWithFiles(const OptionValues& options, const Io& io, std::stop_tok
     if (chain.error.isEmpty()) run.code = kExitInterrupted;  // (the design was interrupted)
     return run;
   }
-  run.outcome = modesAtlas(**chain.value, *request, io.progress, stop);
+  run.outcome = compute(**chain.value);
   if (run.outcome.status == ModesStatus::Interrupted || stop.stop_requested()) {
     run.code = kExitInterrupted;
     return run;
@@ -227,21 +233,29 @@ ModesRun modesWithFiles(const OptionValues& options, const Io& io, std::stop_tok
     error = QString::fromStdString(run.outcome.problem);
     return run;
   }
-  run.code = prefix ? writeModes(run.outcome, *prefix, Written::Atlas, io, error) : kExitOk;
+  run.code = prefix ? writeModes(run.outcome, *prefix, written, io, error) : kExitOk;
   return run;
+}
+
+}  // namespace
+
+ModesRun modesWithFiles(const OptionValues& options, const Io& io, std::stop_token stop, QString& error,
+                        bool filesRequired) {
+  const std::optional<ModesRequest> request = readModesRequest(options, error);
+  if (!request) return {kExitInvalidInput, {}};
+  return computedWithFiles(options, io, stop, error, filesRequired, Written::Atlas,
+                           [&](const PreparedMassChain& chain) { return modesAtlas(chain, *request, io.progress, stop); });
 }
 
 ModesRun impactsFamilyWithFiles(const OptionValues& options, const Io& io, std::stop_token stop, QString& error,
                                 bool filesRequired) {
-  ModesRun run;
-  run.code = kExitInvalidInput;
   if (options.isSet("onepp") || options.isSet("energy") == options.isSet("period") || !options.isSet("guess")) {
     error = "family --impacts K: give --guess U,V and one of --energy E or --period T (the orbit the family is "
             "followed from), and no --onepp";
-    return run;
+    return {kExitInvalidInput, {}};
   }
   const std::optional<OrbitRequest> start = readOrbitRequest(options, error);
-  if (!start) return run;
+  if (!start) return {kExitInvalidInput, {}};
   ImpactsFamilyRequest request;
   request.start = *start;
   if (options.isSet("energy-range")) request.energyRange = options.value("energy-range").toStdString();
@@ -250,31 +264,11 @@ ModesRun impactsFamilyWithFiles(const OptionValues& options, const Io& io, std::
     request.maxOrbits = options.value("count").toInt(&ok);
     if (!ok || request.maxOrbits < 2 || request.maxOrbits > 1000000) {
       error = QStringLiteral("--count: '%1' is not a count of orbits from 2 to 1000000").arg(options.value("count"));
-      return run;
+      return {kExitInvalidInput, {}};
     }
   }
-  std::optional<QString> prefix;
-  if (filesRequired || options.isSet("out")) {
-    prefix = parseOutputPrefix(options, "PREFIX.json, PREFIX-family-0.csv, ...", "family", error);
-    if (!prefix) return run;
-  }
-  const auto chain = recentChain(options, stop);
-  if (!chain.value) {
-    error = chain.error;
-    if (chain.error.isEmpty()) run.code = kExitInterrupted;
-    return run;
-  }
-  run.outcome = impactsFamily(**chain.value, request, stop);
-  if (run.outcome.status == ModesStatus::Interrupted || stop.stop_requested()) {
-    run.code = kExitInterrupted;
-    return run;
-  }
-  if (run.outcome.status != ModesStatus::Computed) {
-    error = QString::fromStdString(run.outcome.problem);
-    return run;
-  }
-  run.code = prefix ? writeModes(run.outcome, *prefix, Written::OneFamily, io, error) : kExitOk;
-  return run;
+  return computedWithFiles(options, io, stop, error, filesRequired, Written::OneFamily,
+                           [&](const PreparedMassChain& chain) { return impactsFamily(chain, request, stop); });
 }
 
 int runModes(const OptionValues& options, const Io& io, std::stop_token stop, QString& error) {

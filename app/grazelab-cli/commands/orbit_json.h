@@ -4,12 +4,21 @@
 
 #include "core/model/state.h"
 #include "core/numbers/scalar.h"
+#include "core/solver/chain_flight.h"
 #include "core/orbits/onepp_family_points.h"
 #include "io/json_value.h"
 
 // The JSON of orbits and their special points, as `family` and `modes` both write it (through
 // the one JSON writer, io/json_value.h: numbers with every digit of their precision).
 namespace grazelab::cli {
+
+/// A vector of a chain of N masses (its u, its v) as a JSON array of numbers in S's digits.
+template <typename S>
+JsonValue numbersValue(const core::ChainVector<S>& x) {
+  std::vector<JsonValue> items;
+  for (Eigen::Index i = 0; i < x.size(); ++i) items.push_back(JsonValue::number(x[i]));
+  return JsonValue::array(std::move(items));
+}
 
 template <typename S>
 JsonValue orbitStateValue(const core::BasicState<S>& x) {

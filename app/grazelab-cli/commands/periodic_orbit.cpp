@@ -79,13 +79,6 @@ std::optional<S> numberIn(const std::string& text, const char* option, std::stri
 }
 
 template <typename S>
-JsonValue numbersValue(const core::ChainVector<S>& x) {
-  std::vector<JsonValue> items;
-  for (Eigen::Index i = 0; i < x.size(); ++i) items.push_back(JsonValue::number(x[i]));
-  return JsonValue::array(std::move(items));
-}
-
-template <typename S>
 JsonValue chainOrbitValue(const FoundChainOrbit<S>& found, core::Precision precision) {
   using V = JsonValue;
   const core::BasicChainPeriodicOrbit<S>& orbit = found.orbit;
