@@ -69,6 +69,21 @@ bool comesBackTo(const ChainAtlasEnd& end, const BasicChainPeriodicOrbit<S>& las
          abs(last.period - 2 * change.period) <= S(2e-5) * change.period;
 }
 
+// Whether a family keeps one period all along while its energy moves (ChainAtlasFamily::onePeriod).
+template <typename S>
+bool onePeriodAllAlong(const ContinuedChainFamily<S>& path) {
+  using std::abs;
+  if (path.orbits.size() < 3) return false;
+  const S T = path.orbits.front().period;
+  S low = path.orbits.front().energy, high = low;
+  for (const BasicChainPeriodicOrbit<S>& orbit : path.orbits) {
+    if (abs(orbit.period - T) > S(1e-9) * T) return false;
+    low = std::min(low, orbit.energy);
+    high = std::max(high, orbit.energy);
+  }
+  return high - low > S(1e-3) * high;
+}
+
 // T_max: the common period of a commensurate chain, else its slowest mode's period
 template <typename S>
 S onePeriodicEnd(const BasicChainDynamics<S>& dynamics) {
@@ -297,6 +312,7 @@ ChainAtlas<S> computeChainAtlas(const BasicReadyChain<S>& chain,
   continuation.maxOrbits = options.maxOrbitsPerFamily;
   const auto finish = [&](ChainAtlasFamily<S>&& family) {
     family.id = int(atlas.families.size());
+    family.onePeriod = onePeriodAllAlong(family.path);
     atlas.families.push_back(std::move(family));
     if (familyDone) familyDone(atlas.families.back());
   };
@@ -420,6 +436,7 @@ ChainAtlasFamily<S> followChainFamily(const BasicReadyChain<S>& chain, const Bas
   path.refusal = up.refusal;
   family.firstEnd = endOf<S>(down.end, down.refusal);
   family.lastEnd = endOf<S>(up.end, up.refusal);
+  family.onePeriod = onePeriodAllAlong(family.path);
   return family;
 }
 

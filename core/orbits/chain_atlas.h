@@ -70,6 +70,10 @@ struct ChainAtlasFamily {
   std::optional<ChainAtlasEnd> firstEnd;
   ChainAtlasEnd lastEnd;
   std::vector<ChainAtlasBranch> branches;  ///< one per period doubling in `path.changes`
+  /// every orbit has the period of the first to 1e-9 while the energy moves by more than 1e-3:
+  /// an isochronous family (at that period its orbits are not isolated; it may lie in a wider
+  /// sheet of them, which the atlas does not say)
+  bool onePeriod = false;
 };
 
 template <typename S>

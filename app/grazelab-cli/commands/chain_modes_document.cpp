@@ -76,6 +76,7 @@ V familyValue(const core::ChainAtlasFamily<S>& family, const std::optional<std::
       {"end", orbits.empty() ? V::null() : endValue(family.lastEnd, orbits.back())},
       {"bifurcations", V::array(std::move(bifurcations))},
       {"unsearched", V::of(std::int64_t(family.path.unsearched))},
+      {"one_period", V::of(family.onePeriod)},
       {"rows", V::of(std::int64_t(orbits.size()))}};
   if (base) fields.emplace_back("file", V::of(*base + "-family-" + std::to_string(family.id) + ".csv"));
   return V::object(std::move(fields));
@@ -172,6 +173,9 @@ JsonValue chainModesDocument(const ChainAtlasIn<S>& in, const ModesOutcome& outc
                          "their last bracket. At a period doubling: branch born (the family born there), "
                          "reached (a family followed from elsewhere came back to it), not-found (problem says "
                          "why), beyond-impacts (its family would have more than max_impacts)")},
+        {"one_period", V::of("true: every orbit of the family has the period of the first to 1e-9 while its "
+                       "energy moves by more than 1e-3 (an isochronous family: at that period its orbits are "
+                       "not isolated, and it may lie in a wider sheet of them)")},
         {"unsearched", V::of("pairs of consecutive orbits between which a pair of changes that undo each other "
                        "could not be ruled out within the search's budget")}})},
       {"generator", V::of(std::string("grazelab-cli ") + kVersion)}});

@@ -400,5 +400,40 @@ TEST(ChainAtlas, AChainTooStiffToSearchIsSaidSoNotGivenAnEmptyAtlas) {
   EXPECT_FALSE(searched.families.empty());
 }
 
+// A family whose period stays that of its first orbit while its energy moves is flagged
+// (onePeriod): on the 3:2:1 chain of masses 1, 0.7, 0.4 two of the 2-impact families keep
+// twice their doubling's period all along; no 1IPP part is flagged (their period moves with the
+// energy), nor the 2-impact family whose period wanders.
+TEST(ChainAtlas, AFamilyOfOnePeriodIsSaidSo) {
+  MassChain chain;
+  chain.masses = {1, 0.7, 0.4};
+  chain.springs = {1, 0.6082683391547987, 0.25011944924612495};  // (the 3:2:1 design, as the CLI gives it)
+  const ReadyChain ready = readyChain(chain);
+  const AtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
+  ChainAtlasOptions<double> options;
+  options.energyLow = range.low;
+  options.energyHigh = range.high;
+  const ChainAtlas<double> atlas = computeChainAtlas(ready, options);
+  int flagged = 0;
+  for (const ChainAtlasFamily<double>& family : atlas.families) {
+    const auto [shortest, longest] = std::minmax_element(
+        family.path.orbits.begin(), family.path.orbits.end(),
+        [](const ChainPeriodicOrbit& a, const ChainPeriodicOrbit& b) { return a.period < b.period; });
+    const double spread = (longest->period - shortest->period) / longest->period;
+    if (family.path.impacts == 1) {
+      EXPECT_FALSE(family.onePeriod) << family.id;
+      continue;
+    }
+    EXPECT_EQ(family.onePeriod, spread <= 1e-9) << family.id << " spread " << spread;
+    if (!family.onePeriod) continue;
+    ++flagged;
+    // twice the period of the doubling it was born at
+    const ChainFamilyChange<double>& doubling =
+        atlas.families[std::size_t(family.parent)].path.changes[std::size_t(family.parentChange)];
+    EXPECT_NEAR(family.path.orbits.front().period, 2 * doubling.period, 1e-9 * doubling.period);
+  }
+  EXPECT_EQ(flagged, 2);
+}
+
 }  // namespace
 }  // namespace grazelab::core
