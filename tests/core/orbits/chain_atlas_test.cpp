@@ -38,6 +38,17 @@ std::vector<const ChainAtlasFamily<S>*> familiesOf(const ChainAtlas<S>& atlas, i
   return out;
 }
 
+// The atlas's options over the chain's default energy range.
+ChainAtlasOptions<double> defaultOptions(const ReadyChain& ready, int maxImpacts, int maxOrbitsPerFamily) {
+  const AtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
+  ChainAtlasOptions<double> options;
+  options.maxImpacts = maxImpacts;
+  options.energyLow = range.low;
+  options.energyHigh = range.high;
+  options.maxOrbitsPerFamily = maxOrbitsPerFamily;
+  return options;
+}
+
 TEST(ChainAtlas, OnTwoMassChainsItIsTheTwoMassAtlas) {
   int doublings = 0, born = 0;
   for (const double m2 : {0.1, 0.3, 0.4, 0.5, 0.55}) {
@@ -136,12 +147,7 @@ TEST(ChainAtlas, OnChainsOfThreeAndFourMassesEveryFamilyIsAdmissibleAndEveryDoub
   for (int trial = 0; trial < 8; ++trial) {
     const MassChain chain = randomChain(rng, 3 + trial % 2);
     const ReadyChain ready = readyChain(chain);
-    const AtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
-    ChainAtlasOptions<double> options;
-    options.maxImpacts = 2;
-    options.energyLow = range.low;
-    options.energyHigh = range.high;
-    options.maxOrbitsPerFamily = 600;
+    const ChainAtlasOptions<double> options = defaultOptions(ready, 2, 600);
     const ChainAtlas<double> atlas = computeChainAtlas(ready, options);
     ASSERT_TRUE(atlas.complete);
     for (const ChainAtlasFamily<double>& family : atlas.families) {
@@ -150,8 +156,8 @@ TEST(ChainAtlas, OnChainsOfThreeAndFourMassesEveryFamilyIsAdmissibleAndEveryDoub
       for (const ChainPeriodicOrbit& orbit : family.path.orbits) {
         ASSERT_TRUE(orbit.admissible()) << "trial " << trial;
         EXPECT_EQ(orbit.events.size(), std::size_t(k));
-        EXPECT_GE(orbit.energy, range.low);
-        EXPECT_LE(orbit.energy, range.high);
+        EXPECT_GE(orbit.energy, options.energyLow);
+        EXPECT_LE(orbit.energy, options.energyHigh);
       }
       std::size_t branches = 0;
       for (const ChainFamilyChange<double>& change : family.path.changes) {
@@ -294,12 +300,7 @@ TEST(ChainAtlas, AFamilyFollowedBothWaysFromOneOfItsOrbitsIsTheAtlassFamily) {
   for (int trial = 0; trial < 8 && followed < 4; ++trial) {
     const MassChain chain = randomChain(rng, 3 + trial % 2);
     const ReadyChain ready = readyChain(chain);
-    const AtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
-    ChainAtlasOptions<double> options;
-    options.maxImpacts = 2;
-    options.energyLow = range.low;
-    options.energyHigh = range.high;
-    options.maxOrbitsPerFamily = 600;
+    const ChainAtlasOptions<double> options = defaultOptions(ready, 2, 600);
     const ChainAtlas<double> atlas = computeChainAtlas(ready, options);
     ASSERT_TRUE(atlas.complete);
     for (const ChainAtlasFamily<double>& family : atlas.families) {
@@ -307,8 +308,8 @@ TEST(ChainAtlas, AFamilyFollowedBothWaysFromOneOfItsOrbitsIsTheAtlassFamily) {
       if (family.birth != ChainBirth::PeriodDoubling || orbits.size() < 12) continue;
       const std::size_t at = orbits.size() / 3;
       ChainContinuationOptions<double> continuation;
-      continuation.energyLow = range.low;
-      continuation.energyHigh = range.high;
+      continuation.energyLow = options.energyLow;
+      continuation.energyHigh = options.energyHigh;
       continuation.maxOrbits = 600;
       const ChainAtlasFamily<double> both = followChainFamily(ready, orbits[at], continuation);
       SCOPED_TRACE("trial " + std::to_string(trial) + ", family " + std::to_string(family.id));
@@ -380,11 +381,7 @@ TEST(ChainAtlas, AChainTooStiffToSearchIsSaidSoNotGivenAnEmptyAtlas) {
   chain.masses = {1, 1e-25, 1};
   chain.springs = {1e25, 1, 1};
   const ReadyChain ready = readyChain(chain);
-  const AtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
-  ChainAtlasOptions<double> options;
-  options.energyLow = range.low;
-  options.energyHigh = range.high;
-  const ChainAtlas<double> atlas = computeChainAtlas(ready, options);
+  const ChainAtlas<double> atlas = computeChainAtlas(ready, defaultOptions(ready, 2, 2000));
   EXPECT_TRUE(atlas.complete);
   EXPECT_TRUE(atlas.searchBudgetExhausted);
   EXPECT_TRUE(atlas.families.empty());
@@ -392,10 +389,7 @@ TEST(ChainAtlas, AChainTooStiffToSearchIsSaidSoNotGivenAnEmptyAtlas) {
   // and a chain it can search says nothing of the kind
   std::mt19937 rng(5);
   const ReadyChain fine = readyChain(randomChain(rng, 3));
-  const AtlasEnergyRange<double> fineRange = defaultChainAtlasEnergyRange(fine);
-  options.energyLow = fineRange.low;
-  options.energyHigh = fineRange.high;
-  const ChainAtlas<double> searched = computeChainAtlas(fine, options);
+  const ChainAtlas<double> searched = computeChainAtlas(fine, defaultOptions(fine, 2, 2000));
   EXPECT_FALSE(searched.searchBudgetExhausted);
   EXPECT_FALSE(searched.families.empty());
 }
@@ -409,11 +403,7 @@ TEST(ChainAtlas, AFamilyOfOnePeriodIsSaidSo) {
   chain.masses = {1, 0.7, 0.4};
   chain.springs = {1, 0.6082683391547987, 0.25011944924612495};  // (the 3:2:1 design, as the CLI gives it)
   const ReadyChain ready = readyChain(chain);
-  const AtlasEnergyRange<double> range = defaultChainAtlasEnergyRange(ready);
-  ChainAtlasOptions<double> options;
-  options.energyLow = range.low;
-  options.energyHigh = range.high;
-  const ChainAtlas<double> atlas = computeChainAtlas(ready, options);
+  const ChainAtlas<double> atlas = computeChainAtlas(ready, defaultOptions(ready, 2, 2000));
   int flagged = 0;
   for (const ChainAtlasFamily<double>& family : atlas.families) {
     const auto [shortest, longest] = std::minmax_element(
