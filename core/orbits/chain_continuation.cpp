@@ -4,6 +4,7 @@
 
 #include <Eigen/LU>
 #include <Eigen/QR>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -463,47 +464,68 @@ ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const Chai
                                      int parentImpacts, std::stop_token stop,
                                      const std::function<bool(const BasicChainPeriodicOrbit<S>&)>& accept) {
   using std::abs;
+  using std::sqrt;
   const BasicChainDynamics<S>& dynamics = chain.dynamics;
   const Eigen::Index n = dynamics.mass.size();
   const ChainStateScale<S> scale(dynamics);
   ChainOrbitSearch<S> none;
   none.problem = ChainOrbitProblem::NotConverging;
-  for (const S& offset : {S(1e-5), S(1e-4), S(1e-3), S(1e-6)}) {
-    for (const int side : {-1, 1}) {
-      if (stop.stop_requested()) {
-        none.problem = ChainOrbitProblem::Stopped;
-        return none;
-      }
-      const S energy = doubling.energy * (1 + side * offset);
-      const ChainOrbitSearch<S> parent =
-          findChainOrbit(chain, doubling.state, parentImpacts, ChainOrbitConstraint::Energy, energy, stop);
-      if (!parent.orbit) continue;
-      // the eigenvector of the multiplier nearest -1: inverse iteration on M + I, in the scaled units
-      const ChainMatrix<S> shifted =
-          scale.scaled(parent.orbit->monodromy.matrix) + ChainMatrix<S>::Identity(2 * n, 2 * n);
-      const Eigen::FullPivLU<ChainMatrix<S>> lu(shifted);
-      ChainVector<S> v = ChainVector<S>::Ones(2 * n);
-      for (int iteration = 0; iteration < 6; ++iteration) {
-        v = lu.solve(v);
-        const S size = v.norm();
-        if (!(size > 0) || !isFinite(size)) break;
-        v /= size;
-      }
-      if (!isFinite(S(v.cwiseAbs().maxCoeff()))) continue;
-      // pushed along it by growing amounts either way (the branch lies ~ sqrt(offset) away)
-      for (const S& push : {S(1e-3), S(3e-3), S(1e-2), S(3e-2), S(1e-1)}) {
-        for (const int way : {1, -1}) {
-          BasicChainState<S> guess = parent.orbit->state;
-          guess.u += (way * push * scale.length) * v.head(n);
-          guess.v += (way * push * scale.speed) * v.tail(n);
-          guess.u[dynamics.stop] = dynamics.gap;
-          ChainOrbitSearch<S> found =
-              findChainOrbit(chain, guess, 2 * parentImpacts, ChainOrbitConstraint::Energy, energy, stop);
-          // (the branch's orbit, near the parent: not another orbit of twice the impacts)
-          if (found.orbit && abs(found.orbit->period - 2 * parent.orbit->period) <= S(0.01) * parent.orbit->period &&
-              scaledDistance(scale, found.orbit->state, parent.orbit->state) <= 3 * push &&
-              (!accept || accept(*found.orbit))) {
-            return found;
+  // Two ways of pushing, the second tried where the first found nothing: along the eigenvector
+  // of the multiplier nearest -1 by inverse iteration on M + I, by fixed amounts; and along the
+  // right singular vector of M + I's smallest singular value by c sqrt(offset), c from 0.3 to 30
+  // (where the branch lies, c not known). At a doubling the pair at -1 is one Jordan block, split
+  // to -1 -+ e a little off it: inverse iteration, both equally near, mixes in the block's
+  // generalized vector, and on random chains of three and four masses one doubling in eight found
+  // no branch that way; the singular vector is the block's eigenvector, yet misses branches the
+  // first way finds.
+  for (const bool singular : {false, true}) {
+    for (const S& offset : {S(1e-5), S(1e-4), S(1e-3), S(1e-6)}) {
+      for (const int side : {-1, 1}) {
+        if (stop.stop_requested()) {
+          none.problem = ChainOrbitProblem::Stopped;
+          return none;
+        }
+        const S energy = doubling.energy * (1 + side * offset);
+        const ChainOrbitSearch<S> parent =
+            findChainOrbit(chain, doubling.state, parentImpacts, ChainOrbitConstraint::Energy, energy, stop);
+        if (!parent.orbit) continue;
+        // in the scaled units
+        const ChainMatrix<S> shifted =
+            scale.scaled(parent.orbit->monodromy.matrix) + ChainMatrix<S>::Identity(2 * n, 2 * n);
+        ChainVector<S> v = ChainVector<S>::Ones(2 * n);
+        if (singular) {
+          v = Eigen::JacobiSVD<ChainMatrix<S>>(shifted, Eigen::ComputeFullV).matrixV().col(2 * n - 1);
+        } else {
+          const Eigen::FullPivLU<ChainMatrix<S>> lu(shifted);
+          for (int iteration = 0; iteration < 6; ++iteration) {
+            v = lu.solve(v);
+            const S size = v.norm();
+            if (!(size > 0) || !isFinite(size)) break;
+            v /= size;
+          }
+        }
+        if (!isFinite(S(v.cwiseAbs().maxCoeff()))) continue;
+        std::vector<S> pushes;
+        if (singular) {
+          for (const double c : {1.0, 0.3, 3.0, 10.0, 30.0, 2.0, 5.0, 20.0}) pushes.push_back(S(c) * sqrt(offset));
+        } else {
+          pushes = {S(1e-3), S(3e-3), S(1e-2), S(3e-2), S(1e-1)};
+        }
+        for (const S& push : pushes) {
+          for (const int way : {1, -1}) {
+            BasicChainState<S> guess = parent.orbit->state;
+            guess.u += (way * push * scale.length) * v.head(n);
+            guess.v += (way * push * scale.speed) * v.tail(n);
+            guess.u[dynamics.stop] = dynamics.gap;
+            ChainOrbitSearch<S> found =
+                findChainOrbit(chain, guess, 2 * parentImpacts, ChainOrbitConstraint::Energy, energy, stop);
+            // (the branch's orbit, near the parent: not another orbit of twice the impacts)
+            if (found.orbit &&
+                abs(found.orbit->period - 2 * parent.orbit->period) <= S(0.01) * parent.orbit->period &&
+                scaledDistance(scale, found.orbit->state, parent.orbit->state) <= 3 * push &&
+                (!accept || accept(*found.orbit))) {
+              return found;
+            }
           }
         }
       }

@@ -127,9 +127,9 @@ _START_DOC = """    glo: start on GLO_lambda data, this lambda (default 0.5 when
 """
 
 
-_TWO_MASS_CHAIN_DOC = """    masses, springs, right_spring, stop_mass, frequencies, design_branch: the chain as in ``info``:
-        two masses stopped on mass 2 for now, ``frequencies=(2, 1)`` being the 1:2 design
-        (``design_branch`` 1 upper, 2 lower); the same bits as the two-mass keywords.
+_TWO_MASS_CHAIN_DOC = """    masses, springs, right_spring, stop_mass, frequencies, design_branch: any chain, as in
+        ``info``; ``masses=(1, 0.5), frequencies=(2, 1)`` is the note's chain (``design_branch``
+        1 upper, 2 lower), with the same bits as the two-mass keywords.
 """
 
 
@@ -225,8 +225,7 @@ def _mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, d
 
 
 def _chain_keywords(options, two_mass, masses, springs, right_spring, stop_mass, frequencies, design_branch):
-    """`options` with the chain: the two-mass keywords `two_mass`, or the chain given by masses
-    (orbit, modes and report: two masses stopped on mass 2, the command line says so otherwise)."""
+    """`options` with the chain: the two-mass keywords `two_mass`, or the chain given by masses."""
     if masses is None:
         if any(value is not None for value in (springs, right_spring, stop_mass, frequencies, design_branch)):
             raise ValueError("springs, right_spring, stop_mass, frequencies and design_branch describe a chain "

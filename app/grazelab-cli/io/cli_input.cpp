@@ -95,9 +95,9 @@ const OptionSpec kOptions[] = {
     {"gap", "Gap d between mass 2 at rest and the stop (default 1).", "value", "1"},
     {"k2", "Stiffness m1-m2 as given: no resonance imposed (excludes --branch).", "value", nullptr},
     {"branch", "k2 from the 1:2 design: upper (default) or lower.", "upper|lower", nullptr},
-    {"masses", "A chain of N masses m1,...,mN (info, simulate, report, stability, map, family, "
-               "glo-set; orbit and modes: two masses stopped on mass 2, --frequencies 2:1 being the 1:2 "
-               "design): the whole chain, with --springs; excludes --m1 --m2 --k1 --k2 --branch.",
+    {"masses", "A chain of N masses m1,...,mN, for every command (--masses 1,0.5 --frequencies 2:1 "
+               "is the note's chain): the whole chain, with --springs or --frequencies; excludes --m1 "
+               "--m2 --k1 --k2 --branch.",
      "m1,...,mN", nullptr},
     {"springs", "The springs k1,...,kN of --masses: wall to m1, then between neighbours.",
      "k1,...,kN", nullptr},
