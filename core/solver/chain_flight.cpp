@@ -140,6 +140,15 @@ BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const B
     distance.b[j] = p * flight.qdot[j] / dynamics.omega[j];
   }
   distance.offset = -dynamics.gap;
+  // a flight whose modes together cannot reach the stop never meets it, commensurate or not:
+  // u_s(t) <= sum_j R_j (R_j = hypot(a_j, b_j), their sum's rounding within (n + 2) eps of it), so
+  // a chain that is not commensurate says so at once, where its search ran out of its budget
+  if (!flight.onStop) {
+    using std::sqrt;
+    S reach = 0;
+    for (Eigen::Index j = 0; j < n; ++j) reach += sqrt(distance.a[j] * distance.a[j] + distance.b[j] * distance.b[j]);
+    if (reach * (1 + S(4 * (n + 2)) * epsilon<S>()) < dynamics.gap) return {ChainContactKind::None, horizon};
+  }
   distance.harmonics = dynamics.harmonics;
   distance.omega0 = dynamics.omega0;
   // a flight from the stop (after an impact, u_s = d set exactly), at rest there (a grazing

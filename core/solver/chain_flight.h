@@ -131,7 +131,8 @@ enum class ChainContactKind {
   Unresolved,  ///< u_s comes within rounding of d while v_s is within rounding of 0: a grazing, a
                ///< slow impact and a near miss all fit the computed flight (or, at t = 0, a start on
                ///< the stop not seen to leave it); decided one precision up
-  None,       ///< never: a commensurate chain's flight below the stop for a whole period
+  None,       ///< never: a commensurate chain's flight below the stop for a whole period, or any
+              ///< flight whose modes' amplitudes together fall short of the stop
   Budget,     ///< not within the search's horizon or window budget (a non-commensurate chain)
 };
 

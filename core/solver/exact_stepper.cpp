@@ -88,7 +88,11 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
   m_flight.emplace(m_chain, m_gap, x, state.u1Residual);
   const Flight<S>& flight = *m_flight;
   const S remaining = tauEnd - state.tau;
-  const Contact<S> contact = nextContact(flight, min(remaining, searchHorizon), stop, searchSteps);
+  // (a detuned flight that cannot reach the stop is said so at once, where its search would run
+  // out of its budget; a resonant one's search decides it within a period)
+  const bool neverReaches = !m_chain.resonant && flight.neverReachesStop();
+  const Contact<S> contact =
+      neverReaches ? Contact<S>{} : nextContact(flight, min(remaining, searchHorizon), stop, searchSteps);
   auto endAt = [&](const S& tau, typename Step<S>::Kind kind) {
     step.kind = kind;
     step.tau = tau;
@@ -106,10 +110,11 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
     return endAt(state.tau + contact.time.value(), Step<S>::Kind::SearchBudget);
   }
   if (contact.kind == ContactKind::None) {
-    if (isFinite(remaining) && (m_chain.resonant || remaining <= searchHorizon)) {
+    const bool never = m_chain.resonant || neverReaches;
+    if (isFinite(remaining) && (never || remaining <= searchHorizon)) {
       return endAt(tauEnd, Step<S>::Kind::End);
     }
-    if (m_chain.resonant) {
+    if (never) {
       step.kind = Step<S>::Kind::NoFurtherContact;
       step.tau = state.tau;
       step.before = step.after = x;

@@ -48,7 +48,7 @@ struct Step {
   enum class Kind {
     Event,             ///< an event (contact or release) happened: see the fields below
     End,               ///< the end time came first; the state is at it
-    NoFurtherContact,  ///< resonant: the free motion never reaches the stop
+    NoFurtherContact,  ///< the free motion never reaches the stop (resonant, or its amplitudes short of it)
     SearchLimit,       ///< detuned: no contact within the search horizon
     SearchBudget,      ///< detuned: the search ran out of steps before the horizon
     Undecided,         ///< a contact its precision cannot decide: the state is left where the

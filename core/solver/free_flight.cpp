@@ -104,6 +104,8 @@ Flight<S>::Flight(const TwoMassForm<S>& chain, const S& gap, const BasicState<S>
     m_accelerationBound += amplitude * omegaSquared[j];
   }
   m_gapTolerance = S(16) * epsilon<S>() * (S(2) * amplitudeSum + abs(start.u2 - gap));
+  // (x2 = sum_j c_j cos + a_j sin about 0: x2 = c_f + c_s at the start)
+  m_neverReachesStop = !m_startsOnStop && amplitudeSum + m_gapTolerance < gap;
 }
 
 template <typename S>

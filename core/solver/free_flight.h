@@ -53,6 +53,9 @@ class Flight {
   const S& gapLevel() const { return m_gap; }
   /// True when the flight starts on the contact plane H (x2 == delta exactly).
   bool startsOnStop() const { return m_startsOnStop; }
+  /// True when the flight never reaches the stop, whatever the frequencies: x2 is at most the sum
+  /// of its modes' amplitudes, and that sum (with its rounding) falls short of delta.
+  bool neverReachesStop() const { return m_neverReachesStop; }
 
   /// State at a flight time; `u1Residual`, when given, receives exact x1 minus the returned u1
   /// (the part of x1 below its rounding, from the start's residual and the last addition).
@@ -135,6 +138,7 @@ class Flight {
   S m_taylorRadius = 0;
   S m_accelerationBound = 0;
   S m_gapTolerance = 0;
+  bool m_neverReachesStop = false;
   // anchor 0 (the start) and a cache of one other anchor (detuned flights); mutable: a cache,
   // a Flight is used by one thread
   mutable std::array<Anchor, 2> m_anchors;

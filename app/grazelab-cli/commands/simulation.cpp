@@ -285,8 +285,8 @@ std::string_view toString(PrecisionChoice choice) {
 std::string stopMessage(core::StopReason stop, bool widest) {
   switch (stop) {
     case core::StopReason::NoFurtherContact:
-      return "the frequencies are commensurate and the flight stays below the stop for a whole period: "
-             "linear forever";
+      return "the flight stays below the stop for a whole period of commensurate frequencies, or its modes' "
+             "amplitudes together fall short of the stop: linear forever";
     case core::StopReason::Undecided:
       return "a contact the precision cannot decide: the stopped mass's top comes within rounding of the stop "
              "(a grazing, a slow impact and a miss all fit; the run ends at that flight's start), or it rests "

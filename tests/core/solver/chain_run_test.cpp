@@ -272,6 +272,61 @@ TEST(ChainRun, EachContactCarriesTheFlightItEnds) {
 
 // The note's kernel takes the note's budget of march steps for a detuned flight's search: out of
 // it, the run ends search-budget where simulate does, and goes on to the contact with the default
+// The sum over the modes of the stopped mass's amplitudes in a flight from `start`: u_s never
+// exceeds it, and on a chain whose frequencies are not commensurate it comes as near as one likes
+double stopReach(const ChainDynamics& dynamics, const ChainState& start) {
+  const ChainFlight flight = flightFrom(dynamics, start);
+  double reach = 0;
+  for (Eigen::Index j = 0; j < flight.q.size(); ++j) {
+    reach += std::abs(dynamics.P(dynamics.stop, j)) * std::hypot(flight.q[j], flight.qdot[j] / dynamics.omega[j]);
+  }
+  return reach;
+}
+
+TEST(ChainRun, AFlightWhoseModesCannotReachTheStopEndsTheRunWhateverTheFrequencies) {
+  // a chain not commensurate searched its budget out (1000 slowest periods) and said so, where
+  // the modes' amplitudes decide at once that it never meets the stop: on random chains of two
+  // to six masses (walls, stops on any mass), and the note's kernel on a detuned two-mass chain;
+  // a start whose amplitudes reach a little past the stop is not said to miss it
+  std::mt19937 random(20261203);
+  std::uniform_real_distribution<double> logUniform(-0.5, 0.5);
+  int never = 0;
+  for (int trial = 0; trial < 24; ++trial) {
+    const int n = 2 + trial % 5;
+    MassChain chain;
+    for (int i = 0; i < n; ++i) {
+      chain.masses.push_back(std::pow(10.0, logUniform(random)));
+      chain.springs.push_back(std::pow(10.0, logUniform(random)));
+    }
+    chain.rightSpring = trial % 3 == 0 ? std::pow(10.0, logUniform(random)) : 0.0;
+    chain.stopMass = int(random() % unsigned(n)) + 1;
+    chain.gap = 0.5 + double(random() % 1000) / 1000.0;
+    const bool notes = trial == 23;
+    const ReadyChain ready = notes ? readyChain(Model{1.0, 0.5, 1.0, 0.37, chain.gap, std::nullopt})
+                                   : readyChain(chain, Kernel::Modal);
+    ASSERT_EQ(ready.dynamics.period, 0.0) << "trial " << trial << ": not commensurate";
+    ASSERT_EQ(bool(ready.notes), notes);
+    ChainState start = randomStart(notes ? MassChain{{1.0, 0.5}, {1.0, 0.37}, 0, 0, chain.gap} : chain, random);
+    const double reach = stopReach(ready.dynamics, start);
+    for (const double fraction : {0.999, 1.001}) {
+      const ChainState scaled{start.u * (fraction * ready.dynamics.gap / reach),
+                              start.v * (fraction * ready.dynamics.gap / reach)};
+      const ChainRun run = runChain(ready, scaled, 10);
+      if (fraction < 1) {
+        EXPECT_EQ(run.stop, StopReason::NoFurtherContact) << "trial " << trial << ": " << toString(run.stop);
+        EXPECT_EQ(run.contacts, 0);
+        EXPECT_EQ(run.tFinal, 0.0);
+        never += run.stop == StopReason::NoFurtherContact;
+        // with an end time, the run goes on to it
+        EXPECT_EQ(runChain(ready, scaled, 10, 50.0).stop, StopReason::TimeLimit) << "trial " << trial;
+      } else {
+        EXPECT_NE(run.stop, StopReason::NoFurtherContact) << "trial " << trial;
+      }
+    }
+  }
+  EXPECT_EQ(never, 24);
+}
+
 TEST(ChainRun, TheNotesKernelsSearchTakesItsStepBudget) {
   // (its first contact comes after 65 time units, about 8 slow periods)
   const Model model{1.0, 0.5, 1.0, 0.37, 1.0, std::nullopt};
@@ -359,8 +414,8 @@ TEST(ChainRun, TheNotesKernelSamplesTheModalKernelsMotion) {
   }
 }
 
-// Where the two kernels could part on the same chain (the modal one forced): a search that
-// decides no contact ends at the flight's start; the last contact asked for being a stick ends
+// Where the two kernels could part on the same chain (the modal one forced): a flight that
+// cannot reach the stop ends the run at its start; the last contact asked for being a stick ends
 // the run held there; an event at the end time gives the sample due there. And near the merge
 // point m2/m1 = 9/16, springs near 1:2 but off the design keep their own k2 (the modal kernel).
 TEST(ChainRun, TheTwoKernelsEndAlike) {
@@ -377,13 +432,13 @@ TEST(ChainRun, TheTwoKernelsEndAlike) {
     }
     return runs;
   };
-  // detuned, never reaching the stop within the search
+  // detuned, never reaching the stop (its modes' amplitudes short of it): said at once, at the start
   {
     const MassChain chain{{1.0, 0.4}, {1.2, 0.444}, 0, 0, 1.0};
     const ChainState start{Eigen::Vector2d(0.1, 0.1), Eigen::Vector2d::Zero()};
     const auto runs = both(chain, start, 10, 0, {});
     for (const auto& [run, samples] : runs) {
-      EXPECT_EQ(run.stop, StopReason::SearchBudget);
+      EXPECT_EQ(run.stop, StopReason::NoFurtherContact);
       EXPECT_EQ(run.tFinal, 0.0);
       EXPECT_EQ(run.final.u, start.u);
     }
