@@ -107,7 +107,9 @@ struct ChainAtlasOptions {
 template <typename S>
 AtlasEnergyRange<S> defaultChainAtlasEnergyRange(const BasicReadyChain<S>& chain);
 
-/// Computes the atlas; `familyDone` hears each family as it is finished.
+/// Computes the atlas; `familyDone` hears each family as soon as its path and ends are found, in
+/// the order of their ids (what happened at its own doublings, and the ends of later families
+/// that come back to them, only the atlas returned has).
 template <typename S>
 ChainAtlas<S> computeChainAtlas(
     const BasicReadyChain<S>& chain, const ChainAtlasOptions<S>& options, std::stop_token stop = {},

@@ -236,6 +236,35 @@ TEST(ChainAtlas, OnChainsOfThreeAndFourMassesEveryFamilyIsAdmissibleAndEveryDoub
   EXPECT_GE(bornHere, 2);
 }
 
+TEST(ChainAtlas, EachFamilyIsHeardOnceAsItIsFoundWithThePathTheAtlasKeeps) {
+  std::mt19937 rng(20261206);
+  const ReadyChain ready = readyChain(randomChain(rng, 3));
+  std::vector<ChainAtlasFamily<double>> heard;
+  const ChainAtlas<double> atlas =
+      computeChainAtlas<double>(ready, defaultOptions(ready, 2, 600), std::stop_token{},
+                                [&](const ChainAtlasFamily<double>& family) { heard.push_back(family); });
+  ASSERT_TRUE(atlas.complete);
+  ASSERT_EQ(heard.size(), atlas.families.size());
+  ASSERT_GE(heard.size(), 2u);
+  for (std::size_t i = 0; i < heard.size(); ++i) {
+    const ChainAtlasFamily<double>& now = heard[i];
+    const ChainAtlasFamily<double>& kept = atlas.families[i];
+    EXPECT_EQ(now.id, int(i));
+    EXPECT_EQ(now.birth, kept.birth);
+    EXPECT_EQ(now.parent, kept.parent);
+    EXPECT_EQ(now.parentChange, kept.parentChange);
+    EXPECT_EQ(now.onePeriod, kept.onePeriod);
+    ASSERT_EQ(now.path.orbits.size(), kept.path.orbits.size()) << "family " << i;
+    EXPECT_EQ(now.path.orbits.back().energy, kept.path.orbits.back().energy);
+    EXPECT_EQ(now.path.changes.size(), kept.path.changes.size());
+    EXPECT_EQ(now.lastEnd.kind, kept.lastEnd.kind);
+    // (a parent is heard before the families born at its doublings)
+    if (now.parent >= 0) {
+      EXPECT_LT(now.parent, now.id);
+    }
+  }
+}
+
 TEST(ChainAtlas, AChainScaledInMassAndLengthHasTheSameAtlasItsEnergiesScaled) {
   // masses and springs times a (the frequencies unchanged), the gap times g: every orbit is the
   // same motion in units of g, its energy a g^2 times
