@@ -475,7 +475,7 @@ ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const Chai
   // right singular vector of M + I's smallest singular value by c sqrt(offset), c from 0.3 to 30
   // (where the branch lies, c not known). At a doubling the pair at -1 is one Jordan block, split
   // to -1 -+ e a little off it: inverse iteration, both equally near, mixes in the block's
-  // generalized vector, and on random chains of three and four masses one doubling in eight found
+  // generalized vector, and on random chains of three and four masses one doubling in seven found
   // no branch that way; the singular vector is the block's eigenvector, yet misses branches the
   // first way finds.
   for (const bool singular : {false, true}) {
