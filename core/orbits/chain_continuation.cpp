@@ -507,7 +507,11 @@ ChainOrbitSearch<S> branchAtDoubling(const BasicReadyChain<S>& chain, const Chai
         if (!isFinite(S(v.cwiseAbs().maxCoeff()))) continue;
         std::vector<S> pushes;
         if (singular) {
-          for (const double c : {1.0, 0.3, 3.0, 10.0, 30.0, 2.0, 5.0, 20.0}) pushes.push_back(S(c) * sqrt(offset));
+          // (no farther than the first way's farthest: beyond it only `accept` would keep the
+          // orbit found near this doubling, and each of its checks follows 40 orbits)
+          for (const double c : {1.0, 0.3, 3.0, 10.0, 30.0, 2.0, 5.0, 20.0}) {
+            if (S(c) * sqrt(offset) <= S(0.1)) pushes.push_back(S(c) * sqrt(offset));
+          }
         } else {
           pushes = {S(1e-3), S(3e-3), S(1e-2), S(3e-2), S(1e-1)};
         }

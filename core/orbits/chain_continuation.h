@@ -101,10 +101,10 @@ struct ContinuedChainFamily {
 /// doubling (relative offsets 1e-6 to 1e-3, by Newton from the doubling's state) pushed along the
 /// eigenvector of its multiplier nearest -1 (by inverse iteration on M + I) by 1e-3 to 1e-1 either
 /// way, and where none of these gives the branch along the singular vector of M + I's smallest
-/// singular value by c sqrt(offset), c from 0.3 to 30; then Newton at that energy; the first
-/// orbit found whose period is within 1% of twice the parent's, within three pushes of the parent
-/// (scaled), not the parent run twice, and accepted by `accept` when given
-/// (the atlas follows it back to see it meet this doubling: next to two close doublings the
+/// singular value by c sqrt(offset), c from 0.3 to 30 (at most 0.1); then Newton at that energy;
+/// the first orbit found whose period is within 1% of twice the parent's, within three pushes of
+/// the parent (scaled), not the parent run twice, and accepted by `accept` when given (the atlas
+/// follows it back to see it meet this doubling: next to two close doublings the
 /// other's branch passes near the parent too). Its problem when none is found (the branch's side
 /// may be too narrow).
 template <typename S>

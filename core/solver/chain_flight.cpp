@@ -142,12 +142,17 @@ BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const B
   distance.offset = -dynamics.gap;
   // a flight whose modes together cannot reach the stop never meets it, commensurate or not:
   // u_s(t) <= sum_j R_j (R_j = hypot(a_j, b_j), their sum's rounding within (n + 2) eps of it), so
-  // a chain that is not commensurate says so at once, where its search ran out of its budget
+  // a chain that is not commensurate says so at once, where its search ran out of its budget. (In
+  // units of the gap: a tiny gap's squares would underflow to a reach of 0, a huge one's overflow
+  // to no decision.)
   if (!flight.onStop) {
     using std::sqrt;
     S reach = 0;
-    for (Eigen::Index j = 0; j < n; ++j) reach += sqrt(distance.a[j] * distance.a[j] + distance.b[j] * distance.b[j]);
-    if (reach * (1 + S(4 * (n + 2)) * epsilon<S>()) < dynamics.gap) return {ChainContactKind::None, horizon};
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const S a = distance.a[j] / dynamics.gap, b = distance.b[j] / dynamics.gap;
+      reach += sqrt(a * a + b * b);
+    }
+    if (reach * (1 + S(4 * (n + 2)) * epsilon<S>()) < 1) return {ChainContactKind::None, horizon};
   }
   distance.harmonics = dynamics.harmonics;
   distance.omega0 = dynamics.omega0;

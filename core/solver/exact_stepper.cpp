@@ -88,9 +88,10 @@ Step<S> ExactStepper<S>::advance(IntegrationState<S>& state, const S& tauEnd,
   m_flight.emplace(m_chain, m_gap, x, state.u1Residual);
   const Flight<S>& flight = *m_flight;
   const S remaining = tauEnd - state.tau;
-  // (a detuned flight that cannot reach the stop is said so at once, where its search would run
-  // out of its budget; a resonant one's search decides it within a period)
-  const bool neverReaches = !m_chain.resonant && flight.neverReachesStop();
+  // (a flight that cannot reach the stop is said so at once, as the modal kernel says it: a
+  // detuned one's search would run out of its budget, a resonant one's decide it within a period,
+  // or find a top within rounding of the stop undecided)
+  const bool neverReaches = flight.neverReachesStop();
   const Contact<S> contact =
       neverReaches ? Contact<S>{} : nextContact(flight, min(remaining, searchHorizon), stop, searchSteps);
   auto endAt = [&](const S& tau, typename Step<S>::Kind kind) {

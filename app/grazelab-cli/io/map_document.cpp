@@ -100,7 +100,8 @@ V specJson(const core::MapSpec& spec, double period, const std::string& pictureQ
                                               : "not estimated (--trust off): NaN; give --trust auto")},
        {"missing_values", V::of("NaN: not defined at that point (no such flight or impact in the "
                                 "run, or the model or start is unusable there); inf: the run proved "
-                                "it never comes (a resonant flight that never returns); the counts "
+                                "it never comes (a resonant flight that never returns, or a start whose "
+                                "modes cannot reach the stop); the counts "
                                 "are -1 where the model or start is unusable (no run)")},
        {"picture", V::of(pictureQuantity)},
        {"quantities", V::object(std::move(quantities))}});
@@ -151,7 +152,8 @@ V chainSpecJson(const core::ChainMapSpec& spec, double period, const std::string
   }
   object.set("missing_values", V::of("NaN: not defined at that point (no flight from the stop or no impact in the run, or "
                                      "no run there); inf: the run proved it never comes (a commensurate chain's flight "
-                                     "that stays below the stop); the counts are -1 where there is no run: the start "
+                                     "that stays below the stop, or any start whose modes' amplitudes together fall "
+                                     "short of it); the counts are -1 where there is no run: the start "
                                      "past the stop, or a run undecided even in binary128"));
   object.set("contacts", V::of(std::int64_t(spec.contacts)));
   object.set("contacts_note", V::of("each run makes this many contacts"));
