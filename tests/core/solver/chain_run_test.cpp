@@ -436,8 +436,8 @@ TEST(ChainRun, TheTwoKernelsEndAlike) {
     return runs;
   };
   // detuned, never reaching the stop (its modes' amplitudes short of it): said at once, at the
-  // start; the same start scaled until they pass the stop by 1e-9: its phases line up after far
-  // more than the search's 1000 slowest periods, which both search out, ending at the start
+  // start; the same start scaled until they pass the stop by 1e-9: its phases do not line up
+  // within the search's 1000 slowest periods, which both search out, ending at the start
   {
     const MassChain chain{{1.0, 0.4}, {1.2, 0.444}, 0, 0, 1.0};
     const ChainState start{Eigen::Vector2d(0.1, 0.1), Eigen::Vector2d::Zero()};
