@@ -42,6 +42,7 @@
 #include "cli_run.h"
 #include "commands/chain_info.h"
 #include "commands/family_command.h"
+#include "commands/bar_command.h"
 #include "commands/glo_set_command.h"
 #include "commands/map_command.h"
 #include "commands/modes_command.h"
@@ -559,6 +560,22 @@ py::object gloSetCommand(const std::vector<std::pair<std::string, std::optional<
       resultType);
 }
 
+// bar(options, result_type) -> its document as values: the typed bar (commands/bar_command.h)
+py::object barCommand(const std::vector<std::pair<std::string, std::optional<std::string>>>& given,
+                      const py::object& resultType) {
+  const grazelab::cli::OptionValues options = textOptions(given);
+  QString error;
+  const std::optional<grazelab::cli::BarRequest> request = grazelab::cli::readBarRequest(options, error);
+  if (!request) throw Refused(error.simplified().toStdString());
+  return typedDocument(
+      [&](std::stop_token token, std::string&) -> std::optional<grazelab::cli::JsonValue> {
+        const grazelab::cli::BarOutcome outcome = grazelab::cli::throwBars(*request, std::move(token));
+        if (outcome.status != grazelab::cli::BarOutcomeStatus::Computed) return std::nullopt;
+        return grazelab::cli::barDocument(outcome);
+      },
+      resultType);
+}
+
 // family(options, result_type, progress) -> (its document as values, its table as a structured
 // array): the typed family (commands/onepp_family.h) of the options given by name as (flag, text)
 // pairs (text None for the bare --onepp), on a thread of its own that Ctrl+C stops, `progress`
@@ -812,6 +829,9 @@ PYBIND11_MODULE(_native, module) {
   module.def("glo_set", &gloSetCommand, py::arg("options"), py::arg("result_type"),
              "grazelab-cli glo-set's typed command, its options as (flag, text) pairs: its document as values "
              "of result_type. Raises ValueError with the command line's line when the chain has none.");
+  module.def("bar", &barCommand, py::arg("options"), py::arg("result_type"),
+             "grazelab-cli bar's typed command, its options as (flag, text) pairs: its document as values of "
+             "result_type.");
   module.def("family", &familyCommand, py::arg("options"), py::arg("result_type"), py::arg("progress") = py::none(),
              "grazelab-cli family --onepp's typed command, its options as (flag, text) pairs (text None for the bare "
              "--onepp): (its document as values of result_type, its table as a structured array); its files "

@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+#include "commands/bar_command.h"
 #include "commands/chain_info.h"
 #include "commands/family_command.h"
 #include "commands/glo_set_command.h"
@@ -170,6 +171,13 @@ const std::vector<Command>& commands() {
        },
        {}},
       {"modes", kChain + kMassChain + QStringList{"precision", "out", "max-impacts", "energy-range"}, false, writesFiles(runModes), {}},
+      {"bar", QStringList{"bar", "speed", "masses-count", "stop-end", "each-impact"}, false,
+       [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
+         QString error;
+         const int code = runBar(options, io, stop, error);
+         return code == kExitInvalidInput ? fail(io, error) : code;
+       },
+       "a bar is its own chain: --bar E,rho,S,L lumped into --masses-count N masses"},
       {"glo-set", kChain + kMassChain + QStringList{"precision", "directions", "out"}, false,
        [](const OptionValues& options, const QStringList&, const Io& io, std::stop_token stop) {
          QString error;
@@ -200,7 +208,7 @@ QString optionsRefused(const Command& command, const QStringList& given) {
   return message;
 }
 
-const QString kCommandNames = "info, simulate, report, stability, map, merge, family, orbit, modes or glo-set";
+const QString kCommandNames = "info, simulate, report, stability, map, merge, family, orbit, modes, glo-set or bar";
 
 // Runs the command `name` with the parsed command line's `options`, `given` the names of the
 // options given (any the command does not take is refused) and `operands` merge's parts.
@@ -233,9 +241,11 @@ int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token
       "PART1 ... PARTN), family --onepp (the 1IPP family: --out PREFIX), orbit (one periodic impacting orbit with its "
       "exact multipliers: --onepp --period T, or --impacts K --energy E --guess U1,V1), modes (the "
       "atlas of the chain's periodic impacting families up to --max-impacts K: --out PREFIX), glo-set "
-      "(which combinations of a resonant chain's GLOMs graze: an interval for two modes, a region for three).\n"
+      "(which combinations of a resonant chain's GLOMs graze: an interval for two modes, a region for three), bar (an "
+      "elastic bar thrown at a wall, lumped into N masses for each --masses-count, computed exactly, against the "
+      "continuum's 2L/c and E S v0 / c).\n"
       "A command refuses the options it does not take.");
-  parser.addPositionalArgument("command", "info | simulate | report | stability | map | merge | family | orbit | modes | glo-set");
+  parser.addPositionalArgument("command", "info | simulate | report | stability | map | merge | family | orbit | modes | glo-set | bar");
   const QCommandLineOption help = parser.addHelpOption();
   const QCommandLineOption version = parser.addVersionOption();
   addOptions(parser);
@@ -243,6 +253,7 @@ int runCommandLine(const QStringList& commandLine, const Io& io, std::stop_token
   addMapOptions(parser);
   addOrbitOptions(parser);
   addModesOptions(parser);
+  addBarOptions(parser);
 
   // `family --onepp` and `orbit --onepp` name the family: the option takes no period there
   QStringList arguments = commandLine;

@@ -30,7 +30,7 @@ PointSummary noRun() {
 // chainMapPeriod of a chain's dynamics
 double periodOf(const ChainDynamics& dynamics) {
   if (dynamics.period > 0) return dynamics.period;
-  return twoPi<double>() / dynamics.omega.minCoeff();
+  return twoPi<double>() / slowestFrequency(dynamics.omega);
 }
 
 }  // namespace

@@ -214,7 +214,7 @@ ChainReference makeReference(const ChainTask& task, const WorkBudget& budget, st
     fastest = task.prepared->fastest;
   } else {
     const ChainModes modes = chainModes(task.chain);
-    slowest = modes.omega.minCoeff();
+    slowest = slowestFrequency(modes.omega);
     fastest = modes.omega.maxCoeff();
   }
   reference.period = twoPi<double>() / slowest;

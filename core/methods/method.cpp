@@ -155,7 +155,7 @@ ChainTask prepared(ChainTask task) {
   const ChainModes modes = chainModes(task.chain);
   task.prepared = std::make_shared<const PreparedChain>(PreparedChain{
       readyChain(task.chain), readyChain(chainCast<long double>(task.chain)),
-      readyChain(chainCast<Quad>(task.chain)), modes.omega.minCoeff(), modes.omega.maxCoeff()});
+      readyChain(chainCast<Quad>(task.chain)), slowestFrequency(modes.omega), modes.omega.maxCoeff()});
   return task;
 }
 
@@ -165,7 +165,7 @@ Task prepared(Task task) {
   const ChainVector<double>& omega = ready.dynamics.omega;
   task.prepared = std::make_shared<const PreparedChain>(PreparedChain{
       ready, readyChain(convertModel<long double>(task.model)), readyChain(convertModel<Quad>(task.model)),
-      omega.minCoeff(), omega.maxCoeff()});
+      slowestFrequency(omega), omega.maxCoeff()});
   return task;
 }
 

@@ -122,7 +122,7 @@ ScaledRun<T>::ScaledRun(const T& task, const WorkBudget& budget, std::stop_token
     const MassChain& chain = m_massChain;
     const int n = chain.size();
     const double omega =  // the slowest mode
-        task.prepared ? task.prepared->slowest : chainModes(chain).omega.minCoeff();
+        task.prepared ? task.prepared->slowest : slowestFrequency(chainModes(chain).omega);
     // lengths in units of L = 2^e, e = ilogb of the larger of the gap and the start's size (as
     // for the note's chain: a method's absolute tolerance is relative to the motion's size)
     const double size = std::max({chain.gap, task.start.u.cwiseAbs().maxCoeff(),

@@ -255,7 +255,7 @@ std::vector<StressCase> chainStressCases(const MassChain& chain, const ChainStar
     }
   }
   const ChainGloStart glo = chainGloStart(chain, weights);
-  const double slowest = modes.omega.minCoeff();
+  const double slowest = slowestFrequency(modes.omega);
   for (double epsilon : quick ? std::vector<double>{1e-15} : std::vector<double>{1e-15, 1e-9, 1e-3}) {
     const std::string name = "push-" + number(epsilon);
     const std::string description =

@@ -67,7 +67,7 @@ double slowestPeriod(const Task& task) {
   return twoPi<double>() / makeTwoMassForm(task.model).chain->omegaSlow;
 }
 double slowestPeriod(const ChainTask& task) {
-  return twoPi<double>() / (task.prepared ? task.prepared->slowest : chainModes(task.chain).omega.minCoeff());
+  return twoPi<double>() / (task.prepared ? task.prepared->slowest : slowestFrequency(chainModes(task.chain).omega));
 }
 
 }  // namespace

@@ -45,7 +45,11 @@ std::vector<Problem> validate(const MassChain& chain) {
                                        "), got " + std::to_string(chain.springs.size())});
   }
   for (std::size_t i = 0; i < chain.masses.size(); ++i) checkPositive(problems, indexed('m', i + 1), chain.masses[i]);
-  for (std::size_t i = 0; i < chain.springs.size(); ++i) checkPositive(problems, indexed('k', i + 1), chain.springs[i]);
+  // k1 = 0: the left end free (no wall there); the springs between masses hold the chain together
+  if (!chain.springs.empty() && !(chain.springs[0] >= 0 && std::isfinite(chain.springs[0]))) {
+    problems.push_back({"k1", "must be >= 0 and finite, 0 for no left wall (got " + number(chain.springs[0]) + ")"});
+  }
+  for (std::size_t i = 1; i < chain.springs.size(); ++i) checkPositive(problems, indexed('k', i + 1), chain.springs[i]);
   if (!(chain.rightSpring >= 0) || !std::isfinite(chain.rightSpring)) {
     problems.push_back({"right spring", "must be >= 0 and finite (got " + number(chain.rightSpring) + ")"});
   }
@@ -61,8 +65,60 @@ MassChain massChainOf(const Model& model) {
   return {{model.m1, model.m2}, {model.k1, model.k2}, 0.0, 2, model.gap};
 }
 
+namespace {
+
+// A floating chain of equal masses m and equal springs k (a bar lumped into N masses): its modes
+// in closed form, the discrete cosine transform's vectors, w_j = 2 sqrt(k/m) sin(j pi / 2N) and
+// P[i][j] = cos(j pi (2i + 1) / 2N) / sqrt(m N / 2) (j = 0, the rigid body's: 1 / sqrt(m N)),
+// j = 0 .. N-1; a node where j (2s + 1) = N mod 2N, exactly. No eigensolve: N^2 work where the
+// solver's binary128 arithmetic costs N^3 (minutes for a thousand masses).
+bool uniformFloating(const BasicMassChain<Quad>& chain) {
+  if (!chain.floats() || chain.size() < 2) return false;
+  for (const Quad& m : chain.masses) {
+    if (m != chain.masses[0]) return false;
+  }
+  for (std::size_t i = 2; i < chain.springs.size(); ++i) {
+    if (chain.springs[i] != chain.springs[1]) return false;
+  }
+  return true;
+}
+
+template <typename S>
+BasicChainModes<S> uniformModes(const BasicMassChain<Quad>& chain) {
+  const int n = chain.size();
+  const int s = chain.stopped() - 1;
+  const Quad m = chain.masses[0], k = chain.springs[1];
+  const Quad pi = 4 * atan(Quad(1));
+  // cos(r pi / 2N) for r = 0 .. 4N-1: every angle j (2i + 1) pi / 2N is one of them
+  std::vector<Quad> cosine(std::size_t(4 * n));
+  for (int r = 0; r < 4 * n; ++r) cosine[std::size_t(r)] = cos(Quad(r) * pi / Quad(2 * n));
+  BasicChainModes<S> modes;
+  modes.omega.resize(n);
+  modes.P.resize(n, n);
+  modes.nodeAtStop.assign(std::size_t(n), false);
+  const Quad rate = 2 * sqrt(k / m);
+  for (int c = 0; c < n; ++c) {
+    const int j = n - 1 - c;  // fastest first
+    modes.omega(c) = static_cast<S>(rate * sin(Quad(j) * pi / Quad(2 * n)));
+    const Quad norm = j == 0 ? sqrt(m * Quad(n)) : sqrt(m * Quad(n) / 2);
+    const bool node = long(j) * (2 * s + 1) % (2 * n) == n;
+    // signed so that P[s][j] > 0; a node's mode by its first mass (cos(j pi / 2N) > 0)
+    const int signer = node ? 0 : s;
+    const Quad sign = cosine[std::size_t(long(j) * (2 * signer + 1) % (4 * n))] < 0 ? Quad(-1) : Quad(1);
+    for (int i = 0; i < n; ++i) {
+      modes.P(i, c) = static_cast<S>(sign * cosine[std::size_t(long(j) * (2 * i + 1) % (4 * n))] / norm);
+    }
+    modes.nodeAtStop[std::size_t(c)] = node;
+    if (node) modes.P(s, c) = S(0);
+  }
+  return modes;
+}
+
+}  // namespace
+
 template <typename S>
 BasicChainModes<S> chainModesIn(const BasicMassChain<Quad>& chain) {
+  if (uniformFloating(chain)) return uniformModes<S>(chain);
   const int n = chain.size();
   // In binary128: a solver in precision eps finds each w_j^2 to eps * w_1^2 absolutely, so a
   // slow mode of a stiff chain (masses and springs over six decades) loses w_1^2 / w_N^2 of
@@ -90,6 +146,16 @@ BasicChainModes<S> chainModesIn(const BasicMassChain<Quad>& chain) {
   const int s = chain.stopped() - 1;
   for (int j = 0; j < n; ++j) {
     const int from = n - 1 - j;  // Eigen sorts ascending: the fastest mode is the last
+    if (chain.floats() && from == 0) {
+      // the rigid body's mode, exactly: K 1 = 0 with no wall at either end, so w = 0 and every
+      // mass moves alike (the solver's is within eps w_1^2 of 0, perhaps below it, and its
+      // vector within rounding of the constant one)
+      Quad total = 0;
+      for (const Quad& m : chain.masses) total += m;
+      modes.omega(j) = S(0);
+      modes.P.col(j).setConstant(static_cast<S>(Quad(1) / sqrt(total)));
+      continue;
+    }
     const Quad lambda = solver.eigenvalues()(from);
     modes.omega(j) = lambda > 0 ? static_cast<S>(sqrt(lambda)) : S(0);
     const Vector exact = invRoot.asDiagonal() * solver.eigenvectors().col(from);

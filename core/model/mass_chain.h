@@ -18,7 +18,9 @@ namespace grazelab::core {
 /// A chain of N masses against a rigid stop (docs/model.md section 11): wall --k1-- [m1] --k2--
 /// [m2] -- ... --kN-- [mN], optionally --k(N+1)-- wall on the right; the stop at `gap` acts on
 /// mass `stopMass` (1-based, the last by default). N = 2 with the stop on mass 2 is the note's
-/// chain (model.h).
+/// chain (model.h). k1 = 0 leaves the left end free (no left wall); with no right wall either,
+/// the chain floats: it also moves as a rigid body (a mode of frequency 0, a flight linear in
+/// time), as a bar thrown at a wall does.
 ///
 /// Its numbers are in a precision S: a run in binary128 takes its chain in binary128, read from
 /// the decimal text in that precision (0.7 is not double's 0.7 there), and its designed springs
@@ -26,7 +28,7 @@ namespace grazelab::core {
 template <typename S>
 struct BasicMassChain {
   std::vector<S> masses;   ///< m_1 ... m_N [mass], all > 0
-  std::vector<S> springs;  ///< k_1 ... k_N [force/length], all > 0: wall-m1, then m(i-1)-mi
+  std::vector<S> springs;  ///< k_1 ... k_N [force/length]: wall-m1 (>= 0, 0: no left wall), then m(i-1)-mi (> 0)
   S rightSpring = 0;       ///< k_(N+1) from m_N to a right wall [force/length]; 0: none
   int stopMass = 0;        ///< s, 1-based; 0: the last mass
   S gap = 1;               ///< d > 0 [length]
@@ -34,6 +36,8 @@ struct BasicMassChain {
   int size() const { return int(masses.size()); }
   /// s, 1-based, with the default resolved.
   int stopped() const { return stopMass > 0 ? stopMass : size(); }
+  /// Held by a wall at neither end: one mode is the rigid body's (w = 0).
+  bool floats() const { return (springs.empty() || springs[0] == 0) && rightSpring == 0; }
 };
 using MassChain = BasicMassChain<double>;
 
@@ -50,7 +54,8 @@ BasicMassChain<To> chainCast(const BasicMassChain<From>& chain) {
 }
 
 /// Every problem with the chain: no mass, lists of different lengths, values that are not
-/// positive and finite, a stop mass out of range. Empty when the chain is usable.
+/// positive and finite (k1 and the right spring may be 0: no wall there), a stop mass out of
+/// range. Empty when the chain is usable.
 std::vector<Problem> validate(const MassChain& chain);
 
 /// The two-mass chain of the note as a MassChain (the stop on mass 2).
@@ -75,7 +80,8 @@ Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic> stiffnessMatrix(const BasicMass
 
 /// The normal modes of a chain (docs/model.md section 11): P^T M P = I, P^T K P = diag(w_j^2),
 /// listed fastest first (mode 1 = the fastest, as in the two-mass chain), each column signed so
-/// that P[s][j] > 0. A mode with a node at the stopped mass (P[s][j] zero within rounding, as in
+/// that P[s][j] > 0. A floating chain's last mode is the rigid body's: w_N = 0 and P's column
+/// 1 / sqrt(sum m_i) for every mass, exactly (not the solver's rounding of them). A mode with a node at the stopped mass (P[s][j] zero within rounding, as in
 /// a symmetric chain stopped in its middle) never moves that mass: it has no GLOM and never
 /// reaches the stop.
 template <typename S>
@@ -100,6 +106,23 @@ template <typename S, typename R>
   requires(!std::is_same_v<R, Quad>)
 BasicChainModes<S> chainModesIn(const BasicMassChain<R>& chain) {
   return chainModesIn<S>(chainCast<Quad>(chain));
+}
+
+/// Why a floating chain has no periodic impacting orbit: its momentum changes only at
+/// the impacts, each taking 2 m_s v_s > 0 from it, so it never comes back.
+inline constexpr const char* kFloatingChainHasNoOrbit =
+    "a floating chain (no wall at either end) has no periodic impacting orbit: each impact takes momentum "
+    "from it and nothing gives it back";
+
+/// The slowest frequency of a chain that vibrates: the least w_j > 0 (a floating chain's rigid
+/// mode, w = 0, has no period); 0 when no mode vibrates.
+template <typename S>
+S slowestFrequency(const Eigen::Matrix<S, Eigen::Dynamic, 1>& omega) {
+  S slowest = 0;
+  for (Eigen::Index j = 0; j < omega.size(); ++j) {
+    if (omega[j] > 0 && (slowest == 0 || omega[j] < slowest)) slowest = omega[j];
+  }
+  return slowest;
 }
 
 /// The ratios of a chain's frequencies: commensurate when w_j = n_j w0 with positive integers

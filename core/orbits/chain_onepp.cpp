@@ -123,7 +123,7 @@ std::vector<double> onePeriodicGrazingWeights(const MassChain& chain, double per
 
 double chainOnePeriodicEnd(const MassChain& chain) {
   const ChainDynamics dynamics = chainDynamics(chain);
-  return dynamics.period > 0 ? dynamics.period : 2 * std::numbers::pi / dynamics.omega.minCoeff();
+  return dynamics.period > 0 ? dynamics.period : 2 * std::numbers::pi / slowestFrequency(dynamics.omega);
 }
 
 std::vector<ChainFamilyRow> chainOnePeriodicFamily(const MassChain& chain, std::int64_t count,

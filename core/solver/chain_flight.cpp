@@ -75,6 +75,11 @@ void stateInto(const BasicChainDynamics<S>& dynamics, const BasicChainFlight<S>&
   qdot.resize(n);
   for (Eigen::Index j = 0; j < n; ++j) {
     const S w = dynamics.omega[j];
+    if (w == 0) {  // a floating chain's rigid mode: uniform motion
+      q[j] = flight.q[j] + flight.qdot[j] * t;
+      qdot[j] = flight.qdot[j];
+      continue;
+    }
     const S c = cos(w * t), s = sin(w * t);
     q[j] = flight.q[j] * c + flight.qdot[j] / w * s;
     qdot[j] = -flight.q[j] * w * s + flight.qdot[j] * c;
@@ -134,26 +139,54 @@ BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const B
   distance.w = dynamics.omega;
   distance.a.resize(n);
   distance.b.resize(n);
+  distance.slope = 0;
+  // a floating chain's rigid mode (w = 0) moves u_s by p (q + qdot t): a constant and a slope
+  S rigid = 0;
   for (Eigen::Index j = 0; j < n; ++j) {
     const S p = dynamics.P(dynamics.stop, j);
     distance.a[j] = p * flight.q[j];
-    distance.b[j] = p * flight.qdot[j] / dynamics.omega[j];
+    if (dynamics.omega[j] == 0) {
+      distance.b[j] = 0;
+      distance.slope += p * flight.qdot[j];
+      rigid += distance.a[j];
+    } else {
+      distance.b[j] = p * flight.qdot[j] / dynamics.omega[j];
+    }
   }
   distance.offset = -dynamics.gap;
   // a flight whose modes together cannot reach the stop never meets it, commensurate or not:
-  // u_s(t) <= sum_j R_j (R_j = hypot(a_j, b_j), their sum's rounding within (n + 2) eps of it), so
-  // a chain that is not commensurate says so at once, where its search ran out of its budget. (In
-  // units of the gap: a tiny gap's squares would underflow to a reach of 0, a huge one's overflow
-  // to no decision.)
-  if (!flight.onStop) {
-    using std::sqrt;
-    S reach = 0;
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const S a = distance.a[j] / dynamics.gap, b = distance.b[j] / dynamics.gap;
-      reach += sqrt(a * a + b * b);
-    }
-    if (reach * (1 + S(4 * (n + 2)) * epsilon<S>()) < 1) return {ChainContactKind::None, horizon};
+  // u_s(t) <= rigid + slope t + sum_j R_j over the vibrating modes (R_j = hypot(a_j, b_j), the
+  // sum's rounding within (n + 2) eps of it), so a chain that is not commensurate says so at
+  // once, where its search ran out of its budget; a floating chain drifting away from the stop
+  // (slope < 0) can reach it only before t = (rigid + sum R_j - d) / |slope|, its search's end.
+  // (In units of the gap: a tiny gap's squares would underflow to a reach of 0, a huge one's
+  // overflow to no decision.) A flight from the stop is on it: only the drift's end applies.
+  using std::abs;
+  using std::sqrt;
+  const S offset = rigid / dynamics.gap;
+  S vibration = 0;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    if (dynamics.omega[j] == 0) continue;
+    const S a = distance.a[j] / dynamics.gap, b = distance.b[j] / dynamics.gap;
+    vibration += sqrt(a * a + b * b);
   }
+  const S reachError = (abs(offset) + vibration) * S(4 * (n + 2)) * epsilon<S>();
+  const S reach = offset + vibration;
+  const S slope = distance.slope / dynamics.gap;  // [1/time]
+  if (!flight.onStop && reach + reachError < 1 && !(slope > 0)) return {ChainContactKind::None, horizon};
+  // the drift's end: past it u_s stays below the stop, or (drifting onto it) has met it, as
+  // u_s - d lies within offset - 1 + slope t -+ vibration (pushed out by a part in 1e6 against
+  // the time's rounding)
+  S driftEnd = 0;
+  if (slope < 0) driftEnd = (reach + reachError - 1) / -slope * (1 + S(1e-6));
+  if (slope > 0) driftEnd = (1 - offset + vibration + reachError) / slope * (1 + S(1e-6));
+  if (!(dynamics.omega.maxCoeff() > 0)) {
+    // one floating mass: u_s - d = (u_s(0) - d) + v_s t
+    if (!(slope > 0) || flight.onStop) return {ChainContactKind::None, horizon};
+    return {ChainContactKind::Impact, S((1 - rigid / dynamics.gap) / slope)};
+  }
+  const bool driftEnds = driftEnd > 0 && (!(horizon > 0) || driftEnd < horizon);
+  if (driftEnds) horizon = driftEnd;
   distance.harmonics = dynamics.harmonics;
   distance.omega0 = dynamics.omega0;
   // a flight from the stop (after an impact, u_s = d set exactly), at rest there (a grazing
@@ -173,7 +206,11 @@ BasicChainContact<S> firstContact(const BasicChainDynamics<S>& dynamics, const B
       return {periodicReturn ? ChainContactKind::Touch : ChainContactKind::Unresolved, zero.t};
     }
     case ZeroKind::None: return {ChainContactKind::None, zero.t};
-    case ZeroKind::Budget: break;
+    case ZeroKind::Budget:
+      // searched to the drift's end: a chain drifting away never comes back (one drifting onto
+      // the stop must have met it: the search's bounds say otherwise, so no answer is given)
+      if (driftEnds && slope < 0 && zero.t >= horizon) return {ChainContactKind::None, zero.t};
+      break;
   }
   return {ChainContactKind::Budget, zero.t};
 }

@@ -39,7 +39,7 @@ S slowestPeriod(const BasicChainStuckPhase<S>& phase) {
   S slowest = 0;
   for (const typename BasicChainStuckPhase<S>::Side* side : {&phase.left, &phase.right}) {
     if (side->count == 0) continue;
-    const S period = twoPi<S>() / side->dynamics.omega.minCoeff();
+    const S period = twoPi<S>() / slowestFrequency(side->dynamics.omega);
     if (period > slowest) slowest = period;
   }
   return slowest;
@@ -246,7 +246,7 @@ BasicChainSimulator<S>::BasicChainSimulator(std::optional<BasicReadyChain<S>> ow
       m_maxContacts(maxContacts),
       m_tEnd(tEnd),
       m_searchSteps(searchSteps > 0 ? searchSteps : defaultSearchSteps<S>()),
-      m_slowest(twoPi<S>() / m_dynamics.omega.minCoeff()),
+      m_slowest(twoPi<S>() / slowestFrequency(m_dynamics.omega)),
       m_period(m_dynamics.period > 0 ? m_dynamics.period : m_slowest),
       m_sink(std::move(sink)),
       m_sampling(std::move(sampling)),

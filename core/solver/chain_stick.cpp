@@ -48,15 +48,20 @@ BasicChainStuckPhase<S> stuckPhase(const BasicMassChain<S>& chain, const BasicCh
   phase.right.clampMass = 0;
   // at rest the springs of each side share the clamp's displacement d in proportion to their
   // compliances (springs in series): u_i = d (compliance from the wall to i) / (the side's)
-  S leftCompliance = 0;
-  for (Eigen::Index j = 0; j <= s; ++j) leftCompliance += compliance(chain.springs[std::size_t(j)]);
   phase.left.rest.resize(s);
-  S below = 0;
-  for (Eigen::Index i = 0; i < s; ++i) {
-    below += compliance(chain.springs[std::size_t(i)]);
-    phase.left.rest[i] = d * (below / leftCompliance);
+  phase.restForce = 0;
+  if (chain.springs[0] > 0) {
+    S leftCompliance = 0;
+    for (Eigen::Index j = 0; j <= s; ++j) leftCompliance += compliance(chain.springs[std::size_t(j)]);
+    S below = 0;
+    for (Eigen::Index i = 0; i < s; ++i) {
+      below += compliance(chain.springs[std::size_t(i)]);
+      phase.left.rest[i] = d * (below / leftCompliance);
+    }
+    phase.restForce = -d / leftCompliance;
+  } else {
+    phase.left.rest.setConstant(d);  // a free left end follows the clamp, as a free right end does
   }
-  phase.restForce = -d / leftCompliance;
   phase.right.rest.resize(n - 1 - s);
   if (chain.rightSpring > 0) {
     S rightCompliance = compliance(chain.rightSpring);

@@ -30,8 +30,8 @@ enum class StopReason {
   ContactLimit,      ///< maxContacts reached
   TimeLimit,         ///< tEnd reached
   NoFurtherContact,  ///< a resonant (commensurate) flight that stays below the stop for a whole
-                     ///< period, or any flight whose modes' amplitudes together fall short of the
-                     ///< stop: linear forever
+                     ///< period, any flight whose modes' amplitudes together fall short of the
+                     ///< stop, or a floating chain's drifting away from it: linear forever
   SearchBudget,      ///< no contact (or release) decided within the search's horizon and budget
                      ///< (a chain that is not resonant)
   Undecided,         ///< a contact the precision cannot decide: a top of the stopped mass within

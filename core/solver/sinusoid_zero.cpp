@@ -151,14 +151,14 @@ struct Evaluator {
     constexpr S kEps = epsilonOf<S>();
     const S at = abs(t);
     value.error = plainError(t) + phase * powers[0] + shift * powers[1];
-    value.dfError = 8 * kEps * (roundings[1] + at * growth[1]) + phase * powers[1] + shift * powers[2];
+    value.dfError = 8 * kEps * (roundings[1] + at * growth[1] + abs(sum.slope)) + phase * powers[1] + shift * powers[2];
     value.d2fError = 8 * kEps * (roundings[2] + at * growth[2]) + phase * powers[2] + shift * powers[3];
     value.d3fError = 8 * kEps * (roundings[3] + at * growth[3]) + phase * powers[3] + shift * powers[4];
   }
   // The plain sum's rounding bound of f at t.
   S plainError(const S& t) const {
     using std::abs;
-    return 8 * epsilonOf<S>() * (abs(sum.offset) + (roundings[0] + abs(t) * growth[0]));
+    return 8 * epsilonOf<S>() * (abs(sum.offset) + abs(sum.slope * t) + (roundings[0] + abs(t) * growth[0]));
   }
   // f about t from each mode's cos and sin at a time nearby (`from`: n cosines, then n sines),
   // each turned by the angle w_j delta (`turn`: cos w_j delta, then sin; `sign` -1 turns back):
@@ -168,7 +168,7 @@ struct Evaluator {
   Value rotated(const S* from, const S* turn, int sign, S* to, const S& t, int turns, const S& shift) const {
     constexpr S kEps = epsilonOf<S>();
     const Eigen::Index n = sum.a.size();
-    Value value{sum.offset, S(0), S(0), S(0)};
+    Value value{sum.offset + sum.slope * t, sum.slope, S(0), S(0)};
     for (Eigen::Index j = 0; j < n; ++j) {
       const S cosTurn = turn[j], sinTurn = sign > 0 ? turn[n + j] : S(-turn[n + j]);
       const S c = from[j] * cosTurn - from[n + j] * sinTurn;
@@ -196,6 +196,13 @@ struct Evaluator {
     const int k = abs(tau) * fastest < S(0.5) ? sum.startTerms : 0;
     Value value{k == 0 ? sum.offset : S(0), S(0), S(0), S(0)};
     S size = k == 0 ? S(abs(sum.offset)) : S(0), dSize = 0, d2Size = 0;
+    // a drift is f's first Taylor term: kept in the plain sum and at k = 1, 0 exactly above
+    if (k <= 1) {
+      value.f += sum.slope * tau;
+      value.df += sum.slope;
+      size += abs(sum.slope * tau);
+      dSize += abs(sum.slope);
+    }
     // cos and sin of each mode's angle: directly, or by the recurrence up to the highest harmonic
     S cosines[64], sines[64];
     if (highest > 0) {
@@ -505,7 +512,9 @@ BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& sum, std::type_identity_t
     // f(t) <= D t^k/k! + B_(k+1) t^(k+1)/(k+1)! < 0 below (k+1)|D|/B_(k+1): half of that
     const int k = leaving->order;
     if (!(leaving->value < 0) || (k != 3 && k != 4) || sum.startTerms != k) return {ZeroKind::Touch, S(0)};
-    t0 = min(S(S(k + 1) * abs(leaving->value) / (2 * (k == 3 ? f.bound4 : f.bound5))), S(end / 2));
+    t0 = S(k + 1) * abs(leaving->value) / (2 * (k == 3 ? f.bound4 : f.bound5));
+    if (!(period > 0) && t0 >= end) return {ZeroKind::Budget, end};  // cleared to the horizon
+    t0 = min(t0, S(end / 2));
     flatReturn = period > 0 && k == 4;
     start = f.at(t0);
     if (!(start.f < -start.error)) return {ZeroKind::Touch, S(0)};
@@ -520,6 +529,9 @@ BasicFirstZero<S> firstZero(const BasicSinusoidSum<S>& sum, std::type_identity_t
     } else {
       return {ZeroKind::Touch, S(0)};  // it does not leave 0
     }
+    // (t0 is half the interval Taylor's bound clears: one that clears the whole horizon, a
+    // floating chain's drift off the stop with little or no vibration, needs no search)
+    if (!(period > 0) && t0 >= end) return {ZeroKind::Budget, end};
     t0 = min(t0, S(end / 2));
     start = f.at(t0);
     if (!(start.f < -start.error)) return {ZeroKind::Touch, S(0)};

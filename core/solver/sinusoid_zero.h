@@ -12,12 +12,14 @@
 
 namespace grazelab::core {
 
-/// f(t) = offset + sum_j (a_j cos w_j t + b_j sin w_j t): the distance of a chain's stopped mass
-/// to the stop in a flight, or the springs' force on it while it is held there.
+/// f(t) = offset + slope t + sum_j (a_j cos w_j t + b_j sin w_j t): the distance of a chain's
+/// stopped mass to the stop in a flight (the slope a floating chain's drift), or the springs'
+/// force on it while it is held there.
 template <typename S>
 struct BasicSinusoidSum {
-  Eigen::Matrix<S, Eigen::Dynamic, 1> a, b, w;  ///< w_j > 0
+  Eigen::Matrix<S, Eigen::Dynamic, 1> a, b, w;  ///< w_j >= 0 (w_j = 0: a constant a_j, b_j = 0)
   S offset = 0;
+  S slope = 0;  ///< 0 on a periodic f
   /// when every w_j = n_j omega0 (n_j <= 64), the n_j: cos and sin of n w0 t then come from one
   /// sincos by angle addition (its roundings counted in the error bound); empty otherwise
   std::vector<int> harmonics;
@@ -25,7 +27,8 @@ struct BasicSinusoidSum {
   /// f's first `startTerms` Taylor coefficients at 0 are 0 exactly (0 .. 4): 1 when f starts on
   /// 0 (a flight from the stop: offset = -sum a_j), 2 when also at rest there (f'(0) = 0), 3 at a
   /// release (f''(0) = 0 too), 4 at a release with no jerk either (f'''(0) = 0). f is then evaluated as sum a_j C_k(w_j t) + b_j S_k(w_j t), the
-  /// cosines and sines less their Taylor terms below degree k (offset unused), so that near t = 0
+  /// cosines and sines less their Taylor terms below degree k (offset unused; the slope only at
+  /// k = 1, where it is f's first Taylor term), so that near t = 0
   /// (and near a period's end, by periodicity) its value keeps its relative precision instead of
   /// being lost in the rounding of offset + sum a_j
   int startTerms = 0;

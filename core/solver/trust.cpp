@@ -192,7 +192,7 @@ TrustMonitor<S>::TrustMonitor(const ChainShadow<S>& shadow, const BasicChainStar
                                                       searchSteps);
   // the slowest and the fastest angular frequency in the primary's time (the shadow's chain runs
   // `time` times as fast; the note's slowest from its closed form)
-  m_omega = (ready.notes ? ready.notes->omegaSlow : H(ready.dynamics.omega.minCoeff())) / shadow.time;
+  m_omega = (ready.notes ? ready.notes->omegaSlow : H(slowestFrequency(ready.dynamics.omega))) / shadow.time;
   m_fastest = H(ready.dynamics.omega.maxCoeff()) / shadow.time;
   m_period = twoPi<H>() / m_omega;
   using std::abs;

@@ -34,6 +34,7 @@ import numpy as _np
 
 from . import _convert
 from ._convert import Result
+from ._native import bar as _bar
 from ._native import family as _family
 from ._native import glo_set as _glo_set
 from ._native import impacts_family as _impacts_family
@@ -52,7 +53,7 @@ from ._native import stability as _stability
 from ._native import version as __version__
 
 # map and help are left out of a star import: they would hide Python's own
-__all__ = ["Chain", "info", "simulate", "merge", "family", "orbit", "modes", "glo_set", "report", "stability",
+__all__ = ["Chain", "info", "simulate", "merge", "family", "orbit", "modes", "glo_set", "bar", "report", "stability",
            "Result", "GrazeLabWarning", "MAX_EVENTS"]
 
 # ``progress(fraction, text)``: fraction in [0, 1], or None when not known. (A number keyword,
@@ -205,6 +206,27 @@ def glo_set(*, m1: float = 1.0, m2: float = 0.5, k1: float = 1.0, k2: _Optional[
     elif frequencies is not None or design_branch is not None or springs is not None:
         raise ValueError("springs, frequencies and design_branch describe a chain given by masses")
     return _typed(_glo_set, options)
+
+
+def bar(*, bar: _Optional[_Sequence[float]] = None, speed: _Optional[float] = None,
+        masses_count: _Optional[_Sequence[int]] = None, stop_end: _Optional[str] = None,
+        each_impact: bool = False) -> Result:
+    """An elastic bar thrown at a rigid wall, lumped into N masses for each N of ``masses_count``
+    and each computed exactly (``grazelab-cli bar``; docs/model.md section 13), against the
+    continuum's answer (contact 2L/c, force E S v0 / c, rebound -v0, no vibration). Returns
+    ``bar``, ``continuum``, ``rows`` (per N: ``impacts``, ``duration``, ``impulse``, ``rebound``,
+    ``vibration``, ``mean_force``, each also ``relative`` to the continuum, ``status`` and the
+    ``precision`` it took) and ``convergence`` (per quantity: the measured ``orders`` and the limit
+    ``extrapolated`` from the last three rows alone).
+
+    Keywords:
+    bar: (E, rho, S, L) in Pa, kg/m3, m2, m (default the steel bar 210e9, 7800, 3.14e-4, 1).
+    speed: its speed onto the wall, m/s (default 0.1).
+    masses_count: the numbers of masses, ascending, 1 to 2000 (default (10, 100, 1000)).
+    stop_end: "last" (the wall ahead of mass N, default) or "first" (behind mass 1: the mirror image).
+    each_impact: also list every impact's time and impulse (``impact_times``, ``impact_impulses``)."""
+    return _typed(_bar, dict(bar=bar, speed=speed, masses_count=masses_count, stop_end=stop_end,
+                             each_impact=each_impact), bare=("each_impact",))
 
 
 def _mass_chain_options(masses, springs, right_spring, stop_mass, frequencies, design_branch, two_mass):

@@ -15,9 +15,9 @@ import re
 import numpy as _np
 
 # the flags that take no value (given as True)
-_BARE = {"quick", "onepp"}  # (--onepp is bare for family and orbit only)
+_BARE = {"quick", "onepp", "each_impact"}  # (--onepp is bare for family and orbit only)
 # options that are flags only
-_FLAGS = {"quick"}
+_FLAGS = {"quick", "each_impact"}
 # flags whose parts are joined by ':' (an axis NAME:from:to:count, an energy range A:B) or '/'
 _JOINED_BY = {"x": ":", "y": ":", "energy_range": ":", "shard": "/"}
 
@@ -65,7 +65,7 @@ def _brief(value):
 
 # options that take several values: a sequence (or their text as the command line writes it)
 _VECTORS = {"state", "perturb", "guess", "x", "y", "energy_range", "shard", "methods", "sample_times",
-            "masses", "springs", "glo_weights"}
+            "masses", "springs", "glo_weights", "bar", "masses_count"}
 # options that take words, not numbers
 
 

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # SPDX-FileCopyrightText: 2026 GrazeLab developers
 """The compiled part of the module (python/native_module.cpp): the command line's commands run in
-process as typed commands (``simulate``, ``orbit``, ``family``, ``modes``, ``map``, ``merge``, ``report``, ``stability``, ``glo_set``, ``info``). Not for direct use: the functions of
+process as typed commands (``simulate``, ``orbit``, ``family``, ``modes``, ``map``, ``merge``, ``report``, ``stability``, ``glo_set``, ``bar``, ``info``). Not for direct use: the functions of
 ``grazelab`` call it."""
 
 from typing import Callable, List, Optional, Tuple
@@ -43,6 +43,8 @@ def stability(options: List[Tuple[str, Optional[str]]],
 def orbit(options: List[Tuple[str, Optional[str]]], result_type: type) -> dict: ...
 
 def glo_set(options: List[Tuple[str, Optional[str]]], result_type: type) -> dict: ...
+
+def bar(options: List[Tuple[str, Optional[str]]], result_type: type) -> dict: ...
 
 def info(options: List[Tuple[str, Optional[str]]], result_type: type) -> dict: ...
 

@@ -12,6 +12,7 @@
 
 #include "core/model/two_mass_form.h"
 #include "core/solver/contact.h"
+#include "core/experiments/bar.h"
 #include "core/experiments/chain_series.h"
 #include "core/experiments/run.h"
 #include "core/model/linear_modes.h"
@@ -245,6 +246,29 @@ void ChainContactsReady(benchmark::State& state) {
   state.SetItemsProcessed(contacts);
 }
 BENCHMARK(ChainContactsReady)->Arg(3)->Arg(10)->Arg(100)->Unit(benchmark::kMillisecond);
+
+// A steel bar of N masses thrown at a wall (core/experiments/bar.h): its whole burst of impacts
+// (about 0.87 N), the chain made ready once outside the timing (its closed-form modes), the
+// events streamed, items = contacts: issue 50's rates are N = 100 >= 3e4 and N = 1000 >= 1e3
+// contacts/s. (BarThrown: the same through throwBar, set-up included.)
+void BarBurst(benchmark::State& state) {
+  const int n = int(state.range(0));
+  const core::ReadyChain ready = core::readyChain(core::barChain(core::Bar{}, n));
+  const core::ChainState start = core::barStart(core::Bar{}, n);
+  std::int64_t contacts = 0;
+  for (auto _ : state) {
+    contacts += core::runChain(ready, start, 100L * n, 0.0, {}, [](const core::ChainEvent&) {}).contacts;
+  }
+  state.SetItemsProcessed(contacts);
+}
+BENCHMARK(BarBurst)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+void BarThrown(benchmark::State& state) {
+  std::int64_t contacts = 0;
+  for (auto _ : state) contacts += core::throwBar(core::Bar{}, int(state.range(0))).impacts;
+  state.SetItemsProcessed(contacts);
+}
+BENCHMARK(BarThrown)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 // The note's near-grazing run (NearGrazingUpper's start) through the one run of every chain,
 // its events streamed to a sink (nothing kept), items = contacts: Arg(0) by the modal kernel,

@@ -75,6 +75,7 @@ takes = {
                       "stop-mass", "frequencies", "design-branch"],
     "glo-set": model + ["masses", "springs", "right-spring", "stop-mass", "frequencies", "design-branch",
                         "directions", "out"],
+    "bar": ["bar", "speed", "masses-count", "stop-end", "each-impact"],
 }
 options = sorted({o for names in takes.values() for o in names})
 help_text = subprocess.run([cli, "--help"], capture_output=True, text=True).stdout
@@ -94,7 +95,7 @@ with concurrent.futures.ThreadPoolExecutor(8) as pool:
 def probe(case):
     command, option = case
     flag = f"-{option}" if len(option) == 1 else f"--{option}"
-    args = [cli, command, flag] + ([] if option == "quick" else ["1"]) + (["part"] if command == "merge" else [])
+    args = [cli, command, flag] + ([] if option in ("quick", "each-impact") else ["1"]) + (["part"] if command == "merge" else [])
     try:
         run = subprocess.run(args, capture_output=True, text=True, timeout=limit, cwd=work)
     except subprocess.TimeoutExpired:
@@ -416,6 +417,44 @@ svg = open('$work/set31.svg').read()
 assert svg.startswith('<?xml') and 'grazing set [0, 1.125]' in svg, svg[:200]" || fail "the grazing set's picture"
 fi
 EXPECT_WORD="a point" expect_invalid glo-set --masses 1 --springs 1 --out "$work/set1"
+# free ends: a floating chain (k1 = 0, no right wall) thrown at the stop bounces off and drifts away
+if expect_ok simulate --masses 1,1 --springs 0,2 --state 1,1,1,1 --gap 1 --contacts 10; then
+  python3 -c "
+import json, math; d=json.load(open('$out'))
+assert d['stop_reason'] == 'no-further-contact' and d['contacts']['total'] == 2, d['stop_reason']
+t = [e['t'] for e in d['events']]
+assert t[0] == 0 and abs(t[1] - math.pi / 2) < 1e-14, t  # half the period of sqrt(2k/m) = 2
+assert abs(d['final']['v1'] + 1) < 1e-14 and abs(d['final']['v2'] + 1) < 1e-14, d['final']" || fail "a floating pair"
+fi
+EXPECT_WORD="k1" expect_invalid simulate --masses 1,1 --springs -1,2 --state 0,0,0,0
+# no periodic orbit: every impact takes momentum from a floating chain
+EXPECT_WORD="floating" expect_invalid orbit --masses 1,1 --springs 0,1 --onepp --period 3
+EXPECT_WORD="floating" expect_invalid orbit --masses 1,1,1 --springs 0,1,1 --impacts 2 --energy 1 --guess 0.1,0.1,0,0
+EXPECT_WORD="floating" expect_invalid modes --masses 1,1 --springs 0,1 --out "$work/floating"
+EXPECT_WORD="floating" expect_invalid family --onepp --masses 1,1,1 --springs 0,1,1 --out "$work/floating"
+EXPECT_WORD="floating" expect_invalid glo-set --masses 1,1,1 --springs 0,1,1
+EXPECT_WORD="k2" expect_invalid simulate --masses 1,1 --springs 1,0 --state 0,0,0,0
+# a bar thrown at a wall: one mass bounces once; two swing half their spring's period; the
+# literature's steel bar's continuum; bad input refused
+if expect_ok bar --masses-count 1,2,40 --each-impact; then
+  python3 -c "
+import json, math; d=json.load(open('$out'))
+c = d['continuum']
+assert abs(c['duration'] - 385.45e-6) < 5e-9 and abs(c['force'] - 1270.8) < 0.05, c
+one, two, forty = d['rows']
+assert one['impacts'] == 1 and one['rebound'] == -0.1 and one['duration'] == 0, one
+m, k = 7800 * 3.14e-4 / 2, 2 * 210e9 * 3.14e-4
+assert two['impacts'] == 2 and abs(two['duration'] / (math.pi / math.sqrt(2 * k / m)) - 1) < 1e-12, two
+assert forty['status'] == 'computed' and len(forty['impact_times']) == forty['impacts'] > 20, forty['impacts']
+assert abs(sum(forty['impact_impulses']) / forty['impulse'] - 1) < 1e-12
+assert 0 < forty['vibration'] < 0.1 and -0.1 < forty['rebound'] < -0.09, forty
+assert len(d['convergence']['rebound']['orders']) == 2" || fail "bar"
+fi
+EXPECT_WORD="ascending" expect_invalid bar --masses-count 10,5
+EXPECT_WORD="four numbers" expect_invalid bar --bar 1,2,3
+EXPECT_WORD="speed" expect_invalid bar --speed -1
+EXPECT_WORD="first" expect_invalid bar --stop-end middle
+EXPECT_WORD="2000" expect_invalid bar --masses-count 5000
 # the 1IPP family of three masses: its files, its grazing limit; a run from one of its orbits
 if expect_ok family --onepp --masses 1,0.2,0.05 --frequencies 3:2:1 --count 50 --out "$work/fam3"; then
   python3 -c "

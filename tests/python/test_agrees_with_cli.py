@@ -720,3 +720,22 @@ def test_stability_of_a_chain_is_the_cli_matrix(cli, tmp_path, monkeypatch):
     for chain_only in (dict(springs=[1, 2]), dict(frequencies=[2, 1]), dict(state=[0, 1, 0, 0])):
         with pytest.raises(ValueError, match="given by masses"):
             gl.stability(quick=True, **chain_only)
+
+
+def test_bar_is_the_command_lines(cli_json):
+    """grazelab.bar is grazelab-cli bar: the same rows (but their wall times), continuum and
+    convergence; bad keywords raise ValueError in the module's words."""
+    def untimed(document):
+        rows = [{key: value for key, value in row.items() if key != "seconds"} for row in document["rows"]]
+        return {**{key: value for key, value in document.items() if key != "rows"}, "rows": rows}
+
+    bar = gl.bar(bar=(70e9, 2700, 1e-4, 0.5), speed=2, masses_count=[3, 20, 60], stop_end="first", each_impact=True)
+    expected = cli_json("bar", "--bar=70e9,2700,1e-4,0.5", "--speed=2", "--masses-count=3,20,60", "--stop-end=first",
+                        "--each-impact")
+    assert untimed(bar) == untimed(expected)
+    assert [row.impacts for row in bar.rows] == [len(row.impact_times) for row in bar.rows]
+    assert bar.continuum.rebound == -2 and bar.rows[2].rebound < 0
+    with pytest.raises(ValueError, match="masses_count"):
+        gl.bar(masses_count=[10, 5])
+    with pytest.raises(TypeError):
+        gl.bar(each_impact=1)

@@ -93,7 +93,7 @@ std::optional<ShownRun> shownRun(const SimUpdate& update) {
     run.samples = StateSpan(series->grid);
     run.stopped = series->chain.stopped() - 1;
     run.gap = series->chain.gap;
-    run.slowestPeriod = 2 * std::numbers::pi / series->modes.omega.minCoeff();
+    run.slowestPeriod = 2 * std::numbers::pi / core::slowestFrequency(series->modes.omega);
     run.unit = series->period > 0 ? TimeUnit{series->period, tr("T"), tr("the chain's common period T")}
                                   : TimeUnit{run.slowestPeriod, tr("slowest period"),
                                              tr("its slowest period (it has no common one)")};

@@ -41,7 +41,7 @@ std::pair<std::shared_ptr<const core::ChainAtlas<double>>, std::shared_ptr<const
   }
   const core::ReadyChain ready = core::readyChain(chain);
   const double slowPeriod = ready.dynamics.period > 0 ? ready.dynamics.period
-                                                      : 2 * M_PI / ready.dynamics.omega.minCoeff();
+                                                      : 2 * M_PI / core::slowestFrequency(ready.dynamics.omega);
   core::ChainAtlasOptions<double> options;
   options.maxImpacts = kMaxImpacts;
   const core::AtlasEnergyRange<double> range = core::defaultChainAtlasEnergyRange(ready);

@@ -59,7 +59,7 @@ Scene::Spec threeMassesScene() {
     start.v[s] += params.perturbation;  // pushed off the orbit along the stopped mass's velocity
     const core::ChainModes modes = core::chainModes(chain);
     const core::SpectrumRatios ratios = core::detectRatios(modes.omega);
-    const double slowest = 2 * std::numbers::pi / modes.omega.minCoeff();
+    const double slowest = 2 * std::numbers::pi / core::slowestFrequency(modes.omega);
     const bool contrast = self.plots().contains(PlotKind::ContrastFlights);
     // (the error estimate of a chain with no common period shadows long searches in long
     // double: its own scene asks for none, and says so). The trace, the phase portrait and the

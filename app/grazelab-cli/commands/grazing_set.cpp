@@ -15,6 +15,10 @@ using V = JsonValue;
 GloSetOutcome grazingSet(const core::MassChain& chain, const GloSetRequest& request, std::stop_token stop) {
   GloSetOutcome outcome;
   outcome.chain = chain;
+  if (chain.floats()) {
+    outcome.problem = "glo-set needs commensurate frequencies: a floating chain (no wall at either end) never has them (its rigid mode has no period)";
+    return outcome;
+  }
   // the modes that move the stopped mass (the others have no GLOM) and their ratios
   const core::GrazingModes grazing = core::grazingModes(chain);
   const core::SpectrumRatios& ratios = grazing.ratios;

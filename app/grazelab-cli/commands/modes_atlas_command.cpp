@@ -91,6 +91,10 @@ ModesOutcome chainModes(const core::BasicReadyChain<S>& ready, const ModesReques
   ModesOutcome outcome;
   outcome.precision = core::precisionOf<S>();
   outcome.maxImpacts = request.maxImpacts;
+  if (ready.numbers.floats()) {
+    outcome.problem = std::string("modes: ") + core::kFloatingChainHasNoOrbit;
+    return outcome;
+  }
   core::ChainAtlasOptions<S> options;
   options.maxImpacts = request.maxImpacts;
   const core::AtlasEnergyRange<S> range = core::defaultChainAtlasEnergyRange(ready);
@@ -120,7 +124,7 @@ ModesOutcome chainModes(const core::BasicReadyChain<S>& ready, const ModesReques
                   "modes: the returns of this chain's flights cannot be searched within the budget (its fastest "
                   "mode turns %.2g times per slowest period; %d periods of the 1IPP family ran out of it before "
                   "any was decided): no atlas",
-                  double(omega.maxCoeff() / omega.minCoeff()), core::kFamilySearchBudgetRows);
+                  double(omega.maxCoeff() / core::slowestFrequency(omega)), core::kFamilySearchBudgetRows);
     outcome.problem = text;
     return outcome;
   }

@@ -189,7 +189,7 @@ FamilyOutcome chainFamily(const PreparedMassChain& prepared, const FamilyRequest
                   "family --onepp: the returns of this chain's flights cannot be searched within the budget "
                   "(its fastest mode turns %.2g times per slowest period; %d rows ran out of it before any was "
                   "admissible): no family",
-                  dynamics.omega.maxCoeff() / dynamics.omega.minCoeff(), core::kFamilySearchBudgetRows);
+                  dynamics.omega.maxCoeff() / core::slowestFrequency(dynamics.omega), core::kFamilySearchBudgetRows);
     outcome.problem = text;
     return outcome;
   }
@@ -391,7 +391,10 @@ std::optional<std::string> familyRequestRefusal(const FamilyRequest& request, bo
 
 std::optional<std::string> familyRefusal(const PreparedMassChain& chain, const FamilyRequest& request) {
   if (std::optional<std::string> refusal = familyRequestRefusal(request, chain.isTheNotesChain())) return refusal;
-  if (!chain.isTheNotesChain()) return std::nullopt;
+  if (!chain.isTheNotesChain()) {
+    if (chain.input().chain.floats()) return std::string("family: ") + core::kFloatingChainHasNoOrbit;
+    return std::nullopt;
+  }
   const Parsed<ModelInput<double>>& model = chain.twoMassForm<double>();
   if (!model.value) return model.error.toStdString();
   if (!model.value->chain.resonant) {

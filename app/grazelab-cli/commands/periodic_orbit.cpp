@@ -143,6 +143,10 @@ OrbitOutcome chainOrbitByNewton(const core::BasicReadyChain<S>& ready, const Orb
                                 std::stop_token stop) {
   OrbitOutcome outcome;
   outcome.precision = core::precisionOf<S>();
+  if (ready.numbers.floats()) {
+    outcome.problem = std::string("orbit: ") + core::kFloatingChainHasNoOrbit;
+    return outcome;
+  }
   const core::ChainOrbitConstraint fixed = request.fixed;
   const bool atPeriod = fixed == core::ChainOrbitConstraint::Period;
   const std::optional<S> value = numberIn<S>(atPeriod ? request.period : request.energy, atPeriod ? "period" : "energy",
@@ -216,7 +220,9 @@ OrbitOutcome chainOrbitIn(const PreparedMassChain& prepared, const OrbitRequest&
     outcome.problem = ready.error.toStdString();
     return outcome;
   }
-  if (request.impacts != 0) return chainOrbitByNewton<S>(*ready.value, request, std::move(stop));
+  if (request.impacts != 0 || ready.value->numbers.floats()) {
+    return chainOrbitByNewton<S>(*ready.value, request, std::move(stop));
+  }
   const std::optional<S> T = numberIn<S>(request.period, "period", outcome.problem);
   if (!T) return outcome;
   core::ChainOnePeriodicStability<S> found = core::chainOnePeriodicStability(*ready.value, *T);

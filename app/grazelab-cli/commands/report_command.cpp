@@ -215,7 +215,7 @@ std::optional<ReportProblem> chainProblem(const OptionValues& options, QString& 
   task.stillModes = start->stillModes;
   input.startDescription = QString::fromStdString(description);
   const core::ChainModes modes = core::chainModes(task.chain);
-  input.period = core::twoPi<double>() / modes.omega.minCoeff();
+  input.period = core::twoPi<double>() / core::slowestFrequency(modes.omega);
   const auto tEnd = reportHorizon(options, input, [&task](std::int64_t count) {
     const core::ChainRun run = core::runChain(task.chain, {task.start, task.stillModes}, long(count));
     std::vector<double> times;

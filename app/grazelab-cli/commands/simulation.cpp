@@ -286,7 +286,8 @@ std::string stopMessage(core::StopReason stop, bool widest) {
   switch (stop) {
     case core::StopReason::NoFurtherContact:
       return "the flight stays below the stop for a whole period of commensurate frequencies, or its modes' "
-             "amplitudes together fall short of the stop: linear forever";
+             "amplitudes together fall short of the stop, or a floating chain drifts away from it for good: linear "
+             "forever";
     case core::StopReason::Undecided:
       return "a contact the precision cannot decide: the stopped mass's top comes within rounding of the stop "
              "(a grazing, a slow impact and a miss all fit; the run ends at that flight's start), or it rests "

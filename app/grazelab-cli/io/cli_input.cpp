@@ -99,7 +99,7 @@ const OptionSpec kOptions[] = {
                "is the note's chain): the whole chain, with --springs or --frequencies; excludes --m1 "
                "--m2 --k1 --k2 --branch.",
      "m1,...,mN", nullptr},
-    {"springs", "The springs k1,...,kN of --masses: wall to m1, then between neighbours.",
+    {"springs", "The springs k1,...,kN of --masses: wall to m1 (0: no left wall, a free end), then between neighbours.",
      "k1,...,kN", nullptr},
     {"right-spring", "With --masses: a spring k(N+1) from the last mass to a right wall "
                      "(default none).", "K", nullptr},
